@@ -1,0 +1,87 @@
+// The per-draw uniform block: GL lighting state in std140, mirrored by src/layout.rs
+// (a test checks the offsets in the compiled SPIR-V against the Rust structs).
+#ifndef FFVK_DRAW_GLSL
+#define FFVK_DRAW_GLSL
+
+#define MAX_LIGHTS 16
+
+// Table 2.10, one face.
+struct Material {
+    vec4 a_cm;   // AMBIENT
+    vec4 d_cm;   // DIFFUSE
+    vec4 s_cm;   // SPECULAR
+    vec4 e_cm;   // EMISSION
+    float s_rm;  // SHININESS
+};
+
+// Table 2.10, one light; positions and directions already in eye space (glLight time).
+struct Light {
+    vec4 a_cli;       // AMBIENT
+    vec4 d_cli;       // DIFFUSE
+    vec4 s_cli;       // SPECULAR
+    vec4 P_pli;       // POSITION
+    vec3 s_dli;       // SPOT_DIRECTION
+    float s_rli;      // SPOT_EXPONENT
+    float c_rli;      // SPOT_CUTOFF, degrees
+    float cos_c_rli;  // cos(c_rli), computed on the host in double precision
+    float k0;         // CONSTANT_ATTENUATION
+    float k1;         // LINEAR_ATTENUATION
+    float k2;         // QUADRATIC_ATTENUATION
+};
+
+// Values of color_material_mode.
+#define CM_EMISSION 0u
+#define CM_AMBIENT 1u
+#define CM_DIFFUSE 2u
+#define CM_SPECULAR 3u
+#define CM_AMBIENT_AND_DIFFUSE 4u
+
+layout(std140, set = 0, binding = 0) uniform Draw {
+    mat4 modelview;       // M
+    mat4 projection;      // GL projection, premultiplied by GL-to-Vulkan clip conversion
+    mat4 normal_matrix;   // (M^-1)^T, upper 3x3 used
+    Material front;
+    Material back;
+    vec4 a_cs;            // LIGHT_MODEL_AMBIENT
+    uint light_count;     // enabled lights, packed in index order
+    uint lighting;        // LIGHTING enabled
+    uint v_bs;            // LIGHT_MODEL_LOCAL_VIEWER
+    uint t_bs;            // LIGHT_MODEL_TWO_SIDE
+    uint separate_specular;  // LIGHT_MODEL_COLOR_CONTROL == SEPARATE_SPECULAR_COLOR
+    uint color_material;     // COLOR_MATERIAL enabled
+    uint color_material_front;  // ColorMaterial face includes FRONT
+    uint color_material_back;   // ColorMaterial face includes BACK
+    uint color_material_mode;   // CM_*
+    uint normalize;       // NORMALIZE enabled
+    float rescale;        // RESCALE_NORMAL factor, 1 when disabled
+    Light lights[MAX_LIGHTS];
+} draw;
+
+// The material of one face, with COLOR_MATERIAL applied for the current color c.
+Material face_material(bool back_face, vec4 c) {
+    Material m = back_face ? draw.back : draw.front;
+    bool tracks = draw.color_material != 0u
+        && (back_face ? draw.color_material_back != 0u : draw.color_material_front != 0u);
+    if (tracks) {
+        uint mode = draw.color_material_mode;
+        if (mode == CM_EMISSION) m.e_cm = c;
+        if (mode == CM_AMBIENT || mode == CM_AMBIENT_AND_DIFFUSE) m.a_cm = c;
+        if (mode == CM_DIFFUSE || mode == CM_AMBIENT_AND_DIFFUSE) m.d_cm = c;
+        if (mode == CM_SPECULAR) m.s_cm = c;
+    }
+    return m;
+}
+
+// Section 2.11.3: n = (M^-1)^T n_object, then RESCALE_NORMAL, then NORMALIZE.
+// A zero normal stays zero instead of becoming NaN.
+vec3 eye_normal(vec3 n_object) {
+    vec3 n = mat3(draw.normal_matrix) * n_object;
+    n *= draw.rescale;
+    if (draw.normalize != 0u) {
+        float len = length(n);
+        n = len > 0.0 ? n / len : vec3(0.0);
+    }
+    return n;
+}
+
+#endif

@@ -1,0 +1,91 @@
+// The GL 2.1 lighting equation, section 2.14.1, term for term. Included by every stage
+// that lights; the CPU reference (src/reference.rs) is its only other copy.
+#ifndef FFVK_LIGHTING_GLSL
+#define FFVK_LIGHTING_GLSL
+
+#include "draw.glsl"
+
+struct LitColor {
+    vec4 c_pri;
+    vec4 c_sec;
+};
+
+// d1 ⊙ d2 = max(d1 · d2, 0)
+float odot(vec3 d1, vec3 d2) {
+    return max(dot(d1, d2), 0.0);
+}
+
+// x^y with 0^0 = 1 (section 2.1.1); GLSL leaves pow(0, 0) undefined.
+float pow_gl(float x, float y) {
+    return y == 0.0 ? 1.0 : pow(x, y);
+}
+
+// Normalizes, keeping a zero vector zero rather than NaN.
+vec3 unit(vec3 v) {
+    float len = length(v);
+    return len > 0.0 ? v / len : vec3(0.0);
+}
+
+// P1P2 with a hat: the unit vector from homogeneous point P1 to P2.
+vec3 unit_from_to(vec4 P1, vec4 P2) {
+    if (P2.w == 0.0 && P1.w != 0.0) return unit(P2.xyz);
+    if (P1.w == 0.0 && P2.w != 0.0) return -unit(P1.xyz);
+    if (P1.w == 0.0 && P2.w == 0.0) return unit(P2.xyz - P1.xyz);
+    return unit(P2.xyz / P2.w - P1.xyz / P1.w);
+}
+
+// Lights vertex (or fragment) V, eye space, with normal n and material m.
+// Returns c_pri and c_sec, each clamped to [0, 1] (section 2.14.6).
+LitColor light_equation(vec4 V, vec3 n, Material m) {
+    const vec4 Pe = vec4(0.0, 0.0, 0.0, 1.0);
+    vec3 VPe = unit_from_to(V, Pe);
+
+    vec3 c_pri = m.e_cm.rgb + m.a_cm.rgb * draw.a_cs.rgb;
+    vec3 c_sec = vec3(0.0);
+
+    for (uint i = 0u; i < draw.light_count; i++) {
+        Light L = draw.lights[i];
+
+        vec3 VP_pli = unit_from_to(V, L.P_pli);
+
+        float att_i = 1.0;
+        if (L.P_pli.w != 0.0) {
+            float d = length(L.P_pli.xyz / L.P_pli.w - V.xyz / V.w);  // ||VP_pli||
+            att_i = 1.0 / (L.k0 + L.k1 * d + L.k2 * d * d);
+        }
+
+        float spot_i = 1.0;
+        if (L.c_rli != 180.0) {
+            float cos_angle = odot(unit_from_to(L.P_pli, V), unit(L.s_dli));  // P_pliV ⊙ ŝ_dli
+            spot_i = cos_angle >= L.cos_c_rli ? pow_gl(cos_angle, L.s_rli) : 0.0;
+        }
+
+        float n_VP = odot(n, VP_pli);
+        float f_i = n_VP != 0.0 ? 1.0 : 0.0;
+
+        vec3 h_i = draw.v_bs != 0u ? VP_pli + VPe : VP_pli + vec3(0.0, 0.0, 1.0);
+        vec3 specular = f_i * pow_gl(odot(n, unit(h_i)), m.s_rm) * m.s_cm.rgb * L.s_cli.rgb;
+
+        vec3 ambient = m.a_cm.rgb * L.a_cli.rgb;
+        vec3 diffuse = n_VP * m.d_cm.rgb * L.d_cli.rgb;
+
+        if (draw.separate_specular != 0u) {
+            c_pri += att_i * spot_i * (ambient + diffuse);
+            c_sec += att_i * spot_i * specular;
+        } else {
+            c_pri += att_i * spot_i * (ambient + diffuse + specular);
+        }
+    }
+
+    LitColor lit;
+    lit.c_pri = clamp(vec4(c_pri, m.d_cm.a), 0.0, 1.0);
+    lit.c_sec = clamp(vec4(c_sec, 1.0), 0.0, 1.0);
+    return lit;
+}
+
+// Color sum (section 3.9): RGB is clamp(c_pri + c_sec), alpha from c_pri.
+vec4 color_sum(LitColor lit) {
+    return vec4(clamp(lit.c_pri.rgb + lit.c_sec.rgb, 0.0, 1.0), lit.c_pri.a);
+}
+
+#endif

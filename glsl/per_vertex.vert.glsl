@@ -1,0 +1,38 @@
+// Vertex stage of the per-vertex modes (Gouraud and flat): lights each vertex, front and
+// back, with both colors clamped here. INTERP is `smooth` or `flat`.
+layout(location = 0) in vec3 in_position;
+layout(location = 1) in vec3 in_normal;
+layout(location = 2) in vec4 in_color;
+
+layout(location = 0) INTERP out vec4 front_pri;
+layout(location = 1) INTERP out vec4 front_sec;
+layout(location = 2) INTERP out vec4 back_pri;
+layout(location = 3) INTERP out vec4 back_sec;
+
+#include "lighting.glsl"
+
+void main() {
+    vec4 V = draw.modelview * vec4(in_position, 1.0);
+    gl_Position = draw.projection * V;
+
+    if (draw.lighting == 0u) {
+        front_pri = in_color;
+        back_pri = in_color;
+        front_sec = vec4(0.0, 0.0, 0.0, 1.0);
+        back_sec = front_sec;
+        return;
+    }
+    vec3 n = eye_normal(in_normal);
+    LitColor front = light_equation(V, n, face_material(false, in_color));
+    front_pri = front.c_pri;
+    front_sec = front.c_sec;
+    if (draw.t_bs != 0u) {
+        // Two-sided: the back color uses the back material and -n.
+        LitColor back = light_equation(V, -n, face_material(true, in_color));
+        back_pri = back.c_pri;
+        back_sec = back.c_sec;
+    } else {
+        back_pri = front.c_pri;
+        back_sec = front.c_sec;
+    }
+}

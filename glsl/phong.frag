@@ -1,0 +1,24 @@
+#version 450
+// Per-fragment (Phong) mode, fragment stage: the equation at each fragment. The normal is
+// the interpolated direction renormalized, times the interpolated length, so that an
+// unnormalized normal (scaled modelview, no NORMALIZE) still shows as in GL.
+layout(location = 0) in vec4 eye_position;
+layout(location = 1) in vec3 normal_direction;
+layout(location = 2) in float normal_length;
+layout(location = 3) in vec4 color;
+
+layout(location = 0) out vec4 out_color;
+
+#include "lighting.glsl"
+
+void main() {
+    if (draw.lighting == 0u) {
+        out_color = color;
+        return;
+    }
+    vec3 n = unit(normal_direction) * normal_length;
+    bool back_face = draw.t_bs != 0u && !gl_FrontFacing;
+    LitColor lit = back_face ? light_equation(eye_position, -n, face_material(true, color))
+                             : light_equation(eye_position, n, face_material(false, color));
+    out_color = color_sum(lit);
+}

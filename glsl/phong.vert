@@ -1,0 +1,22 @@
+#version 450
+// Per-fragment (Phong) mode, vertex stage: passes the eye-space position, the normal's
+// direction and length, and the current color.
+layout(location = 0) in vec3 in_position;
+layout(location = 1) in vec3 in_normal;
+layout(location = 2) in vec4 in_color;
+
+layout(location = 0) out vec4 eye_position;
+layout(location = 1) out vec3 normal_direction;
+layout(location = 2) out float normal_length;
+layout(location = 3) out vec4 color;
+
+#include "draw.glsl"
+
+void main() {
+    eye_position = draw.modelview * vec4(in_position, 1.0);
+    gl_Position = draw.projection * eye_position;
+    vec3 n = eye_normal(in_normal);
+    normal_length = length(n);
+    normal_direction = normal_length > 0.0 ? n / normal_length : vec3(0.0);
+    color = in_color;
+}

@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# Installs the Debian packages ffvk needs, only when one is missing.
+# Usage: scripts/setup-deps.sh [--test]   (--test adds what the test suite needs)
+set -euo pipefail
+
+pkgs=(
+  mesa-vulkan-drivers   # lavapipe, the CPU Vulkan driver
+  libvulkan1            # the Vulkan loader
+  libshaderc-dev        # shaderc static libraries used by build.rs
+  glslang-dev           # glslang static libraries shaderc needs
+  spirv-tools           # SPIRV-Tools static libraries shaderc needs
+  pkg-config
+  g++                   # libstdc++ for the static shaderc link
+  fonts-dejavu-core     # labels on the demo's contact sheet
+)
+if [[ "${1:-}" == "--test" ]]; then
+  pkgs+=(
+    vulkan-validationlayers  # VK_LAYER_KHRONOS_validation, on in every test
+    libosmesa6-dev           # Mesa's OpenGL, the conformance oracle
+  )
+fi
+
+missing=()
+for p in "${pkgs[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if ((${#missing[@]} == 0)); then
+  exit 0
+fi
+
+echo "ffvk: installing missing Debian packages: ${missing[*]}" >&2
+if [[ $(id -u) -ne 0 ]]; then
+  if command -v sudo >/dev/null 2>&1; then
+    SUDO=sudo
+  else
+    echo "ffvk: not root and no sudo; please install: ${missing[*]}" >&2
+    exit 1
+  fi
+else
+  SUDO=
+fi
+export DEBIAN_FRONTEND=noninteractive
+if ! $SUDO apt-get update -qq || ! $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"; then
+  echo "ffvk: could not install: ${missing[*]}; install them by hand (apt-get install ${missing[*]})" >&2
+  exit 1
+fi

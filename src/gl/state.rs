@@ -1,0 +1,559 @@
+//! GL 2.1 lighting state (tables 2.10-2.12) with GL's defaults, GL's validation and GL's
+//! "transform at specification time" rule for light positions and spot directions.
+//!
+//! [`GlState`] behaves like the fixed-function state machine an emulation layer ports:
+//! `glLight`, `glMaterial`, `glLightModel`, `glColorMaterial`, `glShadeModel`, `glEnable`.
+//! Values GL would answer with `INVALID_VALUE` (or `INVALID_ENUM`) are rejected with a
+//! [`StateError`] naming the parameter, the value and the valid range.
+
+use glam::{Mat3, Mat4, Vec3, Vec4};
+
+/// Lights ffvk evaluates per draw (GL_MAX_LIGHTS). GL requires at least 8.
+pub const MAX_LIGHTS: usize = 16;
+
+/// A value GL would reject.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum StateError {
+    #[error("{parameter} = {value} is out of range: expected {valid}")]
+    OutOfRange {
+        parameter: &'static str,
+        value: f32,
+        valid: &'static str,
+    },
+    #[error("{parameter} = {value} is not a finite number: expected {valid}")]
+    NotFinite {
+        parameter: &'static str,
+        value: f32,
+        valid: &'static str,
+    },
+    #[error("light index {index} is out of range: expected 0..{max} (GL_MAX_LIGHTS = {max})")]
+    LightIndex { index: usize, max: usize },
+}
+
+/// One light source's state, in eye coordinates as GL stores it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Light {
+    pub enabled: bool,
+    /// a_cli
+    pub ambient: Vec4,
+    /// d_cli
+    pub diffuse: Vec4,
+    /// s_cli
+    pub specular: Vec4,
+    /// P_pli, eye space (already transformed by the modelview at specification time).
+    pub position: Vec4,
+    /// s_dli, eye space (transformed by the upper 3x3 of the modelview at specification time).
+    pub spot_direction: Vec3,
+    /// s_rli, in [0, 128].
+    pub spot_exponent: f32,
+    /// c_rli in degrees, in [0, 90] or exactly 180.
+    pub spot_cutoff: f32,
+    /// k0, k1, k2, each >= 0.
+    pub constant_attenuation: f32,
+    pub linear_attenuation: f32,
+    pub quadratic_attenuation: f32,
+}
+
+impl Light {
+    /// GL's initial state of light `index`: light 0 has white diffuse and specular, the others black.
+    pub fn gl_default(index: usize) -> Self {
+        let white_if_first = if index == 0 { Vec4::ONE } else { Vec4::new(0.0, 0.0, 0.0, 1.0) };
+        Light {
+            enabled: false,
+            ambient: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            diffuse: white_if_first,
+            specular: white_if_first,
+            position: Vec4::new(0.0, 0.0, 1.0, 0.0),
+            spot_direction: Vec3::new(0.0, 0.0, -1.0),
+            spot_exponent: 0.0,
+            spot_cutoff: 180.0,
+            constant_attenuation: 1.0,
+            linear_attenuation: 0.0,
+            quadratic_attenuation: 0.0,
+        }
+    }
+}
+
+/// Material state of one face.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Material {
+    /// a_cm
+    pub ambient: Vec4,
+    /// d_cm
+    pub diffuse: Vec4,
+    /// s_cm
+    pub specular: Vec4,
+    /// e_cm
+    pub emission: Vec4,
+    /// s_rm, in [0, 128].
+    pub shininess: f32,
+}
+
+impl Default for Material {
+    /// GL's initial material (table 2.10).
+    fn default() -> Self {
+        Material {
+            ambient: Vec4::new(0.2, 0.2, 0.2, 1.0),
+            diffuse: Vec4::new(0.8, 0.8, 0.8, 1.0),
+            specular: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            emission: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            shininess: 0.0,
+        }
+    }
+}
+
+impl Material {
+    /// Checks the ranges GL checks (shininess in [0, 128]) and that every value is finite.
+    pub fn validate(&self) -> Result<(), StateError> {
+        for (name, c) in [
+            ("GL_AMBIENT", self.ambient),
+            ("GL_DIFFUSE", self.diffuse),
+            ("GL_SPECULAR", self.specular),
+            ("GL_EMISSION", self.emission),
+        ] {
+            finite_vec(name, c.to_array().as_slice())?;
+        }
+        in_range("GL_SHININESS", self.shininess, 0.0, 128.0, "a value in [0, 128]")
+    }
+}
+
+/// LIGHT_MODEL_COLOR_CONTROL.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ColorControl {
+    #[default]
+    SingleColor,
+    SeparateSpecularColor,
+}
+
+/// Light-model state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LightModel {
+    /// a_cs
+    pub ambient: Vec4,
+    /// v_bs
+    pub local_viewer: bool,
+    /// t_bs
+    pub two_side: bool,
+    /// c_es
+    pub color_control: ColorControl,
+}
+
+impl Default for LightModel {
+    fn default() -> Self {
+        LightModel {
+            ambient: Vec4::new(0.2, 0.2, 0.2, 1.0),
+            local_viewer: false,
+            two_side: false,
+            color_control: ColorControl::SingleColor,
+        }
+    }
+}
+
+/// A face selector for glMaterial and glColorMaterial.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Face {
+    Front,
+    Back,
+    #[default]
+    FrontAndBack,
+}
+
+impl Face {
+    pub fn includes_front(self) -> bool {
+        matches!(self, Face::Front | Face::FrontAndBack)
+    }
+    pub fn includes_back(self) -> bool {
+        matches!(self, Face::Back | Face::FrontAndBack)
+    }
+}
+
+/// The material parameter(s) glColorMaterial makes track the current color.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ColorMaterialMode {
+    Emission,
+    Ambient,
+    Diffuse,
+    Specular,
+    #[default]
+    AmbientAndDiffuse,
+}
+
+/// COLOR_MATERIAL state.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct ColorMaterial {
+    pub enabled: bool,
+    pub face: Face,
+    pub mode: ColorMaterialMode,
+}
+
+impl ColorMaterial {
+    /// The material of one face with the tracked parameter(s) replaced by `color`.
+    pub fn apply(&self, material: &Material, color: Vec4, back: bool) -> Material {
+        let mut m = *material;
+        let applies = if back { self.face.includes_back() } else { self.face.includes_front() };
+        if !self.enabled || !applies {
+            return m;
+        }
+        match self.mode {
+            ColorMaterialMode::Emission => m.emission = color,
+            ColorMaterialMode::Ambient => m.ambient = color,
+            ColorMaterialMode::Diffuse => m.diffuse = color,
+            ColorMaterialMode::Specular => m.specular = color,
+            ColorMaterialMode::AmbientAndDiffuse => {
+                m.ambient = color;
+                m.diffuse = color;
+            }
+        }
+        m
+    }
+}
+
+/// Where the one equation is evaluated.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Hash)]
+pub enum LightingMode {
+    /// Gouraud: lit at each vertex, clamped there, colors interpolated (GL's SMOOTH).
+    #[default]
+    Vertex,
+    /// Phong: eye-space position and normal interpolated, lit at each fragment.
+    Fragment,
+    /// GL's ShadeModel(FLAT): lit per vertex, the triangle takes its last vertex's color.
+    Flat,
+}
+
+impl LightingMode {
+    pub const ALL: [LightingMode; 3] = [LightingMode::Vertex, LightingMode::Fragment, LightingMode::Flat];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            LightingMode::Vertex => "vertex",
+            LightingMode::Fragment => "fragment",
+            LightingMode::Flat => "flat",
+        }
+    }
+}
+
+impl std::str::FromStr for LightingMode {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "vertex" => Ok(LightingMode::Vertex),
+            "fragment" => Ok(LightingMode::Fragment),
+            "flat" => Ok(LightingMode::Flat),
+            other => Err(format!("unknown lighting mode {other:?}: expected vertex, fragment or flat")),
+        }
+    }
+}
+
+/// GL's ShadeModel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ShadeModel {
+    Smooth,
+    Flat,
+}
+
+/// Capabilities toggled by glEnable/glDisable that touch lighting.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Cap {
+    Lighting,
+    Light(usize),
+    ColorMaterial,
+    Normalize,
+    RescaleNormal,
+}
+
+/// Parameters of glLight.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum LightParam {
+    Ambient(Vec4),
+    Diffuse(Vec4),
+    Specular(Vec4),
+    /// Object coordinates: transformed by the modelview in force at the call.
+    Position(Vec4),
+    /// Object coordinates: transformed by the upper 3x3 of the modelview in force at the call.
+    SpotDirection(Vec3),
+    SpotExponent(f32),
+    SpotCutoff(f32),
+    ConstantAttenuation(f32),
+    LinearAttenuation(f32),
+    QuadraticAttenuation(f32),
+}
+
+/// Parameters of glMaterial.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum MaterialParam {
+    Ambient(Vec4),
+    Diffuse(Vec4),
+    Specular(Vec4),
+    Emission(Vec4),
+    Shininess(f32),
+    AmbientAndDiffuse(Vec4),
+}
+
+/// Parameters of glLightModel.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum LightModelParam {
+    Ambient(Vec4),
+    LocalViewer(bool),
+    TwoSide(bool),
+    ColorControl(ColorControl),
+}
+
+/// Everything the lighting of one draw depends on, besides its geometry and matrices.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LightingState {
+    /// GL_LIGHTING; off by default, as in GL: the vertex color passes through.
+    pub lighting: bool,
+    pub lights: [Light; MAX_LIGHTS],
+    pub front: Material,
+    pub back: Material,
+    pub model: LightModel,
+    pub color_material: ColorMaterial,
+    pub normalize: bool,
+    pub rescale_normal: bool,
+    pub mode: LightingMode,
+}
+
+impl Default for LightingState {
+    fn default() -> Self {
+        LightingState {
+            lighting: false,
+            lights: std::array::from_fn(Light::gl_default),
+            front: Material::default(),
+            back: Material::default(),
+            model: LightModel::default(),
+            color_material: ColorMaterial::default(),
+            normalize: false,
+            rescale_normal: false,
+            mode: LightingMode::Vertex,
+        }
+    }
+}
+
+impl LightingState {
+    /// Checks every value against GL's ranges; for state built field by field rather than
+    /// through [`GlState`]'s setters.
+    pub fn validate(&self) -> Result<(), StateError> {
+        self.front.validate()?;
+        self.back.validate()?;
+        finite_vec("GL_LIGHT_MODEL_AMBIENT", self.model.ambient.to_array().as_slice())?;
+        for light in &self.lights {
+            validate_light(light)?;
+        }
+        Ok(())
+    }
+
+    /// The enabled lights, in index order.
+    pub fn enabled_lights(&self) -> impl Iterator<Item = &Light> {
+        self.lights.iter().filter(|l| l.enabled)
+    }
+}
+
+fn validate_light(l: &Light) -> Result<(), StateError> {
+    for (name, c) in [
+        ("GL_AMBIENT", l.ambient),
+        ("GL_DIFFUSE", l.diffuse),
+        ("GL_SPECULAR", l.specular),
+        ("GL_POSITION", l.position),
+    ] {
+        finite_vec(name, c.to_array().as_slice())?;
+    }
+    finite_vec("GL_SPOT_DIRECTION", l.spot_direction.to_array().as_slice())?;
+    check_light_scalar(&LightParam::SpotExponent(l.spot_exponent))?;
+    check_light_scalar(&LightParam::SpotCutoff(l.spot_cutoff))?;
+    check_light_scalar(&LightParam::ConstantAttenuation(l.constant_attenuation))?;
+    check_light_scalar(&LightParam::LinearAttenuation(l.linear_attenuation))?;
+    check_light_scalar(&LightParam::QuadraticAttenuation(l.quadratic_attenuation))
+}
+
+fn finite_vec(parameter: &'static str, values: &[f32]) -> Result<(), StateError> {
+    match values.iter().find(|v| !v.is_finite()) {
+        Some(&value) => Err(StateError::NotFinite {
+            parameter,
+            value,
+            valid: "finite components",
+        }),
+        None => Ok(()),
+    }
+}
+
+fn in_range(parameter: &'static str, value: f32, lo: f32, hi: f32, valid: &'static str) -> Result<(), StateError> {
+    if !value.is_finite() {
+        return Err(StateError::NotFinite { parameter, value, valid });
+    }
+    if value < lo || value > hi {
+        return Err(StateError::OutOfRange { parameter, value, valid });
+    }
+    Ok(())
+}
+
+fn check_light_scalar(p: &LightParam) -> Result<(), StateError> {
+    match *p {
+        LightParam::SpotExponent(v) => in_range("GL_SPOT_EXPONENT", v, 0.0, 128.0, "a value in [0, 128]"),
+        LightParam::SpotCutoff(v) => {
+            const VALID: &str = "a value in [0, 90] or exactly 180";
+            if v == 180.0 {
+                Ok(())
+            } else {
+                in_range("GL_SPOT_CUTOFF", v, 0.0, 90.0, VALID)
+            }
+        }
+        LightParam::ConstantAttenuation(v) => in_range("GL_CONSTANT_ATTENUATION", v, 0.0, f32::MAX, "a value >= 0"),
+        LightParam::LinearAttenuation(v) => in_range("GL_LINEAR_ATTENUATION", v, 0.0, f32::MAX, "a value >= 0"),
+        LightParam::QuadraticAttenuation(v) => in_range("GL_QUADRATIC_ATTENUATION", v, 0.0, f32::MAX, "a value >= 0"),
+        _ => Ok(()),
+    }
+}
+
+/// The fixed-function state machine: the lighting state plus the current modelview matrix,
+/// with GL's entry points. Start from [`GlState::new`] for GL's initial state.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GlState {
+    /// The state a draw captures.
+    pub lighting: LightingState,
+    /// The modelview matrix in force (glLoadMatrix / glMultMatrix).
+    pub modelview: Mat4,
+}
+
+impl Default for GlState {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl GlState {
+    /// GL's initial state: identity modelview, every default of table 2.10.
+    pub fn new() -> Self {
+        GlState {
+            lighting: LightingState::default(),
+            modelview: Mat4::IDENTITY,
+        }
+    }
+
+    /// glLoadMatrix on the MODELVIEW stack.
+    pub fn load_modelview(&mut self, m: Mat4) -> Result<(), StateError> {
+        finite_vec("modelview matrix", &m.to_cols_array())?;
+        self.modelview = m;
+        Ok(())
+    }
+
+    /// glMultMatrix on the MODELVIEW stack.
+    pub fn mult_modelview(&mut self, m: Mat4) -> Result<(), StateError> {
+        self.load_modelview(self.modelview * m)
+    }
+
+    fn light_mut(&mut self, index: usize) -> Result<&mut Light, StateError> {
+        self.lighting
+            .lights
+            .get_mut(index)
+            .ok_or(StateError::LightIndex { index, max: MAX_LIGHTS })
+    }
+
+    /// glLight: sets one parameter of light `index`. Positions and spot directions are
+    /// transformed by the current modelview and stored in eye space, as GL does.
+    pub fn light(&mut self, index: usize, param: LightParam) -> Result<(), StateError> {
+        check_light_scalar(&param)?;
+        let modelview = self.modelview;
+        let light = self.light_mut(index)?;
+        match param {
+            LightParam::Ambient(c) => light.ambient = finite4("GL_AMBIENT", c)?,
+            LightParam::Diffuse(c) => light.diffuse = finite4("GL_DIFFUSE", c)?,
+            LightParam::Specular(c) => light.specular = finite4("GL_SPECULAR", c)?,
+            LightParam::Position(p) => light.position = modelview * finite4("GL_POSITION", p)?,
+            LightParam::SpotDirection(d) => {
+                finite_vec("GL_SPOT_DIRECTION", &d.to_array())?;
+                light.spot_direction = Mat3::from_mat4(modelview) * d;
+            }
+            LightParam::SpotExponent(v) => light.spot_exponent = v,
+            LightParam::SpotCutoff(v) => light.spot_cutoff = v,
+            LightParam::ConstantAttenuation(v) => light.constant_attenuation = v,
+            LightParam::LinearAttenuation(v) => light.linear_attenuation = v,
+            LightParam::QuadraticAttenuation(v) => light.quadratic_attenuation = v,
+        }
+        Ok(())
+    }
+
+    /// glMaterial on `face`.
+    pub fn material(&mut self, face: Face, param: MaterialParam) -> Result<(), StateError> {
+        let apply = |m: &mut Material| -> Result<(), StateError> {
+            match param {
+                MaterialParam::Ambient(c) => m.ambient = finite4("GL_AMBIENT", c)?,
+                MaterialParam::Diffuse(c) => m.diffuse = finite4("GL_DIFFUSE", c)?,
+                MaterialParam::Specular(c) => m.specular = finite4("GL_SPECULAR", c)?,
+                MaterialParam::Emission(c) => m.emission = finite4("GL_EMISSION", c)?,
+                MaterialParam::AmbientAndDiffuse(c) => {
+                    let c = finite4("GL_AMBIENT_AND_DIFFUSE", c)?;
+                    m.ambient = c;
+                    m.diffuse = c;
+                }
+                MaterialParam::Shininess(s) => {
+                    in_range("GL_SHININESS", s, 0.0, 128.0, "a value in [0, 128]")?;
+                    m.shininess = s;
+                }
+            }
+            Ok(())
+        };
+        if face.includes_front() {
+            apply(&mut self.lighting.front)?;
+        }
+        if face.includes_back() {
+            apply(&mut self.lighting.back)?;
+        }
+        Ok(())
+    }
+
+    /// glLightModel.
+    pub fn light_model(&mut self, param: LightModelParam) -> Result<(), StateError> {
+        let model = &mut self.lighting.model;
+        match param {
+            LightModelParam::Ambient(c) => model.ambient = finite4("GL_LIGHT_MODEL_AMBIENT", c)?,
+            LightModelParam::LocalViewer(b) => model.local_viewer = b,
+            LightModelParam::TwoSide(b) => model.two_side = b,
+            LightModelParam::ColorControl(c) => model.color_control = c,
+        }
+        Ok(())
+    }
+
+    /// glColorMaterial.
+    pub fn color_material(&mut self, face: Face, mode: ColorMaterialMode) {
+        self.lighting.color_material.face = face;
+        self.lighting.color_material.mode = mode;
+    }
+
+    /// glShadeModel: FLAT selects [`LightingMode::Flat`]; SMOOTH selects per-vertex lighting.
+    pub fn shade_model(&mut self, model: ShadeModel) {
+        self.lighting.mode = match model {
+            ShadeModel::Flat => LightingMode::Flat,
+            ShadeModel::Smooth => LightingMode::Vertex,
+        };
+    }
+
+    /// ffvk's extension: where the equation is evaluated.
+    pub fn lighting_mode(&mut self, mode: LightingMode) {
+        self.lighting.mode = mode;
+    }
+
+    /// glEnable / glDisable.
+    pub fn set_enabled(&mut self, cap: Cap, on: bool) -> Result<(), StateError> {
+        match cap {
+            Cap::Lighting => self.lighting.lighting = on,
+            Cap::Light(i) => self.light_mut(i)?.enabled = on,
+            Cap::ColorMaterial => self.lighting.color_material.enabled = on,
+            Cap::Normalize => self.lighting.normalize = on,
+            Cap::RescaleNormal => self.lighting.rescale_normal = on,
+        }
+        Ok(())
+    }
+
+    pub fn enable(&mut self, cap: Cap) -> Result<(), StateError> {
+        self.set_enabled(cap, true)
+    }
+
+    pub fn disable(&mut self, cap: Cap) -> Result<(), StateError> {
+        self.set_enabled(cap, false)
+    }
+}
+
+fn finite4(parameter: &'static str, v: Vec4) -> Result<Vec4, StateError> {
+    finite_vec(parameter, &v.to_array())?;
+    Ok(v)
+}
