@@ -59,7 +59,14 @@ layout(std140, set = 0, binding = 0) uniform Draw {
 
 // The material of one face, with COLOR_MATERIAL applied for the current color c.
 Material face_material(bool back_face, vec4 c) {
-    Material m = back_face ? draw.back : draw.front;
+    // Member by member: glslang 12 copies whole std140 structs with an OpStore that
+    // SPIR-V validation rejects (block layout and function layout differ).
+    Material m;
+    if (back_face) {
+        m = Material(draw.back.a_cm, draw.back.d_cm, draw.back.s_cm, draw.back.e_cm, draw.back.s_rm);
+    } else {
+        m = Material(draw.front.a_cm, draw.front.d_cm, draw.front.s_cm, draw.front.e_cm, draw.front.s_rm);
+    }
     bool tracks = draw.color_material != 0u
         && (back_face ? draw.color_material_back != 0u : draw.color_material_front != 0u);
     if (tracks) {

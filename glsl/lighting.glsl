@@ -44,7 +44,8 @@ LitColor light_equation(vec4 V, vec3 n, Material m) {
     vec3 c_sec = vec3(0.0);
 
     for (uint i = 0u; i < draw.light_count; i++) {
-        Light L = draw.lights[i];
+        // Read in place (a copy of the std140 struct trips glslang 12, see draw.glsl).
+#define L draw.lights[i]
 
         vec3 VP_pli = unit_from_to(V, L.P_pli);
 
@@ -75,6 +76,7 @@ LitColor light_equation(vec4 V, vec3 n, Material m) {
         } else {
             c_pri += att_i * spot_i * (ambient + diffuse + specular);
         }
+#undef L
     }
 
     LitColor lit;

@@ -1,4 +1,17 @@
 //! ffvk: the OpenGL 2.1 fixed-function lighting equation, verbatim, on Vulkan.
+//!
+//! Modules follow the data: GL state ([`gl`]), its GPU layout ([`layout`]), shaders and
+//! pipelines ([`shaders`], [`pipeline`]), the render path ([`vk`], [`renderer`]), and the
+//! CPU reference of the same equation ([`reference`]).
 
+pub mod error;
 pub mod gl;
+pub mod layout;
 pub mod mesh;
+pub mod pipeline;
+pub mod renderer;
+pub mod shaders;
+pub mod vk;
+
+pub use error::{Error, Result};
+pub use renderer::{Draw, Frame, Mesh, Renderer, RendererOptions};

@@ -1,0 +1,159 @@
+//! The GPU layout of GL state: std140 mirrors of `glsl/draw.glsl`'s `Draw` block.
+//! Field names are the GLSL member names; a test compares their offsets with the ones
+//! glslang wrote into the SPIR-V.
+
+#![allow(non_snake_case)]
+
+use glam::{Mat3, Mat4, Vec4};
+
+use crate::gl::state::{ColorControl, ColorMaterialMode, Light, LightingState, Material, StateError, MAX_LIGHTS};
+
+/// GL clip space (z in [-w, w], y up) to Vulkan clip space (z in [0, w], y down), applied
+/// after the GL projection so the image's top row is the top of the view, as on a GL screen.
+/// The y flip mirrors window-space winding, which the pipeline's front face accounts for.
+pub const VK_FROM_GL_CLIP: Mat4 = Mat4::from_cols_array(&[
+    1.0, 0.0, 0.0, 0.0, //
+    0.0, -1.0, 0.0, 0.0, //
+    0.0, 0.0, 0.5, 0.0, //
+    0.0, 0.0, 0.5, 1.0,
+]);
+
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct GpuMaterial {
+    pub a_cm: [f32; 4],
+    pub d_cm: [f32; 4],
+    pub s_cm: [f32; 4],
+    pub e_cm: [f32; 4],
+    pub s_rm: f32,
+    pub _pad: [f32; 3],
+}
+
+impl From<&Material> for GpuMaterial {
+    fn from(m: &Material) -> Self {
+        GpuMaterial {
+            a_cm: m.ambient.to_array(),
+            d_cm: m.diffuse.to_array(),
+            s_cm: m.specular.to_array(),
+            e_cm: m.emission.to_array(),
+            s_rm: m.shininess,
+            _pad: [0.0; 3],
+        }
+    }
+}
+
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct GpuLight {
+    pub a_cli: [f32; 4],
+    pub d_cli: [f32; 4],
+    pub s_cli: [f32; 4],
+    pub P_pli: [f32; 4],
+    pub s_dli: [f32; 3],
+    pub s_rli: f32,
+    pub c_rli: f32,
+    pub cos_c_rli: f32,
+    pub k0: f32,
+    pub k1: f32,
+    pub k2: f32,
+    pub _pad: [f32; 3],
+}
+
+impl From<&Light> for GpuLight {
+    fn from(l: &Light) -> Self {
+        GpuLight {
+            a_cli: l.ambient.to_array(),
+            d_cli: l.diffuse.to_array(),
+            s_cli: l.specular.to_array(),
+            P_pli: l.position.to_array(),
+            s_dli: l.spot_direction.to_array(),
+            s_rli: l.spot_exponent,
+            c_rli: l.spot_cutoff,
+            // In double precision so that cos(90°) rounds to the f32 nearest the true value.
+            cos_c_rli: (l.spot_cutoff as f64).to_radians().cos() as f32,
+            k0: l.constant_attenuation,
+            k1: l.linear_attenuation,
+            k2: l.quadratic_attenuation,
+            _pad: [0.0; 3],
+        }
+    }
+}
+
+/// The `Draw` uniform block.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct DrawBlock {
+    pub modelview: [f32; 16],
+    pub projection: [f32; 16],
+    pub normal_matrix: [f32; 16],
+    pub front: GpuMaterial,
+    pub back: GpuMaterial,
+    pub a_cs: [f32; 4],
+    pub light_count: u32,
+    pub lighting: u32,
+    pub v_bs: u32,
+    pub t_bs: u32,
+    pub separate_specular: u32,
+    pub color_material: u32,
+    pub color_material_front: u32,
+    pub color_material_back: u32,
+    pub color_material_mode: u32,
+    pub normalize: u32,
+    pub rescale: f32,
+    pub _pad: u32,
+    pub lights: [GpuLight; MAX_LIGHTS],
+}
+
+/// (M⁻¹)ᵀ of the upper 3x3 of the modelview: the matrix normals are transformed by.
+pub fn normal_matrix(modelview: Mat4) -> Mat3 {
+    Mat3::from_mat4(modelview).inverse().transpose()
+}
+
+/// RESCALE_NORMAL's factor 1 / sqrt(m31² + m32² + m33²), from the third row of M⁻¹.
+pub fn rescale_factor(modelview: Mat4) -> f32 {
+    let inv = Mat3::from_mat4(modelview).inverse();
+    1.0 / inv.row(2).length()
+}
+
+impl DrawBlock {
+    /// Packs one draw's state. `projection` is GL's; the Vulkan clip conversion is applied here.
+    pub fn new(state: &LightingState, modelview: Mat4, projection: Mat4) -> Result<Self, StateError> {
+        state.validate()?;
+        let mut lights = [GpuLight::zeroed(); MAX_LIGHTS];
+        let mut light_count = 0;
+        for (slot, light) in lights.iter_mut().zip(state.enabled_lights()) {
+            *slot = GpuLight::from(light);
+            light_count += 1;
+        }
+        let cm = &state.color_material;
+        Ok(DrawBlock {
+            modelview: modelview.to_cols_array(),
+            projection: (VK_FROM_GL_CLIP * projection).to_cols_array(),
+            normal_matrix: Mat4::from_mat3(normal_matrix(modelview)).to_cols_array(),
+            front: GpuMaterial::from(&state.front),
+            back: GpuMaterial::from(&state.back),
+            a_cs: Vec4::from(state.model.ambient).to_array(),
+            light_count,
+            lighting: state.lighting as u32,
+            v_bs: state.model.local_viewer as u32,
+            t_bs: state.model.two_side as u32,
+            separate_specular: (state.model.color_control == ColorControl::SeparateSpecularColor) as u32,
+            color_material: cm.enabled as u32,
+            color_material_front: cm.face.includes_front() as u32,
+            color_material_back: cm.face.includes_back() as u32,
+            color_material_mode: match cm.mode {
+                ColorMaterialMode::Emission => 0,
+                ColorMaterialMode::Ambient => 1,
+                ColorMaterialMode::Diffuse => 2,
+                ColorMaterialMode::Specular => 3,
+                ColorMaterialMode::AmbientAndDiffuse => 4,
+            },
+            normalize: state.normalize as u32,
+            rescale: if state.rescale_normal { rescale_factor(modelview) } else { 1.0 },
+            _pad: 0,
+            lights,
+        })
+    }
+}
+
+use bytemuck::Zeroable as _;

@@ -1,0 +1,206 @@
+//! Shader modules and one graphics pipeline per lighting mode, through a pipeline cache.
+
+use std::sync::Arc;
+
+use ash::vk;
+
+use crate::error::{vk_error, Error, Result};
+use crate::gl::state::LightingMode;
+use crate::mesh::Vertex;
+use crate::shaders;
+use crate::vk::Device;
+
+pub const COLOR_FORMAT: vk::Format = vk::Format::R8G8B8A8_UNORM;
+pub const DEPTH_FORMAT: vk::Format = vk::Format::D32_SFLOAT;
+
+/// The stage files of each mode.
+fn stage_files(mode: LightingMode) -> (&'static str, &'static str) {
+    match mode {
+        LightingMode::Vertex => ("gouraud.vert", "gouraud.frag"),
+        LightingMode::Fragment => ("phong.vert", "phong.frag"),
+        LightingMode::Flat => ("flat.vert", "flat.frag"),
+    }
+}
+
+/// A shader module that destroys itself.
+struct ShaderModule<'a> {
+    device: &'a Device,
+    raw: vk::ShaderModule,
+}
+
+impl<'a> ShaderModule<'a> {
+    fn new(device: &'a Device, name: &str) -> Result<Self> {
+        let bytes = shaders::spirv(name).ok_or_else(|| Error::MissingFeature(format!("embedded shader {name}")))?;
+        let words = ash::util::read_spv(&mut std::io::Cursor::new(bytes))
+            .map_err(|e| Error::MissingFeature(format!("valid SPIR-V in {name}: {e}")))?;
+        let info = vk::ShaderModuleCreateInfo::default().code(&words);
+        // SAFETY: words is SPIR-V produced by glslang at build time.
+        let raw = unsafe { device.raw.create_shader_module(&info, None) }
+            .map_err(vk_error("vkCreateShaderModule"))?;
+        Ok(ShaderModule { device, raw })
+    }
+}
+
+impl Drop for ShaderModule<'_> {
+    fn drop(&mut self) {
+        // SAFETY: modules are only needed while pipelines are created; none is in use.
+        unsafe { self.device.raw.destroy_shader_module(self.raw, None) }
+    }
+}
+
+/// The descriptor layout, pipeline layout, cache and the pipelines of every mode.
+pub struct Pipelines {
+    device: Arc<Device>,
+    pub(crate) set_layout: vk::DescriptorSetLayout,
+    pub(crate) layout: vk::PipelineLayout,
+    cache: vk::PipelineCache,
+    pipelines: Vec<(LightingMode, vk::Pipeline)>,
+}
+
+impl Pipelines {
+    pub fn new(device: &Arc<Device>) -> Result<Self> {
+        let vkd = &device.raw;
+        let mut p = Pipelines {
+            device: device.clone(),
+            set_layout: vk::DescriptorSetLayout::null(),
+            layout: vk::PipelineLayout::null(),
+            cache: vk::PipelineCache::null(),
+            pipelines: Vec::new(),
+        };
+        let bindings = [vk::DescriptorSetLayoutBinding::default()
+            .binding(0)
+            .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC)
+            .descriptor_count(1)
+            .stage_flags(vk::ShaderStageFlags::VERTEX | vk::ShaderStageFlags::FRAGMENT)];
+        let info = vk::DescriptorSetLayoutCreateInfo::default().bindings(&bindings);
+        // SAFETY: valid create infos on a live device; each handle is stored in `p` at once
+        // so Drop frees it if a later step fails.
+        p.set_layout = unsafe { vkd.create_descriptor_set_layout(&info, None) }
+            .map_err(vk_error("vkCreateDescriptorSetLayout"))?;
+        let set_layouts = [p.set_layout];
+        let info = vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts);
+        // SAFETY: as above.
+        p.layout = unsafe { vkd.create_pipeline_layout(&info, None) }.map_err(vk_error("vkCreatePipelineLayout"))?;
+        // SAFETY: as above.
+        p.cache = unsafe { vkd.create_pipeline_cache(&vk::PipelineCacheCreateInfo::default(), None) }
+            .map_err(vk_error("vkCreatePipelineCache"))?;
+        for mode in LightingMode::ALL {
+            let pipeline = p.create(mode)?;
+            p.pipelines.push((mode, pipeline));
+        }
+        Ok(p)
+    }
+
+    pub fn get(&self, mode: LightingMode) -> vk::Pipeline {
+        self.pipelines
+            .iter()
+            .find(|(m, _)| *m == mode)
+            .map(|(_, p)| *p)
+            .expect("a pipeline is created for every mode")
+    }
+
+    fn create(&self, mode: LightingMode) -> Result<vk::Pipeline> {
+        let device = &*self.device;
+        let (vert_name, frag_name) = stage_files(mode);
+        let vert = ShaderModule::new(device, vert_name)?;
+        let frag = ShaderModule::new(device, frag_name)?;
+        let stages = [
+            vk::PipelineShaderStageCreateInfo::default()
+                .stage(vk::ShaderStageFlags::VERTEX)
+                .module(vert.raw)
+                .name(c"main"),
+            vk::PipelineShaderStageCreateInfo::default()
+                .stage(vk::ShaderStageFlags::FRAGMENT)
+                .module(frag.raw)
+                .name(c"main"),
+        ];
+        let vertex_bindings = [vk::VertexInputBindingDescription {
+            binding: 0,
+            stride: std::mem::size_of::<Vertex>() as u32,
+            input_rate: vk::VertexInputRate::VERTEX,
+        }];
+        let attribute = |location, format, offset: usize| vk::VertexInputAttributeDescription {
+            location,
+            binding: 0,
+            format,
+            offset: offset as u32,
+        };
+        let vertex_attributes = [
+            attribute(0, vk::Format::R32G32B32_SFLOAT, std::mem::offset_of!(Vertex, position)),
+            attribute(1, vk::Format::R32G32B32_SFLOAT, std::mem::offset_of!(Vertex, normal)),
+            attribute(2, vk::Format::R32G32B32A32_SFLOAT, std::mem::offset_of!(Vertex, color)),
+        ];
+        let vertex_input = vk::PipelineVertexInputStateCreateInfo::default()
+            .vertex_binding_descriptions(&vertex_bindings)
+            .vertex_attribute_descriptions(&vertex_attributes);
+        let input_assembly =
+            vk::PipelineInputAssemblyStateCreateInfo::default().topology(vk::PrimitiveTopology::TRIANGLE_LIST);
+        let viewport = vk::PipelineViewportStateCreateInfo::default().viewport_count(1).scissor_count(1);
+        // GL's flat shading takes the last vertex of each triangle.
+        let mut provoking = vk::PipelineRasterizationProvokingVertexStateCreateInfoEXT::default()
+            .provoking_vertex_mode(vk::ProvokingVertexModeEXT::LAST_VERTEX);
+        // GL defaults: no culling; counter-clockwise front faces. After the y flip of
+        // VK_FROM_GL_CLIP a GL-CCW triangle has positive area in Vulkan's formula, so
+        // Vulkan's COUNTER_CLOCKWISE matches GL's FrontFace(CCW).
+        let rasterization = vk::PipelineRasterizationStateCreateInfo::default()
+            .polygon_mode(vk::PolygonMode::FILL)
+            .cull_mode(vk::CullModeFlags::NONE)
+            .front_face(vk::FrontFace::COUNTER_CLOCKWISE)
+            .line_width(1.0)
+            .push_next(&mut provoking);
+        let multisample =
+            vk::PipelineMultisampleStateCreateInfo::default().rasterization_samples(vk::SampleCountFlags::TYPE_1);
+        let depth = vk::PipelineDepthStencilStateCreateInfo::default()
+            .depth_test_enable(true)
+            .depth_write_enable(true)
+            .depth_compare_op(vk::CompareOp::LESS);
+        let blend_attachments = [vk::PipelineColorBlendAttachmentState::default()
+            .blend_enable(false)
+            .color_write_mask(vk::ColorComponentFlags::RGBA)];
+        let blend = vk::PipelineColorBlendStateCreateInfo::default().attachments(&blend_attachments);
+        let dynamic_states = [
+            vk::DynamicState::VIEWPORT,
+            vk::DynamicState::SCISSOR,
+            vk::DynamicState::DEPTH_TEST_ENABLE,
+            vk::DynamicState::DEPTH_WRITE_ENABLE,
+        ];
+        let dynamic = vk::PipelineDynamicStateCreateInfo::default().dynamic_states(&dynamic_states);
+        let color_formats = [COLOR_FORMAT];
+        let mut rendering = vk::PipelineRenderingCreateInfo::default()
+            .color_attachment_formats(&color_formats)
+            .depth_attachment_format(DEPTH_FORMAT);
+        let info = vk::GraphicsPipelineCreateInfo::default()
+            .stages(&stages)
+            .vertex_input_state(&vertex_input)
+            .input_assembly_state(&input_assembly)
+            .viewport_state(&viewport)
+            .rasterization_state(&rasterization)
+            .multisample_state(&multisample)
+            .depth_stencil_state(&depth)
+            .color_blend_state(&blend)
+            .dynamic_state(&dynamic)
+            .layout(self.layout)
+            .push_next(&mut rendering);
+        // SAFETY: every pointer in info refers to locals alive until the call returns;
+        // the layout and cache belong to this device.
+        let pipelines = unsafe { device.raw.create_graphics_pipelines(self.cache, &[info], None) }
+            .map_err(|(_, e)| vk_error("vkCreateGraphicsPipelines")(e))?;
+        Ok(pipelines[0])
+    }
+}
+
+impl Drop for Pipelines {
+    fn drop(&mut self) {
+        let vkd = &self.device.raw;
+        // SAFETY: the renderer waits for the device to be idle before dropping its pipelines;
+        // null handles (from a failed construction) are ignored by Vulkan.
+        unsafe {
+            for (_, p) in self.pipelines.drain(..) {
+                vkd.destroy_pipeline(p, None);
+            }
+            vkd.destroy_pipeline_cache(self.cache, None);
+            vkd.destroy_pipeline_layout(self.layout, None);
+            vkd.destroy_descriptor_set_layout(self.set_layout, None);
+        }
+    }
+}

@@ -1,0 +1,219 @@
+//! Physical device choice (lavapipe by default) and the logical device with one graphics queue.
+
+use std::ffi::CStr;
+use std::sync::Arc;
+
+use ash::{ext, vk};
+
+use super::instance::Instance;
+use crate::error::{vk_error, Error, Result};
+
+/// What `ffvk info` prints and benchmarks record.
+#[derive(Debug, Clone)]
+pub struct DeviceInfo {
+    pub name: String,
+    pub device_type: String,
+    pub driver_name: String,
+    pub driver_info: String,
+    pub api_version: String,
+    pub vendor_id: u32,
+    pub device_id: u32,
+    pub max_image_dimension_2d: u32,
+    pub max_uniform_buffer_range: u32,
+    pub min_uniform_buffer_offset_alignment: u64,
+    pub max_vertex_output_components: u32,
+    pub timestamp_period_ns: f32,
+    pub timestamps_supported: bool,
+    pub pipeline_statistics_query: bool,
+    pub provoking_vertex_last: bool,
+    pub validation: bool,
+}
+
+/// The logical device, its queue and what ffvk knows about it.
+pub struct Device {
+    pub(crate) instance: Arc<Instance>,
+    pub(crate) raw: ash::Device,
+    pub(crate) queue: vk::Queue,
+    pub(crate) queue_family: u32,
+    pub(crate) memory: vk::PhysicalDeviceMemoryProperties,
+    pub(crate) limits: vk::PhysicalDeviceLimits,
+    pub(crate) info: DeviceInfo,
+}
+
+fn device_name(props: &vk::PhysicalDeviceProperties) -> String {
+    props.device_name_as_c_str().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default()
+}
+
+impl Device {
+    /// Opens the device whose name contains `requested` (case-insensitive), or lavapipe
+    /// ("llvmpipe") by default, or else the first device.
+    pub fn new(instance: Arc<Instance>, requested: Option<&str>) -> Result<Arc<Self>> {
+        let vki = &instance.raw;
+        // SAFETY: the instance is alive for the duration of the call.
+        let physicals =
+            unsafe { vki.enumerate_physical_devices() }.map_err(vk_error("vkEnumeratePhysicalDevices"))?;
+        let named: Vec<(vk::PhysicalDevice, String)> = physicals
+            .iter()
+            // SAFETY: each handle comes from the enumeration above.
+            .map(|&p| (p, device_name(&unsafe { vki.get_physical_device_properties(p) })))
+            .collect();
+        let available = if named.is_empty() {
+            "none".to_owned()
+        } else {
+            named.iter().map(|(_, n)| n.as_str()).collect::<Vec<_>>().join(", ")
+        };
+        let wanted = requested.unwrap_or("llvmpipe").to_lowercase();
+        let pick = named
+            .iter()
+            .find(|(_, n)| n.to_lowercase().contains(&wanted))
+            .or_else(|| if requested.is_none() { named.first() } else { None });
+        let Some(&(physical, _)) = pick else {
+            return Err(Error::NoDevice {
+                requested: requested.map(|r| format!(" named {r:?}")).unwrap_or_default(),
+                available,
+            });
+        };
+
+        // SAFETY: physical is a valid handle from this instance.
+        let (props, memory, families) = unsafe {
+            (
+                vki.get_physical_device_properties(physical),
+                vki.get_physical_device_memory_properties(physical),
+                vki.get_physical_device_queue_family_properties(physical),
+            )
+        };
+        if props.api_version < vk::API_VERSION_1_3 {
+            return Err(Error::MissingFeature(format!(
+                "Vulkan 1.3 (the device offers {})",
+                version_string(props.api_version)
+            )));
+        }
+        let queue_family = families
+            .iter()
+            .position(|f| f.queue_flags.contains(vk::QueueFlags::GRAPHICS))
+            .ok_or_else(|| Error::MissingFeature("a graphics queue".into()))? as u32;
+        let timestamps_supported = families[queue_family as usize].timestamp_valid_bits > 0;
+
+        // Features: dynamic rendering (1.3), last-vertex provoking convention (GL's flat
+        // shading), pipeline statistics (benchmarks).
+        let mut provoking = vk::PhysicalDeviceProvokingVertexFeaturesEXT::default();
+        let mut v13 = vk::PhysicalDeviceVulkan13Features::default();
+        let mut features = vk::PhysicalDeviceFeatures2::default().push_next(&mut v13).push_next(&mut provoking);
+        let mut driver = vk::PhysicalDeviceDriverProperties::default();
+        let mut props2 = vk::PhysicalDeviceProperties2::default().push_next(&mut driver);
+        // SAFETY: the chained structs live until the calls return.
+        unsafe {
+            vki.get_physical_device_features2(physical, &mut features);
+            vki.get_physical_device_properties2(physical, &mut props2);
+        }
+        let pipeline_statistics_query = features.features.pipeline_statistics_query == vk::TRUE;
+        if v13.dynamic_rendering != vk::TRUE {
+            return Err(Error::MissingFeature("dynamicRendering".into()));
+        }
+        // SAFETY: physical is valid.
+        let extensions = unsafe { vki.enumerate_device_extension_properties(physical) }
+            .map_err(vk_error("vkEnumerateDeviceExtensionProperties"))?;
+        let has_provoking = extensions
+            .iter()
+            .any(|e| e.extension_name_as_c_str().is_ok_and(|n| n == ext::provoking_vertex::NAME));
+        let provoking_vertex_last = has_provoking && provoking.provoking_vertex_last == vk::TRUE;
+        if !provoking_vertex_last {
+            return Err(Error::MissingFeature(
+                "VK_EXT_provoking_vertex with provokingVertexLast (GL's flat shading takes the last vertex)".into(),
+            ));
+        }
+
+        let cstr = |bytes: &[std::ffi::c_char]| {
+            // SAFETY: the driver properties hold NUL-terminated strings within their arrays.
+            unsafe { CStr::from_ptr(bytes.as_ptr()) }.to_string_lossy().into_owned()
+        };
+        let info = DeviceInfo {
+            name: device_name(&props),
+            device_type: format!("{:?}", props.device_type),
+            driver_name: cstr(&driver.driver_name),
+            driver_info: cstr(&driver.driver_info),
+            api_version: version_string(props.api_version),
+            vendor_id: props.vendor_id,
+            device_id: props.device_id,
+            max_image_dimension_2d: props.limits.max_image_dimension2_d,
+            max_uniform_buffer_range: props.limits.max_uniform_buffer_range,
+            min_uniform_buffer_offset_alignment: props.limits.min_uniform_buffer_offset_alignment,
+            max_vertex_output_components: props.limits.max_vertex_output_components,
+            timestamp_period_ns: props.limits.timestamp_period,
+            timestamps_supported,
+            pipeline_statistics_query,
+            provoking_vertex_last,
+            validation: instance.validation_enabled(),
+        };
+
+        let priorities = [1.0f32];
+        let queues = [vk::DeviceQueueCreateInfo::default()
+            .queue_family_index(queue_family)
+            .queue_priorities(&priorities)];
+        let extension_names = [ext::provoking_vertex::NAME.as_ptr()];
+        let mut enable_v13 = vk::PhysicalDeviceVulkan13Features::default().dynamic_rendering(true);
+        let mut enable_provoking =
+            vk::PhysicalDeviceProvokingVertexFeaturesEXT::default().provoking_vertex_last(true);
+        let base = vk::PhysicalDeviceFeatures::default().pipeline_statistics_query(pipeline_statistics_query);
+        let create = vk::DeviceCreateInfo::default()
+            .queue_create_infos(&queues)
+            .enabled_extension_names(&extension_names)
+            .enabled_features(&base)
+            .push_next(&mut enable_v13)
+            .push_next(&mut enable_provoking);
+        // SAFETY: the create info and everything it points to live until the call returns.
+        let raw = unsafe { vki.create_device(physical, &create, None) }.map_err(vk_error("vkCreateDevice"))?;
+        // SAFETY: the queue family and index 0 were requested above.
+        let queue = unsafe { raw.get_device_queue(queue_family, 0) };
+
+        Ok(Arc::new(Device {
+            instance,
+            raw,
+            queue,
+            queue_family,
+            memory,
+            limits: props.limits,
+            info,
+        }))
+    }
+
+    pub fn info(&self) -> &DeviceInfo {
+        &self.info
+    }
+
+    /// A memory type index allowed by `type_bits` with all of `flags`.
+    pub(crate) fn memory_type(&self, type_bits: u32, flags: vk::MemoryPropertyFlags) -> Result<u32> {
+        (0..self.memory.memory_type_count)
+            .find(|&i| {
+                type_bits & (1 << i) != 0 && self.memory.memory_types[i as usize].property_flags.contains(flags)
+            })
+            .ok_or_else(|| Error::MissingFeature(format!("a memory type with {flags:?}")))
+    }
+
+    /// Waits until the device is idle.
+    pub(crate) fn wait_idle(&self) -> Result<()> {
+        // SAFETY: the device is alive; no other thread submits to its queue (the renderer
+        // owns the only queue and takes &mut self to submit).
+        unsafe { self.raw.device_wait_idle() }.map_err(vk_error("vkDeviceWaitIdle"))
+    }
+}
+
+impl Drop for Device {
+    fn drop(&mut self) {
+        // SAFETY: every child holds an Arc<Device>, so none is left; waiting first makes
+        // sure no submitted work still uses the device.
+        unsafe {
+            let _ = self.raw.device_wait_idle();
+            self.raw.destroy_device(None);
+        }
+    }
+}
+
+pub(crate) fn version_string(v: u32) -> String {
+    format!(
+        "{}.{}.{}",
+        vk::api_version_major(v),
+        vk::api_version_minor(v),
+        vk::api_version_patch(v)
+    )
+}

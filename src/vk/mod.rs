@@ -1,0 +1,10 @@
+//! A thin, owned layer over `ash`: every object holds an `Arc` of what it was made from and
+//! frees itself in `Drop`, so a child can never outlive its device or instance.
+
+pub mod device;
+pub mod instance;
+pub mod resources;
+
+pub use device::{Device, DeviceInfo};
+pub use instance::{Instance, Validation, ValidationSink};
+pub use resources::{Buffer, Image};
