@@ -9,6 +9,7 @@ pub mod gl;
 pub mod layout;
 pub mod mesh;
 pub mod pipeline;
+pub mod reference;
 pub mod renderer;
 pub mod shaders;
 pub mod vk;

@@ -37,3 +37,50 @@ impl MeshData {
         self.indices.len() / 3
     }
 }
+
+impl MeshData {
+    /// A unit sphere centered at the origin, `slices` around the y axis and `stacks` from
+    /// pole to pole, with unit outward normals, counter-clockwise seen from outside, white.
+    pub fn uv_sphere(slices: u32, stacks: u32) -> MeshData {
+        let (slices, stacks) = (slices.max(3), stacks.max(2));
+        let mut vertices = Vec::with_capacity(((slices + 1) * (stacks + 1)) as usize);
+        for j in 0..=stacks {
+            let theta = std::f32::consts::PI * j as f32 / stacks as f32; // from +y down
+            for i in 0..=slices {
+                let phi = std::f32::consts::TAU * i as f32 / slices as f32;
+                let n = Vec3::new(theta.sin() * phi.sin(), theta.cos(), theta.sin() * phi.cos());
+                vertices.push(Vertex::new(n, n, Vec4::ONE));
+            }
+        }
+        let at = |i: u32, j: u32| j * (slices + 1) + i;
+        let mut indices = Vec::with_capacity((slices * stacks * 6) as usize);
+        for j in 0..stacks {
+            for i in 0..slices {
+                let (a, b, c, d) = (at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i + 1, j));
+                if j > 0 {
+                    indices.extend([a, b, d]);
+                }
+                if j + 1 < stacks {
+                    indices.extend([d, b, c]);
+                }
+            }
+        }
+        MeshData { vertices, indices }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sphere_winding_is_counter_clockwise_from_outside() {
+        let m = MeshData::uv_sphere(12, 8);
+        for t in m.indices.chunks(3) {
+            let p = t.map(|i| Vec3::from(m.vertices[i as usize].position));
+            let face = (p[1] - p[0]).cross(p[2] - p[0]);
+            let center = (p[0] + p[1] + p[2]) / 3.0;
+            assert!(face.dot(center) > 0.0, "triangle {t:?} faces inward");
+        }
+    }
+}

@@ -107,8 +107,8 @@ impl Device {
             vki.get_physical_device_properties2(physical, &mut props2);
         }
         let pipeline_statistics_query = features.features.pipeline_statistics_query == vk::TRUE;
-        if v13.dynamic_rendering != vk::TRUE {
-            return Err(Error::MissingFeature("dynamicRendering".into()));
+        if v13.dynamic_rendering != vk::TRUE || v13.synchronization2 != vk::TRUE {
+            return Err(Error::MissingFeature("dynamicRendering and synchronization2".into()));
         }
         // SAFETY: physical is valid.
         let extensions = unsafe { vki.enumerate_device_extension_properties(physical) }
@@ -151,7 +151,9 @@ impl Device {
             .queue_family_index(queue_family)
             .queue_priorities(&priorities)];
         let extension_names = [ext::provoking_vertex::NAME.as_ptr()];
-        let mut enable_v13 = vk::PhysicalDeviceVulkan13Features::default().dynamic_rendering(true);
+        let mut enable_v13 = vk::PhysicalDeviceVulkan13Features::default()
+            .dynamic_rendering(true)
+            .synchronization2(true);
         let mut enable_provoking =
             vk::PhysicalDeviceProvokingVertexFeaturesEXT::default().provoking_vertex_last(true);
         let base = vk::PhysicalDeviceFeatures::default().pipeline_statistics_query(pipeline_statistics_query);

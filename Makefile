@@ -1,0 +1,22 @@
+# The README's two commands: `make demo` and `make test`. Each installs the Debian packages
+# it needs first (scripts/setup-deps.sh), then builds with cargo.
+SHELL := /bin/bash
+CARGO ?= cargo
+export VK_DRIVER_FILES ?= /usr/share/vulkan/icd.d/lvp_icd.x86_64.json
+
+.PHONY: demo test deps test-deps check-cargo
+
+check-cargo:
+	@command -v $(CARGO) >/dev/null || { echo "ffvk: cargo not found: install a Rust toolchain (rustup) first" >&2; exit 1; }
+
+deps: check-cargo
+	@bash scripts/setup-deps.sh
+
+test-deps: check-cargo
+	@bash scripts/setup-deps.sh --test
+
+demo: deps
+	$(CARGO) run -- demo --out out/demo
+
+test: test-deps
+	$(CARGO) test --all-targets

@@ -1,0 +1,302 @@
+//! The CPU reference: GL 2.1's lighting equation (section 2.14.1) in double precision,
+//! written from the spec page independently of the GLSL, plus the vertex transform and the
+//! interpolation tests need to predict a pixel. Tests and `ffvk explain` use it.
+
+use glam::{DMat3, DVec3, DVec4, Mat4};
+
+use crate::gl::state::{ColorControl, Light, LightingMode, LightingState, Material};
+use crate::mesh::Vertex;
+
+/// One light's share of the sum, before clamping (what `ffvk explain` prints).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LightTerms {
+    pub att_i: f64,
+    pub spot_i: f64,
+    pub f_i: f64,
+    /// a_cm * a_cli
+    pub ambient: DVec3,
+    /// (n ⊙ VP_pli) d_cm * d_cli
+    pub diffuse: DVec3,
+    /// f_i (n ⊙ ĥ_i)^s_rm s_cm * s_cli
+    pub specular: DVec3,
+}
+
+/// The equation's result at one point, with every term.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Lit {
+    /// e_cm
+    pub emission: DVec3,
+    /// a_cm * a_cs
+    pub scene_ambient: DVec3,
+    pub lights: Vec<LightTerms>,
+    /// Clamped to [0, 1].
+    pub c_pri: DVec4,
+    /// Clamped to [0, 1]; alpha 1.
+    pub c_sec: DVec4,
+}
+
+impl Lit {
+    /// Color sum: RGB clamp(c_pri + c_sec), alpha from c_pri.
+    pub fn color(&self) -> DVec4 {
+        color_sum(self.c_pri, self.c_sec)
+    }
+}
+
+pub fn color_sum(c_pri: DVec4, c_sec: DVec4) -> DVec4 {
+    (c_pri.truncate() + c_sec.truncate()).clamp(DVec3::ZERO, DVec3::ONE).extend(c_pri.w)
+}
+
+fn d4(v: glam::Vec4) -> DVec4 {
+    v.as_dvec4()
+}
+
+/// d1 ⊙ d2 = max(d1 · d2, 0).
+fn odot(a: DVec3, b: DVec3) -> f64 {
+    a.dot(b).max(0.0)
+}
+
+/// x^y with 0^0 = 1 (section 2.1.1).
+fn pow_gl(x: f64, y: f64) -> f64 {
+    if y == 0.0 {
+        1.0
+    } else {
+        x.powf(y)
+    }
+}
+
+fn unit(v: DVec3) -> DVec3 {
+    let len = v.length();
+    if len > 0.0 {
+        v / len
+    } else {
+        DVec3::ZERO
+    }
+}
+
+/// The unit vector from homogeneous point p1 to p2 (the spec's P1P2 with a hat).
+pub fn unit_from_to(p1: DVec4, p2: DVec4) -> DVec3 {
+    match (p1.w == 0.0, p2.w == 0.0) {
+        (false, true) => unit(p2.truncate()),
+        (true, false) => -unit(p1.truncate()),
+        (true, true) => unit(p2.truncate() - p1.truncate()),
+        (false, false) => unit(p2.truncate() / p2.w - p1.truncate() / p1.w),
+    }
+}
+
+/// Lights eye-space point `v` with eye-space normal `n` and material `m` under `state`'s
+/// enabled lights and light model.
+pub fn light(state: &LightingState, v: DVec4, n: DVec3, m: &Material) -> Lit {
+    let (e_cm, a_cm, d_cm, s_cm) = (d4(m.emission), d4(m.ambient), d4(m.diffuse), d4(m.specular));
+    let s_rm = m.shininess as f64;
+    let a_cs = d4(state.model.ambient);
+    let p_e = DVec4::new(0.0, 0.0, 0.0, 1.0);
+
+    let emission = e_cm.truncate();
+    let scene_ambient = a_cm.truncate() * a_cs.truncate();
+    let mut c_pri = emission + scene_ambient;
+    let mut c_sec = DVec3::ZERO;
+    let mut lights = Vec::new();
+
+    for l in state.enabled_lights() {
+        let t = light_terms(state, l, v, n, a_cm, d_cm, s_cm, s_rm, p_e);
+        let scale = t.att_i * t.spot_i;
+        match state.model.color_control {
+            ColorControl::SingleColor => c_pri += scale * (t.ambient + t.diffuse + t.specular),
+            ColorControl::SeparateSpecularColor => {
+                c_pri += scale * (t.ambient + t.diffuse);
+                c_sec += scale * t.specular;
+            }
+        }
+        lights.push(t);
+    }
+    Lit {
+        emission,
+        scene_ambient,
+        lights,
+        c_pri: c_pri.extend(d_cm.w).clamp(DVec4::ZERO, DVec4::ONE),
+        c_sec: c_sec.clamp(DVec3::ZERO, DVec3::ONE).extend(1.0),
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn light_terms(
+    state: &LightingState,
+    l: &Light,
+    v: DVec4,
+    n: DVec3,
+    a_cm: DVec4,
+    d_cm: DVec4,
+    s_cm: DVec4,
+    s_rm: f64,
+    p_e: DVec4,
+) -> LightTerms {
+    let p_pli = d4(l.position);
+    let vp_pli = unit_from_to(v, p_pli);
+
+    let att_i = if p_pli.w != 0.0 {
+        let d = (p_pli.truncate() / p_pli.w - v.truncate() / v.w).length();
+        1.0 / (l.constant_attenuation as f64 + l.linear_attenuation as f64 * d + l.quadratic_attenuation as f64 * d * d)
+    } else {
+        1.0
+    };
+
+    let spot_i = if l.spot_cutoff != 180.0 {
+        let c = odot(unit_from_to(p_pli, v), unit(l.spot_direction.as_dvec3()));
+        if c >= (l.spot_cutoff as f64).to_radians().cos() {
+            pow_gl(c, l.spot_exponent as f64)
+        } else {
+            0.0
+        }
+    } else {
+        1.0
+    };
+
+    let n_vp = odot(n, vp_pli);
+    let f_i = if n_vp != 0.0 { 1.0 } else { 0.0 };
+    let h_i = if state.model.local_viewer {
+        vp_pli + unit_from_to(v, p_e)
+    } else {
+        vp_pli + DVec3::Z
+    };
+    LightTerms {
+        att_i,
+        spot_i,
+        f_i,
+        ambient: a_cm.truncate() * d4(l.ambient).truncate(),
+        diffuse: n_vp * d_cm.truncate() * d4(l.diffuse).truncate(),
+        specular: f_i * pow_gl(odot(n, unit(h_i)), s_rm) * s_cm.truncate() * d4(l.specular).truncate(),
+    }
+}
+
+/// Section 2.11.3: the eye-space normal, with RESCALE_NORMAL and NORMALIZE as enabled.
+pub fn eye_normal(state: &LightingState, modelview: Mat4, n_object: DVec3) -> DVec3 {
+    let m3 = DMat3::from_mat4(modelview.as_dmat4());
+    let inv = m3.inverse();
+    let mut n = inv.transpose() * n_object;
+    if state.rescale_normal {
+        n /= inv.row(2).length();
+    }
+    if state.normalize {
+        n = unit(n);
+    }
+    n
+}
+
+/// A vertex after the vertex stage: eye position, clip position (GL), normal and color.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EyeVertex {
+    pub eye: DVec4,
+    pub clip: DVec4,
+    pub normal: DVec3,
+    pub color: DVec4,
+}
+
+pub fn transform(state: &LightingState, modelview: Mat4, projection: Mat4, v: &Vertex) -> EyeVertex {
+    let eye = modelview.as_dmat4() * DVec3::from(v.position.map(f64::from)).extend(1.0);
+    EyeVertex {
+        eye,
+        clip: projection.as_dmat4() * eye,
+        normal: eye_normal(state, modelview, DVec3::from(v.normal.map(f64::from))),
+        color: DVec4::from(v.color.map(f64::from)),
+    }
+}
+
+/// The lit colors of one face at one point: two-sided lighting takes the back material
+/// and −n for the back face; COLOR_MATERIAL applies the current color.
+pub fn light_face(state: &LightingState, eye: DVec4, normal: DVec3, color: DVec4, back: bool) -> Lit {
+    let two_sided_back = back && state.model.two_side;
+    let material = if two_sided_back { &state.back } else { &state.front };
+    let material = state
+        .color_material
+        .apply(material, color.as_vec4(), two_sided_back);
+    let n = if two_sided_back { -normal } else { normal };
+    light(state, eye, n, &material)
+}
+
+/// The color GL produces at one vertex for one face (lighting off: the current color).
+pub fn vertex_color(state: &LightingState, v: &EyeVertex, back: bool) -> (DVec4, DVec4) {
+    if !state.lighting {
+        return (v.color, DVec4::new(0.0, 0.0, 0.0, 1.0));
+    }
+    let lit = light_face(state, v.eye, v.normal, v.color, back);
+    (lit.c_pri, lit.c_sec)
+}
+
+/// A pixel's position within one triangle, from the rasterizer's point of view.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Coverage {
+    /// Perspective-correct barycentric weights of the three vertices.
+    pub weights: DVec3,
+    /// Whether the window-space winding is counter-clockwise (GL's front under FrontFace(CCW)).
+    pub front: bool,
+}
+
+/// Window-space position (x right, y down from the image's top row, in pixels) of a GL clip position.
+pub fn window(clip: DVec4, width: u32, height: u32) -> (f64, f64) {
+    let ndc = clip.truncate() / clip.w;
+    ((ndc.x + 1.0) * 0.5 * width as f64, (1.0 - ndc.y) * 0.5 * height as f64)
+}
+
+/// The perspective-correct weights at the center of pixel (px, py) (row 0 at the top), or
+/// `None` when the center is outside the triangle.
+pub fn coverage(clip: [DVec4; 3], width: u32, height: u32, px: u32, py: u32) -> Option<Coverage> {
+    let p: Vec<(f64, f64)> = clip.iter().map(|c| window(*c, width, height)).collect();
+    let (x, y) = (px as f64 + 0.5, py as f64 + 0.5);
+    let edge = |a: (f64, f64), b: (f64, f64), c: (f64, f64)| (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0);
+    let area = edge(p[0], p[1], p[2]);
+    if area == 0.0 {
+        return None;
+    }
+    let b0 = edge(p[1], p[2], (x, y)) / area;
+    let b1 = edge(p[2], p[0], (x, y)) / area;
+    let b2 = edge(p[0], p[1], (x, y)) / area;
+    if b0 < 0.0 || b1 < 0.0 || b2 < 0.0 {
+        return None;
+    }
+    // Perspective correction: weight by 1/w and renormalize.
+    let w = DVec3::new(b0 / clip[0].w, b1 / clip[1].w, b2 / clip[2].w);
+    // With y pointing down, a GL counter-clockwise triangle has negative `area` here.
+    Some(Coverage {
+        weights: w / (w.x + w.y + w.z),
+        front: area < 0.0,
+    })
+}
+
+/// What ffvk should draw at a pixel covered by triangle `tri` (object-space vertices, in
+/// order), in `state.mode`: the CPU prediction tests compare the GPU with.
+pub fn pixel_color(
+    state: &LightingState,
+    modelview: Mat4,
+    projection: Mat4,
+    tri: [&Vertex; 3],
+    cov: Coverage,
+) -> DVec4 {
+    let v = tri.map(|t| transform(state, modelview, projection, t));
+    let back = !cov.front;
+    let w = cov.weights;
+    match state.mode {
+        LightingMode::Vertex => {
+            let c = v.map(|e| vertex_color(state, &e, back));
+            let pri = c[0].0 * w.x + c[1].0 * w.y + c[2].0 * w.z;
+            let sec = c[0].1 * w.x + c[1].1 * w.y + c[2].1 * w.z;
+            color_sum(pri, sec)
+        }
+        LightingMode::Flat => {
+            let (pri, sec) = vertex_color(state, &v[2], back);
+            color_sum(pri, sec)
+        }
+        LightingMode::Fragment => {
+            let eye = v[0].eye * w.x + v[1].eye * w.y + v[2].eye * w.z;
+            let color = v[0].color * w.x + v[1].color * w.y + v[2].color * w.z;
+            if !state.lighting {
+                return color;
+            }
+            let dirs = v.map(|e| unit(e.normal));
+            let lens = v.map(|e| e.normal.length());
+            let dir = dirs[0] * w.x + dirs[1] * w.y + dirs[2] * w.z;
+            let len = lens[0] * w.x + lens[1] * w.y + lens[2] * w.z;
+            light_face(state, eye, unit(dir) * len, color, back).color()
+        }
+    }
+}
+

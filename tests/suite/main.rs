@@ -1,0 +1,8 @@
+//! ffvk's integration tests: one binary, modules by area.
+
+mod layout;
+mod lighting;
+mod reference;
+mod render_path;
+mod state;
+mod support;

@@ -1,0 +1,164 @@
+//! The render path end to end: clear, coverage, orientation, winding, depth, many frames,
+//! errors.
+
+use ffvk::gl::state::{Cap, Face, GlState, LightModelParam, MaterialParam};
+use ffvk::{Draw, Error, Frame};
+use glam::{DVec4, Mat4, Vec4};
+
+use crate::support::*;
+
+#[test]
+fn clear_color_fills_the_image() {
+    let mut r = renderer();
+    let mut frame = Frame::new(32, 16);
+    frame.clear_color = Vec4::new(0.25, 0.5, 0.75, 1.0);
+    let image = r.render(&frame).unwrap();
+    assert_eq!(image.dimensions(), (32, 16));
+    for (x, y, _) in image.enumerate_pixels() {
+        assert_pixel(&image, x, y, DVec4::new(0.25, 0.5, 0.75, 1.0), 0.5, "clear");
+    }
+    finish(r);
+}
+
+#[test]
+fn top_of_the_view_is_the_top_row_and_x_points_right() {
+    let mut r = renderer();
+    // Unlit, identity matrices: NDC directly. A red quad in the top-left quarter.
+    let red = Vec4::new(1.0, 0.0, 0.0, 1.0);
+    let mesh = r.upload(&quad(-1.0, 0.0, 0.0, 1.0, 0.0, red)).unwrap();
+    let mut frame = Frame::new(64, 64);
+    frame.draws.push(Draw {
+        mesh: &mesh,
+        modelview: Mat4::IDENTITY,
+        projection: Mat4::IDENTITY,
+        state: unlit(),
+    });
+    let image = r.render(&frame).unwrap();
+    let black = DVec4::new(0.0, 0.0, 0.0, 1.0);
+    assert_pixel(&image, 10, 10, DVec4::new(1.0, 0.0, 0.0, 1.0), 0.0, "top-left is red");
+    assert_pixel(&image, 50, 10, black, 0.0, "top-right is clear");
+    assert_pixel(&image, 10, 50, black, 0.0, "bottom-left is clear");
+    // Coverage: exactly the 32×32 top-left pixels (edges at pixel boundaries).
+    let covered = image.pixels().filter(|p| p.0[0] == 255).count();
+    assert_eq!(covered, 32 * 32, "covered pixels");
+    drop(frame);
+    drop(mesh);
+    finish(r);
+}
+
+/// Two-sided lighting with a red front emission and a blue back emission shows which face
+/// the rasterizer took: counter-clockwise in GL window coordinates must be the front.
+#[test]
+fn counter_clockwise_is_front() {
+    let mut r = renderer();
+    let mut gl = GlState::new();
+    gl.enable(Cap::Lighting).unwrap();
+    gl.light_model(LightModelParam::TwoSide(true)).unwrap();
+    gl.light_model(LightModelParam::Ambient(Vec4::ZERO)).unwrap();
+    gl.material(Face::Front, MaterialParam::Emission(Vec4::new(1.0, 0.0, 0.0, 1.0))).unwrap();
+    gl.material(Face::Back, MaterialParam::Emission(Vec4::new(0.0, 0.0, 1.0, 1.0))).unwrap();
+    // Left quad counter-clockwise; right quad the same geometry mirrored in x, so clockwise.
+    let ccw = r.upload(&quad(-1.0, -1.0, 0.0, 1.0, 0.0, Vec4::ONE)).unwrap();
+    let mirror = Mat4::from_scale(glam::Vec3::new(-1.0, 1.0, 1.0));
+    let mut frame = Frame::new(64, 64);
+    for (modelview, _) in [(Mat4::IDENTITY, "ccw"), (mirror, "cw")] {
+        frame.draws.push(Draw {
+            mesh: &ccw,
+            modelview,
+            projection: Mat4::IDENTITY,
+            state: gl.lighting,
+        });
+    }
+    let image = r.render(&frame).unwrap();
+    assert_pixel(&image, 16, 32, DVec4::new(1.0, 0.0, 0.0, 1.0), 0.0, "ccw quad shows the front");
+    assert_pixel(&image, 48, 32, DVec4::new(0.0, 0.0, 1.0, 1.0), 0.0, "cw quad shows the back");
+    drop(frame);
+    drop(ccw);
+    finish(r);
+}
+
+#[test]
+fn depth_test_keeps_the_nearest_surface() {
+    let mut r = renderer();
+    let near = r.upload(&quad(-1.0, -1.0, 1.0, 1.0, -0.5, Vec4::new(0.0, 1.0, 0.0, 1.0))).unwrap();
+    let far = r.upload(&quad(-1.0, -1.0, 1.0, 1.0, 0.5, Vec4::new(1.0, 0.0, 1.0, 1.0))).unwrap();
+    let draw = |mesh| Draw {
+        mesh,
+        modelview: Mat4::IDENTITY,
+        projection: Mat4::IDENTITY,
+        state: unlit(),
+    };
+    // GL's identity projection keeps z: -0.5 is nearer than 0.5. Draw near first.
+    let mut frame = Frame::new(16, 16);
+    frame.draws = vec![draw(&near), draw(&far)];
+    let image = r.render(&frame).unwrap();
+    assert_pixel(&image, 8, 8, DVec4::new(0.0, 1.0, 0.0, 1.0), 0.0, "depth test on: near wins");
+    frame.depth_test = false;
+    let image = r.render(&frame).unwrap();
+    assert_pixel(&image, 8, 8, DVec4::new(1.0, 0.0, 1.0, 1.0), 0.0, "depth test off: last wins");
+    drop(frame);
+    drop((near, far));
+    finish(r);
+}
+
+#[test]
+fn one_renderer_draws_many_frames_and_sizes() {
+    let mut r = renderer();
+    let mesh = r.upload(&quad(-0.5, -0.5, 0.5, 0.5, 0.0, Vec4::ONE)).unwrap();
+    for i in 0..60u32 {
+        let size = 8 + (i % 5) * 12;
+        let mut frame = Frame::new(size, size + 3);
+        let g = i as f32 / 60.0;
+        frame.clear_color = Vec4::new(0.0, g, 0.0, 1.0);
+        // A growing number of draws exercises the uniform buffer's growth.
+        for _ in 0..=i {
+            frame.draws.push(Draw {
+                mesh: &mesh,
+                modelview: Mat4::IDENTITY,
+                projection: Mat4::IDENTITY,
+                state: unlit(),
+            });
+        }
+        let image = r.render(&frame).unwrap();
+        assert_eq!(image.dimensions(), (size, size + 3));
+        assert_pixel(&image, 0, 0, DVec4::new(0.0, g as f64, 0.0, 1.0), 0.51, &format!("frame {i} clear"));
+        assert_pixel(&image, size / 2, (size + 3) / 2, DVec4::ONE, 0.0, &format!("frame {i} quad"));
+    }
+    drop(mesh);
+    finish(r);
+}
+
+#[test]
+fn bad_sizes_and_meshes_are_errors() {
+    let mut r = renderer();
+    let max = r.device_info().max_image_dimension_2d;
+    for (w, h) in [(0, 16), (16, 0), (max + 1, 4)] {
+        match r.render(&Frame::new(w, h)) {
+            Err(Error::InvalidSize { width, height, .. }) => assert_eq!((width, height), (w, h)),
+            other => panic!("size {w}x{h}: expected InvalidSize, got {:?}", other.map(|_| ())),
+        }
+    }
+    let mut bad = quad(-1.0, -1.0, 1.0, 1.0, 0.0, Vec4::ONE);
+    bad.indices[4] = 9;
+    let err = r.upload(&bad).err().expect("index 9 of 4 vertices is rejected");
+    assert!(err.to_string().contains("index 4 is 9"), "{err}");
+    bad.indices.pop();
+    let err = r.upload(&bad).err().expect("5 indices are rejected");
+    assert!(err.to_string().contains("multiple of 3"), "{err}");
+    // The renderer still works after errors.
+    let image = r.render(&Frame::new(4, 4)).unwrap();
+    assert_eq!(image.dimensions(), (4, 4));
+    finish(r);
+}
+
+#[test]
+fn an_unknown_device_name_is_a_clear_error() {
+    let err = ffvk::Renderer::new(&ffvk::RendererOptions {
+        device: Some("no-such-gpu".into()),
+        validation: ffvk::vk::Validation::Off,
+    })
+    .err()
+    .expect("no device named no-such-gpu");
+    let text = err.to_string();
+    assert!(text.contains("no-such-gpu") && text.contains("llvmpipe"), "{text}");
+}

@@ -1,0 +1,119 @@
+//! Shared test helpers: a validated renderer, meshes, and pixel comparisons that report
+//! the failing pixel with its coordinates and values and save the image.
+
+use std::path::PathBuf;
+
+use ffvk::gl::state::{Cap, GlState, LightingState};
+use ffvk::mesh::{MeshData, Vertex};
+use ffvk::vk::{Validation, ValidationSink};
+use ffvk::{Renderer, RendererOptions};
+use glam::{DVec4, Mat4, Vec3, Vec4};
+use image::RgbaImage;
+
+/// A renderer with the validation layer required: its errors fail the frame that caused them.
+pub fn renderer() -> Renderer {
+    Renderer::new(&RendererOptions {
+        device: None,
+        validation: Validation::Required,
+    })
+    .expect("a renderer on lavapipe with VK_LAYER_KHRONOS_validation")
+}
+
+/// Drops the renderer and fails on any validation error reported at teardown
+/// (objects still alive when the device is destroyed, for example).
+pub fn finish(renderer: Renderer) {
+    let sink: ValidationSink = renderer.validation_sink();
+    drop(renderer);
+    let errors = sink.take_errors();
+    assert!(errors.is_empty(), "validation errors at teardown:\n{}", errors.join("\n"));
+}
+
+/// Where failing tests write their images.
+pub fn output_dir() -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/output");
+    std::fs::create_dir_all(&dir).expect("tests/output is writable");
+    dir
+}
+
+pub fn save_for_inspection(image: &RgbaImage, name: &str) -> PathBuf {
+    let path = output_dir().join(format!("{name}.png"));
+    image.save(&path).expect("tests/output is writable");
+    path
+}
+
+/// A lit GL state: lighting on, light 0 on, everything else GL's defaults.
+pub fn lit_state() -> GlState {
+    let mut gl = GlState::new();
+    gl.enable(Cap::Lighting).unwrap();
+    gl.enable(Cap::Light(0)).unwrap();
+    gl
+}
+
+/// A quad in the z = `z` plane covering [x0, x1] × [y0, y1], normal +z, counter-clockwise
+/// seen from +z, one color.
+pub fn quad(x0: f32, y0: f32, x1: f32, y1: f32, z: f32, color: Vec4) -> MeshData {
+    let n = Vec3::Z;
+    let v = |x, y| Vertex::new(Vec3::new(x, y, z), n, color);
+    MeshData {
+        vertices: vec![v(x0, y0), v(x1, y0), v(x1, y1), v(x0, y1)],
+        indices: vec![0, 1, 2, 0, 2, 3],
+    }
+}
+
+/// A regular grid over [-1, 1]² in the z = 0 plane with `n`×`n` cells, normals from `normal`,
+/// colors from `color`, counter-clockwise seen from +z.
+pub fn grid(n: u32, normal: impl Fn(f32, f32) -> Vec3, color: impl Fn(f32, f32) -> Vec4) -> MeshData {
+    let mut vertices = Vec::new();
+    for j in 0..=n {
+        for i in 0..=n {
+            let x = -1.0 + 2.0 * i as f32 / n as f32;
+            let y = -1.0 + 2.0 * j as f32 / n as f32;
+            vertices.push(Vertex::new(Vec3::new(x, y, 0.0), normal(x, y), color(x, y)));
+        }
+    }
+    let mut indices = Vec::new();
+    let at = |i: u32, j: u32| j * (n + 1) + i;
+    for j in 0..n {
+        for i in 0..n {
+            indices.extend([at(i, j), at(i + 1, j), at(i + 1, j + 1)]);
+            indices.extend([at(i, j), at(i + 1, j + 1), at(i, j + 1)]);
+        }
+    }
+    MeshData { vertices, indices }
+}
+
+/// A GL perspective projection (gluPerspective).
+pub fn perspective(fovy_deg: f32, aspect: f32, near: f32, far: f32) -> Mat4 {
+    Mat4::perspective_rh_gl(fovy_deg.to_radians(), aspect, near, far)
+}
+
+/// The pixel as 0..=255 values.
+pub fn px(image: &RgbaImage, x: u32, y: u32) -> [u8; 4] {
+    image.get_pixel(x, y).0
+}
+
+/// A reference color in 0..=255 (unrounded).
+pub fn to_255(c: DVec4) -> [f64; 4] {
+    [c.x * 255.0, c.y * 255.0, c.z * 255.0, c.w * 255.0]
+}
+
+/// Asserts pixel (x, y) is within `tol` (in 1/255 units) of `expected` (0..=1 per channel);
+/// on failure saves the image and names the pixel, both values and the image's path.
+pub fn assert_pixel(image: &RgbaImage, x: u32, y: u32, expected: DVec4, tol: f64, what: &str) {
+    let got = px(image, x, y);
+    let want = to_255(expected);
+    let worst = (0..4).map(|c| (got[c] as f64 - want[c]).abs()).fold(0.0, f64::max);
+    if worst > tol {
+        let path = save_for_inspection(image, &what.replace([' ', '/', ':', ','], "_"));
+        panic!(
+            "{what}: pixel ({x}, {y}) is {got:?}, expected {:?} (±{tol}/255, off by {worst:.2}); image at {}",
+            want.map(|v| (v * 100.0).round() / 100.0),
+            path.display()
+        );
+    }
+}
+
+/// The state with lighting disabled: vertex colors pass through.
+pub fn unlit() -> LightingState {
+    LightingState::default()
+}
