@@ -1,1 +1,382 @@
-//! TODO
+//! GPU against the CPU reference: every term alone and in combination, every trap of the
+//! spec page, in each lighting mode, at probe pixels, within 1/255 per channel.
+
+use ffvk::gl::state::*;
+use ffvk::mesh::MeshData;
+use ffvk::reference;
+use ffvk::{Draw, Frame};
+use glam::{DVec4, Mat4, Vec3, Vec4};
+
+use crate::support::*;
+
+const SIZE: u32 = 96;
+/// Probes stay this many pixels away from every triangle edge, so that rasterization
+/// tie-breaking cannot pick a different triangle than the reference.
+const EDGE_MARGIN: f64 = 0.75;
+
+/// What a scene draws.
+pub struct Scene {
+    pub mesh: MeshData,
+    pub modelview: Mat4,
+    pub projection: Mat4,
+    pub gl: GlState,
+}
+
+fn sphere_scene(gl: GlState) -> Scene {
+    Scene {
+        mesh: MeshData::uv_sphere(24, 16),
+        modelview: Mat4::from_translation(Vec3::new(0.0, 0.0, -3.0)),
+        projection: perspective(45.0, 1.0, 1.0, 10.0),
+        gl,
+    }
+}
+
+/// An open, gently curved sheet, tilted so that its back faces the viewer when `back`.
+fn sheet_scene(gl: GlState, back: bool) -> Scene {
+    let mesh = grid(
+        8,
+        |x, y| Vec3::new(0.3 * x, 0.2 * y, 1.0),
+        |x, y| Vec4::new(0.5 + 0.5 * x, 0.5 + 0.5 * y, 0.8, 1.0),
+    );
+    let turn = if back { Mat4::from_rotation_y(std::f32::consts::PI) } else { Mat4::IDENTITY };
+    Scene {
+        mesh,
+        modelview: Mat4::from_translation(Vec3::new(0.0, 0.0, -3.0)) * Mat4::from_rotation_x(-0.4) * turn,
+        projection: perspective(45.0, 1.0, 1.0, 10.0),
+        gl,
+    }
+}
+
+/// Renders `scene` in `mode` and compares probe pixels with the CPU reference.
+fn check(name: &str, scene: &Scene, mode: LightingMode) {
+    let mut r = renderer();
+    let mesh = r.upload(&scene.mesh).unwrap();
+    let mut state = scene.gl.lighting;
+    state.mode = mode;
+    let mut frame = Frame::new(SIZE, SIZE);
+    frame.clear_color = Vec4::new(0.1, 0.2, 0.3, 1.0);
+    frame.draws.push(Draw {
+        mesh: &mesh,
+        modelview: scene.modelview,
+        projection: scene.projection,
+        state,
+    });
+    let image = r.render(&frame).unwrap();
+
+    let v = &scene.mesh.vertices;
+    let clips: Vec<DVec4> = v
+        .iter()
+        .map(|v| reference::transform(&state, scene.modelview, scene.projection, v).clip)
+        .collect();
+    let mut probes = 0;
+    for py in (1..SIZE).step_by(2) {
+        for px in (1..SIZE).step_by(2) {
+            // The nearest triangle covering the pixel center (depth test LESS).
+            let mut best: Option<(f64, [usize; 3], reference::Coverage)> = None;
+            for t in scene.mesh.indices.chunks(3) {
+                let idx = [t[0] as usize, t[1] as usize, t[2] as usize];
+                let clip = idx.map(|i| clips[i]);
+                let Some(cov) = reference::coverage(clip, SIZE, SIZE, px, py) else { continue };
+                let w = cov.weights;
+                let z = (clip[0].z / clip[0].w) * w.x + (clip[1].z / clip[1].w) * w.y + (clip[2].z / clip[2].w) * w.z;
+                if best.as_ref().is_none_or(|b| z < b.0) {
+                    best = Some((z, idx, cov));
+                }
+            }
+            let Some((_, idx, cov)) = best else { continue };
+            if !away_from_edges(idx.map(|i| clips[i]), px, py) {
+                continue;
+            }
+            let tri = idx.map(|i| &v[i]);
+            let want = reference::pixel_color(&state, scene.modelview, scene.projection, tri, cov);
+            assert_pixel(&image, px, py, want, 1.0, &format!("{name} {}", mode.name()));
+            probes += 1;
+        }
+    }
+    assert!(probes > 60, "{name}: only {probes} probes landed inside triangles");
+    drop(frame);
+    drop(mesh);
+    finish(r);
+}
+
+/// Whether the pixel center is at least EDGE_MARGIN pixels inside the triangle.
+fn away_from_edges(clip: [DVec4; 3], px: u32, py: u32) -> bool {
+    let p = clip.map(|c| reference::window(c, SIZE, SIZE));
+    let (x, y) = (px as f64 + 0.5, py as f64 + 0.5);
+    (0..3).all(|i| {
+        let (a, b) = (p[i], p[(i + 1) % 3]);
+        let len = ((b.0 - a.0).powi(2) + (b.1 - a.1).powi(2)).sqrt();
+        let dist = ((b.0 - a.0) * (y - a.1) - (b.1 - a.1) * (x - a.0)).abs() / len;
+        dist >= EDGE_MARGIN
+    })
+}
+
+/// One test per scene, each checking the three modes.
+macro_rules! scenes {
+    ($($name:ident => $scene:expr;)*) => {
+        $(
+            #[test]
+            fn $name() {
+                let scene: Scene = $scene;
+                for mode in LightingMode::ALL {
+                    check(stringify!($name), &scene, mode);
+                }
+            }
+        )*
+    };
+}
+
+fn rgba(r: f32, g: f32, b: f32, a: f32) -> Vec4 {
+    Vec4::new(r, g, b, a)
+}
+
+/// GL state with lighting on and light 0 off: each scene enables what it tests.
+fn dark() -> GlState {
+    let mut gl = GlState::new();
+    gl.enable(Cap::Lighting).unwrap();
+    gl
+}
+
+fn with(mut gl: GlState, f: impl FnOnce(&mut GlState) -> Result<(), StateError>) -> GlState {
+    f(&mut gl).unwrap();
+    gl
+}
+
+scenes! {
+    lighting_off_passes_the_vertex_color => sheet_scene(GlState::new(), false);
+    gl_defaults_with_light_0 => sphere_scene(lit_state());
+    emission_only => sphere_scene(with(dark(), |gl| {
+        gl.light_model(LightModelParam::Ambient(Vec4::ZERO))?;
+        gl.material(Face::Front, MaterialParam::Emission(rgba(0.3, 0.5, 0.7, 1.0)))
+    }));
+    scene_ambient_only => sphere_scene(with(dark(), |gl| {
+        gl.light_model(LightModelParam::Ambient(rgba(0.4, 0.6, 0.8, 1.0)))?;
+        gl.material(Face::Front, MaterialParam::Ambient(rgba(0.9, 0.5, 0.25, 1.0)))
+    }));
+    light_ambient_only => sphere_scene(with(dark(), |gl| {
+        gl.light_model(LightModelParam::Ambient(Vec4::ZERO))?;
+        gl.enable(Cap::Light(3))?;
+        gl.light(3, LightParam::Ambient(rgba(0.5, 0.7, 0.9, 1.0)))
+    }));
+    diffuse_directional => sphere_scene(with(dark(), |gl| {
+        gl.light_model(LightModelParam::Ambient(Vec4::ZERO))?;
+        gl.enable(Cap::Light(1))?;
+        gl.light(1, LightParam::Diffuse(rgba(0.9, 0.8, 0.6, 1.0)))?;
+        gl.light(1, LightParam::Position(Vec4::new(1.0, 1.0, 1.0, 0.0)))
+    }));
+    specular_shininess_zero_is_one => sphere_scene(with(dark(), |gl| {
+        // 0^0 = 1: wherever n · L > 0 the specular term is s_cm * s_cli.
+        gl.light_model(LightModelParam::Ambient(Vec4::ZERO))?;
+        gl.enable(Cap::Light(0))?;
+        gl.light(0, LightParam::Diffuse(Vec4::ZERO))?;
+        gl.light(0, LightParam::Position(Vec4::new(1.0, 0.0, 0.3, 0.0)))?;
+        gl.material(Face::Front, MaterialParam::Specular(rgba(0.6, 0.5, 0.4, 1.0)))
+    }));
+    specular_infinite_viewer => sphere_scene(with(dark(), |gl| {
+        gl.light_model(LightModelParam::Ambient(Vec4::ZERO))?;
+        gl.enable(Cap::Light(0))?;
+        gl.light(0, LightParam::Diffuse(Vec4::ZERO))?;
+        gl.light(0, LightParam::Position(Vec4::new(-1.0, 1.0, 1.0, 0.0)))?;
+        gl.material(Face::Front, MaterialParam::Specular(rgba(1.0, 0.9, 0.8, 1.0)))?;
+        gl.material(Face::Front, MaterialParam::Shininess(20.0))
+    }));
+    specular_local_viewer => sphere_scene(with(dark(), |gl| {
+        gl.light_model(LightModelParam::Ambient(Vec4::ZERO))?;
+        gl.light_model(LightModelParam::LocalViewer(true))?;
+        gl.enable(Cap::Light(0))?;
+        gl.light(0, LightParam::Diffuse(Vec4::ZERO))?;
+        gl.light(0, LightParam::Position(Vec4::new(-1.0, 1.0, 1.0, 0.0)))?;
+        gl.material(Face::Front, MaterialParam::Specular(rgba(1.0, 0.9, 0.8, 1.0)))?;
+        gl.material(Face::Front, MaterialParam::Shininess(20.0))
+    }));
+    specular_needs_light_in_front_f_i => sphere_scene(with(dark(), |gl| {
+        // The light sits behind the sphere's visible side: f_i must remove the highlight the
+        // halfway vector would otherwise put on the rim.
+        gl.light_model(LightModelParam::Ambient(Vec4::ZERO))?;
+        gl.enable(Cap::Light(0))?;
+        gl.light(0, LightParam::Diffuse(Vec4::ZERO))?;
+        gl.light(0, LightParam::Position(Vec4::new(0.0, 0.2, -1.0, 0.0)))?;
+        gl.material(Face::Front, MaterialParam::Specular(Vec4::ONE))?;
+        gl.material(Face::Front, MaterialParam::Shininess(1.0))
+    }));
+    point_light_with_attenuation => sphere_scene(with(dark(), |gl| {
+        gl.enable(Cap::Light(2))?;
+        gl.light(2, LightParam::Diffuse(rgba(2.0, 1.8, 1.5, 1.0)))?;
+        gl.light(2, LightParam::Specular(rgba(1.0, 1.0, 1.0, 1.0)))?;
+        gl.light(2, LightParam::Position(Vec4::new(1.5, 1.0, -1.5, 1.0)))?;
+        gl.light(2, LightParam::ConstantAttenuation(0.5))?;
+        gl.light(2, LightParam::LinearAttenuation(0.3))?;
+        gl.light(2, LightParam::QuadraticAttenuation(0.2))?;
+        gl.material(Face::Front, MaterialParam::Specular(rgba(0.5, 0.5, 0.5, 1.0)))?;
+        gl.material(Face::Front, MaterialParam::Shininess(40.0))
+    }));
+    spot_exponent_zero_hard_edge => sphere_scene(with(dark(), |gl| {
+        gl.light_model(LightModelParam::Ambient(Vec4::ZERO))?;
+        gl.enable(Cap::Light(0))?;
+        gl.light(0, LightParam::Position(Vec4::new(0.0, 0.0, 0.0, 1.0)))?;
+        gl.light(0, LightParam::SpotDirection(Vec3::new(0.1, 0.2, -1.0)))?;
+        gl.light(0, LightParam::SpotCutoff(12.0))
+    }));
+    spot_exponent_soft => sphere_scene(with(dark(), |gl| {
+        gl.enable(Cap::Light(0))?;
+        gl.light(0, LightParam::Position(Vec4::new(1.0, 1.0, 0.0, 1.0)))?;
+        gl.light(0, LightParam::SpotDirection(Vec3::new(-1.0, -1.0, -3.0)))?;
+        gl.light(0, LightParam::SpotCutoff(30.0))?;
+        gl.light(0, LightParam::SpotExponent(20.0))
+    }));
+    spot_on_a_directional_light => sphere_scene(with(dark(), |gl| {
+        // w = 0: P_pliV is the negated light direction, which the cone still applies to.
+        gl.enable(Cap::Light(0))?;
+        gl.light(0, LightParam::Position(Vec4::new(0.0, 0.0, 1.0, 0.0)))?;
+        gl.light(0, LightParam::SpotDirection(Vec3::new(0.0, 0.0, -1.0)))?;
+        gl.light(0, LightParam::SpotCutoff(10.0))?;
+        gl.light(0, LightParam::SpotExponent(2.0))
+    }));
+    spot_pointing_away_is_dark => sphere_scene(with(dark(), |gl| {
+        gl.enable(Cap::Light(0))?;
+        gl.light(0, LightParam::Position(Vec4::new(0.0, 0.0, 0.0, 1.0)))?;
+        gl.light(0, LightParam::SpotDirection(Vec3::new(0.0, 0.0, 1.0)))?;
+        gl.light(0, LightParam::SpotCutoff(60.0))
+    }));
+    eight_mixed_lights => sphere_scene(eight_lights(dark()));
+    sixteen_lights => sphere_scene(with(dark(), |gl| {
+        for i in 0..MAX_LIGHTS {
+            let a = i as f32 * 0.4;
+            gl.enable(Cap::Light(i))?;
+            gl.light(i, LightParam::Diffuse(rgba(0.08, 0.06, 0.05, 1.0)))?;
+            gl.light(i, LightParam::Position(Vec4::new(a.cos(), a.sin(), 1.0, 0.0)))?;
+        }
+        Ok(())
+    }));
+    over_bright_clamps_per_vertex => sphere_scene(with(dark(), |gl| {
+        gl.enable(Cap::Light(0))?;
+        gl.light(0, LightParam::Diffuse(rgba(4.0, 2.0, 0.5, 1.0)))?;
+        gl.light(0, LightParam::Position(Vec4::new(0.5, 0.5, 1.0, 0.0)))
+    }));
+    negative_colors_subtract => sphere_scene(with(dark(), |gl| {
+        gl.light_model(LightModelParam::Ambient(rgba(1.0, 1.0, 1.0, 1.0)))?;
+        gl.enable(Cap::Light(0))?;
+        gl.light(0, LightParam::Diffuse(rgba(-0.6, -0.3, 0.0, 1.0)))?;
+        gl.light(0, LightParam::Position(Vec4::new(1.0, 0.0, 1.0, 0.0)))
+    }));
+    separate_specular_color => sphere_scene(with(specular_scene(), |gl| {
+        gl.light_model(LightModelParam::ColorControl(ColorControl::SeparateSpecularColor))
+    }));
+    alpha_comes_from_diffuse => sphere_scene(with(lit_state(), |gl| {
+        gl.material(Face::Front, MaterialParam::Diffuse(rgba(0.5, 0.6, 0.7, 0.25)))?;
+        gl.material(Face::Front, MaterialParam::Ambient(rgba(0.5, 0.6, 0.7, 0.9)))
+    }));
+    two_sided_back_uses_back_material_and_minus_n => sheet_scene(two_sided(true), true);
+    two_sided_front => sheet_scene(two_sided(true), false);
+    one_sided_back_uses_front_material_and_n => sheet_scene(two_sided(false), true);
+    color_material_ambient_and_diffuse => sheet_scene(color_material(Face::FrontAndBack, ColorMaterialMode::AmbientAndDiffuse), false);
+    color_material_ambient => sheet_scene(color_material(Face::FrontAndBack, ColorMaterialMode::Ambient), false);
+    color_material_diffuse => sheet_scene(color_material(Face::Front, ColorMaterialMode::Diffuse), false);
+    color_material_specular => sheet_scene(color_material(Face::FrontAndBack, ColorMaterialMode::Specular), false);
+    color_material_emission => sheet_scene(color_material(Face::FrontAndBack, ColorMaterialMode::Emission), false);
+    color_material_back_only_leaves_front => sheet_scene(color_material(Face::Back, ColorMaterialMode::Diffuse), false);
+    color_material_back_face_two_sided => sheet_scene(with(color_material(Face::Back, ColorMaterialMode::Diffuse), |gl| {
+        gl.light_model(LightModelParam::TwoSide(true))
+    }), true);
+    scaled_modelview_neither_normalize_nor_rescale => scaled(|_| Ok(()));
+    scaled_modelview_normalize => scaled(|gl| gl.enable(Cap::Normalize));
+    scaled_modelview_rescale_normal => scaled(|gl| gl.enable(Cap::RescaleNormal));
+    light_position_set_under_a_view_matrix => {
+        // The light is given in world space after loading a view that turns the world;
+        // glLight stores it in eye space, and later modelview changes don't move it.
+        let view = Mat4::look_at_rh(Vec3::new(2.0, 1.0, 3.0), Vec3::ZERO, Vec3::Y);
+        let mut gl = dark();
+        gl.load_modelview(view).unwrap();
+        gl.enable(Cap::Light(0)).unwrap();
+        gl.light(0, LightParam::Position(Vec4::new(0.0, 3.0, 0.0, 1.0))).unwrap();
+        gl.light(0, LightParam::SpotDirection(Vec3::new(0.0, -1.0, 0.0))).unwrap();
+        gl.light(0, LightParam::SpotCutoff(40.0)).unwrap();
+        gl.load_modelview(Mat4::IDENTITY).unwrap();
+        Scene {
+            mesh: MeshData::uv_sphere(24, 16),
+            modelview: view,
+            projection: perspective(40.0, 1.0, 1.0, 10.0),
+            gl,
+        }
+    };
+}
+
+fn specular_scene() -> GlState {
+    with(dark(), |gl| {
+        gl.enable(Cap::Light(0))?;
+        gl.light(0, LightParam::Position(Vec4::new(-1.0, 1.0, 1.0, 0.0)))?;
+        gl.material(Face::Front, MaterialParam::Diffuse(rgba(0.2, 0.3, 0.7, 1.0)))?;
+        gl.material(Face::Front, MaterialParam::Specular(rgba(0.9, 0.9, 0.9, 1.0)))?;
+        gl.material(Face::Front, MaterialParam::Shininess(12.0))
+    })
+}
+
+fn eight_lights(gl: GlState) -> GlState {
+    with(gl, |gl| {
+        gl.light_model(LightModelParam::LocalViewer(true))?;
+        let colors = [
+            rgba(0.4, 0.1, 0.1, 1.0),
+            rgba(0.1, 0.4, 0.1, 1.0),
+            rgba(0.1, 0.1, 0.4, 1.0),
+            rgba(0.3, 0.3, 0.0, 1.0),
+        ];
+        for i in 0..8 {
+            gl.enable(Cap::Light(i))?;
+            let a = i as f32 * 0.8;
+            gl.light(i, LightParam::Diffuse(colors[i % 4]))?;
+            gl.light(i, LightParam::Specular(colors[(i + 1) % 4] * 2.0))?;
+            gl.light(i, LightParam::Ambient(rgba(0.02, 0.02, 0.02, 1.0)))?;
+            match i % 3 {
+                0 => gl.light(i, LightParam::Position(Vec4::new(a.cos(), a.sin(), 0.8, 0.0)))?,
+                1 => {
+                    gl.light(i, LightParam::Position(Vec4::new(2.0 * a.cos(), 2.0 * a.sin(), -1.0, 1.0)))?;
+                    gl.light(i, LightParam::LinearAttenuation(0.2))?;
+                }
+                _ => {
+                    gl.light(i, LightParam::Position(Vec4::new(a.cos(), a.sin(), 0.0, 1.0)))?;
+                    gl.light(i, LightParam::SpotDirection(Vec3::new(-a.cos(), -a.sin(), -3.0)))?;
+                    gl.light(i, LightParam::SpotCutoff(25.0))?;
+                    gl.light(i, LightParam::SpotExponent(5.0))?;
+                }
+            }
+        }
+        gl.material(Face::Front, MaterialParam::Specular(rgba(0.7, 0.7, 0.7, 1.0)))?;
+        gl.material(Face::Front, MaterialParam::Shininess(30.0))
+    })
+}
+
+fn two_sided(on: bool) -> GlState {
+    with(dark(), |gl| {
+        gl.light_model(LightModelParam::TwoSide(on))?;
+        gl.enable(Cap::Light(0))?;
+        gl.light(0, LightParam::Position(Vec4::new(0.3, 0.5, 1.0, 0.0)))?;
+        gl.enable(Cap::Light(1))?;
+        gl.light(1, LightParam::Diffuse(rgba(0.2, 0.6, 0.3, 1.0)))?;
+        gl.light(1, LightParam::Position(Vec4::new(-0.2, 0.1, -1.0, 0.0)))?;
+        gl.material(Face::Front, MaterialParam::Diffuse(rgba(0.9, 0.3, 0.2, 1.0)))?;
+        gl.material(Face::Back, MaterialParam::Diffuse(rgba(0.2, 0.4, 0.9, 1.0)))?;
+        gl.material(Face::Back, MaterialParam::Specular(rgba(0.5, 0.5, 0.5, 1.0)))?;
+        gl.material(Face::Back, MaterialParam::Shininess(10.0))
+    })
+}
+
+fn color_material(face: Face, mode: ColorMaterialMode) -> GlState {
+    with(specular_scene(), |gl| {
+        gl.color_material(face, mode);
+        gl.enable(Cap::ColorMaterial)?;
+        gl.light(0, LightParam::Position(Vec4::new(0.2, 0.4, 1.0, 0.0)))?;
+        gl.light(0, LightParam::Ambient(rgba(0.3, 0.3, 0.3, 1.0)))
+    })
+}
+
+fn scaled(f: impl FnOnce(&mut GlState) -> Result<(), StateError>) -> Scene {
+    let mut scene = sphere_scene(with(dark(), |gl| {
+        gl.enable(Cap::Light(0))?;
+        gl.light(0, LightParam::Diffuse(rgba(0.5, 0.5, 0.5, 1.0)))?;
+        gl.light(0, LightParam::Position(Vec4::new(0.5, 0.5, 1.0, 0.0)))?;
+        f(gl)
+    }));
+    // Uniform scale 0.6: without NORMALIZE or RESCALE_NORMAL normals grow by 1/0.6.
+    scene.modelview = scene.modelview * Mat4::from_scale(Vec3::splat(0.6));
+    scene
+}
