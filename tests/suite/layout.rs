@@ -1,1 +1,122 @@
-//! TODO
+//! The std140 layout of the `Draw` block, read from the SPIR-V glslang compiled, must match
+//! the Rust structs that fill it.
+
+use std::collections::HashMap;
+use std::mem::{offset_of, size_of};
+
+use ffvk::layout::{DrawBlock, GpuLight, GpuMaterial};
+
+const OP_NAME: u32 = 5;
+const OP_MEMBER_NAME: u32 = 6;
+const OP_TYPE_ARRAY: u32 = 28;
+const OP_TYPE_STRUCT: u32 = 30;
+const OP_DECORATE: u32 = 71;
+const OP_MEMBER_DECORATE: u32 = 72;
+const DECORATION_ARRAY_STRIDE: u32 = 6;
+const DECORATION_OFFSET: u32 = 35;
+
+/// What a test needs of a module: struct names, member names and offsets, array strides.
+#[derive(Default)]
+struct Reflection {
+    names: HashMap<u32, String>,
+    member_names: HashMap<(u32, u32), String>,
+    offsets: HashMap<(u32, u32), u32>,
+    strides: HashMap<u32, u32>,
+    struct_members: HashMap<u32, Vec<u32>>,
+    array_element: HashMap<u32, u32>,
+}
+
+fn string(words: &[u32]) -> String {
+    let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).take_while(|&b| b != 0).collect();
+    String::from_utf8(bytes).unwrap()
+}
+
+fn reflect(spirv: &[u8]) -> Reflection {
+    let words: Vec<u32> = spirv.chunks(4).map(|c| u32::from_le_bytes(c.try_into().unwrap())).collect();
+    assert_eq!(words[0], 0x0723_0203, "SPIR-V magic");
+    let mut r = Reflection::default();
+    let mut at = 5;
+    while at < words.len() {
+        let (count, op) = ((words[at] >> 16) as usize, words[at] & 0xffff);
+        let ins = &words[at + 1..at + count];
+        match op {
+            OP_NAME => {
+                r.names.insert(ins[0], string(&ins[1..]));
+            }
+            OP_MEMBER_NAME => {
+                r.member_names.insert((ins[0], ins[1]), string(&ins[2..]));
+            }
+            OP_MEMBER_DECORATE if ins[2] == DECORATION_OFFSET => {
+                r.offsets.insert((ins[0], ins[1]), ins[3]);
+            }
+            OP_DECORATE if ins[1] == DECORATION_ARRAY_STRIDE => {
+                r.strides.insert(ins[0], ins[2]);
+            }
+            OP_TYPE_STRUCT => {
+                r.struct_members.insert(ins[0], ins[1..].to_vec());
+            }
+            OP_TYPE_ARRAY => {
+                r.array_element.insert(ins[0], ins[1]);
+            }
+            _ => {}
+        }
+        at += count;
+    }
+    r
+}
+
+impl Reflection {
+    /// The block-layout struct named `name` (the one carrying Offset decorations).
+    fn struct_id(&self, name: &str) -> u32 {
+        *self
+            .names
+            .iter()
+            .find(|(id, n)| *n == name && self.offsets.contains_key(&(**id, 0)))
+            .unwrap_or_else(|| panic!("no laid-out struct {name} in the SPIR-V"))
+            .0
+    }
+
+    /// (member name, offset) of every member of struct `id`.
+    fn members(&self, id: u32) -> Vec<(String, u32)> {
+        (0..self.struct_members[&id].len() as u32)
+            .map(|m| (self.member_names[&(id, m)].clone(), self.offsets[&(id, m)]))
+            .collect()
+    }
+}
+
+macro_rules! rust_offsets {
+    ($ty:ty: $($field:ident),*) => {
+        vec![$((stringify!($field).to_string(), offset_of!($ty, $field) as u32)),*]
+    };
+}
+
+#[test]
+fn draw_block_matches_the_glsl_in_every_stage() {
+    for (stage, spirv) in ffvk::shaders::SHADERS {
+        let r = reflect(spirv);
+        let draw = r.struct_id("Draw");
+        let want = rust_offsets!(DrawBlock: modelview, projection, normal_matrix, front, back, a_cs,
+            light_count, lighting, v_bs, t_bs, separate_specular, color_material,
+            color_material_front, color_material_back, color_material_mode, normalize, rescale, lights);
+        assert_eq!(r.members(draw), want, "{stage}: Draw block offsets");
+
+        let material = r.struct_id("Material");
+        let want = rust_offsets!(GpuMaterial: a_cm, d_cm, s_cm, e_cm, s_rm);
+        assert_eq!(r.members(material), want, "{stage}: Material offsets");
+
+        let light = r.struct_id("Light");
+        let want = rust_offsets!(GpuLight: a_cli, d_cli, s_cli, P_pli, s_dli, s_rli, c_rli, cos_c_rli, k0, k1, k2);
+        assert_eq!(r.members(light), want, "{stage}: Light offsets");
+
+        // The lights array: its stride is the Rust struct's size, and it ends the block.
+        let members = &r.struct_members[&draw];
+        let lights_type = *members.last().unwrap();
+        assert_eq!(r.array_element[&lights_type], light, "{stage}: lights is an array of Light");
+        assert_eq!(r.strides[&lights_type] as usize, size_of::<GpuLight>(), "{stage}: Light array stride");
+        assert_eq!(
+            offset_of!(DrawBlock, lights) + ffvk::gl::state::MAX_LIGHTS * size_of::<GpuLight>(),
+            size_of::<DrawBlock>(),
+            "DrawBlock ends with the lights"
+        );
+    }
+}
