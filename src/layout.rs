@@ -4,7 +4,7 @@
 
 #![allow(non_snake_case)]
 
-use glam::{Mat3, Mat4, Vec4};
+use glam::{Mat3, Mat4};
 
 use crate::gl::state::{ColorControl, ColorMaterialMode, Light, LightingState, Material, StateError, MAX_LIGHTS};
 
@@ -132,7 +132,7 @@ impl DrawBlock {
             normal_matrix: Mat4::from_mat3(normal_matrix(modelview)).to_cols_array(),
             front: GpuMaterial::from(&state.front),
             back: GpuMaterial::from(&state.back),
-            a_cs: Vec4::from(state.model.ambient).to_array(),
+            a_cs: state.model.ambient.to_array(),
             light_count,
             lighting: state.lighting as u32,
             v_bs: state.model.local_viewer as u32,

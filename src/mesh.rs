@@ -77,7 +77,7 @@ mod tests {
     fn sphere_winding_is_counter_clockwise_from_outside() {
         let m = MeshData::uv_sphere(12, 8);
         for t in m.indices.chunks(3) {
-            let p = t.map(|i| Vec3::from(m.vertices[i as usize].position));
+            let p: [Vec3; 3] = std::array::from_fn(|k| Vec3::from(m.vertices[t[k] as usize].position));
             let face = (p[1] - p[0]).cross(p[2] - p[0]);
             let center = (p[0] + p[1] + p[2]) / 3.0;
             assert!(face.dot(center) > 0.0, "triangle {t:?} faces inward");
