@@ -4,14 +4,18 @@
 //! pipelines ([`shaders`], [`pipeline`]), the render path ([`vk`], [`renderer`]), and the
 //! CPU reference of the same equation ([`reference`]).
 
+pub mod demo;
 pub mod error;
 pub mod gl;
+pub mod images;
 pub mod layout;
 pub mod mesh;
 pub mod pipeline;
+pub mod presets;
 pub mod reference;
 pub mod renderer;
 pub mod shaders;
+pub mod teapot;
 pub mod vk;
 
 pub use error::{Error, Result};

@@ -1,0 +1,145 @@
+//! The demo: the emerald teapot under one directional light, term by term, and the same
+//! teapot in each lighting mode at a coarse tessellation, as separate PNGs and one labelled
+//! contact sheet.
+
+use std::path::Path;
+
+use glam::{Mat4, Vec3, Vec4};
+
+use crate::error::{Error, Result};
+use crate::gl::state::{Cap, Face, GlState, LightModelParam, LightParam, LightingMode, MaterialParam};
+use crate::images::{contact_sheet, save_png};
+use crate::renderer::{Draw, Frame, Renderer, RendererOptions};
+use crate::{presets, teapot};
+
+const PANEL: u32 = 320;
+
+/// Which of the light's terms a panel shows.
+struct Terms {
+    name: &'static str,
+    label: &'static str,
+    ambient: bool,
+    diffuse: bool,
+    specular: bool,
+}
+
+const PANELS: [Terms; 5] = [
+    Terms {
+        name: "a_ambient",
+        label: "(a) ambient",
+        ambient: true,
+        diffuse: false,
+        specular: false,
+    },
+    Terms {
+        name: "b_diffuse",
+        label: "(b) diffuse",
+        ambient: false,
+        diffuse: true,
+        specular: false,
+    },
+    Terms {
+        name: "c_specular",
+        label: "(c) specular",
+        ambient: false,
+        diffuse: false,
+        specular: true,
+    },
+    Terms {
+        name: "d_diffuse_specular",
+        label: "(d) diffuse + specular",
+        ambient: false,
+        diffuse: true,
+        specular: true,
+    },
+    Terms {
+        name: "e_all",
+        label: "(e) ambient + diffuse + specular",
+        ambient: true,
+        diffuse: true,
+        specular: true,
+    },
+];
+
+/// The demo's camera: looking at the teapot from above and in front.
+fn view() -> Mat4 {
+    Mat4::look_at_rh(Vec3::new(0.0, 1.2, 3.0), Vec3::new(0.0, -0.05, 0.0), Vec3::Y)
+}
+
+fn projection() -> Mat4 {
+    Mat4::perspective_rh_gl(40f32.to_radians(), 1.0, 0.5, 10.0)
+}
+
+/// The lighting state of one panel: emerald, one white directional light from the upper
+/// right front, given in world space under the view matrix as glLight would be.
+fn state(terms: &Terms, mode: LightingMode) -> Result<GlState> {
+    let mut gl = GlState::new();
+    let emerald = presets::preset("emerald").ok_or_else(|| Error::Mesh("no emerald preset".into()))?;
+    gl.lighting.front = emerald;
+    gl.lighting.back = emerald;
+    gl.enable(Cap::Lighting)?;
+    gl.enable(Cap::Light(0))?;
+    gl.lighting_mode(mode);
+    // Scene ambient off so that "ambient" is the light's own a_cli term.
+    let on = |b: bool| {
+        if b {
+            Vec4::ONE
+        } else {
+            Vec4::new(0.0, 0.0, 0.0, 1.0)
+        }
+    };
+    let scene_ambient = if terms.ambient && terms.diffuse {
+        Vec4::new(0.2, 0.2, 0.2, 1.0)
+    } else {
+        Vec4::ZERO
+    };
+    gl.light_model(LightModelParam::Ambient(scene_ambient))?;
+    gl.light(0, LightParam::Ambient(on(terms.ambient)))?;
+    gl.light(0, LightParam::Diffuse(on(terms.diffuse)))?;
+    gl.light(0, LightParam::Specular(on(terms.specular)))?;
+    gl.load_modelview(view())?;
+    gl.light(0, LightParam::Position(Vec4::new(1.0, 1.5, 1.2, 0.0)))?;
+    gl.material(Face::FrontAndBack, MaterialParam::Shininess(emerald.shininess))?;
+    Ok(gl)
+}
+
+fn render_teapot(renderer: &mut Renderer, mesh: &crate::Mesh, gl: &GlState) -> Result<image::RgbaImage> {
+    let mut frame = Frame::new(PANEL, PANEL);
+    frame.clear_color = Vec4::new(0.08, 0.08, 0.1, 1.0);
+    frame.draws.push(Draw {
+        mesh,
+        modelview: view(),
+        projection: projection(),
+        state: gl.lighting,
+    });
+    renderer.render(&frame)
+}
+
+/// Renders every panel into `out` and writes `contact_sheet.png` there.
+pub fn run(options: &RendererOptions, out: &Path) -> Result<()> {
+    let mut renderer = Renderer::new(options)?;
+    let fine = renderer.upload(&teapot::teapot(12).map_err(Error::Mesh)?)?;
+    let coarse = renderer.upload(&teapot::teapot(3).map_err(Error::Mesh)?)?;
+    let mut panels = Vec::new();
+
+    for terms in &PANELS {
+        let image = render_teapot(&mut renderer, &fine, &state(terms, LightingMode::Fragment)?)?;
+        save_png(&image, &out.join(format!("{}.png", terms.name)))?;
+        panels.push((terms.label.to_string(), image));
+    }
+    for mode in LightingMode::ALL {
+        let image = render_teapot(&mut renderer, &coarse, &state(&PANELS[4], mode)?)?;
+        save_png(&image, &out.join(format!("mode_{}.png", mode.name())))?;
+        panels.push((format!("{} (coarse mesh)", mode.name()), image));
+    }
+    let sheet = contact_sheet(&panels, 5)?;
+    let path = out.join("contact_sheet.png");
+    save_png(&sheet, &path)?;
+    println!(
+        "wrote {} and {} panels in {}",
+        path.display(),
+        panels.len(),
+        out.display()
+    );
+    Ok(())
+}
