@@ -16,12 +16,17 @@ fn main() {
 
     let mut sources: Vec<PathBuf> = match fs::read_dir(&glsl_dir) {
         Ok(dir) => dir.filter_map(|e| e.ok().map(|e| e.path())).collect(),
-        Err(e) => fail(&format!("{}: cannot read the shader directory: {e}", glsl_dir.display())),
+        Err(e) => fail(&format!(
+            "{}: cannot read the shader directory: {e}",
+            glsl_dir.display()
+        )),
     };
     sources.sort();
 
     let compiler = shaderc::Compiler::new().unwrap_or_else(|e| fail(&format!("shaderc: {e}")));
-    let mut table = String::from("/// Every compiled stage: (file name, SPIR-V bytes).\npub const SHADERS: &[(&str, &[u8])] = &[\n");
+    let mut table = String::from(
+        "/// Every compiled stage: (file name, SPIR-V bytes).\npub const SHADERS: &[(&str, &[u8])] = &[\n",
+    );
     let mut errors = Vec::new();
 
     for path in &sources {
@@ -32,12 +37,17 @@ fn main() {
             "frag" => shaderc::ShaderKind::Fragment,
             _ => continue,
         };
-        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or_default().to_owned();
+        let name = path
+            .file_name()
+            .and_then(|n| n.to_str())
+            .unwrap_or_default()
+            .to_owned();
         let source = match fs::read_to_string(path) {
             Ok(s) => s,
             Err(e) => fail(&format!("{}: {e}", path.display())),
         };
-        let mut options = shaderc::CompileOptions::new().unwrap_or_else(|e| fail(&format!("shaderc options: {e}")));
+        let mut options =
+            shaderc::CompileOptions::new().unwrap_or_else(|e| fail(&format!("shaderc options: {e}")));
         options.set_target_env(shaderc::TargetEnv::Vulkan, shaderc::EnvVersion::Vulkan1_3 as u32);
         // No spirv-opt: Debian's SPIRV-Tools 2023.1 rejects glslang 12's copies of std140
         // structs into locals ("OpStore Pointer type does not match"). The driver optimizes
@@ -52,7 +62,12 @@ fn main() {
                 if let Err(e) = fs::write(&spv, artifact.as_binary_u8()) {
                     fail(&format!("{}: {e}", spv.display()));
                 }
-                writeln!(table, "    ({name:?}, include_bytes!({:?})),", spv.display().to_string()).unwrap();
+                writeln!(
+                    table,
+                    "    ({name:?}, include_bytes!({:?})),",
+                    spv.display().to_string()
+                )
+                .unwrap();
             }
             Err(e) => errors.push(e.to_string()),
         }

@@ -6,7 +6,9 @@
 
 use glam::{Mat3, Mat4};
 
-use crate::gl::state::{ColorControl, ColorMaterialMode, Light, LightingState, Material, StateError, MAX_LIGHTS};
+use crate::gl::state::{
+    ColorControl, ColorMaterialMode, Light, LightingState, Material, StateError, MAX_LIGHTS,
+};
 
 /// GL clip space (z in [-w, w], y up) to Vulkan clip space (z in [0, w], y down), applied
 /// after the GL projection so the image's top row is the top of the view, as on a GL screen.
@@ -149,7 +151,11 @@ impl DrawBlock {
                 ColorMaterialMode::AmbientAndDiffuse => 4,
             },
             normalize: state.normalize as u32,
-            rescale: if state.rescale_normal { rescale_factor(modelview) } else { 1.0 },
+            rescale: if state.rescale_normal {
+                rescale_factor(modelview)
+            } else {
+                1.0
+            },
             _pad: 0,
             lights,
         })

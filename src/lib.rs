@@ -7,6 +7,7 @@
 pub mod demo;
 pub mod error;
 pub mod gl;
+pub mod gltf_load;
 pub mod images;
 pub mod layout;
 pub mod mesh;

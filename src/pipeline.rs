@@ -30,7 +30,8 @@ struct ShaderModule<'a> {
 
 impl<'a> ShaderModule<'a> {
     fn new(device: &'a Device, name: &str) -> Result<Self> {
-        let bytes = shaders::spirv(name).ok_or_else(|| Error::MissingFeature(format!("embedded shader {name}")))?;
+        let bytes =
+            shaders::spirv(name).ok_or_else(|| Error::MissingFeature(format!("embedded shader {name}")))?;
         let words = ash::util::read_spv(&mut std::io::Cursor::new(bytes))
             .map_err(|e| Error::MissingFeature(format!("valid SPIR-V in {name}: {e}")))?;
         let info = vk::ShaderModuleCreateInfo::default().code(&words);
@@ -80,7 +81,8 @@ impl Pipelines {
         let set_layouts = [p.set_layout];
         let info = vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts);
         // SAFETY: as above.
-        p.layout = unsafe { vkd.create_pipeline_layout(&info, None) }.map_err(vk_error("vkCreatePipelineLayout"))?;
+        p.layout =
+            unsafe { vkd.create_pipeline_layout(&info, None) }.map_err(vk_error("vkCreatePipelineLayout"))?;
         // SAFETY: as above.
         p.cache = unsafe { vkd.create_pipeline_cache(&vk::PipelineCacheCreateInfo::default(), None) }
             .map_err(vk_error("vkCreatePipelineCache"))?;
@@ -126,16 +128,30 @@ impl Pipelines {
             offset: offset as u32,
         };
         let vertex_attributes = [
-            attribute(0, vk::Format::R32G32B32_SFLOAT, std::mem::offset_of!(Vertex, position)),
-            attribute(1, vk::Format::R32G32B32_SFLOAT, std::mem::offset_of!(Vertex, normal)),
-            attribute(2, vk::Format::R32G32B32A32_SFLOAT, std::mem::offset_of!(Vertex, color)),
+            attribute(
+                0,
+                vk::Format::R32G32B32_SFLOAT,
+                std::mem::offset_of!(Vertex, position),
+            ),
+            attribute(
+                1,
+                vk::Format::R32G32B32_SFLOAT,
+                std::mem::offset_of!(Vertex, normal),
+            ),
+            attribute(
+                2,
+                vk::Format::R32G32B32A32_SFLOAT,
+                std::mem::offset_of!(Vertex, color),
+            ),
         ];
         let vertex_input = vk::PipelineVertexInputStateCreateInfo::default()
             .vertex_binding_descriptions(&vertex_bindings)
             .vertex_attribute_descriptions(&vertex_attributes);
-        let input_assembly =
-            vk::PipelineInputAssemblyStateCreateInfo::default().topology(vk::PrimitiveTopology::TRIANGLE_LIST);
-        let viewport = vk::PipelineViewportStateCreateInfo::default().viewport_count(1).scissor_count(1);
+        let input_assembly = vk::PipelineInputAssemblyStateCreateInfo::default()
+            .topology(vk::PrimitiveTopology::TRIANGLE_LIST);
+        let viewport = vk::PipelineViewportStateCreateInfo::default()
+            .viewport_count(1)
+            .scissor_count(1);
         // GL's flat shading takes the last vertex of each triangle.
         let mut provoking = vk::PipelineRasterizationProvokingVertexStateCreateInfoEXT::default()
             .provoking_vertex_mode(vk::ProvokingVertexModeEXT::LAST_VERTEX);
@@ -148,8 +164,8 @@ impl Pipelines {
             .front_face(vk::FrontFace::COUNTER_CLOCKWISE)
             .line_width(1.0)
             .push_next(&mut provoking);
-        let multisample =
-            vk::PipelineMultisampleStateCreateInfo::default().rasterization_samples(vk::SampleCountFlags::TYPE_1);
+        let multisample = vk::PipelineMultisampleStateCreateInfo::default()
+            .rasterization_samples(vk::SampleCountFlags::TYPE_1);
         let depth = vk::PipelineDepthStencilStateCreateInfo::default()
             .depth_test_enable(true)
             .depth_write_enable(true)

@@ -43,7 +43,9 @@ impl Lit {
 }
 
 pub fn color_sum(c_pri: DVec4, c_sec: DVec4) -> DVec4 {
-    (c_pri.truncate() + c_sec.truncate()).clamp(DVec3::ZERO, DVec3::ONE).extend(c_pri.w)
+    (c_pri.truncate() + c_sec.truncate())
+        .clamp(DVec3::ZERO, DVec3::ONE)
+        .extend(c_pri.w)
 }
 
 fn d4(v: glam::Vec4) -> DVec4 {
@@ -135,7 +137,9 @@ fn light_terms(
 
     let att_i = if p_pli.w != 0.0 {
         let d = (p_pli.truncate() / p_pli.w - v.truncate() / v.w).length();
-        1.0 / (l.constant_attenuation as f64 + l.linear_attenuation as f64 * d + l.quadratic_attenuation as f64 * d * d)
+        1.0 / (l.constant_attenuation as f64
+            + l.linear_attenuation as f64 * d
+            + l.quadratic_attenuation as f64 * d * d)
     } else {
         1.0
     };
@@ -234,7 +238,10 @@ pub struct Coverage {
 /// Window-space position (x right, y down from the image's top row, in pixels) of a GL clip position.
 pub fn window(clip: DVec4, width: u32, height: u32) -> (f64, f64) {
     let ndc = clip.truncate() / clip.w;
-    ((ndc.x + 1.0) * 0.5 * width as f64, (1.0 - ndc.y) * 0.5 * height as f64)
+    (
+        (ndc.x + 1.0) * 0.5 * width as f64,
+        (1.0 - ndc.y) * 0.5 * height as f64,
+    )
 }
 
 /// The perspective-correct weights at the center of pixel (px, py) (row 0 at the top), or
@@ -242,7 +249,8 @@ pub fn window(clip: DVec4, width: u32, height: u32) -> (f64, f64) {
 pub fn coverage(clip: [DVec4; 3], width: u32, height: u32, px: u32, py: u32) -> Option<Coverage> {
     let p: Vec<(f64, f64)> = clip.iter().map(|c| window(*c, width, height)).collect();
     let (x, y) = (px as f64 + 0.5, py as f64 + 0.5);
-    let edge = |a: (f64, f64), b: (f64, f64), c: (f64, f64)| (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0);
+    let edge =
+        |a: (f64, f64), b: (f64, f64), c: (f64, f64)| (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0);
     let area = edge(p[0], p[1], p[2]);
     if area == 0.0 {
         return None;
@@ -299,4 +307,3 @@ pub fn pixel_color(
         }
     }
 }
-

@@ -121,7 +121,9 @@ impl Renderer {
             ty: vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC,
             descriptor_count: 1,
         }];
-        let info = vk::DescriptorPoolCreateInfo::default().max_sets(1).pool_sizes(&pool_sizes);
+        let info = vk::DescriptorPoolCreateInfo::default()
+            .max_sets(1)
+            .pool_sizes(&pool_sizes);
         // SAFETY (this block and the three below): valid create infos on a live device;
         // each handle is stored in `renderer` immediately so Drop frees it on a later error.
         renderer.descriptor_pool =
@@ -182,16 +184,29 @@ impl Renderer {
             )));
         }
         let count = mesh.vertices.len();
-        if let Some((at, &bad)) = mesh.indices.iter().enumerate().find(|(_, &i)| i as usize >= count) {
+        if let Some((at, &bad)) = mesh
+            .indices
+            .iter()
+            .enumerate()
+            .find(|(_, &i)| i as usize >= count)
+        {
             return Err(Error::Mesh(format!(
                 "index {at} is {bad}: expected a vertex index below {count} (the vertex count)"
             )));
         }
         let vertex_bytes: &[u8] = bytemuck::cast_slice(&mesh.vertices);
         let index_bytes: &[u8] = bytemuck::cast_slice(&mesh.indices);
-        let mut vertices = Buffer::new(&self.device, vertex_bytes.len() as u64, vk::BufferUsageFlags::VERTEX_BUFFER)?;
+        let mut vertices = Buffer::new(
+            &self.device,
+            vertex_bytes.len() as u64,
+            vk::BufferUsageFlags::VERTEX_BUFFER,
+        )?;
         vertices.write(0, vertex_bytes);
-        let mut indices = Buffer::new(&self.device, index_bytes.len() as u64, vk::BufferUsageFlags::INDEX_BUFFER)?;
+        let mut indices = Buffer::new(
+            &self.device,
+            index_bytes.len() as u64,
+            vk::BufferUsageFlags::INDEX_BUFFER,
+        )?;
         indices.write(0, index_bytes);
         Ok(Mesh {
             vertices,
@@ -285,7 +300,8 @@ impl Renderer {
         let targets = self.targets.as_ref().expect("ensure_targets made them");
         let len = (frame.width * frame.height * 4) as usize;
         let pixels = targets.readback.bytes()[..len].to_vec();
-        Ok(RgbaImage::from_raw(frame.width, frame.height, pixels).expect("readback holds width*height*4 bytes"))
+        Ok(RgbaImage::from_raw(frame.width, frame.height, pixels)
+            .expect("readback holds width*height*4 bytes"))
     }
 
     fn record(&self, frame: &Frame) -> Result<()> {
@@ -300,7 +316,8 @@ impl Renderer {
         unsafe {
             vkd.reset_command_buffer(cmd, vk::CommandBufferResetFlags::empty())
                 .map_err(vk_error("vkResetCommandBuffer"))?;
-            vkd.begin_command_buffer(cmd, &begin).map_err(vk_error("vkBeginCommandBuffer"))?;
+            vkd.begin_command_buffer(cmd, &begin)
+                .map_err(vk_error("vkBeginCommandBuffer"))?;
         }
 
         let color_range = subresource(vk::ImageAspectFlags::COLOR);
@@ -319,10 +336,12 @@ impl Renderer {
                 .src_stage_mask(vk::PipelineStageFlags2::LATE_FRAGMENT_TESTS)
                 .src_access_mask(vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_WRITE)
                 .dst_stage_mask(
-                    vk::PipelineStageFlags2::EARLY_FRAGMENT_TESTS | vk::PipelineStageFlags2::LATE_FRAGMENT_TESTS,
+                    vk::PipelineStageFlags2::EARLY_FRAGMENT_TESTS
+                        | vk::PipelineStageFlags2::LATE_FRAGMENT_TESTS,
                 )
                 .dst_access_mask(
-                    vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_READ | vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_WRITE,
+                    vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_READ
+                        | vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_WRITE,
                 )
                 .old_layout(vk::ImageLayout::UNDEFINED)
                 .new_layout(vk::ImageLayout::DEPTH_ATTACHMENT_OPTIMAL)
@@ -346,7 +365,10 @@ impl Renderer {
             .load_op(vk::AttachmentLoadOp::CLEAR)
             .store_op(vk::AttachmentStoreOp::DONT_CARE)
             .clear_value(vk::ClearValue {
-                depth_stencil: vk::ClearDepthStencilValue { depth: 1.0, stencil: 0 },
+                depth_stencil: vk::ClearDepthStencilValue {
+                    depth: 1.0,
+                    stencil: 0,
+                },
             });
         let area = vk::Rect2D {
             offset: vk::Offset2D { x: 0, y: 0 },
@@ -369,14 +391,21 @@ impl Renderer {
         // SAFETY: recording into a command buffer in the recording state; every handle
         // belongs to this device and outlives the submission (render waits for it).
         unsafe {
-            vkd.cmd_pipeline_barrier2(cmd, &vk::DependencyInfo::default().image_memory_barriers(&to_attachment));
+            vkd.cmd_pipeline_barrier2(
+                cmd,
+                &vk::DependencyInfo::default().image_memory_barriers(&to_attachment),
+            );
             vkd.cmd_begin_rendering(cmd, &rendering);
             vkd.cmd_set_viewport(cmd, 0, &[viewport]);
             vkd.cmd_set_scissor(cmd, 0, &[area]);
             vkd.cmd_set_depth_test_enable(cmd, frame.depth_test);
             vkd.cmd_set_depth_write_enable(cmd, frame.depth_test);
             for (i, draw) in frame.draws.iter().enumerate() {
-                vkd.cmd_bind_pipeline(cmd, vk::PipelineBindPoint::GRAPHICS, self.pipelines.get(draw.state.mode));
+                vkd.cmd_bind_pipeline(
+                    cmd,
+                    vk::PipelineBindPoint::GRAPHICS,
+                    self.pipelines.get(draw.state.mode),
+                );
                 let offset = (i as u64 * self.uniform_stride) as u32;
                 vkd.cmd_bind_descriptor_sets(
                     cmd,
@@ -429,7 +458,10 @@ impl Renderer {
             .size(vk::WHOLE_SIZE)];
         // SAFETY: as above; the image is in TRANSFER_SRC_OPTIMAL after the barrier.
         unsafe {
-            vkd.cmd_pipeline_barrier2(cmd, &vk::DependencyInfo::default().image_memory_barriers(&to_transfer));
+            vkd.cmd_pipeline_barrier2(
+                cmd,
+                &vk::DependencyInfo::default().image_memory_barriers(&to_transfer),
+            );
             vkd.cmd_copy_image_to_buffer(
                 cmd,
                 targets.color.raw,
@@ -437,8 +469,12 @@ impl Renderer {
                 targets.readback.raw,
                 &[region],
             );
-            vkd.cmd_pipeline_barrier2(cmd, &vk::DependencyInfo::default().buffer_memory_barriers(&to_host));
-            vkd.end_command_buffer(cmd).map_err(vk_error("vkEndCommandBuffer"))?;
+            vkd.cmd_pipeline_barrier2(
+                cmd,
+                &vk::DependencyInfo::default().buffer_memory_barriers(&to_host),
+            );
+            vkd.end_command_buffer(cmd)
+                .map_err(vk_error("vkEndCommandBuffer"))?;
         }
         Ok(())
     }
@@ -455,7 +491,8 @@ impl Renderer {
                 .map_err(vk_error("vkQueueSubmit"))?;
             vkd.wait_for_fences(&[self.fence], true, u64::MAX)
                 .map_err(vk_error("vkWaitForFences"))?;
-            vkd.reset_fences(&[self.fence]).map_err(vk_error("vkResetFences"))?;
+            vkd.reset_fences(&[self.fence])
+                .map_err(vk_error("vkResetFences"))?;
         }
         Ok(())
     }

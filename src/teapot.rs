@@ -17,7 +17,7 @@
 //! outward normals are kept) after centering the control points' bounding box on the origin,
 //! then a uniform scale that maps the longest side (x, 6.525) to 2. By the convex-hull
 //! property of Bézier patches the surface lies within x' ∈ [-1, 1], y' ∈ [-0.483, 0.483],
-//! z' ∈ [-0.614, 0.614]; the spout points to +x', the handle to -x', the lid to +y'.
+//! z' ∈ [-0.613, 0.613]; the spout points to +x', the handle to -x', the lid to +y'.
 
 use crate::mesh::{MeshData, Vertex};
 use glam::{DVec3, Vec4};
@@ -297,7 +297,7 @@ fn to_y_up_direction(n: DVec3) -> DVec3 {
 /// -(∂P/∂u × ∂P/∂v), pointing out of the teapot, and color white (1, 1, 1, 1). Each quad
 /// becomes two triangles, counter-clockwise seen from outside. Where a patch boundary
 /// collapses to a point (the lid knob's tip and the bottom's center) the zero-area triangle
-/// of each quad along it is left out, so there are slightly fewer than 64 · level² triangles.
+/// of each quad along it is left out: 64 · level² − 8 · level triangles in all.
 ///
 /// The frame is y up, centered, scaled into [-1, 1]³ (see the module docs).
 ///
@@ -333,12 +333,14 @@ pub fn teapot(level: u32) -> Result<MeshData, String> {
                 // (a, c, b): (c - a) × (b - a) = (∂u + ∂v) × ∂u = -(∂u × ∂v), the outward
                 // normal, so the triangle is counter-clockwise seen from outside. Its edges a-b
                 // (v = j) and b-c (u = i + 1) vanish on collapsed boundaries.
-                if !(j == 0 && v0) && !(i + 1 == n && u1) {
+                let first_vanishes = (j == 0 && v0) || (i + 1 == n && u1);
+                if !first_vanishes {
                     indices.extend_from_slice(&[a, c, b]);
                 }
                 // (a, d, c): (d - a) × (c - a) = ∂v × (∂u + ∂v) = -(∂u × ∂v). Edges a-d
                 // (u = i) and d-c (v = j + 1).
-                if !(i == 0 && u0) && !(j + 1 == n && v1) {
+                let second_vanishes = (i == 0 && u0) || (j + 1 == n && v1);
+                if !second_vanishes {
                     indices.extend_from_slice(&[a, d, c]);
                 }
             }
@@ -606,7 +608,10 @@ mod tests {
 
     #[test]
     fn winding_agrees_with_normals() {
-        for level in [1, 2, 6, 12] {
+        // Level 1 is left out: there each half-tube patch of the handle and spout is a single
+        // quad whose four corners lie in the symmetry plane, so its triangles face sideways
+        // (perpendicular to the corner normals), and the spout lip's corners are collinear.
+        for level in [2, 3, 6, 12] {
             let mesh = teapot(level).unwrap();
             let (mut agree, mut total, mut degenerate) = (0usize, 0usize, 0usize);
             for t in mesh.indices.chunks(3) {
@@ -621,13 +626,19 @@ mod tests {
                     agree += 1;
                 }
             }
-            assert_eq!(degenerate, 0, "level {level}: zero-area triangles are left out");
+            assert_eq!(
+                degenerate, 0,
+                "level {level}: collapsed patch edges produce no triangles"
+            );
             assert!(
                 agree * 100 > total * 99,
                 "level {level}: {agree} of {total} triangles agree"
             );
-            // In fact every one does.
-            assert_eq!(agree, total, "level {level}");
+            // From level 3 on, every one does (at level 2, 238 of 240: the spout lip's
+            // triangles are still coarser than its curl).
+            if level >= 3 {
+                assert_eq!(agree, total, "level {level}");
+            }
         }
     }
 
@@ -752,7 +763,7 @@ mod tests {
         // Body, lid and bottom: signed volume sum of a·(b×c)/6 > 0 with outward orientation.
         let n = 12u32;
         let mesh = teapot(n).unwrap();
-        let per_patch = ((n + 1) * (n + 1)) as u32;
+        let per_patch = (n + 1) * (n + 1);
         let mut volume = 0.0f64;
         for t in mesh.indices.chunks(3) {
             let patch = t[0] / per_patch;
@@ -762,8 +773,9 @@ mod tests {
             let [a, b, c] = [0, 1, 2].map(|k| pos(&mesh.vertices[t[k] as usize]).as_dvec3());
             volume += a.dot(b.cross(c)) / 6.0;
         }
-        // About 0.25 (body of radius ~0.6 and height ~0.9 in these units).
-        assert!(volume > 0.15 && volume < 0.4, "volume {volume}");
+        // About 0.72: less than the bounding cylinder of the body (radius 2 / 3.2625, height
+        // 2.4 / 3.2625: 0.87) plus the lid's, more than the cylinder inscribed in the bulge.
+        assert!(volume > 0.5 && volume < 0.95, "volume {volume}");
     }
 
     #[test]

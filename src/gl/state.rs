@@ -57,7 +57,11 @@ pub struct Light {
 impl Light {
     /// GL's initial state of light `index`: light 0 has white diffuse and specular, the others black.
     pub fn gl_default(index: usize) -> Self {
-        let white_if_first = if index == 0 { Vec4::ONE } else { Vec4::new(0.0, 0.0, 0.0, 1.0) };
+        let white_if_first = if index == 0 {
+            Vec4::ONE
+        } else {
+            Vec4::new(0.0, 0.0, 0.0, 1.0)
+        };
         Light {
             enabled: false,
             ambient: Vec4::new(0.0, 0.0, 0.0, 1.0),
@@ -190,7 +194,11 @@ impl ColorMaterial {
     /// The material of one face with the tracked parameter(s) replaced by `color`.
     pub fn apply(&self, material: &Material, color: Vec4, back: bool) -> Material {
         let mut m = *material;
-        let applies = if back { self.face.includes_back() } else { self.face.includes_front() };
+        let applies = if back {
+            self.face.includes_back()
+        } else {
+            self.face.includes_front()
+        };
         if !self.enabled || !applies {
             return m;
         }
@@ -239,7 +247,9 @@ impl std::str::FromStr for LightingMode {
             "vertex" => Ok(LightingMode::Vertex),
             "fragment" => Ok(LightingMode::Fragment),
             "flat" => Ok(LightingMode::Flat),
-            other => Err(format!("unknown lighting mode {other:?}: expected vertex, fragment or flat")),
+            other => Err(format!(
+                "unknown lighting mode {other:?}: expected vertex, fragment or flat"
+            )),
         }
     }
 }
@@ -376,12 +386,26 @@ fn finite_vec(parameter: &'static str, values: &[f32]) -> Result<(), StateError>
     }
 }
 
-fn in_range(parameter: &'static str, value: f32, lo: f32, hi: f32, valid: &'static str) -> Result<(), StateError> {
+fn in_range(
+    parameter: &'static str,
+    value: f32,
+    lo: f32,
+    hi: f32,
+    valid: &'static str,
+) -> Result<(), StateError> {
     if !value.is_finite() {
-        return Err(StateError::NotFinite { parameter, value, valid });
+        return Err(StateError::NotFinite {
+            parameter,
+            value,
+            valid,
+        });
     }
     if value < lo || value > hi {
-        return Err(StateError::OutOfRange { parameter, value, valid });
+        return Err(StateError::OutOfRange {
+            parameter,
+            value,
+            valid,
+        });
     }
     Ok(())
 }
@@ -397,9 +421,15 @@ fn check_light_scalar(p: &LightParam) -> Result<(), StateError> {
                 in_range("GL_SPOT_CUTOFF", v, 0.0, 90.0, VALID)
             }
         }
-        LightParam::ConstantAttenuation(v) => in_range("GL_CONSTANT_ATTENUATION", v, 0.0, f32::MAX, "a value >= 0"),
-        LightParam::LinearAttenuation(v) => in_range("GL_LINEAR_ATTENUATION", v, 0.0, f32::MAX, "a value >= 0"),
-        LightParam::QuadraticAttenuation(v) => in_range("GL_QUADRATIC_ATTENUATION", v, 0.0, f32::MAX, "a value >= 0"),
+        LightParam::ConstantAttenuation(v) => {
+            in_range("GL_CONSTANT_ATTENUATION", v, 0.0, f32::MAX, "a value >= 0")
+        }
+        LightParam::LinearAttenuation(v) => {
+            in_range("GL_LINEAR_ATTENUATION", v, 0.0, f32::MAX, "a value >= 0")
+        }
+        LightParam::QuadraticAttenuation(v) => {
+            in_range("GL_QUADRATIC_ATTENUATION", v, 0.0, f32::MAX, "a value >= 0")
+        }
         _ => Ok(()),
     }
 }
@@ -442,10 +472,10 @@ impl GlState {
     }
 
     fn light_mut(&mut self, index: usize) -> Result<&mut Light, StateError> {
-        self.lighting
-            .lights
-            .get_mut(index)
-            .ok_or(StateError::LightIndex { index, max: MAX_LIGHTS })
+        self.lighting.lights.get_mut(index).ok_or(StateError::LightIndex {
+            index,
+            max: MAX_LIGHTS,
+        })
     }
 
     /// glLight: sets one parameter of light `index`. Positions and spot directions are

@@ -41,7 +41,10 @@ pub struct Device {
 }
 
 fn device_name(props: &vk::PhysicalDeviceProperties) -> String {
-    props.device_name_as_c_str().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default()
+    props
+        .device_name_as_c_str()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default()
 }
 
 impl Device {
@@ -60,7 +63,11 @@ impl Device {
         let available = if named.is_empty() {
             "none".to_owned()
         } else {
-            named.iter().map(|(_, n)| n.as_str()).collect::<Vec<_>>().join(", ")
+            named
+                .iter()
+                .map(|(_, n)| n.as_str())
+                .collect::<Vec<_>>()
+                .join(", ")
         };
         let wanted = requested.unwrap_or("llvmpipe").to_lowercase();
         let pick = named
@@ -91,14 +98,17 @@ impl Device {
         let queue_family = families
             .iter()
             .position(|f| f.queue_flags.contains(vk::QueueFlags::GRAPHICS))
-            .ok_or_else(|| Error::MissingFeature("a graphics queue".into()))? as u32;
+            .ok_or_else(|| Error::MissingFeature("a graphics queue".into()))?
+            as u32;
         let timestamps_supported = families[queue_family as usize].timestamp_valid_bits > 0;
 
         // Features: dynamic rendering (1.3), last-vertex provoking convention (GL's flat
         // shading), pipeline statistics (benchmarks).
         let mut provoking = vk::PhysicalDeviceProvokingVertexFeaturesEXT::default();
         let mut v13 = vk::PhysicalDeviceVulkan13Features::default();
-        let mut features = vk::PhysicalDeviceFeatures2::default().push_next(&mut v13).push_next(&mut provoking);
+        let mut features = vk::PhysicalDeviceFeatures2::default()
+            .push_next(&mut v13)
+            .push_next(&mut provoking);
         let mut driver = vk::PhysicalDeviceDriverProperties::default();
         let mut props2 = vk::PhysicalDeviceProperties2::default().push_next(&mut driver);
         // SAFETY: the chained structs live until the calls return.
@@ -108,24 +118,30 @@ impl Device {
         }
         let pipeline_statistics_query = features.features.pipeline_statistics_query == vk::TRUE;
         if v13.dynamic_rendering != vk::TRUE || v13.synchronization2 != vk::TRUE {
-            return Err(Error::MissingFeature("dynamicRendering and synchronization2".into()));
+            return Err(Error::MissingFeature(
+                "dynamicRendering and synchronization2".into(),
+            ));
         }
         // SAFETY: physical is valid.
         let extensions = unsafe { vki.enumerate_device_extension_properties(physical) }
             .map_err(vk_error("vkEnumerateDeviceExtensionProperties"))?;
-        let has_provoking = extensions
-            .iter()
-            .any(|e| e.extension_name_as_c_str().is_ok_and(|n| n == ext::provoking_vertex::NAME));
+        let has_provoking = extensions.iter().any(|e| {
+            e.extension_name_as_c_str()
+                .is_ok_and(|n| n == ext::provoking_vertex::NAME)
+        });
         let provoking_vertex_last = has_provoking && provoking.provoking_vertex_last == vk::TRUE;
         if !provoking_vertex_last {
             return Err(Error::MissingFeature(
-                "VK_EXT_provoking_vertex with provokingVertexLast (GL's flat shading takes the last vertex)".into(),
+                "VK_EXT_provoking_vertex with provokingVertexLast (GL's flat shading takes the last vertex)"
+                    .into(),
             ));
         }
 
         let cstr = |bytes: &[std::ffi::c_char]| {
             // SAFETY: the driver properties hold NUL-terminated strings within their arrays.
-            unsafe { CStr::from_ptr(bytes.as_ptr()) }.to_string_lossy().into_owned()
+            unsafe { CStr::from_ptr(bytes.as_ptr()) }
+                .to_string_lossy()
+                .into_owned()
         };
         let info = DeviceInfo {
             name: device_name(&props),
@@ -164,7 +180,8 @@ impl Device {
             .push_next(&mut enable_v13)
             .push_next(&mut enable_provoking);
         // SAFETY: the create info and everything it points to live until the call returns.
-        let raw = unsafe { vki.create_device(physical, &create, None) }.map_err(vk_error("vkCreateDevice"))?;
+        let raw =
+            unsafe { vki.create_device(physical, &create, None) }.map_err(vk_error("vkCreateDevice"))?;
         // SAFETY: the queue family and index 0 were requested above.
         let queue = unsafe { raw.get_device_queue(queue_family, 0) };
 
@@ -187,7 +204,10 @@ impl Device {
     pub(crate) fn memory_type(&self, type_bits: u32, flags: vk::MemoryPropertyFlags) -> Result<u32> {
         (0..self.memory.memory_type_count)
             .find(|&i| {
-                type_bits & (1 << i) != 0 && self.memory.memory_types[i as usize].property_flags.contains(flags)
+                type_bits & (1 << i) != 0
+                    && self.memory.memory_types[i as usize]
+                        .property_flags
+                        .contains(flags)
             })
             .ok_or_else(|| Error::MissingFeature(format!("a memory type with {flags:?}")))
     }

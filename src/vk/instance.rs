@@ -38,12 +38,18 @@ struct SinkMessages {
 impl ValidationSink {
     /// Removes and returns the errors reported so far.
     pub fn take_errors(&self) -> Vec<String> {
-        self.inner.lock().map(|mut m| std::mem::take(&mut m.errors)).unwrap_or_default()
+        self.inner
+            .lock()
+            .map(|mut m| std::mem::take(&mut m.errors))
+            .unwrap_or_default()
     }
 
     /// Removes and returns the warnings reported so far.
     pub fn take_warnings(&self) -> Vec<String> {
-        self.inner.lock().map(|mut m| std::mem::take(&mut m.warnings)).unwrap_or_default()
+        self.inner
+            .lock()
+            .map(|mut m| std::mem::take(&mut m.warnings))
+            .unwrap_or_default()
     }
 
     fn push(&self, error: bool, message: String) {
@@ -84,7 +90,10 @@ impl Instance {
             (Validation::Off, _) => false,
             (_, true) => true,
             (Validation::IfPresent, false) => {
-                eprintln!("warning: {}; running without validation", Error::NoValidationLayer);
+                eprintln!(
+                    "warning: {}; running without validation",
+                    Error::NoValidationLayer
+                );
                 false
             }
             (Validation::Required, false) => return Err(Error::NoValidationLayer),
@@ -98,7 +107,9 @@ impl Instance {
         let extension_names = [ext::debug_utils::NAME.as_ptr()];
         let mut info = vk::InstanceCreateInfo::default().application_info(&app);
         if validation_enabled {
-            info = info.enabled_layer_names(&layer_names).enabled_extension_names(&extension_names);
+            info = info
+                .enabled_layer_names(&layer_names)
+                .enabled_extension_names(&extension_names);
         }
         // SAFETY: info and the strings it points to live until the call returns.
         let raw = unsafe { entry.create_instance(&info, None) }.map_err(vk_error("vkCreateInstance"))?;
@@ -115,7 +126,8 @@ impl Instance {
             let loader = ext::debug_utils::Instance::new(&instance.entry, &instance.raw);
             let info = vk::DebugUtilsMessengerCreateInfoEXT::default()
                 .message_severity(
-                    vk::DebugUtilsMessageSeverityFlagsEXT::ERROR | vk::DebugUtilsMessageSeverityFlagsEXT::WARNING,
+                    vk::DebugUtilsMessageSeverityFlagsEXT::ERROR
+                        | vk::DebugUtilsMessageSeverityFlagsEXT::WARNING,
                 )
                 .message_type(
                     vk::DebugUtilsMessageTypeFlagsEXT::GENERAL
@@ -175,8 +187,13 @@ unsafe extern "system" fn debug_callback(
         String::from("(no message)")
     } else {
         // SAFETY: p_message is a NUL-terminated string valid for this call.
-        unsafe { CStr::from_ptr(data.p_message) }.to_string_lossy().into_owned()
+        unsafe { CStr::from_ptr(data.p_message) }
+            .to_string_lossy()
+            .into_owned()
     };
-    sink.push(severity.contains(vk::DebugUtilsMessageSeverityFlagsEXT::ERROR), message);
+    sink.push(
+        severity.contains(vk::DebugUtilsMessageSeverityFlagsEXT::ERROR),
+        message,
+    );
     vk::FALSE
 }

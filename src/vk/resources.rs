@@ -56,8 +56,9 @@ impl Buffer {
         // SAFETY: memory is fresh, large enough per the requirements, and unbound.
         unsafe { vkd.bind_buffer_memory(raw, buffer.memory, 0) }.map_err(vk_error("vkBindBufferMemory"))?;
         // SAFETY: host-visible memory, mapped once for its whole lifetime.
-        buffer.mapped = unsafe { vkd.map_memory(buffer.memory, 0, vk::WHOLE_SIZE, vk::MemoryMapFlags::empty()) }
-            .map_err(vk_error("vkMapMemory"))? as *mut u8;
+        buffer.mapped =
+            unsafe { vkd.map_memory(buffer.memory, 0, vk::WHOLE_SIZE, vk::MemoryMapFlags::empty()) }
+                .map_err(vk_error("vkMapMemory"))? as *mut u8;
         Ok(buffer)
     }
 
@@ -67,10 +68,15 @@ impl Buffer {
 
     /// Copies `bytes` in at `offset`. Panics only on a caller's bug (out-of-bounds write).
     pub fn write(&mut self, offset: u64, bytes: &[u8]) {
-        assert!(offset + bytes.len() as u64 <= self.size, "buffer write out of bounds");
+        assert!(
+            offset + bytes.len() as u64 <= self.size,
+            "buffer write out of bounds"
+        );
         // SAFETY: the range is inside the mapping (checked above); &mut self means no
         // host reader, and callers only write between frames (after the fence wait).
-        unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), self.mapped.add(offset as usize), bytes.len()) }
+        unsafe {
+            std::ptr::copy_nonoverlapping(bytes.as_ptr(), self.mapped.add(offset as usize), bytes.len())
+        }
     }
 
     /// The mapped contents.
@@ -154,7 +160,8 @@ impl Image {
                 layer_count: 1,
             });
         // SAFETY: the image is bound to memory and the view matches its format.
-        image.view = unsafe { vkd.create_image_view(&view_info, None) }.map_err(vk_error("vkCreateImageView"))?;
+        image.view =
+            unsafe { vkd.create_image_view(&view_info, None) }.map_err(vk_error("vkCreateImageView"))?;
         Ok(image)
     }
 }

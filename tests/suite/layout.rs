@@ -27,12 +27,19 @@ struct Reflection {
 }
 
 fn string(words: &[u32]) -> String {
-    let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).take_while(|&b| b != 0).collect();
+    let bytes: Vec<u8> = words
+        .iter()
+        .flat_map(|w| w.to_le_bytes())
+        .take_while(|&b| b != 0)
+        .collect();
     String::from_utf8(bytes).unwrap()
 }
 
 fn reflect(spirv: &[u8]) -> Reflection {
-    let words: Vec<u32> = spirv.chunks(4).map(|c| u32::from_le_bytes(c.try_into().unwrap())).collect();
+    let words: Vec<u32> = spirv
+        .chunks(4)
+        .map(|c| u32::from_le_bytes(c.try_into().unwrap()))
+        .collect();
     assert_eq!(words[0], 0x0723_0203, "SPIR-V magic");
     let mut r = Reflection::default();
     let mut at = 5;
@@ -105,14 +112,22 @@ fn draw_block_matches_the_glsl_in_every_stage() {
         assert_eq!(r.members(material), want, "{stage}: Material offsets");
 
         let light = r.struct_id("Light");
-        let want = rust_offsets!(GpuLight: a_cli, d_cli, s_cli, P_pli, s_dli, s_rli, c_rli, cos_c_rli, k0, k1, k2);
+        let want =
+            rust_offsets!(GpuLight: a_cli, d_cli, s_cli, P_pli, s_dli, s_rli, c_rli, cos_c_rli, k0, k1, k2);
         assert_eq!(r.members(light), want, "{stage}: Light offsets");
 
         // The lights array: its stride is the Rust struct's size, and it ends the block.
         let members = &r.struct_members[&draw];
         let lights_type = *members.last().unwrap();
-        assert_eq!(r.array_element[&lights_type], light, "{stage}: lights is an array of Light");
-        assert_eq!(r.strides[&lights_type] as usize, size_of::<GpuLight>(), "{stage}: Light array stride");
+        assert_eq!(
+            r.array_element[&lights_type], light,
+            "{stage}: lights is an array of Light"
+        );
+        assert_eq!(
+            r.strides[&lights_type] as usize,
+            size_of::<GpuLight>(),
+            "{stage}: Light array stride"
+        );
         assert_eq!(
             offset_of!(DrawBlock, lights) + ffvk::gl::state::MAX_LIGHTS * size_of::<GpuLight>(),
             size_of::<DrawBlock>(),

@@ -38,7 +38,11 @@ fn sheet_scene(gl: GlState, back: bool) -> Scene {
         |x, y| Vec3::new(0.3 * x, 0.2 * y, 1.0),
         |x, y| Vec4::new(0.5 + 0.5 * x, 0.5 + 0.5 * y, 0.8, 1.0),
     );
-    let turn = if back { Mat4::from_rotation_y(std::f32::consts::PI) } else { Mat4::IDENTITY };
+    let turn = if back {
+        Mat4::from_rotation_y(std::f32::consts::PI)
+    } else {
+        Mat4::IDENTITY
+    };
     Scene {
         mesh,
         modelview: Mat4::from_translation(Vec3::new(0.0, 0.0, -3.0)) * Mat4::from_rotation_x(-0.4) * turn,
@@ -76,9 +80,13 @@ fn check(name: &str, scene: &Scene, mode: LightingMode) {
             for t in scene.mesh.indices.chunks(3) {
                 let idx = [t[0] as usize, t[1] as usize, t[2] as usize];
                 let clip = idx.map(|i| clips[i]);
-                let Some(cov) = reference::coverage(clip, SIZE, SIZE, px, py) else { continue };
+                let Some(cov) = reference::coverage(clip, SIZE, SIZE, px, py) else {
+                    continue;
+                };
                 let w = cov.weights;
-                let z = (clip[0].z / clip[0].w) * w.x + (clip[1].z / clip[1].w) * w.y + (clip[2].z / clip[2].w) * w.z;
+                let z = (clip[0].z / clip[0].w) * w.x
+                    + (clip[1].z / clip[1].w) * w.y
+                    + (clip[2].z / clip[2].w) * w.z;
                 if best.as_ref().is_none_or(|b| z < b.0) {
                     best = Some((z, idx, cov));
                 }
@@ -93,7 +101,10 @@ fn check(name: &str, scene: &Scene, mode: LightingMode) {
             probes += 1;
         }
     }
-    assert!(probes > 60, "{name}: only {probes} probes landed inside triangles");
+    assert!(
+        probes > 60,
+        "{name}: only {probes} probes landed inside triangles"
+    );
     drop(frame);
     drop(mesh);
     finish(r);
@@ -278,6 +289,14 @@ scenes! {
     color_material_back_face_two_sided => sheet_scene(with(color_material(Face::Back, ColorMaterialMode::Diffuse), |gl| {
         gl.light_model(LightModelParam::TwoSide(true))
     }), true);
+    eight_lights_local_viewer_two_sided_color_material_back => sheet_scene(combined(), true);
+    eight_lights_local_viewer_two_sided_color_material_front => sheet_scene(combined(), false);
+    zero_normals_stay_finite_under_normalize => {
+        // Normals vanish at the grid's center column: NORMALIZE must not turn them into NaN.
+        let mut scene = sheet_scene(with(specular_scene(), |gl| gl.enable(Cap::Normalize)), false);
+        scene.mesh = grid(8, |x, _| Vec3::new(x, 0.0, x.abs()), |_, _| Vec4::ONE);
+        scene
+    };
     scaled_modelview_neither_normalize_nor_rescale => scaled(|_| Ok(()));
     scaled_modelview_normalize => scaled(|gl| gl.enable(Cap::Normalize));
     scaled_modelview_rescale_normal => scaled(|gl| gl.enable(Cap::RescaleNormal));
@@ -329,7 +348,10 @@ fn eight_lights(gl: GlState) -> GlState {
             match i % 3 {
                 0 => gl.light(i, LightParam::Position(Vec4::new(a.cos(), a.sin(), 0.8, 0.0)))?,
                 1 => {
-                    gl.light(i, LightParam::Position(Vec4::new(2.0 * a.cos(), 2.0 * a.sin(), -1.0, 1.0)))?;
+                    gl.light(
+                        i,
+                        LightParam::Position(Vec4::new(2.0 * a.cos(), 2.0 * a.sin(), -1.0, 1.0)),
+                    )?;
                     gl.light(i, LightParam::LinearAttenuation(0.2))?;
                 }
                 _ => {
@@ -342,6 +364,17 @@ fn eight_lights(gl: GlState) -> GlState {
         }
         gl.material(Face::Front, MaterialParam::Specular(rgba(0.7, 0.7, 0.7, 1.0)))?;
         gl.material(Face::Front, MaterialParam::Shininess(30.0))
+    })
+}
+
+/// The acceptance scene: 8 mixed lights, local viewer, two-sided, color material.
+fn combined() -> GlState {
+    with(eight_lights(dark()), |gl| {
+        gl.light_model(LightModelParam::TwoSide(true))?;
+        gl.material(Face::Back, MaterialParam::Diffuse(rgba(0.3, 0.3, 0.9, 1.0)))?;
+        gl.material(Face::Back, MaterialParam::Emission(rgba(0.05, 0.0, 0.1, 1.0)))?;
+        gl.color_material(Face::Front, ColorMaterialMode::AmbientAndDiffuse);
+        gl.enable(Cap::ColorMaterial)
     })
 }
 
@@ -377,6 +410,6 @@ fn scaled(f: impl FnOnce(&mut GlState) -> Result<(), StateError>) -> Scene {
         f(gl)
     }));
     // Uniform scale 0.6: without NORMALIZE or RESCALE_NORMAL normals grow by 1/0.6.
-    scene.modelview = scene.modelview * Mat4::from_scale(Vec3::splat(0.6));
+    scene.modelview *= Mat4::from_scale(Vec3::splat(0.6));
     scene
 }

@@ -43,12 +43,18 @@ fn shininess_zero_gives_full_specular_and_f_i_removes_it_behind() {
     let mut gl = lit_gl();
     gl.light(0, LightParam::Diffuse(Vec4::ZERO)).unwrap();
     gl.light_model(LightModelParam::Ambient(Vec4::ZERO)).unwrap();
-    gl.material(Face::Front, MaterialParam::Specular(Vec4::new(0.5, 0.25, 1.0, 1.0))).unwrap();
-    gl.light(0, LightParam::Position(Vec4::new(1.0, 0.0, 1.0, 0.0))).unwrap();
+    gl.material(
+        Face::Front,
+        MaterialParam::Specular(Vec4::new(0.5, 0.25, 1.0, 1.0)),
+    )
+    .unwrap();
+    gl.light(0, LightParam::Position(Vec4::new(1.0, 0.0, 1.0, 0.0)))
+        .unwrap();
     let lit = light(&gl.lighting, V, N, &gl.lighting.front);
     assert_rgb(lit.c_pri, [0.5, 0.25, 1.0], "(n⊙h)^0 = 1");
     // Light behind: n · L < 0, so f_i = 0 even though 0^0 would be 1.
-    gl.light(0, LightParam::Position(Vec4::new(1.0, 0.0, -1.0, 0.0))).unwrap();
+    gl.light(0, LightParam::Position(Vec4::new(1.0, 0.0, -1.0, 0.0)))
+        .unwrap();
     let lit = light(&gl.lighting, V, N, &gl.lighting.front);
     assert_rgb(lit.c_pri, [0.0; 3], "f_i = 0");
     assert_eq!(lit.lights[0].f_i, 0.0);
@@ -59,17 +65,24 @@ fn halfway_vector_infinite_and_local_viewer() {
     let mut gl = lit_gl();
     gl.light(0, LightParam::Diffuse(Vec4::ZERO)).unwrap();
     gl.light_model(LightModelParam::Ambient(Vec4::ZERO)).unwrap();
-    gl.material(Face::Front, MaterialParam::Specular(Vec4::ONE)).unwrap();
+    gl.material(Face::Front, MaterialParam::Specular(Vec4::ONE))
+        .unwrap();
     gl.material(Face::Front, MaterialParam::Shininess(2.0)).unwrap();
     // Light along +x+z at 45°: L = (1,0,1)/√2. Infinite viewer: h = L + (0,0,1);
     // n·ĥ = cos(22.5°), squared = (1 + cos 45°)/2.
-    gl.light(0, LightParam::Position(Vec4::new(1.0, 0.0, 1.0, 0.0))).unwrap();
+    gl.light(0, LightParam::Position(Vec4::new(1.0, 0.0, 1.0, 0.0)))
+        .unwrap();
     let lit = light(&gl.lighting, V, N, &gl.lighting.front);
     let want = (1.0 + std::f64::consts::FRAC_1_SQRT_2) / 2.0;
     assert_rgb(lit.c_pri, [want; 3], "infinite viewer");
     // Local viewer at V = (1, 0, -1): VPe = (-1, 0, 1)/√2, so h = (0, 0, √2) and n·ĥ = 1.
     gl.light_model(LightModelParam::LocalViewer(true)).unwrap();
-    let lit = light(&gl.lighting, DVec4::new(1.0, 0.0, -1.0, 1.0), N, &gl.lighting.front);
+    let lit = light(
+        &gl.lighting,
+        DVec4::new(1.0, 0.0, -1.0, 1.0),
+        N,
+        &gl.lighting.front,
+    );
     assert_rgb(lit.c_pri, [1.0; 3], "local viewer");
 }
 
@@ -77,7 +90,8 @@ fn halfway_vector_infinite_and_local_viewer() {
 fn attenuation_uses_the_distance_and_only_for_positional_lights() {
     let mut gl = lit_gl();
     gl.light_model(LightModelParam::Ambient(Vec4::ZERO)).unwrap();
-    gl.light(0, LightParam::Position(Vec4::new(0.0, 0.0, 1.0, 1.0))).unwrap();
+    gl.light(0, LightParam::Position(Vec4::new(0.0, 0.0, 1.0, 1.0)))
+        .unwrap();
     for (k, v) in [(0, 1.0), (1, 1.0), (2, 1.0)] {
         let p = match k {
             0 => LightParam::ConstantAttenuation(v),
@@ -91,11 +105,13 @@ fn attenuation_uses_the_distance_and_only_for_positional_lights() {
     assert!(near(lit.lights[0].att_i, 1.0 / 7.0));
     assert_rgb(lit.c_pri, [0.8 / 7.0; 3], "attenuated diffuse");
     // A light position with w = 2 is the point (0, 0, 0.5): distance 1.5.
-    gl.light(0, LightParam::Position(Vec4::new(0.0, 0.0, 1.0, 2.0))).unwrap();
+    gl.light(0, LightParam::Position(Vec4::new(0.0, 0.0, 1.0, 2.0)))
+        .unwrap();
     let lit = light(&gl.lighting, V, N, &gl.lighting.front);
     assert!(near(lit.lights[0].att_i, 1.0 / (1.0 + 1.5 + 2.25)));
     // Directional: no attenuation whatever the factors.
-    gl.light(0, LightParam::Position(Vec4::new(0.0, 0.0, 1.0, 0.0))).unwrap();
+    gl.light(0, LightParam::Position(Vec4::new(0.0, 0.0, 1.0, 0.0)))
+        .unwrap();
     let lit = light(&gl.lighting, V, N, &gl.lighting.front);
     assert_eq!(lit.lights[0].att_i, 1.0);
 }
@@ -103,8 +119,10 @@ fn attenuation_uses_the_distance_and_only_for_positional_lights() {
 #[test]
 fn spot_cone_exponent_and_cutoff() {
     let mut gl = lit_gl();
-    gl.light(0, LightParam::Position(Vec4::new(0.0, 0.0, 0.0, 1.0))).unwrap();
-    gl.light(0, LightParam::SpotDirection(Vec3::new(0.0, 0.0, -1.0))).unwrap();
+    gl.light(0, LightParam::Position(Vec4::new(0.0, 0.0, 0.0, 1.0)))
+        .unwrap();
+    gl.light(0, LightParam::SpotDirection(Vec3::new(0.0, 0.0, -1.0)))
+        .unwrap();
     gl.light(0, LightParam::SpotCutoff(45.0)).unwrap();
     gl.light(0, LightParam::SpotExponent(2.0)).unwrap();
     // Vertex 30° off the axis: spot = cos²30° = 0.75.
@@ -114,7 +132,12 @@ fn spot_cone_exponent_and_cutoff() {
     assert!(near(lit.lights[0].spot_i, 0.75), "{}", lit.lights[0].spot_i);
     // 50° off the axis: outside the 45° cone.
     let s50 = 50f64.to_radians();
-    let lit = light(&gl.lighting, DVec4::new(s50.sin(), 0.0, -s50.cos(), 1.0), N, &gl.lighting.front);
+    let lit = light(
+        &gl.lighting,
+        DVec4::new(s50.sin(), 0.0, -s50.cos(), 1.0),
+        N,
+        &gl.lighting.front,
+    );
     assert_eq!(lit.lights[0].spot_i, 0.0);
     // Exponent 0 inside the cone: 0^0 rule not needed, but x^0 = 1.
     gl.light(0, LightParam::SpotExponent(0.0)).unwrap();
@@ -123,14 +146,21 @@ fn spot_cone_exponent_and_cutoff() {
     // Cutoff 180: spot 1 even behind the light.
     gl.light(0, LightParam::SpotCutoff(180.0)).unwrap();
     gl.light(0, LightParam::SpotExponent(50.0)).unwrap();
-    let lit = light(&gl.lighting, DVec4::new(0.0, 0.0, 1.0, 1.0), N, &gl.lighting.front);
+    let lit = light(
+        &gl.lighting,
+        DVec4::new(0.0, 0.0, 1.0, 1.0),
+        N,
+        &gl.lighting.front,
+    );
     assert_eq!(lit.lights[0].spot_i, 1.0);
     // A directional light's cone: P_pliV is minus its direction (0,0,1) -> (0,0,-1), on the axis.
-    gl.light(0, LightParam::Position(Vec4::new(0.0, 0.0, 1.0, 0.0))).unwrap();
+    gl.light(0, LightParam::Position(Vec4::new(0.0, 0.0, 1.0, 0.0)))
+        .unwrap();
     gl.light(0, LightParam::SpotCutoff(10.0)).unwrap();
     let lit = light(&gl.lighting, v30, N, &gl.lighting.front);
     assert_eq!(lit.lights[0].spot_i, 1.0);
-    gl.light(0, LightParam::SpotDirection(Vec3::new(1.0, 0.0, -1.0))).unwrap();
+    gl.light(0, LightParam::SpotDirection(Vec3::new(1.0, 0.0, -1.0)))
+        .unwrap();
     let lit = light(&gl.lighting, v30, N, &gl.lighting.front);
     assert_eq!(lit.lights[0].spot_i, 0.0, "45° off a 10° cone");
 }
@@ -138,8 +168,13 @@ fn spot_cone_exponent_and_cutoff() {
 #[test]
 fn separate_specular_moves_specular_to_c_sec_and_color_sum_clamps() {
     let mut gl = lit_gl();
-    gl.light_model(LightModelParam::ColorControl(ColorControl::SeparateSpecularColor)).unwrap();
-    gl.material(Face::Front, MaterialParam::Specular(Vec4::new(0.5, 0.5, 0.5, 1.0))).unwrap();
+    gl.light_model(LightModelParam::ColorControl(ColorControl::SeparateSpecularColor))
+        .unwrap();
+    gl.material(
+        Face::Front,
+        MaterialParam::Specular(Vec4::new(0.5, 0.5, 0.5, 1.0)),
+    )
+    .unwrap();
     let lit = light(&gl.lighting, V, N, &gl.lighting.front);
     assert_rgb(lit.c_pri, [0.84; 3], "c_pri without specular");
     assert_rgb(lit.c_sec, [0.5; 3], "c_sec");
@@ -150,8 +185,10 @@ fn separate_specular_moves_specular_to_c_sec_and_color_sum_clamps() {
 #[test]
 fn clamping_alpha_and_negative_colors() {
     let mut gl = lit_gl();
-    gl.light(0, LightParam::Diffuse(Vec4::new(3.0, -3.0, 0.5, 1.0))).unwrap();
-    gl.material(Face::Front, MaterialParam::Diffuse(Vec4::new(1.0, 1.0, 1.0, 0.3))).unwrap();
+    gl.light(0, LightParam::Diffuse(Vec4::new(3.0, -3.0, 0.5, 1.0)))
+        .unwrap();
+    gl.material(Face::Front, MaterialParam::Diffuse(Vec4::new(1.0, 1.0, 1.0, 0.3)))
+        .unwrap();
     let lit = light(&gl.lighting, V, N, &gl.lighting.front);
     assert_rgb(lit.c_pri, [1.0, 0.0, 0.54], "clamped per component");
     assert!(near(lit.c_pri.w, 0.3), "alpha is d_cm's");
@@ -162,8 +199,16 @@ fn unit_vector_between_homogeneous_points() {
     let p = DVec4::new(1.0, 2.0, 2.0, 1.0);
     let q = DVec4::new(1.0, 2.0, 5.0, 1.0);
     assert_eq!(unit_from_to(p, q), DVec3::Z);
-    assert_eq!(unit_from_to(p, DVec4::new(0.0, 3.0, 0.0, 0.0)), DVec3::Y, "P2 at infinity");
-    assert_eq!(unit_from_to(DVec4::new(0.0, 0.0, 2.0, 0.0), p), -DVec3::Z, "P1 at infinity");
+    assert_eq!(
+        unit_from_to(p, DVec4::new(0.0, 3.0, 0.0, 0.0)),
+        DVec3::Y,
+        "P2 at infinity"
+    );
+    assert_eq!(
+        unit_from_to(DVec4::new(0.0, 0.0, 2.0, 0.0), p),
+        -DVec3::Z,
+        "P1 at infinity"
+    );
     assert_eq!(unit_from_to(p, p), DVec3::ZERO, "zero length stays zero, not NaN");
 }
 
@@ -178,7 +223,11 @@ fn normals_rescale_and_normalize() {
     state.rescale_normal = false;
     state.normalize = true;
     assert!((reference::eye_normal(&state, m, DVec3::new(0.0, 3.0, 0.0)) - DVec3::Y).length() < 1e-6);
-    assert_eq!(reference::eye_normal(&state, m, DVec3::ZERO), DVec3::ZERO, "zero normal is not NaN");
+    assert_eq!(
+        reference::eye_normal(&state, m, DVec3::ZERO),
+        DVec3::ZERO,
+        "zero normal is not NaN"
+    );
 }
 
 #[test]
@@ -186,9 +235,11 @@ fn two_sided_back_face_uses_back_material_and_negated_normal() {
     let mut gl = lit_gl();
     gl.light_model(LightModelParam::TwoSide(true)).unwrap();
     gl.light_model(LightModelParam::Ambient(Vec4::ZERO)).unwrap();
-    gl.material(Face::Back, MaterialParam::Diffuse(Vec4::new(0.0, 0.5, 0.0, 1.0))).unwrap();
+    gl.material(Face::Back, MaterialParam::Diffuse(Vec4::new(0.0, 0.5, 0.0, 1.0)))
+        .unwrap();
     // Light from -z; the front normal points +z, so only the back face sees it.
-    gl.light(0, LightParam::Position(Vec4::new(0.0, 0.0, -1.0, 0.0))).unwrap();
+    gl.light(0, LightParam::Position(Vec4::new(0.0, 0.0, -1.0, 0.0)))
+        .unwrap();
     let front = reference::light_face(&gl.lighting, V, N, DVec4::ONE, false);
     let back = reference::light_face(&gl.lighting, V, N, DVec4::ONE, true);
     assert_rgb(front.c_pri, [0.0; 3], "front faces away from the light");
@@ -208,7 +259,11 @@ fn color_material_tracks_the_current_color() {
     assert_rgb(lit.c_pri, [0.25, 0.5, 0.75], "AMBIENT_AND_DIFFUSE replaces d_cm");
     gl.color_material(Face::FrontAndBack, ColorMaterialMode::Emission);
     let lit = reference::light_face(&gl.lighting, V, N, c, false);
-    assert_rgb(lit.c_pri, [0.25 + 0.8, 0.5 + 0.8, 0.75 + 0.8].map(|v: f64| v.min(1.0)), "EMISSION");
+    assert_rgb(
+        lit.c_pri,
+        [0.25 + 0.8, 0.5 + 0.8, 0.75 + 0.8].map(|v: f64| v.min(1.0)),
+        "EMISSION",
+    );
     gl.color_material(Face::Back, ColorMaterialMode::Emission);
     let lit = reference::light_face(&gl.lighting, V, N, c, false);
     assert_rgb(lit.c_pri, [0.8; 3], "BACK only leaves the front alone");

@@ -35,7 +35,14 @@ fn top_of_the_view_is_the_top_row_and_x_points_right() {
     });
     let image = r.render(&frame).unwrap();
     let black = DVec4::new(0.0, 0.0, 0.0, 1.0);
-    assert_pixel(&image, 10, 10, DVec4::new(1.0, 0.0, 0.0, 1.0), 0.0, "top-left is red");
+    assert_pixel(
+        &image,
+        10,
+        10,
+        DVec4::new(1.0, 0.0, 0.0, 1.0),
+        0.0,
+        "top-left is red",
+    );
     assert_pixel(&image, 50, 10, black, 0.0, "top-right is clear");
     assert_pixel(&image, 10, 50, black, 0.0, "bottom-left is clear");
     // Coverage: exactly the 32×32 top-left pixels (edges at pixel boundaries).
@@ -55,8 +62,13 @@ fn counter_clockwise_is_front() {
     gl.enable(Cap::Lighting).unwrap();
     gl.light_model(LightModelParam::TwoSide(true)).unwrap();
     gl.light_model(LightModelParam::Ambient(Vec4::ZERO)).unwrap();
-    gl.material(Face::Front, MaterialParam::Emission(Vec4::new(1.0, 0.0, 0.0, 1.0))).unwrap();
-    gl.material(Face::Back, MaterialParam::Emission(Vec4::new(0.0, 0.0, 1.0, 1.0))).unwrap();
+    gl.material(
+        Face::Front,
+        MaterialParam::Emission(Vec4::new(1.0, 0.0, 0.0, 1.0)),
+    )
+    .unwrap();
+    gl.material(Face::Back, MaterialParam::Emission(Vec4::new(0.0, 0.0, 1.0, 1.0)))
+        .unwrap();
     // Left quad counter-clockwise; right quad the same geometry mirrored in x, so clockwise.
     let ccw = r.upload(&quad(-1.0, -1.0, 0.0, 1.0, 0.0, Vec4::ONE)).unwrap();
     let mirror = Mat4::from_scale(glam::Vec3::new(-1.0, 1.0, 1.0));
@@ -70,8 +82,22 @@ fn counter_clockwise_is_front() {
         });
     }
     let image = r.render(&frame).unwrap();
-    assert_pixel(&image, 16, 32, DVec4::new(1.0, 0.0, 0.0, 1.0), 0.0, "ccw quad shows the front");
-    assert_pixel(&image, 48, 32, DVec4::new(0.0, 0.0, 1.0, 1.0), 0.0, "cw quad shows the back");
+    assert_pixel(
+        &image,
+        16,
+        32,
+        DVec4::new(1.0, 0.0, 0.0, 1.0),
+        0.0,
+        "ccw quad shows the front",
+    );
+    assert_pixel(
+        &image,
+        48,
+        32,
+        DVec4::new(0.0, 0.0, 1.0, 1.0),
+        0.0,
+        "cw quad shows the back",
+    );
     drop(frame);
     drop(ccw);
     finish(r);
@@ -80,8 +106,12 @@ fn counter_clockwise_is_front() {
 #[test]
 fn depth_test_keeps_the_nearest_surface() {
     let mut r = renderer();
-    let near = r.upload(&quad(-1.0, -1.0, 1.0, 1.0, -0.5, Vec4::new(0.0, 1.0, 0.0, 1.0))).unwrap();
-    let far = r.upload(&quad(-1.0, -1.0, 1.0, 1.0, 0.5, Vec4::new(1.0, 0.0, 1.0, 1.0))).unwrap();
+    let near = r
+        .upload(&quad(-1.0, -1.0, 1.0, 1.0, -0.5, Vec4::new(0.0, 1.0, 0.0, 1.0)))
+        .unwrap();
+    let far = r
+        .upload(&quad(-1.0, -1.0, 1.0, 1.0, 0.5, Vec4::new(1.0, 0.0, 1.0, 1.0)))
+        .unwrap();
     let draw = |mesh| Draw {
         mesh,
         modelview: Mat4::IDENTITY,
@@ -92,10 +122,24 @@ fn depth_test_keeps_the_nearest_surface() {
     let mut frame = Frame::new(16, 16);
     frame.draws = vec![draw(&near), draw(&far)];
     let image = r.render(&frame).unwrap();
-    assert_pixel(&image, 8, 8, DVec4::new(0.0, 1.0, 0.0, 1.0), 0.0, "depth test on: near wins");
+    assert_pixel(
+        &image,
+        8,
+        8,
+        DVec4::new(0.0, 1.0, 0.0, 1.0),
+        0.0,
+        "depth test on: near wins",
+    );
     frame.depth_test = false;
     let image = r.render(&frame).unwrap();
-    assert_pixel(&image, 8, 8, DVec4::new(1.0, 0.0, 1.0, 1.0), 0.0, "depth test off: last wins");
+    assert_pixel(
+        &image,
+        8,
+        8,
+        DVec4::new(1.0, 0.0, 1.0, 1.0),
+        0.0,
+        "depth test off: last wins",
+    );
     drop(frame);
     drop((near, far));
     finish(r);
@@ -121,8 +165,22 @@ fn one_renderer_draws_many_frames_and_sizes() {
         }
         let image = r.render(&frame).unwrap();
         assert_eq!(image.dimensions(), (size, size + 3));
-        assert_pixel(&image, 0, 0, DVec4::new(0.0, g as f64, 0.0, 1.0), 0.51, &format!("frame {i} clear"));
-        assert_pixel(&image, size / 2, (size + 3) / 2, DVec4::ONE, 0.0, &format!("frame {i} quad"));
+        assert_pixel(
+            &image,
+            0,
+            0,
+            DVec4::new(0.0, g as f64, 0.0, 1.0),
+            0.51,
+            &format!("frame {i} clear"),
+        );
+        assert_pixel(
+            &image,
+            size / 2,
+            (size + 3) / 2,
+            DVec4::ONE,
+            0.0,
+            &format!("frame {i} quad"),
+        );
     }
     drop(mesh);
     finish(r);
@@ -160,5 +218,8 @@ fn an_unknown_device_name_is_a_clear_error() {
     .err()
     .expect("no device named no-such-gpu");
     let text = err.to_string();
-    assert!(text.contains("no-such-gpu") && text.contains("llvmpipe"), "{text}");
+    assert!(
+        text.contains("no-such-gpu") && text.contains("llvmpipe"),
+        "{text}"
+    );
 }

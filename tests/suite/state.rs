@@ -23,15 +23,26 @@ fn defaults_are_gls() {
     for (i, l) in s.lights.iter().enumerate() {
         assert!(!l.enabled, "light {i} starts disabled");
         assert_eq!(l.ambient, Vec4::new(0.0, 0.0, 0.0, 1.0));
-        let white_or_black = if i == 0 { Vec4::ONE } else { Vec4::new(0.0, 0.0, 0.0, 1.0) };
+        let white_or_black = if i == 0 {
+            Vec4::ONE
+        } else {
+            Vec4::new(0.0, 0.0, 0.0, 1.0)
+        };
         assert_eq!(l.diffuse, white_or_black, "light {i} diffuse");
         assert_eq!(l.specular, white_or_black, "light {i} specular");
         assert_eq!(l.position, Vec4::new(0.0, 0.0, 1.0, 0.0));
         assert_eq!(l.spot_direction, Vec3::new(0.0, 0.0, -1.0));
         assert_eq!((l.spot_exponent, l.spot_cutoff), (0.0, 180.0));
-        assert_eq!((l.constant_attenuation, l.linear_attenuation, l.quadratic_attenuation), (1.0, 0.0, 0.0));
+        assert_eq!(
+            (
+                l.constant_attenuation,
+                l.linear_attenuation,
+                l.quadratic_attenuation
+            ),
+            (1.0, 0.0, 0.0)
+        );
     }
-    assert!(MAX_LIGHTS >= 8);
+    const { assert!(MAX_LIGHTS >= 8) };
     assert_eq!(s.model.ambient, Vec4::new(0.2, 0.2, 0.2, 1.0));
     assert!(!s.model.local_viewer && !s.model.two_side);
     assert_eq!(s.model.color_control, ColorControl::SingleColor);
@@ -51,23 +62,42 @@ fn defaults_are_gls() {
 #[test]
 fn light_position_takes_the_modelview_at_specification_time() {
     let mut gl = GlState::new();
-    let view = Mat4::from_translation(Vec3::new(1.0, 2.0, 3.0)) * Mat4::from_rotation_y(std::f32::consts::FRAC_PI_2);
+    let view =
+        Mat4::from_translation(Vec3::new(1.0, 2.0, 3.0)) * Mat4::from_rotation_y(std::f32::consts::FRAC_PI_2);
     gl.load_modelview(view).unwrap();
-    gl.light(1, LightParam::Position(Vec4::new(1.0, 0.0, 0.0, 1.0))).unwrap();
-    gl.light(2, LightParam::Position(Vec4::new(1.0, 0.0, 0.0, 0.0))).unwrap();
-    gl.light(1, LightParam::SpotDirection(Vec3::new(1.0, 0.0, 0.0))).unwrap();
+    gl.light(1, LightParam::Position(Vec4::new(1.0, 0.0, 0.0, 1.0)))
+        .unwrap();
+    gl.light(2, LightParam::Position(Vec4::new(1.0, 0.0, 0.0, 0.0)))
+        .unwrap();
+    gl.light(1, LightParam::SpotDirection(Vec3::new(1.0, 0.0, 0.0)))
+        .unwrap();
     // Rotating +x by 90° about y gives -z; the point then moves by the translation.
     let l = gl.lighting.lights[1];
-    assert!(close(l.position, Vec4::new(1.0, 2.0, 2.0, 1.0)), "{:?}", l.position);
-    assert!(close(gl.lighting.lights[2].position, Vec4::new(0.0, 0.0, -1.0, 0.0)), "directions ignore translation");
-    assert!(close(l.spot_direction.extend(0.0), Vec4::new(0.0, 0.0, -1.0, 0.0)), "{:?}", l.spot_direction);
+    assert!(
+        close(l.position, Vec4::new(1.0, 2.0, 2.0, 1.0)),
+        "{:?}",
+        l.position
+    );
+    assert!(
+        close(gl.lighting.lights[2].position, Vec4::new(0.0, 0.0, -1.0, 0.0)),
+        "directions ignore translation"
+    );
+    assert!(
+        close(l.spot_direction.extend(0.0), Vec4::new(0.0, 0.0, -1.0, 0.0)),
+        "{:?}",
+        l.spot_direction
+    );
     // A later modelview does not move lights already set.
     gl.load_modelview(Mat4::from_scale(Vec3::splat(5.0))).unwrap();
     assert_eq!(gl.lighting.lights[1], l);
     // mult_modelview composes like glMultMatrix.
     gl.mult_modelview(Mat4::from_translation(Vec3::X)).unwrap();
-    gl.light(3, LightParam::Position(Vec4::new(0.0, 0.0, 0.0, 1.0))).unwrap();
-    assert!(close(gl.lighting.lights[3].position, Vec4::new(5.0, 0.0, 0.0, 1.0)));
+    gl.light(3, LightParam::Position(Vec4::new(0.0, 0.0, 0.0, 1.0)))
+        .unwrap();
+    assert!(close(
+        gl.lighting.lights[3].position,
+        Vec4::new(5.0, 0.0, 0.0, 1.0)
+    ));
 }
 
 fn rejected(result: Result<(), StateError>, parameter: &str, value: &str, valid: &str) {
@@ -83,25 +113,103 @@ fn out_of_range_values_are_rejected_with_parameter_value_and_range() {
     let mut gl = GlState::new();
     let before = gl.clone();
     for bad in [-1.0, 90.5, 179.9, 180.1, 360.0] {
-        rejected(gl.light(0, LightParam::SpotCutoff(bad)), "GL_SPOT_CUTOFF", &bad.to_string(), "[0, 90] or exactly 180");
+        rejected(
+            gl.light(0, LightParam::SpotCutoff(bad)),
+            "GL_SPOT_CUTOFF",
+            &bad.to_string(),
+            "[0, 90] or exactly 180",
+        );
     }
     for bad in [-0.5, 128.5] {
-        rejected(gl.light(0, LightParam::SpotExponent(bad)), "GL_SPOT_EXPONENT", &bad.to_string(), "[0, 128]");
+        rejected(
+            gl.light(0, LightParam::SpotExponent(bad)),
+            "GL_SPOT_EXPONENT",
+            &bad.to_string(),
+            "[0, 128]",
+        );
     }
-    rejected(gl.light(0, LightParam::ConstantAttenuation(-1.0)), "GL_CONSTANT_ATTENUATION", "-1", ">= 0");
-    rejected(gl.light(0, LightParam::LinearAttenuation(-0.1)), "GL_LINEAR_ATTENUATION", "-0.1", ">= 0");
-    rejected(gl.light(0, LightParam::QuadraticAttenuation(-2.0)), "GL_QUADRATIC_ATTENUATION", "-2", ">= 0");
-    rejected(gl.material(Face::Front, MaterialParam::Shininess(128.5)), "GL_SHININESS", "128.5", "[0, 128]");
-    rejected(gl.material(Face::Back, MaterialParam::Shininess(-1.0)), "GL_SHININESS", "-1", "[0, 128]");
-    rejected(gl.light(MAX_LIGHTS, LightParam::Ambient(Vec4::ONE)), "light index 16", "16", "0..16");
+    rejected(
+        gl.light(0, LightParam::ConstantAttenuation(-1.0)),
+        "GL_CONSTANT_ATTENUATION",
+        "-1",
+        ">= 0",
+    );
+    rejected(
+        gl.light(0, LightParam::LinearAttenuation(-0.1)),
+        "GL_LINEAR_ATTENUATION",
+        "-0.1",
+        ">= 0",
+    );
+    rejected(
+        gl.light(0, LightParam::QuadraticAttenuation(-2.0)),
+        "GL_QUADRATIC_ATTENUATION",
+        "-2",
+        ">= 0",
+    );
+    rejected(
+        gl.material(Face::Front, MaterialParam::Shininess(128.5)),
+        "GL_SHININESS",
+        "128.5",
+        "[0, 128]",
+    );
+    rejected(
+        gl.material(Face::Back, MaterialParam::Shininess(-1.0)),
+        "GL_SHININESS",
+        "-1",
+        "[0, 128]",
+    );
+    rejected(
+        gl.light(MAX_LIGHTS, LightParam::Ambient(Vec4::ONE)),
+        "light index 16",
+        "16",
+        "0..16",
+    );
     rejected(gl.enable(Cap::Light(99)), "light index 99", "99", "GL_MAX_LIGHTS");
-    rejected(gl.light(0, LightParam::SpotExponent(f32::NAN)), "GL_SPOT_EXPONENT", "NaN", "[0, 128]");
-    rejected(gl.light(0, LightParam::Diffuse(Vec4::new(1.0, f32::INFINITY, 0.0, 1.0))), "GL_DIFFUSE", "inf", "finite");
-    rejected(gl.light(0, LightParam::Position(Vec4::new(f32::NAN, 0.0, 0.0, 1.0))), "GL_POSITION", "NaN", "finite");
-    rejected(gl.light(0, LightParam::SpotDirection(Vec3::new(0.0, f32::NEG_INFINITY, 0.0))), "GL_SPOT_DIRECTION", "-inf", "finite");
-    rejected(gl.material(Face::FrontAndBack, MaterialParam::Emission(Vec4::splat(f32::NAN))), "GL_EMISSION", "NaN", "finite");
-    rejected(gl.light_model(LightModelParam::Ambient(Vec4::splat(f32::INFINITY))), "GL_LIGHT_MODEL_AMBIENT", "inf", "finite");
-    rejected(gl.load_modelview(Mat4::from_scale(Vec3::splat(f32::NAN))), "modelview", "NaN", "finite");
+    rejected(
+        gl.light(0, LightParam::SpotExponent(f32::NAN)),
+        "GL_SPOT_EXPONENT",
+        "NaN",
+        "[0, 128]",
+    );
+    rejected(
+        gl.light(0, LightParam::Diffuse(Vec4::new(1.0, f32::INFINITY, 0.0, 1.0))),
+        "GL_DIFFUSE",
+        "inf",
+        "finite",
+    );
+    rejected(
+        gl.light(0, LightParam::Position(Vec4::new(f32::NAN, 0.0, 0.0, 1.0))),
+        "GL_POSITION",
+        "NaN",
+        "finite",
+    );
+    rejected(
+        gl.light(
+            0,
+            LightParam::SpotDirection(Vec3::new(0.0, f32::NEG_INFINITY, 0.0)),
+        ),
+        "GL_SPOT_DIRECTION",
+        "-inf",
+        "finite",
+    );
+    rejected(
+        gl.material(Face::FrontAndBack, MaterialParam::Emission(Vec4::splat(f32::NAN))),
+        "GL_EMISSION",
+        "NaN",
+        "finite",
+    );
+    rejected(
+        gl.light_model(LightModelParam::Ambient(Vec4::splat(f32::INFINITY))),
+        "GL_LIGHT_MODEL_AMBIENT",
+        "inf",
+        "finite",
+    );
+    rejected(
+        gl.load_modelview(Mat4::from_scale(Vec3::splat(f32::NAN))),
+        "modelview",
+        "NaN",
+        "finite",
+    );
     assert_eq!(gl, before, "rejected calls leave the state unchanged");
 }
 
@@ -115,12 +223,22 @@ fn boundary_values_are_accepted() {
         gl.light(7, LightParam::SpotExponent(ok)).unwrap();
         gl.material(Face::Front, MaterialParam::Shininess(ok)).unwrap();
     }
-    gl.light(MAX_LIGHTS - 1, LightParam::LinearAttenuation(0.0)).unwrap();
+    gl.light(MAX_LIGHTS - 1, LightParam::LinearAttenuation(0.0))
+        .unwrap();
     // Colors are unrestricted: negative and above 1 are legal.
-    gl.light(0, LightParam::Diffuse(Vec4::new(-2.0, 5.0, 0.0, 1.0))).unwrap();
-    gl.material(Face::Back, MaterialParam::AmbientAndDiffuse(Vec4::new(3.0, -1.0, 0.5, 0.5))).unwrap();
+    gl.light(0, LightParam::Diffuse(Vec4::new(-2.0, 5.0, 0.0, 1.0)))
+        .unwrap();
+    gl.material(
+        Face::Back,
+        MaterialParam::AmbientAndDiffuse(Vec4::new(3.0, -1.0, 0.5, 0.5)),
+    )
+    .unwrap();
     assert_eq!(gl.lighting.back.ambient, gl.lighting.back.diffuse);
-    assert_eq!(gl.lighting.front.diffuse, Vec4::new(0.8, 0.8, 0.8, 1.0), "FRONT untouched by BACK");
+    assert_eq!(
+        gl.lighting.front.diffuse,
+        Vec4::new(0.8, 0.8, 0.8, 1.0),
+        "FRONT untouched by BACK"
+    );
 }
 
 #[test]
@@ -139,7 +257,8 @@ fn enabled_lights_pack_in_index_order() {
     let mut gl = GlState::new();
     for i in [5, 1, 9] {
         gl.enable(Cap::Light(i)).unwrap();
-        gl.light(i, LightParam::Ambient(Vec4::new(i as f32, 0.0, 0.0, 1.0))).unwrap();
+        gl.light(i, LightParam::Ambient(Vec4::new(i as f32, 0.0, 0.0, 1.0)))
+            .unwrap();
     }
     let block = DrawBlock::new(&gl.lighting, Mat4::IDENTITY, Mat4::IDENTITY).unwrap();
     assert_eq!(block.light_count, 3);
@@ -157,5 +276,8 @@ fn shade_model_and_lighting_mode() {
     gl.lighting_mode(LightingMode::Fragment);
     assert_eq!(gl.lighting.mode, LightingMode::Fragment);
     assert_eq!("fragment".parse::<LightingMode>(), Ok(LightingMode::Fragment));
-    assert!("phong".parse::<LightingMode>().unwrap_err().contains("vertex, fragment or flat"));
+    assert!("phong"
+        .parse::<LightingMode>()
+        .unwrap_err()
+        .contains("vertex, fragment or flat"));
 }

@@ -25,7 +25,11 @@ pub fn finish(renderer: Renderer) {
     let sink: ValidationSink = renderer.validation_sink();
     drop(renderer);
     let errors = sink.take_errors();
-    assert!(errors.is_empty(), "validation errors at teardown:\n{}", errors.join("\n"));
+    assert!(
+        errors.is_empty(),
+        "validation errors at teardown:\n{}",
+        errors.join("\n")
+    );
 }
 
 /// Where failing tests write their images.
@@ -102,7 +106,9 @@ pub fn to_255(c: DVec4) -> [f64; 4] {
 pub fn assert_pixel(image: &RgbaImage, x: u32, y: u32, expected: DVec4, tol: f64, what: &str) {
     let got = px(image, x, y);
     let want = to_255(expected);
-    let worst = (0..4).map(|c| (got[c] as f64 - want[c]).abs()).fold(0.0, f64::max);
+    let worst = (0..4)
+        .map(|c| (got[c] as f64 - want[c]).abs())
+        .fold(0.0, f64::max);
     if worst > tol {
         let path = save_for_inspection(image, &what.replace([' ', '/', ':', ','], "_"));
         panic!(

@@ -1,0 +1,595 @@
+//! Test-only reference renderer: draws a scene with Mesa's fixed-function OpenGL through OSMesa.
+//!
+//! This is the oracle ffvk's Vulkan images are compared against. It maps a
+//! [`LightingState`] onto the legacy GL entry points one to one (glLight, glMaterial,
+//! glLightModel, glColorMaterial, glShadeModel, glEnable) and lets Mesa evaluate the lighting.
+//!
+//! Every call creates its own OSMesa context, renders into its own buffer, reads the pixels
+//! back and destroys the context, all on the calling thread. Calls are serialized by a global
+//! lock so that tests running on parallel threads never drive Mesa concurrently.
+
+// Integration tests include this module with `mod support;` and may use only part of it.
+#![allow(dead_code)]
+
+use std::ffi::{c_void, CStr};
+use std::os::raw::{c_char, c_int, c_uchar, c_uint};
+use std::sync::Mutex;
+
+use ffvk::gl::state::{ColorControl, ColorMaterialMode, Face, Light, LightingMode, LightingState, Material};
+use ffvk::mesh::{MeshData, Vertex};
+use glam::Mat4;
+
+/// One frame: a cleared framebuffer and the draws, in order.
+pub struct GlScene<'a> {
+    pub width: u32,
+    pub height: u32,
+    pub clear_color: [f32; 4],
+    pub depth_test: bool,
+    pub draws: Vec<GlDraw<'a>>,
+}
+
+/// One draw call: a triangle list with the matrices and lighting state in force for it.
+pub struct GlDraw<'a> {
+    /// Triangle list, counter-clockwise front, per-vertex position, normal and color.
+    pub mesh: &'a MeshData,
+    /// GL modelview for this draw.
+    pub modelview: Mat4,
+    /// GL projection (GL clip space, z in [-w, w]).
+    pub projection: Mat4,
+    /// Lighting state; light positions and spot directions are already in eye space.
+    pub state: LightingState,
+}
+
+/// What the OSMesa context reports about itself.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct GlInfo {
+    pub version: String,
+    pub renderer: String,
+    pub vendor: String,
+    pub max_lights: i32,
+    /// How the context was made: `OSMesaCreateContextAttribs` (compatibility profile) or
+    /// the `OSMesaCreateContextExt` fallback.
+    pub created_with: &'static str,
+}
+
+// ---------------------------------------------------------------------------------------------
+// The C interface: only what this module calls.
+
+type GLenum = c_uint;
+type GLint = c_int;
+type GLsizei = c_int;
+type GLfloat = f32;
+type GLclampf = f32;
+type GLbitfield = c_uint;
+type GLboolean = c_uchar;
+
+#[repr(C)]
+struct OsMesaContextOpaque {
+    _private: [u8; 0],
+}
+type OsMesaContext = *mut OsMesaContextOpaque;
+
+const OSMESA_RGBA: GLenum = 0x1908;
+const OSMESA_FORMAT: c_int = 0x22;
+const OSMESA_DEPTH_BITS: c_int = 0x30;
+const OSMESA_STENCIL_BITS: c_int = 0x31;
+const OSMESA_ACCUM_BITS: c_int = 0x32;
+const OSMESA_PROFILE: c_int = 0x33;
+const OSMESA_COMPAT_PROFILE: c_int = 0x35;
+const OSMESA_CONTEXT_MAJOR_VERSION: c_int = 0x36;
+const OSMESA_CONTEXT_MINOR_VERSION: c_int = 0x37;
+
+const GL_NO_ERROR: GLenum = 0;
+const GL_FALSE: GLint = 0;
+const GL_TRUE: GLint = 1;
+const GL_TRIANGLES: GLenum = 0x0004;
+const GL_LESS: GLenum = 0x0201;
+const GL_FRONT: GLenum = 0x0404;
+const GL_BACK: GLenum = 0x0405;
+const GL_FRONT_AND_BACK: GLenum = 0x0408;
+const GL_CCW: GLenum = 0x0901;
+const GL_CULL_FACE: GLenum = 0x0B44;
+const GL_LIGHTING: GLenum = 0x0B50;
+const GL_LIGHT_MODEL_LOCAL_VIEWER: GLenum = 0x0B51;
+const GL_LIGHT_MODEL_TWO_SIDE: GLenum = 0x0B52;
+const GL_LIGHT_MODEL_AMBIENT: GLenum = 0x0B53;
+const GL_COLOR_MATERIAL: GLenum = 0x0B57;
+const GL_DEPTH_TEST: GLenum = 0x0B71;
+const GL_NORMALIZE: GLenum = 0x0BA1;
+const GL_BLEND: GLenum = 0x0BE2;
+const GL_DITHER: GLenum = 0x0BD0;
+const GL_PACK_ALIGNMENT: GLenum = 0x0D05;
+const GL_MAX_LIGHTS: GLenum = 0x0D31;
+const GL_UNSIGNED_BYTE: GLenum = 0x1401;
+const GL_UNSIGNED_INT: GLenum = 0x1405;
+const GL_FLOAT: GLenum = 0x1406;
+const GL_AMBIENT: GLenum = 0x1200;
+const GL_DIFFUSE: GLenum = 0x1201;
+const GL_SPECULAR: GLenum = 0x1202;
+const GL_POSITION: GLenum = 0x1203;
+const GL_SPOT_DIRECTION: GLenum = 0x1204;
+const GL_SPOT_EXPONENT: GLenum = 0x1205;
+const GL_SPOT_CUTOFF: GLenum = 0x1206;
+const GL_CONSTANT_ATTENUATION: GLenum = 0x1207;
+const GL_LINEAR_ATTENUATION: GLenum = 0x1208;
+const GL_QUADRATIC_ATTENUATION: GLenum = 0x1209;
+const GL_EMISSION: GLenum = 0x1600;
+const GL_SHININESS: GLenum = 0x1601;
+const GL_AMBIENT_AND_DIFFUSE: GLenum = 0x1602;
+const GL_MODELVIEW: GLenum = 0x1700;
+const GL_PROJECTION: GLenum = 0x1701;
+const GL_RGBA: GLenum = 0x1908;
+const GL_FLAT: GLenum = 0x1D00;
+const GL_SMOOTH: GLenum = 0x1D01;
+const GL_VENDOR: GLenum = 0x1F00;
+const GL_RENDERER: GLenum = 0x1F01;
+const GL_VERSION: GLenum = 0x1F02;
+const GL_LIGHT0: GLenum = 0x4000;
+const GL_VERTEX_ARRAY: GLenum = 0x8074;
+const GL_NORMAL_ARRAY: GLenum = 0x8075;
+const GL_COLOR_ARRAY: GLenum = 0x8076;
+const GL_RESCALE_NORMAL: GLenum = 0x803A;
+const GL_LIGHT_MODEL_COLOR_CONTROL: GLenum = 0x81F8;
+const GL_SINGLE_COLOR: GLenum = 0x81F9;
+const GL_SEPARATE_SPECULAR_COLOR: GLenum = 0x81FA;
+const GL_DEPTH_BUFFER_BIT: GLbitfield = 0x0000_0100;
+const GL_COLOR_BUFFER_BIT: GLbitfield = 0x0000_4000;
+
+// libOSMesa exports the gl* entry points as well as the OSMesa* ones.
+#[link(name = "OSMesa")]
+extern "C" {
+    fn OSMesaCreateContextAttribs(attrib_list: *const c_int, sharelist: OsMesaContext) -> OsMesaContext;
+    fn OSMesaCreateContextExt(
+        format: GLenum,
+        depth_bits: GLint,
+        stencil_bits: GLint,
+        accum_bits: GLint,
+        sharelist: OsMesaContext,
+    ) -> OsMesaContext;
+    fn OSMesaMakeCurrent(
+        ctx: OsMesaContext,
+        buffer: *mut c_void,
+        kind: GLenum,
+        width: GLsizei,
+        height: GLsizei,
+    ) -> GLboolean;
+    fn OSMesaDestroyContext(ctx: OsMesaContext);
+
+    fn glGetError() -> GLenum;
+    fn glGetString(name: GLenum) -> *const c_uchar;
+    fn glGetIntegerv(pname: GLenum, params: *mut GLint);
+    fn glEnable(cap: GLenum);
+    fn glDisable(cap: GLenum);
+    fn glViewport(x: GLint, y: GLint, width: GLsizei, height: GLsizei);
+    fn glClearColor(r: GLclampf, g: GLclampf, b: GLclampf, a: GLclampf);
+    fn glClearDepth(depth: f64);
+    fn glClear(mask: GLbitfield);
+    fn glDepthFunc(func: GLenum);
+    fn glFrontFace(mode: GLenum);
+    fn glShadeModel(mode: GLenum);
+    fn glMatrixMode(mode: GLenum);
+    fn glLoadIdentity();
+    fn glLoadMatrixf(m: *const GLfloat);
+    fn glLightfv(light: GLenum, pname: GLenum, params: *const GLfloat);
+    fn glLightf(light: GLenum, pname: GLenum, param: GLfloat);
+    fn glLightModelfv(pname: GLenum, params: *const GLfloat);
+    fn glLightModeli(pname: GLenum, param: GLint);
+    fn glMaterialfv(face: GLenum, pname: GLenum, params: *const GLfloat);
+    fn glMaterialf(face: GLenum, pname: GLenum, param: GLfloat);
+    fn glColorMaterial(face: GLenum, mode: GLenum);
+    fn glEnableClientState(array: GLenum);
+    fn glDisableClientState(array: GLenum);
+    fn glVertexPointer(size: GLint, kind: GLenum, stride: GLsizei, pointer: *const c_void);
+    fn glNormalPointer(kind: GLenum, stride: GLsizei, pointer: *const c_void);
+    fn glColorPointer(size: GLint, kind: GLenum, stride: GLsizei, pointer: *const c_void);
+    fn glDrawElements(mode: GLenum, count: GLsizei, kind: GLenum, indices: *const c_void);
+    fn glPixelStorei(pname: GLenum, param: GLint);
+    fn glReadPixels(
+        x: GLint,
+        y: GLint,
+        width: GLsizei,
+        height: GLsizei,
+        format: GLenum,
+        kind: GLenum,
+        pixels: *mut c_void,
+    );
+    fn glFinish();
+}
+
+// ---------------------------------------------------------------------------------------------
+// The context: created, made current on this thread, and always released and destroyed.
+
+/// Serializes every use of OSMesa in this test binary (see the module documentation).
+static OSMESA_LOCK: Mutex<()> = Mutex::new(());
+
+/// An OSMesa context current on the calling thread, bound to its own RGBA8 color buffer.
+/// Dropping it unbinds and destroys the context (before the buffer is freed).
+struct Context {
+    ctx: OsMesaContext,
+    created_with: &'static str,
+    /// OSMesa renders into this buffer; it must outlive the binding, and never reallocates.
+    _buffer: Vec<u8>,
+}
+
+impl Context {
+    fn new(width: u32, height: u32) -> Result<Context, String> {
+        if width == 0 || height == 0 {
+            return Err(format!("OSMesa: framebuffer size {width}x{height} is empty"));
+        }
+        let w = GLsizei::try_from(width).map_err(|_| format!("OSMesa: width {width} is too large"))?;
+        let h = GLsizei::try_from(height).map_err(|_| format!("OSMesa: height {height} is too large"))?;
+        let bytes = (width as usize)
+            .checked_mul(height as usize)
+            .and_then(|n| n.checked_mul(4))
+            .ok_or_else(|| format!("OSMesa: framebuffer size {width}x{height} is too large"))?;
+
+        // A compatibility profile keeps the fixed-function pipeline; ask for at least 2.1.
+        let attribs: [c_int; 15] = [
+            OSMESA_FORMAT,
+            OSMESA_RGBA as c_int,
+            OSMESA_DEPTH_BITS,
+            24,
+            OSMESA_STENCIL_BITS,
+            0,
+            OSMESA_ACCUM_BITS,
+            0,
+            OSMESA_PROFILE,
+            OSMESA_COMPAT_PROFILE,
+            OSMESA_CONTEXT_MAJOR_VERSION,
+            2,
+            OSMESA_CONTEXT_MINOR_VERSION,
+            1,
+            0,
+        ];
+        // SAFETY: the attribute list is zero-terminated; no context is shared.
+        let mut ctx = unsafe { OSMesaCreateContextAttribs(attribs.as_ptr(), std::ptr::null_mut()) };
+        let mut created_with = "OSMesaCreateContextAttribs (compatibility profile, >= 2.1)";
+        if ctx.is_null() {
+            // SAFETY: plain constructor call; a null result is handled below.
+            ctx = unsafe { OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, std::ptr::null_mut()) };
+            created_with = "OSMesaCreateContextExt (RGBA, 24-bit depth)";
+        }
+        if ctx.is_null() {
+            return Err(
+                "OSMesa: could not create a context (OSMesaCreateContextAttribs and \
+                        OSMesaCreateContextExt both returned NULL)"
+                    .to_string(),
+            );
+        }
+        let mut context = Context {
+            ctx,
+            created_with,
+            _buffer: vec![0u8; bytes],
+        };
+        let buffer = context._buffer.as_mut_ptr().cast::<c_void>();
+        // SAFETY: the buffer holds width * height RGBA8 pixels and lives as long as `context`,
+        // whose Drop unbinds the context before the buffer is freed.
+        let ok = unsafe { OSMesaMakeCurrent(context.ctx, buffer, GL_UNSIGNED_BYTE, w, h) };
+        if ok == 0 {
+            // `context` drops here and destroys the context.
+            return Err(format!(
+                "OSMesa: OSMesaMakeCurrent failed for a {width}x{height} RGBA8 buffer"
+            ));
+        }
+        Ok(context)
+    }
+
+    fn info(&self) -> Result<GlInfo, String> {
+        let mut max_lights: GLint = 0;
+        // SAFETY: this context is current on this thread; one GLint is written.
+        unsafe { glGetIntegerv(GL_MAX_LIGHTS, &mut max_lights) };
+        Ok(GlInfo {
+            version: gl_string(GL_VERSION)?,
+            renderer: gl_string(GL_RENDERER)?,
+            vendor: gl_string(GL_VENDOR)?,
+            max_lights,
+            created_with: self.created_with,
+        })
+    }
+}
+
+impl Drop for Context {
+    fn drop(&mut self) {
+        // SAFETY: `ctx` was created by OSMesa and is destroyed exactly once; a NULL context
+        // unbinds whatever is current on this thread, so nothing refers to it afterwards.
+        unsafe {
+            OSMesaMakeCurrent(std::ptr::null_mut(), std::ptr::null_mut(), 0, 0, 0);
+            OSMesaDestroyContext(self.ctx);
+        }
+    }
+}
+
+/// Takes the global OSMesa lock; a panic in another test while it held the lock does not
+/// leave GL state behind (each call has its own context), so a poisoned lock is still usable.
+fn lock() -> std::sync::MutexGuard<'static, ()> {
+    OSMESA_LOCK
+        .lock()
+        .unwrap_or_else(|poisoned| poisoned.into_inner())
+}
+
+fn gl_string(name: GLenum) -> Result<String, String> {
+    // SAFETY: a context is current; glGetString returns a static NUL-terminated string or NULL.
+    let s = unsafe { glGetString(name) };
+    if s.is_null() {
+        return Err(format!("glGetString(0x{name:04X}) returned NULL"));
+    }
+    // SAFETY: non-NULL, NUL-terminated, owned by the GL implementation.
+    let text = unsafe { CStr::from_ptr(s.cast::<c_char>()) };
+    Ok(text.to_string_lossy().into_owned())
+}
+
+/// Returns Err naming `what` if GL has recorded an error (draining every pending error flag).
+fn check_gl_error(what: &str) -> Result<(), String> {
+    let mut codes = Vec::new();
+    loop {
+        // SAFETY: a context is current on this thread.
+        let code = unsafe { glGetError() };
+        if code == GL_NO_ERROR || codes.len() >= 16 {
+            break;
+        }
+        codes.push(format!("0x{code:04X}"));
+    }
+    if codes.is_empty() {
+        Ok(())
+    } else {
+        Err(format!("GL error {} {what}", codes.join(", ")))
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Public entry points.
+
+/// Reports GL_VERSION, GL_RENDERER, GL_VENDOR and GL_MAX_LIGHTS of the context
+/// [`render_gl`] uses.
+pub fn gl_info() -> Result<GlInfo, String> {
+    let _guard = lock();
+    let context = Context::new(1, 1)?;
+    context.info()
+}
+
+/// Renders `scene` with Mesa's fixed-function OpenGL and returns the color buffer, row 0 at
+/// the top of the view.
+pub fn render_gl(scene: &GlScene) -> Result<image::RgbaImage, String> {
+    let _guard = lock();
+    let context = Context::new(scene.width, scene.height)?;
+    let result = render_current(scene);
+    drop(context);
+    result
+}
+
+/// Renders with the context that is current on this thread.
+fn render_current(scene: &GlScene) -> Result<image::RgbaImage, String> {
+    let (width, height) = (scene.width, scene.height);
+    let mut max_lights: GLint = 0;
+    // SAFETY: a context is current on this thread; every pointer passed below is valid for
+    // the duration of the call that receives it.
+    unsafe {
+        glGetIntegerv(GL_MAX_LIGHTS, &mut max_lights);
+        glViewport(0, 0, width as GLsizei, height as GLsizei);
+        let [r, g, b, a] = scene.clear_color;
+        glClearColor(r, g, b, a);
+        glClearDepth(1.0);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        if scene.depth_test {
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_LESS);
+        } else {
+            glDisable(GL_DEPTH_TEST);
+        }
+        glFrontFace(GL_CCW);
+        glDisable(GL_CULL_FACE);
+        glDisable(GL_BLEND);
+        // Dithering is on by default in GL; the Vulkan side never dithers.
+        glDisable(GL_DITHER);
+    }
+    check_gl_error("while setting up the framebuffer")?;
+    let max_lights = usize::try_from(max_lights).unwrap_or(0);
+
+    for (index, draw) in scene.draws.iter().enumerate() {
+        draw_one(draw, max_lights).map_err(|e| format!("draw {index}: {e}"))?;
+        check_gl_error(&format!("after draw {index}"))?;
+    }
+
+    let mut pixels = vec![0u8; width as usize * height as usize * 4];
+    // SAFETY: `pixels` holds exactly width * height RGBA8 pixels with no row padding
+    // (PACK_ALIGNMENT 1).
+    unsafe {
+        glFinish();
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(
+            0,
+            0,
+            width as GLsizei,
+            height as GLsizei,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            pixels.as_mut_ptr().cast::<c_void>(),
+        );
+    }
+    check_gl_error("from glReadPixels")?;
+
+    // glReadPixels returns the bottom row first; the image wants the top row first.
+    let row = width as usize * 4;
+    let mut flipped = Vec::with_capacity(pixels.len());
+    for y in (0..height as usize).rev() {
+        flipped.extend_from_slice(&pixels[y * row..(y + 1) * row]);
+    }
+    image::RgbaImage::from_raw(width, height, flipped)
+        .ok_or_else(|| "internal error: readback size does not match the image".to_string())
+}
+
+fn face_enum(face: Face) -> GLenum {
+    match face {
+        Face::Front => GL_FRONT,
+        Face::Back => GL_BACK,
+        Face::FrontAndBack => GL_FRONT_AND_BACK,
+    }
+}
+
+fn color_material_enum(mode: ColorMaterialMode) -> GLenum {
+    match mode {
+        ColorMaterialMode::Emission => GL_EMISSION,
+        ColorMaterialMode::Ambient => GL_AMBIENT,
+        ColorMaterialMode::Diffuse => GL_DIFFUSE,
+        ColorMaterialMode::Specular => GL_SPECULAR,
+        ColorMaterialMode::AmbientAndDiffuse => GL_AMBIENT_AND_DIFFUSE,
+    }
+}
+
+fn set_enabled(cap: GLenum, on: bool) {
+    // SAFETY: a context is current on this thread.
+    unsafe {
+        if on {
+            glEnable(cap)
+        } else {
+            glDisable(cap)
+        }
+    }
+}
+
+/// glLight for every parameter of light `index`, with the MODELVIEW matrix at identity so the
+/// eye-space position and spot direction are stored unchanged.
+fn set_light(index: usize, light: &Light) {
+    let id = GL_LIGHT0 + index as GLenum;
+    let spot = light.spot_direction.to_array();
+    // SAFETY: a context is current on this thread; every array has the length GL reads.
+    unsafe {
+        glLightfv(id, GL_AMBIENT, light.ambient.to_array().as_ptr());
+        glLightfv(id, GL_DIFFUSE, light.diffuse.to_array().as_ptr());
+        glLightfv(id, GL_SPECULAR, light.specular.to_array().as_ptr());
+        glLightfv(id, GL_POSITION, light.position.to_array().as_ptr());
+        glLightfv(id, GL_SPOT_DIRECTION, spot.as_ptr());
+        glLightf(id, GL_SPOT_EXPONENT, light.spot_exponent);
+        glLightf(id, GL_SPOT_CUTOFF, light.spot_cutoff);
+        glLightf(id, GL_CONSTANT_ATTENUATION, light.constant_attenuation);
+        glLightf(id, GL_LINEAR_ATTENUATION, light.linear_attenuation);
+        glLightf(id, GL_QUADRATIC_ATTENUATION, light.quadratic_attenuation);
+    }
+    set_enabled(id, light.enabled);
+}
+
+fn set_material(face: GLenum, m: &Material) {
+    // SAFETY: a context is current on this thread; every array has four components.
+    unsafe {
+        glMaterialfv(face, GL_AMBIENT, m.ambient.to_array().as_ptr());
+        glMaterialfv(face, GL_DIFFUSE, m.diffuse.to_array().as_ptr());
+        glMaterialfv(face, GL_SPECULAR, m.specular.to_array().as_ptr());
+        glMaterialfv(face, GL_EMISSION, m.emission.to_array().as_ptr());
+        glMaterialf(face, GL_SHININESS, m.shininess);
+    }
+}
+
+fn draw_one(draw: &GlDraw, max_lights: usize) -> Result<(), String> {
+    let state = &draw.state;
+    if let Some((index, _)) = state
+        .lights
+        .iter()
+        .enumerate()
+        .find(|(i, l)| *i >= max_lights && l.enabled)
+    {
+        return Err(format!(
+            "light {index} is enabled but this GL has GL_MAX_LIGHTS = {max_lights}"
+        ));
+    }
+    let mesh = draw.mesh;
+    let count = mesh.triangle_count() * 3;
+    if let Some(&bad) = mesh.indices[..count]
+        .iter()
+        .find(|&&i| i as usize >= mesh.vertices.len())
+    {
+        return Err(format!(
+            "index {bad} is out of range for a mesh of {} vertices",
+            mesh.vertices.len()
+        ));
+    }
+    let count = GLsizei::try_from(count).map_err(|_| format!("{count} indices are too many for one draw"))?;
+
+    // SAFETY: a context is current on this thread; matrices are 16 floats, column-major as
+    // both glam and GL store them.
+    unsafe {
+        glMatrixMode(GL_PROJECTION);
+        glLoadMatrixf(draw.projection.to_cols_array().as_ptr());
+        // Light positions and spot directions are already in eye space.
+        glMatrixMode(GL_MODELVIEW);
+        glLoadIdentity();
+    }
+    for (index, light) in state.lights.iter().enumerate().take(max_lights) {
+        set_light(index, light);
+    }
+
+    // Materials first, with COLOR_MATERIAL off so no parameter is tracking the color and every
+    // glMaterial call takes effect; then glColorMaterial, then the enable.
+    set_enabled(GL_COLOR_MATERIAL, false);
+    set_material(GL_FRONT, &state.front);
+    set_material(GL_BACK, &state.back);
+    let model = &state.model;
+    let color_control = match model.color_control {
+        ColorControl::SingleColor => GL_SINGLE_COLOR,
+        ColorControl::SeparateSpecularColor => GL_SEPARATE_SPECULAR_COLOR,
+    };
+    // SAFETY: a context is current on this thread; the ambient array has four components.
+    unsafe {
+        glColorMaterial(
+            face_enum(state.color_material.face),
+            color_material_enum(state.color_material.mode),
+        );
+        glLightModelfv(GL_LIGHT_MODEL_AMBIENT, model.ambient.to_array().as_ptr());
+        glLightModeli(
+            GL_LIGHT_MODEL_LOCAL_VIEWER,
+            if model.local_viewer { GL_TRUE } else { GL_FALSE },
+        );
+        glLightModeli(
+            GL_LIGHT_MODEL_TWO_SIDE,
+            if model.two_side { GL_TRUE } else { GL_FALSE },
+        );
+        glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, color_control as GLint);
+        // ffvk's per-fragment mode has no GL counterpart: compare it with SMOOTH.
+        glShadeModel(if state.mode == LightingMode::Flat {
+            GL_FLAT
+        } else {
+            GL_SMOOTH
+        });
+    }
+    set_enabled(GL_COLOR_MATERIAL, state.color_material.enabled);
+    set_enabled(GL_NORMALIZE, state.normalize);
+    set_enabled(GL_RESCALE_NORMAL, state.rescale_normal);
+    set_enabled(GL_LIGHTING, state.lighting);
+
+    if count == 0 {
+        return Ok(());
+    }
+    let stride = std::mem::size_of::<Vertex>() as GLsizei;
+    let base = mesh.vertices.as_ptr().cast::<u8>();
+    // SAFETY: a context is current on this thread. The arrays point into `mesh.vertices`
+    // (repr(C) f32 fields, `stride` bytes apart), every index was checked against its length,
+    // and glDrawElements reads the client arrays before it returns; they are disabled after.
+    unsafe {
+        glMatrixMode(GL_MODELVIEW);
+        glLoadMatrixf(draw.modelview.to_cols_array().as_ptr());
+        glEnableClientState(GL_VERTEX_ARRAY);
+        glEnableClientState(GL_NORMAL_ARRAY);
+        glEnableClientState(GL_COLOR_ARRAY);
+        glVertexPointer(
+            3,
+            GL_FLOAT,
+            stride,
+            base.add(std::mem::offset_of!(Vertex, position)).cast(),
+        );
+        glNormalPointer(
+            GL_FLOAT,
+            stride,
+            base.add(std::mem::offset_of!(Vertex, normal)).cast(),
+        );
+        glColorPointer(
+            4,
+            GL_FLOAT,
+            stride,
+            base.add(std::mem::offset_of!(Vertex, color)).cast(),
+        );
+        glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, mesh.indices.as_ptr().cast());
+        glDisableClientState(GL_VERTEX_ARRAY);
+        glDisableClientState(GL_NORMAL_ARRAY);
+        glDisableClientState(GL_COLOR_ARRAY);
+    }
+    Ok(())
+}

@@ -1,0 +1,1 @@
+pub mod gl_reference;
