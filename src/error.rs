@@ -42,6 +42,9 @@ pub enum Error {
     #[error(transparent)]
     State(#[from] StateError),
 
+    #[error(transparent)]
+    Scene(#[from] crate::scene::SceneError),
+
     #[error("cannot write {path}: {message}")]
     Output { path: PathBuf, message: String },
 

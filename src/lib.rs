@@ -6,6 +6,7 @@
 
 pub mod demo;
 pub mod error;
+pub mod explain;
 pub mod gl;
 pub mod gltf_load;
 pub mod images;
@@ -15,6 +16,7 @@ pub mod pipeline;
 pub mod presets;
 pub mod reference;
 pub mod renderer;
+pub mod scene;
 pub mod shaders;
 pub mod teapot;
 pub mod vk;

@@ -4,6 +4,9 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
+use ffvk::gl::state::LightingMode;
+use ffvk::images::save_png;
+use ffvk::scene::{render_scene, Scene};
 use ffvk::vk::Validation;
 use ffvk::{Renderer, RendererOptions};
 
@@ -34,6 +37,105 @@ enum Command {
         #[arg(short, long, default_value = "out/demo")]
         out: PathBuf,
     },
+    /// Render scene files (or directories of them) with one device.
+    Render {
+        /// Scene files (.toml) or directories whose *.toml files are rendered in name order.
+        #[arg(required = true)]
+        scenes: Vec<PathBuf>,
+        /// Output PNG when rendering one scene; with several, a directory (NAME.png each).
+        #[arg(short, long)]
+        out: Option<PathBuf>,
+        /// Override the scenes' lighting mode.
+        #[arg(long)]
+        lighting: Option<LightingMode>,
+        /// Override the image size, as WxH (the vertical field of view is kept).
+        #[arg(long, value_parser = parse_size)]
+        size: Option<(u32, u32)>,
+    },
+    /// Write the Utah teapot (Newell's patches) as a glTF file.
+    Teapot {
+        /// Tessellation level: each patch becomes LEVEL×LEVEL quads.
+        #[arg(long, default_value_t = 8)]
+        level: u32,
+        #[arg(short, long, default_value = "assets/teapot.gltf")]
+        out: PathBuf,
+    },
+    /// Print every term of the lighting equation at one pixel (CPU reference).
+    Explain {
+        scene: PathBuf,
+        /// The pixel, as X,Y from the top-left corner.
+        #[arg(long, value_parser = parse_pixel)]
+        pixel: (u32, u32),
+        #[arg(long)]
+        lighting: Option<LightingMode>,
+        #[arg(long, value_parser = parse_size)]
+        size: Option<(u32, u32)>,
+    },
+}
+
+fn parse_pair(s: &str, sep: char, what: &str) -> Result<(u32, u32), String> {
+    let parts: Vec<&str> = s.split(sep).collect();
+    match parts.as_slice() {
+        [a, b] => match (a.trim().parse(), b.trim().parse()) {
+            (Ok(a), Ok(b)) => Ok((a, b)),
+            _ => Err(format!("{s:?}: expected {what}")),
+        },
+        _ => Err(format!("{s:?}: expected {what}")),
+    }
+}
+
+fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let (w, h) = parse_pair(s, 'x', "WIDTHxHEIGHT, e.g. 512x512")?;
+    if w == 0 || h == 0 || w > ffvk::scene::MAX_SIZE || h > ffvk::scene::MAX_SIZE {
+        return Err(format!(
+            "{s:?}: expected each side in 1..={}",
+            ffvk::scene::MAX_SIZE
+        ));
+    }
+    Ok((w, h))
+}
+
+fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
+    parse_pair(s, ',', "X,Y, e.g. 100,80")
+}
+
+/// The scene files named on the command line, directories expanded.
+fn scene_files(inputs: &[PathBuf]) -> ffvk::Result<Vec<PathBuf>> {
+    let mut files = Vec::new();
+    for input in inputs {
+        if input.is_dir() {
+            let entries = std::fs::read_dir(input).map_err(|e| ffvk::Error::Input {
+                path: input.clone(),
+                message: e.to_string(),
+            })?;
+            let mut found: Vec<PathBuf> = entries
+                .filter_map(|e| e.ok().map(|e| e.path()))
+                .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+                .collect();
+            found.sort();
+            if found.is_empty() {
+                return Err(ffvk::Error::Input {
+                    path: input.clone(),
+                    message: "no .toml scene files in this directory".into(),
+                });
+            }
+            files.extend(found);
+        } else {
+            files.push(input.clone());
+        }
+    }
+    Ok(files)
+}
+
+fn load_scene(path: &std::path::Path, size: Option<(u32, u32)>) -> ffvk::Result<Scene> {
+    let mut scene = Scene::load(path)?;
+    for w in &scene.warnings {
+        eprintln!("warning: {w}");
+    }
+    if let Some((w, h)) = size {
+        scene.set_size(w, h);
+    }
+    Ok(scene)
 }
 
 fn options(cli: &Cli) -> RendererOptions {
@@ -81,6 +183,73 @@ fn run(cli: Cli) -> ffvk::Result<()> {
             Ok(())
         }
         Command::Demo { out } => ffvk::demo::run(&options(&cli), out),
+        Command::Render {
+            scenes,
+            out,
+            lighting,
+            size,
+        } => {
+            let files = scene_files(scenes)?;
+            let single = files.len() == 1 && !scenes[0].is_dir();
+            let mut renderer = Renderer::new(&options(&cli))?;
+            for file in &files {
+                let scene = load_scene(file, *size)?;
+                let image = render_scene(&mut renderer, &scene, *lighting)?;
+                let stem = file
+                    .file_stem()
+                    .map(|s| s.to_string_lossy().into_owned())
+                    .unwrap_or_default();
+                let path = match (single, out) {
+                    (true, Some(out)) => out.clone(),
+                    (false, Some(dir)) => dir.join(format!("{stem}.png")),
+                    (_, None) => file.with_extension("png"),
+                };
+                save_png(&image, &path)?;
+                println!("{} -> {}", file.display(), path.display());
+            }
+            Ok(())
+        }
+        Command::Teapot { level, out } => {
+            let mesh = ffvk::teapot::teapot(*level).map_err(ffvk::Error::Mesh)?;
+            ffvk::teapot::write_gltf(&mesh, out).map_err(|e| ffvk::Error::Output {
+                path: out.clone(),
+                message: e.to_string(),
+            })?;
+            println!(
+                "wrote {} ({} vertices, {} triangles)",
+                out.display(),
+                mesh.vertices.len(),
+                mesh.triangle_count()
+            );
+            Ok(())
+        }
+        Command::Explain {
+            scene,
+            pixel,
+            lighting,
+            size,
+        } => {
+            let scene = load_scene(scene, *size)?;
+            let (x, y) = *pixel;
+            if x >= scene.width || y >= scene.height {
+                return Err(ffvk::Error::Input {
+                    path: scene.path.clone(),
+                    message: format!(
+                        "--pixel {x},{y} is outside the {}x{} image: expected x < {} and y < {}",
+                        scene.width, scene.height, scene.width, scene.height
+                    ),
+                });
+            }
+            let mode = lighting.unwrap_or(scene.state.mode);
+            match ffvk::explain::explain(&scene, x, y, mode) {
+                Some(text) => print!("{text}"),
+                None => println!(
+                    "pixel ({x}, {y}): no surface; the clear color {} shows",
+                    scene.clear_color
+                ),
+            }
+            Ok(())
+        }
     }
 }
 

@@ -1,0 +1,230 @@
+//! `ffvk explain`: every term of the equation at one pixel, from the CPU reference.
+
+use std::fmt::Write as _;
+
+use glam::{DVec3, DVec4};
+
+use crate::gl::state::LightingMode;
+use crate::reference::{self, Coverage, EyeVertex, Lit};
+use crate::scene::Scene;
+
+/// The surface at a pixel: which mesh and triangle, and where in it.
+pub struct Hit {
+    pub mesh: usize,
+    pub triangle: usize,
+    pub vertices: [usize; 3],
+    pub coverage: Coverage,
+    pub depth: f64,
+}
+
+/// The nearest triangle whose interior holds the center of pixel (x, y), row 0 at the top.
+pub fn find_surface(scene: &Scene, x: u32, y: u32) -> Option<Hit> {
+    let mut best: Option<Hit> = None;
+    for (mi, mesh) in scene.meshes.iter().enumerate() {
+        let state = scene.draw_state(mesh);
+        let modelview = scene.modelview(mesh);
+        let clip: Vec<DVec4> = mesh
+            .data
+            .vertices
+            .iter()
+            .map(|v| reference::transform(&state, modelview, scene.projection, v).clip)
+            .collect();
+        for (ti, t) in mesh.data.indices.chunks_exact(3).enumerate() {
+            let idx = [t[0] as usize, t[1] as usize, t[2] as usize];
+            let c = idx.map(|i| clip[i]);
+            if c.iter().any(|c| c.w <= 0.0) {
+                continue; // behind the eye: clipped away, not something explain handles
+            }
+            let Some(cov) = reference::coverage(c, scene.width, scene.height, x, y) else {
+                continue;
+            };
+            let w = cov.weights;
+            let depth = (c[0].z / c[0].w) * w.x + (c[1].z / c[1].w) * w.y + (c[2].z / c[2].w) * w.z;
+            if !(-1.0..=1.0).contains(&depth) {
+                continue;
+            }
+            if best.as_ref().is_none_or(|b| !scene.depth_test || depth < b.depth) {
+                best = Some(Hit {
+                    mesh: mi,
+                    triangle: ti,
+                    vertices: idx,
+                    coverage: cov,
+                    depth,
+                });
+            }
+        }
+    }
+    best
+}
+
+fn rgb(v: DVec3) -> String {
+    format!("({:.4}, {:.4}, {:.4})", v.x, v.y, v.z)
+}
+
+fn rgba(v: DVec4) -> String {
+    format!("({:.4}, {:.4}, {:.4}, {:.4})", v.x, v.y, v.z, v.w)
+}
+
+fn bytes(v: DVec4) -> String {
+    let b = |c: f64| (c.clamp(0.0, 1.0) * 255.0).round() as u8;
+    format!("[{}, {}, {}, {}]", b(v.x), b(v.y), b(v.z), b(v.w))
+}
+
+/// Writes the terms of one evaluation of the equation.
+fn terms(out: &mut String, indent: &str, lit: &Lit) {
+    let _ = writeln!(out, "{indent}e_cm (emission)            {}", rgb(lit.emission));
+    let _ = writeln!(
+        out,
+        "{indent}a_cm * a_cs (scene ambient) {}",
+        rgb(lit.scene_ambient)
+    );
+    for (i, t) in lit.lights.iter().enumerate() {
+        let _ = writeln!(
+            out,
+            "{indent}light #{i}: att_i {:.4}  spot_i {:.4}  f_i {}",
+            t.att_i, t.spot_i, t.f_i
+        );
+        let _ = writeln!(out, "{indent}  a_cm * a_cli               {}", rgb(t.ambient));
+        let _ = writeln!(out, "{indent}  (n ⊙ VP_pli) d_cm * d_cli  {}", rgb(t.diffuse));
+        let _ = writeln!(
+            out,
+            "{indent}  f_i (n ⊙ ĥ_i)^s_rm s_cm * s_cli {}",
+            rgb(t.specular)
+        );
+    }
+    let _ = writeln!(out, "{indent}c_pri (clamped)            {}", rgba(lit.c_pri));
+    let _ = writeln!(out, "{indent}c_sec (clamped)            {}", rgba(lit.c_sec));
+}
+
+/// The explanation of pixel (x, y) in `mode`, or `None` when nothing covers it.
+pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<String> {
+    let hit = find_surface(scene, x, y)?;
+    let mesh = &scene.meshes[hit.mesh];
+    let mut state = scene.draw_state(mesh);
+    state.mode = mode;
+    let modelview = scene.modelview(mesh);
+    let verts = hit.vertices.map(|i| &mesh.data.vertices[i]);
+    let eye: [EyeVertex; 3] = verts.map(|v| reference::transform(&state, modelview, scene.projection, v));
+    let back = !hit.coverage.front;
+    let w = hit.coverage.weights;
+
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "pixel ({x}, {y}) of {} ({}x{}), {} mode",
+        scene.path.display(),
+        scene.width,
+        scene.height,
+        mode.name()
+    );
+    let _ = writeln!(
+        out,
+        "surface: mesh {:?} triangle {} (vertices {:?}), {} face, window depth {:.5}",
+        mesh.name,
+        hit.triangle,
+        hit.vertices,
+        if back { "back" } else { "front" },
+        hit.depth * 0.5 + 0.5
+    );
+    let _ = writeln!(
+        out,
+        "perspective-correct weights: ({:.4}, {:.4}, {:.4})",
+        w.x, w.y, w.z
+    );
+    let two_sided_back = back && state.model.two_side;
+    let _ = writeln!(
+        out,
+        "material: {} material{}",
+        if two_sided_back { "back" } else { "front" },
+        if two_sided_back {
+            ", normal negated (two-sided lighting)"
+        } else {
+            ""
+        }
+    );
+    if !state.lighting {
+        let _ = writeln!(out, "LIGHTING is disabled: the vertex color passes through.");
+    }
+
+    let color = match mode {
+        LightingMode::Vertex | LightingMode::Flat => {
+            let shown: Vec<usize> = if mode == LightingMode::Flat {
+                vec![2]
+            } else {
+                vec![0, 1, 2]
+            };
+            let mut pri = DVec4::ZERO;
+            let mut sec = DVec4::ZERO;
+            for k in 0..3 {
+                let e = &eye[k];
+                let lit = reference::light_face(&state, e.eye, e.normal, e.color, back);
+                let weight = if mode == LightingMode::Flat {
+                    [0.0, 0.0, 1.0][k]
+                } else {
+                    w[k]
+                };
+                if !shown.contains(&k) {
+                    continue;
+                }
+                let _ = writeln!(
+                    out,
+                    "vertex {} (index {}){}: eye {}, normal {}, color {}",
+                    k,
+                    hit.vertices[k],
+                    if mode == LightingMode::Flat {
+                        " [provoking: the triangle's last vertex]"
+                    } else {
+                        ""
+                    },
+                    rgba(e.eye),
+                    rgb(e.normal),
+                    rgba(e.color)
+                );
+                if state.lighting {
+                    terms(&mut out, "  ", &lit);
+                }
+                let (p, s) = reference::vertex_color(&state, e, back);
+                pri += p * weight;
+                sec += s * weight;
+            }
+            if mode == LightingMode::Vertex {
+                let _ = writeln!(out, "interpolated c_pri {}  c_sec {}", rgba(pri), rgba(sec));
+            }
+            reference::color_sum(pri, sec)
+        }
+        LightingMode::Fragment => {
+            let p = eye[0].eye * w.x + eye[1].eye * w.y + eye[2].eye * w.z;
+            let c = eye[0].color * w.x + eye[1].color * w.y + eye[2].color * w.z;
+            let color = reference::pixel_color(&state, modelview, scene.projection, verts, hit.coverage);
+            let _ = writeln!(out, "fragment: eye {}, color {}", rgba(p), rgba(c));
+            if state.lighting {
+                let unit = |v: DVec3| {
+                    if v.length() > 0.0 {
+                        v / v.length()
+                    } else {
+                        DVec3::ZERO
+                    }
+                };
+                let dir = unit(eye[0].normal) * w.x + unit(eye[1].normal) * w.y + unit(eye[2].normal) * w.z;
+                let len = eye[0].normal.length() * w.x
+                    + eye[1].normal.length() * w.y
+                    + eye[2].normal.length() * w.z;
+                let n = unit(dir) * len;
+                let _ = writeln!(
+                    out,
+                    "fragment normal (renormalized direction × interpolated length) {}",
+                    rgb(n)
+                );
+                terms(&mut out, "  ", &reference::light_face(&state, p, n, c, back));
+            }
+            color
+        }
+    };
+    let _ = writeln!(
+        out,
+        "final color (clamp(c_pri + c_sec), alpha of c_pri) {} = {}",
+        rgba(color),
+        bytes(color)
+    );
+    Some(out)
+}

@@ -1,0 +1,803 @@
+//! Scene files (TOML): every piece of GL lighting state with GL's names and defaults, a camera,
+//! the image, and meshes from glTF files or built-in shapes. See the README for the format.
+//!
+//! Light positions and spot directions are given in world space; they are set through
+//! [`GlState::light`] with the view matrix loaded, exactly as glLight would store them.
+
+use std::path::{Path, PathBuf};
+
+use glam::{EulerRot, Mat4, Quat, Vec3, Vec4};
+use serde::Deserialize;
+
+use crate::gl::state::{
+    Cap, ColorControl, ColorMaterialMode, Face, GlState, LightModelParam, LightParam, LightingMode,
+    LightingState, Material, StateError, MAX_LIGHTS,
+};
+use crate::gltf_load::{self, LoadError};
+use crate::mesh::MeshData;
+use crate::{presets, teapot};
+
+/// The largest image side a scene may ask for (the renderer also checks its device's limit).
+pub const MAX_SIZE: u32 = 16384;
+
+/// Why a scene could not be loaded. Every message starts with the scene file's path and
+/// names the field, the value and what was expected.
+#[derive(Debug, thiserror::Error)]
+pub enum SceneError {
+    #[error("{}: cannot read the scene: {message}", .path.display())]
+    Io { path: PathBuf, message: String },
+    #[error("{}: {message}", .path.display())]
+    Toml { path: PathBuf, message: String },
+    #[error("{}: {field}: {message}", .path.display())]
+    Field {
+        path: PathBuf,
+        field: String,
+        message: String,
+    },
+    #[error("{}: {field}: {source}", .path.display())]
+    State {
+        path: PathBuf,
+        field: String,
+        source: StateError,
+    },
+    #[error("{}: {field}: {source}", .path.display())]
+    Gltf {
+        path: PathBuf,
+        field: String,
+        source: LoadError,
+    },
+}
+
+// ---------------------------------------------------------------------------------------
+// The file's shape. Every table rejects unknown fields.
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SceneFile {
+    #[serde(default)]
+    image: ImageSpec,
+    #[serde(default)]
+    camera: CameraSpec,
+    /// GL_LIGHTING. On unless said otherwise: scene files are about lighting.
+    lighting: Option<bool>,
+    #[serde(default)]
+    light_model: LightModelSpec,
+    #[serde(default)]
+    lights: Vec<LightSpec>,
+    material: Option<MaterialSpec>,
+    back_material: Option<MaterialSpec>,
+    color_material: Option<ColorMaterialSpec>,
+    #[serde(default)]
+    normalize: bool,
+    #[serde(default)]
+    rescale_normal: bool,
+    /// Whether KHR_lights_punctual lights of the glTF files are added after `lights`.
+    gltf_lights: Option<bool>,
+    #[serde(default)]
+    meshes: Vec<MeshSpec>,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ImageSpec {
+    size: Option<[u32; 2]>,
+    clear_color: Option<Vec<f32>>,
+    lighting_mode: Option<String>,
+    depth_test: Option<bool>,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct CameraSpec {
+    eye: Option<[f32; 3]>,
+    target: Option<[f32; 3]>,
+    up: Option<[f32; 3]>,
+    /// Vertical field of view, degrees (gluPerspective's fovy).
+    fovy: Option<f32>,
+    near: Option<f32>,
+    far: Option<f32>,
+    /// Column-major, as glLoadMatrixf; replaces eye/target/up.
+    view: Option<[f32; 16]>,
+    /// Column-major GL projection; replaces fovy/near/far.
+    projection: Option<[f32; 16]>,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct LightModelSpec {
+    ambient: Option<Vec<f32>>,
+    local_viewer: Option<bool>,
+    two_side: Option<bool>,
+    color_control: Option<String>,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct LightSpec {
+    /// GL_LIGHTi; by default the position in the list.
+    index: Option<usize>,
+    enabled: Option<bool>,
+    ambient: Option<Vec<f32>>,
+    diffuse: Option<Vec<f32>>,
+    specular: Option<Vec<f32>>,
+    /// World space, homogeneous: w = 0 is a directional light.
+    position: Option<[f32; 4]>,
+    /// World space.
+    spot_direction: Option<[f32; 3]>,
+    spot_exponent: Option<f32>,
+    spot_cutoff: Option<f32>,
+    constant_attenuation: Option<f32>,
+    linear_attenuation: Option<f32>,
+    quadratic_attenuation: Option<f32>,
+}
+
+#[derive(Debug, Default, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct MaterialSpec {
+    /// A classic GL material (see `presets`); the fields below override it.
+    preset: Option<String>,
+    ambient: Option<Vec<f32>>,
+    diffuse: Option<Vec<f32>>,
+    specular: Option<Vec<f32>>,
+    emission: Option<Vec<f32>>,
+    shininess: Option<f32>,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ColorMaterialSpec {
+    enabled: Option<bool>,
+    face: Option<String>,
+    mode: Option<String>,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct MeshSpec {
+    /// A .gltf or .glb file, relative to the scene file.
+    gltf: Option<PathBuf>,
+    /// Only the glTF node with this name (and its children).
+    node: Option<String>,
+    /// Only primitives of the glTF mesh with this name.
+    mesh: Option<String>,
+    /// A built-in shape instead of a file: "teapot", "sphere" or "plane".
+    builtin: Option<String>,
+    /// Tessellation of a built-in shape (teapot: 1..=64, sphere: slices).
+    level: Option<u32>,
+    /// Vertex color of a built-in shape (feeds COLOR_MATERIAL).
+    color: Option<Vec<f32>>,
+    translate: Option<[f32; 3]>,
+    /// Degrees about x, then y, then z.
+    rotate: Option<[f32; 3]>,
+    scale: Option<[f32; 3]>,
+    /// Column-major model matrix; replaces translate/rotate/scale.
+    matrix: Option<[f32; 16]>,
+    /// Front (and back unless `back_material`) material for this mesh only.
+    material: Option<MaterialSpec>,
+    back_material: Option<MaterialSpec>,
+}
+
+// ---------------------------------------------------------------------------------------
+// The loaded scene.
+
+/// One mesh placed in the scene, with the materials it is drawn with.
+#[derive(Debug, Clone)]
+pub struct SceneMesh {
+    pub name: String,
+    pub data: MeshData,
+    /// Object to world.
+    pub model: Mat4,
+    pub front: Material,
+    pub back: Material,
+}
+
+/// A scene ready to draw: GL state already in eye space, matrices in GL conventions.
+#[derive(Debug, Clone)]
+pub struct Scene {
+    pub path: PathBuf,
+    pub width: u32,
+    pub height: u32,
+    pub clear_color: Vec4,
+    pub depth_test: bool,
+    pub view: Mat4,
+    pub projection: Mat4,
+    /// Lights, light model, color material, normal handling, mode; materials per mesh.
+    pub state: LightingState,
+    pub meshes: Vec<SceneMesh>,
+    /// Things ignored while loading (from glTF files), one sentence each.
+    pub warnings: Vec<String>,
+}
+
+impl Scene {
+    /// The lighting state `mesh` is drawn with.
+    pub fn draw_state(&self, mesh: &SceneMesh) -> LightingState {
+        let mut state = self.state;
+        state.front = mesh.front;
+        state.back = mesh.back;
+        state
+    }
+
+    pub fn modelview(&self, mesh: &SceneMesh) -> Mat4 {
+        self.view * mesh.model
+    }
+
+    /// Changes the image size, keeping the vertical field of view (x is rescaled in clip
+    /// space for the new aspect ratio).
+    pub fn set_size(&mut self, width: u32, height: u32) {
+        let old = self.width as f32 / self.height as f32;
+        let new = width as f32 / height.max(1) as f32;
+        self.projection = Mat4::from_scale(Vec3::new(old / new, 1.0, 1.0)) * self.projection;
+        self.width = width;
+        self.height = height;
+    }
+
+    /// Reads and checks a scene file.
+    pub fn load(path: &Path) -> Result<Scene, SceneError> {
+        let text = std::fs::read_to_string(path).map_err(|e| SceneError::Io {
+            path: path.to_path_buf(),
+            message: e.to_string(),
+        })?;
+        Scene::parse(&text, path)
+    }
+
+    /// Parses scene text; `path` names it in errors and anchors relative glTF paths.
+    pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
+        let file: SceneFile = toml::from_str(text).map_err(|e| SceneError::Toml {
+            path: path.to_path_buf(),
+            message: e.to_string().trim_end().to_string(),
+        })?;
+        Builder { path }.build(file)
+    }
+}
+
+struct Builder<'a> {
+    path: &'a Path,
+}
+
+impl Builder<'_> {
+    fn field(&self, field: impl Into<String>, message: impl Into<String>) -> SceneError {
+        SceneError::Field {
+            path: self.path.to_path_buf(),
+            field: field.into(),
+            message: message.into(),
+        }
+    }
+
+    fn state(&self, field: impl Into<String>) -> impl FnOnce(StateError) -> SceneError + '_ {
+        let field = field.into();
+        move |source| SceneError::State {
+            path: self.path.to_path_buf(),
+            field,
+            source,
+        }
+    }
+
+    /// A color of 3 (alpha 1) or 4 finite numbers.
+    fn color(&self, field: &str, v: &[f32]) -> Result<Vec4, SceneError> {
+        let c = match *v {
+            [r, g, b] => Vec4::new(r, g, b, 1.0),
+            [r, g, b, a] => Vec4::new(r, g, b, a),
+            _ => {
+                return Err(self.field(
+                    field,
+                    format!("{v:?} has {} numbers: expected 3 (RGB) or 4 (RGBA)", v.len()),
+                ))
+            }
+        };
+        if !c.is_finite() {
+            return Err(self.field(field, format!("{v:?}: expected finite numbers")));
+        }
+        Ok(c)
+    }
+
+    fn finite(&self, field: &str, v: &[f32]) -> Result<(), SceneError> {
+        match v.iter().find(|x| !x.is_finite()) {
+            Some(x) => Err(self.field(field, format!("{x} is not finite: expected finite numbers"))),
+            None => Ok(()),
+        }
+    }
+
+    fn build(&self, file: SceneFile) -> Result<Scene, SceneError> {
+        let [width, height] = file.image.size.unwrap_or([512, 512]);
+        if width == 0 || height == 0 || width > MAX_SIZE || height > MAX_SIZE {
+            return Err(self.field(
+                "image.size",
+                format!("[{width}, {height}]: expected each side in 1..={MAX_SIZE}"),
+            ));
+        }
+        let clear_color = match &file.image.clear_color {
+            Some(c) => self.color("image.clear_color", c)?,
+            None => Vec4::new(0.0, 0.0, 0.0, 1.0),
+        };
+        let mode = match &file.image.lighting_mode {
+            Some(m) => m
+                .parse::<LightingMode>()
+                .map_err(|e| self.field("image.lighting_mode", e))?,
+            None => LightingMode::Vertex,
+        };
+        let (view, projection) = self.camera(&file.camera, width as f32 / height as f32)?;
+
+        let mut gl = GlState::new();
+        gl.set_enabled(Cap::Lighting, file.lighting.unwrap_or(true))
+            .map_err(self.state("lighting"))?;
+        gl.lighting_mode(mode);
+        gl.set_enabled(Cap::Normalize, file.normalize)
+            .map_err(self.state("normalize"))?;
+        gl.set_enabled(Cap::RescaleNormal, file.rescale_normal)
+            .map_err(self.state("rescale_normal"))?;
+        self.light_model(&mut gl, &file.light_model)?;
+        if let Some(cm) = &file.color_material {
+            self.color_material(&mut gl, cm)?;
+        }
+
+        // Lights are specified in world space with the view loaded, as glLight after
+        // glLoadMatrix(view).
+        gl.load_modelview(view).map_err(self.state("camera.view"))?;
+        for (i, spec) in file.lights.iter().enumerate() {
+            self.light(&mut gl, &format!("lights[{i}]"), spec.index.unwrap_or(i), spec)?;
+        }
+
+        let scene_front = match &file.material {
+            Some(m) => Some(self.material("material", m)?),
+            None => None,
+        };
+        let scene_back = match &file.back_material {
+            Some(m) => Some(self.material("back_material", m)?),
+            None => None,
+        };
+
+        let mut meshes = Vec::new();
+        let mut warnings = Vec::new();
+        for (i, spec) in file.meshes.iter().enumerate() {
+            let field = format!("meshes[{i}]");
+            let placed = self.mesh(&field, spec, &mut warnings, &mut |light, name| {
+                if !file.gltf_lights.unwrap_or(true) {
+                    return Ok(());
+                }
+                // The next disabled light takes it.
+                let f = format!("{field}: glTF light {name:?}");
+                let index = (0..MAX_LIGHTS)
+                    .find(|&i| !gl.lighting.lights[i].enabled)
+                    .ok_or_else(|| {
+                        self.field(
+                            &f,
+                            format!("no free light: expected at most {MAX_LIGHTS} enabled lights in all"),
+                        )
+                    })?;
+                gl.lighting.lights[index] = light;
+                let (position, direction) = (light.position, light.spot_direction);
+                gl.light(index, LightParam::Position(position))
+                    .map_err(self.state(&f))?;
+                gl.light(index, LightParam::SpotDirection(direction))
+                    .map_err(self.state(&f))?;
+                Ok(())
+            })?;
+            for (name, data, model, pbr) in placed {
+                // Material precedence: the mesh's own, the scene's, the glTF's, GL's default.
+                let front = match (&spec.material, scene_front, pbr) {
+                    (Some(m), _, _) => self.material(&format!("{field}.material"), m)?,
+                    (None, Some(m), _) => m,
+                    (None, None, Some(p)) => gltf_load::gl_material(&p),
+                    (None, None, None) => Material::default(),
+                };
+                let back = match (&spec.back_material, &spec.material, scene_back) {
+                    (Some(m), _, _) => self.material(&format!("{field}.back_material"), m)?,
+                    (None, Some(_), _) => front,
+                    (None, None, Some(m)) => m,
+                    (None, None, None) => front,
+                };
+                meshes.push(SceneMesh {
+                    name,
+                    data,
+                    model,
+                    front,
+                    back,
+                });
+            }
+        }
+        if meshes.is_empty() {
+            return Err(self.field("meshes", "no meshes: expected at least one [[meshes]] table"));
+        }
+        gl.load_modelview(Mat4::IDENTITY)
+            .map_err(self.state("camera.view"))?;
+
+        Ok(Scene {
+            path: self.path.to_path_buf(),
+            width,
+            height,
+            clear_color,
+            depth_test: file.image.depth_test.unwrap_or(true),
+            view,
+            projection,
+            state: gl.lighting,
+            meshes,
+            warnings,
+        })
+    }
+
+    fn camera(&self, c: &CameraSpec, aspect: f32) -> Result<(Mat4, Mat4), SceneError> {
+        let view = match c.view {
+            Some(m) => {
+                self.finite("camera.view", &m)?;
+                Mat4::from_cols_array(&m)
+            }
+            None => {
+                let eye = Vec3::from(c.eye.unwrap_or([0.0, 0.0, 3.0]));
+                let target = Vec3::from(c.target.unwrap_or([0.0, 0.0, 0.0]));
+                let up = Vec3::from(c.up.unwrap_or([0.0, 1.0, 0.0]));
+                self.finite("camera.eye", &eye.to_array())?;
+                self.finite("camera.target", &target.to_array())?;
+                if (target - eye).length() == 0.0 || (target - eye).cross(up).length() == 0.0 {
+                    return Err(self.field(
+                        "camera",
+                        format!("eye {eye} and target {target} with up {up}: expected distinct points and an up not along the view"),
+                    ));
+                }
+                Mat4::look_at_rh(eye, target, up)
+            }
+        };
+        let projection = match c.projection {
+            Some(m) => {
+                self.finite("camera.projection", &m)?;
+                Mat4::from_cols_array(&m)
+            }
+            None => {
+                let fovy = c.fovy.unwrap_or(45.0);
+                if !(fovy > 0.0 && fovy < 180.0) {
+                    return Err(self.field("camera.fovy", format!("{fovy}: expected degrees in (0, 180)")));
+                }
+                let near = c.near.unwrap_or(0.1);
+                let far = c.far.unwrap_or(100.0);
+                if !(near > 0.0 && far > near && far.is_finite()) {
+                    return Err(self.field(
+                        "camera.near",
+                        format!("near {near}, far {far}: expected 0 < near < far"),
+                    ));
+                }
+                Mat4::perspective_rh_gl(fovy.to_radians(), aspect, near, far)
+            }
+        };
+        Ok((view, projection))
+    }
+
+    fn light_model(&self, gl: &mut GlState, m: &LightModelSpec) -> Result<(), SceneError> {
+        if let Some(a) = &m.ambient {
+            let a = self.color("light_model.ambient", a)?;
+            gl.light_model(LightModelParam::Ambient(a))
+                .map_err(self.state("light_model.ambient"))?;
+        }
+        if let Some(b) = m.local_viewer {
+            gl.light_model(LightModelParam::LocalViewer(b))
+                .map_err(self.state("light_model.local_viewer"))?;
+        }
+        if let Some(b) = m.two_side {
+            gl.light_model(LightModelParam::TwoSide(b))
+                .map_err(self.state("light_model.two_side"))?;
+        }
+        if let Some(c) = &m.color_control {
+            let control = match c.as_str() {
+                "single_color" => ColorControl::SingleColor,
+                "separate_specular_color" => ColorControl::SeparateSpecularColor,
+                other => {
+                    return Err(self.field(
+                        "light_model.color_control",
+                        format!("{other:?}: expected \"single_color\" or \"separate_specular_color\""),
+                    ))
+                }
+            };
+            gl.light_model(LightModelParam::ColorControl(control))
+                .map_err(self.state("light_model.color_control"))?;
+        }
+        Ok(())
+    }
+
+    fn color_material(&self, gl: &mut GlState, cm: &ColorMaterialSpec) -> Result<(), SceneError> {
+        let face = match cm.face.as_deref().unwrap_or("front_and_back") {
+            "front" => Face::Front,
+            "back" => Face::Back,
+            "front_and_back" => Face::FrontAndBack,
+            other => {
+                return Err(self.field(
+                    "color_material.face",
+                    format!("{other:?}: expected \"front\", \"back\" or \"front_and_back\""),
+                ))
+            }
+        };
+        let mode = match cm.mode.as_deref().unwrap_or("ambient_and_diffuse") {
+            "emission" => ColorMaterialMode::Emission,
+            "ambient" => ColorMaterialMode::Ambient,
+            "diffuse" => ColorMaterialMode::Diffuse,
+            "specular" => ColorMaterialMode::Specular,
+            "ambient_and_diffuse" => ColorMaterialMode::AmbientAndDiffuse,
+            other => {
+                return Err(self.field(
+                    "color_material.mode",
+                    format!("{other:?}: expected \"emission\", \"ambient\", \"diffuse\", \"specular\" or \"ambient_and_diffuse\""),
+                ))
+            }
+        };
+        gl.color_material(face, mode);
+        // A [color_material] table enables it unless it says otherwise.
+        gl.set_enabled(Cap::ColorMaterial, cm.enabled.unwrap_or(true))
+            .map_err(self.state("color_material.enabled"))
+    }
+
+    fn light(&self, gl: &mut GlState, field: &str, index: usize, l: &LightSpec) -> Result<(), SceneError> {
+        let f = |name: &str| format!("{field}.{name}");
+        let idx_field = f("index");
+        gl.set_enabled(Cap::Light(index), l.enabled.unwrap_or(true))
+            .map_err(self.state(idx_field))?;
+        let colors = [
+            (
+                "ambient",
+                &l.ambient,
+                LightParam::Ambient as fn(Vec4) -> LightParam,
+            ),
+            ("diffuse", &l.diffuse, LightParam::Diffuse),
+            ("specular", &l.specular, LightParam::Specular),
+        ];
+        for (name, value, param) in colors {
+            if let Some(c) = value {
+                let c = self.color(&f(name), c)?;
+                gl.light(index, param(c)).map_err(self.state(f(name)))?;
+            }
+        }
+        if let Some(p) = l.position {
+            gl.light(index, LightParam::Position(Vec4::from(p)))
+                .map_err(self.state(f("position")))?;
+        }
+        if let Some(d) = l.spot_direction {
+            gl.light(index, LightParam::SpotDirection(Vec3::from(d)))
+                .map_err(self.state(f("spot_direction")))?;
+        }
+        let scalars = [
+            (
+                "spot_exponent",
+                l.spot_exponent,
+                LightParam::SpotExponent as fn(f32) -> LightParam,
+            ),
+            ("spot_cutoff", l.spot_cutoff, LightParam::SpotCutoff),
+            (
+                "constant_attenuation",
+                l.constant_attenuation,
+                LightParam::ConstantAttenuation,
+            ),
+            (
+                "linear_attenuation",
+                l.linear_attenuation,
+                LightParam::LinearAttenuation,
+            ),
+            (
+                "quadratic_attenuation",
+                l.quadratic_attenuation,
+                LightParam::QuadraticAttenuation,
+            ),
+        ];
+        for (name, value, param) in scalars {
+            if let Some(v) = value {
+                gl.light(index, param(v)).map_err(self.state(f(name)))?;
+            }
+        }
+        Ok(())
+    }
+
+    fn material(&self, field: &str, m: &MaterialSpec) -> Result<Material, SceneError> {
+        let mut material = match &m.preset {
+            Some(name) => presets::preset(name).ok_or_else(|| {
+                self.field(
+                    format!("{field}.preset"),
+                    format!(
+                        "{name:?} is not a preset: expected one of {}",
+                        presets::PRESET_NAMES.join(", ")
+                    ),
+                )
+            })?,
+            None => Material::default(),
+        };
+        let f = |name: &str| format!("{field}.{name}");
+        if let Some(c) = &m.ambient {
+            material.ambient = self.color(&f("ambient"), c)?;
+        }
+        if let Some(c) = &m.diffuse {
+            material.diffuse = self.color(&f("diffuse"), c)?;
+        }
+        if let Some(c) = &m.specular {
+            material.specular = self.color(&f("specular"), c)?;
+        }
+        if let Some(c) = &m.emission {
+            material.emission = self.color(&f("emission"), c)?;
+        }
+        if let Some(s) = m.shininess {
+            material.shininess = s;
+        }
+        material.validate().map_err(self.state(field))?;
+        Ok(material)
+    }
+
+    fn model_matrix(&self, field: &str, m: &MeshSpec) -> Result<Mat4, SceneError> {
+        if let Some(matrix) = m.matrix {
+            if m.translate.is_some() || m.rotate.is_some() || m.scale.is_some() {
+                return Err(self.field(
+                    format!("{field}.matrix"),
+                    "given with translate/rotate/scale: expected either a matrix or those",
+                ));
+            }
+            self.finite(&format!("{field}.matrix"), &matrix)?;
+            return Ok(Mat4::from_cols_array(&matrix));
+        }
+        let t = m.translate.unwrap_or([0.0; 3]);
+        let r = m.rotate.unwrap_or([0.0; 3]);
+        let s = m.scale.unwrap_or([1.0; 3]);
+        for (name, v) in [("translate", t), ("rotate", r), ("scale", s)] {
+            self.finite(&format!("{field}.{name}"), &v)?;
+        }
+        let rotation = Quat::from_euler(
+            EulerRot::ZYX,
+            r[2].to_radians(),
+            r[1].to_radians(),
+            r[0].to_radians(),
+        );
+        Ok(Mat4::from_scale_rotation_translation(
+            Vec3::from(s),
+            rotation,
+            Vec3::from(t),
+        ))
+    }
+
+    /// The placed primitives of one [[meshes]] entry: (name, data, object-to-world, glTF material).
+    #[allow(clippy::type_complexity)]
+    fn mesh(
+        &self,
+        field: &str,
+        spec: &MeshSpec,
+        warnings: &mut Vec<String>,
+        add_light: &mut dyn FnMut(crate::gl::state::Light, &str) -> Result<(), SceneError>,
+    ) -> Result<Vec<(String, MeshData, Mat4, Option<gltf_load::PbrMaterial>)>, SceneError> {
+        let model = self.model_matrix(field, spec)?;
+        match (&spec.gltf, &spec.builtin) {
+            (Some(_), Some(_)) => Err(self.field(field, "has both gltf and builtin: expected one of them")),
+            (None, None) => Err(self.field(field, "has neither gltf nor builtin: expected one of them")),
+            (None, Some(name)) => {
+                if spec.node.is_some() || spec.mesh.is_some() {
+                    return Err(self.field(
+                        field,
+                        "node and mesh select within a glTF file: expected them with gltf",
+                    ));
+                }
+                let mut data = match name.as_str() {
+                    "teapot" => teapot::teapot(spec.level.unwrap_or(12))
+                        .map_err(|e| self.field(format!("{field}.level"), e))?,
+                    "sphere" => {
+                        let n = spec.level.unwrap_or(32);
+                        if !(3..=1024).contains(&n) {
+                            return Err(self
+                                .field(format!("{field}.level"), format!("{n}: expected 3..=1024 slices")));
+                        }
+                        MeshData::uv_sphere(n, n / 2)
+                    }
+                    "plane" => plane(spec.level.unwrap_or(1).clamp(1, 1024)),
+                    other => {
+                        return Err(self.field(
+                            format!("{field}.builtin"),
+                            format!("{other:?}: expected \"teapot\", \"sphere\" or \"plane\""),
+                        ))
+                    }
+                };
+                if let Some(c) = &spec.color {
+                    let c = self.color(&format!("{field}.color"), c)?;
+                    data.vertices.iter_mut().for_each(|v| v.color = c.to_array());
+                }
+                Ok(vec![(name.clone(), data, model, None)])
+            }
+            (Some(file), None) => {
+                let base = self.path.parent().unwrap_or(Path::new("."));
+                let gltf_path = base.join(file);
+                let loaded = gltf_load::load(&gltf_path).map_err(|source| SceneError::Gltf {
+                    path: self.path.to_path_buf(),
+                    field: format!("{field}.gltf"),
+                    source,
+                })?;
+                warnings.extend(
+                    loaded
+                        .warnings
+                        .iter()
+                        .map(|w| format!("{}: {w}", gltf_path.display())),
+                );
+                for light in &loaded.lights {
+                    let mut gl_light = gltf_load::gl_light(light);
+                    // World-space light under the scene's model transform.
+                    gl_light.position = model * gl_light.position;
+                    gl_light.spot_direction = glam::Mat3::from_mat4(model) * gl_light.spot_direction;
+                    add_light(gl_light, &light.name)?;
+                }
+                let mut placed = Vec::new();
+                for m in loaded.meshes {
+                    let base_name = m.name.split('[').next().unwrap_or("").to_string();
+                    if spec.mesh.as_ref().is_some_and(|want| *want != base_name) {
+                        continue;
+                    }
+                    placed.push((
+                        m.name,
+                        m.data,
+                        model * m.transform,
+                        m.material.or(Some(Default::default())),
+                    ));
+                }
+                if let Some(node) = &spec.node {
+                    // Nodes are matched by the loader's mesh names; a node filter needs the
+                    // node hierarchy, so it selects meshes named like the node.
+                    placed.retain(|(name, ..)| name.split('[').next() == Some(node.as_str()));
+                }
+                if placed.is_empty() {
+                    let what = match (&spec.mesh, &spec.node) {
+                        (Some(m), _) => format!("no mesh named {m:?}"),
+                        (None, Some(n)) => format!("no node named {n:?}"),
+                        _ => "no triangle meshes".to_string(),
+                    };
+                    return Err(self.field(
+                        format!("{field}.gltf"),
+                        format!("{}: {what}", gltf_path.display()),
+                    ));
+                }
+                Ok(placed)
+            }
+        }
+    }
+}
+
+/// The square [-1, 1]² in the z = 0 plane, facing +z, `n`×`n` cells.
+fn plane(n: u32) -> MeshData {
+    use crate::mesh::Vertex;
+    let mut data = MeshData::default();
+    for j in 0..=n {
+        for i in 0..=n {
+            let (x, y) = (-1.0 + 2.0 * i as f32 / n as f32, -1.0 + 2.0 * j as f32 / n as f32);
+            data.vertices
+                .push(Vertex::new(Vec3::new(x, y, 0.0), Vec3::Z, Vec4::ONE));
+        }
+    }
+    let at = |i: u32, j: u32| j * (n + 1) + i;
+    for j in 0..n {
+        for i in 0..n {
+            data.indices.extend([
+                at(i, j),
+                at(i + 1, j),
+                at(i + 1, j + 1),
+                at(i, j),
+                at(i + 1, j + 1),
+                at(i, j + 1),
+            ]);
+        }
+    }
+    data
+}
+
+/// Draws a scene with `renderer`; `mode` overrides the file's lighting mode when given.
+pub fn render_scene(
+    renderer: &mut crate::Renderer,
+    scene: &Scene,
+    mode: Option<LightingMode>,
+) -> crate::Result<image::RgbaImage> {
+    let (width, height) = (scene.width, scene.height);
+    let uploaded = scene
+        .meshes
+        .iter()
+        .map(|m| renderer.upload(&m.data))
+        .collect::<crate::Result<Vec<_>>>()?;
+    let mut frame = crate::Frame::new(width, height);
+    frame.clear_color = scene.clear_color;
+    frame.depth_test = scene.depth_test;
+    for (mesh, gpu) in scene.meshes.iter().zip(&uploaded) {
+        let mut state = scene.draw_state(mesh);
+        if let Some(mode) = mode {
+            state.mode = mode;
+        }
+        frame.draws.push(crate::Draw {
+            mesh: gpu,
+            modelview: scene.modelview(mesh),
+            projection: scene.projection,
+            state,
+        });
+    }
+    renderer.render(&frame)
+}
