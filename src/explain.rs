@@ -70,18 +70,19 @@ fn bytes(v: DVec4) -> String {
     format!("[{}, {}, {}, {}]", b(v.x), b(v.y), b(v.z), b(v.w))
 }
 
-/// Writes the terms of one evaluation of the equation.
-fn terms(out: &mut String, indent: &str, lit: &Lit) {
+/// Writes the terms of one evaluation of the equation; `indices` are the GL indices of the
+/// enabled lights, in the order the sum runs.
+fn terms(out: &mut String, indent: &str, lit: &Lit, indices: &[usize]) {
     let _ = writeln!(out, "{indent}e_cm (emission)            {}", rgb(lit.emission));
     let _ = writeln!(
         out,
         "{indent}a_cm * a_cs (scene ambient) {}",
         rgb(lit.scene_ambient)
     );
-    for (i, t) in lit.lights.iter().enumerate() {
+    for (i, t) in indices.iter().zip(&lit.lights) {
         let _ = writeln!(
             out,
-            "{indent}light #{i}: att_i {:.4}  spot_i {:.4}  f_i {}",
+            "{indent}GL_LIGHT{i}: att_i {:.4}  spot_i {:.4}  f_i {}",
             t.att_i, t.spot_i, t.f_i
         );
         let _ = writeln!(out, "{indent}  a_cm * a_cli               {}", rgb(t.ambient));
@@ -131,6 +132,9 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
         "perspective-correct weights: ({:.4}, {:.4}, {:.4})",
         w.x, w.y, w.z
     );
+    let indices: Vec<usize> = (0..state.lights.len())
+        .filter(|&i| state.lights[i].enabled)
+        .collect();
     let two_sided_back = back && state.model.two_side;
     let _ = writeln!(
         out,
@@ -181,7 +185,7 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
                     rgba(e.color)
                 );
                 if state.lighting {
-                    terms(&mut out, "  ", &lit);
+                    terms(&mut out, "  ", &lit, &indices);
                 }
                 let (p, s) = reference::vertex_color(&state, e, back);
                 pri += p * weight;
@@ -215,7 +219,12 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
                     "fragment normal (renormalized direction × interpolated length) {}",
                     rgb(n)
                 );
-                terms(&mut out, "  ", &reference::light_face(&state, p, n, c, back));
+                terms(
+                    &mut out,
+                    "  ",
+                    &reference::light_face(&state, p, n, c, back),
+                    &indices,
+                );
             }
             color
         }

@@ -248,6 +248,14 @@ fn run(cli: Cli) -> ffvk::Result<()> {
                     scene.clear_color
                 ),
             }
+            // What the GPU drew there, to set beside the reference.
+            let mut renderer = Renderer::new(&options(&cli))?;
+            let image = render_scene(&mut renderer, &scene, Some(mode))?;
+            println!(
+                "ffvk on {} drew {:?}",
+                renderer.device_info().name,
+                image.get_pixel(x, y).0
+            );
             Ok(())
         }
     }

@@ -4,5 +4,6 @@ mod layout;
 mod lighting;
 mod reference;
 mod render_path;
+mod scene;
 mod state;
 mod support;
