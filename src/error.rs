@@ -42,14 +42,21 @@ pub enum Error {
     #[error(transparent)]
     State(#[from] StateError),
 
+    /// Boxed: scene errors carry glTF errors, which would make every `Result` large.
     #[error(transparent)]
-    Scene(#[from] crate::scene::SceneError),
+    Scene(Box<crate::scene::SceneError>),
 
     #[error("cannot write {path}: {message}")]
     Output { path: PathBuf, message: String },
 
     #[error("cannot read {path}: {message}")]
     Input { path: PathBuf, message: String },
+}
+
+impl From<crate::scene::SceneError> for Error {
+    fn from(e: crate::scene::SceneError) -> Self {
+        Error::Scene(Box::new(e))
+    }
 }
 
 /// Result with ffvk's [`Error`].

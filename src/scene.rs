@@ -44,7 +44,8 @@ pub enum SceneError {
     Gltf {
         path: PathBuf,
         field: String,
-        source: LoadError,
+        /// Boxed: glTF errors are large.
+        source: Box<LoadError>,
     },
 }
 
@@ -695,7 +696,7 @@ impl Builder<'_> {
                 let loaded = gltf_load::load(&gltf_path).map_err(|source| SceneError::Gltf {
                     path: self.path.to_path_buf(),
                     field: format!("{field}.gltf"),
-                    source,
+                    source: Box::new(source),
                 })?;
                 warnings.extend(
                     loaded
