@@ -1,5 +1,8 @@
 //! ffvk's integration tests: one binary, modules by area.
 
+mod conformance;
+mod gl_oracle;
+mod gl_reference;
 mod layout;
 mod lighting;
 mod reference;

@@ -1,12 +1,10 @@
 //! Checks the OSMesa reference renderer itself against values worked out by hand from the
 //! GL 2.1 lighting equation (not from ffvk), so that it can serve as the oracle.
 
-mod support;
-
+use crate::gl_reference::{gl_info, render_gl, GlDraw, GlScene};
 use ffvk::gl::state::{LightingMode, LightingState};
 use ffvk::mesh::{MeshData, Vertex};
 use glam::{Mat4, Vec3, Vec4};
-use support::gl_reference::{gl_info, render_gl, GlDraw, GlScene};
 
 const SIZE: u32 = 16;
 
