@@ -49,6 +49,9 @@ pub enum Error {
     #[error("cannot write {path}: {message}")]
     Output { path: PathBuf, message: String },
 
+    #[error("{0}")]
+    Mismatch(String),
+
     #[error("cannot read {path}: {message}")]
     Input { path: PathBuf, message: String },
 }

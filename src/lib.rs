@@ -4,6 +4,7 @@
 //! pipelines ([`shaders`], [`pipeline`]), the render path ([`vk`], [`renderer`]), and the
 //! CPU reference of the same equation ([`reference`]).
 
+pub mod compare;
 pub mod demo;
 pub mod error;
 pub mod explain;
@@ -15,6 +16,7 @@ pub mod mesh;
 pub mod pipeline;
 pub mod presets;
 pub mod reference;
+pub mod regress;
 pub mod renderer;
 pub mod scene;
 pub mod shaders;

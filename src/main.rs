@@ -4,9 +4,11 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
+use ffvk::compare::{self, Tolerance};
 use ffvk::gl::state::LightingMode;
 use ffvk::images::save_png;
-use ffvk::scene::{render_scene, Scene};
+use ffvk::regress;
+use ffvk::scene::render_scene;
 use ffvk::vk::Validation;
 use ffvk::{Renderer, RendererOptions};
 
@@ -37,20 +39,40 @@ enum Command {
         #[arg(short, long, default_value = "out/demo")]
         out: PathBuf,
     },
-    /// Render scene files (or directories of them) with one device.
+    /// Render scene files (or directories of them) with one device; optionally check each
+    /// image against references.
     Render {
         /// Scene files (.toml) or directories whose *.toml files are rendered in name order.
         #[arg(required = true)]
         scenes: Vec<PathBuf>,
-        /// Output PNG when rendering one scene; with several, a directory (NAME.png each).
+        /// Output PNG when rendering one scene in one mode; otherwise a directory (NAME.png each).
         #[arg(short, long)]
         out: Option<PathBuf>,
-        /// Override the scenes' lighting mode.
-        #[arg(long)]
-        lighting: Option<LightingMode>,
+        /// Override the scenes' lighting mode; a comma list renders each (NAME_MODE.png).
+        #[arg(long, value_delimiter = ',')]
+        lighting: Vec<LightingMode>,
         /// Override the image size, as WxH (the vertical field of view is kept).
         #[arg(long, value_parser = parse_size)]
         size: Option<(u32, u32)>,
+        /// Check each image against DIR/NAME.png and print a summary table; exit 1 on a
+        /// difference past the tolerance or a missing reference.
+        #[arg(long, value_name = "DIR")]
+        check: Option<PathBuf>,
+        /// Write missing or changed references into the --check directory (also FFVK_BLESS=1).
+        #[arg(long, requires = "check")]
+        bless: bool,
+        #[command(flatten)]
+        tolerance: ToleranceArgs,
+    },
+    /// Compare two images: per-channel differences, share over a threshold, FLIP.
+    Compare {
+        expected: PathBuf,
+        actual: PathBuf,
+        /// Write a heat map of the differences (FLIP, magma) here.
+        #[arg(long)]
+        diff: Option<PathBuf>,
+        #[command(flatten)]
+        tolerance: ToleranceArgs,
     },
     /// Write the Utah teapot (Newell's patches) as a glTF file.
     Teapot {
@@ -99,45 +121,6 @@ fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
     parse_pair(s, ',', "X,Y, e.g. 100,80")
 }
 
-/// The scene files named on the command line, directories expanded.
-fn scene_files(inputs: &[PathBuf]) -> ffvk::Result<Vec<PathBuf>> {
-    let mut files = Vec::new();
-    for input in inputs {
-        if input.is_dir() {
-            let entries = std::fs::read_dir(input).map_err(|e| ffvk::Error::Input {
-                path: input.clone(),
-                message: e.to_string(),
-            })?;
-            let mut found: Vec<PathBuf> = entries
-                .filter_map(|e| e.ok().map(|e| e.path()))
-                .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-                .collect();
-            found.sort();
-            if found.is_empty() {
-                return Err(ffvk::Error::Input {
-                    path: input.clone(),
-                    message: "no .toml scene files in this directory".into(),
-                });
-            }
-            files.extend(found);
-        } else {
-            files.push(input.clone());
-        }
-    }
-    Ok(files)
-}
-
-fn load_scene(path: &std::path::Path, size: Option<(u32, u32)>) -> ffvk::Result<Scene> {
-    let mut scene = Scene::load(path)?;
-    for w in &scene.warnings {
-        eprintln!("warning: {w}");
-    }
-    if let Some((w, h)) = size {
-        scene.set_size(w, h);
-    }
-    Ok(scene)
-}
-
 fn options(cli: &Cli) -> RendererOptions {
     let env_validate = std::env::var_os("FFVK_VALIDATION").is_some_and(|v| v != "0");
     RendererOptions {
@@ -150,7 +133,31 @@ fn options(cli: &Cli) -> RendererOptions {
     }
 }
 
-fn run(cli: Cli) -> ffvk::Result<()> {
+/// The comparison tolerance (see the README's tolerance policy).
+#[derive(clap::Args, Debug, Clone)]
+struct ToleranceArgs {
+    /// Per-channel difference (of 255) a pixel may have without counting as different.
+    #[arg(long, default_value_t = 2)]
+    threshold: u8,
+    /// Largest share of pixels (0..1) allowed over the threshold.
+    #[arg(long, default_value_t = 0.001)]
+    max_share: f64,
+    /// Largest mean FLIP error (0..1).
+    #[arg(long, default_value_t = 0.005)]
+    max_flip: f32,
+}
+
+impl ToleranceArgs {
+    fn tolerance(&self) -> Tolerance {
+        Tolerance {
+            threshold: self.threshold,
+            max_share: self.max_share,
+            max_flip: self.max_flip,
+        }
+    }
+}
+
+fn run(cli: Cli) -> ffvk::Result<ExitCode> {
     match &cli.command {
         Command::Info => {
             let renderer = Renderer::new(&options(&cli))?;
@@ -180,34 +187,99 @@ fn run(cli: Cli) -> ffvk::Result<()> {
                 "validation layer:        {}",
                 if i.validation { "on" } else { "off" }
             );
-            Ok(())
+            Ok(ExitCode::SUCCESS)
         }
-        Command::Demo { out } => ffvk::demo::run(&options(&cli), out),
+        Command::Demo { out } => ffvk::demo::run(&options(&cli), out).map(|()| ExitCode::SUCCESS),
         Command::Render {
             scenes,
             out,
             lighting,
             size,
+            check,
+            bless,
+            tolerance,
         } => {
-            let files = scene_files(scenes)?;
-            let single = files.len() == 1 && !scenes[0].is_dir();
+            let files = regress::scene_files(scenes)?;
+            let single = files.len() == 1 && lighting.len() <= 1 && check.is_none();
             let mut renderer = Renderer::new(&options(&cli))?;
-            for file in &files {
-                let scene = load_scene(file, *size)?;
-                let image = render_scene(&mut renderer, &scene, *lighting)?;
-                let stem = file
-                    .file_stem()
-                    .map(|s| s.to_string_lossy().into_owned())
-                    .unwrap_or_default();
-                let path = match (single, out) {
-                    (true, Some(out)) => out.clone(),
-                    (false, Some(dir)) => dir.join(format!("{stem}.png")),
-                    (_, None) => file.with_extension("png"),
-                };
+            if single {
+                let scene = regress::load_scene(&files[0], *size, &mut |m| eprintln!("{m}"))?;
+                let image = render_scene(&mut renderer, &scene, lighting.first().copied())?;
+                let path = out.clone().unwrap_or_else(|| files[0].with_extension("png"));
                 save_png(&image, &path)?;
-                println!("{} -> {}", file.display(), path.display());
+                println!("{} -> {}", files[0].display(), path.display());
+                return Ok(ExitCode::SUCCESS);
             }
-            Ok(())
+            let job = regress::Job {
+                scenes: files,
+                out_dir: out.clone(),
+                modes: lighting.clone(),
+                size: *size,
+                references: check.clone(),
+                bless: *bless || regress::bless_from_env(),
+                tolerance: tolerance.tolerance(),
+            };
+            let rows = regress::run(&mut renderer, &job, &mut |m| println!("{m}"))?;
+            if check.is_none() {
+                return Ok(ExitCode::SUCCESS);
+            }
+            println!("{}", regress::table(&rows));
+            let failed: Vec<&regress::Row> = rows.iter().filter(|r| r.status.failed()).collect();
+            for r in &failed {
+                let what = match (&r.comparison, r.status) {
+                    (Some(c), _) => c.summary(),
+                    (None, _) => "no reference".to_string(),
+                };
+                println!(
+                    "{}: {what}; actual {}{}",
+                    r.name,
+                    r.output.display(),
+                    r.diff
+                        .as_ref()
+                        .map(|d| format!(", diff {}", d.display()))
+                        .unwrap_or_default()
+                );
+            }
+            if failed.is_empty() {
+                Ok(ExitCode::SUCCESS)
+            } else {
+                println!(
+                    "to accept these images as the new references: rerun with --bless (or {}=1)",
+                    regress::BLESS_VAR
+                );
+                Ok(ExitCode::FAILURE)
+            }
+        }
+        Command::Compare {
+            expected,
+            actual,
+            diff,
+            tolerance,
+        } => {
+            let tolerance = tolerance.tolerance();
+            let e = compare::load_image(expected)?;
+            let a = compare::load_image(actual)?;
+            let c = compare::compare(&e, &a, tolerance.threshold).map_err(|err| {
+                ffvk::Error::Mismatch(format!("{} and {}: {err}", expected.display(), actual.display()))
+            })?;
+            println!("{}", c.summary());
+            if let Some(path) = diff {
+                save_png(&compare::heat_map(&e, &a, tolerance.threshold)?, path)?;
+                println!("diff heat map: {}", path.display());
+            }
+            if c.passes(&tolerance) {
+                println!(
+                    "PASS (threshold {}/255, max share {}, max FLIP {})",
+                    tolerance.threshold, tolerance.max_share, tolerance.max_flip
+                );
+                Ok(ExitCode::SUCCESS)
+            } else {
+                println!(
+                    "FAIL (threshold {}/255, max share {}, max FLIP {})",
+                    tolerance.threshold, tolerance.max_share, tolerance.max_flip
+                );
+                Ok(ExitCode::FAILURE)
+            }
         }
         Command::Teapot { level, out } => {
             let mesh = ffvk::teapot::teapot(*level).map_err(ffvk::Error::Mesh)?;
@@ -221,7 +293,7 @@ fn run(cli: Cli) -> ffvk::Result<()> {
                 mesh.vertices.len(),
                 mesh.triangle_count()
             );
-            Ok(())
+            Ok(ExitCode::SUCCESS)
         }
         Command::Explain {
             scene,
@@ -229,7 +301,7 @@ fn run(cli: Cli) -> ffvk::Result<()> {
             lighting,
             size,
         } => {
-            let scene = load_scene(scene, *size)?;
+            let scene = regress::load_scene(scene, *size, &mut |m| eprintln!("{m}"))?;
             let (x, y) = *pixel;
             if x >= scene.width || y >= scene.height {
                 return Err(ffvk::Error::Input {
@@ -256,17 +328,18 @@ fn run(cli: Cli) -> ffvk::Result<()> {
                 renderer.device_info().name,
                 image.get_pixel(x, y).0
             );
-            Ok(())
+            Ok(ExitCode::SUCCESS)
         }
     }
 }
 
 fn main() -> ExitCode {
     match run(Cli::parse()) {
-        Ok(()) => ExitCode::SUCCESS,
+        Ok(code) => code,
         Err(e) => {
             eprintln!("ffvk: error: {e}");
-            ExitCode::FAILURE
+            // 2, not 1: 1 means a comparison ran and found a difference.
+            ExitCode::from(2)
         }
     }
 }
