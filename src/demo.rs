@@ -103,8 +103,13 @@ fn state(terms: &Terms, mode: LightingMode) -> Result<GlState> {
     Ok(gl)
 }
 
-fn render_teapot(renderer: &mut Renderer, mesh: &crate::Mesh, gl: &GlState) -> Result<image::RgbaImage> {
-    let mut frame = Frame::new(PANEL, PANEL);
+fn render_teapot(
+    renderer: &mut Renderer,
+    mesh: &crate::Mesh,
+    gl: &GlState,
+    size: u32,
+) -> Result<image::RgbaImage> {
+    let mut frame = Frame::new(size, size);
     frame.clear_color = Vec4::new(0.08, 0.08, 0.1, 1.0);
     frame.draws.push(Draw {
         mesh,
@@ -115,30 +120,52 @@ fn render_teapot(renderer: &mut Renderer, mesh: &crate::Mesh, gl: &GlState) -> R
     renderer.render(&frame)
 }
 
-/// Renders every panel into `out` and writes `contact_sheet.png` there.
-pub fn run(options: &RendererOptions, out: &Path) -> Result<()> {
-    let mut renderer = Renderer::new(options)?;
+/// One demo panel: file name, label, image.
+pub struct Panel {
+    pub name: String,
+    pub label: String,
+    pub image: image::RgbaImage,
+}
+
+/// Renders the demo's panels: the five term-by-term panels, then the three modes.
+pub fn panels(renderer: &mut Renderer, size: u32) -> Result<Vec<Panel>> {
     let fine = renderer.upload(&teapot::teapot(12).map_err(Error::Mesh)?)?;
     let coarse = renderer.upload(&teapot::teapot(3).map_err(Error::Mesh)?)?;
     let mut panels = Vec::new();
-
     for terms in &PANELS {
-        let image = render_teapot(&mut renderer, &fine, &state(terms, LightingMode::Fragment)?)?;
-        save_png(&image, &out.join(format!("{}.png", terms.name)))?;
-        panels.push((terms.label.to_string(), image));
+        let image = render_teapot(renderer, &fine, &state(terms, LightingMode::Fragment)?, size)?;
+        panels.push(Panel {
+            name: terms.name.to_string(),
+            label: terms.label.to_string(),
+            image,
+        });
     }
     for mode in LightingMode::ALL {
-        let image = render_teapot(&mut renderer, &coarse, &state(&PANELS[4], mode)?)?;
-        save_png(&image, &out.join(format!("mode_{}.png", mode.name())))?;
-        panels.push((format!("{} (coarse mesh)", mode.name()), image));
+        let image = render_teapot(renderer, &coarse, &state(&PANELS[4], mode)?, size)?;
+        panels.push(Panel {
+            name: format!("mode_{}", mode.name()),
+            label: format!("{} (coarse mesh)", mode.name()),
+            image,
+        });
     }
-    let sheet = contact_sheet(&panels, 5)?;
+    Ok(panels)
+}
+
+/// Renders every panel into `out` and writes `contact_sheet.png` there.
+pub fn run(options: &RendererOptions, out: &Path) -> Result<()> {
+    let mut renderer = Renderer::new(options)?;
+    let panels = panels(&mut renderer, PANEL)?;
+    for p in &panels {
+        save_png(&p.image, &out.join(format!("{}.png", p.name)))?;
+    }
+    let labelled: Vec<(String, image::RgbaImage)> = panels.into_iter().map(|p| (p.label, p.image)).collect();
+    let sheet = contact_sheet(&labelled, 5)?;
     let path = out.join("contact_sheet.png");
     save_png(&sheet, &path)?;
     println!(
         "wrote {} and {} panels in {}",
         path.display(),
-        panels.len(),
+        labelled.len(),
         out.display()
     );
     Ok(())

@@ -3,6 +3,7 @@
 mod conformance;
 mod gl_oracle;
 mod gl_reference;
+mod golden;
 mod layout;
 mod lighting;
 mod reference;

@@ -1,0 +1,123 @@
+//! ffvk's own golden images: the asset scenes and hard states in every lighting mode, and
+//! the demo's panels, against references in tests/golden/<area>/ under the tolerance policy
+//! (ffvk::compare::Tolerance::default()). A failure writes the actual image and a diff heat
+//! map to tests/output/golden/<area>/ and says how to bless.
+
+use std::path::PathBuf;
+
+use ffvk::compare::{compare, heat_map, load_image, Tolerance};
+use ffvk::gl::state::LightingMode;
+use ffvk::images::save_png;
+use ffvk::regress::{self, Job, Status};
+
+use crate::support::*;
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+const HOW_TO_BLESS: &str = "to accept the new images: FFVK_BLESS=1 cargo test --test suite golden";
+
+fn check_scenes(area: &str, scenes: PathBuf) {
+    let mut r = renderer();
+    let job = Job {
+        scenes: vec![scenes],
+        out_dir: Some(root().join("tests/output/golden").join(area)),
+        modes: LightingMode::ALL.to_vec(),
+        size: Some((128, 128)),
+        references: Some(root().join("tests/golden").join(area)),
+        bless: regress::bless_from_env(),
+        tolerance: Tolerance::default(),
+    };
+    let rows = regress::run(&mut r, &job, &mut |_| {}).unwrap();
+    finish(r);
+    let failed: Vec<String> = rows
+        .iter()
+        .filter(|row| row.status.failed())
+        .map(|row| {
+            let what = row
+                .comparison
+                .as_ref()
+                .map_or("no reference image".to_string(), |c| c.summary());
+            let diff = row
+                .diff
+                .as_ref()
+                .map(|d| format!(", diff {}", d.display()))
+                .unwrap_or_default();
+            format!("{}: {what}; actual {}{diff}", row.name, row.output.display())
+        })
+        .collect();
+    assert!(
+        failed.is_empty(),
+        "golden images differ:\n{}\n{}\n{HOW_TO_BLESS}",
+        regress::table(&rows),
+        failed.join("\n")
+    );
+    assert!(rows
+        .iter()
+        .all(|r| matches!(r.status, Status::Pass | Status::Blessed)));
+}
+
+#[test]
+fn golden_asset_scenes_in_every_mode() {
+    check_scenes("scenes", root().join("assets/scenes"));
+}
+
+#[test]
+fn golden_hard_states_in_every_mode() {
+    check_scenes("states", root().join("tests/golden/states"));
+}
+
+#[test]
+fn golden_demo_panels() {
+    let mut r = renderer();
+    let panels = ffvk::demo::panels(&mut r, 128).unwrap();
+    finish(r);
+    let refs = root().join("tests/golden/demo");
+    let out = root().join("tests/output/golden/demo");
+    let bless = regress::bless_from_env();
+    let tolerance = Tolerance::default();
+    let mut failures = Vec::new();
+    for p in &panels {
+        let reference = refs.join(format!("{}.png", p.name));
+        let actual = out.join(format!("{}.png", p.name));
+        save_png(&p.image, &actual).unwrap();
+        if !reference.exists() {
+            if bless {
+                save_png(&p.image, &reference).unwrap();
+            } else {
+                failures.push(format!(
+                    "{}: no reference {}; actual {}",
+                    p.name,
+                    reference.display(),
+                    actual.display()
+                ));
+            }
+            continue;
+        }
+        let expected = load_image(&reference).unwrap();
+        let c = compare(&expected, &p.image, tolerance.threshold).unwrap();
+        if !c.identical() && bless {
+            save_png(&p.image, &reference).unwrap();
+        } else if !c.passes(&tolerance) {
+            let diff = out.join(format!("{}.diff.png", p.name));
+            save_png(
+                &heat_map(&expected, &p.image, tolerance.threshold).unwrap(),
+                &diff,
+            )
+            .unwrap();
+            failures.push(format!(
+                "{}: {}; actual {}, diff {}",
+                p.name,
+                c.summary(),
+                actual.display(),
+                diff.display()
+            ));
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "demo panels differ:\n{}\n{HOW_TO_BLESS}",
+        failures.join("\n")
+    );
+}
