@@ -1,6 +1,7 @@
 //! ffvk's integration tests: one binary, modules by area.
 
 mod conformance;
+mod determinism;
 mod gl_oracle;
 mod gl_reference;
 mod golden;
