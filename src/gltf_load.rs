@@ -69,6 +69,8 @@ pub struct LoadedMesh {
     pub data: MeshData,
     /// The node's world transform (object to world).
     pub transform: Mat4,
+    /// The names (or `node N`) of the node that places it and of its ancestors, root first.
+    pub node_path: Vec<String>,
     /// The primitive's material; `None` when it uses glTF's default material
     /// ([`PbrMaterial::default`]).
     pub material: Option<PbrMaterial>,
@@ -449,7 +451,15 @@ pub fn load(path: &Path) -> Result<Loaded, LoadError> {
     };
     let mut on_path = vec![false; document.nodes().len()];
     for root in roots {
-        visit(&cx, &buffers, root, Mat4::IDENTITY, &mut on_path, &mut out)?;
+        visit(
+            &cx,
+            &buffers,
+            root,
+            Mat4::IDENTITY,
+            &mut on_path,
+            &mut Vec::new(),
+            &mut out,
+        )?;
     }
     for material in document.materials() {
         let pbr = material.pbr_metallic_roughness();
@@ -539,6 +549,7 @@ fn visit(
     node: gltf::Node,
     parent: Mat4,
     on_path: &mut [bool],
+    names: &mut Vec<String>,
     out: &mut Loaded,
 ) -> Result<(), LoadError> {
     let index = node.index();
@@ -549,6 +560,7 @@ fn visit(
         });
     }
     on_path[index] = true;
+    names.push(cx.name("nodes", index).unwrap_or_else(|| format!("node {index}")));
     let world = parent * Mat4::from_cols_array_2d(&node.transform().matrix());
 
     if let Some(mesh) = node.mesh() {
@@ -582,6 +594,7 @@ fn visit(
                 },
                 data,
                 transform: world,
+                node_path: names.clone(),
                 material,
             });
         }
@@ -612,8 +625,9 @@ fn visit(
         });
     }
     for child in node.children() {
-        visit(cx, buffers, child, world, on_path, out)?;
+        visit(cx, buffers, child, world, on_path, names, out)?;
     }
+    names.pop();
     on_path[index] = false;
     Ok(())
 }

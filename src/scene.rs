@@ -157,7 +157,7 @@ struct ColorMaterialSpec {
 struct MeshSpec {
     /// A .gltf or .glb file, relative to the scene file.
     gltf: Option<PathBuf>,
-    /// Only the glTF node with this name (and its children).
+    /// Only what the glTF node with this name places (it and its descendants).
     node: Option<String>,
     /// Only primitives of the glTF mesh with this name.
     mesh: Option<String>,
@@ -717,17 +717,16 @@ impl Builder<'_> {
                     if spec.mesh.as_ref().is_some_and(|want| *want != base_name) {
                         continue;
                     }
+                    // A node selects itself and its descendants.
+                    if spec.node.as_ref().is_some_and(|want| !m.node_path.contains(want)) {
+                        continue;
+                    }
                     placed.push((
                         m.name,
                         m.data,
                         model * m.transform,
                         m.material.or(Some(Default::default())),
                     ));
-                }
-                if let Some(node) = &spec.node {
-                    // Nodes are matched by the loader's mesh names; a node filter needs the
-                    // node hierarchy, so it selects meshes named like the node.
-                    placed.retain(|(name, ..)| name.split('[').next() == Some(node.as_str()));
                 }
                 if placed.is_empty() {
                     let what = match (&spec.mesh, &spec.node) {

@@ -268,3 +268,19 @@ fn color_material_tracks_the_current_color() {
     let lit = reference::light_face(&gl.lighting, V, N, c, false);
     assert_rgb(lit.c_pri, [0.8; 3], "BACK only leaves the front alone");
 }
+
+/// Spec 2.14.1: spot_i is (P_pliV ⊙ ŝ_dli)^s_rli when P_pliV ⊙ ŝ_dli ≥ cos(c_rli): a point
+/// exactly on the cone's edge is inside. Mesa 22.3's fixed-function GL uses a strict `>`
+/// there (found by the conformance oracle), so this rule is pinned against the spec here.
+#[test]
+fn a_point_exactly_on_the_cone_edge_is_inside() {
+    let mut gl = lit_gl();
+    gl.light(0, LightParam::Position(Vec4::new(0.0, 0.0, 0.0, 1.0)))
+        .unwrap();
+    gl.light(0, LightParam::SpotDirection(Vec3::new(0.0, 0.0, -1.0)))
+        .unwrap();
+    gl.light(0, LightParam::SpotCutoff(0.0)).unwrap();
+    // On the axis: P_pliV ⊙ ŝ_dli = 1 = cos 0.
+    let lit = light(&gl.lighting, V, N, &gl.lighting.front);
+    assert_eq!(lit.lights[0].spot_i, 1.0);
+}

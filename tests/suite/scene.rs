@@ -359,3 +359,44 @@ fn render_and_explain_from_the_command_line() {
         "reference {a:?} vs GPU {b:?}"
     );
 }
+
+#[test]
+fn gltf_node_and_mesh_selection_and_hierarchy() {
+    let dir = scratch("gltf_nodes");
+    let gltf = r#"{"asset":{"version":"2.0"},
+        "buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+        "bufferViews":[{"buffer":0,"byteLength":36}],
+        "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],
+        "meshes":[{"name":"tri","primitives":[{"attributes":{"POSITION":0}}]}],
+        "nodes":[{"name":"root","children":[1,2]},
+                 {"name":"left","mesh":0,"translation":[-1,0,0]},
+                 {"name":"right","mesh":0,"translation":[1,0,0],"children":[3]},
+                 {"name":"right_child","mesh":0,"scale":[2,2,2]}],
+        "scenes":[{"nodes":[0]}],"scene":0}"#;
+    write(&dir, "tris.gltf", gltf);
+    let load = |extra: &str| {
+        let path = write(
+            &dir,
+            "scene.toml",
+            &format!("[[meshes]]\ngltf = \"tris.gltf\"\ntranslate = [0.0, 0.0, -2.0]\n{extra}"),
+        );
+        Scene::load(&path)
+    };
+    let all = load("").unwrap();
+    assert_eq!(all.meshes.len(), 3);
+    let right = load("node = \"right\"").unwrap();
+    assert_eq!(right.meshes.len(), 2, "a node selects itself and its descendants");
+    // right_child: scene translate, then right's translation, then its own scale.
+    let child = &right.meshes[1].model;
+    let want = Mat4::from_translation(Vec3::new(0.0, 0.0, -2.0))
+        * Mat4::from_translation(Vec3::new(1.0, 0.0, 0.0))
+        * Mat4::from_scale(Vec3::splat(2.0));
+    assert!(child.abs_diff_eq(want, 1e-6), "{child:?}");
+    // No NORMAL: flat normals (the triangle lies in z = 0, counter-clockwise: +z).
+    assert_eq!(right.meshes[0].data.vertices[0].normal, [0.0, 0.0, 1.0]);
+    assert_eq!(load("mesh = \"tri\"").unwrap().meshes.len(), 3);
+    let m = load("node = \"nowhere\"").unwrap_err().to_string();
+    contains_all(&m, &["meshes[0].gltf", "no node named \"nowhere\""]);
+    let m = load("mesh = \"square\"").unwrap_err().to_string();
+    contains_all(&m, &["no mesh named \"square\""]);
+}
