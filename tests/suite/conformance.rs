@@ -32,21 +32,6 @@ struct Case {
     projection: Mat4,
 }
 
-fn rgba(r: f32, g: f32, b: f32, a: f32) -> Vec4 {
-    Vec4::new(r, g, b, a)
-}
-
-fn dark() -> GlState {
-    let mut gl = GlState::new();
-    gl.enable(Cap::Lighting).unwrap();
-    gl
-}
-
-fn with(mut gl: GlState, f: impl FnOnce(&mut GlState) -> Result<(), StateError>) -> GlState {
-    f(&mut gl).unwrap();
-    gl
-}
-
 /// A vertex color that varies over the surface, for COLOR_MATERIAL.
 fn colored(mut mesh: MeshData) -> MeshData {
     for v in &mut mesh.vertices {

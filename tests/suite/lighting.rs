@@ -137,22 +137,6 @@ macro_rules! scenes {
     };
 }
 
-fn rgba(r: f32, g: f32, b: f32, a: f32) -> Vec4 {
-    Vec4::new(r, g, b, a)
-}
-
-/// GL state with lighting on and light 0 off: each scene enables what it tests.
-fn dark() -> GlState {
-    let mut gl = GlState::new();
-    gl.enable(Cap::Lighting).unwrap();
-    gl
-}
-
-fn with(mut gl: GlState, f: impl FnOnce(&mut GlState) -> Result<(), StateError>) -> GlState {
-    f(&mut gl).unwrap();
-    gl
-}
-
 scenes! {
     lighting_off_passes_the_vertex_color => sheet_scene(GlState::new(), false);
     gl_defaults_with_light_0 => sphere_scene(lit_state());

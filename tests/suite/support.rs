@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use ffvk::gl::state::{Cap, GlState, LightingState};
+use ffvk::gl::state::{Cap, GlState, LightingState, StateError};
 use ffvk::mesh::{MeshData, Vertex};
 use ffvk::vk::{Validation, ValidationSink};
 use ffvk::{Renderer, RendererOptions};
@@ -122,4 +122,21 @@ pub fn assert_pixel(image: &RgbaImage, x: u32, y: u32, expected: DVec4, tol: f64
 /// The state with lighting disabled: vertex colors pass through.
 pub fn unlit() -> LightingState {
     LightingState::default()
+}
+
+pub fn rgba(r: f32, g: f32, b: f32, a: f32) -> Vec4 {
+    Vec4::new(r, g, b, a)
+}
+
+/// GL state with lighting on and every light off: each scene enables what it tests.
+pub fn dark() -> GlState {
+    let mut gl = GlState::new();
+    gl.enable(Cap::Lighting).unwrap();
+    gl
+}
+
+/// `gl` after `f`, which sets state through GL's entry points.
+pub fn with(mut gl: GlState, f: impl FnOnce(&mut GlState) -> Result<(), StateError>) -> GlState {
+    f(&mut gl).unwrap();
+    gl
 }
