@@ -365,6 +365,7 @@ impl Builder<'_> {
                             format!("no free light: expected at most {MAX_LIGHTS} enabled lights in all"),
                         )
                     })?;
+                crate::gl::state::validate_light(&light).map_err(self.state(&f))?;
                 gl.lighting.lights[index] = light;
                 let (position, direction) = (light.position, light.spot_direction);
                 gl.light(index, LightParam::Position(position))
@@ -428,6 +429,7 @@ impl Builder<'_> {
                 let up = Vec3::from(c.up.unwrap_or([0.0, 1.0, 0.0]));
                 self.finite("camera.eye", &eye.to_array())?;
                 self.finite("camera.target", &target.to_array())?;
+                self.finite("camera.up", &up.to_array())?;
                 if (target - eye).length() == 0.0 || (target - eye).cross(up).length() == 0.0 {
                     return Err(self.field(
                         "camera",
@@ -676,7 +678,15 @@ impl Builder<'_> {
                         }
                         MeshData::uv_sphere(n, n / 2)
                     }
-                    "plane" => plane(spec.level.unwrap_or(1).clamp(1, 1024)),
+                    "plane" => {
+                        let n = spec.level.unwrap_or(1);
+                        if !(1..=1024).contains(&n) {
+                            return Err(
+                                self.field(format!("{field}.level"), format!("{n}: expected 1..=1024 cells"))
+                            );
+                        }
+                        plane(n)
+                    }
                     other => {
                         return Err(self.field(
                             format!("{field}.builtin"),

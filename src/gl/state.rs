@@ -5,6 +5,13 @@
 //! `glLight`, `glMaterial`, `glLightModel`, `glColorMaterial`, `glShadeModel`, `glEnable`.
 //! Values GL would answer with `INVALID_VALUE` (or `INVALID_ENUM`) are rejected with a
 //! [`StateError`] naming the parameter, the value and the valid range.
+//!
+//! One difference from GL's state machine: GL has a current color, and with COLOR_MATERIAL
+//! enabled it writes that color into the tracked material parameter, which keeps it after
+//! glDisable(COLOR_MATERIAL). Here the current color is per vertex (the mesh's colors) and
+//! color material is applied while drawing, so disabling it restores the material set by
+//! glMaterial. An emulation layer that relies on the written-back value should copy its
+//! current color into the material when it disables COLOR_MATERIAL.
 
 use glam::{Mat3, Mat4, Vec3, Vec4};
 
@@ -358,7 +365,8 @@ impl LightingState {
     }
 }
 
-fn validate_light(l: &Light) -> Result<(), StateError> {
+/// Checks one light's values against GL's ranges and that every value is finite.
+pub fn validate_light(l: &Light) -> Result<(), StateError> {
     for (name, c) in [
         ("GL_AMBIENT", l.ambient),
         ("GL_DIFFUSE", l.diffuse),
