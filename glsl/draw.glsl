@@ -57,6 +57,47 @@ layout(std140, set = 0, binding = 0) uniform Draw {
     Light lights[MAX_LIGHTS];
 } draw;
 
+// Specialization constants, mirrored by src/layout.rs (`SpecConstant`; a test reads the
+// SpecId decorations from the SPIR-V). The default, -1, means "read the uniform": the
+// uber-shader. A pipeline specialized for one state sets them to that state's values (0 or 1,
+// or the light count), so the driver folds the branches and unrolls the light loop.
+// SPEC_ANY_LOCAL_LIGHT and SPEC_ANY_SPOT_LIGHT are promises: 0 says no enabled light is
+// positional (w != 0) or a spot (cutoff != 180), so attenuation or the cone is never needed.
+layout(constant_id = 0) const int SPEC_LIGHT_COUNT = -1;        // 0..=MAX_LIGHTS
+layout(constant_id = 1) const int SPEC_LIGHTING = -1;           // LIGHTING
+layout(constant_id = 2) const int SPEC_LOCAL_VIEWER = -1;       // LIGHT_MODEL_LOCAL_VIEWER
+layout(constant_id = 3) const int SPEC_TWO_SIDE = -1;           // LIGHT_MODEL_TWO_SIDE
+layout(constant_id = 4) const int SPEC_SEPARATE_SPECULAR = -1;  // LIGHT_MODEL_COLOR_CONTROL
+layout(constant_id = 5) const int SPEC_COLOR_MATERIAL = -1;     // COLOR_MATERIAL
+layout(constant_id = 6) const int SPEC_ANY_LOCAL_LIGHT = -1;    // some light has w != 0
+layout(constant_id = 7) const int SPEC_ANY_SPOT_LIGHT = -1;     // some light has cutoff != 180
+
+// The state as the shader sees it: the specialization constant when set, else the uniform.
+// (The light count is chosen the same way, in light_equation: SPEC_LIGHT_COUNT < 0 reads
+// draw.light_count.)
+bool lighting_enabled() {
+    return SPEC_LIGHTING < 0 ? draw.lighting != 0u : SPEC_LIGHTING != 0;
+}
+bool local_viewer() {
+    return SPEC_LOCAL_VIEWER < 0 ? draw.v_bs != 0u : SPEC_LOCAL_VIEWER != 0;
+}
+bool two_side() {
+    return SPEC_TWO_SIDE < 0 ? draw.t_bs != 0u : SPEC_TWO_SIDE != 0;
+}
+bool separate_specular() {
+    return SPEC_SEPARATE_SPECULAR < 0 ? draw.separate_specular != 0u : SPEC_SEPARATE_SPECULAR != 0;
+}
+bool color_material_enabled() {
+    return SPEC_COLOR_MATERIAL < 0 ? draw.color_material != 0u : SPEC_COLOR_MATERIAL != 0;
+}
+// Whether light i may be positional or a spot: only the promise 0 answers "no" for all lights.
+bool may_be_local() {
+    return SPEC_ANY_LOCAL_LIGHT != 0;
+}
+bool may_be_spot() {
+    return SPEC_ANY_SPOT_LIGHT != 0;
+}
+
 // The material of one face, with COLOR_MATERIAL applied for the current color c.
 Material face_material(bool back_face, vec4 c) {
     // Member by member: glslang 12 copies whole std140 structs with an OpStore that
@@ -67,7 +108,7 @@ Material face_material(bool back_face, vec4 c) {
     } else {
         m = Material(draw.front.a_cm, draw.front.d_cm, draw.front.s_cm, draw.front.e_cm, draw.front.s_rm);
     }
-    bool tracks = draw.color_material != 0u
+    bool tracks = color_material_enabled()
         && (back_face ? draw.color_material_back != 0u : draw.color_material_front != 0u);
     if (tracks) {
         uint mode = draw.color_material_mode;

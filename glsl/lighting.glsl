@@ -34,6 +34,44 @@ vec3 unit_from_to(vec4 P1, vec4 P2) {
     return unit(P2.xyz / P2.w - P1.xyz / P1.w);
 }
 
+// Light i's term of the sum over lights, added to c_pri and c_sec: vertex (or fragment) V,
+// eye space, normal n, material m, VPe the unit vector from V to the eye.
+void light_term(uint i, vec4 V, vec3 n, Material m, vec3 VPe, inout vec3 c_pri, inout vec3 c_sec) {
+    // Read in place (a copy of the std140 struct trips glslang 12, see draw.glsl).
+#define L draw.lights[i]
+
+    vec3 VP_pli = unit_from_to(V, L.P_pli);
+
+    float att_i = 1.0;
+    if (may_be_local() && L.P_pli.w != 0.0) {
+        float d = length(L.P_pli.xyz / L.P_pli.w - V.xyz / V.w);  // ||VP_pli||
+        att_i = 1.0 / (L.k0 + L.k1 * d + L.k2 * d * d);
+    }
+
+    float spot_i = 1.0;
+    if (may_be_spot() && L.c_rli != 180.0) {
+        float cos_angle = odot(unit_from_to(L.P_pli, V), unit(L.s_dli));  // P_pliV ⊙ ŝ_dli
+        spot_i = cos_angle >= L.cos_c_rli ? pow_gl(cos_angle, L.s_rli) : 0.0;
+    }
+
+    float n_VP = odot(n, VP_pli);
+    float f_i = n_VP != 0.0 ? 1.0 : 0.0;
+
+    vec3 h_i = local_viewer() ? VP_pli + VPe : VP_pli + vec3(0.0, 0.0, 1.0);
+    vec3 specular = f_i * pow_gl(odot(n, unit(h_i)), m.s_rm) * m.s_cm.rgb * L.s_cli.rgb;
+
+    vec3 ambient = m.a_cm.rgb * L.a_cli.rgb;
+    vec3 diffuse = n_VP * m.d_cm.rgb * L.d_cli.rgb;
+
+    if (separate_specular()) {
+        c_pri += att_i * spot_i * (ambient + diffuse);
+        c_sec += att_i * spot_i * specular;
+    } else {
+        c_pri += att_i * spot_i * (ambient + diffuse + specular);
+    }
+#undef L
+}
+
 // Lights vertex (or fragment) V, eye space, with normal n and material m.
 // Returns c_pri and c_sec, each clamped to [0, 1] (section 2.14.6).
 LitColor light_equation(vec4 V, vec3 n, Material m) {
@@ -43,40 +81,19 @@ LitColor light_equation(vec4 V, vec3 n, Material m) {
     vec3 c_pri = m.e_cm.rgb + m.a_cm.rgb * draw.a_cs.rgb;
     vec3 c_sec = vec3(0.0);
 
-    for (uint i = 0u; i < draw.light_count; i++) {
-        // Read in place (a copy of the std140 struct trips glslang 12, see draw.glsl).
-#define L draw.lights[i]
-
-        vec3 VP_pli = unit_from_to(V, L.P_pli);
-
-        float att_i = 1.0;
-        if (L.P_pli.w != 0.0) {
-            float d = length(L.P_pli.xyz / L.P_pli.w - V.xyz / V.w);  // ||VP_pli||
-            att_i = 1.0 / (L.k0 + L.k1 * d + L.k2 * d * d);
+    // The light count: SPEC_LIGHT_COUNT when the pipeline is specialized, else the uniform
+    // (the uber-shader). The test folds away at specialization. A constant count is unrolled
+    // (every stage that includes this file enables GL_EXT_control_flow_attributes), so that
+    // lavapipe reads each light's uniforms at constant offsets; the uniform count is not,
+    // since lavapipe would then run all MAX_LIGHTS iterations under a mask (BENCHMARKS.md).
+    if (SPEC_LIGHT_COUNT >= 0) {
+        [[unroll]] for (int i = 0; i < SPEC_LIGHT_COUNT; i++) {
+            light_term(uint(i), V, n, m, VPe, c_pri, c_sec);
         }
-
-        float spot_i = 1.0;
-        if (L.c_rli != 180.0) {
-            float cos_angle = odot(unit_from_to(L.P_pli, V), unit(L.s_dli));  // P_pliV ⊙ ŝ_dli
-            spot_i = cos_angle >= L.cos_c_rli ? pow_gl(cos_angle, L.s_rli) : 0.0;
+    } else {
+        for (uint i = 0u; i < draw.light_count; i++) {
+            light_term(i, V, n, m, VPe, c_pri, c_sec);
         }
-
-        float n_VP = odot(n, VP_pli);
-        float f_i = n_VP != 0.0 ? 1.0 : 0.0;
-
-        vec3 h_i = draw.v_bs != 0u ? VP_pli + VPe : VP_pli + vec3(0.0, 0.0, 1.0);
-        vec3 specular = f_i * pow_gl(odot(n, unit(h_i)), m.s_rm) * m.s_cm.rgb * L.s_cli.rgb;
-
-        vec3 ambient = m.a_cm.rgb * L.a_cli.rgb;
-        vec3 diffuse = n_VP * m.d_cm.rgb * L.d_cli.rgb;
-
-        if (draw.separate_specular != 0u) {
-            c_pri += att_i * spot_i * (ambient + diffuse);
-            c_sec += att_i * spot_i * specular;
-        } else {
-            c_pri += att_i * spot_i * (ambient + diffuse + specular);
-        }
-#undef L
     }
 
     LitColor lit;

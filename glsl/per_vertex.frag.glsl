@@ -1,9 +1,14 @@
+#extension GL_EXT_control_flow_attributes : require  // [[unroll]] in lighting.glsl
 // Fragment stage of the per-vertex modes: picks the face's interpolated (or provoking)
-// colors by window-space winding and sums them.
+// colors by window-space winding and sums them. With ONE_COLOR (pipelines specialized for
+// one-sided, single-color or unlit states, where the back colors equal the front ones and
+// the secondary color is (0, 0, 0, 1)) only the front primary color comes in.
 layout(location = 0) INTERP in vec4 front_pri;
+#ifndef ONE_COLOR
 layout(location = 1) INTERP in vec4 front_sec;
 layout(location = 2) INTERP in vec4 back_pri;
 layout(location = 3) INTERP in vec4 back_sec;
+#endif
 
 layout(location = 0) out vec4 out_color;
 
@@ -11,7 +16,12 @@ layout(location = 0) out vec4 out_color;
 
 void main() {
     LitColor lit;
+#ifdef ONE_COLOR
+    lit.c_pri = front_pri;
+    lit.c_sec = vec4(0.0, 0.0, 0.0, 1.0);
+#else
     lit.c_pri = gl_FrontFacing ? front_pri : back_pri;
     lit.c_sec = gl_FrontFacing ? front_sec : back_sec;
+#endif
     out_color = color_sum(lit);
 }

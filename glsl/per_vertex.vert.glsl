@@ -1,13 +1,23 @@
+#extension GL_EXT_control_flow_attributes : require  // [[unroll]] in lighting.glsl
 // Vertex stage of the per-vertex modes (Gouraud and flat): lights each vertex, front and
-// back, with both colors clamped here. INTERP is `smooth` or `flat`.
+// back, with both colors clamped here. INTERP is `smooth` or `flat`. With ONE_COLOR (see
+// per_vertex.frag.glsl) only the front primary color leaves the stage; the others are
+// computed as always and dropped, since they cannot differ from what the fragment stage
+// assumes in the states such a pipeline draws.
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) in vec4 in_color;
 
 layout(location = 0) INTERP out vec4 front_pri;
+#ifdef ONE_COLOR
+vec4 front_sec;
+vec4 back_pri;
+vec4 back_sec;
+#else
 layout(location = 1) INTERP out vec4 front_sec;
 layout(location = 2) INTERP out vec4 back_pri;
 layout(location = 3) INTERP out vec4 back_sec;
+#endif
 
 #include "lighting.glsl"
 
@@ -15,7 +25,7 @@ void main() {
     vec4 V = draw.modelview * vec4(in_position, 1.0);
     gl_Position = draw.projection * V;
 
-    if (draw.lighting == 0u) {
+    if (!lighting_enabled()) {
         front_pri = in_color;
         back_pri = in_color;
         front_sec = vec4(0.0, 0.0, 0.0, 1.0);
@@ -26,7 +36,7 @@ void main() {
     LitColor front = light_equation(V, n, face_material(false, in_color));
     front_pri = front.c_pri;
     front_sec = front.c_sec;
-    if (draw.t_bs != 0u) {
+    if (two_side()) {
         // Two-sided: the back color uses the back material and -n.
         LitColor back = light_equation(V, -n, face_material(true, in_color));
         back_pri = back.c_pri;

@@ -1,4 +1,5 @@
 #version 450
+#extension GL_EXT_control_flow_attributes : require  // [[unroll]] in lighting.glsl
 // Per-fragment (Phong) mode, fragment stage: the equation at each fragment. The normal is
 // the interpolated direction renormalized, times the interpolated length, so that an
 // unnormalized normal (scaled modelview, no NORMALIZE) still shows as in GL.
@@ -12,12 +13,12 @@ layout(location = 0) out vec4 out_color;
 #include "lighting.glsl"
 
 void main() {
-    if (draw.lighting == 0u) {
+    if (!lighting_enabled()) {
         out_color = color;
         return;
     }
     vec3 n = unit(normal_direction) * normal_length;
-    bool back_face = draw.t_bs != 0u && !gl_FrontFacing;
+    bool back_face = two_side() && !gl_FrontFacing;
     LitColor lit = back_face ? light_equation(eye_position, -n, face_material(true, color))
                              : light_equation(eye_position, n, face_material(false, color));
     out_color = color_sum(lit);

@@ -54,6 +54,13 @@ pub enum Error {
 
     #[error("cannot read {path}: {message}")]
     Input { path: PathBuf, message: String },
+
+    #[error("benchmark: {0}")]
+    Bench(String),
+
+    /// Mesa's OpenGL through OSMesa (the `osmesa` feature's reference renderer).
+    #[error("OpenGL (OSMesa): {0}")]
+    Gl(String),
 }
 
 impl From<crate::scene::SceneError> for Error {

@@ -106,6 +106,109 @@ pub struct DrawBlock {
     pub lights: [GpuLight; MAX_LIGHTS],
 }
 
+/// The specialization constants of `glsl/draw.glsl`, by `constant_id`. Each is an `int`
+/// whose default, -1, makes the shader read the uniform instead (the uber-shader).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[repr(u32)]
+pub enum SpecConstant {
+    LightCount = 0,
+    Lighting = 1,
+    LocalViewer = 2,
+    TwoSide = 3,
+    SeparateSpecular = 4,
+    ColorMaterial = 5,
+    AnyLocalLight = 6,
+    AnySpotLight = 7,
+}
+
+/// How many specialization constants there are.
+pub const SPEC_CONSTANT_COUNT: usize = 8;
+
+impl SpecConstant {
+    /// Every constant, in `constant_id` order.
+    pub const ALL: [SpecConstant; SPEC_CONSTANT_COUNT] = [
+        SpecConstant::LightCount,
+        SpecConstant::Lighting,
+        SpecConstant::LocalViewer,
+        SpecConstant::TwoSide,
+        SpecConstant::SeparateSpecular,
+        SpecConstant::ColorMaterial,
+        SpecConstant::AnyLocalLight,
+        SpecConstant::AnySpotLight,
+    ];
+
+    /// The `constant_id` in the GLSL.
+    pub fn id(self) -> u32 {
+        self as u32
+    }
+
+    /// The constant's name in the GLSL.
+    pub fn glsl_name(self) -> &'static str {
+        match self {
+            SpecConstant::LightCount => "SPEC_LIGHT_COUNT",
+            SpecConstant::Lighting => "SPEC_LIGHTING",
+            SpecConstant::LocalViewer => "SPEC_LOCAL_VIEWER",
+            SpecConstant::TwoSide => "SPEC_TWO_SIDE",
+            SpecConstant::SeparateSpecular => "SPEC_SEPARATE_SPECULAR",
+            SpecConstant::ColorMaterial => "SPEC_COLOR_MATERIAL",
+            SpecConstant::AnyLocalLight => "SPEC_ANY_LOCAL_LIGHT",
+            SpecConstant::AnySpotLight => "SPEC_ANY_SPOT_LIGHT",
+        }
+    }
+}
+
+/// The values of every specialization constant for one pipeline, indexed by `constant_id`;
+/// -1 leaves the state to the uniform. The bytes are the `VkSpecializationInfo` data.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct SpecKey {
+    pub values: [i32; SPEC_CONSTANT_COUNT],
+}
+
+impl SpecKey {
+    /// Every constant at -1: one pipeline per mode that branches on the uniforms.
+    pub const UBER: SpecKey = SpecKey {
+        values: [-1; SPEC_CONSTANT_COUNT],
+    };
+
+    /// The value of one constant.
+    pub fn get(&self, c: SpecConstant) -> i32 {
+        self.values[c as usize]
+    }
+
+    /// A key with every constant fixed to `state`'s values. States that light the same way
+    /// share a key: unlit states have one key, and what cannot matter is zeroed (the light
+    /// model and light kinds without lights).
+    pub fn for_state(state: &LightingState) -> SpecKey {
+        let mut values = [0; SPEC_CONSTANT_COUNT];
+        if !state.lighting {
+            return SpecKey { values };
+        }
+        let lights: Vec<&Light> = state.enabled_lights().collect();
+        let mut set = |c: SpecConstant, on: bool| values[c as usize] = on as i32;
+        set(SpecConstant::Lighting, true);
+        set(SpecConstant::TwoSide, state.model.two_side);
+        set(SpecConstant::ColorMaterial, state.color_material.enabled);
+        if !lights.is_empty() {
+            set(SpecConstant::LocalViewer, state.model.local_viewer);
+            set(
+                SpecConstant::SeparateSpecular,
+                state.model.color_control == ColorControl::SeparateSpecularColor,
+            );
+            set(
+                SpecConstant::AnyLocalLight,
+                lights.iter().any(|l| l.position.w != 0.0),
+            );
+            set(
+                SpecConstant::AnySpotLight,
+                lights.iter().any(|l| l.spot_cutoff != 180.0),
+            );
+        }
+        values[SpecConstant::LightCount as usize] = lights.len() as i32;
+        SpecKey { values }
+    }
+}
+
 /// (M⁻¹)ᵀ of the upper 3x3 of the modelview: the matrix normals are transformed by.
 pub fn normal_matrix(modelview: Mat4) -> Mat3 {
     Mat3::from_mat4(modelview).inverse().transpose()

@@ -4,11 +4,14 @@
 //! pipelines ([`shaders`], [`pipeline`]), the render path ([`vk`], [`renderer`]), and the
 //! CPU reference of the same equation ([`reference`]).
 
+pub mod bench;
 pub mod compare;
 pub mod demo;
 pub mod error;
 pub mod explain;
 pub mod gl;
+#[cfg(feature = "osmesa")]
+pub mod gl_reference;
 pub mod gltf_load;
 pub mod images;
 pub mod layout;
@@ -24,4 +27,5 @@ pub mod teapot;
 pub mod vk;
 
 pub use error::{Error, Result};
-pub use renderer::{Draw, Frame, Mesh, Renderer, RendererOptions};
+pub use pipeline::Specialize;
+pub use renderer::{Draw, Frame, FrameStats, Mesh, PipelineStats, Renderer, RendererOptions};

@@ -39,6 +39,8 @@ enum Command {
         #[arg(short, long, default_value = "out/demo")]
         out: PathBuf,
     },
+    /// Benchmark the lighting modes, densities, sizes, lights and pipeline variants.
+    Bench(ffvk::bench::BenchArgs),
     /// Render scene files (or directories of them) with one device; optionally check each
     /// image against references.
     Render {
@@ -130,6 +132,7 @@ fn options(cli: &Cli) -> RendererOptions {
         } else {
             Validation::Off
         },
+        ..RendererOptions::default()
     }
 }
 
@@ -190,6 +193,7 @@ fn run(cli: Cli) -> ffvk::Result<ExitCode> {
             Ok(ExitCode::SUCCESS)
         }
         Command::Demo { out } => ffvk::demo::run(&options(&cli), out).map(|()| ExitCode::SUCCESS),
+        Command::Bench(args) => ffvk::bench::run(args, &options(&cli)).map(|()| ExitCode::SUCCESS),
         Command::Render {
             scenes,
             out,

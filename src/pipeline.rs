@@ -1,11 +1,14 @@
-//! Shader modules and one graphics pipeline per lighting mode, through a pipeline cache.
+//! Shader modules and the graphics pipelines: one per lighting mode and specialization key,
+//! created on first use through a pipeline cache.
 
+use std::collections::HashMap;
 use std::sync::Arc;
 
 use ash::vk;
 
 use crate::error::{vk_error, Error, Result};
 use crate::gl::state::LightingMode;
+use crate::layout::{SpecConstant, SpecKey, SPEC_CONSTANT_COUNT};
 use crate::mesh::Vertex;
 use crate::shaders;
 use crate::vk::Device;
@@ -13,12 +16,24 @@ use crate::vk::Device;
 pub const COLOR_FORMAT: vk::Format = vk::Format::R8G8B8A8_UNORM;
 pub const DEPTH_FORMAT: vk::Format = vk::Format::D32_SFLOAT;
 
-/// The stage files of each mode.
-fn stage_files(mode: LightingMode) -> (&'static str, &'static str) {
-    match mode {
-        LightingMode::Vertex => ("gouraud.vert", "gouraud.frag"),
-        LightingMode::Fragment => ("phong.vert", "phong.frag"),
-        LightingMode::Flat => ("flat.vert", "flat.frag"),
+/// Whether a pipeline specialized by `key` needs only the front primary color between the
+/// per-vertex stages: unlit, or one-sided with a single color (the back colors then equal the
+/// front ones and the secondary color is (0, 0, 0, 1)). Fewer vertex outputs make lavapipe's
+/// vertex pipeline cheaper (BENCHMARKS.md); the uber-shader always passes all four colors.
+pub fn one_color(key: SpecKey) -> bool {
+    key != SpecKey::UBER
+        && (key.get(SpecConstant::Lighting) == 0
+            || (key.get(SpecConstant::TwoSide) == 0 && key.get(SpecConstant::SeparateSpecular) == 0))
+}
+
+/// The stage files of a mode's pipeline specialized by `key`.
+pub fn stage_files(mode: LightingMode, key: SpecKey) -> (&'static str, &'static str) {
+    match (mode, one_color(key)) {
+        (LightingMode::Vertex, false) => ("gouraud.vert", "gouraud.frag"),
+        (LightingMode::Vertex, true) => ("gouraud_one_color.vert", "gouraud_one_color.frag"),
+        (LightingMode::Fragment, _) => ("phong.vert", "phong.frag"),
+        (LightingMode::Flat, false) => ("flat.vert", "flat.frag"),
+        (LightingMode::Flat, true) => ("flat_one_color.vert", "flat_one_color.frag"),
     }
 }
 
@@ -49,13 +64,55 @@ impl Drop for ShaderModule<'_> {
     }
 }
 
-/// The descriptor layout, pipeline layout, cache and the pipelines of every mode.
+/// Which pipelines draws use: variants specialized for their lighting state, or the
+/// uber-shader that branches on the uniforms. `ffvk bench` measures both (BENCHMARKS.md):
+/// on lavapipe specialized pipelines are faster in every mode, so they are the default.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum Specialize {
+    /// Specialized pipelines, one per lighting state (compiled on its first draw), up to
+    /// [`MAX_AUTO_VARIANTS`] of them; states first seen after that use the uber-shader.
+    /// A state keeps the pipeline it got, so frames of one state stay byte-identical.
+    #[default]
+    Auto,
+    /// Every draw uses the pipeline specialized for its state, without a limit.
+    Always,
+    /// Every draw uses the uber-shader of its mode.
+    Never,
+}
+
+/// How many specialized pipelines [`Specialize::Auto`] creates before new states fall back
+/// to the uber-shader (bounding compile time and memory for programs that churn states).
+pub const MAX_AUTO_VARIANTS: usize = 64;
+
+impl Specialize {
+    pub const ALL: [Specialize; 3] = [Specialize::Auto, Specialize::Always, Specialize::Never];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Specialize::Auto => "auto",
+            Specialize::Always => "always",
+            Specialize::Never => "never",
+        }
+    }
+}
+
+impl std::str::FromStr for Specialize {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        Specialize::ALL
+            .into_iter()
+            .find(|v| v.name() == s)
+            .ok_or_else(|| format!("unknown specialization {s:?}: expected auto, always or never"))
+    }
+}
+
+/// The descriptor layout, pipeline layout, cache and the pipelines made so far.
 pub struct Pipelines {
     device: Arc<Device>,
     pub(crate) set_layout: vk::DescriptorSetLayout,
     pub(crate) layout: vk::PipelineLayout,
     cache: vk::PipelineCache,
-    pipelines: Vec<(LightingMode, vk::Pipeline)>,
+    pipelines: HashMap<(LightingMode, SpecKey), vk::Pipeline>,
 }
 
 impl Pipelines {
@@ -66,7 +123,7 @@ impl Pipelines {
             set_layout: vk::DescriptorSetLayout::null(),
             layout: vk::PipelineLayout::null(),
             cache: vk::PipelineCache::null(),
-            pipelines: Vec::new(),
+            pipelines: HashMap::new(),
         };
         let bindings = [vk::DescriptorSetLayoutBinding::default()
             .binding(0)
@@ -86,27 +143,48 @@ impl Pipelines {
         // SAFETY: as above.
         p.cache = unsafe { vkd.create_pipeline_cache(&vk::PipelineCacheCreateInfo::default(), None) }
             .map_err(vk_error("vkCreatePipelineCache"))?;
-        for mode in LightingMode::ALL {
-            let pipeline = p.create(mode)?;
-            p.pipelines.push((mode, pipeline));
-        }
         Ok(p)
     }
 
-    pub fn get(&self, mode: LightingMode) -> vk::Pipeline {
-        self.pipelines
-            .iter()
-            .find(|(m, _)| *m == mode)
-            .map(|(_, p)| *p)
-            .expect("a pipeline is created for every mode")
+    /// The pipeline of `mode` specialized by `key` ([`SpecKey::UBER`]: the uber-shader),
+    /// created on first use.
+    pub fn get(&mut self, mode: LightingMode, key: SpecKey) -> Result<vk::Pipeline> {
+        if let Some(&pipeline) = self.pipelines.get(&(mode, key)) {
+            return Ok(pipeline);
+        }
+        let pipeline = self.create(mode, key)?;
+        self.pipelines.insert((mode, key), pipeline);
+        Ok(pipeline)
     }
 
-    fn create(&self, mode: LightingMode) -> Result<vk::Pipeline> {
+    /// Whether the pipeline of `mode` and `key` exists already.
+    pub fn contains(&self, mode: LightingMode, key: SpecKey) -> bool {
+        self.pipelines.contains_key(&(mode, key))
+    }
+
+    /// How many pipelines exist, and how many of them are specialized.
+    pub fn counts(&self) -> (usize, usize) {
+        let specialized = self.pipelines.keys().filter(|(_, k)| *k != SpecKey::UBER).count();
+        (self.pipelines.len(), specialized)
+    }
+
+    fn create(&self, mode: LightingMode, key: SpecKey) -> Result<vk::Pipeline> {
         let device = &*self.device;
-        let (vert_name, frag_name) = stage_files(mode);
+        let (vert_name, frag_name) = stage_files(mode, key);
         let vert = ShaderModule::new(device, vert_name)?;
         let frag = ShaderModule::new(device, frag_name)?;
-        let stages = [
+        // Every constant is an `int` at offset 4 * constant_id of the key; a stage that does
+        // not use a constant ignores its entry.
+        let entries: [vk::SpecializationMapEntry; SPEC_CONSTANT_COUNT] =
+            SpecConstant::ALL.map(|c| vk::SpecializationMapEntry {
+                constant_id: c.id(),
+                offset: c.id() * 4,
+                size: 4,
+            });
+        let specialization = vk::SpecializationInfo::default()
+            .map_entries(&entries)
+            .data(bytemuck::bytes_of(&key));
+        let mut stages = [
             vk::PipelineShaderStageCreateInfo::default()
                 .stage(vk::ShaderStageFlags::VERTEX)
                 .module(vert.raw)
@@ -116,6 +194,12 @@ impl Pipelines {
                 .module(frag.raw)
                 .name(c"main"),
         ];
+        // The uber-shader is the modules as compiled, every constant at its default.
+        if key != SpecKey::UBER {
+            for stage in &mut stages {
+                *stage = stage.specialization_info(&specialization);
+            }
+        }
         let vertex_bindings = [vk::VertexInputBindingDescription {
             binding: 0,
             stride: std::mem::size_of::<Vertex>() as u32,
@@ -211,7 +295,7 @@ impl Drop for Pipelines {
         // SAFETY: the renderer waits for the device to be idle before dropping its pipelines;
         // null handles (from a failed construction) are ignored by Vulkan.
         unsafe {
-            for (_, p) in self.pipelines.drain(..) {
+            for (_, p) in self.pipelines.drain() {
                 vkd.destroy_pipeline(p, None);
             }
             vkd.destroy_pipeline_cache(self.cache, None);

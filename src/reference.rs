@@ -85,6 +85,17 @@ pub fn unit_from_to(p1: DVec4, p2: DVec4) -> DVec3 {
     }
 }
 
+/// cos(c_rli), exact at 90° (where the f64 cosine is 6e-17, not 0): with the spec's
+/// `P_pliV ⊙ ŝ_dli ≥ cos(c_rli)` a 90° cone then holds every direction, and points behind the
+/// light get (0)^s_rli, which is 1 for s_rli = 0, as the formula says.
+pub fn cos_cutoff(cutoff_degrees: f32) -> f64 {
+    if cutoff_degrees == 90.0 {
+        0.0
+    } else {
+        (cutoff_degrees as f64).to_radians().cos()
+    }
+}
+
 /// Lights eye-space point `v` with eye-space normal `n` and material `m` under `state`'s
 /// enabled lights and light model.
 pub fn light(state: &LightingState, v: DVec4, n: DVec3, m: &Material) -> Lit {
@@ -146,7 +157,7 @@ fn light_terms(
 
     let spot_i = if l.spot_cutoff != 180.0 {
         let c = odot(unit_from_to(p_pli, v), unit(l.spot_direction.as_dvec3()));
-        if c >= (l.spot_cutoff as f64).to_radians().cos() {
+        if c >= cos_cutoff(l.spot_cutoff) {
             pow_gl(c, l.spot_exponent as f64)
         } else {
             0.0
@@ -220,7 +231,11 @@ pub fn light_face(state: &LightingState, eye: DVec4, normal: DVec3, color: DVec4
 /// The color GL produces at one vertex for one face (lighting off: the current color).
 pub fn vertex_color(state: &LightingState, v: &EyeVertex, back: bool) -> (DVec4, DVec4) {
     if !state.lighting {
-        return (v.color, DVec4::new(0.0, 0.0, 0.0, 1.0));
+        // Section 2.14.6: colors are clamped "after lighting, whether enabled or not".
+        return (
+            v.color.clamp(DVec4::ZERO, DVec4::ONE),
+            DVec4::new(0.0, 0.0, 0.0, 1.0),
+        );
     }
     let lit = light_face(state, v.eye, v.normal, v.color, back);
     (lit.c_pri, lit.c_sec)
@@ -297,7 +312,9 @@ pub fn pixel_color(
             let eye = v[0].eye * w.x + v[1].eye * w.y + v[2].eye * w.z;
             let color = v[0].color * w.x + v[1].color * w.y + v[2].color * w.z;
             if !state.lighting {
-                return color;
+                // Unlit: the clamped vertex colors, interpolated, as in vertex mode.
+                let c = v.map(|e| vertex_color(state, &e, back).0);
+                return c[0] * w.x + c[1] * w.y + c[2] * w.z;
             }
             let dirs = v.map(|e| unit(e.normal));
             let lens = v.map(|e| e.normal.length());

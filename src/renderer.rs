@@ -8,9 +8,9 @@ use image::RgbaImage;
 
 use crate::error::{vk_error, Error, Result};
 use crate::gl::state::LightingState;
-use crate::layout::DrawBlock;
+use crate::layout::{DrawBlock, SpecKey};
 use crate::mesh::MeshData;
-use crate::pipeline::{Pipelines, COLOR_FORMAT, DEPTH_FORMAT};
+use crate::pipeline::{Pipelines, Specialize, COLOR_FORMAT, DEPTH_FORMAT, MAX_AUTO_VARIANTS};
 use crate::vk::{Buffer, Device, DeviceInfo, Image, Instance, Validation, ValidationSink};
 
 /// How to open a renderer.
@@ -19,6 +19,8 @@ pub struct RendererOptions {
     /// A substring of the device name; `None` picks lavapipe ("llvmpipe") when present.
     pub device: Option<String>,
     pub validation: Validation,
+    /// Specialized pipelines per lighting state, or the uber-shader.
+    pub specialize: Specialize,
 }
 
 /// A mesh uploaded to the renderer's device. Draw it only with the renderer that made it.
@@ -72,6 +74,51 @@ impl<'a> Frame<'a> {
     }
 }
 
+/// What one measured frame cost, from queries around its rendering pass (clears and draws;
+/// not the readback copy).
+#[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
+pub struct FrameStats {
+    /// Device time between the timestamp written before the rendering pass and the one
+    /// written after it, in nanoseconds; `None` when the queue has no timestamps.
+    pub gpu_ns: Option<f64>,
+    /// Host time from `vkQueueSubmit` to the fence, in nanoseconds (with the readback copy
+    /// when the frame has one).
+    pub wall_ns: f64,
+    /// The pipeline statistics of the rendering pass; `None` when the device lacks
+    /// `pipelineStatisticsQuery`.
+    pub pipeline: Option<PipelineStats>,
+}
+
+/// The counters of one pipeline-statistics query, summed over every draw of the pass.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, serde::Serialize)]
+pub struct PipelineStats {
+    pub input_assembly_vertices: u64,
+    pub input_assembly_primitives: u64,
+    pub vertex_shader_invocations: u64,
+    pub clipping_invocations: u64,
+    pub clipping_primitives: u64,
+    pub fragment_shader_invocations: u64,
+}
+
+/// The statistics the query counts, in the order Vulkan writes them (ascending bits).
+const STATISTICS: vk::QueryPipelineStatisticFlags = vk::QueryPipelineStatisticFlags::from_raw(
+    vk::QueryPipelineStatisticFlags::INPUT_ASSEMBLY_VERTICES.as_raw()
+        | vk::QueryPipelineStatisticFlags::INPUT_ASSEMBLY_PRIMITIVES.as_raw()
+        | vk::QueryPipelineStatisticFlags::VERTEX_SHADER_INVOCATIONS.as_raw()
+        | vk::QueryPipelineStatisticFlags::CLIPPING_INVOCATIONS.as_raw()
+        | vk::QueryPipelineStatisticFlags::CLIPPING_PRIMITIVES.as_raw()
+        | vk::QueryPipelineStatisticFlags::FRAGMENT_SHADER_INVOCATIONS.as_raw(),
+);
+
+/// What one submission records besides the rendering pass.
+#[derive(Debug, Clone, Copy)]
+struct Pass {
+    /// Copy the color image to the readback buffer.
+    readback: bool,
+    /// Write the timestamps and the pipeline-statistics query.
+    measure: bool,
+}
+
 /// The render target of one size, reused while the size stays the same.
 struct Targets {
     extent: vk::Extent2D,
@@ -91,7 +138,12 @@ pub struct Renderer {
     command_pool: vk::CommandPool,
     command_buffer: vk::CommandBuffer,
     fence: vk::Fence,
+    /// Two timestamps around the rendering pass; null without timestamp support.
+    timestamps: vk::QueryPool,
+    /// One pipeline-statistics query over the rendering pass; null without support.
+    statistics: vk::QueryPool,
     uniform_stride: u64,
+    specialize: Specialize,
     device: Arc<Device>,
 }
 
@@ -114,7 +166,10 @@ impl Renderer {
             command_pool: vk::CommandPool::null(),
             command_buffer: vk::CommandBuffer::null(),
             fence: vk::Fence::null(),
+            timestamps: vk::QueryPool::null(),
+            statistics: vk::QueryPool::null(),
             uniform_stride,
+            specialize: options.specialize,
             device: device.clone(),
         };
         let pool_sizes = [vk::DescriptorPoolSize {
@@ -151,6 +206,23 @@ impl Renderer {
         // SAFETY: see above.
         renderer.fence = unsafe { vkd.create_fence(&vk::FenceCreateInfo::default(), None) }
             .map_err(vk_error("vkCreateFence"))?;
+        if device.info.timestamps_supported {
+            let info = vk::QueryPoolCreateInfo::default()
+                .query_type(vk::QueryType::TIMESTAMP)
+                .query_count(2);
+            // SAFETY: see above.
+            renderer.timestamps =
+                unsafe { vkd.create_query_pool(&info, None) }.map_err(vk_error("vkCreateQueryPool"))?;
+        }
+        if device.info.pipeline_statistics_query {
+            let info = vk::QueryPoolCreateInfo::default()
+                .query_type(vk::QueryType::PIPELINE_STATISTICS)
+                .query_count(1)
+                .pipeline_statistics(STATISTICS);
+            // SAFETY: see above; the device enables pipelineStatisticsQuery when it has it.
+            renderer.statistics =
+                unsafe { vkd.create_query_pool(&info, None) }.map_err(vk_error("vkCreateQueryPool"))?;
+        }
         renderer.check_validation()?;
         Ok(renderer)
     }
@@ -281,6 +353,43 @@ impl Renderer {
 
     /// Draws `frame` and returns its pixels, row 0 at the top of the view.
     pub fn render(&mut self, frame: &Frame) -> Result<RgbaImage> {
+        self.draw_frame(
+            frame,
+            Pass {
+                readback: true,
+                measure: false,
+            },
+        )?;
+        Ok(self.read_image(frame))
+    }
+
+    /// [`Renderer::render`] with timestamps and a pipeline-statistics query around the
+    /// rendering pass.
+    pub fn render_measured(&mut self, frame: &Frame) -> Result<(RgbaImage, FrameStats)> {
+        let stats = self.draw_frame(
+            frame,
+            Pass {
+                readback: true,
+                measure: true,
+            },
+        )?;
+        Ok((self.read_image(frame), stats))
+    }
+
+    /// Draws `frame` with the queries of [`Renderer::render_measured`] but without reading
+    /// the image back: for timing many frames.
+    pub fn measure(&mut self, frame: &Frame) -> Result<FrameStats> {
+        self.draw_frame(
+            frame,
+            Pass {
+                readback: false,
+                measure: true,
+            },
+        )
+    }
+
+    /// Uploads the uniforms, records, submits and waits; returns what the queries measured.
+    fn draw_frame(&mut self, frame: &Frame, pass: Pass) -> Result<FrameStats> {
         self.ensure_targets(frame.width, frame.height)?;
         self.ensure_uniforms(frame.draws.len())?;
         let blocks = frame
@@ -293,18 +402,112 @@ impl Renderer {
             uniforms.write(i as u64 * self.uniform_stride, bytemuck::bytes_of(block));
         }
 
-        self.record(frame)?;
-        self.submit_and_wait()?;
+        let pipelines = frame
+            .draws
+            .iter()
+            .map(|d| self.pipeline_for(&d.state))
+            .collect::<Result<Vec<_>>>()?;
+        self.record(frame, &pipelines, pass)?;
+        let wall_ns = self.submit_and_wait()?;
         self.check_validation()?;
+        let mut stats = FrameStats {
+            wall_ns,
+            ..FrameStats::default()
+        };
+        if pass.measure {
+            stats.gpu_ns = self.read_timestamps()?;
+            stats.pipeline = self.read_statistics()?;
+        }
+        Ok(stats)
+    }
 
+    /// The readback buffer as an image (after a frame recorded with `readback`).
+    fn read_image(&self, frame: &Frame) -> RgbaImage {
         let targets = self.targets.as_ref().expect("ensure_targets made them");
         let len = (frame.width * frame.height * 4) as usize;
         let pixels = targets.readback.bytes()[..len].to_vec();
-        Ok(RgbaImage::from_raw(frame.width, frame.height, pixels)
-            .expect("readback holds width*height*4 bytes"))
+        RgbaImage::from_raw(frame.width, frame.height, pixels).expect("readback holds width*height*4 bytes")
     }
 
-    fn record(&self, frame: &Frame) -> Result<()> {
+    /// Nanoseconds between the two timestamps of the last measured frame.
+    fn read_timestamps(&self) -> Result<Option<f64>> {
+        if self.timestamps == vk::QueryPool::null() {
+            return Ok(None);
+        }
+        let mut ticks = [0u64; 2];
+        // SAFETY: both queries were reset and written by the submission the fence waited for;
+        // WAIT makes the call return only complete values.
+        unsafe {
+            self.device.raw.get_query_pool_results(
+                self.timestamps,
+                0,
+                &mut ticks,
+                vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT,
+            )
+        }
+        .map_err(vk_error("vkGetQueryPoolResults"))?;
+        let info = &self.device.info;
+        let mask = if info.timestamp_valid_bits >= 64 {
+            u64::MAX
+        } else {
+            (1u64 << info.timestamp_valid_bits) - 1
+        };
+        let elapsed = ticks[1].wrapping_sub(ticks[0]) & mask;
+        Ok(Some(elapsed as f64 * info.timestamp_period_ns as f64))
+    }
+
+    /// The pipeline statistics of the last measured frame.
+    fn read_statistics(&self) -> Result<Option<PipelineStats>> {
+        if self.statistics == vk::QueryPool::null() {
+            return Ok(None);
+        }
+        let mut values = [[0u64; 6]];
+        // SAFETY: the query was reset, begun and ended by the submission the fence waited
+        // for; one query of six 64-bit counters fills `values`.
+        unsafe {
+            self.device.raw.get_query_pool_results(
+                self.statistics,
+                0,
+                &mut values,
+                vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT,
+            )
+        }
+        .map_err(vk_error("vkGetQueryPoolResults"))?;
+        let [ia_vertices, ia_primitives, vs, clip_in, clip_out, fs] = values[0];
+        Ok(Some(PipelineStats {
+            input_assembly_vertices: ia_vertices,
+            input_assembly_primitives: ia_primitives,
+            vertex_shader_invocations: vs,
+            clipping_invocations: clip_in,
+            clipping_primitives: clip_out,
+            fragment_shader_invocations: fs,
+        }))
+    }
+
+    /// The pipeline a draw with `state` uses under this renderer's [`Specialize`] policy.
+    fn pipeline_for(&mut self, state: &LightingState) -> Result<vk::Pipeline> {
+        let mode = state.mode;
+        let key = match self.specialize {
+            Specialize::Never => SpecKey::UBER,
+            Specialize::Always => SpecKey::for_state(state),
+            Specialize::Auto => {
+                let key = SpecKey::for_state(state);
+                if self.pipelines.contains(mode, key) || self.pipelines.counts().1 < MAX_AUTO_VARIANTS {
+                    key
+                } else {
+                    SpecKey::UBER
+                }
+            }
+        };
+        self.pipelines.get(mode, key)
+    }
+
+    /// How many pipelines this renderer has created, and how many of them are specialized.
+    pub fn pipeline_counts(&self) -> (usize, usize) {
+        self.pipelines.counts()
+    }
+
+    fn record(&self, frame: &Frame, pipelines: &[vk::Pipeline], pass: Pass) -> Result<()> {
         let vkd = &self.device.raw;
         let cmd = self.command_buffer;
         let targets = self.targets.as_ref().expect("ensure_targets made them");
@@ -388,6 +591,25 @@ impl Renderer {
             max_depth: 1.0,
         };
 
+        let timestamps =
+            (pass.measure && self.timestamps != vk::QueryPool::null()).then_some(self.timestamps);
+        let statistics =
+            (pass.measure && self.statistics != vk::QueryPool::null()).then_some(self.statistics);
+        if let Some(pool) = timestamps {
+            // SAFETY: recording outside any rendering pass; the pool has two queries, both
+            // reset before they are written. On lavapipe a timestamp after any stage but
+            // TOP_OF_PIPE flushes the work before it, and its value is taken when the next
+            // flush runs: the barrier right after this one, before the pass starts.
+            unsafe {
+                vkd.cmd_reset_query_pool(cmd, pool, 0, 2);
+                vkd.cmd_write_timestamp2(cmd, vk::PipelineStageFlags2::ALL_COMMANDS, pool, 0);
+            }
+        }
+        if let Some(pool) = statistics {
+            // SAFETY: outside any rendering pass; the pool has one query.
+            unsafe { vkd.cmd_reset_query_pool(cmd, pool, 0, 1) };
+        }
+
         // SAFETY: recording into a command buffer in the recording state; every handle
         // belongs to this device and outlives the submission (render waits for it).
         unsafe {
@@ -395,17 +617,16 @@ impl Renderer {
                 cmd,
                 &vk::DependencyInfo::default().image_memory_barriers(&to_attachment),
             );
+            if let Some(pool) = statistics {
+                vkd.cmd_begin_query(cmd, pool, 0, vk::QueryControlFlags::empty());
+            }
             vkd.cmd_begin_rendering(cmd, &rendering);
             vkd.cmd_set_viewport(cmd, 0, &[viewport]);
             vkd.cmd_set_scissor(cmd, 0, &[area]);
             vkd.cmd_set_depth_test_enable(cmd, frame.depth_test);
             vkd.cmd_set_depth_write_enable(cmd, frame.depth_test);
-            for (i, draw) in frame.draws.iter().enumerate() {
-                vkd.cmd_bind_pipeline(
-                    cmd,
-                    vk::PipelineBindPoint::GRAPHICS,
-                    self.pipelines.get(draw.state.mode),
-                );
+            for (i, (draw, &pipeline)) in frame.draws.iter().zip(pipelines).enumerate() {
+                vkd.cmd_bind_pipeline(cmd, vk::PipelineBindPoint::GRAPHICS, pipeline);
                 let offset = (i as u64 * self.uniform_stride) as u32;
                 vkd.cmd_bind_descriptor_sets(
                     cmd,
@@ -420,6 +641,19 @@ impl Renderer {
                 vkd.cmd_draw_indexed(cmd, draw.mesh.index_count, 1, 0, 0, 0);
             }
             vkd.cmd_end_rendering(cmd);
+            if let Some(pool) = statistics {
+                vkd.cmd_end_query(cmd, pool, 0);
+            }
+            if let Some(pool) = timestamps {
+                // After every command of the pass has completed (on lavapipe: a flush that
+                // waits for the rasterizer threads).
+                vkd.cmd_write_timestamp2(cmd, vk::PipelineStageFlags2::ALL_COMMANDS, pool, 1);
+            }
+        }
+        if !pass.readback {
+            // SAFETY: the command buffer is in the recording state.
+            unsafe { vkd.end_command_buffer(cmd) }.map_err(vk_error("vkEndCommandBuffer"))?;
+            return Ok(());
         }
 
         let to_transfer = [vk::ImageMemoryBarrier2::default()
@@ -479,10 +713,12 @@ impl Renderer {
         Ok(())
     }
 
-    fn submit_and_wait(&self) -> Result<()> {
+    /// Submits the command buffer and waits for it; returns the host time that took, in ns.
+    fn submit_and_wait(&self) -> Result<f64> {
         let vkd = &self.device.raw;
         let buffers = [self.command_buffer];
         let submit = vk::SubmitInfo::default().command_buffers(&buffers);
+        let start = std::time::Instant::now();
         // SAFETY: the command buffer is fully recorded; the fence is unsignaled (reset after
         // every wait); &self plus the renderer's exclusive ownership of the queue serialize
         // queue access.
@@ -491,10 +727,11 @@ impl Renderer {
                 .map_err(vk_error("vkQueueSubmit"))?;
             vkd.wait_for_fences(&[self.fence], true, u64::MAX)
                 .map_err(vk_error("vkWaitForFences"))?;
-            vkd.reset_fences(&[self.fence])
-                .map_err(vk_error("vkResetFences"))?;
         }
-        Ok(())
+        let wall_ns = start.elapsed().as_nanos() as f64;
+        // SAFETY: the fence was signaled and nothing else waits on it.
+        unsafe { vkd.reset_fences(&[self.fence]) }.map_err(vk_error("vkResetFences"))?;
+        Ok(wall_ns)
     }
 }
 
@@ -515,6 +752,8 @@ impl Drop for Renderer {
         // SAFETY: the device is idle, so nothing these handles own is in use; freeing the
         // pools frees the command buffer and the descriptor set with them.
         unsafe {
+            vkd.destroy_query_pool(self.timestamps, None);
+            vkd.destroy_query_pool(self.statistics, None);
             vkd.destroy_fence(self.fence, None);
             vkd.destroy_command_pool(self.command_pool, None);
             vkd.destroy_descriptor_pool(self.descriptor_pool, None);

@@ -23,6 +23,8 @@ pub struct DeviceInfo {
     pub min_uniform_buffer_offset_alignment: u64,
     pub max_vertex_output_components: u32,
     pub timestamp_period_ns: f32,
+    /// Meaningful bits of the graphics queue's timestamps (0: no timestamps).
+    pub timestamp_valid_bits: u32,
     pub timestamps_supported: bool,
     pub pipeline_statistics_query: bool,
     pub provoking_vertex_last: bool,
@@ -100,7 +102,8 @@ impl Device {
             .position(|f| f.queue_flags.contains(vk::QueueFlags::GRAPHICS))
             .ok_or_else(|| Error::MissingFeature("a graphics queue".into()))?
             as u32;
-        let timestamps_supported = families[queue_family as usize].timestamp_valid_bits > 0;
+        let timestamp_valid_bits = families[queue_family as usize].timestamp_valid_bits;
+        let timestamps_supported = timestamp_valid_bits > 0;
 
         // Features: dynamic rendering (1.3), last-vertex provoking convention (GL's flat
         // shading), pipeline statistics (benchmarks).
@@ -156,6 +159,7 @@ impl Device {
             min_uniform_buffer_offset_alignment: props.limits.min_uniform_buffer_offset_alignment,
             max_vertex_output_components: props.limits.max_vertex_output_components,
             timestamp_period_ns: props.limits.timestamp_period,
+            timestamp_valid_bits,
             timestamps_supported,
             pipeline_statistics_query,
             provoking_vertex_last,

@@ -17,8 +17,8 @@ use ffvk::{Draw, Frame, Renderer};
 use glam::{Mat4, Vec3, Vec4};
 use image::{Rgba, RgbaImage};
 
-use crate::gl_reference::{render_gl, GlDraw, GlScene};
 use crate::support::*;
+use ffvk::gl_reference::{render_gl, GlDraw, GlScene};
 
 const SIZE: u32 = 128;
 
@@ -482,21 +482,25 @@ fn at_least_25_scenes() {
     assert!(cases().len() >= 25, "{} scenes", cases().len());
 }
 
+/// Every case in `mode`, with specialized pipelines and with the uber-shader.
 fn run_mode(mode: LightingMode) {
-    let mut r = renderer();
     let mut failures = Vec::new();
-    let mut worst = 0;
-    for case in cases() {
-        match run(&mut r, &case, mode) {
-            Ok((_, d)) => worst = worst.max(d),
-            Err(e) => failures.push(e),
+    for variant in VARIANTS {
+        let mut r = renderer_with(variant);
+        let mut worst = 0;
+        for case in cases() {
+            match run(&mut r, &case, mode) {
+                Ok((_, d)) => worst = worst.max(d),
+                Err(e) => failures.push(format!("[{} pipelines] {e}", variant.name())),
+            }
         }
+        finish(r);
+        println!(
+            "{} mode, {} pipelines: worst difference over all scenes {worst}/255",
+            mode.name(),
+            variant.name()
+        );
     }
-    finish(r);
-    println!(
-        "{} mode: worst difference over all scenes {worst}/255",
-        mode.name()
-    );
     assert!(
         failures.is_empty(),
         "{} scene(s) differ from Mesa's GL:\n{}",

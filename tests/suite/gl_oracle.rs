@@ -1,8 +1,8 @@
 //! Checks the OSMesa reference renderer itself against values worked out by hand from the
 //! GL 2.1 lighting equation (not from ffvk), so that it can serve as the oracle.
 
-use crate::gl_reference::{gl_info, render_gl, GlDraw, GlScene};
 use ffvk::gl::state::{LightingMode, LightingState};
+use ffvk::gl_reference::{gl_info, render_gl, GlDraw, GlScene};
 use ffvk::mesh::{MeshData, Vertex};
 use glam::{Mat4, Vec3, Vec4};
 
@@ -164,7 +164,9 @@ fn a_light_beyond_gl_max_lights_is_an_error() {
         return; // this GL evaluates every light ffvk has
     }
     state.lights[index].enabled = true;
-    let err = render_gl(&scene(&mesh, state)).expect_err("light beyond GL_MAX_LIGHTS");
+    let err = render_gl(&scene(&mesh, state))
+        .expect_err("light beyond GL_MAX_LIGHTS")
+        .to_string();
     assert!(err.contains("GL_MAX_LIGHTS"), "{err}");
 }
 
@@ -174,6 +176,8 @@ fn an_invalid_value_is_reported_as_a_gl_error() {
     let mesh = full_screen_quad(Vec3::Z, Vec4::ONE);
     let mut state = lit_default_light0();
     state.lights[0].spot_cutoff = 120.0;
-    let err = render_gl(&scene(&mesh, state)).expect_err("invalid spot cutoff");
+    let err = render_gl(&scene(&mesh, state))
+        .expect_err("invalid spot cutoff")
+        .to_string();
     assert!(err.contains("0x0501"), "{err}");
 }

@@ -4,14 +4,16 @@
 use std::collections::HashMap;
 use std::mem::{offset_of, size_of};
 
-use ffvk::layout::{DrawBlock, GpuLight, GpuMaterial};
+use ffvk::layout::{DrawBlock, GpuLight, GpuMaterial, SpecConstant, SpecKey, SPEC_CONSTANT_COUNT};
 
 const OP_NAME: u32 = 5;
 const OP_MEMBER_NAME: u32 = 6;
 const OP_TYPE_ARRAY: u32 = 28;
 const OP_TYPE_STRUCT: u32 = 30;
+const OP_SPEC_CONSTANT: u32 = 50;
 const OP_DECORATE: u32 = 71;
 const OP_MEMBER_DECORATE: u32 = 72;
+const DECORATION_SPEC_ID: u32 = 1;
 const DECORATION_ARRAY_STRIDE: u32 = 6;
 const DECORATION_OFFSET: u32 = 35;
 
@@ -24,6 +26,10 @@ struct Reflection {
     strides: HashMap<u32, u32>,
     struct_members: HashMap<u32, Vec<u32>>,
     array_element: HashMap<u32, u32>,
+    /// SpecId decorations: result id to constant_id.
+    spec_ids: HashMap<u32, u32>,
+    /// OpSpecConstant default values (32-bit), by result id.
+    spec_defaults: HashMap<u32, u32>,
 }
 
 fn string(words: &[u32]) -> String {
@@ -58,6 +64,12 @@ fn reflect(spirv: &[u8]) -> Reflection {
             }
             OP_DECORATE if ins[1] == DECORATION_ARRAY_STRIDE => {
                 r.strides.insert(ins[0], ins[2]);
+            }
+            OP_DECORATE if ins[1] == DECORATION_SPEC_ID => {
+                r.spec_ids.insert(ins[0], ins[2]);
+            }
+            OP_SPEC_CONSTANT => {
+                r.spec_defaults.insert(ins[1], ins[2]);
             }
             OP_TYPE_STRUCT => {
                 r.struct_members.insert(ins[0], ins[1..].to_vec());
@@ -134,4 +146,47 @@ fn draw_block_matches_the_glsl_in_every_stage() {
             "DrawBlock ends with the lights"
         );
     }
+}
+
+/// The stages that evaluate the lighting equation, and so read every specialization constant.
+const LIGHTING_STAGES: [&str; 5] = [
+    "gouraud.vert",
+    "gouraud_one_color.vert",
+    "flat.vert",
+    "flat_one_color.vert",
+    "phong.frag",
+];
+
+#[test]
+fn specialization_constant_ids_match_the_rust_side() {
+    for (stage, spirv) in ffvk::shaders::SHADERS {
+        let r = reflect(spirv);
+        let mut found = Vec::new();
+        for (&id, &spec_id) in &r.spec_ids {
+            let name = r.names.get(&id).map(String::as_str).unwrap_or("(unnamed)");
+            let constant = SpecConstant::ALL
+                .into_iter()
+                .find(|c| c.glsl_name() == name)
+                .unwrap_or_else(|| panic!("{stage}: {name} (SpecId {spec_id}) has no SpecConstant"));
+            assert_eq!(constant.id(), spec_id, "{stage}: SpecId of {name}");
+            // The default, -1, is the uber-shader's "read the uniform".
+            assert_eq!(
+                r.spec_defaults.get(&id).map(|&v| v as i32),
+                Some(-1),
+                "{stage}: default of {name}"
+            );
+            found.push(constant);
+        }
+        if LIGHTING_STAGES.contains(stage) {
+            for c in SpecConstant::ALL {
+                assert!(found.contains(&c), "{stage} does not declare {}", c.glsl_name());
+            }
+        }
+    }
+    // The key's bytes are the specialization data: constant i at offset 4 i.
+    for (i, c) in SpecConstant::ALL.into_iter().enumerate() {
+        assert_eq!(c.id() as usize, i, "SpecConstant::ALL is in constant_id order");
+    }
+    assert_eq!(size_of::<SpecKey>(), 4 * SPEC_CONSTANT_COUNT);
+    assert_eq!(SpecKey::UBER.values, [-1; SPEC_CONSTANT_COUNT]);
 }

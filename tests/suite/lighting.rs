@@ -4,8 +4,9 @@
 use ffvk::gl::state::*;
 use ffvk::mesh::MeshData;
 use ffvk::reference;
-use ffvk::{Draw, Frame};
+use ffvk::{Draw, Frame, Specialize};
 use glam::{DVec4, Mat4, Vec3, Vec4};
+use image::RgbaImage;
 
 use crate::support::*;
 
@@ -51,12 +52,10 @@ fn sheet_scene(gl: GlState, back: bool) -> Scene {
     }
 }
 
-/// Renders `scene` in `mode` and compares probe pixels with the CPU reference.
-fn check(name: &str, scene: &Scene, mode: LightingMode) {
-    let mut r = renderer();
+/// Renders `scene` in `state`'s mode with pipelines of the `specialize` variant.
+fn render_variant(scene: &Scene, state: LightingState, specialize: Specialize) -> RgbaImage {
+    let mut r = renderer_with(specialize);
     let mesh = r.upload(&scene.mesh).unwrap();
-    let mut state = scene.gl.lighting;
-    state.mode = mode;
     let mut frame = Frame::new(SIZE, SIZE);
     frame.clear_color = Vec4::new(0.1, 0.2, 0.3, 1.0);
     frame.draws.push(Draw {
@@ -66,6 +65,24 @@ fn check(name: &str, scene: &Scene, mode: LightingMode) {
         state,
     });
     let image = r.render(&frame).unwrap();
+    // The variant really drew: one pipeline, specialized or not.
+    let specialized = usize::from(specialize == Specialize::Always);
+    assert_eq!(r.pipeline_counts(), (1, specialized), "{}", specialize.name());
+    drop(frame);
+    drop(mesh);
+    finish(r);
+    image
+}
+
+/// Renders `scene` in `mode`, with specialized pipelines and with the uber-shader, and
+/// compares probe pixels of both images with the CPU reference.
+fn check(name: &str, scene: &Scene, mode: LightingMode) {
+    let mut state = scene.gl.lighting;
+    state.mode = mode;
+    let images: Vec<(Specialize, RgbaImage)> = VARIANTS
+        .iter()
+        .map(|&v| (v, render_variant(scene, state, v)))
+        .collect();
 
     let v = &scene.mesh.vertices;
     let clips: Vec<DVec4> = v
@@ -97,7 +114,10 @@ fn check(name: &str, scene: &Scene, mode: LightingMode) {
             }
             let tri = idx.map(|i| &v[i]);
             let want = reference::pixel_color(&state, scene.modelview, scene.projection, tri, cov);
-            assert_pixel(&image, px, py, want, 1.0, &format!("{name} {}", mode.name()));
+            for (variant, image) in &images {
+                let what = format!("{name} {} {}", mode.name(), variant.name());
+                assert_pixel(image, px, py, want, 1.0, &what);
+            }
             probes += 1;
         }
     }
@@ -105,9 +125,6 @@ fn check(name: &str, scene: &Scene, mode: LightingMode) {
         probes > 60,
         "{name}: only {probes} probes landed inside triangles"
     );
-    drop(frame);
-    drop(mesh);
-    finish(r);
 }
 
 /// Whether the pixel center is at least EDGE_MARGIN pixels inside the triangle.

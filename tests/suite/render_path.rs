@@ -214,6 +214,7 @@ fn an_unknown_device_name_is_a_clear_error() {
     let err = ffvk::Renderer::new(&ffvk::RendererOptions {
         device: Some("no-such-gpu".into()),
         validation: ffvk::vk::Validation::Off,
+        ..Default::default()
     })
     .err()
     .expect("no device named no-such-gpu");
@@ -222,4 +223,50 @@ fn an_unknown_device_name_is_a_clear_error() {
         text.contains("no-such-gpu") && text.contains("llvmpipe"),
         "{text}"
     );
+}
+
+#[test]
+fn measured_frames_report_timestamps_and_pipeline_statistics() {
+    let mut r = renderer();
+    let info = r.device_info().clone();
+    assert!(
+        info.timestamps_supported && info.pipeline_statistics_query,
+        "lavapipe has timestamps and pipeline statistics: {info:?}"
+    );
+    // Unlit, identity matrices: a quad over the top-left 32×32 pixels, 4 vertices, 2 triangles.
+    let mesh = r
+        .upload(&quad(-1.0, 0.0, 0.0, 1.0, 0.0, Vec4::new(1.0, 0.0, 0.0, 1.0)))
+        .unwrap();
+    let mut frame = Frame::new(64, 64);
+    frame.draws.push(Draw {
+        mesh: &mesh,
+        modelview: Mat4::IDENTITY,
+        projection: Mat4::IDENTITY,
+        state: unlit(),
+    });
+    let plain = r.render(&frame).unwrap();
+    let (image, stats) = r.render_measured(&frame).unwrap();
+    assert_eq!(plain, image, "measuring does not change the image");
+    let gpu = stats.gpu_ns.expect("timestamps");
+    assert!(gpu > 0.0 && stats.wall_ns > 0.0, "{stats:?}");
+    let p = stats.pipeline.expect("pipeline statistics");
+    assert_eq!(p.input_assembly_vertices, 6, "{p:?}");
+    assert_eq!(p.input_assembly_primitives, 2, "{p:?}");
+    assert!((4..=6).contains(&p.vertex_shader_invocations), "{p:?}");
+    assert_eq!(p.clipping_invocations, 2, "{p:?}");
+    assert!(p.fragment_shader_invocations >= 32 * 32, "{p:?}");
+
+    // Without readback: the same counters, and the image buffer is not needed.
+    let again = r.measure(&frame).unwrap();
+    assert_eq!(again.pipeline, Some(p));
+    assert!(again.gpu_ns.is_some_and(|ns| ns > 0.0));
+
+    // No draws: nothing is shaded.
+    let empty = Frame::new(64, 64);
+    let none = r.measure(&empty).unwrap().pipeline.unwrap();
+    assert_eq!(none.vertex_shader_invocations, 0);
+    assert_eq!(none.fragment_shader_invocations, 0);
+    drop(frame);
+    drop(mesh);
+    finish(r);
 }

@@ -6,18 +6,28 @@ use std::path::PathBuf;
 use ffvk::gl::state::{Cap, GlState, LightingState, StateError};
 use ffvk::mesh::{MeshData, Vertex};
 use ffvk::vk::{Validation, ValidationSink};
-use ffvk::{Renderer, RendererOptions};
+use ffvk::{Renderer, RendererOptions, Specialize};
 use glam::{DVec4, Mat4, Vec3, Vec4};
 use image::RgbaImage;
 
 /// A renderer with the validation layer required: its errors fail the frame that caused them.
 pub fn renderer() -> Renderer {
+    renderer_with(Specialize::default())
+}
+
+/// [`renderer`] with a given pipeline specialization policy.
+pub fn renderer_with(specialize: Specialize) -> Renderer {
     Renderer::new(&RendererOptions {
         device: None,
         validation: Validation::Required,
+        specialize,
     })
     .expect("a renderer on lavapipe with VK_LAYER_KHRONOS_validation")
 }
+
+/// The two pipeline variants every lighting result must hold for: specialized pipelines
+/// and the uber-shader.
+pub const VARIANTS: [Specialize; 2] = [Specialize::Always, Specialize::Never];
 
 /// Drops the renderer and fails on any validation error reported at teardown
 /// (objects still alive when the device is destroyed, for example).

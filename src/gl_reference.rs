@@ -1,23 +1,27 @@
-//! Test-only reference renderer: draws a scene with Mesa's fixed-function OpenGL through OSMesa.
+//! Mesa's fixed-function OpenGL through OSMesa: the reference renderer of the conformance
+//! tests and the anchor of `ffvk bench` (cargo feature `osmesa`, Debian's libosmesa6-dev).
 //!
-//! This is the oracle ffvk's Vulkan images are compared against. It maps a
-//! [`LightingState`] onto the legacy GL entry points one to one (glLight, glMaterial,
+//! It maps a [`LightingState`] onto the legacy GL entry points one to one (glLight, glMaterial,
 //! glLightModel, glColorMaterial, glShadeModel, glEnable) and lets Mesa evaluate the lighting.
 //!
-//! Every call creates its own OSMesa context, renders into its own buffer, reads the pixels
-//! back and destroys the context, all on the calling thread. Calls are serialized by a global
-//! lock so that tests running on parallel threads never drive Mesa concurrently.
-
-// Integration tests include this module with `mod support;` and may use only part of it.
-#![allow(dead_code)]
+//! Every call creates its own OSMesa context, renders into its own buffer and destroys the
+//! context, all on the calling thread. Calls are serialized by a process-wide lock so that
+//! threads (parallel tests, for one) never drive Mesa concurrently.
 
 use std::ffi::{c_void, CStr};
 use std::os::raw::{c_char, c_int, c_uchar, c_uint};
 use std::sync::Mutex;
 
-use ffvk::gl::state::{ColorControl, ColorMaterialMode, Face, Light, LightingMode, LightingState, Material};
-use ffvk::mesh::{MeshData, Vertex};
+use std::time::Instant;
+
 use glam::Mat4;
+
+use crate::error::{Error, Result};
+use crate::gl::state::{ColorControl, ColorMaterialMode, Face, Light, LightingMode, LightingState, Material};
+use crate::mesh::{MeshData, Vertex};
+
+/// Errors inside this module are messages; the public entry points wrap them in [`Error::Gl`].
+type GlResult<T> = std::result::Result<T, String>;
 
 /// One frame: a cleared framebuffer and the draws, in order.
 pub struct GlScene<'a> {
@@ -62,6 +66,8 @@ type GLfloat = f32;
 type GLclampf = f32;
 type GLbitfield = c_uint;
 type GLboolean = c_uchar;
+type GLuint = c_uint;
+type GLsizeiptr = isize;
 
 #[repr(C)]
 struct OsMesaContextOpaque {
@@ -132,6 +138,9 @@ const GL_RESCALE_NORMAL: GLenum = 0x803A;
 const GL_LIGHT_MODEL_COLOR_CONTROL: GLenum = 0x81F8;
 const GL_SINGLE_COLOR: GLenum = 0x81F9;
 const GL_SEPARATE_SPECULAR_COLOR: GLenum = 0x81FA;
+const GL_ARRAY_BUFFER: GLenum = 0x8892;
+const GL_ELEMENT_ARRAY_BUFFER: GLenum = 0x8893;
+const GL_STATIC_DRAW: GLenum = 0x88E4;
 const GL_DEPTH_BUFFER_BIT: GLbitfield = 0x0000_0100;
 const GL_COLOR_BUFFER_BIT: GLbitfield = 0x0000_4000;
 
@@ -194,12 +203,16 @@ extern "C" {
         pixels: *mut c_void,
     );
     fn glFinish();
+    fn glGenBuffers(n: GLsizei, buffers: *mut GLuint);
+    fn glDeleteBuffers(n: GLsizei, buffers: *const GLuint);
+    fn glBindBuffer(target: GLenum, buffer: GLuint);
+    fn glBufferData(target: GLenum, size: GLsizeiptr, data: *const c_void, usage: GLenum);
 }
 
 // ---------------------------------------------------------------------------------------------
 // The context: created, made current on this thread, and always released and destroyed.
 
-/// Serializes every use of OSMesa in this test binary (see the module documentation).
+/// Serializes every use of OSMesa in this process (see the module documentation).
 static OSMESA_LOCK: Mutex<()> = Mutex::new(());
 
 /// An OSMesa context current on the calling thread, bound to its own RGBA8 color buffer.
@@ -212,7 +225,7 @@ struct Context {
 }
 
 impl Context {
-    fn new(width: u32, height: u32) -> Result<Context, String> {
+    fn new(width: u32, height: u32) -> GlResult<Context> {
         if width == 0 || height == 0 {
             return Err(format!("OSMesa: framebuffer size {width}x{height} is empty"));
         }
@@ -274,7 +287,7 @@ impl Context {
         Ok(context)
     }
 
-    fn info(&self) -> Result<GlInfo, String> {
+    fn info(&self) -> GlResult<GlInfo> {
         let mut max_lights: GLint = 0;
         // SAFETY: this context is current on this thread; one GLint is written.
         unsafe { glGetIntegerv(GL_MAX_LIGHTS, &mut max_lights) };
@@ -307,7 +320,7 @@ fn lock() -> std::sync::MutexGuard<'static, ()> {
         .unwrap_or_else(|poisoned| poisoned.into_inner())
 }
 
-fn gl_string(name: GLenum) -> Result<String, String> {
+fn gl_string(name: GLenum) -> GlResult<String> {
     // SAFETY: a context is current; glGetString returns a static NUL-terminated string or NULL.
     let s = unsafe { glGetString(name) };
     if s.is_null() {
@@ -319,7 +332,7 @@ fn gl_string(name: GLenum) -> Result<String, String> {
 }
 
 /// Returns Err naming `what` if GL has recorded an error (draining every pending error flag).
-fn check_gl_error(what: &str) -> Result<(), String> {
+fn check_gl_error(what: &str) -> GlResult<()> {
     let mut codes = Vec::new();
     loop {
         // SAFETY: a context is current on this thread.
@@ -341,31 +354,166 @@ fn check_gl_error(what: &str) -> Result<(), String> {
 
 /// Reports GL_VERSION, GL_RENDERER, GL_VENDOR and GL_MAX_LIGHTS of the context
 /// [`render_gl`] uses.
-pub fn gl_info() -> Result<GlInfo, String> {
+pub fn gl_info() -> Result<GlInfo> {
     let _guard = lock();
-    let context = Context::new(1, 1)?;
-    context.info()
+    let context = Context::new(1, 1).map_err(Error::Gl)?;
+    context.info().map_err(Error::Gl)
 }
 
 /// Renders `scene` with Mesa's fixed-function OpenGL and returns the color buffer, row 0 at
 /// the top of the view.
-pub fn render_gl(scene: &GlScene) -> Result<image::RgbaImage, String> {
+pub fn render_gl(scene: &GlScene) -> Result<image::RgbaImage> {
     let _guard = lock();
-    let context = Context::new(scene.width, scene.height)?;
+    let context = Context::new(scene.width, scene.height).map_err(Error::Gl)?;
     let result = render_current(scene);
     drop(context);
-    result
+    result.map_err(Error::Gl)
 }
 
-/// Renders with the context that is current on this thread.
-fn render_current(scene: &GlScene) -> Result<image::RgbaImage, String> {
-    let (width, height) = (scene.width, scene.height);
+/// Host times of [`time_frames`], in nanoseconds.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GlTiming {
+    /// The first warm-up frame: Mesa builds and compiles its fixed-function shaders for the
+    /// state then.
+    pub first_frame_ns: f64,
+    /// Each measured frame: clear, state and draw calls, then glFinish.
+    pub frame_ns: Vec<f64>,
+}
+
+/// Draws `scene` `warmup` + `frames` times in one context and times each frame on the host
+/// clock, from the clear to the return of glFinish (which waits for llvmpipe's rasterizer
+/// threads). Meshes are uploaded once into buffer objects first, as ffvk uploads them once,
+/// so that frames do not copy client arrays. `warmup` must be at least 1.
+pub fn time_frames(scene: &GlScene, warmup: u32, frames: u32) -> Result<GlTiming> {
+    if warmup == 0 {
+        return Err(Error::Gl("time_frames needs at least one warm-up frame".into()));
+    }
+    let _guard = lock();
+    let context = Context::new(scene.width, scene.height).map_err(Error::Gl)?;
+    let result = time_current(scene, warmup, frames);
+    drop(context);
+    result.map_err(Error::Gl)
+}
+
+fn time_current(scene: &GlScene, warmup: u32, frames: u32) -> GlResult<GlTiming> {
     let mut max_lights: GLint = 0;
-    // SAFETY: a context is current on this thread; every pointer passed below is valid for
-    // the duration of the call that receives it.
+    // SAFETY: a context is current on this thread; one GLint is written.
+    unsafe { glGetIntegerv(GL_MAX_LIGHTS, &mut max_lights) };
+    let max_lights = usize::try_from(max_lights).unwrap_or(0);
+    // Buffer objects die (are deleted) before the context, at the end of this function.
+    let buffers = scene
+        .draws
+        .iter()
+        .map(|d| MeshBuffers::upload(d.mesh))
+        .collect::<GlResult<Vec<_>>>()?;
+    check_gl_error("while uploading the meshes")?;
+    let mut first_frame_ns = 0.0;
+    let mut frame_ns = Vec::with_capacity(frames as usize);
+    for i in 0..warmup + frames {
+        let start = Instant::now();
+        begin_frame(scene);
+        for (index, (draw, b)) in scene.draws.iter().zip(&buffers).enumerate() {
+            draw_one(draw, max_lights, Arrays::Buffers(b)).map_err(|e| format!("draw {index}: {e}"))?;
+        }
+        // SAFETY: a context is current on this thread.
+        unsafe { glFinish() };
+        let ns = start.elapsed().as_nanos() as f64;
+        check_gl_error(&format!("in frame {i}"))?;
+        if i == 0 {
+            first_frame_ns = ns;
+        } else if i >= warmup {
+            frame_ns.push(ns);
+        }
+    }
+    Ok(GlTiming {
+        first_frame_ns,
+        frame_ns,
+    })
+}
+
+/// A mesh in a vertex and an index buffer object of the current context.
+struct MeshBuffers {
+    vertices: GLuint,
+    indices: GLuint,
+}
+
+impl MeshBuffers {
+    fn upload(mesh: &MeshData) -> GlResult<MeshBuffers> {
+        check_indices(mesh)?;
+        let vertex_bytes: &[u8] = bytemuck::cast_slice(&mesh.vertices);
+        let index_bytes: &[u8] = bytemuck::cast_slice(&mesh.indices);
+        let size = |bytes: &[u8]| {
+            GLsizeiptr::try_from(bytes.len())
+                .map_err(|_| format!("{} bytes are too many for a buffer", bytes.len()))
+        };
+        let (vertex_size, index_size) = (size(vertex_bytes)?, size(index_bytes)?);
+        let mut names: [GLuint; 2] = [0; 2];
+        // SAFETY: a context is current on this thread; glGenBuffers writes two names, and
+        // glBufferData copies `size` bytes from slices that are at least that long.
+        unsafe {
+            glGenBuffers(2, names.as_mut_ptr());
+            glBindBuffer(GL_ARRAY_BUFFER, names[0]);
+            glBufferData(
+                GL_ARRAY_BUFFER,
+                vertex_size,
+                vertex_bytes.as_ptr().cast(),
+                GL_STATIC_DRAW,
+            );
+            glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, names[1]);
+            glBufferData(
+                GL_ELEMENT_ARRAY_BUFFER,
+                index_size,
+                index_bytes.as_ptr().cast(),
+                GL_STATIC_DRAW,
+            );
+            glBindBuffer(GL_ARRAY_BUFFER, 0);
+            glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+        }
+        Ok(MeshBuffers {
+            vertices: names[0],
+            indices: names[1],
+        })
+    }
+}
+
+impl Drop for MeshBuffers {
+    fn drop(&mut self) {
+        let names = [self.vertices, self.indices];
+        // SAFETY: the context that made the names is current (MeshBuffers never outlive
+        // `time_current`, which runs inside its context).
+        unsafe { glDeleteBuffers(2, names.as_ptr()) };
+    }
+}
+
+/// Where a draw's vertex and index arrays are.
+#[derive(Clone, Copy)]
+enum Arrays<'a> {
+    /// In the mesh's own memory (client arrays).
+    Client,
+    /// In buffer objects of the current context.
+    Buffers(&'a MeshBuffers),
+}
+
+/// Every index of `mesh` within its vertices.
+fn check_indices(mesh: &MeshData) -> GlResult<()> {
+    let count = mesh.triangle_count() * 3;
+    match mesh.indices[..count]
+        .iter()
+        .find(|&&i| i as usize >= mesh.vertices.len())
+    {
+        Some(&bad) => Err(format!(
+            "index {bad} is out of range for a mesh of {} vertices",
+            mesh.vertices.len()
+        )),
+        None => Ok(()),
+    }
+}
+
+/// Viewport, clear and the per-frame fixed state.
+fn begin_frame(scene: &GlScene) {
+    // SAFETY: a context is current on this thread.
     unsafe {
-        glGetIntegerv(GL_MAX_LIGHTS, &mut max_lights);
-        glViewport(0, 0, width as GLsizei, height as GLsizei);
+        glViewport(0, 0, scene.width as GLsizei, scene.height as GLsizei);
         let [r, g, b, a] = scene.clear_color;
         glClearColor(r, g, b, a);
         glClearDepth(1.0);
@@ -382,11 +530,20 @@ fn render_current(scene: &GlScene) -> Result<image::RgbaImage, String> {
         // Dithering is on by default in GL; the Vulkan side never dithers.
         glDisable(GL_DITHER);
     }
+}
+
+/// Renders with the context that is current on this thread.
+fn render_current(scene: &GlScene) -> GlResult<image::RgbaImage> {
+    let (width, height) = (scene.width, scene.height);
+    let mut max_lights: GLint = 0;
+    // SAFETY: a context is current on this thread; one GLint is written.
+    unsafe { glGetIntegerv(GL_MAX_LIGHTS, &mut max_lights) };
+    begin_frame(scene);
     check_gl_error("while setting up the framebuffer")?;
     let max_lights = usize::try_from(max_lights).unwrap_or(0);
 
     for (index, draw) in scene.draws.iter().enumerate() {
-        draw_one(draw, max_lights).map_err(|e| format!("draw {index}: {e}"))?;
+        draw_one(draw, max_lights, Arrays::Client).map_err(|e| format!("draw {index}: {e}"))?;
         check_gl_error(&format!("after draw {index}"))?;
     }
 
@@ -479,7 +636,7 @@ fn set_material(face: GLenum, m: &Material) {
     }
 }
 
-fn draw_one(draw: &GlDraw, max_lights: usize) -> Result<(), String> {
+fn draw_one(draw: &GlDraw, max_lights: usize, arrays: Arrays) -> GlResult<()> {
     let state = &draw.state;
     if let Some((index, _)) = state
         .lights
@@ -493,14 +650,9 @@ fn draw_one(draw: &GlDraw, max_lights: usize) -> Result<(), String> {
     }
     let mesh = draw.mesh;
     let count = mesh.triangle_count() * 3;
-    if let Some(&bad) = mesh.indices[..count]
-        .iter()
-        .find(|&&i| i as usize >= mesh.vertices.len())
-    {
-        return Err(format!(
-            "index {bad} is out of range for a mesh of {} vertices",
-            mesh.vertices.len()
-        ));
+    if let Arrays::Client = arrays {
+        // Buffer objects were checked when they were filled.
+        check_indices(mesh)?;
     }
     let count = GLsizei::try_from(count).map_err(|_| format!("{count} indices are too many for one draw"))?;
 
@@ -559,37 +711,39 @@ fn draw_one(draw: &GlDraw, max_lights: usize) -> Result<(), String> {
         return Ok(());
     }
     let stride = std::mem::size_of::<Vertex>() as GLsizei;
-    let base = mesh.vertices.as_ptr().cast::<u8>();
-    // SAFETY: a context is current on this thread. The arrays point into `mesh.vertices`
-    // (repr(C) f32 fields, `stride` bytes apart), every index was checked against its length,
-    // and glDrawElements reads the client arrays before it returns; they are disabled after.
+    // Client arrays are addresses in the mesh; with buffer objects bound, GL reads the same
+    // arguments as offsets into them (from a null base).
+    let (vertex_base, index_base): (*const u8, *const c_void) = match arrays {
+        Arrays::Client => (mesh.vertices.as_ptr().cast(), mesh.indices.as_ptr().cast()),
+        Arrays::Buffers(b) => {
+            // SAFETY: a context is current on this thread; both names are buffers it made.
+            unsafe {
+                glBindBuffer(GL_ARRAY_BUFFER, b.vertices);
+                glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.indices);
+            }
+            (std::ptr::null(), std::ptr::null())
+        }
+    };
+    let field = |offset: usize| vertex_base.wrapping_add(offset).cast::<c_void>();
+    // SAFETY: a context is current on this thread. Client arrays point into `mesh.vertices`
+    // (repr(C) f32 fields, `stride` bytes apart) and glDrawElements reads them before it
+    // returns; buffer objects hold the same bytes. Every index was checked against the vertex
+    // count, and the arrays are disabled (and buffers unbound) after the draw.
     unsafe {
         glMatrixMode(GL_MODELVIEW);
         glLoadMatrixf(draw.modelview.to_cols_array().as_ptr());
         glEnableClientState(GL_VERTEX_ARRAY);
         glEnableClientState(GL_NORMAL_ARRAY);
         glEnableClientState(GL_COLOR_ARRAY);
-        glVertexPointer(
-            3,
-            GL_FLOAT,
-            stride,
-            base.add(std::mem::offset_of!(Vertex, position)).cast(),
-        );
-        glNormalPointer(
-            GL_FLOAT,
-            stride,
-            base.add(std::mem::offset_of!(Vertex, normal)).cast(),
-        );
-        glColorPointer(
-            4,
-            GL_FLOAT,
-            stride,
-            base.add(std::mem::offset_of!(Vertex, color)).cast(),
-        );
-        glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, mesh.indices.as_ptr().cast());
+        glVertexPointer(3, GL_FLOAT, stride, field(std::mem::offset_of!(Vertex, position)));
+        glNormalPointer(GL_FLOAT, stride, field(std::mem::offset_of!(Vertex, normal)));
+        glColorPointer(4, GL_FLOAT, stride, field(std::mem::offset_of!(Vertex, color)));
+        glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, index_base);
         glDisableClientState(GL_VERTEX_ARRAY);
         glDisableClientState(GL_NORMAL_ARRAY);
         glDisableClientState(GL_COLOR_ARRAY);
+        glBindBuffer(GL_ARRAY_BUFFER, 0);
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
     }
     Ok(())
 }

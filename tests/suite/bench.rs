@@ -1,0 +1,167 @@
+//! The benchmark harness, run once on a tiny sweep: every point runs, and the outputs (CSV,
+//! JSON, Markdown, PNG plots) are written and well-formed. No timed assertions: times only
+//! have to be positive numbers.
+
+use ffvk::bench::{crossover, points, run_sweep, write_outputs, Engine, Spread, SweepConfig, CSV_COLUMNS};
+use ffvk::vk::Validation;
+use ffvk::RendererOptions;
+use indicatif::ProgressBar;
+
+use crate::support::output_dir;
+
+/// Splits one CSV line, honouring double quotes (the device name has commas).
+fn csv_fields(line: &str) -> Vec<String> {
+    let mut fields = vec![String::new()];
+    let mut quoted = false;
+    let mut chars = line.chars().peekable();
+    while let Some(c) = chars.next() {
+        match (c, quoted) {
+            ('"', true) if chars.peek() == Some(&'"') => {
+                chars.next();
+                fields.last_mut().unwrap().push('"');
+            }
+            ('"', _) => quoted = !quoted,
+            (',', false) => fields.push(String::new()),
+            (c, _) => fields.last_mut().unwrap().push(c),
+        }
+    }
+    fields
+}
+
+#[test]
+fn a_tiny_sweep_runs_every_point_and_writes_csv_json_and_plots() {
+    let config = SweepConfig::tiny();
+    let options = RendererOptions {
+        device: None,
+        validation: Validation::Required,
+        ..Default::default()
+    };
+    // Validation errors fail the frame that caused them, and so the sweep.
+    let report = run_sweep(&config, &options, &ProgressBar::hidden()).unwrap();
+
+    // Every point ran; the GL anchor is there (the tests build ffvk with `osmesa`).
+    let expected = points(&config);
+    assert_eq!(report.results.len(), expected.len(), "notes: {:?}", report.notes);
+    assert!(report.results.iter().any(|r| r.point.engine == Engine::Gl));
+    for r in &report.results {
+        let s = &r.stats;
+        assert_eq!((s.warmup, s.frames), (config.warmup, config.frames));
+        assert!(s.time_ms > 0.0 && s.wall_ms.min > 0.0, "{r:?}");
+        assert!(s.wall_ms.min <= s.wall_ms.median && s.wall_ms.median <= s.wall_ms.max);
+        if r.point.engine == Engine::Ffvk {
+            assert!(s.gpu_ms.is_some_and(|g| g.median > 0.0), "{r:?}");
+            assert!(
+                s.vs_invocations.is_some_and(|n| n >= r.point.vertices.min(3)),
+                "{r:?}"
+            );
+            assert!(s.fs_invocations.is_some_and(|n| n > 0), "{r:?}");
+        }
+        assert_eq!(r.device, report.env.device);
+        assert!(!r.lp_num_threads.is_empty() && !r.mesa_version.is_empty());
+    }
+    assert!(report.env.device.contains("llvmpipe"), "{:?}", report.env);
+    assert!(report.env.mesa_version.starts_with(|c: char| c.is_ascii_digit()));
+
+    let dir = output_dir().join("bench");
+    let _ = std::fs::remove_dir_all(&dir);
+    let written = write_outputs(&report, &dir).unwrap();
+    for name in [
+        "results.csv",
+        "results.json",
+        "summary.md",
+        "time_vs_vertices.png",
+        "time_vs_pixels.png",
+        "time_vs_lights.png",
+    ] {
+        assert!(
+            written.contains(&dir.join(name)),
+            "{name} not written: {written:?}"
+        );
+    }
+
+    // CSV: the header, then one row per point with every column.
+    let csv = std::fs::read_to_string(dir.join("results.csv")).unwrap();
+    let mut lines = csv.lines();
+    assert_eq!(lines.next().unwrap(), CSV_COLUMNS.join(","));
+    let rows: Vec<Vec<String>> = lines.map(csv_fields).collect();
+    assert_eq!(rows.len(), report.results.len());
+    let column = |name: &str| CSV_COLUMNS.iter().position(|c| *c == name).unwrap();
+    for row in &rows {
+        assert_eq!(row.len(), CSV_COLUMNS.len(), "{row:?}");
+        assert!(row[column("time_ms")].parse::<f64>().unwrap() > 0.0);
+        assert!(row[column("device")].contains("llvmpipe"), "{row:?}");
+        assert!(!row[column("lp_num_threads")].is_empty());
+        assert!(!row[column("mesa_version")].is_empty());
+    }
+
+    // JSON: the same results, each with its environment.
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("results.json")).unwrap()).unwrap();
+    let results = json["results"].as_array().unwrap();
+    assert_eq!(results.len(), report.results.len());
+    for r in results {
+        for key in [
+            "lp_num_threads",
+            "device",
+            "driver_info",
+            "mesa_version",
+            "mode",
+            "variant",
+        ] {
+            assert!(r[key].is_string(), "{key} in {r}");
+        }
+        assert!(r["time_ms"].as_f64().unwrap() > 0.0);
+        assert!(r["wall_ms"]["median"].is_number());
+    }
+    assert!(json["env"]["lp_num_threads"].is_string());
+    assert!(json["summary"]["specialization_speedup"].is_object());
+
+    // Plots: PNGs of the plotters size with more than a background.
+    for name in ["time_vs_vertices.png", "time_vs_pixels.png", "time_vs_lights.png"] {
+        let image = image::open(dir.join(name)).unwrap().to_rgba8();
+        assert_eq!(image.dimensions(), (1000, 640), "{name}");
+        let background = image.get_pixel(0, 0);
+        let drawn = image.pixels().filter(|p| *p != background).count();
+        assert!(drawn > 5000, "{name}: only {drawn} pixels drawn");
+    }
+    let summary = std::fs::read_to_string(dir.join("summary.md")).unwrap();
+    assert!(summary.contains("LP_NUM_THREADS") && summary.contains("Mesa"));
+}
+
+#[test]
+fn sweeps_are_validated() {
+    let options = RendererOptions::default();
+    for bad in [
+        SweepConfig {
+            frames: 0,
+            ..SweepConfig::tiny()
+        },
+        SweepConfig {
+            light_counts: vec![17],
+            ..SweepConfig::tiny()
+        },
+        SweepConfig {
+            sizes: vec![0],
+            ..SweepConfig::tiny()
+        },
+    ] {
+        let err = run_sweep(&bad, &options, &ProgressBar::hidden()).unwrap_err();
+        assert!(matches!(err, ffvk::Error::Bench(_)), "{err}");
+    }
+}
+
+#[test]
+fn spreads_and_crossovers() {
+    let s = Spread::of(&[4.0, 1.0, 3.0, 2.0, 5.0]).unwrap();
+    assert_eq!((s.min, s.p25, s.median, s.p75, s.max), (1.0, 2.0, 3.0, 4.0, 5.0));
+    assert_eq!(Spread::of(&[]), None);
+    // a = x, b = 100 / x... on a log grid: equal at x = 10.
+    let xs = [1.0, 4.0, 16.0, 64.0];
+    let a: Vec<(f64, f64)> = xs.iter().map(|&x| (x, x)).collect();
+    let b: Vec<(f64, f64)> = xs.iter().map(|&x| (x, 100.0 / x)).collect();
+    let x = crossover(&a, &b).unwrap();
+    assert!((x - 10.0).abs() < 1e-9, "{x}");
+    // One always below the other: no crossing.
+    let c: Vec<(f64, f64)> = xs.iter().map(|&x| (x, 2.0 * x)).collect();
+    assert_eq!(crossover(&a, &c), None);
+}

@@ -1,0 +1,182 @@
+//! Pipeline specialization: which pipeline each policy creates for which state, and the key
+//! that decides it. (That specialized and uber pipelines draw the same lighting is checked by
+//! every lighting and conformance test, which run both.)
+
+use ffvk::gl::state::*;
+use ffvk::layout::{SpecConstant, SpecKey};
+use ffvk::pipeline::MAX_AUTO_VARIANTS;
+use ffvk::{Draw, Frame, Renderer, Specialize};
+use glam::{Mat4, Vec3, Vec4};
+
+use crate::support::*;
+
+/// Lighting on with `lights` directional lights, in `mode`.
+fn lit(lights: usize, mode: LightingMode) -> LightingState {
+    with(dark(), |gl| {
+        for i in 0..lights {
+            gl.enable(Cap::Light(i))?;
+            gl.light(i, LightParam::Position(Vec4::new(i as f32, 1.0, 1.0, 0.0)))?;
+        }
+        gl.lighting_mode(mode);
+        Ok(())
+    })
+    .lighting
+}
+
+/// Draws one small frame of a quad with each state, in order.
+fn draw_states(r: &mut Renderer, states: &[LightingState]) {
+    let mesh = r.upload(&quad(-1.0, -1.0, 1.0, 1.0, 0.0, Vec4::ONE)).unwrap();
+    for &state in states {
+        let mut frame = Frame::new(8, 8);
+        frame.draws.push(Draw {
+            mesh: &mesh,
+            modelview: Mat4::from_translation(Vec3::new(0.0, 0.0, -2.0)),
+            projection: perspective(45.0, 1.0, 0.5, 10.0),
+            state,
+        });
+        r.render(&frame).unwrap();
+    }
+}
+
+#[test]
+fn always_shares_a_pipeline_between_states_that_light_alike() {
+    let mut r = renderer_with(Specialize::Always);
+    let a = lit(1, LightingMode::Vertex);
+    // Another color and direction, still one directional light: the same key.
+    let mut b = a;
+    b.lights[0].diffuse = Vec4::new(0.2, 0.4, 0.6, 1.0);
+    b.lights[0].position = Vec4::new(0.0, 0.0, 1.0, 0.0);
+    draw_states(&mut r, &[a, b]);
+    assert_eq!(r.pipeline_counts(), (1, 1));
+    // Two lights, then the same in fragment mode: one new pipeline each.
+    draw_states(
+        &mut r,
+        &[lit(2, LightingMode::Vertex), lit(2, LightingMode::Fragment)],
+    );
+    assert_eq!(r.pipeline_counts(), (3, 3));
+    finish(r);
+}
+
+#[test]
+fn never_uses_one_uber_pipeline_per_mode() {
+    let mut r = renderer_with(Specialize::Never);
+    draw_states(
+        &mut r,
+        &[
+            lit(1, LightingMode::Vertex),
+            lit(5, LightingMode::Vertex),
+            unlit(),
+            lit(3, LightingMode::Fragment),
+        ],
+    );
+    assert_eq!(r.pipeline_counts(), (2, 0));
+    finish(r);
+}
+
+#[test]
+fn auto_specializes_until_its_budget_then_uses_the_uber_shader() {
+    let mut r = renderer_with(Specialize::Auto);
+    // Distinct keys: light count × local viewer × two-sided.
+    let mut states = Vec::new();
+    for lights in 0..=MAX_LIGHTS {
+        for (local, two) in [(false, false), (true, false), (false, true), (true, true)] {
+            let mut s = lit(lights, LightingMode::Vertex);
+            s.model.local_viewer = local;
+            s.model.two_side = two;
+            states.push(s);
+        }
+    }
+    states.dedup_by_key(|s| SpecKey::for_state(s));
+    assert!(states.len() > MAX_AUTO_VARIANTS);
+    draw_states(&mut r, &states[..MAX_AUTO_VARIANTS]);
+    assert_eq!(r.pipeline_counts(), (MAX_AUTO_VARIANTS, MAX_AUTO_VARIANTS));
+    // Past the budget: the uber-shader, shared by every later state of the mode.
+    draw_states(&mut r, &states[MAX_AUTO_VARIANTS..]);
+    assert_eq!(r.pipeline_counts(), (MAX_AUTO_VARIANTS + 1, MAX_AUTO_VARIANTS));
+    // A state specialized before the budget ran out keeps its pipeline.
+    draw_states(&mut r, &states[..1]);
+    assert_eq!(r.pipeline_counts(), (MAX_AUTO_VARIANTS + 1, MAX_AUTO_VARIANTS));
+    finish(r);
+}
+
+#[test]
+fn the_key_keeps_only_what_changes_the_lighting() {
+    let key = |s: &LightingState| SpecKey::for_state(s);
+    // Unlit states share one key whatever their lights and light model.
+    let mut unlit_with_lights = lit(3, LightingMode::Vertex);
+    unlit_with_lights.lighting = false;
+    unlit_with_lights.model.local_viewer = true;
+    assert_eq!(key(&unlit_with_lights), key(&unlit()));
+    assert_eq!(key(&unlit()).values, [0; 8]);
+
+    // Without lights the viewer and color control cannot matter; two-sided still does (the
+    // back material's emission and ambient).
+    let none = lit(0, LightingMode::Vertex);
+    let mut none_local = none;
+    none_local.model.local_viewer = true;
+    none_local.model.color_control = ColorControl::SeparateSpecularColor;
+    assert_eq!(key(&none), key(&none_local));
+    let mut none_two = none;
+    none_two.model.two_side = true;
+    assert_ne!(key(&none), key(&none_two));
+
+    // Light count and kinds.
+    let mut s = lit(3, LightingMode::Vertex);
+    let k = key(&s);
+    assert_eq!(k.get(SpecConstant::LightCount), 3);
+    assert_eq!(k.get(SpecConstant::Lighting), 1);
+    assert_eq!(k.get(SpecConstant::AnyLocalLight), 0);
+    assert_eq!(k.get(SpecConstant::AnySpotLight), 0);
+    s.lights[1].position.w = 1.0;
+    assert_eq!(key(&s).get(SpecConstant::AnyLocalLight), 1);
+    s.lights[2].spot_cutoff = 30.0;
+    assert_eq!(key(&s).get(SpecConstant::AnySpotLight), 1);
+    // A disabled spot light is no spot light.
+    let mut t = lit(1, LightingMode::Vertex);
+    t.lights[5].spot_cutoff = 30.0;
+    assert_eq!(key(&t).get(SpecConstant::AnySpotLight), 0);
+    // The mode is not part of the key: pipelines are keyed by (mode, key).
+    assert_eq!(
+        key(&lit(2, LightingMode::Vertex)),
+        key(&lit(2, LightingMode::Flat))
+    );
+}
+
+#[test]
+fn one_sided_single_color_states_pass_one_color_between_the_stages() {
+    use ffvk::pipeline::stage_files;
+    let key = |s: &LightingState| SpecKey::for_state(s);
+    let one_sided = lit(2, LightingMode::Vertex);
+    let mut two_sided = one_sided;
+    two_sided.model.two_side = true;
+    let mut separate = one_sided;
+    separate.model.color_control = ColorControl::SeparateSpecularColor;
+    let flat = lit(2, LightingMode::Flat);
+    assert_eq!(
+        stage_files(LightingMode::Vertex, key(&one_sided)),
+        ("gouraud_one_color.vert", "gouraud_one_color.frag")
+    );
+    assert_eq!(
+        stage_files(LightingMode::Flat, key(&flat)),
+        ("flat_one_color.vert", "flat_one_color.frag")
+    );
+    assert_eq!(
+        stage_files(LightingMode::Vertex, key(&unlit())),
+        ("gouraud_one_color.vert", "gouraud_one_color.frag")
+    );
+    for s in [two_sided, separate] {
+        assert_eq!(
+            stage_files(LightingMode::Vertex, key(&s)),
+            ("gouraud.vert", "gouraud.frag")
+        );
+    }
+    // The uber-shader passes every color; fragment mode has one pair of stages.
+    assert_eq!(
+        stage_files(LightingMode::Vertex, SpecKey::UBER),
+        ("gouraud.vert", "gouraud.frag")
+    );
+    assert_eq!(
+        stage_files(LightingMode::Fragment, key(&one_sided)),
+        ("phong.vert", "phong.frag")
+    );
+}
