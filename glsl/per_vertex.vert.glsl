@@ -26,8 +26,9 @@ void main() {
     gl_Position = draw.projection * V;
 
     if (!lighting_enabled()) {
-        front_pri = in_color;
-        back_pri = in_color;
+        // Section 2.14.6: colors are clamped after lighting, whether enabled or not.
+        front_pri = clamp(in_color, 0.0, 1.0);
+        back_pri = front_pri;
         front_sec = vec4(0.0, 0.0, 0.0, 1.0);
         back_sec = front_sec;
         return;

@@ -18,5 +18,7 @@ void main() {
     vec3 n = eye_normal(in_normal);
     normal_length = length(n);
     normal_direction = normal_length > 0.0 ? n / normal_length : vec3(0.0);
-    color = in_color;
+    // Lighting off: the clamped current color (section 2.14.6); lighting on: unclamped, as
+    // COLOR_MATERIAL takes it.
+    color = lighting_enabled() ? in_color : clamp(in_color, 0.0, 1.0);
 }

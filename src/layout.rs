@@ -71,8 +71,8 @@ impl From<&Light> for GpuLight {
             s_dli: l.spot_direction.to_array(),
             s_rli: l.spot_exponent,
             c_rli: l.spot_cutoff,
-            // In double precision so that cos(90°) rounds to the f32 nearest the true value.
-            cos_c_rli: (l.spot_cutoff as f64).to_radians().cos() as f32,
+            // The same cosine as the CPU reference: double precision, exactly 0 at 90°.
+            cos_c_rli: crate::reference::cos_cutoff(l.spot_cutoff) as f32,
             k0: l.constant_attenuation,
             k1: l.linear_attenuation,
             k2: l.quadratic_attenuation,
@@ -224,6 +224,29 @@ impl DrawBlock {
     /// Packs one draw's state. `projection` is GL's; the Vulkan clip conversion is applied here.
     pub fn new(state: &LightingState, modelview: Mat4, projection: Mat4) -> Result<Self, StateError> {
         state.validate()?;
+        if state.lighting {
+            // Normals need (M⁻¹)ᵀ; a singular modelview would light with NaN normals.
+            let det = Mat3::from_mat4(modelview).determinant();
+            if det == 0.0 || !det.is_finite() {
+                return Err(StateError::OutOfRange {
+                    parameter: "determinant of the modelview's upper 3x3",
+                    value: det,
+                    valid: "a finite non-zero value (an invertible modelview, for the normal matrix)",
+                });
+            }
+            // att_i = 1 / (k0 + k1 d + k2 d²) is infinite when all three are 0.
+            for l in state.enabled_lights().filter(|l| l.position.w != 0.0) {
+                let sum = l.constant_attenuation + l.linear_attenuation + l.quadratic_attenuation;
+                if sum == 0.0 {
+                    return Err(StateError::OutOfRange {
+                        parameter:
+                            "GL_CONSTANT_ATTENUATION + GL_LINEAR_ATTENUATION + GL_QUADRATIC_ATTENUATION",
+                        value: sum,
+                        valid: "> 0 for an enabled positional light (else att_i = 1/0)",
+                    });
+                }
+            }
+        }
         let mut lights = [GpuLight::zeroed(); MAX_LIGHTS];
         let mut light_count = 0;
         for (slot, light) in lights.iter_mut().zip(state.enabled_lights()) {

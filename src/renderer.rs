@@ -23,7 +23,7 @@ pub struct RendererOptions {
     pub specialize: Specialize,
 }
 
-/// A mesh uploaded to the renderer's device. Draw it only with the renderer that made it.
+/// A mesh uploaded to the renderer's device. Drawing it with another renderer is an error.
 pub struct Mesh {
     vertices: Buffer,
     indices: Buffer,
@@ -144,6 +144,8 @@ pub struct Renderer {
     statistics: vk::QueryPool,
     uniform_stride: u64,
     specialize: Specialize,
+    /// Set when a submission failed: the renderer refuses further frames.
+    lost: bool,
     device: Arc<Device>,
 }
 
@@ -170,6 +172,7 @@ impl Renderer {
             statistics: vk::QueryPool::null(),
             uniform_stride,
             specialize: options.specialize,
+            lost: false,
             device: device.clone(),
         };
         let pool_sizes = [vk::DescriptorPoolSize {
@@ -390,6 +393,18 @@ impl Renderer {
 
     /// Uploads the uniforms, records, submits and waits; returns what the queries measured.
     fn draw_frame(&mut self, frame: &Frame, pass: Pass) -> Result<FrameStats> {
+        if self.lost {
+            return Err(Error::DeviceLost(
+                "render (an earlier submission failed; make a new renderer)",
+            ));
+        }
+        for (i, d) in frame.draws.iter().enumerate() {
+            if !Arc::ptr_eq(d.mesh.vertices.device(), &self.device) {
+                return Err(Error::Mesh(format!(
+                    "draw {i}: the mesh was uploaded by another renderer: expected a mesh from this renderer's upload"
+                )));
+            }
+        }
         self.ensure_targets(frame.width, frame.height)?;
         self.ensure_uniforms(frame.draws.len())?;
         let blocks = frame
@@ -424,7 +439,8 @@ impl Renderer {
     /// The readback buffer as an image (after a frame recorded with `readback`).
     fn read_image(&self, frame: &Frame) -> RgbaImage {
         let targets = self.targets.as_ref().expect("ensure_targets made them");
-        let len = (frame.width * frame.height * 4) as usize;
+        let len = usize::try_from(u64::from(frame.width) * u64::from(frame.height) * 4)
+            .expect("ensure_targets bounded the size by the device's limit");
         let pixels = targets.readback.bytes()[..len].to_vec();
         RgbaImage::from_raw(frame.width, frame.height, pixels).expect("readback holds width*height*4 bytes")
     }
@@ -547,7 +563,7 @@ impl Renderer {
                         | vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_WRITE,
                 )
                 .old_layout(vk::ImageLayout::UNDEFINED)
-                .new_layout(vk::ImageLayout::DEPTH_ATTACHMENT_OPTIMAL)
+                .new_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
                 .image(targets.depth.raw)
                 .subresource_range(depth_range),
         ];
@@ -564,7 +580,7 @@ impl Renderer {
             })];
         let depth_attachment = vk::RenderingAttachmentInfo::default()
             .image_view(targets.depth.view)
-            .image_layout(vk::ImageLayout::DEPTH_ATTACHMENT_OPTIMAL)
+            .image_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
             .load_op(vk::AttachmentLoadOp::CLEAR)
             .store_op(vk::AttachmentStoreOp::DONT_CARE)
             .clear_value(vk::ClearValue {
@@ -714,7 +730,18 @@ impl Renderer {
     }
 
     /// Submits the command buffer and waits for it; returns the host time that took, in ns.
-    fn submit_and_wait(&self) -> Result<f64> {
+    fn submit_and_wait(&mut self) -> Result<f64> {
+        let result = self.submit_and_wait_once();
+        if result.is_err() {
+            // The command buffer may still be pending and the fence signaled: nothing recorded
+            // later could be trusted, so wait for the device and refuse further frames.
+            let _ = self.device.wait_idle();
+            self.lost = true;
+        }
+        result
+    }
+
+    fn submit_and_wait_once(&self) -> Result<f64> {
         let vkd = &self.device.raw;
         let buffers = [self.command_buffer];
         let submit = vk::SubmitInfo::default().command_buffers(&buffers);

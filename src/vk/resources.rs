@@ -66,6 +66,11 @@ impl Buffer {
         self.size
     }
 
+    /// The device that owns this buffer.
+    pub(crate) fn device(&self) -> &Arc<Device> {
+        &self.device
+    }
+
     /// Copies `bytes` in at `offset`. Panics only on a caller's bug (out-of-bounds write).
     pub fn write(&mut self, offset: u64, bytes: &[u8]) {
         assert!(

@@ -156,6 +156,15 @@ macro_rules! scenes {
 
 scenes! {
     lighting_off_passes_the_vertex_color => sheet_scene(GlState::new(), false);
+    lighting_off_clamps_out_of_range_colors => {
+        // Section 2.14.6: clamped at the vertex whether lighting is on or not, so Gouraud
+        // interpolates clamped colors.
+        let mut scene = sheet_scene(GlState::new(), false);
+        scene.mesh = grid(6, |_, _| Vec3::Z, |x, y| Vec4::new(3.0 * x, -2.0 * y, 1.5, 2.0 - x));
+        scene
+    };
+    spot_cutoff_90_exponent_0_lights_behind_the_light => spot_90(0.0);
+    spot_cutoff_90_exponent_1 => spot_90(1.0);
     gl_defaults_with_light_0 => sphere_scene(lit_state());
     emission_only => sphere_scene(with(dark(), |gl| {
         gl.light_model(LightModelParam::Ambient(Vec4::ZERO))?;
@@ -319,6 +328,23 @@ scenes! {
             gl,
         }
     };
+}
+
+/// A spotlight at the sphere's center aiming at +x with a 90° cone: with the spec's
+/// `P_pliV ⊙ ŝ_dli ≥ cos(90°) = 0`, points behind it pass the test with (0)^s_rli.
+fn spot_90(exponent: f32) -> Scene {
+    let mut scene = sphere_scene(with(dark(), |gl| {
+        gl.load_modelview(Mat4::from_translation(Vec3::new(0.0, 0.0, -3.0)))?;
+        gl.enable(Cap::Light(0))?;
+        gl.light(0, LightParam::Position(Vec4::new(0.0, 0.0, 0.0, 1.0)))?;
+        gl.light(0, LightParam::SpotDirection(Vec3::new(1.0, 0.0, 0.0)))?;
+        gl.light(0, LightParam::SpotCutoff(90.0))?;
+        gl.light(0, LightParam::SpotExponent(exponent))?;
+        gl.light(0, LightParam::Ambient(rgba(0.3, 0.5, 0.7, 1.0)))?;
+        gl.load_modelview(Mat4::IDENTITY)
+    }));
+    scene.gl.lighting.normalize = true;
+    scene
 }
 
 fn specular_scene() -> GlState {

@@ -284,3 +284,21 @@ fn a_point_exactly_on_the_cone_edge_is_inside() {
     let lit = light(&gl.lighting, V, N, &gl.lighting.front);
     assert_eq!(lit.lights[0].spot_i, 1.0);
 }
+
+/// cos(90°) is exactly 0, so a 90° cone holds every direction: behind the light,
+/// P_pliV ⊙ ŝ_dli = 0 ≥ 0 and spot_i = 0^s_rli (1 for exponent 0, 0 otherwise).
+#[test]
+fn a_90_degree_cone_follows_the_formula_behind_the_light() {
+    let mut gl = lit_gl();
+    gl.light(0, LightParam::Position(Vec4::new(0.0, 0.0, 0.0, 1.0)))
+        .unwrap();
+    gl.light(0, LightParam::SpotDirection(Vec3::new(0.0, 0.0, 1.0)))
+        .unwrap();
+    gl.light(0, LightParam::SpotCutoff(90.0)).unwrap();
+    assert_eq!(reference::cos_cutoff(90.0), 0.0);
+    let behind = light(&gl.lighting, V, N, &gl.lighting.front);
+    assert_eq!(behind.lights[0].spot_i, 1.0, "0^0 = 1");
+    gl.light(0, LightParam::SpotExponent(1.0)).unwrap();
+    let behind = light(&gl.lighting, V, N, &gl.lighting.front);
+    assert_eq!(behind.lights[0].spot_i, 0.0, "0^1 = 0");
+}

@@ -270,3 +270,23 @@ fn measured_frames_report_timestamps_and_pipeline_statistics() {
     drop(mesh);
     finish(r);
 }
+
+#[test]
+fn a_mesh_from_another_renderer_is_an_error() {
+    let mut a = renderer();
+    let b = renderer();
+    let foreign = b.upload(&quad(-1.0, -1.0, 1.0, 1.0, 0.0, Vec4::ONE)).unwrap();
+    let mut frame = Frame::new(8, 8);
+    frame.draws.push(Draw {
+        mesh: &foreign,
+        modelview: Mat4::IDENTITY,
+        projection: Mat4::IDENTITY,
+        state: unlit(),
+    });
+    let err = a.render(&frame).expect_err("a foreign mesh is refused");
+    assert!(err.to_string().contains("another renderer"), "{err}");
+    drop(frame);
+    drop(foreign);
+    finish(a);
+    finish(b);
+}

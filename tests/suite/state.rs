@@ -281,3 +281,34 @@ fn shade_model_and_lighting_mode() {
         .unwrap_err()
         .contains("vertex, fragment or flat"));
 }
+
+#[test]
+fn states_that_would_light_with_nan_are_rejected_at_draw_time() {
+    let mut gl = GlState::new();
+    gl.enable(Cap::Lighting).unwrap();
+    let flat = Mat4::from_scale(Vec3::new(1.0, 0.0, 1.0));
+    let err = DrawBlock::new(&gl.lighting, flat, Mat4::IDENTITY)
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("modelview") && err.contains("= 0"), "{err}");
+    // Unlit drawing needs no normal matrix: a flattening modelview is fine.
+    gl.disable(Cap::Lighting).unwrap();
+    DrawBlock::new(&gl.lighting, flat, Mat4::IDENTITY).unwrap();
+
+    gl.enable(Cap::Lighting).unwrap();
+    gl.enable(Cap::Light(2)).unwrap();
+    gl.light(2, LightParam::Position(Vec4::new(0.0, 1.0, 0.0, 1.0)))
+        .unwrap();
+    gl.light(2, LightParam::ConstantAttenuation(0.0)).unwrap();
+    let err = DrawBlock::new(&gl.lighting, Mat4::IDENTITY, Mat4::IDENTITY)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("GL_CONSTANT_ATTENUATION + GL_LINEAR_ATTENUATION") && err.contains("> 0"),
+        "{err}"
+    );
+    // Directional lights are never attenuated: all-zero factors are harmless there.
+    gl.light(2, LightParam::Position(Vec4::new(0.0, 1.0, 0.0, 0.0)))
+        .unwrap();
+    DrawBlock::new(&gl.lighting, Mat4::IDENTITY, Mat4::IDENTITY).unwrap();
+}
