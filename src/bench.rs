@@ -1832,11 +1832,12 @@ mod plots {
                     .map_err(|e| plot_err(&e))?;
                 draw(c, x_label, lines, markers, (y0, y1)).map_err(|e| plot_err(&e))?;
             } else {
+                // A linear x (light counts) gets a linear time axis from zero.
                 let pad = ((x1 - x0) * 0.05).max(0.5);
                 let c = builder(&root, title)
-                    .build_cartesian_2d((x0 - pad)..(x1 + pad), (y0..y1).log_scale())
+                    .build_cartesian_2d((x0 - pad)..(x1 + pad), 0.0..y1)
                     .map_err(|e| plot_err(&e))?;
-                draw(c, x_label, lines, markers, (y0, y1)).map_err(|e| plot_err(&e))?;
+                draw(c, x_label, lines, markers, (0.0, y1)).map_err(|e| plot_err(&e))?;
             }
             root.present().map_err(|e| plot_err(&e))?;
         }
