@@ -1768,6 +1768,25 @@ mod plots {
         points: Vec<(f64, f64, f64, f64)>,
     }
 
+    /// The lines of one sweep against `x`: ffvk's specialized modes, then GL's.
+    fn mode_lines(res: &[BenchResult], group: Group, x: fn(&Point) -> f64) -> Vec<Line> {
+        let mut lines = Vec::new();
+        for mode in BenchMode::ALL {
+            let ser = series(res, is(group, Engine::Ffvk, mode, Variant::Specialized), x);
+            lines.extend(line(format!("ffvk {}", mode.name()), color(mode), false, &ser));
+        }
+        for mode in [BenchMode::Vertex, BenchMode::Flat, BenchMode::Unlit] {
+            let ser = series(res, is(group, Engine::Gl, mode, Variant::FixedFunction), x);
+            let name = if mode == BenchMode::Vertex {
+                "smooth"
+            } else {
+                mode.name()
+            };
+            lines.extend(line(format!("GL {name} (OSMesa)"), color(mode), true, &ser));
+        }
+        lines
+    }
+
     fn line(label: String, color: RGBColor, dashed: bool, s: &[(f64, &BenchResult)]) -> Option<Line> {
         let points: Vec<(f64, f64, f64, f64)> = s
             .iter()
@@ -1937,26 +1956,7 @@ mod plots {
         let mut written = Vec::new();
 
         // Time against vertices, per mode (+ GL).
-        let mut lines = Vec::new();
-        for mode in BenchMode::ALL {
-            let ser = series(res, is(Group::Density, Engine::Ffvk, mode, spec), |p| {
-                p.vertices as f64
-            });
-            lines.extend(line(format!("ffvk {}", mode.name()), color(mode), false, &ser));
-        }
-        for mode in [BenchMode::Vertex, BenchMode::Flat, BenchMode::Unlit] {
-            let ser = series(
-                res,
-                is(Group::Density, Engine::Gl, mode, Variant::FixedFunction),
-                |p| p.vertices as f64,
-            );
-            let name = if mode == BenchMode::Vertex {
-                "smooth"
-            } else {
-                mode.name()
-            };
-            lines.extend(line(format!("GL {name} (OSMesa)"), color(mode), true, &ser));
-        }
+        let lines = mode_lines(res, Group::Density, |p| p.vertices as f64);
         if !lines.is_empty() {
             let markers: Vec<(f64, String)> = s
                 .crossover_vertices
@@ -1979,27 +1979,8 @@ mod plots {
             written.push(path);
         }
 
-        // Time against pixels, per mode.
-        let mut lines = Vec::new();
-        for mode in BenchMode::ALL {
-            let ser = series(res, is(Group::Size, Engine::Ffvk, mode, spec), |p| {
-                p.pixels as f64
-            });
-            lines.extend(line(format!("ffvk {}", mode.name()), color(mode), false, &ser));
-        }
-        for mode in [BenchMode::Vertex, BenchMode::Flat, BenchMode::Unlit] {
-            let ser = series(
-                res,
-                is(Group::Size, Engine::Gl, mode, Variant::FixedFunction),
-                |p| p.pixels as f64,
-            );
-            let name = if mode == BenchMode::Vertex {
-                "smooth"
-            } else {
-                mode.name()
-            };
-            lines.extend(line(format!("GL {name} (OSMesa)"), color(mode), true, &ser));
-        }
+        // Time against pixels, per mode (+ GL).
+        let lines = mode_lines(res, Group::Size, |p| p.pixels as f64);
         if !lines.is_empty() {
             let markers: Vec<(f64, String)> = s
                 .crossover_pixels
