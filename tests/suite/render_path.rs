@@ -27,12 +27,7 @@ fn top_of_the_view_is_the_top_row_and_x_points_right() {
     let red = Vec4::new(1.0, 0.0, 0.0, 1.0);
     let mesh = r.upload(&quad(-1.0, 0.0, 0.0, 1.0, 0.0, red)).unwrap();
     let mut frame = Frame::new(64, 64);
-    frame.draws.push(Draw {
-        mesh: &mesh,
-        modelview: Mat4::IDENTITY,
-        projection: Mat4::IDENTITY,
-        state: unlit(),
-    });
+    frame.draws.push(ndc_draw(&mesh));
     let image = r.render(&frame).unwrap();
     let black = DVec4::new(0.0, 0.0, 0.0, 1.0);
     assert_pixel(
@@ -112,15 +107,9 @@ fn depth_test_keeps_the_nearest_surface() {
     let far = r
         .upload(&quad(-1.0, -1.0, 1.0, 1.0, 0.5, Vec4::new(1.0, 0.0, 1.0, 1.0)))
         .unwrap();
-    let draw = |mesh| Draw {
-        mesh,
-        modelview: Mat4::IDENTITY,
-        projection: Mat4::IDENTITY,
-        state: unlit(),
-    };
     // GL's identity projection keeps z: -0.5 is nearer than 0.5. Draw near first.
     let mut frame = Frame::new(16, 16);
-    frame.draws = vec![draw(&near), draw(&far)];
+    frame.draws = vec![ndc_draw(&near), ndc_draw(&far)];
     let image = r.render(&frame).unwrap();
     assert_pixel(
         &image,
@@ -156,12 +145,7 @@ fn one_renderer_draws_many_frames_and_sizes() {
         frame.clear_color = Vec4::new(0.0, g, 0.0, 1.0);
         // A growing number of draws exercises the uniform buffer's growth.
         for _ in 0..=i {
-            frame.draws.push(Draw {
-                mesh: &mesh,
-                modelview: Mat4::IDENTITY,
-                projection: Mat4::IDENTITY,
-                state: unlit(),
-            });
+            frame.draws.push(ndc_draw(&mesh));
         }
         let image = r.render(&frame).unwrap();
         assert_eq!(image.dimensions(), (size, size + 3));
@@ -238,12 +222,7 @@ fn measured_frames_report_timestamps_and_pipeline_statistics() {
         .upload(&quad(-1.0, 0.0, 0.0, 1.0, 0.0, Vec4::new(1.0, 0.0, 0.0, 1.0)))
         .unwrap();
     let mut frame = Frame::new(64, 64);
-    frame.draws.push(Draw {
-        mesh: &mesh,
-        modelview: Mat4::IDENTITY,
-        projection: Mat4::IDENTITY,
-        state: unlit(),
-    });
+    frame.draws.push(ndc_draw(&mesh));
     let plain = r.render(&frame).unwrap();
     let (image, stats) = r.render_measured(&frame).unwrap();
     assert_eq!(plain, image, "measuring does not change the image");
@@ -277,12 +256,7 @@ fn a_mesh_from_another_renderer_is_an_error() {
     let b = renderer();
     let foreign = b.upload(&quad(-1.0, -1.0, 1.0, 1.0, 0.0, Vec4::ONE)).unwrap();
     let mut frame = Frame::new(8, 8);
-    frame.draws.push(Draw {
-        mesh: &foreign,
-        modelview: Mat4::IDENTITY,
-        projection: Mat4::IDENTITY,
-        state: unlit(),
-    });
+    frame.draws.push(ndc_draw(&foreign));
     let err = a.render(&frame).expect_err("a foreign mesh is refused");
     assert!(err.to_string().contains("another renderer"), "{err}");
     drop(frame);

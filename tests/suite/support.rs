@@ -150,3 +150,14 @@ pub fn with(mut gl: GlState, f: impl FnOnce(&mut GlState) -> Result<(), StateErr
     f(&mut gl).unwrap();
     gl
 }
+
+/// An unlit draw with identity matrices: object coordinates are GL's normalized device
+/// coordinates.
+pub fn ndc_draw(mesh: &ffvk::Mesh) -> ffvk::Draw<'_> {
+    ffvk::Draw {
+        mesh,
+        modelview: Mat4::IDENTITY,
+        projection: Mat4::IDENTITY,
+        state: unlit(),
+    }
+}
