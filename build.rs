@@ -1,98 +1,157 @@
-//! Compiles every shader stage under `glsl/` to SPIR-V with shaderc (glslang).
+//! Compiles the shader variants under `glsl/` to SPIR-V with shaderc's compiler, `glslc`
+//! (glslang inside; Debian package `glslc`).
 //!
-//! Stage files are `*.vert` and `*.frag`; `*.glsl` files are only included. `#include "x"`
-//! resolves relative to the including file. SPIR-V lands in `OUT_DIR/<name>.spv`, and
-//! `OUT_DIR/shaders.rs` lists them for `include_bytes!`.
+//! A variant is a lighting mode's pair of stage sources compiled with its own macro
+//! definitions (the table below), so no variant needs a file of its own. `#include "x"`
+//! resolves relative to the including file. SPIR-V lands in `OUT_DIR/<variant>.<stage>.spv`,
+//! and `OUT_DIR/shaders.rs` lists every variant for `include_bytes!`.
+//!
+//! glslc runs as a program rather than through shaderc's Rust bindings: Debian's
+//! `libshaderc.so.1` is underlinked, and the link override that worked around it lived in this
+//! repository's `.cargo/config.toml`, which Cargo ignores when ffvk is another crate's
+//! dependency. A program needs no linking, so ffvk builds the same from any workspace.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
+use std::process::Command;
 use std::{env, fs};
+
+/// One pipeline variant: its name (a lighting mode, optionally with a suffix), the stage
+/// sources and the macros both stages are compiled with.
+struct Variant {
+    name: &'static str,
+    vertex: &'static str,
+    fragment: &'static str,
+    defines: &'static [(&'static str, &'static str)],
+    doc: &'static str,
+}
+
+/// `INTERP`: the interpolation qualifier of the per-vertex colors. `ONE_COLOR`: only the front
+/// primary color passes between the stages (specialized one-sided, single-color states).
+const VARIANTS: &[Variant] = &[
+    Variant {
+        name: "vertex",
+        vertex: "vertex.vert",
+        fragment: "vertex.frag",
+        defines: &[("INTERP", "smooth")],
+        doc: "Lit at each vertex; four colors interpolated (GL's SMOOTH shading).",
+    },
+    Variant {
+        name: "vertex_one_color",
+        vertex: "vertex.vert",
+        fragment: "vertex.frag",
+        defines: &[("INTERP", "smooth"), ("ONE_COLOR", "1")],
+        doc: "`vertex` with only the front primary color between the stages.",
+    },
+    Variant {
+        name: "flat",
+        vertex: "vertex.vert",
+        fragment: "vertex.frag",
+        defines: &[("INTERP", "flat")],
+        doc: "Lit at each vertex; the provoking (last) vertex's colors (GL's FLAT shading).",
+    },
+    Variant {
+        name: "flat_one_color",
+        vertex: "vertex.vert",
+        fragment: "vertex.frag",
+        defines: &[("INTERP", "flat"), ("ONE_COLOR", "1")],
+        doc: "`flat` with only the front primary color between the stages.",
+    },
+    Variant {
+        name: "fragment",
+        vertex: "fragment.vert",
+        fragment: "fragment.frag",
+        defines: &[],
+        doc: "Eye-space position and normal interpolated; lit at each fragment.",
+    },
+];
 
 fn main() {
     let manifest = PathBuf::from(env::var("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR"));
     let glsl_dir = manifest.join("glsl");
     let out_dir = PathBuf::from(env::var("OUT_DIR").expect("cargo sets OUT_DIR"));
+    // A directory is scanned recursively: any change to a source or an include reruns this.
     println!("cargo:rerun-if-changed={}", glsl_dir.display());
+    println!("cargo:rerun-if-env-changed=GLSLC");
+    let glslc = env::var_os("GLSLC").map_or_else(|| PathBuf::from("glslc"), PathBuf::from);
 
-    let mut sources: Vec<PathBuf> = match fs::read_dir(&glsl_dir) {
-        Ok(dir) => dir.filter_map(|e| e.ok().map(|e| e.path())).collect(),
-        Err(e) => fail(&format!(
-            "{}: cannot read the shader directory: {e}",
-            glsl_dir.display()
-        )),
-    };
-    sources.sort();
-
-    let compiler = shaderc::Compiler::new().unwrap_or_else(|e| fail(&format!("shaderc: {e}")));
-    let mut table = String::from(
-        "/// Every compiled stage: (file name, SPIR-V bytes).\npub const SHADERS: &[(&str, &[u8])] = &[\n",
-    );
+    let mut table = String::new();
     let mut errors = Vec::new();
-
-    for path in &sources {
-        println!("cargo:rerun-if-changed={}", path.display());
-        let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("");
-        let kind = match ext {
-            "vert" => shaderc::ShaderKind::Vertex,
-            "frag" => shaderc::ShaderKind::Fragment,
-            _ => continue,
-        };
-        let name = path
-            .file_name()
-            .and_then(|n| n.to_str())
-            .unwrap_or_default()
-            .to_owned();
-        let source = match fs::read_to_string(path) {
-            Ok(s) => s,
-            Err(e) => fail(&format!("{}: {e}", path.display())),
-        };
-        let mut options =
-            shaderc::CompileOptions::new().unwrap_or_else(|e| fail(&format!("shaderc options: {e}")));
-        options.set_target_env(shaderc::TargetEnv::Vulkan, shaderc::EnvVersion::Vulkan1_3 as u32);
-        // No spirv-opt: Debian's SPIRV-Tools 2023.1 rejects glslang 12's copies of std140
-        // structs into locals ("OpStore Pointer type does not match"). The driver optimizes
-        // the SPIR-V itself (Mesa's NIR), so nothing is lost at run time.
-        options.set_optimization_level(shaderc::OptimizationLevel::Zero);
-        options.set_warnings_as_errors();
-        options.set_include_callback(|requested, _ty, requester, _depth| include(requested, requester));
-
-        match compiler.compile_into_spirv(&source, kind, &path.to_string_lossy(), "main", Some(&options)) {
-            Ok(artifact) => {
-                let spv = out_dir.join(format!("{name}.spv"));
-                if let Err(e) = fs::write(&spv, artifact.as_binary_u8()) {
-                    fail(&format!("{}: {e}", spv.display()));
-                }
-                writeln!(
-                    table,
-                    "    ({name:?}, include_bytes!({:?})),",
-                    spv.display().to_string()
-                )
-                .unwrap();
+    for variant in VARIANTS {
+        let mut stages = Vec::new();
+        for (source, stage) in [(variant.vertex, "vert"), (variant.fragment, "frag")] {
+            let spv = out_dir.join(format!("{}.{stage}.spv", variant.name));
+            match compile(&glslc, &glsl_dir.join(source), stage, variant.defines, &spv) {
+                Ok(()) => stages.push(spv),
+                Err(e) => errors.push(format!("variant {}: {e}", variant.name)),
             }
-            Err(e) => errors.push(e.to_string()),
+        }
+        if let [vertex, fragment] = stages.as_slice() {
+            writeln!(
+                table,
+                "    ShaderVariant {{\n        name: {:?},\n        doc: {:?},\n        \
+                 vertex_source: {:?},\n        fragment_source: {:?},\n        \
+                 defines: &{:?},\n        \
+                 vertex: include_bytes!({:?}),\n        fragment: include_bytes!({:?}),\n    }},",
+                variant.name,
+                variant.doc,
+                variant.vertex,
+                variant.fragment,
+                variant.defines,
+                vertex.display().to_string(),
+                fragment.display().to_string(),
+            )
+            .expect("writing to a String cannot fail");
         }
     }
     if !errors.is_empty() {
-        // glslang already formats its messages as `file:line: error: ...`.
         fail(&errors.join("\n"));
     }
-    table.push_str("];\n");
-    if let Err(e) = fs::write(out_dir.join("shaders.rs"), table) {
-        fail(&format!("shaders.rs: {e}"));
+    let generated = format!(
+        "/// Every compiled variant, in build order.\npub const VARIANTS: &[ShaderVariant] = &[\n{table}];\n"
+    );
+    if let Err(e) = fs::write(out_dir.join("shaders.rs"), generated) {
+        fail(&format!("{}: {e}", out_dir.join("shaders.rs").display()));
     }
 }
 
-/// Resolves `#include "requested"` relative to the directory of the including file.
-fn include(requested: &str, requester: &str) -> Result<shaderc::ResolvedInclude, String> {
-    let base = Path::new(requester).parent().unwrap_or(Path::new("."));
-    let path = base.join(requested);
-    println!("cargo:rerun-if-changed={}", path.display());
-    match fs::read_to_string(&path) {
-        Ok(content) => Ok(shaderc::ResolvedInclude {
-            resolved_name: path.to_string_lossy().into_owned(),
-            content,
-        }),
-        Err(e) => Err(format!("{}: {e}", path.display())),
+/// Runs glslc on one stage source. Its messages are already `file:line: error: text`.
+fn compile(
+    glslc: &Path,
+    source: &Path,
+    stage: &str,
+    defines: &[(&str, &str)],
+    spv: &Path,
+) -> Result<(), String> {
+    let mut command = Command::new(glslc);
+    command
+        .arg(format!("-fshader-stage={stage}"))
+        .arg("--target-env=vulkan1.3")
+        // No spirv-opt: Debian's SPIRV-Tools 2023.1 rejects glslang 12's copies of std140
+        // structs into locals ("OpStore Pointer type does not match"). The driver optimizes
+        // the SPIR-V itself (Mesa's NIR), so nothing is lost at run time.
+        .arg("-O0")
+        .arg("-Werror");
+    for (name, value) in defines {
+        command.arg(format!("-D{name}={value}"));
+    }
+    command.arg("-o").arg(spv).arg(source);
+    let output = command.output().map_err(|e| {
+        format!(
+            "cannot run {}: {e}; install the Debian package glslc (shaderc's compiler) or set GLSLC",
+            glslc.display()
+        )
+    })?;
+    if output.status.success() {
+        Ok(())
+    } else {
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        Err(format!(
+            "{} ({}): {}",
+            source.display(),
+            output.status,
+            stderr.trim_end()
+        ))
     }
 }
 

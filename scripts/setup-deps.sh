@@ -6,11 +6,7 @@ set -euo pipefail
 pkgs=(
   mesa-vulkan-drivers   # lavapipe, the CPU Vulkan driver
   libvulkan1            # the Vulkan loader
-  libshaderc-dev        # shaderc static libraries used by build.rs
-  glslang-dev           # glslang static libraries shaderc needs
-  spirv-tools           # SPIRV-Tools static libraries shaderc needs
-  pkg-config
-  g++                   # libstdc++ for the static shaderc link
+  glslc                 # shaderc's GLSL compiler (glslang), run by build.rs
   fonts-dejavu-core     # labels on the demo's contact sheet
 )
 if [[ "${1:-}" == "--test" ]]; then

@@ -26,14 +26,15 @@ pub fn one_color(key: SpecKey) -> bool {
             || (key.get(SpecConstant::TwoSide) == 0 && key.get(SpecConstant::SeparateSpecular) == 0))
 }
 
-/// The stage files of a mode's pipeline specialized by `key`.
-pub fn stage_files(mode: LightingMode, key: SpecKey) -> (&'static str, &'static str) {
+/// The name of the shader variant a mode's pipeline specialized by `key` uses: the mode's
+/// name, with `_one_color` when [`one_color`] holds for a per-vertex mode.
+pub fn variant_name(mode: LightingMode, key: SpecKey) -> &'static str {
     match (mode, one_color(key)) {
-        (LightingMode::Vertex, false) => ("gouraud.vert", "gouraud.frag"),
-        (LightingMode::Vertex, true) => ("gouraud_one_color.vert", "gouraud_one_color.frag"),
-        (LightingMode::Fragment, _) => ("phong.vert", "phong.frag"),
-        (LightingMode::Flat, false) => ("flat.vert", "flat.frag"),
-        (LightingMode::Flat, true) => ("flat_one_color.vert", "flat_one_color.frag"),
+        (LightingMode::Vertex, false) => "vertex",
+        (LightingMode::Vertex, true) => "vertex_one_color",
+        (LightingMode::Fragment, _) => "fragment",
+        (LightingMode::Flat, false) => "flat",
+        (LightingMode::Flat, true) => "flat_one_color",
     }
 }
 
@@ -44,9 +45,7 @@ struct ShaderModule<'a> {
 }
 
 impl<'a> ShaderModule<'a> {
-    fn new(device: &'a Device, name: &str) -> Result<Self> {
-        let bytes =
-            shaders::spirv(name).ok_or_else(|| Error::MissingFeature(format!("embedded shader {name}")))?;
+    fn new(device: &'a Device, name: &str, bytes: &[u8]) -> Result<Self> {
         let words = ash::util::read_spv(&mut std::io::Cursor::new(bytes))
             .map_err(|e| Error::MissingFeature(format!("valid SPIR-V in {name}: {e}")))?;
         let info = vk::ShaderModuleCreateInfo::default().code(&words);
@@ -170,9 +169,11 @@ impl Pipelines {
 
     fn create(&self, mode: LightingMode, key: SpecKey) -> Result<vk::Pipeline> {
         let device = &*self.device;
-        let (vert_name, frag_name) = stage_files(mode, key);
-        let vert = ShaderModule::new(device, vert_name)?;
-        let frag = ShaderModule::new(device, frag_name)?;
+        let name = variant_name(mode, key);
+        let variant = shaders::variant(name)
+            .ok_or_else(|| Error::MissingFeature(format!("the embedded shader variant {name}")))?;
+        let vert = ShaderModule::new(device, name, variant.vertex)?;
+        let frag = ShaderModule::new(device, name, variant.fragment)?;
         // Every constant is an `int` at offset 4 * constant_id of the key; a stage that does
         // not use a constant ignores its entry.
         let entries: [vk::SpecializationMapEntry; SPEC_CONSTANT_COUNT] =

@@ -103,6 +103,17 @@ impl Reflection {
     }
 }
 
+/// Every compiled stage of every variant, named `<variant>.<vert|frag>`.
+fn stages() -> Vec<(String, &'static [u8])> {
+    let mut stages = Vec::new();
+    for v in ffvk::shaders::VARIANTS {
+        stages.push((format!("{}.vert", v.name), v.vertex));
+        stages.push((format!("{}.frag", v.name), v.fragment));
+    }
+    assert_eq!(stages.len(), 10, "five variants of two stages");
+    stages
+}
+
 macro_rules! rust_offsets {
     ($ty:ty: $($field:ident),*) => {
         vec![$((stringify!($field).to_string(), offset_of!($ty, $field) as u32)),*]
@@ -111,7 +122,7 @@ macro_rules! rust_offsets {
 
 #[test]
 fn draw_block_matches_the_glsl_in_every_stage() {
-    for (stage, spirv) in ffvk::shaders::SHADERS {
+    for (stage, spirv) in stages() {
         let r = reflect(spirv);
         let draw = r.struct_id("Draw");
         let want = rust_offsets!(DrawBlock: modelview, projection, normal_matrix, front, back, a_cs,
@@ -150,16 +161,16 @@ fn draw_block_matches_the_glsl_in_every_stage() {
 
 /// The stages that evaluate the lighting equation, and so read every specialization constant.
 const LIGHTING_STAGES: [&str; 5] = [
-    "gouraud.vert",
-    "gouraud_one_color.vert",
+    "vertex.vert",
+    "vertex_one_color.vert",
     "flat.vert",
     "flat_one_color.vert",
-    "phong.frag",
+    "fragment.frag",
 ];
 
 #[test]
 fn specialization_constant_ids_match_the_rust_side() {
-    for (stage, spirv) in ffvk::shaders::SHADERS {
+    for (stage, spirv) in stages() {
         let r = reflect(spirv);
         let mut found = Vec::new();
         for (&id, &spec_id) in &r.spec_ids {
@@ -177,7 +188,7 @@ fn specialization_constant_ids_match_the_rust_side() {
             );
             found.push(constant);
         }
-        if LIGHTING_STAGES.contains(stage) {
+        if LIGHTING_STAGES.contains(&stage.as_str()) {
             for c in SpecConstant::ALL {
                 assert!(found.contains(&c), "{stage} does not declare {}", c.glsl_name());
             }

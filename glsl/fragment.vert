@@ -1,5 +1,5 @@
 #version 450
-// Per-fragment (Phong) mode, vertex stage: passes the eye-space position, the normal's
+// Vertex stage of the `fragment` mode: passes the eye-space position, the normal's
 // direction and length, and the current color.
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;

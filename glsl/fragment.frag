@@ -1,6 +1,6 @@
 #version 450
 #extension GL_EXT_control_flow_attributes : require  // [[unroll]] in lighting.glsl
-// Per-fragment (Phong) mode, fragment stage: the equation at each fragment. The normal is
+// Fragment stage of the `fragment` mode: the equation at each fragment. The normal is
 // the interpolated direction renormalized, times the interpolated length, so that an
 // unnormalized normal (scaled modelview, no NORMALIZE) still shows as in GL.
 layout(location = 0) in vec4 eye_position;

@@ -1,5 +1,6 @@
+#version 450
 #extension GL_EXT_control_flow_attributes : require  // [[unroll]] in lighting.glsl
-// Fragment stage of the per-vertex modes: picks the face's interpolated (or provoking)
+// Fragment stage of the `vertex` and `flat` modes: picks the face's interpolated (or provoking)
 // colors by window-space winding and sums them. With ONE_COLOR (pipelines specialized for
 // one-sided, single-color or unlit states, where the back colors equal the front ones and
 // the secondary color is (0, 0, 0, 1)) only the front primary color comes in.
