@@ -1,9 +1,10 @@
+#version 450
 #extension GL_EXT_control_flow_attributes : require  // [[unroll]] in lighting.glsl
-// Vertex stage of the per-vertex modes (Gouraud and flat): lights each vertex, front and
-// back, with both colors clamped here. INTERP is `smooth` or `flat`. With ONE_COLOR (see
-// per_vertex.frag.glsl) only the front primary color leaves the stage; the others are
-// computed as always and dropped, since they cannot differ from what the fragment stage
-// assumes in the states such a pipeline draws.
+// Vertex stage of the `vertex` and `flat` modes: lights each vertex, front and back, with
+// both colors clamped here. build.rs defines INTERP (`smooth` or `flat`) and, for the
+// *_one_color variants, ONE_COLOR (see vertex.frag): then only the front primary color
+// leaves the stage; the others are computed as always and dropped, since they cannot differ
+// from what the fragment stage assumes in the states such a pipeline draws.
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) in vec4 in_color;
