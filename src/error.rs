@@ -1,6 +1,5 @@
-//! ffvk's error type. Library code returns these; only the binary decides how to print them.
-
-use std::path::PathBuf;
+//! The core's error type. Library code returns these; only the binary decides how to print
+//! them. Errors of the optional layers (images, scenes, tools) live with them and wrap this one.
 
 use ash::vk;
 
@@ -37,36 +36,32 @@ pub enum Error {
     Validation(Vec<String>),
 
     #[error("invalid mesh: {0}")]
-    Mesh(String),
+    Mesh(#[from] MeshError),
 
     #[error(transparent)]
     State(#[from] StateError),
-
-    /// Boxed: scene errors carry glTF errors, which would make every `Result` large.
-    #[error(transparent)]
-    Scene(Box<crate::scene::SceneError>),
-
-    #[error("cannot write {path}: {message}")]
-    Output { path: PathBuf, message: String },
-
-    #[error("{0}")]
-    Mismatch(String),
-
-    #[error("cannot read {path}: {message}")]
-    Input { path: PathBuf, message: String },
-
-    #[error("benchmark: {0}")]
-    Bench(String),
-
-    /// Mesa's OpenGL through OSMesa (the `osmesa` feature's reference renderer).
-    #[error("OpenGL (OSMesa): {0}")]
-    Gl(String),
 }
 
-impl From<crate::scene::SceneError> for Error {
-    fn from(e: crate::scene::SceneError) -> Self {
-        Error::Scene(Box::new(e))
-    }
+/// Why a mesh cannot be drawn or made.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum MeshError {
+    #[error("{count} indices is not a whole number of triangles: expected a multiple of 3")]
+    NotTriangles { count: usize },
+
+    #[error("index {at} is {index}: expected a vertex index below {vertex_count} (the vertex count)")]
+    IndexOutOfRange {
+        at: usize,
+        index: u32,
+        vertex_count: usize,
+    },
+
+    #[error(
+        "draw {draw}: the mesh was uploaded by another renderer: expected a mesh from this renderer's upload"
+    )]
+    ForeignMesh { draw: usize },
+
+    #[error("teapot tessellation level {level} is out of range: expected 1..={max}")]
+    TeapotLevel { level: u32, max: u32 },
 }
 
 /// Result with ffvk's [`Error`].

@@ -1,31 +1,31 @@
 //! ffvk: the OpenGL 2.1 fixed-function lighting equation, verbatim, on Vulkan.
 //!
-//! Modules follow the data: GL state ([`gl`]), its GPU layout ([`layout`]), shaders and
-//! pipelines ([`shaders`], [`pipeline`]), the render path ([`vk`], [`renderer`]), and the
-//! CPU reference of the same equation ([`reference`]).
+//! The core (always built) follows the data: GL state ([`gl`]) → its GPU layout and the
+//! SPIR-V of the shaders ([`gpu`]) → pipelines and draw recording ([`draw`]) over an owned
+//! Vulkan layer ([`vk`]) → the offscreen renderer ([`renderer`]); beside them the CPU
+//! reference of the same equation ([`reference`]) and host meshes ([`mesh`]). It depends on
+//! ash, glam, bytemuck and thiserror only, never prints, reads arguments or sets environment
+//! variables.
+//!
+//! Features add the rest: `images` (PNG files and image comparison), `scene` (TOML scene files
+//! and glTF), `tools` (what the `ffvk` command runs: bench, demo, explain, regression runs;
+//! on by default) and `osmesa` (Mesa's GL as a reference renderer).
 
-pub mod bench;
-pub mod compare;
-pub mod demo;
+pub mod draw;
 pub mod error;
-pub mod explain;
 pub mod gl;
-#[cfg(feature = "osmesa")]
-pub mod gl_reference;
-pub mod gltf_load;
+pub mod gpu;
+#[cfg(feature = "images")]
 pub mod images;
-pub mod layout;
 pub mod mesh;
-pub mod pipeline;
-pub mod presets;
 pub mod reference;
-pub mod regress;
 pub mod renderer;
+#[cfg(feature = "scene")]
 pub mod scene;
-pub mod shaders;
-pub mod teapot;
+#[cfg(feature = "tools")]
+pub mod tools;
 pub mod vk;
 
+pub use draw::pipeline::Specialize;
 pub use error::{Error, Result};
-pub use pipeline::Specialize;
-pub use renderer::{Draw, Frame, FrameStats, Mesh, PipelineStats, Renderer, RendererOptions};
+pub use renderer::{Draw, Frame, FrameStats, Mesh, PipelineStats, Pixels, Renderer, RendererOptions};

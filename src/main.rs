@@ -4,11 +4,11 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
-use ffvk::compare::{self, Tolerance};
 use ffvk::gl::state::LightingMode;
+use ffvk::images::compare::{self, Tolerance};
 use ffvk::images::save_png;
-use ffvk::regress;
 use ffvk::scene::render_scene;
+use ffvk::tools::regress;
 use ffvk::vk::Validation;
 use ffvk::{Renderer, RendererOptions};
 
@@ -40,7 +40,7 @@ enum Command {
         out: PathBuf,
     },
     /// Benchmark the lighting modes, densities, sizes, lights and pipeline variants.
-    Bench(ffvk::bench::BenchArgs),
+    Bench(ffvk::tools::bench::BenchArgs),
     /// Render scene files (or directories of them) with one device; optionally check each
     /// image against references.
     Render {
@@ -160,7 +160,7 @@ impl ToleranceArgs {
     }
 }
 
-fn run(cli: Cli) -> ffvk::Result<ExitCode> {
+fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
     match &cli.command {
         Command::Info => {
             let renderer = Renderer::new(&options(&cli))?;
@@ -192,8 +192,8 @@ fn run(cli: Cli) -> ffvk::Result<ExitCode> {
             );
             Ok(ExitCode::SUCCESS)
         }
-        Command::Demo { out } => ffvk::demo::run(&options(&cli), out).map(|()| ExitCode::SUCCESS),
-        Command::Bench(args) => ffvk::bench::run(args, &options(&cli)).map(|()| ExitCode::SUCCESS),
+        Command::Demo { out } => ffvk::tools::demo::run(&options(&cli), out).map(|()| ExitCode::SUCCESS),
+        Command::Bench(args) => ffvk::tools::bench::run(args, &options(&cli)).map(|()| ExitCode::SUCCESS),
         Command::Render {
             scenes,
             out,
@@ -263,8 +263,12 @@ fn run(cli: Cli) -> ffvk::Result<ExitCode> {
             let tolerance = tolerance.tolerance();
             let e = compare::load_image(expected)?;
             let a = compare::load_image(actual)?;
-            let c = compare::compare(&e, &a, tolerance.threshold).map_err(|err| {
-                ffvk::Error::Mismatch(format!("{} and {}: {err}", expected.display(), actual.display()))
+            let c = compare::compare(&e, &a, tolerance.threshold).map_err(|source| {
+                ffvk::tools::Error::Compare {
+                    expected: expected.clone(),
+                    actual: actual.clone(),
+                    source,
+                }
             })?;
             println!("{}", c.summary());
             if let Some(path) = diff {
@@ -286,10 +290,10 @@ fn run(cli: Cli) -> ffvk::Result<ExitCode> {
             }
         }
         Command::Teapot { level, out } => {
-            let mesh = ffvk::teapot::teapot(*level).map_err(ffvk::Error::Mesh)?;
-            ffvk::teapot::write_gltf(&mesh, out).map_err(|e| ffvk::Error::Output {
+            let mesh = ffvk::mesh::teapot::teapot(*level)?;
+            ffvk::scene::gltf::write::write_gltf(&mesh, out).map_err(|source| ffvk::tools::Error::Write {
                 path: out.clone(),
-                message: e.to_string(),
+                source,
             })?;
             println!(
                 "wrote {} ({} vertices, {} triangles)",
@@ -308,16 +312,14 @@ fn run(cli: Cli) -> ffvk::Result<ExitCode> {
             let scene = regress::load_scene(scene, *size, &mut |m| eprintln!("{m}"))?;
             let (x, y) = *pixel;
             if x >= scene.width || y >= scene.height {
-                return Err(ffvk::Error::Input {
+                return Err(ffvk::tools::Error::PixelOutside {
                     path: scene.path.clone(),
-                    message: format!(
-                        "--pixel {x},{y} is outside the {}x{} image: expected x < {} and y < {}",
-                        scene.width, scene.height, scene.width, scene.height
-                    ),
+                    pixel: (x, y),
+                    size: (scene.width, scene.height),
                 });
             }
             let mode = lighting.unwrap_or(scene.state.mode);
-            match ffvk::explain::explain(&scene, x, y, mode) {
+            match ffvk::tools::explain::explain(&scene, x, y, mode) {
                 Some(text) => print!("{text}"),
                 None => println!(
                     "pixel ({x}, {y}): no surface; the clear color {} shows",

@@ -1,1 +1,2 @@
+pub mod presets;
 pub mod state;

@@ -3,6 +3,7 @@
 
 pub mod device;
 pub mod instance;
+pub mod objects;
 pub mod resources;
 
 pub use device::{Device, DeviceInfo};

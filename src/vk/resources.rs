@@ -5,14 +5,15 @@ use std::sync::Arc;
 use ash::vk;
 
 use super::device::Device;
+use super::objects::{ImageView, Memory, RawBuffer, RawImage};
 use crate::error::{vk_error, Result};
 
 /// A host-visible, coherent buffer, persistently mapped. ffvk targets CPU Vulkan (lavapipe),
 /// where all memory is host memory, so a staging copy would only add work.
 pub struct Buffer {
-    device: Arc<Device>,
-    pub(crate) raw: vk::Buffer,
-    memory: vk::DeviceMemory,
+    // Field order is drop order: the buffer goes before the memory bound to it (which unmaps).
+    raw: RawBuffer,
+    memory: Memory,
     mapped: *mut u8,
     size: u64,
 }
@@ -25,50 +26,52 @@ unsafe impl Send for Buffer {}
 unsafe impl Sync for Buffer {}
 
 impl Buffer {
+    /// A buffer of `size` bytes (at least 4) for `usage`, mapped for its whole life.
     pub fn new(device: &Arc<Device>, size: u64, usage: vk::BufferUsageFlags) -> Result<Self> {
         let size = size.max(4);
-        let vkd = &device.raw;
         let info = vk::BufferCreateInfo::default()
             .size(size)
             .usage(usage)
             .sharing_mode(vk::SharingMode::EXCLUSIVE);
-        // SAFETY: valid create info on a live device.
-        let raw = unsafe { vkd.create_buffer(&info, None) }.map_err(vk_error("vkCreateBuffer"))?;
-        // The partially built buffer frees what it holds if a later step fails.
-        let mut buffer = Buffer {
-            device: device.clone(),
-            raw,
-            memory: vk::DeviceMemory::null(),
-            mapped: std::ptr::null_mut(),
-            size,
-        };
+        let raw = RawBuffer::new(device, &info)?;
         // SAFETY: raw is a live buffer of this device.
-        let req = unsafe { vkd.get_buffer_memory_requirements(raw) };
+        let req = unsafe { device.raw.get_buffer_memory_requirements(raw.raw()) };
         let type_index = device.memory_type(
             req.memory_type_bits,
             vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT,
         )?;
-        let alloc = vk::MemoryAllocateInfo::default()
-            .allocation_size(req.size)
-            .memory_type_index(type_index);
-        // SAFETY: valid allocate info on a live device.
-        buffer.memory = unsafe { vkd.allocate_memory(&alloc, None) }.map_err(vk_error("vkAllocateMemory"))?;
-        // SAFETY: memory is fresh, large enough per the requirements, and unbound.
-        unsafe { vkd.bind_buffer_memory(raw, buffer.memory, 0) }.map_err(vk_error("vkBindBufferMemory"))?;
-        // SAFETY: host-visible memory, mapped once for its whole lifetime.
-        buffer.mapped =
-            unsafe { vkd.map_memory(buffer.memory, 0, vk::WHOLE_SIZE, vk::MemoryMapFlags::empty()) }
-                .map_err(vk_error("vkMapMemory"))? as *mut u8;
-        Ok(buffer)
+        let memory = Memory::allocate(device, req.size, type_index)?;
+        // SAFETY: the memory is fresh, large enough per the requirements, and the buffer unbound.
+        unsafe { device.raw.bind_buffer_memory(raw.raw(), memory.raw(), 0) }
+            .map_err(vk_error("vkBindBufferMemory"))?;
+        // SAFETY: host-visible memory, mapped once for its whole lifetime (freeing unmaps it).
+        let mapped = unsafe {
+            device
+                .raw
+                .map_memory(memory.raw(), 0, vk::WHOLE_SIZE, vk::MemoryMapFlags::empty())
+        }
+        .map_err(vk_error("vkMapMemory"))? as *mut u8;
+        Ok(Buffer {
+            raw,
+            memory,
+            mapped,
+            size,
+        })
     }
 
+    /// The Vulkan handle.
+    pub fn raw(&self) -> vk::Buffer {
+        self.raw.raw()
+    }
+
+    /// The size in bytes.
     pub fn size(&self) -> u64 {
         self.size
     }
 
     /// The device that owns this buffer.
     pub(crate) fn device(&self) -> &Arc<Device> {
-        &self.device
+        self.memory.device()
     }
 
     /// Copies `bytes` in at `offset`. Panics only on a caller's bug (out-of-bounds write).
@@ -92,27 +95,16 @@ impl Buffer {
     }
 }
 
-impl Drop for Buffer {
-    fn drop(&mut self) {
-        // SAFETY: the renderer waits for its fence before dropping resources a frame used.
-        unsafe {
-            self.device.raw.destroy_buffer(self.raw, None);
-            if self.memory != vk::DeviceMemory::null() {
-                self.device.raw.free_memory(self.memory, None);
-            }
-        }
-    }
-}
-
 /// A 2D image with its own memory and a view.
 pub struct Image {
-    device: Arc<Device>,
-    pub(crate) raw: vk::Image,
-    pub(crate) view: vk::ImageView,
-    memory: vk::DeviceMemory,
+    // Field order is drop order: view, then image, then its memory.
+    view: ImageView,
+    raw: RawImage,
+    _memory: Memory,
 }
 
 impl Image {
+    /// A single-sampled, single-level 2D image of `format` with a view of `aspect`.
     pub fn new(
         device: &Arc<Device>,
         extent: vk::Extent2D,
@@ -120,7 +112,6 @@ impl Image {
         usage: vk::ImageUsageFlags,
         aspect: vk::ImageAspectFlags,
     ) -> Result<Self> {
-        let vkd = &device.raw;
         let info = vk::ImageCreateInfo::default()
             .image_type(vk::ImageType::TYPE_2D)
             .format(format)
@@ -135,26 +126,16 @@ impl Image {
             .tiling(vk::ImageTiling::OPTIMAL)
             .usage(usage)
             .initial_layout(vk::ImageLayout::UNDEFINED);
-        // SAFETY: valid create info on a live device.
-        let raw = unsafe { vkd.create_image(&info, None) }.map_err(vk_error("vkCreateImage"))?;
-        let mut image = Image {
-            device: device.clone(),
-            raw,
-            view: vk::ImageView::null(),
-            memory: vk::DeviceMemory::null(),
-        };
+        let raw = RawImage::new(device, &info)?;
         // SAFETY: raw is a live image of this device.
-        let req = unsafe { vkd.get_image_memory_requirements(raw) };
+        let req = unsafe { device.raw.get_image_memory_requirements(raw.raw()) };
         let type_index = device.memory_type(req.memory_type_bits, vk::MemoryPropertyFlags::empty())?;
-        let alloc = vk::MemoryAllocateInfo::default()
-            .allocation_size(req.size)
-            .memory_type_index(type_index);
-        // SAFETY: valid allocate info on a live device.
-        image.memory = unsafe { vkd.allocate_memory(&alloc, None) }.map_err(vk_error("vkAllocateMemory"))?;
+        let memory = Memory::allocate(device, req.size, type_index)?;
         // SAFETY: fresh memory of the required size, image unbound.
-        unsafe { vkd.bind_image_memory(raw, image.memory, 0) }.map_err(vk_error("vkBindImageMemory"))?;
+        unsafe { device.raw.bind_image_memory(raw.raw(), memory.raw(), 0) }
+            .map_err(vk_error("vkBindImageMemory"))?;
         let view_info = vk::ImageViewCreateInfo::default()
-            .image(raw)
+            .image(raw.raw())
             .view_type(vk::ImageViewType::TYPE_2D)
             .format(format)
             .subresource_range(vk::ImageSubresourceRange {
@@ -164,24 +145,21 @@ impl Image {
                 base_array_layer: 0,
                 layer_count: 1,
             });
-        // SAFETY: the image is bound to memory and the view matches its format.
-        image.view =
-            unsafe { vkd.create_image_view(&view_info, None) }.map_err(vk_error("vkCreateImageView"))?;
-        Ok(image)
+        let view = ImageView::new(device, &view_info)?;
+        Ok(Image {
+            view,
+            raw,
+            _memory: memory,
+        })
     }
-}
 
-impl Drop for Image {
-    fn drop(&mut self) {
-        // SAFETY: the renderer waits for its fence before dropping images a frame used.
-        unsafe {
-            if self.view != vk::ImageView::null() {
-                self.device.raw.destroy_image_view(self.view, None);
-            }
-            self.device.raw.destroy_image(self.raw, None);
-            if self.memory != vk::DeviceMemory::null() {
-                self.device.raw.free_memory(self.memory, None);
-            }
-        }
+    /// The Vulkan image.
+    pub fn raw(&self) -> vk::Image {
+        self.raw.raw()
+    }
+
+    /// The view of the whole image.
+    pub fn view(&self) -> vk::ImageView {
+        self.view.raw()
     }
 }

@@ -2,7 +2,9 @@
 //! JSON, Markdown, PNG plots) are written and well-formed. No timed assertions: times only
 //! have to be positive numbers.
 
-use ffvk::bench::{crossover, points, run_sweep, write_outputs, Engine, Spread, SweepConfig, CSV_COLUMNS};
+use ffvk::tools::bench::{
+    crossover, points, run_sweep, write_outputs, Engine, Spread, SweepConfig, CSV_COLUMNS,
+};
 use ffvk::vk::Validation;
 use ffvk::RendererOptions;
 use indicatif::ProgressBar;
@@ -146,7 +148,7 @@ fn sweeps_are_validated() {
         },
     ] {
         let err = run_sweep(&bad, &options, &ProgressBar::hidden()).unwrap_err();
-        assert!(matches!(err, ffvk::Error::Bench(_)), "{err}");
+        assert!(matches!(err, ffvk::tools::Error::Bench(_)), "{err}");
     }
 }
 

@@ -18,7 +18,7 @@ use glam::{Mat4, Vec3, Vec4};
 use image::{Rgba, RgbaImage};
 
 use crate::support::*;
-use ffvk::gl_reference::{render_gl, GlDraw, GlScene};
+use ffvk::tools::gl_reference::{render_gl, GlDraw, GlScene};
 
 const SIZE: u32 = 128;
 
@@ -329,7 +329,7 @@ fn ffvk_image(
         projection,
         state,
     });
-    r.render(&frame).unwrap()
+    r.render(&frame).unwrap().into_rgba_image()
 }
 
 fn gl_image(mesh: &MeshData, modelview: Mat4, projection: Mat4, state: LightingState) -> RgbaImage {

@@ -2,8 +2,8 @@
 //! GL 2.1 lighting equation (not from ffvk), so that it can serve as the oracle.
 
 use ffvk::gl::state::{LightingMode, LightingState};
-use ffvk::gl_reference::{gl_info, render_gl, GlDraw, GlScene};
 use ffvk::mesh::{MeshData, Vertex};
+use ffvk::tools::gl_reference::{gl_info, render_gl, GlDraw, GlScene};
 use glam::{Mat4, Vec3, Vec4};
 
 const SIZE: u32 = 16;

@@ -1,16 +1,16 @@
 //! ffvk's own golden images: the asset scenes and hard states in every lighting mode, and
 //! the demo's panels, against references in tests/golden/<area>/. The references were made on
 //! lavapipe, so there the comparison is exact (any changed pixel fails); on another driver the
-//! user-facing tolerance policy (ffvk::compare::Tolerance::default()) applies. A failure
+//! user-facing tolerance policy (ffvk::images::compare::Tolerance::default()) applies. A failure
 //! writes the actual image and a diff heat map to tests/output/golden/<area>/ and says how to
 //! bless.
 
 use std::path::PathBuf;
 
-use ffvk::compare::{compare, heat_map, load_image, Tolerance};
 use ffvk::gl::state::LightingMode;
+use ffvk::images::compare::{compare, heat_map, load_image, Tolerance};
 use ffvk::images::save_png;
-use ffvk::regress::{self, Job, Status};
+use ffvk::tools::regress::{self, Job, Status};
 
 use crate::support::*;
 
@@ -84,7 +84,7 @@ fn golden_hard_states_in_every_mode() {
 fn golden_demo_panels() {
     let mut r = renderer();
     let tolerance = golden_tolerance(&r);
-    let panels = ffvk::demo::panels(&mut r, 128).unwrap();
+    let panels = ffvk::tools::demo::panels(&mut r, 128).unwrap();
     finish(r);
     let refs = root().join("tests/golden/demo");
     let out = root().join("tests/output/golden/demo");

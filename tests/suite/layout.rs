@@ -4,7 +4,7 @@
 use std::collections::HashMap;
 use std::mem::{offset_of, size_of};
 
-use ffvk::layout::{DrawBlock, GpuLight, GpuMaterial, SpecConstant, SpecKey, SPEC_CONSTANT_COUNT};
+use ffvk::gpu::layout::{DrawBlock, GpuLight, GpuMaterial, SpecConstant, SpecKey, SPEC_CONSTANT_COUNT};
 
 const OP_NAME: u32 = 5;
 const OP_MEMBER_NAME: u32 = 6;
@@ -106,7 +106,7 @@ impl Reflection {
 /// Every compiled stage of every variant, named `<variant>.<vert|frag>`.
 fn stages() -> Vec<(String, &'static [u8])> {
     let mut stages = Vec::new();
-    for v in ffvk::shaders::VARIANTS {
+    for v in ffvk::gpu::shaders::VARIANTS {
         stages.push((format!("{}.vert", v.name), v.vertex));
         stages.push((format!("{}.frag", v.name), v.fragment));
     }

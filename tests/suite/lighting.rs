@@ -64,7 +64,7 @@ fn render_variant(scene: &Scene, state: LightingState, specialize: Specialize) -
         projection: scene.projection,
         state,
     });
-    let image = r.render(&frame).unwrap();
+    let image = r.render(&frame).unwrap().into_rgba_image();
     // The variant really drew: one pipeline, specialized or not.
     let specialized = usize::from(specialize == Specialize::Always);
     assert_eq!(r.pipeline_counts(), (1, specialized), "{}", specialize.name());

@@ -12,7 +12,7 @@ fn clear_color_fills_the_image() {
     let mut r = renderer();
     let mut frame = Frame::new(32, 16);
     frame.clear_color = Vec4::new(0.25, 0.5, 0.75, 1.0);
-    let image = r.render(&frame).unwrap();
+    let image = r.render(&frame).unwrap().into_rgba_image();
     assert_eq!(image.dimensions(), (32, 16));
     for (x, y, _) in image.enumerate_pixels() {
         assert_pixel(&image, x, y, DVec4::new(0.25, 0.5, 0.75, 1.0), 0.5, "clear");
@@ -28,7 +28,7 @@ fn top_of_the_view_is_the_top_row_and_x_points_right() {
     let mesh = r.upload(&quad(-1.0, 0.0, 0.0, 1.0, 0.0, red)).unwrap();
     let mut frame = Frame::new(64, 64);
     frame.draws.push(ndc_draw(&mesh));
-    let image = r.render(&frame).unwrap();
+    let image = r.render(&frame).unwrap().into_rgba_image();
     let black = DVec4::new(0.0, 0.0, 0.0, 1.0);
     assert_pixel(
         &image,
@@ -76,7 +76,7 @@ fn counter_clockwise_is_front() {
             state: gl.lighting,
         });
     }
-    let image = r.render(&frame).unwrap();
+    let image = r.render(&frame).unwrap().into_rgba_image();
     assert_pixel(
         &image,
         16,
@@ -110,7 +110,7 @@ fn depth_test_keeps_the_nearest_surface() {
     // GL's identity projection keeps z: -0.5 is nearer than 0.5. Draw near first.
     let mut frame = Frame::new(16, 16);
     frame.draws = vec![ndc_draw(&near), ndc_draw(&far)];
-    let image = r.render(&frame).unwrap();
+    let image = r.render(&frame).unwrap().into_rgba_image();
     assert_pixel(
         &image,
         8,
@@ -120,7 +120,7 @@ fn depth_test_keeps_the_nearest_surface() {
         "depth test on: near wins",
     );
     frame.depth_test = false;
-    let image = r.render(&frame).unwrap();
+    let image = r.render(&frame).unwrap().into_rgba_image();
     assert_pixel(
         &image,
         8,
@@ -147,7 +147,7 @@ fn one_renderer_draws_many_frames_and_sizes() {
         for _ in 0..=i {
             frame.draws.push(ndc_draw(&mesh));
         }
-        let image = r.render(&frame).unwrap();
+        let image = r.render(&frame).unwrap().into_rgba_image();
         assert_eq!(image.dimensions(), (size, size + 3));
         assert_pixel(
             &image,
@@ -188,7 +188,7 @@ fn bad_sizes_and_meshes_are_errors() {
     let err = r.upload(&bad).err().expect("5 indices are rejected");
     assert!(err.to_string().contains("multiple of 3"), "{err}");
     // The renderer still works after errors.
-    let image = r.render(&Frame::new(4, 4)).unwrap();
+    let image = r.render(&Frame::new(4, 4)).unwrap().into_rgba_image();
     assert_eq!(image.dimensions(), (4, 4));
     finish(r);
 }
@@ -223,8 +223,9 @@ fn measured_frames_report_timestamps_and_pipeline_statistics() {
         .unwrap();
     let mut frame = Frame::new(64, 64);
     frame.draws.push(ndc_draw(&mesh));
-    let plain = r.render(&frame).unwrap();
+    let plain = r.render(&frame).unwrap().into_rgba_image();
     let (image, stats) = r.render_measured(&frame).unwrap();
+    let image = image.into_rgba_image();
     assert_eq!(plain, image, "measuring does not change the image");
     let gpu = stats.gpu_ns.expect("timestamps");
     assert!(gpu > 0.0 && stats.wall_ns > 0.0, "{stats:?}");

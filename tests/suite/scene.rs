@@ -111,7 +111,7 @@ fn every_asset_scene_renders_and_matches_the_reference_where_probed() {
             let image = render_scene(&mut r, &scene, Some(mode)).unwrap();
             // The pixel at the center is explained by the CPU reference and drawn the same.
             let (x, y) = (48, 48);
-            let hit = ffvk::explain::find_surface(&scene, x, y);
+            let hit = ffvk::tools::explain::find_surface(&scene, x, y);
             if let Some(hit) = hit {
                 let mesh = &scene.meshes[hit.mesh];
                 let mut state = scene.draw_state(mesh);

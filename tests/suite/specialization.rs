@@ -2,9 +2,9 @@
 //! that decides it. (That specialized and uber pipelines draw the same lighting is checked by
 //! every lighting and conformance test, which run both.)
 
+use ffvk::draw::pipeline::MAX_AUTO_VARIANTS;
 use ffvk::gl::state::*;
-use ffvk::layout::{SpecConstant, SpecKey};
-use ffvk::pipeline::MAX_AUTO_VARIANTS;
+use ffvk::gpu::layout::{SpecConstant, SpecKey};
 use ffvk::{Draw, Frame, Renderer, Specialize};
 use glam::{Mat4, Vec3, Vec4};
 
@@ -34,7 +34,7 @@ fn draw_states(r: &mut Renderer, states: &[LightingState]) {
             projection: perspective(45.0, 1.0, 0.5, 10.0),
             state,
         });
-        r.render(&frame).unwrap();
+        r.render(&frame).unwrap().into_rgba_image();
     }
 }
 
@@ -144,7 +144,7 @@ fn the_key_keeps_only_what_changes_the_lighting() {
 
 #[test]
 fn one_sided_single_color_states_pass_one_color_between_the_stages() {
-    use ffvk::pipeline::variant_name;
+    use ffvk::draw::pipeline::variant_name;
     let key = |s: &LightingState| SpecKey::for_state(s);
     let one_sided = lit(2, LightingMode::Vertex);
     let mut two_sided = one_sided;

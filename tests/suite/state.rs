@@ -2,7 +2,7 @@
 //! directions transformed by the modelview in force when they are set.
 
 use ffvk::gl::state::*;
-use ffvk::layout::DrawBlock;
+use ffvk::gpu::layout::DrawBlock;
 use glam::{Mat4, Vec3, Vec4};
 
 fn close(a: Vec4, b: Vec4) -> bool {

@@ -12,6 +12,8 @@
 //! Textures, skins, morph targets, cameras and texture coordinates are ignored (with a
 //! warning where the file uses them).
 
+pub mod write;
+
 use crate::gl::state::{Light, Material};
 use crate::mesh::{MeshData, Vertex};
 use glam::{Mat4, Vec3, Vec4};
@@ -1118,9 +1120,9 @@ mod tests {
     #[test]
     fn teapot_written_by_write_gltf_loads_back_identically() {
         let dir = scratch_dir("teapot");
-        let teapot = crate::teapot::teapot(4).unwrap();
+        let teapot = crate::mesh::teapot::teapot(4).unwrap();
         let path = dir.join("teapot.gltf");
-        crate::teapot::write_gltf(&teapot, &path).unwrap();
+        crate::scene::gltf::write::write_gltf(&teapot, &path).unwrap();
         let loaded = load(&path).unwrap();
         assert!(loaded.warnings.is_empty(), "{:?}", loaded.warnings);
         assert!(loaded.lights.is_empty());

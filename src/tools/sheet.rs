@@ -1,35 +1,19 @@
-//! Images after rendering: saving with clear errors, and labelled contact sheets.
-
-use std::path::Path;
+//! Labelled contact sheets: panels in a grid, each with its name drawn in DejaVu Sans.
 
 use ab_glyph::{Font, FontVec, PxScale, ScaleFont};
 use image::{Rgba, RgbaImage};
 
-use crate::error::{Error, Result};
-
-/// Saves a PNG, creating the parent directory; errors name the path.
-pub fn save_png(image: &RgbaImage, path: &Path) -> Result<()> {
-    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir).map_err(|e| Error::Output {
-            path: dir.to_path_buf(),
-            message: e.to_string(),
-        })?;
-    }
-    image.save(path).map_err(|e| Error::Output {
-        path: path.to_path_buf(),
-        message: e.to_string(),
-    })
-}
+use crate::tools::{Error, Result};
 
 /// Debian's DejaVu Sans (package fonts-dejavu-core), used for labels.
 pub const LABEL_FONT: &str = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
 fn load_font() -> Result<FontVec> {
-    let bytes = std::fs::read(LABEL_FONT).map_err(|e| Error::Input {
+    let bytes = std::fs::read(LABEL_FONT).map_err(|e| Error::Font {
         path: LABEL_FONT.into(),
-        message: format!("{e} (install the Debian package fonts-dejavu-core)"),
+        message: e.to_string(),
     })?;
-    FontVec::try_from_vec(bytes).map_err(|e| Error::Input {
+    FontVec::try_from_vec(bytes).map_err(|e| Error::Font {
         path: LABEL_FONT.into(),
         message: format!("not a usable TrueType font: {e}"),
     })

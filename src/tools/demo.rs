@@ -6,11 +6,13 @@ use std::path::Path;
 
 use glam::{Mat4, Vec3, Vec4};
 
-use crate::error::{Error, Result};
+use crate::gl::presets;
 use crate::gl::state::{Cap, Face, GlState, LightModelParam, LightParam, LightingMode, MaterialParam};
-use crate::images::{contact_sheet, save_png};
+use crate::images::save_png;
+use crate::mesh::teapot;
 use crate::renderer::{Draw, Frame, Renderer, RendererOptions};
-use crate::{presets, teapot};
+use crate::tools::sheet::contact_sheet;
+use crate::tools::Result;
 
 const PANEL: u32 = 320;
 
@@ -74,7 +76,7 @@ fn projection() -> Mat4 {
 /// right front, given in world space under the view matrix as glLight would be.
 fn state(terms: &Terms, mode: LightingMode) -> Result<GlState> {
     let mut gl = GlState::new();
-    let emerald = presets::preset("emerald").ok_or_else(|| Error::Mesh("no emerald preset".into()))?;
+    let emerald = presets::preset("emerald").expect("the preset table has emerald");
     gl.lighting.front = emerald;
     gl.lighting.back = emerald;
     gl.enable(Cap::Lighting)?;
@@ -117,7 +119,7 @@ fn render_teapot(
         projection: projection(),
         state: gl.lighting,
     });
-    renderer.render(&frame)
+    Ok(renderer.render(&frame)?.into())
 }
 
 /// One demo panel: file name, label, image.
@@ -129,8 +131,8 @@ pub struct Panel {
 
 /// Renders the demo's panels: the five term-by-term panels, then the three modes.
 pub fn panels(renderer: &mut Renderer, size: u32) -> Result<Vec<Panel>> {
-    let fine = renderer.upload(&teapot::teapot(12).map_err(Error::Mesh)?)?;
-    let coarse = renderer.upload(&teapot::teapot(3).map_err(Error::Mesh)?)?;
+    let fine = renderer.upload(&teapot::teapot(12)?)?;
+    let coarse = renderer.upload(&teapot::teapot(3)?)?;
     let mut panels = Vec::new();
     for terms in &PANELS {
         let image = render_teapot(renderer, &fine, &state(terms, LightingMode::Fragment)?, size)?;

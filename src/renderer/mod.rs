@@ -4,14 +4,17 @@ use std::sync::Arc;
 
 use ash::vk;
 use glam::{Mat4, Vec4};
-use image::RgbaImage;
 
-use crate::error::{vk_error, Error, Result};
+use crate::draw::pipeline::{Pipelines, Specialize, COLOR_FORMAT, DEPTH_FORMAT, MAX_AUTO_VARIANTS};
+use crate::error::{vk_error, Error, MeshError, Result};
 use crate::gl::state::LightingState;
-use crate::layout::{DrawBlock, SpecKey};
+use crate::gpu::layout::{DrawBlock, SpecKey};
 use crate::mesh::MeshData;
-use crate::pipeline::{Pipelines, Specialize, COLOR_FORMAT, DEPTH_FORMAT, MAX_AUTO_VARIANTS};
+use crate::vk::objects::{CommandPool, DescriptorPool, Fence};
 use crate::vk::{Buffer, Device, DeviceInfo, Image, Instance, Validation, ValidationSink};
+
+mod queries;
+use queries::Queries;
 
 /// How to open a renderer.
 #[derive(Debug, Clone, Default)]
@@ -76,7 +79,8 @@ impl<'a> Frame<'a> {
 
 /// What one measured frame cost, from queries around its rendering pass (clears and draws;
 /// not the readback copy).
-#[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct FrameStats {
     /// Device time between the timestamp written before the rendering pass and the one
     /// written after it, in nanoseconds; `None` when the queue has no timestamps.
@@ -90,7 +94,8 @@ pub struct FrameStats {
 }
 
 /// The counters of one pipeline-statistics query, summed over every draw of the pass.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct PipelineStats {
     pub input_assembly_vertices: u64,
     pub input_assembly_primitives: u64,
@@ -99,16 +104,6 @@ pub struct PipelineStats {
     pub clipping_primitives: u64,
     pub fragment_shader_invocations: u64,
 }
-
-/// The statistics the query counts, in the order Vulkan writes them (ascending bits).
-const STATISTICS: vk::QueryPipelineStatisticFlags = vk::QueryPipelineStatisticFlags::from_raw(
-    vk::QueryPipelineStatisticFlags::INPUT_ASSEMBLY_VERTICES.as_raw()
-        | vk::QueryPipelineStatisticFlags::INPUT_ASSEMBLY_PRIMITIVES.as_raw()
-        | vk::QueryPipelineStatisticFlags::VERTEX_SHADER_INVOCATIONS.as_raw()
-        | vk::QueryPipelineStatisticFlags::CLIPPING_INVOCATIONS.as_raw()
-        | vk::QueryPipelineStatisticFlags::CLIPPING_PRIMITIVES.as_raw()
-        | vk::QueryPipelineStatisticFlags::FRAGMENT_SHADER_INVOCATIONS.as_raw(),
-);
 
 /// What one submission records besides the rendering pass.
 #[derive(Debug, Clone, Copy)]
@@ -127,21 +122,56 @@ struct Targets {
     readback: Buffer,
 }
 
+/// An image read back from the renderer: RGBA8, rows top to bottom, no padding.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Pixels {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// `width * height * 4` bytes, R, G, B, A per pixel, row 0 at the top of the view.
+    pub rgba: Vec<u8>,
+}
+
+impl Pixels {
+    /// The RGBA value at (x, y), from the top-left corner; `None` outside the image.
+    pub fn pixel(&self, x: u32, y: u32) -> Option<[u8; 4]> {
+        if x >= self.width || y >= self.height {
+            return None;
+        }
+        let at = (y as usize * self.width as usize + x as usize) * 4;
+        self.rgba.get(at..at + 4).map(|p| [p[0], p[1], p[2], p[3]])
+    }
+}
+
+#[cfg(feature = "images")]
+impl Pixels {
+    /// The same pixels as an `image` crate buffer (feature `images`).
+    pub fn into_rgba_image(self) -> image::RgbaImage {
+        image::RgbaImage::from_raw(self.width, self.height, self.rgba)
+            .expect("Pixels holds width * height * 4 bytes")
+    }
+}
+
+#[cfg(feature = "images")]
+impl From<Pixels> for image::RgbaImage {
+    fn from(p: Pixels) -> Self {
+        p.into_rgba_image()
+    }
+}
+
 /// Draws frames offscreen and returns them as images. Owns its device; meshes hold it too.
 pub struct Renderer {
-    // Field order is drop order: everything below is freed before `device`'s last Arc.
+    // Field order is drop order (after Drop waits for the device): everything that holds the
+    // device goes before `device`, the last Arc this renderer keeps.
     targets: Option<Targets>,
     uniforms: Option<Buffer>,
+    descriptors: DescriptorPool,
     pipelines: Pipelines,
-    descriptor_pool: vk::DescriptorPool,
-    descriptor_set: vk::DescriptorSet,
-    command_pool: vk::CommandPool,
-    command_buffer: vk::CommandBuffer,
-    fence: vk::Fence,
-    /// Two timestamps around the rendering pass; null without timestamp support.
-    timestamps: vk::QueryPool,
-    /// One pipeline-statistics query over the rendering pass; null without support.
-    statistics: vk::QueryPool,
+    commands: CommandPool,
+    fence: Fence,
+    /// Timestamps and pipeline statistics, where the device has them.
+    queries: Queries,
     uniform_stride: u64,
     specialize: Specialize,
     /// Set when a submission failed: the renderer refuses further frames.
@@ -150,82 +180,34 @@ pub struct Renderer {
 }
 
 impl Renderer {
+    /// Opens the instance and device `options` asks for and creates what every frame needs.
     pub fn new(options: &RendererOptions) -> Result<Self> {
         let instance = Instance::new(options.validation)?;
         let device = Device::new(instance, options.device.as_deref())?;
         let pipelines = Pipelines::new(&device)?;
-        let vkd = &device.raw;
-
         let align = device.limits.min_uniform_buffer_offset_alignment.max(16);
         let uniform_stride = (std::mem::size_of::<DrawBlock>() as u64).div_ceil(align) * align;
-
-        let mut renderer = Renderer {
-            targets: None,
-            uniforms: None,
-            pipelines,
-            descriptor_pool: vk::DescriptorPool::null(),
-            descriptor_set: vk::DescriptorSet::null(),
-            command_pool: vk::CommandPool::null(),
-            command_buffer: vk::CommandBuffer::null(),
-            fence: vk::Fence::null(),
-            timestamps: vk::QueryPool::null(),
-            statistics: vk::QueryPool::null(),
-            uniform_stride,
-            specialize: options.specialize,
-            lost: false,
-            device: device.clone(),
-        };
         let pool_sizes = [vk::DescriptorPoolSize {
             ty: vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC,
             descriptor_count: 1,
         }];
-        let info = vk::DescriptorPoolCreateInfo::default()
-            .max_sets(1)
-            .pool_sizes(&pool_sizes);
-        // SAFETY (this block and the three below): valid create infos on a live device;
-        // each handle is stored in `renderer` immediately so Drop frees it on a later error.
-        renderer.descriptor_pool =
-            unsafe { vkd.create_descriptor_pool(&info, None) }.map_err(vk_error("vkCreateDescriptorPool"))?;
-        let layouts = [renderer.pipelines.set_layout];
-        let info = vk::DescriptorSetAllocateInfo::default()
-            .descriptor_pool(renderer.descriptor_pool)
-            .set_layouts(&layouts);
-        // SAFETY: see above.
-        renderer.descriptor_set =
-            unsafe { vkd.allocate_descriptor_sets(&info) }.map_err(vk_error("vkAllocateDescriptorSets"))?[0];
-        let info = vk::CommandPoolCreateInfo::default()
-            .queue_family_index(device.queue_family)
-            .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER);
-        // SAFETY: see above.
-        renderer.command_pool =
-            unsafe { vkd.create_command_pool(&info, None) }.map_err(vk_error("vkCreateCommandPool"))?;
-        let info = vk::CommandBufferAllocateInfo::default()
-            .command_pool(renderer.command_pool)
-            .level(vk::CommandBufferLevel::PRIMARY)
-            .command_buffer_count(1);
-        // SAFETY: see above.
-        renderer.command_buffer =
-            unsafe { vkd.allocate_command_buffers(&info) }.map_err(vk_error("vkAllocateCommandBuffers"))?[0];
-        // SAFETY: see above.
-        renderer.fence = unsafe { vkd.create_fence(&vk::FenceCreateInfo::default(), None) }
-            .map_err(vk_error("vkCreateFence"))?;
-        if device.info.timestamps_supported {
-            let info = vk::QueryPoolCreateInfo::default()
-                .query_type(vk::QueryType::TIMESTAMP)
-                .query_count(2);
-            // SAFETY: see above.
-            renderer.timestamps =
-                unsafe { vkd.create_query_pool(&info, None) }.map_err(vk_error("vkCreateQueryPool"))?;
-        }
-        if device.info.pipeline_statistics_query {
-            let info = vk::QueryPoolCreateInfo::default()
-                .query_type(vk::QueryType::PIPELINE_STATISTICS)
-                .query_count(1)
-                .pipeline_statistics(STATISTICS);
-            // SAFETY: see above; the device enables pipelineStatisticsQuery when it has it.
-            renderer.statistics =
-                unsafe { vkd.create_query_pool(&info, None) }.map_err(vk_error("vkCreateQueryPool"))?;
-        }
+        let descriptors = DescriptorPool::with_one_set(&device, &pool_sizes, pipelines.set_layout())?;
+        let commands = CommandPool::with_one_buffer(&device, device.queue_family)?;
+        let fence = Fence::new(&device)?;
+        let queries = Queries::new(&device)?;
+        let renderer = Renderer {
+            targets: None,
+            uniforms: None,
+            descriptors,
+            pipelines,
+            commands,
+            fence,
+            queries,
+            uniform_stride,
+            specialize: options.specialize,
+            lost: false,
+            device,
+        };
         renderer.check_validation()?;
         Ok(renderer)
     }
@@ -253,10 +235,10 @@ impl Renderer {
     /// is not a multiple of three.
     pub fn upload(&self, mesh: &MeshData) -> Result<Mesh> {
         if mesh.indices.len() % 3 != 0 {
-            return Err(Error::Mesh(format!(
-                "{} indices is not a whole number of triangles: expected a multiple of 3",
-                mesh.indices.len()
-            )));
+            return Err(MeshError::NotTriangles {
+                count: mesh.indices.len(),
+            }
+            .into());
         }
         let count = mesh.vertices.len();
         if let Some((at, &bad)) = mesh
@@ -265,9 +247,12 @@ impl Renderer {
             .enumerate()
             .find(|(_, &i)| i as usize >= count)
         {
-            return Err(Error::Mesh(format!(
-                "index {at} is {bad}: expected a vertex index below {count} (the vertex count)"
-            )));
+            return Err(MeshError::IndexOutOfRange {
+                at,
+                index: bad,
+                vertex_count: count,
+            }
+            .into());
         }
         let vertex_bytes: &[u8] = bytemuck::cast_slice(&mesh.vertices);
         let index_bytes: &[u8] = bytemuck::cast_slice(&mesh.indices);
@@ -339,12 +324,12 @@ impl Renderer {
         let size = needed.max(self.uniforms.as_ref().map_or(0, |u| u.size() * 2));
         let buffer = Buffer::new(&self.device, size, vk::BufferUsageFlags::UNIFORM_BUFFER)?;
         let info = [vk::DescriptorBufferInfo {
-            buffer: buffer.raw,
+            buffer: buffer.raw(),
             offset: 0,
             range: std::mem::size_of::<DrawBlock>() as u64,
         }];
         let write = vk::WriteDescriptorSet::default()
-            .dst_set(self.descriptor_set)
+            .dst_set(self.descriptors.set())
             .dst_binding(0)
             .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC)
             .buffer_info(&info);
@@ -355,7 +340,7 @@ impl Renderer {
     }
 
     /// Draws `frame` and returns its pixels, row 0 at the top of the view.
-    pub fn render(&mut self, frame: &Frame) -> Result<RgbaImage> {
+    pub fn render(&mut self, frame: &Frame) -> Result<Pixels> {
         self.draw_frame(
             frame,
             Pass {
@@ -368,7 +353,7 @@ impl Renderer {
 
     /// [`Renderer::render`] with timestamps and a pipeline-statistics query around the
     /// rendering pass.
-    pub fn render_measured(&mut self, frame: &Frame) -> Result<(RgbaImage, FrameStats)> {
+    pub fn render_measured(&mut self, frame: &Frame) -> Result<(Pixels, FrameStats)> {
         let stats = self.draw_frame(
             frame,
             Pass {
@@ -400,9 +385,7 @@ impl Renderer {
         }
         for (i, d) in frame.draws.iter().enumerate() {
             if !Arc::ptr_eq(d.mesh.vertices.device(), &self.device) {
-                return Err(Error::Mesh(format!(
-                    "draw {i}: the mesh was uploaded by another renderer: expected a mesh from this renderer's upload"
-                )));
+                return Err(MeshError::ForeignMesh { draw: i }.into());
             }
         }
         self.ensure_targets(frame.width, frame.height)?;
@@ -430,74 +413,22 @@ impl Renderer {
             ..FrameStats::default()
         };
         if pass.measure {
-            stats.gpu_ns = self.read_timestamps()?;
-            stats.pipeline = self.read_statistics()?;
+            stats.gpu_ns = self.queries.read_timestamps(&self.device)?;
+            stats.pipeline = self.queries.read_statistics()?;
         }
         Ok(stats)
     }
 
     /// The readback buffer as an image (after a frame recorded with `readback`).
-    fn read_image(&self, frame: &Frame) -> RgbaImage {
+    fn read_image(&self, frame: &Frame) -> Pixels {
         let targets = self.targets.as_ref().expect("ensure_targets made them");
         let len = usize::try_from(u64::from(frame.width) * u64::from(frame.height) * 4)
             .expect("ensure_targets bounded the size by the device's limit");
-        let pixels = targets.readback.bytes()[..len].to_vec();
-        RgbaImage::from_raw(frame.width, frame.height, pixels).expect("readback holds width*height*4 bytes")
-    }
-
-    /// Nanoseconds between the two timestamps of the last measured frame.
-    fn read_timestamps(&self) -> Result<Option<f64>> {
-        if self.timestamps == vk::QueryPool::null() {
-            return Ok(None);
+        Pixels {
+            width: frame.width,
+            height: frame.height,
+            rgba: targets.readback.bytes()[..len].to_vec(),
         }
-        let mut ticks = [0u64; 2];
-        // SAFETY: both queries were reset and written by the submission the fence waited for;
-        // WAIT makes the call return only complete values.
-        unsafe {
-            self.device.raw.get_query_pool_results(
-                self.timestamps,
-                0,
-                &mut ticks,
-                vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT,
-            )
-        }
-        .map_err(vk_error("vkGetQueryPoolResults"))?;
-        let info = &self.device.info;
-        let mask = if info.timestamp_valid_bits >= 64 {
-            u64::MAX
-        } else {
-            (1u64 << info.timestamp_valid_bits) - 1
-        };
-        let elapsed = ticks[1].wrapping_sub(ticks[0]) & mask;
-        Ok(Some(elapsed as f64 * info.timestamp_period_ns as f64))
-    }
-
-    /// The pipeline statistics of the last measured frame.
-    fn read_statistics(&self) -> Result<Option<PipelineStats>> {
-        if self.statistics == vk::QueryPool::null() {
-            return Ok(None);
-        }
-        let mut values = [[0u64; 6]];
-        // SAFETY: the query was reset, begun and ended by the submission the fence waited
-        // for; one query of six 64-bit counters fills `values`.
-        unsafe {
-            self.device.raw.get_query_pool_results(
-                self.statistics,
-                0,
-                &mut values,
-                vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT,
-            )
-        }
-        .map_err(vk_error("vkGetQueryPoolResults"))?;
-        let [ia_vertices, ia_primitives, vs, clip_in, clip_out, fs] = values[0];
-        Ok(Some(PipelineStats {
-            input_assembly_vertices: ia_vertices,
-            input_assembly_primitives: ia_primitives,
-            vertex_shader_invocations: vs,
-            clipping_invocations: clip_in,
-            clipping_primitives: clip_out,
-            fragment_shader_invocations: fs,
-        }))
     }
 
     /// The pipeline a draw with `state` uses under this renderer's [`Specialize`] policy.
@@ -525,7 +456,7 @@ impl Renderer {
 
     fn record(&self, frame: &Frame, pipelines: &[vk::Pipeline], pass: Pass) -> Result<()> {
         let vkd = &self.device.raw;
-        let cmd = self.command_buffer;
+        let cmd = self.commands.buffer();
         let targets = self.targets.as_ref().expect("ensure_targets made them");
         let extent = targets.extent;
 
@@ -549,7 +480,7 @@ impl Renderer {
                 .dst_access_mask(vk::AccessFlags2::COLOR_ATTACHMENT_WRITE)
                 .old_layout(vk::ImageLayout::UNDEFINED)
                 .new_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
-                .image(targets.color.raw)
+                .image(targets.color.raw())
                 .subresource_range(color_range),
             vk::ImageMemoryBarrier2::default()
                 .src_stage_mask(vk::PipelineStageFlags2::LATE_FRAGMENT_TESTS)
@@ -564,12 +495,12 @@ impl Renderer {
                 )
                 .old_layout(vk::ImageLayout::UNDEFINED)
                 .new_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
-                .image(targets.depth.raw)
+                .image(targets.depth.raw())
                 .subresource_range(depth_range),
         ];
         let c = frame.clear_color;
         let color_attachments = [vk::RenderingAttachmentInfo::default()
-            .image_view(targets.color.view)
+            .image_view(targets.color.view())
             .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
             .load_op(vk::AttachmentLoadOp::CLEAR)
             .store_op(vk::AttachmentStoreOp::STORE)
@@ -579,7 +510,7 @@ impl Renderer {
                 },
             })];
         let depth_attachment = vk::RenderingAttachmentInfo::default()
-            .image_view(targets.depth.view)
+            .image_view(targets.depth.view())
             .image_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
             .load_op(vk::AttachmentLoadOp::CLEAR)
             .store_op(vk::AttachmentStoreOp::DONT_CARE)
@@ -607,10 +538,18 @@ impl Renderer {
             max_depth: 1.0,
         };
 
-        let timestamps =
-            (pass.measure && self.timestamps != vk::QueryPool::null()).then_some(self.timestamps);
-        let statistics =
-            (pass.measure && self.statistics != vk::QueryPool::null()).then_some(self.statistics);
+        let timestamps = self
+            .queries
+            .timestamps
+            .as_ref()
+            .filter(|_| pass.measure)
+            .map(|q| q.raw());
+        let statistics = self
+            .queries
+            .statistics
+            .as_ref()
+            .filter(|_| pass.measure)
+            .map(|q| q.raw());
         if let Some(pool) = timestamps {
             // SAFETY: recording outside any rendering pass; the pool has two queries, both
             // reset before they are written. On lavapipe a timestamp after any stage but
@@ -647,13 +586,13 @@ impl Renderer {
                 vkd.cmd_bind_descriptor_sets(
                     cmd,
                     vk::PipelineBindPoint::GRAPHICS,
-                    self.pipelines.layout,
+                    self.pipelines.layout(),
                     0,
-                    &[self.descriptor_set],
+                    &[self.descriptors.set()],
                     &[offset],
                 );
-                vkd.cmd_bind_vertex_buffers(cmd, 0, &[draw.mesh.vertices.raw], &[0]);
-                vkd.cmd_bind_index_buffer(cmd, draw.mesh.indices.raw, 0, vk::IndexType::UINT32);
+                vkd.cmd_bind_vertex_buffers(cmd, 0, &[draw.mesh.vertices.raw()], &[0]);
+                vkd.cmd_bind_index_buffer(cmd, draw.mesh.indices.raw(), 0, vk::IndexType::UINT32);
                 vkd.cmd_draw_indexed(cmd, draw.mesh.index_count, 1, 0, 0, 0);
             }
             vkd.cmd_end_rendering(cmd);
@@ -679,7 +618,7 @@ impl Renderer {
             .dst_access_mask(vk::AccessFlags2::TRANSFER_READ)
             .old_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
             .new_layout(vk::ImageLayout::TRANSFER_SRC_OPTIMAL)
-            .image(targets.color.raw)
+            .image(targets.color.raw())
             .subresource_range(color_range)];
         let region = vk::BufferImageCopy {
             buffer_offset: 0,
@@ -703,7 +642,7 @@ impl Renderer {
             .src_access_mask(vk::AccessFlags2::TRANSFER_WRITE)
             .dst_stage_mask(vk::PipelineStageFlags2::HOST)
             .dst_access_mask(vk::AccessFlags2::HOST_READ)
-            .buffer(targets.readback.raw)
+            .buffer(targets.readback.raw())
             .offset(0)
             .size(vk::WHOLE_SIZE)];
         // SAFETY: as above; the image is in TRANSFER_SRC_OPTIMAL after the barrier.
@@ -714,9 +653,9 @@ impl Renderer {
             );
             vkd.cmd_copy_image_to_buffer(
                 cmd,
-                targets.color.raw,
+                targets.color.raw(),
                 vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
-                targets.readback.raw,
+                targets.readback.raw(),
                 &[region],
             );
             vkd.cmd_pipeline_barrier2(
@@ -743,21 +682,21 @@ impl Renderer {
 
     fn submit_and_wait_once(&self) -> Result<f64> {
         let vkd = &self.device.raw;
-        let buffers = [self.command_buffer];
+        let buffers = [self.commands.buffer()];
         let submit = vk::SubmitInfo::default().command_buffers(&buffers);
         let start = std::time::Instant::now();
         // SAFETY: the command buffer is fully recorded; the fence is unsignaled (reset after
         // every wait); &self plus the renderer's exclusive ownership of the queue serialize
         // queue access.
         unsafe {
-            vkd.queue_submit(self.device.queue, &[submit], self.fence)
+            vkd.queue_submit(self.device.queue, &[submit], self.fence.raw())
                 .map_err(vk_error("vkQueueSubmit"))?;
-            vkd.wait_for_fences(&[self.fence], true, u64::MAX)
+            vkd.wait_for_fences(&[self.fence.raw()], true, u64::MAX)
                 .map_err(vk_error("vkWaitForFences"))?;
         }
         let wall_ns = start.elapsed().as_nanos() as f64;
         // SAFETY: the fence was signaled and nothing else waits on it.
-        unsafe { vkd.reset_fences(&[self.fence]) }.map_err(vk_error("vkResetFences"))?;
+        unsafe { vkd.reset_fences(&[self.fence.raw()]) }.map_err(vk_error("vkResetFences"))?;
         Ok(wall_ns)
     }
 }
@@ -774,16 +713,7 @@ fn subresource(aspect: vk::ImageAspectFlags) -> vk::ImageSubresourceRange {
 
 impl Drop for Renderer {
     fn drop(&mut self) {
+        // Nothing the fields own may be in use when they are freed, right after this.
         let _ = self.device.wait_idle();
-        let vkd = &self.device.raw;
-        // SAFETY: the device is idle, so nothing these handles own is in use; freeing the
-        // pools frees the command buffer and the descriptor set with them.
-        unsafe {
-            vkd.destroy_query_pool(self.timestamps, None);
-            vkd.destroy_query_pool(self.statistics, None);
-            vkd.destroy_fence(self.fence, None);
-            vkd.destroy_command_pool(self.command_pool, None);
-            vkd.destroy_descriptor_pool(self.descriptor_pool, None);
-        }
     }
 }

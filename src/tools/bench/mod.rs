@@ -25,13 +25,13 @@ use glam::{Mat4, Vec3, Vec4};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use serde::Serialize;
 
-use crate::error::{Error, Result};
+use crate::draw::pipeline::Specialize;
 use crate::gl::state::{
     Cap, Face, GlState, LightModelParam, LightParam, LightingMode, LightingState, MaterialParam,
 };
 use crate::mesh::MeshData;
-use crate::pipeline::Specialize;
 use crate::renderer::{Draw, Frame, FrameStats, Mesh, Renderer, RendererOptions};
+use crate::tools::{Error, Result};
 
 /// LP_NUM_THREADS when neither `--lp-threads` nor the environment sets it: the CPUs this
 /// process may use (what lavapipe would pick itself), pinned so that it is recorded.
@@ -975,7 +975,7 @@ fn measure_ffvk(
     }
     let samples = (0..config.frames)
         .map(|_| renderer.measure(&frame))
-        .collect::<Result<Vec<FrameStats>>>()?;
+        .collect::<crate::Result<Vec<FrameStats>>>()?;
     let gpu: Vec<f64> = samples
         .iter()
         .filter_map(|s| s.gpu_ns)
@@ -1012,7 +1012,7 @@ impl GlAnchor {
             notes.push("GL anchor not requested".into());
             return None;
         }
-        match crate::gl_reference::gl_info() {
+        match crate::tools::gl_reference::gl_info() {
             Ok(info) => Some(GlAnchor {
                 renderer: info.renderer,
                 version: info.version,
@@ -1039,7 +1039,7 @@ impl GlAnchor {
 
     #[cfg(feature = "osmesa")]
     fn measure(&self, mesh: &MeshData, point: &Point, config: &SweepConfig) -> Result<PointStats> {
-        use crate::gl_reference::{time_frames, GlDraw, GlScene};
+        use crate::tools::gl_reference::{time_frames, GlDraw, GlScene};
         let (modelview, projection) = matrices(point);
         let scene = GlScene {
             width: point.width,
@@ -1224,15 +1224,11 @@ pub fn summarize(results: &[BenchResult]) -> Summary {
 // ---------------------------------------------------------------------------------------------
 // Outputs.
 
-fn output_error(path: &Path) -> impl Fn(String) -> Error + '_ {
-    move |message| Error::Output {
-        path: path.to_path_buf(),
-        message,
-    }
-}
-
 fn write_file(path: &Path, bytes: &[u8]) -> Result<()> {
-    std::fs::write(path, bytes).map_err(|e| output_error(path)(e.to_string()))
+    std::fs::write(path, bytes).map_err(|source| Error::Write {
+        path: path.to_path_buf(),
+        source,
+    })
 }
 
 /// The CSV columns, in order.
@@ -1347,13 +1343,19 @@ fn serde_name<T: Serialize>(value: &T) -> String {
 /// Writes results.csv, results.json, summary.md and the plots into `dir` (created when
 /// missing); returns the paths written.
 pub fn write_outputs(report: &BenchReport, dir: &Path) -> Result<Vec<PathBuf>> {
-    std::fs::create_dir_all(dir).map_err(|e| output_error(dir)(e.to_string()))?;
+    std::fs::create_dir_all(dir).map_err(|source| Error::Write {
+        path: dir.to_path_buf(),
+        source,
+    })?;
     let mut written = Vec::new();
     let path = dir.join("results.csv");
     write_file(&path, csv(report).as_bytes())?;
     written.push(path);
     let path = dir.join("results.json");
-    let json = serde_json::to_string_pretty(report).map_err(|e| output_error(&path)(e.to_string()))?;
+    let json = serde_json::to_string_pretty(report).map_err(|source| Error::Json {
+        path: path.clone(),
+        source,
+    })?;
     write_file(&path, json.as_bytes())?;
     written.push(path);
     let path = dir.join("summary.md");
@@ -1735,7 +1737,7 @@ mod plots {
     fn ensure_font() -> Result<()> {
         static FONT: OnceLock<std::result::Result<(), String>> = OnceLock::new();
         FONT.get_or_init(|| {
-            let path = crate::images::LABEL_FONT;
+            let path = crate::tools::sheet::LABEL_FONT;
             let bytes = std::fs::read(path)
                 .map_err(|e| format!("{path}: {e} (install the Debian package fonts-dejavu-core)"))?;
             // plotters keeps the font for the life of the process; it is loaded once.
@@ -1744,8 +1746,8 @@ mod plots {
                 .map_err(|_| format!("{path}: not a usable TrueType font"))
         })
         .clone()
-        .map_err(|message| Error::Input {
-            path: crate::images::LABEL_FONT.into(),
+        .map_err(|message| Error::Font {
+            path: crate::tools::sheet::LABEL_FONT.into(),
             message,
         })
     }
@@ -1812,7 +1814,10 @@ mod plots {
         lines: &[Line],
         markers: &[(f64, String)],
     ) -> Result<()> {
-        let err = output_error(path);
+        let err = |message: String| Error::Plot {
+            path: path.to_path_buf(),
+            message,
+        };
         let plot_err = |e: &dyn std::fmt::Display| err(e.to_string());
         let mut buffer = vec![0u8; (WIDTH * HEIGHT * 3) as usize];
         {
@@ -1862,7 +1867,10 @@ mod plots {
         }
         let rgb =
             image::RgbImage::from_raw(WIDTH, HEIGHT, buffer).ok_or_else(|| err("plot buffer size".into()))?;
-        crate::images::save_png(&image::DynamicImage::ImageRgb8(rgb).to_rgba8(), path)
+        Ok(crate::images::save_png(
+            &image::DynamicImage::ImageRgb8(rgb).to_rgba8(),
+            path,
+        )?)
     }
 
     type Chart<'a, X, Y> = ChartContext<'a, BitMapBackend<'a>, Cartesian2d<X, Y>>;

@@ -16,9 +16,9 @@ use std::time::Instant;
 
 use glam::Mat4;
 
-use crate::error::{Error, Result};
 use crate::gl::state::{ColorControl, ColorMaterialMode, Face, Light, LightingMode, LightingState, Material};
 use crate::mesh::{MeshData, Vertex};
+use crate::tools::{Error, Result};
 
 /// Errors inside this module are messages; the public entry points wrap them in [`Error::Gl`].
 type GlResult<T> = std::result::Result<T, String>;

@@ -4,18 +4,21 @@
 //! Light positions and spot directions are given in world space; they are set through
 //! [`GlState::light`] with the view matrix loaded, exactly as glLight would store them.
 
+pub mod gltf;
+
 use std::path::{Path, PathBuf};
 
 use glam::{EulerRot, Mat4, Quat, Vec3, Vec4};
 use serde::Deserialize;
 
+use self::gltf::LoadError;
+use crate::gl::presets;
 use crate::gl::state::{
     Cap, ColorControl, ColorMaterialMode, Face, GlState, LightModelParam, LightParam, LightingMode,
     LightingState, Material, StateError, MAX_LIGHTS,
 };
-use crate::gltf_load::{self, LoadError};
+use crate::mesh::teapot;
 use crate::mesh::MeshData;
-use crate::{presets, teapot};
 
 /// The largest image side a scene may ask for (the renderer also checks its device's limit).
 pub const MAX_SIZE: u32 = 16384;
@@ -379,7 +382,7 @@ impl Builder<'_> {
                 let front = match (&spec.material, scene_front, pbr) {
                     (Some(m), _, _) => self.material(&format!("{field}.material"), m)?,
                     (None, Some(m), _) => m,
-                    (None, None, Some(p)) => gltf_load::gl_material(&p),
+                    (None, None, Some(p)) => self::gltf::gl_material(&p),
                     (None, None, None) => Material::default(),
                 };
                 let back = match (&spec.back_material, &spec.material, scene_back) {
@@ -655,7 +658,7 @@ impl Builder<'_> {
         spec: &MeshSpec,
         warnings: &mut Vec<String>,
         add_light: &mut dyn FnMut(crate::gl::state::Light, &str) -> Result<(), SceneError>,
-    ) -> Result<Vec<(String, MeshData, Mat4, Option<gltf_load::PbrMaterial>)>, SceneError> {
+    ) -> Result<Vec<(String, MeshData, Mat4, Option<self::gltf::PbrMaterial>)>, SceneError> {
         let model = self.model_matrix(field, spec)?;
         match (&spec.gltf, &spec.builtin) {
             (Some(_), Some(_)) => Err(self.field(field, "has both gltf and builtin: expected one of them")),
@@ -669,7 +672,7 @@ impl Builder<'_> {
                 }
                 let mut data = match name.as_str() {
                     "teapot" => teapot::teapot(spec.level.unwrap_or(12))
-                        .map_err(|e| self.field(format!("{field}.level"), e))?,
+                        .map_err(|e| self.field(format!("{field}.level"), e.to_string()))?,
                     "sphere" => {
                         let n = spec.level.unwrap_or(32);
                         if !(3..=1024).contains(&n) {
@@ -703,7 +706,7 @@ impl Builder<'_> {
             (Some(file), None) => {
                 let base = self.path.parent().unwrap_or(Path::new("."));
                 let gltf_path = base.join(file);
-                let loaded = gltf_load::load(&gltf_path).map_err(|source| SceneError::Gltf {
+                let loaded = self::gltf::load(&gltf_path).map_err(|source| SceneError::Gltf {
                     path: self.path.to_path_buf(),
                     field: format!("{field}.gltf"),
                     source: Box::new(source),
@@ -715,7 +718,7 @@ impl Builder<'_> {
                         .map(|w| format!("{}: {w}", gltf_path.display())),
                 );
                 for light in &loaded.lights {
-                    let mut gl_light = gltf_load::gl_light(light);
+                    let mut gl_light = self::gltf::gl_light(light);
                     // World-space light under the scene's model transform.
                     gl_light.position = model * gl_light.position;
                     gl_light.spot_direction = glam::Mat3::from_mat4(model) * gl_light.spot_direction;
@@ -809,5 +812,5 @@ pub fn render_scene(
             state,
         });
     }
-    renderer.render(&frame)
+    Ok(renderer.render(&frame)?.into())
 }

@@ -6,11 +6,12 @@ use std::sync::Arc;
 
 use ash::vk;
 
-use crate::error::{vk_error, Error, Result};
+use crate::error::{Error, Result};
 use crate::gl::state::LightingMode;
-use crate::layout::{SpecConstant, SpecKey, SPEC_CONSTANT_COUNT};
+use crate::gpu::layout::{SpecConstant, SpecKey, SPEC_CONSTANT_COUNT};
+use crate::gpu::shaders;
 use crate::mesh::Vertex;
-use crate::shaders;
+use crate::vk::objects::{DescriptorSetLayout, Pipeline, PipelineCache, PipelineLayout, ShaderModule};
 use crate::vk::Device;
 
 pub const COLOR_FORMAT: vk::Format = vk::Format::R8G8B8A8_UNORM;
@@ -38,29 +39,11 @@ pub fn variant_name(mode: LightingMode, key: SpecKey) -> &'static str {
     }
 }
 
-/// A shader module that destroys itself.
-struct ShaderModule<'a> {
-    device: &'a Device,
-    raw: vk::ShaderModule,
-}
-
-impl<'a> ShaderModule<'a> {
-    fn new(device: &'a Device, name: &str, bytes: &[u8]) -> Result<Self> {
-        let words = ash::util::read_spv(&mut std::io::Cursor::new(bytes))
-            .map_err(|e| Error::MissingFeature(format!("valid SPIR-V in {name}: {e}")))?;
-        let info = vk::ShaderModuleCreateInfo::default().code(&words);
-        // SAFETY: words is SPIR-V produced by glslang at build time.
-        let raw = unsafe { device.raw.create_shader_module(&info, None) }
-            .map_err(vk_error("vkCreateShaderModule"))?;
-        Ok(ShaderModule { device, raw })
-    }
-}
-
-impl Drop for ShaderModule<'_> {
-    fn drop(&mut self) {
-        // SAFETY: modules are only needed while pipelines are created; none is in use.
-        unsafe { self.device.raw.destroy_shader_module(self.raw, None) }
-    }
+/// A shader module from embedded SPIR-V bytes.
+fn shader_module(device: &Arc<Device>, name: &str, bytes: &[u8]) -> Result<ShaderModule> {
+    let words = ash::util::read_spv(&mut std::io::Cursor::new(bytes))
+        .map_err(|e| Error::MissingFeature(format!("valid SPIR-V in {name}: {e}")))?;
+    ShaderModule::new(device, &words)
 }
 
 /// Which pipelines draws use: variants specialized for their lighting state, or the
@@ -107,53 +90,54 @@ impl std::str::FromStr for Specialize {
 
 /// The descriptor layout, pipeline layout, cache and the pipelines made so far.
 pub struct Pipelines {
+    // Field order is drop order: pipelines before the layouts and cache they were made with.
+    pipelines: HashMap<(LightingMode, SpecKey), Pipeline>,
+    cache: PipelineCache,
+    layout: PipelineLayout,
+    set_layout: DescriptorSetLayout,
     device: Arc<Device>,
-    pub(crate) set_layout: vk::DescriptorSetLayout,
-    pub(crate) layout: vk::PipelineLayout,
-    cache: vk::PipelineCache,
-    pipelines: HashMap<(LightingMode, SpecKey), vk::Pipeline>,
 }
 
 impl Pipelines {
+    /// The layouts and an empty cache; pipelines are created by [`Pipelines::get`].
     pub fn new(device: &Arc<Device>) -> Result<Self> {
-        let vkd = &device.raw;
-        let mut p = Pipelines {
-            device: device.clone(),
-            set_layout: vk::DescriptorSetLayout::null(),
-            layout: vk::PipelineLayout::null(),
-            cache: vk::PipelineCache::null(),
-            pipelines: HashMap::new(),
-        };
         let bindings = [vk::DescriptorSetLayoutBinding::default()
             .binding(0)
             .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC)
             .descriptor_count(1)
             .stage_flags(vk::ShaderStageFlags::VERTEX | vk::ShaderStageFlags::FRAGMENT)];
-        let info = vk::DescriptorSetLayoutCreateInfo::default().bindings(&bindings);
-        // SAFETY: valid create infos on a live device; each handle is stored in `p` at once
-        // so Drop frees it if a later step fails.
-        p.set_layout = unsafe { vkd.create_descriptor_set_layout(&info, None) }
-            .map_err(vk_error("vkCreateDescriptorSetLayout"))?;
-        let set_layouts = [p.set_layout];
-        let info = vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts);
-        // SAFETY: as above.
-        p.layout =
-            unsafe { vkd.create_pipeline_layout(&info, None) }.map_err(vk_error("vkCreatePipelineLayout"))?;
-        // SAFETY: as above.
-        p.cache = unsafe { vkd.create_pipeline_cache(&vk::PipelineCacheCreateInfo::default(), None) }
-            .map_err(vk_error("vkCreatePipelineCache"))?;
-        Ok(p)
+        let set_layout = DescriptorSetLayout::new(device, &bindings)?;
+        let layout = PipelineLayout::new(device, &set_layout)?;
+        let cache = PipelineCache::new(device)?;
+        Ok(Pipelines {
+            pipelines: HashMap::new(),
+            cache,
+            layout,
+            set_layout,
+            device: device.clone(),
+        })
+    }
+
+    /// The layout of descriptor set 0 (binding 0: the draw's uniform block, dynamic offset).
+    pub fn set_layout(&self) -> &DescriptorSetLayout {
+        &self.set_layout
+    }
+
+    /// The pipeline layout every pipeline uses.
+    pub fn layout(&self) -> vk::PipelineLayout {
+        self.layout.raw()
     }
 
     /// The pipeline of `mode` specialized by `key` ([`SpecKey::UBER`]: the uber-shader),
     /// created on first use.
     pub fn get(&mut self, mode: LightingMode, key: SpecKey) -> Result<vk::Pipeline> {
-        if let Some(&pipeline) = self.pipelines.get(&(mode, key)) {
-            return Ok(pipeline);
+        if let Some(pipeline) = self.pipelines.get(&(mode, key)) {
+            return Ok(pipeline.raw());
         }
         let pipeline = self.create(mode, key)?;
+        let raw = pipeline.raw();
         self.pipelines.insert((mode, key), pipeline);
-        Ok(pipeline)
+        Ok(raw)
     }
 
     /// Whether the pipeline of `mode` and `key` exists already.
@@ -167,13 +151,13 @@ impl Pipelines {
         (self.pipelines.len(), specialized)
     }
 
-    fn create(&self, mode: LightingMode, key: SpecKey) -> Result<vk::Pipeline> {
-        let device = &*self.device;
+    fn create(&self, mode: LightingMode, key: SpecKey) -> Result<Pipeline> {
+        let device = &self.device;
         let name = variant_name(mode, key);
         let variant = shaders::variant(name)
             .ok_or_else(|| Error::MissingFeature(format!("the embedded shader variant {name}")))?;
-        let vert = ShaderModule::new(device, name, variant.vertex)?;
-        let frag = ShaderModule::new(device, name, variant.fragment)?;
+        let vert = shader_module(device, name, variant.vertex)?;
+        let frag = shader_module(device, name, variant.fragment)?;
         // Every constant is an `int` at offset 4 * constant_id of the key; a stage that does
         // not use a constant ignores its entry.
         let entries: [vk::SpecializationMapEntry; SPEC_CONSTANT_COUNT] =
@@ -188,11 +172,11 @@ impl Pipelines {
         let mut stages = [
             vk::PipelineShaderStageCreateInfo::default()
                 .stage(vk::ShaderStageFlags::VERTEX)
-                .module(vert.raw)
+                .module(vert.raw())
                 .name(c"main"),
             vk::PipelineShaderStageCreateInfo::default()
                 .stage(vk::ShaderStageFlags::FRAGMENT)
-                .module(frag.raw)
+                .module(frag.raw())
                 .name(c"main"),
         ];
         // The uber-shader is the modules as compiled, every constant at its default.
@@ -280,28 +264,8 @@ impl Pipelines {
             .depth_stencil_state(&depth)
             .color_blend_state(&blend)
             .dynamic_state(&dynamic)
-            .layout(self.layout)
+            .layout(self.layout.raw())
             .push_next(&mut rendering);
-        // SAFETY: every pointer in info refers to locals alive until the call returns;
-        // the layout and cache belong to this device.
-        let pipelines = unsafe { device.raw.create_graphics_pipelines(self.cache, &[info], None) }
-            .map_err(|(_, e)| vk_error("vkCreateGraphicsPipelines")(e))?;
-        Ok(pipelines[0])
-    }
-}
-
-impl Drop for Pipelines {
-    fn drop(&mut self) {
-        let vkd = &self.device.raw;
-        // SAFETY: the renderer waits for the device to be idle before dropping its pipelines;
-        // null handles (from a failed construction) are ignored by Vulkan.
-        unsafe {
-            for (_, p) in self.pipelines.drain() {
-                vkd.destroy_pipeline(p, None);
-            }
-            vkd.destroy_pipeline_cache(self.cache, None);
-            vkd.destroy_pipeline_layout(self.layout, None);
-            vkd.destroy_descriptor_set_layout(self.set_layout, None);
-        }
+        Pipeline::graphics(device, &self.cache, &info)
     }
 }

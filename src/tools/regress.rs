@@ -4,11 +4,11 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use crate::compare::{compare, heat_map, load_image, Comparison, Tolerance};
-use crate::error::{Error, Result};
 use crate::gl::state::LightingMode;
+use crate::images::compare::{compare, heat_map, load_image, Comparison, Tolerance};
 use crate::images::save_png;
 use crate::scene::{render_scene, Scene};
+use crate::tools::{Error, Result};
 use crate::Renderer;
 
 /// The environment variable that blesses references (any value but "0").
@@ -70,9 +70,9 @@ pub fn scene_files(inputs: &[PathBuf]) -> Result<Vec<PathBuf>> {
     let mut files = Vec::new();
     for input in inputs {
         if input.is_dir() {
-            let entries = std::fs::read_dir(input).map_err(|e| Error::Input {
+            let entries = std::fs::read_dir(input).map_err(|source| Error::Read {
                 path: input.clone(),
-                message: e.to_string(),
+                source,
             })?;
             let mut found: Vec<PathBuf> = entries
                 .filter_map(|e| e.ok().map(|e| e.path()))
@@ -80,9 +80,9 @@ pub fn scene_files(inputs: &[PathBuf]) -> Result<Vec<PathBuf>> {
                 .collect();
             found.sort();
             if found.is_empty() {
-                return Err(Error::Input {
+                return Err(Error::Path {
                     path: input.clone(),
-                    message: "no .toml scene files in this directory".into(),
+                    problem: "no .toml scene files in this directory",
                 });
             }
             files.extend(found);

@@ -8,11 +8,19 @@
 //! reference passes when every channel is within `threshold` except on at most `max_share`
 //! of the pixels, and the mean FLIP error stays under `max_flip`.
 
-use std::path::Path;
-
 use image::{Rgba, RgbaImage};
 
-use crate::error::{Error, Result};
+pub use super::load_image;
+
+/// Two images that cannot be compared because their sizes differ.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+#[error("the images differ in size: expected {}x{}, actual {}x{}", .expected.0, .expected.1, .actual.0, .actual.1)]
+pub struct SizeMismatch {
+    /// Width and height of the expected image.
+    pub expected: (u32, u32),
+    /// Width and height of the actual image.
+    pub actual: (u32, u32),
+}
 
 /// When a comparison passes.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -102,15 +110,12 @@ impl Comparison {
 
 /// Compares two images of the same size; `threshold` is the per-channel difference a pixel
 /// may have before it counts as over.
-pub fn compare(expected: &RgbaImage, actual: &RgbaImage, threshold: u8) -> Result<Comparison> {
+pub fn compare(expected: &RgbaImage, actual: &RgbaImage, threshold: u8) -> Result<Comparison, SizeMismatch> {
     if expected.dimensions() != actual.dimensions() {
-        return Err(Error::Mismatch(format!(
-            "the images differ in size: expected {}x{}, actual {}x{}",
-            expected.width(),
-            expected.height(),
-            actual.width(),
-            actual.height()
-        )));
+        return Err(SizeMismatch {
+            expected: expected.dimensions(),
+            actual: actual.dimensions(),
+        });
     }
     let (width, height) = expected.dimensions();
     let mut max_diff = [0u8; 4];
@@ -174,7 +179,7 @@ fn flip_pool(expected: &RgbaImage, actual: &RgbaImage) -> nv_flip::FlipPool {
 /// A heat map of where the images differ: FLIP's error through the magma color map; pixels
 /// over `threshold` that FLIP rates dim are painted red, so that a change of a few levels past
 /// the threshold cannot hide in the dark end of the map.
-pub fn heat_map(expected: &RgbaImage, actual: &RgbaImage, threshold: u8) -> Result<RgbaImage> {
+pub fn heat_map(expected: &RgbaImage, actual: &RgbaImage, threshold: u8) -> Result<RgbaImage, SizeMismatch> {
     compare(expected, actual, threshold)?; // size check
     let (w, h) = expected.dimensions();
     let colored = flip_map(expected, actual)
@@ -190,12 +195,4 @@ pub fn heat_map(expected: &RgbaImage, actual: &RgbaImage, threshold: u8) -> Resu
             Rgba([colored[i], colored[i + 1], colored[i + 2], 255])
         }
     }))
-}
-
-/// Reads a PNG (or any format `image` knows) as RGBA8; errors name the path.
-pub fn load_image(path: &Path) -> Result<RgbaImage> {
-    image::open(path).map(|i| i.to_rgba8()).map_err(|e| Error::Input {
-        path: path.to_path_buf(),
-        message: e.to_string(),
-    })
 }

@@ -1,5 +1,7 @@
 //! Geometry on the host: independent triangles with GL's per-vertex attributes.
 
+pub mod teapot;
+
 use glam::{Vec3, Vec4};
 
 /// One vertex as the vertex stage reads it (locations 0, 1, 2).

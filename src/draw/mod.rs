@@ -1,0 +1,3 @@
+//! Pipelines per lighting mode and specialization key, and the recording of draws.
+
+pub mod pipeline;

@@ -1,0 +1,108 @@
+//! The tools behind the `ffvk` command line (feature `tools`): the benchmark, the demo, the
+//! per-pixel explanation, regression runs and contact sheets. They print, read arguments and
+//! set environment variables; the core library does none of that.
+
+pub mod bench;
+pub mod demo;
+pub mod explain;
+#[cfg(feature = "osmesa")]
+pub mod gl_reference;
+pub mod regress;
+pub mod sheet;
+
+use std::path::PathBuf;
+
+/// Why a tool failed: an error of one of the layers below it, or of the tool itself.
+#[derive(Debug, thiserror::Error)]
+pub enum Error {
+    /// The renderer, the device or the GL state.
+    #[error(transparent)]
+    Core(#[from] crate::Error),
+
+    /// A PNG that could not be read or written.
+    #[error(transparent)]
+    Image(#[from] crate::images::ImageError),
+
+    /// Two images of different sizes.
+    #[error(transparent)]
+    Size(#[from] crate::images::compare::SizeMismatch),
+
+    /// A scene file (or its glTF) that could not be loaded. Boxed: scene errors are large.
+    #[error(transparent)]
+    Scene(Box<crate::scene::SceneError>),
+
+    /// A file or folder that could not be read.
+    #[error("cannot read {}: {source}", .path.display())]
+    Read { path: PathBuf, source: std::io::Error },
+
+    /// A file that could not be written.
+    #[error("cannot write {}: {source}", .path.display())]
+    Write { path: PathBuf, source: std::io::Error },
+
+    /// A benchmark report that could not be serialized.
+    #[error("cannot write {}: {source}", .path.display())]
+    Json {
+        path: PathBuf,
+        source: serde_json::Error,
+    },
+
+    /// A plot that could not be drawn (plotters reports its errors as text).
+    #[error("cannot draw the plot {}: {message}", .path.display())]
+    Plot { path: PathBuf, message: String },
+
+    /// Two images given for comparison that differ in size.
+    #[error("{} and {}: {source}", .expected.display(), .actual.display())]
+    Compare {
+        expected: PathBuf,
+        actual: PathBuf,
+        source: crate::images::compare::SizeMismatch,
+    },
+
+    /// A pixel asked for outside the scene's image.
+    #[error(
+        "{}: --pixel {},{} is outside the {}x{} image: expected x < {} and y < {}",
+        .path.display(), .pixel.0, .pixel.1, .size.0, .size.1, .size.0, .size.1
+    )]
+    PixelOutside {
+        path: PathBuf,
+        pixel: (u32, u32),
+        size: (u32, u32),
+    },
+
+    /// A path argument that names the wrong kind of thing.
+    #[error("{}: {problem}", .path.display())]
+    Path { path: PathBuf, problem: &'static str },
+
+    /// The label font is missing or unreadable.
+    #[error("cannot use the label font {}: {message} (install the Debian package fonts-dejavu-core)", .path.display())]
+    Font { path: PathBuf, message: String },
+
+    /// A benchmark that cannot run as asked.
+    #[error("benchmark: {0}")]
+    Bench(String),
+
+    /// Mesa's OpenGL through OSMesa (the `osmesa` feature's reference renderer).
+    #[error("OpenGL (OSMesa): {0}")]
+    Gl(String),
+}
+
+impl From<crate::scene::SceneError> for Error {
+    fn from(e: crate::scene::SceneError) -> Self {
+        Error::Scene(Box::new(e))
+    }
+}
+
+impl From<crate::error::MeshError> for Error {
+    fn from(e: crate::error::MeshError) -> Self {
+        Error::Core(e.into())
+    }
+}
+
+impl From<crate::gl::state::StateError> for Error {
+    fn from(e: crate::gl::state::StateError) -> Self {
+        Error::Core(e.into())
+    }
+}
+
+/// Result with the tools' [`Error`].
+pub type Result<T, E = Error> = std::result::Result<T, E>;

@@ -1,0 +1,351 @@
+//! Owned Vulkan objects: each value is created whole (never null and filled in later), holds
+//! an `Arc` of its device and destroys its handle in `Drop`. Whoever holds one must keep the
+//! GPU off it before dropping it (the renderer waits for its fence or the device).
+
+use std::sync::Arc;
+
+use ash::vk;
+
+use super::device::Device;
+use crate::error::{vk_error, Result};
+
+/// Declares a wrapper that owns one handle and frees it with `destroy`.
+macro_rules! owned {
+    ($(#[$doc:meta])* $name:ident($raw:ty) freed by $destroy:ident) => {
+        $(#[$doc])*
+        pub struct $name {
+            device: Arc<Device>,
+            raw: $raw,
+        }
+
+        impl $name {
+            /// The Vulkan handle; valid while `self` lives.
+            pub fn raw(&self) -> $raw {
+                self.raw
+            }
+
+            /// The device this object belongs to.
+            pub fn device(&self) -> &Arc<Device> {
+                &self.device
+            }
+        }
+
+        impl Drop for $name {
+            fn drop(&mut self) {
+                // SAFETY: the handle was created on this device and is destroyed once, here;
+                // owners drop it only when no pending command uses it (module docs).
+                unsafe { self.device.raw.$destroy(self.raw, None) }
+            }
+        }
+    };
+}
+
+owned!(
+    /// A shader module; needed only while pipelines are created from it.
+    ShaderModule(vk::ShaderModule) freed by destroy_shader_module
+);
+owned!(
+    /// A descriptor set layout.
+    DescriptorSetLayout(vk::DescriptorSetLayout) freed by destroy_descriptor_set_layout
+);
+owned!(
+    /// A pipeline layout.
+    PipelineLayout(vk::PipelineLayout) freed by destroy_pipeline_layout
+);
+owned!(
+    /// A pipeline cache.
+    PipelineCache(vk::PipelineCache) freed by destroy_pipeline_cache
+);
+owned!(
+    /// A graphics pipeline.
+    Pipeline(vk::Pipeline) freed by destroy_pipeline
+);
+owned!(
+    /// A fence, created unsignaled.
+    Fence(vk::Fence) freed by destroy_fence
+);
+owned!(
+    /// A query pool.
+    QueryPool(vk::QueryPool) freed by destroy_query_pool
+);
+owned!(
+    /// Device memory.
+    Memory(vk::DeviceMemory) freed by free_memory
+);
+owned!(
+    /// A buffer without its memory (see [`super::Buffer`] for one with).
+    RawBuffer(vk::Buffer) freed by destroy_buffer
+);
+owned!(
+    /// An image without its memory (see [`super::Image`] for one with).
+    RawImage(vk::Image) freed by destroy_image
+);
+owned!(
+    /// An image view.
+    ImageView(vk::ImageView) freed by destroy_image_view
+);
+
+impl ShaderModule {
+    /// A module from SPIR-V words.
+    pub fn new(device: &Arc<Device>, words: &[u32]) -> Result<Self> {
+        let info = vk::ShaderModuleCreateInfo::default().code(words);
+        // SAFETY: a valid create info on a live device; the words are glslang's SPIR-V.
+        let raw = unsafe { device.raw.create_shader_module(&info, None) }
+            .map_err(vk_error("vkCreateShaderModule"))?;
+        Ok(ShaderModule {
+            device: device.clone(),
+            raw,
+        })
+    }
+}
+
+impl DescriptorSetLayout {
+    /// A layout of `bindings`.
+    pub fn new(device: &Arc<Device>, bindings: &[vk::DescriptorSetLayoutBinding]) -> Result<Self> {
+        let info = vk::DescriptorSetLayoutCreateInfo::default().bindings(bindings);
+        // SAFETY: a valid create info on a live device.
+        let raw = unsafe { device.raw.create_descriptor_set_layout(&info, None) }
+            .map_err(vk_error("vkCreateDescriptorSetLayout"))?;
+        Ok(DescriptorSetLayout {
+            device: device.clone(),
+            raw,
+        })
+    }
+}
+
+impl PipelineLayout {
+    /// A pipeline layout of one descriptor set layout and no push constants.
+    pub fn new(device: &Arc<Device>, set_layout: &DescriptorSetLayout) -> Result<Self> {
+        let set_layouts = [set_layout.raw];
+        let info = vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts);
+        // SAFETY: a valid create info on a live device; the set layout is alive.
+        let raw = unsafe { device.raw.create_pipeline_layout(&info, None) }
+            .map_err(vk_error("vkCreatePipelineLayout"))?;
+        Ok(PipelineLayout {
+            device: device.clone(),
+            raw,
+        })
+    }
+}
+
+impl PipelineCache {
+    /// An empty pipeline cache.
+    pub fn new(device: &Arc<Device>) -> Result<Self> {
+        let info = vk::PipelineCacheCreateInfo::default();
+        // SAFETY: a valid create info on a live device.
+        let raw = unsafe { device.raw.create_pipeline_cache(&info, None) }
+            .map_err(vk_error("vkCreatePipelineCache"))?;
+        Ok(PipelineCache {
+            device: device.clone(),
+            raw,
+        })
+    }
+}
+
+impl Pipeline {
+    /// One graphics pipeline from `info`.
+    pub fn graphics(
+        device: &Arc<Device>,
+        cache: &PipelineCache,
+        info: &vk::GraphicsPipelineCreateInfo,
+    ) -> Result<Self> {
+        // SAFETY: the caller's create info points at data alive for this call; the cache
+        // belongs to this device.
+        let created = unsafe {
+            device
+                .raw
+                .create_graphics_pipelines(cache.raw, std::slice::from_ref(info), None)
+        };
+        let pipelines = created.map_err(|(pipelines, e)| {
+            for p in pipelines.into_iter().filter(|&p| p != vk::Pipeline::null()) {
+                // SAFETY: a pipeline this failed call still created; nothing uses it.
+                unsafe { device.raw.destroy_pipeline(p, None) };
+            }
+            vk_error("vkCreateGraphicsPipelines")(e)
+        })?;
+        Ok(Pipeline {
+            device: device.clone(),
+            raw: pipelines[0],
+        })
+    }
+}
+
+impl Fence {
+    /// An unsignaled fence.
+    pub fn new(device: &Arc<Device>) -> Result<Self> {
+        // SAFETY: a valid create info on a live device.
+        let raw = unsafe { device.raw.create_fence(&vk::FenceCreateInfo::default(), None) }
+            .map_err(vk_error("vkCreateFence"))?;
+        Ok(Fence {
+            device: device.clone(),
+            raw,
+        })
+    }
+}
+
+impl QueryPool {
+    /// A pool of `info`'s queries.
+    pub fn new(device: &Arc<Device>, info: &vk::QueryPoolCreateInfo) -> Result<Self> {
+        // SAFETY: a valid create info on a live device; the caller enabled what it needs.
+        let raw =
+            unsafe { device.raw.create_query_pool(info, None) }.map_err(vk_error("vkCreateQueryPool"))?;
+        Ok(QueryPool {
+            device: device.clone(),
+            raw,
+        })
+    }
+}
+
+impl Memory {
+    /// `size` bytes of memory type `type_index`.
+    pub fn allocate(device: &Arc<Device>, size: u64, type_index: u32) -> Result<Self> {
+        let info = vk::MemoryAllocateInfo::default()
+            .allocation_size(size)
+            .memory_type_index(type_index);
+        // SAFETY: a valid allocate info on a live device.
+        let raw = unsafe { device.raw.allocate_memory(&info, None) }.map_err(vk_error("vkAllocateMemory"))?;
+        Ok(Memory {
+            device: device.clone(),
+            raw,
+        })
+    }
+}
+
+impl RawBuffer {
+    /// A buffer of `info`, not yet bound to memory.
+    pub fn new(device: &Arc<Device>, info: &vk::BufferCreateInfo) -> Result<Self> {
+        // SAFETY: a valid create info on a live device.
+        let raw = unsafe { device.raw.create_buffer(info, None) }.map_err(vk_error("vkCreateBuffer"))?;
+        Ok(RawBuffer {
+            device: device.clone(),
+            raw,
+        })
+    }
+}
+
+impl RawImage {
+    /// An image of `info`, not yet bound to memory.
+    pub fn new(device: &Arc<Device>, info: &vk::ImageCreateInfo) -> Result<Self> {
+        // SAFETY: a valid create info on a live device.
+        let raw = unsafe { device.raw.create_image(info, None) }.map_err(vk_error("vkCreateImage"))?;
+        Ok(RawImage {
+            device: device.clone(),
+            raw,
+        })
+    }
+}
+
+impl ImageView {
+    /// A view of `info`, whose image is bound to memory.
+    pub fn new(device: &Arc<Device>, info: &vk::ImageViewCreateInfo) -> Result<Self> {
+        // SAFETY: a valid create info on a live device; the image it names is bound.
+        let raw =
+            unsafe { device.raw.create_image_view(info, None) }.map_err(vk_error("vkCreateImageView"))?;
+        Ok(ImageView {
+            device: device.clone(),
+            raw,
+        })
+    }
+}
+
+/// A descriptor pool and the one set allocated from it (freed with the pool).
+pub struct DescriptorPool {
+    device: Arc<Device>,
+    raw: vk::DescriptorPool,
+    set: vk::DescriptorSet,
+}
+
+impl DescriptorPool {
+    /// A pool of `sizes` with one set of `layout` allocated from it.
+    pub fn with_one_set(
+        device: &Arc<Device>,
+        sizes: &[vk::DescriptorPoolSize],
+        layout: &DescriptorSetLayout,
+    ) -> Result<Self> {
+        let info = vk::DescriptorPoolCreateInfo::default()
+            .max_sets(1)
+            .pool_sizes(sizes);
+        // SAFETY: a valid create info on a live device.
+        let raw = unsafe { device.raw.create_descriptor_pool(&info, None) }
+            .map_err(vk_error("vkCreateDescriptorPool"))?;
+        let layouts = [layout.raw];
+        let alloc = vk::DescriptorSetAllocateInfo::default()
+            .descriptor_pool(raw)
+            .set_layouts(&layouts);
+        // SAFETY: the pool was just created with room for this set.
+        match unsafe { device.raw.allocate_descriptor_sets(&alloc) } {
+            Ok(sets) => Ok(DescriptorPool {
+                device: device.clone(),
+                raw,
+                set: sets[0],
+            }),
+            Err(e) => {
+                // SAFETY: the pool is unused; nothing was allocated from it.
+                unsafe { device.raw.destroy_descriptor_pool(raw, None) };
+                Err(vk_error("vkAllocateDescriptorSets")(e))
+            }
+        }
+    }
+
+    /// The set allocated from this pool.
+    pub fn set(&self) -> vk::DescriptorSet {
+        self.set
+    }
+}
+
+impl Drop for DescriptorPool {
+    fn drop(&mut self) {
+        // SAFETY: created on this device, destroyed once; freeing the pool frees its set, which
+        // no pending command uses (module docs).
+        unsafe { self.device.raw.destroy_descriptor_pool(self.raw, None) }
+    }
+}
+
+/// A command pool whose buffers may be reset one by one, and one primary buffer from it.
+pub struct CommandPool {
+    device: Arc<Device>,
+    raw: vk::CommandPool,
+    buffer: vk::CommandBuffer,
+}
+
+impl CommandPool {
+    /// A pool for `queue_family` with one primary command buffer.
+    pub fn with_one_buffer(device: &Arc<Device>, queue_family: u32) -> Result<Self> {
+        let info = vk::CommandPoolCreateInfo::default()
+            .queue_family_index(queue_family)
+            .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER);
+        // SAFETY: a valid create info on a live device.
+        let raw = unsafe { device.raw.create_command_pool(&info, None) }
+            .map_err(vk_error("vkCreateCommandPool"))?;
+        let alloc = vk::CommandBufferAllocateInfo::default()
+            .command_pool(raw)
+            .level(vk::CommandBufferLevel::PRIMARY)
+            .command_buffer_count(1);
+        // SAFETY: the pool was just created on this device.
+        match unsafe { device.raw.allocate_command_buffers(&alloc) } {
+            Ok(buffers) => Ok(CommandPool {
+                device: device.clone(),
+                raw,
+                buffer: buffers[0],
+            }),
+            Err(e) => {
+                // SAFETY: the pool is unused; nothing was allocated from it.
+                unsafe { device.raw.destroy_command_pool(raw, None) };
+                Err(vk_error("vkAllocateCommandBuffers")(e))
+            }
+        }
+    }
+
+    /// The command buffer allocated from this pool.
+    pub fn buffer(&self) -> vk::CommandBuffer {
+        self.buffer
+    }
+}
+
+impl Drop for CommandPool {
+    fn drop(&mut self) {
+        // SAFETY: created on this device, destroyed once; its command buffer is not pending
+        // (module docs) and is freed with the pool.
+        unsafe { self.device.raw.destroy_command_pool(self.raw, None) }
+    }
+}
