@@ -11,19 +11,27 @@
 //! and glTF), `tools` (what the `ffvk` command runs: bench, demo, explain, regression runs;
 //! on by default) and `osmesa` (Mesa's GL as a reference renderer).
 
+#[warn(missing_docs)]
 pub mod draw;
+#[warn(missing_docs)]
 pub mod error;
+#[warn(missing_docs)]
 pub mod gl;
+#[warn(missing_docs)]
 pub mod gpu;
 #[cfg(feature = "images")]
 pub mod images;
+#[warn(missing_docs)]
 pub mod mesh;
+#[warn(missing_docs)]
 pub mod reference;
+#[warn(missing_docs)]
 pub mod renderer;
 #[cfg(feature = "scene")]
 pub mod scene;
 #[cfg(feature = "tools")]
 pub mod tools;
+#[warn(missing_docs)]
 pub mod vk;
 
 pub use draw::pipeline::Specialize;
