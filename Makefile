@@ -20,3 +20,5 @@ demo: deps
 
 test: test-deps
 	$(CARGO) test --all-targets
+	$(CARGO) build --lib --no-default-features
+	bash scripts/check-dependent.sh
