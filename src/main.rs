@@ -125,6 +125,12 @@ fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
 
 fn options(cli: &Cli) -> RendererOptions {
     let env_validate = std::env::var_os("FFVK_VALIDATION").is_some_and(|v| v != "0");
+    if (cli.validate || env_validate) && !ffvk::vk::instance::validation_layer_installed().unwrap_or(true) {
+        eprintln!(
+            "warning: {}; running without validation",
+            ffvk::Error::NoValidationLayer
+        );
+    }
     RendererOptions {
         device: cli.device.clone(),
         validation: if cli.validate || env_validate {

@@ -16,7 +16,8 @@ pub enum Validation {
     /// No validation layer.
     #[default]
     Off,
-    /// Use it when installed; warn on stderr when it is not.
+    /// Use it when installed, else run without it ([`crate::vk::DeviceInfo::validation`] tells
+    /// which; [`validation_layer_installed`] asks beforehand).
     IfPresent,
     /// Fail with [`Error::NoValidationLayer`] when it is not installed (tests).
     Required,
@@ -74,6 +75,19 @@ pub struct Instance {
     validation_enabled: bool,
 }
 
+/// Whether `VK_LAYER_KHRONOS_validation` is installed (asks the Vulkan loader).
+pub fn validation_layer_installed() -> Result<bool> {
+    // SAFETY: loading the system's Vulkan loader runs its initialisers; nothing else is
+    // loaded alongside.
+    let entry = unsafe { ash::Entry::load() }.map_err(|e| Error::NoLoader(e.to_string()))?;
+    // SAFETY: entry is a loaded loader; a null layer name asks for instance layers.
+    let layers = unsafe { entry.enumerate_instance_layer_properties() }
+        .map_err(vk_error("vkEnumerateInstanceLayerProperties"))?;
+    Ok(layers
+        .iter()
+        .any(|l| l.layer_name_as_c_str().is_ok_and(|name| name == VALIDATION_LAYER)))
+}
+
 impl Instance {
     pub fn new(validation: Validation) -> Result<Arc<Self>> {
         // SAFETY: loading the system's Vulkan loader runs its initialisers; that is the
@@ -89,13 +103,7 @@ impl Instance {
         let validation_enabled = match (validation, has_layer) {
             (Validation::Off, _) => false,
             (_, true) => true,
-            (Validation::IfPresent, false) => {
-                eprintln!(
-                    "warning: {}; running without validation",
-                    Error::NoValidationLayer
-                );
-                false
-            }
+            (Validation::IfPresent, false) => false,
             (Validation::Required, false) => return Err(Error::NoValidationLayer),
         };
 
