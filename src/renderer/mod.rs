@@ -6,6 +6,7 @@ use ash::vk;
 use glam::{Mat4, Vec4};
 
 use crate::draw::pipeline::{Pipelines, Specialize, COLOR_FORMAT, DEPTH_FORMAT, MAX_AUTO_VARIANTS};
+use crate::draw::record::{record_indexed, IndexedDraw};
 use crate::error::{vk_error, Error, MeshError, Result};
 use crate::gl::state::LightingState;
 use crate::gpu::layout::{DrawBlock, SpecKey};
@@ -565,45 +566,53 @@ impl Renderer {
             unsafe { vkd.cmd_reset_query_pool(cmd, pool, 0, 1) };
         }
 
-        // SAFETY: recording into a command buffer in the recording state; every handle
-        // belongs to this device and outlives the submission (render waits for it).
+        // SAFETY (this block and the next ones of this function): recording into a command
+        // buffer in the recording state; every handle belongs to this device and outlives the
+        // submission (render waits for it).
         unsafe {
             vkd.cmd_pipeline_barrier2(
                 cmd,
                 &vk::DependencyInfo::default().image_memory_barriers(&to_attachment),
-            );
-            if let Some(pool) = statistics {
-                vkd.cmd_begin_query(cmd, pool, 0, vk::QueryControlFlags::empty());
-            }
-            vkd.cmd_begin_rendering(cmd, &rendering);
+            )
+        };
+        if let Some(pool) = statistics {
+            // SAFETY: as above; the query was reset before this, outside the pass.
+            unsafe { vkd.cmd_begin_query(cmd, pool, 0, vk::QueryControlFlags::empty()) };
+        }
+        // SAFETY: as above; the attachments are in the layouts the barrier set.
+        unsafe { vkd.cmd_begin_rendering(cmd, &rendering) };
+        // SAFETY: as above; these states are dynamic in every pipeline.
+        unsafe {
             vkd.cmd_set_viewport(cmd, 0, &[viewport]);
             vkd.cmd_set_scissor(cmd, 0, &[area]);
             vkd.cmd_set_depth_test_enable(cmd, frame.depth_test);
             vkd.cmd_set_depth_write_enable(cmd, frame.depth_test);
-            for (i, (draw, &pipeline)) in frame.draws.iter().zip(pipelines).enumerate() {
-                vkd.cmd_bind_pipeline(cmd, vk::PipelineBindPoint::GRAPHICS, pipeline);
-                let offset = (i as u64 * self.uniform_stride) as u32;
-                vkd.cmd_bind_descriptor_sets(
-                    cmd,
-                    vk::PipelineBindPoint::GRAPHICS,
-                    self.pipelines.layout(),
-                    0,
-                    &[self.descriptors.set()],
-                    &[offset],
-                );
-                vkd.cmd_bind_vertex_buffers(cmd, 0, &[draw.mesh.vertices.raw()], &[0]);
-                vkd.cmd_bind_index_buffer(cmd, draw.mesh.indices.raw(), 0, vk::IndexType::UINT32);
-                vkd.cmd_draw_indexed(cmd, draw.mesh.index_count, 1, 0, 0, 0);
-            }
-            vkd.cmd_end_rendering(cmd);
-            if let Some(pool) = statistics {
-                vkd.cmd_end_query(cmd, pool, 0);
-            }
-            if let Some(pool) = timestamps {
-                // After every command of the pass has completed (on lavapipe: a flush that
-                // waits for the rasterizer threads).
-                vkd.cmd_write_timestamp2(cmd, vk::PipelineStageFlags2::ALL_COMMANDS, pool, 1);
-            }
+        }
+        for (i, (draw, &pipeline)) in frame.draws.iter().zip(pipelines).enumerate() {
+            let draw = IndexedDraw {
+                pipeline,
+                layout: self.pipelines.layout(),
+                set: self.descriptors.set(),
+                uniform_offset: (i as u64 * self.uniform_stride) as u32,
+                vertices: draw.mesh.vertices.raw(),
+                indices: draw.mesh.indices.raw(),
+                index_count: draw.mesh.index_count,
+            };
+            // SAFETY: inside the rendering pass begun above, whose formats are the pipelines';
+            // the mesh and uniform buffers outlive the submission.
+            unsafe { record_indexed(vkd, cmd, &draw) };
+        }
+        // SAFETY: as above; the pass begun above ends here.
+        unsafe { vkd.cmd_end_rendering(cmd) };
+        if let Some(pool) = statistics {
+            // SAFETY: as above; ends the query begun before the pass.
+            unsafe { vkd.cmd_end_query(cmd, pool, 0) };
+        }
+        if let Some(pool) = timestamps {
+            // After every command of the pass has completed (on lavapipe: a flush that waits
+            // for the rasterizer threads).
+            // SAFETY: as above; query 1 was reset with query 0.
+            unsafe { vkd.cmd_write_timestamp2(cmd, vk::PipelineStageFlags2::ALL_COMMANDS, pool, 1) };
         }
         if !pass.readback {
             // SAFETY: the command buffer is in the recording state.
@@ -645,26 +654,33 @@ impl Renderer {
             .buffer(targets.readback.raw())
             .offset(0)
             .size(vk::WHOLE_SIZE)];
-        // SAFETY: as above; the image is in TRANSFER_SRC_OPTIMAL after the barrier.
+        // SAFETY: as above; moves the color image to TRANSFER_SRC_OPTIMAL after the pass.
         unsafe {
             vkd.cmd_pipeline_barrier2(
                 cmd,
                 &vk::DependencyInfo::default().image_memory_barriers(&to_transfer),
-            );
+            )
+        };
+        // SAFETY: as above; the image is in TRANSFER_SRC_OPTIMAL and the readback buffer holds
+        // width * height * 4 bytes.
+        unsafe {
             vkd.cmd_copy_image_to_buffer(
                 cmd,
                 targets.color.raw(),
                 vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
                 targets.readback.raw(),
                 &[region],
-            );
+            )
+        };
+        // SAFETY: as above; makes the copy visible to the host read after the fence.
+        unsafe {
             vkd.cmd_pipeline_barrier2(
                 cmd,
                 &vk::DependencyInfo::default().buffer_memory_barriers(&to_host),
-            );
-            vkd.end_command_buffer(cmd)
-                .map_err(vk_error("vkEndCommandBuffer"))?;
-        }
+            )
+        };
+        // SAFETY: as above; recording is complete.
+        unsafe { vkd.end_command_buffer(cmd) }.map_err(vk_error("vkEndCommandBuffer"))?;
         Ok(())
     }
 
