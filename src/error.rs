@@ -8,36 +8,83 @@ use crate::gl::state::StateError;
 /// Everything that can go wrong in ffvk.
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
+    /// `libvulkan.so.1` could not be opened, so no Vulkan call is possible on this machine;
+    /// the string is the dynamic loader's reason.
     #[error("cannot load the Vulkan loader (libvulkan.so.1): {0}; install the Debian package libvulkan1")]
     NoLoader(String),
 
     #[error("no Vulkan device{requested}: available devices: {available}; install mesa-vulkan-drivers for lavapipe")]
-    NoDevice { requested: String, available: String },
+    /// No physical device matched: there is none, or none has the requested name in it.
+    /// Retrying with a name from `available` (or after installing lavapipe) can succeed.
+    NoDevice {
+        /// ` named "…"` (leading space included) when a name was asked for, else empty: it is
+        /// spliced into the message as is.
+        requested: String,
+        /// Every enumerated device name, comma-separated, or `none`.
+        available: String,
+    },
 
+    /// The chosen device lacks something ffvk cannot work without: Vulkan 1.3,
+    /// `dynamicRendering` and `synchronization2`, a graphics queue,
+    /// `VK_EXT_provoking_vertex` with `provokingVertexLast`, or a suitable memory type; or an
+    /// embedded shader variant is absent or not valid SPIR-V (a build defect). The string
+    /// names what is missing. Another device may work; retrying this one will not.
     #[error("the device lacks {0}, which ffvk needs")]
     MissingFeature(String),
 
+    /// `VK_ERROR_DEVICE_LOST` from the named call, or a frame asked of a renderer whose
+    /// earlier submission failed. That renderer is unusable from then on: make a new one.
     #[error("the Vulkan device was lost during {0}")]
     DeviceLost(&'static str),
 
     #[error("out of {kind} memory during {call}")]
-    OutOfMemory { kind: &'static str, call: &'static str },
+    /// `VK_ERROR_OUT_OF_HOST_MEMORY` or `VK_ERROR_OUT_OF_DEVICE_MEMORY`: smaller images or
+    /// meshes may fit.
+    OutOfMemory {
+        /// `"host"` or `"device"`.
+        kind: &'static str,
+        /// The Vulkan entry point that failed, e.g. `"vkAllocateMemory"`.
+        call: &'static str,
+    },
 
     #[error("{call} failed: {result}")]
-    Vulkan { call: &'static str, result: vk::Result },
+    /// Any other failing `VkResult`: unexpected, and not specific to the caller's input.
+    Vulkan {
+        /// The Vulkan entry point that failed.
+        call: &'static str,
+        /// What it returned.
+        result: vk::Result,
+    },
 
     #[error("image size {width}x{height} is invalid: expected each side in 1..={max} (the device's maxImageDimension2D)")]
-    InvalidSize { width: u32, height: u32, max: u32 },
+    /// A frame's size is 0 or beyond the device's limit; nothing was drawn.
+    InvalidSize {
+        /// Requested width, in pixels.
+        width: u32,
+        /// Requested height, in pixels.
+        height: u32,
+        /// The device's `maxImageDimension2D`, the largest side allowed.
+        max: u32,
+    },
 
+    /// [`Validation::Required`](crate::vk::Validation::Required) was asked for and the
+    /// layer is not installed.
     #[error("the validation layer VK_LAYER_KHRONOS_validation is not installed (Debian package vulkan-validationlayers)")]
     NoValidationLayer,
 
+    /// The validation layer reported errors, one message per entry, while the renderer was
+    /// made or a frame was drawn: a bug in ffvk's use of Vulkan, reported instead of the
+    /// frame's pixels. Warnings never cause it.
     #[error("the validation layer reported {} error(s):\n{}", .0.len(), .0.join("\n"))]
     Validation(Vec<String>),
 
+    /// A mesh was rejected before anything was uploaded or drawn.
     #[error("invalid mesh: {0}")]
     Mesh(#[from] MeshError),
 
+    /// A lighting state that GL would reject (`INVALID_VALUE`), or one that cannot be drawn:
+    /// a singular modelview with lighting on, or an enabled positional light whose three
+    /// attenuation factors are all 0.
     #[error(transparent)]
     State(#[from] StateError),
 }
@@ -46,22 +93,40 @@ pub enum Error {
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum MeshError {
     #[error("{count} indices is not a whole number of triangles: expected a multiple of 3")]
-    NotTriangles { count: usize },
+    /// The index count is not a multiple of 3 (meshes are independent triangles).
+    NotTriangles {
+        /// The number of indices given.
+        count: usize,
+    },
 
     #[error("index {at} is {index}: expected a vertex index below {vertex_count} (the vertex count)")]
+    /// An index points past the last vertex.
     IndexOutOfRange {
+        /// Position of the first bad index in the index list.
         at: usize,
+        /// Its value.
         index: u32,
+        /// The number of vertices; valid indices are below it.
         vertex_count: usize,
     },
 
     #[error(
         "draw {draw}: the mesh was uploaded by another renderer: expected a mesh from this renderer's upload"
     )]
-    ForeignMesh { draw: usize },
+    /// A [`Mesh`](crate::Mesh) lives on another renderer's device; upload it again here.
+    ForeignMesh {
+        /// Position of the offending draw in [`Frame::draws`](crate::Frame::draws).
+        draw: usize,
+    },
 
     #[error("teapot tessellation level {level} is out of range: expected 1..={max}")]
-    TeapotLevel { level: u32, max: u32 },
+    /// The teapot's tessellation level is 0 or above the maximum.
+    TeapotLevel {
+        /// The level asked for.
+        level: u32,
+        /// [`MAX_LEVEL`](crate::mesh::teapot::MAX_LEVEL), the largest accepted.
+        max: u32,
+    },
 }
 
 /// Result with ffvk's [`Error`].

@@ -3,9 +3,9 @@
 //! The core (always built) follows the data: GL state ([`gl`]) → its GPU layout and the
 //! SPIR-V of the shaders ([`gpu`]) → pipelines and draw recording ([`draw`]) over an owned
 //! Vulkan layer ([`vk`]) → the offscreen renderer ([`renderer`]); beside them the CPU
-//! reference of the same equation ([`reference`]) and host meshes ([`mesh`]). It depends on
-//! ash, glam, bytemuck and thiserror only, never prints, reads arguments or sets environment
-//! variables.
+//! reference of the same equation ([`reference`](mod@reference)) and host meshes ([`mesh`]).
+//! It depends on ash, glam, bytemuck and thiserror only, never prints, reads arguments or sets
+//! environment variables.
 //!
 //! Features add the rest: `images` (PNG files and image comparison), `scene` (TOML scene files
 //! and glTF), `tools` (what the `ffvk` command runs: bench, demo, explain, regression runs;

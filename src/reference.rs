@@ -10,8 +10,13 @@ use crate::mesh::Vertex;
 /// One light's share of the sum, before clamping (what `ffvk explain` prints).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LightTerms {
+    /// Distance attenuation: 1 / (k0 + k1·d + k2·d²) for a positional light (d the eye-space
+    /// distance), 1 for a directional one. Not clamped, as in GL.
     pub att_i: f64,
+    /// Spotlight factor: (P_pliV ⊙ ŝ_dli)^s_rli inside the cone, 0 outside it, 1 when
+    /// c_rli = 180.
     pub spot_i: f64,
+    /// 1 when n · VP_pli > 0, else 0: a light behind the surface leaves no highlight.
     pub f_i: f64,
     /// a_cm * a_cli
     pub ambient: DVec3,
@@ -28,6 +33,7 @@ pub struct Lit {
     pub emission: DVec3,
     /// a_cm * a_cs
     pub scene_ambient: DVec3,
+    /// One entry per enabled light, in index order.
     pub lights: Vec<LightTerms>,
     /// Clamped to [0, 1].
     pub c_pri: DVec4,
@@ -42,6 +48,7 @@ impl Lit {
     }
 }
 
+/// GL's color sum (section 3.9): RGB clamp(c_pri + c_sec) to [0, 1], alpha from c_pri.
 pub fn color_sum(c_pri: DVec4, c_sec: DVec4) -> DVec4 {
     (c_pri.truncate() + c_sec.truncate())
         .clamp(DVec3::ZERO, DVec3::ONE)
@@ -200,12 +207,18 @@ pub fn eye_normal(state: &LightingState, modelview: Mat4, n_object: DVec3) -> DV
 /// A vertex after the vertex stage: eye position, clip position (GL), normal and color.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct EyeVertex {
+    /// Eye-space position: the modelview times (x, y, z, 1).
     pub eye: DVec4,
+    /// GL clip coordinates (z in [-w, w]), before ffvk's conversion to Vulkan's.
     pub clip: DVec4,
+    /// Eye-space normal from [`eye_normal`]; renormalized only when NORMALIZE is on, so a
+    /// scaled modelview shows in its length, as in GL.
     pub normal: DVec3,
+    /// The vertex's color (GL's current color), not yet clamped.
     pub color: DVec4,
 }
 
+/// Runs the vertex stage on the CPU for object-space vertex `v`, in double precision.
 pub fn transform(state: &LightingState, modelview: Mat4, projection: Mat4, v: &Vertex) -> EyeVertex {
     let eye = modelview.as_dmat4() * DVec3::from(v.position.map(f64::from)).extend(1.0);
     EyeVertex {

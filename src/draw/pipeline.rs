@@ -14,7 +14,10 @@ use crate::mesh::Vertex;
 use crate::vk::objects::{DescriptorSetLayout, Pipeline, PipelineCache, PipelineLayout, ShaderModule};
 use crate::vk::Device;
 
+/// The color image's format: 8 bits per channel, linear UNORM (no sRGB encoding), so a
+/// color component c in [0, 1] is stored as c × 255, as in a default GL framebuffer.
 pub const COLOR_FORMAT: vk::Format = vk::Format::R8G8B8A8_UNORM;
+/// The depth buffer's format: 32-bit float, cleared to 1 and tested with LESS.
 pub const DEPTH_FORMAT: vk::Format = vk::Format::D32_SFLOAT;
 
 /// Whether a pipeline specialized by `key` needs only the front primary color between the
@@ -67,8 +70,10 @@ pub enum Specialize {
 pub const MAX_AUTO_VARIANTS: usize = 64;
 
 impl Specialize {
+    /// Every policy, in declaration order.
     pub const ALL: [Specialize; 3] = [Specialize::Auto, Specialize::Always, Specialize::Never];
 
+    /// Lowercase name (`auto`, `always`, `never`), the one [`str::parse`] accepts.
     pub fn name(self) -> &'static str {
         match self {
             Specialize::Auto => "auto",

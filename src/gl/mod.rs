@@ -1,2 +1,5 @@
+//! The GL side: the fixed-function lighting state with its GL entry points ([`state`]) and
+//! the classic named materials ([`presets`]). Nothing here touches Vulkan.
+
 pub mod presets;
 pub mod state;

@@ -18,46 +18,75 @@ use glam::{Mat3, Mat4, Vec3, Vec4};
 /// Lights ffvk evaluates per draw (GL_MAX_LIGHTS). GL requires at least 8.
 pub const MAX_LIGHTS: usize = 16;
 
-/// A value GL would reject.
+/// A value GL would reject. A [`GlState`] entry point that returns it changes nothing.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum StateError {
+    /// GL's `INVALID_VALUE`: a finite value outside the parameter's range. Also used for a
+    /// state that is in range but cannot be drawn (see [`DrawBlock::new`]).
+    ///
+    /// [`DrawBlock::new`]: crate::gpu::layout::DrawBlock::new
     #[error("{parameter} = {value} is out of range: expected {valid}")]
     OutOfRange {
+        /// The GL name of the parameter, e.g. `"GL_SPOT_CUTOFF"`.
         parameter: &'static str,
+        /// The rejected value.
         value: f32,
+        /// The valid range, in words, e.g. `"a value in [0, 90] or exactly 180"`.
         valid: &'static str,
     },
+    /// A NaN or infinite component. GL leaves their effect unspecified; ffvk refuses them so
+    /// they cannot spread NaN through the lighting.
     #[error("{parameter} = {value} is not a finite number: expected {valid}")]
     NotFinite {
+        /// The GL name of the parameter (or `"modelview matrix"`).
         parameter: &'static str,
+        /// The first non-finite component found.
         value: f32,
+        /// What would have been accepted, in words.
         valid: &'static str,
     },
+    /// A light index at or past [`MAX_LIGHTS`] (GL's `INVALID_ENUM` for `GL_LIGHTi`).
     #[error("light index {index} is out of range: expected 0..{max} (GL_MAX_LIGHTS = {max})")]
-    LightIndex { index: usize, max: usize },
+    LightIndex {
+        /// The index given.
+        index: usize,
+        /// [`MAX_LIGHTS`]; valid indices are below it.
+        max: usize,
+    },
 }
 
 /// One light source's state, in eye coordinates as GL stores it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Light {
+    /// `GL_LIGHTi` (glEnable); false for every light initially, light 0 included. A disabled
+    /// light contributes nothing.
     pub enabled: bool,
-    /// a_cli
+    /// a_cli, `GL_AMBIENT`: default (0, 0, 0, 1). Components are unrestricted (negative or
+    /// above 1 allowed); only RGB enters the equation.
     pub ambient: Vec4,
-    /// d_cli
+    /// d_cli, `GL_DIFFUSE`: default (1, 1, 1, 1) for light 0, (0, 0, 0, 1) for the others.
     pub diffuse: Vec4,
-    /// s_cli
+    /// s_cli, `GL_SPECULAR`: default (1, 1, 1, 1) for light 0, (0, 0, 0, 1) for the others.
     pub specular: Vec4,
-    /// P_pli, eye space (already transformed by the modelview at specification time).
+    /// P_pli, `GL_POSITION`, homogeneous, eye space (already transformed by the modelview at
+    /// specification time). w = 0: a directional light from direction (x, y, z), never
+    /// attenuated; w ≠ 0: a positional light at (x, y, z) / w. Default (0, 0, 1, 0).
     pub position: Vec4,
-    /// s_dli, eye space (transformed by the upper 3x3 of the modelview at specification time).
+    /// s_dli, `GL_SPOT_DIRECTION`, eye space (transformed by the upper 3x3 of the modelview
+    /// at specification time); any length, normalized where used. Default (0, 0, -1).
     pub spot_direction: Vec3,
-    /// s_rli, in [0, 128].
+    /// s_rli, `GL_SPOT_EXPONENT`, in [0, 128]; default 0 (uniform cone, with 0^0 = 1).
     pub spot_exponent: f32,
-    /// c_rli in degrees, in [0, 90] or exactly 180.
+    /// c_rli, `GL_SPOT_CUTOFF`, the cone's half-angle in degrees, in [0, 90] or exactly 180;
+    /// default 180, which turns the spot off (spot_i = 1).
     pub spot_cutoff: f32,
-    /// k0, k1, k2, each >= 0.
+    /// k0, `GL_CONSTANT_ATTENUATION`, >= 0; default 1. att_i = 1 / (k0 + k1·d + k2·d²), d
+    /// the eye-space distance to the light, applies only when `position.w != 0`; drawing
+    /// fails if an enabled positional light has k0 + k1 + k2 = 0.
     pub constant_attenuation: f32,
+    /// k1, `GL_LINEAR_ATTENUATION`, the factor of d, >= 0; default 0.
     pub linear_attenuation: f32,
+    /// k2, `GL_QUADRATIC_ATTENUATION`, the factor of d², >= 0; default 0.
     pub quadratic_attenuation: f32,
 }
 
@@ -88,15 +117,15 @@ impl Light {
 /// Material state of one face.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Material {
-    /// a_cm
+    /// a_cm, `GL_AMBIENT`: default (0.2, 0.2, 0.2, 1). Components are unrestricted.
     pub ambient: Vec4,
-    /// d_cm
+    /// d_cm, `GL_DIFFUSE`: default (0.8, 0.8, 0.8, 1). Its alpha is the lit color's alpha.
     pub diffuse: Vec4,
-    /// s_cm
+    /// s_cm, `GL_SPECULAR`: default (0, 0, 0, 1), so no highlight until it is set.
     pub specular: Vec4,
-    /// e_cm
+    /// e_cm, `GL_EMISSION`: default (0, 0, 0, 1); added unlit and unattenuated.
     pub emission: Vec4,
-    /// s_rm, in [0, 128].
+    /// s_rm, `GL_SHININESS`, the specular exponent, in [0, 128]; default 0 (with 0^0 = 1).
     pub shininess: f32,
 }
 
@@ -128,24 +157,31 @@ impl Material {
     }
 }
 
-/// LIGHT_MODEL_COLOR_CONTROL.
+/// c_es, `GL_LIGHT_MODEL_COLOR_CONTROL`: where the specular term goes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum ColorControl {
+    /// `GL_SINGLE_COLOR` (the default): specular is part of c_pri; c_sec is (0, 0, 0, 1).
     #[default]
     SingleColor,
+    /// `GL_SEPARATE_SPECULAR_COLOR`: specular goes to c_sec, which GL adds after texturing.
+    /// ffvk has no textures, so here only the clamping differs: each color is clamped before
+    /// the color sum.
     SeparateSpecularColor,
 }
 
 /// Light-model state.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LightModel {
-    /// a_cs
+    /// a_cs, `GL_LIGHT_MODEL_AMBIENT`, scaled by a_cm for every lit point even with no light
+    /// enabled; default (0.2, 0.2, 0.2, 1).
     pub ambient: Vec4,
-    /// v_bs
+    /// v_bs, `GL_LIGHT_MODEL_LOCAL_VIEWER`; default false: the viewer is at infinity along +z
+    /// and h_i uses (0, 0, 1) instead of the direction to the eye.
     pub local_viewer: bool,
-    /// t_bs
+    /// t_bs, `GL_LIGHT_MODEL_TWO_SIDE`; default false. When true, back faces are lit with the
+    /// back material and the negated normal.
     pub two_side: bool,
-    /// c_es
+    /// c_es, `GL_LIGHT_MODEL_COLOR_CONTROL`; default [`ColorControl::SingleColor`].
     pub color_control: ColorControl,
 }
 
@@ -163,16 +199,21 @@ impl Default for LightModel {
 /// A face selector for glMaterial and glColorMaterial.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Face {
+    /// `GL_FRONT`.
     Front,
+    /// `GL_BACK`: the back material, which lights only with two-sided lighting on.
     Back,
+    /// `GL_FRONT_AND_BACK`, glColorMaterial's initial face.
     #[default]
     FrontAndBack,
 }
 
 impl Face {
+    /// Whether the selector affects the front material (`GL_FRONT` or `GL_FRONT_AND_BACK`).
     pub fn includes_front(self) -> bool {
         matches!(self, Face::Front | Face::FrontAndBack)
     }
+    /// Whether the selector affects the back material (`GL_BACK` or `GL_FRONT_AND_BACK`).
     pub fn includes_back(self) -> bool {
         matches!(self, Face::Back | Face::FrontAndBack)
     }
@@ -181,10 +222,15 @@ impl Face {
 /// The material parameter(s) glColorMaterial makes track the current color.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum ColorMaterialMode {
+    /// `GL_EMISSION`: e_cm.
     Emission,
+    /// `GL_AMBIENT`: a_cm.
     Ambient,
+    /// `GL_DIFFUSE`: d_cm, and with it the lit alpha.
     Diffuse,
+    /// `GL_SPECULAR`: s_cm.
     Specular,
+    /// `GL_AMBIENT_AND_DIFFUSE` (the initial mode): a_cm and d_cm.
     #[default]
     AmbientAndDiffuse,
 }
@@ -192,8 +238,11 @@ pub enum ColorMaterialMode {
 /// COLOR_MATERIAL state.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct ColorMaterial {
+    /// glEnable(`GL_COLOR_MATERIAL`); default false.
     pub enabled: bool,
+    /// glColorMaterial's face; default [`Face::FrontAndBack`].
     pub face: Face,
+    /// glColorMaterial's mode; default [`ColorMaterialMode::AmbientAndDiffuse`].
     pub mode: ColorMaterialMode,
 }
 
@@ -236,8 +285,10 @@ pub enum LightingMode {
 }
 
 impl LightingMode {
+    /// Every mode, in declaration order (for loops over modes in tests and benchmarks).
     pub const ALL: [LightingMode; 3] = [LightingMode::Vertex, LightingMode::Fragment, LightingMode::Flat];
 
+    /// Lowercase name (`vertex`, `fragment`, `flat`), the one [`str::parse`] accepts.
     pub fn name(self) -> &'static str {
         match self {
             LightingMode::Vertex => "vertex",
@@ -264,54 +315,82 @@ impl std::str::FromStr for LightingMode {
 /// GL's ShadeModel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ShadeModel {
+    /// `GL_SMOOTH` (GL's default): selects [`LightingMode::Vertex`].
     Smooth,
+    /// `GL_FLAT`: selects [`LightingMode::Flat`].
     Flat,
 }
 
 /// Capabilities toggled by glEnable/glDisable that touch lighting.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Cap {
+    /// `GL_LIGHTING`: without it the clamped vertex color is drawn unlit.
     Lighting,
+    /// `GL_LIGHTi`, i in 0..[`MAX_LIGHTS`]; a larger i is a [`StateError::LightIndex`].
     Light(usize),
+    /// `GL_COLOR_MATERIAL`.
     ColorMaterial,
+    /// `GL_NORMALIZE`: eye-space normals are made unit length.
     Normalize,
+    /// `GL_RESCALE_NORMAL`: eye-space normals are scaled to undo a uniform scale in the
+    /// modelview (the factor comes from the third row of its inverse).
     RescaleNormal,
 }
 
 /// Parameters of glLight.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum LightParam {
+    /// `GL_AMBIENT`, a_cli: any finite RGBA.
     Ambient(Vec4),
+    /// `GL_DIFFUSE`, d_cli: any finite RGBA.
     Diffuse(Vec4),
+    /// `GL_SPECULAR`, s_cli: any finite RGBA.
     Specular(Vec4),
-    /// Object coordinates: transformed by the modelview in force at the call.
+    /// `GL_POSITION`, P_pli. Object coordinates: transformed by the modelview in force at
+    /// the call.
     Position(Vec4),
-    /// Object coordinates: transformed by the upper 3x3 of the modelview in force at the call.
+    /// `GL_SPOT_DIRECTION`, s_dli. Object coordinates: transformed by the upper 3x3 of the
+    /// modelview in force at the call.
     SpotDirection(Vec3),
+    /// `GL_SPOT_EXPONENT`, s_rli, in [0, 128].
     SpotExponent(f32),
+    /// `GL_SPOT_CUTOFF`, c_rli, in degrees: [0, 90] or exactly 180.
     SpotCutoff(f32),
+    /// `GL_CONSTANT_ATTENUATION`, k0, >= 0.
     ConstantAttenuation(f32),
+    /// `GL_LINEAR_ATTENUATION`, k1, >= 0.
     LinearAttenuation(f32),
+    /// `GL_QUADRATIC_ATTENUATION`, k2, >= 0.
     QuadraticAttenuation(f32),
 }
 
 /// Parameters of glMaterial.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum MaterialParam {
+    /// `GL_AMBIENT`, a_cm: any finite RGBA.
     Ambient(Vec4),
+    /// `GL_DIFFUSE`, d_cm: any finite RGBA.
     Diffuse(Vec4),
+    /// `GL_SPECULAR`, s_cm: any finite RGBA.
     Specular(Vec4),
+    /// `GL_EMISSION`, e_cm: any finite RGBA.
     Emission(Vec4),
+    /// `GL_SHININESS`, s_rm, in [0, 128].
     Shininess(f32),
+    /// `GL_AMBIENT_AND_DIFFUSE`: sets a_cm and d_cm to the same color.
     AmbientAndDiffuse(Vec4),
 }
 
 /// Parameters of glLightModel.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum LightModelParam {
+    /// `GL_LIGHT_MODEL_AMBIENT`, a_cs: any finite RGBA.
     Ambient(Vec4),
+    /// `GL_LIGHT_MODEL_LOCAL_VIEWER`, v_bs.
     LocalViewer(bool),
+    /// `GL_LIGHT_MODEL_TWO_SIDE`, t_bs.
     TwoSide(bool),
+    /// `GL_LIGHT_MODEL_COLOR_CONTROL`, c_es.
     ColorControl(ColorControl),
 }
 
@@ -320,13 +399,21 @@ pub enum LightModelParam {
 pub struct LightingState {
     /// GL_LIGHTING; off by default, as in GL: the vertex color passes through.
     pub lighting: bool,
+    /// `GL_LIGHT0` onwards, [`MAX_LIGHTS`] of them, each starting at [`Light::gl_default`].
     pub lights: [Light; MAX_LIGHTS],
+    /// The front material, also used for back faces unless two-sided lighting is on.
     pub front: Material,
+    /// The back material: used only when [`LightModel::two_side`] is on.
     pub back: Material,
+    /// glLightModel state.
     pub model: LightModel,
+    /// glColorMaterial state.
     pub color_material: ColorMaterial,
+    /// `GL_NORMALIZE`; off by default, so a scaled modelview lights with unnormalized normals.
     pub normalize: bool,
+    /// `GL_RESCALE_NORMAL`; off by default.
     pub rescale_normal: bool,
+    /// Where the equation is evaluated; [`LightingMode::Vertex`] by default (GL's SMOOTH).
     pub mode: LightingMode,
 }
 
@@ -582,10 +669,12 @@ impl GlState {
         Ok(())
     }
 
+    /// glEnable; fails only for a light index at or past [`MAX_LIGHTS`].
     pub fn enable(&mut self, cap: Cap) -> Result<(), StateError> {
         self.set_enabled(cap, true)
     }
 
+    /// glDisable; fails only for a light index at or past [`MAX_LIGHTS`].
     pub fn disable(&mut self, cap: Cap) -> Result<(), StateError> {
         self.set_enabled(cap, false)
     }

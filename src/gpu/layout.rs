@@ -20,14 +20,21 @@ pub const VK_FROM_GL_CLIP: Mat4 = Mat4::from_cols_array(&[
     0.0, 0.0, 0.5, 1.0,
 ]);
 
+/// One face's [`Material`] as the GLSL `Material` struct (std140, 80 bytes).
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct GpuMaterial {
+    /// `GL_AMBIENT`, RGBA.
     pub a_cm: [f32; 4],
+    /// `GL_DIFFUSE`, RGBA; its alpha is the lit alpha.
     pub d_cm: [f32; 4],
+    /// `GL_SPECULAR`, RGBA.
     pub s_cm: [f32; 4],
+    /// `GL_EMISSION`, RGBA.
     pub e_cm: [f32; 4],
+    /// `GL_SHININESS`, in [0, 128].
     pub s_rm: f32,
+    /// Rounds the struct up to std140's 16-byte struct alignment; always zero.
     pub _pad: [f32; 3],
 }
 
@@ -44,20 +51,34 @@ impl From<&Material> for GpuMaterial {
     }
 }
 
+/// One enabled [`Light`] as the GLSL `Light` struct (std140, 112 bytes), eye space.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct GpuLight {
+    /// `GL_AMBIENT`, RGBA (the shader uses RGB).
     pub a_cli: [f32; 4],
+    /// `GL_DIFFUSE`, RGBA (the shader uses RGB).
     pub d_cli: [f32; 4],
+    /// `GL_SPECULAR`, RGBA (the shader uses RGB).
     pub s_cli: [f32; 4],
+    /// `GL_POSITION`, homogeneous, eye space; w = 0 for a directional light.
     pub P_pli: [f32; 4],
+    /// `GL_SPOT_DIRECTION`, eye space, as stored (the shader normalizes it).
     pub s_dli: [f32; 3],
+    /// `GL_SPOT_EXPONENT`, in [0, 128]; packed into the 4th component of `s_dli`'s slot.
     pub s_rli: f32,
+    /// `GL_SPOT_CUTOFF` in degrees; exactly 180 means no spot cone.
     pub c_rli: f32,
+    /// cos(c_rli) from [`crate::reference::cos_cutoff`] (double precision, exactly 0 at
+    /// 90°), so the GPU tests the cone against the same threshold as the CPU reference.
     pub cos_c_rli: f32,
+    /// `GL_CONSTANT_ATTENUATION`.
     pub k0: f32,
+    /// `GL_LINEAR_ATTENUATION`.
     pub k1: f32,
+    /// `GL_QUADRATIC_ATTENUATION`.
     pub k2: f32,
+    /// Rounds the struct up to std140's 16-byte struct alignment; always zero.
     pub _pad: [f32; 3],
 }
 
@@ -81,28 +102,52 @@ impl From<&Light> for GpuLight {
     }
 }
 
-/// The `Draw` uniform block.
+/// The `Draw` uniform block: one per draw, bound at a dynamic offset. Matrices are
+/// column-major; the `u32` flags are 0 or 1.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct DrawBlock {
+    /// M: object to eye space.
     pub modelview: [f32; 16],
+    /// GL's projection premultiplied by [`VK_FROM_GL_CLIP`].
     pub projection: [f32; 16],
+    /// [`normal_matrix`] of the modelview in the upper 3x3 of a mat4 (the shader reads only
+    /// that part).
     pub normal_matrix: [f32; 16],
+    /// The front material.
     pub front: GpuMaterial,
+    /// The back material (read only when `t_bs` is 1).
     pub back: GpuMaterial,
+    /// `GL_LIGHT_MODEL_AMBIENT`, RGBA.
     pub a_cs: [f32; 4],
+    /// How many entries of `lights` are in use: the enabled lights, 0..=[`MAX_LIGHTS`].
     pub light_count: u32,
+    /// `GL_LIGHTING`.
     pub lighting: u32,
+    /// `GL_LIGHT_MODEL_LOCAL_VIEWER`.
     pub v_bs: u32,
+    /// `GL_LIGHT_MODEL_TWO_SIDE`.
     pub t_bs: u32,
+    /// 1 when `GL_LIGHT_MODEL_COLOR_CONTROL` is `GL_SEPARATE_SPECULAR_COLOR`.
     pub separate_specular: u32,
+    /// `GL_COLOR_MATERIAL`.
     pub color_material: u32,
+    /// 1 when glColorMaterial's face includes `GL_FRONT`.
     pub color_material_front: u32,
+    /// 1 when glColorMaterial's face includes `GL_BACK`.
     pub color_material_back: u32,
+    /// glColorMaterial's mode as the GLSL `CM_*` values: 0 `GL_EMISSION`, 1 `GL_AMBIENT`,
+    /// 2 `GL_DIFFUSE`, 3 `GL_SPECULAR`, 4 `GL_AMBIENT_AND_DIFFUSE`.
     pub color_material_mode: u32,
+    /// `GL_NORMALIZE`.
     pub normalize: u32,
+    /// What eye-space normals are multiplied by: [`rescale_factor`] with
+    /// `GL_RESCALE_NORMAL` on, else 1.
     pub rescale: f32,
+    /// Starts `lights` on a 16-byte boundary, as std140 requires; always zero.
     pub _pad: u32,
+    /// The enabled lights packed in index order, so entry i is not necessarily `GL_LIGHTi`;
+    /// entries from `light_count` on are zeroed.
     pub lights: [GpuLight; MAX_LIGHTS],
 }
 
@@ -111,13 +156,24 @@ pub struct DrawBlock {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[repr(u32)]
 pub enum SpecConstant {
+    /// `SPEC_LIGHT_COUNT`: the number of enabled lights, 0..=[`MAX_LIGHTS`]; a constant
+    /// count lets the light loop unroll.
     LightCount = 0,
+    /// `SPEC_LIGHTING`: `GL_LIGHTING`, 0 or 1.
     Lighting = 1,
+    /// `SPEC_LOCAL_VIEWER`: `GL_LIGHT_MODEL_LOCAL_VIEWER`, 0 or 1.
     LocalViewer = 2,
+    /// `SPEC_TWO_SIDE`: `GL_LIGHT_MODEL_TWO_SIDE`, 0 or 1.
     TwoSide = 3,
+    /// `SPEC_SEPARATE_SPECULAR`: 1 for `GL_SEPARATE_SPECULAR_COLOR`, 0 for `GL_SINGLE_COLOR`.
     SeparateSpecular = 4,
+    /// `SPEC_COLOR_MATERIAL`: `GL_COLOR_MATERIAL`, 0 or 1.
     ColorMaterial = 5,
+    /// `SPEC_ANY_LOCAL_LIGHT`: 0 promises that no enabled light is positional (w ≠ 0), so
+    /// the shader skips attenuation; 1 means some may be.
     AnyLocalLight = 6,
+    /// `SPEC_ANY_SPOT_LIGHT`: 0 promises that no enabled light is a spot (cutoff ≠ 180), so
+    /// the shader skips the cone; 1 means some may be.
     AnySpotLight = 7,
 }
 
@@ -162,6 +218,7 @@ impl SpecConstant {
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct SpecKey {
+    /// Entry `constant_id`: -1 (read the uniform), or the value the constant is fixed to.
     pub values: [i32; SPEC_CONSTANT_COUNT],
 }
 

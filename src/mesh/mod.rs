@@ -17,6 +17,7 @@ pub struct Vertex {
 }
 
 impl Vertex {
+    /// A vertex from glam vectors; the normal and color are stored as given.
     pub fn new(position: Vec3, normal: Vec3, color: Vec4) -> Self {
         Vertex {
             position: position.to_array(),
@@ -29,7 +30,12 @@ impl Vertex {
 /// A triangle list: every three indices make one triangle, counter-clockwise is front.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct MeshData {
+    /// The vertices the indices refer to; a vertex may be shared by several triangles.
     pub vertices: Vec<Vertex>,
+    /// A multiple of 3, each below `vertices.len()`; [`Renderer::upload`] rejects anything
+    /// else with a [`MeshError`](crate::error::MeshError).
+    ///
+    /// [`Renderer::upload`]: crate::Renderer::upload
     pub indices: Vec<u32>,
 }
 

@@ -22,6 +22,8 @@ use queries::Queries;
 pub struct RendererOptions {
     /// A substring of the device name; `None` picks lavapipe ("llvmpipe") when present.
     pub device: Option<String>,
+    /// Whether to load the validation layer (default: off). With it loaded, validation errors
+    /// fail [`Renderer::new`] or the frame that caused them with [`Error::Validation`].
     pub validation: Validation,
     /// Specialized pipelines per lighting state, or the uber-shader.
     pub specialize: Specialize,
@@ -36,9 +38,11 @@ pub struct Mesh {
 }
 
 impl Mesh {
+    /// Indices uploaded: three per triangle.
     pub fn index_count(&self) -> u32 {
         self.index_count
     }
+    /// Vertices uploaded.
     pub fn vertex_count(&self) -> u32 {
         self.vertex_count
     }
@@ -47,26 +51,37 @@ impl Mesh {
 /// One draw: a mesh, its matrices (GL conventions) and the lighting state it captures.
 #[derive(Clone, Copy)]
 pub struct Draw<'a> {
+    /// Uploaded by the renderer that draws it, else [`MeshError::ForeignMesh`].
     pub mesh: &'a Mesh,
     /// Object to eye space. Eye space: viewer at the origin looking down -z, y up.
     pub modelview: Mat4,
     /// GL projection (clip z in [-w, w]); ffvk converts it to Vulkan's clip space.
     pub projection: Mat4,
+    /// The lighting state, checked when the frame is drawn: a value GL would reject, a
+    /// singular modelview with lighting on, or an enabled positional light with all three
+    /// attenuations 0 fails the frame with [`Error::State`].
     pub state: LightingState,
 }
 
 /// One image: its size, clear color, depth test and draws, in order.
 #[derive(Clone)]
 pub struct Frame<'a> {
+    /// Width in pixels, 1..=the device's `maxImageDimension2D` (else [`Error::InvalidSize`]).
     pub width: u32,
+    /// Height in pixels, same range as `width`.
     pub height: u32,
+    /// RGBA the image is cleared to before the draws; stored as 8-bit UNORM, so components
+    /// are clamped to [0, 1]. [`Frame::new`] uses opaque black.
     pub clear_color: Vec4,
     /// GL_DEPTH_TEST with LESS against a depth buffer cleared to 1.
     pub depth_test: bool,
+    /// Recorded in order; with `depth_test` off, later draws cover earlier ones.
     pub draws: Vec<Draw<'a>>,
 }
 
 impl<'a> Frame<'a> {
+    /// An empty frame of `width` × `height` pixels, cleared to (0, 0, 0, 1), depth test on.
+    /// The size is checked only when the frame is drawn.
     pub fn new(width: u32, height: u32) -> Self {
         Frame {
             width,
@@ -98,11 +113,19 @@ pub struct FrameStats {
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct PipelineStats {
+    /// Vertices the input assembler read (`INPUT_ASSEMBLY_VERTICES`).
     pub input_assembly_vertices: u64,
+    /// Triangles it assembled (`INPUT_ASSEMBLY_PRIMITIVES`).
     pub input_assembly_primitives: u64,
+    /// Vertex shader runs (`VERTEX_SHADER_INVOCATIONS`); may be fewer than the vertices read
+    /// where the implementation reuses results for repeated indices.
     pub vertex_shader_invocations: u64,
+    /// Primitives that reached the clipping stage (`CLIPPING_INVOCATIONS`).
     pub clipping_invocations: u64,
+    /// Primitives that left it (`CLIPPING_PRIMITIVES`).
     pub clipping_primitives: u64,
+    /// Fragment shader runs (`FRAGMENT_SHADER_INVOCATIONS`): where per-fragment lighting
+    /// spends its time.
     pub fragment_shader_invocations: u64,
 }
 
@@ -213,6 +236,7 @@ impl Renderer {
         Ok(renderer)
     }
 
+    /// The device this renderer opened: its name, driver, limits and optional features.
     pub fn device_info(&self) -> &DeviceInfo {
         self.device.info()
     }

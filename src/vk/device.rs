@@ -11,23 +11,45 @@ use crate::error::{vk_error, Error, Result};
 /// What `ffvk info` prints and benchmarks record.
 #[derive(Debug, Clone)]
 pub struct DeviceInfo {
+    /// `deviceName`, e.g. `llvmpipe (LLVM …)` for lavapipe; what
+    /// [`RendererOptions::device`](crate::RendererOptions::device) is matched against.
     pub name: String,
+    /// `VkPhysicalDeviceType` as ash's `Debug` spells it, e.g. `CPU` or `DISCRETE_GPU`.
     pub device_type: String,
+    /// `driverName` (`VkPhysicalDeviceDriverProperties`), e.g. `llvmpipe`.
     pub driver_name: String,
+    /// `driverInfo`: the driver's own version text (the Mesa version for lavapipe).
     pub driver_info: String,
+    /// The device's Vulkan version, `major.minor.patch`; at least 1.3.
     pub api_version: String,
+    /// `vendorID`: the PCI vendor ID, or a Khronos-assigned one for non-PCI drivers.
     pub vendor_id: u32,
+    /// `deviceID`, vendor-specific.
     pub device_id: u32,
+    /// `maxImageDimension2D`: the largest frame width or height, in pixels.
     pub max_image_dimension_2d: u32,
+    /// `maxUniformBufferRange`: the largest uniform block a descriptor can see, in bytes.
     pub max_uniform_buffer_range: u32,
+    /// `minUniformBufferOffsetAlignment`, in bytes: the per-draw uniform blocks sit at
+    /// multiples of it (and of 16).
     pub min_uniform_buffer_offset_alignment: u64,
+    /// `maxVertexOutputComponents`: scalar outputs a vertex shader may pass on; the
+    /// per-vertex modes pass up to four colors.
     pub max_vertex_output_components: u32,
+    /// `timestampPeriod`: nanoseconds per timestamp tick.
     pub timestamp_period_ns: f32,
     /// Meaningful bits of the graphics queue's timestamps (0: no timestamps).
     pub timestamp_valid_bits: u32,
+    /// Whether the graphics queue writes timestamps; without them
+    /// [`FrameStats::gpu_ns`](crate::FrameStats::gpu_ns) is `None`.
     pub timestamps_supported: bool,
+    /// Whether `pipelineStatisticsQuery` is available (ffvk enables it when it is); without
+    /// it [`FrameStats::pipeline`](crate::FrameStats::pipeline) is `None`.
     pub pipeline_statistics_query: bool,
+    /// `provokingVertexLast` of `VK_EXT_provoking_vertex`, which GL's flat shading needs:
+    /// always true, since [`Device::new`] refuses a device without it.
     pub provoking_vertex_last: bool,
+    /// Whether the validation layer is active on the instance.
     pub validation: bool,
 }
 
@@ -200,6 +222,7 @@ impl Device {
         }))
     }
 
+    /// What ffvk found out about the device when it opened it.
     pub fn info(&self) -> &DeviceInfo {
         &self.info
     }
