@@ -1,4 +1,4 @@
-// The per-draw uniform block: GL lighting state in std140, mirrored by src/layout.rs
+// The per-draw uniform block: GL lighting state in std140, mirrored by src/gpu/layout.rs
 // (a test checks the offsets in the compiled SPIR-V against the Rust structs).
 #ifndef FFVK_DRAW_GLSL
 #define FFVK_DRAW_GLSL
@@ -57,7 +57,7 @@ layout(std140, set = 0, binding = 0) uniform Draw {
     Light lights[MAX_LIGHTS];
 } draw;
 
-// Specialization constants, mirrored by src/layout.rs (`SpecConstant`; a test reads the
+// Specialization constants, mirrored by src/gpu/layout.rs (`SpecConstant`; a test reads the
 // SpecId decorations from the SPIR-V). The default, -1, means "read the uniform": the
 // uber-shader. A pipeline specialized for one state sets them to that state's values (0 or 1,
 // or the light count), so the driver folds the branches and unrolls the light loop.

@@ -92,7 +92,8 @@ impl Instance {
     /// Loads the Vulkan loader and creates a Vulkan 1.3 instance, with the validation layer
     /// as `validation` asks. Fails with [`Error::NoLoader`] without `libvulkan.so.1`, and
     /// with [`Error::NoValidationLayer`] when the layer is required but not installed;
-    /// [`Validation::IfPresent`] then prints a warning on stderr and goes on without it.
+    /// [`Validation::IfPresent`] then goes on without it, silently (the caller may ask
+    /// [`validation_layer_installed`] first and warn).
     pub fn new(validation: Validation) -> Result<Arc<Self>> {
         // SAFETY: loading the system's Vulkan loader runs its initialisers; that is the
         // documented way to start with Vulkan and nothing else is loaded alongside.
