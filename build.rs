@@ -28,6 +28,7 @@ struct Variant {
 
 /// `INTERP`: the interpolation qualifier of the per-vertex colors. `ONE_COLOR`: only the front
 /// primary color passes between the stages (specialized one-sided, single-color states).
+/// Each is also compiled with `CURRENT_COLOR` (see [`CURRENT_COLOR`]).
 const VARIANTS: &[Variant] = &[
     Variant {
         name: "vertex",
@@ -66,6 +67,10 @@ const VARIANTS: &[Variant] = &[
     },
 ];
 
+/// The second build of every variant, named `<variant>_current_color`: for meshes without a
+/// color array, it reads GL's current color from the draw block instead of location 2.
+const CURRENT_COLOR: (&str, &str) = ("CURRENT_COLOR", "1");
+
 fn main() {
     let manifest = PathBuf::from(env::var("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR"));
     let glsl_dir = manifest.join("glsl");
@@ -77,13 +82,26 @@ fn main() {
 
     let mut table = String::new();
     let mut errors = Vec::new();
-    for variant in VARIANTS {
+    let builds = VARIANTS.iter().flat_map(|v| {
+        let mut with_current = v.defines.to_vec();
+        with_current.push(CURRENT_COLOR);
+        [
+            (v.name.to_string(), v.doc.to_string(), v.defines.to_vec()),
+            (
+                format!("{}_current_color", v.name),
+                format!("{} No color array: GL's current color.", v.doc),
+                with_current,
+            ),
+        ]
+        .map(move |(name, doc, defines)| (v, name, doc, defines))
+    });
+    for (variant, name, doc, defines) in builds {
         let mut stages = Vec::new();
         for (source, stage) in [(variant.vertex, "vert"), (variant.fragment, "frag")] {
-            let spv = out_dir.join(format!("{}.{stage}.spv", variant.name));
-            match compile(&glslc, &glsl_dir.join(source), stage, variant.defines, &spv) {
+            let spv = out_dir.join(format!("{name}.{stage}.spv"));
+            match compile(&glslc, &glsl_dir.join(source), stage, &defines, &spv) {
                 Ok(()) => stages.push(spv),
-                Err(e) => errors.push(format!("variant {}: {e}", variant.name)),
+                Err(e) => errors.push(format!("variant {name}: {e}")),
             }
         }
         if let [vertex, fragment] = stages.as_slice() {
@@ -93,11 +111,11 @@ fn main() {
                  vertex_source: {:?},\n        fragment_source: {:?},\n        \
                  defines: &{:?},\n        \
                  vertex: include_bytes!({:?}),\n        fragment: include_bytes!({:?}),\n    }},",
-                variant.name,
-                variant.doc,
+                name,
+                doc,
                 variant.vertex,
                 variant.fragment,
-                variant.defines,
+                defines,
                 vertex.display().to_string(),
                 fragment.display().to_string(),
             )

@@ -43,6 +43,7 @@ layout(std140, set = 0, binding = 0) uniform Draw {
     Material front;
     Material back;
     vec4 a_cs;            // LIGHT_MODEL_AMBIENT
+    vec4 current_color;   // CURRENT_COLOR (glColor), read by the CURRENT_COLOR variants
     uint light_count;     // enabled lights, packed in index order
     uint lighting;        // LIGHTING enabled
     uint v_bs;            // LIGHT_MODEL_LOCAL_VIEWER

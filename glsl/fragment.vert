@@ -3,7 +3,12 @@
 // direction and length, and the current color.
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
+#ifdef CURRENT_COLOR
+// No color array: GL's current color (glColor), the same for every vertex of the draw.
+#define in_color draw.current_color
+#else
 layout(location = 2) in vec4 in_color;
+#endif
 
 layout(location = 0) out vec4 eye_position;
 layout(location = 1) out vec3 normal_direction;

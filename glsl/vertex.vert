@@ -7,7 +7,12 @@
 // from what the fragment stage assumes in the states such a pipeline draws.
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
+#ifdef CURRENT_COLOR
+// No color array: GL's current color (glColor), the same for every vertex of the draw.
+#define in_color draw.current_color
+#else
 layout(location = 2) in vec4 in_color;
+#endif
 
 layout(location = 0) INTERP out vec4 front_pri;
 #ifdef ONE_COLOR

@@ -31,14 +31,20 @@ pub fn one_color(key: SpecKey) -> bool {
 }
 
 /// The name of the shader variant a mode's pipeline specialized by `key` uses: the mode's
-/// name, with `_one_color` when [`one_color`] holds for a per-vertex mode.
-pub fn variant_name(mode: LightingMode, key: SpecKey) -> &'static str {
-    match (mode, one_color(key)) {
-        (LightingMode::Vertex, false) => "vertex",
-        (LightingMode::Vertex, true) => "vertex_one_color",
-        (LightingMode::Fragment, _) => "fragment",
-        (LightingMode::Flat, false) => "flat",
-        (LightingMode::Flat, true) => "flat_one_color",
+/// name, with `_one_color` when [`one_color`] holds for a per-vertex mode, and with
+/// `_current_color` when the mesh has no color array (`color_array` false).
+pub fn variant_name(mode: LightingMode, key: SpecKey, color_array: bool) -> &'static str {
+    match (mode, one_color(key), color_array) {
+        (LightingMode::Vertex, false, true) => "vertex",
+        (LightingMode::Vertex, true, true) => "vertex_one_color",
+        (LightingMode::Fragment, _, true) => "fragment",
+        (LightingMode::Flat, false, true) => "flat",
+        (LightingMode::Flat, true, true) => "flat_one_color",
+        (LightingMode::Vertex, false, false) => "vertex_current_color",
+        (LightingMode::Vertex, true, false) => "vertex_one_color_current_color",
+        (LightingMode::Fragment, _, false) => "fragment_current_color",
+        (LightingMode::Flat, false, false) => "flat_current_color",
+        (LightingMode::Flat, true, false) => "flat_one_color_current_color",
     }
 }
 
@@ -158,7 +164,7 @@ impl Pipelines {
 
     fn create(&self, mode: LightingMode, key: SpecKey) -> Result<Pipeline> {
         let device = &self.device;
-        let name = variant_name(mode, key);
+        let name = variant_name(mode, key, true);
         let variant = shaders::variant(name)
             .ok_or_else(|| Error::MissingFeature(format!("the embedded shader variant {name}")))?;
         let vert = shader_module(device, name, variant.vertex)?;

@@ -415,6 +415,10 @@ pub struct LightingState {
     pub rescale_normal: bool,
     /// Where the equation is evaluated; [`LightingMode::Vertex`] by default (GL's SMOOTH).
     pub mode: LightingMode,
+    /// GL's current color (`GL_CURRENT_COLOR`, set by `glColor`), (1, 1, 1, 1) initially: the
+    /// color of every vertex of a draw without a color array. With a color array each vertex
+    /// has its own color and this one is not read.
+    pub current_color: Vec4,
 }
 
 impl Default for LightingState {
@@ -429,6 +433,7 @@ impl Default for LightingState {
             normalize: false,
             rescale_normal: false,
             mode: LightingMode::Vertex,
+            current_color: Vec4::ONE,
         }
     }
 }
@@ -440,6 +445,7 @@ impl LightingState {
         self.front.validate()?;
         self.back.validate()?;
         finite_vec("GL_LIGHT_MODEL_AMBIENT", self.model.ambient.to_array().as_slice())?;
+        finite_vec("GL_CURRENT_COLOR", self.current_color.to_array().as_slice())?;
         for light in &self.lights {
             validate_light(light)?;
         }
@@ -642,6 +648,32 @@ impl GlState {
     pub fn color_material(&mut self, face: Face, mode: ColorMaterialMode) {
         self.lighting.color_material.face = face;
         self.lighting.color_material.mode = mode;
+        self.track_current_color();
+    }
+
+    /// glColor4f: sets the current color, which a draw without a color array gives every
+    /// vertex. With `GL_COLOR_MATERIAL` enabled the color is also written into the tracked
+    /// material parameters (section 2.14.3: they track the current color), where it stays
+    /// after `glDisable(GL_COLOR_MATERIAL)`. Colors are not clamped here (GL clamps after
+    /// lighting); a NaN or infinite component is an error.
+    ///
+    /// GL leaves the current color undefined after a draw that used a color array (2.1,
+    /// section 2.8); this state keeps the last `glColor`, and callers that need Mesa's
+    /// behaviour after such draws set it again.
+    pub fn color(&mut self, color: Vec4) -> Result<(), StateError> {
+        finite_vec("GL_CURRENT_COLOR", color.to_array().as_slice())?;
+        self.lighting.current_color = color;
+        self.track_current_color();
+        Ok(())
+    }
+
+    /// While `GL_COLOR_MATERIAL` is enabled, writes the current color into the material
+    /// parameters it tracks (glColor, glColorMaterial and glEnable do this in GL).
+    fn track_current_color(&mut self) {
+        let l = &mut self.lighting;
+        let color = l.current_color;
+        l.front = l.color_material.apply(&l.front, color, false);
+        l.back = l.color_material.apply(&l.back, color, true);
     }
 
     /// glShadeModel: FLAT selects [`LightingMode::Flat`]; SMOOTH selects per-vertex lighting.
@@ -662,7 +694,10 @@ impl GlState {
         match cap {
             Cap::Lighting => self.lighting.lighting = on,
             Cap::Light(i) => self.light_mut(i)?.enabled = on,
-            Cap::ColorMaterial => self.lighting.color_material.enabled = on,
+            Cap::ColorMaterial => {
+                self.lighting.color_material.enabled = on;
+                self.track_current_color();
+            }
             Cap::Normalize => self.lighting.normalize = on,
             Cap::RescaleNormal => self.lighting.rescale_normal = on,
         }

@@ -120,6 +120,9 @@ pub struct DrawBlock {
     pub back: GpuMaterial,
     /// `GL_LIGHT_MODEL_AMBIENT`, RGBA.
     pub a_cs: [f32; 4],
+    /// GL's current color (`glColor`), RGBA: the vertex color of the variants compiled for
+    /// meshes without a color array.
+    pub current_color: [f32; 4],
     /// How many entries of `lights` are in use: the enabled lights, 0..=[`MAX_LIGHTS`].
     pub light_count: u32,
     /// `GL_LIGHTING`.
@@ -318,6 +321,7 @@ impl DrawBlock {
             front: GpuMaterial::from(&state.front),
             back: GpuMaterial::from(&state.back),
             a_cs: state.model.ambient.to_array(),
+            current_color: state.current_color.to_array(),
             light_count,
             lighting: state.lighting as u32,
             v_bs: state.model.local_viewer as u32,

@@ -216,7 +216,7 @@ impl Renderer {
             descriptor_count: 1,
         }];
         let descriptors = DescriptorPool::with_one_set(&device, &pool_sizes, pipelines.set_layout())?;
-        let commands = CommandPool::with_one_buffer(&device, device.queue_family)?;
+        let commands = CommandPool::with_one_buffer(&device, device.own().queue_family)?;
         let fence = Fence::new(&device)?;
         let queries = Queries::new(&device)?;
         let renderer = Renderer {
@@ -244,7 +244,7 @@ impl Renderer {
     /// The validation messages of this renderer's instance. Messages reported while the
     /// device is destroyed arrive after the renderer is dropped; keep a clone to read them.
     pub fn validation_sink(&self) -> ValidationSink {
-        self.device.instance.validation_sink()
+        self.device.own().instance.validation_sink()
     }
 
     fn check_validation(&self) -> Result<()> {
@@ -729,7 +729,7 @@ impl Renderer {
         // every wait); &self plus the renderer's exclusive ownership of the queue serialize
         // queue access.
         unsafe {
-            vkd.queue_submit(self.device.queue, &[submit], self.fence.raw())
+            vkd.queue_submit(self.device.own().queue, &[submit], self.fence.raw())
                 .map_err(vk_error("vkQueueSubmit"))?;
             vkd.wait_for_fences(&[self.fence.raw()], true, u64::MAX)
                 .map_err(vk_error("vkWaitForFences"))?;

@@ -53,15 +53,35 @@ pub struct DeviceInfo {
     pub validation: bool,
 }
 
-/// The logical device, its queue and what ffvk knows about it.
+/// A logical device and what ffvk knows about it: either ffvk's own (opened by
+/// [`Device::new`], with its instance and one graphics queue, destroyed when the last `Arc`
+/// goes) or a caller's (wrapped by [`Device::from_caller`], never destroyed by ffvk).
 pub struct Device {
-    pub(crate) instance: Arc<Instance>,
     pub(crate) raw: ash::Device,
-    pub(crate) queue: vk::Queue,
-    pub(crate) queue_family: u32,
     pub(crate) memory: vk::PhysicalDeviceMemoryProperties,
     pub(crate) limits: vk::PhysicalDeviceLimits,
     pub(crate) info: DeviceInfo,
+    /// What only ffvk's own device has; `None` for a caller's device.
+    pub(crate) own: Option<OwnDevice>,
+}
+
+/// The instance and queue of a device ffvk opened itself.
+pub(crate) struct OwnDevice {
+    pub(crate) instance: Arc<Instance>,
+    pub(crate) queue: vk::Queue,
+    pub(crate) queue_family: u32,
+}
+
+/// The device features a caller enabled on its own device, as it tells
+/// [`Device::from_caller`] (Vulkan cannot be asked which features a device was created with).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct EnabledFeatures {
+    /// `dynamicRendering` (Vulkan 1.3 core): required; ffvk's pipelines render without render
+    /// passes.
+    pub dynamic_rendering: bool,
+    /// `provokingVertexLast` of `VK_EXT_provoking_vertex` (with the extension enabled): needed
+    /// for the `flat` lighting mode, whose triangles take their last vertex's color as in GL.
+    pub provoking_vertex_last: bool,
 }
 
 fn device_name(props: &vk::PhysicalDeviceProperties) -> String {
@@ -125,7 +145,6 @@ impl Device {
             .ok_or_else(|| Error::MissingFeature("a graphics queue".into()))?
             as u32;
         let timestamp_valid_bits = families[queue_family as usize].timestamp_valid_bits;
-        let timestamps_supported = timestamp_valid_bits > 0;
 
         // Features: dynamic rendering (1.3), last-vertex provoking convention (GL's flat
         // shading), pipeline statistics (benchmarks).
@@ -162,31 +181,14 @@ impl Device {
             ));
         }
 
-        let cstr = |bytes: &[std::ffi::c_char]| {
-            // SAFETY: the driver properties hold NUL-terminated strings within their arrays.
-            unsafe { CStr::from_ptr(bytes.as_ptr()) }
-                .to_string_lossy()
-                .into_owned()
-        };
-        let info = DeviceInfo {
-            name: device_name(&props),
-            device_type: format!("{:?}", props.device_type),
-            driver_name: cstr(&driver.driver_name),
-            driver_info: cstr(&driver.driver_info),
-            api_version: version_string(props.api_version),
-            vendor_id: props.vendor_id,
-            device_id: props.device_id,
-            max_image_dimension_2d: props.limits.max_image_dimension2_d,
-            max_uniform_buffer_range: props.limits.max_uniform_buffer_range,
-            min_uniform_buffer_offset_alignment: props.limits.min_uniform_buffer_offset_alignment,
-            max_vertex_output_components: props.limits.max_vertex_output_components,
-            timestamp_period_ns: props.limits.timestamp_period,
+        let info = describe(
+            &props,
+            &driver,
             timestamp_valid_bits,
-            timestamps_supported,
             pipeline_statistics_query,
             provoking_vertex_last,
-            validation: instance.validation_enabled(),
-        };
+            instance.validation_enabled(),
+        );
 
         let priorities = [1.0f32];
         let queues = [vk::DeviceQueueCreateInfo::default()
@@ -212,14 +214,89 @@ impl Device {
         let queue = unsafe { raw.get_device_queue(queue_family, 0) };
 
         Ok(Arc::new(Device {
-            instance,
             raw,
-            queue,
-            queue_family,
             memory,
             limits: props.limits,
             info,
+            own: Some(OwnDevice {
+                instance,
+                queue,
+                queue_family,
+            }),
         }))
+    }
+
+    /// Wraps a device the caller created and keeps: ffvk creates its objects on it and frees
+    /// them, and never destroys the device, submits to its queues or waits on it. Fails with
+    /// [`Error::MissingFeature`] when the device is older than Vulkan 1.3, when `enabled`
+    /// lacks dynamic rendering, or when it claims a feature the device does not support.
+    ///
+    /// # Safety
+    ///
+    /// `device` was created from `physical_device` of `instance` with the features `enabled`
+    /// says, and stays alive until every ffvk object made from the returned `Arc` is dropped.
+    pub unsafe fn from_caller(
+        instance: &ash::Instance,
+        physical_device: vk::PhysicalDevice,
+        device: ash::Device,
+        enabled: EnabledFeatures,
+    ) -> Result<Arc<Self>> {
+        // SAFETY: the caller's contract: physical_device belongs to instance.
+        let (props, memory) = unsafe {
+            (
+                instance.get_physical_device_properties(physical_device),
+                instance.get_physical_device_memory_properties(physical_device),
+            )
+        };
+        if props.api_version < vk::API_VERSION_1_3 {
+            return Err(Error::MissingFeature(format!(
+                "Vulkan 1.3 (the device offers {})",
+                version_string(props.api_version)
+            )));
+        }
+        let mut provoking = vk::PhysicalDeviceProvokingVertexFeaturesEXT::default();
+        let mut v13 = vk::PhysicalDeviceVulkan13Features::default();
+        let mut features = vk::PhysicalDeviceFeatures2::default()
+            .push_next(&mut v13)
+            .push_next(&mut provoking);
+        let mut driver = vk::PhysicalDeviceDriverProperties::default();
+        let mut props2 = vk::PhysicalDeviceProperties2::default().push_next(&mut driver);
+        // SAFETY: the chained structs live until the calls return; the handle is the caller's.
+        unsafe {
+            instance.get_physical_device_features2(physical_device, &mut features);
+            instance.get_physical_device_properties2(physical_device, &mut props2);
+        }
+        if !enabled.dynamic_rendering {
+            return Err(Error::MissingFeature(
+                "dynamicRendering enabled on the caller's device (ffvk's pipelines use dynamic rendering)"
+                    .into(),
+            ));
+        }
+        if v13.dynamic_rendering != vk::TRUE {
+            return Err(Error::MissingFeature("dynamicRendering".into()));
+        }
+        if enabled.provoking_vertex_last && provoking.provoking_vertex_last != vk::TRUE {
+            return Err(Error::MissingFeature(
+                "VK_EXT_provoking_vertex with provokingVertexLast (said to be enabled, but the device lacks it)"
+                    .into(),
+            ));
+        }
+        let info = describe(&props, &driver, 0, false, enabled.provoking_vertex_last, false);
+        Ok(Arc::new(Device {
+            raw: device,
+            memory,
+            limits: props.limits,
+            info,
+            own: None,
+        }))
+    }
+
+    /// The instance and queue of ffvk's own device. Only the renderer submits, and it
+    /// always opens its own device.
+    pub(crate) fn own(&self) -> &OwnDevice {
+        self.own
+            .as_ref()
+            .expect("the renderer opens its own device; a caller's device has no ffvk queue")
     }
 
     /// What ffvk found out about the device when it opened it.
@@ -249,12 +326,52 @@ impl Device {
 
 impl Drop for Device {
     fn drop(&mut self) {
+        if self.own.is_none() {
+            // The caller's device: the caller destroys it.
+            return;
+        }
         // SAFETY: every child holds an Arc<Device>, so none is left; waiting first makes
         // sure no submitted work still uses the device.
         unsafe {
             let _ = self.raw.device_wait_idle();
             self.raw.destroy_device(None);
         }
+    }
+}
+
+/// What `ffvk info` shows of a physical device.
+fn describe(
+    props: &vk::PhysicalDeviceProperties,
+    driver: &vk::PhysicalDeviceDriverProperties,
+    timestamp_valid_bits: u32,
+    pipeline_statistics_query: bool,
+    provoking_vertex_last: bool,
+    validation: bool,
+) -> DeviceInfo {
+    let cstr = |bytes: &[std::ffi::c_char]| {
+        // SAFETY: the driver properties hold NUL-terminated strings within their arrays.
+        unsafe { CStr::from_ptr(bytes.as_ptr()) }
+            .to_string_lossy()
+            .into_owned()
+    };
+    DeviceInfo {
+        name: device_name(props),
+        device_type: format!("{:?}", props.device_type),
+        driver_name: cstr(&driver.driver_name),
+        driver_info: cstr(&driver.driver_info),
+        api_version: version_string(props.api_version),
+        vendor_id: props.vendor_id,
+        device_id: props.device_id,
+        max_image_dimension_2d: props.limits.max_image_dimension2_d,
+        max_uniform_buffer_range: props.limits.max_uniform_buffer_range,
+        min_uniform_buffer_offset_alignment: props.limits.min_uniform_buffer_offset_alignment,
+        max_vertex_output_components: props.limits.max_vertex_output_components,
+        timestamp_period_ns: props.limits.timestamp_period,
+        timestamp_valid_bits,
+        timestamps_supported: timestamp_valid_bits > 0,
+        pipeline_statistics_query,
+        provoking_vertex_last,
+        validation,
     }
 }
 

@@ -6,6 +6,6 @@ pub mod instance;
 pub mod objects;
 pub mod resources;
 
-pub use device::{Device, DeviceInfo};
+pub use device::{Device, DeviceInfo, EnabledFeatures};
 pub use instance::{Instance, Validation, ValidationSink};
 pub use resources::{Buffer, Image};

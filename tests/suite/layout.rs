@@ -110,7 +110,7 @@ fn stages() -> Vec<(String, &'static [u8])> {
         stages.push((format!("{}.vert", v.name), v.vertex));
         stages.push((format!("{}.frag", v.name), v.fragment));
     }
-    assert_eq!(stages.len(), 10, "five variants of two stages");
+    assert_eq!(stages.len(), 20, "ten variants of two stages");
     stages
 }
 
@@ -126,7 +126,7 @@ fn draw_block_matches_the_glsl_in_every_stage() {
         let r = reflect(spirv);
         let draw = r.struct_id("Draw");
         let want = rust_offsets!(DrawBlock: modelview, projection, normal_matrix, front, back, a_cs,
-            light_count, lighting, v_bs, t_bs, separate_specular, color_material,
+            current_color, light_count, lighting, v_bs, t_bs, separate_specular, color_material,
             color_material_front, color_material_back, color_material_mode, normalize, rescale, lights);
         assert_eq!(r.members(draw), want, "{stage}: Draw block offsets");
 
@@ -160,12 +160,17 @@ fn draw_block_matches_the_glsl_in_every_stage() {
 }
 
 /// The stages that evaluate the lighting equation, and so read every specialization constant.
-const LIGHTING_STAGES: [&str; 5] = [
+const LIGHTING_STAGES: [&str; 10] = [
     "vertex.vert",
     "vertex_one_color.vert",
     "flat.vert",
     "flat_one_color.vert",
     "fragment.frag",
+    "vertex_current_color.vert",
+    "vertex_one_color_current_color.vert",
+    "flat_current_color.vert",
+    "flat_one_color_current_color.vert",
+    "fragment_current_color.frag",
 ];
 
 #[test]

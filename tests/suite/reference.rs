@@ -253,20 +253,22 @@ fn two_sided_back_face_uses_back_material_and_negated_normal() {
 fn color_material_tracks_the_current_color() {
     let mut gl = lit_gl();
     gl.light_model(LightModelParam::Ambient(Vec4::ZERO)).unwrap();
+    // Enabling COLOR_MATERIAL writes the current color into the tracked AMBIENT_AND_DIFFUSE.
+    gl.color(Vec4::new(0.5, 0.5, 0.5, 1.0)).unwrap();
     gl.enable(Cap::ColorMaterial).unwrap();
+    assert_eq!(gl.lighting.front.diffuse, Vec4::new(0.5, 0.5, 0.5, 1.0));
     let c = DVec4::new(0.25, 0.5, 0.75, 1.0);
     let lit = reference::light_face(&gl.lighting, V, N, c, false);
     assert_rgb(lit.c_pri, [0.25, 0.5, 0.75], "AMBIENT_AND_DIFFUSE replaces d_cm");
+    // Tracking EMISSION: the vertex color is e_cm; d_cm keeps the color written at enable.
     gl.color_material(Face::FrontAndBack, ColorMaterialMode::Emission);
     let lit = reference::light_face(&gl.lighting, V, N, c, false);
-    assert_rgb(
-        lit.c_pri,
-        [0.25 + 0.8, 0.5 + 0.8, 0.75 + 0.8].map(|v: f64| v.min(1.0)),
-        "EMISSION",
-    );
+    assert_rgb(lit.c_pri, [0.75, 1.0, 1.0], "EMISSION");
+    // Tracking only BACK: the front keeps the last color written into it, not c.
+    gl.color(Vec4::new(0.1, 0.0, 0.0, 1.0)).unwrap();
     gl.color_material(Face::Back, ColorMaterialMode::Emission);
     let lit = reference::light_face(&gl.lighting, V, N, c, false);
-    assert_rgb(lit.c_pri, [0.8; 3], "BACK only leaves the front alone");
+    assert_rgb(lit.c_pri, [0.6, 0.5, 0.5], "BACK only leaves the front alone");
 }
 
 /// Spec 2.14.1: spot_i is (P_pliV ⊙ ŝ_dli)^s_rli when P_pliV ⊙ ŝ_dli ≥ cos(c_rli): a point

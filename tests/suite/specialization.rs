@@ -153,18 +153,33 @@ fn one_sided_single_color_states_pass_one_color_between_the_stages() {
     separate.model.color_control = ColorControl::SeparateSpecularColor;
     let flat = lit(2, LightingMode::Flat);
     assert_eq!(
-        variant_name(LightingMode::Vertex, key(&one_sided)),
+        variant_name(LightingMode::Vertex, key(&one_sided), true),
         "vertex_one_color"
     );
-    assert_eq!(variant_name(LightingMode::Flat, key(&flat)), "flat_one_color");
     assert_eq!(
-        variant_name(LightingMode::Vertex, key(&unlit())),
+        variant_name(LightingMode::Flat, key(&flat), true),
+        "flat_one_color"
+    );
+    assert_eq!(
+        variant_name(LightingMode::Vertex, key(&unlit()), true),
         "vertex_one_color"
     );
     for s in [two_sided, separate] {
-        assert_eq!(variant_name(LightingMode::Vertex, key(&s)), "vertex");
+        assert_eq!(variant_name(LightingMode::Vertex, key(&s), true), "vertex");
     }
     // The uber-shader passes every color; fragment mode has one pair of stages.
-    assert_eq!(variant_name(LightingMode::Vertex, SpecKey::UBER), "vertex");
-    assert_eq!(variant_name(LightingMode::Fragment, key(&one_sided)), "fragment");
+    assert_eq!(variant_name(LightingMode::Vertex, SpecKey::UBER, true), "vertex");
+    assert_eq!(
+        variant_name(LightingMode::Fragment, key(&one_sided), true),
+        "fragment"
+    );
+    // Without a color array, the same variants read GL's current color.
+    assert_eq!(
+        variant_name(LightingMode::Vertex, key(&one_sided), false),
+        "vertex_one_color_current_color"
+    );
+    assert_eq!(
+        variant_name(LightingMode::Fragment, key(&one_sided), false),
+        "fragment_current_color"
+    );
 }
