@@ -78,6 +78,10 @@ pub enum Error {
     #[error("the validation layer reported {} error(s):\n{}", .0.len(), .0.join("\n"))]
     Validation(Vec<String>),
 
+    /// A [`Lighting`](crate::Lighting) setting or draw that cannot be used.
+    #[error(transparent)]
+    Lighting(#[from] LightingError),
+
     /// A mesh was rejected before anything was uploaded or drawn.
     #[error("invalid mesh: {0}")]
     Mesh(#[from] MeshError),
@@ -87,6 +91,85 @@ pub enum Error {
     /// attenuation factors are all 0.
     #[error(transparent)]
     State(#[from] StateError),
+}
+
+/// Why a [`Lighting`](crate::Lighting) cannot be made as asked or cannot record a draw.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum LightingError {
+    /// A vertex binding appears twice in [`VertexInput::bindings`](crate::VertexInput).
+    #[error("vertex binding {binding} is listed twice: expected each binding once")]
+    DuplicateBinding {
+        /// The binding number.
+        binding: u32,
+    },
+    /// A binding steps per instance; GL's vertex arrays step per vertex.
+    #[error(
+        "vertex binding {binding} has input rate {rate:?}: expected VERTEX (GL's arrays are per vertex)"
+    )]
+    InputRate {
+        /// The binding number.
+        binding: u32,
+        /// Its input rate.
+        rate: ash::vk::VertexInputRate,
+    },
+    /// An attribute reads a binding the layout does not have.
+    #[error("the {attribute} attribute reads binding {binding}: expected one of the bindings {available:?}")]
+    UnknownBinding {
+        /// `position`, `normal`, `color` or `texcoord`.
+        attribute: &'static str,
+        /// The binding it names.
+        binding: u32,
+        /// The bindings the layout has.
+        available: Vec<u32>,
+    },
+    /// An attribute's format is not one the shaders read as floats.
+    #[error("the {attribute} attribute has format {format:?}: expected a format the shader reads as floats (SFLOAT, UNORM or SNORM, as listed in VertexInput::validate)")]
+    AttributeFormat {
+        /// `position`, `normal`, `color` or `texcoord`.
+        attribute: &'static str,
+        /// The format given.
+        format: ash::vk::Format,
+    },
+    /// A draw tests depth but the target has no depth attachment.
+    #[error("the draw tests depth, but the target has no depth format: expected RasterState::depth_test false or a Target::depth_format")]
+    NoDepthAttachment,
+    /// `frames_in_flight` is 0.
+    #[error("frames_in_flight is 0: expected at least 1 frame slot")]
+    NoFrameSlots,
+    /// A frame slot past `frames_in_flight`.
+    #[error("frame slot {slot} does not exist: expected 0..{slots} (frames_in_flight)")]
+    FrameSlot {
+        /// The slot given.
+        slot: u32,
+        /// How many there are.
+        slots: u32,
+    },
+    /// The set index is past what the device can bind.
+    #[error("set_index {index} is past the device's maxBoundDescriptorSets: expected 0..{max}")]
+    SetIndex {
+        /// The index given.
+        index: u32,
+        /// `maxBoundDescriptorSets`.
+        max: u32,
+    },
+    /// A draw passes a different number of vertex buffers than the layout has bindings.
+    #[error(
+        "the draw passes {given} vertex buffer(s): expected {expected}, one per binding of the vertex layout"
+    )]
+    VertexBuffers {
+        /// Buffers passed.
+        given: usize,
+        /// Bindings in the layout.
+        expected: usize,
+    },
+    /// So many draws in one frame slot that a dynamic offset would pass 4 GiB.
+    #[error(
+        "{draws} draws in one frame slot put a uniform offset past 4 GiB: expected fewer draws per frame"
+    )]
+    TooManyDraws {
+        /// Draws recorded in the slot so far.
+        draws: u64,
+    },
 }
 
 /// Why a mesh cannot be drawn or made.

@@ -34,6 +34,8 @@ pub mod tools;
 #[warn(missing_docs)]
 pub mod vk;
 
-pub use draw::pipeline::Specialize;
-pub use error::{Error, Result};
+pub use draw::lighting::{Lighting, LightingOptions, LitDraw};
+pub use draw::pipeline::{Attribute, Blend, RasterState, Specialize, Target, VertexInput};
+pub use draw::record::Geometry;
+pub use error::{Error, LightingError, MeshError, Result};
 pub use renderer::{Draw, Frame, FrameStats, Mesh, PipelineStats, Pixels, Renderer, RendererOptions};

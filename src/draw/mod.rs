@@ -1,4 +1,8 @@
-//! Pipelines per lighting mode and specialization key, and the recording of draws.
+//! Pipelines per lighting mode, specialization key and raster state; the per-draw state
+//! memory; the recording of draws; and [`lighting::Lighting`], which puts them together for
+//! a caller's device and command buffers.
 
+pub mod lighting;
 pub mod pipeline;
 pub mod record;
+mod ring;

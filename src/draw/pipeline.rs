@@ -1,12 +1,13 @@
-//! Shader modules and the graphics pipelines: one per lighting mode and specialization key,
-//! created on first use through a pipeline cache.
+//! Shader modules and the graphics pipelines: one per lighting mode, specialization key and
+//! [`RasterState`], for one target and vertex layout, created on first use through a
+//! pipeline cache (the caller's or ffvk's own).
 
 use std::collections::HashMap;
 use std::sync::Arc;
 
 use ash::vk;
 
-use crate::error::{Error, Result};
+use crate::error::{Error, LightingError, Result};
 use crate::gl::state::LightingMode;
 use crate::gpu::layout::{SpecConstant, SpecKey, SPEC_CONSTANT_COUNT};
 use crate::gpu::shaders;
@@ -48,11 +49,31 @@ pub fn variant_name(mode: LightingMode, key: SpecKey, color_array: bool) -> &'st
     }
 }
 
-/// A shader module from embedded SPIR-V bytes.
-fn shader_module(device: &Arc<Device>, name: &str, bytes: &[u8]) -> Result<ShaderModule> {
-    let words = ash::util::read_spv(&mut std::io::Cursor::new(bytes))
+/// A shader module from embedded SPIR-V bytes, its descriptor set moved to `set`.
+fn shader_module(device: &Arc<Device>, name: &str, bytes: &[u8], set: u32) -> Result<ShaderModule> {
+    let mut words = ash::util::read_spv(&mut std::io::Cursor::new(bytes))
         .map_err(|e| Error::MissingFeature(format!("valid SPIR-V in {name}: {e}")))?;
+    set_descriptor_set(&mut words, set);
     ShaderModule::new(device, &words)
+}
+
+/// Rewrites every `OpDecorate … DescriptorSet n` of a SPIR-V module to `set`: the GLSL
+/// declares its one uniform block in set 0, and callers choose where it goes.
+pub fn set_descriptor_set(words: &mut [u32], set: u32) {
+    const OP_DECORATE: u32 = 71;
+    const DESCRIPTOR_SET: u32 = 34;
+    // The header is 5 words; each instruction starts with (word count << 16) | opcode.
+    let mut at = 5;
+    while at < words.len() {
+        let count = (words[at] >> 16) as usize;
+        if count == 0 {
+            break;
+        }
+        if words[at] & 0xffff == OP_DECORATE && count == 4 && words[at + 2] == DESCRIPTOR_SET {
+            words[at + 3] = set;
+        }
+        at += count;
+    }
 }
 
 /// Which pipelines draws use: variants specialized for their lighting state, or the
@@ -99,37 +120,283 @@ impl std::str::FromStr for Specialize {
     }
 }
 
-/// The descriptor layout, pipeline layout, cache and the pipelines made so far.
+/// The caller's attachments, which every pipeline renders into (dynamic rendering).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Target {
+    /// The one color attachment's format.
+    pub color_format: vk::Format,
+    /// The depth attachment's format; `UNDEFINED` for none (then no draw may test depth).
+    pub depth_format: vk::Format,
+    /// Samples per pixel of both attachments.
+    pub samples: vk::SampleCountFlags,
+}
+
+impl Target {
+    /// ffvk's offscreen target: [`COLOR_FORMAT`], [`DEPTH_FORMAT`], one sample.
+    pub const OFFSCREEN: Target = Target {
+        color_format: COLOR_FORMAT,
+        depth_format: DEPTH_FORMAT,
+        samples: vk::SampleCountFlags::TYPE_1,
+    };
+}
+
+/// Where one vertex attribute comes from: a binding of [`VertexInput::bindings`], the byte
+/// offset in its element and the format (any format the shader can read as floats).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Attribute {
+    /// The vertex buffer binding it is read from.
+    pub binding: u32,
+    /// Byte offset within one element of that binding.
+    pub offset: u32,
+    /// The attribute's format, e.g. `R32G32B32_SFLOAT` or `R8G8B8A8_UNORM`.
+    pub format: vk::Format,
+}
+
+/// The caller's vertex layout: its buffer bindings and where each GL attribute lives. The
+/// shaders read position at location 0, normal at 1 and color at 2.
+#[derive(Debug, Clone)]
+pub struct VertexInput {
+    /// The vertex buffer bindings, in the order draws pass their buffers.
+    pub bindings: Vec<vk::VertexInputBindingDescription>,
+    /// Object-space position (`glVertexPointer`); missing components read as (x, y, 0, 1).
+    pub position: Attribute,
+    /// Object-space normal (`glNormalPointer`).
+    pub normal: Attribute,
+    /// Per-vertex color (`glColorPointer`); `None`: every vertex takes GL's current color
+    /// ([`LightingState::current_color`](crate::gl::state::LightingState::current_color)).
+    pub color: Option<Attribute>,
+    /// Texture coordinate (`glTexCoordPointer`): validated and kept for texturing, which does
+    /// not exist yet; no shader reads it.
+    pub texcoord: Option<Attribute>,
+}
+
+/// Formats whose components a shader reads as floats: what the attributes may use.
+const FLOAT_FORMATS: &[vk::Format] = &[
+    vk::Format::R32G32_SFLOAT,
+    vk::Format::R32G32B32_SFLOAT,
+    vk::Format::R32G32B32A32_SFLOAT,
+    vk::Format::R16G16B16A16_SFLOAT,
+    vk::Format::R16G16B16A16_SNORM,
+    vk::Format::R16G16B16A16_UNORM,
+    vk::Format::R8G8B8A8_SNORM,
+    vk::Format::R8G8B8A8_UNORM,
+    vk::Format::B8G8R8A8_UNORM,
+    vk::Format::A2B10G10R10_SNORM_PACK32,
+];
+
+impl VertexInput {
+    /// [`Vertex`] interleaved in binding 0: position, normal and color as floats.
+    pub fn interleaved() -> Self {
+        let attribute = |offset: usize, format| Attribute {
+            binding: 0,
+            offset: offset as u32,
+            format,
+        };
+        VertexInput {
+            bindings: vec![vk::VertexInputBindingDescription {
+                binding: 0,
+                stride: std::mem::size_of::<Vertex>() as u32,
+                input_rate: vk::VertexInputRate::VERTEX,
+            }],
+            position: attribute(
+                std::mem::offset_of!(Vertex, position),
+                vk::Format::R32G32B32_SFLOAT,
+            ),
+            normal: attribute(std::mem::offset_of!(Vertex, normal), vk::Format::R32G32B32_SFLOAT),
+            color: Some(attribute(
+                std::mem::offset_of!(Vertex, color),
+                vk::Format::R32G32B32A32_SFLOAT,
+            )),
+            texcoord: None,
+        }
+    }
+
+    /// Checks bindings and attributes; errors name the attribute and the value.
+    pub fn validate(&self) -> Result<()> {
+        for (i, b) in self.bindings.iter().enumerate() {
+            if self.bindings[..i].iter().any(|o| o.binding == b.binding) {
+                return Err(LightingError::DuplicateBinding { binding: b.binding }.into());
+            }
+            if b.input_rate != vk::VertexInputRate::VERTEX {
+                return Err(LightingError::InputRate {
+                    binding: b.binding,
+                    rate: b.input_rate,
+                }
+                .into());
+            }
+        }
+        let named = [
+            ("position", Some(self.position)),
+            ("normal", Some(self.normal)),
+            ("color", self.color),
+            ("texcoord", self.texcoord),
+        ];
+        for (name, attribute) in named {
+            let Some(a) = attribute else { continue };
+            if !self.bindings.iter().any(|b| b.binding == a.binding) {
+                return Err(LightingError::UnknownBinding {
+                    attribute: name,
+                    binding: a.binding,
+                    available: self.bindings.iter().map(|b| b.binding).collect(),
+                }
+                .into());
+            }
+            if !FLOAT_FORMATS.contains(&a.format) {
+                return Err(LightingError::AttributeFormat {
+                    attribute: name,
+                    format: a.format,
+                }
+                .into());
+            }
+        }
+        Ok(())
+    }
+
+    /// The attribute descriptions the pipelines use: locations 0, 1 and (with a color
+    /// array) 2.
+    fn attributes(&self) -> Vec<vk::VertexInputAttributeDescription> {
+        let described = |location, a: Attribute| vk::VertexInputAttributeDescription {
+            location,
+            binding: a.binding,
+            format: a.format,
+            offset: a.offset,
+        };
+        let mut out = vec![described(0, self.position), described(1, self.normal)];
+        if let Some(color) = self.color {
+            out.push(described(2, color));
+        }
+        out
+    }
+}
+
+/// A blend equation (`glBlendFuncSeparate`, `glBlendEquationSeparate`) in Vulkan's terms.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Blend {
+    /// Source factor for RGB.
+    pub src_color: vk::BlendFactor,
+    /// Destination factor for RGB.
+    pub dst_color: vk::BlendFactor,
+    /// Equation for RGB.
+    pub color_op: vk::BlendOp,
+    /// Source factor for alpha.
+    pub src_alpha: vk::BlendFactor,
+    /// Destination factor for alpha.
+    pub dst_alpha: vk::BlendFactor,
+    /// Equation for alpha.
+    pub alpha_op: vk::BlendOp,
+}
+
+/// The fixed-function state GL keeps beside lighting that Vulkan bakes into a pipeline: part
+/// of each draw, and of the key its pipeline is found by. `Default` is GL's initial state.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct RasterState {
+    /// `GL_CULL_FACE` with `glCullFace`: `NONE` (GL's default: culling disabled).
+    pub cull_mode: vk::CullModeFlags,
+    /// `glFrontFace`: `COUNTER_CLOCKWISE` is GL's CCW (the default; ffvk's clip-space flip
+    /// keeps GL's winding).
+    pub front_face: vk::FrontFace,
+    /// `GL_DEPTH_TEST`; off by default, as in GL. Needs a depth format in the [`Target`].
+    pub depth_test: bool,
+    /// `glDepthMask`; on by default. Only written while the depth test is on, as in GL.
+    pub depth_write: bool,
+    /// `glDepthFunc`; `LESS` by default.
+    pub depth_compare: vk::CompareOp,
+    /// `GL_BLEND`; `None` (disabled) by default.
+    pub blend: Option<Blend>,
+}
+
+impl Default for RasterState {
+    fn default() -> Self {
+        RasterState {
+            cull_mode: vk::CullModeFlags::NONE,
+            front_face: vk::FrontFace::COUNTER_CLOCKWISE,
+            depth_test: false,
+            depth_write: true,
+            depth_compare: vk::CompareOp::LESS,
+            blend: None,
+        }
+    }
+}
+
+/// What every pipeline of one [`Pipelines`] shares.
+#[derive(Debug, Clone)]
+pub struct PipelineConfig {
+    /// The attachments' formats and samples.
+    pub target: Target,
+    /// The vertex layout.
+    pub vertex_input: VertexInput,
+    /// The descriptor set index of the uniform block (lower sets are left empty).
+    pub set_index: u32,
+    /// The caller's pipeline cache; `None` makes one of ffvk's own.
+    pub cache: Option<vk::PipelineCache>,
+}
+
+impl PipelineConfig {
+    /// ffvk's offscreen renderer: [`Target::OFFSCREEN`], [`VertexInput::interleaved`], set 0.
+    pub fn offscreen() -> Self {
+        PipelineConfig {
+            target: Target::OFFSCREEN,
+            vertex_input: VertexInput::interleaved(),
+            set_index: 0,
+            cache: None,
+        }
+    }
+}
+
+/// What a pipeline is found by.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+struct PipelineKey {
+    mode: LightingMode,
+    spec: SpecKey,
+    raster: RasterState,
+}
+
+/// The descriptor layouts, pipeline layout, cache and the pipelines made so far.
 pub struct Pipelines {
     // Field order is drop order: pipelines before the layouts and cache they were made with.
-    pipelines: HashMap<(LightingMode, SpecKey), Pipeline>,
-    cache: PipelineCache,
+    pipelines: HashMap<PipelineKey, Pipeline>,
+    own_cache: Option<PipelineCache>,
     layout: PipelineLayout,
     set_layout: DescriptorSetLayout,
+    /// Empty layouts for the sets below `set_index`.
+    _lower_sets: Vec<DescriptorSetLayout>,
+    config: PipelineConfig,
     device: Arc<Device>,
 }
 
 impl Pipelines {
-    /// The layouts and an empty cache; pipelines are created by [`Pipelines::get`].
-    pub fn new(device: &Arc<Device>) -> Result<Self> {
+    /// The layouts and a cache; pipelines are created by [`Pipelines::get`].
+    pub fn new(device: &Arc<Device>, config: PipelineConfig) -> Result<Self> {
+        config.vertex_input.validate()?;
         let bindings = [vk::DescriptorSetLayoutBinding::default()
             .binding(0)
             .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC)
             .descriptor_count(1)
             .stage_flags(vk::ShaderStageFlags::VERTEX | vk::ShaderStageFlags::FRAGMENT)];
         let set_layout = DescriptorSetLayout::new(device, &bindings)?;
-        let layout = PipelineLayout::new(device, &set_layout)?;
-        let cache = PipelineCache::new(device)?;
+        let lower_sets = (0..config.set_index)
+            .map(|_| DescriptorSetLayout::new(device, &[]))
+            .collect::<Result<Vec<_>>>()?;
+        let mut set_layouts: Vec<&DescriptorSetLayout> = lower_sets.iter().collect();
+        set_layouts.push(&set_layout);
+        let layout = PipelineLayout::new(device, &set_layouts)?;
+        let own_cache = match config.cache {
+            Some(_) => None,
+            None => Some(PipelineCache::new(device)?),
+        };
         Ok(Pipelines {
             pipelines: HashMap::new(),
-            cache,
+            own_cache,
             layout,
             set_layout,
+            _lower_sets: lower_sets,
+            config,
             device: device.clone(),
         })
     }
 
-    /// The layout of descriptor set 0 (binding 0: the draw's uniform block, dynamic offset).
+    /// The layout of the uniform block's descriptor set (binding 0: the draw's block, at a
+    /// dynamic offset).
     pub fn set_layout(&self) -> &DescriptorSetLayout {
         &self.set_layout
     }
@@ -139,36 +406,60 @@ impl Pipelines {
         self.layout.raw()
     }
 
-    /// The pipeline of `mode` specialized by `key` ([`SpecKey::UBER`]: the uber-shader),
-    /// created on first use.
-    pub fn get(&mut self, mode: LightingMode, key: SpecKey) -> Result<vk::Pipeline> {
-        if let Some(pipeline) = self.pipelines.get(&(mode, key)) {
+    /// What the pipelines share.
+    pub fn config(&self) -> &PipelineConfig {
+        &self.config
+    }
+
+    /// The pipeline of `mode` specialized by `key` ([`SpecKey::UBER`]: the uber-shader) with
+    /// `raster`, created on first use.
+    pub fn get(&mut self, mode: LightingMode, key: SpecKey, raster: RasterState) -> Result<vk::Pipeline> {
+        let k = PipelineKey {
+            mode,
+            spec: key,
+            raster,
+        };
+        if let Some(pipeline) = self.pipelines.get(&k) {
             return Ok(pipeline.raw());
         }
-        let pipeline = self.create(mode, key)?;
+        let pipeline = self.create(k)?;
         let raw = pipeline.raw();
-        self.pipelines.insert((mode, key), pipeline);
+        self.pipelines.insert(k, pipeline);
         Ok(raw)
     }
 
-    /// Whether the pipeline of `mode` and `key` exists already.
-    pub fn contains(&self, mode: LightingMode, key: SpecKey) -> bool {
-        self.pipelines.contains_key(&(mode, key))
+    /// Whether the pipeline of `mode`, `key` and `raster` exists already.
+    pub fn contains(&self, mode: LightingMode, key: SpecKey, raster: RasterState) -> bool {
+        self.pipelines.contains_key(&PipelineKey {
+            mode,
+            spec: key,
+            raster,
+        })
     }
 
     /// How many pipelines exist, and how many of them are specialized.
     pub fn counts(&self) -> (usize, usize) {
-        let specialized = self.pipelines.keys().filter(|(_, k)| *k != SpecKey::UBER).count();
+        let specialized = self.pipelines.keys().filter(|k| k.spec != SpecKey::UBER).count();
         (self.pipelines.len(), specialized)
     }
 
-    fn create(&self, mode: LightingMode, key: SpecKey) -> Result<Pipeline> {
+    fn create(&self, k: PipelineKey) -> Result<Pipeline> {
         let device = &self.device;
-        let name = variant_name(mode, key, true);
+        let config = &self.config;
+        if k.mode == LightingMode::Flat && !device.info.provoking_vertex_last {
+            return Err(Error::MissingFeature(
+                "provokingVertexLast of VK_EXT_provoking_vertex enabled on the device (the flat mode takes each triangle's last vertex, as GL does)"
+                    .into(),
+            ));
+        }
+        if k.raster.depth_test && config.target.depth_format == vk::Format::UNDEFINED {
+            return Err(LightingError::NoDepthAttachment.into());
+        }
+        let name = variant_name(k.mode, k.spec, config.vertex_input.color.is_some());
         let variant = shaders::variant(name)
             .ok_or_else(|| Error::MissingFeature(format!("the embedded shader variant {name}")))?;
-        let vert = shader_module(device, name, variant.vertex)?;
-        let frag = shader_module(device, name, variant.fragment)?;
+        let vert = shader_module(device, name, variant.vertex, config.set_index)?;
+        let frag = shader_module(device, name, variant.fragment, config.set_index)?;
         // Every constant is an `int` at offset 4 * constant_id of the key; a stage that does
         // not use a constant ignores its entry.
         let entries: [vk::SpecializationMapEntry; SPEC_CONSTANT_COUNT] =
@@ -179,7 +470,7 @@ impl Pipelines {
             });
         let specialization = vk::SpecializationInfo::default()
             .map_entries(&entries)
-            .data(bytemuck::bytes_of(&key));
+            .data(bytemuck::bytes_of(&k.spec));
         let mut stages = [
             vk::PipelineShaderStageCreateInfo::default()
                 .stage(vk::ShaderStageFlags::VERTEX)
@@ -191,80 +482,60 @@ impl Pipelines {
                 .name(c"main"),
         ];
         // The uber-shader is the modules as compiled, every constant at its default.
-        if key != SpecKey::UBER {
+        if k.spec != SpecKey::UBER {
             for stage in &mut stages {
                 *stage = stage.specialization_info(&specialization);
             }
         }
-        let vertex_bindings = [vk::VertexInputBindingDescription {
-            binding: 0,
-            stride: std::mem::size_of::<Vertex>() as u32,
-            input_rate: vk::VertexInputRate::VERTEX,
-        }];
-        let attribute = |location, format, offset: usize| vk::VertexInputAttributeDescription {
-            location,
-            binding: 0,
-            format,
-            offset: offset as u32,
-        };
-        let vertex_attributes = [
-            attribute(
-                0,
-                vk::Format::R32G32B32_SFLOAT,
-                std::mem::offset_of!(Vertex, position),
-            ),
-            attribute(
-                1,
-                vk::Format::R32G32B32_SFLOAT,
-                std::mem::offset_of!(Vertex, normal),
-            ),
-            attribute(
-                2,
-                vk::Format::R32G32B32A32_SFLOAT,
-                std::mem::offset_of!(Vertex, color),
-            ),
-        ];
+        let attributes = config.vertex_input.attributes();
         let vertex_input = vk::PipelineVertexInputStateCreateInfo::default()
-            .vertex_binding_descriptions(&vertex_bindings)
-            .vertex_attribute_descriptions(&vertex_attributes);
+            .vertex_binding_descriptions(&config.vertex_input.bindings)
+            .vertex_attribute_descriptions(&attributes);
         let input_assembly = vk::PipelineInputAssemblyStateCreateInfo::default()
             .topology(vk::PrimitiveTopology::TRIANGLE_LIST);
         let viewport = vk::PipelineViewportStateCreateInfo::default()
             .viewport_count(1)
             .scissor_count(1);
-        // GL's flat shading takes the last vertex of each triangle.
+        // GL's flat shading takes the last vertex of each triangle. Only flat pipelines ask
+        // for it: the other modes interpolate, and a caller's device may lack the feature.
         let mut provoking = vk::PipelineRasterizationProvokingVertexStateCreateInfoEXT::default()
             .provoking_vertex_mode(vk::ProvokingVertexModeEXT::LAST_VERTEX);
-        // GL defaults: no culling; counter-clockwise front faces. After the y flip of
-        // VK_FROM_GL_CLIP a GL-CCW triangle has positive area in Vulkan's formula, so
-        // Vulkan's COUNTER_CLOCKWISE matches GL's FrontFace(CCW).
-        let rasterization = vk::PipelineRasterizationStateCreateInfo::default()
+        // After the y flip of VK_FROM_GL_CLIP a GL-CCW triangle has positive area in Vulkan's
+        // formula, so Vulkan's COUNTER_CLOCKWISE matches GL's FrontFace(CCW).
+        let mut rasterization = vk::PipelineRasterizationStateCreateInfo::default()
             .polygon_mode(vk::PolygonMode::FILL)
-            .cull_mode(vk::CullModeFlags::NONE)
-            .front_face(vk::FrontFace::COUNTER_CLOCKWISE)
-            .line_width(1.0)
-            .push_next(&mut provoking);
-        let multisample = vk::PipelineMultisampleStateCreateInfo::default()
-            .rasterization_samples(vk::SampleCountFlags::TYPE_1);
+            .cull_mode(k.raster.cull_mode)
+            .front_face(k.raster.front_face)
+            .line_width(1.0);
+        if k.mode == LightingMode::Flat {
+            rasterization = rasterization.push_next(&mut provoking);
+        }
+        let multisample =
+            vk::PipelineMultisampleStateCreateInfo::default().rasterization_samples(config.target.samples);
         let depth = vk::PipelineDepthStencilStateCreateInfo::default()
-            .depth_test_enable(true)
-            .depth_write_enable(true)
-            .depth_compare_op(vk::CompareOp::LESS);
-        let blend_attachments = [vk::PipelineColorBlendAttachmentState::default()
-            .blend_enable(false)
-            .color_write_mask(vk::ColorComponentFlags::RGBA)];
+            .depth_test_enable(k.raster.depth_test)
+            .depth_write_enable(k.raster.depth_test && k.raster.depth_write)
+            .depth_compare_op(k.raster.depth_compare);
+        let mut blend_attachment =
+            vk::PipelineColorBlendAttachmentState::default().color_write_mask(vk::ColorComponentFlags::RGBA);
+        if let Some(b) = k.raster.blend {
+            blend_attachment = blend_attachment
+                .blend_enable(true)
+                .src_color_blend_factor(b.src_color)
+                .dst_color_blend_factor(b.dst_color)
+                .color_blend_op(b.color_op)
+                .src_alpha_blend_factor(b.src_alpha)
+                .dst_alpha_blend_factor(b.dst_alpha)
+                .alpha_blend_op(b.alpha_op);
+        }
+        let blend_attachments = [blend_attachment];
         let blend = vk::PipelineColorBlendStateCreateInfo::default().attachments(&blend_attachments);
-        let dynamic_states = [
-            vk::DynamicState::VIEWPORT,
-            vk::DynamicState::SCISSOR,
-            vk::DynamicState::DEPTH_TEST_ENABLE,
-            vk::DynamicState::DEPTH_WRITE_ENABLE,
-        ];
+        let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
         let dynamic = vk::PipelineDynamicStateCreateInfo::default().dynamic_states(&dynamic_states);
-        let color_formats = [COLOR_FORMAT];
+        let color_formats = [config.target.color_format];
         let mut rendering = vk::PipelineRenderingCreateInfo::default()
             .color_attachment_formats(&color_formats)
-            .depth_attachment_format(DEPTH_FORMAT);
+            .depth_attachment_format(config.target.depth_format);
         let info = vk::GraphicsPipelineCreateInfo::default()
             .stages(&stages)
             .vertex_input_state(&vertex_input)
@@ -277,6 +548,11 @@ impl Pipelines {
             .dynamic_state(&dynamic)
             .layout(self.layout.raw())
             .push_next(&mut rendering);
-        Pipeline::graphics(device, &self.cache, &info)
+        let cache = match (&self.own_cache, self.config.cache) {
+            (Some(own), _) => own.raw(),
+            (None, Some(caller)) => caller,
+            (None, None) => vk::PipelineCache::null(),
+        };
+        Pipeline::graphics(device, cache, &info)
     }
 }

@@ -2,53 +2,104 @@
 
 use ash::vk;
 
-/// One indexed draw of a lit mesh: its pipeline, the per-draw uniform block (a dynamic offset
-/// into descriptor set 0) and the vertex and index buffers.
+/// Which vertices a draw reads: GL's `glDrawElements` or `glDrawArrays` with
+/// `GL_TRIANGLES`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Geometry {
+    /// Indexed triangles (`vkCmdDrawIndexed`).
+    Indexed {
+        /// The index buffer.
+        buffer: vk::Buffer,
+        /// Byte offset of index 0 in it.
+        offset: u64,
+        /// `UINT16` or `UINT32`.
+        index_type: vk::IndexType,
+        /// The first index read.
+        first_index: u32,
+        /// How many indices, three per triangle.
+        index_count: u32,
+        /// Added to every index before the vertex is fetched.
+        vertex_offset: i32,
+    },
+    /// Consecutive vertices, three per triangle (`vkCmdDraw`).
+    Vertices {
+        /// The first vertex.
+        first_vertex: u32,
+        /// How many vertices.
+        vertex_count: u32,
+    },
+}
+
+/// Everything one draw binds.
 #[derive(Debug, Clone, Copy)]
-pub struct IndexedDraw {
-    /// A pipeline of [`super::pipeline::Pipelines`].
+pub(crate) struct Bound<'a> {
+    /// The pipeline for the draw's mode, state and raster state.
     pub pipeline: vk::Pipeline,
     /// The pipeline layout it was created with.
     pub layout: vk::PipelineLayout,
-    /// Descriptor set 0: binding 0 is the uniform block (`UNIFORM_BUFFER_DYNAMIC`).
+    /// The index of the uniform block's set in that layout.
+    pub set_index: u32,
+    /// The set (binding 0: the uniform block, `UNIFORM_BUFFER_DYNAMIC`).
     pub set: vk::DescriptorSet,
-    /// Offset of this draw's [`crate::gpu::layout::DrawBlock`] in the uniform buffer, a
-    /// multiple of `minUniformBufferOffsetAlignment`.
+    /// Offset of this draw's block, a multiple of `minUniformBufferOffsetAlignment`.
     pub uniform_offset: u32,
-    /// Interleaved [`crate::mesh::Vertex`] data at offset 0, bound to binding 0.
-    pub vertices: vk::Buffer,
-    /// `u32` indices at offset 0.
-    pub indices: vk::Buffer,
-    /// How many indices to draw (three per triangle).
-    pub index_count: u32,
+    /// The pipeline's vertex binding numbers.
+    pub bindings: &'a [vk::VertexInputBindingDescription],
+    /// One (buffer, byte offset) per entry of `bindings`.
+    pub vertex_buffers: &'a [(vk::Buffer, u64)],
 }
 
-/// Binds `draw`'s pipeline, uniform block and buffers into `cmd` and draws it.
+/// Binds `bound` into `cmd` and draws `geometry`.
 ///
 /// # Safety
 ///
 /// `cmd` is a command buffer of `device` in the recording state, inside a dynamic rendering
-/// pass whose formats match the pipeline's; every handle in `draw` belongs to `device` and
-/// stays alive until the command buffer has finished executing.
-pub(crate) unsafe fn record_indexed(device: &ash::Device, cmd: vk::CommandBuffer, draw: &IndexedDraw) {
-    // SAFETY (each call below): the caller's contract above; the bind point is graphics and
-    // set 0 is the only set of the layout, with one dynamic offset.
-    unsafe { device.cmd_bind_pipeline(cmd, vk::PipelineBindPoint::GRAPHICS, draw.pipeline) };
-    // SAFETY: as above.
+/// pass whose formats match the pipeline's, with viewport and scissor set; every handle
+/// belongs to `device` and stays alive until the command buffer has finished executing; the
+/// buffers hold what the geometry reads.
+pub(crate) unsafe fn record(
+    device: &ash::Device,
+    cmd: vk::CommandBuffer,
+    bound: &Bound,
+    geometry: &Geometry,
+) {
+    // SAFETY (each call below): the caller's contract above.
+    unsafe { device.cmd_bind_pipeline(cmd, vk::PipelineBindPoint::GRAPHICS, bound.pipeline) };
+    // SAFETY: as above; the set is at its index in the layout, with one dynamic offset.
     unsafe {
         device.cmd_bind_descriptor_sets(
             cmd,
             vk::PipelineBindPoint::GRAPHICS,
-            draw.layout,
-            0,
-            &[draw.set],
-            &[draw.uniform_offset],
+            bound.layout,
+            bound.set_index,
+            &[bound.set],
+            &[bound.uniform_offset],
         )
     };
-    // SAFETY: as above; binding 0 is the pipeline's only vertex binding.
-    unsafe { device.cmd_bind_vertex_buffers(cmd, 0, &[draw.vertices], &[0]) };
-    // SAFETY: as above.
-    unsafe { device.cmd_bind_index_buffer(cmd, draw.indices, 0, vk::IndexType::UINT32) };
-    // SAFETY: as above; the renderer checked every index against the vertex count at upload.
-    unsafe { device.cmd_draw_indexed(cmd, draw.index_count, 1, 0, 0, 0) };
+    for (binding, &(buffer, offset)) in bound.bindings.iter().zip(bound.vertex_buffers) {
+        // SAFETY: as above; one buffer per binding of the pipeline.
+        unsafe { device.cmd_bind_vertex_buffers(cmd, binding.binding, &[buffer], &[offset]) };
+    }
+    match *geometry {
+        Geometry::Indexed {
+            buffer,
+            offset,
+            index_type,
+            first_index,
+            index_count,
+            vertex_offset,
+        } => {
+            // SAFETY: as above.
+            unsafe { device.cmd_bind_index_buffer(cmd, buffer, offset, index_type) };
+            // SAFETY: as above; the caller's indices address its vertices.
+            unsafe { device.cmd_draw_indexed(cmd, index_count, 1, first_index, vertex_offset, 0) };
+        }
+        Geometry::Vertices {
+            first_vertex,
+            vertex_count,
+        } => {
+            // SAFETY: as above.
+            unsafe { device.cmd_draw(cmd, vertex_count, 1, first_vertex, 0) };
+        }
+    }
 }

@@ -5,13 +5,15 @@ use std::sync::Arc;
 use ash::vk;
 use glam::{Mat4, Vec4};
 
-use crate::draw::pipeline::{Pipelines, Specialize, COLOR_FORMAT, DEPTH_FORMAT, MAX_AUTO_VARIANTS};
-use crate::draw::record::{record_indexed, IndexedDraw};
+use crate::draw::lighting::{Lighting, LightingOptions, LitDraw};
+use crate::draw::pipeline::{RasterState, Target, VertexInput};
+use crate::draw::pipeline::{Specialize, COLOR_FORMAT, DEPTH_FORMAT};
+use crate::draw::record::Geometry;
 use crate::error::{vk_error, Error, MeshError, Result};
 use crate::gl::state::LightingState;
-use crate::gpu::layout::{DrawBlock, SpecKey};
+use crate::gpu::layout::DrawBlock;
 use crate::mesh::MeshData;
-use crate::vk::objects::{CommandPool, DescriptorPool, Fence};
+use crate::vk::objects::{CommandPool, Fence};
 use crate::vk::{Buffer, Device, DeviceInfo, Image, Instance, Validation, ValidationSink};
 
 mod queries;
@@ -80,6 +82,14 @@ pub struct Frame<'a> {
 }
 
 impl<'a> Frame<'a> {
+    /// The raster state of every draw: GL's defaults, with the depth test as the frame says.
+    fn raster(&self) -> RasterState {
+        RasterState {
+            depth_test: self.depth_test,
+            ..RasterState::default()
+        }
+    }
+
     /// An empty frame of `width` × `height` pixels, cleared to (0, 0, 0, 1), depth test on.
     /// The size is checked only when the frame is drawn.
     pub fn new(width: u32, height: u32) -> Self {
@@ -189,15 +199,13 @@ pub struct Renderer {
     // Field order is drop order (after Drop waits for the device): everything that holds the
     // device goes before `device`, the last Arc this renderer keeps.
     targets: Option<Targets>,
-    uniforms: Option<Buffer>,
-    descriptors: DescriptorPool,
-    pipelines: Pipelines,
+    /// The lighting pipelines and per-draw state memory (one frame slot: every frame is
+    /// waited for before the next).
+    lighting: Lighting,
     commands: CommandPool,
     fence: Fence,
     /// Timestamps and pipeline statistics, where the device has them.
     queries: Queries,
-    uniform_stride: u64,
-    specialize: Specialize,
     /// Set when a submission failed: the renderer refuses further frames.
     lost: bool,
     device: Arc<Device>,
@@ -208,27 +216,22 @@ impl Renderer {
     pub fn new(options: &RendererOptions) -> Result<Self> {
         let instance = Instance::new(options.validation)?;
         let device = Device::new(instance, options.device.as_deref())?;
-        let pipelines = Pipelines::new(&device)?;
-        let align = device.limits.min_uniform_buffer_offset_alignment.max(16);
-        let uniform_stride = (std::mem::size_of::<DrawBlock>() as u64).div_ceil(align) * align;
-        let pool_sizes = [vk::DescriptorPoolSize {
-            ty: vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC,
-            descriptor_count: 1,
-        }];
-        let descriptors = DescriptorPool::with_one_set(&device, &pool_sizes, pipelines.set_layout())?;
+        let lighting = Lighting::new(
+            &device,
+            &LightingOptions {
+                specialize: options.specialize,
+                ..LightingOptions::new(Target::OFFSCREEN, VertexInput::interleaved())
+            },
+        )?;
         let commands = CommandPool::with_one_buffer(&device, device.own().queue_family)?;
         let fence = Fence::new(&device)?;
         let queries = Queries::new(&device)?;
         let renderer = Renderer {
             targets: None,
-            uniforms: None,
-            descriptors,
-            pipelines,
+            lighting,
             commands,
             fence,
             queries,
-            uniform_stride,
-            specialize: options.specialize,
             lost: false,
             device,
         };
@@ -339,31 +342,6 @@ impl Renderer {
         Ok(())
     }
 
-    /// Makes the uniform buffer hold `draws` blocks and points the descriptor at it.
-    fn ensure_uniforms(&mut self, draws: usize) -> Result<()> {
-        let needed = self.uniform_stride * draws.max(1) as u64;
-        if self.uniforms.as_ref().is_some_and(|u| u.size() >= needed) {
-            return Ok(());
-        }
-        // Grow geometrically so scenes with more draws don't reallocate every frame.
-        let size = needed.max(self.uniforms.as_ref().map_or(0, |u| u.size() * 2));
-        let buffer = Buffer::new(&self.device, size, vk::BufferUsageFlags::UNIFORM_BUFFER)?;
-        let info = [vk::DescriptorBufferInfo {
-            buffer: buffer.raw(),
-            offset: 0,
-            range: std::mem::size_of::<DrawBlock>() as u64,
-        }];
-        let write = vk::WriteDescriptorSet::default()
-            .dst_set(self.descriptors.set())
-            .dst_binding(0)
-            .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC)
-            .buffer_info(&info);
-        // SAFETY: no command buffer using the set is pending (render waits for its fence).
-        unsafe { self.device.raw.update_descriptor_sets(&[write], &[]) };
-        self.uniforms = Some(buffer);
-        Ok(())
-    }
-
     /// Draws `frame` and returns its pixels, row 0 at the top of the view.
     pub fn render(&mut self, frame: &Frame) -> Result<Pixels> {
         self.draw_frame(
@@ -414,23 +392,15 @@ impl Renderer {
             }
         }
         self.ensure_targets(frame.width, frame.height)?;
-        self.ensure_uniforms(frame.draws.len())?;
-        let blocks = frame
-            .draws
-            .iter()
-            .map(|d| DrawBlock::new(&d.state, d.modelview, d.projection))
-            .collect::<Result<Vec<_>, _>>()?;
-        let uniforms = self.uniforms.as_mut().expect("ensure_uniforms made it");
-        for (i, block) in blocks.iter().enumerate() {
-            uniforms.write(i as u64 * self.uniform_stride, bytemuck::bytes_of(block));
+        // Every state is checked and every pipeline made before recording starts, so that a
+        // bad draw records nothing and pipeline creation never lands inside a measured frame.
+        let raster = frame.raster();
+        for d in &frame.draws {
+            DrawBlock::new(&d.state, d.modelview, d.projection)?;
+            self.lighting.prepare(&d.state, raster)?;
         }
-
-        let pipelines = frame
-            .draws
-            .iter()
-            .map(|d| self.pipeline_for(&d.state))
-            .collect::<Result<Vec<_>>>()?;
-        self.record(frame, &pipelines, pass)?;
+        self.lighting.begin_frame(0)?;
+        self.record(frame, pass)?;
         let wall_ns = self.submit_and_wait()?;
         self.check_validation()?;
         let mut stats = FrameStats {
@@ -456,30 +426,12 @@ impl Renderer {
         }
     }
 
-    /// The pipeline a draw with `state` uses under this renderer's [`Specialize`] policy.
-    fn pipeline_for(&mut self, state: &LightingState) -> Result<vk::Pipeline> {
-        let mode = state.mode;
-        let key = match self.specialize {
-            Specialize::Never => SpecKey::UBER,
-            Specialize::Always => SpecKey::for_state(state),
-            Specialize::Auto => {
-                let key = SpecKey::for_state(state);
-                if self.pipelines.contains(mode, key) || self.pipelines.counts().1 < MAX_AUTO_VARIANTS {
-                    key
-                } else {
-                    SpecKey::UBER
-                }
-            }
-        };
-        self.pipelines.get(mode, key)
-    }
-
     /// How many pipelines this renderer has created, and how many of them are specialized.
     pub fn pipeline_counts(&self) -> (usize, usize) {
-        self.pipelines.counts()
+        self.lighting.pipeline_counts()
     }
 
-    fn record(&self, frame: &Frame, pipelines: &[vk::Pipeline], pass: Pass) -> Result<()> {
+    fn record(&mut self, frame: &Frame, pass: Pass) -> Result<()> {
         let vkd = &self.device.raw;
         let cmd = self.commands.buffer();
         let targets = self.targets.as_ref().expect("ensure_targets made them");
@@ -605,26 +557,33 @@ impl Renderer {
         }
         // SAFETY: as above; the attachments are in the layouts the barrier set.
         unsafe { vkd.cmd_begin_rendering(cmd, &rendering) };
-        // SAFETY: as above; these states are dynamic in every pipeline.
+        // SAFETY: as above; viewport and scissor are dynamic in every pipeline.
         unsafe {
             vkd.cmd_set_viewport(cmd, 0, &[viewport]);
             vkd.cmd_set_scissor(cmd, 0, &[area]);
-            vkd.cmd_set_depth_test_enable(cmd, frame.depth_test);
-            vkd.cmd_set_depth_write_enable(cmd, frame.depth_test);
         }
-        for (i, (draw, &pipeline)) in frame.draws.iter().zip(pipelines).enumerate() {
-            let draw = IndexedDraw {
-                pipeline,
-                layout: self.pipelines.layout(),
-                set: self.descriptors.set(),
-                uniform_offset: (i as u64 * self.uniform_stride) as u32,
-                vertices: draw.mesh.vertices.raw(),
-                indices: draw.mesh.indices.raw(),
-                index_count: draw.mesh.index_count,
+        let raster = frame.raster();
+        for draw in &frame.draws {
+            let mesh = draw.mesh;
+            let lit = LitDraw {
+                state: &draw.state,
+                modelview: draw.modelview,
+                projection: draw.projection,
+                raster,
+                vertex_buffers: &[(mesh.vertices.raw(), 0)],
+                geometry: Geometry::Indexed {
+                    buffer: mesh.indices.raw(),
+                    offset: 0,
+                    index_type: vk::IndexType::UINT32,
+                    first_index: 0,
+                    index_count: mesh.index_count,
+                    vertex_offset: 0,
+                },
             };
-            // SAFETY: inside the rendering pass begun above, whose formats are the pipelines';
-            // the mesh and uniform buffers outlive the submission.
-            unsafe { record_indexed(vkd, cmd, &draw) };
+            // SAFETY: inside the rendering pass begun above, whose formats are the
+            // Target::OFFSCREEN the lighting was made for, viewport and scissor set; the mesh
+            // buffers outlive the submission; slot 0 was begun after the last frame's fence.
+            unsafe { self.lighting.draw(cmd, 0, &lit) }?;
         }
         // SAFETY: as above; the pass begun above ends here.
         unsafe { vkd.cmd_end_rendering(cmd) };

@@ -114,11 +114,11 @@ impl DescriptorSetLayout {
 }
 
 impl PipelineLayout {
-    /// A pipeline layout of one descriptor set layout and no push constants.
-    pub fn new(device: &Arc<Device>, set_layout: &DescriptorSetLayout) -> Result<Self> {
-        let set_layouts = [set_layout.raw];
+    /// A pipeline layout of `set_layouts` (set i is the i-th) and no push constants.
+    pub fn new(device: &Arc<Device>, set_layouts: &[&DescriptorSetLayout]) -> Result<Self> {
+        let set_layouts: Vec<vk::DescriptorSetLayout> = set_layouts.iter().map(|l| l.raw).collect();
         let info = vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts);
-        // SAFETY: a valid create info on a live device; the set layout is alive.
+        // SAFETY: a valid create info on a live device; the set layouts are alive.
         let raw = unsafe { device.raw.create_pipeline_layout(&info, None) }
             .map_err(vk_error("vkCreatePipelineLayout"))?;
         Ok(PipelineLayout {
@@ -146,15 +146,15 @@ impl Pipeline {
     /// One graphics pipeline from `info`.
     pub fn graphics(
         device: &Arc<Device>,
-        cache: &PipelineCache,
+        cache: vk::PipelineCache,
         info: &vk::GraphicsPipelineCreateInfo,
     ) -> Result<Self> {
         // SAFETY: the caller's create info points at data alive for this call; the cache
-        // belongs to this device.
+        // (possibly null) belongs to this device; caches synchronize their own use.
         let created = unsafe {
             device
                 .raw
-                .create_graphics_pipelines(cache.raw, std::slice::from_ref(info), None)
+                .create_graphics_pipelines(cache, std::slice::from_ref(info), None)
         };
         let pipelines = created.map_err(|(pipelines, e)| {
             for p in pipelines.into_iter().filter(|&p| p != vk::Pipeline::null()) {

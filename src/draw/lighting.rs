@@ -1,0 +1,235 @@
+//! [`Lighting`]: GL's lighting inside a caller's own Vulkan device, render targets and
+//! command buffers.
+//!
+//! # What it takes, owns and records
+//!
+//! The caller keeps its instance, device, queues, command pools and buffers, images, vertex
+//! and index buffers, synchronization and submission; ffvk touches none of them beyond
+//! recording commands into the command buffer it is given. A [`Lighting`] owns what it
+//! creates: one descriptor set layout (binding 0, `UNIFORM_BUFFER_DYNAMIC`, vertex and
+//! fragment stages; empty layouts for the sets below [`LightingOptions::set_index`]), one
+//! pipeline layout (no push constants), a pipeline cache unless the caller passes one, the
+//! pipelines (created on first use per lighting mode, specialization key and
+//! [`RasterState`]), and for each frame slot host-visible, coherent uniform memory with its
+//! descriptor sets. Dropping it frees all of that; the caller must first make sure no
+//! submitted command buffer still uses it (wait for its fences or the device).
+//!
+//! [`Lighting::draw`] records, into the caller's command buffer inside the caller's dynamic
+//! rendering pass (`vkCmdBeginRendering`; render passes are not supported): bind pipeline,
+//! bind the descriptor set at the draw's dynamic offset, bind the caller's vertex buffers
+//! (and index buffer), draw. The commands read the caller's vertex and index buffers and
+//! ffvk's uniform memory, and write the caller's color attachment (and depth attachment when
+//! the draw's [`RasterState`] tests depth), with blending as that state says. They need the
+//! viewport and scissor the caller sets (both are dynamic state). The bindings stay bound
+//! after the call: the caller rebinds whatever it needs next.
+//!
+//! # Frame slots
+//!
+//! Per-draw GL state goes into the memory of the frame slot the caller names. Call
+//! [`Lighting::begin_frame`] for a slot before recording its draws, and only once the fence
+//! of the submission that last used that slot has signalled: that is when its memory may be
+//! rewritten. With `frames_in_flight` slots the caller cycles through them as it cycles
+//! through its own per-frame resources.
+//!
+//! # Threads
+//!
+//! `Lighting` is `Send` and `Sync`; recording takes `&mut self`, so one thread records with a
+//! given `Lighting` at a time (a renderer that records on several threads makes one per
+//! thread).
+
+use std::sync::Arc;
+
+use ash::vk;
+use glam::Mat4;
+
+use super::pipeline::{
+    PipelineConfig, Pipelines, RasterState, Specialize, Target, VertexInput, MAX_AUTO_VARIANTS,
+};
+use super::record::{record, Bound, Geometry};
+use super::ring::UniformRing;
+use crate::error::{LightingError, Result};
+use crate::gl::state::LightingState;
+use crate::gpu::layout::{DrawBlock, SpecKey};
+use crate::vk::Device;
+
+/// How to make a [`Lighting`].
+#[derive(Debug, Clone)]
+pub struct LightingOptions {
+    /// The caller's attachments.
+    pub target: Target,
+    /// The caller's vertex layout.
+    pub vertex_input: VertexInput,
+    /// Frame slots: how many frames the caller records before it waits for the oldest.
+    pub frames_in_flight: u32,
+    /// The descriptor set index of ffvk's uniform block in the pipeline layout (0 unless the
+    /// caller's shaders share the layout's lower sets).
+    pub set_index: u32,
+    /// The caller's pipeline cache; `None` makes ffvk's own.
+    pub pipeline_cache: Option<vk::PipelineCache>,
+    /// Specialized pipelines per lighting state, or the uber-shader.
+    pub specialize: Specialize,
+}
+
+impl LightingOptions {
+    /// Options for `target` and `vertex_input`: one frame slot, set 0, ffvk's own cache,
+    /// [`Specialize::Auto`].
+    pub fn new(target: Target, vertex_input: VertexInput) -> Self {
+        LightingOptions {
+            target,
+            vertex_input,
+            frames_in_flight: 1,
+            set_index: 0,
+            pipeline_cache: None,
+            specialize: Specialize::Auto,
+        }
+    }
+}
+
+/// One lit draw: GL's state for it, its matrices, its raster state and the caller's buffers.
+#[derive(Debug, Clone, Copy)]
+pub struct LitDraw<'a> {
+    /// The lighting state the draw captures (from [`GlState`](crate::gl::state::GlState)).
+    pub state: &'a LightingState,
+    /// Object to eye space (GL conventions: column vectors, viewer looking down −z).
+    pub modelview: Mat4,
+    /// GL's projection (clip z in [−w, w]); ffvk converts it to Vulkan's clip space.
+    pub projection: Mat4,
+    /// Culling, winding, depth and blending.
+    pub raster: RasterState,
+    /// One (buffer, byte offset) per entry of [`VertexInput::bindings`], in that order.
+    pub vertex_buffers: &'a [(vk::Buffer, u64)],
+    /// Which vertices to draw.
+    pub geometry: Geometry,
+}
+
+/// GL 2.1 lighting for a caller's device: pipelines, layouts and per-draw state memory,
+/// recorded into the caller's command buffers (see the module docs for what it owns, what
+/// it records and when a frame slot may be reused).
+pub struct Lighting {
+    // Field order is drop order: the uniform memory and pipelines before the device.
+    ring: UniformRing,
+    pipelines: Pipelines,
+    specialize: Specialize,
+    device: Arc<Device>,
+}
+
+impl Lighting {
+    /// Creates the layouts, the cache (unless the options pass one) and empty frame slots
+    /// on `device`, which may be ffvk's own or a caller's
+    /// ([`Device::from_caller`](crate::vk::Device::from_caller)). Fails on an invalid vertex
+    /// layout, zero frame slots, or a set index the device cannot bind.
+    pub fn new(device: &Arc<Device>, options: &LightingOptions) -> Result<Self> {
+        let max_sets = device.limits.max_bound_descriptor_sets;
+        if options.set_index >= max_sets {
+            return Err(LightingError::SetIndex {
+                index: options.set_index,
+                max: max_sets,
+            }
+            .into());
+        }
+        let pipelines = Pipelines::new(
+            device,
+            PipelineConfig {
+                target: options.target,
+                vertex_input: options.vertex_input.clone(),
+                set_index: options.set_index,
+                cache: options.pipeline_cache,
+            },
+        )?;
+        let ring = UniformRing::new(device, options.frames_in_flight)?;
+        Ok(Lighting {
+            ring,
+            pipelines,
+            specialize: options.specialize,
+            device: device.clone(),
+        })
+    }
+
+    /// The device the pipelines live on.
+    pub fn device(&self) -> &Arc<Device> {
+        &self.device
+    }
+
+    /// Starts recording the draws of frame slot `slot`: its earlier draws' state memory is
+    /// reused. Call it only when no submitted work still uses that slot (its fence has
+    /// signalled).
+    pub fn begin_frame(&mut self, slot: u32) -> Result<()> {
+        self.ring.reset(slot)
+    }
+
+    /// How many frame slots there are.
+    pub fn frames_in_flight(&self) -> u32 {
+        self.ring.slots()
+    }
+
+    /// Creates the pipeline a draw of `state` with `raster` would use, so that the first such
+    /// draw does not pay for it (pipeline creation is the slow part of a cold start).
+    pub fn prepare(&mut self, state: &LightingState, raster: RasterState) -> Result<()> {
+        self.pipeline_for(state, raster).map(|_| ())
+    }
+
+    /// How many pipelines exist, and how many of them are specialized.
+    pub fn pipeline_counts(&self) -> (usize, usize) {
+        self.pipelines.counts()
+    }
+
+    /// Records one lit draw into `cmd` for frame slot `slot`: binds its pipeline (created now
+    /// if it is new), writes its state into the slot's memory and binds it, binds the
+    /// caller's buffers and draws. Fails, recording nothing, when the state is invalid (a
+    /// NaN, or a singular modelview while lighting), when the buffers do not match the
+    /// vertex layout, or when the pipeline cannot be made.
+    ///
+    /// # Safety
+    ///
+    /// `cmd` is a command buffer of this device in the recording state, inside a dynamic
+    /// rendering pass whose attachments have the [`Target`]'s formats and samples, with
+    /// viewport and scissor set; the buffers belong to this device, hold what the geometry
+    /// reads, and live until the command buffer has finished executing; the slot was begun
+    /// with [`Lighting::begin_frame`] after its previous use finished.
+    pub unsafe fn draw(&mut self, cmd: vk::CommandBuffer, slot: u32, draw: &LitDraw) -> Result<()> {
+        let bindings = &self.pipelines.config().vertex_input.bindings;
+        if draw.vertex_buffers.len() != bindings.len() {
+            return Err(LightingError::VertexBuffers {
+                given: draw.vertex_buffers.len(),
+                expected: bindings.len(),
+            }
+            .into());
+        }
+        let block = DrawBlock::new(draw.state, draw.modelview, draw.projection)?;
+        let pipeline = self.pipeline_for(draw.state, draw.raster)?;
+        let (set, uniform_offset) = self.ring.push(slot, &block, self.pipelines.set_layout())?;
+        let config = self.pipelines.config();
+        let bound = Bound {
+            pipeline,
+            layout: self.pipelines.layout(),
+            set_index: config.set_index,
+            set,
+            uniform_offset,
+            bindings: &config.vertex_input.bindings,
+            vertex_buffers: draw.vertex_buffers,
+        };
+        // SAFETY: the caller's contract above; the pipeline, layout and set are this
+        // Lighting's and live as long as it does.
+        unsafe { record(&self.device.raw, cmd, &bound, &draw.geometry) };
+        Ok(())
+    }
+
+    /// The pipeline a draw with `state` and `raster` uses under the [`Specialize`] policy.
+    fn pipeline_for(&mut self, state: &LightingState, raster: RasterState) -> Result<vk::Pipeline> {
+        let mode = state.mode;
+        let key = match self.specialize {
+            Specialize::Never => SpecKey::UBER,
+            Specialize::Always => SpecKey::for_state(state),
+            Specialize::Auto => {
+                let key = SpecKey::for_state(state);
+                if self.pipelines.contains(mode, key, raster) || self.pipelines.counts().1 < MAX_AUTO_VARIANTS
+                {
+                    key
+                } else {
+                    SpecKey::UBER
+                }
+            }
+        };
+        self.pipelines.get(mode, key, raster)
+    }
+}
