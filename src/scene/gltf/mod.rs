@@ -22,6 +22,7 @@ pub mod write;
 
 pub use lights::{gl_light, spot_exponent, LightKind, PunctualLight};
 pub use materials::{gl_material, PbrMaterial};
+pub use primitives::{AccessorPart, AccessorProblem};
 
 use crate::mesh::MeshData;
 use glam::Mat4;
@@ -59,45 +60,90 @@ pub struct Loaded {
     pub warnings: Vec<String>,
 }
 
-/// Why a file could not be loaded. Every message starts with the file's path.
+/// Why a file could not be loaded: the file, and what was wrong with it. The message is
+/// the path followed by the kind's message.
 #[derive(Debug, thiserror::Error)]
-pub enum LoadError {
-    #[error("{}: cannot read the file: {source}", .path.display())]
-    Io { path: PathBuf, source: std::io::Error },
+#[error("{}: {kind}", .path.display())]
+pub struct LoadError {
+    /// The `.gltf` or `.glb` file.
+    pub path: PathBuf,
+    /// What was wrong with it; also the error's `source()`, so that an I/O error beneath it
+    /// stays reachable.
+    #[source]
+    pub kind: LoadErrorKind,
+}
 
-    #[error("{}: not a glTF 2.0 file (.gltf JSON or .glb): {message}", .path.display())]
-    Parse { path: PathBuf, message: String },
+/// What was wrong with a glTF file. Every message names the object (mesh, primitive,
+/// accessor, buffer, node), the offending value and what was expected.
+#[derive(Debug, thiserror::Error)]
+pub enum LoadErrorKind {
+    /// The file itself could not be read.
+    #[error("cannot read the file: {source}")]
+    Io { source: std::io::Error },
 
+    /// Neither glTF JSON nor GLB; `message` is the parser's.
+    #[error("not a glTF 2.0 file (.gltf JSON or .glb): {message}")]
+    Parse { message: String },
+
+    /// extensionsRequired names an extension outside [`SUPPORTED_EXTENSIONS`].
     #[error(
-        "{}: extensionsRequired names {extension}, which ffvk does not support: expected only {}",
-        .path.display(),
+        "extensionsRequired names {extension}, which ffvk does not support: expected only {}",
         SUPPORTED_EXTENSIONS.join(", ")
     )]
-    UnsupportedExtension { path: PathBuf, extension: String },
+    UnsupportedExtension { extension: String },
 
-    #[error("{}: invalid glTF: {problems}", .path.display())]
-    Invalid { path: PathBuf, problems: String },
+    /// What the `gltf` crate's validator found, one entry per problem; the message shows the
+    /// first eight.
+    #[error("invalid glTF: {}", problem_list(.problems))]
+    Invalid { problems: Vec<String> },
 
-    #[error("{}: buffer {buffer}: {message}", .path.display())]
-    Buffer {
-        path: PathBuf,
-        buffer: usize,
-        message: String,
+    /// A primitive's POSITION (`accessor`, as written in the JSON) is not an accessor index.
+    #[error(
+        "invalid glTF: {primitive}: POSITION names accessor {accessor}: expected an accessor index \
+         < {accessor_count}"
+    )]
+    PositionAccessor {
+        primitive: String,
+        accessor: String,
+        accessor_count: usize,
     },
 
-    #[error("{}: {primitive}: the required attribute {attribute} is missing", .path.display())]
+    /// A buffer's external file could not be read.
+    #[error("buffer {buffer}: cannot read {}: {source}", .file.display())]
+    BufferFile {
+        buffer: usize,
+        file: PathBuf,
+        source: std::io::Error,
+    },
+
+    /// A buffer that refers to the GLB binary chunk, in a file without one.
+    #[error("buffer {buffer}: refers to the GLB binary chunk, which is missing")]
+    MissingBinChunk { buffer: usize },
+
+    /// A buffer that holds fewer bytes than its byteLength.
+    #[error("buffer {buffer}: holds {len} bytes: expected at least {byte_length} (its byteLength)")]
+    BufferLength {
+        buffer: usize,
+        len: usize,
+        byte_length: usize,
+    },
+
+    /// A buffer that could not be loaded otherwise (a bad data URI, an unsupported URI);
+    /// `message` is the `gltf` crate's.
+    #[error("buffer {buffer}: {message}")]
+    Buffer { buffer: usize, message: String },
+
+    /// A primitive without an attribute ffvk needs (POSITION).
+    #[error("{primitive}: the required attribute {attribute} is missing")]
     MissingAttribute {
-        path: PathBuf,
         primitive: String,
         attribute: &'static str,
     },
 
-    #[error(
-        "{}: {primitive}: {attribute} (accessor {accessor}) is {found}: expected {expected}",
-        .path.display()
-    )]
+    /// An attribute (or the indices) of a component type or element type ffvk cannot read;
+    /// `found` is the accessor's, e.g. `UNSIGNED_SHORT VEC3`.
+    #[error("{primitive}: {attribute} (accessor {accessor}) is {found}: expected {expected}")]
     AttributeFormat {
-        path: PathBuf,
         primitive: String,
         attribute: String,
         accessor: usize,
@@ -105,13 +151,12 @@ pub enum LoadError {
         expected: &'static str,
     },
 
+    /// An attribute with another number of elements than POSITION.
     #[error(
-        "{}: {primitive}: {attribute} (accessor {accessor}) has {count} elements: expected {expected} \
-         (the POSITION count)",
-        .path.display()
+        "{primitive}: {attribute} (accessor {accessor}) has {count} elements: expected {expected} \
+         (the POSITION count)"
     )]
     AttributeCount {
-        path: PathBuf,
         primitive: String,
         attribute: String,
         accessor: usize,
@@ -119,31 +164,24 @@ pub enum LoadError {
         expected: usize,
     },
 
-    #[error("{}: {primitive}: accessor {accessor}: {message}", .path.display())]
+    /// An accessor whose data is not where it says, or could not be read.
+    #[error("{primitive}: accessor {accessor}: {problem}")]
     AccessorData {
-        path: PathBuf,
         primitive: String,
         accessor: usize,
-        message: String,
+        problem: AccessorProblem,
     },
 
-    #[error(
-        "{}: {primitive}: mode {mode} is not supported: expected TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN",
-        .path.display()
-    )]
-    UnsupportedMode {
-        path: PathBuf,
-        primitive: String,
-        mode: &'static str,
-    },
+    /// A primitive of points or lines.
+    #[error("{primitive}: mode {mode} is not supported: expected TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN")]
+    UnsupportedMode { primitive: String, mode: &'static str },
 
+    /// An index (element `element` of the index accessor) that names no vertex.
     #[error(
-        "{}: {primitive}: index accessor {accessor} holds {value} at element {element}: expected a value \
-         < {vertex_count} (the POSITION count)",
-        .path.display()
+        "{primitive}: index accessor {accessor} holds {value} at element {element}: expected a value \
+         < {vertex_count} (the POSITION count)"
     )]
     IndexOutOfRange {
-        path: PathBuf,
         primitive: String,
         accessor: usize,
         element: usize,
@@ -151,20 +189,28 @@ pub enum LoadError {
         vertex_count: usize,
     },
 
-    #[error(
-        "{}: {primitive}: {count} {what} do not make whole TRIANGLES: expected a multiple of 3",
-        .path.display()
-    )]
+    /// A TRIANGLES primitive whose index or vertex count is not a multiple of 3.
+    #[error("{primitive}: {count} {what} do not make whole TRIANGLES: expected a multiple of 3")]
     PartialTriangle {
-        path: PathBuf,
         primitive: String,
         /// "indices" or "vertices".
         what: &'static str,
         count: usize,
     },
 
-    #[error("{}: node {node} is its own ancestor: expected the node hierarchy to be a forest", .path.display())]
-    NodeCycle { path: PathBuf, node: usize },
+    /// A node hierarchy with a cycle through node `node`.
+    #[error("node {node} is its own ancestor: expected the node hierarchy to be a forest")]
+    NodeCycle { node: usize },
+}
+
+/// The validator's first eight problems, and how many more there are.
+fn problem_list(problems: &[String]) -> String {
+    let shown = problems.len().min(8);
+    let mut text = problems[..shown].join("; ");
+    if problems.len() > shown {
+        text.push_str(&format!("; and {} more", problems.len() - shown));
+    }
+    text
 }
 
 /// What every error needs: the file and the raw JSON (for names, which the `gltf` crate
@@ -175,8 +221,12 @@ struct Context<'a> {
 }
 
 impl Context<'_> {
-    fn path(&self) -> PathBuf {
-        self.path.to_path_buf()
+    /// An error about this file.
+    fn error(&self, kind: LoadErrorKind) -> LoadError {
+        LoadError {
+            path: self.path.to_path_buf(),
+            kind,
+        }
     }
 
     fn name(&self, array: &str, index: usize) -> Option<String> {
@@ -223,10 +273,9 @@ pub fn load(path: &Path) -> Result<Loaded, LoadError> {
 
     for extension in document.extensions_required() {
         if !SUPPORTED_EXTENSIONS.contains(&extension) {
-            return Err(LoadError::UnsupportedExtension {
-                path: cx.path(),
+            return Err(cx.error(LoadErrorKind::UnsupportedExtension {
                 extension: extension.to_owned(),
-            });
+            }));
         }
     }
     for extension in document.extensions_used() {

@@ -1,7 +1,7 @@
 //! Mesh primitives: their accessors checked and read, and turned into counter-clockwise
 //! triangle lists ([`MeshData`]) as documented on [`load`](super::load).
 
-use super::{Context, LoadError};
+use super::{Context, LoadError, LoadErrorKind};
 use crate::mesh::{MeshData, Vertex};
 use glam::{Vec3, Vec4};
 use gltf::accessor::{DataType, Dimensions};
@@ -19,22 +19,19 @@ pub(super) fn check_positions(cx: &Context) -> Result<(), LoadError> {
             let primitives = mesh.get("primitives").and_then(Value::as_array);
             for (p, primitive) in primitives.into_iter().flatten().enumerate() {
                 let Some(position) = primitive.get("attributes").and_then(|a| a.get("POSITION")) else {
-                    return Err(LoadError::MissingAttribute {
-                        path: cx.path(),
+                    return Err(cx.error(LoadErrorKind::MissingAttribute {
                         primitive: cx.primitive_label(m, p),
                         attribute: "POSITION",
-                    });
+                    }));
                 };
                 // The gltf crate's validator indexes the accessors with this unchecked.
                 let accessor_count = raw.get("accessors").and_then(Value::as_array).map_or(0, Vec::len);
                 if position.as_u64().is_none_or(|i| i >= accessor_count as u64) {
-                    return Err(LoadError::Invalid {
-                        path: cx.path(),
-                        problems: format!(
-                            "{}: POSITION names accessor {position}: expected an accessor index < {accessor_count}",
-                            cx.primitive_label(m, p)
-                        ),
-                    });
+                    return Err(cx.error(LoadErrorKind::PositionAccessor {
+                        primitive: cx.primitive_label(m, p),
+                        accessor: position.to_string(),
+                        accessor_count,
+                    }));
                 }
             }
         }
@@ -75,21 +72,111 @@ fn mode_name(mode: Mode) -> &'static str {
     }
 }
 
+/// Which elements of an accessor a bounds problem is about.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum AccessorPart {
+    /// The accessor's own elements.
+    Elements,
+    /// The indices of its sparse substitution.
+    SparseIndices,
+    /// The values of its sparse substitution.
+    SparseValues,
+}
+
+impl AccessorPart {
+    /// What a message about this part starts with (nothing for the elements themselves).
+    fn prefix(self) -> &'static str {
+        match self {
+            AccessorPart::Elements => "",
+            AccessorPart::SparseIndices => "sparse indices: ",
+            AccessorPart::SparseValues => "sparse values: ",
+        }
+    }
+}
+
+/// Why an accessor's data could not be read: it is not inside its buffer view and buffer,
+/// or the `gltf` crate's reader did not return it all.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum AccessorProblem {
+    /// An accessor with no elements.
+    #[error("count is 0: expected at least 1")]
+    Empty,
+
+    /// A buffer view whose byteStride is smaller than the element.
+    #[error(
+        "{}buffer view {view} has byteStride {stride}: expected at least {element} (the element size)",
+        .part.prefix()
+    )]
+    Stride {
+        part: AccessorPart,
+        view: usize,
+        stride: usize,
+        element: usize,
+    },
+
+    /// `count` elements of `element` bytes from byte `offset` that end past their buffer view.
+    #[error(
+        "{}{count} elements of {element} bytes from byte {offset} overrun buffer view {view} \
+         ({view_length} bytes)",
+        .part.prefix()
+    )]
+    ViewOverrun {
+        part: AccessorPart,
+        count: usize,
+        element: usize,
+        offset: usize,
+        view: usize,
+        view_length: usize,
+    },
+
+    /// A buffer view that ends past its buffer (which holds `available` bytes).
+    #[error(
+        "{}buffer view {view} (bytes {view_offset}..+{view_length}) overruns buffer {buffer} \
+         ({available} bytes)",
+        .part.prefix()
+    )]
+    BufferOverrun {
+        part: AccessorPart,
+        view: usize,
+        view_offset: usize,
+        view_length: usize,
+        buffer: usize,
+        available: usize,
+    },
+
+    /// A sparse substitution of none or of more elements than the accessor has.
+    #[error("sparse count is {sparse}: expected 1..={count} (the accessor count)")]
+    SparseCount { sparse: usize, count: usize },
+
+    /// Data the `gltf` crate's reader could not find (e.g. an accessor without a buffer view).
+    #[error("its data could not be read from its buffer view")]
+    Unreadable,
+
+    /// The reader stopped after `read` elements.
+    #[error("read {read} elements: expected {count} (its count)")]
+    ShortRead { read: usize, count: usize },
+}
+
 /// Checks that an accessor's elements lie inside its buffer view and buffer, so the `gltf`
 /// crate's reader neither panics nor silently stops short.
-fn check_accessor_bounds(accessor: &gltf::Accessor, buffers: &[gltf::buffer::Data]) -> Result<(), String> {
+fn check_accessor_bounds(
+    accessor: &gltf::Accessor,
+    buffers: &[gltf::buffer::Data],
+) -> Result<(), AccessorProblem> {
     let count = accessor.count();
     if count == 0 {
-        return Err("count is 0: expected at least 1".to_owned());
+        return Err(AccessorProblem::Empty);
     }
     let element = accessor.size();
-    let view_fits = |view: gltf::buffer::View, offset: usize, count: usize, element: usize, what: &str| {
+    let view_fits = |view: gltf::buffer::View, offset: usize, count: usize, element: usize, part| {
         let stride = view.stride().unwrap_or(element);
         if stride < element {
-            return Err(format!(
-                "{what}buffer view {} has byteStride {stride}: expected at least {element} (the element size)",
-                view.index()
-            ));
+            return Err(AccessorProblem::Stride {
+                part,
+                view: view.index(),
+                stride,
+                element,
+            });
         }
         let end = stride
             .checked_mul(count - 1)
@@ -98,12 +185,14 @@ fn check_accessor_bounds(accessor: &gltf::Accessor, buffers: &[gltf::buffer::Dat
         match end {
             Some(end) if end <= view.length() => {}
             _ => {
-                return Err(format!(
-                    "{what}{count} elements of {element} bytes from byte {offset} overrun buffer view {} \
-                     ({} bytes)",
-                    view.index(),
-                    view.length()
-                ))
+                return Err(AccessorProblem::ViewOverrun {
+                    part,
+                    count,
+                    element,
+                    offset,
+                    view: view.index(),
+                    view_length: view.length(),
+                })
             }
         }
         let buffer = view.buffer().index();
@@ -113,24 +202,24 @@ fn check_accessor_bounds(accessor: &gltf::Accessor, buffers: &[gltf::buffer::Dat
             .checked_add(view.length())
             .is_none_or(|end| end > available)
         {
-            return Err(format!(
-                "{what}buffer view {} (bytes {}..+{}) overruns buffer {buffer} ({available} bytes)",
-                view.index(),
-                view.offset(),
-                view.length()
-            ));
+            return Err(AccessorProblem::BufferOverrun {
+                part,
+                view: view.index(),
+                view_offset: view.offset(),
+                view_length: view.length(),
+                buffer,
+                available,
+            });
         }
         Ok(())
     };
     if let Some(view) = accessor.view() {
-        view_fits(view, accessor.offset(), count, element, "")?;
+        view_fits(view, accessor.offset(), count, element, AccessorPart::Elements)?;
     }
     if let Some(sparse) = accessor.sparse() {
         let n = sparse.count();
         if n == 0 || n > count {
-            return Err(format!(
-                "sparse count is {n}: expected 1..={count} (the accessor count)"
-            ));
+            return Err(AccessorProblem::SparseCount { sparse: n, count });
         }
         let indices = sparse.indices();
         view_fits(
@@ -138,10 +227,16 @@ fn check_accessor_bounds(accessor: &gltf::Accessor, buffers: &[gltf::buffer::Dat
             indices.offset(),
             n,
             indices.index_type().size(),
-            "sparse indices: ",
+            AccessorPart::SparseIndices,
         )?;
         let values = sparse.values();
-        view_fits(values.view(), values.offset(), n, element, "sparse values: ")?;
+        view_fits(
+            values.view(),
+            values.offset(),
+            n,
+            element,
+            AccessorPart::SparseValues,
+        )?;
     }
     Ok(())
 }
@@ -157,22 +252,22 @@ fn read_checked<T, I>(
 where
     I: Iterator<Item = T>,
 {
-    let data_error = |message: String| LoadError::AccessorData {
-        path: cx.path(),
-        primitive: primitive.to_owned(),
-        accessor: accessor.index(),
-        message,
+    let data_error = |problem| {
+        cx.error(LoadErrorKind::AccessorData {
+            primitive: primitive.to_owned(),
+            accessor: accessor.index(),
+            problem,
+        })
     };
     check_accessor_bounds(accessor, buffers).map_err(data_error)?;
     let values: Vec<T> = iter
-        .ok_or_else(|| data_error("its data could not be read from its buffer view".to_owned()))?
+        .ok_or_else(|| data_error(AccessorProblem::Unreadable))?
         .collect();
     if values.len() != accessor.count() {
-        return Err(data_error(format!(
-            "read {} elements: expected {} (its count)",
-            values.len(),
-            accessor.count()
-        )));
+        return Err(data_error(AccessorProblem::ShortRead {
+            read: values.len(),
+            count: accessor.count(),
+        }));
     }
     Ok(values)
 }
@@ -190,38 +285,36 @@ pub(super) fn read_primitive(
     let label = cx.primitive_label(mesh, primitive.index());
     let mode = primitive.mode();
     if !matches!(mode, Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan) {
-        return Err(LoadError::UnsupportedMode {
-            path: cx.path(),
+        return Err(cx.error(LoadErrorKind::UnsupportedMode {
             primitive: label,
             mode: mode_name(mode),
-        });
+        }));
     }
     let reader = primitive.reader(|b| buffers.get(b.index()).map(|d| &d.0[..]));
-    let format_error =
-        |attribute: &str, accessor: &gltf::Accessor, expected: &'static str| LoadError::AttributeFormat {
-            path: cx.path(),
+    let format_error = |attribute: &str, accessor: &gltf::Accessor, expected: &'static str| {
+        cx.error(LoadErrorKind::AttributeFormat {
             primitive: label.clone(),
             attribute: attribute.to_owned(),
             accessor: accessor.index(),
             found: type_name(accessor),
             expected,
-        };
-    let count_error =
-        |attribute: &str, accessor: &gltf::Accessor, expected: usize| LoadError::AttributeCount {
-            path: cx.path(),
+        })
+    };
+    let count_error = |attribute: &str, accessor: &gltf::Accessor, expected: usize| {
+        cx.error(LoadErrorKind::AttributeCount {
             primitive: label.clone(),
             attribute: attribute.to_owned(),
             accessor: accessor.index(),
             count: accessor.count(),
             expected,
-        };
+        })
+    };
 
     let Some(position_accessor) = primitive.get(&Semantic::Positions) else {
-        return Err(LoadError::MissingAttribute {
-            path: cx.path(),
+        return Err(cx.error(LoadErrorKind::MissingAttribute {
             primitive: label,
             attribute: "POSITION",
-        });
+        }));
     };
     if (position_accessor.data_type(), position_accessor.dimensions()) != (DataType::F32, Dimensions::Vec3) {
         return Err(format_error("POSITION", &position_accessor, "FLOAT VEC3"));
@@ -293,14 +386,13 @@ pub(super) fn read_primitive(
                 .enumerate()
                 .find(|(_, &i)| i as usize >= vertex_count)
             {
-                return Err(LoadError::IndexOutOfRange {
-                    path: cx.path(),
+                return Err(cx.error(LoadErrorKind::IndexOutOfRange {
                     primitive: label,
                     accessor: accessor.index(),
                     element,
                     value,
                     vertex_count,
-                });
+                }));
             }
             indices
         }
@@ -309,8 +401,7 @@ pub(super) fn read_primitive(
     let mut triangles: Vec<[u32; 3]> = match mode {
         Mode::Triangles => {
             if sequence.len() % 3 != 0 {
-                return Err(LoadError::PartialTriangle {
-                    path: cx.path(),
+                return Err(cx.error(LoadErrorKind::PartialTriangle {
                     primitive: label,
                     what: if primitive.indices().is_some() {
                         "indices"
@@ -318,7 +409,7 @@ pub(super) fn read_primitive(
                         "vertices"
                     },
                     count: sequence.len(),
-                });
+                }));
             }
             sequence.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect()
         }
@@ -593,8 +684,8 @@ mod tests {
         ));
         let e = load(&a.write_gltf(&dir, "bad_index", &body)).unwrap_err();
         assert!(matches!(
-            e,
-            LoadError::IndexOutOfRange {
+            e.kind,
+            LoadErrorKind::IndexOutOfRange {
                 accessor: 1,
                 element: 2,
                 value: 7,

@@ -5,7 +5,7 @@
 use super::lights::punctual_light;
 use super::materials::pbr_material;
 use super::primitives::read_primitive;
-use super::{Context, LoadError, Loaded, LoadedMesh};
+use super::{Context, LoadError, LoadErrorKind, Loaded, LoadedMesh};
 use glam::Mat4;
 use gltf::json::Value;
 use std::path::Path;
@@ -19,14 +19,12 @@ pub(super) struct Parsed {
 
 /// Reads and parses `path`, a `.gltf` (JSON) or `.glb` file, without validating it.
 pub(super) fn parse(path: &Path) -> Result<Parsed, LoadError> {
-    let bytes = std::fs::read(path).map_err(|source| LoadError::Io {
+    let error = |kind| LoadError {
         path: path.to_path_buf(),
-        source,
-    })?;
-    let parse_error = |message: String| LoadError::Parse {
-        path: path.to_path_buf(),
-        message,
+        kind,
     };
+    let bytes = std::fs::read(path).map_err(|source| error(LoadErrorKind::Io { source }))?;
+    let parse_error = |message: String| error(LoadErrorKind::Parse { message });
     let raw: Value = if bytes.starts_with(b"glTF") {
         let glb = gltf::Glb::from_slice(&bytes).map_err(|e| parse_error(e.to_string()))?;
         gltf::json::deserialize::from_slice(&glb.json).map_err(|e| parse_error(e.to_string()))?
@@ -38,7 +36,7 @@ pub(super) fn parse(path: &Path) -> Result<Parsed, LoadError> {
     Ok(Parsed { raw, document, blob })
 }
 
-/// Runs the `gltf` crate's validator; its first eight problems make the error.
+/// Runs the `gltf` crate's validator; what it finds makes the error.
 pub(super) fn validate(cx: &Context, document: &gltf::Document) -> Result<(), LoadError> {
     use gltf::json::validation::Validate;
     let root = document.as_json();
@@ -49,15 +47,7 @@ pub(super) fn validate(cx: &Context, document: &gltf::Document) -> Result<(), Lo
     if problems.is_empty() {
         return Ok(());
     }
-    let shown = problems.len().min(8);
-    let mut text = problems[..shown].join("; ");
-    if problems.len() > shown {
-        text.push_str(&format!("; and {} more", problems.len() - shown));
-    }
-    Err(LoadError::Invalid {
-        path: cx.path(),
-        problems: text,
-    })
+    Err(cx.error(LoadErrorKind::Invalid { problems }))
 }
 
 /// Loads every buffer (at least its byteLength), external files relative to the glTF file.
@@ -70,32 +60,35 @@ pub(super) fn read_buffers(
     let mut buffers = Vec::new();
     for buffer in document.buffers() {
         let index = buffer.index();
-        let error = |message: String| LoadError::Buffer {
-            path: cx.path(),
+        let message = |message: String| LoadErrorKind::Buffer {
             buffer: index,
             message,
         };
         let data = gltf::buffer::Data::from_source_and_blob(buffer.source(), Some(base), &mut blob).map_err(
-            |e| match (buffer.source(), e) {
-                (gltf::buffer::Source::Uri(uri), gltf::Error::Io(io)) => {
-                    error(format!("cannot read {}: {io}", base.join(uri).display()))
-                }
-                (gltf::buffer::Source::Bin, gltf::Error::MissingBlob) => {
-                    error("refers to the GLB binary chunk, which is missing".to_owned())
-                }
-                (gltf::buffer::Source::Uri(uri), e) if uri.starts_with("data:") => {
-                    error(format!("bad data URI: {e}"))
-                }
-                (gltf::buffer::Source::Uri(uri), e) => error(format!("cannot load {uri:?}: {e}")),
-                (gltf::buffer::Source::Bin, e) => error(e.to_string()),
+            |e| {
+                cx.error(match (buffer.source(), e) {
+                    (gltf::buffer::Source::Uri(uri), gltf::Error::Io(source)) => LoadErrorKind::BufferFile {
+                        buffer: index,
+                        file: base.join(uri),
+                        source,
+                    },
+                    (gltf::buffer::Source::Bin, gltf::Error::MissingBlob) => {
+                        LoadErrorKind::MissingBinChunk { buffer: index }
+                    }
+                    (gltf::buffer::Source::Uri(uri), e) if uri.starts_with("data:") => {
+                        message(format!("bad data URI: {e}"))
+                    }
+                    (gltf::buffer::Source::Uri(uri), e) => message(format!("cannot load {uri:?}: {e}")),
+                    (gltf::buffer::Source::Bin, e) => message(e.to_string()),
+                })
             },
         )?;
         if data.len() < buffer.length() {
-            return Err(error(format!(
-                "holds {} bytes: expected at least {} (its byteLength)",
-                data.len(),
-                buffer.length()
-            )));
+            return Err(cx.error(LoadErrorKind::BufferLength {
+                buffer: index,
+                len: data.len(),
+                byte_length: buffer.length(),
+            }));
         }
         buffers.push(data);
     }
@@ -151,10 +144,7 @@ fn visit(
 ) -> Result<(), LoadError> {
     let index = node.index();
     if on_path[index] {
-        return Err(LoadError::NodeCycle {
-            path: cx.path(),
-            node: index,
-        });
+        return Err(cx.error(LoadErrorKind::NodeCycle { node: index }));
     }
     on_path[index] = true;
     names.push(cx.name("nodes", index).unwrap_or_else(|| format!("node {index}")));
@@ -203,7 +193,7 @@ fn visit(
 #[cfg(test)]
 mod tests {
     use crate::scene::gltf::testing::{message, one_mesh_body, scratch_dir, Asset, QUAD};
-    use crate::scene::gltf::{load, LoadError};
+    use crate::scene::gltf::{load, LoadErrorKind};
     use glam::{Mat4, Vec3, Vec4};
 
     #[test]
@@ -308,7 +298,7 @@ mod tests {
         let path = a.write_gltf(&dir, "lost_bin", &body);
         std::fs::remove_file(dir.join("lost_bin.bin")).unwrap();
         let e = load(&path).unwrap_err();
-        assert!(matches!(e, LoadError::Buffer { buffer: 0, .. }));
+        assert!(matches!(e.kind, LoadErrorKind::BufferFile { buffer: 0, .. }));
         let e = message(e);
         assert!(
             e.contains("lost_bin.gltf: buffer 0: cannot read") && e.contains("lost_bin.bin"),
