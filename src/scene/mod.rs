@@ -4,20 +4,23 @@
 //! Light positions and spot directions are given in world space; they are set through
 //! [`GlState::light`] with the view matrix loaded, exactly as glLight would store them.
 
+mod builtin;
+mod file;
 pub mod gltf;
 
 use std::path::{Path, PathBuf};
 
 use glam::{EulerRot, Mat4, Quat, Vec3, Vec4};
-use serde::Deserialize;
 
+use self::file::{
+    CameraSpec, ColorMaterialSpec, LightModelSpec, LightSpec, MaterialSpec, MeshSpec, SceneFile,
+};
 use self::gltf::LoadError;
 use crate::gl::presets;
 use crate::gl::state::{
     Cap, ColorControl, ColorMaterialMode, Face, GlState, LightModelParam, LightParam, LightingMode,
     LightingState, Material, StateError, MAX_LIGHTS,
 };
-use crate::mesh::teapot;
 use crate::mesh::MeshData;
 
 /// The largest image side a scene may ask for (the renderer also checks its device's limit).
@@ -51,138 +54,6 @@ pub enum SceneError {
         source: Box<LoadError>,
     },
 }
-
-// ---------------------------------------------------------------------------------------
-// The file's shape. Every table rejects unknown fields.
-
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct SceneFile {
-    #[serde(default)]
-    image: ImageSpec,
-    #[serde(default)]
-    camera: CameraSpec,
-    /// GL_LIGHTING. On unless said otherwise: scene files are about lighting.
-    lighting: Option<bool>,
-    #[serde(default)]
-    light_model: LightModelSpec,
-    #[serde(default)]
-    lights: Vec<LightSpec>,
-    material: Option<MaterialSpec>,
-    back_material: Option<MaterialSpec>,
-    color_material: Option<ColorMaterialSpec>,
-    #[serde(default)]
-    normalize: bool,
-    #[serde(default)]
-    rescale_normal: bool,
-    /// Whether KHR_lights_punctual lights of the glTF files are added after `lights`.
-    gltf_lights: Option<bool>,
-    #[serde(default)]
-    meshes: Vec<MeshSpec>,
-}
-
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct ImageSpec {
-    size: Option<[u32; 2]>,
-    clear_color: Option<Vec<f32>>,
-    lighting_mode: Option<String>,
-    depth_test: Option<bool>,
-}
-
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct CameraSpec {
-    eye: Option<[f32; 3]>,
-    target: Option<[f32; 3]>,
-    up: Option<[f32; 3]>,
-    /// Vertical field of view, degrees (gluPerspective's fovy).
-    fovy: Option<f32>,
-    near: Option<f32>,
-    far: Option<f32>,
-    /// Column-major, as glLoadMatrixf; replaces eye/target/up.
-    view: Option<[f32; 16]>,
-    /// Column-major GL projection; replaces fovy/near/far.
-    projection: Option<[f32; 16]>,
-}
-
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct LightModelSpec {
-    ambient: Option<Vec<f32>>,
-    local_viewer: Option<bool>,
-    two_side: Option<bool>,
-    color_control: Option<String>,
-}
-
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct LightSpec {
-    /// GL_LIGHTi; by default the position in the list.
-    index: Option<usize>,
-    enabled: Option<bool>,
-    ambient: Option<Vec<f32>>,
-    diffuse: Option<Vec<f32>>,
-    specular: Option<Vec<f32>>,
-    /// World space, homogeneous: w = 0 is a directional light.
-    position: Option<[f32; 4]>,
-    /// World space.
-    spot_direction: Option<[f32; 3]>,
-    spot_exponent: Option<f32>,
-    spot_cutoff: Option<f32>,
-    constant_attenuation: Option<f32>,
-    linear_attenuation: Option<f32>,
-    quadratic_attenuation: Option<f32>,
-}
-
-#[derive(Debug, Default, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct MaterialSpec {
-    /// A classic GL material (see `presets`); the fields below override it.
-    preset: Option<String>,
-    ambient: Option<Vec<f32>>,
-    diffuse: Option<Vec<f32>>,
-    specular: Option<Vec<f32>>,
-    emission: Option<Vec<f32>>,
-    shininess: Option<f32>,
-}
-
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct ColorMaterialSpec {
-    enabled: Option<bool>,
-    face: Option<String>,
-    mode: Option<String>,
-}
-
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct MeshSpec {
-    /// A .gltf or .glb file, relative to the scene file.
-    gltf: Option<PathBuf>,
-    /// Only what the glTF node with this name places (it and its descendants).
-    node: Option<String>,
-    /// Only primitives of the glTF mesh with this name.
-    mesh: Option<String>,
-    /// A built-in shape instead of a file: "teapot", "sphere" or "plane".
-    builtin: Option<String>,
-    /// Tessellation of a built-in shape (teapot: 1..=64, sphere: slices).
-    level: Option<u32>,
-    /// Vertex color of a built-in shape (feeds COLOR_MATERIAL).
-    color: Option<Vec<f32>>,
-    translate: Option<[f32; 3]>,
-    /// Degrees about x, then y, then z.
-    rotate: Option<[f32; 3]>,
-    scale: Option<[f32; 3]>,
-    /// Column-major model matrix; replaces translate/rotate/scale.
-    matrix: Option<[f32; 16]>,
-    /// Front (and back unless `back_material`) material for this mesh only.
-    material: Option<MaterialSpec>,
-    back_material: Option<MaterialSpec>,
-}
-
-// ---------------------------------------------------------------------------------------
-// The loaded scene.
 
 /// One mesh placed in the scene, with the materials it is drawn with.
 #[derive(Debug, Clone)]
@@ -670,37 +541,7 @@ impl Builder<'_> {
                         "node and mesh select within a glTF file: expected them with gltf",
                     ));
                 }
-                let mut data = match name.as_str() {
-                    "teapot" => teapot::teapot(spec.level.unwrap_or(12))
-                        .map_err(|e| self.field(format!("{field}.level"), e.to_string()))?,
-                    "sphere" => {
-                        let n = spec.level.unwrap_or(32);
-                        if !(3..=1024).contains(&n) {
-                            return Err(self
-                                .field(format!("{field}.level"), format!("{n}: expected 3..=1024 slices")));
-                        }
-                        MeshData::uv_sphere(n, n / 2)
-                    }
-                    "plane" => {
-                        let n = spec.level.unwrap_or(1);
-                        if !(1..=1024).contains(&n) {
-                            return Err(
-                                self.field(format!("{field}.level"), format!("{n}: expected 1..=1024 cells"))
-                            );
-                        }
-                        plane(n)
-                    }
-                    other => {
-                        return Err(self.field(
-                            format!("{field}.builtin"),
-                            format!("{other:?}: expected \"teapot\", \"sphere\" or \"plane\""),
-                        ))
-                    }
-                };
-                if let Some(c) = &spec.color {
-                    let c = self.color(&format!("{field}.color"), c)?;
-                    data.vertices.iter_mut().for_each(|v| v.color = c.to_array());
-                }
+                let data = self.builtin(field, name, spec)?;
                 Ok(vec![(name.clone(), data, model, None)])
             }
             (Some(file), None) => {
@@ -756,33 +597,6 @@ impl Builder<'_> {
             }
         }
     }
-}
-
-/// The square [-1, 1]² in the z = 0 plane, facing +z, `n`×`n` cells.
-fn plane(n: u32) -> MeshData {
-    use crate::mesh::Vertex;
-    let mut data = MeshData::default();
-    for j in 0..=n {
-        for i in 0..=n {
-            let (x, y) = (-1.0 + 2.0 * i as f32 / n as f32, -1.0 + 2.0 * j as f32 / n as f32);
-            data.vertices
-                .push(Vertex::new(Vec3::new(x, y, 0.0), Vec3::Z, Vec4::ONE));
-        }
-    }
-    let at = |i: u32, j: u32| j * (n + 1) + i;
-    for j in 0..n {
-        for i in 0..n {
-            data.indices.extend([
-                at(i, j),
-                at(i + 1, j),
-                at(i + 1, j + 1),
-                at(i, j),
-                at(i + 1, j + 1),
-                at(i, j + 1),
-            ]);
-        }
-    }
-    data
 }
 
 /// Draws a scene with `renderer`; `mode` overrides the file's lighting mode when given.
