@@ -26,29 +26,43 @@ use crate::mesh::MeshData;
 /// The largest image side a scene may ask for (the renderer also checks its device's limit).
 pub const MAX_SIZE: u32 = 16384;
 
-/// Why a scene could not be loaded. Every message starts with the scene file's path and
-/// names the field, the value and what was expected.
+/// Why a scene could not be loaded: the scene file, and what was wrong with it. The message
+/// is the path followed by the kind's message.
 #[derive(Debug, thiserror::Error)]
-pub enum SceneError {
-    #[error("{}: cannot read the scene: {message}", .path.display())]
-    Io { path: PathBuf, message: String },
-    #[error("{}: {message}", .path.display())]
-    Toml { path: PathBuf, message: String },
-    #[error("{}: {field}: {message}", .path.display())]
-    Field {
-        path: PathBuf,
-        field: String,
-        message: String,
-    },
-    #[error("{}: {field}: {source}", .path.display())]
-    State {
-        path: PathBuf,
-        field: String,
-        source: StateError,
-    },
-    #[error("{}: {field}: {source}", .path.display())]
+#[error("{}: {kind}", .path.display())]
+pub struct SceneError {
+    /// The scene file (for errors in a glTF file it names, the kind names that file).
+    pub path: PathBuf,
+    /// What was wrong; also the error's `source()`, so that the error beneath it (I/O, TOML,
+    /// GL state, glTF) stays reachable.
+    #[source]
+    pub kind: SceneErrorKind,
+}
+
+/// What was wrong with a scene file. Every message names the field, the value and what was
+/// expected.
+#[derive(Debug, thiserror::Error)]
+pub enum SceneErrorKind {
+    /// The file could not be read.
+    #[error("cannot read the scene: {source}")]
+    Io { source: std::io::Error },
+
+    /// Not TOML, or not a scene's tables: an unknown field, a value of the wrong type. The
+    /// message is the TOML parser's, which shows the line.
+    #[error("{}", .source.to_string().trim_end())]
+    Toml { source: toml::de::Error },
+
+    /// A value outside what the field allows, or fields that do not go together.
+    #[error("{field}: {message}")]
+    Field { field: String, message: String },
+
+    /// A value GL's own checks reject (what glLight, glMaterial, ... would flag).
+    #[error("{field}: {source}")]
+    State { field: String, source: StateError },
+
+    /// A glTF file named by a `[[meshes]]` table that could not be loaded.
+    #[error("{field}: {source}")]
     Gltf {
-        path: PathBuf,
         field: String,
         /// Boxed: glTF errors are large.
         source: Box<LoadError>,
@@ -108,18 +122,18 @@ impl Scene {
 
     /// Reads and checks a scene file.
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
-        let text = std::fs::read_to_string(path).map_err(|e| SceneError::Io {
+        let text = std::fs::read_to_string(path).map_err(|source| SceneError {
             path: path.to_path_buf(),
-            message: e.to_string(),
+            kind: SceneErrorKind::Io { source },
         })?;
         Scene::parse(&text, path)
     }
 
     /// Parses scene text; `path` names it in errors and anchors relative glTF paths.
     pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
-        let file: SceneFile = toml::from_str(text).map_err(|e| SceneError::Toml {
+        let file: SceneFile = toml::from_str(text).map_err(|source| SceneError {
             path: path.to_path_buf(),
-            message: e.to_string().trim_end().to_string(),
+            kind: SceneErrorKind::Toml { source },
         })?;
         Builder { path }.build(file)
     }
@@ -130,21 +144,24 @@ struct Builder<'a> {
 }
 
 impl Builder<'_> {
-    fn field(&self, field: impl Into<String>, message: impl Into<String>) -> SceneError {
-        SceneError::Field {
+    /// An error about this scene file.
+    fn error(&self, kind: SceneErrorKind) -> SceneError {
+        SceneError {
             path: self.path.to_path_buf(),
+            kind,
+        }
+    }
+
+    fn field(&self, field: impl Into<String>, message: impl Into<String>) -> SceneError {
+        self.error(SceneErrorKind::Field {
             field: field.into(),
             message: message.into(),
-        }
+        })
     }
 
     fn state(&self, field: impl Into<String>) -> impl FnOnce(StateError) -> SceneError + '_ {
         let field = field.into();
-        move |source| SceneError::State {
-            path: self.path.to_path_buf(),
-            field,
-            source,
-        }
+        move |source| self.error(SceneErrorKind::State { field, source })
     }
 
     /// A color of 3 (alpha 1) or 4 finite numbers.
@@ -547,10 +564,11 @@ impl Builder<'_> {
             (Some(file), None) => {
                 let base = self.path.parent().unwrap_or(Path::new("."));
                 let gltf_path = base.join(file);
-                let loaded = self::gltf::load(&gltf_path).map_err(|source| SceneError::Gltf {
-                    path: self.path.to_path_buf(),
-                    field: format!("{field}.gltf"),
-                    source: Box::new(source),
+                let loaded = self::gltf::load(&gltf_path).map_err(|source| {
+                    self.error(SceneErrorKind::Gltf {
+                        field: format!("{field}.gltf"),
+                        source: Box::new(source),
+                    })
                 })?;
                 warnings.extend(
                     loaded
