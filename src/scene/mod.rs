@@ -72,26 +72,40 @@ pub enum SceneErrorKind {
 /// One mesh placed in the scene, with the materials it is drawn with.
 #[derive(Debug, Clone)]
 pub struct SceneMesh {
+    /// The built-in shape's name, or the glTF mesh's (see [`gltf::LoadedMesh::name`]).
     pub name: String,
+    /// Object-space geometry.
     pub data: MeshData,
     /// Object to world.
     pub model: Mat4,
+    /// The front material: the mesh's `material`, else the scene's, else its glTF material
+    /// through [`gltf::gl_material`], else GL's default.
     pub front: Material,
+    /// The back material: the mesh's `back_material`, else its `material`, else the scene's
+    /// `back_material`, else `front`.
     pub back: Material,
 }
 
 /// A scene ready to draw: GL state already in eye space, matrices in GL conventions.
 #[derive(Debug, Clone)]
 pub struct Scene {
+    /// The scene file it was loaded from (or the path given to [`Scene::parse`]).
     pub path: PathBuf,
+    /// Image width in pixels.
     pub width: u32,
+    /// Image height in pixels.
     pub height: u32,
+    /// RGBA the image is cleared to.
     pub clear_color: Vec4,
+    /// Whether the depth test is on (GL_DEPTH_TEST with GL_LESS).
     pub depth_test: bool,
+    /// World to eye.
     pub view: Mat4,
+    /// Eye to clip, GL conventions (z in [-w, w]).
     pub projection: Mat4,
     /// Lights, light model, color material, normal handling, mode; materials per mesh.
     pub state: LightingState,
+    /// What is drawn, in file order.
     pub meshes: Vec<SceneMesh>,
     /// Things ignored while loading (from glTF files), one sentence each.
     pub warnings: Vec<String>,
@@ -106,6 +120,7 @@ impl Scene {
         state
     }
 
+    /// The modelview matrix `mesh` is drawn with: view × model.
     pub fn modelview(&self, mesh: &SceneMesh) -> Mat4 {
         self.view * mesh.model
     }

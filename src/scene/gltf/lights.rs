@@ -13,7 +13,12 @@ pub enum LightKind {
     /// Shines in every direction from the node's origin.
     Point,
     /// Shines from the node's origin along its -Z, within `outer_cone` of that axis.
-    Spot { inner_cone: f32, outer_cone: f32 },
+    Spot {
+        /// Where the falloff starts.
+        inner_cone: f32,
+        /// Where the light ends.
+        outer_cone: f32,
+    },
 }
 
 /// A KHR_lights_punctual light as placed by one node.
