@@ -4,209 +4,108 @@
 //! Light positions and spot directions are given in world space; they are set through
 //! [`GlState::light`] with the view matrix loaded, exactly as glLight would store them.
 
+mod builtin;
+mod file;
 pub mod gltf;
 
 use std::path::{Path, PathBuf};
 
 use glam::{EulerRot, Mat4, Quat, Vec3, Vec4};
-use serde::Deserialize;
 
+use self::file::{
+    CameraSpec, ColorMaterialSpec, LightModelSpec, LightSpec, MaterialSpec, MeshSpec, SceneFile,
+};
 use self::gltf::LoadError;
 use crate::gl::presets;
 use crate::gl::state::{
     Cap, ColorControl, ColorMaterialMode, Face, GlState, LightModelParam, LightParam, LightingMode,
     LightingState, Material, StateError, MAX_LIGHTS,
 };
-use crate::mesh::teapot;
 use crate::mesh::MeshData;
 
 /// The largest image side a scene may ask for (the renderer also checks its device's limit).
 pub const MAX_SIZE: u32 = 16384;
 
-/// Why a scene could not be loaded. Every message starts with the scene file's path and
-/// names the field, the value and what was expected.
+/// Why a scene could not be loaded: the scene file, and what was wrong with it. The message
+/// is the path followed by the kind's message.
 #[derive(Debug, thiserror::Error)]
-pub enum SceneError {
-    #[error("{}: cannot read the scene: {message}", .path.display())]
-    Io { path: PathBuf, message: String },
-    #[error("{}: {message}", .path.display())]
-    Toml { path: PathBuf, message: String },
-    #[error("{}: {field}: {message}", .path.display())]
-    Field {
-        path: PathBuf,
-        field: String,
-        message: String,
-    },
-    #[error("{}: {field}: {source}", .path.display())]
-    State {
-        path: PathBuf,
-        field: String,
-        source: StateError,
-    },
-    #[error("{}: {field}: {source}", .path.display())]
+#[error("{}: {kind}", .path.display())]
+pub struct SceneError {
+    /// The scene file (for errors in a glTF file it names, the kind names that file).
+    pub path: PathBuf,
+    /// What was wrong; also the error's `source()`, so that the error beneath it (I/O, TOML,
+    /// GL state, glTF) stays reachable.
+    #[source]
+    pub kind: SceneErrorKind,
+}
+
+/// What was wrong with a scene file. Every message names the field, the value and what was
+/// expected.
+#[derive(Debug, thiserror::Error)]
+pub enum SceneErrorKind {
+    /// The file could not be read.
+    #[error("cannot read the scene: {source}")]
+    Io { source: std::io::Error },
+
+    /// Not TOML, or not a scene's tables: an unknown field, a value of the wrong type. The
+    /// message is the TOML parser's, which shows the line.
+    #[error("{}", .source.to_string().trim_end())]
+    Toml { source: toml::de::Error },
+
+    /// A value outside what the field allows, or fields that do not go together.
+    #[error("{field}: {message}")]
+    Field { field: String, message: String },
+
+    /// A value GL's own checks reject (what glLight, glMaterial, ... would flag).
+    #[error("{field}: {source}")]
+    State { field: String, source: StateError },
+
+    /// A glTF file named by a `[[meshes]]` table that could not be loaded.
+    #[error("{field}: {source}")]
     Gltf {
-        path: PathBuf,
         field: String,
         /// Boxed: glTF errors are large.
         source: Box<LoadError>,
     },
 }
 
-// ---------------------------------------------------------------------------------------
-// The file's shape. Every table rejects unknown fields.
-
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct SceneFile {
-    #[serde(default)]
-    image: ImageSpec,
-    #[serde(default)]
-    camera: CameraSpec,
-    /// GL_LIGHTING. On unless said otherwise: scene files are about lighting.
-    lighting: Option<bool>,
-    #[serde(default)]
-    light_model: LightModelSpec,
-    #[serde(default)]
-    lights: Vec<LightSpec>,
-    material: Option<MaterialSpec>,
-    back_material: Option<MaterialSpec>,
-    color_material: Option<ColorMaterialSpec>,
-    #[serde(default)]
-    normalize: bool,
-    #[serde(default)]
-    rescale_normal: bool,
-    /// Whether KHR_lights_punctual lights of the glTF files are added after `lights`.
-    gltf_lights: Option<bool>,
-    #[serde(default)]
-    meshes: Vec<MeshSpec>,
-}
-
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct ImageSpec {
-    size: Option<[u32; 2]>,
-    clear_color: Option<Vec<f32>>,
-    lighting_mode: Option<String>,
-    depth_test: Option<bool>,
-}
-
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct CameraSpec {
-    eye: Option<[f32; 3]>,
-    target: Option<[f32; 3]>,
-    up: Option<[f32; 3]>,
-    /// Vertical field of view, degrees (gluPerspective's fovy).
-    fovy: Option<f32>,
-    near: Option<f32>,
-    far: Option<f32>,
-    /// Column-major, as glLoadMatrixf; replaces eye/target/up.
-    view: Option<[f32; 16]>,
-    /// Column-major GL projection; replaces fovy/near/far.
-    projection: Option<[f32; 16]>,
-}
-
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct LightModelSpec {
-    ambient: Option<Vec<f32>>,
-    local_viewer: Option<bool>,
-    two_side: Option<bool>,
-    color_control: Option<String>,
-}
-
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct LightSpec {
-    /// GL_LIGHTi; by default the position in the list.
-    index: Option<usize>,
-    enabled: Option<bool>,
-    ambient: Option<Vec<f32>>,
-    diffuse: Option<Vec<f32>>,
-    specular: Option<Vec<f32>>,
-    /// World space, homogeneous: w = 0 is a directional light.
-    position: Option<[f32; 4]>,
-    /// World space.
-    spot_direction: Option<[f32; 3]>,
-    spot_exponent: Option<f32>,
-    spot_cutoff: Option<f32>,
-    constant_attenuation: Option<f32>,
-    linear_attenuation: Option<f32>,
-    quadratic_attenuation: Option<f32>,
-}
-
-#[derive(Debug, Default, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct MaterialSpec {
-    /// A classic GL material (see `presets`); the fields below override it.
-    preset: Option<String>,
-    ambient: Option<Vec<f32>>,
-    diffuse: Option<Vec<f32>>,
-    specular: Option<Vec<f32>>,
-    emission: Option<Vec<f32>>,
-    shininess: Option<f32>,
-}
-
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct ColorMaterialSpec {
-    enabled: Option<bool>,
-    face: Option<String>,
-    mode: Option<String>,
-}
-
-#[derive(Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct MeshSpec {
-    /// A .gltf or .glb file, relative to the scene file.
-    gltf: Option<PathBuf>,
-    /// Only what the glTF node with this name places (it and its descendants).
-    node: Option<String>,
-    /// Only primitives of the glTF mesh with this name.
-    mesh: Option<String>,
-    /// A built-in shape instead of a file: "teapot", "sphere" or "plane".
-    builtin: Option<String>,
-    /// Tessellation of a built-in shape (teapot: 1..=64, sphere: slices).
-    level: Option<u32>,
-    /// Vertex color of a built-in shape (feeds COLOR_MATERIAL).
-    color: Option<Vec<f32>>,
-    translate: Option<[f32; 3]>,
-    /// Degrees about x, then y, then z.
-    rotate: Option<[f32; 3]>,
-    scale: Option<[f32; 3]>,
-    /// Column-major model matrix; replaces translate/rotate/scale.
-    matrix: Option<[f32; 16]>,
-    /// Front (and back unless `back_material`) material for this mesh only.
-    material: Option<MaterialSpec>,
-    back_material: Option<MaterialSpec>,
-}
-
-// ---------------------------------------------------------------------------------------
-// The loaded scene.
-
 /// One mesh placed in the scene, with the materials it is drawn with.
 #[derive(Debug, Clone)]
 pub struct SceneMesh {
+    /// The built-in shape's name, or the glTF mesh's (see [`gltf::LoadedMesh::name`]).
     pub name: String,
+    /// Object-space geometry.
     pub data: MeshData,
     /// Object to world.
     pub model: Mat4,
+    /// The front material: the mesh's `material`, else the scene's, else its glTF material
+    /// through [`gltf::gl_material`], else GL's default.
     pub front: Material,
+    /// The back material: the mesh's `back_material`, else its `material`, else the scene's
+    /// `back_material`, else `front`.
     pub back: Material,
 }
 
 /// A scene ready to draw: GL state already in eye space, matrices in GL conventions.
 #[derive(Debug, Clone)]
 pub struct Scene {
+    /// The scene file it was loaded from (or the path given to [`Scene::parse`]).
     pub path: PathBuf,
+    /// Image width in pixels.
     pub width: u32,
+    /// Image height in pixels.
     pub height: u32,
+    /// RGBA the image is cleared to.
     pub clear_color: Vec4,
+    /// Whether the depth test is on (GL_DEPTH_TEST with GL_LESS).
     pub depth_test: bool,
+    /// World to eye.
     pub view: Mat4,
+    /// Eye to clip, GL conventions (z in [-w, w]).
     pub projection: Mat4,
     /// Lights, light model, color material, normal handling, mode; materials per mesh.
     pub state: LightingState,
+    /// What is drawn, in file order.
     pub meshes: Vec<SceneMesh>,
     /// Things ignored while loading (from glTF files), one sentence each.
     pub warnings: Vec<String>,
@@ -221,6 +120,7 @@ impl Scene {
         state
     }
 
+    /// The modelview matrix `mesh` is drawn with: view × model.
     pub fn modelview(&self, mesh: &SceneMesh) -> Mat4 {
         self.view * mesh.model
     }
@@ -237,18 +137,18 @@ impl Scene {
 
     /// Reads and checks a scene file.
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
-        let text = std::fs::read_to_string(path).map_err(|e| SceneError::Io {
+        let text = std::fs::read_to_string(path).map_err(|source| SceneError {
             path: path.to_path_buf(),
-            message: e.to_string(),
+            kind: SceneErrorKind::Io { source },
         })?;
         Scene::parse(&text, path)
     }
 
     /// Parses scene text; `path` names it in errors and anchors relative glTF paths.
     pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
-        let file: SceneFile = toml::from_str(text).map_err(|e| SceneError::Toml {
+        let file: SceneFile = toml::from_str(text).map_err(|source| SceneError {
             path: path.to_path_buf(),
-            message: e.to_string().trim_end().to_string(),
+            kind: SceneErrorKind::Toml { source },
         })?;
         Builder { path }.build(file)
     }
@@ -259,21 +159,24 @@ struct Builder<'a> {
 }
 
 impl Builder<'_> {
-    fn field(&self, field: impl Into<String>, message: impl Into<String>) -> SceneError {
-        SceneError::Field {
+    /// An error about this scene file.
+    fn error(&self, kind: SceneErrorKind) -> SceneError {
+        SceneError {
             path: self.path.to_path_buf(),
+            kind,
+        }
+    }
+
+    fn field(&self, field: impl Into<String>, message: impl Into<String>) -> SceneError {
+        self.error(SceneErrorKind::Field {
             field: field.into(),
             message: message.into(),
-        }
+        })
     }
 
     fn state(&self, field: impl Into<String>) -> impl FnOnce(StateError) -> SceneError + '_ {
         let field = field.into();
-        move |source| SceneError::State {
-            path: self.path.to_path_buf(),
-            field,
-            source,
-        }
+        move |source| self.error(SceneErrorKind::State { field, source })
     }
 
     /// A color of 3 (alpha 1) or 4 finite numbers.
@@ -670,46 +573,17 @@ impl Builder<'_> {
                         "node and mesh select within a glTF file: expected them with gltf",
                     ));
                 }
-                let mut data = match name.as_str() {
-                    "teapot" => teapot::teapot(spec.level.unwrap_or(12))
-                        .map_err(|e| self.field(format!("{field}.level"), e.to_string()))?,
-                    "sphere" => {
-                        let n = spec.level.unwrap_or(32);
-                        if !(3..=1024).contains(&n) {
-                            return Err(self
-                                .field(format!("{field}.level"), format!("{n}: expected 3..=1024 slices")));
-                        }
-                        MeshData::uv_sphere(n, n / 2)
-                    }
-                    "plane" => {
-                        let n = spec.level.unwrap_or(1);
-                        if !(1..=1024).contains(&n) {
-                            return Err(
-                                self.field(format!("{field}.level"), format!("{n}: expected 1..=1024 cells"))
-                            );
-                        }
-                        plane(n)
-                    }
-                    other => {
-                        return Err(self.field(
-                            format!("{field}.builtin"),
-                            format!("{other:?}: expected \"teapot\", \"sphere\" or \"plane\""),
-                        ))
-                    }
-                };
-                if let Some(c) = &spec.color {
-                    let c = self.color(&format!("{field}.color"), c)?;
-                    data.vertices.iter_mut().for_each(|v| v.color = c.to_array());
-                }
+                let data = self.builtin(field, name, spec)?;
                 Ok(vec![(name.clone(), data, model, None)])
             }
             (Some(file), None) => {
                 let base = self.path.parent().unwrap_or(Path::new("."));
                 let gltf_path = base.join(file);
-                let loaded = self::gltf::load(&gltf_path).map_err(|source| SceneError::Gltf {
-                    path: self.path.to_path_buf(),
-                    field: format!("{field}.gltf"),
-                    source: Box::new(source),
+                let loaded = self::gltf::load(&gltf_path).map_err(|source| {
+                    self.error(SceneErrorKind::Gltf {
+                        field: format!("{field}.gltf"),
+                        source: Box::new(source),
+                    })
                 })?;
                 warnings.extend(
                     loaded
@@ -756,33 +630,6 @@ impl Builder<'_> {
             }
         }
     }
-}
-
-/// The square [-1, 1]² in the z = 0 plane, facing +z, `n`×`n` cells.
-fn plane(n: u32) -> MeshData {
-    use crate::mesh::Vertex;
-    let mut data = MeshData::default();
-    for j in 0..=n {
-        for i in 0..=n {
-            let (x, y) = (-1.0 + 2.0 * i as f32 / n as f32, -1.0 + 2.0 * j as f32 / n as f32);
-            data.vertices
-                .push(Vertex::new(Vec3::new(x, y, 0.0), Vec3::Z, Vec4::ONE));
-        }
-    }
-    let at = |i: u32, j: u32| j * (n + 1) + i;
-    for j in 0..n {
-        for i in 0..n {
-            data.indices.extend([
-                at(i, j),
-                at(i + 1, j),
-                at(i + 1, j + 1),
-                at(i, j),
-                at(i + 1, j + 1),
-                at(i, j + 1),
-            ]);
-        }
-    }
-    data
 }
 
 /// Draws a scene with `renderer`; `mode` overrides the file's lighting mode when given.

@@ -1,0 +1,140 @@
+//! The scene file's shape, as serde reads it: TOML tables with GL's names, every field
+//! optional and unknown fields rejected. Values are checked, and defaults filled in, when
+//! the scene is built from it.
+
+use serde::Deserialize;
+use std::path::PathBuf;
+
+/// A whole scene file.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct SceneFile {
+    #[serde(default)]
+    pub(super) image: ImageSpec,
+    #[serde(default)]
+    pub(super) camera: CameraSpec,
+    /// GL_LIGHTING. On unless said otherwise: scene files are about lighting.
+    pub(super) lighting: Option<bool>,
+    #[serde(default)]
+    pub(super) light_model: LightModelSpec,
+    #[serde(default)]
+    pub(super) lights: Vec<LightSpec>,
+    pub(super) material: Option<MaterialSpec>,
+    pub(super) back_material: Option<MaterialSpec>,
+    pub(super) color_material: Option<ColorMaterialSpec>,
+    #[serde(default)]
+    pub(super) normalize: bool,
+    #[serde(default)]
+    pub(super) rescale_normal: bool,
+    /// Whether KHR_lights_punctual lights of the glTF files are added after `lights`.
+    pub(super) gltf_lights: Option<bool>,
+    #[serde(default)]
+    pub(super) meshes: Vec<MeshSpec>,
+}
+
+/// `[image]`: the picture and how it is drawn.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct ImageSpec {
+    pub(super) size: Option<[u32; 2]>,
+    pub(super) clear_color: Option<Vec<f32>>,
+    pub(super) lighting_mode: Option<String>,
+    pub(super) depth_test: Option<bool>,
+}
+
+/// `[camera]`: gluLookAt and gluPerspective parameters, or the matrices themselves.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct CameraSpec {
+    pub(super) eye: Option<[f32; 3]>,
+    pub(super) target: Option<[f32; 3]>,
+    pub(super) up: Option<[f32; 3]>,
+    /// Vertical field of view, degrees (gluPerspective's fovy).
+    pub(super) fovy: Option<f32>,
+    pub(super) near: Option<f32>,
+    pub(super) far: Option<f32>,
+    /// Column-major, as glLoadMatrixf; replaces eye/target/up.
+    pub(super) view: Option<[f32; 16]>,
+    /// Column-major GL projection; replaces fovy/near/far.
+    pub(super) projection: Option<[f32; 16]>,
+}
+
+/// `[light_model]`: glLightModel.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct LightModelSpec {
+    pub(super) ambient: Option<Vec<f32>>,
+    pub(super) local_viewer: Option<bool>,
+    pub(super) two_side: Option<bool>,
+    pub(super) color_control: Option<String>,
+}
+
+/// One `[[lights]]` table: glLight for one light.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct LightSpec {
+    /// GL_LIGHTi; by default the position in the list.
+    pub(super) index: Option<usize>,
+    pub(super) enabled: Option<bool>,
+    pub(super) ambient: Option<Vec<f32>>,
+    pub(super) diffuse: Option<Vec<f32>>,
+    pub(super) specular: Option<Vec<f32>>,
+    /// World space, homogeneous: w = 0 is a directional light.
+    pub(super) position: Option<[f32; 4]>,
+    /// World space.
+    pub(super) spot_direction: Option<[f32; 3]>,
+    pub(super) spot_exponent: Option<f32>,
+    pub(super) spot_cutoff: Option<f32>,
+    pub(super) constant_attenuation: Option<f32>,
+    pub(super) linear_attenuation: Option<f32>,
+    pub(super) quadratic_attenuation: Option<f32>,
+}
+
+/// A `material` table: glMaterial for one face, from a preset or from scratch.
+#[derive(Debug, Default, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct MaterialSpec {
+    /// A classic GL material (see `presets`); the fields below override it.
+    pub(super) preset: Option<String>,
+    pub(super) ambient: Option<Vec<f32>>,
+    pub(super) diffuse: Option<Vec<f32>>,
+    pub(super) specular: Option<Vec<f32>>,
+    pub(super) emission: Option<Vec<f32>>,
+    pub(super) shininess: Option<f32>,
+}
+
+/// `[color_material]`: glColorMaterial and GL_COLOR_MATERIAL.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct ColorMaterialSpec {
+    pub(super) enabled: Option<bool>,
+    pub(super) face: Option<String>,
+    pub(super) mode: Option<String>,
+}
+
+/// One `[[meshes]]` table: a glTF file (or part of one) or a built-in shape, placed.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct MeshSpec {
+    /// A .gltf or .glb file, relative to the scene file.
+    pub(super) gltf: Option<PathBuf>,
+    /// Only what the glTF node with this name places (it and its descendants).
+    pub(super) node: Option<String>,
+    /// Only primitives of the glTF mesh with this name.
+    pub(super) mesh: Option<String>,
+    /// A built-in shape instead of a file: "teapot", "sphere" or "plane".
+    pub(super) builtin: Option<String>,
+    /// Tessellation of a built-in shape (teapot: 1..=64, sphere: slices).
+    pub(super) level: Option<u32>,
+    /// Vertex color of a built-in shape (feeds COLOR_MATERIAL).
+    pub(super) color: Option<Vec<f32>>,
+    pub(super) translate: Option<[f32; 3]>,
+    /// Degrees about x, then y, then z.
+    pub(super) rotate: Option<[f32; 3]>,
+    pub(super) scale: Option<[f32; 3]>,
+    /// Column-major model matrix; replaces translate/rotate/scale.
+    pub(super) matrix: Option<[f32; 16]>,
+    /// Front (and back unless `back_material`) material for this mesh only.
+    pub(super) material: Option<MaterialSpec>,
+    pub(super) back_material: Option<MaterialSpec>,
+}

@@ -1,0 +1,205 @@
+//! glTF metallic-roughness materials: their factors as read from the file, and mapped onto
+//! GL's fixed-function material ([`gl_material`]).
+
+use super::Context;
+use crate::gl::state::Material;
+use glam::{Vec3, Vec4};
+
+/// The factors of a glTF metallic-roughness material (textures are not read).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PbrMaterial {
+    /// The material's index in the file (`None` for glTF's default material).
+    pub index: Option<usize>,
+    /// The material's name, if the file gives one.
+    pub name: Option<String>,
+    /// baseColorFactor, linear RGBA.
+    pub base_color_factor: Vec4,
+    /// metallicFactor in [0, 1].
+    pub metallic_factor: f32,
+    /// roughnessFactor in [0, 1].
+    pub roughness_factor: f32,
+    /// emissiveFactor, linear RGB.
+    pub emissive_factor: Vec3,
+    /// KHR_materials_emissive_strength's emissiveStrength (1 without the extension).
+    pub emissive_strength: f32,
+    /// doubleSided, as the file gives it ([`gl_material`] does not use it).
+    pub double_sided: bool,
+}
+
+impl Default for PbrMaterial {
+    /// glTF's default material: white, fully metallic, fully rough, no emission.
+    fn default() -> Self {
+        PbrMaterial {
+            index: None,
+            name: None,
+            base_color_factor: Vec4::ONE,
+            metallic_factor: 1.0,
+            roughness_factor: 1.0,
+            emissive_factor: Vec3::ZERO,
+            emissive_strength: 1.0,
+            double_sided: false,
+        }
+    }
+}
+
+/// GL's fixed-function material for a glTF metallic-roughness material.
+///
+/// With c = baseColorFactor.rgb, a = baseColorFactor.a, m = metallicFactor and
+/// r = roughnessFactor (both clamped to [0, 1]):
+///
+/// * ambient = diffuse = (c, a);
+/// * specular = (F0 · (1 − r), a) with F0 = mix(0.04, c, m), the Fresnel reflectance at
+///   normal incidence of the metallic-roughness model (0.04 for dielectrics, the base color
+///   for metals). The (1 − r) factor fades the highlight out as the lobe widens: at r = 1
+///   GL's shininess is 0 and (n·h)^0 = 1 would otherwise add F0 uniformly to every lit point;
+/// * shininess = clamp(2/α² − 2, 0, 128) with α = r², the Blinn-Phong exponent whose lobe
+///   matches a GGX/Beckmann lobe of roughness α (r = 0.5 → 30, r ≤ 0.35 → 128, r = 1 → 0);
+/// * emission = (emissiveFactor · emissiveStrength, a).
+///
+/// Every alpha is a; GL takes the lit alpha from the diffuse alpha alone. Textures are not
+/// sampled. The result satisfies [`Material::validate`] for finite inputs.
+pub fn gl_material(pbr: &PbrMaterial) -> Material {
+    let c = pbr.base_color_factor.truncate();
+    let a = pbr.base_color_factor.w;
+    let metallic = pbr.metallic_factor.clamp(0.0, 1.0);
+    let roughness = pbr.roughness_factor.clamp(0.0, 1.0);
+    let f0 = Vec3::splat(0.04).lerp(c, metallic);
+    let alpha = roughness * roughness;
+    let shininess = if alpha * alpha <= 2.0 / 130.0 {
+        128.0
+    } else {
+        (2.0 / (alpha * alpha) - 2.0).clamp(0.0, 128.0)
+    };
+    Material {
+        ambient: c.extend(a),
+        diffuse: c.extend(a),
+        specular: (f0 * (1.0 - roughness)).extend(a),
+        emission: (pbr.emissive_factor * pbr.emissive_strength).extend(a),
+        shininess,
+    }
+}
+
+/// The factors of a primitive's material; `None` for glTF's default material.
+pub(super) fn pbr_material(cx: &Context, material: gltf::Material) -> Option<PbrMaterial> {
+    let i = material.index()?;
+    let pbr = material.pbr_metallic_roughness();
+    Some(PbrMaterial {
+        index: Some(i),
+        name: cx.name("materials", i),
+        base_color_factor: Vec4::from_array(pbr.base_color_factor()),
+        metallic_factor: pbr.metallic_factor(),
+        roughness_factor: pbr.roughness_factor(),
+        emissive_factor: Vec3::from_array(material.emissive_factor()),
+        emissive_strength: material.emissive_strength().unwrap_or(1.0),
+        double_sided: material.double_sided(),
+    })
+}
+
+/// One warning per material that uses textures, which ffvk does not sample.
+pub(super) fn texture_warnings(cx: &Context, document: &gltf::Document) -> Vec<String> {
+    let mut warnings = Vec::new();
+    for material in document.materials() {
+        let pbr = material.pbr_metallic_roughness();
+        let textured = pbr.base_color_texture().is_some()
+            || pbr.metallic_roughness_texture().is_some()
+            || material.normal_texture().is_some()
+            || material.occlusion_texture().is_some()
+            || material.emissive_texture().is_some();
+        if textured {
+            let index = material.index().unwrap_or_default();
+            warnings.push(format!(
+                "material {index}{}: textures are ignored; ffvk uses the material's factors",
+                cx.name("materials", index)
+                    .map(|n| format!(" ({n:?})"))
+                    .unwrap_or_default()
+            ));
+        }
+    }
+    warnings
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::gltf::load;
+    use crate::scene::gltf::testing::{one_mesh_body, scratch_dir, Asset, QUAD};
+
+    #[test]
+    fn textures_are_reported_as_ignored() {
+        let dir = scratch_dir("textures");
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD[..3]);
+        let body = one_mesh_body(&format!(
+            r#"{{ "attributes": {{ "POSITION": {pos} }}, "material": 0 }}"#
+        )) + r#""materials": [ { "name": "wood", "pbrMetallicRoughness": { "baseColorTexture": { "index": 0 } } } ],
+                 "textures": [ { "source": 0 } ], "images": [ { "uri": "wood.png" } ],"#;
+        let loaded = load(&a.write_gltf(&dir, "textured", &body)).unwrap();
+        assert_eq!(loaded.warnings.len(), 1, "{:?}", loaded.warnings);
+        assert!(
+            loaded.warnings[0].contains("material 0 (\"wood\")") && loaded.warnings[0].contains("textures")
+        );
+        let pbr = loaded.meshes[0].material.clone().unwrap();
+        assert_eq!(
+            (pbr.base_color_factor, pbr.metallic_factor, pbr.roughness_factor),
+            (Vec4::ONE, 1.0, 1.0)
+        );
+    }
+
+    #[test]
+    fn gl_material_follows_the_documented_rule() {
+        let dielectric = PbrMaterial {
+            base_color_factor: Vec4::new(0.8, 0.2, 0.1, 0.5),
+            metallic_factor: 0.0,
+            roughness_factor: 0.5,
+            emissive_factor: Vec3::new(0.1, 0.2, 0.3),
+            emissive_strength: 2.0,
+            ..PbrMaterial::default()
+        };
+        let m = gl_material(&dielectric);
+        assert_eq!(m.ambient, Vec4::new(0.8, 0.2, 0.1, 0.5));
+        assert_eq!(m.diffuse, m.ambient);
+        assert!(
+            m.specular.abs_diff_eq(Vec4::new(0.02, 0.02, 0.02, 0.5), 1e-6),
+            "{}",
+            m.specular
+        );
+        assert!((m.shininess - 30.0).abs() < 1e-3, "{}", m.shininess);
+        assert!(m.emission.abs_diff_eq(Vec4::new(0.2, 0.4, 0.6, 0.5), 1e-6));
+        m.validate().unwrap();
+
+        let polished_gold = PbrMaterial {
+            base_color_factor: Vec4::new(1.0, 0.8, 0.3, 1.0),
+            metallic_factor: 1.0,
+            roughness_factor: 0.0,
+            ..PbrMaterial::default()
+        };
+        let m = gl_material(&polished_gold);
+        assert_eq!(m.specular, Vec4::new(1.0, 0.8, 0.3, 1.0));
+        assert_eq!(m.shininess, 128.0);
+        assert_eq!(m.emission, Vec4::new(0.0, 0.0, 0.0, 1.0));
+
+        let m = gl_material(&PbrMaterial::default());
+        assert_eq!(
+            m.specular,
+            Vec4::new(0.0, 0.0, 0.0, 1.0),
+            "fully rough: no highlight"
+        );
+        assert_eq!(m.shininess, 0.0);
+
+        for r in 0..=20 {
+            let pbr = PbrMaterial {
+                roughness_factor: r as f32 / 20.0,
+                metallic_factor: 0.5,
+                ..PbrMaterial::default()
+            };
+            gl_material(&pbr).validate().unwrap();
+        }
+        // Out-of-range factors are clamped, not propagated.
+        let wild = PbrMaterial {
+            metallic_factor: 3.0,
+            roughness_factor: -1.0,
+            ..PbrMaterial::default()
+        };
+        gl_material(&wild).validate().unwrap();
+    }
+}

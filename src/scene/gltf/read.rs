@@ -1,0 +1,349 @@
+//! Reading a file: the JSON (from a `.gltf`, or a `.glb`'s JSON chunk), its validation, its
+//! buffers (GLB binary chunk, external `.bin` files, data URIs), and the walk over the node
+//! hierarchy that places meshes and lights.
+
+use super::lights::punctual_light;
+use super::materials::pbr_material;
+use super::primitives::read_primitive;
+use super::{Context, LoadError, LoadErrorKind, Loaded, LoadedMesh};
+use glam::Mat4;
+use gltf::json::Value;
+use std::path::Path;
+
+/// A file as parsed: the raw JSON (for names) and the `gltf` crate's document and GLB blob.
+pub(super) struct Parsed {
+    pub raw: Value,
+    pub document: gltf::Document,
+    pub blob: Option<Vec<u8>>,
+}
+
+/// Reads and parses `path`, a `.gltf` (JSON) or `.glb` file, without validating it.
+pub(super) fn parse(path: &Path) -> Result<Parsed, LoadError> {
+    let error = |kind| LoadError {
+        path: path.to_path_buf(),
+        kind,
+    };
+    let bytes = std::fs::read(path).map_err(|source| error(LoadErrorKind::Io { source }))?;
+    let parse_error = |message: String| error(LoadErrorKind::Parse { message });
+    let raw: Value = if bytes.starts_with(b"glTF") {
+        let glb = gltf::Glb::from_slice(&bytes).map_err(|e| parse_error(e.to_string()))?;
+        gltf::json::deserialize::from_slice(&glb.json).map_err(|e| parse_error(e.to_string()))?
+    } else {
+        gltf::json::deserialize::from_slice(&bytes).map_err(|e| parse_error(e.to_string()))?
+    };
+    let gltf::Gltf { document, blob } =
+        gltf::Gltf::from_slice_without_validation(&bytes).map_err(|e| parse_error(e.to_string()))?;
+    Ok(Parsed { raw, document, blob })
+}
+
+/// Runs the `gltf` crate's validator; what it finds makes the error.
+pub(super) fn validate(cx: &Context, document: &gltf::Document) -> Result<(), LoadError> {
+    use gltf::json::validation::Validate;
+    let root = document.as_json();
+    let mut problems = Vec::new();
+    root.validate(root, gltf::json::Path::new, &mut |path, error| {
+        problems.push(format!("{}: {error}", path()));
+    });
+    if problems.is_empty() {
+        return Ok(());
+    }
+    Err(cx.error(LoadErrorKind::Invalid { problems }))
+}
+
+/// Loads every buffer (at least its byteLength), external files relative to the glTF file.
+pub(super) fn read_buffers(
+    cx: &Context,
+    document: &gltf::Document,
+    mut blob: Option<Vec<u8>>,
+) -> Result<Vec<gltf::buffer::Data>, LoadError> {
+    let base = cx.path.parent().unwrap_or(Path::new(""));
+    let mut buffers = Vec::new();
+    for buffer in document.buffers() {
+        let index = buffer.index();
+        let message = |message: String| LoadErrorKind::Buffer {
+            buffer: index,
+            message,
+        };
+        let data = gltf::buffer::Data::from_source_and_blob(buffer.source(), Some(base), &mut blob).map_err(
+            |e| {
+                cx.error(match (buffer.source(), e) {
+                    (gltf::buffer::Source::Uri(uri), gltf::Error::Io(source)) => LoadErrorKind::BufferFile {
+                        buffer: index,
+                        file: base.join(uri),
+                        source,
+                    },
+                    (gltf::buffer::Source::Bin, gltf::Error::MissingBlob) => {
+                        LoadErrorKind::MissingBinChunk { buffer: index }
+                    }
+                    (gltf::buffer::Source::Uri(uri), e) if uri.starts_with("data:") => {
+                        message(format!("bad data URI: {e}"))
+                    }
+                    (gltf::buffer::Source::Uri(uri), e) => message(format!("cannot load {uri:?}: {e}")),
+                    (gltf::buffer::Source::Bin, e) => message(e.to_string()),
+                })
+            },
+        )?;
+        if data.len() < buffer.length() {
+            return Err(cx.error(LoadErrorKind::BufferLength {
+                buffer: index,
+                len: data.len(),
+                byte_length: buffer.length(),
+            }));
+        }
+        buffers.push(data);
+    }
+    Ok(buffers)
+}
+
+/// Walks the default scene (or the first scene; or, in a file with no scene, every root node,
+/// with a warning) into `out`.
+pub(super) fn walk(
+    cx: &Context,
+    document: &gltf::Document,
+    buffers: &[gltf::buffer::Data],
+    out: &mut Loaded,
+) -> Result<(), LoadError> {
+    let mut roots: Vec<gltf::Node> = Vec::new();
+    if let Some(scene) = document.default_scene().or_else(|| document.scenes().next()) {
+        roots.extend(scene.nodes());
+    } else if document.nodes().len() > 0 {
+        let mut is_child = vec![false; document.nodes().len()];
+        for node in document.nodes() {
+            node.children().for_each(|c| is_child[c.index()] = true);
+        }
+        roots.extend(document.nodes().filter(|n| !is_child[n.index()]));
+        out.warnings
+            .push("the file has no scene: loaded every root node".to_owned());
+    }
+    let mut on_path = vec![false; document.nodes().len()];
+    for root in roots {
+        visit(
+            cx,
+            buffers,
+            root,
+            Mat4::IDENTITY,
+            &mut on_path,
+            &mut Vec::new(),
+            out,
+        )?;
+    }
+    Ok(())
+}
+
+/// Places `node`'s meshes and light, then its children's, under `parent` (its parent's world
+/// transform). `on_path` marks the nodes from the root down to `node`, whose names are in
+/// `names`: a node met again on its own path is a cycle.
+fn visit(
+    cx: &Context,
+    buffers: &[gltf::buffer::Data],
+    node: gltf::Node,
+    parent: Mat4,
+    on_path: &mut [bool],
+    names: &mut Vec<String>,
+    out: &mut Loaded,
+) -> Result<(), LoadError> {
+    let index = node.index();
+    if on_path[index] {
+        return Err(cx.error(LoadErrorKind::NodeCycle { node: index }));
+    }
+    on_path[index] = true;
+    names.push(cx.name("nodes", index).unwrap_or_else(|| format!("node {index}")));
+    let world = parent * Mat4::from_cols_array_2d(&node.transform().matrix());
+
+    if let Some(mesh) = node.mesh() {
+        let m = mesh.index();
+        let base_name = cx.name("meshes", m).unwrap_or_else(|| format!("mesh {m}"));
+        let several = mesh.primitives().len() > 1;
+        let mirrored = world.determinant() < 0.0;
+        for primitive in mesh.primitives() {
+            let p = primitive.index();
+            if primitive.morph_targets().len() > 0 {
+                out.warnings
+                    .push(format!("{}: morph targets are ignored", cx.primitive_label(m, p)));
+            }
+            let data = read_primitive(cx, buffers, m, &primitive, mirrored, &mut out.warnings)?;
+            let material = pbr_material(cx, primitive.material());
+            out.meshes.push(LoadedMesh {
+                name: if several {
+                    format!("{base_name}[{p}]")
+                } else {
+                    base_name.clone()
+                },
+                data,
+                transform: world,
+                node_path: names.clone(),
+                material,
+            });
+        }
+    }
+    if node.skin().is_some() {
+        out.warnings.push(format!("node {index}: skinning is ignored"));
+    }
+    if let Some(light) = node.light() {
+        out.lights.push(punctual_light(cx, light, world));
+    }
+    for child in node.children() {
+        visit(cx, buffers, child, world, on_path, names, out)?;
+    }
+    names.pop();
+    on_path[index] = false;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::scene::gltf::testing::{message, one_mesh_body, scratch_dir, Asset, QUAD};
+    use crate::scene::gltf::{load, LoadErrorKind};
+    use glam::{Mat4, Vec3, Vec4};
+
+    #[test]
+    fn glb_with_bin_chunk_loads() {
+        let dir = scratch_dir("glb");
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD);
+        let idx = a.u16s(&[0, 1, 2, 0, 2, 3]);
+        let body = one_mesh_body(&format!(
+            r#"{{ "attributes": {{ "POSITION": {pos} }}, "indices": {idx}, "material": 0 }}"#
+        )) + r#""materials": [ { "name": "red", "pbrMetallicRoughness": { "baseColorFactor": [1, 0, 0, 0.5],
+                "metallicFactor": 0.25, "roughnessFactor": 0.75 }, "emissiveFactor": [0, 1, 0],
+                "doubleSided": true } ],"#;
+        let loaded = load(&a.write_glb(&dir, "quad", &body)).unwrap();
+        let m = &loaded.meshes[0];
+        assert_eq!(m.data.triangle_count(), 2);
+        assert_eq!(m.data.vertices.len(), 6);
+        let material = m.material.as_ref().unwrap();
+        assert_eq!(material.name.as_deref(), Some("red"));
+        assert_eq!(material.base_color_factor, Vec4::new(1.0, 0.0, 0.0, 0.5));
+        assert_eq!(
+            (material.metallic_factor, material.roughness_factor),
+            (0.25, 0.75)
+        );
+        assert_eq!(material.emissive_factor, Vec3::Y);
+        assert!(material.double_sided);
+    }
+
+    #[test]
+    fn node_hierarchy_composes_parent_times_local_in_the_default_scene() {
+        let dir = scratch_dir("hierarchy");
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD[..3]);
+        let s = std::f32::consts::FRAC_1_SQRT_2;
+        let body = format!(
+            r#""scene": 1,
+               "scenes": [ {{ "nodes": [3] }}, {{ "nodes": [0] }} ],
+               "nodes": [
+                 {{ "name": "parent", "translation": [1, 2, 3], "children": [1] }},
+                 {{ "name": "child", "scale": [2, 2, 2], "rotation": [0, {s}, 0, {s}], "children": [2], "mesh": 0 }},
+                 {{ "name": "grandchild", "matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,5,1], "mesh": 1 }},
+                 {{ "name": "other scene", "mesh": 0 }}
+               ],
+               "meshes": [ {{ "primitives": [ {{ "attributes": {{ "POSITION": {pos} }} }}, {{ "attributes": {{ "POSITION": {pos} }} }} ] }},
+                           {{ "name": "leaf", "primitives": [ {{ "attributes": {{ "POSITION": {pos} }} }} ] }} ],"#
+        );
+        let loaded = load(&a.write_gltf(&dir, "hierarchy", &body)).unwrap();
+        let names: Vec<&str> = loaded.meshes.iter().map(|m| m.name.as_str()).collect();
+        assert_eq!(names, ["mesh 0[0]", "mesh 0[1]", "leaf"]);
+        let parent = Mat4::from_translation(Vec3::new(1.0, 2.0, 3.0));
+        let child = Mat4::from_scale_rotation_translation(
+            Vec3::splat(2.0),
+            glam::Quat::from_xyzw(0.0, s, 0.0, s),
+            Vec3::ZERO,
+        );
+        let grandchild = Mat4::from_translation(Vec3::new(0.0, 0.0, 5.0));
+        assert!(loaded.meshes[0].transform.abs_diff_eq(parent * child, 1e-6));
+        assert!(loaded.meshes[2]
+            .transform
+            .abs_diff_eq(parent * child * grandchild, 1e-5));
+        // (0,0,5) in the child's frame: rotated +90° about y to (5,0,0), scaled by 2, moved.
+        let origin = loaded.meshes[2].transform.transform_point3(Vec3::ZERO);
+        assert!(origin.abs_diff_eq(Vec3::new(11.0, 2.0, 3.0), 1e-4), "{origin}");
+    }
+
+    #[test]
+    fn a_file_without_scenes_loads_its_root_nodes_with_a_warning() {
+        let dir = scratch_dir("no_scene");
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD[..3]);
+        let body = format!(
+            r#""nodes": [ {{ "children": [1] }}, {{ "mesh": 0, "translation": [0, 1, 0] }}, {{ "mesh": 0 }} ],
+               "meshes": [ {{ "primitives": [ {{ "attributes": {{ "POSITION": {pos} }} }} ] }} ],"#
+        );
+        let loaded = load(&a.write_gltf(&dir, "no_scene", &body)).unwrap();
+        assert_eq!(
+            loaded.meshes.len(),
+            2,
+            "node 1 once, as node 0's child, and node 2"
+        );
+        assert!(
+            loaded.warnings.iter().any(|w| w.contains("no scene")),
+            "{:?}",
+            loaded.warnings
+        );
+    }
+
+    #[test]
+    fn file_buffer_and_json_errors_name_the_file() {
+        let dir = scratch_dir("io");
+        let e = message(load(&dir.join("nope.gltf")).unwrap_err());
+        assert!(e.contains("nope.gltf") && e.contains("cannot read"), "{e}");
+
+        let bad = dir.join("bad.gltf");
+        std::fs::write(&bad, "{ not json").unwrap();
+        let e = message(load(&bad).unwrap_err());
+        assert!(e.contains("bad.gltf") && e.contains("not a glTF 2.0 file"), "{e}");
+
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD[..3]);
+        let body = one_mesh_body(&format!(r#"{{ "attributes": {{ "POSITION": {pos} }} }}"#));
+        let path = a.write_gltf(&dir, "lost_bin", &body);
+        std::fs::remove_file(dir.join("lost_bin.bin")).unwrap();
+        let e = load(&path).unwrap_err();
+        assert!(matches!(e.kind, LoadErrorKind::BufferFile { buffer: 0, .. }));
+        let e = message(e);
+        assert!(
+            e.contains("lost_bin.gltf: buffer 0: cannot read") && e.contains("lost_bin.bin"),
+            "{e}"
+        );
+
+        // A buffer shorter than its byteLength.
+        let short = dir.join("short.gltf");
+        std::fs::write(dir.join("short.bin"), [0u8; 8]).unwrap();
+        std::fs::write(&short, a.json(&body, Some("short.bin"))).unwrap();
+        let e = message(load(&short).unwrap_err());
+        assert!(e.contains("buffer 0: holds 8 bytes: expected at least 36"), "{e}");
+
+        // Schema problems go through the gltf crate's validator.
+        let invalid = dir.join("invalid.gltf");
+        let body = one_mesh_body(r#"{ "attributes": { "POSITION": 9 } }"#);
+        std::fs::write(&invalid, a.json(&body, Some("lost_bin.bin"))).unwrap();
+        let e = message(load(&invalid).unwrap_err());
+        assert!(
+            e.contains("invalid.gltf: invalid glTF") && e.contains("POSITION names accessor 9"),
+            "{e}"
+        );
+        let body = one_mesh_body(r#"{ "attributes": { "POSITION": 0, "NORMAL": 9 } }"#);
+        std::fs::write(&invalid, a.json(&body, Some("lost_bin.bin"))).unwrap();
+        let e = message(load(&invalid).unwrap_err());
+        assert!(
+            e.contains("invalid.gltf: invalid glTF") && e.contains("NORMAL"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn node_cycles_are_an_error() {
+        let dir = scratch_dir("cycle");
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD[..3]);
+        let body = format!(
+            r#""scene": 0, "scenes": [ {{ "nodes": [0] }} ],
+               "nodes": [ {{ "children": [1] }}, {{ "children": [0], "mesh": 0 }} ],
+               "meshes": [ {{ "primitives": [ {{ "attributes": {{ "POSITION": {pos} }} }} ] }} ],"#
+        );
+        let e = message(load(&a.write_gltf(&dir, "cycle", &body)).unwrap_err());
+        assert!(
+            e.contains("cycle.gltf") && e.contains("node 0 is its own ancestor"),
+            "{e}"
+        );
+    }
+}
