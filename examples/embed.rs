@@ -52,9 +52,18 @@ pub fn gl_state(mode: LightingMode) -> Result<GlState, ffvk::Error> {
     gl.enable(Cap::Light(0))?;
     gl.enable(Cap::Light(1))?;
     gl.lighting_mode(mode);
-    gl.material(Face::FrontAndBack, MaterialParam::Ambient(Vec4::new(0.33, 0.22, 0.03, 1.0)))?;
-    gl.material(Face::FrontAndBack, MaterialParam::Diffuse(Vec4::new(0.78, 0.57, 0.11, 1.0)))?;
-    gl.material(Face::FrontAndBack, MaterialParam::Specular(Vec4::new(0.99, 0.94, 0.81, 1.0)))?;
+    gl.material(
+        Face::FrontAndBack,
+        MaterialParam::Ambient(Vec4::new(0.33, 0.22, 0.03, 1.0)),
+    )?;
+    gl.material(
+        Face::FrontAndBack,
+        MaterialParam::Diffuse(Vec4::new(0.78, 0.57, 0.11, 1.0)),
+    )?;
+    gl.material(
+        Face::FrontAndBack,
+        MaterialParam::Specular(Vec4::new(0.99, 0.94, 0.81, 1.0)),
+    )?;
     gl.material(Face::FrontAndBack, MaterialParam::Shininess(27.9))?;
     gl.light_model(LightModelParam::TwoSide(true))?;
     gl.load_modelview(view())?;
@@ -70,15 +79,43 @@ pub fn teapot() -> MeshData {
     ffvk::mesh::teapot::teapot(12).expect("level 12 is in range")
 }
 
-/// Renders the teapot in each mode on the device whose name contains `device_name`
-/// (lavapipe by default); returns RGBA8 rows, top row first. With `validation`, the Khronos
-/// validation layer is on and any message it reports is an error.
+/// One image: the teapot under `state`, with or without its color array (without one,
+/// every vertex takes the state's current color, as after glColor in GL).
+pub struct EmbedFrame {
+    /// GL's state for the draw.
+    pub state: ffvk::gl::state::LightingState,
+    /// Whether the mesh has a color array (binding 1, 8-bit colors).
+    pub color_array: bool,
+}
+
+/// Renders the teapot in each mode with its color array; see [`render_frames`].
 pub fn render_modes(
     device_name: Option<&str>,
     validation: bool,
 ) -> Result<Vec<(LightingMode, Vec<u8>)>, String> {
-    let app = App::new(device_name, validation)?;
-    let result = app.render_modes();
+    let frames = LightingMode::ALL
+        .iter()
+        .map(|&mode| {
+            Ok(EmbedFrame {
+                state: gl_state(mode).map_err(|e| e.to_string())?.lighting,
+                color_array: true,
+            })
+        })
+        .collect::<Result<Vec<_>, String>>()?;
+    let images = render_frames(device_name, validation, &frames)?;
+    Ok(LightingMode::ALL.into_iter().zip(images).collect())
+}
+
+/// Renders `frames` on the device whose name contains `device_name` (lavapipe by default);
+/// returns RGBA8 rows, top row first, one image per frame. With `validation`, the Khronos
+/// validation layer is on and any message it reports is an error.
+pub fn render_frames(
+    device_name: Option<&str>,
+    validation: bool,
+    frames: &[EmbedFrame],
+) -> Result<Vec<Vec<u8>>, String> {
+    let mut app = App::new(device_name, validation)?;
+    let result = app.render(frames);
     let messages = app.messages();
     drop(app);
     let images = result?;
@@ -165,19 +202,24 @@ impl App {
         let app = vk::ApplicationInfo::default().api_version(vk::API_VERSION_1_3);
         let mut info = vk::InstanceCreateInfo::default().application_info(&app);
         if validation {
-            info = info.enabled_layer_names(&layers).enabled_extension_names(&extensions);
+            info = info
+                .enabled_layer_names(&layers)
+                .enabled_extension_names(&extensions);
         }
         // SAFETY: the create info and its strings outlive the call.
-        let instance = unsafe { entry.create_instance(&info, None) }.map_err(|e| format!("vkCreateInstance: {e}"))?;
+        let instance =
+            unsafe { entry.create_instance(&info, None) }.map_err(|e| format!("vkCreateInstance: {e}"))?;
         let messages = Box::new(Mutex::new(Vec::new()));
         let messenger = if validation {
             let loader = ext::debug_utils::Instance::new(&entry, &instance);
             let info = vk::DebugUtilsMessengerCreateInfoEXT::default()
                 .message_severity(
-                    vk::DebugUtilsMessageSeverityFlagsEXT::ERROR | vk::DebugUtilsMessageSeverityFlagsEXT::WARNING,
+                    vk::DebugUtilsMessageSeverityFlagsEXT::ERROR
+                        | vk::DebugUtilsMessageSeverityFlagsEXT::WARNING,
                 )
                 .message_type(
-                    vk::DebugUtilsMessageTypeFlagsEXT::GENERAL | vk::DebugUtilsMessageTypeFlagsEXT::VALIDATION,
+                    vk::DebugUtilsMessageTypeFlagsEXT::GENERAL
+                        | vk::DebugUtilsMessageTypeFlagsEXT::VALIDATION,
                 )
                 .pfn_user_callback(Some(on_message))
                 .user_data(&*messages as *const Mutex<Vec<String>> as *mut c_void);
@@ -217,7 +259,8 @@ impl App {
         let mut v13 = vk::PhysicalDeviceVulkan13Features::default()
             .dynamic_rendering(true)
             .synchronization2(true);
-        let mut provoking = vk::PhysicalDeviceProvokingVertexFeaturesEXT::default().provoking_vertex_last(true);
+        let mut provoking =
+            vk::PhysicalDeviceProvokingVertexFeaturesEXT::default().provoking_vertex_last(true);
         let info = vk::DeviceCreateInfo::default()
             .queue_create_infos(&queues)
             .enabled_extension_names(&device_extensions)
@@ -234,7 +277,9 @@ impl App {
         // SAFETY: valid create infos on a live device.
         let (pool, fence) = unsafe {
             (
-                device.create_command_pool(&pool_info, None).map_err(|e| e.to_string())?,
+                device
+                    .create_command_pool(&pool_info, None)
+                    .map_err(|e| e.to_string())?,
                 device
                     .create_fence(&vk::FenceCreateInfo::default(), None)
                     .map_err(|e| e.to_string())?,
@@ -266,7 +311,11 @@ impl App {
         self.messages.lock().map(|m| m.clone()).unwrap_or_default()
     }
 
-    fn memory(&self, req: vk::MemoryRequirements, flags: vk::MemoryPropertyFlags) -> Result<Allocation, String> {
+    fn memory(
+        &self,
+        req: vk::MemoryRequirements,
+        flags: vk::MemoryPropertyFlags,
+    ) -> Result<Allocation, String> {
         // SAFETY: physical is valid.
         let props = unsafe { self.instance.get_physical_device_memory_properties(self.physical) };
         let index = (0..props.memory_type_count)
@@ -285,7 +334,9 @@ impl App {
 
     /// A host-visible buffer holding `bytes`.
     fn buffer(&mut self, bytes: &[u8], usage: vk::BufferUsageFlags) -> Result<vk::Buffer, String> {
-        let info = vk::BufferCreateInfo::default().size(bytes.len().max(4) as u64).usage(usage);
+        let info = vk::BufferCreateInfo::default()
+            .size(bytes.len().max(4) as u64)
+            .usage(usage);
         // SAFETY: a valid create info.
         let buffer = unsafe { self.device.create_buffer(&info, None) }.map_err(|e| e.to_string())?;
         // SAFETY: the buffer is alive.
@@ -310,11 +361,20 @@ impl App {
         Ok(buffer)
     }
 
-    fn image(&mut self, format: vk::Format, usage: vk::ImageUsageFlags, aspect: vk::ImageAspectFlags) -> Result<(vk::Image, vk::ImageView), String> {
+    fn image(
+        &mut self,
+        format: vk::Format,
+        usage: vk::ImageUsageFlags,
+        aspect: vk::ImageAspectFlags,
+    ) -> Result<(vk::Image, vk::ImageView), String> {
         let info = vk::ImageCreateInfo::default()
             .image_type(vk::ImageType::TYPE_2D)
             .format(format)
-            .extent(vk::Extent3D { width: SIZE, height: SIZE, depth: 1 })
+            .extent(vk::Extent3D {
+                width: SIZE,
+                height: SIZE,
+                depth: 1,
+            })
             .mip_levels(1)
             .array_layers(1)
             .samples(vk::SampleCountFlags::TYPE_1)
@@ -323,7 +383,8 @@ impl App {
         let image = unsafe { self.device.create_image(&info, None) }.map_err(|e| e.to_string())?;
         // SAFETY: the image is alive.
         let req = unsafe { self.device.get_image_memory_requirements(image) };
-        let memory = self.memory(req, vk::MemoryPropertyFlags::DEVICE_LOCAL)
+        let memory = self
+            .memory(req, vk::MemoryPropertyFlags::DEVICE_LOCAL)
             .or_else(|_| self.memory(req, vk::MemoryPropertyFlags::empty()))?;
         // SAFETY: fresh memory of the required size.
         unsafe { self.device.bind_image_memory(image, memory.memory, 0) }.map_err(|e| e.to_string())?;
@@ -338,7 +399,7 @@ impl App {
         Ok((image, view))
     }
 
-    fn render_modes(&mut self) -> Result<Vec<(LightingMode, Vec<u8>)>, String> {
+    fn render(&mut self, frames: &[EmbedFrame]) -> Result<Vec<Vec<u8>>, String> {
         // The caller's vertex data: positions alone, then normals with 8-bit colors.
         let mesh = teapot();
         let positions: Vec<[f32; 3]> = mesh.vertices.iter().map(|v| v.position).collect();
@@ -347,10 +408,19 @@ impl App {
             normal_color.extend_from_slice(bytemuck::cast_slice(&v.normal));
             normal_color.extend(v.color.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8));
         }
-        let position_buffer = self.buffer(bytemuck::cast_slice(&positions), vk::BufferUsageFlags::VERTEX_BUFFER)?;
+        let position_buffer = self.buffer(
+            bytemuck::cast_slice(&positions),
+            vk::BufferUsageFlags::VERTEX_BUFFER,
+        )?;
         let normal_buffer = self.buffer(&normal_color, vk::BufferUsageFlags::VERTEX_BUFFER)?;
-        let index_buffer = self.buffer(bytemuck::cast_slice(&mesh.indices), vk::BufferUsageFlags::INDEX_BUFFER)?;
-        let readback = self.buffer(&vec![0; (SIZE * SIZE * 4) as usize], vk::BufferUsageFlags::TRANSFER_DST)?;
+        let index_buffer = self.buffer(
+            bytemuck::cast_slice(&mesh.indices),
+            vk::BufferUsageFlags::INDEX_BUFFER,
+        )?;
+        let readback = self.buffer(
+            &vec![0; (SIZE * SIZE * 4) as usize],
+            vk::BufferUsageFlags::TRANSFER_DST,
+        )?;
         let (color, color_view) = self.image(
             COLOR_FORMAT,
             vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::TRANSFER_SRC,
@@ -375,12 +445,32 @@ impl App {
         .map_err(|e| e.to_string())?;
         let vertex_input = VertexInput {
             bindings: vec![
-                vk::VertexInputBindingDescription { binding: 0, stride: 12, input_rate: vk::VertexInputRate::VERTEX },
-                vk::VertexInputBindingDescription { binding: 1, stride: 16, input_rate: vk::VertexInputRate::VERTEX },
+                vk::VertexInputBindingDescription {
+                    binding: 0,
+                    stride: 12,
+                    input_rate: vk::VertexInputRate::VERTEX,
+                },
+                vk::VertexInputBindingDescription {
+                    binding: 1,
+                    stride: 16,
+                    input_rate: vk::VertexInputRate::VERTEX,
+                },
             ],
-            position: Attribute { binding: 0, offset: 0, format: vk::Format::R32G32B32_SFLOAT },
-            normal: Attribute { binding: 1, offset: 0, format: vk::Format::R32G32B32_SFLOAT },
-            color: Some(Attribute { binding: 1, offset: 12, format: vk::Format::R8G8B8A8_UNORM }),
+            position: Attribute {
+                binding: 0,
+                offset: 0,
+                format: vk::Format::R32G32B32_SFLOAT,
+            },
+            normal: Attribute {
+                binding: 1,
+                offset: 0,
+                format: vk::Format::R32G32B32_SFLOAT,
+            },
+            color: Some(Attribute {
+                binding: 1,
+                offset: 12,
+                format: vk::Format::R8G8B8A8_UNORM,
+            }),
             texcoord: None,
         };
         let target = Target {
@@ -388,20 +478,32 @@ impl App {
             depth_format: DEPTH_FORMAT,
             samples: vk::SampleCountFlags::TYPE_1,
         };
-        let mut lighting = Lighting::new(&ffvk_device, &LightingOptions::new(target, vertex_input))
+        // The same buffers without the color attribute: GL's current color instead.
+        let without_colors = VertexInput {
+            color: None,
+            ..vertex_input.clone()
+        };
+        let mut with_color_array = Lighting::new(&ffvk_device, &LightingOptions::new(target, vertex_input))
             .map_err(|e| e.to_string())?;
+        let mut with_current_color =
+            Lighting::new(&ffvk_device, &LightingOptions::new(target, without_colors))
+                .map_err(|e| e.to_string())?;
         let raster = RasterState {
             depth_test: true,
             ..RasterState::default()
         };
 
         let mut images = Vec::new();
-        for mode in LightingMode::ALL {
-            let gl = gl_state(mode).map_err(|e| e.to_string())?;
+        for frame in frames {
+            let lighting = if frame.color_array {
+                &mut with_color_array
+            } else {
+                &mut with_current_color
+            };
             lighting.begin_frame(0).map_err(|e| e.to_string())?;
             self.begin(color, depth, color_view, depth_view)?;
             let draw = LitDraw {
-                state: &gl.lighting,
+                state: &frame.state,
                 modelview: view(),
                 projection: projection(),
                 raster,
@@ -419,15 +521,22 @@ impl App {
             // attachments of the target's formats, viewport and scissor set; the buffers live
             // until after the fence wait below; slot 0 is free (the last frame was waited for).
             unsafe { lighting.draw(self.cmd, 0, &draw) }.map_err(|e| e.to_string())?;
-            images.push((mode, self.finish(color, readback)?));
+            images.push(self.finish(color, readback)?);
         }
-        drop(lighting);
+        drop(with_color_array);
+        drop(with_current_color);
         drop(ffvk_device);
         Ok(images)
     }
 
     /// Begins the command buffer and the rendering pass: clear color and depth.
-    fn begin(&self, color: vk::Image, depth: vk::Image, color_view: vk::ImageView, depth_view: vk::ImageView) -> Result<(), String> {
+    fn begin(
+        &self,
+        color: vk::Image,
+        depth: vk::Image,
+        color_view: vk::ImageView,
+        depth_view: vk::ImageView,
+    ) -> Result<(), String> {
         let d = &self.device;
         let barriers = [
             vk::ImageMemoryBarrier2::default()
@@ -442,8 +551,14 @@ impl App {
             vk::ImageMemoryBarrier2::default()
                 .src_stage_mask(vk::PipelineStageFlags2::ALL_COMMANDS)
                 .src_access_mask(vk::AccessFlags2::MEMORY_READ | vk::AccessFlags2::MEMORY_WRITE)
-                .dst_stage_mask(vk::PipelineStageFlags2::EARLY_FRAGMENT_TESTS | vk::PipelineStageFlags2::LATE_FRAGMENT_TESTS)
-                .dst_access_mask(vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_READ | vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_WRITE)
+                .dst_stage_mask(
+                    vk::PipelineStageFlags2::EARLY_FRAGMENT_TESTS
+                        | vk::PipelineStageFlags2::LATE_FRAGMENT_TESTS,
+                )
+                .dst_access_mask(
+                    vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_READ
+                        | vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_WRITE,
+                )
                 .old_layout(vk::ImageLayout::UNDEFINED)
                 .new_layout(vk::ImageLayout::DEPTH_ATTACHMENT_OPTIMAL)
                 .image(depth)
@@ -454,14 +569,27 @@ impl App {
             .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
             .load_op(vk::AttachmentLoadOp::CLEAR)
             .store_op(vk::AttachmentStoreOp::STORE)
-            .clear_value(vk::ClearValue { color: vk::ClearColorValue { float32: CLEAR } })];
+            .clear_value(vk::ClearValue {
+                color: vk::ClearColorValue { float32: CLEAR },
+            })];
         let depth_attachment = vk::RenderingAttachmentInfo::default()
             .image_view(depth_view)
             .image_layout(vk::ImageLayout::DEPTH_ATTACHMENT_OPTIMAL)
             .load_op(vk::AttachmentLoadOp::CLEAR)
             .store_op(vk::AttachmentStoreOp::DONT_CARE)
-            .clear_value(vk::ClearValue { depth_stencil: vk::ClearDepthStencilValue { depth: 1.0, stencil: 0 } });
-        let area = vk::Rect2D { offset: vk::Offset2D::default(), extent: vk::Extent2D { width: SIZE, height: SIZE } };
+            .clear_value(vk::ClearValue {
+                depth_stencil: vk::ClearDepthStencilValue {
+                    depth: 1.0,
+                    stencil: 0,
+                },
+            });
+        let area = vk::Rect2D {
+            offset: vk::Offset2D::default(),
+            extent: vk::Extent2D {
+                width: SIZE,
+                height: SIZE,
+            },
+        };
         let rendering = vk::RenderingInfo::default()
             .render_area(area)
             .layer_count(1)
@@ -477,9 +605,14 @@ impl App {
         };
         // SAFETY: the command buffer is not pending (every submission is waited for).
         unsafe {
-            d.reset_command_buffer(self.cmd, vk::CommandBufferResetFlags::empty()).map_err(|e| e.to_string())?;
-            d.begin_command_buffer(self.cmd, &vk::CommandBufferBeginInfo::default()).map_err(|e| e.to_string())?;
-            d.cmd_pipeline_barrier2(self.cmd, &vk::DependencyInfo::default().image_memory_barriers(&barriers));
+            d.reset_command_buffer(self.cmd, vk::CommandBufferResetFlags::empty())
+                .map_err(|e| e.to_string())?;
+            d.begin_command_buffer(self.cmd, &vk::CommandBufferBeginInfo::default())
+                .map_err(|e| e.to_string())?;
+            d.cmd_pipeline_barrier2(
+                self.cmd,
+                &vk::DependencyInfo::default().image_memory_barriers(&barriers),
+            );
             d.cmd_begin_rendering(self.cmd, &rendering);
             d.cmd_set_viewport(self.cmd, 0, &[viewport]);
             d.cmd_set_scissor(self.cmd, 0, &[area]);
@@ -513,7 +646,11 @@ impl App {
                 base_array_layer: 0,
                 layer_count: 1,
             },
-            image_extent: vk::Extent3D { width: SIZE, height: SIZE, depth: 1 },
+            image_extent: vk::Extent3D {
+                width: SIZE,
+                height: SIZE,
+                depth: 1,
+            },
             ..Default::default()
         };
         let buffers = [self.cmd];
@@ -522,12 +659,26 @@ impl App {
         // after the barrier; the submission is waited for before anything is reused.
         unsafe {
             d.cmd_end_rendering(self.cmd);
-            d.cmd_pipeline_barrier2(self.cmd, &vk::DependencyInfo::default().image_memory_barriers(&to_transfer));
-            d.cmd_copy_image_to_buffer(self.cmd, color, vk::ImageLayout::TRANSFER_SRC_OPTIMAL, readback, &[region]);
-            d.cmd_pipeline_barrier2(self.cmd, &vk::DependencyInfo::default().buffer_memory_barriers(&to_host));
+            d.cmd_pipeline_barrier2(
+                self.cmd,
+                &vk::DependencyInfo::default().image_memory_barriers(&to_transfer),
+            );
+            d.cmd_copy_image_to_buffer(
+                self.cmd,
+                color,
+                vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
+                readback,
+                &[region],
+            );
+            d.cmd_pipeline_barrier2(
+                self.cmd,
+                &vk::DependencyInfo::default().buffer_memory_barriers(&to_host),
+            );
             d.end_command_buffer(self.cmd).map_err(|e| e.to_string())?;
-            d.queue_submit(self.queue, &[submit], self.fence).map_err(|e| e.to_string())?;
-            d.wait_for_fences(&[self.fence], true, u64::MAX).map_err(|e| e.to_string())?;
+            d.queue_submit(self.queue, &[submit], self.fence)
+                .map_err(|e| e.to_string())?;
+            d.wait_for_fences(&[self.fence], true, u64::MAX)
+                .map_err(|e| e.to_string())?;
             d.reset_fences(&[self.fence]).map_err(|e| e.to_string())?;
         }
         let memory = self

@@ -3,6 +3,7 @@
 mod bench;
 mod conformance;
 mod determinism;
+mod embedding;
 mod gl_oracle;
 mod golden;
 mod layout;

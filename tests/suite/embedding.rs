@@ -1,0 +1,224 @@
+//! The embedding API: GL lighting recorded into a caller's own device and command buffers
+//! (`ffvk::Lighting`), and the offscreen renderer built on it.
+
+#[path = "../../examples/embed.rs"]
+#[allow(dead_code)]
+mod embed;
+
+use ffvk::gl::state::{Cap, Face, GlState, LightingMode, MaterialParam};
+use ffvk::{Draw, Frame};
+use glam::{DVec3, DVec4, Mat4, Vec4};
+
+use crate::support::*;
+
+/// Fails with the first pixel where the Renderer's image and the caller's differ, saving both.
+fn assert_same_bytes(renderer: &ffvk::Pixels, caller: &[u8], what: &str) {
+    let first_difference = renderer
+        .rgba
+        .chunks(4)
+        .zip(caller.chunks(4))
+        .position(|(a, b)| a != b);
+    if let Some(i) = first_difference {
+        let (x, y) = (i as u32 % renderer.width, i as u32 / renderer.width);
+        let renderer_path = save_for_inspection(
+            &renderer.clone().into_rgba_image(),
+            &format!("embed_renderer_{what}"),
+        );
+        let caller_image =
+            image::RgbaImage::from_raw(renderer.width, renderer.height, caller.to_vec()).unwrap();
+        let caller_path = save_for_inspection(&caller_image, &format!("embed_caller_{what}"));
+        panic!(
+            "{what}: pixel ({x}, {y}) is {:?} through the Renderer but {:?} through the caller's device; images {} and {}",
+            &renderer.rgba[i * 4..i * 4 + 4],
+            &caller[i * 4..i * 4 + 4],
+            renderer_path.display(),
+            caller_path.display()
+        );
+    }
+    assert_eq!(renderer.rgba.len(), caller.len(), "{what}: image sizes");
+}
+
+/// The teapot frame of the embedding example, drawn through the Renderer.
+fn renderer_frame(
+    r: &mut ffvk::Renderer,
+    mesh: &ffvk::Mesh,
+    state: &ffvk::gl::state::LightingState,
+) -> ffvk::Pixels {
+    let mut frame = Frame::new(embed::SIZE, embed::SIZE);
+    frame.clear_color = Vec4::from_array(embed::CLEAR);
+    frame.draws.push(Draw {
+        mesh,
+        modelview: embed::view(),
+        projection: embed::projection(),
+        state: *state,
+    });
+    r.render(&frame).unwrap()
+}
+
+#[test]
+fn a_callers_device_draws_the_same_bytes_as_the_renderer_in_every_mode() {
+    let embedded = embed::render_modes(None, true).expect("the embedding example renders with validation on");
+    assert_eq!(embedded.len(), 3);
+    let mut r = renderer();
+    let mesh = r.upload(&embed::teapot()).unwrap();
+    for (mode, bytes) in embedded {
+        let gl = embed::gl_state(mode).unwrap();
+        let pixels = renderer_frame(&mut r, &mesh, &gl.lighting);
+        assert_same_bytes(&pixels, &bytes, mode.name());
+        // Not a blank image: the teapot covers the center.
+        let clear = embed::CLEAR.map(|c| (c * 255.0).round() as u8);
+        assert_ne!(
+            pixels.pixel(128, 128),
+            Some(clear),
+            "{} mode draws the teapot",
+            mode.name()
+        );
+    }
+    finish(r);
+}
+
+/// Without a color array every vertex takes GL's current color: the same bytes as a color
+/// array holding that color at every vertex, lit through COLOR_MATERIAL in each mode, and
+/// unlit.
+#[test]
+fn without_a_color_array_every_vertex_takes_the_current_color() {
+    let c = Vec4::new(0.3, 0.6, 0.9, 1.0);
+    let mut states = Vec::new();
+    for mode in LightingMode::ALL {
+        let mut gl = embed::gl_state(mode).unwrap();
+        gl.enable(Cap::ColorMaterial).unwrap();
+        gl.color(c).unwrap();
+        states.push(gl.lighting);
+    }
+    let mut unlit = states[0];
+    unlit.lighting = false;
+    states.push(unlit);
+    let frames: Vec<embed::EmbedFrame> = states
+        .iter()
+        .map(|s| embed::EmbedFrame {
+            state: *s,
+            color_array: false,
+        })
+        .collect();
+    let embedded = embed::render_frames(None, true, &frames).expect("renders with validation on");
+    let mut r = renderer();
+    let mut teapot = embed::teapot();
+    for v in &mut teapot.vertices {
+        v.color = c.to_array();
+    }
+    let mesh = r.upload(&teapot).unwrap();
+    for (k, (state, bytes)) in states.iter().zip(&embedded).enumerate() {
+        let pixels = renderer_frame(&mut r, &mesh, state);
+        let what = if state.lighting {
+            state.mode.name()
+        } else {
+            "unlit"
+        };
+        assert_same_bytes(&pixels, bytes, &format!("current_color_{what}_{k}"));
+    }
+    finish(r);
+}
+
+/// 10,000 draws in one frame, each with its own material: one command buffer, the per-draw
+/// state memory growing chunk by chunk, every quad its own color from the CPU reference.
+#[test]
+fn ten_thousand_draws_with_distinct_states_in_one_command_buffer_each_light_as_the_reference_says() {
+    const SIDE: u32 = 100;
+    let mut r = renderer();
+    // One 2x2-pixel quad per draw, in NDC.
+    let cell = 2.0 / SIDE as f32;
+    let mut meshes = Vec::new();
+    for j in 0..SIDE {
+        for i in 0..SIDE {
+            let (x0, y0) = (-1.0 + i as f32 * cell, 1.0 - (j + 1) as f32 * cell);
+            let q = quad(x0, y0, x0 + cell, y0 + cell, 0.0, Vec4::ONE);
+            meshes.push(q);
+        }
+    }
+    let uploaded: Vec<ffvk::Mesh> = meshes.iter().map(|m| r.upload(m).unwrap()).collect();
+    let states: Vec<GlState> = (0..SIDE * SIDE)
+        .map(|k| {
+            let mut gl = lit_state();
+            let d = Vec4::new(
+                (k % 97) as f32 / 96.0,
+                (k % 89) as f32 / 88.0,
+                (k % 83) as f32 / 82.0,
+                1.0,
+            );
+            gl.material(Face::FrontAndBack, MaterialParam::Diffuse(d))
+                .unwrap();
+            gl.lighting_mode(
+                [LightingMode::Vertex, LightingMode::Fragment, LightingMode::Flat][k as usize % 3],
+            );
+            gl
+        })
+        .collect();
+    let mut frame = Frame::new(2 * SIDE, 2 * SIDE);
+    frame.depth_test = false;
+    for (mesh, gl) in uploaded.iter().zip(&states) {
+        frame.draws.push(Draw {
+            mesh,
+            modelview: Mat4::IDENTITY,
+            projection: Mat4::IDENTITY,
+            state: gl.lighting,
+        });
+    }
+    let image = r.render(&frame).unwrap().into_rgba_image();
+    for j in 0..SIDE {
+        for i in 0..SIDE {
+            let gl = &states[(j * SIDE + i) as usize];
+            let lit = ffvk::reference::light(
+                &gl.lighting,
+                DVec4::new(0.0, 0.0, 0.0, 1.0),
+                DVec3::Z,
+                &gl.lighting.front,
+            );
+            assert_pixel(
+                &image,
+                2 * i,
+                2 * j,
+                lit.color(),
+                1.0,
+                &format!("draw {}", j * SIDE + i),
+            );
+        }
+    }
+    finish(r);
+}
+
+#[test]
+fn bad_vertex_layouts_and_draws_are_clear_errors() {
+    use ash::vk;
+    use ffvk::{Attribute, LightingError, VertexInput};
+    let mut input = VertexInput::interleaved();
+    input.normal = Attribute {
+        binding: 3,
+        offset: 0,
+        format: vk::Format::R32G32B32_SFLOAT,
+    };
+    let e = input.validate().unwrap_err().to_string();
+    assert!(
+        e.contains("normal") && e.contains("binding 3") && e.contains("[0]"),
+        "{e}"
+    );
+    let mut input = VertexInput::interleaved();
+    input.color = Some(Attribute {
+        binding: 0,
+        offset: 24,
+        format: vk::Format::R32G32B32A32_UINT,
+    });
+    let e = input.validate().unwrap_err();
+    assert!(
+        matches!(
+            e,
+            ffvk::Error::Lighting(LightingError::AttributeFormat {
+                attribute: "color",
+                ..
+            })
+        ),
+        "{e}"
+    );
+    let mut input = VertexInput::interleaved();
+    input.bindings.push(input.bindings[0]);
+    assert!(input.validate().unwrap_err().to_string().contains("listed twice"));
+}
