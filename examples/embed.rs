@@ -27,7 +27,7 @@ use ffvk::vk::EnabledFeatures;
 use ffvk::{Attribute, Geometry, Lighting, LightingOptions, LitDraw, RasterState, Target, VertexInput};
 use glam::{Mat4, Vec3, Vec4};
 
-/// The images' size.
+/// The size of the images `main` writes.
 pub const SIZE: u32 = 256;
 /// The clear color.
 pub const CLEAR: [f32; 4] = [0.08, 0.08, 0.1, 1.0];
@@ -102,19 +102,20 @@ pub fn render_modes(
             })
         })
         .collect::<Result<Vec<_>, String>>()?;
-    let images = render_frames(device_name, validation, &frames)?;
+    let images = render_frames(device_name, validation, SIZE, &frames)?;
     Ok(LightingMode::ALL.into_iter().zip(images).collect())
 }
 
-/// Renders `frames` on the device whose name contains `device_name` (lavapipe by default);
-/// returns RGBA8 rows, top row first, one image per frame. With `validation`, the Khronos
+/// Renders `frames` at `size`×`size` on the device whose name contains `device_name`
+/// (lavapipe by default); returns RGBA8 rows, top row first, one image per frame. With `validation`, the Khronos
 /// validation layer is on and any message it reports is an error.
 pub fn render_frames(
     device_name: Option<&str>,
     validation: bool,
+    size: u32,
     frames: &[EmbedFrame],
 ) -> Result<Vec<Vec<u8>>, String> {
-    let mut app = App::new(device_name, validation)?;
+    let mut app = App::new(device_name, validation, size)?;
     let result = app.render(frames);
     let messages = app.messages();
     drop(app);
@@ -167,6 +168,8 @@ struct App {
     fence: vk::Fence,
     images: Vec<(vk::Image, vk::ImageView, Allocation)>,
     buffers: Vec<(vk::Buffer, Allocation)>,
+    /// Width and height of the images.
+    size: u32,
 }
 
 unsafe extern "system" fn on_message(
@@ -194,7 +197,7 @@ unsafe extern "system" fn on_message(
 }
 
 impl App {
-    fn new(device_name: Option<&str>, validation: bool) -> Result<Self, String> {
+    fn new(device_name: Option<&str>, validation: bool, size: u32) -> Result<Self, String> {
         // SAFETY: loads the system's Vulkan loader.
         let entry = unsafe { ash::Entry::load() }.map_err(|e| e.to_string())?;
         let layers = [c"VK_LAYER_KHRONOS_validation".as_ptr()];
@@ -304,6 +307,7 @@ impl App {
             fence,
             images: Vec::new(),
             buffers: Vec::new(),
+            size,
         })
     }
 
@@ -371,8 +375,8 @@ impl App {
             .image_type(vk::ImageType::TYPE_2D)
             .format(format)
             .extent(vk::Extent3D {
-                width: SIZE,
-                height: SIZE,
+                width: self.size,
+                height: self.size,
                 depth: 1,
             })
             .mip_levels(1)
@@ -418,7 +422,7 @@ impl App {
             vk::BufferUsageFlags::INDEX_BUFFER,
         )?;
         let readback = self.buffer(
-            &vec![0; (SIZE * SIZE * 4) as usize],
+            &vec![0; (self.size * self.size * 4) as usize],
             vk::BufferUsageFlags::TRANSFER_DST,
         )?;
         let (color, color_view) = self.image(
@@ -586,8 +590,8 @@ impl App {
         let area = vk::Rect2D {
             offset: vk::Offset2D::default(),
             extent: vk::Extent2D {
-                width: SIZE,
-                height: SIZE,
+                width: self.size,
+                height: self.size,
             },
         };
         let rendering = vk::RenderingInfo::default()
@@ -598,8 +602,8 @@ impl App {
         let viewport = vk::Viewport {
             x: 0.0,
             y: 0.0,
-            width: SIZE as f32,
-            height: SIZE as f32,
+            width: self.size as f32,
+            height: self.size as f32,
             min_depth: 0.0,
             max_depth: 1.0,
         };
@@ -647,8 +651,8 @@ impl App {
                 layer_count: 1,
             },
             image_extent: vk::Extent3D {
-                width: SIZE,
-                height: SIZE,
+                width: self.size,
+                height: self.size,
                 depth: 1,
             },
             ..Default::default()
@@ -687,7 +691,7 @@ impl App {
             .find(|(b, _)| *b == readback)
             .map(|(_, m)| m.memory)
             .ok_or("the readback buffer")?;
-        let len = (SIZE * SIZE * 4) as usize;
+        let len = (self.size * self.size * 4) as usize;
         // SAFETY: host-visible, coherent memory the finished copy wrote; mapped only here.
         let pixels = unsafe {
             let ptr = d

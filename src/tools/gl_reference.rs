@@ -14,9 +14,11 @@ use std::sync::Mutex;
 
 use std::time::Instant;
 
-use glam::Mat4;
+use glam::{Mat4, Vec4};
 
-use crate::gl::state::{ColorControl, ColorMaterialMode, Face, Light, LightingMode, LightingState, Material};
+use crate::gl::state::{
+    Cap, ColorControl, ColorMaterialMode, Face, Light, LightingMode, LightingState, Material,
+};
 use crate::mesh::{MeshData, Vertex};
 use crate::tools::{Error, Result};
 
@@ -40,8 +42,42 @@ pub struct GlDraw<'a> {
     pub modelview: Mat4,
     /// GL projection (GL clip space, z in [-w, w]).
     pub projection: Mat4,
-    /// Lighting state; light positions and spot directions are already in eye space.
+    /// Lighting state; light positions and spot directions are already in eye space. Its
+    /// current color is GL's current color when the draw starts (`glColor4fv`, before the
+    /// materials and the `GL_COLOR_MATERIAL` enable).
     pub state: LightingState,
+    /// Whether the mesh's colors are a color array; `false` draws with GL's current color.
+    pub color_array: bool,
+    /// GL calls made after the state is set and before the draw, so that GL's own rules
+    /// (the current color, color-material tracking and write-back) apply to them.
+    pub calls: Vec<GlCall>,
+}
+
+impl<'a> GlDraw<'a> {
+    /// A draw of `mesh` with its color array and no extra calls.
+    pub fn new(mesh: &'a MeshData, modelview: Mat4, projection: Mat4, state: LightingState) -> Self {
+        GlDraw {
+            mesh,
+            modelview,
+            projection,
+            state,
+            color_array: true,
+            calls: Vec::new(),
+        }
+    }
+}
+
+/// A GL call replayed before a draw ([`GlDraw::calls`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum GlCall {
+    /// `glColor4f`.
+    Color(Vec4),
+    /// `glEnable`.
+    Enable(Cap),
+    /// `glDisable`.
+    Disable(Cap),
+    /// `glColorMaterial`.
+    ColorMaterial(Face, ColorMaterialMode),
 }
 
 /// What the OSMesa context reports about itself.
@@ -191,6 +227,7 @@ extern "C" {
     fn glVertexPointer(size: GLint, kind: GLenum, stride: GLsizei, pointer: *const c_void);
     fn glNormalPointer(kind: GLenum, stride: GLsizei, pointer: *const c_void);
     fn glColorPointer(size: GLint, kind: GLenum, stride: GLsizei, pointer: *const c_void);
+    fn glColor4fv(v: *const GLfloat);
     fn glDrawElements(mode: GLenum, count: GLsizei, kind: GLenum, indices: *const c_void);
     fn glPixelStorei(pname: GLenum, param: GLint);
     fn glReadPixels(
@@ -575,6 +612,27 @@ fn render_current(scene: &GlScene) -> GlResult<image::RgbaImage> {
         .ok_or_else(|| "internal error: readback size does not match the image".to_string())
 }
 
+/// Makes one replayed call.
+fn replay(call: GlCall) {
+    let cap_enum = |cap: Cap| match cap {
+        Cap::Lighting => GL_LIGHTING,
+        Cap::Light(i) => GL_LIGHT0 + i as GLenum,
+        Cap::ColorMaterial => GL_COLOR_MATERIAL,
+        Cap::Normalize => GL_NORMALIZE,
+        Cap::RescaleNormal => GL_RESCALE_NORMAL,
+    };
+    match call {
+        // SAFETY: a context is current on this thread; the color has four components.
+        GlCall::Color(c) => unsafe { glColor4fv(c.to_array().as_ptr()) },
+        GlCall::Enable(cap) => set_enabled(cap_enum(cap), true),
+        GlCall::Disable(cap) => set_enabled(cap_enum(cap), false),
+        // SAFETY: a context is current on this thread.
+        GlCall::ColorMaterial(face, mode) => unsafe {
+            glColorMaterial(face_enum(face), color_material_enum(mode))
+        },
+    }
+}
+
 fn face_enum(face: Face) -> GLenum {
     match face {
         Face::Front => GL_FRONT,
@@ -670,8 +728,11 @@ fn draw_one(draw: &GlDraw, max_lights: usize, arrays: Arrays) -> GlResult<()> {
     }
 
     // Materials first, with COLOR_MATERIAL off so no parameter is tracking the color and every
-    // glMaterial call takes effect; then glColorMaterial, then the enable.
+    // glMaterial call takes effect; then glColorMaterial, then the enable (which, in GL, writes
+    // the current color into the tracked parameters).
     set_enabled(GL_COLOR_MATERIAL, false);
+    // SAFETY: a context is current on this thread; the color has four components.
+    unsafe { glColor4fv(state.current_color.to_array().as_ptr()) };
     set_material(GL_FRONT, &state.front);
     set_material(GL_BACK, &state.back);
     let model = &state.model;
@@ -706,6 +767,10 @@ fn draw_one(draw: &GlDraw, max_lights: usize, arrays: Arrays) -> GlResult<()> {
     set_enabled(GL_NORMALIZE, state.normalize);
     set_enabled(GL_RESCALE_NORMAL, state.rescale_normal);
     set_enabled(GL_LIGHTING, state.lighting);
+    for call in &draw.calls {
+        replay(*call);
+    }
+    check_gl_error("from the replayed calls")?;
 
     if count == 0 {
         return Ok(());
@@ -734,7 +799,9 @@ fn draw_one(draw: &GlDraw, max_lights: usize, arrays: Arrays) -> GlResult<()> {
         glLoadMatrixf(draw.modelview.to_cols_array().as_ptr());
         glEnableClientState(GL_VERTEX_ARRAY);
         glEnableClientState(GL_NORMAL_ARRAY);
-        glEnableClientState(GL_COLOR_ARRAY);
+        if draw.color_array {
+            glEnableClientState(GL_COLOR_ARRAY);
+        }
         glVertexPointer(3, GL_FLOAT, stride, field(std::mem::offset_of!(Vertex, position)));
         glNormalPointer(GL_FLOAT, stride, field(std::mem::offset_of!(Vertex, normal)));
         glColorPointer(4, GL_FLOAT, stride, field(std::mem::offset_of!(Vertex, color)));

@@ -343,6 +343,8 @@ fn gl_image(mesh: &MeshData, modelview: Mat4, projection: Mat4, state: LightingS
             modelview,
             projection,
             state,
+            color_array: true,
+            calls: Vec::new(),
         }],
     })
     .unwrap()
@@ -522,4 +524,147 @@ fn flat_mode_matches_mesa_gl() {
 #[test]
 fn fragment_mode_converges_to_mesa_gl_on_dense_meshes() {
     run_mode(LightingMode::Fragment);
+}
+
+/// Compares one ffvk image with GL's within the per-vertex tolerance (2/255 on 99.5% of the
+/// covered pixels away from silhouettes); saves the three images on failure.
+fn check_against_gl(
+    r: &mut Renderer,
+    name: &str,
+    ours: &RgbaImage,
+    theirs: &RgbaImage,
+    mesh: &MeshData,
+    modelview: Mat4,
+    projection: Mat4,
+) -> Result<(), String> {
+    let m = mask(r, mesh, modelview, projection);
+    let s = compare(ours, theirs, &m, 2);
+    let share = s.within as f64 / s.compared.max(1) as f64;
+    if s.compared < 500 || share < 0.995 {
+        let diff = save_triplet(name, ours, theirs, &m);
+        let (x, y, p, q, d) = s.worst;
+        return Err(format!(
+            "{name}: {:.2}% of {} pixels within 2/255 (need 99.5%); worst at ({x}, {y}): ffvk {p:?} GL {q:?} (off by {d}); images in {}",
+            share * 100.0,
+            s.compared,
+            diff.parent().unwrap().display()
+        ));
+    }
+    Ok(())
+}
+
+/// GL's current color against Mesa's GL, in vertex and flat mode, on the embedding example's
+/// teapot: ffvk draws without a color array through `Lighting` on a caller's device; GL gets
+/// the same state and replays the same calls (glEnable, glColor, glDisable) before drawing
+/// without a color array, so Mesa's own tracking and write-back rules decide its image.
+/// - a constant color with COLOR_MATERIAL (AMBIENT_AND_DIFFUSE);
+/// - the write-back: COLOR_MATERIAL on, glColor(c1), off, glColor(c2): the material keeps c1;
+/// - a color array with COLOR_MATERIAL (through the Renderer).
+#[test]
+fn the_current_color_and_its_color_material_write_back_match_mesa_gl() {
+    use crate::embedding::embed;
+    use ffvk::tools::gl_reference::GlCall;
+    let c = rgba(0.2, 0.7, 0.4, 1.0);
+    let (c1, c2) = (rgba(0.9, 0.3, 0.1, 1.0), rgba(0.1, 0.2, 0.9, 1.0));
+    let teapot = embed::teapot();
+    let (view, projection) = (embed::view(), embed::projection());
+    let mut r = renderer();
+    let mut failures = Vec::new();
+    for mode in [LightingMode::Vertex, LightingMode::Flat] {
+        let base = embed::gl_state(mode).unwrap();
+        let mut constant = base.clone();
+        constant.enable(Cap::ColorMaterial).unwrap();
+        constant.color(c).unwrap();
+        let mut written_back = base.clone();
+        written_back.enable(Cap::ColorMaterial).unwrap();
+        written_back.color(c1).unwrap();
+        written_back.disable(Cap::ColorMaterial).unwrap();
+        written_back.color(c2).unwrap();
+        assert_eq!(
+            written_back.lighting.front.diffuse, c1,
+            "the material keeps the tracked color"
+        );
+        assert_eq!(written_back.lighting.current_color, c2);
+        let cases = [
+            (
+                "current_color_constant",
+                constant,
+                vec![GlCall::Enable(Cap::ColorMaterial), GlCall::Color(c)],
+            ),
+            (
+                "current_color_write_back",
+                written_back,
+                vec![
+                    GlCall::Enable(Cap::ColorMaterial),
+                    GlCall::Color(c1),
+                    GlCall::Disable(Cap::ColorMaterial),
+                    GlCall::Color(c2),
+                ],
+            ),
+        ];
+        let frames: Vec<embed::EmbedFrame> = cases
+            .iter()
+            .map(|(_, gl, _)| embed::EmbedFrame {
+                state: gl.lighting,
+                color_array: false,
+            })
+            .collect();
+        let ours = embed::render_frames(None, true, SIZE, &frames).unwrap();
+        for ((name, _, calls), bytes) in cases.iter().zip(ours) {
+            let ours = RgbaImage::from_raw(SIZE, SIZE, bytes).unwrap();
+            let mut draw = GlDraw::new(&teapot, view, projection, base.lighting);
+            draw.color_array = false;
+            draw.calls = calls.clone();
+            let theirs = render_gl(&GlScene {
+                width: SIZE,
+                height: SIZE,
+                clear_color: embed::CLEAR,
+                depth_test: true,
+                draws: vec![draw],
+            })
+            .unwrap();
+            let name = format!("{name}_{}", mode.name());
+            if let Err(e) = check_against_gl(&mut r, &name, &ours, &theirs, &teapot, view, projection) {
+                failures.push(e);
+            }
+        }
+        // A color array with COLOR_MATERIAL: each vertex its own color.
+        let colored_teapot = colored(teapot.clone());
+        let mut array = base.clone();
+        array.enable(Cap::ColorMaterial).unwrap();
+        let mut frame_state = array.lighting;
+        frame_state.mode = mode;
+        let ours = {
+            let gpu = r.upload(&colored_teapot).unwrap();
+            let mut frame = Frame::new(SIZE, SIZE);
+            frame.clear_color = Vec4::from_array(embed::CLEAR);
+            frame.draws.push(Draw {
+                mesh: &gpu,
+                modelview: view,
+                projection,
+                state: frame_state,
+            });
+            r.render(&frame).unwrap().into_rgba_image()
+        };
+        let mut draw = GlDraw::new(&colored_teapot, view, projection, base.lighting);
+        draw.calls = vec![GlCall::Enable(Cap::ColorMaterial)];
+        let theirs = render_gl(&GlScene {
+            width: SIZE,
+            height: SIZE,
+            clear_color: embed::CLEAR,
+            depth_test: true,
+            draws: vec![draw],
+        })
+        .unwrap();
+        let name = format!("color_array_color_material_{}", mode.name());
+        if let Err(e) = check_against_gl(&mut r, &name, &ours, &theirs, &colored_teapot, view, projection) {
+            failures.push(e);
+        }
+    }
+    finish(r);
+    assert!(
+        failures.is_empty(),
+        "differ from Mesa's GL:\n{}",
+        failures.join("\n")
+    );
 }

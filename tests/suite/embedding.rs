@@ -3,7 +3,7 @@
 
 #[path = "../../examples/embed.rs"]
 #[allow(dead_code)]
-mod embed;
+pub(crate) mod embed;
 
 use ffvk::gl::state::{Cap, Face, GlState, LightingMode, MaterialParam};
 use ffvk::{Draw, Frame};
@@ -100,7 +100,8 @@ fn without_a_color_array_every_vertex_takes_the_current_color() {
             color_array: false,
         })
         .collect();
-    let embedded = embed::render_frames(None, true, &frames).expect("renders with validation on");
+    let embedded =
+        embed::render_frames(None, true, embed::SIZE, &frames).expect("renders with validation on");
     let mut r = renderer();
     let mut teapot = embed::teapot();
     for v in &mut teapot.vertices {

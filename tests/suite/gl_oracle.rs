@@ -31,6 +31,8 @@ fn scene<'a>(mesh: &'a MeshData, state: LightingState) -> GlScene<'a> {
             modelview: Mat4::IDENTITY,
             projection: Mat4::IDENTITY,
             state,
+            color_array: true,
+            calls: Vec::new(),
         }],
     }
 }

@@ -1051,6 +1051,8 @@ impl GlAnchor {
                 modelview,
                 projection,
                 state: point_state(point)?,
+                color_array: true,
+                calls: Vec::new(),
             }],
         };
         let timing = time_frames(&scene, config.warmup, config.frames)?;
