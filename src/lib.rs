@@ -7,6 +7,18 @@
 //! It depends on ash, glam, bytemuck and thiserror only, never prints, reads arguments or sets
 //! environment variables.
 //!
+//! # Two ways in
+//!
+//! - [`Renderer`] opens its own device and draws [`Frame`]s offscreen into images: what the
+//!   tools, the tests and regression renders use.
+//! - [`Lighting`] records GL's lighting into a caller's own device, command buffers and
+//!   render targets ([`vk::Device::from_caller`]); see its module, [`draw::lighting`], for
+//!   what it owns and records, and `examples/embed.rs` (in the repository) for a complete
+//!   program with plain `ash`. [`Renderer`] is built on it.
+//!
+//! Renderers that build their own pipelines take the pieces: the SPIR-V ([`gpu::shaders`]),
+//! the uniform block's layout and the specialization constants ([`gpu::layout`]).
+//!
 //! Features add the rest: `images` (PNG files and image comparison), `scene` (TOML scene files
 //! and glTF), `tools` (what the `ffvk` command runs: bench, demo, explain, regression runs;
 //! on by default) and `osmesa` (Mesa's GL as a reference renderer).

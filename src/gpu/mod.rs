@@ -1,5 +1,24 @@
 //! What the GPU sees of the GL state: the std140 layout of the per-draw uniform block, the
 //! specialization constants, and the SPIR-V of every shader variant.
+//!
+//! This is the lower tier of the embedding API, for renderers that build their own pipelines
+//! from ffvk's shaders. **It may change before 1.0**: texturing and the other lighting models
+//! will extend the block and the variants.
+//!
+//! The interface of every variant in [`shaders::VARIANTS`]:
+//! - entry point `main` in both stages;
+//! - vertex inputs: location 0 position (`vec3`), 1 normal (`vec3`), 2 color (`vec4`; absent
+//!   in the `*_current_color` variants, which read [`layout::DrawBlock::current_color`]);
+//! - one uniform block, [`layout::DrawBlock`], at descriptor set 0, binding 0, read by both
+//!   stages ([`crate::draw::pipeline::set_descriptor_set`] rewrites the set of a module);
+//!   ffvk binds it as `UNIFORM_BUFFER_DYNAMIC`, a plain `UNIFORM_BUFFER` works the same;
+//! - no push constants;
+//! - the specialization constants of [`layout::SpecConstant`] (`int`, constant_id 0-7, -1 =
+//!   read the uniform); [`layout::SpecKey::for_state`] gives a state's values;
+//! - the `flat` variants need the last-vertex provoking convention
+//!   (`VK_EXT_provoking_vertex`), as GL's flat shading takes each triangle's last vertex;
+//! - the projection in the block is GL's premultiplied by [`layout::VK_FROM_GL_CLIP`], which
+//!   flips y, so GL's counter-clockwise front faces are Vulkan's `COUNTER_CLOCKWISE`.
 
 pub mod layout;
 pub mod shaders;
