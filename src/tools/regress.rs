@@ -207,3 +207,50 @@ pub fn table(rows: &[Row]) -> String {
     let _ = write!(out, "{} image(s), {} failed", rows.len(), failed);
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn comparison(max_diff: [u8; 4], share_over: f64, flip_mean: f32) -> Comparison {
+        Comparison {
+            width: 128,
+            height: 128,
+            max_diff,
+            over: (share_over * 128.0 * 128.0) as usize,
+            share_over,
+            flip_mean,
+            worst: None,
+            threshold: 1,
+        }
+    }
+
+    #[test]
+    fn the_summary_table() {
+        let row = |name: &str, status, comparison| Row {
+            name: name.into(),
+            status,
+            comparison,
+            output: PathBuf::from(format!("out/{name}.png")),
+            diff: None,
+        };
+        let same = comparison([0; 4], 0.0, 0.0);
+        let different = comparison([255, 12, 3, 0], 0.0123, 0.04567);
+        let rows = [
+            row("a", Status::Rendered, None),
+            row("spot_light_vertex", Status::Pass, Some(same)),
+            row("b", Status::Fail, Some(different)),
+            row("missing_one", Status::Missing, None),
+            row("new", Status::Blessed, None),
+        ];
+        let expected = "\
+scene              status       max diff RGBA     over %       FLIP\n\
+a                  rendered                 -          -          -\n\
+spot_light_vertex  ok            [0, 0, 0, 0]     0.0000    0.00000\n\
+b                  FAILED     [255, 12, 3, 0]     1.2300    0.04567\n\
+missing_one        MISSING                  -          -          -\n\
+new                blessed                  -          -          -\n\
+5 image(s), 2 failed";
+        assert_eq!(table(&rows), expected);
+    }
+}

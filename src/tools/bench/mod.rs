@@ -2056,3 +2056,164 @@ mod plots {
         Ok(written)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Made-up times that grow with vertices, pixels and lights, the uber-shader and GL slower;
+    /// vertex and fragment mode cross in the density and the size sweep.
+    fn fake_time(p: &Point) -> f64 {
+        let lights = 1.0 + p.lights as f64;
+        let (per_vertex, per_pixel) = match p.mode {
+            BenchMode::Vertex => (4e-3 * lights, 2e-4),
+            BenchMode::Fragment => (1e-4, 1e-3 * lights),
+            BenchMode::Flat => (3e-4 * lights, 2e-4),
+            BenchMode::Unlit => (1e-4, 2e-4),
+        };
+        let kind = match p.light_kind {
+            LightKind::Directional => 1.0,
+            LightKind::Point => 1.05,
+            LightKind::Spot => 1.1,
+        };
+        let viewer = if p.local_viewer { 1.02 } else { 1.0 };
+        let t = (0.05 + per_vertex * p.vertices as f64 + per_pixel * p.pixels as f64) * kind * viewer;
+        match p.variant {
+            Variant::Specialized => t,
+            Variant::Uber => t * 1.25,
+            Variant::FixedFunction => t * 1.5,
+        }
+    }
+
+    /// A report of the tiny sweep with [`fake_time`]s: no device needed.
+    pub(crate) fn synthetic_report() -> BenchReport {
+        let sweep = SweepConfig::tiny();
+        let env = BenchEnv {
+            lp_num_threads: "2".into(),
+            device: "llvmpipe (LLVM 15.0.6, 256 bits)".into(),
+            driver: "llvmpipe".into(),
+            driver_info: "Mesa 22.3.6 (LLVM 15.0.6)".into(),
+            mesa_version: "22.3.6".into(),
+            vulkan_api: "1.3.230".into(),
+            gl_renderer: Some("llvmpipe (LLVM 15.0.6, 256 bits)".into()),
+            gl_version: Some("2.1 Mesa 22.3.6".into()),
+            cpu: "Some CPU".into(),
+            cpus: 2,
+            ffvk_version: "0.1.0".into(),
+            optimized_build: true,
+            validation: false,
+            load_before: Some(0.5),
+            load_after: None,
+        };
+        let results: Vec<BenchResult> = points(&sweep)
+            .into_iter()
+            .map(|point| {
+                let t = fake_time(&point);
+                let spread = Spread {
+                    median: t,
+                    min: t * 0.9,
+                    p25: t * 0.95,
+                    p75: t * 1.05,
+                    max: t * 1.2,
+                };
+                let ffvk = point.engine == Engine::Ffvk;
+                BenchResult {
+                    stats: PointStats {
+                        warmup: sweep.warmup,
+                        frames: sweep.frames,
+                        first_frame_ms: 10.0 * t,
+                        gpu_ms: ffvk.then_some(spread),
+                        wall_ms: Spread {
+                            median: t * 1.1,
+                            ..spread
+                        },
+                        time_ms: t,
+                        vs_invocations: ffvk.then_some(point.vertices),
+                        fs_invocations: ffvk.then_some(point.pixels / 2),
+                        clipping_primitives: ffvk.then_some(point.triangles),
+                    },
+                    point,
+                    lp_num_threads: env.lp_num_threads.clone(),
+                    device: env.device.clone(),
+                    driver_info: env.driver_info.clone(),
+                    mesa_version: env.mesa_version.clone(),
+                }
+            })
+            .collect();
+        let summary = summarize(&results);
+        BenchReport {
+            env,
+            sweep,
+            results,
+            summary,
+            notes: vec!["a note".into()],
+        }
+    }
+
+    /// summary.md of [`synthetic_report`], to the character.
+    const SYNTHETIC_SUMMARY: &str = r#"### Environment
+
+| | |
+| --- | --- |
+| device | llvmpipe (LLVM 15.0.6, 256 bits) (llvmpipe) |
+| driver | Mesa 22.3.6 (LLVM 15.0.6) — Mesa 22.3.6 |
+| GL anchor | llvmpipe (LLVM 15.0.6, 256 bits), GL 2.1 Mesa 22.3.6 (OSMesa) |
+| LP_NUM_THREADS | 2 |
+| heap | glibc defaults (freed memory trimmed) |
+| CPU | Some CPU (2 CPUs) |
+| load average (1 min) | 0.50 before, ? after |
+| sweep | tiny — 1 warm-up + 2 measured frames per point; image 24² but in the size sweep; 66 vertices in the size sweep, 91 in the light sweeps |
+| build | ffvk 0.1.0, optimized |
+| note | a note |
+
+Times are per frame in ms: the median, then the interquartile range; ffvk's from timestamps around the rendering pass, GL's from the host clock around the draw and glFinish.
+
+### Time against vertex count (24² image, 1 directional light)
+
+| vertices | triangles | vertex | fragment | flat | unlit | VS invocations (vertex) | GL smooth | GL flat | GL unlit | ffvk vertex ÷ GL |
+| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |
+| 45 | 48 | 0.53 (0.50–0.55) | 1.21 (1.15–1.27) | 0.19 (0.18–0.20) | 0.17 (0.16–0.18) | 45 | 0.79 (0.75–0.83) | 0.29 (0.27–0.30) | 0.25 (0.24–0.27) | 0.67 |
+| 153 | 224 | 1.39 (1.32–1.46) | 1.22 (1.16–1.28) | 0.26 (0.24–0.27) | 0.18 (0.17–0.19) | 153 | 2.08 (1.98–2.19) | 0.39 (0.37–0.40) | 0.27 (0.26–0.28) | 0.67 |
+
+### Time against pixel count (66 vertices, 1 directional light)
+
+| image | pixels | vertex | fragment | flat | unlit | FS invocations (fragment) |
+| ---: | ---: | ---: | ---: | ---: | ---: | ---: |
+| 16² | 256 | 0.63 (0.60–0.66) | 0.57 (0.54–0.60) | 0.14 (0.13–0.15) | 0.11 (0.10–0.11) | 128 |
+| 32² | 1.0 k | 0.78 (0.74–0.82) | 2.10 (2.00–2.21) | 0.29 (0.28–0.31) | 0.26 (0.25–0.27) | 512 |
+
+### Light count: specialized pipelines against the uber-shader (91 vertices, 24², directional lights)
+
+| lights | vertex specialized | vertex uber | uber ÷ spec. | fragment specialized | fragment uber | uber ÷ spec. | GL smooth | ffvk vertex ÷ GL |
+| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |
+| 1 | 0.89 (0.85–0.94) | 1.12 (1.06–1.17) | 1.25 | 1.21 (1.15–1.27) | 1.51 (1.44–1.59) | 1.25 | 1.34 (1.27–1.41) | 0.67 |
+| 2 | 1.26 (1.19–1.32) | 1.57 (1.49–1.65) | 1.25 | 1.79 (1.70–1.88) | 2.23 (2.12–2.35) | 1.25 | 1.89 (1.79–1.98) | 0.67 |
+
+### Light kind (2 lights of one kind, 91 vertices, 24²)
+
+| lights | viewer | vertex specialized | vertex uber | fragment specialized | fragment uber | GL smooth | ffvk vertex ÷ GL |
+| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |
+| directional | infinite | 1.26 (1.19–1.32) | 1.57 (1.49–1.65) | 1.79 (1.70–1.88) | 2.23 (2.12–2.35) | 1.89 (1.79–1.98) | 0.67 |
+| directional | local | 1.28 (1.22–1.35) | 1.60 (1.52–1.68) | 1.82 (1.73–1.91) | 2.28 (2.16–2.39) | 1.92 (1.83–2.02) | 0.67 |
+| spot | infinite | 1.38 (1.31–1.45) | 1.73 (1.64–1.82) | 1.97 (1.87–2.06) | 2.46 (2.33–2.58) | 2.07 (1.97–2.18) | 0.67 |
+| spot | local | 1.41 (1.34–1.48) | 1.76 (1.68–1.85) | 2.01 (1.90–2.11) | 2.51 (2.38–2.63) | 2.12 (2.01–2.22) | 0.67 |
+
+### Summary
+
+- vertex and fragment mode cost the same at about 129 vertices (24² image)
+- with 66 vertices they cost the same at about 291 pixels (17²)
+- fragment mode: the uber-shader takes 1.25× the time of specialized pipelines (geometric mean)
+- vertex mode: the uber-shader takes 1.25× the time of specialized pipelines (geometric mean)
+- ffvk's default: Specialize::auto (specialized pipelines)
+- ffvk vertex mode ÷ Mesa's fixed-function GL (host time per frame, geometric mean over 10 scenes): 0.67
+"#;
+
+    #[test]
+    fn markdown_of_a_synthetic_report() {
+        let m = markdown(&synthetic_report());
+        for (line, (actual, expected)) in m.lines().zip(SYNTHETIC_SUMMARY.lines()).enumerate() {
+            assert_eq!(actual, expected, "line {}", line + 1);
+        }
+        assert_eq!(m, SYNTHETIC_SUMMARY);
+    }
+}
