@@ -1,13 +1,13 @@
 //! Regression runs: render many scenes with one device, check each image against a directory
 //! of references, bless new or changed references on request, and summarize in a table.
 
-use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use crate::gl::state::LightingMode;
 use crate::images::compare::{compare, heat_map, load_image, Comparison, Tolerance};
 use crate::images::save_png;
 use crate::scene::{render_scene, Scene};
+use crate::tools::table::{Align, Table};
 use crate::tools::{Error, Result};
 use crate::Renderer;
 
@@ -174,13 +174,16 @@ pub fn run(renderer: &mut Renderer, job: &Job, log: &mut dyn FnMut(&str)) -> Res
     Ok(rows)
 }
 
-/// The summary table: scene, status, max difference, share over the threshold, FLIP mean.
+/// The summary table: scene, status, max difference, share over the threshold, FLIP mean;
+/// then the count of images and of failures.
 pub fn table(rows: &[Row]) -> String {
-    let width = rows.iter().map(|r| r.name.len()).max().unwrap_or(5).max(5);
-    let mut out = format!(
-        "{:<width$}  {:<8}  {:>16}  {:>9}  {:>9}\n",
-        "scene", "status", "max diff RGBA", "over %", "FLIP"
-    );
+    let mut t = Table::new([
+        ("scene", Align::Left),
+        ("status", Align::Left),
+        ("max diff RGBA", Align::Right),
+        ("over %", Align::Right),
+        ("FLIP", Align::Right),
+    ]);
     for r in rows {
         let status = match r.status {
             Status::Rendered => "rendered",
@@ -197,15 +200,10 @@ pub fn table(rows: &[Row]) -> String {
             ),
             None => ("-".into(), "-".into(), "-".into()),
         };
-        let _ = writeln!(
-            out,
-            "{:<width$}  {status:<8}  {diff:>16}  {over:>9}  {flip:>9}",
-            r.name
-        );
+        t.row([r.name.clone(), status.into(), diff, over, flip]);
     }
     let failed = rows.iter().filter(|r| r.status.failed()).count();
-    let _ = write!(out, "{} image(s), {} failed", rows.len(), failed);
-    out
+    format!("{}{} image(s), {} failed", t.text(), rows.len(), failed)
 }
 
 #[cfg(test)]
@@ -244,12 +242,12 @@ mod tests {
             row("new", Status::Blessed, None),
         ];
         let expected = "\
-scene              status       max diff RGBA     over %       FLIP\n\
-a                  rendered                 -          -          -\n\
-spot_light_vertex  ok            [0, 0, 0, 0]     0.0000    0.00000\n\
-b                  FAILED     [255, 12, 3, 0]     1.2300    0.04567\n\
-missing_one        MISSING                  -          -          -\n\
-new                blessed                  -          -          -\n\
+scene              status      max diff RGBA  over %     FLIP\n\
+a                  rendered                -       -        -\n\
+spot_light_vertex  ok           [0, 0, 0, 0]  0.0000  0.00000\n\
+b                  FAILED    [255, 12, 3, 0]  1.2300  0.04567\n\
+missing_one        MISSING                 -       -        -\n\
+new                blessed                 -       -        -\n\
 5 image(s), 2 failed";
         assert_eq!(table(&rows), expected);
     }
