@@ -10,7 +10,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::measure::{is, series};
 use super::report::{count, lights_text};
-use super::sweep::{sphere_counts, BenchMode, Engine, Group, Point, Variant};
+use super::sweep::{sphere_counts, BenchMode, Engine, Group, Point, Variant, GL_MODES};
 use super::{BenchReport, BenchResult};
 use crate::tools::{Error, Result};
 
@@ -88,7 +88,7 @@ fn mode_lines(res: &[BenchResult], group: Group, x: fn(&Point) -> f64) -> Vec<Li
         let ser = series(res, is(group, Engine::Ffvk, mode, Variant::Specialized), x);
         lines.extend(line(format!("ffvk {}", mode.name()), color(mode), false, &ser));
     }
-    for mode in [BenchMode::Vertex, BenchMode::Flat, BenchMode::Unlit] {
+    for mode in GL_MODES {
         let ser = series(res, is(group, Engine::Gl, mode, Variant::FixedFunction), x);
         let name = if mode == BenchMode::Vertex {
             "smooth"

@@ -7,8 +7,9 @@ use std::path::{Path, PathBuf};
 use serde::Serialize;
 
 use super::measure::Spread;
-use super::sweep::{sphere_counts, BenchMode, Engine, Group, Point, Variant};
+use super::sweep::{sphere_counts, BenchMode, Engine, Group, Point, Variant, GL_MODES};
 use super::{BenchReport, BenchResult};
+use crate::tools::table::{Align, Table};
 use crate::tools::{Error, Result};
 
 fn write_file(path: &Path, bytes: &[u8]) -> Result<()> {
@@ -192,254 +193,66 @@ pub(super) fn count(n: f64) -> String {
     }
 }
 
+/// "–" for nothing, else the ratio to two decimals.
+fn ratio(r: Option<f64>) -> String {
+    r.map_or("–".into(), |r| format!("{r:.2}"))
+}
+
+/// "–" for nothing, else the count.
+fn count_or_dash(n: Option<u64>) -> String {
+    n.map_or("–".into(), |n| count(n as f64))
+}
+
 /// The tables of a run, as Markdown (written to summary.md and quoted in BENCHMARKS.md).
 pub fn markdown(report: &BenchReport) -> String {
-    let mut m = String::new();
-    let e = &report.env;
     let c = &report.sweep;
-    let res = &report.results;
-    let spec = Variant::Specialized;
-    let _ = writeln!(m, "### Environment\n");
-    let _ = writeln!(m, "| | |\n| --- | --- |");
-    let _ = writeln!(m, "| device | {} ({}) |", e.device, e.driver);
-    let _ = writeln!(m, "| driver | {} — Mesa {} |", e.driver_info, e.mesa_version);
-    if let (Some(r), Some(v)) = (&e.gl_renderer, &e.gl_version) {
-        let _ = writeln!(m, "| GL anchor | {r}, GL {v} (OSMesa) |");
-    }
-    let _ = writeln!(m, "| LP_NUM_THREADS | {} |", e.lp_num_threads);
-    let _ = writeln!(
-        m,
-        "| heap | {} |",
-        if c.malloc_no_trim {
-            "freed memory kept (--malloc-no-trim: glibc M_TRIM_THRESHOLD = max, M_TOP_PAD = 256 MiB)"
-        } else {
-            "glibc defaults (freed memory trimmed)"
-        }
-    );
-    let _ = writeln!(m, "| CPU | {} ({} CPUs) |", e.cpu, e.cpus);
-    let load = |l: Option<f64>| l.map_or("?".into(), |l| format!("{l:.2}"));
-    let _ = writeln!(
-        m,
-        "| load average (1 min) | {} before, {} after |",
-        load(e.load_before),
-        load(e.load_after)
-    );
-    let _ = writeln!(
-        m,
-        "| sweep | {} — {} warm-up + {} measured frames per point; image {}² but in the size sweep; {} vertices in the size sweep, {} in the light sweeps |",
-        c.name,
-        c.warmup,
-        c.frames,
-        c.base_size,
-        sphere_counts(c.size_stacks).0,
-        sphere_counts(c.base_stacks).0
-    );
-    let _ = writeln!(
-        m,
-        "| build | ffvk {}, {}{} |",
-        e.ffvk_version,
-        if e.optimized_build {
-            "optimized"
-        } else {
-            "debug (numbers not representative)"
-        },
-        if e.validation { ", validation layer on" } else { "" }
-    );
-    for n in &report.notes {
-        let _ = writeln!(m, "| note | {n} |");
-    }
-
-    let _ = writeln!(
-        m,
-        "\nTimes are per frame in ms: the median, then the interquartile range; ffvk's from \
+    let has_gl = report.results.iter().any(|r| r.point.engine == Engine::Gl);
+    let mut m = format!("### Environment\n\n{}\n", environment(report).markdown());
+    m.push_str(
+        "Times are per frame in ms: the median, then the interquartile range; ffvk's from \
          timestamps around the rendering pass, GL's from the host clock around the draw and \
-         glFinish.\n"
+         glFinish.\n",
     );
-
-    // Density.
-    let has_gl = res.iter().any(|r| r.point.engine == Engine::Gl);
-    let _ = writeln!(
-        m,
-        "### Time against vertex count ({}² image, {})\n",
-        c.base_size,
-        lights_text(c.base_lights)
-    );
-    let mut header =
-        String::from("| vertices | triangles | vertex | fragment | flat | unlit | VS invocations (vertex) |");
-    let mut rule = String::from("| ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
-    if has_gl {
-        header.push_str(" GL smooth | GL flat | GL unlit | ffvk vertex ÷ GL |");
-        rule.push_str(" ---: | ---: | ---: | ---: |");
-    }
-    let _ = writeln!(m, "{header}\n{rule}");
-    for &stacks in &c.stacks {
-        let at = |engine, mode, variant| {
-            find(res, |p| {
-                p.group == Group::Density
-                    && p.stacks == stacks
-                    && p.engine == engine
-                    && p.mode == mode
-                    && p.variant == variant
-            })
-        };
-        let (v, t) = sphere_counts(stacks);
-        let mut row = format!("| {} | {} |", count(v as f64), count(t as f64));
-        for mode in BenchMode::ALL {
-            let _ = write!(row, " {} |", cell(at(Engine::Ffvk, mode, spec)));
-        }
-        let vs = at(Engine::Ffvk, BenchMode::Vertex, spec)
-            .and_then(|r| r.stats.vs_invocations)
-            .map_or("–".into(), |n| count(n as f64));
-        let _ = write!(row, " {vs} |");
-        if has_gl {
-            for mode in [BenchMode::Vertex, BenchMode::Flat, BenchMode::Unlit] {
-                let _ = write!(row, " {} |", cell(at(Engine::Gl, mode, Variant::FixedFunction)));
-            }
-            let ratio = report
-                .summary
-                .gl_ratios
-                .iter()
-                .find(|r| r.group == Group::Density && r.mode == BenchMode::Vertex && r.vertices == v)
-                .map_or("–".into(), |r| format!("{:.2}", r.ratio));
-            let _ = write!(row, " {ratio} |");
-        }
-        let _ = writeln!(m, "{row}");
+    let sections = [
+        (
+            format!(
+                "Time against vertex count ({}² image, {})",
+                c.base_size,
+                lights_text(c.base_lights)
+            ),
+            density_table(report, has_gl),
+        ),
+        (
+            format!(
+                "Time against pixel count ({} vertices, {})",
+                sphere_counts(c.size_stacks).0,
+                lights_text(c.base_lights)
+            ),
+            size_table(report),
+        ),
+        (
+            format!(
+                "Light count: specialized pipelines against the uber-shader ({} vertices, {}², \
+                 directional lights)",
+                sphere_counts(c.base_stacks).0,
+                c.base_size
+            ),
+            light_count_table(report, has_gl),
+        ),
+        (
+            format!(
+                "Light kind ({} lights of one kind, {} vertices, {}²)",
+                c.kind_lights,
+                sphere_counts(c.base_stacks).0,
+                c.base_size
+            ),
+            light_kind_table(report, has_gl),
+        ),
+    ];
+    for (title, table) in sections {
+        let _ = write!(m, "\n### {title}\n\n{}", table.markdown());
     }
 
-    // Size.
-    let _ = writeln!(
-        m,
-        "\n### Time against pixel count ({} vertices, {})\n",
-        sphere_counts(c.size_stacks).0,
-        lights_text(c.base_lights)
-    );
-    let _ = writeln!(
-        m,
-        "| image | pixels | vertex | fragment | flat | unlit | FS invocations (fragment) |\n| ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
-    );
-    for &size in &c.sizes {
-        let at = |mode| {
-            find(res, |p| {
-                p.group == Group::Size
-                    && p.width == size
-                    && p.engine == Engine::Ffvk
-                    && p.mode == mode
-                    && p.variant == spec
-            })
-        };
-        let mut row = format!("| {size}² | {} |", count(size as f64 * size as f64));
-        for mode in BenchMode::ALL {
-            let _ = write!(row, " {} |", cell(at(mode)));
-        }
-        let fs = at(BenchMode::Fragment)
-            .and_then(|r| r.stats.fs_invocations)
-            .map_or("–".into(), |n| count(n as f64));
-        let _ = writeln!(m, "{row} {fs} |");
-    }
-
-    // Lights.
-    let _ = writeln!(
-        m,
-        "\n### Light count: specialized pipelines against the uber-shader ({} vertices, {}², directional lights)\n",
-        sphere_counts(c.base_stacks).0,
-        c.base_size
-    );
-    let mut header =
-        String::from("| lights | vertex specialized | vertex uber | uber ÷ spec. | fragment specialized | fragment uber | uber ÷ spec. |");
-    let mut rule = String::from("| ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
-    if has_gl {
-        header.push_str(" GL smooth | ffvk vertex ÷ GL |");
-        rule.push_str(" ---: | ---: |");
-    }
-    let _ = writeln!(m, "{header}\n{rule}");
-    for &lights in &c.light_counts {
-        let at = |engine, mode, variant| {
-            find(res, |p| {
-                p.group == Group::Lights
-                    && p.lights == lights
-                    && p.engine == engine
-                    && p.mode == mode
-                    && p.variant == variant
-            })
-        };
-        let mut row = format!("| {lights} |");
-        for mode in [BenchMode::Vertex, BenchMode::Fragment] {
-            let (s, u) = (
-                at(Engine::Ffvk, mode, spec),
-                at(Engine::Ffvk, mode, Variant::Uber),
-            );
-            let ratio = match (s, u) {
-                (Some(s), Some(u)) => format!("{:.2}", u.stats.time_ms / s.stats.time_ms),
-                _ => "–".into(),
-            };
-            let _ = write!(row, " {} | {} | {ratio} |", cell(s), cell(u));
-        }
-        if has_gl {
-            let g = at(Engine::Gl, BenchMode::Vertex, Variant::FixedFunction);
-            let ratio = report
-                .summary
-                .gl_ratios
-                .iter()
-                .find(|r| r.group == Group::Lights && r.lights == lights)
-                .map_or("–".into(), |r| format!("{:.2}", r.ratio));
-            let _ = write!(row, " {} | {ratio} |", cell(g));
-        }
-        let _ = writeln!(m, "{row}");
-    }
-
-    // Kinds.
-    let _ = writeln!(
-        m,
-        "\n### Light kind ({} lights of one kind, {} vertices, {}²)\n",
-        c.kind_lights,
-        sphere_counts(c.base_stacks).0,
-        c.base_size
-    );
-    let mut header = String::from(
-        "| lights | viewer | vertex specialized | vertex uber | fragment specialized | fragment uber |",
-    );
-    let mut rule = String::from("| --- | --- | ---: | ---: | ---: | ---: |");
-    if has_gl {
-        header.push_str(" GL smooth | ffvk vertex ÷ GL |");
-        rule.push_str(" ---: | ---: |");
-    }
-    let _ = writeln!(m, "{header}\n{rule}");
-    for &kind in &c.kinds {
-        for local in [false, true] {
-            let at = |engine, mode, variant| {
-                find(res, |p| {
-                    p.group == Group::Kind
-                        && p.light_kind == kind
-                        && p.local_viewer == local
-                        && p.engine == engine
-                        && p.mode == mode
-                        && p.variant == variant
-                })
-            };
-            let mut row = format!(
-                "| {} | {} |",
-                kind.name(),
-                if local { "local" } else { "infinite" }
-            );
-            for mode in [BenchMode::Vertex, BenchMode::Fragment] {
-                for variant in [spec, Variant::Uber] {
-                    let _ = write!(row, " {} |", cell(at(Engine::Ffvk, mode, variant)));
-                }
-            }
-            if has_gl {
-                let g = at(Engine::Gl, BenchMode::Vertex, Variant::FixedFunction);
-                let f = at(Engine::Ffvk, BenchMode::Vertex, spec);
-                let ratio = match (f, g) {
-                    (Some(f), Some(g)) => format!("{:.2}", f.stats.wall_ms.median / g.stats.wall_ms.median),
-                    _ => "–".into(),
-                };
-                let _ = write!(row, " {} | {ratio} |", cell(g));
-            }
-            let _ = writeln!(m, "{row}");
-        }
-    }
-
-    // Summary.
     let s = &report.summary;
     let _ = writeln!(m, "\n### Summary\n");
     let _ = writeln!(
@@ -478,6 +291,243 @@ pub fn markdown(report: &BenchReport) -> String {
         );
     }
     m
+}
+
+/// The machine, the drivers, the sweep and the build: one row each, then the notes.
+fn environment(report: &BenchReport) -> Table {
+    let e = &report.env;
+    let c = &report.sweep;
+    let mut rows = vec![
+        ("device", format!("{} ({})", e.device, e.driver)),
+        ("driver", format!("{} — Mesa {}", e.driver_info, e.mesa_version)),
+    ];
+    if let (Some(r), Some(v)) = (&e.gl_renderer, &e.gl_version) {
+        rows.push(("GL anchor", format!("{r}, GL {v} (OSMesa)")));
+    }
+    let heap = if c.malloc_no_trim {
+        "freed memory kept (--malloc-no-trim: glibc M_TRIM_THRESHOLD = max, M_TOP_PAD = 256 MiB)"
+    } else {
+        "glibc defaults (freed memory trimmed)"
+    };
+    let load = |l: Option<f64>| l.map_or("?".into(), |l| format!("{l:.2}"));
+    let build = if e.optimized_build {
+        "optimized"
+    } else {
+        "debug (numbers not representative)"
+    };
+    rows.extend([
+        ("LP_NUM_THREADS", e.lp_num_threads.clone()),
+        ("heap", heap.into()),
+        ("CPU", format!("{} ({} CPUs)", e.cpu, e.cpus)),
+        (
+            "load average (1 min)",
+            format!("{} before, {} after", load(e.load_before), load(e.load_after)),
+        ),
+        (
+            "sweep",
+            format!(
+                "{} — {} warm-up + {} measured frames per point; image {}² but in the size sweep; \
+                 {} vertices in the size sweep, {} in the light sweeps",
+                c.name,
+                c.warmup,
+                c.frames,
+                c.base_size,
+                sphere_counts(c.size_stacks).0,
+                sphere_counts(c.base_stacks).0
+            ),
+        ),
+        (
+            "build",
+            format!(
+                "ffvk {}, {build}{}",
+                e.ffvk_version,
+                if e.validation { ", validation layer on" } else { "" }
+            ),
+        ),
+    ]);
+    rows.extend(report.notes.iter().map(|n| ("note", n.clone())));
+
+    let mut t = Table::new([("", Align::Left), ("", Align::Left)]);
+    for (key, value) in rows {
+        t.row([key.to_string(), value]);
+    }
+    t
+}
+
+/// Time against vertex count: ffvk's modes and vertex-shader invocations, then GL's modes and
+/// the ratio of ffvk's vertex mode to GL's.
+fn density_table(report: &BenchReport, has_gl: bool) -> Table {
+    let spec = Variant::Specialized;
+    let mut t = Table::new(
+        ["vertices", "triangles"]
+            .into_iter()
+            .chain(BenchMode::ALL.map(BenchMode::name))
+            .chain(["VS invocations (vertex)"])
+            .map(|h| (h, Align::Right)),
+    );
+    if has_gl {
+        for h in ["GL smooth", "GL flat", "GL unlit", "ffvk vertex ÷ GL"] {
+            t.column(h, Align::Right);
+        }
+    }
+    for &stacks in &report.sweep.stacks {
+        let at = |engine, mode, variant| {
+            find(&report.results, |p| {
+                p.group == Group::Density
+                    && p.stacks == stacks
+                    && p.engine == engine
+                    && p.mode == mode
+                    && p.variant == variant
+            })
+        };
+        let (v, triangles) = sphere_counts(stacks);
+        let mut row = vec![count(v as f64), count(triangles as f64)];
+        row.extend(BenchMode::ALL.map(|mode| cell(at(Engine::Ffvk, mode, spec))));
+        row.push(count_or_dash(
+            at(Engine::Ffvk, BenchMode::Vertex, spec).and_then(|r| r.stats.vs_invocations),
+        ));
+        if has_gl {
+            row.extend(GL_MODES.map(|mode| cell(at(Engine::Gl, mode, Variant::FixedFunction))));
+            let gl = report
+                .summary
+                .gl_ratios
+                .iter()
+                .find(|r| r.group == Group::Density && r.mode == BenchMode::Vertex && r.vertices == v);
+            row.push(ratio(gl.map(|r| r.ratio)));
+        }
+        t.row(row);
+    }
+    t
+}
+
+/// Time against pixel count: ffvk's modes and fragment-shader invocations.
+fn size_table(report: &BenchReport) -> Table {
+    let mut t = Table::new(
+        ["image", "pixels"]
+            .into_iter()
+            .chain(BenchMode::ALL.map(BenchMode::name))
+            .chain(["FS invocations (fragment)"])
+            .map(|h| (h, Align::Right)),
+    );
+    for &size in &report.sweep.sizes {
+        let at = |mode| {
+            find(&report.results, |p| {
+                p.group == Group::Size
+                    && p.width == size
+                    && p.engine == Engine::Ffvk
+                    && p.mode == mode
+                    && p.variant == Variant::Specialized
+            })
+        };
+        let mut row = vec![format!("{size}²"), count(size as f64 * size as f64)];
+        row.extend(BenchMode::ALL.map(|mode| cell(at(mode))));
+        row.push(count_or_dash(
+            at(BenchMode::Fragment).and_then(|r| r.stats.fs_invocations),
+        ));
+        t.row(row);
+    }
+    t
+}
+
+/// Time against light count: vertex and fragment mode, specialized and uber, and GL's smooth
+/// shading.
+fn light_count_table(report: &BenchReport, has_gl: bool) -> Table {
+    let mut t = Table::new(
+        [
+            "lights",
+            "vertex specialized",
+            "vertex uber",
+            "uber ÷ spec.",
+            "fragment specialized",
+            "fragment uber",
+            "uber ÷ spec.",
+        ]
+        .map(|h| (h, Align::Right)),
+    );
+    if has_gl {
+        for h in ["GL smooth", "ffvk vertex ÷ GL"] {
+            t.column(h, Align::Right);
+        }
+    }
+    for &lights in &report.sweep.light_counts {
+        let at = |engine, mode, variant| {
+            find(&report.results, |p| {
+                p.group == Group::Lights
+                    && p.lights == lights
+                    && p.engine == engine
+                    && p.mode == mode
+                    && p.variant == variant
+            })
+        };
+        let mut row = vec![lights.to_string()];
+        for mode in [BenchMode::Vertex, BenchMode::Fragment] {
+            let s = at(Engine::Ffvk, mode, Variant::Specialized);
+            let u = at(Engine::Ffvk, mode, Variant::Uber);
+            let uber = s.zip(u).map(|(s, u)| u.stats.time_ms / s.stats.time_ms);
+            row.extend([cell(s), cell(u), ratio(uber)]);
+        }
+        if has_gl {
+            let g = at(Engine::Gl, BenchMode::Vertex, Variant::FixedFunction);
+            let gl = report
+                .summary
+                .gl_ratios
+                .iter()
+                .find(|r| r.group == Group::Lights && r.lights == lights);
+            row.extend([cell(g), ratio(gl.map(|r| r.ratio))]);
+        }
+        t.row(row);
+    }
+    t
+}
+
+/// Time against light kind and viewer: vertex and fragment mode, specialized and uber, and
+/// GL's smooth shading.
+fn light_kind_table(report: &BenchReport, has_gl: bool) -> Table {
+    let mut t = Table::new([("lights", Align::Left), ("viewer", Align::Left)]);
+    for h in [
+        "vertex specialized",
+        "vertex uber",
+        "fragment specialized",
+        "fragment uber",
+    ] {
+        t.column(h, Align::Right);
+    }
+    if has_gl {
+        for h in ["GL smooth", "ffvk vertex ÷ GL"] {
+            t.column(h, Align::Right);
+        }
+    }
+    for &kind in &report.sweep.kinds {
+        for local in [false, true] {
+            let at = |engine, mode, variant| {
+                find(&report.results, |p| {
+                    p.group == Group::Kind
+                        && p.light_kind == kind
+                        && p.local_viewer == local
+                        && p.engine == engine
+                        && p.mode == mode
+                        && p.variant == variant
+                })
+            };
+            let viewer = if local { "local" } else { "infinite" };
+            let mut row = vec![kind.name().to_string(), viewer.to_string()];
+            for mode in [BenchMode::Vertex, BenchMode::Fragment] {
+                for variant in [Variant::Specialized, Variant::Uber] {
+                    row.push(cell(at(Engine::Ffvk, mode, variant)));
+                }
+            }
+            if has_gl {
+                let g = at(Engine::Gl, BenchMode::Vertex, Variant::FixedFunction);
+                let f = at(Engine::Ffvk, BenchMode::Vertex, Variant::Specialized);
+                let gl = f
+                    .zip(g)
+                    .map(|(f, g)| f.stats.wall_ms.median / g.stats.wall_ms.median);
+                row.extend([cell(g), ratio(gl)]);
+            }
+            t.row(row);
+        }
+    }
+    t
 }
 
 #[cfg(test)]
@@ -639,5 +689,21 @@ Times are per frame in ms: the median, then the interquartile range; ffvk's from
             assert_eq!(actual, expected, "line {}", line + 1);
         }
         assert_eq!(m, SYNTHETIC_SUMMARY);
+    }
+
+    #[test]
+    fn without_gl_the_tables_have_no_gl_columns() {
+        let mut report = synthetic_report();
+        report.results.retain(|r| r.point.engine == Engine::Ffvk);
+        report.summary = summarize(&report.results);
+        let m = markdown(&report);
+        assert!(!m.contains("GL smooth") && !m.contains("÷ GL"), "{m}");
+        // Every line of a table has as many cells as its headings.
+        let tables: Vec<&str> = m.split("\n\n").filter(|b| b.starts_with('|')).collect();
+        assert_eq!(tables.len(), 5, "{m}");
+        for table in tables {
+            let cells: Vec<usize> = table.lines().map(|l| l.matches(" |").count()).collect();
+            assert!(cells.iter().all(|&n| n == cells[0]), "{table}");
+        }
     }
 }

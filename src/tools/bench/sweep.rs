@@ -308,6 +308,9 @@ pub(super) fn sphere_counts(stacks: u32) -> (u64, u64) {
     ((slices + 1) * (stacks + 1), slices * (2 * stacks - 2))
 }
 
+/// The modes of GL's points in the density and size sweeps (smooth, flat, unlit).
+pub(super) const GL_MODES: [BenchMode; 3] = [BenchMode::Vertex, BenchMode::Flat, BenchMode::Unlit];
+
 /// The points of `config`, in a stable order: density, size, lights, kind; GL after ffvk.
 pub fn points(config: &SweepConfig) -> Vec<Point> {
     let mut out = Vec::new();
@@ -340,7 +343,6 @@ pub fn points(config: &SweepConfig) -> Vec<Point> {
             vec![Variant::Specialized]
         }
     };
-    let gl_modes = [BenchMode::Vertex, BenchMode::Flat, BenchMode::Unlit];
 
     for &stacks in &config.stacks {
         let (vertices, triangles) = sphere_counts(stacks);
@@ -355,7 +357,7 @@ pub fn points(config: &SweepConfig) -> Vec<Point> {
             }
         }
         if config.gl {
-            for mode in gl_modes {
+            for mode in GL_MODES {
                 out.push(Point {
                     stacks,
                     vertices,
@@ -382,7 +384,7 @@ pub fn points(config: &SweepConfig) -> Vec<Point> {
             }
         }
         if config.gl {
-            for mode in gl_modes {
+            for mode in GL_MODES {
                 out.push(sized(base(Group::Size, Engine::Gl, mode, Variant::FixedFunction)));
             }
         }
