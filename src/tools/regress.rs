@@ -1,6 +1,8 @@
 //! Regression runs: render many scenes with one device, check each image against a directory
 //! of references, bless new or changed references on request, and summarize in a table.
 
+#![warn(missing_docs)]
+
 use std::path::{Path, PathBuf};
 
 use crate::gl::state::LightingMode;
@@ -22,17 +24,20 @@ pub fn bless_from_env() -> bool {
 /// What to render and how to check it.
 #[derive(Debug, Clone, Default)]
 pub struct Job {
+    /// Scene files, or directories of them (*.toml, in name order).
     pub scenes: Vec<PathBuf>,
     /// The output directory (NAME.png each); `None` writes next to each scene file.
     pub out_dir: Option<PathBuf>,
     /// Lighting modes to render each scene in; empty: the scene's own. With more than one,
     /// images are named NAME_MODE.png.
     pub modes: Vec<LightingMode>,
+    /// Render at this size (width, height) instead of each scene's own.
     pub size: Option<(u32, u32)>,
     /// A directory of reference images (same names) to check against.
     pub references: Option<PathBuf>,
     /// Write the actual image as the reference when it is missing or differs.
     pub bless: bool,
+    /// How far an image may differ from its reference and pass.
     pub tolerance: Tolerance,
 }
 
@@ -41,7 +46,9 @@ pub struct Job {
 pub enum Status {
     /// Rendered; nothing to check against.
     Rendered,
+    /// Within the tolerance of its reference.
     Pass,
+    /// Beyond the tolerance of its reference.
     Fail,
     /// No reference and no blessing: a failure.
     Missing,
@@ -50,6 +57,7 @@ pub enum Status {
 }
 
 impl Status {
+    /// Whether the image fails the run: it differs or has no reference.
     pub fn failed(self) -> bool {
         matches!(self, Status::Fail | Status::Missing)
     }
@@ -58,10 +66,15 @@ impl Status {
 /// One line of the summary.
 #[derive(Debug, Clone)]
 pub struct Row {
+    /// The image's name: the scene file's stem, with the mode when there are several.
     pub name: String,
+    /// What happened.
     pub status: Status,
+    /// The comparison with the reference, when there was one.
     pub comparison: Option<Comparison>,
+    /// The image written.
     pub output: PathBuf,
+    /// The heat map of the differences, when the image is not identical to its reference.
     pub diff: Option<PathBuf>,
 }
 

@@ -1,6 +1,8 @@
 //! Tables of text: the tools collect rows of cells and render them once, as Markdown (the
 //! benchmark's summary.md) or as aligned columns (a terminal).
 
+#![warn(missing_docs)]
+
 /// Where a column's cells sit.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Align {

@@ -16,10 +16,15 @@ use crate::tools::Result;
 /// Median, quartiles and extremes of a point's frames.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Spread {
+    /// The median (the figure a point reports).
     pub median: f64,
+    /// The fastest frame.
     pub min: f64,
+    /// The first quartile.
     pub p25: f64,
+    /// The third quartile.
     pub p75: f64,
+    /// The slowest frame.
     pub max: f64,
 }
 
@@ -50,7 +55,9 @@ impl Spread {
 /// What a point measured.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct PointStats {
+    /// Unmeasured frames before the measured ones.
     pub warmup: u32,
+    /// Measured frames.
     pub frames: u32,
     /// Host time of the first warm-up frame, ms: it includes creating the pipeline and
     /// lavapipe's lazy fragment-shader compile when the point is the first to need them.
@@ -61,19 +68,26 @@ pub struct PointStats {
     pub wall_ms: Spread,
     /// The figure the tables and plots use: `gpu_ms` for ffvk, `wall_ms` for GL (medians).
     pub time_ms: f64,
-    /// Pipeline statistics of the last frame (ffvk only; the same every frame).
+    /// Vertex-shader invocations of the last frame (ffvk only; the same every frame).
     pub vs_invocations: Option<u64>,
+    /// Fragment-shader invocations of the last frame (ffvk only).
     pub fs_invocations: Option<u64>,
+    /// Primitives out of the clipper in the last frame (ffvk only).
     pub clipping_primitives: Option<u64>,
 }
 
 /// ffvk against GL on one scene.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct GlRatio {
+    /// The sweep of the scene.
     pub group: Group,
+    /// The lighting mode of both.
     pub mode: BenchMode,
+    /// The sphere's vertices.
     pub vertices: u64,
+    /// The image's pixels.
     pub pixels: u64,
+    /// Enabled lights.
     pub lights: usize,
     /// ffvk's host time per frame (submit to fence), specialized pipelines, ms.
     pub ffvk_wall_ms: f64,
@@ -96,6 +110,7 @@ pub struct Summary {
     pub specialization_speedup: BTreeMap<String, f64>,
     /// What ffvk uses by default, after this measurement.
     pub default_specialize: String,
+    /// ffvk's specialized pipelines against GL on every scene that both drew.
     pub gl_ratios: Vec<GlRatio>,
     /// Geometric mean of the vertex-mode ratios.
     pub gl_vertex_ratio_geomean: Option<f64>,

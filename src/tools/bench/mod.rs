@@ -18,6 +18,8 @@
 //! says which points a sweep has, `measure` times one point and summarizes the results,
 //! `report` writes the CSV, JSON and Markdown, and `plots` the PNG plots.
 
+#![warn(missing_docs)]
+
 mod measure;
 mod plots;
 mod report;
@@ -153,22 +155,33 @@ pub fn run(args: &BenchArgs, options: &RendererOptions) -> Result<()> {
 pub struct BenchEnv {
     /// LP_NUM_THREADS as the drivers read it ("unset" when it was not set).
     pub lp_num_threads: String,
+    /// The Vulkan device's name.
     pub device: String,
+    /// The Vulkan driver's name ("llvmpipe").
     pub driver: String,
+    /// The Vulkan driver's version text.
     pub driver_info: String,
+    /// The Mesa version in `driver_info` ("not Mesa" for other drivers).
     pub mesa_version: String,
+    /// The device's Vulkan version.
     pub vulkan_api: String,
-    /// GL_RENDERER and GL_VERSION of the OSMesa anchor, when it ran.
+    /// GL_RENDERER of the OSMesa anchor, when it ran.
     pub gl_renderer: Option<String>,
+    /// GL_VERSION of the OSMesa anchor, when it ran.
     pub gl_version: Option<String>,
+    /// The CPU's model name (/proc/cpuinfo).
     pub cpu: String,
+    /// The CPUs this process may use.
     pub cpus: usize,
+    /// ffvk's crate version.
     pub ffvk_version: String,
     /// Whether ffvk was built with optimizations (benchmarks want `--release`).
     pub optimized_build: bool,
+    /// Whether the validation layer was on.
     pub validation: bool,
-    /// /proc/loadavg's 1-minute load before and after the sweep: other work on the machine.
+    /// /proc/loadavg's 1-minute load before the sweep: other work on the machine.
     pub load_before: Option<f64>,
+    /// The same load after the sweep.
     pub load_after: Option<f64>,
 }
 
@@ -176,21 +189,31 @@ pub struct BenchEnv {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct BenchResult {
     #[serde(flatten)]
+    /// What was drawn.
     pub point: Point,
     #[serde(flatten)]
+    /// What it measured.
     pub stats: PointStats,
+    /// LP_NUM_THREADS, as in [`BenchEnv`].
     pub lp_num_threads: String,
+    /// The device, as in [`BenchEnv`].
     pub device: String,
+    /// The driver's version text, as in [`BenchEnv`].
     pub driver_info: String,
+    /// The Mesa version, as in [`BenchEnv`].
     pub mesa_version: String,
 }
 
 /// A whole run.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct BenchReport {
+    /// The machine and the drivers.
     pub env: BenchEnv,
+    /// The sweep that ran.
     pub sweep: SweepConfig,
+    /// One result per point, in the order of [`points`].
     pub results: Vec<BenchResult>,
+    /// What the results show.
     pub summary: Summary,
     /// What was left out and why (the GL anchor without the osmesa feature, GL points over
     /// GL_MAX_LIGHTS).

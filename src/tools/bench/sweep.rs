@@ -12,6 +12,7 @@ use crate::tools::{Error, Result};
 /// A sweep: which points, how many frames each.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct SweepConfig {
+    /// The sweep's name ("quick", "standard", "full", "tiny").
     pub name: String,
     /// Unmeasured frames first (at least one: it compiles what the point needs).
     pub warmup: u32,
@@ -42,8 +43,8 @@ pub struct SweepConfig {
     pub variants_everywhere: bool,
     /// Draw the OpenGL anchor points (needs the `osmesa` feature; skipped without it).
     pub gl: bool,
-    /// Whether the process keeps freed heap memory (`--malloc-no-trim`). [`run`] sets the
-    /// allocator up, process-wide; [`run_sweep`] only records this.
+    /// Whether the process keeps freed heap memory (`--malloc-no-trim`). [`run`](super::run)
+    /// sets the allocator up, process-wide; [`run_sweep`](super::run_sweep) only records this.
     pub malloc_no_trim: bool,
 }
 
@@ -161,9 +162,13 @@ impl SweepConfig {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Group {
+    /// Mesh density: time against vertices.
     Density,
+    /// Image size: time against pixels.
     Size,
+    /// Light count: time against directional lights.
     Lights,
+    /// Light kind: directional, point or spot lights, infinite or local viewer.
     Kind,
 }
 
@@ -171,6 +176,7 @@ pub enum Group {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Engine {
+    /// ffvk on Vulkan.
     Ffvk,
     /// Mesa's fixed-function OpenGL through OSMesa.
     Gl,
@@ -180,14 +186,18 @@ pub enum Engine {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum BenchMode {
+    /// Lit at each vertex, colors interpolated (Gouraud; GL's SMOOTH).
     Vertex,
+    /// Lit at each fragment (Phong).
     Fragment,
+    /// Lit at each vertex, each triangle in its last vertex's color (GL's FLAT).
     Flat,
     /// The same geometry with lighting off: the vertex color passes through (the floor).
     Unlit,
 }
 
 impl BenchMode {
+    /// Every mode, in the order of the tables.
     pub const ALL: [BenchMode; 4] = [
         BenchMode::Vertex,
         BenchMode::Fragment,
@@ -195,6 +205,7 @@ impl BenchMode {
         BenchMode::Unlit,
     ];
 
+    /// The mode's name in tables, plots and CSV.
     pub fn name(self) -> &'static str {
         match self {
             BenchMode::Vertex => "vertex",
@@ -226,6 +237,7 @@ pub enum Variant {
 }
 
 impl Variant {
+    /// The variant's name in tables, plots and CSV.
     pub fn name(self) -> &'static str {
         match self {
             Variant::Specialized => "specialized",
@@ -248,8 +260,10 @@ pub enum LightKind {
 }
 
 impl LightKind {
+    /// Every kind, in the order of the tables.
     pub const ALL: [LightKind; 3] = [LightKind::Directional, LightKind::Point, LightKind::Spot];
 
+    /// The kind's name in tables and CSV.
     pub fn name(self) -> &'static str {
         match self {
             LightKind::Directional => "directional",
@@ -262,20 +276,31 @@ impl LightKind {
 /// One measured configuration.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Point {
+    /// The sweep it belongs to.
     pub group: Group,
+    /// Who draws it.
     pub engine: Engine,
+    /// Where the equation is evaluated.
     pub mode: BenchMode,
+    /// Which pipelines draw it.
     pub variant: Variant,
     /// Sphere stacks (slices are twice as many).
     pub stacks: u32,
+    /// The sphere's vertices.
     pub vertices: u64,
+    /// The sphere's triangles.
     pub triangles: u64,
+    /// Image width.
     pub width: u32,
+    /// Image height.
     pub height: u32,
+    /// width × height.
     pub pixels: u64,
     /// Enabled lights (0 when unlit).
     pub lights: usize,
+    /// The kind of every light.
     pub light_kind: LightKind,
+    /// GL_LIGHT_MODEL_LOCAL_VIEWER.
     pub local_viewer: bool,
 }
 
