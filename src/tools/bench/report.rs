@@ -12,6 +12,9 @@ use super::{BenchReport, BenchResult};
 use crate::tools::table::{Align, Table};
 use crate::tools::{Error, Result};
 
+// ---------------------------------------------------------------------------------------------
+// The files.
+
 fn write_file(path: &Path, bytes: &[u8]) -> Result<()> {
     std::fs::write(path, bytes).map_err(|source| Error::Write {
         path: path.to_path_buf(),
@@ -152,6 +155,9 @@ pub fn write_outputs(report: &BenchReport, dir: &Path) -> Result<Vec<PathBuf>> {
     written.extend(super::plots::write_all(report, dir)?);
     Ok(written)
 }
+
+// ---------------------------------------------------------------------------------------------
+// summary.md: the environment and one table per sweep, from rows of data.
 
 /// "1 directional light", "4 directional lights".
 pub(super) fn lights_text(n: usize) -> String {
