@@ -1,6 +1,6 @@
 //! The tools behind the `ffvk` command line (feature `tools`): the benchmark, the demo, the
-//! per-pixel explanation, regression runs and contact sheets. They print, read arguments and
-//! set environment variables; the core library does none of that.
+//! per-pixel explanation, regression runs, contact sheets and the tables they print. They
+//! print, read arguments and set environment variables; the core library does none of that.
 
 pub mod bench;
 pub mod demo;
@@ -9,6 +9,7 @@ pub mod explain;
 pub mod gl_reference;
 pub mod regress;
 pub mod sheet;
+pub mod table;
 
 use std::path::PathBuf;
 

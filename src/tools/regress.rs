@@ -1,13 +1,15 @@
 //! Regression runs: render many scenes with one device, check each image against a directory
 //! of references, bless new or changed references on request, and summarize in a table.
 
-use std::fmt::Write as _;
+#![warn(missing_docs)]
+
 use std::path::{Path, PathBuf};
 
 use crate::gl::state::LightingMode;
 use crate::images::compare::{compare, heat_map, load_image, Comparison, Tolerance};
 use crate::images::save_png;
 use crate::scene::{render_scene, Scene};
+use crate::tools::table::{Align, Table};
 use crate::tools::{Error, Result};
 use crate::Renderer;
 
@@ -22,17 +24,20 @@ pub fn bless_from_env() -> bool {
 /// What to render and how to check it.
 #[derive(Debug, Clone, Default)]
 pub struct Job {
+    /// Scene files, or directories of them (*.toml, in name order).
     pub scenes: Vec<PathBuf>,
     /// The output directory (NAME.png each); `None` writes next to each scene file.
     pub out_dir: Option<PathBuf>,
     /// Lighting modes to render each scene in; empty: the scene's own. With more than one,
     /// images are named NAME_MODE.png.
     pub modes: Vec<LightingMode>,
+    /// Render at this size (width, height) instead of each scene's own.
     pub size: Option<(u32, u32)>,
     /// A directory of reference images (same names) to check against.
     pub references: Option<PathBuf>,
     /// Write the actual image as the reference when it is missing or differs.
     pub bless: bool,
+    /// How far an image may differ from its reference and pass.
     pub tolerance: Tolerance,
 }
 
@@ -41,7 +46,9 @@ pub struct Job {
 pub enum Status {
     /// Rendered; nothing to check against.
     Rendered,
+    /// Within the tolerance of its reference.
     Pass,
+    /// Beyond the tolerance of its reference.
     Fail,
     /// No reference and no blessing: a failure.
     Missing,
@@ -50,6 +57,7 @@ pub enum Status {
 }
 
 impl Status {
+    /// Whether the image fails the run: it differs or has no reference.
     pub fn failed(self) -> bool {
         matches!(self, Status::Fail | Status::Missing)
     }
@@ -58,10 +66,15 @@ impl Status {
 /// One line of the summary.
 #[derive(Debug, Clone)]
 pub struct Row {
+    /// The image's name: the scene file's stem, with the mode when there are several.
     pub name: String,
+    /// What happened.
     pub status: Status,
+    /// The comparison with the reference, when there was one.
     pub comparison: Option<Comparison>,
+    /// The image written.
     pub output: PathBuf,
+    /// The heat map of the differences, when the image is not identical to its reference.
     pub diff: Option<PathBuf>,
 }
 
@@ -174,13 +187,16 @@ pub fn run(renderer: &mut Renderer, job: &Job, log: &mut dyn FnMut(&str)) -> Res
     Ok(rows)
 }
 
-/// The summary table: scene, status, max difference, share over the threshold, FLIP mean.
+/// The summary table: scene, status, max difference, share over the threshold, FLIP mean;
+/// then the count of images and of failures.
 pub fn table(rows: &[Row]) -> String {
-    let width = rows.iter().map(|r| r.name.len()).max().unwrap_or(5).max(5);
-    let mut out = format!(
-        "{:<width$}  {:<8}  {:>16}  {:>9}  {:>9}\n",
-        "scene", "status", "max diff RGBA", "over %", "FLIP"
-    );
+    let mut t = Table::new([
+        ("scene", Align::Left),
+        ("status", Align::Left),
+        ("max diff RGBA", Align::Right),
+        ("over %", Align::Right),
+        ("FLIP", Align::Right),
+    ]);
     for r in rows {
         let status = match r.status {
             Status::Rendered => "rendered",
@@ -197,13 +213,55 @@ pub fn table(rows: &[Row]) -> String {
             ),
             None => ("-".into(), "-".into(), "-".into()),
         };
-        let _ = writeln!(
-            out,
-            "{:<width$}  {status:<8}  {diff:>16}  {over:>9}  {flip:>9}",
-            r.name
-        );
+        t.row([r.name.clone(), status.into(), diff, over, flip]);
     }
     let failed = rows.iter().filter(|r| r.status.failed()).count();
-    let _ = write!(out, "{} image(s), {} failed", rows.len(), failed);
-    out
+    format!("{}{} image(s), {} failed", t.text(), rows.len(), failed)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn comparison(max_diff: [u8; 4], share_over: f64, flip_mean: f32) -> Comparison {
+        Comparison {
+            width: 128,
+            height: 128,
+            max_diff,
+            over: (share_over * 128.0 * 128.0) as usize,
+            share_over,
+            flip_mean,
+            worst: None,
+            threshold: 1,
+        }
+    }
+
+    #[test]
+    fn the_summary_table() {
+        let row = |name: &str, status, comparison| Row {
+            name: name.into(),
+            status,
+            comparison,
+            output: PathBuf::from(format!("out/{name}.png")),
+            diff: None,
+        };
+        let same = comparison([0; 4], 0.0, 0.0);
+        let different = comparison([255, 12, 3, 0], 0.0123, 0.04567);
+        let rows = [
+            row("a", Status::Rendered, None),
+            row("spot_light_vertex", Status::Pass, Some(same)),
+            row("b", Status::Fail, Some(different)),
+            row("missing_one", Status::Missing, None),
+            row("new", Status::Blessed, None),
+        ];
+        let expected = "\
+scene              status      max diff RGBA  over %     FLIP\n\
+a                  rendered                -       -        -\n\
+spot_light_vertex  ok           [0, 0, 0, 0]  0.0000  0.00000\n\
+b                  FAILED    [255, 12, 3, 0]  1.2300  0.04567\n\
+missing_one        MISSING                 -       -        -\n\
+new                blessed                 -       -        -\n\
+5 image(s), 2 failed";
+        assert_eq!(table(&rows), expected);
+    }
 }
