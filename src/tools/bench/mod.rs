@@ -20,6 +20,7 @@
 
 #![warn(missing_docs)]
 
+mod draw_cost;
 mod measure;
 mod plots;
 mod report;
@@ -38,6 +39,7 @@ use crate::mesh::MeshData;
 use crate::renderer::{Mesh, Renderer, RendererOptions};
 use crate::tools::{Error, Result};
 
+pub use draw_cost::{measure_draw_cost, DrawCost, DRAWS};
 pub use measure::{crossover, summarize, GlRatio, PointStats, Spread, Summary};
 pub use report::{csv, markdown, write_outputs, CSV_COLUMNS};
 pub use sweep::{point_state, points, BenchMode, Engine, Group, LightKind, Point, SweepConfig, Variant};
@@ -215,6 +217,8 @@ pub struct BenchReport {
     pub results: Vec<BenchResult>,
     /// What the results show.
     pub summary: Summary,
+    /// The host cost of recording draws; `None` when it was not measured.
+    pub draw_cost: Option<DrawCost>,
     /// What was left out and why (the GL anchor without the osmesa feature, GL points over
     /// GL_MAX_LIGHTS).
     pub notes: Vec<String>,
@@ -399,6 +403,22 @@ pub fn run_sweep(
         })
         .collect();
     let summary = summarize(&results);
+    // A renderer of its own, so that the sweep's pipelines do not count as new keys.
+    progress.set_message(format!(
+        "recording cost ({} draws per frame)",
+        config.record_draws
+    ));
+    let mut recorder = Renderer::new(&RendererOptions {
+        specialize: Specialize::Always,
+        ..options.clone()
+    })?;
+    let draw_cost = Some(measure_draw_cost(
+        &mut recorder,
+        config.record_draws,
+        config.frames.clamp(1, 21),
+        config.new_keys,
+    )?);
+    drop(recorder);
     Ok(BenchReport {
         env: BenchEnv {
             load_after: load_average(),
@@ -407,6 +427,7 @@ pub fn run_sweep(
         sweep: config.clone(),
         results,
         summary,
+        draw_cost,
         notes,
     })
 }

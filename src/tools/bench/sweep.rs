@@ -46,6 +46,10 @@ pub struct SweepConfig {
     /// Whether the process keeps freed heap memory (`--malloc-no-trim`). [`run`](super::run)
     /// sets the allocator up, process-wide; [`run_sweep`](super::run_sweep) only records this.
     pub malloc_no_trim: bool,
+    /// Draws per frame of the recording-cost measurement, each with its own state.
+    pub record_draws: usize,
+    /// New specialization keys whose pipeline creation is timed (at most 16).
+    pub new_keys: usize,
 }
 
 impl SweepConfig {
@@ -67,6 +71,8 @@ impl SweepConfig {
             variants_everywhere: false,
             gl: true,
             malloc_no_trim: false,
+            record_draws: 10_000,
+            new_keys: 8,
         }
     }
 
@@ -118,6 +124,8 @@ impl SweepConfig {
             variants_everywhere: false,
             gl: true,
             malloc_no_trim: false,
+            record_draws: 200,
+            new_keys: 1,
         }
     }
 
