@@ -37,6 +37,15 @@
 //! given `Lighting` at a time (a renderer that records on several threads makes one per
 //! thread).
 
+//!
+//! # Example
+//!
+//! `examples/embed.rs` in the repository: its own instance, device, queue, images and
+//! buffers with plain `ash`, the teapot in the three modes (`cargo run --release --example
+//! embed`):
+//!
+#![doc = concat!("```rust,ignore\n", include_str!("../../examples/embed.rs"), "\n```")]
+
 use std::sync::Arc;
 
 use ash::vk;
@@ -101,6 +110,12 @@ pub struct LitDraw<'a> {
     /// Which vertices to draw.
     pub geometry: Geometry,
 }
+
+// Recording takes &mut self; the type itself may move between and be shared by threads.
+const _: () = {
+    const fn send_and_sync<T: Send + Sync>() {}
+    send_and_sync::<Lighting>();
+};
 
 /// GL 2.1 lighting for a caller's device: pipelines, layouts and per-draw state memory,
 /// recorded into the caller's command buffers (see the module docs for what it owns, what

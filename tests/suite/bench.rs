@@ -63,9 +63,15 @@ fn a_tiny_sweep_runs_every_point_and_writes_csv_json_and_plots() {
     }
     assert!(report.env.device.contains("llvmpipe"), "{:?}", report.env);
     // The recording cost: per-draw host time, the packing part of it, a new key's pipeline.
-    let d = report.draw_cost.as_ref().expect("the sweep measures the recording cost");
+    let d = report
+        .draw_cost
+        .as_ref()
+        .expect("the sweep measures the recording cost");
     assert_eq!((d.draws, d.frames), (config.record_draws, config.frames));
-    assert!(d.warm_us_per_draw.median > 0.0 && d.pack_us_per_draw.median > 0.0, "{d:?}");
+    assert!(
+        d.warm_us_per_draw.median > 0.0 && d.pack_us_per_draw.median > 0.0,
+        "{d:?}"
+    );
     assert!(d.new_key_create_ms.median > 0.0, "{d:?}");
     assert!(ffvk::tools::bench::markdown(&report).contains("### Recording draws (host)"));
     assert!(report.env.mesa_version.starts_with(|c: char| c.is_ascii_digit()));
