@@ -107,16 +107,28 @@ pub fn render_modes(
 }
 
 /// Renders `frames` at `size`×`size` on the device whose name contains `device_name`
-/// (lavapipe by default); returns RGBA8 rows, top row first, one image per frame. With `validation`, the Khronos
-/// validation layer is on and any message it reports is an error.
+/// (lavapipe by default); returns RGBA8 rows, top row first, one image per frame. With
+/// `validation`, the Khronos validation layer is on and any message it reports is an error.
 pub fn render_frames(
     device_name: Option<&str>,
     validation: bool,
     size: u32,
     frames: &[EmbedFrame],
 ) -> Result<Vec<Vec<u8>>, String> {
+    render_frames_in_set(device_name, validation, size, 0, frames)
+}
+
+/// [`render_frames`] with ffvk's uniform block at descriptor set `set_index`, as a renderer
+/// whose own shaders use the lower sets would ask.
+pub fn render_frames_in_set(
+    device_name: Option<&str>,
+    validation: bool,
+    size: u32,
+    set_index: u32,
+    frames: &[EmbedFrame],
+) -> Result<Vec<Vec<u8>>, String> {
     let mut app = App::new(device_name, validation, size)?;
-    let result = app.render(frames);
+    let result = app.render(frames, set_index);
     let messages = app.messages();
     drop(app);
     let images = result?;
@@ -403,7 +415,7 @@ impl App {
         Ok((image, view))
     }
 
-    fn render(&mut self, frames: &[EmbedFrame]) -> Result<Vec<Vec<u8>>, String> {
+    fn render(&mut self, frames: &[EmbedFrame], set_index: u32) -> Result<Vec<Vec<u8>>, String> {
         // The caller's vertex data: positions alone, then normals with 8-bit colors.
         let mesh = teapot();
         let positions: Vec<[f32; 3]> = mesh.vertices.iter().map(|v| v.position).collect();
@@ -487,11 +499,14 @@ impl App {
             color: None,
             ..vertex_input.clone()
         };
-        let mut with_color_array = Lighting::new(&ffvk_device, &LightingOptions::new(target, vertex_input))
-            .map_err(|e| e.to_string())?;
+        let options = |vertex_input| LightingOptions {
+            set_index,
+            ..LightingOptions::new(target, vertex_input)
+        };
+        let mut with_color_array =
+            Lighting::new(&ffvk_device, &options(vertex_input)).map_err(|e| e.to_string())?;
         let mut with_current_color =
-            Lighting::new(&ffvk_device, &LightingOptions::new(target, without_colors))
-                .map_err(|e| e.to_string())?;
+            Lighting::new(&ffvk_device, &options(without_colors)).map_err(|e| e.to_string())?;
         let raster = RasterState {
             depth_test: true,
             ..RasterState::default()

@@ -25,12 +25,25 @@ pub enum Error {
     },
 
     /// The chosen device lacks something ffvk cannot work without: Vulkan 1.3,
-    /// `dynamicRendering` and `synchronization2`, a graphics queue,
+    /// `dynamicRendering` (and, for ffvk's own device, `synchronization2`), a graphics queue,
     /// `VK_EXT_provoking_vertex` with `provokingVertexLast`, or a suitable memory type; or an
     /// embedded shader variant is absent or not valid SPIR-V (a build defect). The string
     /// names what is missing. Another device may work; retrying this one will not.
     #[error("the device lacks {0}, which ffvk needs")]
     MissingFeature(String),
+
+    /// The caller's device was not created with a feature ffvk needs, as its
+    /// [`EnabledFeatures`](crate::vk::EnabledFeatures) says: create the device with it and
+    /// set the flag.
+    #[error("the caller's device was created without {feature} (EnabledFeatures::{flag} is false), which {needed_for}")]
+    NotEnabled {
+        /// The Vulkan feature.
+        feature: &'static str,
+        /// The field of `EnabledFeatures` that says it is enabled.
+        flag: &'static str,
+        /// What needs it.
+        needed_for: &'static str,
+    },
 
     /// `VK_ERROR_DEVICE_LOST` from the named call, or a frame asked of a renderer whose
     /// earlier submission failed. That renderer is unusable from then on: make a new one.

@@ -355,7 +355,10 @@ struct PipelineKey {
 pub struct Pipelines {
     // Field order is drop order: pipelines before the layouts and cache they were made with.
     pipelines: HashMap<PipelineKey, Pipeline>,
-    own_cache: Option<PipelineCache>,
+    /// The cache pipelines are made through: the caller's, or `own_cache`'s.
+    cache: vk::PipelineCache,
+    /// ffvk's own cache when the caller passes none; held to be freed with the pipelines.
+    _own_cache: Option<PipelineCache>,
     layout: PipelineLayout,
     set_layout: DescriptorSetLayout,
     /// Empty layouts for the sets below `set_index`.
@@ -380,13 +383,17 @@ impl Pipelines {
         let mut set_layouts: Vec<&DescriptorSetLayout> = lower_sets.iter().collect();
         set_layouts.push(&set_layout);
         let layout = PipelineLayout::new(device, &set_layouts)?;
-        let own_cache = match config.cache {
-            Some(_) => None,
-            None => Some(PipelineCache::new(device)?),
+        let (cache, own_cache) = match config.cache {
+            Some(caller) => (caller, None),
+            None => {
+                let own = PipelineCache::new(device)?;
+                (own.raw(), Some(own))
+            }
         };
         Ok(Pipelines {
             pipelines: HashMap::new(),
-            own_cache,
+            cache,
+            _own_cache: own_cache,
             layout,
             set_layout,
             _lower_sets: lower_sets,
@@ -447,10 +454,11 @@ impl Pipelines {
         let device = &self.device;
         let config = &self.config;
         if k.mode == LightingMode::Flat && !device.info.provoking_vertex_last {
-            return Err(Error::MissingFeature(
-                "provokingVertexLast of VK_EXT_provoking_vertex enabled on the device (the flat mode takes each triangle's last vertex, as GL does)"
-                    .into(),
-            ));
+            return Err(Error::NotEnabled {
+                feature: "provokingVertexLast of VK_EXT_provoking_vertex",
+                flag: "provoking_vertex_last",
+                needed_for: "the flat mode needs (each triangle takes its last vertex's color, as in GL)",
+            });
         }
         if k.raster.depth_test && config.target.depth_format == vk::Format::UNDEFINED {
             return Err(LightingError::NoDepthAttachment.into());
@@ -548,11 +556,6 @@ impl Pipelines {
             .dynamic_state(&dynamic)
             .layout(self.layout.raw())
             .push_next(&mut rendering);
-        let cache = match (&self.own_cache, self.config.cache) {
-            (Some(own), _) => own.raw(),
-            (None, Some(caller)) => caller,
-            (None, None) => vk::PipelineCache::null(),
-        };
-        Pipeline::graphics(device, cache, &info)
+        Pipeline::graphics(device, self.cache, &info)
     }
 }

@@ -275,10 +275,11 @@ impl ColorMaterial {
 /// Where the one equation is evaluated.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Hash)]
 pub enum LightingMode {
-    /// Gouraud: lit at each vertex, clamped there, colors interpolated (GL's SMOOTH).
+    /// Lit at each vertex, clamped there, colors interpolated (GL's SMOOTH; Gouraud's method).
     #[default]
     Vertex,
-    /// Phong: eye-space position and normal interpolated, lit at each fragment.
+    /// Eye-space position and normal interpolated, lit at each fragment (Phong's
+    /// interpolation; the specular term stays GL's halfway-vector one).
     Fragment,
     /// GL's ShadeModel(FLAT): lit per vertex, the triangle takes its last vertex's color.
     Flat,

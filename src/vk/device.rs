@@ -267,17 +267,18 @@ impl Device {
             instance.get_physical_device_properties2(physical_device, &mut props2);
         }
         if !enabled.dynamic_rendering {
-            return Err(Error::MissingFeature(
-                "dynamicRendering enabled on the caller's device (ffvk's pipelines use dynamic rendering)"
-                    .into(),
-            ));
+            return Err(Error::NotEnabled {
+                feature: "dynamicRendering",
+                flag: "dynamic_rendering",
+                needed_for: "every ffvk pipeline needs (they render without render passes)",
+            });
         }
         if v13.dynamic_rendering != vk::TRUE {
             return Err(Error::MissingFeature("dynamicRendering".into()));
         }
         if enabled.provoking_vertex_last && provoking.provoking_vertex_last != vk::TRUE {
             return Err(Error::MissingFeature(
-                "VK_EXT_provoking_vertex with provokingVertexLast (said to be enabled, but the device lacks it)"
+                "VK_EXT_provoking_vertex with provokingVertexLast (EnabledFeatures::provoking_vertex_last says it is enabled)"
                     .into(),
             ));
         }

@@ -120,6 +120,24 @@ fn without_a_color_array_every_vertex_takes_the_current_color() {
     finish(r);
 }
 
+/// ffvk's uniform block moved to descriptor set 2 (the SPIR-V's set rewritten, empty layouts
+/// below it): the same bytes as in set 0, with the validation layer on.
+#[test]
+fn the_uniform_block_may_live_in_another_descriptor_set() {
+    let frames: Vec<embed::EmbedFrame> = LightingMode::ALL
+        .iter()
+        .map(|&mode| embed::EmbedFrame {
+            state: embed::gl_state(mode).unwrap().lighting,
+            color_array: true,
+        })
+        .collect();
+    let in_set_0 = embed::render_frames_in_set(None, true, 64, 0, &frames).unwrap();
+    let in_set_2 = embed::render_frames_in_set(None, true, 64, 2, &frames).unwrap();
+    for (mode, (a, b)) in LightingMode::ALL.iter().zip(in_set_0.iter().zip(&in_set_2)) {
+        assert!(a == b, "{} mode: set 2 draws other bytes than set 0", mode.name());
+    }
+}
+
 /// 10,000 draws in one frame, each with its own material: one command buffer, the per-draw
 /// state memory growing chunk by chunk, every quad its own color from the CPU reference.
 #[test]
@@ -222,4 +240,123 @@ fn bad_vertex_layouts_and_draws_are_clear_errors() {
     let mut input = VertexInput::interleaved();
     input.bindings.push(input.bindings[0]);
     assert!(input.validate().unwrap_err().to_string().contains("listed twice"));
+}
+
+/// A caller's device made with plain ash (lavapipe, one graphics queue, dynamic rendering,
+/// no provoking-vertex extension), destroyed on drop.
+struct PlainDevice {
+    _entry: ash::Entry,
+    instance: ash::Instance,
+    physical: ash::vk::PhysicalDevice,
+    device: ash::Device,
+}
+
+impl PlainDevice {
+    fn new() -> PlainDevice {
+        use ash::vk;
+        // SAFETY: loads the system's Vulkan loader; the create infos outlive the calls.
+        unsafe {
+            let entry = ash::Entry::load().unwrap();
+            let app = vk::ApplicationInfo::default().api_version(vk::API_VERSION_1_3);
+            let instance = entry
+                .create_instance(&vk::InstanceCreateInfo::default().application_info(&app), None)
+                .unwrap();
+            let physical = instance
+                .enumerate_physical_devices()
+                .unwrap()
+                .into_iter()
+                .find(|&p| {
+                    instance
+                        .get_physical_device_properties(p)
+                        .device_name_as_c_str()
+                        .is_ok_and(|n| n.to_string_lossy().contains("llvmpipe"))
+                })
+                .expect("lavapipe");
+            let priorities = [1.0];
+            let queues = [vk::DeviceQueueCreateInfo::default()
+                .queue_family_index(0)
+                .queue_priorities(&priorities)];
+            let mut v13 = vk::PhysicalDeviceVulkan13Features::default().dynamic_rendering(true);
+            let info = vk::DeviceCreateInfo::default()
+                .queue_create_infos(&queues)
+                .push_next(&mut v13);
+            let device = instance.create_device(physical, &info, None).unwrap();
+            PlainDevice {
+                _entry: entry,
+                instance,
+                physical,
+                device,
+            }
+        }
+    }
+}
+
+impl Drop for PlainDevice {
+    fn drop(&mut self) {
+        // SAFETY: nothing of ffvk's is left on the device (the tests drop it first).
+        unsafe {
+            self.device.destroy_device(None);
+            self.instance.destroy_instance(None);
+        }
+    }
+}
+
+#[test]
+fn features_the_caller_did_not_enable_are_named_in_the_error() {
+    use ffvk::vk::{Device, EnabledFeatures};
+    use ffvk::{Lighting, LightingOptions, RasterState, Target, VertexInput};
+    let plain = PlainDevice::new();
+    // SAFETY: the device comes from this physical device and outlives every ffvk object here.
+    let e = unsafe {
+        Device::from_caller(
+            &plain.instance,
+            plain.physical,
+            plain.device.clone(),
+            EnabledFeatures::default(),
+        )
+    }
+    .err()
+    .expect("dynamic rendering is required");
+    assert!(
+        matches!(
+            e,
+            ffvk::Error::NotEnabled {
+                flag: "dynamic_rendering",
+                ..
+            }
+        ),
+        "{e}"
+    );
+    let features = EnabledFeatures {
+        dynamic_rendering: true,
+        provoking_vertex_last: false,
+    };
+    // SAFETY: as above.
+    let device =
+        unsafe { Device::from_caller(&plain.instance, plain.physical, plain.device.clone(), features) }
+            .unwrap();
+    let mut lighting = Lighting::new(
+        &device,
+        &LightingOptions::new(Target::OFFSCREEN, VertexInput::interleaved()),
+    )
+    .unwrap();
+    let mut gl = lit_state();
+    lighting.prepare(&gl.lighting, RasterState::default()).unwrap();
+    gl.lighting_mode(LightingMode::Flat);
+    let e = lighting
+        .prepare(&gl.lighting, RasterState::default())
+        .unwrap_err();
+    assert!(
+        matches!(
+            e,
+            ffvk::Error::NotEnabled {
+                flag: "provoking_vertex_last",
+                ..
+            }
+        ),
+        "{e}"
+    );
+    assert!(e.to_string().contains("flat mode"), "{e}");
+    drop(lighting);
+    drop(device);
 }

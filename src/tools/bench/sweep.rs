@@ -194,9 +194,9 @@ pub enum Engine {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum BenchMode {
-    /// Lit at each vertex, colors interpolated (Gouraud; GL's SMOOTH).
+    /// Lit at each vertex, colors interpolated (GL's SMOOTH).
     Vertex,
-    /// Lit at each fragment (Phong).
+    /// Lit at each fragment.
     Fragment,
     /// Lit at each vertex, each triangle in its last vertex's color (GL's FLAT).
     Flat,
