@@ -27,6 +27,8 @@
 pub mod draw;
 #[warn(missing_docs)]
 pub mod error;
+#[cfg(feature = "images")]
+pub mod files;
 #[warn(missing_docs)]
 pub mod gl;
 #[warn(missing_docs)]

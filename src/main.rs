@@ -213,15 +213,19 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
             let single = files.len() == 1 && lighting.len() <= 1 && check.is_none();
             let mut renderer = Renderer::new(&options(&cli))?;
             if single {
-                let scene = regress::load_scene(&files[0], *size, &mut |m| eprintln!("{m}"))?;
+                let file = &files[0].path;
+                let path = out.clone().unwrap_or_else(|| file.with_extension("png"));
+                if ffvk::files::same_file(&path, file) {
+                    return Err(ffvk::tools::Error::OverwritesInput { path });
+                }
+                let scene = regress::load_scene(file, *size, &mut |m| eprintln!("{m}"))?;
                 let image = render_scene(&mut renderer, &scene, lighting.first().copied())?;
-                let path = out.clone().unwrap_or_else(|| files[0].with_extension("png"));
                 save_png(&image, &path)?;
-                println!("{} -> {}", files[0].display(), path.display());
+                println!("{} -> {}", file.display(), path.display());
                 return Ok(ExitCode::SUCCESS);
             }
             let job = regress::Job {
-                scenes: files,
+                scenes: scenes.clone(),
                 out_dir: out.clone(),
                 modes: lighting.clone(),
                 size: *size,
@@ -236,9 +240,10 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
             println!("{}", regress::table(&rows));
             let failed: Vec<&regress::Row> = rows.iter().filter(|r| r.status.failed()).collect();
             for r in &failed {
-                let what = match (&r.comparison, r.status) {
+                let what = match (&r.comparison, &r.problem) {
                     (Some(c), _) => c.summary(),
-                    (None, _) => "no reference".to_string(),
+                    (None, Some(problem)) => problem.clone(),
+                    (None, None) => "no reference".to_string(),
                 };
                 println!(
                     "{}: {what}; actual {}{}",
@@ -267,14 +272,18 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
             tolerance,
         } => {
             let tolerance = tolerance.tolerance();
+            tolerance.validate()?;
+            if let Some(path) = diff {
+                if ffvk::files::same_file(path, expected) || ffvk::files::same_file(path, actual) {
+                    return Err(ffvk::tools::Error::OverwritesInput { path: path.clone() });
+                }
+            }
             let e = compare::load_image(expected)?;
             let a = compare::load_image(actual)?;
-            let c = compare::compare(&e, &a, tolerance.threshold).map_err(|source| {
-                ffvk::tools::Error::Compare {
-                    expected: expected.clone(),
-                    actual: actual.clone(),
-                    source,
-                }
+            let c = compare::compare(&e, &a, &tolerance).map_err(|source| ffvk::tools::Error::Compare {
+                expected: expected.clone(),
+                actual: actual.clone(),
+                source,
             })?;
             println!("{}", c.summary());
             if let Some(path) = diff {

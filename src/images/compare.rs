@@ -44,7 +44,28 @@ impl Default for Tolerance {
     }
 }
 
+/// A tolerance value out of its range.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{name} = {value} is out of range: expected a number in [0, 1]")]
+pub struct ToleranceError {
+    /// `max_share` or `max_flip`.
+    pub name: &'static str,
+    /// The value given.
+    pub value: f64,
+}
+
 impl Tolerance {
+    /// Checks that the shares are numbers in [0, 1] (a NaN would fail every image, an
+    /// infinity pass every one).
+    pub fn validate(&self) -> Result<(), ToleranceError> {
+        for (name, value) in [("max_share", self.max_share), ("max_flip", self.max_flip as f64)] {
+            if !(0.0..=1.0).contains(&value) {
+                return Err(ToleranceError { name, value });
+            }
+        }
+        Ok(())
+    }
+
     /// Byte-identical images only.
     pub const EXACT: Tolerance = Tolerance {
         threshold: 0,
@@ -73,15 +94,18 @@ pub struct Comparison {
     pub over: usize,
     /// `over` as a share of all pixels.
     pub share_over: f64,
-    /// Mean FLIP error over the image (RGB), 0 for identical images.
-    pub flip_mean: f32,
+    /// Mean FLIP error over the image (RGB): 0 for identical RGB, `None` when it was not
+    /// needed (the share over the threshold already fails the tolerance compared with).
+    pub flip_mean: Option<f32>,
     pub worst: Option<WorstPixel>,
     pub threshold: u8,
 }
 
 impl Comparison {
+    /// Whether the images pass `tolerance` (the one they were compared with: without FLIP,
+    /// an image never passes).
     pub fn passes(&self, tolerance: &Tolerance) -> bool {
-        self.share_over <= tolerance.max_share && self.flip_mean <= tolerance.max_flip
+        self.share_over <= tolerance.max_share && self.flip_mean.is_some_and(|f| f <= tolerance.max_flip)
     }
 
     pub fn identical(&self) -> bool {
@@ -97,20 +121,60 @@ impl Comparison {
             ),
             None => String::new(),
         };
+        let flip = match self.flip_mean {
+            Some(f) => format!("FLIP mean {f:.5}"),
+            None => "FLIP not computed (the share over the threshold decides)".into(),
+        };
         format!(
-            "max diff RGBA {:?}, {} pixel(s) ({:.4}%) over {}/255, FLIP mean {:.5}{worst}",
+            "max diff RGBA {:?}, {} pixel(s) ({:.4}%) over {}/255, {flip}{worst}",
             self.max_diff,
             self.over,
             self.share_over * 100.0,
             self.threshold,
-            self.flip_mean
         )
     }
 }
 
-/// Compares two images of the same size; `threshold` is the per-channel difference a pixel
-/// may have before it counts as over.
-pub fn compare(expected: &RgbaImage, actual: &RgbaImage, threshold: u8) -> Result<Comparison, SizeMismatch> {
+/// When to compute FLIP.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Flip {
+    /// Only when the per-channel check does not decide: the images differ in RGB and the
+    /// share over the threshold is within the tolerance.
+    WhenNeeded,
+    /// Whenever the images differ in RGB.
+    Always,
+}
+
+/// Compares two images of the same size under `tolerance`, computing FLIP only when the
+/// per-channel check does not decide.
+pub fn compare(
+    expected: &RgbaImage,
+    actual: &RgbaImage,
+    tolerance: &Tolerance,
+) -> Result<Comparison, SizeMismatch> {
+    compare_with(expected, actual, tolerance, Flip::WhenNeeded)
+}
+
+/// [`compare`] with the choice of when to compute FLIP.
+pub fn compare_with(
+    expected: &RgbaImage,
+    actual: &RgbaImage,
+    tolerance: &Tolerance,
+    flip: Flip,
+) -> Result<Comparison, SizeMismatch> {
+    let mut c = channels(expected, actual, tolerance.threshold)?;
+    c.flip_mean = if c.max_diff[..3] == [0, 0, 0] {
+        Some(0.0)
+    } else if flip == Flip::WhenNeeded && c.share_over > tolerance.max_share {
+        None
+    } else {
+        Some(flip_mean(expected, actual))
+    };
+    Ok(c)
+}
+
+/// The per-channel part of a comparison (no FLIP yet).
+fn channels(expected: &RgbaImage, actual: &RgbaImage, threshold: u8) -> Result<Comparison, SizeMismatch> {
     if expected.dimensions() != actual.dimensions() {
         return Err(SizeMismatch {
             expected: expected.dimensions(),
@@ -121,11 +185,19 @@ pub fn compare(expected: &RgbaImage, actual: &RgbaImage, threshold: u8) -> Resul
     let mut max_diff = [0u8; 4];
     let mut over = 0;
     let mut worst: Option<(u8, WorstPixel)> = None;
-    for (x, y, e) in expected.enumerate_pixels() {
-        let a = actual.get_pixel(x, y);
+    for (i, (e, a)) in expected
+        .as_raw()
+        .chunks_exact(4)
+        .zip(actual.as_raw().chunks_exact(4))
+        .enumerate()
+    {
+        if e == a {
+            continue;
+        }
+        let (x, y) = ((i % width as usize) as u32, (i / width as usize) as u32);
         let mut pixel_max = 0;
         for (c, m) in max_diff.iter_mut().enumerate() {
-            let d = e.0[c].abs_diff(a.0[c]);
+            let d = e[c].abs_diff(a[c]);
             *m = (*m).max(d);
             pixel_max = pixel_max.max(d);
         }
@@ -138,61 +210,125 @@ pub fn compare(expected: &RgbaImage, actual: &RgbaImage, threshold: u8) -> Resul
                 WorstPixel {
                     x,
                     y,
-                    expected: e.0,
-                    actual: a.0,
+                    expected: [e[0], e[1], e[2], e[3]],
+                    actual: [a[0], a[1], a[2], a[3]],
                 },
             ));
         }
     }
-    let flip_mean = if max_diff[..3] == [0, 0, 0] {
-        0.0
-    } else {
-        flip_pool(expected, actual).mean()
-    };
     Ok(Comparison {
         width,
         height,
         max_diff,
         over,
         share_over: over as f64 / (width as f64 * height as f64),
-        flip_mean,
+        flip_mean: None,
         worst: worst.map(|(_, w)| w),
         threshold,
     })
 }
 
-fn rgb_bytes(image: &RgbaImage) -> Vec<u8> {
-    image.pixels().flat_map(|p| [p.0[0], p.0[1], p.0[2]]).collect()
+/// Images up to this many pixels get FLIP in one piece; larger ones in tiles.
+const FLIP_WHOLE_PIXELS: u64 = 2048 * 2048;
+/// The side of a FLIP tile's interior.
+const FLIP_TILE: u32 = 1024;
+/// Pixels of context around a tile's interior: more than the reach of FLIP's filters at its
+/// default 67 pixels per degree, so that interior values match the whole-image ones.
+const FLIP_MARGIN: u32 = 48;
+
+/// The RGB bytes of the `w`×`h` region of `image` at (`x0`, `y0`).
+fn rgb_region(image: &RgbaImage, x0: u32, y0: u32, w: u32, h: u32) -> Vec<u8> {
+    let mut out = Vec::with_capacity((w * h * 3) as usize);
+    let stride = image.width() as usize * 4;
+    for y in y0..y0 + h {
+        let row = &image.as_raw()[y as usize * stride..][..stride];
+        for p in row[x0 as usize * 4..(x0 + w) as usize * 4].chunks_exact(4) {
+            out.extend_from_slice(&p[..3]);
+        }
+    }
+    out
 }
 
-fn flip_map(expected: &RgbaImage, actual: &RgbaImage) -> nv_flip::FlipImageFloat {
-    let (w, h) = expected.dimensions();
-    let reference = nv_flip::FlipImageRgb8::with_data(w, h, &rgb_bytes(expected));
-    let test = nv_flip::FlipImageRgb8::with_data(w, h, &rgb_bytes(actual));
+/// FLIP over the `w`×`h` region at (`x0`, `y0`) of both images.
+fn flip_region(
+    expected: &RgbaImage,
+    actual: &RgbaImage,
+    x0: u32,
+    y0: u32,
+    w: u32,
+    h: u32,
+) -> nv_flip::FlipImageFloat {
+    let reference = nv_flip::FlipImageRgb8::with_data(w, h, &rgb_region(expected, x0, y0, w, h));
+    let test = nv_flip::FlipImageRgb8::with_data(w, h, &rgb_region(actual, x0, y0, w, h));
     nv_flip::flip(reference, test, nv_flip::DEFAULT_PIXELS_PER_DEGREE)
 }
 
-fn flip_pool(expected: &RgbaImage, actual: &RgbaImage) -> nv_flip::FlipPool {
-    nv_flip::FlipPool::from_image(&flip_map(expected, actual))
+/// Calls `visit` with each tile's interior (x, y, width, height) and the FLIP values of that
+/// interior, row by row; memory stays bounded by one tile with its margin.
+fn flip_tiles(expected: &RgbaImage, actual: &RgbaImage, mut visit: impl FnMut(u32, u32, u32, u32, &[f32])) {
+    let (w, h) = expected.dimensions();
+    if u64::from(w) * u64::from(h) <= FLIP_WHOLE_PIXELS {
+        visit(0, 0, w, h, &flip_region(expected, actual, 0, 0, w, h).to_vec());
+        return;
+    }
+    for ty in (0..h).step_by(FLIP_TILE as usize) {
+        for tx in (0..w).step_by(FLIP_TILE as usize) {
+            let (iw, ih) = (FLIP_TILE.min(w - tx), FLIP_TILE.min(h - ty));
+            let (x0, y0) = (tx.saturating_sub(FLIP_MARGIN), ty.saturating_sub(FLIP_MARGIN));
+            let (x1, y1) = ((tx + iw + FLIP_MARGIN).min(w), (ty + ih + FLIP_MARGIN).min(h));
+            let tile = flip_region(expected, actual, x0, y0, x1 - x0, y1 - y0).to_vec();
+            let tile_w = (x1 - x0) as usize;
+            let mut interior = Vec::with_capacity((iw * ih) as usize);
+            for y in ty..ty + ih {
+                let row = (y - y0) as usize * tile_w;
+                interior.extend_from_slice(&tile[row + (tx - x0) as usize..][..iw as usize]);
+            }
+            visit(tx, ty, iw, ih, &interior);
+        }
+    }
+}
+
+/// The mean FLIP error over the whole image.
+fn flip_mean(expected: &RgbaImage, actual: &RgbaImage) -> f32 {
+    let (w, h) = expected.dimensions();
+    if u64::from(w) * u64::from(h) <= FLIP_WHOLE_PIXELS {
+        // In one piece, FLIP's own pool gives the mean (as earlier versions reported).
+        return nv_flip::FlipPool::from_image(&flip_region(expected, actual, 0, 0, w, h)).mean();
+    }
+    let mut sum = 0.0f64;
+    flip_tiles(expected, actual, |_, _, _, _, values| {
+        sum += values.iter().map(|&v| f64::from(v)).sum::<f64>();
+    });
+    (sum / (f64::from(w) * f64::from(h))) as f32
 }
 
 /// A heat map of where the images differ: FLIP's error through the magma color map; pixels
 /// over `threshold` that FLIP rates dim are painted red, so that a change of a few levels past
 /// the threshold cannot hide in the dark end of the map.
 pub fn heat_map(expected: &RgbaImage, actual: &RgbaImage, threshold: u8) -> Result<RgbaImage, SizeMismatch> {
-    compare(expected, actual, threshold)?; // size check
+    if expected.dimensions() != actual.dimensions() {
+        return Err(SizeMismatch {
+            expected: expected.dimensions(),
+            actual: actual.dimensions(),
+        });
+    }
     let (w, h) = expected.dimensions();
-    let colored = flip_map(expected, actual)
-        .apply_color_lut(&nv_flip::magma_lut())
-        .to_vec();
-    Ok(RgbaImage::from_fn(w, h, |x, y| {
-        let i = ((y * w + x) * 3) as usize;
-        let (e, a) = (expected.get_pixel(x, y), actual.get_pixel(x, y));
-        let over = (0..4).any(|c| e.0[c].abs_diff(a.0[c]) > threshold);
-        if over && colored[i] < 160 {
-            Rgba([255, 40, 40, 255])
-        } else {
-            Rgba([colored[i], colored[i + 1], colored[i + 2], 255])
+    let lut = nv_flip::magma_lut().to_vec();
+    let mut map = RgbaImage::new(w, h);
+    flip_tiles(expected, actual, |tx, ty, tw, _th, values| {
+        for (i, &v) in values.iter().enumerate() {
+            let (x, y) = (tx + i as u32 % tw, ty + i as u32 / tw);
+            let (e, a) = (expected.get_pixel(x, y), actual.get_pixel(x, y));
+            let over = (0..4).any(|c| e.0[c].abs_diff(a.0[c]) > threshold);
+            let k = (v.clamp(0.0, 1.0) * 255.0).round() as usize * 3;
+            let colored = [lut[k], lut[k + 1], lut[k + 2]];
+            let pixel = if over && colored[0] < 160 {
+                Rgba([255, 40, 40, 255])
+            } else {
+                Rgba([colored[0], colored[1], colored[2], 255])
+            };
+            map.put_pixel(x, y, pixel);
         }
-    }))
+    });
+    Ok(map)
 }

@@ -70,6 +70,26 @@ pub enum Error {
         size: (u32, u32),
     },
 
+    /// Two scenes of one run would write the same image.
+    #[error("{} and {} would both write the image {name}.png: expected scene names that differ (in a folder run, images mirror the scenes' paths below the folder)", .first.display(), .second.display())]
+    NameClash {
+        name: String,
+        first: PathBuf,
+        second: PathBuf,
+    },
+
+    /// Outputs would be written into the reference folder.
+    #[error("the output folder {} is, or lies inside, the reference folder {}: references are read-only unless blessed; expected --out outside it", .output.display(), .references.display())]
+    OutputInReferences { output: PathBuf, references: PathBuf },
+
+    /// An output would replace one of the command's own inputs.
+    #[error("{}: the output would overwrite an input of the same command: expected another path", .path.display())]
+    OverwritesInput { path: PathBuf },
+
+    /// A tolerance out of its range.
+    #[error(transparent)]
+    Tolerance(#[from] crate::images::compare::ToleranceError),
+
     /// A path argument that names the wrong kind of thing.
     #[error("{}: {problem}", .path.display())]
     Path { path: PathBuf, problem: &'static str },

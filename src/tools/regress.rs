@@ -24,9 +24,11 @@ pub fn bless_from_env() -> bool {
 /// What to render and how to check it.
 #[derive(Debug, Clone, Default)]
 pub struct Job {
-    /// Scene files, or directories of them (*.toml, in name order).
+    /// Scene files, or directories of them (*.toml below them, in path order).
     pub scenes: Vec<PathBuf>,
-    /// The output directory (NAME.png each); `None` writes next to each scene file.
+    /// The output directory; `None` writes next to each scene file. An image's name mirrors
+    /// its scene's path relative to the directory given (`a/s.toml` → `a/s.png`); a scene
+    /// given as a file is named by its stem.
     pub out_dir: Option<PathBuf>,
     /// Lighting modes to render each scene in; empty: the scene's own. With more than one,
     /// images are named NAME_MODE.png.
@@ -70,6 +72,8 @@ pub struct Row {
     pub name: String,
     /// What happened.
     pub status: Status,
+    /// Why the image could not be compared (a reference of another size), when it could not.
+    pub problem: Option<String>,
     /// The comparison with the reference, when there was one.
     pub comparison: Option<Comparison>,
     /// The image written.
@@ -78,19 +82,24 @@ pub struct Row {
     pub diff: Option<PathBuf>,
 }
 
-/// Expands directories into their *.toml files, in name order.
-pub fn scene_files(inputs: &[PathBuf]) -> Result<Vec<PathBuf>> {
+/// One scene of a run: its file and the name its images take (no extension).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SceneFile {
+    /// The scene file.
+    pub path: PathBuf,
+    /// Its path relative to the folder given, without `.toml` (`a/s` for `DIR/a/s.toml`), or
+    /// the file's stem for a file given by itself.
+    pub name: String,
+}
+
+/// Expands folders into their *.toml files (below them, in path order) and names every
+/// scene; two scenes that would write the same image are an error.
+pub fn scene_files(inputs: &[PathBuf]) -> Result<Vec<SceneFile>> {
     let mut files = Vec::new();
     for input in inputs {
         if input.is_dir() {
-            let entries = std::fs::read_dir(input).map_err(|source| Error::Read {
-                path: input.clone(),
-                source,
-            })?;
-            let mut found: Vec<PathBuf> = entries
-                .filter_map(|e| e.ok().map(|e| e.path()))
-                .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-                .collect();
+            let mut found = Vec::new();
+            collect_toml(input, &mut found)?;
             found.sort();
             if found.is_empty() {
                 return Err(Error::Path {
@@ -98,12 +107,88 @@ pub fn scene_files(inputs: &[PathBuf]) -> Result<Vec<PathBuf>> {
                     problem: "no .toml scene files in this directory",
                 });
             }
-            files.extend(found);
+            for path in found {
+                let relative = path.strip_prefix(input).unwrap_or(&path).with_extension("");
+                let name = relative
+                    .components()
+                    .map(|c| c.as_os_str().to_string_lossy().into_owned())
+                    .collect::<Vec<_>>()
+                    .join("/");
+                files.push(SceneFile { path, name });
+            }
         } else {
-            files.push(input.clone());
+            let name = input
+                .file_stem()
+                .map(|s| s.to_string_lossy().into_owned())
+                .unwrap_or_default();
+            files.push(SceneFile {
+                path: input.clone(),
+                name,
+            });
+        }
+    }
+    for (i, f) in files.iter().enumerate() {
+        if let Some(other) = files[..i].iter().find(|o| o.name == f.name) {
+            return Err(Error::NameClash {
+                name: f.name.clone(),
+                first: other.path.clone(),
+                second: f.path.clone(),
+            });
         }
     }
     Ok(files)
+}
+
+/// Every *.toml file below `dir`.
+fn collect_toml(dir: &Path, found: &mut Vec<PathBuf>) -> Result<()> {
+    let entries = std::fs::read_dir(dir).map_err(|source| Error::Read {
+        path: dir.to_path_buf(),
+        source,
+    })?;
+    for entry in entries {
+        let path = entry
+            .map_err(|source| Error::Read {
+                path: dir.to_path_buf(),
+                source,
+            })?
+            .path();
+        if path.is_dir() {
+            collect_toml(&path, found)?;
+        } else if path.extension().is_some_and(|x| x == "toml") {
+            found.push(path);
+        }
+    }
+    Ok(())
+}
+
+/// Refuses a job that would write into its references or over its own inputs: references
+/// are only written by blessing, and only the references themselves.
+pub fn check_outputs(job: &Job, files: &[SceneFile]) -> Result<()> {
+    let Some(refs) = &job.references else {
+        return Ok(());
+    };
+    if refs.exists() && !refs.is_dir() {
+        return Err(Error::Path {
+            path: refs.clone(),
+            problem: "is not a folder: --check expects a folder of reference images",
+        });
+    }
+    let out_dirs: Vec<PathBuf> = match &job.out_dir {
+        Some(d) => vec![d.clone()],
+        None => files
+            .iter()
+            .map(|f| f.path.parent().unwrap_or(Path::new(".")).to_path_buf())
+            .collect(),
+    };
+    for dir in out_dirs {
+        if crate::files::is_within(&dir, refs) {
+            return Err(Error::OutputInReferences {
+                output: dir,
+                references: refs.clone(),
+            });
+        }
+    }
+    Ok(())
 }
 
 /// Loads a scene, resized when asked; warnings go to `log`.
@@ -119,16 +204,16 @@ pub fn load_scene(path: &Path, size: Option<(u32, u32)>, log: &mut dyn FnMut(&st
 }
 
 /// Renders every scene of `job` in every mode, checking and blessing as asked. Errors stop
-/// the run (a scene that cannot load is not a difference); differences are rows.
+/// the run (a scene that cannot load is not a difference); differences, missing references
+/// and references of another size are rows. Refuses, before rendering anything, a job whose
+/// outputs would land in its reference folder or two scenes that would write one image.
 pub fn run(renderer: &mut Renderer, job: &Job, log: &mut dyn FnMut(&str)) -> Result<Vec<Row>> {
+    job.tolerance.validate()?;
     let files = scene_files(&job.scenes)?;
+    check_outputs(job, &files)?;
     let mut rows = Vec::new();
     for file in &files {
-        let scene = load_scene(file, job.size, log)?;
-        let stem = file
-            .file_stem()
-            .map(|s| s.to_string_lossy().into_owned())
-            .unwrap_or_default();
+        let scene = load_scene(&file.path, job.size, log)?;
         let modes: Vec<Option<LightingMode>> = if job.modes.is_empty() {
             vec![None]
         } else {
@@ -136,19 +221,27 @@ pub fn run(renderer: &mut Renderer, job: &Job, log: &mut dyn FnMut(&str)) -> Res
         };
         for mode in &modes {
             let name = match mode {
-                Some(m) if modes.len() > 1 => format!("{stem}_{}", m.name()),
-                _ => stem.clone(),
+                Some(m) if modes.len() > 1 => format!("{}_{}", file.name, m.name()),
+                _ => file.name.clone(),
             };
             let image = render_scene(renderer, &scene, *mode)?;
-            let dir = job
-                .out_dir
-                .clone()
-                .unwrap_or_else(|| file.parent().unwrap_or(Path::new(".")).to_path_buf());
-            let output = dir.join(format!("{name}.png"));
+            // Next to the scene file, an image is named by the file's stem.
+            let (dir, local) = match &job.out_dir {
+                Some(d) => (d.clone(), name.clone()),
+                None => {
+                    let stem = name.rsplit('/').next().unwrap_or(&name).to_string();
+                    (file.path.parent().unwrap_or(Path::new(".")).to_path_buf(), stem)
+                }
+            };
+            let output = dir.join(format!("{local}.png"));
+            if crate::files::same_file(&output, &file.path) {
+                return Err(Error::OverwritesInput { path: output });
+            }
             save_png(&image, &output)?;
             let mut row = Row {
                 name: name.clone(),
                 status: Status::Rendered,
+                problem: None,
                 comparison: None,
                 output: output.clone(),
                 diff: None,
@@ -163,24 +256,40 @@ pub fn run(renderer: &mut Renderer, job: &Job, log: &mut dyn FnMut(&str)) -> Res
                     };
                 } else {
                     let expected = load_image(&reference)?;
-                    let c = compare(&expected, &image, job.tolerance.threshold)?;
-                    row.status = match (c.passes(&job.tolerance), job.bless && !c.identical()) {
-                        (_, true) => Status::Blessed,
-                        (true, false) => Status::Pass,
-                        (false, false) => Status::Fail,
-                    };
-                    if !c.identical() {
-                        let diff = dir.join(format!("{name}.diff.png"));
-                        save_png(&heat_map(&expected, &image, job.tolerance.threshold)?, &diff)?;
-                        row.diff = Some(diff);
+                    match compare(&expected, &image, &job.tolerance) {
+                        Err(mismatch) if !job.bless => {
+                            row.status = Status::Fail;
+                            row.problem = Some(format!(
+                                "the reference {} is {}x{}, the image {} is {}x{}",
+                                reference.display(),
+                                mismatch.expected.0,
+                                mismatch.expected.1,
+                                output.display(),
+                                mismatch.actual.0,
+                                mismatch.actual.1
+                            ));
+                        }
+                        Err(_) => row.status = Status::Blessed,
+                        Ok(c) => {
+                            row.status = match (c.passes(&job.tolerance), job.bless && !c.identical()) {
+                                (_, true) => Status::Blessed,
+                                (true, false) => Status::Pass,
+                                (false, false) => Status::Fail,
+                            };
+                            if !c.identical() {
+                                let diff = dir.join(format!("{local}.diff.png"));
+                                save_png(&heat_map(&expected, &image, job.tolerance.threshold)?, &diff)?;
+                                row.diff = Some(diff);
+                            }
+                            row.comparison = Some(c);
+                        }
                     }
-                    row.comparison = Some(c);
                 }
                 if row.status == Status::Blessed {
                     save_png(&image, &reference)?;
                 }
             }
-            log(&format!("{} -> {}", file.display(), output.display()));
+            log(&format!("{} -> {}", file.path.display(), output.display()));
             rows.push(row);
         }
     }
@@ -209,7 +318,7 @@ pub fn table(rows: &[Row]) -> String {
             Some(c) => (
                 format!("{:?}", c.max_diff),
                 format!("{:.4}", c.share_over * 100.0),
-                format!("{:.5}", c.flip_mean),
+                c.flip_mean.map_or("-".into(), |f| format!("{f:.5}")),
             ),
             None => ("-".into(), "-".into(), "-".into()),
         };
@@ -230,7 +339,7 @@ mod tests {
             max_diff,
             over: (share_over * 128.0 * 128.0) as usize,
             share_over,
-            flip_mean,
+            flip_mean: Some(flip_mean),
             worst: None,
             threshold: 1,
         }
@@ -244,6 +353,7 @@ mod tests {
             comparison,
             output: PathBuf::from(format!("out/{name}.png")),
             diff: None,
+            problem: None,
         };
         let same = comparison([0; 4], 0.0, 0.0);
         let different = comparison([255, 12, 3, 0], 0.0123, 0.04567);

@@ -108,7 +108,7 @@ fn golden_demo_panels() {
             continue;
         }
         let expected = load_image(&reference).unwrap();
-        let c = compare(&expected, &p.image, tolerance.threshold).unwrap();
+        let c = compare(&expected, &p.image, &tolerance).unwrap();
         if !c.identical() && bless {
             save_png(&p.image, &reference).unwrap();
         } else if !c.passes(&tolerance) {

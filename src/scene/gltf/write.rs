@@ -169,7 +169,8 @@ pub fn write_gltf(mesh: &MeshData, path: &Path) -> io::Result<()> {
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_else(|| "mesh".into());
     let document = gltf_document(mesh, &name)?;
-    std::fs::write(path, document)
+    // Atomically: a failed write leaves the old file, never a partial one.
+    crate::files::write_bytes(path, document.as_bytes())
 }
 
 #[cfg(test)]

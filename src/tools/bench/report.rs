@@ -16,7 +16,7 @@ use crate::tools::{Error, Result};
 // The files.
 
 fn write_file(path: &Path, bytes: &[u8]) -> Result<()> {
-    std::fs::write(path, bytes).map_err(|source| Error::Write {
+    crate::files::write_bytes(path, bytes).map_err(|source| Error::Write {
         path: path.to_path_buf(),
         source,
     })
