@@ -4,6 +4,7 @@ mod bench;
 mod conformance;
 mod determinism;
 mod embedding;
+mod files;
 mod gl_oracle;
 mod golden;
 mod layout;
