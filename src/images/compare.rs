@@ -228,13 +228,18 @@ fn channels(expected: &RgbaImage, actual: &RgbaImage, threshold: u8) -> Result<C
     })
 }
 
-/// Images up to this many pixels get FLIP in one piece; larger ones in tiles.
+/// Images up to this many pixels get FLIP in one piece; larger ones in regions around their
+/// differences.
 const FLIP_WHOLE_PIXELS: u64 = 2048 * 2048;
-/// The side of a FLIP tile's interior.
-const FLIP_TILE: u32 = 1024;
-/// Pixels of context around a tile's interior: more than the reach of FLIP's filters at its
-/// default 67 pixels per degree, so that interior values match the whole-image ones.
-const FLIP_MARGIN: u32 = 48;
+/// The side of the blocks FLIP's regions are made of.
+const BLOCK: u32 = 32;
+/// The most block rows one region spans (bounding its memory: 512 rows of the image).
+const REGION_BLOCK_ROWS: u32 = 16;
+/// Pixels of context around a region: more than the reach of FLIP's filters at its default
+/// 67 pixels per degree (about 13), so that region values equal whole-image values. FLIP is
+/// exactly 0 wherever both images agree within that reach, so regions cover only the blocks
+/// within that reach of a difference.
+const FLIP_MARGIN: u32 = 24;
 
 /// The RGB bytes of the `w`×`h` region of `image` at (`x0`, `y0`).
 fn rgb_region(image: &RgbaImage, x0: u32, y0: u32, w: u32, h: u32) -> Vec<u8> {
@@ -263,28 +268,111 @@ fn flip_region(
     nv_flip::flip(reference, test, nv_flip::DEFAULT_PIXELS_PER_DEGREE)
 }
 
-/// Calls `visit` with each tile's interior (x, y, width, height) and the FLIP values of that
-/// interior, row by row; memory stays bounded by one tile with its margin.
+/// Which blocks lie within [`FLIP_MARGIN`] of an RGB difference, row-major, `columns` per
+/// block row.
+fn needed_blocks(expected: &RgbaImage, actual: &RgbaImage) -> (Vec<bool>, u32, u32) {
+    let (w, h) = expected.dimensions();
+    let (columns, rows) = (w.div_ceil(BLOCK), h.div_ceil(BLOCK));
+    let mut needed = vec![false; (columns * rows) as usize];
+    let stride = w as usize * 4;
+    for y in 0..h {
+        let (e, a) = (
+            &expected.as_raw()[y as usize * stride..][..stride],
+            &actual.as_raw()[y as usize * stride..][..stride],
+        );
+        if e == a {
+            continue;
+        }
+        let (r0, r1) = (
+            y.saturating_sub(FLIP_MARGIN) / BLOCK,
+            (y + FLIP_MARGIN).min(h - 1) / BLOCK,
+        );
+        for (i, (pe, pa)) in e.chunks_exact(4).zip(a.chunks_exact(4)).enumerate() {
+            if pe[..3] == pa[..3] {
+                continue;
+            }
+            let x = i as u32;
+            let (c0, c1) = (
+                x.saturating_sub(FLIP_MARGIN) / BLOCK,
+                (x + FLIP_MARGIN).min(w - 1) / BLOCK,
+            );
+            for r in r0..=r1 {
+                for c in c0..=c1 {
+                    needed[(r * columns + c) as usize] = true;
+                }
+            }
+        }
+    }
+    (needed, columns, rows)
+}
+
+/// The regions FLIP is computed on, as (first column, end column, first row, end row) in
+/// blocks: each block row's runs of needed blocks, a run merged with the same run in the rows
+/// below, up to [`REGION_BLOCK_ROWS`] rows.
+fn regions(needed: &[bool], columns: u32, rows: u32) -> Vec<(u32, u32, u32, u32)> {
+    let runs = |r: u32| {
+        let mut out = Vec::new();
+        let mut c = 0;
+        while c < columns {
+            if needed[(r * columns + c) as usize] {
+                let start = c;
+                while c < columns && needed[(r * columns + c) as usize] {
+                    c += 1;
+                }
+                out.push((start, c));
+            } else {
+                c += 1;
+            }
+        }
+        out
+    };
+    let mut done = Vec::new();
+    // Regions still growing downwards: (start, end, first row).
+    let mut open: Vec<(u32, u32, u32)> = Vec::new();
+    for r in 0..rows {
+        let row_runs = runs(r);
+        let mut still_open = Vec::new();
+        for (start, end, first) in open {
+            if row_runs.contains(&(start, end)) && r - first < REGION_BLOCK_ROWS {
+                still_open.push((start, end, first));
+            } else {
+                done.push((start, end, first, r));
+            }
+        }
+        for run in row_runs {
+            if !still_open.iter().any(|&(s, e, _)| (s, e) == run) {
+                still_open.push((run.0, run.1, r));
+            }
+        }
+        open = still_open;
+    }
+    done.extend(open.into_iter().map(|(s, e, first)| (s, e, first, rows)));
+    done
+}
+
+/// Calls `visit` with regions (x, y, width, height) of the image and their FLIP values,
+/// covering every pixel whose FLIP value may be non-zero; every other pixel's value is 0.
+/// Memory stays bounded by one region.
 fn flip_tiles(expected: &RgbaImage, actual: &RgbaImage, mut visit: impl FnMut(u32, u32, u32, u32, &[f32])) {
     let (w, h) = expected.dimensions();
     if u64::from(w) * u64::from(h) <= FLIP_WHOLE_PIXELS {
         visit(0, 0, w, h, &flip_region(expected, actual, 0, 0, w, h).to_vec());
         return;
     }
-    for ty in (0..h).step_by(FLIP_TILE as usize) {
-        for tx in (0..w).step_by(FLIP_TILE as usize) {
-            let (iw, ih) = (FLIP_TILE.min(w - tx), FLIP_TILE.min(h - ty));
-            let (x0, y0) = (tx.saturating_sub(FLIP_MARGIN), ty.saturating_sub(FLIP_MARGIN));
-            let (x1, y1) = ((tx + iw + FLIP_MARGIN).min(w), (ty + ih + FLIP_MARGIN).min(h));
-            let tile = flip_region(expected, actual, x0, y0, x1 - x0, y1 - y0).to_vec();
-            let tile_w = (x1 - x0) as usize;
-            let mut interior = Vec::with_capacity((iw * ih) as usize);
-            for y in ty..ty + ih {
-                let row = (y - y0) as usize * tile_w;
-                interior.extend_from_slice(&tile[row + (tx - x0) as usize..][..iw as usize]);
-            }
-            visit(tx, ty, iw, ih, &interior);
+    let (needed, columns, rows) = needed_blocks(expected, actual);
+    for (c0, c1, r0, r1) in regions(&needed, columns, rows) {
+        let (tx, ty) = (c0 * BLOCK, r0 * BLOCK);
+        let (iw, ih) = ((c1 * BLOCK).min(w) - tx, (r1 * BLOCK).min(h) - ty);
+        let (x0, y0) = (tx.saturating_sub(FLIP_MARGIN), ty.saturating_sub(FLIP_MARGIN));
+        let (x1, y1) = ((tx + iw + FLIP_MARGIN).min(w), (ty + ih + FLIP_MARGIN).min(h));
+        let tile = flip_region(expected, actual, x0, y0, x1 - x0, y1 - y0).to_vec();
+        let tile_w = (x1 - x0) as usize;
+        let mut interior = Vec::with_capacity((iw * ih) as usize);
+        for y in ty..ty + ih {
+            let row = (y - y0) as usize * tile_w;
+            interior.extend_from_slice(&tile[row + (tx - x0) as usize..][..iw as usize]);
         }
+        visit(tx, ty, iw, ih, &interior);
     }
 }
 
@@ -314,7 +402,8 @@ pub fn heat_map(expected: &RgbaImage, actual: &RgbaImage, threshold: u8) -> Resu
     }
     let (w, h) = expected.dimensions();
     let lut = nv_flip::magma_lut().to_vec();
-    let mut map = RgbaImage::new(w, h);
+    // Pixels no region covers have FLIP 0.
+    let mut map = RgbaImage::from_pixel(w, h, Rgba([lut[0], lut[1], lut[2], 255]));
     flip_tiles(expected, actual, |tx, ty, tw, _th, values| {
         for (i, &v) in values.iter().enumerate() {
             let (x, y) = (tx + i as u32 % tw, ty + i as u32 / tw);
@@ -331,4 +420,57 @@ pub fn heat_map(expected: &RgbaImage, actual: &RgbaImage, threshold: u8) -> Resu
         }
     });
     Ok(map)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Over FLIP_WHOLE_PIXELS, FLIP is computed in regions around the differences; the mean
+    /// must equal the whole image's (FLIP is 0 wherever both images agree within its reach).
+    #[test]
+    fn flip_in_regions_equals_flip_of_the_whole_image() {
+        let (w, h) = (2100u32, 2050u32);
+        let expected = RgbaImage::from_fn(w, h, |x, y| {
+            Rgba([(x % 251) as u8, (y % 241) as u8, ((x ^ y) & 0x7f) as u8, 255])
+        });
+        let mut actual = expected.clone();
+        for k in 0..40u32 {
+            let (x, y) = ((k * 7919) % w, (k * 104_729) % h);
+            actual.put_pixel(x, y, Rgba([0, 255, 0, 255]));
+        }
+        for y in 700..760 {
+            for x in 1500..1620 {
+                actual.put_pixel(x, y, Rgba([200, 10, 10, 255]));
+            }
+        }
+        let whole = nv_flip::FlipPool::from_image(&flip_region(&expected, &actual, 0, 0, w, h)).mean();
+        let regions = flip_mean(&expected, &actual);
+        assert!(
+            (whole - regions).abs() <= 1e-5 * whole,
+            "whole image {whole}, regions {regions}"
+        );
+        // And the heat map covers the differences.
+        let map = heat_map(&expected, &actual, 2).unwrap();
+        assert_ne!(map.get_pixel(1550, 730), map.get_pixel(10, 10));
+    }
+
+    #[test]
+    fn tolerances_out_of_range_are_refused() {
+        for (share, flip) in [
+            (f64::NAN, 0.0),
+            (0.0, f32::NAN),
+            (f64::INFINITY, 0.0),
+            (-0.1, 0.0),
+            (0.0, 1.5),
+        ] {
+            let t = Tolerance {
+                threshold: 2,
+                max_share: share,
+                max_flip: flip,
+            };
+            assert!(t.validate().is_err(), "{t:?}");
+        }
+        assert!(Tolerance::default().validate().is_ok() && Tolerance::EXACT.validate().is_ok());
+    }
 }
