@@ -322,3 +322,28 @@ fn two_writers_to_one_path_leave_one_whole_image() {
     }
     no_temporaries(&dir);
 }
+
+/// The largest image `render` writes (16384²) can be compared (the decoder's default limit
+/// refused images from 11586² up).
+#[test]
+fn images_of_the_largest_size_can_be_compared() {
+    let dir = scratch("largest");
+    let side = 16384;
+    let a = image::RgbaImage::from_pixel(side, side, image::Rgba([30, 60, 90, 255]));
+    let mut b = a.clone();
+    for y in 100..164 {
+        for x in 16000..16064 {
+            b.put_pixel(x, y, image::Rgba([200, 60, 90, 255]));
+        }
+    }
+    ffvk::images::save_png(&a, &dir.join("a.png")).unwrap();
+    ffvk::images::save_png(&b, &dir.join("b.png")).unwrap();
+    drop((a, b));
+    let out = ffvk(&[&"compare", &dir.join("a.png"), &dir.join("b.png")]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{stdout}{}", stderr(&out));
+    assert!(
+        stdout.contains("max diff RGBA [170, 0, 0, 0]") && stdout.contains("4096 pixel(s)"),
+        "{stdout}"
+    );
+}
