@@ -341,9 +341,14 @@ fn images_of_the_largest_size_can_be_compared() {
     drop((a, b));
     let out = ffvk(&[&"compare", &dir.join("a.png"), &dir.join("b.png")]);
     let stdout = String::from_utf8_lossy(&out.stdout);
-    assert_eq!(out.status.code(), Some(1), "{stdout}{}", stderr(&out));
+    // 4096 pixels over the threshold is 0.0015% of the image: within the default share, and
+    // FLIP (computed around the block only) decides: a pass.
+    assert_eq!(out.status.code(), Some(0), "{stdout}{}", stderr(&out));
     assert!(
-        stdout.contains("max diff RGBA [170, 0, 0, 0]") && stdout.contains("4096 pixel(s)"),
+        stdout.contains("max diff RGBA [170, 0, 0, 0]")
+            && stdout.contains("4096 pixel(s)")
+            && stdout.contains("worst pixel (16000, 100)")
+            && stdout.contains("PASS"),
         "{stdout}"
     );
 }
