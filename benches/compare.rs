@@ -101,6 +101,12 @@ fn main() {
         child(Path::new(&args[i + 1]), Path::new(&args[i + 2]));
         return;
     }
+    // `cargo bench` passes --bench; `cargo test --all-targets` runs this binary without it,
+    // and a test run should not spend minutes measuring.
+    if !args.iter().any(|a| a == "--bench") {
+        println!("compare benchmark: run it with `cargo bench --bench compare`");
+        return;
+    }
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target/bench-compare");
     println!("comparing two {SIDE}² PNGs, decoding included; medians of 3 runs, each its own process");
     println!("| case | total s | decoding s | peak MiB | passes |");

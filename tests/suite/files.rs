@@ -352,3 +352,46 @@ fn images_of_the_largest_size_can_be_compared() {
         "{stdout}"
     );
 }
+
+/// A render onto a full disk (a 64 KiB tmpfs) fails with exit code 2 and leaves the old file.
+/// Mounting needs root, which `make test` has on its Debian machines; elsewhere the test says
+/// it cannot run (the injected-failure unit tests of `ffvk::files` still cover the writer).
+#[test]
+fn a_full_disk_fails_the_render_and_leaves_the_old_file() {
+    let dir = scratch("full_disk");
+    let s = scene(&dir, "s.toml", 1024);
+    let mnt = dir.join("mnt");
+    std::fs::create_dir_all(&mnt).unwrap();
+    let mounted = Command::new("mount")
+        .args([
+            "-t".as_ref(),
+            "tmpfs".as_ref(),
+            "-o".as_ref(),
+            "size=64k".as_ref(),
+            "tmpfs".as_ref(),
+            mnt.as_os_str(),
+        ])
+        .stderr(std::process::Stdio::null())
+        .status()
+        .is_ok_and(|st| st.success());
+    if !mounted {
+        eprintln!("a_full_disk_fails_the_render_and_leaves_the_old_file: cannot mount a tmpfs here (not root?); not run");
+        return;
+    }
+    struct Unmount(PathBuf);
+    impl Drop for Unmount {
+        fn drop(&mut self) {
+            let _ = Command::new("umount").arg(&self.0).status();
+        }
+    }
+    let _unmount = Unmount(mnt.clone());
+    let path = mnt.join("base.png");
+    image::RgbaImage::from_pixel(8, 8, image::Rgba([1, 2, 3, 255]))
+        .save(&path)
+        .unwrap();
+    let before = std::fs::read(&path).unwrap();
+    let out = ffvk(&[&"render", &s, &"-o", &path]);
+    assert_refused(&out, &["base.png", "left as it was"]);
+    assert_eq!(std::fs::read(&path).unwrap(), before, "the old file is intact");
+    no_temporaries(&mnt);
+}
