@@ -89,6 +89,36 @@ pub fn write_bytes(path: &Path, bytes: &[u8]) -> io::Result<()> {
     write_atomically(path, |w| w.write_all(bytes))
 }
 
+/// Reads `path`, which must be a regular file of at most `max` bytes: a device (such as
+/// /dev/zero), a pipe (which could block forever) or a folder is refused before it is opened,
+/// and so is a larger file, with an error naming the path and the limit.
+pub fn read_regular(path: &Path, max: u64) -> io::Result<Vec<u8>> {
+    let meta = fs::metadata(path)?;
+    if !meta.is_file() {
+        return Err(refuse(
+            path,
+            "is not a regular file: expected a file (not a device, pipe or folder)",
+        ));
+    }
+    if meta.len() > max {
+        return Err(refuse(
+            path,
+            &format!("is {} bytes: expected at most {max} bytes", meta.len()),
+        ));
+    }
+    let mut bytes = Vec::new();
+    bytes
+        .try_reserve_exact(meta.len() as usize)
+        .map_err(|_| refuse(path, &format!("cannot allocate {} bytes to read it", meta.len())))?;
+    // The file may grow while it is read: never read past the limit.
+    use std::io::Read;
+    File::open(path)?.take(max + 1).read_to_end(&mut bytes)?;
+    if bytes.len() as u64 > max {
+        return Err(refuse(path, &format!("grew past {max} bytes while being read")));
+    }
+    Ok(bytes)
+}
+
 /// Whether two paths name the same existing file (after symbolic links).
 pub fn same_file(a: &Path, b: &Path) -> bool {
     match (fs::canonicalize(a), fs::canonicalize(b)) {

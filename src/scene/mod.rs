@@ -26,6 +26,10 @@ use crate::mesh::MeshData;
 /// The largest image side a scene may ask for (the renderer also checks its device's limit).
 pub const MAX_SIZE: u32 = 16384;
 
+/// The largest scene file read, in bytes (16 MiB): a scene is a short TOML file; anything
+/// larger is refused before it is read.
+pub const MAX_SCENE_BYTES: u64 = 16 << 20;
+
 /// Why a scene could not be loaded: the scene file, and what was wrong with it. The message
 /// is the path followed by the kind's message.
 #[derive(Debug, thiserror::Error)]
@@ -137,9 +141,16 @@ impl Scene {
 
     /// Reads and checks a scene file.
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
-        let text = std::fs::read_to_string(path).map_err(|source| SceneError {
+        let io = |source| SceneError {
             path: path.to_path_buf(),
             kind: SceneErrorKind::Io { source },
+        };
+        let bytes = crate::files::read_regular(path, MAX_SCENE_BYTES).map_err(io)?;
+        let text = String::from_utf8(bytes).map_err(|e| {
+            io(std::io::Error::new(
+                std::io::ErrorKind::InvalidData,
+                format!("not UTF-8 text: {e}"),
+            ))
         })?;
         Scene::parse(&text, path)
     }

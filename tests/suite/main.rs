@@ -7,6 +7,7 @@ mod embedding;
 mod files;
 mod gl_oracle;
 mod golden;
+mod hostile;
 mod layout;
 mod lighting;
 mod reference;

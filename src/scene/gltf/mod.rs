@@ -32,6 +32,10 @@ use std::path::{Path, PathBuf};
 /// The glTF extensions ffvk understands; a file that requires any other is rejected.
 pub const SUPPORTED_EXTENSIONS: &[&str] = &["KHR_lights_punctual", "KHR_materials_emissive_strength"];
 
+/// The largest glTF, GLB or buffer file read, in bytes (1 GiB): beyond it a file is refused
+/// before it is read.
+pub const MAX_FILE_BYTES: u64 = 1 << 30;
+
 /// One mesh primitive as placed by one node.
 #[derive(Debug, Clone, PartialEq)]
 pub struct LoadedMesh {
@@ -114,6 +118,16 @@ pub enum LoadErrorKind {
         buffer: usize,
         file: PathBuf,
         source: std::io::Error,
+    },
+
+    /// A buffer URI that leaves the glTF file's folder (an absolute path, a `file:` URI, `..`
+    /// past the folder, or a link out of it): an asset may only read `data:` URIs and files
+    /// inside its own folder.
+    #[error("buffer {buffer}: the URI {uri:?} leaves the asset's folder: expected a data: URI or a relative path inside {}", .folder.display())]
+    BufferOutside {
+        buffer: usize,
+        uri: String,
+        folder: PathBuf,
     },
 
     /// A buffer that refers to the GLB binary chunk, in a file without one.

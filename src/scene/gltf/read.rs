@@ -23,7 +23,8 @@ pub(super) fn parse(path: &Path) -> Result<Parsed, LoadError> {
         path: path.to_path_buf(),
         kind,
     };
-    let bytes = std::fs::read(path).map_err(|source| error(LoadErrorKind::Io { source }))?;
+    let bytes = crate::files::read_regular(path, super::MAX_FILE_BYTES)
+        .map_err(|source| error(LoadErrorKind::Io { source }))?;
     let parse_error = |message: String| error(LoadErrorKind::Parse { message });
     let raw: Value = if bytes.starts_with(b"glTF") {
         let glb = gltf::Glb::from_slice(&bytes).map_err(|e| parse_error(e.to_string()))?;
@@ -64,8 +65,40 @@ pub(super) fn read_buffers(
             buffer: index,
             message,
         };
-        let data = gltf::buffer::Data::from_source_and_blob(buffer.source(), Some(base), &mut blob).map_err(
-            |e| {
+        if let gltf::buffer::Source::Uri(uri) = buffer.source() {
+            if !uri.starts_with("data:") {
+                let file = inside_folder(base, uri).ok_or_else(|| {
+                    cx.error(LoadErrorKind::BufferOutside {
+                        buffer: index,
+                        uri: uri.chars().take(200).collect(),
+                        folder: base.to_path_buf(),
+                    })
+                })?;
+                let mut bytes =
+                    crate::files::read_regular(&file, super::MAX_FILE_BYTES).map_err(|source| {
+                        cx.error(LoadErrorKind::BufferFile {
+                            buffer: index,
+                            file: file.clone(),
+                            source,
+                        })
+                    })?;
+                while bytes.len() % 4 != 0 {
+                    bytes.push(0);
+                }
+                if bytes.len() < buffer.length() {
+                    return Err(cx.error(LoadErrorKind::BufferLength {
+                        buffer: index,
+                        len: bytes.len(),
+                        byte_length: buffer.length(),
+                    }));
+                }
+                buffers.push(gltf::buffer::Data(bytes));
+                continue;
+            }
+        }
+        // data: URIs and the GLB chunk; no file is read here.
+        let data =
+            gltf::buffer::Data::from_source_and_blob(buffer.source(), None, &mut blob).map_err(|e| {
                 cx.error(match (buffer.source(), e) {
                     (gltf::buffer::Source::Uri(uri), gltf::Error::Io(source)) => LoadErrorKind::BufferFile {
                         buffer: index,
@@ -81,8 +114,7 @@ pub(super) fn read_buffers(
                     (gltf::buffer::Source::Uri(uri), e) => message(format!("cannot load {uri:?}: {e}")),
                     (gltf::buffer::Source::Bin, e) => message(e.to_string()),
                 })
-            },
-        )?;
+            })?;
         if data.len() < buffer.length() {
             return Err(cx.error(LoadErrorKind::BufferLength {
                 buffer: index,
@@ -93,6 +125,57 @@ pub(super) fn read_buffers(
         buffers.push(data);
     }
     Ok(buffers)
+}
+
+/// The file a relative buffer URI names, when it lies inside `folder`: percent-decoded, not
+/// absolute, no scheme, no `..` component, and inside the folder after symbolic links. `None`
+/// otherwise.
+fn inside_folder(folder: &Path, uri: &str) -> Option<std::path::PathBuf> {
+    if uri.contains(':') {
+        return None;
+    }
+    let decoded = percent_decode(uri)?;
+    let relative = Path::new(&decoded);
+    // `..` can only lead out or back; refused outright, since after a symbolic link it would
+    // not mean what it reads as.
+    if relative.is_absolute()
+        || relative
+            .components()
+            .any(|c| matches!(c, std::path::Component::ParentDir))
+    {
+        return None;
+    }
+    let folder = std::fs::canonicalize(if folder.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        folder
+    })
+    .ok()?;
+    let file = folder.join(relative);
+    match std::fs::canonicalize(&file) {
+        // It exists: after every link it must still be inside.
+        Ok(real) => real.starts_with(&folder).then_some(file),
+        // It does not (or cannot be resolved): the read reports that.
+        Err(_) => Some(file),
+    }
+}
+
+/// `%XX` escapes decoded; `None` when an escape is malformed or the result is not UTF-8.
+fn percent_decode(uri: &str) -> Option<String> {
+    let bytes = uri.as_bytes();
+    let mut out = Vec::with_capacity(bytes.len());
+    let mut i = 0;
+    while i < bytes.len() {
+        if bytes[i] == b'%' {
+            let hex = std::str::from_utf8(bytes.get(i + 1..i + 3)?).ok()?;
+            out.push(u8::from_str_radix(hex, 16).ok()?);
+            i += 3;
+        } else {
+            out.push(bytes[i]);
+            i += 1;
+        }
+    }
+    String::from_utf8(out).ok()
 }
 
 /// Walks the default scene (or the first scene; or, in a file with no scene, every root node,
@@ -116,77 +199,85 @@ pub(super) fn walk(
             .push("the file has no scene: loaded every root node".to_owned());
     }
     let mut on_path = vec![false; document.nodes().len()];
+    let mut names = Vec::new();
     for root in roots {
-        visit(
-            cx,
-            buffers,
-            root,
-            Mat4::IDENTITY,
-            &mut on_path,
-            &mut Vec::new(),
-            out,
-        )?;
+        visit(cx, buffers, root, &mut on_path, &mut names, out)?;
     }
     Ok(())
 }
 
-/// Places `node`'s meshes and light, then its children's, under `parent` (its parent's world
-/// transform). `on_path` marks the nodes from the root down to `node`, whose names are in
-/// `names`: a node met again on its own path is a cycle.
+/// One step of the walk: enter a node under its parent's world transform, or leave one.
+enum Step<'a> {
+    Enter(gltf::Node<'a>, Mat4),
+    Leave(usize),
+}
+
+/// Places `root`'s meshes and light, then its descendants', depth first in the file's order.
+/// `on_path` marks the nodes from the root down to the current one, whose names are in
+/// `names`: a node met again on its own path is a cycle. An explicit stack, not recursion, so
+/// that a chain of any depth cannot overflow the thread's stack.
 fn visit(
     cx: &Context,
     buffers: &[gltf::buffer::Data],
-    node: gltf::Node,
-    parent: Mat4,
+    root: gltf::Node,
     on_path: &mut [bool],
     names: &mut Vec<String>,
     out: &mut Loaded,
 ) -> Result<(), LoadError> {
-    let index = node.index();
-    if on_path[index] {
-        return Err(cx.error(LoadErrorKind::NodeCycle { node: index }));
-    }
-    on_path[index] = true;
-    names.push(cx.name("nodes", index).unwrap_or_else(|| format!("node {index}")));
-    let world = parent * Mat4::from_cols_array_2d(&node.transform().matrix());
-
-    if let Some(mesh) = node.mesh() {
-        let m = mesh.index();
-        let base_name = cx.name("meshes", m).unwrap_or_else(|| format!("mesh {m}"));
-        let several = mesh.primitives().len() > 1;
-        let mirrored = world.determinant() < 0.0;
-        for primitive in mesh.primitives() {
-            let p = primitive.index();
-            if primitive.morph_targets().len() > 0 {
-                out.warnings
-                    .push(format!("{}: morph targets are ignored", cx.primitive_label(m, p)));
+    let mut stack = vec![Step::Enter(root, Mat4::IDENTITY)];
+    while let Some(step) = stack.pop() {
+        let (node, parent) = match step {
+            Step::Leave(index) => {
+                names.pop();
+                on_path[index] = false;
+                continue;
             }
-            let data = read_primitive(cx, buffers, m, &primitive, mirrored, &mut out.warnings)?;
-            let material = pbr_material(cx, primitive.material());
-            out.meshes.push(LoadedMesh {
-                name: if several {
-                    format!("{base_name}[{p}]")
-                } else {
-                    base_name.clone()
-                },
-                data,
-                transform: world,
-                node_path: names.clone(),
-                material,
-            });
+            Step::Enter(node, parent) => (node, parent),
+        };
+        let index = node.index();
+        if on_path[index] {
+            return Err(cx.error(LoadErrorKind::NodeCycle { node: index }));
         }
+        on_path[index] = true;
+        names.push(cx.name("nodes", index).unwrap_or_else(|| format!("node {index}")));
+        let world = parent * Mat4::from_cols_array_2d(&node.transform().matrix());
+
+        if let Some(mesh) = node.mesh() {
+            let m = mesh.index();
+            let base_name = cx.name("meshes", m).unwrap_or_else(|| format!("mesh {m}"));
+            let several = mesh.primitives().len() > 1;
+            let mirrored = world.determinant() < 0.0;
+            for primitive in mesh.primitives() {
+                let p = primitive.index();
+                if primitive.morph_targets().len() > 0 {
+                    out.warnings
+                        .push(format!("{}: morph targets are ignored", cx.primitive_label(m, p)));
+                }
+                let data = read_primitive(cx, buffers, m, &primitive, mirrored, &mut out.warnings)?;
+                let material = pbr_material(cx, primitive.material());
+                out.meshes.push(LoadedMesh {
+                    name: if several {
+                        format!("{base_name}[{p}]")
+                    } else {
+                        base_name.clone()
+                    },
+                    data,
+                    transform: world,
+                    node_path: names.clone(),
+                    material,
+                });
+            }
+        }
+        if node.skin().is_some() {
+            out.warnings.push(format!("node {index}: skinning is ignored"));
+        }
+        if let Some(light) = node.light() {
+            out.lights.push(punctual_light(cx, light, world));
+        }
+        stack.push(Step::Leave(index));
+        let children: Vec<gltf::Node> = node.children().collect();
+        stack.extend(children.into_iter().rev().map(|c| Step::Enter(c, world)));
     }
-    if node.skin().is_some() {
-        out.warnings.push(format!("node {index}: skinning is ignored"));
-    }
-    if let Some(light) = node.light() {
-        out.lights.push(punctual_light(cx, light, world));
-    }
-    for child in node.children() {
-        visit(cx, buffers, child, world, on_path, names, out)?;
-    }
-    names.pop();
-    on_path[index] = false;
     Ok(())
 }
 

@@ -1,0 +1,132 @@
+//! Hostile input: no stack overflow on deep node chains, no read of a device, pipe or
+//! anything outside a glTF asset's folder.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use ffvk::scene::gltf::{load, LoadErrorKind};
+use ffvk::scene::Scene;
+
+use crate::support::output_dir;
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = output_dir().join("hostile").join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// One triangle (positions and normals, 72 bytes) in buffer 0 at `uri`, under `nodes`.
+fn gltf_json(uri: &str, nodes: &str, scene_nodes: &str) -> String {
+    format!(
+        r#"{{"asset": {{"version": "2.0"}},
+  "buffers": [{{"uri": "{uri}", "byteLength": 72}}],
+  "bufferViews": [{{"buffer": 0, "byteOffset": 0, "byteLength": 36}}, {{"buffer": 0, "byteOffset": 36, "byteLength": 36}}],
+  "accessors": [
+    {{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]}},
+    {{"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC3"}}],
+  "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0, "NORMAL": 1}}}}]}}],
+  "nodes": [{nodes}],
+  "scenes": [{{"nodes": [{scene_nodes}]}}], "scene": 0}}"#
+    )
+}
+
+/// The triangle's 72 bytes as a file next to the glTF.
+fn triangle_bin(dir: &Path, name: &str) {
+    let floats: [f32; 18] = [
+        0., 0., 0., 1., 0., 0., 0., 1., 0., 0., 0., 1., 0., 0., 1., 0., 0., 1.,
+    ];
+    std::fs::write(dir.join(name), bytemuck::cast_slice::<f32, u8>(&floats)).unwrap();
+}
+
+#[test]
+fn a_node_chain_8000_deep_loads_without_overflowing_the_stack() {
+    let dir = scratch("deep");
+    triangle_bin(&dir, "t.bin");
+    let depth = 8000;
+    let nodes: Vec<String> = (0..depth)
+        .map(|i| {
+            if i + 1 < depth {
+                format!(r#"{{"children": [{}]}}"#, i + 1)
+            } else {
+                r#"{"mesh": 0}"#.to_string()
+            }
+        })
+        .collect();
+    let path = dir.join("deep.gltf");
+    std::fs::write(&path, gltf_json("t.bin", &nodes.join(","), "0")).unwrap();
+    // On a thread with a 512 KiB stack: recursion over 8000 nodes would overflow it.
+    let loaded = std::thread::Builder::new()
+        .stack_size(512 << 10)
+        .spawn(move || load(&path).map(|l| (l.meshes.len(), l.meshes[0].node_path.len())))
+        .unwrap()
+        .join()
+        .expect("no stack overflow")
+        .unwrap();
+    assert_eq!(loaded, (1, depth));
+}
+
+#[test]
+fn buffer_uris_may_not_leave_the_assets_folder() {
+    let dir = scratch("outside");
+    let asset = dir.join("asset");
+    std::fs::create_dir_all(&asset).unwrap();
+    triangle_bin(&dir, "outside.bin");
+    triangle_bin(&asset, "inside.bin");
+    std::os::unix::fs::symlink(dir.join("outside.bin"), asset.join("link.bin")).unwrap();
+    let escaping = [
+        "../../../../../../etc/passwd",
+        "/etc/passwd",
+        "file:///etc/passwd",
+        "../outside.bin",
+        "%2e%2e/outside.bin",
+        "link.bin",
+        "sub/../../outside.bin",
+    ];
+    for uri in escaping {
+        let path = asset.join("a.gltf");
+        std::fs::write(&path, gltf_json(uri, r#"{"mesh": 0}"#, "0")).unwrap();
+        let e = load(&path).expect_err(uri);
+        assert!(
+            matches!(e.kind, LoadErrorKind::BufferOutside { .. }),
+            "{uri}: {e}"
+        );
+        assert!(e.to_string().contains("leaves the asset's folder"), "{e}");
+    }
+    // Inside the folder, percent-encoded or not, it loads.
+    for uri in ["inside.bin", "./inside.bin", "%69nside.bin"] {
+        let path = asset.join("b.gltf");
+        std::fs::write(&path, gltf_json(uri, r#"{"mesh": 0}"#, "0")).unwrap();
+        assert_eq!(
+            load(&path).unwrap_or_else(|e| panic!("{uri}: {e}")).meshes.len(),
+            1
+        );
+    }
+}
+
+#[test]
+fn devices_and_pipes_are_refused_before_they_are_read() {
+    let dir = scratch("devices");
+    // A buffer that is a pipe inside the folder, and a device as the glTF file itself.
+    let fifo = dir.join("pipe.bin");
+    assert!(Command::new("mkfifo").arg(&fifo).status().unwrap().success());
+    let path = dir.join("p.gltf");
+    std::fs::write(&path, gltf_json("pipe.bin", r#"{"mesh": 0}"#, "0")).unwrap();
+    let e = load(&path).unwrap_err().to_string();
+    assert!(e.contains("pipe.bin") && e.contains("not a regular file"), "{e}");
+    let e = load(Path::new("/dev/zero")).unwrap_err().to_string();
+    assert!(e.contains("/dev/zero") && e.contains("not a regular file"), "{e}");
+    // As a scene file: a device, a pipe.
+    for scene in [Path::new("/dev/zero"), fifo.as_path()] {
+        let e = Scene::load(scene).unwrap_err().to_string();
+        assert!(e.contains("not a regular file"), "{e}");
+    }
+    // And as a scene's mesh.
+    let scene = dir.join("s.toml");
+    std::fs::write(&scene, "[[meshes]]\ngltf = \"/dev/zero\"\n").unwrap();
+    let e = Scene::load(&scene).unwrap_err().to_string();
+    assert!(
+        e.contains("s.toml") && e.contains("/dev/zero") && e.contains("not a regular file"),
+        "{e}"
+    );
+}
