@@ -36,6 +36,7 @@ pub(super) struct SceneFile {
 #[derive(Debug, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct ImageSpec {
+    #[serde(default, deserialize_with = "exact")]
     pub(super) size: Option<[u32; 2]>,
     pub(super) clear_color: Option<Vec<f32>>,
     pub(super) lighting_mode: Option<String>,
@@ -46,16 +47,21 @@ pub(super) struct ImageSpec {
 #[derive(Debug, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct CameraSpec {
+    #[serde(default, deserialize_with = "exact")]
     pub(super) eye: Option<[f32; 3]>,
+    #[serde(default, deserialize_with = "exact")]
     pub(super) target: Option<[f32; 3]>,
+    #[serde(default, deserialize_with = "exact")]
     pub(super) up: Option<[f32; 3]>,
     /// Vertical field of view, degrees (gluPerspective's fovy).
     pub(super) fovy: Option<f32>,
     pub(super) near: Option<f32>,
     pub(super) far: Option<f32>,
     /// Column-major, as glLoadMatrixf; replaces eye/target/up.
+    #[serde(default, deserialize_with = "exact")]
     pub(super) view: Option<[f32; 16]>,
     /// Column-major GL projection; replaces fovy/near/far.
+    #[serde(default, deserialize_with = "exact")]
     pub(super) projection: Option<[f32; 16]>,
 }
 
@@ -80,8 +86,10 @@ pub(super) struct LightSpec {
     pub(super) diffuse: Option<Vec<f32>>,
     pub(super) specular: Option<Vec<f32>>,
     /// World space, homogeneous: w = 0 is a directional light.
+    #[serde(default, deserialize_with = "exact")]
     pub(super) position: Option<[f32; 4]>,
     /// World space.
+    #[serde(default, deserialize_with = "exact")]
     pub(super) spot_direction: Option<[f32; 3]>,
     pub(super) spot_exponent: Option<f32>,
     pub(super) spot_cutoff: Option<f32>,
@@ -128,13 +136,37 @@ pub(super) struct MeshSpec {
     pub(super) level: Option<u32>,
     /// Vertex color of a built-in shape (feeds COLOR_MATERIAL).
     pub(super) color: Option<Vec<f32>>,
+    #[serde(default, deserialize_with = "exact")]
     pub(super) translate: Option<[f32; 3]>,
     /// Degrees about x, then y, then z.
+    #[serde(default, deserialize_with = "exact")]
     pub(super) rotate: Option<[f32; 3]>,
+    #[serde(default, deserialize_with = "exact")]
     pub(super) scale: Option<[f32; 3]>,
     /// Column-major model matrix; replaces translate/rotate/scale.
+    #[serde(default, deserialize_with = "exact")]
     pub(super) matrix: Option<[f32; 16]>,
     /// Front (and back unless `back_material`) material for this mesh only.
     pub(super) material: Option<MaterialSpec>,
     pub(super) back_material: Option<MaterialSpec>,
+}
+
+/// A fixed-length array that refuses extra or missing elements (serde's own arrays, read from
+/// TOML, ignore extra ones: `size = [64, 64, 64]` would pass).
+fn exact<'de, D, T, const N: usize>(d: D) -> Result<Option<[T; N]>, D::Error>
+where
+    D: serde::Deserializer<'de>,
+    T: serde::Deserialize<'de> + Copy + Default,
+{
+    use serde::de::Error as _;
+    let Some(values) = Option::<Vec<T>>::deserialize(d)? else {
+        return Ok(None);
+    };
+    if values.len() != N {
+        let expected = format!("an array of exactly {N} numbers");
+        return Err(D::Error::invalid_length(values.len(), &expected.as_str()));
+    }
+    let mut out = [T::default(); N];
+    out.copy_from_slice(&values);
+    Ok(Some(out))
 }

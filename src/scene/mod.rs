@@ -251,8 +251,18 @@ impl Builder<'_> {
         // Lights are specified in world space with the view loaded, as glLight after
         // glLoadMatrix(view).
         gl.load_modelview(view).map_err(self.state("camera.view"))?;
+        let mut light_of_index: Vec<(usize, usize)> = Vec::new();
         for (i, spec) in file.lights.iter().enumerate() {
-            self.light(&mut gl, &format!("lights[{i}]"), spec.index.unwrap_or(i), spec)?;
+            let index = spec.index.unwrap_or(i);
+            // A second table for one GL light would silently replace the first.
+            if let Some(&(_, first)) = light_of_index.iter().find(|(gl_index, _)| *gl_index == index) {
+                return Err(self.field(
+                    format!("lights[{i}].index"),
+                    format!("GL_LIGHT{index} is already lights[{first}]: expected each light index once"),
+                ));
+            }
+            light_of_index.push((index, i));
+            self.light(&mut gl, &format!("lights[{i}]"), index, spec)?;
         }
 
         let scene_front = match &file.material {

@@ -130,3 +130,35 @@ fn devices_and_pipes_are_refused_before_they_are_read() {
         "{e}"
     );
 }
+
+#[test]
+fn fixed_length_arrays_take_exactly_their_length_and_light_indices_are_unique() {
+    let dir = scratch("arrays");
+    let cases = [
+        ("[image]\nsize = [64, 64, 64]\n", "exactly 2"),
+        ("[camera]\neye = [0, 0, 3, 99]\n", "exactly 3"),
+        ("[camera]\ntarget = [0, 0]\n", "exactly 3"),
+        ("[[lights]]\nposition = [1, 1, 1, 0, 7]\n", "exactly 4"),
+        (
+            &format!("[camera]\nview = [{}]\n", vec!["0"; 17].join(", ")),
+            "exactly 16",
+        ),
+    ];
+    for (k, (text, words)) in cases.iter().enumerate() {
+        let path = dir.join(format!("a{k}.toml"));
+        std::fs::write(&path, format!("{text}[[meshes]]\nbuiltin = \"sphere\"\n")).unwrap();
+        let e = Scene::load(&path).unwrap_err().to_string();
+        assert!(e.contains("invalid length") && e.contains(words), "{text}: {e}");
+    }
+    let path = dir.join("lights.toml");
+    std::fs::write(
+        &path,
+        "[[meshes]]\nbuiltin = \"sphere\"\n[[lights]]\nindex = 2\n[[lights]]\nindex = 2\ndiffuse = [1, 0, 0]\n",
+    )
+    .unwrap();
+    let e = Scene::load(&path).unwrap_err().to_string();
+    assert!(
+        e.contains("lights[1].index") && e.contains("GL_LIGHT2 is already lights[0]"),
+        "{e}"
+    );
+}
