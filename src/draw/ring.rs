@@ -92,12 +92,17 @@ impl UniformRing {
         set_layout: &DescriptorSetLayout,
     ) -> Result<(vk::DescriptorSet, u32)> {
         let stride = self.stride;
-        let device = self.device.clone();
-        let s = self.slot_mut(slot)?;
+        let slots = self.slots.len() as u32;
+        // Fields borrowed apart: the slot mutably, the device shared.
+        let s = self
+            .slots
+            .get_mut(slot as usize)
+            .ok_or(LightingError::FrameSlot { slot, slots })?;
         let full = s.chunks.last().is_none_or(|c| s.used == c.capacity);
         if full {
             let capacity = s.chunks.last().map_or(FIRST_CHUNK_DRAWS, |c| c.capacity * 2);
-            s.chunks.push(Chunk::new(&device, capacity, stride, set_layout)?);
+            s.chunks
+                .push(Chunk::new(&self.device, capacity, stride, set_layout)?);
             s.used = 0;
         }
         let chunk = s.chunks.last_mut().expect("a chunk with room was just ensured");

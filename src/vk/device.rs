@@ -148,20 +148,10 @@ impl Device {
 
         // Features: dynamic rendering (1.3), last-vertex provoking convention (GL's flat
         // shading), pipeline statistics (benchmarks).
-        let mut provoking = vk::PhysicalDeviceProvokingVertexFeaturesEXT::default();
-        let mut v13 = vk::PhysicalDeviceVulkan13Features::default();
-        let mut features = vk::PhysicalDeviceFeatures2::default()
-            .push_next(&mut v13)
-            .push_next(&mut provoking);
-        let mut driver = vk::PhysicalDeviceDriverProperties::default();
-        let mut props2 = vk::PhysicalDeviceProperties2::default().push_next(&mut driver);
-        // SAFETY: the chained structs live until the calls return.
-        unsafe {
-            vki.get_physical_device_features2(physical, &mut features);
-            vki.get_physical_device_properties2(physical, &mut props2);
-        }
-        let pipeline_statistics_query = features.features.pipeline_statistics_query == vk::TRUE;
-        if v13.dynamic_rendering != vk::TRUE || v13.synchronization2 != vk::TRUE {
+        // SAFETY: physical comes from this instance's enumeration.
+        let supported = unsafe { Supported::query(vki, physical) };
+        let pipeline_statistics_query = supported.pipeline_statistics_query;
+        if !supported.dynamic_rendering || !supported.synchronization2 {
             return Err(Error::MissingFeature(
                 "dynamicRendering and synchronization2".into(),
             ));
@@ -173,7 +163,7 @@ impl Device {
             e.extension_name_as_c_str()
                 .is_ok_and(|n| n == ext::provoking_vertex::NAME)
         });
-        let provoking_vertex_last = has_provoking && provoking.provoking_vertex_last == vk::TRUE;
+        let provoking_vertex_last = has_provoking && supported.provoking_vertex_last;
         if !provoking_vertex_last {
             return Err(Error::MissingFeature(
                 "VK_EXT_provoking_vertex with provokingVertexLast (GL's flat shading takes the last vertex)"
@@ -183,7 +173,7 @@ impl Device {
 
         let info = describe(
             &props,
-            &driver,
+            &supported,
             timestamp_valid_bits,
             pipeline_statistics_query,
             provoking_vertex_last,
@@ -254,18 +244,8 @@ impl Device {
                 version_string(props.api_version)
             )));
         }
-        let mut provoking = vk::PhysicalDeviceProvokingVertexFeaturesEXT::default();
-        let mut v13 = vk::PhysicalDeviceVulkan13Features::default();
-        let mut features = vk::PhysicalDeviceFeatures2::default()
-            .push_next(&mut v13)
-            .push_next(&mut provoking);
-        let mut driver = vk::PhysicalDeviceDriverProperties::default();
-        let mut props2 = vk::PhysicalDeviceProperties2::default().push_next(&mut driver);
-        // SAFETY: the chained structs live until the calls return; the handle is the caller's.
-        unsafe {
-            instance.get_physical_device_features2(physical_device, &mut features);
-            instance.get_physical_device_properties2(physical_device, &mut props2);
-        }
+        // SAFETY: the caller's contract: physical_device belongs to instance.
+        let supported = unsafe { Supported::query(instance, physical_device) };
         if !enabled.dynamic_rendering {
             return Err(Error::NotEnabled {
                 feature: "dynamicRendering",
@@ -273,16 +253,16 @@ impl Device {
                 needed_for: "every ffvk pipeline needs (they render without render passes)",
             });
         }
-        if v13.dynamic_rendering != vk::TRUE {
+        if !supported.dynamic_rendering {
             return Err(Error::MissingFeature("dynamicRendering".into()));
         }
-        if enabled.provoking_vertex_last && provoking.provoking_vertex_last != vk::TRUE {
+        if enabled.provoking_vertex_last && !supported.provoking_vertex_last {
             return Err(Error::MissingFeature(
                 "VK_EXT_provoking_vertex with provokingVertexLast (EnabledFeatures::provoking_vertex_last says it is enabled)"
                     .into(),
             ));
         }
-        let info = describe(&props, &driver, 0, false, enabled.provoking_vertex_last, false);
+        let info = describe(&props, &supported, 0, false, enabled.provoking_vertex_last, false);
         Ok(Arc::new(Device {
             raw: device,
             memory,
@@ -340,26 +320,67 @@ impl Drop for Device {
     }
 }
 
+/// What a physical device supports of what ffvk uses, and its driver's name and version.
+struct Supported {
+    dynamic_rendering: bool,
+    synchronization2: bool,
+    /// The feature bit only; the extension must be listed too.
+    provoking_vertex_last: bool,
+    pipeline_statistics_query: bool,
+    driver_name: String,
+    driver_info: String,
+}
+
+impl Supported {
+    /// # Safety
+    ///
+    /// `physical` belongs to `instance`.
+    unsafe fn query(instance: &ash::Instance, physical: vk::PhysicalDevice) -> Supported {
+        let mut provoking = vk::PhysicalDeviceProvokingVertexFeaturesEXT::default();
+        let mut v13 = vk::PhysicalDeviceVulkan13Features::default();
+        let mut features = vk::PhysicalDeviceFeatures2::default()
+            .push_next(&mut v13)
+            .push_next(&mut provoking);
+        let mut driver = vk::PhysicalDeviceDriverProperties::default();
+        let mut props2 = vk::PhysicalDeviceProperties2::default().push_next(&mut driver);
+        // SAFETY: the chained structs live until the calls return; the caller vouches for
+        // the handle.
+        unsafe {
+            instance.get_physical_device_features2(physical, &mut features);
+            instance.get_physical_device_properties2(physical, &mut props2);
+        }
+        let pipeline_statistics_query = features.features.pipeline_statistics_query == vk::TRUE;
+        let cstr = |bytes: &[std::ffi::c_char]| {
+            // SAFETY: the driver properties hold NUL-terminated strings within their arrays.
+            unsafe { CStr::from_ptr(bytes.as_ptr()) }
+                .to_string_lossy()
+                .into_owned()
+        };
+        Supported {
+            dynamic_rendering: v13.dynamic_rendering == vk::TRUE,
+            synchronization2: v13.synchronization2 == vk::TRUE,
+            provoking_vertex_last: provoking.provoking_vertex_last == vk::TRUE,
+            pipeline_statistics_query,
+            driver_name: cstr(&driver.driver_name),
+            driver_info: cstr(&driver.driver_info),
+        }
+    }
+}
+
 /// What `ffvk info` shows of a physical device.
 fn describe(
     props: &vk::PhysicalDeviceProperties,
-    driver: &vk::PhysicalDeviceDriverProperties,
+    supported: &Supported,
     timestamp_valid_bits: u32,
     pipeline_statistics_query: bool,
     provoking_vertex_last: bool,
     validation: bool,
 ) -> DeviceInfo {
-    let cstr = |bytes: &[std::ffi::c_char]| {
-        // SAFETY: the driver properties hold NUL-terminated strings within their arrays.
-        unsafe { CStr::from_ptr(bytes.as_ptr()) }
-            .to_string_lossy()
-            .into_owned()
-    };
     DeviceInfo {
         name: device_name(props),
         device_type: format!("{:?}", props.device_type),
-        driver_name: cstr(&driver.driver_name),
-        driver_info: cstr(&driver.driver_info),
+        driver_name: supported.driver_name.clone(),
+        driver_info: supported.driver_info.clone(),
         api_version: version_string(props.api_version),
         vendor_id: props.vendor_id,
         device_id: props.device_id,

@@ -333,19 +333,20 @@ fn ffvk_image(
 }
 
 fn gl_image(mesh: &MeshData, modelview: Mat4, projection: Mat4, state: LightingState) -> RgbaImage {
+    gl_draw_image(
+        GlDraw::new(mesh, modelview, projection, state),
+        [0.0, 0.0, 0.0, 1.0],
+    )
+}
+
+/// GL's image of one draw on a `SIZE`² frame cleared to `clear`, depth test on.
+fn gl_draw_image(draw: GlDraw, clear: [f32; 4]) -> RgbaImage {
     render_gl(&GlScene {
         width: SIZE,
         height: SIZE,
-        clear_color: [0.0, 0.0, 0.0, 1.0],
+        clear_color: clear,
         depth_test: true,
-        draws: vec![GlDraw {
-            mesh,
-            modelview,
-            projection,
-            state,
-            color_array: true,
-            calls: Vec::new(),
-        }],
+        draws: vec![draw],
     })
     .unwrap()
 }
@@ -615,14 +616,7 @@ fn the_current_color_and_its_color_material_write_back_match_mesa_gl() {
             let mut draw = GlDraw::new(&teapot, view, projection, base.lighting);
             draw.color_array = false;
             draw.calls = calls.clone();
-            let theirs = render_gl(&GlScene {
-                width: SIZE,
-                height: SIZE,
-                clear_color: embed::CLEAR,
-                depth_test: true,
-                draws: vec![draw],
-            })
-            .unwrap();
+            let theirs = gl_draw_image(draw, embed::CLEAR);
             let name = format!("{name}_{}", mode.name());
             if let Err(e) = check_against_gl(&mut r, &name, &ours, &theirs, &teapot, view, projection) {
                 failures.push(e);
@@ -648,14 +642,7 @@ fn the_current_color_and_its_color_material_write_back_match_mesa_gl() {
         };
         let mut draw = GlDraw::new(&colored_teapot, view, projection, base.lighting);
         draw.calls = vec![GlCall::Enable(Cap::ColorMaterial)];
-        let theirs = render_gl(&GlScene {
-            width: SIZE,
-            height: SIZE,
-            clear_color: embed::CLEAR,
-            depth_test: true,
-            draws: vec![draw],
-        })
-        .unwrap();
+        let theirs = gl_draw_image(draw, embed::CLEAR);
         let name = format!("color_array_color_material_{}", mode.name());
         if let Err(e) = check_against_gl(&mut r, &name, &ours, &theirs, &colored_teapot, view, projection) {
             failures.push(e);
