@@ -32,7 +32,10 @@ impl Builder<'_> {
             other => {
                 return Err(self.field(
                     format!("{field}.builtin"),
-                    format!("{other:?}: expected \"teapot\", \"sphere\" or \"plane\""),
+                    format!(
+                        "{:?}: expected \"teapot\", \"sphere\" or \"plane\"",
+                        super::shorten(other)
+                    ),
                 ))
             }
         };

@@ -79,8 +79,9 @@ pub(super) struct LightModelSpec {
 #[derive(Debug, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct LightSpec {
-    /// GL_LIGHTi; by default the position in the list.
-    pub(super) index: Option<usize>,
+    /// GL_LIGHTi; by default the position in the list. Signed, so that a negative index is
+    /// reported as out of GL's range rather than as a type mismatch.
+    pub(super) index: Option<i64>,
     pub(super) enabled: Option<bool>,
     pub(super) ambient: Option<Vec<f32>>,
     pub(super) diffuse: Option<Vec<f32>>,

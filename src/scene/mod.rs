@@ -30,6 +30,33 @@ pub const MAX_SIZE: u32 = 16384;
 /// larger is refused before it is read.
 pub const MAX_SCENE_BYTES: u64 = 16 << 20;
 
+/// The longest value echoed whole in a message, in characters.
+const MAX_ECHO: usize = 120;
+
+/// `text` as a message shows it: whole up to [`MAX_ECHO`] characters, else its start and how
+/// long it was, so that a megabyte-long value in a file cannot flood a terminal or a log.
+pub(crate) fn shorten(text: &str) -> String {
+    shorten_to(text, MAX_ECHO)
+}
+
+fn shorten_to(text: &str, max: usize) -> String {
+    if text.chars().count() <= max {
+        return text.to_owned();
+    }
+    let start: String = text.chars().take(max * 2 / 3).collect();
+    format!("{start}… ({} bytes in all)", text.len())
+}
+
+/// A TOML parser message with every long line (it quotes the offending line) shortened; the
+/// limit leaves room for the parser's own lists of expected field names.
+fn shorten_lines(text: &str) -> String {
+    text.trim_end()
+        .lines()
+        .map(|line| shorten_to(line, 3 * MAX_ECHO))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
 /// Why a scene could not be loaded: the scene file, and what was wrong with it. The message
 /// is the path followed by the kind's message.
 #[derive(Debug, thiserror::Error)]
@@ -53,7 +80,7 @@ pub enum SceneErrorKind {
 
     /// Not TOML, or not a scene's tables: an unknown field, a value of the wrong type. The
     /// message is the TOML parser's, which shows the line.
-    #[error("{}", .source.to_string().trim_end())]
+    #[error("{}", shorten_lines(&.source.to_string()))]
     Toml { source: toml::de::Error },
 
     /// A value outside what the field allows, or fields that do not go together.
@@ -228,9 +255,12 @@ impl Builder<'_> {
             None => Vec4::new(0.0, 0.0, 0.0, 1.0),
         };
         let mode = match &file.image.lighting_mode {
-            Some(m) => m
-                .parse::<LightingMode>()
-                .map_err(|e| self.field("image.lighting_mode", e))?,
+            Some(m) => m.parse::<LightingMode>().map_err(|_| {
+                self.field(
+                    "image.lighting_mode",
+                    format!("{:?}: expected \"vertex\", \"fragment\" or \"flat\"", shorten(m)),
+                )
+            })?,
             None => LightingMode::Vertex,
         };
         let (view, projection) = self.camera(&file.camera, width as f32 / height as f32)?;
@@ -253,7 +283,21 @@ impl Builder<'_> {
         gl.load_modelview(view).map_err(self.state("camera.view"))?;
         let mut light_of_index: Vec<(usize, usize)> = Vec::new();
         for (i, spec) in file.lights.iter().enumerate() {
-            let index = spec.index.unwrap_or(i);
+            let index = match spec.index {
+                None => i,
+                Some(index) => usize::try_from(index)
+                    .ok()
+                    .filter(|&index| index < MAX_LIGHTS)
+                    .ok_or_else(|| {
+                        self.field(
+                            format!("lights[{i}].index"),
+                            format!(
+                                "{index}: expected 0..{MAX_LIGHTS} (GL_LIGHT0 to GL_LIGHT{}, GL_MAX_LIGHTS = {MAX_LIGHTS})",
+                                MAX_LIGHTS - 1
+                            ),
+                        )
+                    })?,
+            };
             // A second table for one GL light would silently replace the first.
             if let Some(&(_, first)) = light_of_index.iter().find(|(gl_index, _)| *gl_index == index) {
                 return Err(self.field(
@@ -283,7 +327,7 @@ impl Builder<'_> {
                     return Ok(());
                 }
                 // The next disabled light takes it.
-                let f = format!("{field}: glTF light {name:?}");
+                let f = format!("{field}: glTF light {:?}", shorten(name));
                 let index = (0..MAX_LIGHTS)
                     .find(|&i| !gl.lighting.lights[i].enabled)
                     .ok_or_else(|| {
@@ -327,6 +371,7 @@ impl Builder<'_> {
         if meshes.is_empty() {
             return Err(self.field("meshes", "no meshes: expected at least one [[meshes]] table"));
         }
+        self.check_drawable(&gl.lighting, &light_of_index, view, projection, &meshes)?;
         gl.load_modelview(Mat4::IDENTITY)
             .map_err(self.state("camera.view"))?;
 
@@ -342,6 +387,65 @@ impl Builder<'_> {
             meshes,
             warnings,
         })
+    }
+
+    /// What drawing would refuse (see [`DrawBlock::new`]), found here so that the error names
+    /// the scene's field rather than surfacing at render time without it: a positional light
+    /// with all three attenuations 0, and a mesh whose modelview has no inverse (its normals
+    /// would be NaN).
+    ///
+    /// [`DrawBlock::new`]: crate::gpu::layout::DrawBlock::new
+    fn check_drawable(
+        &self,
+        state: &LightingState,
+        light_of_index: &[(usize, usize)],
+        view: Mat4,
+        projection: Mat4,
+        meshes: &[SceneMesh],
+    ) -> Result<(), SceneError> {
+        if !state.lighting {
+            return Ok(());
+        }
+        for (index, light) in state.lights.iter().enumerate() {
+            let sum = light.constant_attenuation + light.linear_attenuation + light.quadratic_attenuation;
+            if light.enabled && light.position.w != 0.0 && sum == 0.0 {
+                let field = match light_of_index.iter().find(|(gl_index, _)| *gl_index == index) {
+                    Some((_, i)) => format!("lights[{i}]"),
+                    None => format!("GL_LIGHT{index}"),
+                };
+                return Err(self.field(
+                    field,
+                    "constant_attenuation + linear_attenuation + quadratic_attenuation = 0 for a \
+                     positional light: expected a sum > 0 (GL's att_i would be 1/0)",
+                ));
+            }
+        }
+        for mesh in meshes {
+            let det = glam::Mat3::from_mat4(view * mesh.model).determinant();
+            if det == 0.0 || !det.is_finite() {
+                let model_det = glam::Mat3::from_mat4(mesh.model).determinant();
+                let field = if model_det == 0.0 || !model_det.is_finite() {
+                    format!("meshes (mesh {:?})", shorten(&mesh.name))
+                } else {
+                    "camera.view".to_owned()
+                };
+                return Err(self.field(
+                    field,
+                    format!(
+                        "the modelview's upper 3x3 has determinant {det} for mesh {:?}: expected an \
+                         invertible matrix (a scale of 0 flattens the mesh and leaves GL's normal \
+                         matrix undefined)",
+                        shorten(&mesh.name)
+                    ),
+                ));
+            }
+            let mut draw = *state;
+            draw.front = mesh.front;
+            draw.back = mesh.back;
+            crate::gpu::layout::DrawBlock::new(&draw, view * mesh.model, projection)
+                .map_err(self.state(format!("meshes (mesh {:?})", shorten(&mesh.name))))?;
+        }
+        Ok(())
     }
 
     fn camera(&self, c: &CameraSpec, aspect: f32) -> Result<(Mat4, Mat4), SceneError> {
@@ -369,7 +473,15 @@ impl Builder<'_> {
         let projection = match c.projection {
             Some(m) => {
                 self.finite("camera.projection", &m)?;
-                Mat4::from_cols_array(&m)
+                let projection = Mat4::from_cols_array(&m);
+                // A singular projection maps the scene onto a plane or a point: nothing is drawn.
+                if projection.determinant() == 0.0 {
+                    return Err(self.field(
+                        "camera.projection",
+                        "has determinant 0 (e.g. all zeros): expected an invertible projection",
+                    ));
+                }
+                projection
             }
             None => {
                 let fovy = c.fovy.unwrap_or(45.0);
@@ -411,7 +523,10 @@ impl Builder<'_> {
                 other => {
                     return Err(self.field(
                         "light_model.color_control",
-                        format!("{other:?}: expected \"single_color\" or \"separate_specular_color\""),
+                        format!(
+                            "{:?}: expected \"single_color\" or \"separate_specular_color\"",
+                            shorten(other)
+                        ),
                     ))
                 }
             };
@@ -429,7 +544,10 @@ impl Builder<'_> {
             other => {
                 return Err(self.field(
                     "color_material.face",
-                    format!("{other:?}: expected \"front\", \"back\" or \"front_and_back\""),
+                    format!(
+                        "{:?}: expected \"front\", \"back\" or \"front_and_back\"",
+                        shorten(other)
+                    ),
                 ))
             }
         };
@@ -442,7 +560,7 @@ impl Builder<'_> {
             other => {
                 return Err(self.field(
                     "color_material.mode",
-                    format!("{other:?}: expected \"emission\", \"ambient\", \"diffuse\", \"specular\" or \"ambient_and_diffuse\""),
+                    format!("{:?}: expected \"emission\", \"ambient\", \"diffuse\", \"specular\" or \"ambient_and_diffuse\"", shorten(other)),
                 ))
             }
         };
@@ -517,7 +635,8 @@ impl Builder<'_> {
                 self.field(
                     format!("{field}.preset"),
                     format!(
-                        "{name:?} is not a preset: expected one of {}",
+                        "{:?} is not a preset: expected one of {}",
+                        shorten(name),
                         presets::PRESET_NAMES.join(", ")
                     ),
                 )
@@ -597,6 +716,13 @@ impl Builder<'_> {
                 let data = self.builtin(field, name, spec)?;
                 Ok(vec![(name.clone(), data, model, None)])
             }
+            (Some(_), None) if spec.level.is_some() || spec.color.is_some() => {
+                let name = if spec.level.is_some() { "level" } else { "color" };
+                Err(self.field(
+                    format!("{field}.{name}"),
+                    "applies to built-in shapes only: expected it with builtin, not with gltf",
+                ))
+            }
             (Some(file), None) => {
                 let base = self.path.parent().unwrap_or(Path::new("."));
                 let gltf_path = base.join(file);
@@ -638,8 +764,8 @@ impl Builder<'_> {
                 }
                 if placed.is_empty() {
                     let what = match (&spec.mesh, &spec.node) {
-                        (Some(m), _) => format!("no mesh named {m:?}"),
-                        (None, Some(n)) => format!("no node named {n:?}"),
+                        (Some(m), _) => format!("no mesh named {:?}", shorten(m)),
+                        (None, Some(n)) => format!("no node named {:?}", shorten(n)),
                         _ => "no triangle meshes".to_string(),
                     };
                     return Err(self.field(

@@ -162,3 +162,97 @@ fn fixed_length_arrays_take_exactly_their_length_and_light_indices_are_unique() 
         "{e}"
     );
 }
+
+/// The error `Scene::load` gives for `text` (with a sphere appended unless `text` has meshes).
+fn scene_error(dir: &Path, name: &str, text: &str) -> String {
+    let path = dir.join(format!("{name}.toml"));
+    let text = if text.contains("[[meshes]]") {
+        text.to_string()
+    } else {
+        format!("{text}\n[[meshes]]\nbuiltin = \"sphere\"\n")
+    };
+    std::fs::write(&path, text).unwrap();
+    let e = Scene::load(&path).expect_err(name).to_string();
+    assert!(
+        e.starts_with(&path.display().to_string()),
+        "names the file first: {e}"
+    );
+    e
+}
+
+#[test]
+fn what_drawing_would_refuse_is_a_scene_error_naming_the_field() {
+    let dir = scratch("drawable");
+    triangle_bin(&dir, "t.bin");
+    std::fs::write(dir.join("t.gltf"), gltf_json("t.bin", r#"{"mesh": 0}"#, "0")).unwrap();
+    let cases: &[(&str, &str, &[&str])] = &[
+        (
+            "zero_attenuation",
+            "[[lights]]\nposition = [0, 0, 2, 1]\nconstant_attenuation = 0.0\n",
+            &["lights[0]", "attenuation = 0", "> 0"],
+        ),
+        (
+            "zero_scale",
+            "[[lights]]\n[[meshes]]\nbuiltin = \"sphere\"\nscale = [1, 0, 1]\n",
+            &["mesh \"sphere\"", "determinant 0", "invertible"],
+        ),
+        (
+            "singular_view",
+            &format!(
+                "[camera]\nview = [{}]\n",
+                ["1", "0", "0", "0"].repeat(4).join(", ")
+            ),
+            &["camera.view", "determinant", "invertible"],
+        ),
+        (
+            "zero_projection",
+            &format!("[camera]\nprojection = [{}]\n", vec!["0"; 16].join(", ")),
+            &["camera.projection", "determinant 0", "invertible projection"],
+        ),
+        (
+            "negative_index",
+            "[[lights]]\nindex = -1\n",
+            &["lights[0].index", "-1", "expected 0..16"],
+        ),
+        (
+            "level_on_gltf",
+            "[[meshes]]\ngltf = \"t.gltf\"\nlevel = 3\n",
+            &["meshes[0].level", "built-in shapes only"],
+        ),
+        (
+            "color_on_gltf",
+            "[[meshes]]\ngltf = \"t.gltf\"\ncolor = [1, 0, 0]\n",
+            &["meshes[0].color", "built-in shapes only"],
+        ),
+    ];
+    for (name, text, parts) in cases {
+        let e = scene_error(&dir, name, text);
+        for part in *parts {
+            assert!(e.contains(part), "{name}: {part:?} missing from {e}");
+        }
+    }
+}
+
+#[test]
+fn a_megabyte_long_value_is_shortened_in_the_message() {
+    let dir = scratch("long");
+    let long = "x".repeat(1 << 20);
+    for (name, text, field) in [
+        (
+            "mode",
+            format!("[image]\nlighting_mode = \"{long}\"\n"),
+            "image.lighting_mode",
+        ),
+        (
+            "preset",
+            format!("[material]\npreset = \"{long}\"\n"),
+            "material.preset",
+        ),
+        ("toml", format!("[image]\nsize = \"{long}\"\n"), "size"),
+        ("key", format!("[image]\n{long} = 1\n"), "unknown field"),
+    ] {
+        let e = scene_error(&dir, name, &text);
+        assert!(e.contains(field), "{name}: {e}");
+        assert!(e.len() < 2000, "{name}: a {} byte message", e.len());
+    }
+}

@@ -184,7 +184,14 @@ fn bad_scenes_name_the_file_the_field_the_value_and_what_was_expected() {
     );
     contains_all(&m, &["material.preset", "unobtainium", "emerald"]);
     let m = load_err("mode", &format!("[image]\nlighting_mode = \"phong\"\n{MINIMAL}"));
-    contains_all(&m, &["image.lighting_mode", "phong", "vertex, fragment or flat"]);
+    contains_all(
+        &m,
+        &[
+            "image.lighting_mode",
+            "phong",
+            r#""vertex", "fragment" or "flat""#,
+        ],
+    );
     let m = load_err(
         "color_control",
         &format!("[light_model]\ncolor_control = \"separate\"\n{MINIMAL}"),

@@ -110,7 +110,7 @@ pub(super) fn texture_warnings(cx: &Context, document: &gltf::Document) -> Vec<S
             warnings.push(format!(
                 "material {index}{}: textures are ignored; ffvk uses the material's factors",
                 cx.name("materials", index)
-                    .map(|n| format!(" ({n:?})"))
+                    .map(|n| format!(" ({:?})", crate::scene::shorten(&n)))
                     .unwrap_or_default()
             ));
         }

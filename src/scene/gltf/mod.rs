@@ -18,6 +18,7 @@ mod primitives;
 mod read;
 #[cfg(test)]
 mod testing;
+mod values;
 pub mod write;
 
 pub use lights::{gl_light, spot_exponent, LightKind, PunctualLight};
@@ -212,6 +213,31 @@ pub enum LoadErrorKind {
         count: usize,
     },
 
+    /// A value outside what the glTF specification (or an extension's schema) allows.
+    #[error("{object}: {field} = {value}: expected {expected}")]
+    InvalidValue {
+        /// E.g. `material 2 ("paint")` or `KHR_lights_punctual light 0`.
+        object: String,
+        /// The property, as named in the JSON (dotted below the object).
+        field: &'static str,
+        /// The value as found (shortened when long).
+        value: String,
+        expected: &'static str,
+    },
+
+    /// A POSITION, NORMAL or COLOR_0 element that is NaN or infinite.
+    #[error(
+        "{primitive}: {attribute} (accessor {accessor}) element {element} is {value:?}: expected \
+         finite numbers"
+    )]
+    NotFinite {
+        primitive: String,
+        attribute: &'static str,
+        accessor: usize,
+        element: usize,
+        value: Vec<f32>,
+    },
+
     /// A node hierarchy with a cycle through node `node`.
     #[error("node {node} is its own ancestor: expected the node hierarchy to be a forest")]
     NodeCycle { node: usize },
@@ -263,7 +289,10 @@ impl Context<'_> {
 
     fn primitive_label(&self, mesh: usize, primitive: usize) -> String {
         match self.name("meshes", mesh) {
-            Some(name) => format!("mesh {mesh} ({name:?}) primitive {primitive}"),
+            Some(name) => format!(
+                "mesh {mesh} ({:?}) primitive {primitive}",
+                crate::scene::shorten(&name)
+            ),
             None => format!("mesh {mesh} primitive {primitive}"),
         }
     }
@@ -302,6 +331,7 @@ pub fn load(path: &Path) -> Result<Loaded, LoadError> {
 
     primitives::check_positions(&cx)?;
     read::validate(&cx, &document)?;
+    values::check(&cx, &document)?;
     let buffers = read::read_buffers(&cx, &document, blob)?;
 
     let mut out = Loaded {

@@ -272,6 +272,27 @@ where
     Ok(values)
 }
 
+/// The first element of `values` with a NaN or infinite component is an error: GL would
+/// drop its triangles (positions) or light them with NaN (normals, colors) without a word.
+fn check_finite<const N: usize>(
+    cx: &Context,
+    primitive: &str,
+    attribute: &'static str,
+    accessor: &gltf::Accessor,
+    values: &[[f32; N]],
+) -> Result<(), LoadError> {
+    match values.iter().position(|v| !v.iter().all(|x| x.is_finite())) {
+        None => Ok(()),
+        Some(element) => Err(cx.error(LoadErrorKind::NotFinite {
+            primitive: primitive.to_owned(),
+            attribute,
+            accessor: accessor.index(),
+            element,
+            value: values[element].to_vec(),
+        })),
+    }
+}
+
 /// Reads one primitive of mesh `mesh` as a triangle list (see [`load`](super::load));
 /// `mirrored` swaps each triangle's first two vertices.
 pub(super) fn read_primitive(
@@ -320,6 +341,7 @@ pub(super) fn read_primitive(
         return Err(format_error("POSITION", &position_accessor, "FLOAT VEC3"));
     }
     let positions = read_checked(cx, &label, &position_accessor, buffers, reader.read_positions())?;
+    check_finite(cx, &label, "POSITION", &position_accessor, &positions)?;
     let vertex_count = positions.len();
 
     let normals = match primitive.get(&Semantic::Normals) {
@@ -331,13 +353,9 @@ pub(super) fn read_primitive(
             if accessor.count() != vertex_count {
                 return Err(count_error("NORMAL", &accessor, vertex_count));
             }
-            Some(read_checked(
-                cx,
-                &label,
-                &accessor,
-                buffers,
-                reader.read_normals(),
-            )?)
+            let normals = read_checked(cx, &label, &accessor, buffers, reader.read_normals())?;
+            check_finite(cx, &label, "NORMAL", &accessor, &normals)?;
+            Some(normals)
         }
     };
 
@@ -364,7 +382,9 @@ pub(super) fn read_primitive(
                 return Err(count_error("COLOR_0", &accessor, vertex_count));
             }
             let iter = reader.read_colors(0).map(|c| c.into_rgba_f32());
-            Some(read_checked(cx, &label, &accessor, buffers, iter)?)
+            let colors = read_checked(cx, &label, &accessor, buffers, iter)?;
+            check_finite(cx, &label, "COLOR_0", &accessor, &colors)?;
+            Some(colors)
         }
     };
 
@@ -717,6 +737,55 @@ mod tests {
                 "{e}"
             );
         }
+    }
+
+    #[test]
+    fn nan_or_infinite_positions_normals_and_colors_are_errors() {
+        let dir = scratch_dir("not_finite");
+        let floats =
+            |v: &[[f32; 3]]| -> Vec<u8> { v.iter().flatten().flat_map(|x| x.to_le_bytes()).collect() };
+        let bounds = r#", "min": [0, 0, 0], "max": [1, 1, 0]"#;
+        for (case, bad) in [("nan", f32::NAN), ("inf", f32::INFINITY)] {
+            let mut a = Asset::default();
+            let pos = a.accessor(
+                &floats(&[[0.0; 3], [1.0, 0.0, 0.0], [bad, 1.0, 0.0]]),
+                5126,
+                3,
+                "VEC3",
+                bounds,
+            );
+            let body = one_mesh_body(&format!(r#"{{ "attributes": {{ "POSITION": {pos} }} }}"#));
+            let e = message(load(&a.write_gltf(&dir, &format!("position_{case}"), &body)).unwrap_err());
+            assert!(
+                e.contains("mesh 0 (\"thing\") primitive 0: POSITION (accessor 0) element 2")
+                    && e.contains(&format!("[{bad:?}, 1.0, 0.0]"))
+                    && e.contains("expected finite numbers"),
+                "{e}"
+            );
+        }
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD[..3]);
+        let nrm = a.vec3s(&[[0.0, 0.0, 1.0], [f32::NAN, 0.0, 1.0], [0.0, 0.0, 1.0]]);
+        let body = one_mesh_body(&format!(
+            r#"{{ "attributes": {{ "POSITION": {pos}, "NORMAL": {nrm} }} }}"#
+        ));
+        let e = message(load(&a.write_gltf(&dir, "normal_nan", &body)).unwrap_err());
+        assert!(
+            e.contains("NORMAL (accessor 1) element 1 is [NaN, 0.0, 1.0]"),
+            "{e}"
+        );
+
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD[..3]);
+        let col = a.vec3s(&[[1.0; 3], [1.0; 3], [0.0, f32::NEG_INFINITY, 0.0]]);
+        let body = one_mesh_body(&format!(
+            r#"{{ "attributes": {{ "POSITION": {pos}, "COLOR_0": {col} }} }}"#
+        ));
+        let e = message(load(&a.write_gltf(&dir, "color_inf", &body)).unwrap_err());
+        assert!(
+            e.contains("COLOR_0 (accessor 1) element 2 is [0.0, -inf, 0.0, 1.0]"),
+            "{e}"
+        );
     }
 
     #[test]
