@@ -60,6 +60,24 @@ pub enum Error {
         call: &'static str,
     },
 
+    /// A host allocation ffvk sized from its input failed (see [`crate::alloc`]).
+    #[error(transparent)]
+    Alloc(#[from] crate::alloc::AllocError),
+
+    /// One device allocation larger than the device's memory heap (or its
+    /// `maxMemoryAllocationSize`), refused before asking the driver.
+    #[error("{what}: {bytes} bytes of device memory asked for, more than the device's {limit_name} ({limit} bytes)")]
+    TooLarge {
+        /// What the memory was for, e.g. `"vertex buffer"`.
+        what: &'static str,
+        /// The size asked for.
+        bytes: u64,
+        /// The device's limit.
+        limit: u64,
+        /// Which limit: `"memory heap"` or `"maxMemoryAllocationSize"`.
+        limit_name: &'static str,
+    },
+
     #[error("{call} failed: {result}")]
     /// Any other failing `VkResult`: unexpected, and not specific to the caller's input.
     Vulkan {

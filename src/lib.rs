@@ -24,6 +24,8 @@
 //! on by default) and `osmesa` (Mesa's GL as a reference renderer).
 
 #[warn(missing_docs)]
+pub mod alloc;
+#[warn(missing_docs)]
 pub mod draw;
 #[warn(missing_docs)]
 pub mod error;

@@ -25,6 +25,10 @@ struct Cli {
     /// Load VK_LAYER_KHRONOS_validation when installed (warn when it is not).
     #[arg(long, global = true)]
     validate: bool,
+    /// The host memory a scene's meshes may take, in MiB (the device holds as much again).
+    #[arg(long, global = true, value_name = "MIB", default_value_t = ffvk::scene::DEFAULT_MESH_BYTES >> 20,
+          value_parser = clap::value_parser!(u64).range(1..=1 << 24))]
+    max_mesh_mib: u64,
     #[command(subcommand)]
     command: Command,
 }
@@ -123,6 +127,12 @@ fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
     parse_pair(s, ',', "X,Y, e.g. 100,80")
 }
 
+fn limits(cli: &Cli) -> ffvk::scene::Limits {
+    ffvk::scene::Limits {
+        mesh_bytes: cli.max_mesh_mib << 20,
+    }
+}
+
 fn options(cli: &Cli) -> RendererOptions {
     let env_validate = std::env::var_os("FFVK_VALIDATION").is_some_and(|v| v != "0");
     if (cli.validate || env_validate) && !ffvk::vk::instance::validation_layer_installed().unwrap_or(true) {
@@ -218,7 +228,7 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
                 if ffvk::files::same_file(&path, file) {
                     return Err(ffvk::tools::Error::OverwritesInput { path });
                 }
-                let scene = regress::load_scene(file, *size, &mut |m| eprintln!("{m}"))?;
+                let scene = regress::load_scene(file, *size, &limits(&cli), &mut |m| eprintln!("{m}"))?;
                 let image = render_scene(&mut renderer, &scene, lighting.first().copied())?;
                 save_png(&image, &path)?;
                 println!("{} -> {}", file.display(), path.display());
@@ -232,6 +242,7 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
                 references: check.clone(),
                 bless: *bless || regress::bless_from_env(),
                 tolerance: tolerance.tolerance(),
+                limits: limits(&cli),
             };
             let rows = regress::run(&mut renderer, &job, &mut |m| println!("{m}"))?;
             if check.is_none() {
@@ -324,7 +335,7 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
             lighting,
             size,
         } => {
-            let scene = regress::load_scene(scene, *size, &mut |m| eprintln!("{m}"))?;
+            let scene = regress::load_scene(scene, *size, &limits(&cli), &mut |m| eprintln!("{m}"))?;
             let (x, y) = *pixel;
             if x >= scene.width || y >= scene.height {
                 return Err(ffvk::tools::Error::PixelOutside {

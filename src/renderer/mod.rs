@@ -355,7 +355,7 @@ impl Renderer {
                 measure: false,
             },
         )?;
-        Ok(self.read_image(frame))
+        self.read_image(frame)
     }
 
     /// [`Renderer::render`] with timestamps and a pipeline-statistics query around the
@@ -368,7 +368,7 @@ impl Renderer {
                 measure: true,
             },
         )?;
-        Ok((self.read_image(frame), stats))
+        Ok((self.read_image(frame)?, stats))
     }
 
     /// Draws `frame` with the queries of [`Renderer::render_measured`] but without reading
@@ -420,15 +420,15 @@ impl Renderer {
     }
 
     /// The readback buffer as an image (after a frame recorded with `readback`).
-    fn read_image(&self, frame: &Frame) -> Pixels {
+    fn read_image(&self, frame: &Frame) -> Result<Pixels> {
         let targets = self.targets.as_ref().expect("ensure_targets made them");
         let len = usize::try_from(u64::from(frame.width) * u64::from(frame.height) * 4)
             .expect("ensure_targets bounded the size by the device's limit");
-        Pixels {
+        Ok(Pixels {
             width: frame.width,
             height: frame.height,
-            rgba: targets.readback.bytes()[..len].to_vec(),
-        }
+            rgba: crate::alloc::try_copy(&targets.readback.bytes()[..len], "the rendered image")?,
+        })
     }
 
     /// Creates the pipeline a draw of `state` would use in a frame with `depth_test`, so that

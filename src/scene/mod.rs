@@ -30,6 +30,89 @@ pub const MAX_SIZE: u32 = 16384;
 /// larger is refused before it is read.
 pub const MAX_SCENE_BYTES: u64 = 16 << 20;
 
+/// The host memory a scene's meshes may take by default: 1 GiB, about 27 million vertices
+/// (40 bytes each, shared between triangles) or 6.7 million triangles with vertices of their
+/// own. [`Limits::mesh_bytes`] (`ffvk --max-mesh-mib`) raises it.
+pub const DEFAULT_MESH_BYTES: u64 = 1 << 30;
+
+/// What a scene file may make ffvk allocate.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Limits {
+    /// The bytes all the scene's meshes may take on the host, counted as ffvk stores them
+    /// (a [`Vertex`](crate::mesh::Vertex) is 40 bytes, an index 4), each glTF primitive
+    /// before it is read and once per node that places it. The device holds the same
+    /// amount.
+    pub mesh_bytes: u64,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits {
+            mesh_bytes: DEFAULT_MESH_BYTES,
+        }
+    }
+}
+
+/// The mesh memory left to a scene as it loads.
+#[derive(Debug, Clone)]
+pub struct MeshBudget {
+    limit: u64,
+    used: u64,
+}
+
+impl MeshBudget {
+    /// A budget of `limit` bytes, none used.
+    pub fn new(limit: u64) -> Self {
+        MeshBudget { limit, used: 0 }
+    }
+
+    /// The bytes taken so far.
+    pub fn used(&self) -> u64 {
+        self.used
+    }
+
+    /// Takes the memory of a mesh of `vertices` vertices and `indices` indices, or says why
+    /// it does not fit.
+    pub fn charge(&mut self, vertices: usize, indices: usize) -> Result<(), OverBudget> {
+        let vertex_size = std::mem::size_of::<crate::mesh::Vertex>() as u64;
+        let bytes = (vertices as u64)
+            .saturating_mul(vertex_size)
+            .saturating_add((indices as u64).saturating_mul(4));
+        let total = self.used.saturating_add(bytes);
+        if total > self.limit {
+            return Err(OverBudget {
+                vertices,
+                indices,
+                bytes,
+                used: self.used,
+                limit: self.limit,
+            });
+        }
+        self.used = total;
+        Ok(())
+    }
+}
+
+/// A mesh that would take the scene past its mesh memory limit ([`Limits::mesh_bytes`]).
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error(
+    "{vertices} vertices and {indices} indices take {bytes} bytes, which with the {used} bytes of \
+     the meshes before them passes the scene's mesh memory limit of {limit} bytes: expected \
+     smaller meshes, or a higher limit (ffvk --max-mesh-mib)"
+)]
+pub struct OverBudget {
+    /// Vertices of the mesh refused.
+    pub vertices: usize,
+    /// Indices of the mesh refused.
+    pub indices: usize,
+    /// What it would take.
+    pub bytes: u64,
+    /// What the meshes before it took.
+    pub used: u64,
+    /// The limit.
+    pub limit: u64,
+}
+
 /// The longest value echoed whole in a message, in characters.
 const MAX_ECHO: usize = 120;
 
@@ -90,6 +173,10 @@ pub enum SceneErrorKind {
     /// A value GL's own checks reject (what glLight, glMaterial, ... would flag).
     #[error("{field}: {source}")]
     State { field: String, source: StateError },
+
+    /// A built-in mesh past the scene's mesh memory limit.
+    #[error("{field}: {source}")]
+    OverBudget { field: String, source: OverBudget },
 
     /// A glTF file named by a `[[meshes]]` table that could not be loaded.
     #[error("{field}: {source}")]
@@ -166,8 +253,13 @@ impl Scene {
         self.height = height;
     }
 
-    /// Reads and checks a scene file.
+    /// Reads and checks a scene file within the default [`Limits`].
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
+        Scene::load_with(path, &Limits::default())
+    }
+
+    /// Reads and checks a scene file within `limits`.
+    pub fn load_with(path: &Path, limits: &Limits) -> Result<Scene, SceneError> {
         let io = |source| SceneError {
             path: path.to_path_buf(),
             kind: SceneErrorKind::Io { source },
@@ -179,21 +271,33 @@ impl Scene {
                 format!("not UTF-8 text: {e}"),
             ))
         })?;
-        Scene::parse(&text, path)
+        Scene::parse_with(&text, path, limits)
     }
 
-    /// Parses scene text; `path` names it in errors and anchors relative glTF paths.
+    /// Parses scene text within the default [`Limits`]; `path` names it in errors and
+    /// anchors relative glTF paths.
     pub fn parse(text: &str, path: &Path) -> Result<Scene, SceneError> {
+        Scene::parse_with(text, path, &Limits::default())
+    }
+
+    /// [`Scene::parse`] within `limits`.
+    pub fn parse_with(text: &str, path: &Path, limits: &Limits) -> Result<Scene, SceneError> {
         let file: SceneFile = toml::from_str(text).map_err(|source| SceneError {
             path: path.to_path_buf(),
             kind: SceneErrorKind::Toml { source },
         })?;
-        Builder { path }.build(file)
+        Builder {
+            path,
+            budget: std::cell::RefCell::new(MeshBudget::new(limits.mesh_bytes)),
+        }
+        .build(file)
     }
 }
 
 struct Builder<'a> {
     path: &'a Path,
+    /// What the meshes built so far took.
+    budget: std::cell::RefCell<MeshBudget>,
 }
 
 impl Builder<'_> {
@@ -714,6 +818,15 @@ impl Builder<'_> {
                     ));
                 }
                 let data = self.builtin(field, name, spec)?;
+                self.budget
+                    .borrow_mut()
+                    .charge(data.vertices.len(), data.indices.len())
+                    .map_err(|source| {
+                        self.error(SceneErrorKind::OverBudget {
+                            field: field.to_owned(),
+                            source,
+                        })
+                    })?;
                 Ok(vec![(name.clone(), data, model, None)])
             }
             (Some(_), None) if spec.level.is_some() || spec.color.is_some() => {
@@ -726,12 +839,13 @@ impl Builder<'_> {
             (Some(file), None) => {
                 let base = self.path.parent().unwrap_or(Path::new("."));
                 let gltf_path = base.join(file);
-                let loaded = self::gltf::load(&gltf_path).map_err(|source| {
-                    self.error(SceneErrorKind::Gltf {
-                        field: format!("{field}.gltf"),
-                        source: Box::new(source),
-                    })
-                })?;
+                let loaded =
+                    self::gltf::load_with(&gltf_path, &mut self.budget.borrow_mut()).map_err(|source| {
+                        self.error(SceneErrorKind::Gltf {
+                            field: format!("{field}.gltf"),
+                            source: Box::new(source),
+                        })
+                    })?;
                 warnings.extend(
                     loaded
                         .warnings

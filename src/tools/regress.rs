@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use crate::gl::state::LightingMode;
 use crate::images::compare::{compare, heat_map, load_image, Comparison, Tolerance};
 use crate::images::save_png;
-use crate::scene::{render_scene, Scene};
+use crate::scene::{render_scene, Limits, Scene};
 use crate::tools::table::{Align, Table};
 use crate::tools::{Error, Result};
 use crate::Renderer;
@@ -41,6 +41,8 @@ pub struct Job {
     pub bless: bool,
     /// How far an image may differ from its reference and pass.
     pub tolerance: Tolerance,
+    /// What each scene may make ffvk allocate.
+    pub limits: Limits,
 }
 
 /// What happened to one image.
@@ -192,8 +194,13 @@ pub fn check_outputs(job: &Job, files: &[SceneFile]) -> Result<()> {
 }
 
 /// Loads a scene, resized when asked; warnings go to `log`.
-pub fn load_scene(path: &Path, size: Option<(u32, u32)>, log: &mut dyn FnMut(&str)) -> Result<Scene> {
-    let mut scene = Scene::load(path)?;
+pub fn load_scene(
+    path: &Path,
+    size: Option<(u32, u32)>,
+    limits: &Limits,
+    log: &mut dyn FnMut(&str),
+) -> Result<Scene> {
+    let mut scene = Scene::load_with(path, limits)?;
     for w in &scene.warnings {
         log(&format!("warning: {w}"));
     }
@@ -213,7 +220,7 @@ pub fn run(renderer: &mut Renderer, job: &Job, log: &mut dyn FnMut(&str)) -> Res
     check_outputs(job, &files)?;
     let mut rows = Vec::new();
     for file in &files {
-        let scene = load_scene(&file.path, job.size, log)?;
+        let scene = load_scene(&file.path, job.size, &job.limits, log)?;
         let modes: Vec<Option<LightingMode>> = if job.modes.is_empty() {
             vec![None]
         } else {

@@ -60,6 +60,8 @@ pub struct Device {
     pub(crate) raw: ash::Device,
     pub(crate) memory: vk::PhysicalDeviceMemoryProperties,
     pub(crate) limits: vk::PhysicalDeviceLimits,
+    /// Vulkan 1.1's maxMemoryAllocationSize: the largest single allocation.
+    pub(crate) max_allocation: u64,
     pub(crate) info: DeviceInfo,
     /// What only ffvk's own device has; `None` for a caller's device.
     pub(crate) own: Option<OwnDevice>,
@@ -207,6 +209,7 @@ impl Device {
             raw,
             memory,
             limits: props.limits,
+            max_allocation: supported.max_memory_allocation_size,
             info,
             own: Some(OwnDevice {
                 instance,
@@ -267,6 +270,7 @@ impl Device {
             raw: device,
             memory,
             limits: props.limits,
+            max_allocation: supported.max_memory_allocation_size,
             info,
             own: None,
         }))
@@ -295,6 +299,28 @@ impl Device {
                         .contains(flags)
             })
             .ok_or_else(|| Error::MissingFeature(format!("a memory type with {flags:?}")))
+    }
+
+    /// Refuses, before asking the driver, an allocation of `size` bytes of memory type
+    /// `type_index` that can never succeed: larger than the type's heap or than
+    /// maxMemoryAllocationSize. (Drivers that allocate from the host, lavapipe among them,
+    /// may otherwise try and take the machine's memory with them.)
+    pub(crate) fn check_allocation(&self, what: &'static str, size: u64, type_index: u32) -> Result<()> {
+        let heap = self.memory.memory_types[type_index as usize].heap_index;
+        let heap_size = self.memory.memory_heaps[heap as usize].size;
+        let too_large = |limit, limit_name| Error::TooLarge {
+            what,
+            bytes: size,
+            limit,
+            limit_name,
+        };
+        if size > heap_size {
+            return Err(too_large(heap_size, "memory heap"));
+        }
+        if self.max_allocation != 0 && size > self.max_allocation {
+            return Err(too_large(self.max_allocation, "maxMemoryAllocationSize"));
+        }
+        Ok(())
     }
 
     /// Waits until the device is idle.
@@ -329,6 +355,8 @@ struct Supported {
     pipeline_statistics_query: bool,
     driver_name: String,
     driver_info: String,
+    /// Vulkan 1.1's maxMemoryAllocationSize.
+    max_memory_allocation_size: u64,
 }
 
 impl Supported {
@@ -342,7 +370,10 @@ impl Supported {
             .push_next(&mut v13)
             .push_next(&mut provoking);
         let mut driver = vk::PhysicalDeviceDriverProperties::default();
-        let mut props2 = vk::PhysicalDeviceProperties2::default().push_next(&mut driver);
+        let mut v11 = vk::PhysicalDeviceVulkan11Properties::default();
+        let mut props2 = vk::PhysicalDeviceProperties2::default()
+            .push_next(&mut driver)
+            .push_next(&mut v11);
         // SAFETY: the chained structs live until the calls return; the caller vouches for
         // the handle.
         unsafe {
@@ -363,6 +394,7 @@ impl Supported {
             pipeline_statistics_query,
             driver_name: cstr(&driver.driver_name),
             driver_info: cstr(&driver.driver_info),
+            max_memory_allocation_size: v11.max_memory_allocation_size,
         }
     }
 }

@@ -25,6 +25,19 @@ unsafe impl Send for Buffer {}
 // SAFETY: see above; &self methods only read.
 unsafe impl Sync for Buffer {}
 
+/// What a buffer of `usage` holds, for messages.
+fn buffer_purpose(usage: vk::BufferUsageFlags) -> &'static str {
+    if usage.contains(vk::BufferUsageFlags::VERTEX_BUFFER) {
+        "vertex buffer"
+    } else if usage.contains(vk::BufferUsageFlags::INDEX_BUFFER) {
+        "index buffer"
+    } else if usage.contains(vk::BufferUsageFlags::UNIFORM_BUFFER) {
+        "uniform buffer"
+    } else {
+        "readback buffer"
+    }
+}
+
 impl Buffer {
     /// A buffer of `size` bytes (at least 4) for `usage`, mapped for its whole life.
     pub fn new(device: &Arc<Device>, size: u64, usage: vk::BufferUsageFlags) -> Result<Self> {
@@ -40,6 +53,7 @@ impl Buffer {
             req.memory_type_bits,
             vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT,
         )?;
+        device.check_allocation(buffer_purpose(usage), req.size, type_index)?;
         let memory = Memory::allocate(device, req.size, type_index)?;
         // SAFETY: the memory is fresh, large enough per the requirements, and the buffer unbound.
         unsafe { device.raw.bind_buffer_memory(raw.raw(), memory.raw(), 0) }
@@ -130,6 +144,12 @@ impl Image {
         // SAFETY: raw is a live image of this device.
         let req = unsafe { device.raw.get_image_memory_requirements(raw.raw()) };
         let type_index = device.memory_type(req.memory_type_bits, vk::MemoryPropertyFlags::empty())?;
+        let what = if usage.contains(vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT) {
+            "depth image"
+        } else {
+            "color image"
+        };
+        device.check_allocation(what, req.size, type_index)?;
         let memory = Memory::allocate(device, req.size, type_index)?;
         // SAFETY: fresh memory of the required size, image unbound.
         unsafe { device.raw.bind_image_memory(raw.raw(), memory.raw(), 0) }

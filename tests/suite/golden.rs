@@ -40,6 +40,7 @@ fn check_scenes(area: &str, scenes: PathBuf) {
         references: Some(root().join("tests/golden").join(area)),
         bless: regress::bless_from_env(),
         tolerance,
+        limits: Default::default(),
     };
     let rows = regress::run(&mut r, &job, &mut |_| {}).unwrap();
     finish(r);

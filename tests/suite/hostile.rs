@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use ffvk::scene::gltf::{load, LoadErrorKind};
-use ffvk::scene::Scene;
+use ffvk::scene::{Limits, Scene};
 
 use crate::support::output_dir;
 
@@ -255,4 +255,136 @@ fn a_megabyte_long_value_is_shortened_in_the_message() {
         assert!(e.contains(field), "{name}: {e}");
         assert!(e.len() < 2000, "{name}: a {} byte message", e.len());
     }
+}
+
+/// A glTF of 3 vertices and `index_count` UNSIGNED_BYTE indices (0, 1, 2, 0, 1, 2, ...) and no
+/// normals, so that every triangle gets vertices of its own: 40 bytes of mesh per index byte.
+fn index_heavy_gltf(dir: &Path, index_count: usize) -> PathBuf {
+    let floats: [f32; 9] = [0., 0., 0., 1., 0., 0., 0., 1., 0.];
+    let mut bin = bytemuck::cast_slice::<f32, u8>(&floats).to_vec();
+    bin.extend((0..index_count).map(|i| (i % 3) as u8));
+    std::fs::write(dir.join("heavy.bin"), &bin).unwrap();
+    let json = format!(
+        r#"{{"asset": {{"version": "2.0"}},
+  "buffers": [{{"uri": "heavy.bin", "byteLength": {len}}}],
+  "bufferViews": [{{"buffer": 0, "byteLength": 36}}, {{"buffer": 0, "byteOffset": 36, "byteLength": {index_count}}}],
+  "accessors": [
+    {{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]}},
+    {{"bufferView": 1, "componentType": 5121, "count": {index_count}, "type": "SCALAR"}}],
+  "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}, "indices": 1}}]}}],
+  "nodes": [{{"mesh": 0}}], "scenes": [{{"nodes": [0]}}], "scene": 0}}"#,
+        len = bin.len()
+    );
+    let path = dir.join("heavy.gltf");
+    std::fs::write(&path, json).unwrap();
+    path
+}
+
+fn ffvk_command(args: &[&str]) -> Command {
+    let mut c = Command::new(env!("CARGO_BIN_EXE_ffvk"));
+    c.args(args)
+        .env("VK_DRIVER_FILES", "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json");
+    c
+}
+
+#[test]
+fn meshes_past_the_scenes_memory_limit_are_refused_before_they_are_read() {
+    let dir = scratch("budget");
+    // One triangle placed by 2,000 nodes: 132 bytes each time it is placed.
+    triangle_bin(&dir, "t.bin");
+    let nodes = vec![r#"{"mesh": 0}"#; 2000].join(",");
+    let roots: Vec<String> = (0..2000).map(|i| i.to_string()).collect();
+    let many = dir.join("many.gltf");
+    std::fs::write(&many, gltf_json("t.bin", &nodes, &roots.join(","))).unwrap();
+    std::fs::write(dir.join("many.toml"), "[[meshes]]\ngltf = \"many.gltf\"\n").unwrap();
+    let limits = Limits { mesh_bytes: 100_000 };
+    let e = Scene::load_with(&dir.join("many.toml"), &limits)
+        .unwrap_err()
+        .to_string();
+    for part in [
+        "many.toml",
+        "meshes[0].gltf",
+        "mesh 0 primitive 0",
+        "3 vertices and 3 indices take 132 bytes",
+        "limit of 100000 bytes",
+        "--max-mesh-mib",
+    ] {
+        assert!(e.contains(part), "{part:?} missing from {e}");
+    }
+    let scene = Scene::load_with(
+        &dir.join("many.toml"),
+        &Limits {
+            mesh_bytes: 2000 * 132,
+        },
+    )
+    .unwrap();
+    assert_eq!(scene.meshes.len(), 2000, "exactly at the limit loads");
+    // Built-in shapes count too.
+    std::fs::write(
+        dir.join("spheres.toml"),
+        "[[meshes]]\nbuiltin = \"sphere\"\nlevel = 1024\n".repeat(3),
+    )
+    .unwrap();
+    let e = Scene::load_with(&dir.join("spheres.toml"), &Limits { mesh_bytes: 70 << 20 })
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("meshes[2]") && e.contains("mesh memory limit"), "{e}");
+
+    // From the command line: refused under a low limit, rendered once it is raised.
+    index_heavy_gltf(&dir, 300_000);
+    std::fs::write(
+        dir.join("heavy.toml"),
+        "[image]\nsize = [16, 16]\n[[lights]]\n[[meshes]]\ngltf = \"heavy.gltf\"\n",
+    )
+    .unwrap();
+    let scene = dir.join("heavy.toml");
+    let out = ffvk_command(&["--max-mesh-mib", "4", "render", scene.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("heavy.gltf") && stderr.contains("limit of 4194304 bytes"),
+        "{stderr}"
+    );
+    assert!(!dir.join("heavy.png").exists());
+    let out = ffvk_command(&["--max-mesh-mib", "16", "render", scene.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(dir.join("heavy.png").exists());
+}
+
+#[test]
+fn running_out_of_host_memory_while_reading_a_mesh_is_an_error_not_an_abort() {
+    let dir = scratch("oom");
+    // 10 M indices: 400 MB of vertices, past a 400 MB address-space limit with the rest.
+    index_heavy_gltf(&dir, 10_000_002);
+    std::fs::write(
+        dir.join("s.toml"),
+        "[[lights]]\n[[meshes]]\ngltf = \"heavy.gltf\"\n",
+    )
+    .unwrap();
+    let scene = dir.join("s.toml");
+    let out = Command::new("prlimit")
+        .arg("--as=400000000")
+        .arg(env!("CARGO_BIN_EXE_ffvk"))
+        .args([
+            "--max-mesh-mib",
+            "4096",
+            "explain",
+            scene.to_str().unwrap(),
+            "--pixel",
+            "1,1",
+        ])
+        .output()
+        .expect("prlimit (util-linux) runs");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("heavy.gltf")
+            && stderr.contains("cannot allocate")
+            && stderr.contains("bytes of host memory"),
+        "{stderr}"
+    );
 }

@@ -26,6 +26,7 @@ pub use materials::{gl_material, PbrMaterial};
 pub use primitives::{AccessorPart, AccessorProblem};
 
 use crate::mesh::MeshData;
+use crate::scene::{MeshBudget, OverBudget};
 use glam::Mat4;
 use gltf::json::Value;
 use std::path::{Path, PathBuf};
@@ -238,6 +239,17 @@ pub enum LoadErrorKind {
         value: Vec<f32>,
     },
 
+    /// A primitive past the scene's mesh memory limit.
+    #[error("{primitive}: {source}")]
+    OverBudget { primitive: String, source: OverBudget },
+
+    /// A host allocation for a primitive's data failed.
+    #[error("{primitive}: {source}")]
+    Alloc {
+        primitive: String,
+        source: crate::alloc::AllocError,
+    },
+
     /// A node hierarchy with a cycle through node `node`.
     #[error("node {node} is its own ancestor: expected the node hierarchy to be a forest")]
     NodeCycle { node: usize },
@@ -310,6 +322,12 @@ impl Context<'_> {
 /// determinant (a mirror) each triangle's first two vertices are swapped, so that drawn with
 /// `transform` the front faces are counter-clockwise on screen as glTF intends.
 pub fn load(path: &Path) -> Result<Loaded, LoadError> {
+    load_with(path, &mut MeshBudget::new(crate::scene::DEFAULT_MESH_BYTES))
+}
+
+/// [`load`], each primitive charged to `budget` before it is read (once per node that
+/// places it).
+pub fn load_with(path: &Path, budget: &mut MeshBudget) -> Result<Loaded, LoadError> {
     let read::Parsed { raw, document, blob } = read::parse(path)?;
     let cx = Context { path, raw: &raw };
     let mut warnings = Vec::new();
@@ -338,7 +356,7 @@ pub fn load(path: &Path) -> Result<Loaded, LoadError> {
         warnings,
         ..Loaded::default()
     };
-    read::walk(&cx, &document, &buffers, &mut out)?;
+    read::walk(&cx, &document, &buffers, budget, &mut out)?;
     out.warnings.extend(materials::texture_warnings(&cx, &document));
     Ok(out)
 }

@@ -2,7 +2,9 @@
 //! triangle lists ([`MeshData`]) as documented on [`load`](super::load).
 
 use super::{Context, LoadError, LoadErrorKind};
+use crate::alloc::try_vec;
 use crate::mesh::{MeshData, Vertex};
+use crate::scene::MeshBudget;
 use glam::{Vec3, Vec4};
 use gltf::accessor::{DataType, Dimensions};
 use gltf::json::Value;
@@ -260,9 +262,15 @@ where
         })
     };
     check_accessor_bounds(accessor, buffers).map_err(data_error)?;
-    let values: Vec<T> = iter
-        .ok_or_else(|| data_error(AccessorProblem::Unreadable))?
-        .collect();
+    let iter = iter.ok_or_else(|| data_error(AccessorProblem::Unreadable))?;
+    let mut values = try_vec(accessor.count(), "accessor data").map_err(|source| {
+        cx.error(LoadErrorKind::Alloc {
+            primitive: primitive.to_owned(),
+            source,
+        })
+    })?;
+    // At most count elements: the bounds check says the data holds that many.
+    values.extend(iter.take(accessor.count()));
     if values.len() != accessor.count() {
         return Err(data_error(AccessorProblem::ShortRead {
             read: values.len(),
@@ -301,6 +309,7 @@ pub(super) fn read_primitive(
     mesh: usize,
     primitive: &gltf::Primitive,
     mirrored: bool,
+    budget: &mut MeshBudget,
     warnings: &mut Vec<String>,
 ) -> Result<MeshData, LoadError> {
     let label = cx.primitive_label(mesh, primitive.index());
@@ -311,6 +320,32 @@ pub(super) fn read_primitive(
             mode: mode_name(mode),
         }));
     }
+    // What the triangle list will take, charged before anything is read.
+    let vertex_count = primitive.get(&Semantic::Positions).map_or(0, |a| a.count());
+    let sequence_len = primitive.indices().map_or(vertex_count, |a| a.count());
+    let triangle_count = match mode {
+        Mode::Triangles => sequence_len / 3,
+        _ => sequence_len.saturating_sub(2),
+    };
+    let kept_vertices = if primitive.get(&Semantic::Normals).is_some() {
+        vertex_count
+    } else {
+        triangle_count.saturating_mul(3)
+    };
+    budget
+        .charge(kept_vertices, triangle_count.saturating_mul(3))
+        .map_err(|source| {
+            cx.error(LoadErrorKind::OverBudget {
+                primitive: label.clone(),
+                source,
+            })
+        })?;
+    let alloc_error = |source| {
+        cx.error(LoadErrorKind::Alloc {
+            primitive: label.clone(),
+            source,
+        })
+    };
     let reader = primitive.reader(|b| buffers.get(b.index()).map(|d| &d.0[..]));
     let format_error = |attribute: &str, accessor: &gltf::Accessor, expected: &'static str| {
         cx.error(LoadErrorKind::AttributeFormat {
@@ -389,7 +424,11 @@ pub(super) fn read_primitive(
     };
 
     let sequence: Vec<u32> = match primitive.indices() {
-        None => (0..vertex_count as u32).collect(),
+        None => {
+            let mut sequence = try_vec(vertex_count, "mesh indices").map_err(alloc_error)?;
+            sequence.extend(0..vertex_count as u32);
+            sequence
+        }
         Some(accessor) => {
             let unsigned = matches!(accessor.data_type(), DataType::U8 | DataType::U16 | DataType::U32);
             if !(unsigned && accessor.dimensions() == Dimensions::Scalar) {
@@ -418,7 +457,8 @@ pub(super) fn read_primitive(
         }
     };
 
-    let mut triangles: Vec<[u32; 3]> = match mode {
+    let mut triangles: Vec<[u32; 3]> = try_vec(triangle_count, "mesh triangles").map_err(alloc_error)?;
+    match mode {
         Mode::Triangles => {
             if sequence.len() % 3 != 0 {
                 return Err(cx.error(LoadErrorKind::PartialTriangle {
@@ -431,29 +471,21 @@ pub(super) fn read_primitive(
                     count: sequence.len(),
                 }));
             }
-            sequence.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect()
+            triangles.extend(sequence.chunks_exact(3).map(|t| [t[0], t[1], t[2]]));
         }
         // GL's order: triangle i is (i, i+1, i+2) for even i and (i+1, i, i+2) for odd i,
         // glTF's {i, i+2, i+1} up to rotation; the provoking vertex i+2 comes last.
-        Mode::TriangleStrip => sequence
-            .windows(3)
-            .enumerate()
-            .map(|(i, w)| {
-                if i % 2 == 0 {
-                    [w[0], w[1], w[2]]
-                } else {
-                    [w[1], w[0], w[2]]
-                }
-            })
-            .collect(),
+        Mode::TriangleStrip => triangles.extend(sequence.windows(3).enumerate().map(|(i, w)| {
+            if i % 2 == 0 {
+                [w[0], w[1], w[2]]
+            } else {
+                [w[1], w[0], w[2]]
+            }
+        })),
         // GL's (0, i+1, i+2), glTF's {i+1, i+2, 0} up to rotation; provoking vertex last.
-        Mode::TriangleFan => sequence
-            .windows(2)
-            .skip(1)
-            .map(|w| [sequence[0], w[0], w[1]])
-            .collect(),
+        Mode::TriangleFan => triangles.extend(sequence.windows(2).skip(1).map(|w| [sequence[0], w[0], w[1]])),
         _ => unreachable!("checked above"),
-    };
+    }
 
     let color_of = |i: u32| {
         colors
@@ -464,13 +496,15 @@ pub(super) fn read_primitive(
     let mut data = MeshData::default();
     match &normals {
         Some(normals) => {
-            data.vertices = (0..vertex_count as u32)
-                .map(|i| Vertex::new(position_of(i), Vec3::from_array(normals[i as usize]), color_of(i)))
-                .collect();
+            data.vertices = try_vec(vertex_count, "mesh vertices").map_err(alloc_error)?;
+            data.vertices
+                .extend((0..vertex_count as u32).map(|i| {
+                    Vertex::new(position_of(i), Vec3::from_array(normals[i as usize]), color_of(i))
+                }));
         }
         None => {
             // Flat normals: every triangle gets its own three vertices.
-            let mut flat = Vec::with_capacity(triangles.len() * 3);
+            let mut flat = try_vec(triangles.len() * 3, "mesh vertices").map_err(alloc_error)?;
             for t in &mut triangles {
                 let [a, b, c] = t.map(position_of);
                 let normal = (b - a).cross(c - a).normalize_or(Vec3::Z);
@@ -487,7 +521,8 @@ pub(super) fn read_primitive(
     if mirrored {
         triangles.iter_mut().for_each(|t| t.swap(0, 1));
     }
-    data.indices = triangles.into_iter().flatten().collect();
+    data.indices = try_vec(triangles.len() * 3, "mesh indices").map_err(alloc_error)?;
+    data.indices.extend(triangles.into_iter().flatten());
     Ok(data)
 }
 

@@ -6,6 +6,7 @@ use super::lights::punctual_light;
 use super::materials::pbr_material;
 use super::primitives::read_primitive;
 use super::{Context, LoadError, LoadErrorKind, Loaded, LoadedMesh};
+use crate::scene::MeshBudget;
 use glam::Mat4;
 use gltf::json::Value;
 use std::path::Path;
@@ -184,6 +185,7 @@ pub(super) fn walk(
     cx: &Context,
     document: &gltf::Document,
     buffers: &[gltf::buffer::Data],
+    budget: &mut MeshBudget,
     out: &mut Loaded,
 ) -> Result<(), LoadError> {
     let mut roots: Vec<gltf::Node> = Vec::new();
@@ -201,7 +203,7 @@ pub(super) fn walk(
     let mut on_path = vec![false; document.nodes().len()];
     let mut names = Vec::new();
     for root in roots {
-        visit(cx, buffers, root, &mut on_path, &mut names, out)?;
+        visit(cx, buffers, root, &mut on_path, &mut names, budget, out)?;
     }
     Ok(())
 }
@@ -222,6 +224,7 @@ fn visit(
     root: gltf::Node,
     on_path: &mut [bool],
     names: &mut Vec<String>,
+    budget: &mut MeshBudget,
     out: &mut Loaded,
 ) -> Result<(), LoadError> {
     let mut stack = vec![Step::Enter(root, Mat4::IDENTITY)];
@@ -253,7 +256,7 @@ fn visit(
                     out.warnings
                         .push(format!("{}: morph targets are ignored", cx.primitive_label(m, p)));
                 }
-                let data = read_primitive(cx, buffers, m, &primitive, mirrored, &mut out.warnings)?;
+                let data = read_primitive(cx, buffers, m, &primitive, mirrored, budget, &mut out.warnings)?;
                 let material = pbr_material(cx, primitive.material());
                 out.meshes.push(LoadedMesh {
                     name: if several {
