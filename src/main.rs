@@ -29,6 +29,10 @@ struct Cli {
     #[arg(long, global = true, value_name = "MIB", default_value_t = ffvk::scene::DEFAULT_MESH_BYTES >> 20,
           value_parser = clap::value_parser!(u64).range(1..=1 << 24))]
     max_mesh_mib: u64,
+    /// Let glTF buffer URIs reach files inside DIR too (by default only the glTF file's own
+    /// folder); may be given more than once.
+    #[arg(long, global = true, value_name = "DIR")]
+    allow_root: Vec<PathBuf>,
     #[command(subcommand)]
     command: Command,
 }
@@ -129,6 +133,7 @@ fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
 
 fn limits(cli: &Cli) -> ffvk::scene::Limits {
     ffvk::scene::Limits {
+        asset_roots: cli.allow_root.clone(),
         mesh_bytes: cli.max_mesh_mib << 20,
     }
 }

@@ -35,9 +35,12 @@ pub const MAX_SCENE_BYTES: u64 = 16 << 20;
 /// own. [`Limits::mesh_bytes`] (`ffvk --max-mesh-mib`) raises it.
 pub const DEFAULT_MESH_BYTES: u64 = 1 << 30;
 
-/// What a scene file may make ffvk allocate.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// What a scene file may make ffvk allocate and read.
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Limits {
+    /// Folders a glTF buffer URI may reach besides the glTF file's own (`ffvk --allow-root`):
+    /// by default none, so that an untrusted asset reads nothing outside its folder.
+    pub asset_roots: Vec<PathBuf>,
     /// The bytes all the scene's meshes may take on the host, counted as ffvk stores them
     /// (a [`Vertex`](crate::mesh::Vertex) is 40 bytes, an index 4), each glTF primitive
     /// before it is read and once per node that places it. The device holds the same
@@ -48,6 +51,7 @@ pub struct Limits {
 impl Default for Limits {
     fn default() -> Self {
         Limits {
+            asset_roots: Vec::new(),
             mesh_bytes: DEFAULT_MESH_BYTES,
         }
     }
@@ -288,6 +292,7 @@ impl Scene {
         })?;
         Builder {
             path,
+            limits,
             budget: std::cell::RefCell::new(MeshBudget::new(limits.mesh_bytes)),
         }
         .build(file)
@@ -296,6 +301,7 @@ impl Scene {
 
 struct Builder<'a> {
     path: &'a Path,
+    limits: &'a Limits,
     /// What the meshes built so far took.
     budget: std::cell::RefCell<MeshBudget>,
 }
@@ -839,8 +845,8 @@ impl Builder<'_> {
             (Some(file), None) => {
                 let base = self.path.parent().unwrap_or(Path::new("."));
                 let gltf_path = base.join(file);
-                let loaded =
-                    self::gltf::load_with(&gltf_path, &mut self.budget.borrow_mut()).map_err(|source| {
+                let loaded = self::gltf::load_with(&gltf_path, self.limits, &mut self.budget.borrow_mut())
+                    .map_err(|source| {
                         self.error(SceneErrorKind::Gltf {
                             field: format!("{field}.gltf"),
                             source: Box::new(source),

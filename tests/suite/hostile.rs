@@ -93,6 +93,33 @@ fn buffer_uris_may_not_leave_the_assets_folder() {
         );
         assert!(e.to_string().contains("leaves the asset's folder"), "{e}");
     }
+    // A folder the user allows explicitly widens the rule to it, and only to it.
+    let allowed = Limits {
+        asset_roots: vec![dir.clone()],
+        ..Limits::default()
+    };
+    std::fs::write(asset.join("s.toml"), "[[meshes]]\ngltf = \"a.gltf\"\n").unwrap();
+    for (uri, loads) in [
+        ("../outside.bin", true),
+        ("link.bin", true),
+        ("/etc/passwd", false),
+        ("../../outside.bin", false),
+    ] {
+        std::fs::write(asset.join("a.gltf"), gltf_json(uri, r#"{"mesh": 0}"#, "0")).unwrap();
+        let loaded = Scene::load_with(&asset.join("s.toml"), &allowed);
+        assert_eq!(
+            loaded.is_ok(),
+            loads,
+            "{uri}: {:?}",
+            loaded.err().map(|e| e.to_string())
+        );
+        if !loads {
+            let e = Scene::load_with(&asset.join("s.toml"), &allowed)
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains("--allow-root"), "{e}");
+        }
+    }
     // Inside the folder, percent-encoded or not, it loads.
     for uri in ["inside.bin", "./inside.bin", "%69nside.bin"] {
         let path = asset.join("b.gltf");
@@ -297,7 +324,10 @@ fn meshes_past_the_scenes_memory_limit_are_refused_before_they_are_read() {
     let many = dir.join("many.gltf");
     std::fs::write(&many, gltf_json("t.bin", &nodes, &roots.join(","))).unwrap();
     std::fs::write(dir.join("many.toml"), "[[meshes]]\ngltf = \"many.gltf\"\n").unwrap();
-    let limits = Limits { mesh_bytes: 100_000 };
+    let limits = Limits {
+        mesh_bytes: 100_000,
+        ..Limits::default()
+    };
     let e = Scene::load_with(&dir.join("many.toml"), &limits)
         .unwrap_err()
         .to_string();
@@ -315,6 +345,7 @@ fn meshes_past_the_scenes_memory_limit_are_refused_before_they_are_read() {
         &dir.join("many.toml"),
         &Limits {
             mesh_bytes: 2000 * 132,
+            ..Limits::default()
         },
     )
     .unwrap();
@@ -325,9 +356,15 @@ fn meshes_past_the_scenes_memory_limit_are_refused_before_they_are_read() {
         "[[meshes]]\nbuiltin = \"sphere\"\nlevel = 1024\n".repeat(3),
     )
     .unwrap();
-    let e = Scene::load_with(&dir.join("spheres.toml"), &Limits { mesh_bytes: 70 << 20 })
-        .unwrap_err()
-        .to_string();
+    let e = Scene::load_with(
+        &dir.join("spheres.toml"),
+        &Limits {
+            mesh_bytes: 70 << 20,
+            ..Limits::default()
+        },
+    )
+    .unwrap_err()
+    .to_string();
     assert!(e.contains("meshes[2]") && e.contains("mesh memory limit"), "{e}");
 
     // From the command line: refused under a low limit, rendered once it is raised.

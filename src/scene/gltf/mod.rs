@@ -26,7 +26,7 @@ pub use materials::{gl_material, PbrMaterial};
 pub use primitives::{AccessorPart, AccessorProblem};
 
 use crate::mesh::MeshData;
-use crate::scene::{MeshBudget, OverBudget};
+use crate::scene::{Limits, MeshBudget, OverBudget};
 use glam::Mat4;
 use gltf::json::Value;
 use std::path::{Path, PathBuf};
@@ -125,7 +125,11 @@ pub enum LoadErrorKind {
     /// A buffer URI that leaves the glTF file's folder (an absolute path, a `file:` URI, `..`
     /// past the folder, or a link out of it): an asset may only read `data:` URIs and files
     /// inside its own folder.
-    #[error("buffer {buffer}: the URI {uri:?} leaves the asset's folder: expected a data: URI or a relative path inside {}", .folder.display())]
+    #[error(
+        "buffer {buffer}: the URI {uri:?} leaves the asset's folder: expected a data: URI or a \
+         relative path inside {} (ffvk --allow-root DIR widens that)",
+        .folder.display()
+    )]
     BufferOutside {
         buffer: usize,
         uri: String,
@@ -322,12 +326,13 @@ impl Context<'_> {
 /// determinant (a mirror) each triangle's first two vertices are swapped, so that drawn with
 /// `transform` the front faces are counter-clockwise on screen as glTF intends.
 pub fn load(path: &Path) -> Result<Loaded, LoadError> {
-    load_with(path, &mut MeshBudget::new(crate::scene::DEFAULT_MESH_BYTES))
+    let limits = Limits::default();
+    load_with(path, &limits, &mut MeshBudget::new(limits.mesh_bytes))
 }
 
-/// [`load`], each primitive charged to `budget` before it is read (once per node that
-/// places it).
-pub fn load_with(path: &Path, budget: &mut MeshBudget) -> Result<Loaded, LoadError> {
+/// [`load`] with buffer URIs also allowed into `limits.asset_roots`, and each primitive
+/// charged to `budget` before it is read (once per node that places it).
+pub fn load_with(path: &Path, limits: &Limits, budget: &mut MeshBudget) -> Result<Loaded, LoadError> {
     let read::Parsed { raw, document, blob } = read::parse(path)?;
     let cx = Context { path, raw: &raw };
     let mut warnings = Vec::new();
@@ -350,7 +355,7 @@ pub fn load_with(path: &Path, budget: &mut MeshBudget) -> Result<Loaded, LoadErr
     primitives::check_positions(&cx)?;
     read::validate(&cx, &document)?;
     values::check(&cx, &document)?;
-    let buffers = read::read_buffers(&cx, &document, blob)?;
+    let buffers = read::read_buffers(&cx, &document, blob, &limits.asset_roots)?;
 
     let mut out = Loaded {
         warnings,

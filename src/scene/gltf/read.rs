@@ -57,6 +57,7 @@ pub(super) fn read_buffers(
     cx: &Context,
     document: &gltf::Document,
     mut blob: Option<Vec<u8>>,
+    roots: &[std::path::PathBuf],
 ) -> Result<Vec<gltf::buffer::Data>, LoadError> {
     let base = cx.path.parent().unwrap_or(Path::new(""));
     let mut buffers = Vec::new();
@@ -68,13 +69,15 @@ pub(super) fn read_buffers(
         };
         if let gltf::buffer::Source::Uri(uri) = buffer.source() {
             if !uri.starts_with("data:") {
-                let file = inside_folder(base, uri).ok_or_else(|| {
-                    cx.error(LoadErrorKind::BufferOutside {
-                        buffer: index,
-                        uri: uri.chars().take(200).collect(),
-                        folder: base.to_path_buf(),
-                    })
-                })?;
+                let file = inside_folder(base, uri)
+                    .or_else(|| inside_roots(base, uri, roots))
+                    .ok_or_else(|| {
+                        cx.error(LoadErrorKind::BufferOutside {
+                            buffer: index,
+                            uri: uri.chars().take(200).collect(),
+                            folder: base.to_path_buf(),
+                        })
+                    })?;
                 let mut bytes =
                     crate::files::read_regular(&file, super::MAX_FILE_BYTES).map_err(|source| {
                         cx.error(LoadErrorKind::BufferFile {
@@ -159,6 +162,22 @@ fn inside_folder(folder: &Path, uri: &str) -> Option<std::path::PathBuf> {
         // It does not (or cannot be resolved): the read reports that.
         Err(_) => Some(file),
     }
+}
+
+/// The file a URI without a scheme names, relative to `folder` or absolute, when it exists
+/// and lies, after every symbolic link, inside one of `roots` (the folders the user allowed
+/// explicitly). `None` otherwise.
+fn inside_roots(folder: &Path, uri: &str, roots: &[std::path::PathBuf]) -> Option<std::path::PathBuf> {
+    if roots.is_empty() || uri.contains(':') {
+        return None;
+    }
+    let file = folder.join(percent_decode(uri)?);
+    let real = std::fs::canonicalize(&file).ok()?;
+    roots
+        .iter()
+        .filter_map(|root| std::fs::canonicalize(root).ok())
+        .any(|root| real.starts_with(root))
+        .then_some(file)
 }
 
 /// `%XX` escapes decoded; `None` when an escape is malformed or the result is not UTF-8.
