@@ -5,6 +5,7 @@ mod conformance;
 mod determinism;
 mod embedding;
 mod files;
+mod fuzz;
 mod gl_oracle;
 mod golden;
 mod hostile;
