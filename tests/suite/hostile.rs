@@ -425,3 +425,43 @@ fn running_out_of_host_memory_while_reading_a_mesh_is_an_error_not_an_abort() {
         "{stderr}"
     );
 }
+
+#[test]
+fn deeply_nested_toml_and_json_are_errors_not_stack_overflows() {
+    let dir = scratch("nesting");
+    let deep = 100_000;
+    std::fs::write(
+        dir.join("deep.gltf"),
+        format!(
+            r#"{{"asset": {{"version": "2.0"}}, "extras": {}{}}}"#,
+            "[".repeat(deep),
+            "]".repeat(deep)
+        ),
+    )
+    .unwrap();
+    let cases = [
+        (
+            "arrays",
+            format!("x = {}{}\n", "[".repeat(deep), "]".repeat(deep)),
+        ),
+        ("tables", format!("a{} = 1\n", ".a".repeat(deep / 2))),
+        (
+            "inline",
+            format!("x = {}{}\n", "{ a = ".repeat(deep / 8), "}".repeat(deep / 8)),
+        ),
+        ("json", "[[meshes]]\ngltf = \"deep.gltf\"\n".to_string()),
+    ];
+    for (name, text) in cases {
+        // On a 512 KiB stack: a parser recursing once per level would overflow it.
+        let path = dir.join(format!("{name}.toml"));
+        std::fs::write(&path, text).unwrap();
+        let e = std::thread::Builder::new()
+            .stack_size(512 << 10)
+            .spawn(move || Scene::load(&path).map(|_| ()).unwrap_err().to_string())
+            .unwrap()
+            .join()
+            .expect("no stack overflow");
+        assert!(e.contains("recursion limit"), "{name}: {e}");
+        assert!(e.len() < 2000, "{name}: a {} byte message", e.len());
+    }
+}
