@@ -676,6 +676,33 @@ enum Asset {
     Glb(Vec<u8>),
 }
 
+/// What is done to a GLB's bytes.
+#[derive(Debug, Clone)]
+enum Damage {
+    /// One byte anywhere in the first 40 (headers and the start of the JSON).
+    Byte(usize, u8),
+    /// A header word replaced: at 4 (version), 8 (length) or 12 (JSON chunk length).
+    Word(usize, u32),
+    /// The file cut short.
+    Cut(usize),
+}
+
+fn damage() -> BoxedStrategy<Damage> {
+    prop_oneof![
+        (0usize..40, any::<u8>()).prop_map(|(at, b)| Damage::Byte(at, b)),
+        (
+            prop::sample::select(vec![4usize, 8, 12]),
+            prop_oneof![
+                prop::sample::select(vec![0u32, 1, 2, 3, 11, 12, 19, 20, 21, u32::MAX]),
+                any::<u32>()
+            ],
+        )
+            .prop_map(|(at, v)| Damage::Word(at, v)),
+        (0usize..200).prop_map(Damage::Cut),
+    ]
+    .boxed()
+}
+
 fn asset() -> BoxedStrategy<Asset> {
     let bin = prop_oneof![
         // Floats in [-2, 2] with some NaN: positions and normals that mean something.
@@ -702,7 +729,7 @@ fn asset() -> BoxedStrategy<Asset> {
         uri,
         length,
         any::<bool>(),
-        prop::option::weighted(0.05, (0usize..40, any::<u8>())),
+        prop::option::weighted(0.15, damage()),
     )
         .prop_flat_map(|(bin, uri, length, as_glb, damage)| {
             let length = length.unwrap_or_else(|| bin.len().to_string());
@@ -728,10 +755,17 @@ fn asset() -> BoxedStrategy<Asset> {
             gltf_json(buffer).prop_map(move |json| {
                 if as_glb {
                     let mut bytes = glb(json.as_bytes(), Some(&bin));
-                    if let Some((at, byte)) = damage {
-                        // Header and chunk lengths live in the first 20 bytes.
-                        let at = at % bytes.len();
-                        bytes[at] = byte;
+                    match damage {
+                        None => {}
+                        Some(Damage::Byte(at, byte)) => {
+                            let at = at % bytes.len();
+                            bytes[at] = byte;
+                        }
+                        // The header's version (4), its length (8) or the JSON chunk's (12).
+                        Some(Damage::Word(at, value)) => {
+                            bytes[at..at + 4].copy_from_slice(&value.to_le_bytes())
+                        }
+                        Some(Damage::Cut(at)) => bytes.truncate(at % (bytes.len() + 1)),
                     }
                     Asset::Glb(bytes)
                 } else {

@@ -465,3 +465,31 @@ fn deeply_nested_toml_and_json_are_errors_not_stack_overflows() {
         assert!(e.len() < 2000, "{name}: a {} byte message", e.len());
     }
 }
+
+#[test]
+fn glb_headers_with_a_short_length_or_another_version_are_errors() {
+    let dir = scratch("glb_header");
+    let header = |version: u32, length: u32| {
+        let mut bytes = b"glTF".to_vec();
+        bytes.extend(version.to_le_bytes());
+        bytes.extend(length.to_le_bytes());
+        bytes
+    };
+    // The glTF-Validator's zero_length.glb and invalid_version.glb, and their neighbours.
+    let cases = [
+        ("zero_length", header(2, 0), "length is 0"),
+        ("short_length", header(2, 11), "length is 11"),
+        ("past_the_end", header(2, 400), "at most the file's 12 bytes"),
+        ("version_0", header(0, 12), "GLB version 0: expected 2"),
+        ("truncated", b"glTF\x02\x00".to_vec(), "a GLB header of 6 bytes"),
+    ];
+    for (name, bytes, words) in cases {
+        let path = dir.join(format!("{name}.glb"));
+        std::fs::write(&path, bytes).unwrap();
+        let e = load(&path).expect_err(name).to_string();
+        assert!(
+            e.contains(&format!("{name}.glb")) && e.contains(words),
+            "{name}: {e}"
+        );
+    }
+}

@@ -28,6 +28,7 @@ pub(super) fn parse(path: &Path) -> Result<Parsed, LoadError> {
         .map_err(|source| error(LoadErrorKind::Io { source }))?;
     let parse_error = |message: String| error(LoadErrorKind::Parse { message });
     let raw: Value = if bytes.starts_with(b"glTF") {
+        check_glb_header(&bytes).map_err(parse_error)?;
         let glb = gltf::Glb::from_slice(&bytes).map_err(|e| parse_error(e.to_string()))?;
         gltf::json::deserialize::from_slice(&glb.json).map_err(|e| parse_error(e.to_string()))?
     } else {
@@ -36,6 +37,32 @@ pub(super) fn parse(path: &Path) -> Result<Parsed, LoadError> {
     let gltf::Gltf { document, blob } =
         gltf::Gltf::from_slice_without_validation(&bytes).map_err(|e| parse_error(e.to_string()))?;
     Ok(Parsed { raw, document, blob })
+}
+
+/// The GLB header's version and length, checked before the `gltf` crate reads them (its
+/// reader subtracts the header size from the length unchecked, which panics on a length
+/// below 12 in builds with overflow checks).
+fn check_glb_header(bytes: &[u8]) -> Result<(), String> {
+    let word = |at: usize| {
+        bytes
+            .get(at..at + 4)
+            .map(|w| u32::from_le_bytes([w[0], w[1], w[2], w[3]]))
+    };
+    let (Some(version), Some(length)) = (word(4), word(8)) else {
+        return Err(format!("a GLB header of {} bytes: expected 12", bytes.len()));
+    };
+    if version != 2 {
+        return Err(format!("GLB version {version}: expected 2"));
+    }
+    // The 12-byte header and at least one chunk header (the JSON chunk's).
+    if length < 20 || length as usize > bytes.len() {
+        return Err(format!(
+            "the GLB header's length is {length}: expected at least 20 (a header and a JSON chunk) \
+             and at most the file's {} bytes",
+            bytes.len()
+        ));
+    }
+    Ok(())
 }
 
 /// Runs the `gltf` crate's validator; what it finds makes the error.
