@@ -1,9 +1,13 @@
-//! Checks the OSMesa reference renderer itself against values worked out by hand from the
-//! GL 2.1 lighting equation (not from ffvk), so that it can serve as the oracle.
+//! Checks the GL reference renderer (fixed-function OpenGL through EGL) itself against values
+//! worked out by hand from the GL 2.1 lighting equation (not from ffvk), so that it can serve
+//! as the oracle; and how it chooses, and fails to find, a GL driver and device.
 
 use ffvk::gl::state::{LightingMode, LightingState};
 use ffvk::mesh::{MeshData, Vertex};
-use ffvk::tools::gl_reference::{gl_info, render_gl, GlDraw, GlScene};
+use ffvk::tools::gl_reference::{
+    gl_info, gl_info_with, render_gl, render_gl_with, time_frames_with, GlDraw, GlError, GlOptions, GlScene,
+    NoDriver,
+};
 use glam::{Mat4, Vec3, Vec4};
 
 const SIZE: u32 = 16;
@@ -62,7 +66,7 @@ fn lit_default_light0() -> LightingState {
 
 #[test]
 fn reports_a_fixed_function_context() {
-    let info = gl_info().expect("OSMesa context");
+    let info = gl_info().expect("a GL context");
     println!("{info:?}");
     assert!(info.max_lights >= 8, "GL_MAX_LIGHTS = {}", info.max_lights);
     assert!(!info.version.is_empty() && !info.renderer.is_empty());
@@ -158,7 +162,7 @@ fn two_sided_lighting_uses_the_back_material_and_negated_normal() {
 
 #[test]
 fn a_light_beyond_gl_max_lights_is_an_error() {
-    let info = gl_info().expect("OSMesa context");
+    let info = gl_info().expect("a GL context");
     let index = info.max_lights as usize;
     let mesh = full_screen_quad(Vec3::Z, Vec4::ONE);
     let mut state = lit_default_light0();
@@ -182,4 +186,110 @@ fn an_invalid_value_is_reported_as_a_gl_error() {
         .expect_err("invalid spot cutoff")
         .to_string();
     assert!(err.contains("0x0501"), "{err}");
+}
+
+#[test]
+fn a_missing_egl_library_is_no_gl_driver() {
+    let options = GlOptions {
+        egl_library: Some("/nonexistent/libEGL.so.1".into()),
+        ..GlOptions::default()
+    };
+    let err = gl_info_with(&options).expect_err("no EGL library there");
+    assert!(
+        matches!(
+            &err,
+            ffvk::tools::Error::Gl(GlError::NoDriver(NoDriver::Library { library, .. }))
+                if library == "/nonexistent/libEGL.so.1"
+        ),
+        "{err:?}"
+    );
+    let message = err.to_string();
+    assert!(message.starts_with("no GL driver: "), "{message}");
+    assert!(message.contains("/nonexistent/libEGL.so.1"), "{message}");
+    assert!(message.contains("libegl-mesa0"), "{message}");
+
+    // Every entry point says the same.
+    let mesh = full_screen_quad(Vec3::Z, Vec4::ONE);
+    let scene = scene(&mesh, LightingState::default());
+    for message in [
+        render_gl_with(&scene, &options).map(drop),
+        time_frames_with(&scene, 1, 1, &options).map(drop),
+    ]
+    .map(|r| r.expect_err("no EGL library there").to_string())
+    {
+        assert!(message.starts_with("no GL driver: "), "{message}");
+    }
+}
+
+#[test]
+fn the_device_named_like_the_default_one_renders_the_same() {
+    let info = gl_info().expect("a GL context");
+    let options = GlOptions {
+        vulkan_name: Some(info.renderer.to_uppercase()),
+        ..GlOptions::default()
+    };
+    let named = gl_info_with(&options).expect("the device by its name");
+    assert_eq!(named.renderer, info.renderer);
+    let mesh = full_screen_quad(Vec3::Z, Vec4::new(1.0, 0.0, 0.0, 1.0));
+    let img = render_gl_with(&scene(&mesh, lit_default_light0()), &options).expect("render");
+    assert_every_pixel(&img, [214, 214, 214, 255], 1);
+}
+
+#[test]
+fn preferring_software_still_renders() {
+    let options = GlOptions {
+        prefer_software: true,
+        ..GlOptions::default()
+    };
+    let info = gl_info_with(&options).expect("a GL context");
+    println!("{info:?}");
+    let mesh = full_screen_quad(Vec3::Z, Vec4::new(0.25, 0.5, 0.75, 1.0));
+    let img = render_gl_with(&scene(&mesh, LightingState::default()), &options).expect("render");
+    assert_every_pixel(&img, [64, 128, 191, 255], 1);
+}
+
+#[test]
+fn a_device_that_is_not_there_is_a_clear_error() {
+    gl_info().expect("a GL context");
+    for options in [
+        GlOptions {
+            vulkan_name: Some("No Such GPU 9000".into()),
+            ..GlOptions::default()
+        },
+        GlOptions {
+            vulkan_uuid: Some([0xAB; 16]),
+            ..GlOptions::default()
+        },
+    ] {
+        let err = gl_info_with(&options).expect_err("no such device");
+        assert!(
+            matches!(err, ffvk::tools::Error::Gl(GlError::NoMatchingDevice { .. })),
+            "{err:?}"
+        );
+        let message = err.to_string();
+        assert!(
+            message.starts_with("GL reference: no EGL device matches"),
+            "{message}"
+        );
+        // Each display tried is named, with why it is not the one.
+        assert!(message.contains("EGL_"), "{message}");
+    }
+}
+
+#[test]
+fn framebuffer_sizes_gl_cannot_make_are_errors() {
+    let mesh = full_screen_quad(Vec3::Z, Vec4::ONE);
+    for (width, height, expected) in [
+        (0, 16, "empty"),
+        (16, 0, "empty"),
+        (1 << 20, 16, "GL_MAX_RENDERBUFFER_SIZE"),
+    ] {
+        let scene = GlScene {
+            width,
+            height,
+            ..scene(&mesh, LightingState::default())
+        };
+        let message = render_gl(&scene).expect_err("no framebuffer").to_string();
+        assert!(message.contains(expected), "{width}x{height}: {message}");
+    }
 }

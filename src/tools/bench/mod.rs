@@ -311,7 +311,7 @@ pub fn run_sweep(
     }
     let info = renderers[&Variant::Specialized].device_info().clone();
 
-    let gl = GlAnchor::open(config.gl, &mut notes);
+    let gl = GlAnchor::open(config.gl, &info.name, &mut notes);
     let env = BenchEnv {
         lp_num_threads: lp_num_threads.clone(),
         device: info.name.clone(),
