@@ -10,6 +10,8 @@ use ffvk::tools::gl_reference::{
 };
 use glam::{Mat4, Vec3, Vec4};
 
+use crate::support::gl_options;
+
 const SIZE: u32 = 16;
 
 /// Two counter-clockwise triangles covering the whole view under identity matrices.
@@ -41,6 +43,11 @@ fn scene<'a>(mesh: &'a MeshData, state: LightingState) -> GlScene<'a> {
     }
 }
 
+/// The oracle's render (see [`gl_options`]).
+fn render(scene: &GlScene) -> ffvk::tools::Result<image::RgbaImage> {
+    render_gl_with(scene, &gl_options())
+}
+
 fn assert_every_pixel(img: &image::RgbaImage, expected: [u8; 4], tolerance: u8) {
     for (x, y, p) in img.enumerate_pixels() {
         let close =
@@ -66,7 +73,7 @@ fn lit_default_light0() -> LightingState {
 
 #[test]
 fn reports_a_fixed_function_context() {
-    let info = gl_info().expect("a GL context");
+    let info = gl_info_with(&gl_options()).expect("a GL context");
     println!("{info:?}");
     assert!(info.max_lights >= 8, "GL_MAX_LIGHTS = {}", info.max_lights);
     assert!(!info.version.is_empty() && !info.renderer.is_empty());
@@ -76,7 +83,7 @@ fn reports_a_fixed_function_context() {
 fn unlit_color_passes_through() {
     // 0.25, 0.5, 0.75 of 255 are 63.75, 127.5 and 191.25.
     let mesh = full_screen_quad(Vec3::Z, Vec4::new(0.25, 0.5, 0.75, 1.0));
-    let img = render_gl(&scene(&mesh, LightingState::default())).expect("render");
+    let img = render(&scene(&mesh, LightingState::default())).expect("render");
     assert_eq!(img.dimensions(), (SIZE, SIZE));
     assert_every_pixel(&img, [64, 128, 191, 255], 1);
 }
@@ -87,7 +94,7 @@ fn default_light0_on_a_facing_quad() {
     // diffuse 0.8, ambient 0.2 (times the scene ambient 0.2) and no specular:
     // 0.2 * 0.2 + 0.8 * (n . L = 1) = 0.84, and 0.84 * 255 = 214.2. Alpha is d_cm's, 1.
     let mesh = full_screen_quad(Vec3::Z, Vec4::new(1.0, 0.0, 0.0, 1.0));
-    let img = render_gl(&scene(&mesh, lit_default_light0())).expect("render");
+    let img = render(&scene(&mesh, lit_default_light0())).expect("render");
     assert_every_pixel(&img, [214, 214, 214, 255], 1);
 }
 
@@ -102,7 +109,7 @@ fn row_zero_is_the_top_of_the_view() {
             .collect(),
         indices: vec![0, 1, 2],
     };
-    let img = render_gl(&scene(&mesh, LightingState::default())).expect("render");
+    let img = render(&scene(&mesh, LightingState::default())).expect("render");
     let mid = SIZE / 2;
     // Row 2 at the center column lies near y = +0.75 in NDC: inside the triangle.
     assert_eq!(img.get_pixel(mid, 2).0, [255, 0, 0, 255]);
@@ -136,7 +143,7 @@ fn flat_shading_takes_the_last_vertex() {
         mode: LightingMode::Flat,
         ..LightingState::default()
     };
-    let img = render_gl(&scene(&mesh, state)).expect("render");
+    let img = render(&scene(&mesh, state)).expect("render");
     assert_every_pixel(&img, [0, 0, 255, 255], 0);
 }
 
@@ -150,19 +157,19 @@ fn two_sided_lighting_uses_the_back_material_and_negated_normal() {
     let mut state = lit_default_light0();
     state.model.two_side = true;
     state.back.diffuse = Vec4::new(0.0, 1.0, 0.0, 0.5);
-    let img = render_gl(&scene(&mesh, state)).expect("render");
+    let img = render(&scene(&mesh, state)).expect("render");
     assert_every_pixel(&img, [10, 255, 10, 128], 1);
 
     // One-sided: the front material with the normal as given, pointing away from the light:
     // only the ambient term, 0.04 -> 10.
     state.model.two_side = false;
-    let img = render_gl(&scene(&mesh, state)).expect("render");
+    let img = render(&scene(&mesh, state)).expect("render");
     assert_every_pixel(&img, [10, 10, 10, 255], 1);
 }
 
 #[test]
 fn a_light_beyond_gl_max_lights_is_an_error() {
-    let info = gl_info().expect("a GL context");
+    let info = gl_info_with(&gl_options()).expect("a GL context");
     let index = info.max_lights as usize;
     let mesh = full_screen_quad(Vec3::Z, Vec4::ONE);
     let mut state = lit_default_light0();
@@ -170,7 +177,7 @@ fn a_light_beyond_gl_max_lights_is_an_error() {
         return; // this GL evaluates every light ffvk has
     }
     state.lights[index].enabled = true;
-    let err = render_gl(&scene(&mesh, state))
+    let err = render(&scene(&mesh, state))
         .expect_err("light beyond GL_MAX_LIGHTS")
         .to_string();
     assert!(err.contains("GL_MAX_LIGHTS"), "{err}");
@@ -182,7 +189,7 @@ fn an_invalid_value_is_reported_as_a_gl_error() {
     let mesh = full_screen_quad(Vec3::Z, Vec4::ONE);
     let mut state = lit_default_light0();
     state.lights[0].spot_cutoff = 120.0;
-    let err = render_gl(&scene(&mesh, state))
+    let err = render(&scene(&mesh, state))
         .expect_err("invalid spot cutoff")
         .to_string();
     assert!(err.contains("0x0501"), "{err}");
@@ -233,19 +240,6 @@ fn the_device_named_like_the_default_one_renders_the_same() {
     let mesh = full_screen_quad(Vec3::Z, Vec4::new(1.0, 0.0, 0.0, 1.0));
     let img = render_gl_with(&scene(&mesh, lit_default_light0()), &options).expect("render");
     assert_every_pixel(&img, [214, 214, 214, 255], 1);
-}
-
-#[test]
-fn preferring_software_still_renders() {
-    let options = GlOptions {
-        prefer_software: true,
-        ..GlOptions::default()
-    };
-    let info = gl_info_with(&options).expect("a GL context");
-    println!("{info:?}");
-    let mesh = full_screen_quad(Vec3::Z, Vec4::new(0.25, 0.5, 0.75, 1.0));
-    let img = render_gl_with(&scene(&mesh, LightingState::default()), &options).expect("render");
-    assert_every_pixel(&img, [64, 128, 191, 255], 1);
 }
 
 #[test]

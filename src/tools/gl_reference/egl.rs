@@ -149,6 +149,11 @@ impl Library {
         // each device says for itself whether it answers (its own extension string).
         let query_device_binary = proc("eglQueryDeviceBinaryEXT")
             .map(|f| unsafe { std::mem::transmute::<extern "system" fn(), QueryDeviceBinaryFn>(f) });
+        if client_extensions.trim().is_empty() {
+            return Err(NoDriver::NoVendor {
+                library: name.to_string_lossy().into_owned(),
+            });
+        }
         Ok(Library {
             egl,
             client_extensions,

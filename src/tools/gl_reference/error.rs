@@ -71,6 +71,14 @@ pub enum NoDriver {
         source: khronos_egl::LoadError<libloading::Error>,
     },
 
+    /// EGL without client extensions: glvnd's libEGL with no vendor library (Mesa's
+    /// libEGL_mesa.so.0, NVIDIA's) installed or loadable.
+    #[error(
+        "{library} has no EGL driver (no client extensions; glvnd finds its vendor libraries \
+         through /usr/share/glvnd/egl_vendor.d; on Debian: apt-get install {DEBIAN_PACKAGES})"
+    )]
+    NoVendor { library: String },
+
     /// EGL without either platform this renderer can open without a window system.
     #[error(
         "EGL offers neither EGL_EXT_platform_device nor EGL_MESA_platform_surfaceless \
