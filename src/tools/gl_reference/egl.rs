@@ -46,6 +46,19 @@ type GetPlatformDisplayFn =
 /// freed by its user.
 type DeviceHandle = *mut c_void;
 
+/// An EGL extension's entry point by name, typed as its specification spells it; `None` where
+/// the library has none.
+macro_rules! entry_point {
+    ($egl:expr, $name:literal, $type:ty) => {
+        $egl.get_proc_address($name).map(|f| {
+            // SAFETY: eglGetProcAddress returned the entry point of this name, whose C
+            // signature its extension's specification gives and `$type` spells; both sides
+            // are function pointers of the same size.
+            unsafe { std::mem::transmute::<extern "system" fn(), $type>(f) }
+        })
+    };
+}
+
 /// Whether `name` is one of the space-separated names in `list` (an EGL or GL extension
 /// string).
 fn has_extension(list: &str, name: &str) -> bool {
@@ -126,34 +139,31 @@ impl Library {
             .query_string(None, khr::EXTENSIONS)
             .map(|s| s.to_string_lossy().into_owned())
             .unwrap_or_default();
-        let has = |name: &str| has_extension(&client_extensions, name);
-        let proc = |name: &str| egl.get_proc_address(name);
-        // SAFETY (each transmute below): eglGetProcAddress returned the entry point of this
-        // name, whose C signature the extension's specification gives and the type spells;
-        // only function-pointer types of the same size are transmuted.
-        let get_platform_display = has("EGL_EXT_platform_base")
-            .then(|| proc("eglGetPlatformDisplayEXT"))
-            .flatten()
-            .map(|f| unsafe { std::mem::transmute::<extern "system" fn(), GetPlatformDisplayFn>(f) });
-        let enumeration = has("EGL_EXT_device_enumeration") || has("EGL_EXT_device_base");
-        let query = has("EGL_EXT_device_query") || has("EGL_EXT_device_base");
-        let query_devices = enumeration
-            .then(|| proc("eglQueryDevicesEXT"))
-            .flatten()
-            .map(|f| unsafe { std::mem::transmute::<extern "system" fn(), QueryDevicesFn>(f) });
-        let query_device_string = query
-            .then(|| proc("eglQueryDeviceStringEXT"))
-            .flatten()
-            .map(|f| unsafe { std::mem::transmute::<extern "system" fn(), QueryDeviceStringFn>(f) });
-        // A device-level extension: present in the library whenever one of its vendors has it;
-        // each device says for itself whether it answers (its own extension string).
-        let query_device_binary = proc("eglQueryDeviceBinaryEXT")
-            .map(|f| unsafe { std::mem::transmute::<extern "system" fn(), QueryDeviceBinaryFn>(f) });
         if client_extensions.trim().is_empty() {
+            // glvnd's libEGL answers this itself only with a vendor library behind it.
             return Err(NoDriver::NoVendor {
                 library: name.to_string_lossy().into_owned(),
             });
         }
+        let has = |name: &str| has_extension(&client_extensions, name);
+        let get_platform_display = if has("EGL_EXT_platform_base") {
+            entry_point!(egl, "eglGetPlatformDisplayEXT", GetPlatformDisplayFn)
+        } else {
+            None
+        };
+        let query_devices = if has("EGL_EXT_device_enumeration") || has("EGL_EXT_device_base") {
+            entry_point!(egl, "eglQueryDevicesEXT", QueryDevicesFn)
+        } else {
+            None
+        };
+        let query_device_string = if has("EGL_EXT_device_query") || has("EGL_EXT_device_base") {
+            entry_point!(egl, "eglQueryDeviceStringEXT", QueryDeviceStringFn)
+        } else {
+            None
+        };
+        // A device-level extension: present in the library whenever one of its vendors has it;
+        // each device says for itself whether it answers (its own extension string).
+        let query_device_binary = entry_point!(egl, "eglQueryDeviceBinaryEXT", QueryDeviceBinaryFn);
         Ok(Library {
             egl,
             client_extensions,
@@ -518,7 +528,9 @@ impl Drop for Session<'_> {
             let _ = self.egl.destroy_context(self.display, context);
         }
         // The reference is the only user of the displays it opens: terminating frees the
-        // driver's resources now rather than at exit.
+        // driver's resources (llvmpipe's rasterizer threads among them) now rather than at
+        // exit. Mesa 22.3 keeps about 4 KiB per initialize/terminate cycle (measured: 400 KiB
+        // over 100 renders; flat without the terminate), the price of a fresh start each time.
         let _ = self.egl.terminate(self.display);
         let _ = self.egl.release_thread();
     }

@@ -3,7 +3,7 @@
 //!
 //! It maps a [`LightingState`] onto the legacy GL entry points one to one (glLight, glMaterial,
 //! glLightModel, glColorMaterial, glShadeModel, glEnable) and lets the GL driver evaluate the
-//! lighting. Nothing is linked: `libEGL.so.1` is opened when a render starts ([`egl`]), the
+//! lighting. Nothing is linked: `libEGL.so.1` is opened when a render starts (`egl.rs`), the
 //! display comes from `EGL_EXT_platform_device` (else `EGL_MESA_platform_surfaceless`), and
 //! the GL entry points, generated from Khronos' registry by `build.rs`, are loaded through
 //! `eglGetProcAddress`. A machine without EGL or without a GL driver gets
