@@ -289,11 +289,14 @@ impl Library {
         let candidates = self.candidates(options)?;
         let wanted = wanted(options);
         let mut tried = Vec::new();
-        let mut any_context = false;
+        // Whether some device exists but is not the one asked for: then the answer is "no
+        // such device", not "no GL driver".
+        let mut another_device = false;
         for candidate in &candidates {
             // What is known before a context exists rules a device out early.
             if let Match::No(why) = pre_match(candidate, options) {
                 tried.push(format!("{}: {why}", candidate.description));
+                another_device = true;
                 continue;
             }
             let (session, gl) = match self.try_open(candidate) {
@@ -303,17 +306,19 @@ impl Library {
                     continue;
                 }
             };
-            any_context = true;
             match post_match(&gl, candidate, options) {
                 Match::Yes => return Ok((session, gl)),
-                Match::No(why) => tried.push(format!("{}: {why}", candidate.description)),
+                Match::No(why) => {
+                    tried.push(format!("{}: {why}", candidate.description));
+                    another_device = true;
+                }
             }
         }
         if tried.is_empty() {
             tried.push("EGL_EXT_platform_device lists no devices".into());
         }
         match wanted {
-            Some(wanted) if any_context => Err(GlError::NoMatchingDevice { wanted, tried }),
+            Some(wanted) if another_device => Err(GlError::NoMatchingDevice { wanted, tried }),
             _ => Err(NoDriver::NoContext { tried }.into()),
         }
     }
@@ -657,4 +662,85 @@ pub(super) fn drain_errors(gl: &Gl) -> Vec<u32> {
         codes.push(code);
     }
     codes
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn device(uuid: Option<[u8; 16]>, name: Option<&str>) -> Candidate {
+        Candidate {
+            platform: PLATFORM_DEVICE_EXT,
+            device: std::ptr::null_mut(),
+            description: "a device".into(),
+            software: false,
+            uuid,
+            name: name.map(String::from),
+        }
+    }
+
+    fn matches(candidate: &Candidate, options: &GlOptions) -> bool {
+        matches!(pre_match(candidate, options), Match::Yes)
+    }
+
+    #[test]
+    fn extension_names_match_whole_words_only() {
+        let list = "EGL_EXT_device_base EGL_EXT_platform_device  EGL_MESA_platform_surfaceless";
+        assert!(has_extension(list, "EGL_EXT_platform_device"));
+        assert!(has_extension(list, "EGL_MESA_platform_surfaceless"));
+        assert!(!has_extension(list, "EGL_EXT_platform"));
+        assert!(!has_extension(list, "EGL_EXT_device_base_more"));
+        assert!(!has_extension("", "EGL_EXT_device_base"));
+    }
+
+    #[test]
+    fn a_reported_uuid_decides_before_the_name() {
+        let uuid = [7u8; 16];
+        let by_uuid = GlOptions {
+            vulkan_uuid: Some(uuid),
+            vulkan_name: Some("NVIDIA H200".into()),
+            ..GlOptions::default()
+        };
+        // Same UUID: a match whatever the name says.
+        assert!(matches(&device(Some(uuid), Some("something else")), &by_uuid));
+        // Another UUID: no match even with the same name.
+        assert!(!matches(&device(Some([8; 16]), Some("NVIDIA H200")), &by_uuid));
+        // No UUID: the name decides (here EGL_RENDERER_EXT; GL_RENDERER once a context exists).
+        assert!(matches(&device(None, Some("NVIDIA H200/PCIe/SSE2")), &by_uuid));
+        assert!(!matches(
+            &device(None, Some("llvmpipe (LLVM 15.0.6, 256 bits)")),
+            &by_uuid
+        ));
+        assert!(matches(&device(None, None), &by_uuid));
+    }
+
+    #[test]
+    fn names_match_by_containment_ignoring_case() {
+        let by_name = GlOptions {
+            vulkan_name: Some("LLVMpipe (LLVM 15.0.6, 256 bits)".into()),
+            ..GlOptions::default()
+        };
+        assert!(matches(
+            &device(None, Some("llvmpipe (LLVM 15.0.6, 256 bits)")),
+            &by_name
+        ));
+        assert!(!matches(
+            &device(None, Some("llvmpipe (LLVM 16.0.0, 128 bits)")),
+            &by_name
+        ));
+        // Without a request, every device matches.
+        assert!(matches(
+            &device(Some([1; 16]), Some("anything")),
+            &GlOptions::default()
+        ));
+        assert_eq!(wanted(&GlOptions::default()), None);
+        assert_eq!(
+            wanted(&GlOptions {
+                vulkan_uuid: Some([0xab; 16]),
+                ..GlOptions::default()
+            })
+            .as_deref(),
+            Some("the Vulkan device with UUID abababababababababababababababab")
+        );
+    }
 }
