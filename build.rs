@@ -131,6 +131,37 @@ fn main() {
     if let Err(e) = fs::write(out_dir.join("shaders.rs"), generated) {
         fail(&format!("{}: {e}", out_dir.join("shaders.rs").display()));
     }
+
+    // Cargo sets CARGO_FEATURE_TOOLS exactly when it compiles this script with the `tools`
+    // feature (and so with the optional gl_generator); the cfg keeps the lean core from
+    // needing the crate at all.
+    #[cfg(feature = "tools")]
+    if env::var_os("CARGO_FEATURE_TOOLS").is_some() {
+        let path = out_dir.join("gl_bindings.rs");
+        if let Err(e) = write_gl_bindings(&path) {
+            fail(&format!("{}: {e}", path.display()));
+        }
+    }
+}
+
+/// The GL reference's entry points: GL 2.1 in the compatibility profile (glLight, glMaterial,
+/// client arrays, ...) and the framebuffer objects it renders into. GL_ARB_framebuffer_object
+/// names its functions without a suffix, as GL 3.0 does, so they exist in Mesa's and NVIDIA's
+/// compatibility contexts (3.0 and later); `Fallbacks::All` also tries the `EXT` names of
+/// GL_EXT_framebuffer_object for a driver that has only those.
+#[cfg(feature = "tools")]
+fn write_gl_bindings(path: &Path) -> std::io::Result<()> {
+    use gl_generator::{Api, Fallbacks, Profile, Registry, StructGenerator};
+    let registry = Registry::new(
+        Api::Gl,
+        (2, 1),
+        Profile::Compatibility,
+        Fallbacks::All,
+        ["GL_ARB_framebuffer_object"],
+    );
+    let mut file = std::io::BufWriter::new(fs::File::create(path)?);
+    registry.write_bindings(StructGenerator, &mut file)?;
+    std::io::Write::flush(&mut file)
 }
 
 /// Runs glslc on one stage source. Its messages are already `file:line: error: text`.

@@ -12,7 +12,10 @@ pkgs=(
 if [[ "${1:-}" == "--test" ]]; then
   pkgs+=(
     vulkan-validationlayers  # VK_LAYER_KHRONOS_validation, on in every test
-    libosmesa6-dev           # Mesa's OpenGL, the conformance oracle
+    # Mesa's OpenGL through EGL, the conformance oracle, opened at run time (nothing links it):
+    libegl1                  # libEGL.so.1, glvnd's EGL dispatcher
+    libegl-mesa0             # Mesa's EGL vendor library (EGL_EXT_platform_device, surfaceless)
+    libgl1-mesa-dri          # Mesa's GL drivers, llvmpipe (swrast_dri.so) among them
   )
 fi
 

@@ -20,8 +20,9 @@
 //! the uniform block's layout and the specialization constants ([`gpu::layout`]).
 //!
 //! Features add the rest: `images` (PNG files and image comparison), `scene` (TOML scene files
-//! and glTF), `tools` (what the `ffvk` command runs: bench, demo, explain, regression runs;
-//! on by default) and `osmesa` (Mesa's GL as a reference renderer).
+//! and glTF), `tools` (what the `ffvk` command runs: bench, demo, explain, regression runs,
+//! and fixed-function OpenGL through EGL, loaded at run time, as a reference renderer; on by
+//! default).
 
 #[warn(missing_docs)]
 pub mod alloc;

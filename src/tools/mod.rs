@@ -5,7 +5,6 @@
 pub mod bench;
 pub mod demo;
 pub mod explain;
-#[cfg(feature = "osmesa")]
 pub mod gl_reference;
 pub mod regress;
 pub mod sheet;
@@ -102,9 +101,10 @@ pub enum Error {
     #[error("benchmark: {0}")]
     Bench(String),
 
-    /// Mesa's OpenGL through OSMesa (the `osmesa` feature's reference renderer).
-    #[error("OpenGL (OSMesa): {0}")]
-    Gl(String),
+    /// The GL reference renderer (fixed-function OpenGL through EGL): no GL driver, or a
+    /// render that failed. Its messages start with "no GL driver:" or "GL reference:".
+    #[error(transparent)]
+    Gl(#[from] gl_reference::GlError),
 }
 
 impl From<crate::scene::SceneError> for Error {

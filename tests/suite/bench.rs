@@ -41,7 +41,7 @@ fn a_tiny_sweep_runs_every_point_and_writes_csv_json_and_plots() {
     // Validation errors fail the frame that caused them, and so the sweep.
     let report = run_sweep(&config, &options, &ProgressBar::hidden()).unwrap();
 
-    // Every point ran; the GL anchor is there (the tests build ffvk with `osmesa`).
+    // Every point ran; the GL anchor is there (the tests need a GL driver, llvmpipe here).
     let expected = points(&config);
     assert_eq!(report.results.len(), expected.len(), "notes: {:?}", report.notes);
     assert!(report.results.iter().any(|r| r.point.engine == Engine::Gl));

@@ -1,5 +1,6 @@
-//! Differential conformance: ffvk's images against Mesa's own fixed-function OpenGL
-//! (OSMesa, llvmpipe), the same scene drawn with glLight/glMaterial/glLightModel/...
+//! Differential conformance: ffvk's images against a GL driver's own fixed-function OpenGL
+//! (the GL reference through EGL: Mesa's llvmpipe here), the same scene drawn with
+//! glLight/glMaterial/glLightModel/...
 //!
 //! The comparison mask: pixels that both renderers cover, found by drawing the same geometry
 //! unlit in white on black with each renderer, eroded by one pixel so that silhouettes (where
@@ -18,7 +19,7 @@ use glam::{Mat4, Vec3, Vec4};
 use image::{Rgba, RgbaImage};
 
 use crate::support::*;
-use ffvk::tools::gl_reference::{render_gl, GlDraw, GlScene};
+use ffvk::tools::gl_reference::{render_gl_with, GlDraw, GlScene};
 
 const SIZE: u32 = 128;
 
@@ -341,13 +342,16 @@ fn gl_image(mesh: &MeshData, modelview: Mat4, projection: Mat4, state: LightingS
 
 /// GL's image of one draw on a `SIZE`² frame cleared to `clear`, depth test on.
 fn gl_draw_image(draw: GlDraw, clear: [f32; 4]) -> RgbaImage {
-    render_gl(&GlScene {
-        width: SIZE,
-        height: SIZE,
-        clear_color: clear,
-        depth_test: true,
-        draws: vec![draw],
-    })
+    render_gl_with(
+        &GlScene {
+            width: SIZE,
+            height: SIZE,
+            clear_color: clear,
+            depth_test: true,
+            draws: vec![draw],
+        },
+        &gl_options(),
+    )
     .unwrap()
 }
 

@@ -1,10 +1,16 @@
-//! Checks the OSMesa reference renderer itself against values worked out by hand from the
-//! GL 2.1 lighting equation (not from ffvk), so that it can serve as the oracle.
+//! Checks the GL reference renderer (fixed-function OpenGL through EGL) itself against values
+//! worked out by hand from the GL 2.1 lighting equation (not from ffvk), so that it can serve
+//! as the oracle; and how it chooses, and fails to find, a GL driver and device.
 
 use ffvk::gl::state::{LightingMode, LightingState};
 use ffvk::mesh::{MeshData, Vertex};
-use ffvk::tools::gl_reference::{gl_info, render_gl, GlDraw, GlScene};
+use ffvk::tools::gl_reference::{
+    gl_info, gl_info_with, render_gl, render_gl_with, time_frames_with, GlDraw, GlError, GlOptions, GlScene,
+    NoDriver,
+};
 use glam::{Mat4, Vec3, Vec4};
+
+use crate::support::gl_options;
 
 const SIZE: u32 = 16;
 
@@ -37,6 +43,11 @@ fn scene<'a>(mesh: &'a MeshData, state: LightingState) -> GlScene<'a> {
     }
 }
 
+/// The oracle's render (see [`gl_options`]).
+fn render(scene: &GlScene) -> ffvk::tools::Result<image::RgbaImage> {
+    render_gl_with(scene, &gl_options())
+}
+
 fn assert_every_pixel(img: &image::RgbaImage, expected: [u8; 4], tolerance: u8) {
     for (x, y, p) in img.enumerate_pixels() {
         let close =
@@ -62,7 +73,7 @@ fn lit_default_light0() -> LightingState {
 
 #[test]
 fn reports_a_fixed_function_context() {
-    let info = gl_info().expect("OSMesa context");
+    let info = gl_info_with(&gl_options()).expect("a GL context");
     println!("{info:?}");
     assert!(info.max_lights >= 8, "GL_MAX_LIGHTS = {}", info.max_lights);
     assert!(!info.version.is_empty() && !info.renderer.is_empty());
@@ -72,7 +83,7 @@ fn reports_a_fixed_function_context() {
 fn unlit_color_passes_through() {
     // 0.25, 0.5, 0.75 of 255 are 63.75, 127.5 and 191.25.
     let mesh = full_screen_quad(Vec3::Z, Vec4::new(0.25, 0.5, 0.75, 1.0));
-    let img = render_gl(&scene(&mesh, LightingState::default())).expect("render");
+    let img = render(&scene(&mesh, LightingState::default())).expect("render");
     assert_eq!(img.dimensions(), (SIZE, SIZE));
     assert_every_pixel(&img, [64, 128, 191, 255], 1);
 }
@@ -83,7 +94,7 @@ fn default_light0_on_a_facing_quad() {
     // diffuse 0.8, ambient 0.2 (times the scene ambient 0.2) and no specular:
     // 0.2 * 0.2 + 0.8 * (n . L = 1) = 0.84, and 0.84 * 255 = 214.2. Alpha is d_cm's, 1.
     let mesh = full_screen_quad(Vec3::Z, Vec4::new(1.0, 0.0, 0.0, 1.0));
-    let img = render_gl(&scene(&mesh, lit_default_light0())).expect("render");
+    let img = render(&scene(&mesh, lit_default_light0())).expect("render");
     assert_every_pixel(&img, [214, 214, 214, 255], 1);
 }
 
@@ -98,7 +109,7 @@ fn row_zero_is_the_top_of_the_view() {
             .collect(),
         indices: vec![0, 1, 2],
     };
-    let img = render_gl(&scene(&mesh, LightingState::default())).expect("render");
+    let img = render(&scene(&mesh, LightingState::default())).expect("render");
     let mid = SIZE / 2;
     // Row 2 at the center column lies near y = +0.75 in NDC: inside the triangle.
     assert_eq!(img.get_pixel(mid, 2).0, [255, 0, 0, 255]);
@@ -132,7 +143,7 @@ fn flat_shading_takes_the_last_vertex() {
         mode: LightingMode::Flat,
         ..LightingState::default()
     };
-    let img = render_gl(&scene(&mesh, state)).expect("render");
+    let img = render(&scene(&mesh, state)).expect("render");
     assert_every_pixel(&img, [0, 0, 255, 255], 0);
 }
 
@@ -146,19 +157,19 @@ fn two_sided_lighting_uses_the_back_material_and_negated_normal() {
     let mut state = lit_default_light0();
     state.model.two_side = true;
     state.back.diffuse = Vec4::new(0.0, 1.0, 0.0, 0.5);
-    let img = render_gl(&scene(&mesh, state)).expect("render");
+    let img = render(&scene(&mesh, state)).expect("render");
     assert_every_pixel(&img, [10, 255, 10, 128], 1);
 
     // One-sided: the front material with the normal as given, pointing away from the light:
     // only the ambient term, 0.04 -> 10.
     state.model.two_side = false;
-    let img = render_gl(&scene(&mesh, state)).expect("render");
+    let img = render(&scene(&mesh, state)).expect("render");
     assert_every_pixel(&img, [10, 10, 10, 255], 1);
 }
 
 #[test]
 fn a_light_beyond_gl_max_lights_is_an_error() {
-    let info = gl_info().expect("OSMesa context");
+    let info = gl_info_with(&gl_options()).expect("a GL context");
     let index = info.max_lights as usize;
     let mesh = full_screen_quad(Vec3::Z, Vec4::ONE);
     let mut state = lit_default_light0();
@@ -166,7 +177,7 @@ fn a_light_beyond_gl_max_lights_is_an_error() {
         return; // this GL evaluates every light ffvk has
     }
     state.lights[index].enabled = true;
-    let err = render_gl(&scene(&mesh, state))
+    let err = render(&scene(&mesh, state))
         .expect_err("light beyond GL_MAX_LIGHTS")
         .to_string();
     assert!(err.contains("GL_MAX_LIGHTS"), "{err}");
@@ -178,8 +189,101 @@ fn an_invalid_value_is_reported_as_a_gl_error() {
     let mesh = full_screen_quad(Vec3::Z, Vec4::ONE);
     let mut state = lit_default_light0();
     state.lights[0].spot_cutoff = 120.0;
-    let err = render_gl(&scene(&mesh, state))
+    let err = render(&scene(&mesh, state))
         .expect_err("invalid spot cutoff")
         .to_string();
     assert!(err.contains("0x0501"), "{err}");
+}
+
+#[test]
+fn a_missing_egl_library_is_no_gl_driver() {
+    let options = GlOptions {
+        egl_library: Some("/nonexistent/libEGL.so.1".into()),
+        ..GlOptions::default()
+    };
+    let err = gl_info_with(&options).expect_err("no EGL library there");
+    assert!(
+        matches!(
+            &err,
+            ffvk::tools::Error::Gl(GlError::NoDriver(NoDriver::Library { library, .. }))
+                if library == "/nonexistent/libEGL.so.1"
+        ),
+        "{err:?}"
+    );
+    let message = err.to_string();
+    assert!(message.starts_with("no GL driver: "), "{message}");
+    assert!(message.contains("/nonexistent/libEGL.so.1"), "{message}");
+    assert!(message.contains("libegl-mesa0"), "{message}");
+
+    // Every entry point says the same.
+    let mesh = full_screen_quad(Vec3::Z, Vec4::ONE);
+    let scene = scene(&mesh, LightingState::default());
+    for message in [
+        render_gl_with(&scene, &options).map(drop),
+        time_frames_with(&scene, 1, 1, &options).map(drop),
+    ]
+    .map(|r| r.expect_err("no EGL library there").to_string())
+    {
+        assert!(message.starts_with("no GL driver: "), "{message}");
+    }
+}
+
+#[test]
+fn the_device_named_like_the_default_one_renders_the_same() {
+    let info = gl_info().expect("a GL context");
+    let options = GlOptions {
+        vulkan_name: Some(info.renderer.to_uppercase()),
+        ..GlOptions::default()
+    };
+    let named = gl_info_with(&options).expect("the device by its name");
+    assert_eq!(named.renderer, info.renderer);
+    let mesh = full_screen_quad(Vec3::Z, Vec4::new(1.0, 0.0, 0.0, 1.0));
+    let img = render_gl_with(&scene(&mesh, lit_default_light0()), &options).expect("render");
+    assert_every_pixel(&img, [214, 214, 214, 255], 1);
+}
+
+#[test]
+fn a_device_that_is_not_there_is_a_clear_error() {
+    gl_info().expect("a GL context");
+    for options in [
+        GlOptions {
+            vulkan_name: Some("No Such GPU 9000".into()),
+            ..GlOptions::default()
+        },
+        GlOptions {
+            vulkan_uuid: Some([0xAB; 16]),
+            ..GlOptions::default()
+        },
+    ] {
+        let err = gl_info_with(&options).expect_err("no such device");
+        assert!(
+            matches!(err, ffvk::tools::Error::Gl(GlError::NoMatchingDevice { .. })),
+            "{err:?}"
+        );
+        let message = err.to_string();
+        assert!(
+            message.starts_with("GL reference: no EGL device matches"),
+            "{message}"
+        );
+        // Each display tried is named, with why it is not the one.
+        assert!(message.contains("EGL_"), "{message}");
+    }
+}
+
+#[test]
+fn framebuffer_sizes_gl_cannot_make_are_errors() {
+    let mesh = full_screen_quad(Vec3::Z, Vec4::ONE);
+    for (width, height, expected) in [
+        (0, 16, "empty"),
+        (16, 0, "empty"),
+        (1 << 20, 16, "GL_MAX_RENDERBUFFER_SIZE"),
+    ] {
+        let scene = GlScene {
+            width,
+            height,
+            ..scene(&mesh, LightingState::default())
+        };
+        let message = render_gl(&scene).expect_err("no framebuffer").to_string();
+        assert!(message.contains(expected), "{width}x{height}: {message}");
+    }
 }

@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 use ffvk::gl::state::{Cap, GlState, LightingState, StateError};
 use ffvk::mesh::{MeshData, Vertex};
+use ffvk::tools::gl_reference::GlOptions;
 use ffvk::vk::{Validation, ValidationSink};
 use ffvk::{Renderer, RendererOptions, Specialize};
 use glam::{DVec4, Mat4, Vec3, Vec4};
@@ -23,6 +24,17 @@ pub fn renderer_with(specialize: Specialize) -> Renderer {
         specialize,
     })
     .expect("a renderer on lavapipe with VK_LAYER_KHRONOS_validation")
+}
+
+/// The GL the oracle tests compare with: a software device (Mesa's llvmpipe, whose results
+/// the tolerances were measured on) where EGL has one, even on a machine whose GPU driver
+/// lists its devices first; otherwise the first device that works. To compare with another
+/// driver, leave EGL only that driver (README, "The GL reference").
+pub fn gl_options() -> GlOptions {
+    GlOptions {
+        prefer_software: true,
+        ..GlOptions::default()
+    }
 }
 
 /// The two pipeline variants every lighting result must hold for: specialized pipelines

@@ -11,6 +11,7 @@ use super::BenchResult;
 use crate::draw::pipeline::Specialize;
 use crate::mesh::MeshData;
 use crate::renderer::{Draw, Frame, FrameStats, Mesh, Renderer};
+use crate::tools::gl_reference::{gl_info_with, time_frames_with, GlDraw, GlOptions, GlScene};
 use crate::tools::Result;
 
 /// Median, quartiles and extremes of a point's frames.
@@ -165,25 +166,33 @@ pub(super) fn measure_ffvk(
     })
 }
 
-/// Mesa's fixed-function GL, when ffvk is built with the `osmesa` feature.
+/// Fixed-function GL through the GL reference renderer, on the device that runs ffvk.
 pub(super) struct GlAnchor {
     pub(super) renderer: String,
     pub(super) version: String,
     pub(super) max_lights: usize,
+    /// The device the anchor was found on, kept for every measurement.
+    options: GlOptions,
 }
 
 impl GlAnchor {
-    #[cfg(feature = "osmesa")]
-    pub(super) fn open(wanted: bool, notes: &mut Vec<String>) -> Option<GlAnchor> {
+    /// The GL context on the Vulkan device named `vulkan_device` (the same rasterizer as
+    /// ffvk's: llvmpipe for lavapipe), or `None` with a note saying why not.
+    pub(super) fn open(wanted: bool, vulkan_device: &str, notes: &mut Vec<String>) -> Option<GlAnchor> {
         if !wanted {
             notes.push("GL anchor not requested".into());
             return None;
         }
-        match crate::tools::gl_reference::gl_info() {
+        let options = GlOptions {
+            vulkan_name: Some(vulkan_device.to_string()),
+            ..GlOptions::default()
+        };
+        match gl_info_with(&options) {
             Ok(info) => Some(GlAnchor {
                 renderer: info.renderer,
                 version: info.version,
                 max_lights: usize::try_from(info.max_lights).unwrap_or(0),
+                options,
             }),
             Err(e) => {
                 notes.push(format!("GL anchor left out: {e}"));
@@ -192,21 +201,7 @@ impl GlAnchor {
         }
     }
 
-    #[cfg(not(feature = "osmesa"))]
-    pub(super) fn open(wanted: bool, notes: &mut Vec<String>) -> Option<GlAnchor> {
-        if wanted {
-            notes.push(
-                "GL anchor left out: ffvk was built without the `osmesa` feature \
-                 (cargo run --release --features osmesa -- bench)"
-                    .into(),
-            );
-        }
-        None
-    }
-
-    #[cfg(feature = "osmesa")]
     pub(super) fn measure(&self, mesh: &MeshData, point: &Point, config: &SweepConfig) -> Result<PointStats> {
-        use crate::tools::gl_reference::{time_frames, GlDraw, GlScene};
         let (modelview, projection) = matrices(point);
         let scene = GlScene {
             width: point.width,
@@ -215,7 +210,7 @@ impl GlAnchor {
             depth_test: true,
             draws: vec![GlDraw::new(mesh, modelview, projection, point_state(point)?)],
         };
-        let timing = time_frames(&scene, config.warmup, config.frames)?;
+        let timing = time_frames_with(&scene, config.warmup, config.frames, &self.options)?;
         let wall: Vec<f64> = timing.frame_ns.iter().map(|ns| ns / 1e6).collect();
         let wall_ms = Spread::of(&wall).expect("at least one frame");
         Ok(PointStats {
@@ -229,18 +224,6 @@ impl GlAnchor {
             fs_invocations: None,
             clipping_primitives: None,
         })
-    }
-
-    #[cfg(not(feature = "osmesa"))]
-    pub(super) fn measure(
-        &self,
-        _mesh: &MeshData,
-        _point: &Point,
-        _config: &SweepConfig,
-    ) -> Result<PointStats> {
-        Err(crate::tools::Error::Bench(
-            "the GL anchor needs the osmesa feature".into(),
-        ))
     }
 }
 

@@ -8,8 +8,10 @@
 //!
 //! The sweeps vary one thing around a base point: mesh density (lighting mode × vertices),
 //! image size (mode × pixels), light count and light kind (mode × specialized or uber
-//! pipelines). With the `osmesa` feature, the same scenes go through Mesa's fixed-function
-//! OpenGL too, in the same process and on the same rasterizer (llvmpipe), as the anchor.
+//! pipelines). The same scenes go through fixed-function OpenGL too, as the anchor: the GL
+//! reference renderer (EGL, loaded at run time) on the GL device whose name matches the
+//! Vulkan device's, so the same rasterizer in the same process (llvmpipe for lavapipe).
+//! Without a GL driver, or without a matching device, the anchor is left out with a note.
 //!
 //! Outputs: `results.csv`, `results.json`, `summary.md` and PNG plots, in one directory.
 //! Every result carries LP_NUM_THREADS, the device, the driver and the Mesa version.
@@ -72,11 +74,11 @@ pub struct BenchArgs {
     /// Measured frames per point (default: the sweep's).
     #[arg(long)]
     pub frames: Option<u32>,
-    /// Rasterizer threads for lavapipe and OSMesa (sets LP_NUM_THREADS before the Vulkan
-    /// instance exists). Default: LP_NUM_THREADS if set, else the number of CPUs.
+    /// Rasterizer threads for lavapipe and llvmpipe's GL (sets LP_NUM_THREADS before the
+    /// Vulkan instance exists). Default: LP_NUM_THREADS if set, else the number of CPUs.
     #[arg(long)]
     pub lp_threads: Option<usize>,
-    /// Leave out the OpenGL (OSMesa) anchor even when ffvk is built with `--features osmesa`.
+    /// Leave out the OpenGL anchor.
     #[arg(long)]
     pub no_gl: bool,
     /// No progress bar.
@@ -100,7 +102,7 @@ pub fn run(args: &BenchArgs, options: &RendererOptions) -> Result<()> {
         (None, Ok(v)) if !v.trim().is_empty() => v,
         _ => default_lp_threads().to_string(),
     };
-    // Before the first Vulkan instance (lavapipe) or OSMesa context (llvmpipe) reads it, while
+    // Before the first Vulkan instance (lavapipe) or GL context (llvmpipe) reads it, while
     // this process has one thread.
     std::env::set_var("LP_NUM_THREADS", &threads);
     if args.malloc_no_trim && !keep_freed_memory() {
@@ -167,9 +169,9 @@ pub struct BenchEnv {
     pub mesa_version: String,
     /// The device's Vulkan version.
     pub vulkan_api: String,
-    /// GL_RENDERER of the OSMesa anchor, when it ran.
+    /// GL_RENDERER of the GL anchor, when it ran.
     pub gl_renderer: Option<String>,
-    /// GL_VERSION of the OSMesa anchor, when it ran.
+    /// GL_VERSION of the GL anchor, when it ran.
     pub gl_version: Option<String>,
     /// The CPU's model name (/proc/cpuinfo).
     pub cpu: String,
@@ -219,8 +221,8 @@ pub struct BenchReport {
     pub summary: Summary,
     /// The host cost of recording draws; `None` when it was not measured.
     pub draw_cost: Option<DrawCost>,
-    /// What was left out and why (the GL anchor without the osmesa feature, GL points over
-    /// GL_MAX_LIGHTS).
+    /// What was left out and why (the GL anchor without a GL driver or a matching device, GL
+    /// points over GL_MAX_LIGHTS).
     pub notes: Vec<String>,
 }
 
@@ -311,7 +313,7 @@ pub fn run_sweep(
     }
     let info = renderers[&Variant::Specialized].device_info().clone();
 
-    let gl = GlAnchor::open(config.gl, &mut notes);
+    let gl = GlAnchor::open(config.gl, &info.name, &mut notes);
     let env = BenchEnv {
         lp_num_threads: lp_num_threads.clone(),
         device: info.name.clone(),

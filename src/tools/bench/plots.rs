@@ -95,7 +95,7 @@ fn mode_lines(res: &[BenchResult], group: Group, x: fn(&Point) -> f64) -> Vec<Li
         } else {
             mode.name()
         };
-        lines.extend(line(format!("GL {name} (OSMesa)"), color(mode), true, &ser));
+        lines.extend(line(format!("GL {name}"), color(mode), true, &ser));
     }
     lines
 }
@@ -347,7 +347,7 @@ pub(super) fn write_all(report: &BenchReport, dir: &Path) -> Result<Vec<PathBuf>
         ),
         |p| p.lights as f64,
     );
-    lines.extend(line("GL smooth (OSMesa)".into(), RGBColor(0, 0, 0), true, &ser));
+    lines.extend(line("GL smooth".into(), RGBColor(0, 0, 0), true, &ser));
     if !lines.is_empty() {
         let path = dir.join("time_vs_lights.png");
         chart(

@@ -371,7 +371,7 @@ fn environment(report: &BenchReport) -> Table {
         ("driver", format!("{} — Mesa {}", e.driver_info, e.mesa_version)),
     ];
     if let (Some(r), Some(v)) = (&e.gl_renderer, &e.gl_version) {
-        rows.push(("GL anchor", format!("{r}, GL {v} (OSMesa)")));
+        rows.push(("GL anchor", format!("{r}, GL {v} (EGL)")));
     }
     let heap = if c.malloc_no_trim {
         "freed memory kept (--malloc-no-trim: glibc M_TRIM_THRESHOLD = max, M_TOP_PAD = 256 MiB)"
@@ -701,7 +701,7 @@ mod tests {
 | --- | --- |
 | device | llvmpipe (LLVM 15.0.6, 256 bits) (llvmpipe) |
 | driver | Mesa 22.3.6 (LLVM 15.0.6) — Mesa 22.3.6 |
-| GL anchor | llvmpipe (LLVM 15.0.6, 256 bits), GL 2.1 Mesa 22.3.6 (OSMesa) |
+| GL anchor | llvmpipe (LLVM 15.0.6, 256 bits), GL 2.1 Mesa 22.3.6 (EGL) |
 | LP_NUM_THREADS | 2 |
 | heap | glibc defaults (freed memory trimmed) |
 | CPU | Some CPU (2 CPUs) |

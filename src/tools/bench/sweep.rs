@@ -41,7 +41,7 @@ pub struct SweepConfig {
     /// Run the density and size sweeps with the uber-shader too (the light sweeps always
     /// run both variants).
     pub variants_everywhere: bool,
-    /// Draw the OpenGL anchor points (needs the `osmesa` feature; skipped without it).
+    /// Draw the OpenGL anchor points (left out, with a note, when no GL driver is found).
     pub gl: bool,
     /// Whether the process keeps freed heap memory (`--malloc-no-trim`). [`run`](super::run)
     /// sets the allocator up, process-wide; [`run_sweep`](super::run_sweep) only records this.
@@ -186,7 +186,7 @@ pub enum Group {
 pub enum Engine {
     /// ffvk on Vulkan.
     Ffvk,
-    /// Mesa's fixed-function OpenGL through OSMesa.
+    /// Fixed-function OpenGL through EGL (the GL reference renderer).
     Gl,
 }
 
