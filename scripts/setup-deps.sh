@@ -7,7 +7,6 @@ pkgs=(
   mesa-vulkan-drivers   # lavapipe, the CPU Vulkan driver
   libvulkan1            # the Vulkan loader
   glslc                 # shaderc's GLSL compiler (glslang), run by build.rs
-  fonts-dejavu-core     # labels on the demo's contact sheet
 )
 if [[ "${1:-}" == "--test" ]]; then
   pkgs+=(

@@ -93,9 +93,9 @@ pub enum Error {
     #[error("{}: {problem}", .path.display())]
     Path { path: PathBuf, problem: &'static str },
 
-    /// The label font is missing or unreadable.
-    #[error("cannot use the label font {}: {message} (install the Debian package fonts-dejavu-core)", .path.display())]
-    Font { path: PathBuf, message: String },
+    /// The embedded label font could not be used (a build defect).
+    #[error("cannot draw labels: {message}")]
+    Font { message: String },
 
     /// A benchmark that cannot run as asked.
     #[error("benchmark: {0}")]

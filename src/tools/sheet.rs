@@ -1,26 +1,22 @@
 //! Labelled contact sheets: panels in a grid, each with its name drawn in DejaVu Sans.
 
-use ab_glyph::{Font, FontVec, PxScale, ScaleFont};
+use ab_glyph::{Font, FontRef, PxScale, ScaleFont};
 use image::{Rgba, RgbaImage};
 
 use crate::tools::{Error, Result};
 
-/// Debian's DejaVu Sans (package fonts-dejavu-core), used for labels.
-pub const LABEL_FONT: &str = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+/// DejaVu Sans (Bitstream Vera licence, `assets/fonts/DejaVu-LICENSE.txt`), embedded so that
+/// labels never depend on the fonts a machine has installed.
+pub const LABEL_FONT: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
 
-fn load_font() -> Result<FontVec> {
-    let bytes = std::fs::read(LABEL_FONT).map_err(|e| Error::Font {
-        path: LABEL_FONT.into(),
-        message: e.to_string(),
-    })?;
-    FontVec::try_from_vec(bytes).map_err(|e| Error::Font {
-        path: LABEL_FONT.into(),
-        message: format!("not a usable TrueType font: {e}"),
+fn load_font() -> Result<FontRef<'static>> {
+    FontRef::try_from_slice(LABEL_FONT).map_err(|e| Error::Font {
+        message: format!("the embedded DejaVu Sans is not a usable TrueType font: {e}"),
     })
 }
 
 /// Draws `text` in white with its top-left corner at (x, y), `size` pixels high.
-fn draw_text(image: &mut RgbaImage, font: &FontVec, text: &str, x: f32, y: f32, size: f32) {
+fn draw_text(image: &mut RgbaImage, font: &FontRef, text: &str, x: f32, y: f32, size: f32) {
     let scaled = font.as_scaled(PxScale::from(size));
     let mut caret = x;
     for ch in text.chars() {

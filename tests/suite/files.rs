@@ -392,3 +392,27 @@ fn a_full_disk_fails_the_render_and_leaves_the_old_file() {
     assert_eq!(std::fs::read(&path).unwrap(), before, "the old file is intact");
     no_temporaries(&mnt);
 }
+
+#[test]
+fn the_demo_draws_its_labels_with_no_fonts_installed() {
+    // A private mount namespace with an empty /usr/share/fonts (root only, as in CI).
+    let out = crate::support::output_dir().join("no_fonts_demo");
+    let _ = std::fs::remove_dir_all(&out);
+    let script = format!(
+        "mount -t tmpfs none /usr/share/fonts && test -z \"$(ls -A /usr/share/fonts)\" && exec {} demo --out {}",
+        env!("CARGO_BIN_EXE_ffvk"),
+        out.display()
+    );
+    let probe = Command::new("unshare").args(["--mount", "true"]).status();
+    if !probe.is_ok_and(|s| s.success()) {
+        eprintln!("skipped: unshare --mount needs root (CI runs as root)");
+        return;
+    }
+    let run = Command::new("unshare")
+        .args(["--mount", "sh", "-c", &script])
+        .env("VK_DRIVER_FILES", "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json")
+        .output()
+        .unwrap();
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    assert!(out.join("contact_sheet.png").is_file());
+}

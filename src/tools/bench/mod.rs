@@ -165,7 +165,7 @@ pub struct BenchEnv {
     pub driver: String,
     /// The Vulkan driver's version text.
     pub driver_info: String,
-    /// The Mesa version in `driver_info` ("not Mesa" for other drivers).
+    /// The Mesa version in `driver_info`; empty for drivers that are not Mesa's.
     pub mesa_version: String,
     /// The device's Vulkan version.
     pub vulkan_api: String,
@@ -250,6 +250,15 @@ fn keep_freed_memory() -> bool {
 // ---------------------------------------------------------------------------------------------
 // Running.
 
+impl BenchEnv {
+    /// Whether LP_NUM_THREADS means anything here: the Vulkan device is lavapipe or the GL
+    /// anchor is llvmpipe (the two Mesa drivers that read it).
+    pub fn uses_lp_threads(&self) -> bool {
+        let llvmpipe = |s: &str| s.contains("llvmpipe");
+        llvmpipe(&self.driver) || llvmpipe(&self.device) || self.gl_renderer.as_deref().is_some_and(llvmpipe)
+    }
+}
+
 /// The first number after "Mesa " in a driver or GL version string ("Mesa 22.3.6 (LLVM …)").
 pub fn mesa_version(text: &str) -> Option<String> {
     let at = text.find("Mesa ")? + "Mesa ".len();
@@ -319,7 +328,7 @@ pub fn run_sweep(
         device: info.name.clone(),
         driver: info.driver_name.clone(),
         driver_info: info.driver_info.clone(),
-        mesa_version: mesa_version(&info.driver_info).unwrap_or_else(|| "not Mesa".into()),
+        mesa_version: mesa_version(&info.driver_info).unwrap_or_default(),
         vulkan_api: info.api_version.clone(),
         gl_renderer: gl.as_ref().map(|g| g.renderer.clone()),
         gl_version: gl.as_ref().map(|g| g.version.clone()),

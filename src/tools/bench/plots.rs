@@ -44,23 +44,20 @@ fn trim(v: f64) -> String {
 const WIDTH: u32 = 1000;
 const HEIGHT: u32 = 640;
 
-/// Registers Debian's DejaVu Sans as plotters' "sans-serif" (once per process).
+/// Registers the embedded DejaVu Sans as plotters' "sans-serif" (once per process).
 fn ensure_font() -> Result<()> {
-    static FONT: OnceLock<std::result::Result<(), String>> = OnceLock::new();
-    FONT.get_or_init(|| {
-        let path = crate::tools::sheet::LABEL_FONT;
-        let bytes = std::fs::read(path)
-            .map_err(|e| format!("{path}: {e} (install the Debian package fonts-dejavu-core)"))?;
-        // plotters keeps the font for the life of the process; it is loaded once.
-        let bytes: &'static [u8] = Box::leak(bytes.into_boxed_slice());
-        plotters::style::register_font("sans-serif", FontStyle::Normal, bytes)
-            .map_err(|_| format!("{path}: not a usable TrueType font"))
-    })
-    .clone()
-    .map_err(|message| Error::Font {
-        path: crate::tools::sheet::LABEL_FONT.into(),
-        message,
-    })
+    static FONT: OnceLock<bool> = OnceLock::new();
+    let registered = *FONT.get_or_init(|| {
+        plotters::style::register_font("sans-serif", FontStyle::Normal, crate::tools::sheet::LABEL_FONT)
+            .is_ok()
+    });
+    if registered {
+        Ok(())
+    } else {
+        Err(Error::Font {
+            message: "the embedded DejaVu Sans is not a usable TrueType font".into(),
+        })
+    }
 }
 
 fn color(mode: BenchMode) -> RGBColor {

@@ -268,6 +268,7 @@ pub fn markdown(report: &BenchReport) -> String {
     }
 
     let s = &report.summary;
+    let gl_name = report.env.gl_renderer.as_deref();
     let _ = writeln!(m, "\n### Summary\n");
     let _ = writeln!(
         m,
@@ -300,7 +301,8 @@ pub fn markdown(report: &BenchReport) -> String {
     if let Some(g) = s.gl_vertex_ratio_geomean {
         let _ = writeln!(
             m,
-            "- ffvk vertex mode ÷ Mesa's fixed-function GL (host time per frame, geometric mean over {} scenes): {g:.2}",
+            "- ffvk vertex mode ÷ the GL driver's fixed-function GL{} (host time per frame, geometric mean over {} scenes): {g:.2}",
+            gl_name.map(|n| format!(" ({n})")).unwrap_or_default(),
             s.gl_ratios.iter().filter(|r| r.mode == BenchMode::Vertex).count()
         );
     }
@@ -368,7 +370,15 @@ fn environment(report: &BenchReport) -> Table {
     let c = &report.sweep;
     let mut rows = vec![
         ("device", format!("{} ({})", e.device, e.driver)),
-        ("driver", format!("{} — Mesa {}", e.driver_info, e.mesa_version)),
+        (
+            "driver",
+            // Mesa's driver_info already names its version; other drivers' is their own.
+            if e.mesa_version.is_empty() || e.driver_info.contains(&e.mesa_version) {
+                e.driver_info.clone()
+            } else {
+                format!("{} (Mesa {})", e.driver_info, e.mesa_version)
+            },
+        ),
     ];
     if let (Some(r), Some(v)) = (&e.gl_renderer, &e.gl_version) {
         rows.push(("GL anchor", format!("{r}, GL {v} (EGL)")));
@@ -384,8 +394,10 @@ fn environment(report: &BenchReport) -> Table {
     } else {
         "debug (numbers not representative)"
     };
+    if e.uses_lp_threads() {
+        rows.push(("LP_NUM_THREADS", e.lp_num_threads.clone()));
+    }
     rows.extend([
-        ("LP_NUM_THREADS", e.lp_num_threads.clone()),
         ("heap", heap.into()),
         ("CPU", format!("{} ({} CPUs)", e.cpu, e.cpus)),
         (
@@ -700,7 +712,7 @@ mod tests {
 | | |
 | --- | --- |
 | device | llvmpipe (LLVM 15.0.6, 256 bits) (llvmpipe) |
-| driver | Mesa 22.3.6 (LLVM 15.0.6) — Mesa 22.3.6 |
+| driver | Mesa 22.3.6 (LLVM 15.0.6) |
 | GL anchor | llvmpipe (LLVM 15.0.6, 256 bits), GL 2.1 Mesa 22.3.6 (EGL) |
 | LP_NUM_THREADS | 2 |
 | heap | glibc defaults (freed memory trimmed) |
@@ -749,7 +761,7 @@ Times are per frame in ms: the median, then the interquartile range; ffvk's from
 - fragment mode: the uber-shader takes 1.25× the time of specialized pipelines (geometric mean)
 - vertex mode: the uber-shader takes 1.25× the time of specialized pipelines (geometric mean)
 - ffvk's default: Specialize::auto (specialized pipelines)
-- ffvk vertex mode ÷ Mesa's fixed-function GL (host time per frame, geometric mean over 10 scenes): 0.67
+- ffvk vertex mode ÷ the GL driver's fixed-function GL (llvmpipe (LLVM 15.0.6, 256 bits)) (host time per frame, geometric mean over 10 scenes): 0.67
 "#;
 
     #[test]
@@ -759,6 +771,28 @@ Times are per frame in ms: the median, then the interquartile range; ffvk's from
             assert_eq!(actual, expected, "line {}", line + 1);
         }
         assert_eq!(m, SYNTHETIC_SUMMARY);
+    }
+
+    #[test]
+    fn on_a_driver_that_is_not_mesa_the_environment_names_it_plainly() {
+        let mut report = synthetic_report();
+        report.env.device = "NVIDIA H100 80GB HBM3".into();
+        report.env.driver = "NVIDIA".into();
+        report.env.driver_info = "580.159.04".into();
+        report.env.mesa_version = String::new();
+        report.env.gl_renderer = Some("NVIDIA H100 80GB HBM3/PCIe/SSE2".into());
+        report.env.gl_version = Some("4.6.0 NVIDIA 580.159.04".into());
+        let m = markdown(&report);
+        assert!(m.contains("| driver | 580.159.04 |"), "{m}");
+        assert!(!m.contains("Mesa") && !m.contains("LP_NUM_THREADS"), "{m}");
+        assert!(
+            m.contains("÷ the GL driver's fixed-function GL (NVIDIA H100"),
+            "{m}"
+        );
+        // A Mesa driver whose driver_info does not name the version gets it added.
+        report.env.driver_info = "some build".into();
+        report.env.mesa_version = "25.1.0".into();
+        assert!(markdown(&report).contains("| driver | some build (Mesa 25.1.0) |"));
     }
 
     #[test]
