@@ -166,9 +166,12 @@ struct ToleranceArgs {
     /// Largest share of pixels (0..1) allowed over the threshold.
     #[arg(long, default_value_t = 0.001)]
     max_share: f64,
-    /// Largest mean FLIP error (0..1).
+    /// Largest mean FLIP error (0..1), counted at the pixels over the threshold.
     #[arg(long, default_value_t = 0.005)]
     max_flip: f32,
+    /// Count FLIP at every pixel, so that a shift within the threshold can fail an image.
+    #[arg(long)]
+    flip_all_pixels: bool,
 }
 
 impl ToleranceArgs {
@@ -177,6 +180,7 @@ impl ToleranceArgs {
             threshold: self.threshold,
             max_share: self.max_share,
             max_flip: self.max_flip,
+            flip_all_pixels: self.flip_all_pixels,
         }
     }
 }
@@ -248,6 +252,7 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
                 bless: *bless || regress::bless_from_env(),
                 tolerance: tolerance.tolerance(),
                 limits: limits(&cli),
+                driver_family: Some(regress::driver_family(renderer.device_info())),
             };
             let rows = regress::run(&mut renderer, &job, &mut |m| println!("{m}"))?;
             if check.is_none() {

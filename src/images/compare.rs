@@ -2,11 +2,14 @@
 //! a threshold, and FLIP (NVIDIA's perceptual difference, through the `nv-flip` crate that
 //! wgpu's own image tests use), with a heat map of where images differ.
 //!
-//! The tolerance policy (README, "Golden images"): on the same Mesa and CPU, ffvk's images
-//! are byte-identical; across Mesa versions and CPUs, LLVM may order or fuse float operations
-//! differently and rasterization rules may settle silhouette pixels differently, so a
-//! reference passes when every channel is within `threshold` except on at most `max_share`
-//! of the pixels, and the mean FLIP error stays under `max_flip`.
+//! The tolerance policy (README, "Tolerance policy"): on the same Mesa and CPU, ffvk's images
+//! are byte-identical; across drivers, Mesa versions and CPUs, float operations may be
+//! ordered or fused differently (a clear color of 0.1 is 26 on one driver and 25 on another)
+//! and rasterization rules may settle silhouette pixels differently, so a reference passes
+//! when every channel is within `threshold` except on at most `max_share` of the pixels, and
+//! the FLIP error of the pixels over the threshold, averaged over the image, stays under
+//! `max_flip`. An image whose every pixel is within the threshold therefore always passes;
+//! [`Tolerance::flip_all_pixels`] opts into FLIP over every pixel instead.
 
 use image::{Rgba, RgbaImage};
 
@@ -29,8 +32,13 @@ pub struct Tolerance {
     pub threshold: u8,
     /// Largest share (0..=1) of pixels allowed over `threshold`.
     pub max_share: f64,
-    /// Largest mean FLIP error (0..=1).
+    /// Largest mean FLIP error (0..=1): FLIP's per-pixel error, counted at the pixels over
+    /// `threshold` (0 elsewhere), averaged over the image.
     pub max_flip: f32,
+    /// Count FLIP at every pixel, those within `threshold` included, so that a uniform shift
+    /// within the threshold can fail a dark image (off by default: across drivers such shifts
+    /// are rounding, not regressions).
+    pub flip_all_pixels: bool,
 }
 
 impl Default for Tolerance {
@@ -40,6 +48,7 @@ impl Default for Tolerance {
             threshold: 2,
             max_share: 0.001,
             max_flip: 0.005,
+            flip_all_pixels: false,
         }
     }
 }
@@ -71,6 +80,7 @@ impl Tolerance {
         threshold: 0,
         max_share: 0.0,
         max_flip: 0.0,
+        flip_all_pixels: true,
     };
 }
 
@@ -94,9 +104,12 @@ pub struct Comparison {
     pub over: usize,
     /// `over` as a share of all pixels.
     pub share_over: f64,
-    /// Mean FLIP error over the image (RGB): 0 for identical RGB, `None` when it was not
-    /// needed (the share over the threshold already fails the tolerance compared with).
+    /// Mean FLIP error over the image (RGB), counted at the pixels over the threshold unless
+    /// `flip_all_pixels`: 0 when no pixel counts, `None` when it was not needed (the share
+    /// over the threshold already fails the tolerance compared with).
     pub flip_mean: Option<f32>,
+    /// Whether `flip_mean` counted every pixel ([`Tolerance::flip_all_pixels`]).
+    pub flip_all_pixels: bool,
     pub worst: Option<WorstPixel>,
     pub threshold: u8,
 }
@@ -121,8 +134,13 @@ impl Comparison {
             ),
             None => String::new(),
         };
+        let scope = if self.flip_all_pixels {
+            "all pixels"
+        } else {
+            "pixels over the threshold"
+        };
         let flip = match self.flip_mean {
-            Some(f) => format!("FLIP mean {f:.5}"),
+            Some(f) => format!("FLIP mean {f:.5} ({scope})"),
             None => "FLIP not computed (the share over the threshold decides)".into(),
         };
         format!(
@@ -163,12 +181,15 @@ pub fn compare_with(
     flip: Flip,
 ) -> Result<Comparison, SizeMismatch> {
     let mut c = channels(expected, actual, tolerance.threshold)?;
-    c.flip_mean = if c.max_diff[..3] == [0, 0, 0] {
+    c.flip_all_pixels = tolerance.flip_all_pixels;
+    // Only pixels over the threshold count, unless every pixel does.
+    let counted = (!tolerance.flip_all_pixels).then_some(tolerance.threshold);
+    c.flip_mean = if c.max_diff[..3] == [0, 0, 0] || (counted.is_some() && c.over == 0) {
         Some(0.0)
     } else if flip == Flip::WhenNeeded && c.share_over > tolerance.max_share {
         None
     } else {
-        Some(flip_mean(expected, actual))
+        Some(flip_mean(expected, actual, counted))
     };
     Ok(c)
 }
@@ -223,6 +244,7 @@ fn channels(expected: &RgbaImage, actual: &RgbaImage, threshold: u8) -> Result<C
         over,
         share_over: over as f64 / (width as f64 * height as f64),
         flip_mean: None,
+        flip_all_pixels: false,
         worst: worst.map(|(_, w)| w),
         threshold,
     })
@@ -376,16 +398,27 @@ fn flip_tiles(expected: &RgbaImage, actual: &RgbaImage, mut visit: impl FnMut(u3
     }
 }
 
-/// The mean FLIP error over the whole image.
-fn flip_mean(expected: &RgbaImage, actual: &RgbaImage) -> f32 {
+/// The FLIP error averaged over the whole image, counting every pixel, or with
+/// `over: Some(threshold)` only the pixels with a channel more than `threshold` apart (the
+/// others count as 0).
+fn flip_mean(expected: &RgbaImage, actual: &RgbaImage, over: Option<u8>) -> f32 {
     let (w, h) = expected.dimensions();
-    if u64::from(w) * u64::from(h) <= FLIP_WHOLE_PIXELS {
+    if over.is_none() && u64::from(w) * u64::from(h) <= FLIP_WHOLE_PIXELS {
         // In one piece, FLIP's own pool gives the mean (as earlier versions reported).
         return nv_flip::FlipPool::from_image(&flip_region(expected, actual, 0, 0, w, h)).mean();
     }
     let mut sum = 0.0f64;
-    flip_tiles(expected, actual, |_, _, _, _, values| {
-        sum += values.iter().map(|&v| f64::from(v)).sum::<f64>();
+    flip_tiles(expected, actual, |tx, ty, tw, _, values| {
+        for (i, &v) in values.iter().enumerate() {
+            let counts = over.is_none_or(|threshold| {
+                let (x, y) = (tx + i as u32 % tw, ty + i as u32 / tw);
+                let (e, a) = (expected.get_pixel(x, y), actual.get_pixel(x, y));
+                (0..4).any(|c| e.0[c].abs_diff(a.0[c]) > threshold)
+            });
+            if counts {
+                sum += f64::from(v);
+            }
+        }
     });
     (sum / (f64::from(w) * f64::from(h))) as f32
 }
@@ -445,7 +478,7 @@ mod tests {
             }
         }
         let whole = nv_flip::FlipPool::from_image(&flip_region(&expected, &actual, 0, 0, w, h)).mean();
-        let regions = flip_mean(&expected, &actual);
+        let regions = flip_mean(&expected, &actual, None);
         assert!(
             (whole - regions).abs() <= 1e-5 * whole,
             "whole image {whole}, regions {regions}"
@@ -453,6 +486,63 @@ mod tests {
         // And the heat map covers the differences.
         let map = heat_map(&expected, &actual, 2).unwrap();
         assert_ne!(map.get_pixel(1550, 730), map.get_pixel(10, 10));
+    }
+
+    /// A dark image (the clear color of the golden scenes, 0.1 → 26) and the same image one
+    /// or three levels lower everywhere.
+    fn dark_and_shifted(shift: u8) -> (RgbaImage, RgbaImage) {
+        let mut expected = RgbaImage::from_pixel(64, 64, Rgba([26, 26, 26, 255]));
+        for y in 20..40 {
+            for x in 20..40 {
+                expected.put_pixel(x, y, Rgba([40 + x as u8, 90, 30 + y as u8, 255]));
+            }
+        }
+        let mut actual = expected.clone();
+        for p in actual.pixels_mut() {
+            for c in 0..3 {
+                p.0[c] -= shift;
+            }
+        }
+        (expected, actual)
+    }
+
+    #[test]
+    fn a_shift_within_the_threshold_passes_and_one_beyond_it_fails() {
+        let (expected, one_lower) = dark_and_shifted(1);
+        let c = compare(&expected, &one_lower, &Tolerance::default()).unwrap();
+        assert!(c.passes(&Tolerance::default()), "{}", c.summary());
+        assert_eq!((c.over, c.flip_mean), (0, Some(0.0)));
+        // FLIP over every pixel, as before the cross-driver policy, fails the same images.
+        let all = Tolerance {
+            flip_all_pixels: true,
+            ..Tolerance::default()
+        };
+        let c = compare(&expected, &one_lower, &all).unwrap();
+        assert!(
+            c.flip_mean.unwrap() > 0.0 && c.summary().contains("all pixels"),
+            "{}",
+            c.summary()
+        );
+
+        let (expected, three_lower) = dark_and_shifted(3);
+        let c = compare(&expected, &three_lower, &Tolerance::default()).unwrap();
+        assert!(!c.passes(&Tolerance::default()), "{}", c.summary());
+        assert_eq!(c.over, 64 * 64);
+    }
+
+    #[test]
+    fn flip_counts_only_the_pixels_over_the_threshold() {
+        let (expected, mut actual) = dark_and_shifted(1);
+        // One pixel far off, on top of the uniform shift within the threshold.
+        actual.put_pixel(30, 30, Rgba([255, 0, 0, 255]));
+        let c = compare(&expected, &actual, &Tolerance::default()).unwrap();
+        let all = flip_mean(&expected, &actual, None);
+        let over = c.flip_mean.unwrap();
+        assert!(over > 0.0 && over < all, "over {over}, all {all}");
+        // The one pixel's own FLIP value over the image's 4096 pixels.
+        let map = flip_region(&expected, &actual, 0, 0, 64, 64).to_vec();
+        let expected_mean = map[30 * 64 + 30] / 4096.0;
+        assert!((over - expected_mean).abs() < 1e-7, "{over} vs {expected_mean}");
     }
 
     #[test]
@@ -468,6 +558,7 @@ mod tests {
                 threshold: 2,
                 max_share: share,
                 max_flip: flip,
+                flip_all_pixels: false,
             };
             assert!(t.validate().is_err(), "{t:?}");
         }

@@ -43,6 +43,44 @@ pub struct Job {
     pub tolerance: Tolerance,
     /// What each scene may make ffvk allocate.
     pub limits: Limits,
+    /// The renderer's driver family ([`driver_family`]): references in
+    /// `references/FAMILY/` take precedence over the shared ones when they exist.
+    pub driver_family: Option<String>,
+}
+
+/// The folder name of a device's driver family for per-driver references: the Vulkan driver
+/// name, lower-case, anything but letters and digits turned into `-` (`llvmpipe` for
+/// lavapipe, `nvidia`, `radv`, `intel-open-source-mesa-driver`).
+pub fn driver_family(info: &crate::vk::DeviceInfo) -> String {
+    let name: String = info
+        .driver_name
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() {
+                c.to_ascii_lowercase()
+            } else {
+                '-'
+            }
+        })
+        .collect();
+    let name = name.trim_matches('-');
+    if name.is_empty() {
+        "unknown".into()
+    } else {
+        name.into()
+    }
+}
+
+/// The reference of image `name`: `refs/FAMILY/NAME.png` when the job has a driver family
+/// and that file exists, else `refs/NAME.png`.
+fn reference_path(refs: &Path, family: Option<&str>, name: &str) -> PathBuf {
+    if let Some(family) = family {
+        let own = refs.join(family).join(format!("{name}.png"));
+        if own.exists() {
+            return own;
+        }
+    }
+    refs.join(format!("{name}.png"))
 }
 
 /// What happened to one image.
@@ -82,6 +120,8 @@ pub struct Row {
     pub output: PathBuf,
     /// The heat map of the differences, when the image is not identical to its reference.
     pub diff: Option<PathBuf>,
+    /// The reference checked against (or blessed), when there is a reference folder.
+    pub reference: Option<PathBuf>,
 }
 
 /// One scene of a run: its file and the name its images take (no extension).
@@ -252,9 +292,11 @@ pub fn run(renderer: &mut Renderer, job: &Job, log: &mut dyn FnMut(&str)) -> Res
                 comparison: None,
                 output: output.clone(),
                 diff: None,
+                reference: None,
             };
             if let Some(refs) = &job.references {
-                let reference = refs.join(format!("{name}.png"));
+                let reference = reference_path(refs, job.driver_family.as_deref(), &name);
+                row.reference = Some(reference.clone());
                 if !reference.exists() {
                     row.status = if job.bless {
                         Status::Blessed
@@ -347,6 +389,7 @@ mod tests {
             over: (share_over * 128.0 * 128.0) as usize,
             share_over,
             flip_mean: Some(flip_mean),
+            flip_all_pixels: false,
             worst: None,
             threshold: 1,
         }
@@ -361,6 +404,7 @@ mod tests {
             output: PathBuf::from(format!("out/{name}.png")),
             diff: None,
             problem: None,
+            reference: None,
         };
         let same = comparison([0; 4], 0.0, 0.0);
         let different = comparison([255, 12, 3, 0], 0.0123, 0.04567);

@@ -41,6 +41,7 @@ fn check_scenes(area: &str, scenes: PathBuf) {
         bless: regress::bless_from_env(),
         tolerance,
         limits: Default::default(),
+        driver_family: Some(regress::driver_family(r.device_info())),
     };
     let rows = regress::run(&mut r, &job, &mut |_| {}).unwrap();
     finish(r);
@@ -133,4 +134,103 @@ fn golden_demo_panels() {
         "demo panels differ:\n{}\n{HOW_TO_BLESS}",
         failures.join("\n")
     );
+}
+
+#[test]
+fn references_of_the_drivers_own_family_take_precedence_over_the_shared_ones() {
+    let area = root().join("tests/output/golden_family");
+    let _ = std::fs::remove_dir_all(&area);
+    let (scenes, out, refs) = (area.join("scenes"), area.join("out"), area.join("refs"));
+    std::fs::create_dir_all(&scenes).unwrap();
+    std::fs::write(
+        scenes.join("ball.toml"),
+        "[image]\nsize = [32, 32]\n[[lights]]\n[[meshes]]\nbuiltin = \"sphere\"\nlevel = 12\n",
+    )
+    .unwrap();
+    let mut r = renderer();
+    let family = regress::driver_family(r.device_info());
+    let mut job = Job {
+        scenes: vec![scenes.clone()],
+        out_dir: Some(out.clone()),
+        modes: Vec::new(),
+        size: None,
+        references: None,
+        bless: false,
+        tolerance: Tolerance::EXACT,
+        limits: Default::default(),
+        driver_family: Some(family.clone()),
+    };
+    regress::run(&mut r, &job, &mut |_| {}).unwrap();
+    // The shared reference is wrong; the family's own is this driver's image.
+    let image = load_image(&out.join("ball.png")).unwrap();
+    save_png(&image::RgbaImage::new(32, 32), &refs.join("ball.png")).unwrap();
+    save_png(&image, &refs.join(&family).join("ball.png")).unwrap();
+    job.references = Some(refs.clone());
+    let rows = regress::run(&mut r, &job, &mut |_| {}).unwrap();
+    assert_eq!(rows[0].status, Status::Pass, "{}", regress::table(&rows));
+    assert_eq!(
+        rows[0].reference.as_deref(),
+        Some(refs.join(&family).join("ball.png").as_path())
+    );
+    // Another family falls back to the shared reference, which fails.
+    job.driver_family = Some("some-other-driver".into());
+    let rows = regress::run(&mut r, &job, &mut |_| {}).unwrap();
+    assert_eq!(rows[0].status, Status::Fail);
+    assert_eq!(
+        rows[0].reference.as_deref(),
+        Some(refs.join("ball.png").as_path())
+    );
+    finish(r);
+}
+
+#[test]
+fn compare_passes_a_shift_within_the_threshold_and_fails_one_beyond_it() {
+    let dir = root().join("tests/output/golden_shift");
+    std::fs::create_dir_all(&dir).unwrap();
+    // A dark image like the golden scenes' background (0.1 → 26), and shifted copies.
+    let base = image::RgbaImage::from_fn(64, 64, |x, y| {
+        if (16..48).contains(&x) && (16..48).contains(&y) {
+            image::Rgba([60 + x as u8, 120, 40 + y as u8, 255])
+        } else {
+            image::Rgba([26, 26, 26, 255])
+        }
+    });
+    let shifted = |by: u8| {
+        let mut s = base.clone();
+        s.pixels_mut().for_each(|p| (0..3).for_each(|c| p.0[c] -= by));
+        s
+    };
+    save_png(&base, &dir.join("base.png")).unwrap();
+    for (by, passes) in [(1u8, true), (2, true), (3, false)] {
+        let path = dir.join(format!("shift{by}.png"));
+        save_png(&shifted(by), &path).unwrap();
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_ffvk"))
+            .arg("compare")
+            .arg(dir.join("base.png"))
+            .arg(&path)
+            .output()
+            .unwrap();
+        let text = String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr);
+        assert_eq!(
+            out.status.code(),
+            Some(if passes { 0 } else { 1 }),
+            "shift {by}: {text}"
+        );
+        if by == 1 {
+            // FLIP over every pixel, on request, still sees the shift.
+            let all = std::process::Command::new(env!("CARGO_BIN_EXE_ffvk"))
+                .arg("compare")
+                .arg(dir.join("base.png"))
+                .arg(&path)
+                .arg("--flip-all-pixels")
+                .output()
+                .unwrap();
+            assert_eq!(
+                all.status.code(),
+                Some(1),
+                "{}",
+                String::from_utf8_lossy(&all.stdout)
+            );
+        }
+    }
 }
