@@ -120,6 +120,16 @@ fn buffer_uris_may_not_leave_the_assets_folder() {
             assert!(e.contains("--allow-root"), "{e}");
         }
     }
+    // A malformed escape is said to be one.
+    for uri in ["%zz.bin", "%e9.bin", "abc%4"] {
+        let path = asset.join("c.gltf");
+        std::fs::write(&path, gltf_json(uri, r#"{"mesh": 0}"#, "0")).unwrap();
+        let e = load(&path).expect_err(uri).to_string();
+        assert!(
+            e.contains("not valid percent-encoding") && e.contains(uri),
+            "{uri}: {e}"
+        );
+    }
     // Inside the folder, percent-encoded or not, it loads.
     for uri in ["inside.bin", "./inside.bin", "%69nside.bin"] {
         let path = asset.join("b.gltf");

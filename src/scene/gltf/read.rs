@@ -96,6 +96,13 @@ pub(super) fn read_buffers(
         };
         if let gltf::buffer::Source::Uri(uri) = buffer.source() {
             if !uri.starts_with("data:") {
+                if percent_decode(uri).is_none() {
+                    return Err(cx.error(message(format!(
+                        "the URI {:?} is not valid percent-encoding: expected %XX escapes that \
+                         decode to UTF-8",
+                        crate::scene::shorten(uri)
+                    ))));
+                }
                 let file = inside_folder(base, uri)
                     .or_else(|| inside_roots(base, uri, roots))
                     .ok_or_else(|| {
