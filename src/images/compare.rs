@@ -398,6 +398,11 @@ fn flip_tiles(expected: &RgbaImage, actual: &RgbaImage, mut visit: impl FnMut(u3
     }
 }
 
+/// Whether some channel of the two pixels is more than `threshold` apart.
+fn over_threshold(e: &Rgba<u8>, a: &Rgba<u8>, threshold: u8) -> bool {
+    (0..4).any(|c| e.0[c].abs_diff(a.0[c]) > threshold)
+}
+
 /// The FLIP error averaged over the whole image, counting every pixel, or with
 /// `over: Some(threshold)` only the pixels with a channel more than `threshold` apart (the
 /// others count as 0).
@@ -409,11 +414,10 @@ fn flip_mean(expected: &RgbaImage, actual: &RgbaImage, over: Option<u8>) -> f32 
     }
     let mut sum = 0.0f64;
     flip_tiles(expected, actual, |tx, ty, tw, _, values| {
-        for (i, &v) in values.iter().enumerate() {
+        for (i, &v) in values.iter().enumerate().filter(|&(_, &v)| v != 0.0) {
             let counts = over.is_none_or(|threshold| {
                 let (x, y) = (tx + i as u32 % tw, ty + i as u32 / tw);
-                let (e, a) = (expected.get_pixel(x, y), actual.get_pixel(x, y));
-                (0..4).any(|c| e.0[c].abs_diff(a.0[c]) > threshold)
+                over_threshold(expected.get_pixel(x, y), actual.get_pixel(x, y), threshold)
             });
             if counts {
                 sum += f64::from(v);
@@ -441,7 +445,7 @@ pub fn heat_map(expected: &RgbaImage, actual: &RgbaImage, threshold: u8) -> Resu
         for (i, &v) in values.iter().enumerate() {
             let (x, y) = (tx + i as u32 % tw, ty + i as u32 / tw);
             let (e, a) = (expected.get_pixel(x, y), actual.get_pixel(x, y));
-            let over = (0..4).any(|c| e.0[c].abs_diff(a.0[c]) > threshold);
+            let over = over_threshold(e, a, threshold);
             let k = (v.clamp(0.0, 1.0) * 255.0).round() as usize * 3;
             let colored = [lut[k], lut[k + 1], lut[k + 2]];
             let pixel = if over && colored[0] < 160 {

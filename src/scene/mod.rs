@@ -70,11 +70,6 @@ impl MeshBudget {
         MeshBudget { limit, used: 0 }
     }
 
-    /// The bytes taken so far.
-    pub fn used(&self) -> u64 {
-        self.used
-    }
-
     /// Takes the memory of a mesh of `vertices` vertices and `indices` indices, or says why
     /// it does not fit.
     pub fn charge(&mut self, vertices: usize, indices: usize) -> Result<(), OverBudget> {

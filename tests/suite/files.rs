@@ -6,7 +6,7 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-use crate::support::output_dir;
+use crate::support::{ffvk_command, output_dir};
 
 fn scratch(name: &str) -> PathBuf {
     let dir = output_dir().join("files").join(name);
@@ -29,16 +29,8 @@ fn scene(dir: &Path, file: &str, size: u32) -> PathBuf {
     path
 }
 
-/// The ffvk binary on lavapipe with `args`.
-fn command(args: &[&dyn AsRef<std::ffi::OsStr>]) -> Command {
-    let mut c = Command::new(env!("CARGO_BIN_EXE_ffvk"));
-    c.args(args.iter().map(|a| a.as_ref()))
-        .env("VK_DRIVER_FILES", "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json");
-    c
-}
-
 fn ffvk(args: &[&dyn AsRef<std::ffi::OsStr>]) -> Output {
-    command(args).output().expect("the ffvk binary runs")
+    ffvk_command(args).output().expect("the ffvk binary runs")
 }
 
 fn stderr(out: &Output) -> String {
@@ -272,7 +264,7 @@ fn a_signal_during_a_write_leaves_the_old_file_or_the_new_one() {
     // A 4096² render takes about half a second here, most of it encoding and writing: the
     // signals land before, during and after the write.
     for (k, signal) in ["INT", "TERM"].iter().cycle().take(10).enumerate() {
-        let child = command(&[&"render", &s, &"-o", &path])
+        let child = ffvk_command(&[&"render", &s, &"-o", &path])
             .stdout(std::process::Stdio::null())
             .spawn()
             .unwrap();
@@ -298,7 +290,7 @@ fn two_writers_to_one_path_leave_one_whole_image() {
     let b = scene(&dir, "b.toml", 200);
     let path = dir.join("out.png");
     for _ in 0..3 {
-        let spawn = |s: &Path| command(&[&"render", &s, &"-o", &path]).output();
+        let spawn = |s: &Path| ffvk_command(&[&"render", &s, &"-o", &path]).output();
         let (ra, rb) = std::thread::scope(|t| {
             let ha = t.spawn(|| spawn(&a));
             let hb = t.spawn(|| spawn(&b));

@@ -11,7 +11,7 @@
 use std::cell::{Cell, RefCell};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use std::process::Stdio;
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
@@ -19,7 +19,7 @@ use ffvk::scene::{Limits, Scene};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, FileFailurePersistence, TestCaseError, TestRunner};
 
-use crate::support::{finish, output_dir, renderer};
+use crate::support::{ffvk_command, finish, output_dir, renderer};
 
 /// The case count `base` scaled by `FFVK_FUZZ_SCALE` (default 1).
 fn cases(base: u32) -> u32 {
@@ -1036,10 +1036,9 @@ fn generated_command_lines_exit_0_1_or_2_and_write_only_what_they_name() {
     runner(60)
         .run(&command_line(), |args| {
             let before = snapshot(&dir);
-            let mut child = Command::new(env!("CARGO_BIN_EXE_ffvk"))
+            let mut child = ffvk_command(&[])
                 .args(&args)
                 .current_dir(&dir)
-                .env("VK_DRIVER_FILES", "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json")
                 .stdout(Stdio::null())
                 .stderr(Stdio::null())
                 .spawn()

@@ -204,10 +204,7 @@ fn compare_passes_a_shift_within_the_threshold_and_fails_one_beyond_it() {
     for (by, passes) in [(1u8, true), (2, true), (3, false)] {
         let path = dir.join(format!("shift{by}.png"));
         save_png(&shifted(by), &path).unwrap();
-        let out = std::process::Command::new(env!("CARGO_BIN_EXE_ffvk"))
-            .arg("compare")
-            .arg(dir.join("base.png"))
-            .arg(&path)
+        let out = ffvk_command(&[&"compare", &dir.join("base.png"), &path])
             .output()
             .unwrap();
         let text = String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr);
@@ -218,11 +215,7 @@ fn compare_passes_a_shift_within_the_threshold_and_fails_one_beyond_it() {
         );
         if by == 1 {
             // FLIP over every pixel, on request, still sees the shift.
-            let all = std::process::Command::new(env!("CARGO_BIN_EXE_ffvk"))
-                .arg("compare")
-                .arg(dir.join("base.png"))
-                .arg(&path)
-                .arg("--flip-all-pixels")
+            let all = ffvk_command(&[&"compare", &dir.join("base.png"), &path, &"--flip-all-pixels"])
                 .output()
                 .unwrap();
             assert_eq!(

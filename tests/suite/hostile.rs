@@ -7,7 +7,7 @@ use std::process::Command;
 use ffvk::scene::gltf::{load, LoadErrorKind};
 use ffvk::scene::{Limits, Scene};
 
-use crate::support::output_dir;
+use crate::support::{ffvk_command, output_dir};
 
 fn scratch(name: &str) -> PathBuf {
     let dir = output_dir().join("hostile").join(name);
@@ -317,13 +317,6 @@ fn index_heavy_gltf(dir: &Path, index_count: usize) -> PathBuf {
     path
 }
 
-fn ffvk_command(args: &[&str]) -> Command {
-    let mut c = Command::new(env!("CARGO_BIN_EXE_ffvk"));
-    c.args(args)
-        .env("VK_DRIVER_FILES", "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json");
-    c
-}
-
 #[test]
 fn meshes_past_the_scenes_memory_limit_are_refused_before_they_are_read() {
     let dir = scratch("budget");
@@ -385,7 +378,7 @@ fn meshes_past_the_scenes_memory_limit_are_refused_before_they_are_read() {
     )
     .unwrap();
     let scene = dir.join("heavy.toml");
-    let out = ffvk_command(&["--max-mesh-mib", "4", "render", scene.to_str().unwrap()])
+    let out = ffvk_command(&[&"--max-mesh-mib", &"4", &"render", &scene])
         .output()
         .unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr);
@@ -395,7 +388,7 @@ fn meshes_past_the_scenes_memory_limit_are_refused_before_they_are_read() {
         "{stderr}"
     );
     assert!(!dir.join("heavy.png").exists());
-    let out = ffvk_command(&["--max-mesh-mib", "16", "render", scene.to_str().unwrap()])
+    let out = ffvk_command(&[&"--max-mesh-mib", &"16", &"render", &scene])
         .output()
         .unwrap();
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));

@@ -2,7 +2,6 @@
 //! each kind of bad input, never a panic.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 use ffvk::gl::state::LightingMode;
 use ffvk::scene::{render_scene, Scene};
@@ -241,9 +240,8 @@ fn bad_gltf_files_are_clear_errors() {
 }
 
 fn ffvk(args: &[&str]) -> (bool, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_ffvk"))
+    let out = crate::support::ffvk_command(&[])
         .args(args)
-        .env("VK_DRIVER_FILES", "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json")
         .output()
         .expect("the ffvk binary runs");
     (

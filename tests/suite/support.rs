@@ -173,3 +173,11 @@ pub fn ndc_draw(mesh: &ffvk::Mesh) -> ffvk::Draw<'_> {
         state: unlit(),
     }
 }
+
+/// The ffvk binary on lavapipe with `args`.
+pub fn ffvk_command(args: &[&dyn AsRef<std::ffi::OsStr>]) -> std::process::Command {
+    let mut c = std::process::Command::new(env!("CARGO_BIN_EXE_ffvk"));
+    c.args(args.iter().map(|a| a.as_ref()))
+        .env("VK_DRIVER_FILES", "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json");
+    c
+}
