@@ -78,6 +78,39 @@ pub enum Error {
         limit_name: &'static str,
     },
 
+    /// The driver refused device memory ffvk asked for (`vkAllocateMemory` or
+    /// `vkMapMemory`), usually because the memory is exhausted: smaller images or meshes may
+    /// fit.
+    #[error("cannot allocate {bytes} bytes of device memory (memory type {memory_type}, {flags}) for the {what}: {result}")]
+    DeviceMemory {
+        /// What the memory was for, e.g. `"vertex buffer"`.
+        what: &'static str,
+        /// The size asked of the driver: the resource's, or that of the block it would share.
+        bytes: u64,
+        /// The memory type's index.
+        memory_type: u32,
+        /// The memory type's property flags.
+        flags: String,
+        /// What the driver returned.
+        result: vk::Result,
+    },
+
+    /// [`Buffer::write`](crate::vk::Buffer::write) or a read of a buffer whose memory the host
+    /// cannot see (device-local memory of a discrete GPU): a bug in the caller.
+    #[error("the buffer's memory is not host-visible; fill it with a copy from a staging buffer")]
+    NotMapped,
+
+    /// [`Buffer::write`](crate::vk::Buffer::write) past the buffer's end: a bug in the caller.
+    #[error("a write of {bytes} bytes at offset {offset} is outside the buffer of {size} bytes")]
+    OutOfBounds {
+        /// Where the write starts.
+        offset: u64,
+        /// Its length.
+        bytes: u64,
+        /// The buffer's size.
+        size: u64,
+    },
+
     #[error("{call} failed: {result}")]
     /// Any other failing `VkResult`: unexpected, and not specific to the caller's input.
     Vulkan {

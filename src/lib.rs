@@ -55,4 +55,4 @@ pub use draw::lighting::{Lighting, LightingOptions, LitDraw};
 pub use draw::pipeline::{Attribute, Blend, RasterState, Specialize, Target, VertexInput};
 pub use draw::record::Geometry;
 pub use error::{Error, LightingError, MeshError, Result};
-pub use renderer::{Draw, Frame, FrameStats, Mesh, PipelineStats, Pixels, Renderer, RendererOptions};
+pub use renderer::{Draw, Frame, FrameStats, Mesh, PipelineStats, Pixels, Renderer, RendererOptions, Upload};

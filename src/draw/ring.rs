@@ -1,5 +1,6 @@
-//! The per-draw GL state in flight: for each frame slot, host-visible uniform memory holding
-//! one [`DrawBlock`] per draw recorded for that slot, each seen through a dynamic offset.
+//! The per-draw GL state in flight: for each frame slot, host-visible uniform memory (the
+//! device-local memory the host can map, where the device has it) holding one [`DrawBlock`]
+//! per draw recorded for that slot, each seen through a dynamic offset.
 //!
 //! A slot's memory is written while its draws are recorded and read when the GPU runs them,
 //! so a slot may be reset ([`UniformRing::reset`]) only when the caller's fence for the frame
@@ -14,7 +15,7 @@ use ash::vk;
 use crate::error::{LightingError, Result};
 use crate::gpu::layout::DrawBlock;
 use crate::vk::objects::{DescriptorPool, DescriptorSetLayout};
-use crate::vk::{Buffer, Device};
+use crate::vk::{Buffer, Device, MemoryUse};
 
 /// Draws the first chunk of a slot holds.
 const FIRST_CHUNK_DRAWS: u64 = 64;
@@ -107,7 +108,7 @@ impl UniformRing {
         }
         let chunk = s.chunks.last_mut().expect("a chunk with room was just ensured");
         let offset = s.used * stride;
-        chunk.buffer.write(offset, bytemuck::bytes_of(block));
+        chunk.buffer.write(offset, bytemuck::bytes_of(block))?;
         s.used += 1;
         let offset = u32::try_from(offset).map_err(|_| LightingError::TooManyDraws { draws: s.used })?;
         Ok((chunk.descriptors.set(), offset))
@@ -121,7 +122,13 @@ impl Chunk {
         stride: u64,
         set_layout: &DescriptorSetLayout,
     ) -> Result<Self> {
-        let buffer = Buffer::new(device, capacity * stride, vk::BufferUsageFlags::UNIFORM_BUFFER)?;
+        let buffer = Buffer::new(
+            device,
+            "uniform buffer",
+            capacity * stride,
+            vk::BufferUsageFlags::UNIFORM_BUFFER,
+            MemoryUse::Uniforms,
+        )?;
         let sizes = [vk::DescriptorPoolSize {
             ty: vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC,
             descriptor_count: 1,

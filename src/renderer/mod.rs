@@ -14,10 +14,15 @@ use crate::gl::state::LightingState;
 use crate::gpu::layout::DrawBlock;
 use crate::mesh::MeshData;
 use crate::vk::objects::{CommandPool, Fence};
-use crate::vk::{Buffer, Device, DeviceInfo, Image, Instance, Validation, ValidationSink};
+use crate::vk::{
+    Buffer, Device, DeviceInfo, Image, Instance, MemoryUsage, MemoryUse, Validation, ValidationSink,
+};
 
 mod queries;
+mod upload;
 use queries::Queries;
+pub use upload::Upload;
+use upload::{Part, Uploader};
 
 /// How to open a renderer.
 #[derive(Debug, Clone, Default)]
@@ -29,6 +34,8 @@ pub struct RendererOptions {
     pub validation: Validation,
     /// Specialized pipelines per lighting state, or the uber-shader.
     pub specialize: Specialize,
+    /// How meshes reach device-local memory (default: directly where the host can write it).
+    pub upload: Upload,
 }
 
 /// A mesh uploaded to the renderer's device. Drawing it with another renderer is an error.
@@ -208,6 +215,9 @@ pub struct Renderer {
     lighting: Lighting,
     commands: CommandPool,
     fence: Fence,
+    /// Staging copies of meshes, behind a lock since uploads take `&self`.
+    uploader: std::sync::Mutex<Uploader>,
+    upload: Upload,
     /// Timestamps and pipeline statistics, where the device has them.
     queries: Queries,
     /// Set when a submission failed: the renderer refuses further frames.
@@ -230,11 +240,14 @@ impl Renderer {
         let commands = CommandPool::with_one_buffer(&device, device.own().queue_family)?;
         let fence = Fence::new(&device)?;
         let queries = Queries::new(&device)?;
+        let uploader = std::sync::Mutex::new(Uploader::new(&device)?);
         let renderer = Renderer {
             targets: None,
             lighting,
             commands,
             fence,
+            uploader,
+            upload: options.upload,
             queries,
             lost: false,
             device,
@@ -286,20 +299,31 @@ impl Renderer {
             }
             .into());
         }
-        let vertex_bytes: &[u8] = bytemuck::cast_slice(&mesh.vertices);
-        let index_bytes: &[u8] = bytemuck::cast_slice(&mesh.indices);
-        let mut vertices = Buffer::new(
-            &self.device,
-            vertex_bytes.len() as u64,
-            vk::BufferUsageFlags::VERTEX_BUFFER,
-        )?;
-        vertices.write(0, vertex_bytes);
-        let mut indices = Buffer::new(
-            &self.device,
-            index_bytes.len() as u64,
-            vk::BufferUsageFlags::INDEX_BUFFER,
-        )?;
-        indices.write(0, index_bytes);
+        let parts = [
+            Part {
+                what: "vertex buffer",
+                bytes: bytemuck::cast_slice(&mesh.vertices),
+                usage: vk::BufferUsageFlags::VERTEX_BUFFER,
+                read_stage: vk::PipelineStageFlags2::VERTEX_ATTRIBUTE_INPUT,
+                read_access: vk::AccessFlags2::VERTEX_ATTRIBUTE_READ,
+            },
+            Part {
+                what: "index buffer",
+                bytes: bytemuck::cast_slice(&mesh.indices),
+                usage: vk::BufferUsageFlags::INDEX_BUFFER,
+                read_stage: vk::PipelineStageFlags2::INDEX_INPUT,
+                read_access: vk::AccessFlags2::INDEX_READ,
+            },
+        ];
+        let mut uploader = self
+            .uploader
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner());
+        let [vertices, indices]: [Buffer; 2] = uploader
+            .upload(&self.device, &parts, self.upload)?
+            .try_into()
+            .map_err(|_| ())
+            .expect("one buffer per part");
         Ok(Mesh {
             vertices,
             indices,
@@ -334,8 +358,10 @@ impl Renderer {
         )?;
         let readback = Buffer::new(
             &self.device,
+            "readback buffer",
             width as u64 * height as u64 * 4,
             vk::BufferUsageFlags::TRANSFER_DST,
+            MemoryUse::Readback,
         )?;
         self.targets = Some(Targets {
             extent,
@@ -427,7 +453,10 @@ impl Renderer {
         Ok(Pixels {
             width: frame.width,
             height: frame.height,
-            rgba: crate::alloc::try_copy(&targets.readback.bytes()[..len], "the rendered image")?,
+            rgba: crate::alloc::try_copy(
+                &targets.readback.bytes().ok_or(Error::NotMapped)?[..len],
+                "the rendered image",
+            )?,
         })
     }
 
@@ -443,6 +472,12 @@ impl Renderer {
         let start = std::time::Instant::now();
         self.lighting.prepare(state, raster)?;
         Ok(start.elapsed().as_nanos() as f64)
+    }
+
+    /// How much device memory this renderer's device holds (meshes, render targets, uniforms)
+    /// and how much of it is in use.
+    pub fn memory_usage(&self) -> MemoryUsage {
+        self.device.memory_usage()
     }
 
     /// How many pipelines this renderer has created, and how many of them are specialized.

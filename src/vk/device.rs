@@ -1,11 +1,12 @@
 //! Physical device choice (lavapipe by default) and the logical device with one graphics queue.
 
 use std::ffi::CStr;
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
 
 use ash::{ext, vk};
 
 use super::instance::Instance;
+use super::memory::{Allocator, MemoryUsage};
 use crate::error::{vk_error, Error, Result};
 
 /// What `ffvk info` prints and benchmarks record.
@@ -60,8 +61,8 @@ pub struct Device {
     pub(crate) raw: ash::Device,
     pub(crate) memory: vk::PhysicalDeviceMemoryProperties,
     pub(crate) limits: vk::PhysicalDeviceLimits,
-    /// Vulkan 1.1's maxMemoryAllocationSize: the largest single allocation.
-    pub(crate) max_allocation: u64,
+    /// Where every buffer and image of this device gets its memory.
+    allocator: Mutex<Allocator>,
     pub(crate) info: DeviceInfo,
     /// What only ffvk's own device has; `None` for a caller's device.
     pub(crate) own: Option<OwnDevice>,
@@ -209,7 +210,11 @@ impl Device {
             raw,
             memory,
             limits: props.limits,
-            max_allocation: supported.max_memory_allocation_size,
+            allocator: Mutex::new(Allocator::new(
+                memory,
+                props.limits.buffer_image_granularity,
+                supported.max_memory_allocation_size,
+            )),
             info,
             own: Some(OwnDevice {
                 instance,
@@ -270,7 +275,11 @@ impl Device {
             raw: device,
             memory,
             limits: props.limits,
-            max_allocation: supported.max_memory_allocation_size,
+            allocator: Mutex::new(Allocator::new(
+                memory,
+                props.limits.buffer_image_granularity,
+                supported.max_memory_allocation_size,
+            )),
             info,
             own: None,
         }))
@@ -289,38 +298,18 @@ impl Device {
         &self.info
     }
 
-    /// A memory type index allowed by `type_bits` with all of `flags`.
-    pub(crate) fn memory_type(&self, type_bits: u32, flags: vk::MemoryPropertyFlags) -> Result<u32> {
-        (0..self.memory.memory_type_count)
-            .find(|&i| {
-                type_bits & (1 << i) != 0
-                    && self.memory.memory_types[i as usize]
-                        .property_flags
-                        .contains(flags)
-            })
-            .ok_or_else(|| Error::MissingFeature(format!("a memory type with {flags:?}")))
+    /// The allocator every buffer and image of this device takes its memory from.
+    pub(crate) fn allocator(&self) -> std::sync::MutexGuard<'_, Allocator> {
+        // A panic while the lock was held leaves the allocator's books as they were before
+        // the call that panicked (it changes them only after the driver succeeded).
+        self.allocator
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner())
     }
 
-    /// Refuses, before asking the driver, an allocation of `size` bytes of memory type
-    /// `type_index` that can never succeed: larger than the type's heap or than
-    /// maxMemoryAllocationSize. (Drivers that allocate from the host, lavapipe among them,
-    /// may otherwise try and take the machine's memory with them.)
-    pub(crate) fn check_allocation(&self, what: &'static str, size: u64, type_index: u32) -> Result<()> {
-        let heap = self.memory.memory_types[type_index as usize].heap_index;
-        let heap_size = self.memory.memory_heaps[heap as usize].size;
-        let too_large = |limit, limit_name| Error::TooLarge {
-            what,
-            bytes: size,
-            limit,
-            limit_name,
-        };
-        if size > heap_size {
-            return Err(too_large(heap_size, "memory heap"));
-        }
-        if self.max_allocation != 0 && size > self.max_allocation {
-            return Err(too_large(self.max_allocation, "maxMemoryAllocationSize"));
-        }
-        Ok(())
+    /// How much device memory ffvk holds on this device, and how much of it is in use.
+    pub fn memory_usage(&self) -> MemoryUsage {
+        self.allocator().usage()
     }
 
     /// Waits until the device is idle.
@@ -333,6 +322,13 @@ impl Device {
 
 impl Drop for Device {
     fn drop(&mut self) {
+        // Every allocation holds the device, so none is left: the blocks go back first, on
+        // the caller's device too.
+        let allocator = self
+            .allocator
+            .get_mut()
+            .unwrap_or_else(|poisoned| poisoned.into_inner());
+        allocator.free_all(&self.raw);
         if self.own.is_none() {
             // The caller's device: the caller destroys it.
             return;

@@ -3,9 +3,11 @@
 
 pub mod device;
 pub mod instance;
+pub mod memory;
 pub mod objects;
 pub mod resources;
 
 pub use device::{Device, DeviceInfo, EnabledFeatures};
 pub use instance::{Instance, Validation, ValidationSink};
+pub use memory::{MemoryUsage, MemoryUse};
 pub use resources::{Buffer, Image};

@@ -69,10 +69,6 @@ owned!(
     QueryPool(vk::QueryPool) freed by destroy_query_pool
 );
 owned!(
-    /// Device memory.
-    Memory(vk::DeviceMemory) freed by free_memory
-);
-owned!(
     /// A buffer without its memory (see [`super::Buffer`] for one with).
     RawBuffer(vk::Buffer) freed by destroy_buffer
 );
@@ -190,21 +186,6 @@ impl QueryPool {
         let raw =
             unsafe { device.raw.create_query_pool(info, None) }.map_err(vk_error("vkCreateQueryPool"))?;
         Ok(QueryPool {
-            device: device.clone(),
-            raw,
-        })
-    }
-}
-
-impl Memory {
-    /// `size` bytes of memory type `type_index`.
-    pub fn allocate(device: &Arc<Device>, size: u64, type_index: u32) -> Result<Self> {
-        let info = vk::MemoryAllocateInfo::default()
-            .allocation_size(size)
-            .memory_type_index(type_index);
-        // SAFETY: a valid allocate info on a live device.
-        let raw = unsafe { device.raw.allocate_memory(&info, None) }.map_err(vk_error("vkAllocateMemory"))?;
-        Ok(Memory {
             device: device.clone(),
             raw,
         })

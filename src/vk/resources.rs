@@ -1,46 +1,33 @@
-//! Buffers and images, each owning its memory and an `Arc` of its device.
+//! Buffers and images, each owning its place in device memory and an `Arc` of its device.
 
 use std::sync::Arc;
 
 use ash::vk;
 
 use super::device::Device;
-use super::objects::{ImageView, Memory, RawBuffer, RawImage};
-use crate::error::{vk_error, Result};
+use super::memory::{self, Allocation, MemoryUse};
+use super::objects::{ImageView, RawBuffer, RawImage};
+use crate::error::{vk_error, Error, Result};
 
-/// A host-visible, coherent buffer, persistently mapped. ffvk targets CPU Vulkan (lavapipe),
-/// where all memory is host memory, so a staging copy would only add work.
+/// A buffer and its memory, placed by the device's allocator for its [`MemoryUse`]; mapped
+/// for its whole life when that memory is host-visible.
 pub struct Buffer {
-    // Field order is drop order: the buffer goes before the memory bound to it (which unmaps).
+    // Field order is drop order: the buffer goes before its memory.
     raw: RawBuffer,
-    memory: Memory,
-    mapped: *mut u8,
+    memory: Allocation,
     size: u64,
 }
 
-// SAFETY: the mapped pointer is only written through &mut self or read through &self,
-// and Vulkan handles may be used from any thread with external synchronisation, which
-// Rust's borrow rules provide here.
-unsafe impl Send for Buffer {}
-// SAFETY: see above; &self methods only read.
-unsafe impl Sync for Buffer {}
-
-/// What a buffer of `usage` holds, for messages.
-fn buffer_purpose(usage: vk::BufferUsageFlags) -> &'static str {
-    if usage.contains(vk::BufferUsageFlags::VERTEX_BUFFER) {
-        "vertex buffer"
-    } else if usage.contains(vk::BufferUsageFlags::INDEX_BUFFER) {
-        "index buffer"
-    } else if usage.contains(vk::BufferUsageFlags::UNIFORM_BUFFER) {
-        "uniform buffer"
-    } else {
-        "readback buffer"
-    }
-}
-
 impl Buffer {
-    /// A buffer of `size` bytes (at least 4) for `usage`, mapped for its whole life.
-    pub fn new(device: &Arc<Device>, size: u64, usage: vk::BufferUsageFlags) -> Result<Self> {
+    /// A buffer of `size` bytes (at least 4) for `usage`, in memory for `memory_use`; `what`
+    /// names it in errors (e.g. `"vertex buffer"`).
+    pub fn new(
+        device: &Arc<Device>,
+        what: &'static str,
+        size: u64,
+        usage: vk::BufferUsageFlags,
+        memory_use: MemoryUse,
+    ) -> Result<Self> {
         let size = size.max(4);
         let info = vk::BufferCreateInfo::default()
             .size(size)
@@ -49,28 +36,16 @@ impl Buffer {
         let raw = RawBuffer::new(device, &info)?;
         // SAFETY: raw is a live buffer of this device.
         let req = unsafe { device.raw.get_buffer_memory_requirements(raw.raw()) };
-        let type_index = device.memory_type(
-            req.memory_type_bits,
-            vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT,
-        )?;
-        device.check_allocation(buffer_purpose(usage), req.size, type_index)?;
-        let memory = Memory::allocate(device, req.size, type_index)?;
-        // SAFETY: the memory is fresh, large enough per the requirements, and the buffer unbound.
-        unsafe { device.raw.bind_buffer_memory(raw.raw(), memory.raw(), 0) }
-            .map_err(vk_error("vkBindBufferMemory"))?;
-        // SAFETY: host-visible memory, mapped once for its whole lifetime (freeing unmaps it).
-        let mapped = unsafe {
+        let memory = memory::allocate(device, what, &req, memory_use)?;
+        // SAFETY: the allocation is of a type the requirements allow, at an offset aligned as
+        // they ask, as large as they ask; the buffer is unbound.
+        unsafe {
             device
                 .raw
-                .map_memory(memory.raw(), 0, vk::WHOLE_SIZE, vk::MemoryMapFlags::empty())
+                .bind_buffer_memory(raw.raw(), memory.memory(), memory.offset())
         }
-        .map_err(vk_error("vkMapMemory"))? as *mut u8;
-        Ok(Buffer {
-            raw,
-            memory,
-            mapped,
-            size,
-        })
+        .map_err(vk_error("vkBindBufferMemory"))?;
+        Ok(Buffer { raw, memory, size })
     }
 
     /// The Vulkan handle.
@@ -88,37 +63,55 @@ impl Buffer {
         self.memory.device()
     }
 
-    /// Copies `bytes` in at `offset`. Panics only on a caller's bug (out-of-bounds write).
-    pub fn write(&mut self, offset: u64, bytes: &[u8]) {
-        assert!(
-            offset + bytes.len() as u64 <= self.size,
-            "buffer write out of bounds"
-        );
-        // SAFETY: the range is inside the mapping (checked above); &mut self means no
-        // host reader, and callers only write between frames (after the fence wait).
-        unsafe {
-            std::ptr::copy_nonoverlapping(bytes.as_ptr(), self.mapped.add(offset as usize), bytes.len())
-        }
+    /// Whether the host sees the buffer's memory ([`Buffer::write`] and [`Buffer::bytes`]
+    /// work): always for the mapped uses, and for [`MemoryUse::Gpu`] on devices whose
+    /// device-local memory is host-visible.
+    pub fn is_mapped(&self) -> bool {
+        self.memory.mapped().is_some()
     }
 
-    /// The mapped contents.
-    pub fn bytes(&self) -> &[u8] {
-        // SAFETY: the mapping covers `size` bytes and lives as long as self; coherent
-        // memory needs no invalidate.
-        unsafe { std::slice::from_raw_parts(self.mapped, self.size as usize) }
+    /// Copies `bytes` in at `offset`. The caller writes only between frames (after the fence
+    /// of the last frame that read the buffer).
+    pub fn write(&mut self, offset: u64, bytes: &[u8]) -> Result<()> {
+        let Some(mapped) = self.memory.mapped() else {
+            return Err(Error::NotMapped);
+        };
+        let end = offset.checked_add(bytes.len() as u64);
+        if end.is_none_or(|end| end > self.size) {
+            return Err(Error::OutOfBounds {
+                offset,
+                bytes: bytes.len() as u64,
+                size: self.size,
+            });
+        }
+        // SAFETY: the range is inside the buffer (checked above), whose memory is mapped from
+        // its first byte; &mut self means no host reader, and the caller keeps the GPU off it.
+        unsafe {
+            std::ptr::copy_nonoverlapping(bytes.as_ptr(), mapped.get().add(offset as usize), bytes.len())
+        }
+        Ok(())
+    }
+
+    /// The mapped contents; `None` when the host cannot see the memory.
+    pub fn bytes(&self) -> Option<&[u8]> {
+        let mapped = self.memory.mapped()?;
+        // SAFETY: the mapping covers the buffer's `size` bytes and lives as long as self;
+        // coherent memory needs no invalidate.
+        Some(unsafe { std::slice::from_raw_parts(mapped.get(), self.size as usize) })
     }
 }
 
-/// A 2D image with its own memory and a view.
+/// A 2D image with its memory and a view.
 pub struct Image {
     // Field order is drop order: view, then image, then its memory.
     view: ImageView,
     raw: RawImage,
-    _memory: Memory,
+    _memory: Allocation,
 }
 
 impl Image {
-    /// A single-sampled, single-level 2D image of `format` with a view of `aspect`.
+    /// A single-sampled, single-level 2D image of `format` with a view of `aspect`, in
+    /// device-local memory.
     pub fn new(
         device: &Arc<Device>,
         extent: vk::Extent2D,
@@ -143,17 +136,19 @@ impl Image {
         let raw = RawImage::new(device, &info)?;
         // SAFETY: raw is a live image of this device.
         let req = unsafe { device.raw.get_image_memory_requirements(raw.raw()) };
-        let type_index = device.memory_type(req.memory_type_bits, vk::MemoryPropertyFlags::empty())?;
         let what = if usage.contains(vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT) {
             "depth image"
         } else {
             "color image"
         };
-        device.check_allocation(what, req.size, type_index)?;
-        let memory = Memory::allocate(device, req.size, type_index)?;
-        // SAFETY: fresh memory of the required size, image unbound.
-        unsafe { device.raw.bind_image_memory(raw.raw(), memory.raw(), 0) }
-            .map_err(vk_error("vkBindImageMemory"))?;
+        let memory = memory::allocate(device, what, &req, MemoryUse::Gpu)?;
+        // SAFETY: memory of an allowed type, aligned and as large as required; image unbound.
+        unsafe {
+            device
+                .raw
+                .bind_image_memory(raw.raw(), memory.memory(), memory.offset())
+        }
+        .map_err(vk_error("vkBindImageMemory"))?;
         let view_info = vk::ImageViewCreateInfo::default()
             .image(raw.raw())
             .view_type(vk::ImageViewType::TYPE_2D)

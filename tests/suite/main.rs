@@ -11,6 +11,7 @@ mod golden;
 mod hostile;
 mod layout;
 mod lighting;
+mod memory;
 mod reference;
 mod render_path;
 mod scene;

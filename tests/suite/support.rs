@@ -18,10 +18,17 @@ pub fn renderer() -> Renderer {
 
 /// [`renderer`] with a given pipeline specialization policy.
 pub fn renderer_with(specialize: Specialize) -> Renderer {
-    Renderer::new(&RendererOptions {
-        device: None,
-        validation: Validation::Required,
+    renderer_from(RendererOptions {
         specialize,
+        ..RendererOptions::default()
+    })
+}
+
+/// A renderer of `options` with the validation layer required.
+pub fn renderer_from(options: RendererOptions) -> Renderer {
+    Renderer::new(&RendererOptions {
+        validation: Validation::Required,
+        ..options
     })
     .expect("a renderer on lavapipe with VK_LAYER_KHRONOS_validation")
 }
