@@ -148,7 +148,8 @@ fn main() {
 /// client arrays, ...) and the framebuffer objects it renders into. GL_ARB_framebuffer_object
 /// names its functions without a suffix, as GL 3.0 does, so they exist in Mesa's and NVIDIA's
 /// compatibility contexts (3.0 and later); `Fallbacks::All` also tries the `EXT` names of
-/// GL_EXT_framebuffer_object for a driver that has only those.
+/// GL_EXT_framebuffer_object for a driver that has only those. GL_ARB_timer_query (core in
+/// 3.3) gives the bench GL's GPU time per frame.
 #[cfg(feature = "tools")]
 fn write_gl_bindings(path: &Path) -> std::io::Result<()> {
     use gl_generator::{Api, Fallbacks, Profile, Registry, StructGenerator};
@@ -157,7 +158,7 @@ fn write_gl_bindings(path: &Path) -> std::io::Result<()> {
         (2, 1),
         Profile::Compatibility,
         Fallbacks::All,
-        ["GL_ARB_framebuffer_object"],
+        ["GL_ARB_framebuffer_object", "GL_ARB_timer_query"],
     );
     let mut file = std::io::BufWriter::new(fs::File::create(path)?);
     registry.write_bindings(StructGenerator, &mut file)?;

@@ -111,6 +111,16 @@ pub enum Error {
         size: u64,
     },
 
+    /// [`Renderer::measure_frames`](crate::Renderer::measure_frames) was asked for more frames
+    /// than one submission records.
+    #[error("{count} frames asked of one measurement: expected 1..={max}")]
+    TooManyFrames {
+        /// The count asked for.
+        count: u32,
+        /// [`MAX_REPEAT`](crate::renderer::MAX_REPEAT).
+        max: u32,
+    },
+
     #[error("{call} failed: {result}")]
     /// Any other failing `VkResult`: unexpected, and not specific to the caller's input.
     Vulkan {

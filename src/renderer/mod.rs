@@ -5,10 +5,9 @@ use std::sync::Arc;
 use ash::vk;
 use glam::{Mat4, Vec4};
 
-use crate::draw::lighting::{Lighting, LightingOptions, LitDraw};
+use crate::draw::lighting::{Lighting, LightingOptions};
 use crate::draw::pipeline::{RasterState, Target, VertexInput};
 use crate::draw::pipeline::{Specialize, COLOR_FORMAT, DEPTH_FORMAT};
-use crate::draw::record::Geometry;
 use crate::error::{vk_error, Error, MeshError, Result};
 use crate::gl::state::LightingState;
 use crate::gpu::layout::DrawBlock;
@@ -19,6 +18,7 @@ use crate::vk::{
 };
 
 mod queries;
+mod record;
 mod upload;
 use queries::Queries;
 pub use upload::Upload;
@@ -150,13 +150,30 @@ pub struct PipelineStats {
     pub fragment_shader_invocations: u64,
 }
 
+/// The most frames [`Renderer::measure_frames`] records in one submission.
+pub const MAX_REPEAT: u32 = 4096;
+
 /// What one submission records besides the rendering pass.
 #[derive(Debug, Clone, Copy)]
 struct Pass {
-    /// Copy the color image to the readback buffer.
+    /// Copy the color image to the readback buffer after the last pass.
     readback: bool,
-    /// Write the timestamps and the pipeline-statistics query.
-    measure: bool,
+    /// Write a timestamp before the first pass and after each.
+    timestamps: bool,
+    /// Count the pipeline statistics of the (only) pass.
+    statistics: bool,
+    /// How many times the frame's pass is recorded: measured frames repeated in one
+    /// submission, so that submission and waiting stay outside what is measured.
+    repeat: u32,
+}
+
+impl Pass {
+    const RENDER: Pass = Pass {
+        readback: true,
+        timestamps: false,
+        statistics: false,
+        repeat: 1,
+    };
 }
 
 /// The render target of one size, reused while the size stays the same.
@@ -374,43 +391,60 @@ impl Renderer {
 
     /// Draws `frame` and returns its pixels, row 0 at the top of the view.
     pub fn render(&mut self, frame: &Frame) -> Result<Pixels> {
-        self.draw_frame(
-            frame,
-            Pass {
-                readback: true,
-                measure: false,
-            },
-        )?;
+        self.draw_frame(frame, Pass::RENDER)?;
         self.read_image(frame)
     }
 
     /// [`Renderer::render`] with timestamps and a pipeline-statistics query around the
     /// rendering pass.
     pub fn render_measured(&mut self, frame: &Frame) -> Result<(Pixels, FrameStats)> {
-        let stats = self.draw_frame(
-            frame,
-            Pass {
-                readback: true,
-                measure: true,
-            },
-        )?;
+        let pass = Pass {
+            timestamps: true,
+            statistics: true,
+            ..Pass::RENDER
+        };
+        let stats = self.draw_frame(frame, pass)?.remove(0);
         Ok((self.read_image(frame)?, stats))
     }
 
     /// Draws `frame` with the queries of [`Renderer::render_measured`] but without reading
-    /// the image back: for timing many frames.
+    /// the image back.
     pub fn measure(&mut self, frame: &Frame) -> Result<FrameStats> {
-        self.draw_frame(
-            frame,
-            Pass {
-                readback: false,
-                measure: true,
-            },
-        )
+        let pass = Pass {
+            readback: false,
+            timestamps: true,
+            statistics: true,
+            repeat: 1,
+        };
+        Ok(self.draw_frame(frame, pass)?.remove(0))
     }
 
-    /// Uploads the uniforms, records, submits and waits; returns what the queries measured.
-    fn draw_frame(&mut self, frame: &Frame, pass: Pass) -> Result<FrameStats> {
+    /// Draws `frame` `count` times (at least once) in one submission, with a timestamp
+    /// before the first and after each, and returns each one's [`FrameStats`]: the way to
+    /// time frames whose GPU work is short, since nothing but the frame itself (its layout
+    /// transitions, clears and draws) lies between two timestamps. No pipeline statistics
+    /// (they cost GPU time on some devices; [`Renderer::measure`] has them) and no readback;
+    /// `wall_ns` is the submission's host time divided by `count`. At most [`MAX_REPEAT`]
+    /// frames, else [`Error::TooManyFrames`].
+    pub fn measure_frames(&mut self, frame: &Frame, count: u32) -> Result<Vec<FrameStats>> {
+        if count > MAX_REPEAT {
+            return Err(Error::TooManyFrames {
+                count,
+                max: MAX_REPEAT,
+            });
+        }
+        let pass = Pass {
+            readback: false,
+            timestamps: true,
+            statistics: false,
+            repeat: count.max(1),
+        };
+        self.draw_frame(frame, pass)
+    }
+
+    /// Uploads the uniforms, records, submits and waits; returns what the queries measured,
+    /// one entry per repeat of the pass.
+    fn draw_frame(&mut self, frame: &Frame, pass: Pass) -> Result<Vec<FrameStats>> {
         if self.lost {
             return Err(Error::DeviceLost(
                 "render (an earlier submission failed; make a new renderer)",
@@ -429,20 +463,31 @@ impl Renderer {
             DrawBlock::new(&d.state, d.modelview, d.projection)?;
             self.lighting.prepare(&d.state, raster)?;
         }
+        if pass.timestamps {
+            self.queries.ensure_timestamps(&self.device, pass.repeat + 1)?;
+        }
         self.lighting.begin_frame(0)?;
         let record_ns = self.record(frame, pass)?;
-        let wall_ns = self.submit_and_wait()?;
+        let wall_ns = self.submit_and_wait()? / f64::from(pass.repeat);
         self.check_validation()?;
-        let mut stats = FrameStats {
-            wall_ns,
-            record_ns,
-            ..FrameStats::default()
+        let gpu_ns = if pass.timestamps {
+            self.queries.read_timestamps(&self.device, pass.repeat + 1)?
+        } else {
+            None
         };
-        if pass.measure {
-            stats.gpu_ns = self.queries.read_timestamps(&self.device)?;
-            stats.pipeline = self.queries.read_statistics()?;
-        }
-        Ok(stats)
+        let pipeline = if pass.statistics {
+            self.queries.read_statistics()?
+        } else {
+            None
+        };
+        Ok((0..pass.repeat as usize)
+            .map(|i| FrameStats {
+                gpu_ns: gpu_ns.as_ref().map(|ns| ns[i]),
+                wall_ns,
+                pipeline,
+                record_ns,
+            })
+            .collect())
     }
 
     /// The readback buffer as an image (after a frame recorded with `readback`).
@@ -483,245 +528,6 @@ impl Renderer {
     /// How many pipelines this renderer has created, and how many of them are specialized.
     pub fn pipeline_counts(&self) -> (usize, usize) {
         self.lighting.pipeline_counts()
-    }
-
-    /// Records the frame; returns the host time the draws took to record, in nanoseconds.
-    fn record(&mut self, frame: &Frame, pass: Pass) -> Result<f64> {
-        let vkd = &self.device.raw;
-        let cmd = self.commands.buffer();
-        let targets = self.targets.as_ref().expect("ensure_targets made them");
-        let extent = targets.extent;
-
-        let begin = vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT);
-        // SAFETY: the command buffer is not pending (the previous submit was waited for);
-        // the pool allows individual resets.
-        unsafe {
-            vkd.reset_command_buffer(cmd, vk::CommandBufferResetFlags::empty())
-                .map_err(vk_error("vkResetCommandBuffer"))?;
-            vkd.begin_command_buffer(cmd, &begin)
-                .map_err(vk_error("vkBeginCommandBuffer"))?;
-        }
-
-        let color_range = subresource(vk::ImageAspectFlags::COLOR);
-        let depth_range = subresource(vk::ImageAspectFlags::DEPTH);
-        let to_attachment = [
-            vk::ImageMemoryBarrier2::default()
-                .src_stage_mask(vk::PipelineStageFlags2::TRANSFER)
-                .src_access_mask(vk::AccessFlags2::TRANSFER_READ)
-                .dst_stage_mask(vk::PipelineStageFlags2::COLOR_ATTACHMENT_OUTPUT)
-                .dst_access_mask(vk::AccessFlags2::COLOR_ATTACHMENT_WRITE)
-                .old_layout(vk::ImageLayout::UNDEFINED)
-                .new_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
-                .image(targets.color.raw())
-                .subresource_range(color_range),
-            vk::ImageMemoryBarrier2::default()
-                .src_stage_mask(vk::PipelineStageFlags2::LATE_FRAGMENT_TESTS)
-                .src_access_mask(vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_WRITE)
-                .dst_stage_mask(
-                    vk::PipelineStageFlags2::EARLY_FRAGMENT_TESTS
-                        | vk::PipelineStageFlags2::LATE_FRAGMENT_TESTS,
-                )
-                .dst_access_mask(
-                    vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_READ
-                        | vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_WRITE,
-                )
-                .old_layout(vk::ImageLayout::UNDEFINED)
-                .new_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
-                .image(targets.depth.raw())
-                .subresource_range(depth_range),
-        ];
-        let c = frame.clear_color;
-        let color_attachments = [vk::RenderingAttachmentInfo::default()
-            .image_view(targets.color.view())
-            .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
-            .load_op(vk::AttachmentLoadOp::CLEAR)
-            .store_op(vk::AttachmentStoreOp::STORE)
-            .clear_value(vk::ClearValue {
-                color: vk::ClearColorValue {
-                    float32: [c.x, c.y, c.z, c.w],
-                },
-            })];
-        let depth_attachment = vk::RenderingAttachmentInfo::default()
-            .image_view(targets.depth.view())
-            .image_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
-            .load_op(vk::AttachmentLoadOp::CLEAR)
-            .store_op(vk::AttachmentStoreOp::DONT_CARE)
-            .clear_value(vk::ClearValue {
-                depth_stencil: vk::ClearDepthStencilValue {
-                    depth: 1.0,
-                    stencil: 0,
-                },
-            });
-        let area = vk::Rect2D {
-            offset: vk::Offset2D { x: 0, y: 0 },
-            extent,
-        };
-        let rendering = vk::RenderingInfo::default()
-            .render_area(area)
-            .layer_count(1)
-            .color_attachments(&color_attachments)
-            .depth_attachment(&depth_attachment);
-        let viewport = vk::Viewport {
-            x: 0.0,
-            y: 0.0,
-            width: extent.width as f32,
-            height: extent.height as f32,
-            min_depth: 0.0,
-            max_depth: 1.0,
-        };
-
-        let timestamps = self
-            .queries
-            .timestamps
-            .as_ref()
-            .filter(|_| pass.measure)
-            .map(|q| q.raw());
-        let statistics = self
-            .queries
-            .statistics
-            .as_ref()
-            .filter(|_| pass.measure)
-            .map(|q| q.raw());
-        if let Some(pool) = timestamps {
-            // SAFETY: recording outside any rendering pass; the pool has two queries, both
-            // reset before they are written. On lavapipe a timestamp after any stage but
-            // TOP_OF_PIPE flushes the work before it, and its value is taken when the next
-            // flush runs: the barrier right after this one, before the pass starts.
-            unsafe {
-                vkd.cmd_reset_query_pool(cmd, pool, 0, 2);
-                vkd.cmd_write_timestamp2(cmd, vk::PipelineStageFlags2::ALL_COMMANDS, pool, 0);
-            }
-        }
-        if let Some(pool) = statistics {
-            // SAFETY: outside any rendering pass; the pool has one query.
-            unsafe { vkd.cmd_reset_query_pool(cmd, pool, 0, 1) };
-        }
-
-        // SAFETY (this block and the next ones of this function): recording into a command
-        // buffer in the recording state; every handle belongs to this device and outlives the
-        // submission (render waits for it).
-        unsafe {
-            vkd.cmd_pipeline_barrier2(
-                cmd,
-                &vk::DependencyInfo::default().image_memory_barriers(&to_attachment),
-            )
-        };
-        if let Some(pool) = statistics {
-            // SAFETY: as above; the query was reset before this, outside the pass.
-            unsafe { vkd.cmd_begin_query(cmd, pool, 0, vk::QueryControlFlags::empty()) };
-        }
-        // SAFETY: as above; the attachments are in the layouts the barrier set.
-        unsafe { vkd.cmd_begin_rendering(cmd, &rendering) };
-        // SAFETY: as above; viewport and scissor are dynamic in every pipeline.
-        unsafe {
-            vkd.cmd_set_viewport(cmd, 0, &[viewport]);
-            vkd.cmd_set_scissor(cmd, 0, &[area]);
-        }
-        let raster = frame.raster();
-        let draws_start = std::time::Instant::now();
-        for draw in &frame.draws {
-            let mesh = draw.mesh;
-            let lit = LitDraw {
-                state: &draw.state,
-                modelview: draw.modelview,
-                projection: draw.projection,
-                raster,
-                vertex_buffers: &[(mesh.vertices.raw(), 0)],
-                geometry: Geometry::Indexed {
-                    buffer: mesh.indices.raw(),
-                    offset: 0,
-                    index_type: vk::IndexType::UINT32,
-                    first_index: 0,
-                    index_count: mesh.index_count,
-                    vertex_offset: 0,
-                },
-            };
-            // SAFETY: inside the rendering pass begun above, whose formats are the
-            // Target::OFFSCREEN the lighting was made for, viewport and scissor set; the mesh
-            // buffers outlive the submission; slot 0 was begun after the last frame's fence.
-            unsafe { self.lighting.draw(cmd, 0, &lit) }?;
-        }
-        let record_ns = draws_start.elapsed().as_nanos() as f64;
-        // SAFETY: as above; the pass begun above ends here.
-        unsafe { vkd.cmd_end_rendering(cmd) };
-        if let Some(pool) = statistics {
-            // SAFETY: as above; ends the query begun before the pass.
-            unsafe { vkd.cmd_end_query(cmd, pool, 0) };
-        }
-        if let Some(pool) = timestamps {
-            // After every command of the pass has completed (on lavapipe: a flush that waits
-            // for the rasterizer threads).
-            // SAFETY: as above; query 1 was reset with query 0.
-            unsafe { vkd.cmd_write_timestamp2(cmd, vk::PipelineStageFlags2::ALL_COMMANDS, pool, 1) };
-        }
-        if !pass.readback {
-            // SAFETY: the command buffer is in the recording state.
-            unsafe { vkd.end_command_buffer(cmd) }.map_err(vk_error("vkEndCommandBuffer"))?;
-            return Ok(record_ns);
-        }
-
-        let to_transfer = [vk::ImageMemoryBarrier2::default()
-            .src_stage_mask(vk::PipelineStageFlags2::COLOR_ATTACHMENT_OUTPUT)
-            .src_access_mask(vk::AccessFlags2::COLOR_ATTACHMENT_WRITE)
-            .dst_stage_mask(vk::PipelineStageFlags2::COPY)
-            .dst_access_mask(vk::AccessFlags2::TRANSFER_READ)
-            .old_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
-            .new_layout(vk::ImageLayout::TRANSFER_SRC_OPTIMAL)
-            .image(targets.color.raw())
-            .subresource_range(color_range)];
-        let region = vk::BufferImageCopy {
-            buffer_offset: 0,
-            buffer_row_length: 0,
-            buffer_image_height: 0,
-            image_subresource: vk::ImageSubresourceLayers {
-                aspect_mask: vk::ImageAspectFlags::COLOR,
-                mip_level: 0,
-                base_array_layer: 0,
-                layer_count: 1,
-            },
-            image_offset: vk::Offset3D { x: 0, y: 0, z: 0 },
-            image_extent: vk::Extent3D {
-                width: extent.width,
-                height: extent.height,
-                depth: 1,
-            },
-        };
-        let to_host = [vk::BufferMemoryBarrier2::default()
-            .src_stage_mask(vk::PipelineStageFlags2::COPY)
-            .src_access_mask(vk::AccessFlags2::TRANSFER_WRITE)
-            .dst_stage_mask(vk::PipelineStageFlags2::HOST)
-            .dst_access_mask(vk::AccessFlags2::HOST_READ)
-            .buffer(targets.readback.raw())
-            .offset(0)
-            .size(vk::WHOLE_SIZE)];
-        // SAFETY: as above; moves the color image to TRANSFER_SRC_OPTIMAL after the pass.
-        unsafe {
-            vkd.cmd_pipeline_barrier2(
-                cmd,
-                &vk::DependencyInfo::default().image_memory_barriers(&to_transfer),
-            )
-        };
-        // SAFETY: as above; the image is in TRANSFER_SRC_OPTIMAL and the readback buffer holds
-        // width * height * 4 bytes.
-        unsafe {
-            vkd.cmd_copy_image_to_buffer(
-                cmd,
-                targets.color.raw(),
-                vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
-                targets.readback.raw(),
-                &[region],
-            )
-        };
-        // SAFETY: as above; makes the copy visible to the host read after the fence.
-        unsafe {
-            vkd.cmd_pipeline_barrier2(
-                cmd,
-                &vk::DependencyInfo::default().buffer_memory_barriers(&to_host),
-            )
-        };
-        // SAFETY: as above; recording is complete.
-        unsafe { vkd.end_command_buffer(cmd) }.map_err(vk_error("vkEndCommandBuffer"))?;
-        Ok(record_ns)
     }
 
     /// Submits the command buffer and waits for it; returns the host time that took, in ns.

@@ -1,5 +1,5 @@
-//! The renderer's queries: two timestamps and one pipeline-statistics query around the
-//! rendering pass of a measured frame, each only where the device supports it.
+//! The renderer's queries: timestamps around the rendering passes of measured frames and one
+//! pipeline-statistics query over a pass, each only where the device supports it.
 
 use std::sync::Arc;
 
@@ -22,8 +22,11 @@ const STATISTICS: vk::QueryPipelineStatisticFlags = vk::QueryPipelineStatisticFl
 
 /// The query pools a measured frame writes.
 pub(super) struct Queries {
-    /// Two timestamps around the rendering pass; `None` without timestamp support.
+    /// One timestamp before the first pass and one after each; `None` without timestamp
+    /// support.
     pub(super) timestamps: Option<QueryPool>,
+    /// How many queries `timestamps` holds.
+    timestamp_count: u32,
     /// One pipeline-statistics query over the rendering pass; `None` without support.
     pub(super) statistics: Option<QueryPool>,
 }
@@ -31,10 +34,7 @@ pub(super) struct Queries {
 impl Queries {
     pub(super) fn new(device: &Arc<Device>) -> Result<Self> {
         let timestamps = if device.info.timestamps_supported {
-            let info = vk::QueryPoolCreateInfo::default()
-                .query_type(vk::QueryType::TIMESTAMP)
-                .query_count(2);
-            Some(QueryPool::new(device, &info)?)
+            Some(timestamp_pool(device, 2)?)
         } else {
             None
         };
@@ -50,17 +50,29 @@ impl Queries {
         };
         Ok(Queries {
             timestamps,
+            timestamp_count: 2,
             statistics,
         })
     }
 
-    /// Nanoseconds between the two timestamps of the last measured frame.
-    pub(super) fn read_timestamps(&self, device: &Device) -> Result<Option<f64>> {
+    /// Makes room for `count` timestamps (a larger pool replaces the old one, which no
+    /// pending submission uses: every frame is waited for).
+    pub(super) fn ensure_timestamps(&mut self, device: &Arc<Device>, count: u32) -> Result<()> {
+        if self.timestamps.is_some() && count > self.timestamp_count {
+            self.timestamps = Some(timestamp_pool(device, count)?);
+            self.timestamp_count = count;
+        }
+        Ok(())
+    }
+
+    /// Nanoseconds between consecutive timestamps of the last measured submission, which
+    /// wrote `count` of them: one interval per pass.
+    pub(super) fn read_timestamps(&self, device: &Device, count: u32) -> Result<Option<Vec<f64>>> {
         let Some(pool) = &self.timestamps else {
             return Ok(None);
         };
-        let mut ticks = [0u64; 2];
-        // SAFETY: both queries were reset and written by the submission the fence waited for;
+        let mut ticks = vec![0u64; count as usize];
+        // SAFETY: the `count` queries were reset and written by the submission the fence waited for;
         // WAIT makes the call return only complete values.
         unsafe {
             device.raw.get_query_pool_results(
@@ -72,13 +84,18 @@ impl Queries {
         }
         .map_err(vk_error("vkGetQueryPoolResults"))?;
         let info = &device.info;
+        let period = f64::from(info.timestamp_period_ns);
         let mask = if info.timestamp_valid_bits >= 64 {
             u64::MAX
         } else {
             (1u64 << info.timestamp_valid_bits) - 1
         };
-        let elapsed = ticks[1].wrapping_sub(ticks[0]) & mask;
-        Ok(Some(elapsed as f64 * info.timestamp_period_ns as f64))
+        Ok(Some(
+            ticks
+                .windows(2)
+                .map(|w| (w[1].wrapping_sub(w[0]) & mask) as f64 * period)
+                .collect(),
+        ))
     }
 
     /// The pipeline statistics of the last measured frame.
@@ -108,4 +125,12 @@ impl Queries {
             fragment_shader_invocations: fs,
         }))
     }
+}
+
+/// A pool of `count` timestamp queries.
+fn timestamp_pool(device: &Arc<Device>, count: u32) -> Result<QueryPool> {
+    let info = vk::QueryPoolCreateInfo::default()
+        .query_type(vk::QueryType::TIMESTAMP)
+        .query_count(count);
+    QueryPool::new(device, &info)
 }

@@ -179,3 +179,68 @@ fn spreads_and_crossovers() {
     let c: Vec<(f64, f64)> = xs.iter().map(|&x| (x, 2.0 * x)).collect();
     assert_eq!(crossover(&a, &c), None);
 }
+
+#[test]
+fn a_batched_sweep_draws_every_point_several_times_and_fits_what_a_vertex_pixel_and_light_cost() {
+    let config = SweepConfig::tiny_batched();
+    let options = RendererOptions {
+        validation: Validation::Required,
+        ..Default::default()
+    };
+    let report = run_sweep(&config, &options, &ProgressBar::hidden()).unwrap();
+    assert_eq!(
+        report.results.len(),
+        points(&config).len(),
+        "notes: {:?}",
+        report.notes
+    );
+    for r in &report.results {
+        let s = &r.stats;
+        assert_eq!(r.point.draws, config.draws);
+        // Both engines report GPU time: ffvk's timestamps, llvmpipe's GL_TIME_ELAPSED.
+        assert!(s.gpu_ms.is_some_and(|g| g.median > 0.0), "{r:?}");
+        if r.point.engine == Engine::Ffvk {
+            // Every draw lit in full: at least one vertex shader run per triangle corner that
+            // the mesh has vertices for, times the draws.
+            let vs = s.vs_invocations.expect("counted in a frame of their own");
+            assert!(vs >= u64::from(config.draws) * r.point.vertices.min(3), "{r:?}");
+        }
+    }
+    let costs = &report.summary.costs;
+    let ffvk_vertex = costs
+        .iter()
+        .find(|c| c.engine == Engine::Ffvk && c.mode == ffvk::tools::bench::BenchMode::Vertex)
+        .expect("ffvk's vertex mode ran every sweep");
+    assert!(ffvk_vertex.ns_per_vertex.is_some() && ffvk_vertex.ns_per_pixel.is_some());
+    assert!(ffvk_vertex.ns_per_light.is_some() && ffvk_vertex.ns_per_light_evaluation.is_some());
+    assert!(costs.iter().any(|c| c.engine == Engine::Gl), "{costs:?}");
+    let md = ffvk::tools::bench::markdown(&report);
+    assert!(md.contains("### What a vertex, a pixel and a light cost"), "{md}");
+    assert!(md.contains("3 draws of the mesh per frame"), "{md}");
+    assert!(md.contains("GL_TIME_ELAPSED"), "{md}");
+}
+
+#[test]
+fn a_least_squares_line_through_exact_points_is_that_line() {
+    use ffvk::tools::bench::fit_line;
+    let points: Vec<(f64, f64)> = [1.0, 2.0, 4.0, 8.0].iter().map(|&x| (x, 3.0 * x + 5.0)).collect();
+    let (slope, intercept) = fit_line(&points).unwrap();
+    assert!((slope - 3.0).abs() < 1e-12 && (intercept - 5.0).abs() < 1e-12);
+    assert_eq!(
+        fit_line(&[(2.0, 1.0), (2.0, 3.0)]),
+        None,
+        "one x value fits no line"
+    );
+    assert_eq!(fit_line(&[(2.0, 1.0)]), None);
+}
+
+#[test]
+fn the_auto_sweep_is_the_gpu_sweep_on_gpus_and_the_standard_one_on_lavapipe() {
+    use ffvk::tools::bench::is_gpu;
+    assert!(is_gpu("DISCRETE_GPU") && is_gpu("INTEGRATED_GPU") && is_gpu("VIRTUAL_GPU"));
+    assert!(!is_gpu("CPU") && !is_gpu("OTHER"));
+    let gpu = SweepConfig::gpu();
+    assert_eq!(gpu.sizes.last(), Some(&4096));
+    assert_eq!(gpu.light_counts.last(), Some(&ffvk::gl::state::MAX_LIGHTS));
+    assert!(gpu.batch && gpu.draws > 1);
+}

@@ -241,6 +241,24 @@ fn measured_frames_report_timestamps_and_pipeline_statistics() {
     assert_eq!(again.pipeline, Some(p));
     assert!(again.gpu_ns.is_some_and(|ns| ns > 0.0));
 
+    // Repeated in one submission: one GPU time per frame, no statistics, the same image.
+    let frames = r.measure_frames(&frame, 5).unwrap();
+    assert_eq!(frames.len(), 5);
+    assert!(
+        frames
+            .iter()
+            .all(|s| s.gpu_ns.is_some_and(|ns| ns > 0.0) && s.pipeline.is_none()),
+        "{frames:?}"
+    );
+    assert_eq!(r.render(&frame).unwrap().into_rgba_image(), plain);
+    assert!(matches!(
+        r.measure_frames(&frame, ffvk::renderer::MAX_REPEAT + 1),
+        Err(Error::TooManyFrames {
+            count: 4097,
+            max: 4096
+        })
+    ));
+
     // No draws: nothing is shaded.
     let empty = Frame::new(64, 64);
     let none = r.measure(&empty).unwrap().pipeline.unwrap();

@@ -96,8 +96,34 @@ pub struct GlRatio {
     pub ffvk_gpu_ms: Option<f64>,
     /// GL's host time per frame (draw to glFinish), ms.
     pub gl_wall_ms: f64,
-    /// ffvk_wall_ms / gl_wall_ms: below 1, ffvk is faster.
+    /// GL's GL_TIME_ELAPSED per frame, ms (batched sweeps, where the driver has timer
+    /// queries).
+    pub gl_gpu_ms: Option<f64>,
+    /// ffvk's time over GL's: GPU time over GPU time where GL's was measured (batched
+    /// sweeps), else host time over host time. Below 1, ffvk is faster.
     pub ratio: f64,
+}
+
+/// What one more vertex, pixel or light costs in one mode, fitted to the sweeps by least
+/// squares (time against the count, the other counts fixed).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Costs {
+    /// Who drew it.
+    pub engine: Engine,
+    /// The lighting mode.
+    pub mode: BenchMode,
+    /// The density sweep's slope against vertices drawn (vertices × draws per frame), ns.
+    pub ns_per_vertex: Option<f64>,
+    /// The density sweep's intercept: the frame's cost without geometry (clears, layout
+    /// changes, the fixed cost of a frame and of its draws), ns.
+    pub fixed_ns: Option<f64>,
+    /// The size sweep's slope against pixels drawn (pixels × draws per frame), ns.
+    pub ns_per_pixel: Option<f64>,
+    /// The light sweep's slope against enabled lights: one more light in a frame, ns.
+    pub ns_per_light: Option<f64>,
+    /// That slope per evaluation of the equation: per vertex shaded in vertex and flat
+    /// mode, per fragment shaded in fragment mode (from the pipeline statistics), ns.
+    pub ns_per_light_evaluation: Option<f64>,
 }
 
 /// What the sweep shows, computed from its results.
@@ -115,6 +141,8 @@ pub struct Summary {
     pub gl_ratios: Vec<GlRatio>,
     /// Geometric mean of the vertex-mode ratios.
     pub gl_vertex_ratio_geomean: Option<f64>,
+    /// Per engine and mode: the cost of a vertex, a pixel and a light.
+    pub costs: Vec<Costs>,
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -126,24 +154,42 @@ pub(super) fn measure_ffvk(
     point: &Point,
     config: &SweepConfig,
 ) -> Result<PointStats> {
-    let (modelview, projection) = matrices(point);
+    let (modelviews, projection) = matrices(point);
+    let state = point_state(point)?;
     let mut frame = Frame::new(point.width, point.height);
     frame.clear_color = CLEAR;
-    frame.draws.push(Draw {
-        mesh,
-        modelview,
-        projection,
-        state: point_state(point)?,
-    });
+    frame.draws = modelviews
+        .into_iter()
+        .map(|modelview| Draw {
+            mesh,
+            modelview,
+            projection,
+            state,
+        })
+        .collect();
     let start = Instant::now();
     renderer.measure(&frame)?;
     let first_frame_ms = start.elapsed().as_secs_f64() * 1e3;
-    for _ in 1..config.warmup {
-        renderer.measure(&frame)?;
-    }
-    let samples = (0..config.frames)
-        .map(|_| renderer.measure(&frame))
-        .collect::<crate::Result<Vec<FrameStats>>>()?;
+    let samples = if config.batch {
+        if config.warmup > 1 {
+            renderer.measure_frames(&frame, config.warmup - 1)?;
+        }
+        let mut samples = renderer.measure_frames(&frame, config.frames)?;
+        // The counters come from a frame of their own: the statistics query costs GPU time
+        // on some devices, so the timed frames go without it.
+        let counted = renderer.measure(&frame)?;
+        if let Some(last) = samples.last_mut() {
+            last.pipeline = counted.pipeline;
+        }
+        samples
+    } else {
+        for _ in 1..config.warmup {
+            renderer.measure(&frame)?;
+        }
+        (0..config.frames)
+            .map(|_| renderer.measure(&frame))
+            .collect::<crate::Result<Vec<FrameStats>>>()?
+    };
     let gpu: Vec<f64> = samples
         .iter()
         .filter_map(|s| s.gpu_ns)
@@ -202,24 +248,34 @@ impl GlAnchor {
     }
 
     pub(super) fn measure(&self, mesh: &MeshData, point: &Point, config: &SweepConfig) -> Result<PointStats> {
-        let (modelview, projection) = matrices(point);
+        let (modelviews, projection) = matrices(point);
+        let state = point_state(point)?;
         let scene = GlScene {
             width: point.width,
             height: point.height,
             clear_color: CLEAR.to_array(),
             depth_test: true,
-            draws: vec![GlDraw::new(mesh, modelview, projection, point_state(point)?)],
+            draws: modelviews
+                .into_iter()
+                .map(|modelview| GlDraw::new(mesh, modelview, projection, state))
+                .collect(),
         };
         let timing = time_frames_with(&scene, config.warmup, config.frames, &self.options)?;
         let wall: Vec<f64> = timing.frame_ns.iter().map(|ns| ns / 1e6).collect();
         let wall_ms = Spread::of(&wall).expect("at least one frame");
+        // GL's GPU time only in batched sweeps, where ffvk's is taken the same way; the
+        // lavapipe sweeps compare with llvmpipe's host time as before.
+        let gpu_ms = timing
+            .gpu_ns
+            .filter(|_| config.batch)
+            .and_then(|ns| Spread::of(&ns.iter().map(|ns| ns / 1e6).collect::<Vec<_>>()));
         Ok(PointStats {
             warmup: config.warmup,
             frames: config.frames,
             first_frame_ms: timing.first_frame_ns / 1e6,
-            gpu_ms: None,
+            gpu_ms,
             wall_ms,
-            time_ms: wall_ms.median,
+            time_ms: gpu_ms.map_or(wall_ms.median, |g| g.median),
             vs_invocations: None,
             fs_invocations: None,
             clipping_primitives: None,
@@ -344,6 +400,11 @@ pub fn summarize(results: &[BenchResult]) -> Summary {
                 }
         });
         if let Some(f) = twin {
+            let gl_gpu_ms = g.stats.gpu_ms.map(|s| s.median);
+            let ratio = match gl_gpu_ms {
+                Some(gl) => f.stats.time_ms / gl,
+                None => f.stats.wall_ms.median / g.stats.wall_ms.median,
+            };
             gl_ratios.push(GlRatio {
                 group: g.point.group,
                 mode: g.point.mode,
@@ -353,7 +414,8 @@ pub fn summarize(results: &[BenchResult]) -> Summary {
                 ffvk_wall_ms: f.stats.wall_ms.median,
                 ffvk_gpu_ms: f.stats.gpu_ms.map(|s| s.median),
                 gl_wall_ms: g.stats.wall_ms.median,
-                ratio: f.stats.wall_ms.median / g.stats.wall_ms.median,
+                gl_gpu_ms,
+                ratio,
             });
         }
     }
@@ -370,5 +432,65 @@ pub fn summarize(results: &[BenchResult]) -> Summary {
         default_specialize,
         gl_ratios,
         gl_vertex_ratio_geomean,
+        costs: costs(results),
     }
+}
+
+/// Least-squares line through `points`: (slope, intercept), or `None` with fewer than two
+/// distinct x.
+pub fn fit_line(points: &[(f64, f64)]) -> Option<(f64, f64)> {
+    let n = points.len() as f64;
+    let mean_x = points.iter().map(|p| p.0).sum::<f64>() / n;
+    let mean_y = points.iter().map(|p| p.1).sum::<f64>() / n;
+    let sxx: f64 = points.iter().map(|p| (p.0 - mean_x).powi(2)).sum();
+    let sxy: f64 = points.iter().map(|p| (p.0 - mean_x) * (p.1 - mean_y)).sum();
+    (points.len() >= 2 && sxx > 0.0).then(|| {
+        let slope = sxy / sxx;
+        (slope, mean_y - slope * mean_x)
+    })
+}
+
+/// The costs of every engine and mode that ran the density, size or light sweep
+/// (specialized pipelines for ffvk).
+fn costs(results: &[BenchResult]) -> Vec<Costs> {
+    let mut out = Vec::new();
+    for (engine, variant) in [
+        (Engine::Ffvk, Variant::Specialized),
+        (Engine::Gl, Variant::FixedFunction),
+    ] {
+        for mode in BenchMode::ALL {
+            let ns = |group, x: fn(&Point) -> f64| -> Vec<(f64, f64)> {
+                series(results, is(group, engine, mode, variant), x)
+                    .iter()
+                    .map(|(x, r)| (*x, r.stats.time_ms * 1e6))
+                    .collect()
+            };
+            let density = fit_line(&ns(Group::Density, |p| (p.vertices * u64::from(p.draws)) as f64));
+            let size = fit_line(&ns(Group::Size, |p| (p.pixels * u64::from(p.draws)) as f64));
+            let lights = fit_line(&ns(Group::Lights, |p| p.lights as f64));
+            if density.is_none() && size.is_none() && lights.is_none() {
+                continue;
+            }
+            // Evaluations per frame at the light sweep's points (the same mesh and image).
+            let evaluations = results
+                .iter()
+                .filter(|r| is(Group::Lights, engine, mode, variant)(&r.point))
+                .find_map(|r| match mode {
+                    BenchMode::Fragment => r.stats.fs_invocations,
+                    _ => r.stats.vs_invocations,
+                })
+                .filter(|&n| n > 0);
+            let ns_per_light = lights.map(|(slope, _)| slope);
+            out.push(Costs {
+                engine,
+                mode,
+                ns_per_vertex: density.map(|(slope, _)| slope),
+                fixed_ns: density.map(|(_, intercept)| intercept),
+                ns_per_pixel: size.map(|(slope, _)| slope),
+                ns_per_light,
+                ns_per_light_evaluation: ns_per_light.zip(evaluations).map(|(ns, n)| ns / n as f64),
+            });
+        }
+    }
+    out
 }

@@ -42,9 +42,11 @@ use crate::renderer::{Mesh, Renderer, RendererOptions};
 use crate::tools::{Error, Result};
 
 pub use draw_cost::{measure_draw_cost, DrawCost, DRAWS};
-pub use measure::{crossover, summarize, GlRatio, PointStats, Spread, Summary};
+pub use measure::{crossover, fit_line, summarize, Costs, GlRatio, PointStats, Spread, Summary};
 pub use report::{csv, markdown, write_outputs, CSV_COLUMNS};
-pub use sweep::{point_state, points, BenchMode, Engine, Group, LightKind, Point, SweepConfig, Variant};
+pub use sweep::{
+    point_state, points, BenchMode, Engine, Group, LightKind, Point, SweepConfig, Variant, MAX_DRAWS,
+};
 
 use measure::{measure_ffvk, GlAnchor};
 
@@ -60,14 +62,22 @@ pub struct BenchArgs {
     /// Output directory: results.csv, results.json, summary.md and the plots (PNG).
     #[arg(short, long, default_value = "out/bench")]
     pub out: PathBuf,
-    /// A quick sweep: fewer and smaller points, fewer frames (about a minute on 2 cores).
-    #[arg(long, conflicts_with = "full")]
+    /// Which sweep: `standard` (about 4 minutes on 2 cores), `quick` (about a minute),
+    /// `full` (more of everything, about 25 minutes), `gpu` (16 draws per frame, frames
+    /// timed in batches, images to 4096², up to 16 lights: for GPUs, where a standard frame
+    /// is too short to show the lighting) or `auto`: `gpu` on a discrete, integrated or
+    /// virtual GPU, else `standard`.
+    #[arg(long, default_value = "auto", value_parser = ["auto", "quick", "standard", "full", "gpu"])]
+    pub sweep: String,
+    /// Same as `--sweep quick`.
+    #[arg(long, conflicts_with_all = ["full", "sweep"])]
     pub quick: bool,
-    /// The full sweep: more densities, sizes and light counts, both pipeline variants
-    /// everywhere, more frames (about 25 minutes on 2 cores). The default sweep takes
-    /// about 4 minutes.
-    #[arg(long)]
+    /// Same as `--sweep full`.
+    #[arg(long, conflicts_with = "sweep")]
     pub full: bool,
+    /// Draws of the mesh per frame (default: the sweep's; 1 but in the gpu sweep).
+    #[arg(long)]
+    pub draws: Option<u32>,
     /// Warm-up frames per point (default: the sweep's).
     #[arg(long)]
     pub warmup: Option<u32>,
@@ -111,13 +121,29 @@ pub fn run(args: &BenchArgs, options: &RendererOptions) -> Result<()> {
         ));
     }
 
-    let mut config = if args.quick {
-        SweepConfig::quick()
-    } else if args.full {
-        SweepConfig::full()
-    } else {
-        SweepConfig::standard()
+    let name = match (args.quick, args.full) {
+        (true, _) => "quick",
+        (_, true) => "full",
+        _ => args.sweep.as_str(),
     };
+    let mut config = match name {
+        "quick" => SweepConfig::quick(),
+        "full" => SweepConfig::full(),
+        "standard" => SweepConfig::standard(),
+        "gpu" => SweepConfig::gpu(),
+        _ => {
+            // The device decides: a GPU gets the sweep that keeps it busy.
+            let probe = Renderer::new(options)?;
+            if is_gpu(&probe.device_info().device_type) {
+                SweepConfig::gpu()
+            } else {
+                SweepConfig::standard()
+            }
+        }
+    };
+    if let Some(d) = args.draws {
+        config.draws = d;
+    }
     if let Some(w) = args.warmup {
         config.warmup = w;
     }
@@ -149,6 +175,12 @@ pub fn run(args: &BenchArgs, options: &RendererOptions) -> Result<()> {
             .join(", ")
     );
     Ok(())
+}
+
+/// Whether a `VkPhysicalDeviceType` (as [`crate::vk::DeviceInfo::device_type`] spells it)
+/// is a GPU: the `auto` sweep is then the `gpu` sweep.
+pub fn is_gpu(device_type: &str) -> bool {
+    matches!(device_type, "DISCRETE_GPU" | "INTEGRATED_GPU" | "VIRTUAL_GPU")
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -23,7 +23,7 @@ fn write_file(path: &Path, bytes: &[u8]) -> Result<()> {
 }
 
 /// The CSV columns, in order.
-pub const CSV_COLUMNS: [&str; 36] = [
+pub const CSV_COLUMNS: [&str; 37] = [
     "group",
     "engine",
     "mode",
@@ -37,6 +37,7 @@ pub const CSV_COLUMNS: [&str; 36] = [
     "lights",
     "light_kind",
     "local_viewer",
+    "draws",
     "warmup",
     "frames",
     "time_ms",
@@ -98,6 +99,7 @@ pub fn csv(report: &BenchReport) -> String {
             p.lights.to_string(),
             p.light_kind.name().into(),
             p.local_viewer.to_string(),
+            p.draws.to_string(),
             s.warmup.to_string(),
             s.frames.to_string(),
             num(s.time_ms),
@@ -214,11 +216,16 @@ pub fn markdown(report: &BenchReport) -> String {
     let c = &report.sweep;
     let has_gl = report.results.iter().any(|r| r.point.engine == Engine::Gl);
     let mut m = format!("### Environment\n\n{}\n", environment(report).markdown());
-    m.push_str(
+    m.push_str(if c.batch {
+        "Times are per frame in ms: the median, then the interquartile range; ffvk's from \
+         timestamps between frames recorded back to back in one submission, GL's from \
+         GL_TIME_ELAPSED around each frame's clear and draws (the host clock around the draws \
+         and glFinish where the driver has no timer queries).\n"
+    } else {
         "Times are per frame in ms: the median, then the interquartile range; ffvk's from \
          timestamps around the rendering pass, GL's from the host clock around the draw and \
-         glFinish.\n",
-    );
+         glFinish.\n"
+    });
     let sections = [
         (
             format!(
@@ -257,6 +264,14 @@ pub fn markdown(report: &BenchReport) -> String {
     ];
     for (title, table) in sections {
         let _ = write!(m, "\n### {title}\n\n{}", table.markdown());
+    }
+    if !report.summary.costs.is_empty() {
+        let _ = write!(
+            m,
+            "\n### What a vertex, a pixel and a light cost\n\n{}\n{}\n",
+            costs_table(report).markdown(),
+            COSTS_NOTE
+        );
     }
     if let Some(d) = &report.draw_cost {
         let _ = write!(
@@ -299,14 +314,55 @@ pub fn markdown(report: &BenchReport) -> String {
     }
     let _ = writeln!(m, "- ffvk's default: Specialize::{}", s.default_specialize);
     if let Some(g) = s.gl_vertex_ratio_geomean {
+        let basis = if s.gl_ratios.iter().any(|r| r.gl_gpu_ms.is_some()) {
+            "GPU time"
+        } else {
+            "host time"
+        };
         let _ = writeln!(
             m,
-            "- ffvk vertex mode ÷ the GL driver's fixed-function GL{} (host time per frame, geometric mean over {} scenes): {g:.2}",
+            "- ffvk vertex mode ÷ the GL driver's fixed-function GL{} ({basis} per frame, geometric mean over {} scenes): {g:.2}",
             gl_name.map(|n| format!(" ({n})")).unwrap_or_default(),
             s.gl_ratios.iter().filter(|r| r.mode == BenchMode::Vertex).count()
         );
     }
     m
+}
+
+const COSTS_NOTE: &str = "Least-squares slopes of the sweeps above, in ns: per vertex drawn \
+(density sweep, vertices × draws per frame), per pixel drawn (size sweep, pixels × draws), per \
+light enabled (light sweep) and per light and evaluation of the equation (that slope over the \
+vertices shaded in vertex and flat mode, the fragments shaded in fragment mode); \"fixed\" is \
+the density sweep's intercept, a frame without geometry. Unlit rows show what the pipeline \
+costs without lighting.";
+
+/// The fitted costs of each engine and mode.
+fn costs_table(report: &BenchReport) -> Table {
+    let mut t = Table::new([
+        ("engine", Align::Left),
+        ("mode", Align::Left),
+        ("ns / vertex", Align::Right),
+        ("ns / pixel", Align::Right),
+        ("ns / light", Align::Right),
+        ("ns / light / evaluation", Align::Right),
+        ("fixed ms", Align::Right),
+    ]);
+    let ns = |v: Option<f64>| v.map_or("—".to_string(), |v| format!("{v:.3}"));
+    for c in &report.summary.costs {
+        t.row([
+            match c.engine {
+                Engine::Ffvk => "ffvk".to_string(),
+                Engine::Gl => "GL".to_string(),
+            },
+            c.mode.name().to_string(),
+            ns(c.ns_per_vertex),
+            ns(c.ns_per_pixel),
+            c.ns_per_light.map_or("—".to_string(), |v| format!("{v:.0}")),
+            ns(c.ns_per_light_evaluation),
+            c.fixed_ns.map_or("—".to_string(), |v| format!("{:.3}", v / 1e6)),
+        ]);
+    }
+    t
 }
 
 /// The machine, the drivers, the sweep and the build: one row each, then the notes.
@@ -407,14 +463,20 @@ fn environment(report: &BenchReport) -> Table {
         (
             "sweep",
             format!(
-                "{} — {} warm-up + {} measured frames per point; image {}² but in the size sweep; \
-                 {} vertices in the size sweep, {} in the light sweeps",
+                "{} — {} warm-up + {} measured frames per point{}; image {}² but in the size \
+                 sweep; {} vertices in the size sweep, {} in the light sweeps{}",
                 c.name,
                 c.warmup,
                 c.frames,
+                if c.batch { " (in one submission)" } else { "" },
                 c.base_size,
                 sphere_counts(c.size_stacks).0,
-                sphere_counts(c.base_stacks).0
+                sphere_counts(c.base_stacks).0,
+                if c.draws > 1 {
+                    format!("; {} draws of the mesh per frame, each lit in full", c.draws)
+                } else {
+                    String::new()
+                }
             ),
         ),
         (

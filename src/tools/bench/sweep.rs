@@ -48,6 +48,16 @@ pub struct SweepConfig {
     pub malloc_no_trim: bool,
     /// Draws per frame of the recording-cost measurement, each with its own state.
     pub record_draws: usize,
+    /// Draws of the point's sphere per frame, each a little nearer than the last so that
+    /// every one passes the depth test and is lit in full: work enough per frame that a
+    /// GPU's fixed cost per frame does not hide the lighting.
+    pub draws: u32,
+    /// Time the measured frames of a point in one submission ([`Renderer::measure_frames`]),
+    /// and GL's with GL_TIME_ELAPSED queries where the driver has them: GPU time without
+    /// submission and waiting, which on a GPU are larger than a frame's work.
+    ///
+    /// [`Renderer::measure_frames`]: crate::Renderer::measure_frames
+    pub batch: bool,
     /// New specialization keys whose pipeline creation is timed (at most 16).
     pub new_keys: usize,
 }
@@ -73,6 +83,8 @@ impl SweepConfig {
             malloc_no_trim: false,
             record_draws: 10_000,
             new_keys: 8,
+            draws: 1,
+            batch: false,
         }
     }
 
@@ -126,11 +138,57 @@ impl SweepConfig {
             malloc_no_trim: false,
             record_draws: 200,
             new_keys: 1,
+            draws: 1,
+            batch: false,
         }
     }
 
+    /// The sweep for GPUs (chosen for discrete, integrated and virtual GPUs): 16 draws per
+    /// frame, frames timed in batches, images up to 4096², up to 16 lights, 2.1 million
+    /// vertices per draw. A GPU runs the standard sweep's frames in tens of microseconds,
+    /// where the fixed cost of a frame is as large as its lighting.
+    pub fn gpu() -> Self {
+        SweepConfig {
+            name: "gpu".into(),
+            warmup: 20,
+            frames: 51,
+            stacks: vec![8, 16, 32, 64, 128, 256, 512, 1024],
+            sizes: vec![256, 512, 1024, 2048, 4096],
+            light_counts: vec![1, 2, 4, 8, 12, 16],
+            base_stacks: 128,
+            size_stacks: 128,
+            base_size: 1024,
+            draws: 16,
+            batch: true,
+            ..SweepConfig::standard()
+        }
+    }
+
+    /// [`SweepConfig::tiny`] the way the GPU sweep runs it: several draws per frame, frames
+    /// timed in batches (tests).
+    pub fn tiny_batched() -> Self {
+        SweepConfig {
+            name: "tiny-batched".into(),
+            draws: 3,
+            batch: true,
+            ..SweepConfig::tiny()
+        }
+    }
     pub(super) fn validate(&self) -> Result<()> {
         let bad = |what: String| Err(Error::Bench(what));
+        if !(1..=MAX_DRAWS).contains(&self.draws) {
+            return bad(format!(
+                "{} draws per frame: expected 1..={MAX_DRAWS}",
+                self.draws
+            ));
+        }
+        if self.batch && self.frames > crate::renderer::MAX_REPEAT {
+            return bad(format!(
+                "{} frames in one batch: expected at most {}",
+                self.frames,
+                crate::renderer::MAX_REPEAT
+            ));
+        }
         if self.warmup == 0 || self.frames == 0 {
             return bad(format!(
                 "warm-up {} and frames {}: expected at least 1 of each",
@@ -165,6 +223,9 @@ impl SweepConfig {
         Ok(())
     }
 }
+
+/// The most draws per frame a sweep may ask for.
+pub const MAX_DRAWS: u32 = 256;
 
 /// Which sweep a point belongs to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
@@ -310,12 +371,14 @@ pub struct Point {
     pub light_kind: LightKind,
     /// GL_LIGHT_MODEL_LOCAL_VIEWER.
     pub local_viewer: bool,
+    /// Draws of the sphere per frame ([`SweepConfig::draws`]).
+    pub draws: u32,
 }
 
 impl Point {
     pub(super) fn label(&self) -> String {
         format!(
-            "{:?} {} {} {} {}v {}x{} {}×{}{}",
+            "{:?} {} {} {} {}v{} {}x{} {}×{}{}",
             self.group,
             match self.engine {
                 Engine::Ffvk => "ffvk",
@@ -324,6 +387,11 @@ impl Point {
             self.mode.name(),
             self.variant.name(),
             self.vertices,
+            if self.draws > 1 {
+                format!(" ×{}", self.draws)
+            } else {
+                String::new()
+            },
             self.width,
             self.height,
             self.lights,
@@ -367,6 +435,7 @@ pub fn points(config: &SweepConfig) -> Vec<Point> {
             },
             light_kind: LightKind::Directional,
             local_viewer: false,
+            draws: config.draws,
         }
     };
     let some_variants = |everywhere: bool| {
@@ -518,11 +587,16 @@ pub fn point_state(point: &Point) -> Result<LightingState> {
     Ok(gl.lighting)
 }
 
-/// The sphere's modelview and a GL projection for a square image.
-pub(super) fn matrices(point: &Point) -> (Mat4, Mat4) {
+/// The modelview of each of the point's draws and the GL projection (square image). Draw
+/// `i` sits `i` × 1/1024 nearer than the first: drawn back to front, each passes GL_LESS and
+/// is lit in full, while the image stays the one sphere's.
+pub(super) fn matrices(point: &Point) -> (Vec<Mat4>, Mat4) {
     let aspect = point.width as f32 / point.height as f32;
+    let modelviews = (0..point.draws.max(1))
+        .map(|i| Mat4::from_translation(Vec3::new(0.0, 0.0, -2.6 + i as f32 / 1024.0)))
+        .collect();
     (
-        Mat4::from_translation(Vec3::new(0.0, 0.0, -2.6)),
+        modelviews,
         Mat4::perspective_rh_gl(45f32.to_radians(), aspect, 0.5, 10.0),
     )
 }

@@ -107,14 +107,25 @@ pub(super) fn time(gl: &Gl, scene: &GlScene, warmup: u32, frames: u32) -> Result
         .map(|(index, d)| MeshBuffers::upload(gl, d.mesh).map_err(|problem| GlError::Draw { index, problem }))
         .collect::<Result<Vec<_>, _>>()?;
     check(gl, || "while uploading the meshes".into())?;
+    let timer = TimerQuery::new(gl);
     let mut first_frame_ns = 0.0;
     let mut frame_ns = Vec::with_capacity(frames as usize);
+    let mut gpu_ns = timer.as_ref().map(|_| Vec::with_capacity(frames as usize));
     for i in 0..warmup + frames {
         let start = Instant::now();
+        if let Some(t) = &timer {
+            // SAFETY: a context is current on this thread; the query name is live and no
+            // other GL_TIME_ELAPSED query is active.
+            unsafe { gl.BeginQuery(gl::TIME_ELAPSED, t.name) };
+        }
         begin_frame(gl, scene);
         for (index, (draw, b)) in scene.draws.iter().zip(&buffers).enumerate() {
             draw_one(gl, draw, max_lights, Arrays::Buffers(b))
                 .map_err(|problem| GlError::Draw { index, problem })?;
+        }
+        if timer.is_some() {
+            // SAFETY: a context is current; ends the query begun above.
+            unsafe { gl.EndQuery(gl::TIME_ELAPSED) };
         }
         // SAFETY: a context is current on this thread.
         unsafe { gl.Finish() };
@@ -124,12 +135,60 @@ pub(super) fn time(gl: &Gl, scene: &GlScene, warmup: u32, frames: u32) -> Result
             first_frame_ns = ns;
         } else if i >= warmup {
             frame_ns.push(ns);
+            if let (Some(t), Some(gpu)) = (&timer, gpu_ns.as_mut()) {
+                gpu.push(t.result() as f64);
+            }
         }
     }
+    check(gl, || "reading the timer queries".into())?;
     Ok(GlTiming {
         first_frame_ns,
         frame_ns,
+        gpu_ns,
     })
+}
+
+/// A GL_TIME_ELAPSED query object, where the context has timer queries (GL 3.3 or
+/// GL_ARB_timer_query); deleted when dropped.
+struct TimerQuery<'g> {
+    gl: &'g Gl,
+    name: GLuint,
+}
+
+impl<'g> TimerQuery<'g> {
+    fn new(gl: &'g Gl) -> Option<Self> {
+        let version = gl_string(gl, gl::VERSION).unwrap_or_default();
+        let mut numbers = version
+            .split(|c: char| !c.is_ascii_digit())
+            .map(|n| n.parse::<u32>().unwrap_or(0));
+        let (major, minor) = (numbers.next().unwrap_or(0), numbers.next().unwrap_or(0));
+        let listed = || {
+            gl_string(gl, gl::EXTENSIONS)
+                .is_ok_and(|e| e.split_ascii_whitespace().any(|x| x == "GL_ARB_timer_query"))
+        };
+        if !gl.GetQueryObjectui64v.is_loaded() || !((major, minor) >= (3, 3) || listed()) {
+            return None;
+        }
+        let mut name = 0;
+        // SAFETY: a context is current on this thread; one name is written.
+        unsafe { gl.GenQueries(1, &mut name) };
+        Some(TimerQuery { gl, name })
+    }
+
+    /// The last query's nanoseconds (waits for it: called after glFinish).
+    fn result(&self) -> u64 {
+        let mut ns = 0u64;
+        // SAFETY: a context is current; the query has ended; one GLuint64 is written.
+        unsafe { self.gl.GetQueryObjectui64v(self.name, gl::QUERY_RESULT, &mut ns) };
+        ns
+    }
+}
+
+impl Drop for TimerQuery<'_> {
+    fn drop(&mut self) {
+        // SAFETY: the name was made by glGenQueries in the context still current here.
+        unsafe { self.gl.DeleteQueries(1, &self.name) };
+    }
 }
 
 /// A mesh in a vertex and an index buffer object of the current context.

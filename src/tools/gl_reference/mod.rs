@@ -177,6 +177,9 @@ pub struct GlTiming {
     pub first_frame_ns: f64,
     /// Each measured frame: clear, state and draw calls, then glFinish.
     pub frame_ns: Vec<f64>,
+    /// Each measured frame's GPU time from a GL_TIME_ELAPSED query around its clear, state
+    /// and draw calls; `None` where the context has no timer queries.
+    pub gpu_ns: Option<Vec<f64>>,
 }
 
 /// Draws `scene` `warmup` + `frames` times in one context and times each frame on the host
