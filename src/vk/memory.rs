@@ -174,8 +174,8 @@ impl Ranges {
     }
 }
 
-/// The first block of a memory type; each further one is twice the last, up to
-/// [`MAX_BLOCK`].
+/// The first block of a memory type; each block added while others are alive is twice as
+/// large as the last, up to [`MAX_BLOCK`].
 const FIRST_BLOCK: u64 = 8 << 20;
 /// The largest block.
 const MAX_BLOCK: u64 = 256 << 20;
@@ -294,8 +294,6 @@ pub(crate) struct Allocator {
     max_allocation: u64,
     /// Per memory type: its blocks (`None`: freed, the slot reused later).
     blocks: Vec<Vec<Option<Block>>>,
-    /// Per memory type: the size of the next block.
-    next_block: Vec<u64>,
     dedicated: usize,
     dedicated_bytes: u64,
     live: usize,
@@ -313,7 +311,6 @@ impl Allocator {
             granularity: granularity.max(1),
             max_allocation,
             blocks: (0..types).map(|_| Vec::new()).collect(),
-            next_block: vec![FIRST_BLOCK; types],
             dedicated: 0,
             dedicated_bytes: 0,
             live: 0,
@@ -341,10 +338,14 @@ impl Allocator {
         self.memory.memory_heaps[heap as usize].size
     }
 
-    /// The size of a new block of `type_index`: growing, never more than an eighth of its heap
+    /// The size of a new block of `type_index`: doubling with each block of the type alive
+    /// (so sizes that come and go do not ratchet it up), never more than an eighth of its heap
     /// or the device's largest allocation.
     fn block_size(&self, type_index: u32) -> u64 {
-        let mut size = self.next_block[type_index as usize].min(self.heap_size(type_index) / 8);
+        let alive = self.blocks[type_index as usize].iter().flatten().count() as u32;
+        // 8 MiB << 5 is MAX_BLOCK; a larger shift would only overflow.
+        let growth = (FIRST_BLOCK << alive.min(5)).min(MAX_BLOCK);
+        let mut size = growth.min(self.heap_size(type_index) / 8);
         if self.max_allocation != 0 {
             size = size.min(self.max_allocation);
         }
@@ -389,7 +390,6 @@ impl Allocator {
                     ranges,
                     mapped,
                 };
-                self.next_block[index] = (block_size * 2).min(MAX_BLOCK);
                 let slots = &mut self.blocks[index];
                 let i = match slots.iter().position(Option::is_none) {
                     Some(free) => {
@@ -691,14 +691,32 @@ mod tests {
         assert!(allocator.check("color image", 3 * GIB, 1).is_ok());
     }
 
+    /// A block placeholder: the size arithmetic never touches its memory.
+    fn fake_block(size: u64) -> Option<Block> {
+        Some(Block {
+            memory: vk::DeviceMemory::null(),
+            ranges: Ranges::new(size),
+            mapped: None,
+        })
+    }
+
     #[test]
-    fn blocks_grow_from_8_mib_and_stay_within_an_eighth_of_their_heap() {
+    fn blocks_double_with_the_blocks_alive_and_stay_within_an_eighth_of_their_heap() {
         let mut allocator = Allocator::new(discrete_gpu(), 1024, 0);
         assert_eq!(allocator.block_size(1), 8 << 20);
-        allocator.next_block[1] = MAX_BLOCK;
-        assert_eq!(allocator.block_size(1), 256 << 20);
+        allocator.blocks[1].push(fake_block(8 << 20));
+        assert_eq!(allocator.block_size(1), 16 << 20);
+        allocator.blocks[1].extend((0..40).map(|_| fake_block(1)));
+        assert_eq!(
+            allocator.block_size(1),
+            256 << 20,
+            "at most 256 MiB, however many blocks"
+        );
+        // Freed blocks do not count.
+        allocator.blocks[1] = vec![None, None, fake_block(8 << 20)];
+        assert_eq!(allocator.block_size(1), 16 << 20);
         // The 256 MiB BAR gets 32 MiB blocks at most.
-        allocator.next_block[5] = MAX_BLOCK;
+        allocator.blocks[5].extend((0..4).map(|_| fake_block(1)));
         assert_eq!(allocator.block_size(5), 32 << 20);
     }
 
