@@ -347,7 +347,14 @@ fn costs_table(report: &BenchReport) -> Table {
         ("ns / light / evaluation", Align::Right),
         ("fixed ms", Align::Right),
     ]);
-    let ns = |v: Option<f64>| v.map_or("—".to_string(), |v| format!("{v:.3}"));
+    // Three significant digits or so, whatever the scale (rounded first, so that a fit's
+    // 99.9999 reads 100).
+    let ns = |v: Option<f64>| match v.map(|v| (v * 1e3).round() / 1e3) {
+        None => "—".to_string(),
+        Some(v) if v.abs() >= 100.0 => format!("{v:.0}"),
+        Some(v) if v.abs() >= 1.0 => format!("{v:.2}"),
+        Some(v) => format!("{v:.3}"),
+    };
     for c in &report.summary.costs {
         t.row([
             match c.engine {
@@ -357,7 +364,7 @@ fn costs_table(report: &BenchReport) -> Table {
             c.mode.name().to_string(),
             ns(c.ns_per_vertex),
             ns(c.ns_per_pixel),
-            c.ns_per_light.map_or("—".to_string(), |v| format!("{v:.0}")),
+            ns(c.ns_per_light),
             ns(c.ns_per_light_evaluation),
             c.fixed_ns.map_or("—".to_string(), |v| format!("{:.3}", v / 1e6)),
         ]);
@@ -816,6 +823,20 @@ Times are per frame in ms: the median, then the interquartile range; ffvk's from
 | spot | infinite | 1.38 (1.31–1.45) | 1.73 (1.64–1.82) | 1.97 (1.87–2.06) | 2.46 (2.33–2.58) | 2.07 (1.97–2.18) | 0.67 |
 | spot | local | 1.41 (1.34–1.48) | 1.76 (1.68–1.85) | 2.01 (1.90–2.11) | 2.51 (2.38–2.63) | 2.12 (2.01–2.22) | 0.67 |
 
+### What a vertex, a pixel and a light cost
+
+| engine | mode | ns / vertex | ns / pixel | ns / light | ns / light / evaluation | fixed ms |
+| --- | --- | ---: | ---: | ---: | ---: | ---: |
+| ffvk | vertex | 8000 | 200 | 364000 | 4000 | 0.165 |
+| ffvk | fragment | 100 | 2000 | 576000 | 2000 | 1.202 |
+| ffvk | flat | 600 | 200 | — | — | 0.165 |
+| ffvk | unlit | 100 | 200 | — | — | 0.165 |
+| GL | vertex | 12000 | 300 | 546000 | — | 0.248 |
+| GL | flat | 900 | 300 | — | — | 0.248 |
+| GL | unlit | 150 | 300 | — | — | 0.248 |
+
+Least-squares slopes of the sweeps above, in ns: per vertex drawn (density sweep, vertices × draws per frame), per pixel drawn (size sweep, pixels × draws), per light enabled (light sweep) and per light and evaluation of the equation (that slope over the vertices shaded in vertex and flat mode, the fragments shaded in fragment mode); "fixed" is the density sweep's intercept, a frame without geometry. Unlit rows show what the pipeline costs without lighting.
+
 ### Summary
 
 - vertex and fragment mode cost the same at about 129 vertices (24² image)
@@ -833,6 +854,40 @@ Times are per frame in ms: the median, then the interquartile range; ffvk's from
             assert_eq!(actual, expected, "line {}", line + 1);
         }
         assert_eq!(m, SYNTHETIC_SUMMARY);
+    }
+
+    #[test]
+    fn the_fitted_costs_are_the_slopes_fake_time_was_made_of() {
+        // fake_time: ffvk vertex mode costs 4e-3 ms × (1 + lights) per vertex and 2e-4 ms per
+        // pixel over 0.05 ms; the density and size sweeps have 1 light, the light sweep 91
+        // vertices (6 stacks) at 24² = 576 pixels.
+        let report = synthetic_report();
+        let c = |engine, mode| {
+            report
+                .summary
+                .costs
+                .iter()
+                .find(|c| c.engine == engine && c.mode == mode)
+                .unwrap()
+                .clone()
+        };
+        let close =
+            |a: Option<f64>, b: f64| assert!(a.is_some_and(|a| (a - b).abs() < 1e-6 * b), "{a:?} vs {b}");
+        let vertex = c(Engine::Ffvk, BenchMode::Vertex);
+        close(vertex.ns_per_vertex, 4e-3 * 2.0 * 1e6);
+        close(vertex.ns_per_pixel, 2e-4 * 1e6);
+        close(vertex.ns_per_light, 4e-3 * 91.0 * 1e6);
+        // Per evaluation: the 91 vertices the pipeline statistics say were shaded.
+        close(vertex.ns_per_light_evaluation, 4e-3 * 1e6);
+        close(vertex.fixed_ns, (0.05 + 2e-4 * 576.0) * 1e6);
+        // Fragment mode: 1e-3 ms × (1 + lights) per pixel, fs_invocations = pixels / 2.
+        let fragment = c(Engine::Ffvk, BenchMode::Fragment);
+        close(fragment.ns_per_pixel, 1e-3 * 2.0 * 1e6);
+        close(fragment.ns_per_light_evaluation, 1e-3 * 576.0 * 1e6 / 288.0);
+        // GL: the same times × 1.5, no pipeline statistics.
+        let gl = c(Engine::Gl, BenchMode::Vertex);
+        close(gl.ns_per_vertex, 1.5 * 4e-3 * 2.0 * 1e6);
+        assert_eq!(gl.ns_per_light_evaluation, None);
     }
 
     #[test]
@@ -866,7 +921,7 @@ Times are per frame in ms: the median, then the interquartile range; ffvk's from
         assert!(!m.contains("GL smooth") && !m.contains("÷ GL"), "{m}");
         // Every line of a table has as many cells as its headings.
         let tables: Vec<&str> = m.split("\n\n").filter(|b| b.starts_with('|')).collect();
-        assert_eq!(tables.len(), 5, "{m}");
+        assert_eq!(tables.len(), 6, "{m}");
         for table in tables {
             let cells: Vec<usize> = table.lines().map(|l| l.matches(" |").count()).collect();
             assert!(cells.iter().all(|&n| n == cells[0]), "{table}");
