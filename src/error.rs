@@ -111,8 +111,8 @@ pub enum Error {
         size: u64,
     },
 
-    /// [`Renderer::measure_frames`](crate::Renderer::measure_frames) was asked for more frames
-    /// than one submission records.
+    /// [`Renderer::measure_frames`](crate::Renderer::measure_frames) was asked for no frames
+    /// or more than one submission records.
     #[error("{count} frames asked of one measurement: expected 1..={max}")]
     TooManyFrames {
         /// The count asked for.

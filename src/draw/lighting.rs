@@ -61,6 +61,14 @@ use crate::gl::state::LightingState;
 use crate::gpu::layout::{DrawBlock, SpecKey};
 use crate::vk::Device;
 
+/// A draw's pipeline and uniform block, ready to record ([`Lighting::stage`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Staged {
+    pipeline: vk::Pipeline,
+    set: vk::DescriptorSet,
+    uniform_offset: u32,
+}
+
 /// How to make a [`Lighting`].
 #[derive(Debug, Clone)]
 pub struct LightingOptions {
@@ -202,6 +210,17 @@ impl Lighting {
     /// reads, and live until the command buffer has finished executing; the slot was begun
     /// with [`Lighting::begin_frame`] after its previous use finished.
     pub unsafe fn draw(&mut self, cmd: vk::CommandBuffer, slot: u32, draw: &LitDraw) -> Result<()> {
+        let staged = self.stage(slot, draw)?;
+        // SAFETY: the caller's contract above.
+        unsafe { self.record_staged(cmd, &staged, draw) };
+        Ok(())
+    }
+
+    /// The first half of [`Lighting::draw`]: checks the draw, packs its state into the slot's
+    /// uniform memory and finds its pipeline. What it returns may be recorded any number of
+    /// times in the slot's frame ([`Lighting::record_staged`]): a frame repeated for
+    /// measurement writes its uniforms once.
+    pub(crate) fn stage(&mut self, slot: u32, draw: &LitDraw) -> Result<Staged> {
         let bindings = &self.pipelines.config().vertex_input.bindings;
         if draw.vertex_buffers.len() != bindings.len() {
             return Err(LightingError::VertexBuffers {
@@ -213,20 +232,33 @@ impl Lighting {
         let block = DrawBlock::new(draw.state, draw.modelview, draw.projection)?;
         let pipeline = self.pipeline_for(draw.state, draw.raster)?;
         let (set, uniform_offset) = self.ring.push(slot, &block, self.pipelines.set_layout())?;
-        let config = self.pipelines.config();
-        let bound = Bound {
+        Ok(Staged {
             pipeline,
-            layout: self.pipelines.layout(),
-            set_index: config.set_index,
             set,
             uniform_offset,
+        })
+    }
+
+    /// The second half of [`Lighting::draw`]: binds what `staged` found and draws.
+    ///
+    /// # Safety
+    ///
+    /// As [`Lighting::draw`]; `staged` came from [`Lighting::stage`] with the same draw and a
+    /// slot whose frame this command buffer belongs to.
+    pub(crate) unsafe fn record_staged(&self, cmd: vk::CommandBuffer, staged: &Staged, draw: &LitDraw) {
+        let config = self.pipelines.config();
+        let bound = Bound {
+            pipeline: staged.pipeline,
+            layout: self.pipelines.layout(),
+            set_index: config.set_index,
+            set: staged.set,
+            uniform_offset: staged.uniform_offset,
             bindings: &config.vertex_input.bindings,
             vertex_buffers: draw.vertex_buffers,
         };
         // SAFETY: the caller's contract above; the pipeline, layout and set are this
         // Lighting's and live as long as it does.
         unsafe { record(&self.device.raw, cmd, &bound, &draw.geometry) };
-        Ok(())
     }
 
     /// The pipeline a draw with `state` and `raster` uses under the [`Specialize`] policy.

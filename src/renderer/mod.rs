@@ -419,15 +419,15 @@ impl Renderer {
         Ok(self.draw_frame(frame, pass)?.remove(0))
     }
 
-    /// Draws `frame` `count` times (at least once) in one submission, with a timestamp
+    /// Draws `frame` `count` times in one submission, with a timestamp
     /// before the first and after each, and returns each one's [`FrameStats`]: the way to
     /// time frames whose GPU work is short, since nothing but the frame itself (its layout
     /// transitions, clears and draws) lies between two timestamps. No pipeline statistics
     /// (they cost GPU time on some devices; [`Renderer::measure`] has them) and no readback;
-    /// `wall_ns` is the submission's host time divided by `count`. At most [`MAX_REPEAT`]
-    /// frames, else [`Error::TooManyFrames`].
+    /// `wall_ns` is the submission's host time divided by `count`. `count` is 1 to
+    /// [`MAX_REPEAT`], else [`Error::TooManyFrames`].
     pub fn measure_frames(&mut self, frame: &Frame, count: u32) -> Result<Vec<FrameStats>> {
-        if count > MAX_REPEAT {
+        if count == 0 || count > MAX_REPEAT {
             return Err(Error::TooManyFrames {
                 count,
                 max: MAX_REPEAT,
@@ -437,7 +437,7 @@ impl Renderer {
             readback: false,
             timestamps: true,
             statistics: false,
-            repeat: count.max(1),
+            repeat: count,
         };
         self.draw_frame(frame, pass)
     }
@@ -463,6 +463,10 @@ impl Renderer {
             DrawBlock::new(&d.state, d.modelview, d.projection)?;
             self.lighting.prepare(&d.state, raster)?;
         }
+        debug_assert!(
+            !pass.statistics || pass.repeat == 1,
+            "one statistics query per submission"
+        );
         if pass.timestamps {
             self.queries.ensure_timestamps(&self.device, pass.repeat + 1)?;
         }

@@ -4,13 +4,13 @@
 use ash::vk;
 
 use super::{subresource, Frame, Pass, Renderer, Targets};
-use crate::draw::lighting::{Lighting, LitDraw};
+use crate::draw::lighting::{Lighting, LitDraw, Staged};
 use crate::draw::record::Geometry;
 use crate::error::{vk_error, Result};
 
 impl Renderer {
-    /// Records the submission `pass` describes; returns the host time one frame's draws took
-    /// to record, in nanoseconds (the mean over the repeats).
+    /// Records the submission `pass` describes; returns the host time the first pass's draws
+    /// took to record, in nanoseconds (the repeats only bind again what it wrote).
     pub(super) fn record(&mut self, frame: &Frame, pass: Pass) -> Result<f64> {
         let vkd = &self.device.raw;
         let cmd = self.commands.buffer();
@@ -52,11 +52,26 @@ impl Renderer {
             // SAFETY: outside any rendering pass; the pool has one query.
             unsafe { vkd.cmd_reset_query_pool(cmd, pool, 0, 1) };
         }
+        // The draws' uniforms are written once, by the first pass; the repeats bind them again.
+        let mut staged = Vec::new();
         let mut record_ns = 0.0;
         for i in 0..pass.repeat {
             // SAFETY: the command buffer is recording, outside any pass; every handle belongs
             // to this device and outlives the submission (the renderer waits for it).
-            record_ns += unsafe { record_pass(vkd, &mut self.lighting, targets, cmd, frame, statistics) }?;
+            let ns = unsafe {
+                record_pass(
+                    vkd,
+                    &mut self.lighting,
+                    &mut staged,
+                    targets,
+                    cmd,
+                    frame,
+                    statistics,
+                )
+            }?;
+            if i == 0 {
+                record_ns = ns;
+            }
             if let Some(pool) = timestamps {
                 // After every command of the pass has completed (on lavapipe: a flush that
                 // waits for the rasterizer threads).
@@ -70,12 +85,13 @@ impl Renderer {
         }
         // SAFETY: as above; recording is complete.
         unsafe { vkd.end_command_buffer(cmd) }.map_err(vk_error("vkEndCommandBuffer"))?;
-        Ok(record_ns / f64::from(pass.repeat.max(1)))
+        Ok(record_ns)
     }
 }
 
 /// Records one frame's rendering pass: the attachments' layouts, the clears and the draws,
-/// inside the statistics query when there is one. Returns the host time the draws took.
+/// inside the statistics query when there is one. Stages the draws into `staged` when it is
+/// empty, else records what it holds. Returns the host time the draws took.
 ///
 /// # Safety
 ///
@@ -85,6 +101,7 @@ impl Renderer {
 unsafe fn record_pass(
     vkd: &ash::Device,
     lighting: &mut Lighting,
+    staged: &mut Vec<Staged>,
     targets: &Targets,
     cmd: vk::CommandBuffer,
     frame: &Frame,
@@ -106,7 +123,10 @@ unsafe fn record_pass(
             .image(targets.color.raw())
             .subresource_range(color_range),
         vk::ImageMemoryBarrier2::default()
-            .src_stage_mask(vk::PipelineStageFlags2::LATE_FRAGMENT_TESTS)
+            // Early tests write depth too (the clear among them).
+            .src_stage_mask(
+                vk::PipelineStageFlags2::EARLY_FRAGMENT_TESTS | vk::PipelineStageFlags2::LATE_FRAGMENT_TESTS,
+            )
             .src_access_mask(vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_WRITE)
             .dst_stage_mask(
                 vk::PipelineStageFlags2::EARLY_FRAGMENT_TESTS | vk::PipelineStageFlags2::LATE_FRAGMENT_TESTS,
@@ -182,7 +202,8 @@ unsafe fn record_pass(
     }
     let raster = frame.raster();
     let draws_start = std::time::Instant::now();
-    for draw in &frame.draws {
+    let first = staged.is_empty();
+    for (i, draw) in frame.draws.iter().enumerate() {
         let mesh = draw.mesh;
         let lit = LitDraw {
             state: &draw.state,
@@ -199,10 +220,14 @@ unsafe fn record_pass(
                 vertex_offset: 0,
             },
         };
-        // SAFETY: inside the rendering pass begun above, whose formats are the
-        // Target::OFFSCREEN the lighting was made for, viewport and scissor set; the mesh
+        // Recording below is safe: inside the rendering pass begun above, whose formats are
+        // the Target::OFFSCREEN the lighting was made for, viewport and scissor set; the mesh
         // buffers outlive the submission; slot 0 was begun after the last frame's fence.
-        unsafe { lighting.draw(cmd, 0, &lit) }?;
+        if first {
+            staged.push(lighting.stage(0, &lit)?);
+        }
+        // SAFETY: as above; staged[i] was staged for this draw in this frame's slot.
+        unsafe { lighting.record_staged(cmd, &staged[i], &lit) };
     }
     let record_ns = draws_start.elapsed().as_nanos() as f64;
     // SAFETY: as above; the pass begun above ends here.

@@ -155,9 +155,10 @@ impl Uploader {
                         .map_err(vk_error("vkWaitForFences"))
                 })
         };
-        if result.is_err() {
-            // The copy may still be pending: nothing it reads may be freed before it ends.
-            let _ = device.wait_idle();
+        if result.is_err() && device.wait_idle().is_err() {
+            // The copy may still be pending and the fence in use: leave both alone (nothing
+            // more can be submitted to a device that cannot even be waited for).
+            return result;
         }
         // SAFETY: the fence is not in use by a pending submission (waited for above).
         let reset = unsafe { vkd.reset_fences(&[self.fence.raw()]) }.map_err(vk_error("vkResetFences"));

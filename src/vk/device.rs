@@ -322,8 +322,14 @@ impl Device {
 
 impl Drop for Device {
     fn drop(&mut self) {
-        // Every allocation holds the device, so none is left: the blocks go back first, on
-        // the caller's device too.
+        if self.own.is_some() {
+            // SAFETY: the device is alive and every child holding an Arc of it is gone; no
+            // submitted work may use the memory freed next.
+            let _ = unsafe { self.raw.device_wait_idle() };
+        }
+        // Every allocation holds the device, so none is left, and their owners kept the GPU
+        // off them before dropping them (on a caller's device, the caller's contract): the
+        // blocks go back first, on the caller's device too.
         let allocator = self
             .allocator
             .get_mut()
@@ -333,12 +339,9 @@ impl Drop for Device {
             // The caller's device: the caller destroys it.
             return;
         }
-        // SAFETY: every child holds an Arc<Device>, so none is left; waiting first makes
-        // sure no submitted work still uses the device.
-        unsafe {
-            let _ = self.raw.device_wait_idle();
-            self.raw.destroy_device(None);
-        }
+        // SAFETY: every child holds an Arc<Device>, so none is left, and the device is idle
+        // (waited for above).
+        unsafe { self.raw.destroy_device(None) };
     }
 }
 

@@ -80,16 +80,31 @@ pub fn choose_memory_type(
     type_bits: u32,
     usage: MemoryUse,
 ) -> Option<u32> {
+    acceptable_memory_types(memory, type_bits, usage).first().copied()
+}
+
+/// Every memory type a resource of `usage` may use, best first: where the first is full (a
+/// GPU's small BAR, say), the next is tried.
+pub fn acceptable_memory_types(
+    memory: &vk::PhysicalDeviceMemoryProperties,
+    type_bits: u32,
+    usage: MemoryUse,
+) -> Vec<u32> {
     let count = memory.memory_type_count.min(vk::MAX_MEMORY_TYPES as u32);
-    usage.preferences().iter().find_map(|&(with, without)| {
-        (0..count).find(|&i| {
+    let mut out: Vec<u32> = Vec::new();
+    for &(with, without) in usage.preferences() {
+        for i in 0..count {
             let flags = memory.memory_types[i as usize].property_flags;
-            type_bits & (1 << i) != 0
+            let fits = type_bits & (1 << i) != 0
                 && flags.contains(with)
                 && !flags.intersects(without)
-                && !flags.intersects(NEVER)
-        })
-    })
+                && !flags.intersects(NEVER);
+            if fits && !out.contains(&i) {
+                out.push(i);
+            }
+        }
+    }
+    out
 }
 
 /// Whether the host can map memory of these flags without flushing or invalidating.
@@ -97,8 +112,9 @@ pub(crate) fn is_mapped(flags: vk::MemoryPropertyFlags) -> bool {
     flags.contains(vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT)
 }
 
-fn align_up(value: u64, align: u64) -> u64 {
-    value.div_ceil(align) * align
+/// `value` rounded up to a multiple of `align`; `None` past u64::MAX.
+fn align_up(value: u64, align: u64) -> Option<u64> {
+    value.div_ceil(align).checked_mul(align)
 }
 
 /// The free ranges of one block: first fit, neighbours merged when freed.
@@ -124,7 +140,7 @@ impl Ranges {
     /// range holds them.
     pub fn allocate(&mut self, size: u64, align: u64) -> Option<u64> {
         let (start, len, at) = self.free.iter().find_map(|(&start, &len)| {
-            let at = align_up(start, align);
+            let at = align_up(start, align)?;
             (at.checked_add(size)? <= start + len).then_some((start, len, at))
         })?;
         self.free.remove(&start);
@@ -150,12 +166,19 @@ impl Ranges {
                 len += before_len;
             }
         }
+        debug_assert!(
+            self.free
+                .range(offset..)
+                .next()
+                .is_none_or(|(&after, _)| offset + size <= after),
+            "range freed twice"
+        );
         if let Some(&after_len) = self.free.get(&(offset + size)) {
             self.free.remove(&(offset + size));
             len += after_len;
         }
         self.free.insert(start, len);
-        self.used -= size;
+        self.used = self.used.saturating_sub(size);
     }
 
     /// Bytes given out and not yet returned.
@@ -360,7 +383,8 @@ impl Allocator {
         requirements: &vk::MemoryRequirements,
         type_index: u32,
     ) -> Result<(vk::DeviceMemory, u64, u64, Placement, Option<MappedPtr>)> {
-        let size = align_up(requirements.size.max(1), self.granularity);
+        // A size that cannot even be rounded up is larger than any heap.
+        let size = align_up(requirements.size.max(1), self.granularity).unwrap_or(u64::MAX);
         let align = requirements.alignment.max(self.granularity).max(1);
         self.check(what, size, type_index)?;
         let index = type_index as usize;
@@ -525,21 +549,39 @@ pub fn allocate(
     requirements: &vk::MemoryRequirements,
     usage: MemoryUse,
 ) -> Result<Allocation> {
-    let type_index = choose_memory_type(&device.memory, requirements.memory_type_bits, usage)
-        .ok_or_else(|| Error::MissingFeature(format!("a memory type for the {what} ({usage:?} use)")))?;
-    let (memory, offset, size, placement, mapped) =
-        device
+    let types = acceptable_memory_types(&device.memory, requirements.memory_type_bits, usage);
+    let mut failure = None;
+    for type_index in types {
+        let placed = device
             .allocator()
-            .allocate(&device.raw, what, requirements, type_index)?;
-    Ok(Allocation {
-        device: device.clone(),
-        memory,
-        offset,
-        size,
-        type_index,
-        placement,
-        mapped,
-    })
+            .allocate(&device.raw, what, requirements, type_index);
+        match placed {
+            Ok((memory, offset, size, placement, mapped)) => {
+                return Ok(Allocation {
+                    device: device.clone(),
+                    memory,
+                    offset,
+                    size,
+                    type_index,
+                    placement,
+                    mapped,
+                })
+            }
+            // Full or too small: the next acceptable type may have room.
+            Err(
+                e @ (Error::TooLarge { .. }
+                | Error::DeviceMemory {
+                    result: vk::Result::ERROR_OUT_OF_DEVICE_MEMORY,
+                    ..
+                }),
+            ) => {
+                failure.get_or_insert(e);
+            }
+            Err(e) => return Err(e),
+        }
+    }
+    Err(failure
+        .unwrap_or_else(|| Error::MissingFeature(format!("a memory type for the {what} ({usage:?} use)"))))
 }
 
 #[cfg(test)]
@@ -620,6 +662,19 @@ mod tests {
         assert_eq!(choose_memory_type(&m, !0, MemoryUse::Staging), Some(3));
         // Without the BAR, uniforms fall back to host memory.
         assert_eq!(choose_memory_type(&m, !(1 << 5), MemoryUse::Uniforms), Some(3));
+    }
+
+    #[test]
+    fn when_the_bar_is_full_uniforms_fall_back_to_host_memory() {
+        let m = discrete_gpu();
+        assert_eq!(
+            acceptable_memory_types(&m, !0, MemoryUse::Uniforms),
+            vec![5, 3, 4]
+        );
+        assert_eq!(
+            acceptable_memory_types(&m, !0, MemoryUse::Gpu),
+            vec![1, 2, 5, 0, 3, 4]
+        );
     }
 
     #[test]

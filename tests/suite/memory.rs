@@ -112,3 +112,22 @@ fn a_frame_uses_twelve_bytes_a_pixel_and_a_mesh_forty_a_vertex_and_four_an_index
     );
     finish(r);
 }
+
+#[test]
+fn frames_measured_back_to_back_write_each_draws_uniforms_once() {
+    let mut r = renderer();
+    let quad = r.upload(&quad(-1.0, -1.0, 1.0, 1.0, 0.0, Vec4::ONE)).unwrap();
+    let mut frame = Frame::new(32, 32);
+    for _ in 0..40 {
+        frame.draws.push(ndc_draw(&quad));
+    }
+    r.measure_frames(&frame, 1).unwrap();
+    let one = r.memory_usage();
+    // 1,000 repeats of 40 draws would need 40,000 blocks (89 MB) if each repeat wrote its own.
+    let frames = r.measure_frames(&frame, 1000).unwrap();
+    assert_eq!(frames.len(), 1000);
+    assert_eq!(r.memory_usage(), one, "uniform memory grew with the repeats");
+    drop(frame);
+    drop(quad);
+    finish(r);
+}
