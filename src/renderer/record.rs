@@ -13,18 +13,9 @@ impl Renderer {
     /// took to record, in nanoseconds (the repeats only bind again what it wrote).
     pub(super) fn record(&mut self, frame: &Frame, pass: Pass) -> Result<f64> {
         let vkd = &self.device.raw;
-        let cmd = self.commands.buffer();
         let targets = self.targets.as_ref().expect("ensure_targets made them");
-
-        let begin = vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT);
-        // SAFETY: the command buffer is not pending (the previous submit was waited for);
-        // the pool allows individual resets.
-        unsafe {
-            vkd.reset_command_buffer(cmd, vk::CommandBufferResetFlags::empty())
-                .map_err(vk_error("vkResetCommandBuffer"))?;
-            vkd.begin_command_buffer(cmd, &begin)
-                .map_err(vk_error("vkBeginCommandBuffer"))?;
-        }
+        // SAFETY: the previous submission was waited for.
+        let cmd = unsafe { self.commands.begin_one_time() }?;
         let timestamps = self
             .queries
             .timestamps

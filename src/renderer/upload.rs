@@ -108,15 +108,8 @@ impl Uploader {
         read_access: vk::AccessFlags2,
     ) -> Result<()> {
         let vkd = &device.raw;
-        let cmd = self.commands.buffer();
-        let begin = vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT);
-        // SAFETY: the command buffer is not pending (every upload waits for its fence).
-        unsafe {
-            vkd.reset_command_buffer(cmd, vk::CommandBufferResetFlags::empty())
-                .map_err(vk_error("vkResetCommandBuffer"))?;
-            vkd.begin_command_buffer(cmd, &begin)
-                .map_err(vk_error("vkBeginCommandBuffer"))?;
-        }
+        // SAFETY: every upload waits for its fence, so the command buffer is not pending.
+        let cmd = unsafe { self.commands.begin_one_time() }?;
         for &(dst, src_offset, size) in copies {
             let region = vk::BufferCopy {
                 src_offset,

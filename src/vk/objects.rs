@@ -321,6 +321,27 @@ impl CommandPool {
     pub fn buffer(&self) -> vk::CommandBuffer {
         self.buffer
     }
+
+    /// Resets the command buffer and begins recording it for one submission.
+    ///
+    /// # Safety
+    ///
+    /// The command buffer is not pending: the submission that last used it has finished.
+    pub unsafe fn begin_one_time(&self) -> Result<vk::CommandBuffer> {
+        let begin = vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT);
+        // SAFETY: the caller's contract; the pool allows individual resets.
+        unsafe {
+            self.device
+                .raw
+                .reset_command_buffer(self.buffer, vk::CommandBufferResetFlags::empty())
+                .map_err(vk_error("vkResetCommandBuffer"))?;
+            self.device
+                .raw
+                .begin_command_buffer(self.buffer, &begin)
+                .map_err(vk_error("vkBeginCommandBuffer"))?;
+        }
+        Ok(self.buffer)
+    }
 }
 
 impl Drop for CommandPool {
