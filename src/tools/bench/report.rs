@@ -333,7 +333,9 @@ const COSTS_NOTE: &str = "Least-squares slopes of the sweeps above, in ns: per v
 (density sweep, vertices × draws per frame), per pixel drawn (size sweep, pixels × draws), per \
 light enabled (light sweep) and per light and evaluation of the equation (that slope over the \
 vertices shaded in vertex and flat mode, the fragments shaded in fragment mode); \"fixed\" is \
-the density sweep's intercept, a frame without geometry. Unlit rows show what the pipeline \
+the density fit's intercept, an estimate of a frame without geometry. Straight lines through \
+sweeps whose counts grow geometrically follow the largest points: where time is not linear in \
+the count (lavapipe's small frames), read them as rough. Unlit rows show what the pipeline \
 costs without lighting.";
 
 /// The fitted costs of each engine and mode.
@@ -835,7 +837,7 @@ Times are per frame in ms: the median, then the interquartile range; ffvk's from
 | GL | flat | 900 | 300 | — | — | 0.248 |
 | GL | unlit | 150 | 300 | — | — | 0.248 |
 
-Least-squares slopes of the sweeps above, in ns: per vertex drawn (density sweep, vertices × draws per frame), per pixel drawn (size sweep, pixels × draws), per light enabled (light sweep) and per light and evaluation of the equation (that slope over the vertices shaded in vertex and flat mode, the fragments shaded in fragment mode); "fixed" is the density sweep's intercept, a frame without geometry. Unlit rows show what the pipeline costs without lighting.
+Least-squares slopes of the sweeps above, in ns: per vertex drawn (density sweep, vertices × draws per frame), per pixel drawn (size sweep, pixels × draws), per light enabled (light sweep) and per light and evaluation of the equation (that slope over the vertices shaded in vertex and flat mode, the fragments shaded in fragment mode); "fixed" is the density fit's intercept, an estimate of a frame without geometry. Straight lines through sweeps whose counts grow geometrically follow the largest points: where time is not linear in the count (lavapipe's small frames), read them as rough. Unlit rows show what the pipeline costs without lighting.
 
 ### Summary
 
