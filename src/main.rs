@@ -210,6 +210,18 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
             );
             println!("pipeline statistics:     {}", i.pipeline_statistics_query);
             println!("provoking vertex last:   {}", i.provoking_vertex_last);
+            for (usage, chosen) in renderer.device().memory_choices() {
+                let what = match chosen {
+                    Some(c) => format!(
+                        "type {} ({:?}), heap of {} MiB",
+                        c.index,
+                        c.flags,
+                        c.heap_bytes >> 20
+                    ),
+                    None => "none acceptable".to_string(),
+                };
+                println!("memory for {:<16} {what}", format!("{usage:?}:"));
+            }
             println!("GL_MAX_LIGHTS:           {}", ffvk::gl::state::MAX_LIGHTS);
             println!(
                 "validation layer:        {}",

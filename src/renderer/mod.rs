@@ -523,6 +523,12 @@ impl Renderer {
         Ok(start.elapsed().as_nanos() as f64)
     }
 
+    /// The device this renderer opened, for what [`Renderer::device_info`] does not say (its
+    /// memory choices, say).
+    pub fn device(&self) -> &Device {
+        &self.device
+    }
+
     /// How much device memory this renderer's device holds (meshes, render targets, uniforms)
     /// and how much of it is in use.
     pub fn memory_usage(&self) -> MemoryUsage {

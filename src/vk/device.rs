@@ -6,7 +6,7 @@ use std::sync::{Arc, Mutex};
 use ash::{ext, vk};
 
 use super::instance::Instance;
-use super::memory::{Allocator, MemoryUsage};
+use super::memory::{choose_memory_type, Allocator, MemoryUsage, MemoryUse};
 use crate::error::{vk_error, Error, Result};
 
 /// What `ffvk info` prints and benchmarks record.
@@ -73,6 +73,17 @@ pub(crate) struct OwnDevice {
     pub(crate) instance: Arc<Instance>,
     pub(crate) queue: vk::Queue,
     pub(crate) queue_family: u32,
+}
+
+/// A memory type chosen for a use ([`Device::memory_choices`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct MemoryChoice {
+    /// The memory type's index.
+    pub index: u32,
+    /// Its property flags.
+    pub flags: vk::MemoryPropertyFlags,
+    /// The size of its heap, in bytes.
+    pub heap_bytes: u64,
 }
 
 /// The device features a caller enabled on its own device, as it tells
@@ -305,6 +316,30 @@ impl Device {
         self.allocator
             .lock()
             .unwrap_or_else(|poisoned| poisoned.into_inner())
+    }
+
+    /// For each use, the memory type a resource that allows every type would get (`None`
+    /// where no type is acceptable). What `ffvk info` prints.
+    pub fn memory_choices(&self) -> Vec<(MemoryUse, Option<MemoryChoice>)> {
+        [
+            MemoryUse::Gpu,
+            MemoryUse::Uniforms,
+            MemoryUse::Staging,
+            MemoryUse::Readback,
+        ]
+        .into_iter()
+        .map(|usage| {
+            let chosen = choose_memory_type(&self.memory, !0, usage).map(|index| {
+                let t = self.memory.memory_types[index as usize];
+                MemoryChoice {
+                    index,
+                    flags: t.property_flags,
+                    heap_bytes: self.memory.memory_heaps[t.heap_index as usize].size,
+                }
+            });
+            (usage, chosen)
+        })
+        .collect()
     }
 
     /// How much device memory ffvk holds on this device, and how much of it is in use.

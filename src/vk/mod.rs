@@ -7,7 +7,7 @@ pub mod memory;
 pub mod objects;
 pub mod resources;
 
-pub use device::{Device, DeviceInfo, EnabledFeatures};
+pub use device::{Device, DeviceInfo, EnabledFeatures, MemoryChoice};
 pub use instance::{Instance, Validation, ValidationSink};
 pub use memory::{MemoryUsage, MemoryUse};
 pub use resources::{Buffer, Image};

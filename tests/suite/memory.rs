@@ -131,3 +131,18 @@ fn frames_measured_back_to_back_write_each_draws_uniforms_once() {
     drop(quad);
     finish(r);
 }
+
+#[test]
+fn ffvk_info_names_the_memory_type_of_each_use() {
+    let out = ffvk_command(&[&"info"]).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8_lossy(&out.stdout);
+    for usage in ["Gpu", "Uniforms", "Staging", "Readback"] {
+        let line = text
+            .lines()
+            .find(|l| l.starts_with(&format!("memory for {usage}:")))
+            .unwrap_or_else(|| panic!("no memory line for {usage}:\n{text}"));
+        // lavapipe has one memory type, device-local and host-visible.
+        assert!(line.contains("type 0 (DEVICE_LOCAL | HOST_VISIBLE"), "{line}");
+    }
+}
