@@ -34,6 +34,16 @@ use std::path::{Path, PathBuf};
 /// The glTF extensions ffvk understands; a file that requires any other is rejected.
 pub const SUPPORTED_EXTENSIONS: &[&str] = &["KHR_lights_punctual", "KHR_materials_emissive_strength"];
 
+/// Extensions that change only how textures are read or placed. ffvk draws no textures, so
+/// a file that requires one still renders (with a warning) as it would without them.
+pub const TEXTURE_EXTENSIONS: &[&str] = &[
+    "KHR_texture_transform",
+    "KHR_texture_basisu",
+    "EXT_texture_webp",
+    "EXT_texture_avif",
+    "MSFT_texture_dds",
+];
+
 /// The largest glTF, GLB or buffer file read, in bytes (1 GiB): beyond it a file is refused
 /// before it is read.
 pub const MAX_FILE_BYTES: u64 = 1 << 30;
@@ -91,12 +101,14 @@ pub enum LoadErrorKind {
     #[error("not a glTF 2.0 file (.gltf JSON or .glb): {message}")]
     Parse { message: String },
 
-    /// extensionsRequired names an extension outside [`SUPPORTED_EXTENSIONS`].
+    /// extensionsRequired names extensions outside [`SUPPORTED_EXTENSIONS`] (and
+    /// [`TEXTURE_EXTENSIONS`]); every one is named.
     #[error(
-        "extensionsRequired names {extension}, which ffvk does not support: expected only {}",
+        "extensionsRequired names {}, which ffvk does not support: expected only {}",
+        extensions.join(", "),
         SUPPORTED_EXTENSIONS.join(", ")
     )]
-    UnsupportedExtension { extension: String },
+    UnsupportedExtension { extensions: Vec<String> },
 
     /// What the `gltf` crate's validator found, one entry per problem; the message shows the
     /// first eight.
@@ -337,15 +349,22 @@ pub fn load_with(path: &Path, limits: &Limits, budget: &mut MeshBudget) -> Resul
     let cx = Context { path, raw: &raw };
     let mut warnings = Vec::new();
 
-    for extension in document.extensions_required() {
-        if !SUPPORTED_EXTENSIONS.contains(&extension) {
-            return Err(cx.error(LoadErrorKind::UnsupportedExtension {
-                extension: extension.to_owned(),
-            }));
-        }
+    let unsupported: Vec<String> = document
+        .extensions_required()
+        .filter(|e| !SUPPORTED_EXTENSIONS.contains(e) && !TEXTURE_EXTENSIONS.contains(e))
+        .map(str::to_owned)
+        .collect();
+    if !unsupported.is_empty() {
+        return Err(cx.error(LoadErrorKind::UnsupportedExtension {
+            extensions: unsupported,
+        }));
     }
     for extension in document.extensions_used() {
-        if !SUPPORTED_EXTENSIONS.contains(&extension) {
+        if TEXTURE_EXTENSIONS.contains(&extension) {
+            warnings.push(format!(
+                "extension {extension} changes only textures, which ffvk does not draw: ignored"
+            ));
+        } else if !SUPPORTED_EXTENSIONS.contains(&extension) {
             warnings.push(format!(
                 "extension {extension} is used but not supported by ffvk: ignored"
             ));
@@ -412,6 +431,31 @@ mod tests {
         assert!(
             text.contains("KHR_lights_punctual, KHR_materials_emissive_strength"),
             "{text}"
+        );
+
+        // Every unsupported required extension is named, not only the first.
+        let body = format!(
+            r#""extensionsUsed": ["KHR_draco_mesh_compression", "EXT_meshopt_compression"],
+               "extensionsRequired": ["KHR_draco_mesh_compression", "EXT_meshopt_compression"], {mesh}"#
+        );
+        let text = message(load(&a.write_gltf(&dir, "two", &body)).unwrap_err());
+        assert!(
+            text.contains("names KHR_draco_mesh_compression, EXT_meshopt_compression, which"),
+            "{text}"
+        );
+
+        // An extension that changes only textures is a warning, even when required.
+        let body = format!(
+            r#""extensionsUsed": ["KHR_texture_transform", "EXT_texture_webp"],
+               "extensionsRequired": ["KHR_texture_transform", "EXT_texture_webp"], {mesh}"#
+        );
+        let loaded = load(&a.write_gltf(&dir, "texture", &body)).unwrap();
+        assert_eq!(loaded.warnings.len(), 2, "{:?}", loaded.warnings);
+        assert!(
+            loaded.warnings[0].contains("KHR_texture_transform changes only textures")
+                && loaded.warnings[1].contains("EXT_texture_webp changes only textures"),
+            "{:?}",
+            loaded.warnings
         );
 
         let body = format!(
