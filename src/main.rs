@@ -266,7 +266,11 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
                 limits: limits(&cli),
                 driver_family: Some(regress::driver_family(renderer.device_info())),
             };
-            let rows = regress::run(&mut renderer, &job, &mut |m| println!("{m}"))?;
+            // Warnings go to stderr, apart from the images written and the results table.
+            let rows = regress::run(&mut renderer, &job, &mut |m| match m {
+                regress::Message::Warning { .. } => eprintln!("{m}"),
+                regress::Message::Wrote { .. } => println!("{m}"),
+            })?;
             if check.is_none() {
                 return Ok(ExitCode::SUCCESS);
             }

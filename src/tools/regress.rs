@@ -233,16 +233,53 @@ pub fn check_outputs(job: &Job, files: &[SceneFile]) -> Result<()> {
     Ok(())
 }
 
-/// Loads a scene, resized when asked; warnings go to `log`.
+/// What a regression run reports as it goes.
+#[derive(Debug, Clone, Copy)]
+pub enum Message<'a> {
+    /// A scene's warning, once however many nodes repeat it, with how many times it came
+    /// (for a terminal's stderr: it is not part of the results).
+    Warning {
+        /// The warning.
+        text: &'a str,
+        /// How many times the scene gave it.
+        times: usize,
+    },
+    /// An image was written.
+    Wrote {
+        /// The scene file.
+        scene: &'a Path,
+        /// The image.
+        image: &'a Path,
+    },
+}
+
+impl std::fmt::Display for Message<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Message::Warning { text, times: 1 } => write!(f, "warning: {text}"),
+            Message::Warning { text, times } => write!(f, "warning: {text} (×{times})"),
+            Message::Wrote { scene, image } => write!(f, "{} -> {}", scene.display(), image.display()),
+        }
+    }
+}
+
+/// Loads a scene, resized when asked; its warnings go to `log`, each distinct one once.
 pub fn load_scene(
     path: &Path,
     size: Option<(u32, u32)>,
     limits: &Limits,
-    log: &mut dyn FnMut(&str),
+    log: &mut dyn FnMut(Message),
 ) -> Result<Scene> {
     let mut scene = Scene::load_with(path, limits)?;
+    let mut seen: Vec<(&str, usize)> = Vec::new();
     for w in &scene.warnings {
-        log(&format!("warning: {w}"));
+        match seen.iter_mut().find(|(text, _)| *text == w.as_str()) {
+            Some((_, times)) => *times += 1,
+            None => seen.push((w, 1)),
+        }
+    }
+    for (text, times) in seen {
+        log(Message::Warning { text, times });
     }
     if let Some((w, h)) = size {
         scene.set_size(w, h);
@@ -254,7 +291,7 @@ pub fn load_scene(
 /// the run (a scene that cannot load is not a difference); differences, missing references
 /// and references of another size are rows. Refuses, before rendering anything, a job whose
 /// outputs would land in its reference folder or two scenes that would write one image.
-pub fn run(renderer: &mut Renderer, job: &Job, log: &mut dyn FnMut(&str)) -> Result<Vec<Row>> {
+pub fn run(renderer: &mut Renderer, job: &Job, log: &mut dyn FnMut(Message)) -> Result<Vec<Row>> {
     job.tolerance.validate()?;
     let files = scene_files(&job.scenes)?;
     check_outputs(job, &files)?;
@@ -338,7 +375,10 @@ pub fn run(renderer: &mut Renderer, job: &Job, log: &mut dyn FnMut(&str)) -> Res
                     save_png(&image, &reference)?;
                 }
             }
-            log(&format!("{} -> {}", file.path.display(), output.display()));
+            log(Message::Wrote {
+                scene: &file.path,
+                image: &output,
+            });
             rows.push(row);
         }
     }

@@ -227,3 +227,60 @@ fn compare_passes_a_shift_within_the_threshold_and_fails_one_beyond_it() {
         }
     }
 }
+
+#[test]
+fn a_checked_run_prints_each_warning_once_on_stderr_apart_from_the_results() {
+    let dir = output_dir().join("warnings_once");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(dir.join("refs")).unwrap();
+    let floats: [f32; 18] = [
+        0., 0., 0., 1., 0., 0., 0., 1., 0., 0., 0., 1., 0., 0., 1., 0., 0., 1.,
+    ];
+    std::fs::write(dir.join("tri.bin"), bytemuck::cast_slice::<f32, u8>(&floats)).unwrap();
+    std::fs::write(
+        dir.join("tri.gltf"),
+        r#"{"asset": {"version": "2.0"}, "extensionsUsed": ["EXT_fancy_thing"],
+  "buffers": [{"uri": "tri.bin", "byteLength": 72}],
+  "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 36}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+                {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC3"}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}}]}],
+  "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0}"#,
+    )
+    .unwrap();
+    // The same file twice: the same warning twice.
+    std::fs::write(
+        dir.join("two.toml"),
+        "[image]\nsize = [16, 16]\n[[meshes]]\ngltf = \"tri.gltf\"\n[[meshes]]\ngltf = \"tri.gltf\"\n",
+    )
+    .unwrap();
+    let out = ffvk_command(&[
+        &"render",
+        &dir.join("two.toml"),
+        &"--check",
+        &dir.join("refs"),
+        &"--out",
+        &dir.join("out"),
+    ])
+    .output()
+    .unwrap();
+    let (stdout, stderr) = (
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr),
+    );
+    assert_eq!(
+        out.status.code(),
+        Some(1),
+        "a missing reference: {stdout}\n{stderr}"
+    );
+    assert!(
+        !stdout.contains("EXT_fancy_thing"),
+        "warnings among the results:\n{stdout}"
+    );
+    let warnings: Vec<&str> = stderr.lines().filter(|l| l.contains("EXT_fancy_thing")).collect();
+    assert_eq!(warnings.len(), 1, "{stderr}");
+    assert!(
+        warnings[0].starts_with("warning: ") && warnings[0].ends_with("(×2)"),
+        "{stderr}"
+    );
+}
