@@ -204,10 +204,6 @@ pub enum LoadErrorKind {
         problem: AccessorProblem,
     },
 
-    /// A primitive of points or lines.
-    #[error("{primitive}: mode {mode} is not supported: expected TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN")]
-    UnsupportedMode { primitive: String, mode: &'static str },
-
     /// An index (element `element` of the index accessor) that names no vertex.
     #[error(
         "{primitive}: index accessor {accessor} holds {value} at element {element}: expected a value \

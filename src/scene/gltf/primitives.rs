@@ -62,7 +62,12 @@ fn type_name(accessor: &gltf::Accessor) -> String {
     format!("{component} {dims}")
 }
 
-fn mode_name(mode: Mode) -> &'static str {
+/// Whether a primitive of `mode` is made of triangles (the others are skipped).
+pub(super) fn draws_triangles(mode: Mode) -> bool {
+    matches!(mode, Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan)
+}
+
+pub(super) fn mode_name(mode: Mode) -> &'static str {
     match mode {
         Mode::Points => "POINTS",
         Mode::Lines => "LINES",
@@ -314,12 +319,7 @@ pub(super) fn read_primitive(
 ) -> Result<MeshData, LoadError> {
     let label = cx.primitive_label(mesh, primitive.index());
     let mode = primitive.mode();
-    if !matches!(mode, Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan) {
-        return Err(cx.error(LoadErrorKind::UnsupportedMode {
-            primitive: label,
-            mode: mode_name(mode),
-        }));
-    }
+    debug_assert!(draws_triangles(mode), "the caller skips points and lines");
     // What the triangle list will take, charged before anything is read.
     let vertex_count = primitive.get(&Semantic::Positions).map_or(0, |a| a.count());
     let sequence_len = primitive.indices().map_or(vertex_count, |a| a.count());
@@ -757,19 +757,26 @@ mod tests {
     }
 
     #[test]
-    fn points_and_lines_are_rejected_by_name() {
+    fn points_and_lines_are_skipped_by_name_and_the_triangles_beside_them_kept() {
         let dir = scratch_dir("modes");
         for (mode, name) in [(0, "POINTS"), (1, "LINES"), (2, "LINE_LOOP"), (3, "LINE_STRIP")] {
             let mut a = Asset::default();
             let pos = a.positions(&QUAD[..3]);
             let body = one_mesh_body(&format!(
-                r#"{{ "attributes": {{ "POSITION": {pos} }}, "mode": {mode} }}"#
+                r#"{{ "attributes": {{ "POSITION": {pos} }}, "mode": {mode} }},
+                   {{ "attributes": {{ "POSITION": {pos} }} }}"#
             ));
-            let e = message(load(&a.write_gltf(&dir, name, &body)).unwrap_err());
-            assert!(e.contains(&format!("mode {name} is not supported")), "{e}");
+            let loaded = load(&a.write_gltf(&dir, name, &body)).unwrap();
+            assert_eq!(loaded.meshes.len(), 1, "the triangle primitive stays");
+            assert_eq!(loaded.meshes[0].data.indices.len(), 3);
+            let warning = loaded
+                .warnings
+                .iter()
+                .find(|w| w.contains(name))
+                .expect("a warning");
             assert!(
-                e.contains("mesh 0") && e.contains("primitive 0") && e.contains("TRIANGLES"),
-                "{e}"
+                warning.contains("primitive 0") && warning.contains(&format!("mode {name}")),
+                "{warning}"
             );
         }
     }

@@ -4,7 +4,7 @@
 
 use super::lights::punctual_light;
 use super::materials::pbr_material;
-use super::primitives::read_primitive;
+use super::primitives::{draws_triangles, mode_name, read_primitive};
 use super::{Context, LoadError, LoadErrorKind, Loaded, LoadedMesh};
 use crate::scene::MeshBudget;
 use glam::Mat4;
@@ -309,6 +309,14 @@ fn visit(
             let mirrored = world.determinant() < 0.0;
             for primitive in mesh.primitives() {
                 let p = primitive.index();
+                if !draws_triangles(primitive.mode()) {
+                    out.warnings.push(format!(
+                        "{}: mode {} is not drawn (ffvk draws triangles): skipped",
+                        cx.primitive_label(m, p),
+                        mode_name(primitive.mode())
+                    ));
+                    continue;
+                }
                 if primitive.morph_targets().len() > 0 {
                     out.warnings
                         .push(format!("{}: morph targets are ignored", cx.primitive_label(m, p)));
