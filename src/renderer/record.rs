@@ -7,6 +7,7 @@ use super::{subresource, Frame, Pass, Renderer, Targets};
 use crate::draw::lighting::{Lighting, LitDraw, Staged};
 use crate::draw::record::Geometry;
 use crate::error::{vk_error, Result};
+use crate::vk::objects::QueryPool;
 
 impl Renderer {
     /// Records the submission `pass` describes; returns the host time the first pass's draws
@@ -16,18 +17,10 @@ impl Renderer {
         let targets = self.targets.as_ref().expect("ensure_targets made them");
         // SAFETY: the previous submission was waited for.
         let cmd = unsafe { self.commands.begin_one_time() }?;
-        let timestamps = self
-            .queries
-            .timestamps
-            .as_ref()
-            .filter(|_| pass.timestamps)
-            .map(|q| q.raw());
-        let statistics = self
-            .queries
-            .statistics
-            .as_ref()
-            .filter(|_| pass.statistics)
-            .map(|q| q.raw());
+        // A pool where the device has it and the pass asks for it.
+        let wanted = |pool: &Option<QueryPool>, on: bool| pool.as_ref().filter(|_| on).map(QueryPool::raw);
+        let timestamps = wanted(&self.queries.timestamps, pass.timestamps);
+        let statistics = wanted(&self.queries.statistics, pass.statistics);
         if let Some(pool) = timestamps {
             // SAFETY: recording outside any rendering pass; the pool has a query per repeat
             // and one more (Queries::ensure_timestamps), all reset before they are written.

@@ -147,12 +147,7 @@ impl Device {
                 vki.get_physical_device_queue_family_properties(physical),
             )
         };
-        if props.api_version < vk::API_VERSION_1_3 {
-            return Err(Error::MissingFeature(format!(
-                "Vulkan 1.3 (the device offers {})",
-                version_string(props.api_version)
-            )));
-        }
+        require_vulkan_1_3(&props)?;
         let queue_family = families
             .iter()
             .position(|f| f.queue_flags.contains(vk::QueueFlags::GRAPHICS))
@@ -217,22 +212,12 @@ impl Device {
         // SAFETY: the queue family and index 0 were requested above.
         let queue = unsafe { raw.get_device_queue(queue_family, 0) };
 
-        Ok(Arc::new(Device {
-            raw,
-            memory,
-            limits: props.limits,
-            allocator: Mutex::new(Allocator::new(
-                memory,
-                props.limits.buffer_image_granularity,
-                supported.max_memory_allocation_size,
-            )),
-            info,
-            own: Some(OwnDevice {
-                instance,
-                queue,
-                queue_family,
-            }),
-        }))
+        let own = OwnDevice {
+            instance,
+            queue,
+            queue_family,
+        };
+        Ok(Device::assemble(raw, memory, &props, &supported, info, Some(own)))
     }
 
     /// Wraps a device the caller created and keeps: ffvk creates its objects on it and frees
@@ -257,12 +242,7 @@ impl Device {
                 instance.get_physical_device_memory_properties(physical_device),
             )
         };
-        if props.api_version < vk::API_VERSION_1_3 {
-            return Err(Error::MissingFeature(format!(
-                "Vulkan 1.3 (the device offers {})",
-                version_string(props.api_version)
-            )));
-        }
+        require_vulkan_1_3(&props)?;
         // SAFETY: the caller's contract: physical_device belongs to instance.
         let supported = unsafe { Supported::query(instance, physical_device) };
         if !enabled.dynamic_rendering {
@@ -282,18 +262,31 @@ impl Device {
             ));
         }
         let info = describe(&props, &supported, 0, false, enabled.provoking_vertex_last, false);
-        Ok(Arc::new(Device {
-            raw: device,
+        Ok(Device::assemble(device, memory, &props, &supported, info, None))
+    }
+
+    /// The device value of either constructor, with its allocator.
+    fn assemble(
+        raw: ash::Device,
+        memory: vk::PhysicalDeviceMemoryProperties,
+        props: &vk::PhysicalDeviceProperties,
+        supported: &Supported,
+        info: DeviceInfo,
+        own: Option<OwnDevice>,
+    ) -> Arc<Self> {
+        let allocator = Allocator::new(
+            memory,
+            props.limits.buffer_image_granularity,
+            supported.max_memory_allocation_size,
+        );
+        Arc::new(Device {
+            raw,
             memory,
             limits: props.limits,
-            allocator: Mutex::new(Allocator::new(
-                memory,
-                props.limits.buffer_image_granularity,
-                supported.max_memory_allocation_size,
-            )),
+            allocator: Mutex::new(allocator),
             info,
-            own: None,
-        }))
+            own,
+        })
     }
 
     /// The instance and queue of ffvk's own device. Only the renderer submits, and it
@@ -461,6 +454,17 @@ fn describe(
         provoking_vertex_last,
         validation,
     }
+}
+
+/// ffvk's pipelines need Vulkan 1.3 (dynamic rendering, synchronization2 in core).
+fn require_vulkan_1_3(props: &vk::PhysicalDeviceProperties) -> Result<()> {
+    if props.api_version < vk::API_VERSION_1_3 {
+        return Err(Error::MissingFeature(format!(
+            "Vulkan 1.3 (the device offers {})",
+            version_string(props.api_version)
+        )));
+    }
+    Ok(())
 }
 
 pub(crate) fn version_string(v: u32) -> String {

@@ -56,11 +56,6 @@ impl MemoryUse {
             MemoryUse::Readback => &[(CACHED, NONE), (MAPPED, NONE)],
         }
     }
-
-    /// Whether the host must be able to write or read the memory.
-    pub fn needs_host_access(self) -> bool {
-        self != MemoryUse::Gpu
-    }
 }
 
 /// Flags of memory types no ffvk resource may use: protected memory, lazily allocated

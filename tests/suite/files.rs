@@ -154,6 +154,12 @@ fn an_output_never_replaces_an_input_of_the_same_command() {
     assert_eq!(std::fs::read(&b).unwrap(), before);
 }
 
+/// Renders `scenes` into `out` and blesses them as the references in `refs`.
+fn bless(scenes: &std::path::Path, out: &std::path::Path, refs: &std::path::Path) {
+    let run = ffvk(&[&"render", &scenes, &"--out", &out, &"--check", &refs, &"--bless"]);
+    assert_eq!(run.status.code(), Some(0), "{}", stderr(&run));
+}
+
 #[test]
 fn scenes_of_one_name_in_different_folders_write_different_images() {
     let dir = scratch("names");
@@ -161,16 +167,7 @@ fn scenes_of_one_name_in_different_folders_write_different_images() {
     scene(&scenes, "x/s.toml", 16);
     scene(&scenes, "y/s.toml", 20);
     let refs = dir.join("refs");
-    let out = ffvk(&[
-        &"render",
-        &scenes,
-        &"--out",
-        &dir.join("out"),
-        &"--check",
-        &refs,
-        &"--bless",
-    ]);
-    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    bless(&scenes, &dir.join("out"), &refs);
     for (name, size) in [("x/s", 16), ("y/s", 20)] {
         assert_eq!(png_ok(&dir.join("out").join(format!("{name}.png"))).width(), size);
         assert_eq!(
@@ -197,16 +194,7 @@ fn a_reference_of_another_size_names_both_and_the_run_goes_on() {
     scene(&scenes, "a.toml", 16);
     scene(&scenes, "b.toml", 16);
     let refs = dir.join("refs");
-    let out = ffvk(&[
-        &"render",
-        &scenes,
-        &"--out",
-        &dir.join("out"),
-        &"--check",
-        &refs,
-        &"--bless",
-    ]);
-    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    bless(&scenes, &dir.join("out"), &refs);
     image::RgbaImage::new(9, 7).save(refs.join("a.png")).unwrap();
     let out = ffvk(&[&"render", &scenes, &"--out", &dir.join("out"), &"--check", &refs]);
     let stdout = String::from_utf8_lossy(&out.stdout);

@@ -10,7 +10,7 @@ use crate::mesh::{MeshData, Vertex};
 
 use super::bindings::types::{GLenum, GLint, GLsizei, GLsizeiptr, GLuint};
 use super::bindings::{self as gl, Gl};
-use super::egl::{drain_errors, gl_string};
+use super::egl::{drain_errors, gl_string, has_extension, version_number};
 use super::error::{DrawError, GlError};
 use super::{GlCall, GlDraw, GlInfo, GlScene, GlTiming};
 
@@ -157,16 +157,9 @@ struct TimerQuery<'g> {
 
 impl<'g> TimerQuery<'g> {
     fn new(gl: &'g Gl) -> Option<Self> {
-        let version = gl_string(gl, gl::VERSION).unwrap_or_default();
-        let mut numbers = version
-            .split(|c: char| !c.is_ascii_digit())
-            .map(|n| n.parse::<u32>().unwrap_or(0));
-        let (major, minor) = (numbers.next().unwrap_or(0), numbers.next().unwrap_or(0));
-        let listed = || {
-            gl_string(gl, gl::EXTENSIONS)
-                .is_ok_and(|e| e.split_ascii_whitespace().any(|x| x == "GL_ARB_timer_query"))
-        };
-        if !gl.GetQueryObjectui64v.is_loaded() || !((major, minor) >= (3, 3) || listed()) {
+        let version = version_number(&gl_string(gl, gl::VERSION).unwrap_or_default());
+        let listed = || gl_string(gl, gl::EXTENSIONS).is_ok_and(|e| has_extension(&e, "GL_ARB_timer_query"));
+        if !gl.GetQueryObjectui64v.is_loaded() || !(version >= (3, 3) || listed()) {
             return None;
         }
         let mut name = 0;

@@ -61,7 +61,7 @@ macro_rules! entry_point {
 
 /// Whether `name` is one of the space-separated names in `list` (an EGL or GL extension
 /// string).
-fn has_extension(list: &str, name: &str) -> bool {
+pub(super) fn has_extension(list: &str, name: &str) -> bool {
     list.split_ascii_whitespace().any(|e| e == name)
 }
 
@@ -488,6 +488,14 @@ fn post_match(gl: &Gl, candidate: &Candidate, options: &GlOptions) -> Match {
     }
 }
 
+/// The leading "major.minor" of a GL_VERSION string ((0, 0) where it has none).
+pub(super) fn version_number(version: &str) -> (u32, u32) {
+    let mut numbers = version
+        .split(|c: char| !c.is_ascii_digit())
+        .map(|n| n.parse().unwrap_or(0));
+    (numbers.next().unwrap_or(0), numbers.next().unwrap_or(0))
+}
+
 /// glGetString of the current context.
 pub(super) fn gl_string(gl: &Gl, name: bindings::types::GLenum) -> Result<String, GlError> {
     // SAFETY: a context is current on this thread; glGetString returns a static
@@ -553,12 +561,7 @@ struct Framebuffer<'g> {
 impl<'g> Framebuffer<'g> {
     fn new(gl: &'g Gl, width: u32, height: u32) -> Result<Framebuffer<'g>, GlError> {
         let version = gl_string(gl, bindings::VERSION)?;
-        let major: u32 = version
-            .split(|c: char| !c.is_ascii_digit())
-            .next()
-            .and_then(|m| m.parse().ok())
-            .unwrap_or(0);
-        if major < 3 {
+        if version_number(&version).0 < 3 {
             let extensions = gl_string(gl, bindings::EXTENSIONS)?;
             if !has_extension(&extensions, "GL_ARB_framebuffer_object")
                 && !has_extension(&extensions, "GL_EXT_framebuffer_object")
