@@ -9,7 +9,7 @@ use crate::draw::lighting::{Lighting, LightingOptions};
 use crate::draw::pipeline::{RasterState, Target, VertexInput};
 use crate::draw::pipeline::{Specialize, COLOR_FORMAT, DEPTH_FORMAT};
 use crate::error::{vk_error, Error, MeshError, Result};
-use crate::gl::state::LightingState;
+use crate::gl::state::{Face, LightingState};
 use crate::gpu::layout::DrawBlock;
 use crate::mesh::MeshData;
 use crate::vk::objects::{CommandPool, Fence};
@@ -70,6 +70,37 @@ pub struct Draw<'a> {
     /// singular modelview with lighting on, or an enabled positional light with all three
     /// attenuations 0 fails the frame with [`Error::State`].
     pub state: LightingState,
+    /// `GL_CULL_FACE` with `glCullFace(face)`: `None` (GL's default) draws both faces;
+    /// `Some(Face::Back)` drops the triangles that are clockwise on screen.
+    pub cull_face: Option<Face>,
+}
+
+impl<'a> Draw<'a> {
+    /// A draw of `mesh` with both faces drawn (GL's default: culling off).
+    pub fn new(mesh: &'a Mesh, modelview: Mat4, projection: Mat4, state: LightingState) -> Self {
+        Draw {
+            mesh,
+            modelview,
+            projection,
+            state,
+            cull_face: None,
+        }
+    }
+
+    /// The raster state of this draw in `frame`: GL's defaults, with the frame's depth test
+    /// and the draw's culling.
+    fn raster(&self, frame: &Frame) -> RasterState {
+        RasterState {
+            depth_test: frame.depth_test,
+            cull_mode: match self.cull_face {
+                None => vk::CullModeFlags::NONE,
+                Some(Face::Front) => vk::CullModeFlags::FRONT,
+                Some(Face::Back) => vk::CullModeFlags::BACK,
+                Some(Face::FrontAndBack) => vk::CullModeFlags::FRONT_AND_BACK,
+            },
+            ..RasterState::default()
+        }
+    }
 }
 
 /// One image: its size, clear color, depth test and draws, in order.
@@ -89,14 +120,6 @@ pub struct Frame<'a> {
 }
 
 impl<'a> Frame<'a> {
-    /// The raster state of every draw: GL's defaults, with the depth test as the frame says.
-    fn raster(&self) -> RasterState {
-        RasterState {
-            depth_test: self.depth_test,
-            ..RasterState::default()
-        }
-    }
-
     /// An empty frame of `width` × `height` pixels, cleared to (0, 0, 0, 1), depth test on.
     /// The size is checked only when the frame is drawn.
     pub fn new(width: u32, height: u32) -> Self {
@@ -458,10 +481,9 @@ impl Renderer {
         self.ensure_targets(frame.width, frame.height)?;
         // Every state is checked and every pipeline made before recording starts, so that a
         // bad draw records nothing and pipeline creation never lands inside a measured frame.
-        let raster = frame.raster();
         for d in &frame.draws {
             DrawBlock::new(&d.state, d.modelview, d.projection)?;
-            self.lighting.prepare(&d.state, raster)?;
+            self.lighting.prepare(&d.state, d.raster(frame))?;
         }
         debug_assert!(
             !pass.statistics || pass.repeat == 1,

@@ -184,7 +184,6 @@ unsafe fn record_pass(
         vkd.cmd_set_viewport(cmd, 0, &[viewport]);
         vkd.cmd_set_scissor(cmd, 0, &[area]);
     }
-    let raster = frame.raster();
     let draws_start = std::time::Instant::now();
     let first = staged.is_empty();
     for (i, draw) in frame.draws.iter().enumerate() {
@@ -193,7 +192,7 @@ unsafe fn record_pass(
             state: &draw.state,
             modelview: draw.modelview,
             projection: draw.projection,
-            raster,
+            raster: draw.raster(frame),
             vertex_buffers: &[(mesh.vertices.raw(), 0)],
             geometry: Geometry::Indexed {
                 buffer: mesh.indices.raw(),

@@ -919,6 +919,7 @@ pub fn render_scene(
             modelview: scene.modelview(mesh),
             projection: scene.projection,
             state,
+            cull_face: None,
         });
     }
     Ok(renderer.render(&frame)?.into())

@@ -118,6 +118,7 @@ fn render_teapot(
         modelview: view(),
         projection: projection(),
         state: gl.lighting,
+        cull_face: None,
     });
     Ok(renderer.render(&frame)?.into())
 }

@@ -329,6 +329,7 @@ fn ffvk_image(
         modelview,
         projection,
         state,
+        cull_face: None,
     });
     r.render(&frame).unwrap().into_rgba_image()
 }
@@ -641,6 +642,7 @@ fn the_current_color_and_its_color_material_write_back_match_mesa_gl() {
                 modelview: view,
                 projection,
                 state: frame_state,
+                cull_face: None,
             });
             r.render(&frame).unwrap().into_rgba_image()
         };

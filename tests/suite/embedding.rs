@@ -51,6 +51,7 @@ fn renderer_frame(
         modelview: embed::view(),
         projection: embed::projection(),
         state: *state,
+        cull_face: None,
     });
     r.render(&frame).unwrap()
 }
@@ -180,6 +181,7 @@ fn ten_thousand_draws_with_distinct_states_in_one_command_buffer_each_light_as_t
             modelview: Mat4::IDENTITY,
             projection: Mat4::IDENTITY,
             state: gl.lighting,
+            cull_face: None,
         });
     }
     let image = r.render(&frame).unwrap().into_rgba_image();

@@ -63,6 +63,7 @@ fn render_variant(scene: &Scene, state: LightingState, specialize: Specialize) -
         modelview: scene.modelview,
         projection: scene.projection,
         state,
+        cull_face: None,
     });
     let image = r.render(&frame).unwrap().into_rgba_image();
     // The variant really drew: one pipeline, specialized or not.

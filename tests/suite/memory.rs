@@ -22,6 +22,7 @@ fn teapot_frame(r: &mut Renderer, mesh: &MeshData, size: u32) -> Pixels {
         modelview: Mat4::look_at_rh(Vec3::new(0.0, 1.2, 3.0), Vec3::new(0.0, -0.05, 0.0), Vec3::Y),
         projection: perspective(40.0, 1.0, 0.5, 10.0),
         state: gl.lighting,
+        cull_face: None,
     });
     r.render(&frame).unwrap()
 }

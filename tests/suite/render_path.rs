@@ -74,6 +74,7 @@ fn counter_clockwise_is_front() {
             modelview,
             projection: Mat4::IDENTITY,
             state: gl.lighting,
+            cull_face: None,
         });
     }
     let image = r.render(&frame).unwrap().into_rgba_image();
@@ -94,6 +95,52 @@ fn counter_clockwise_is_front() {
         "cw quad shows the back",
     );
     drop(frame);
+    drop(ccw);
+    finish(r);
+}
+
+/// glCullFace: with GL_CULL_FACE and GL_BACK the clockwise (back-facing) copy is dropped and
+/// the counter-clockwise one kept; GL_FRONT the other way round; GL_FRONT_AND_BACK drops both.
+#[test]
+fn cull_face_drops_the_faces_it_names() {
+    let mut r = renderer();
+    let white = Vec4::ONE;
+    let ccw = r.upload(&quad(-1.0, -1.0, 0.0, 1.0, 0.0, white)).unwrap();
+    let mirror = Mat4::from_scale(glam::Vec3::new(-1.0, 1.0, 1.0));
+    let black = DVec4::new(0.0, 0.0, 0.0, 1.0);
+    let lit = DVec4::ONE;
+    for (cull, left, right) in [
+        (None, lit, lit),
+        (Some(Face::Back), lit, black),
+        (Some(Face::Front), black, lit),
+        (Some(Face::FrontAndBack), black, black),
+    ] {
+        let mut frame = Frame::new(64, 64);
+        for modelview in [Mat4::IDENTITY, mirror] {
+            frame.draws.push(Draw {
+                cull_face: cull,
+                modelview,
+                ..ndc_draw(&ccw)
+            });
+        }
+        let image = r.render(&frame).unwrap().into_rgba_image();
+        assert_pixel(
+            &image,
+            16,
+            32,
+            left,
+            0.0,
+            &format!("{cull:?}: the ccw quad (left)"),
+        );
+        assert_pixel(
+            &image,
+            48,
+            32,
+            right,
+            0.0,
+            &format!("{cull:?}: the cw quad (right)"),
+        );
+    }
     drop(ccw);
     finish(r);
 }

@@ -33,6 +33,7 @@ fn draw_states(r: &mut Renderer, states: &[LightingState]) {
             modelview: Mat4::from_translation(Vec3::new(0.0, 0.0, -2.0)),
             projection: perspective(45.0, 1.0, 0.5, 10.0),
             state,
+            cull_face: None,
         });
         r.render(&frame).unwrap().into_rgba_image();
     }

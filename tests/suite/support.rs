@@ -178,6 +178,7 @@ pub fn ndc_draw(mesh: &ffvk::Mesh) -> ffvk::Draw<'_> {
         modelview: Mat4::IDENTITY,
         projection: Mat4::IDENTITY,
         state: unlit(),
+        cull_face: None,
     }
 }
 

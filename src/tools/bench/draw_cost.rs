@@ -109,6 +109,7 @@ pub fn measure_draw_cost(
             modelview: Mat4::IDENTITY,
             projection,
             state: gl.lighting,
+            cull_face: None,
         })
         .collect();
 
@@ -138,6 +139,7 @@ pub fn measure_draw_cost(
             modelview: Mat4::IDENTITY,
             projection,
             state: gl.lighting,
+            cull_face: None,
         });
         let first = renderer.measure(&one)?.wall_ns;
         let again = renderer.measure(&one)?.wall_ns;

@@ -165,6 +165,7 @@ pub(super) fn measure_ffvk(
             modelview,
             projection,
             state,
+            cull_face: None,
         })
         .collect();
     let start = Instant::now();

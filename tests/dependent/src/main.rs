@@ -44,6 +44,7 @@ fn run() -> Result<(), String> {
         modelview: Mat4::IDENTITY,
         projection: Mat4::IDENTITY,
         state: gl.lighting,
+        cull_face: None,
     });
     let pixels = renderer.render(&frame).map_err(|e| e.to_string())?;
     let got = pixels.pixel(4, 4).ok_or("the image has no pixel (4, 4)")?;
