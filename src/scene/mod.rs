@@ -840,13 +840,18 @@ impl Builder<'_> {
             (Some(file), None) => {
                 let base = self.path.parent().unwrap_or(Path::new("."));
                 let gltf_path = base.join(file);
-                let loaded = self::gltf::load_with(&gltf_path, self.limits, &mut self.budget.borrow_mut())
-                    .map_err(|source| {
-                        self.error(SceneErrorKind::Gltf {
-                            field: format!("{field}.gltf"),
-                            source: Box::new(source),
-                        })
-                    })?;
+                let loaded = self::gltf::load_with(
+                    &gltf_path,
+                    self.limits,
+                    &mut self.budget.borrow_mut(),
+                    self::gltf::Textures::Ignore,
+                )
+                .map_err(|source| {
+                    self.error(SceneErrorKind::Gltf {
+                        field: format!("{field}.gltf"),
+                        source: Box::new(source),
+                    })
+                })?;
                 warnings.extend(
                     loaded
                         .warnings

@@ -1,6 +1,7 @@
 //! glTF metallic-roughness materials: their factors as read from the file, and mapped onto
 //! GL's fixed-function material ([`gl_material`]).
 
+use super::textures::{TextureMean, Textures};
 use super::Context;
 use crate::gl::state::Material;
 use glam::{Vec3, Vec4};
@@ -24,6 +25,26 @@ pub struct PbrMaterial {
     pub emissive_strength: f32,
     /// doubleSided, as the file gives it ([`gl_material`] does not use it).
     pub double_sided: bool,
+    /// baseColorTexture, when the material has one (see [`TextureMean`]).
+    pub base_color_texture: Option<TextureMean>,
+    /// emissiveTexture, when the material has one.
+    pub emissive_texture: Option<TextureMean>,
+}
+
+impl PbrMaterial {
+    /// The material with its textures' means multiplied into the factors they scale, as glTF
+    /// multiplies the texel into the factor: baseColorFactor × the base color texture's mean
+    /// (RGBA), emissiveFactor × the emissive texture's mean (RGB). Unread textures count as
+    /// white, so the factor stays as it is.
+    pub fn with_texture_means(&self) -> PbrMaterial {
+        let base = self.base_color_texture.map_or(Vec4::ONE, TextureMean::or_white);
+        let emissive = self.emissive_texture.map_or(Vec4::ONE, TextureMean::or_white);
+        PbrMaterial {
+            base_color_factor: self.base_color_factor * base,
+            emissive_factor: self.emissive_factor * emissive.truncate(),
+            ..self.clone()
+        }
+    }
 }
 
 impl Default for PbrMaterial {
@@ -38,6 +59,8 @@ impl Default for PbrMaterial {
             emissive_factor: Vec3::ZERO,
             emissive_strength: 1.0,
             double_sided: false,
+            base_color_texture: None,
+            emissive_texture: None,
         }
     }
 }
@@ -92,30 +115,54 @@ pub(super) fn pbr_material(cx: &Context, material: gltf::Material) -> Option<Pbr
         emissive_factor: Vec3::from_array(material.emissive_factor()),
         emissive_strength: material.emissive_strength().unwrap_or(1.0),
         double_sided: material.double_sided(),
+        // Filled in from the file's table of texture means after the walk.
+        base_color_texture: None,
+        emissive_texture: None,
     })
 }
 
-/// One warning per material that uses textures, which ffvk does not sample.
-pub(super) fn texture_warnings(cx: &Context, document: &gltf::Document) -> Vec<String> {
-    let mut warnings = Vec::new();
-    for material in document.materials() {
-        let pbr = material.pbr_metallic_roughness();
-        let textured = pbr.base_color_texture().is_some()
-            || pbr.metallic_roughness_texture().is_some()
-            || material.normal_texture().is_some()
-            || material.occlusion_texture().is_some()
-            || material.emissive_texture().is_some();
-        if textured {
+/// One warning for all the materials that use textures ffvk does not sample: how many, the
+/// first few by name, and what is done instead.
+pub(super) fn texture_warnings(cx: &Context, document: &gltf::Document, textures: Textures) -> Vec<String> {
+    let textured: Vec<String> = document
+        .materials()
+        .filter(|material| {
+            let pbr = material.pbr_metallic_roughness();
+            pbr.base_color_texture().is_some()
+                || pbr.metallic_roughness_texture().is_some()
+                || material.normal_texture().is_some()
+                || material.occlusion_texture().is_some()
+                || material.emissive_texture().is_some()
+        })
+        .map(|material| {
             let index = material.index().unwrap_or_default();
-            warnings.push(format!(
-                "material {index}{}: textures are ignored; ffvk uses the material's factors",
-                cx.name("materials", index)
-                    .map(|n| format!(" ({:?})", crate::scene::shorten(&n)))
-                    .unwrap_or_default()
-            ));
-        }
+            match cx.name("materials", index) {
+                Some(n) => format!("{index} ({:?})", crate::scene::shorten(&n)),
+                None => index.to_string(),
+            }
+        })
+        .collect();
+    if textured.is_empty() {
+        return Vec::new();
     }
-    warnings
+    const SHOWN: usize = 4;
+    let mut which = textured[..textured.len().min(SHOWN)].join(", ");
+    if textured.len() > SHOWN {
+        which.push_str(&format!(" and {} more", textured.len() - SHOWN));
+    }
+    let what = match textures {
+        Textures::Ignore => "ffvk uses the materials' factors",
+        Textures::Means => {
+            "base color and emissive factors are multiplied by their texture's mean texel; normal, \
+             occlusion and metallic-roughness textures are ignored"
+        }
+    };
+    vec![format!(
+        "{} material{} use{} textures, which ffvk does not sample (material {which}): {what}",
+        textured.len(),
+        if textured.len() == 1 { "" } else { "s" },
+        if textured.len() == 1 { "s" } else { "" },
+    )]
 }
 
 #[cfg(test)]
@@ -136,7 +183,15 @@ mod tests {
         let loaded = load(&a.write_gltf(&dir, "textured", &body)).unwrap();
         assert_eq!(loaded.warnings.len(), 1, "{:?}", loaded.warnings);
         assert!(
-            loaded.warnings[0].contains("material 0 (\"wood\")") && loaded.warnings[0].contains("textures")
+            loaded.warnings[0].contains("1 material uses textures")
+                && loaded.warnings[0].contains("material 0 (\"wood\")")
+                && loaded.warnings[0].contains("factors"),
+            "{:?}",
+            loaded.warnings
+        );
+        assert_eq!(
+            loaded.meshes[0].material.as_ref().unwrap().base_color_texture,
+            Some(TextureMean::Unread)
         );
         let pbr = loaded.meshes[0].material.clone().unwrap();
         assert_eq!(

@@ -5,25 +5,32 @@
 //! [`load`] walks the default scene (or the first scene; or, in a file with no scene, every
 //! root node) applying node transforms (world = parent × local), and returns one
 //! [`LoadedMesh`] per mesh primitive per node that instances it, the KHR_lights_punctual
-//! lights attached to nodes, and warnings about what it ignored. Every error names the file,
-//! the object (mesh, primitive, accessor, buffer, node), the offending value and what was
-//! expected.
+//! lights and the cameras attached to nodes, and warnings about what it ignored. Every error
+//! names the file, the object (mesh, primitive, accessor, buffer, node), the offending value
+//! and what was expected.
 //!
-//! Textures, skins, morph targets, cameras and texture coordinates are ignored (with a
-//! warning where the file uses them).
+//! Textures are not sampled: base color and emissive textures may be read for their mean
+//! texel ([`Textures::Means`]); skins, morph targets and texture coordinates are ignored (with
+//! a warning where the file uses them). Geometry that exists only compressed (Draco, meshopt)
+//! is refused with the extension's name.
 
+mod cameras;
+mod compressed;
 mod lights;
 mod materials;
 mod primitives;
 mod read;
 #[cfg(test)]
 mod testing;
+mod textures;
 mod values;
 pub mod write;
 
+pub use cameras::{CameraProjection, PlacedCamera};
 pub use lights::{gl_light, spot_exponent, LightKind, PunctualLight};
 pub use materials::{gl_material, PbrMaterial};
 pub use primitives::{AccessorPart, AccessorProblem};
+pub use textures::{TextureMean, Textures};
 
 use crate::mesh::MeshData;
 use crate::scene::{Limits, MeshBudget, OverBudget};
@@ -63,6 +70,8 @@ pub struct LoadedMesh {
     /// The primitive's material; `None` when it uses glTF's default material
     /// ([`PbrMaterial::default`]).
     pub material: Option<PbrMaterial>,
+    /// Whether the primitive has COLOR_0 (else every vertex color is white).
+    pub vertex_colors: bool,
 }
 
 /// What [`load`] found.
@@ -72,6 +81,8 @@ pub struct Loaded {
     pub meshes: Vec<LoadedMesh>,
     /// One per node that places a light, in node order.
     pub lights: Vec<PunctualLight>,
+    /// One per node that places a usable camera, in node order.
+    pub cameras: Vec<PlacedCamera>,
     /// Things the file uses that ffvk ignores, one sentence each.
     pub warnings: Vec<String>,
 }
@@ -164,6 +175,20 @@ pub enum LoadErrorKind {
     /// `message` is the `gltf` crate's.
     #[error("buffer {buffer}: {message}")]
     Buffer { buffer: usize, message: String },
+
+    /// A primitive whose attribute or indices exist only compressed by an extension ffvk
+    /// cannot decode (see `compressed.rs` for why).
+    #[error(
+        "{primitive}: {attribute} (accessor {accessor}) {detail}, and ffvk cannot decode \
+         {extension}: expected uncompressed geometry (export the file without mesh compression)"
+    )]
+    Compressed {
+        primitive: String,
+        attribute: String,
+        accessor: u64,
+        extension: &'static str,
+        detail: &'static str,
+    },
 
     /// A primitive without an attribute ffvk needs (POSITION).
     #[error("{primitive}: the required attribute {attribute} is missing")]
@@ -335,12 +360,23 @@ impl Context<'_> {
 /// `transform` the front faces are counter-clockwise on screen as glTF intends.
 pub fn load(path: &Path) -> Result<Loaded, LoadError> {
     let limits = Limits::default();
-    load_with(path, &limits, &mut MeshBudget::new(limits.mesh_bytes))
+    load_with(
+        path,
+        &limits,
+        &mut MeshBudget::new(limits.mesh_bytes),
+        Textures::Ignore,
+    )
 }
 
-/// [`load`] with buffer URIs also allowed into `limits.asset_roots`, and each primitive
-/// charged to `budget` before it is read (once per node that places it).
-pub fn load_with(path: &Path, limits: &Limits, budget: &mut MeshBudget) -> Result<Loaded, LoadError> {
+/// [`load`] with buffer URIs also allowed into `limits.asset_roots`, each primitive charged to
+/// `budget` before it is read (once per node that places it), and textures read as `textures`
+/// says (see [`TextureMean`]).
+pub fn load_with(
+    path: &Path,
+    limits: &Limits,
+    budget: &mut MeshBudget,
+    textures: Textures,
+) -> Result<Loaded, LoadError> {
     let read::Parsed { raw, document, blob } = read::parse(path)?;
     let cx = Context { path, raw: &raw };
     let mut warnings = Vec::new();
@@ -368,6 +404,7 @@ pub fn load_with(path: &Path, limits: &Limits, budget: &mut MeshBudget) -> Resul
     }
 
     primitives::check_positions(&cx)?;
+    compressed::check(&cx)?;
     read::validate(&cx, &document)?;
     values::check(&cx, &document)?;
     let buffers = read::read_buffers(&cx, &document, blob, &limits.asset_roots)?;
@@ -377,7 +414,22 @@ pub fn load_with(path: &Path, limits: &Limits, budget: &mut MeshBudget) -> Resul
         ..Loaded::default()
     };
     read::walk(&cx, &document, &buffers, budget, &mut out)?;
-    out.warnings.extend(materials::texture_warnings(&cx, &document));
+    out.warnings
+        .extend(materials::texture_warnings(&cx, &document, textures));
+    let table = textures::material_textures(
+        &cx,
+        &document,
+        &buffers,
+        &limits.asset_roots,
+        textures,
+        &mut out.warnings,
+    );
+    for material in out.meshes.iter_mut().filter_map(|m| m.material.as_mut()) {
+        if let Some(t) = material.index.and_then(|i| table.get(i)) {
+            material.base_color_texture = t.base_color;
+            material.emissive_texture = t.emissive;
+        }
+    }
     Ok(out)
 }
 

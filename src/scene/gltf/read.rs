@@ -2,6 +2,7 @@
 //! buffers (GLB binary chunk, external `.bin` files, data URIs), and the walk over the node
 //! hierarchy that places meshes and lights.
 
+use super::cameras::placed_camera;
 use super::lights::punctual_light;
 use super::materials::pbr_material;
 use super::primitives::{draws_triangles, mode_name, read_primitive};
@@ -107,15 +108,13 @@ pub(super) fn read_buffers(
                         crate::scene::shorten(uri)
                     ))));
                 }
-                let file = inside_folder(base, uri)
-                    .or_else(|| inside_roots(base, uri, roots))
-                    .ok_or_else(|| {
-                        cx.error(LoadErrorKind::BufferOutside {
-                            buffer: index,
-                            uri: uri.chars().take(200).collect(),
-                            folder: base.to_path_buf(),
-                        })
-                    })?;
+                let file = asset_file(base, uri, roots).ok_or_else(|| {
+                    cx.error(LoadErrorKind::BufferOutside {
+                        buffer: index,
+                        uri: uri.chars().take(200).collect(),
+                        folder: base.to_path_buf(),
+                    })
+                })?;
                 let mut bytes =
                     crate::files::read_regular(&file, super::MAX_FILE_BYTES).map_err(|source| {
                         cx.error(LoadErrorKind::BufferFile {
@@ -167,6 +166,12 @@ pub(super) fn read_buffers(
         buffers.push(data);
     }
     Ok(buffers)
+}
+
+/// The file a URI without a scheme names, inside the glTF file's folder `base` or one of
+/// `roots`; `None` where it leaves them (see [`inside_folder`] and [`inside_roots`]).
+pub(super) fn asset_file(base: &Path, uri: &str, roots: &[std::path::PathBuf]) -> Option<std::path::PathBuf> {
+    inside_folder(base, uri).or_else(|| inside_roots(base, uri, roots))
 }
 
 /// The file a relative buffer URI names, when it lies inside `folder`: percent-decoded, not
@@ -333,6 +338,7 @@ fn visit(
                     transform: world,
                     node_path: names.clone(),
                     material,
+                    vertex_colors: primitive.get(&gltf::Semantic::Colors(0)).is_some(),
                 });
             }
         }
@@ -341,6 +347,12 @@ fn visit(
         }
         if let Some(light) = node.light() {
             out.lights.push(punctual_light(cx, light, world));
+        }
+        if let Some(camera) = node.camera() {
+            match placed_camera(cx, camera, world) {
+                Ok(camera) => out.cameras.push(camera),
+                Err(why) => out.warnings.push(why),
+            }
         }
         stack.push(Step::Leave(index));
         let children: Vec<gltf::Node> = node.children().collect();
