@@ -7,6 +7,7 @@ use clap::{Parser, Subcommand};
 use ffvk::gl::state::LightingMode;
 use ffvk::images::compare::{self, Tolerance};
 use ffvk::images::save_png;
+use ffvk::scene::direct::{is_gltf, CameraChoice, DirectOptions, LightChoice};
 use ffvk::scene::render_scene;
 use ffvk::tools::regress;
 use ffvk::vk::Validation;
@@ -49,10 +50,11 @@ enum Command {
     },
     /// Benchmark the lighting modes, densities, sizes, lights and pipeline variants.
     Bench(ffvk::tools::bench::BenchArgs),
-    /// Render scene files (or directories of them) with one device; optionally check each
-    /// image against references.
+    /// Render scene files, glTF files (or directories of scene files) with one device;
+    /// optionally check each image against references.
     Render {
-        /// Scene files (.toml) or directories whose *.toml files are rendered in name order.
+        /// Scene files (.toml), glTF files (.gltf, .glb: drawn with the scene `ffvk scene`
+        /// prints) or directories whose *.toml files are rendered in name order.
         #[arg(required = true)]
         scenes: Vec<PathBuf>,
         /// Output PNG when rendering one scene in one mode; otherwise a directory (NAME.png each).
@@ -73,6 +75,21 @@ enum Command {
         bless: bool,
         #[command(flatten)]
         tolerance: ToleranceArgs,
+        #[command(flatten)]
+        gltf: GltfArgs,
+    },
+    /// Print the scene TOML ffvk draws a glTF file with (camera, lights, glTF's meaning), as
+    /// the start of a hand-tuned scene.
+    Scene {
+        /// A .gltf or .glb file.
+        gltf: PathBuf,
+        /// Write the scene here (its glTF path made relative to it) instead of to stdout.
+        #[arg(short, long)]
+        out: Option<PathBuf>,
+        #[arg(long, value_parser = parse_size)]
+        size: Option<(u32, u32)>,
+        #[command(flatten)]
+        choices: GltfArgs,
     },
     /// Compare two images: per-channel differences, share over a threshold, FLIP.
     Compare {
@@ -102,7 +119,80 @@ enum Command {
         lighting: Option<LightingMode>,
         #[arg(long, value_parser = parse_size)]
         size: Option<(u32, u32)>,
+        #[command(flatten)]
+        gltf: GltfArgs,
     },
+}
+
+/// How a glTF file given without a scene file is drawn.
+#[derive(clap::Args, Debug, Clone, Default)]
+struct GltfArgs {
+    /// glTF files only: the file's camera NAME or INDEX, or "frame" for one framing the
+    /// scene's bounds (default: the file's first camera, else "frame").
+    #[arg(long, value_name = "NAME|INDEX|frame")]
+    camera: Option<String>,
+    /// glTF files only: "file" (its KHR_lights_punctual lights), "headlight" (one white light
+    /// from the camera) or "auto" (the file's, else the headlight; the default).
+    #[arg(long, value_parser = ["auto", "file", "headlight"])]
+    lights: Option<String>,
+    /// glTF files only: GL light color per lux or candela, or "auto" (the default: the lights
+    /// together light the scene's center with illuminance 1).
+    #[arg(long, value_parser = parse_exposure)]
+    exposure: Option<Exposure>,
+}
+
+#[derive(Debug, Clone, Copy)]
+enum Exposure {
+    Auto,
+    Scale(f32),
+}
+
+fn parse_exposure(s: &str) -> Result<Exposure, String> {
+    if s == "auto" {
+        return Ok(Exposure::Auto);
+    }
+    match s.parse::<f32>() {
+        Ok(x) if x > 0.0 && x.is_finite() => Ok(Exposure::Scale(x)),
+        _ => Err(format!("{s:?}: expected \"auto\" or a number > 0")),
+    }
+}
+
+impl GltfArgs {
+    fn given(&self) -> bool {
+        self.camera.is_some() || self.lights.is_some() || self.exposure.is_some()
+    }
+
+    fn options(&self) -> DirectOptions {
+        DirectOptions {
+            camera: match self.camera.as_deref() {
+                None => CameraChoice::Auto,
+                Some("frame") => CameraChoice::Frame,
+                Some(name) => CameraChoice::File(name.to_owned()),
+            },
+            lights: match self.lights.as_deref() {
+                Some("file") => LightChoice::File,
+                Some("headlight") => LightChoice::Headlight,
+                _ => LightChoice::Auto,
+            },
+            exposure: match self.exposure {
+                Some(Exposure::Scale(x)) => Some(x),
+                _ => None,
+            },
+            size: None,
+        }
+    }
+
+    /// Refuses the flags for inputs none of which is a glTF file: a scene file sets its own.
+    fn check(&self, inputs: &[PathBuf]) -> ffvk::tools::Result<()> {
+        if self.given() && !inputs.iter().any(|p| is_gltf(p)) {
+            return Err(ffvk::tools::Error::Path {
+                path: inputs[0].clone(),
+                problem: "--camera, --lights and --exposure apply to .gltf and .glb inputs: expected one, \
+                          or the camera, lights and gltf_exposure set in the scene file",
+            });
+        }
+        Ok(())
+    }
 }
 
 fn parse_pair(s: &str, sep: char, what: &str) -> Result<(u32, u32), String> {
@@ -239,7 +329,10 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
             check,
             bless,
             tolerance,
+            gltf,
         } => {
+            gltf.check(scenes)?;
+            let direct = gltf.options();
             let files = regress::scene_files(scenes)?;
             let single = files.len() == 1 && lighting.len() <= 1 && check.is_none();
             let mut renderer = Renderer::new(&options(&cli))?;
@@ -249,7 +342,8 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
                 if ffvk::files::same_file(&path, file) {
                     return Err(ffvk::tools::Error::OverwritesInput { path });
                 }
-                let scene = regress::load_scene(file, *size, &limits(&cli), &mut |m| eprintln!("{m}"))?;
+                let scene =
+                    regress::load_scene(file, *size, &limits(&cli), &direct, &mut |m| eprintln!("{m}"))?;
                 let image = render_scene(&mut renderer, &scene, lighting.first().copied())?;
                 save_png(&image, &path)?;
                 println!("{} -> {}", file.display(), path.display());
@@ -264,11 +358,12 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
                 bless: *bless || regress::bless_from_env(),
                 tolerance: tolerance.tolerance(),
                 limits: limits(&cli),
+                direct,
                 driver_family: Some(regress::driver_family(renderer.device_info())),
             };
             // Warnings go to stderr, apart from the images written and the results table.
             let rows = regress::run(&mut renderer, &job, &mut |m| match m {
-                regress::Message::Warning { .. } => eprintln!("{m}"),
+                regress::Message::Warning { .. } | regress::Message::Chose { .. } => eprintln!("{m}"),
                 regress::Message::Wrote { .. } => println!("{m}"),
             })?;
             if check.is_none() {
@@ -355,13 +450,23 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
             );
             Ok(ExitCode::SUCCESS)
         }
+        Command::Scene {
+            gltf,
+            out,
+            size,
+            choices,
+        } => write_scene(&cli, gltf, out.as_deref(), *size, choices),
         Command::Explain {
             scene,
             pixel,
             lighting,
             size,
+            gltf,
         } => {
-            let scene = regress::load_scene(scene, *size, &limits(&cli), &mut |m| eprintln!("{m}"))?;
+            gltf.check(std::slice::from_ref(scene))?;
+            let scene = regress::load_scene(scene, *size, &limits(&cli), &gltf.options(), &mut |m| {
+                eprintln!("{m}")
+            })?;
             let (x, y) = *pixel;
             if x >= scene.width || y >= scene.height {
                 return Err(ffvk::tools::Error::PixelOutside {
@@ -389,6 +494,49 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
             Ok(ExitCode::SUCCESS)
         }
     }
+}
+
+/// `ffvk scene`: the scene TOML for a glTF file, to stdout or a file.
+fn write_scene(
+    cli: &Cli,
+    gltf: &std::path::Path,
+    out: Option<&std::path::Path>,
+    size: Option<(u32, u32)>,
+    choices: &GltfArgs,
+) -> ffvk::tools::Result<ExitCode> {
+    if !is_gltf(gltf) {
+        return Err(ffvk::tools::Error::Path {
+            path: gltf.to_path_buf(),
+            problem: "expected a .gltf or .glb file",
+        });
+    }
+    let options = DirectOptions {
+        size,
+        ..choices.options()
+    };
+    let reference = ffvk::scene::direct::relative_ref(gltf, out);
+    let made = ffvk::scene::direct::from_gltf(gltf, &reference.to_string_lossy(), &limits(cli), &options)?;
+    for w in &made.scene.warnings {
+        eprintln!("warning: {w}");
+    }
+    match out {
+        None => print!("{}", made.toml),
+        Some(path) => {
+            if ffvk::files::same_file(path, gltf) {
+                return Err(ffvk::tools::Error::OverwritesInput {
+                    path: path.to_path_buf(),
+                });
+            }
+            ffvk::files::write_bytes(path, made.toml.as_bytes()).map_err(|source| {
+                ffvk::tools::Error::Write {
+                    path: path.to_path_buf(),
+                    source,
+                }
+            })?;
+            eprintln!("wrote {}", path.display());
+        }
+    }
+    Ok(ExitCode::SUCCESS)
 }
 
 fn main() -> ExitCode {

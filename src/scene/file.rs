@@ -22,14 +22,26 @@ pub(super) struct SceneFile {
     pub(super) material: Option<MaterialSpec>,
     pub(super) back_material: Option<MaterialSpec>,
     pub(super) color_material: Option<ColorMaterialSpec>,
-    #[serde(default)]
-    pub(super) normalize: bool,
+    /// GL_NORMALIZE; off (GL's default), or on under `gltf_defaults`.
+    pub(super) normalize: Option<bool>,
     #[serde(default)]
     pub(super) rescale_normal: bool,
     /// Whether KHR_lights_punctual lights of the glTF files are added after `lights`.
     pub(super) gltf_lights: Option<bool>,
+    /// glTF's meaning for the glTF meshes (see `meaning.rs`) instead of GL's defaults.
+    pub(super) gltf_defaults: Option<bool>,
+    /// GL light color per glTF light unit (lux, candela), or "auto".
+    pub(super) gltf_exposure: Option<ExposureSpec>,
     #[serde(default)]
     pub(super) meshes: Vec<MeshSpec>,
+}
+
+/// `gltf_exposure`: a number, or a word (only "auto" is one).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(untagged)]
+pub(super) enum ExposureSpec {
+    Scale(f64),
+    Word(String),
 }
 
 /// `[image]`: the picture and how it is drawn.

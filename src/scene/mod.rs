@@ -5,8 +5,10 @@
 //! [`GlState::light`] with the view matrix loaded, exactly as glLight would store them.
 
 mod builtin;
+pub mod direct;
 mod file;
 pub mod gltf;
+mod meaning;
 
 use std::path::{Path, PathBuf};
 
@@ -15,7 +17,8 @@ use glam::{EulerRot, Mat4, Quat, Vec3, Vec4};
 use self::file::{
     CameraSpec, ColorMaterialSpec, LightModelSpec, LightSpec, MaterialSpec, MeshSpec, SceneFile,
 };
-use self::gltf::LoadError;
+use self::gltf::{LoadError, PunctualLight};
+pub use self::meaning::{auto_exposure, GltfMeaning};
 use crate::gl::presets;
 use crate::gl::state::{
     Cap, ColorControl, ColorMaterialMode, Face, GlState, LightModelParam, LightParam, LightingMode,
@@ -201,6 +204,9 @@ pub struct SceneMesh {
     /// The back material: the mesh's `back_material`, else its `material`, else the scene's
     /// `back_material`, else `front`.
     pub back: Material,
+    /// What glTF asks of this mesh where the scene follows glTF's meaning (`gltf_defaults`);
+    /// `None` for built-in shapes and in scenes that keep GL's defaults.
+    pub gltf: Option<GltfMeaning>,
 }
 
 /// A scene ready to draw: GL state already in eye space, matrices in GL conventions.
@@ -226,6 +232,9 @@ pub struct Scene {
     pub meshes: Vec<SceneMesh>,
     /// Things ignored while loading (from glTF files), one sentence each.
     pub warnings: Vec<String>,
+    /// What the scene chose where its files left it open (glTF's meaning, the light exposure),
+    /// one sentence each; `ffvk explain` prints them.
+    pub notes: Vec<String>,
 }
 
 impl Scene {
@@ -234,7 +243,16 @@ impl Scene {
         let mut state = self.state;
         state.front = mesh.front;
         state.back = mesh.back;
+        if let Some(meaning) = &mesh.gltf {
+            meaning.apply(&mut state);
+        }
         state
+    }
+
+    /// The faces `mesh` is drawn without (GL_CULL_FACE with glCullFace): back faces of
+    /// single-sided glTF materials where the scene follows glTF's meaning, else none.
+    pub fn cull_face(&self, mesh: &SceneMesh) -> Option<Face> {
+        mesh.gltf.and_then(|m| m.cull_face())
     }
 
     /// The modelview matrix `mesh` is drawn with: view × model.
@@ -289,9 +307,46 @@ impl Scene {
             path,
             limits,
             budget: std::cell::RefCell::new(MeshBudget::new(limits.mesh_bytes)),
+            preloaded: std::cell::RefCell::new(None),
         }
         .build(file)
     }
+
+    /// [`Scene::parse_with`] with the glTF file at `gltf_path` already loaded (its meshes
+    /// charged to `budget`): a `[[meshes]]` table naming that file takes `loaded` instead of
+    /// reading it again.
+    pub(crate) fn parse_preloaded(
+        text: &str,
+        path: &Path,
+        limits: &Limits,
+        budget: MeshBudget,
+        gltf_path: PathBuf,
+        loaded: self::gltf::Loaded,
+    ) -> Result<Scene, SceneError> {
+        let file: SceneFile = toml::from_str(text).map_err(|source| SceneError {
+            path: path.to_path_buf(),
+            kind: SceneErrorKind::Toml { source },
+        })?;
+        Builder {
+            path,
+            limits,
+            budget: std::cell::RefCell::new(budget),
+            preloaded: std::cell::RefCell::new(Some((gltf_path, loaded))),
+        }
+        .build(file)
+    }
+}
+
+/// One glTF primitive or built-in shape placed by a `[[meshes]]` table.
+struct Placed {
+    name: String,
+    data: MeshData,
+    /// Object to world.
+    model: Mat4,
+    /// The glTF material (glTF's default for primitives without one); `None` for built-ins.
+    material: Option<self::gltf::PbrMaterial>,
+    /// Whether the primitive has COLOR_0.
+    vertex_colors: bool,
 }
 
 struct Builder<'a> {
@@ -299,6 +354,9 @@ struct Builder<'a> {
     limits: &'a Limits,
     /// What the meshes built so far took.
     budget: std::cell::RefCell<MeshBudget>,
+    /// A glTF file loaded before the scene was built, and its path (see
+    /// [`Scene::parse_preloaded`]).
+    preloaded: std::cell::RefCell<Option<(PathBuf, self::gltf::Loaded)>>,
 }
 
 impl Builder<'_> {
@@ -374,11 +432,25 @@ impl Builder<'_> {
         gl.set_enabled(Cap::Lighting, file.lighting.unwrap_or(true))
             .map_err(self.state("lighting"))?;
         gl.lighting_mode(mode);
-        gl.set_enabled(Cap::Normalize, file.normalize)
+        let gltf_meaning = file.gltf_defaults.unwrap_or(false);
+        let mut notes = Vec::new();
+        gl.set_enabled(Cap::Normalize, file.normalize.unwrap_or(gltf_meaning))
             .map_err(self.state("normalize"))?;
         gl.set_enabled(Cap::RescaleNormal, file.rescale_normal)
             .map_err(self.state("rescale_normal"))?;
         self.light_model(&mut gl, &file.light_model)?;
+        if gltf_meaning {
+            if file.normalize.is_none() {
+                notes.push(
+                    "glTF: normals renormalized (GL_NORMALIZE), as glTF's scaled nodes need".to_owned(),
+                );
+            }
+            if file.light_model.color_control.is_none() {
+                gl.light_model(LightModelParam::ColorControl(ColorControl::SeparateSpecularColor))
+                    .map_err(self.state("light_model.color_control"))?;
+                notes.push("glTF: separate specular color (GL_SEPARATE_SPECULAR_COLOR)".to_owned());
+            }
+        }
         if let Some(cm) = &file.color_material {
             self.color_material(&mut gl, cm)?;
         }
@@ -425,37 +497,25 @@ impl Builder<'_> {
 
         let mut meshes = Vec::new();
         let mut warnings = Vec::new();
+        let mut gltf_lights: Vec<(String, PunctualLight, Mat4)> = Vec::new();
+        let textures = if gltf_meaning {
+            self::gltf::Textures::Means
+        } else {
+            self::gltf::Textures::Ignore
+        };
         for (i, spec) in file.meshes.iter().enumerate() {
             let field = format!("meshes[{i}]");
-            let placed = self.mesh(&field, spec, &mut warnings, &mut |light, name| {
-                if !file.gltf_lights.unwrap_or(true) {
-                    return Ok(());
-                }
-                // The next disabled light takes it.
-                let f = format!("{field}: glTF light {:?}", shorten(name));
-                let index = (0..MAX_LIGHTS)
-                    .find(|&i| !gl.lighting.lights[i].enabled)
-                    .ok_or_else(|| {
-                        self.field(
-                            &f,
-                            format!("no free light: expected at most {MAX_LIGHTS} enabled lights in all"),
-                        )
-                    })?;
-                crate::gl::state::validate_light(&light).map_err(self.state(&f))?;
-                gl.lighting.lights[index] = light;
-                let (position, direction) = (light.position, light.spot_direction);
-                gl.light(index, LightParam::Position(position))
-                    .map_err(self.state(&f))?;
-                gl.light(index, LightParam::SpotDirection(direction))
-                    .map_err(self.state(&f))?;
-                Ok(())
-            })?;
-            for (name, data, model, pbr) in placed {
+            let placed = self.mesh(&field, spec, textures, &mut warnings, &mut gltf_lights)?;
+            for p in placed {
+                let pbr = match (&p.material, gltf_meaning) {
+                    (Some(m), true) => Some(m.with_texture_means()),
+                    (m, _) => m.clone(),
+                };
                 // Material precedence: the mesh's own, the scene's, the glTF's, GL's default.
-                let front = match (&spec.material, scene_front, pbr) {
+                let front = match (&spec.material, scene_front, &pbr) {
                     (Some(m), _, _) => self.material(&format!("{field}.material"), m)?,
                     (None, Some(m), _) => m,
-                    (None, None, Some(p)) => self::gltf::gl_material(&p),
+                    (None, None, Some(p)) => self::gltf::gl_material(p),
                     (None, None, None) => Material::default(),
                 };
                 let back = match (&spec.back_material, &spec.material, scene_back) {
@@ -464,13 +524,56 @@ impl Builder<'_> {
                     (None, None, Some(m)) => m,
                     (None, None, None) => front,
                 };
+                let own_material = spec.material.is_none() && scene_front.is_none();
+                let mut data = p.data;
+                let meaning = match &pbr {
+                    Some(pbr) if gltf_meaning => {
+                        let color_material = own_material && p.vertex_colors;
+                        if color_material {
+                            self::meaning::multiply_colors(&mut data, pbr.base_color_factor);
+                        }
+                        Some(GltfMeaning {
+                            double_sided: pbr.double_sided,
+                            color_material,
+                        })
+                    }
+                    _ => None,
+                };
                 meshes.push(SceneMesh {
-                    name,
+                    name: p.name,
                     data,
-                    model,
+                    model: p.model,
                     front,
                     back,
+                    gltf: meaning,
                 });
+            }
+        }
+        if !gltf_lights.is_empty() && file.gltf_lights.unwrap_or(true) {
+            let exposure = self.exposure(&file, gltf_meaning, &gltf_lights, &meshes, &mut notes)?;
+            for (f, light, model) in &gltf_lights {
+                let mut gl_light = self::gltf::gl_light(light);
+                gl_light.diffuse = (gl_light.diffuse.truncate() * exposure).extend(1.0);
+                gl_light.specular = gl_light.diffuse;
+                // World-space light under the scene's model transform.
+                gl_light.position = *model * gl_light.position;
+                gl_light.spot_direction = glam::Mat3::from_mat4(*model) * gl_light.spot_direction;
+                // The next disabled light takes it.
+                let index = (0..MAX_LIGHTS)
+                    .find(|&i| !gl.lighting.lights[i].enabled)
+                    .ok_or_else(|| {
+                        self.field(
+                            f,
+                            format!("no free light: expected at most {MAX_LIGHTS} enabled lights in all"),
+                        )
+                    })?;
+                crate::gl::state::validate_light(&gl_light).map_err(self.state(f))?;
+                gl.lighting.lights[index] = gl_light;
+                let (position, direction) = (gl_light.position, gl_light.spot_direction);
+                gl.light(index, LightParam::Position(position))
+                    .map_err(self.state(f))?;
+                gl.light(index, LightParam::SpotDirection(direction))
+                    .map_err(self.state(f))?;
             }
         }
         if meshes.is_empty() {
@@ -491,7 +594,49 @@ impl Builder<'_> {
             state: gl.lighting,
             meshes,
             warnings,
+            notes,
         })
+    }
+
+    /// The scale from glTF light units to GL light colors: `gltf_exposure` as given, else
+    /// "auto" under glTF's meaning and 1 without it (see [`auto_exposure`]).
+    fn exposure(
+        &self,
+        file: &SceneFile,
+        gltf_meaning: bool,
+        lights: &[(String, PunctualLight, Mat4)],
+        meshes: &[SceneMesh],
+        notes: &mut Vec<String>,
+    ) -> Result<f32, SceneError> {
+        use self::file::ExposureSpec;
+        let auto = || {
+            let placed: Vec<(PunctualLight, Mat4)> = lights.iter().map(|(_, l, m)| (l.clone(), *m)).collect();
+            let bounds = self::meaning::world_bounds(meshes.iter().map(|m| (&m.data, m.model)));
+            auto_exposure(&placed, bounds)
+        };
+        let (scale, how) = match &file.gltf_exposure {
+            None if gltf_meaning => (auto(), "auto"),
+            None => (1.0, "1, GL's reading of the units"),
+            Some(ExposureSpec::Word(w)) if w == "auto" => (auto(), "auto"),
+            Some(ExposureSpec::Scale(x)) if *x > 0.0 && x.is_finite() && (*x as f32).is_normal() => {
+                (*x as f32, "as given")
+            }
+            Some(other) => {
+                let value = match other {
+                    ExposureSpec::Scale(x) => x.to_string(),
+                    ExposureSpec::Word(w) => format!("{:?}", shorten(w)),
+                };
+                return Err(self.field(
+                    "gltf_exposure",
+                    format!("{value}: expected \"auto\" or a number > 0 (GL light color per lux or candela)"),
+                ));
+            }
+        };
+        notes.push(format!(
+            "glTF lights: {} from the files, GL color = color × intensity × {scale} (gltf_exposure {how})",
+            lights.len()
+        ));
+        Ok(scale)
     }
 
     /// What drawing would refuse (see [`DrawBlock::new`]), found here so that the error names
@@ -798,15 +943,16 @@ impl Builder<'_> {
         ))
     }
 
-    /// The placed primitives of one [[meshes]] entry: (name, data, object-to-world, glTF material).
-    #[allow(clippy::type_complexity)]
+    /// The placed primitives of one [[meshes]] entry; its glTF file's lights are added to
+    /// `lights` (with the field that names them and the entry's model matrix).
     fn mesh(
         &self,
         field: &str,
         spec: &MeshSpec,
+        textures: self::gltf::Textures,
         warnings: &mut Vec<String>,
-        add_light: &mut dyn FnMut(crate::gl::state::Light, &str) -> Result<(), SceneError>,
-    ) -> Result<Vec<(String, MeshData, Mat4, Option<self::gltf::PbrMaterial>)>, SceneError> {
+        lights: &mut Vec<(String, PunctualLight, Mat4)>,
+    ) -> Result<Vec<Placed>, SceneError> {
         let model = self.model_matrix(field, spec)?;
         match (&spec.gltf, &spec.builtin) {
             (Some(_), Some(_)) => Err(self.field(field, "has both gltf and builtin: expected one of them")),
@@ -828,7 +974,13 @@ impl Builder<'_> {
                             source,
                         })
                     })?;
-                Ok(vec![(name.clone(), data, model, None)])
+                Ok(vec![Placed {
+                    name: name.clone(),
+                    data,
+                    model,
+                    material: None,
+                    vertex_colors: true,
+                }])
             }
             (Some(_), None) if spec.level.is_some() || spec.color.is_some() => {
                 let name = if spec.level.is_some() { "level" } else { "color" };
@@ -840,18 +992,26 @@ impl Builder<'_> {
             (Some(file), None) => {
                 let base = self.path.parent().unwrap_or(Path::new("."));
                 let gltf_path = base.join(file);
-                let loaded = self::gltf::load_with(
-                    &gltf_path,
-                    self.limits,
-                    &mut self.budget.borrow_mut(),
-                    self::gltf::Textures::Ignore,
-                )
-                .map_err(|source| {
-                    self.error(SceneErrorKind::Gltf {
-                        field: format!("{field}.gltf"),
-                        source: Box::new(source),
-                    })
-                })?;
+                let preloaded = self
+                    .preloaded
+                    .borrow_mut()
+                    .take_if(|(path, _)| *path == gltf_path)
+                    .map(|(_, loaded)| loaded);
+                let loaded = match preloaded {
+                    Some(loaded) => loaded,
+                    None => self::gltf::load_with(
+                        &gltf_path,
+                        self.limits,
+                        &mut self.budget.borrow_mut(),
+                        textures,
+                    )
+                    .map_err(|source| {
+                        self.error(SceneErrorKind::Gltf {
+                            field: format!("{field}.gltf"),
+                            source: Box::new(source),
+                        })
+                    })?,
+                };
                 warnings.extend(
                     loaded
                         .warnings
@@ -859,11 +1019,8 @@ impl Builder<'_> {
                         .map(|w| format!("{}: {w}", gltf_path.display())),
                 );
                 for light in &loaded.lights {
-                    let mut gl_light = self::gltf::gl_light(light);
-                    // World-space light under the scene's model transform.
-                    gl_light.position = model * gl_light.position;
-                    gl_light.spot_direction = glam::Mat3::from_mat4(model) * gl_light.spot_direction;
-                    add_light(gl_light, &light.name)?;
+                    let f = format!("{field}: glTF light {:?}", shorten(&light.name));
+                    lights.push((f, light.clone(), model));
                 }
                 let mut placed = Vec::new();
                 for m in loaded.meshes {
@@ -875,12 +1032,13 @@ impl Builder<'_> {
                     if spec.node.as_ref().is_some_and(|want| !m.node_path.contains(want)) {
                         continue;
                     }
-                    placed.push((
-                        m.name,
-                        m.data,
-                        model * m.transform,
-                        m.material.or(Some(Default::default())),
-                    ));
+                    placed.push(Placed {
+                        name: m.name,
+                        data: m.data,
+                        model: model * m.transform,
+                        material: m.material.or(Some(Default::default())),
+                        vertex_colors: m.vertex_colors,
+                    });
                 }
                 if placed.is_empty() {
                     let what = match (&spec.mesh, &spec.node) {
@@ -924,7 +1082,7 @@ pub fn render_scene(
             modelview: scene.modelview(mesh),
             projection: scene.projection,
             state,
-            cull_face: None,
+            cull_face: scene.cull_face(mesh),
         });
     }
     Ok(renderer.render(&frame)?.into())

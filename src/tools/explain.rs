@@ -4,7 +4,7 @@ use std::fmt::Write as _;
 
 use glam::{DVec3, DVec4};
 
-use crate::gl::state::LightingMode;
+use crate::gl::state::{Face, LightingMode};
 use crate::reference::{self, Coverage, EyeVertex, Lit};
 use crate::scene::Scene;
 
@@ -17,11 +17,13 @@ pub struct Hit {
     pub depth: f64,
 }
 
-/// The nearest triangle whose interior holds the center of pixel (x, y), row 0 at the top.
+/// The nearest triangle whose interior holds the center of pixel (x, y), row 0 at the top,
+/// among those the mesh's culling keeps.
 pub fn find_surface(scene: &Scene, x: u32, y: u32) -> Option<Hit> {
     let mut best: Option<Hit> = None;
     for (mi, mesh) in scene.meshes.iter().enumerate() {
         let state = scene.draw_state(mesh);
+        let cull = scene.cull_face(mesh);
         let modelview = scene.modelview(mesh);
         let clip: Vec<DVec4> = mesh
             .data
@@ -38,6 +40,15 @@ pub fn find_surface(scene: &Scene, x: u32, y: u32) -> Option<Hit> {
             let Some(cov) = reference::coverage(c, scene.width, scene.height, x, y) else {
                 continue;
             };
+            let culled = match cull {
+                None => false,
+                Some(Face::Back) => !cov.front,
+                Some(Face::Front) => cov.front,
+                Some(Face::FrontAndBack) => true,
+            };
+            if culled {
+                continue;
+            }
             let w = cov.weights;
             let depth = (c[0].z / c[0].w) * w.x + (c[1].z / c[1].w) * w.y + (c[2].z / c[2].w) * w.z;
             if !(-1.0..=1.0).contains(&depth) {
@@ -132,6 +143,12 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
         "perspective-correct weights: ({:.4}, {:.4}, {:.4})",
         w.x, w.y, w.z
     );
+    for note in &scene.notes {
+        let _ = writeln!(out, "scene: {note}");
+    }
+    if let Some(meaning) = &mesh.gltf {
+        let _ = writeln!(out, "glTF meaning for this mesh: {}", meaning.describe());
+    }
     let indices: Vec<usize> = (0..state.lights.len())
         .filter(|&i| state.lights[i].enabled)
         .collect();

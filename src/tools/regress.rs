@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 use crate::gl::state::LightingMode;
 use crate::images::compare::{compare, heat_map, load_image, Comparison, Tolerance};
 use crate::images::save_png;
+use crate::scene::direct::DirectOptions;
 use crate::scene::{render_scene, Limits, Scene};
 use crate::tools::table::{Align, Table};
 use crate::tools::{Error, Result};
@@ -43,6 +44,8 @@ pub struct Job {
     pub tolerance: Tolerance,
     /// What each scene may make ffvk allocate.
     pub limits: Limits,
+    /// How `.gltf`/`.glb` files among `scenes` are drawn.
+    pub direct: DirectOptions,
     /// The renderer's driver family ([`driver_family`]): references in
     /// `references/FAMILY/` take precedence over the shared ones when they exist.
     pub driver_family: Option<String>,
@@ -244,6 +247,14 @@ pub enum Message<'a> {
         /// How many times the scene gave it.
         times: usize,
     },
+    /// What ffvk chose for a glTF file drawn without a scene file (camera, lights), one line
+    /// each.
+    Chose {
+        /// The glTF file.
+        scene: &'a Path,
+        /// The choice.
+        text: &'a str,
+    },
     /// An image was written.
     Wrote {
         /// The scene file.
@@ -258,19 +269,35 @@ impl std::fmt::Display for Message<'_> {
         match self {
             Message::Warning { text, times: 1 } => write!(f, "warning: {text}"),
             Message::Warning { text, times } => write!(f, "warning: {text} (×{times})"),
+            Message::Chose { scene, text } => write!(f, "{}: {text}", scene.display()),
             Message::Wrote { scene, image } => write!(f, "{} -> {}", scene.display(), image.display()),
         }
     }
 }
 
-/// Loads a scene, resized when asked; its warnings go to `log`, each distinct one once.
+/// Loads a scene, resized when asked: a scene file, or a `.gltf`/`.glb` file drawn as
+/// `direct` says (its choices go to `log` first); warnings go to `log`, each distinct one once.
 pub fn load_scene(
     path: &Path,
     size: Option<(u32, u32)>,
     limits: &Limits,
+    direct: &DirectOptions,
     log: &mut dyn FnMut(Message),
 ) -> Result<Scene> {
-    let mut scene = Scene::load_with(path, limits)?;
+    let (mut scene, size) = if crate::scene::direct::is_gltf(path) {
+        let options = DirectOptions {
+            size,
+            ..direct.clone()
+        };
+        let made = crate::scene::direct::from_gltf(path, &path.to_string_lossy(), limits, &options)?;
+        for text in &made.choices {
+            log(Message::Chose { scene: path, text });
+        }
+        // The camera was made for the size.
+        (made.scene, None)
+    } else {
+        (Scene::load_with(path, limits)?, size)
+    };
     let mut seen: Vec<(&str, usize)> = Vec::new();
     for w in &scene.warnings {
         match seen.iter_mut().find(|(text, _)| *text == w.as_str()) {
@@ -297,7 +324,7 @@ pub fn run(renderer: &mut Renderer, job: &Job, log: &mut dyn FnMut(Message)) -> 
     check_outputs(job, &files)?;
     let mut rows = Vec::new();
     for file in &files {
-        let scene = load_scene(&file.path, job.size, &job.limits, log)?;
+        let scene = load_scene(&file.path, job.size, &job.limits, &job.direct, log)?;
         let modes: Vec<Option<LightingMode>> = if job.modes.is_empty() {
             vec![None]
         } else {

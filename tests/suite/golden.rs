@@ -41,6 +41,7 @@ fn check_scenes(area: &str, scenes: PathBuf) {
         bless: regress::bless_from_env(),
         tolerance,
         limits: Default::default(),
+        direct: Default::default(),
         driver_family: Some(regress::driver_family(r.device_info())),
     };
     let rows = regress::run(&mut r, &job, &mut |_| {}).unwrap();
@@ -158,6 +159,7 @@ fn references_of_the_drivers_own_family_take_precedence_over_the_shared_ones() {
         bless: false,
         tolerance: Tolerance::EXACT,
         limits: Default::default(),
+        direct: Default::default(),
         driver_family: Some(family.clone()),
     };
     regress::run(&mut r, &job, &mut |_| {}).unwrap();
