@@ -1,6 +1,6 @@
 //! The demo: the emerald teapot under one directional light, term by term, and the same
 //! teapot in each lighting mode at a coarse tessellation, as separate PNGs and one labelled
-//! contact sheet.
+//! contact sheet; then the glTF files of `assets/gltf` drawn directly, on a sheet of their own.
 
 use std::path::Path;
 
@@ -171,5 +171,55 @@ pub fn run(options: &RendererOptions, out: &Path) -> Result<()> {
         labelled.len(),
         out.display()
     );
+    let gltf = gltf_panels(
+        &mut renderer,
+        &Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/gltf"),
+        256,
+    )?;
+    for (name, image) in &gltf {
+        save_png(image, &out.join("gltf").join(format!("{name}.png")))?;
+    }
+    let sheet = contact_sheet(&gltf, 3)?;
+    let path = out.join("gltf_sheet.png");
+    save_png(&sheet, &path)?;
+    println!(
+        "wrote {} ({} glTF files drawn directly)",
+        path.display(),
+        gltf.len()
+    );
     Ok(())
+}
+
+/// Each `.gltf`/`.glb` file in `folder`, in name order, drawn as `ffvk render FILE` draws it
+/// (per-fragment lighting), `size` pixels square, named by its file name.
+pub fn gltf_panels(
+    renderer: &mut Renderer,
+    folder: &Path,
+    size: u32,
+) -> Result<Vec<(String, image::RgbaImage)>> {
+    let mut files: Vec<std::path::PathBuf> = std::fs::read_dir(folder)
+        .map_err(|source| crate::tools::Error::Read {
+            path: folder.to_path_buf(),
+            source,
+        })?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| crate::scene::direct::is_gltf(p))
+        .collect();
+    files.sort();
+    let options = crate::scene::direct::DirectOptions {
+        size: Some((size, size)),
+        ..Default::default()
+    };
+    let mut panels = Vec::new();
+    for file in files {
+        let made =
+            crate::scene::direct::from_gltf(&file, &file.to_string_lossy(), &Default::default(), &options)?;
+        let image = crate::scene::render_scene(renderer, &made.scene, Some(LightingMode::Fragment))?;
+        let name = file
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        panels.push((name, image));
+    }
+    Ok(panels)
 }
