@@ -7,6 +7,7 @@ mod embedding;
 mod files;
 mod fuzz;
 mod gl_oracle;
+mod gltf_files;
 mod golden;
 mod hostile;
 mod layout;
