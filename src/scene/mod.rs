@@ -299,17 +299,7 @@ impl Scene {
 
     /// [`Scene::parse`] within `limits`.
     pub fn parse_with(text: &str, path: &Path, limits: &Limits) -> Result<Scene, SceneError> {
-        let file: SceneFile = toml::from_str(text).map_err(|source| SceneError {
-            path: path.to_path_buf(),
-            kind: SceneErrorKind::Toml { source },
-        })?;
-        Builder {
-            path,
-            limits,
-            budget: std::cell::RefCell::new(MeshBudget::new(limits.mesh_bytes)),
-            preloaded: std::cell::RefCell::new(None),
-        }
-        .build(file)
+        Scene::parse_into(text, path, limits, MeshBudget::new(limits.mesh_bytes), None)
     }
 
     /// [`Scene::parse_with`] with the glTF file at `gltf_path` already loaded (its meshes
@@ -323,6 +313,16 @@ impl Scene {
         gltf_path: PathBuf,
         loaded: self::gltf::Loaded,
     ) -> Result<Scene, SceneError> {
+        Scene::parse_into(text, path, limits, budget, Some((gltf_path, loaded)))
+    }
+
+    fn parse_into(
+        text: &str,
+        path: &Path,
+        limits: &Limits,
+        budget: MeshBudget,
+        preloaded: Option<(PathBuf, self::gltf::Loaded)>,
+    ) -> Result<Scene, SceneError> {
         let file: SceneFile = toml::from_str(text).map_err(|source| SceneError {
             path: path.to_path_buf(),
             kind: SceneErrorKind::Toml { source },
@@ -331,7 +331,7 @@ impl Scene {
             path,
             limits,
             budget: std::cell::RefCell::new(budget),
-            preloaded: std::cell::RefCell::new(Some((gltf_path, loaded))),
+            preloaded: std::cell::RefCell::new(preloaded),
         }
         .build(file)
     }
@@ -495,6 +495,7 @@ impl Builder<'_> {
             None => None,
         };
 
+        let exposure_spec = self.exposure_spec(&file, gltf_meaning)?;
         let mut meshes = Vec::new();
         let mut warnings = Vec::new();
         let mut gltf_lights: Vec<(String, PunctualLight, Mat4)> = Vec::new();
@@ -550,7 +551,7 @@ impl Builder<'_> {
             }
         }
         if !gltf_lights.is_empty() && file.gltf_lights.unwrap_or(true) {
-            let exposure = self.exposure(&file, gltf_meaning, &gltf_lights, &meshes, &mut notes)?;
+            let exposure = Builder::exposure(exposure_spec, &gltf_lights, &meshes, &mut notes);
             for (f, light, model) in &gltf_lights {
                 let mut gl_light = self::gltf::gl_light(light);
                 gl_light.diffuse = (gl_light.diffuse.truncate() * exposure).extend(1.0);
@@ -598,45 +599,54 @@ impl Builder<'_> {
         })
     }
 
-    /// The scale from glTF light units to GL light colors: `gltf_exposure` as given, else
-    /// "auto" under glTF's meaning and 1 without it (see [`auto_exposure`]).
-    fn exposure(
-        &self,
-        file: &SceneFile,
-        gltf_meaning: bool,
-        lights: &[(String, PunctualLight, Mat4)],
-        meshes: &[SceneMesh],
-        notes: &mut Vec<String>,
-    ) -> Result<f32, SceneError> {
+    /// `gltf_exposure` checked: `Some(scale)`, or `None` for "auto" (the default under glTF's
+    /// meaning; 1 without it). Checked whether or not the files have lights, so that a bad
+    /// value is never passed over.
+    fn exposure_spec(&self, file: &SceneFile, gltf_meaning: bool) -> Result<Option<f32>, SceneError> {
         use self::file::ExposureSpec;
-        let auto = || {
-            let placed: Vec<(PunctualLight, Mat4)> = lights.iter().map(|(_, l, m)| (l.clone(), *m)).collect();
-            let bounds = self::meaning::world_bounds(meshes.iter().map(|m| (&m.data, m.model)));
-            auto_exposure(&placed, bounds)
-        };
-        let (scale, how) = match &file.gltf_exposure {
-            None if gltf_meaning => (auto(), "auto"),
-            None => (1.0, "1, GL's reading of the units"),
-            Some(ExposureSpec::Word(w)) if w == "auto" => (auto(), "auto"),
+        match &file.gltf_exposure {
+            None if gltf_meaning => Ok(None),
+            None => Ok(Some(1.0)),
+            Some(ExposureSpec::Word(w)) if w == "auto" => Ok(None),
             Some(ExposureSpec::Scale(x)) if *x > 0.0 && x.is_finite() && (*x as f32).is_normal() => {
-                (*x as f32, "as given")
+                Ok(Some(*x as f32))
             }
             Some(other) => {
                 let value = match other {
                     ExposureSpec::Scale(x) => x.to_string(),
                     ExposureSpec::Word(w) => format!("{:?}", shorten(w)),
                 };
-                return Err(self.field(
+                Err(self.field(
                     "gltf_exposure",
                     format!("{value}: expected \"auto\" or a number > 0 (GL light color per lux or candela)"),
-                ));
+                ))
+            }
+        }
+    }
+
+    /// The scale from glTF light units to GL light colors: `spec` (from
+    /// [`Builder::exposure_spec`]), "auto" computed by [`auto_exposure`] over the lights and
+    /// the meshes' bounds; the choice goes into `notes`.
+    fn exposure(
+        spec: Option<f32>,
+        lights: &[(String, PunctualLight, Mat4)],
+        meshes: &[SceneMesh],
+        notes: &mut Vec<String>,
+    ) -> f32 {
+        let (scale, how) = match spec {
+            Some(scale) => (scale, "as given, or GL's 1"),
+            None => {
+                let placed: Vec<(PunctualLight, Mat4)> =
+                    lights.iter().map(|(_, l, m)| (l.clone(), *m)).collect();
+                let bounds = self::meaning::world_bounds(meshes.iter().map(|m| (&m.data, m.model)));
+                (auto_exposure(&placed, bounds), "auto")
             }
         };
         notes.push(format!(
             "glTF lights: {} from the files, GL color = color × intensity × {scale} (gltf_exposure {how})",
             lights.len()
         ));
-        Ok(scale)
+        scale
     }
 
     /// What drawing would refuse (see [`DrawBlock::new`]), found here so that the error names

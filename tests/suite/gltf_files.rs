@@ -72,24 +72,13 @@ fn probe(scene: &Scene, image: &RgbaImage, mode: LightingMode, what: &str) -> us
     for j in 0..8 {
         for i in 0..8 {
             let (x, y) = (scene.width * (2 * i + 1) / 16, scene.height * (2 * j + 1) / 16);
-            let Some(hit) = ffvk::tools::explain::find_surface(scene, x, y) else {
+            let Some((hit, want)) = reference_at(scene, x, y, mode) else {
                 continue;
             };
             // Away from edges, where which triangle covers the pixel is a rounding question.
             if hit.coverage.weights.min_element() < 0.05 {
                 continue;
             }
-            let mesh = &scene.meshes[hit.mesh];
-            let mut state = scene.draw_state(mesh);
-            state.mode = mode;
-            let tri = hit.vertices.map(|i| &mesh.data.vertices[i]);
-            let want = ffvk::reference::pixel_color(
-                &state,
-                scene.modelview(mesh),
-                scene.projection,
-                tri,
-                hit.coverage,
-            );
             assert_pixel(image, x, y, want, 1.0, &format!("{what} {}", mode.name()));
             probed += 1;
         }

@@ -110,19 +110,7 @@ fn every_asset_scene_renders_and_matches_the_reference_where_probed() {
             let image = render_scene(&mut r, &scene, Some(mode)).unwrap();
             // The pixel at the center is explained by the CPU reference and drawn the same.
             let (x, y) = (48, 48);
-            let hit = ffvk::tools::explain::find_surface(&scene, x, y);
-            if let Some(hit) = hit {
-                let mesh = &scene.meshes[hit.mesh];
-                let mut state = scene.draw_state(mesh);
-                state.mode = mode;
-                let tri = hit.vertices.map(|i| &mesh.data.vertices[i]);
-                let want = ffvk::reference::pixel_color(
-                    &state,
-                    scene.modelview(mesh),
-                    scene.projection,
-                    tri,
-                    hit.coverage,
-                );
+            if let Some((_, want)) = reference_at(&scene, x, y, mode) {
                 assert_pixel(
                     &image,
                     x,
@@ -148,6 +136,13 @@ fn bad_scenes_name_the_file_the_field_the_value_and_what_was_expected() {
     contains_all(&m, &["line 1"]);
     let m = load_err("unknown_field", &format!("[image]\nsise = [64, 64]\n{MINIMAL}"));
     contains_all(&m, &["unknown field", "sise", "size"]);
+    let m = load_err("exposure_word", &format!("gltf_exposure = \"bright\"\n{MINIMAL}"));
+    contains_all(
+        &m,
+        &["gltf_exposure", "\"bright\"", "expected \"auto\" or a number > 0"],
+    );
+    let m = load_err("exposure_negative", &format!("gltf_exposure = -2\n{MINIMAL}"));
+    contains_all(&m, &["gltf_exposure", "-2", "a number > 0"]);
     let m = load_err("wrong_type", &format!("[image]\nsize = \"big\"\n{MINIMAL}"));
     contains_all(&m, &["size", "big"]);
     let m = load_err("zero_size", &format!("[image]\nsize = [0, 64]\n{MINIMAL}"));

@@ -189,3 +189,21 @@ pub fn ffvk_command(args: &[&dyn AsRef<std::ffi::OsStr>]) -> std::process::Comma
         .env("VK_DRIVER_FILES", "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json");
     c
 }
+
+/// What the CPU reference predicts at pixel (x, y) of `scene` drawn in `mode`: the surface
+/// there and its color, or `None` where no surface covers the pixel's center.
+pub fn reference_at(
+    scene: &ffvk::scene::Scene,
+    x: u32,
+    y: u32,
+    mode: ffvk::gl::state::LightingMode,
+) -> Option<(ffvk::tools::explain::Hit, DVec4)> {
+    let hit = ffvk::tools::explain::find_surface(scene, x, y)?;
+    let mesh = &scene.meshes[hit.mesh];
+    let mut state = scene.draw_state(mesh);
+    state.mode = mode;
+    let tri = hit.vertices.map(|i| &mesh.data.vertices[i]);
+    let color =
+        ffvk::reference::pixel_color(&state, scene.modelview(mesh), scene.projection, tri, hit.coverage);
+    Some((hit, color))
+}
