@@ -71,6 +71,11 @@ const VARIANTS: &[Variant] = &[
 /// color array, it reads GL's current color from the draw block instead of location 2.
 const CURRENT_COLOR: (&str, &str) = ("CURRENT_COLOR", "1");
 
+/// The textured build of each of those, named `<…>_textured`: texture coordinates at
+/// location 3, the texture environment before the color sum (`glsl/texture.glsl`).
+/// Untextured draws keep the variants without it, unchanged.
+const TEXTURE: (&str, &str) = ("TEXTURE", "1");
+
 fn main() {
     let manifest = PathBuf::from(env::var("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR"));
     let glsl_dir = manifest.join("glsl");
@@ -93,6 +98,19 @@ fn main() {
                 with_current,
             ),
         ]
+        .into_iter()
+        .flat_map(|(name, doc, defines)| {
+            let mut textured = defines.clone();
+            textured.push(TEXTURE);
+            [
+                (name.clone(), doc.clone(), defines),
+                (
+                    format!("{name}_textured"),
+                    format!("{doc} Textured: the texture environment before the color sum."),
+                    textured,
+                ),
+            ]
+        })
         .map(move |(name, doc, defines)| (v, name, doc, defines))
     });
     for (variant, name, doc, defines) in builds {

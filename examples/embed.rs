@@ -535,6 +535,7 @@ impl App {
                     index_count: mesh.indices.len() as u32,
                     vertex_offset: 0,
                 },
+                texture: None,
             };
             // SAFETY: cmd is recording inside the rendering pass `begin` started on
             // attachments of the target's formats, viewport and scissor set; the buffers live

@@ -56,6 +56,9 @@ layout(std140, set = 0, binding = 0) uniform Draw {
     uint normalize;       // NORMALIZE enabled
     float rescale;        // RESCALE_NORMAL factor, 1 when disabled
     Light lights[MAX_LIGHTS];
+    mat4 texture_matrix;  // GL_TEXTURE matrix, read by the TEXTURE variants
+    vec4 c_c;             // TEXTURE_ENV_COLOR
+    uint tex_env_mode;    // TEXTURE_ENV_MODE, TEV_* in texture.glsl
 } draw;
 
 // Specialization constants, mirrored by src/gpu/layout.rs (`SpecConstant`; a test reads the
@@ -72,6 +75,7 @@ layout(constant_id = 4) const int SPEC_SEPARATE_SPECULAR = -1;  // LIGHT_MODEL_C
 layout(constant_id = 5) const int SPEC_COLOR_MATERIAL = -1;     // COLOR_MATERIAL
 layout(constant_id = 6) const int SPEC_ANY_LOCAL_LIGHT = -1;    // some light has w != 0
 layout(constant_id = 7) const int SPEC_ANY_SPOT_LIGHT = -1;     // some light has cutoff != 180
+layout(constant_id = 8) const int SPEC_TEX_ENV = -1;            // TEXTURE_ENV_MODE, TEV_*
 
 // The state as the shader sees it: the specialization constant when set, else the uniform.
 // (The light count is chosen the same way, in light_equation: SPEC_LIGHT_COUNT < 0 reads

@@ -11,15 +11,25 @@ layout(location = 3) in vec4 color;
 layout(location = 0) out vec4 out_color;
 
 #include "lighting.glsl"
+#ifdef TEXTURE
+#include "texture.glsl"
+layout(location = 4) in vec4 stq;
+#endif
 
 void main() {
+    LitColor lit;
     if (!lighting_enabled()) {
-        out_color = color;
-        return;
+        lit.c_pri = color;
+        lit.c_sec = vec4(0.0, 0.0, 0.0, 1.0);
+    } else {
+        vec3 n = unit(normal_direction) * normal_length;
+        bool back_face = two_side() && !gl_FrontFacing;
+        lit = back_face ? light_equation(eye_position, -n, face_material(true, color))
+                        : light_equation(eye_position, n, face_material(false, color));
     }
-    vec3 n = unit(normal_direction) * normal_length;
-    bool back_face = two_side() && !gl_FrontFacing;
-    LitColor lit = back_face ? light_equation(eye_position, -n, face_material(true, color))
-                             : light_equation(eye_position, n, face_material(false, color));
+#ifdef TEXTURE
+    // After lighting, before the color sum: the secondary color is not textured.
+    lit.c_pri = texture_environment(lit.c_pri, texel_at(stq));
+#endif
     out_color = color_sum(lit);
 }

@@ -15,11 +15,20 @@ layout(location = 1) out vec3 normal_direction;
 layout(location = 2) out float normal_length;
 layout(location = 3) out vec4 color;
 
+#ifdef TEXTURE
+// Texture coordinates, as in vertex.vert.
+layout(location = 3) in vec2 in_texcoord;
+layout(location = 4) out vec4 stq;
+#endif
+
 #include "draw.glsl"
 
 void main() {
     eye_position = draw.modelview * vec4(in_position, 1.0);
     gl_Position = draw.projection * eye_position;
+#ifdef TEXTURE
+    stq = draw.texture_matrix * vec4(in_texcoord, 0.0, 1.0);
+#endif
     vec3 n = eye_normal(in_normal);
     normal_length = length(n);
     normal_direction = normal_length > 0.0 ? n / normal_length : vec3(0.0);

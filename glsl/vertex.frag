@@ -14,6 +14,10 @@ layout(location = 3) INTERP in vec4 back_sec;
 layout(location = 0) out vec4 out_color;
 
 #include "lighting.glsl"
+#ifdef TEXTURE
+#include "texture.glsl"
+layout(location = 4) in vec4 stq;
+#endif
 
 void main() {
     LitColor lit;
@@ -23,6 +27,9 @@ void main() {
 #else
     lit.c_pri = gl_FrontFacing ? front_pri : back_pri;
     lit.c_sec = gl_FrontFacing ? front_sec : back_sec;
+#endif
+#ifdef TEXTURE
+    lit.c_pri = texture_environment(lit.c_pri, texel_at(stq));
 #endif
     out_color = color_sum(lit);
 }

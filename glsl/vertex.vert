@@ -25,11 +25,21 @@ layout(location = 2) INTERP out vec4 back_pri;
 layout(location = 3) INTERP out vec4 back_sec;
 #endif
 
+#ifdef TEXTURE
+// Texture coordinates (s, t) in, (s, t, r, q) after the texture matrix out: always
+// interpolated, whatever the shade model (GL's flat shading is about colors only).
+layout(location = 3) in vec2 in_texcoord;
+layout(location = 4) out vec4 stq;
+#endif
+
 #include "lighting.glsl"
 
 void main() {
     vec4 V = draw.modelview * vec4(in_position, 1.0);
     gl_Position = draw.projection * V;
+#ifdef TEXTURE
+    stq = draw.texture_matrix * vec4(in_texcoord, 0.0, 1.0);
+#endif
 
     if (!lighting_enabled()) {
         // Section 2.14.6: colors are clamped after lighting, whether enabled or not.

@@ -219,13 +219,16 @@ pub enum LightingError {
         slots: u32,
     },
     /// The set index is past what the device can bind.
-    #[error("set_index {index} is past the device's maxBoundDescriptorSets: expected 0..{max}")]
+    #[error("set_index {index} leaves no room for the texture's set after it within the device's maxBoundDescriptorSets: expected 0..{max}")]
     SetIndex {
         /// The index given.
         index: u32,
         /// `maxBoundDescriptorSets`.
         max: u32,
     },
+    /// A textured draw with a vertex layout that has no texture coordinates.
+    #[error("the draw is textured, but the vertex layout has no texture coordinates: expected VertexInput::texcoord")]
+    NoTexcoord,
     /// A draw passes a different number of vertex buffers than the layout has bindings.
     #[error(
         "the draw passes {given} vertex buffer(s): expected {expected}, one per binding of the vertex layout"
@@ -272,6 +275,15 @@ pub enum MeshError {
     )]
     /// A [`Mesh`](crate::Mesh) lives on another renderer's device; upload it again here.
     ForeignMesh {
+        /// Position of the offending draw in [`Frame::draws`](crate::Frame::draws).
+        draw: usize,
+    },
+
+    #[error(
+        "draw {draw}: the texture was uploaded by another renderer: expected a texture from this renderer's upload_texture"
+    )]
+    /// A [`Texture`](crate::renderer::Texture) lives on another renderer's device.
+    ForeignTexture {
         /// Position of the offending draw in [`Frame::draws`](crate::Frame::draws).
         draw: usize,
     },

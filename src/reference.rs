@@ -1,10 +1,14 @@
 //! The CPU reference: GL 2.1's lighting equation (section 2.14.1) in double precision,
 //! written from the spec page independently of the GLSL, plus the vertex transform and the
-//! interpolation tests need to predict a pixel. Tests and `ffvk explain` use it.
+//! interpolation tests need to predict a pixel, and texturing ([`texture`]) with the color
+//! sum after it. Tests and `ffvk explain` use it.
+
+pub mod texture;
 
 use glam::{DMat3, DVec3, DVec4, Mat4};
 
 use crate::gl::state::{ColorControl, Light, LightingMode, LightingState, Material};
+use crate::gl::texture::{texturing_applies, Sampling, TextureImage};
 use crate::mesh::Vertex;
 
 /// One light's share of the sum, before clamping (what `ffvk explain` prints).
@@ -216,6 +220,8 @@ pub struct EyeVertex {
     pub normal: DVec3,
     /// The vertex's color (GL's current color), not yet clamped.
     pub color: DVec4,
+    /// (s, t, 0, 1) through the texture matrix: (s, t, r, q), not yet divided by q.
+    pub texcoord: DVec4,
 }
 
 /// Runs the vertex stage on the CPU for object-space vertex `v`, in double precision.
@@ -226,6 +232,7 @@ pub fn transform(state: &LightingState, modelview: Mat4, projection: Mat4, v: &V
         clip: projection.as_dmat4() * eye,
         normal: eye_normal(state, modelview, DVec3::from(v.normal.map(f64::from))),
         color: DVec4::from(v.color.map(f64::from)),
+        texcoord: texture::transform_st(&state.texture, v.texcoord),
     }
 }
 
@@ -259,6 +266,11 @@ pub fn vertex_color(state: &LightingState, v: &EyeVertex, back: bool) -> (DVec4,
 pub struct Coverage {
     /// Perspective-correct barycentric weights of the three vertices.
     pub weights: DVec3,
+    /// The same weights one pixel to the right and one pixel down (outside the triangle
+    /// possibly): the screen-space derivatives that texturing's level of detail needs.
+    pub weights_dx: DVec3,
+    /// See `weights_dx`.
+    pub weights_dy: DVec3,
     /// Whether the window-space winding is counter-clockwise (GL's front under FrontFace(CCW)).
     pub front: bool,
 }
@@ -283,57 +295,113 @@ pub fn coverage(clip: [DVec4; 3], width: u32, height: u32, px: u32, py: u32) -> 
     if area == 0.0 {
         return None;
     }
-    let b0 = edge(p[1], p[2], (x, y)) / area;
-    let b1 = edge(p[2], p[0], (x, y)) / area;
-    let b2 = edge(p[0], p[1], (x, y)) / area;
-    if b0 < 0.0 || b1 < 0.0 || b2 < 0.0 {
+    let screen = |x: f64, y: f64| {
+        DVec3::new(
+            edge(p[1], p[2], (x, y)) / area,
+            edge(p[2], p[0], (x, y)) / area,
+            edge(p[0], p[1], (x, y)) / area,
+        )
+    };
+    // Perspective correction: weight by 1/w and renormalize.
+    let correct = |b: DVec3| {
+        let w = b / DVec3::new(clip[0].w, clip[1].w, clip[2].w);
+        w / (w.x + w.y + w.z)
+    };
+    let b = screen(x, y);
+    if b.x < 0.0 || b.y < 0.0 || b.z < 0.0 {
         return None;
     }
-    // Perspective correction: weight by 1/w and renormalize.
-    let w = DVec3::new(b0 / clip[0].w, b1 / clip[1].w, b2 / clip[2].w);
     // With y pointing down, a GL counter-clockwise triangle has negative `area` here.
     Some(Coverage {
-        weights: w / (w.x + w.y + w.z),
+        weights: correct(b),
+        weights_dx: correct(screen(x + 1.0, y)),
+        weights_dy: correct(screen(x, y + 1.0)),
         front: area < 0.0,
     })
 }
 
+/// A texture bound to a draw: its image and its sampling parameters.
+pub type Bound<'a> = (&'a TextureImage, &'a Sampling);
+
+/// Everything the CPU predicts at one pixel.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PixelTerms {
+    /// The primary color reaching the fragment (interpolated, provoking or lit there).
+    pub c_pri: DVec4,
+    /// The secondary color reaching the fragment.
+    pub c_sec: DVec4,
+    /// What texturing did, when it applies.
+    pub textured: Option<texture::Textured>,
+    /// The final color: the color sum of the (textured) primary and the secondary color.
+    pub color: DVec4,
+}
+
 /// What ffvk should draw at a pixel covered by triangle `tri` (object-space vertices, in
-/// order), in `state.mode`: the CPU prediction tests compare the GPU with.
+/// order), in `state.mode`, with `texture` bound: the CPU prediction tests compare the GPU
+/// with.
 pub fn pixel_color(
     state: &LightingState,
     modelview: Mat4,
     projection: Mat4,
     tri: [&Vertex; 3],
     cov: Coverage,
+    texture: Option<Bound>,
 ) -> DVec4 {
+    pixel_terms(state, modelview, projection, tri, cov, texture).color
+}
+
+/// [`pixel_color`] with the colors before the color sum and the texturing terms.
+pub fn pixel_terms(
+    state: &LightingState,
+    modelview: Mat4,
+    projection: Mat4,
+    tri: [&Vertex; 3],
+    cov: Coverage,
+    texture: Option<Bound>,
+) -> PixelTerms {
     let v = tri.map(|t| transform(state, modelview, projection, t));
     let back = !cov.front;
+    let at = |w: DVec3, f: &dyn Fn(&EyeVertex) -> DVec4| f(&v[0]) * w.x + f(&v[1]) * w.y + f(&v[2]) * w.z;
     let w = cov.weights;
-    match state.mode {
+    let (c_pri, c_sec) = match state.mode {
         LightingMode::Vertex => {
             let c = v.map(|e| vertex_color(state, &e, back));
-            let pri = c[0].0 * w.x + c[1].0 * w.y + c[2].0 * w.z;
-            let sec = c[0].1 * w.x + c[1].1 * w.y + c[2].1 * w.z;
-            color_sum(pri, sec)
+            (
+                c[0].0 * w.x + c[1].0 * w.y + c[2].0 * w.z,
+                c[0].1 * w.x + c[1].1 * w.y + c[2].1 * w.z,
+            )
         }
-        LightingMode::Flat => {
-            let (pri, sec) = vertex_color(state, &v[2], back);
-            color_sum(pri, sec)
+        LightingMode::Flat => vertex_color(state, &v[2], back),
+        LightingMode::Fragment if !state.lighting => {
+            // Unlit: the clamped vertex colors, interpolated, as in vertex mode.
+            let c = v.map(|e| vertex_color(state, &e, back).0);
+            (
+                c[0] * w.x + c[1] * w.y + c[2] * w.z,
+                DVec4::new(0.0, 0.0, 0.0, 1.0),
+            )
         }
         LightingMode::Fragment => {
-            let eye = v[0].eye * w.x + v[1].eye * w.y + v[2].eye * w.z;
-            let color = v[0].color * w.x + v[1].color * w.y + v[2].color * w.z;
-            if !state.lighting {
-                // Unlit: the clamped vertex colors, interpolated, as in vertex mode.
-                let c = v.map(|e| vertex_color(state, &e, back).0);
-                return c[0] * w.x + c[1] * w.y + c[2] * w.z;
-            }
+            let eye = at(w, &|e| e.eye);
+            let color = at(w, &|e| e.color);
             let dirs = v.map(|e| unit(e.normal));
             let lens = v.map(|e| e.normal.length());
             let dir = dirs[0] * w.x + dirs[1] * w.y + dirs[2] * w.z;
             let len = lens[0] * w.x + lens[1] * w.y + lens[2] * w.z;
-            light_face(state, eye, unit(dir) * len, color, back).color()
+            let lit = light_face(state, eye, unit(dir) * len, color, back);
+            (lit.c_pri, lit.c_sec)
         }
+    };
+    let textured = texture
+        .filter(|&(image, sampling)| texturing_applies(&state.texture, Some((image, sampling))))
+        .map(|(image, sampling)| {
+            let stq = [cov.weights, cov.weights_dx, cov.weights_dy].map(|w| at(w, &|e| e.texcoord));
+            texture::texture_fragment(&state.texture, image, sampling, stq, c_pri)
+        });
+    let textured_pri = textured.map_or(c_pri, |t| t.env);
+    PixelTerms {
+        c_pri,
+        c_sec,
+        textured,
+        color: color_sum(textured_pri, c_sec),
     }
 }

@@ -7,16 +7,19 @@
 //! and index buffers, synchronization and submission; ffvk touches none of them beyond
 //! recording commands into the command buffer it is given. A [`Lighting`] owns what it
 //! creates: one descriptor set layout (binding 0, `UNIFORM_BUFFER_DYNAMIC`, vertex and
-//! fragment stages; empty layouts for the sets below [`LightingOptions::set_index`]), one
-//! pipeline layout (no push constants), a pipeline cache unless the caller passes one, the
+//! fragment stages; empty layouts for the sets below [`LightingOptions::set_index`]), the
+//! texture's layout for the set after it (binding 0, `COMBINED_IMAGE_SAMPLER`, fragment
+//! stage), one pipeline layout (no push constants), a pipeline cache unless the caller passes one, the
 //! pipelines (created on first use per lighting mode, specialization key and
 //! [`RasterState`]), and for each frame slot host-visible, coherent uniform memory with its
-//! descriptor sets. Dropping it frees all of that; the caller must first make sure no
+//! descriptor sets; and the [`TextureBinding`]s the caller asks for (a descriptor set naming
+//! the caller's image view and sampler), which the caller holds. Dropping it frees all of that; the caller must first make sure no
 //! submitted command buffer still uses it (wait for its fences or the device).
 //!
 //! [`Lighting::draw`] records, into the caller's command buffer inside the caller's dynamic
 //! rendering pass (`vkCmdBeginRendering`; render passes are not supported): bind pipeline,
-//! bind the descriptor set at the draw's dynamic offset, bind the caller's vertex buffers
+//! bind the descriptor set at the draw's dynamic offset (and, textured, the texture's set
+//! after it), bind the caller's vertex buffers
 //! (and index buffer), draw. The commands read the caller's vertex and index buffers and
 //! ffvk's uniform memory, and write the caller's color attachment (and depth attachment when
 //! the draw's [`RasterState`] tests depth), with blending as that state says. They need the
@@ -56,6 +59,7 @@ use super::pipeline::{
 };
 use super::record::{record, Bound, Geometry};
 use super::ring::UniformRing;
+use super::texture::TextureBinding;
 use crate::error::{LightingError, Result};
 use crate::gl::state::LightingState;
 use crate::gpu::layout::{DrawBlock, SpecKey};
@@ -117,6 +121,12 @@ pub struct LitDraw<'a> {
     pub vertex_buffers: &'a [(vk::Buffer, u64)],
     /// Which vertices to draw.
     pub geometry: Geometry,
+    /// The texture bound to `GL_TEXTURE_2D` ([`Lighting::bind_texture`]); it is sampled when
+    /// [`TextureUnit::enabled`](crate::gl::texture::TextureUnit::enabled) is on too. `None` is
+    /// GL's texture object 0, which textures nothing. Whether the texture is complete for its
+    /// sampler (mipmaps where the min filter reads them) is the caller's to ensure, as GL's
+    /// completeness rule is about the caller's image.
+    pub texture: Option<&'a TextureBinding>,
 }
 
 // Recording takes &mut self; the type itself may move between and be shared by threads.
@@ -142,11 +152,12 @@ impl Lighting {
     /// ([`Device::from_caller`](crate::vk::Device::from_caller)). Fails on an invalid vertex
     /// layout, zero frame slots, or a set index the device cannot bind.
     pub fn new(device: &Arc<Device>, options: &LightingOptions) -> Result<Self> {
+        // The texture's set goes right after the block's.
         let max_sets = device.limits.max_bound_descriptor_sets;
-        if options.set_index >= max_sets {
+        if options.set_index + 1 >= max_sets {
             return Err(LightingError::SetIndex {
                 index: options.set_index,
-                max: max_sets,
+                max: max_sets - 1,
             }
             .into());
         }
@@ -185,10 +196,29 @@ impl Lighting {
         self.ring.slots()
     }
 
-    /// Creates the pipeline a draw of `state` with `raster` would use, so that the first such
-    /// draw does not pay for it (pipeline creation is the slow part of a cold start).
-    pub fn prepare(&mut self, state: &LightingState, raster: RasterState) -> Result<()> {
-        self.pipeline_for(state, raster).map(|_| ())
+    /// Creates the pipeline a draw of `state` with `raster`, textured or not, would use, so
+    /// that the first such draw does not pay for it (pipeline creation is the slow part of a
+    /// cold start).
+    pub fn prepare(&mut self, state: &LightingState, raster: RasterState, textured: bool) -> Result<()> {
+        self.pipeline_for(state, raster, textured && state.texture.enabled)
+            .map(|_| ())
+    }
+
+    /// A descriptor set naming the caller's image `view` and `sampler`, for
+    /// [`LitDraw::texture`]. The view is a 2D color view the fragment stage samples as floats
+    /// (e.g. `R8G8B8A8_UNORM`, or `R8G8B8A8_SRGB` for GL's `GL_SRGB8_ALPHA8`), in
+    /// `SHADER_READ_ONLY_OPTIMAL` layout whenever a draw that uses it executes;
+    /// [`sampler_info`](super::texture::sampler_info) makes a sampler that samples as GL's
+    /// texture parameters say. The binding holds no reference to either: the caller keeps
+    /// both alive as long as the binding may be drawn with.
+    ///
+    /// # Safety
+    ///
+    /// `view` and `sampler` are live objects of this device and outlive every command buffer
+    /// that draws with the returned binding.
+    pub unsafe fn bind_texture(&self, view: vk::ImageView, sampler: vk::Sampler) -> Result<TextureBinding> {
+        // SAFETY: the caller's contract above.
+        unsafe { TextureBinding::new(&self.device, self.pipelines.texture_set_layout(), view, sampler) }
     }
 
     /// How many pipelines exist, and how many of them are specialized.
@@ -230,13 +260,18 @@ impl Lighting {
             .into());
         }
         let block = DrawBlock::new(draw.state, draw.modelview, draw.projection)?;
-        let pipeline = self.pipeline_for(draw.state, draw.raster)?;
+        let pipeline = self.pipeline_for(draw.state, draw.raster, Self::textured(draw))?;
         let (set, uniform_offset) = self.ring.push(slot, &block, self.pipelines.set_layout())?;
         Ok(Staged {
             pipeline,
             set,
             uniform_offset,
         })
+    }
+
+    /// Whether `draw` samples its texture: one is bound and `GL_TEXTURE_2D` is on.
+    fn textured(draw: &LitDraw) -> bool {
+        draw.texture.is_some() && draw.state.texture.enabled
     }
 
     /// The second half of [`Lighting::draw`]: binds what `staged` found and draws.
@@ -253,6 +288,10 @@ impl Lighting {
             set_index: config.set_index,
             set: staged.set,
             uniform_offset: staged.uniform_offset,
+            texture_set: draw
+                .texture
+                .filter(|_| Self::textured(draw))
+                .map(TextureBinding::set),
             bindings: &config.vertex_input.bindings,
             vertex_buffers: draw.vertex_buffers,
         };
@@ -261,15 +300,22 @@ impl Lighting {
         unsafe { record(&self.device.raw, cmd, &bound, &draw.geometry) };
     }
 
-    /// The pipeline a draw with `state` and `raster` uses under the [`Specialize`] policy.
-    fn pipeline_for(&mut self, state: &LightingState, raster: RasterState) -> Result<vk::Pipeline> {
+    /// The pipeline a draw with `state` and `raster`, textured or not, uses under the
+    /// [`Specialize`] policy.
+    fn pipeline_for(
+        &mut self,
+        state: &LightingState,
+        raster: RasterState,
+        textured: bool,
+    ) -> Result<vk::Pipeline> {
         let mode = state.mode;
         let key = match self.specialize {
             Specialize::Never => SpecKey::UBER,
             Specialize::Always => SpecKey::for_state(state),
             Specialize::Auto => {
                 let key = SpecKey::for_state(state);
-                if self.pipelines.contains(mode, key, raster) || self.pipelines.counts().1 < MAX_AUTO_VARIANTS
+                if self.pipelines.contains(mode, key, raster, textured)
+                    || self.pipelines.counts().1 < MAX_AUTO_VARIANTS
                 {
                     key
                 } else {
@@ -277,6 +323,6 @@ impl Lighting {
                 }
             }
         };
-        self.pipelines.get(mode, key, raster)
+        self.pipelines.get(mode, key, raster, textured)
     }
 }

@@ -1,8 +1,10 @@
 //! Pipelines per lighting mode, specialization key and raster state; the per-draw state
-//! memory; the recording of draws; and [`lighting::Lighting`], which puts them together for
+//! memory; the recording of draws; the texture a draw samples ([`texture`]); and
+//! [`lighting::Lighting`], which puts them together for
 //! a caller's device and command buffers.
 
 pub mod lighting;
 pub mod pipeline;
 pub mod record;
 mod ring;
+pub mod texture;

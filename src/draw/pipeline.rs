@@ -32,21 +32,18 @@ pub fn one_color(key: SpecKey) -> bool {
 }
 
 /// The name of the shader variant a mode's pipeline specialized by `key` uses: the mode's
-/// name, with `_one_color` when [`one_color`] holds for a per-vertex mode, and with
-/// `_current_color` when the mesh has no color array (`color_array` false).
-pub fn variant_name(mode: LightingMode, key: SpecKey, color_array: bool) -> &'static str {
-    match (mode, one_color(key), color_array) {
-        (LightingMode::Vertex, false, true) => "vertex",
-        (LightingMode::Vertex, true, true) => "vertex_one_color",
-        (LightingMode::Fragment, _, true) => "fragment",
-        (LightingMode::Flat, false, true) => "flat",
-        (LightingMode::Flat, true, true) => "flat_one_color",
-        (LightingMode::Vertex, false, false) => "vertex_current_color",
-        (LightingMode::Vertex, true, false) => "vertex_one_color_current_color",
-        (LightingMode::Fragment, _, false) => "fragment_current_color",
-        (LightingMode::Flat, false, false) => "flat_current_color",
-        (LightingMode::Flat, true, false) => "flat_one_color_current_color",
-    }
+/// name, with `_one_color` when [`one_color`] holds for a per-vertex mode, with
+/// `_current_color` when the mesh has no color array (`color_array` false), and with
+/// `_textured` when the draw samples a texture.
+pub fn variant_name(mode: LightingMode, key: SpecKey, color_array: bool, textured: bool) -> String {
+    let one = one_color(key) && mode != LightingMode::Fragment;
+    format!(
+        "{}{}{}{}",
+        mode.name(),
+        if one { "_one_color" } else { "" },
+        if color_array { "" } else { "_current_color" },
+        if textured { "_textured" } else { "" },
+    )
 }
 
 /// A shader module from embedded SPIR-V bytes, its descriptor set moved to `set`.
@@ -57,8 +54,9 @@ fn shader_module(device: &Arc<Device>, name: &str, bytes: &[u8], set: u32) -> Re
     ShaderModule::new(device, &words)
 }
 
-/// Rewrites every `OpDecorate … DescriptorSet n` of a SPIR-V module to `set`: the GLSL
-/// declares its one uniform block in set 0, and callers choose where it goes.
+/// Adds `set` to every `OpDecorate … DescriptorSet n` of a SPIR-V module: the GLSL declares
+/// its uniform block in set 0 and the texture in set 1, and callers choose where the block
+/// goes (the texture follows it).
 pub fn set_descriptor_set(words: &mut [u32], set: u32) {
     const OP_DECORATE: u32 = 71;
     const DESCRIPTOR_SET: u32 = 34;
@@ -70,7 +68,7 @@ pub fn set_descriptor_set(words: &mut [u32], set: u32) {
             break;
         }
         if words[at] & 0xffff == OP_DECORATE && count == 4 && words[at + 2] == DESCRIPTOR_SET {
-            words[at + 3] = set;
+            words[at + 3] += set;
         }
         at += count;
     }
@@ -165,8 +163,8 @@ pub struct VertexInput {
     /// Per-vertex color (`glColorPointer`); `None`: every vertex takes GL's current color
     /// ([`LightingState::current_color`](crate::gl::state::LightingState::current_color)).
     pub color: Option<Attribute>,
-    /// Texture coordinate (`glTexCoordPointer`): validated and kept for texturing, which does
-    /// not exist yet; no shader reads it.
+    /// Texture coordinates (s, t) (`glTexCoordPointer` with size 2), read at location 3 by
+    /// textured draws, which fail without it ([`LightingError::NoTexcoord`]).
     pub texcoord: Option<Attribute>,
 }
 
@@ -207,7 +205,10 @@ impl VertexInput {
                 std::mem::offset_of!(Vertex, color),
                 vk::Format::R32G32B32A32_SFLOAT,
             )),
-            texcoord: None,
+            texcoord: Some(attribute(
+                std::mem::offset_of!(Vertex, texcoord),
+                vk::Format::R32G32_SFLOAT,
+            )),
         }
     }
 
@@ -252,9 +253,9 @@ impl VertexInput {
         Ok(())
     }
 
-    /// The attribute descriptions the pipelines use: locations 0, 1 and (with a color
-    /// array) 2.
-    fn attributes(&self) -> Vec<vk::VertexInputAttributeDescription> {
+    /// The attribute descriptions the pipelines use: locations 0, 1, (with a color array) 2
+    /// and (textured) 3.
+    fn attributes(&self, textured: bool) -> Vec<vk::VertexInputAttributeDescription> {
         let described = |location, a: Attribute| vk::VertexInputAttributeDescription {
             location,
             binding: a.binding,
@@ -264,6 +265,9 @@ impl VertexInput {
         let mut out = vec![described(0, self.position), described(1, self.normal)];
         if let Some(color) = self.color {
             out.push(described(2, color));
+        }
+        if let (true, Some(texcoord)) = (textured, self.texcoord) {
+            out.push(described(3, texcoord));
         }
         out
     }
@@ -349,6 +353,7 @@ struct PipelineKey {
     mode: LightingMode,
     spec: SpecKey,
     raster: RasterState,
+    textured: bool,
 }
 
 /// The descriptor layouts, pipeline layout, cache and the pipelines made so far.
@@ -361,6 +366,8 @@ pub struct Pipelines {
     _own_cache: Option<PipelineCache>,
     layout: PipelineLayout,
     set_layout: DescriptorSetLayout,
+    /// The texture's set, right after `set_layout`'s.
+    texture_set_layout: DescriptorSetLayout,
     /// Empty layouts for the sets below `set_index`.
     _lower_sets: Vec<DescriptorSetLayout>,
     config: PipelineConfig,
@@ -380,8 +387,10 @@ impl Pipelines {
         let lower_sets = (0..config.set_index)
             .map(|_| DescriptorSetLayout::new(device, &[]))
             .collect::<Result<Vec<_>>>()?;
+        let texture_set_layout = super::texture::set_layout(device)?;
         let mut set_layouts: Vec<&DescriptorSetLayout> = lower_sets.iter().collect();
         set_layouts.push(&set_layout);
+        set_layouts.push(&texture_set_layout);
         let layout = PipelineLayout::new(device, &set_layouts)?;
         let (cache, own_cache) = match config.cache {
             Some(caller) => (caller, None),
@@ -396,6 +405,7 @@ impl Pipelines {
             _own_cache: own_cache,
             layout,
             set_layout,
+            texture_set_layout,
             _lower_sets: lower_sets,
             config,
             device: device.clone(),
@@ -406,6 +416,12 @@ impl Pipelines {
     /// dynamic offset).
     pub fn set_layout(&self) -> &DescriptorSetLayout {
         &self.set_layout
+    }
+
+    /// The layout of a texture's descriptor set (binding 0: a combined image sampler), at the
+    /// set after the uniform block's.
+    pub fn texture_set_layout(&self) -> &DescriptorSetLayout {
+        &self.texture_set_layout
     }
 
     /// The pipeline layout every pipeline uses.
@@ -419,12 +435,19 @@ impl Pipelines {
     }
 
     /// The pipeline of `mode` specialized by `key` ([`SpecKey::UBER`]: the uber-shader) with
-    /// `raster`, created on first use.
-    pub fn get(&mut self, mode: LightingMode, key: SpecKey, raster: RasterState) -> Result<vk::Pipeline> {
+    /// `raster`, textured or not, created on first use.
+    pub fn get(
+        &mut self,
+        mode: LightingMode,
+        key: SpecKey,
+        raster: RasterState,
+        textured: bool,
+    ) -> Result<vk::Pipeline> {
         let k = PipelineKey {
             mode,
             spec: key,
             raster,
+            textured,
         };
         if let Some(pipeline) = self.pipelines.get(&k) {
             return Ok(pipeline.raw());
@@ -435,12 +458,13 @@ impl Pipelines {
         Ok(raw)
     }
 
-    /// Whether the pipeline of `mode`, `key` and `raster` exists already.
-    pub fn contains(&self, mode: LightingMode, key: SpecKey, raster: RasterState) -> bool {
+    /// Whether the pipeline of `mode`, `key`, `raster` and `textured` exists already.
+    pub fn contains(&self, mode: LightingMode, key: SpecKey, raster: RasterState, textured: bool) -> bool {
         self.pipelines.contains_key(&PipelineKey {
             mode,
             spec: key,
             raster,
+            textured,
         })
     }
 
@@ -463,7 +487,11 @@ impl Pipelines {
         if k.raster.depth_test && config.target.depth_format == vk::Format::UNDEFINED {
             return Err(LightingError::NoDepthAttachment.into());
         }
-        let name = variant_name(k.mode, k.spec, config.vertex_input.color.is_some());
+        if k.textured && config.vertex_input.texcoord.is_none() {
+            return Err(LightingError::NoTexcoord.into());
+        }
+        let name = variant_name(k.mode, k.spec, config.vertex_input.color.is_some(), k.textured);
+        let name = name.as_str();
         let variant = shaders::variant(name)
             .ok_or_else(|| Error::MissingFeature(format!("the embedded shader variant {name}")))?;
         let vert = shader_module(device, name, variant.vertex, config.set_index)?;
@@ -495,7 +523,7 @@ impl Pipelines {
                 *stage = stage.specialization_info(&specialization);
             }
         }
-        let attributes = config.vertex_input.attributes();
+        let attributes = config.vertex_input.attributes(k.textured);
         let vertex_input = vk::PipelineVertexInputStateCreateInfo::default()
             .vertex_binding_descriptions(&config.vertex_input.bindings)
             .vertex_attribute_descriptions(&attributes);

@@ -43,6 +43,9 @@ pub(crate) struct Bound<'a> {
     pub set: vk::DescriptorSet,
     /// Offset of this draw's block, a multiple of `minUniformBufferOffsetAlignment`.
     pub uniform_offset: u32,
+    /// The texture's set (binding 0: a combined image sampler), bound at `set_index + 1`,
+    /// for a textured draw.
+    pub texture_set: Option<vk::DescriptorSet>,
     /// The pipeline's vertex binding numbers.
     pub bindings: &'a [vk::VertexInputBindingDescription],
     /// One (buffer, byte offset) per entry of `bindings`.
@@ -76,6 +79,19 @@ pub(crate) unsafe fn record(
             &[bound.uniform_offset],
         )
     };
+    if let Some(set) = bound.texture_set {
+        // SAFETY: as above; the texture's set is the one after the block's in the layout.
+        unsafe {
+            device.cmd_bind_descriptor_sets(
+                cmd,
+                vk::PipelineBindPoint::GRAPHICS,
+                bound.layout,
+                bound.set_index + 1,
+                &[set],
+                &[],
+            )
+        };
+    }
     for (binding, &(buffer, offset)) in bound.bindings.iter().zip(bound.vertex_buffers) {
         // SAFETY: as above; one buffer per binding of the pipeline.
         unsafe { device.cmd_bind_vertex_buffers(cmd, binding.binding, &[buffer], &[offset]) };

@@ -15,6 +15,8 @@
 
 use glam::{Mat3, Mat4, Vec3, Vec4};
 
+use super::texture::{TexEnvMode, TextureUnit};
+
 /// Lights ffvk evaluates per draw (GL_MAX_LIGHTS). GL requires at least 8.
 pub const MAX_LIGHTS: usize = 16;
 
@@ -163,9 +165,9 @@ pub enum ColorControl {
     /// `GL_SINGLE_COLOR` (the default): specular is part of c_pri; c_sec is (0, 0, 0, 1).
     #[default]
     SingleColor,
-    /// `GL_SEPARATE_SPECULAR_COLOR`: specular goes to c_sec, which GL adds after texturing.
-    /// ffvk has no textures, so here only the clamping differs: each color is clamped before
-    /// the color sum.
+    /// `GL_SEPARATE_SPECULAR_COLOR`: specular goes to c_sec, which GL adds after texturing
+    /// (so a texture does not darken the highlight); untextured, only the clamping differs:
+    /// each color is clamped before the color sum.
     SeparateSpecularColor,
 }
 
@@ -336,6 +338,17 @@ pub enum Cap {
     /// `GL_RESCALE_NORMAL`: eye-space normals are scaled to undo a uniform scale in the
     /// modelview (the factor comes from the third row of its inverse).
     RescaleNormal,
+    /// `GL_TEXTURE_2D`: texturing with the bound texture, when it is complete.
+    Texture2D,
+}
+
+/// Parameters of glTexEnv (target `GL_TEXTURE_ENV`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum TexEnvParam {
+    /// `GL_TEXTURE_ENV_MODE`.
+    Mode(TexEnvMode),
+    /// `GL_TEXTURE_ENV_COLOR`, C_c: clamped to [0, 1] as GL does; NaN or infinity is an error.
+    Color(Vec4),
 }
 
 /// Parameters of glLight.
@@ -410,6 +423,9 @@ pub struct LightingState {
     pub model: LightModel,
     /// glColorMaterial state.
     pub color_material: ColorMaterial,
+    /// `GL_TEXTURE_2D`, glTexEnv and the texture matrix: how a bound texture is applied to the
+    /// primary color before the color sum.
+    pub texture: TextureUnit,
     /// `GL_NORMALIZE`; off by default, so a scaled modelview lights with unnormalized normals.
     pub normalize: bool,
     /// `GL_RESCALE_NORMAL`; off by default.
@@ -431,6 +447,7 @@ impl Default for LightingState {
             back: Material::default(),
             model: LightModel::default(),
             color_material: ColorMaterial::default(),
+            texture: TextureUnit::default(),
             normalize: false,
             rescale_normal: false,
             mode: LightingMode::Vertex,
@@ -447,6 +464,7 @@ impl LightingState {
         self.back.validate()?;
         finite_vec("GL_LIGHT_MODEL_AMBIENT", self.model.ambient.to_array().as_slice())?;
         finite_vec("GL_CURRENT_COLOR", self.current_color.to_array().as_slice())?;
+        self.texture.validate()?;
         for light in &self.lights {
             validate_light(light)?;
         }
@@ -701,7 +719,27 @@ impl GlState {
             }
             Cap::Normalize => self.lighting.normalize = on,
             Cap::RescaleNormal => self.lighting.rescale_normal = on,
+            Cap::Texture2D => self.lighting.texture.enabled = on,
         }
+        Ok(())
+    }
+
+    /// glTexEnv on `GL_TEXTURE_ENV`.
+    pub fn tex_env(&mut self, param: TexEnvParam) -> Result<(), StateError> {
+        match param {
+            TexEnvParam::Mode(mode) => self.lighting.texture.env_mode = mode,
+            TexEnvParam::Color(c) => {
+                let c = finite4("GL_TEXTURE_ENV_COLOR", c)?;
+                self.lighting.texture.env_color = c.clamp(Vec4::ZERO, Vec4::ONE);
+            }
+        }
+        Ok(())
+    }
+
+    /// glLoadMatrix on the `GL_TEXTURE` stack.
+    pub fn load_texture_matrix(&mut self, m: Mat4) -> Result<(), StateError> {
+        finite_vec("GL_TEXTURE matrix", &m.to_cols_array())?;
+        self.lighting.texture.matrix = m;
         Ok(())
     }
 

@@ -152,6 +152,14 @@ pub struct DrawBlock {
     /// The enabled lights packed in index order, so entry i is not necessarily `GL_LIGHTi`;
     /// entries from `light_count` on are zeroed.
     pub lights: [GpuLight; MAX_LIGHTS],
+    /// The `GL_TEXTURE` matrix, column-major (read by the textured variants).
+    pub texture_matrix: [f32; 16],
+    /// `GL_TEXTURE_ENV_COLOR`, RGBA in [0, 1].
+    pub c_c: [f32; 4],
+    /// `GL_TEXTURE_ENV_MODE` as [`TexEnvMode::code`](crate::gl::texture::TexEnvMode::code).
+    pub tex_env_mode: u32,
+    /// Rounds the block up to 16 bytes; always zero.
+    pub _pad_end: [u32; 3],
 }
 
 /// The specialization constants of `glsl/draw.glsl`, by `constant_id`. Each is an `int`
@@ -178,10 +186,14 @@ pub enum SpecConstant {
     /// `SPEC_ANY_SPOT_LIGHT`: 0 promises that no enabled light is a spot (cutoff ≠ 180), so
     /// the shader skips the cone; 1 means some may be.
     AnySpotLight = 7,
+    /// `SPEC_TEX_ENV`: `GL_TEXTURE_ENV_MODE` as
+    /// [`TexEnvMode::code`](crate::gl::texture::TexEnvMode::code); read only by the textured
+    /// variants.
+    TexEnv = 8,
 }
 
 /// How many specialization constants there are.
-pub const SPEC_CONSTANT_COUNT: usize = 8;
+pub const SPEC_CONSTANT_COUNT: usize = 9;
 
 impl SpecConstant {
     /// Every constant, in `constant_id` order.
@@ -194,6 +206,7 @@ impl SpecConstant {
         SpecConstant::ColorMaterial,
         SpecConstant::AnyLocalLight,
         SpecConstant::AnySpotLight,
+        SpecConstant::TexEnv,
     ];
 
     /// The `constant_id` in the GLSL.
@@ -212,6 +225,7 @@ impl SpecConstant {
             SpecConstant::ColorMaterial => "SPEC_COLOR_MATERIAL",
             SpecConstant::AnyLocalLight => "SPEC_ANY_LOCAL_LIGHT",
             SpecConstant::AnySpotLight => "SPEC_ANY_SPOT_LIGHT",
+            SpecConstant::TexEnv => "SPEC_TEX_ENV",
         }
     }
 }
@@ -238,9 +252,13 @@ impl SpecKey {
 
     /// A key with every constant fixed to `state`'s values. States that light the same way
     /// share a key: unlit states have one key, and what cannot matter is zeroed (the light
-    /// model and light kinds without lights).
+    /// model and light kinds without lights). The environment mode counts only while
+    /// `GL_TEXTURE_2D` is enabled.
     pub fn for_state(state: &LightingState) -> SpecKey {
         let mut values = [0; SPEC_CONSTANT_COUNT];
+        if state.texture.enabled {
+            values[SpecConstant::TexEnv as usize] = state.texture.env_mode.code() as i32;
+        }
         if !state.lighting {
             return SpecKey { values };
         }
@@ -345,6 +363,10 @@ impl DrawBlock {
             },
             _pad: 0,
             lights,
+            texture_matrix: state.texture.matrix.to_cols_array(),
+            c_c: state.texture.env_color.to_array(),
+            tex_env_mode: state.texture.env_mode.code(),
+            _pad_end: [0; 3],
         })
     }
 }

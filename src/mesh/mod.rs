@@ -2,9 +2,9 @@
 
 pub mod teapot;
 
-use glam::{Vec3, Vec4};
+use glam::{Vec2, Vec3, Vec4};
 
-/// One vertex as the vertex stage reads it (locations 0, 1, 2).
+/// One vertex as the vertex stage reads it (locations 0, 1, 2, and 3 when textured).
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct Vertex {
@@ -14,6 +14,8 @@ pub struct Vertex {
     pub normal: [f32; 3],
     /// GL's current color, RGBA; feeds COLOR_MATERIAL and unlit drawing.
     pub color: [f32; 4],
+    /// Texture coordinates (s, t); r = 0 and q = 1, as glTexCoord2f sets them.
+    pub texcoord: [f32; 2],
 }
 
 impl Vertex {
@@ -23,6 +25,15 @@ impl Vertex {
             position: position.to_array(),
             normal: normal.to_array(),
             color: color.to_array(),
+            texcoord: [0.0; 2],
+        }
+    }
+
+    /// The same vertex with texture coordinates (s, t).
+    pub fn with_texcoord(self, st: Vec2) -> Self {
+        Vertex {
+            texcoord: st.to_array(),
+            ..self
         }
     }
 }
@@ -48,7 +59,8 @@ impl MeshData {
 
 impl MeshData {
     /// A unit sphere centered at the origin, `slices` around the y axis and `stacks` from
-    /// pole to pole, with unit outward normals, counter-clockwise seen from outside, white.
+    /// pole to pole, with unit outward normals, counter-clockwise seen from outside, white;
+    /// texture coordinates s = longitude / 360°, t = colatitude / 180°.
     pub fn uv_sphere(slices: u32, stacks: u32) -> MeshData {
         let (slices, stacks) = (slices.max(3), stacks.max(2));
         let mut vertices = Vec::with_capacity(((slices + 1) * (stacks + 1)) as usize);
@@ -57,7 +69,9 @@ impl MeshData {
             for i in 0..=slices {
                 let phi = std::f32::consts::TAU * i as f32 / slices as f32;
                 let n = Vec3::new(theta.sin() * phi.sin(), theta.cos(), theta.sin() * phi.cos());
-                vertices.push(Vertex::new(n, n, Vec4::ONE));
+                // s around from the seam, t from the top pole: an image's first row is at the top.
+                let st = Vec2::new(i as f32 / slices as f32, j as f32 / stacks as f32);
+                vertices.push(Vertex::new(n, n, Vec4::ONE).with_texcoord(st));
             }
         }
         let at = |i: u32, j: u32| j * (slices + 1) + i;

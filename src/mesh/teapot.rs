@@ -322,7 +322,9 @@ pub fn teapot(level: u32) -> Result<MeshData, MeshError> {
                 let v = j as f64 / n as f64;
                 let position = to_y_up_point(patch.point(u, v)).as_vec3();
                 let normal = to_y_up_direction(patch.normal(u, v)).as_vec3().normalize();
-                vertices.push(Vertex::new(position, normal, white));
+                // Each patch takes the whole texture, (s, t) = (u, v), as glutSolidTeapot does.
+                let st = glam::Vec2::new(u as f32, v as f32);
+                vertices.push(Vertex::new(position, normal, white).with_texcoord(st));
             }
         }
         let [u0, u1, v0, v1] = patch.collapsed_edges();

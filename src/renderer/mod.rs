@@ -8,19 +8,23 @@ use glam::{Mat4, Vec4};
 use crate::draw::lighting::{Lighting, LightingOptions};
 use crate::draw::pipeline::{RasterState, Target, VertexInput};
 use crate::draw::pipeline::{Specialize, COLOR_FORMAT, DEPTH_FORMAT};
+use crate::draw::texture::sampler_info;
 use crate::error::{vk_error, Error, MeshError, Result};
 use crate::gl::state::{Face, LightingState};
+use crate::gl::texture::{Sampling, TextureImage};
 use crate::gpu::layout::DrawBlock;
 use crate::mesh::MeshData;
-use crate::vk::objects::{CommandPool, Fence};
+use crate::vk::objects::{CommandPool, Fence, Sampler};
 use crate::vk::{
     Buffer, Device, DeviceInfo, Image, Instance, MemoryUsage, MemoryUse, Validation, ValidationSink,
 };
 
 mod queries;
 mod record;
+mod texture;
 mod upload;
 use queries::Queries;
+pub use texture::Texture;
 pub use upload::Upload;
 use upload::{Part, Uploader};
 
@@ -73,6 +77,10 @@ pub struct Draw<'a> {
     /// `GL_CULL_FACE` with `glCullFace(face)`: `None` (GL's default) draws both faces;
     /// `Some(Face::Back)` drops the triangles that are clockwise on screen.
     pub cull_face: Option<Face>,
+    /// The texture bound to `GL_TEXTURE_2D` (uploaded by the same renderer): sampled when
+    /// `state.texture.enabled` is on and the texture is complete. `None`: GL's texture 0,
+    /// which textures nothing.
+    pub texture: Option<&'a Texture>,
 }
 
 impl<'a> Draw<'a> {
@@ -84,7 +92,13 @@ impl<'a> Draw<'a> {
             projection,
             state,
             cull_face: None,
+            texture: None,
         }
+    }
+
+    /// Whether this draw samples its texture: bound, complete, and `GL_TEXTURE_2D` on.
+    pub fn textured(&self) -> bool {
+        self.state.texture.enabled && self.texture.is_some_and(Texture::is_complete)
     }
 
     /// The raster state of this draw in `frame`: GL's defaults, with the frame's depth test
@@ -372,6 +386,36 @@ impl Renderer {
         })
     }
 
+    /// Uploads a texture with its sampling parameters (glTexImage2D for every level, then
+    /// glTexParameter). A texture whose min filter reads mipmaps it lacks is made anyway, as in
+    /// GL, and draws with it are untextured ([`Texture::is_complete`]).
+    pub fn upload_texture(&self, image: &TextureImage, sampling: &Sampling) -> Result<Texture> {
+        let max = self.device.limits.max_image_dimension2_d;
+        let (width, height) = (image.width(), image.height());
+        if width > max || height > max {
+            return Err(Error::InvalidSize { width, height, max });
+        }
+        let levels = image.levels.len() as u32;
+        let gpu_image = Image::with_levels(
+            &self.device,
+            vk::Extent2D { width, height },
+            texture::format(image),
+            vk::ImageUsageFlags::SAMPLED | vk::ImageUsageFlags::TRANSFER_DST,
+            vk::ImageAspectFlags::COLOR,
+            levels,
+        )?;
+        self.uploader
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner())
+            .upload_image(&self.device, &gpu_image, &image.levels)?;
+        let sampler = Sampler::new(&self.device, &sampler_info(sampling, levels))?;
+        // SAFETY: the view and sampler are this device's and live in the Texture as long as
+        // the binding (dropped first); frames that draw it are waited for before it can drop
+        // (draw_frame waits, and the Texture is borrowed by the frame).
+        let binding = unsafe { self.lighting.bind_texture(gpu_image.view(), sampler.raw()) }?;
+        Ok(Texture::new(gpu_image, sampler, binding, image, sampling))
+    }
+
     fn ensure_targets(&mut self, width: u32, height: u32) -> Result<()> {
         let max = self.device.limits.max_image_dimension2_d;
         if width == 0 || height == 0 || width > max || height > max {
@@ -477,13 +521,18 @@ impl Renderer {
             if !Arc::ptr_eq(d.mesh.vertices.device(), &self.device) {
                 return Err(MeshError::ForeignMesh { draw: i }.into());
             }
+            if d.texture
+                .is_some_and(|t| !Arc::ptr_eq(t.image.device(), &self.device))
+            {
+                return Err(MeshError::ForeignTexture { draw: i }.into());
+            }
         }
         self.ensure_targets(frame.width, frame.height)?;
         // Every state is checked and every pipeline made before recording starts, so that a
         // bad draw records nothing and pipeline creation never lands inside a measured frame.
         for d in &frame.draws {
             DrawBlock::new(&d.state, d.modelview, d.projection)?;
-            self.lighting.prepare(&d.state, d.raster(frame))?;
+            self.lighting.prepare(&d.state, d.raster(frame), d.textured())?;
         }
         debug_assert!(
             !pass.statistics || pass.repeat == 1,
@@ -541,7 +590,7 @@ impl Renderer {
             ..RasterState::default()
         };
         let start = std::time::Instant::now();
-        self.lighting.prepare(state, raster)?;
+        self.lighting.prepare(state, raster, false)?;
         Ok(start.elapsed().as_nanos() as f64)
     }
 

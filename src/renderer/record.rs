@@ -202,6 +202,7 @@ unsafe fn record_pass(
                 index_count: mesh.index_count,
                 vertex_offset: 0,
             },
+            texture: draw.texture.filter(|_| draw.textured()).map(|t| &t.binding),
         };
         // Recording below is safe: inside the rendering pass begun above, whose formats are
         // the Target::OFFSCREEN the lighting was made for, viewport and scissor set; the mesh

@@ -7,8 +7,9 @@ use std::sync::Arc;
 use ash::vk;
 
 use crate::error::{vk_error, Result};
+use crate::gl::texture::Level;
 use crate::vk::objects::{CommandPool, Fence};
-use crate::vk::{Buffer, Device, MemoryUse};
+use crate::vk::{Buffer, Device, Image, MemoryUse};
 
 /// How meshes reach device-local memory.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -97,6 +98,96 @@ impl Uploader {
         self.record(device, &staging, &copies, read_stage, read_access)?;
         self.submit_and_wait(device)?;
         Ok(buffers)
+    }
+
+    /// Fills every level of `image` (a color image with `TRANSFER_DST` and `SAMPLED` usage,
+    /// as many levels as `levels`) from `levels` through a staging buffer, and leaves it in
+    /// `SHADER_READ_ONLY_OPTIMAL` for fragment shaders. Returns once the GPU has finished.
+    pub(super) fn upload_image(
+        &mut self,
+        device: &Arc<Device>,
+        image: &Image,
+        levels: &[Level],
+    ) -> Result<()> {
+        let total: u64 = levels.iter().map(|l| l.rgba.len() as u64).sum();
+        let mut staging = Buffer::new(
+            device,
+            "texture staging buffer",
+            total,
+            vk::BufferUsageFlags::TRANSFER_SRC,
+            MemoryUse::Staging,
+        )?;
+        let mut regions = Vec::with_capacity(levels.len());
+        let mut offset = 0;
+        for (index, level) in levels.iter().enumerate() {
+            staging.write(offset, &level.rgba)?;
+            regions.push(
+                vk::BufferImageCopy::default()
+                    .buffer_offset(offset)
+                    .image_subresource(vk::ImageSubresourceLayers {
+                        aspect_mask: vk::ImageAspectFlags::COLOR,
+                        mip_level: index as u32,
+                        base_array_layer: 0,
+                        layer_count: 1,
+                    })
+                    .image_extent(vk::Extent3D {
+                        width: level.width,
+                        height: level.height,
+                        depth: 1,
+                    }),
+            );
+            offset += level.rgba.len() as u64;
+        }
+        let vkd = &device.raw;
+        let range = vk::ImageSubresourceRange {
+            aspect_mask: vk::ImageAspectFlags::COLOR,
+            base_mip_level: 0,
+            level_count: image.levels(),
+            base_array_layer: 0,
+            layer_count: 1,
+        };
+        // SAFETY: every upload waits for its fence, so the command buffer is not pending.
+        let cmd = unsafe { self.commands.begin_one_time() }?;
+        let to_transfer = [vk::ImageMemoryBarrier2::default()
+            .src_stage_mask(vk::PipelineStageFlags2::NONE)
+            .dst_stage_mask(vk::PipelineStageFlags2::COPY)
+            .dst_access_mask(vk::AccessFlags2::TRANSFER_WRITE)
+            .old_layout(vk::ImageLayout::UNDEFINED)
+            .new_layout(vk::ImageLayout::TRANSFER_DST_OPTIMAL)
+            .image(image.raw())
+            .subresource_range(range)];
+        let to_sampled = [vk::ImageMemoryBarrier2::default()
+            .src_stage_mask(vk::PipelineStageFlags2::COPY)
+            .src_access_mask(vk::AccessFlags2::TRANSFER_WRITE)
+            .dst_stage_mask(vk::PipelineStageFlags2::FRAGMENT_SHADER)
+            .dst_access_mask(vk::AccessFlags2::SHADER_SAMPLED_READ)
+            .old_layout(vk::ImageLayout::TRANSFER_DST_OPTIMAL)
+            .new_layout(vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL)
+            .image(image.raw())
+            .subresource_range(range)];
+        // SAFETY: recording outside any rendering pass; the image and staging buffer live
+        // until the fence below is waited for; each region lies inside its level and the
+        // staging buffer; the barriers cover every level.
+        unsafe {
+            vkd.cmd_pipeline_barrier2(
+                cmd,
+                &vk::DependencyInfo::default().image_memory_barriers(&to_transfer),
+            );
+            vkd.cmd_copy_buffer_to_image(
+                cmd,
+                staging.raw(),
+                image.raw(),
+                vk::ImageLayout::TRANSFER_DST_OPTIMAL,
+                &regions,
+            );
+            vkd.cmd_pipeline_barrier2(
+                cmd,
+                &vk::DependencyInfo::default().image_memory_barriers(&to_sampled),
+            );
+        }
+        // SAFETY: recording is complete.
+        unsafe { vkd.end_command_buffer(cmd) }.map_err(vk_error("vkEndCommandBuffer"))?;
+        self.submit_and_wait(device)
     }
 
     fn record(

@@ -47,14 +47,17 @@ impl Builder<'_> {
     }
 }
 
-/// The square [-1, 1]² in the z = 0 plane, facing +z, `n`×`n` cells.
+/// The square [-1, 1]² in the z = 0 plane, facing +z, `n`×`n` cells; texture coordinates
+/// put an image upright on it, its first row along the top edge.
 fn plane(n: u32) -> MeshData {
     let mut data = MeshData::default();
     for j in 0..=n {
         for i in 0..=n {
             let (x, y) = (-1.0 + 2.0 * i as f32 / n as f32, -1.0 + 2.0 * j as f32 / n as f32);
+            // The image upright: s left to right, t from the top edge (row 0 at t = 0).
+            let st = glam::Vec2::new((x + 1.0) / 2.0, (1.0 - y) / 2.0);
             data.vertices
-                .push(Vertex::new(Vec3::new(x, y, 0.0), Vec3::Z, Vec4::ONE));
+                .push(Vertex::new(Vec3::new(x, y, 0.0), Vec3::Z, Vec4::ONE).with_texcoord(st));
         }
     }
     let at = |i: u32, j: u32| j * (n + 1) + i;

@@ -1093,6 +1093,7 @@ pub fn render_scene(
             projection: scene.projection,
             state,
             cull_face: scene.cull_face(mesh),
+            texture: None,
         });
     }
     Ok(renderer.render(&frame)?.into())

@@ -119,6 +119,7 @@ fn render_teapot(
         projection: projection(),
         state: gl.lighting,
         cull_face: None,
+        texture: None,
     });
     Ok(renderer.render(&frame)?.into())
 }

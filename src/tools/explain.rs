@@ -216,7 +216,8 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
         LightingMode::Fragment => {
             let p = eye[0].eye * w.x + eye[1].eye * w.y + eye[2].eye * w.z;
             let c = eye[0].color * w.x + eye[1].color * w.y + eye[2].color * w.z;
-            let color = reference::pixel_color(&state, modelview, scene.projection, verts, hit.coverage);
+            let color =
+                reference::pixel_color(&state, modelview, scene.projection, verts, hit.coverage, None);
             let _ = writeln!(out, "fragment: eye {}, color {}", rgba(p), rgba(c));
             if state.lighting {
                 let unit = |v: DVec3| {

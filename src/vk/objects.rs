@@ -80,6 +80,22 @@ owned!(
     /// An image view.
     ImageView(vk::ImageView) freed by destroy_image_view
 );
+owned!(
+    /// A sampler.
+    Sampler(vk::Sampler) freed by destroy_sampler
+);
+
+impl Sampler {
+    /// A sampler of `info`.
+    pub fn new(device: &Arc<Device>, info: &vk::SamplerCreateInfo) -> Result<Self> {
+        // SAFETY: a valid create info on a live device (anisotropy and compare off).
+        let raw = unsafe { device.raw.create_sampler(info, None) }.map_err(vk_error("vkCreateSampler"))?;
+        Ok(Sampler {
+            device: device.clone(),
+            raw,
+        })
+    }
+}
 
 impl ShaderModule {
     /// A module from SPIR-V words.

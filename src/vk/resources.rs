@@ -101,12 +101,13 @@ impl Buffer {
     }
 }
 
-/// A 2D image with its memory and a view.
+/// A 2D image with its memory and a view of all its levels.
 pub struct Image {
     // Field order is drop order: view, then image, then its memory.
     view: ImageView,
     raw: RawImage,
     _memory: Allocation,
+    levels: u32,
 }
 
 impl Image {
@@ -119,6 +120,18 @@ impl Image {
         usage: vk::ImageUsageFlags,
         aspect: vk::ImageAspectFlags,
     ) -> Result<Self> {
+        Image::with_levels(device, extent, format, usage, aspect, 1)
+    }
+
+    /// [`Image::new`] with `levels` mip levels (each half the one above, down to 1×1 at most).
+    pub fn with_levels(
+        device: &Arc<Device>,
+        extent: vk::Extent2D,
+        format: vk::Format,
+        usage: vk::ImageUsageFlags,
+        aspect: vk::ImageAspectFlags,
+        levels: u32,
+    ) -> Result<Self> {
         let info = vk::ImageCreateInfo::default()
             .image_type(vk::ImageType::TYPE_2D)
             .format(format)
@@ -127,7 +140,7 @@ impl Image {
                 height: extent.height,
                 depth: 1,
             })
-            .mip_levels(1)
+            .mip_levels(levels)
             .array_layers(1)
             .samples(vk::SampleCountFlags::TYPE_1)
             .tiling(vk::ImageTiling::OPTIMAL)
@@ -138,6 +151,8 @@ impl Image {
         let req = unsafe { device.raw.get_image_memory_requirements(raw.raw()) };
         let what = if usage.contains(vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT) {
             "depth image"
+        } else if usage.contains(vk::ImageUsageFlags::SAMPLED) {
+            "texture image"
         } else {
             "color image"
         };
@@ -156,7 +171,7 @@ impl Image {
             .subresource_range(vk::ImageSubresourceRange {
                 aspect_mask: aspect,
                 base_mip_level: 0,
-                level_count: 1,
+                level_count: levels,
                 base_array_layer: 0,
                 layer_count: 1,
             });
@@ -165,6 +180,7 @@ impl Image {
             view,
             raw,
             _memory: memory,
+            levels,
         })
     }
 
@@ -176,5 +192,15 @@ impl Image {
     /// The view of the whole image.
     pub fn view(&self) -> vk::ImageView {
         self.view.raw()
+    }
+
+    /// The device that owns this image.
+    pub(crate) fn device(&self) -> &Arc<Device> {
+        self.raw.device()
+    }
+
+    /// How many mip levels it has.
+    pub fn levels(&self) -> u32 {
+        self.levels
     }
 }

@@ -330,6 +330,7 @@ fn ffvk_image(
         projection,
         state,
         cull_face: None,
+        texture: None,
     });
     r.render(&frame).unwrap().into_rgba_image()
 }
@@ -643,6 +644,7 @@ fn the_current_color_and_its_color_material_write_back_match_mesa_gl() {
                 projection,
                 state: frame_state,
                 cull_face: None,
+                texture: None,
             });
             r.render(&frame).unwrap().into_rgba_image()
         };

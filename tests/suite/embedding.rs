@@ -52,6 +52,7 @@ fn renderer_frame(
         projection: embed::projection(),
         state: *state,
         cull_face: None,
+        texture: None,
     });
     r.render(&frame).unwrap()
 }
@@ -182,6 +183,7 @@ fn ten_thousand_draws_with_distinct_states_in_one_command_buffer_each_light_as_t
             projection: Mat4::IDENTITY,
             state: gl.lighting,
             cull_face: None,
+            texture: None,
         });
     }
     let image = r.render(&frame).unwrap().into_rgba_image();
@@ -343,10 +345,12 @@ fn features_the_caller_did_not_enable_are_named_in_the_error() {
     )
     .unwrap();
     let mut gl = lit_state();
-    lighting.prepare(&gl.lighting, RasterState::default()).unwrap();
+    lighting
+        .prepare(&gl.lighting, RasterState::default(), false)
+        .unwrap();
     gl.lighting_mode(LightingMode::Flat);
     let e = lighting
-        .prepare(&gl.lighting, RasterState::default())
+        .prepare(&gl.lighting, RasterState::default(), false)
         .unwrap_err();
     assert!(
         matches!(

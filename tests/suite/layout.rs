@@ -110,7 +110,11 @@ fn stages() -> Vec<(String, &'static [u8])> {
         stages.push((format!("{}.vert", v.name), v.vertex));
         stages.push((format!("{}.frag", v.name), v.fragment));
     }
-    assert_eq!(stages.len(), 20, "ten variants of two stages");
+    assert_eq!(
+        stages.len(),
+        40,
+        "twenty variants (ten, untextured and textured) of two stages"
+    );
     stages
 }
 
@@ -127,7 +131,8 @@ fn draw_block_matches_the_glsl_in_every_stage() {
         let draw = r.struct_id("Draw");
         let want = rust_offsets!(DrawBlock: modelview, projection, normal_matrix, front, back, a_cs,
             current_color, light_count, lighting, v_bs, t_bs, separate_specular, color_material,
-            color_material_front, color_material_back, color_material_mode, normalize, rescale, lights);
+            color_material_front, color_material_back, color_material_mode, normalize, rescale, lights,
+            texture_matrix, c_c, tex_env_mode);
         assert_eq!(r.members(draw), want, "{stage}: Draw block offsets");
 
         let material = r.struct_id("Material");
@@ -139,9 +144,14 @@ fn draw_block_matches_the_glsl_in_every_stage() {
             rust_offsets!(GpuLight: a_cli, d_cli, s_cli, P_pli, s_dli, s_rli, c_rli, cos_c_rli, k0, k1, k2);
         assert_eq!(r.members(light), want, "{stage}: Light offsets");
 
-        // The lights array: its stride is the Rust struct's size, and it ends the block.
+        // The lights array: its stride is the Rust struct's size.
         let members = &r.struct_members[&draw];
-        let lights_type = *members.last().unwrap();
+        let lights_at = r
+            .members(draw)
+            .iter()
+            .position(|(name, _)| name == "lights")
+            .unwrap();
+        let lights_type = members[lights_at];
         assert_eq!(
             r.array_element[&lights_type], light,
             "{stage}: lights is an array of Light"
@@ -153,8 +163,8 @@ fn draw_block_matches_the_glsl_in_every_stage() {
         );
         assert_eq!(
             offset_of!(DrawBlock, lights) + ffvk::gl::state::MAX_LIGHTS * size_of::<GpuLight>(),
-            size_of::<DrawBlock>(),
-            "DrawBlock ends with the lights"
+            offset_of!(DrawBlock, texture_matrix),
+            "the texture state follows the lights"
         );
     }
 }
@@ -193,10 +203,22 @@ fn specialization_constant_ids_match_the_rust_side() {
             );
             found.push(constant);
         }
-        if LIGHTING_STAGES.contains(&stage.as_str()) {
-            for c in SpecConstant::ALL {
+        // The equation's stages read every constant but the texture environment's, which
+        // the textured fragment stages read.
+        let untextured = stage.replace("_textured", "");
+        if LIGHTING_STAGES.contains(&untextured.as_str()) {
+            for c in SpecConstant::ALL
+                .into_iter()
+                .filter(|&c| c != SpecConstant::TexEnv)
+            {
                 assert!(found.contains(&c), "{stage} does not declare {}", c.glsl_name());
             }
+        }
+        if stage.ends_with("_textured.frag") {
+            assert!(
+                found.contains(&SpecConstant::TexEnv),
+                "{stage} does not declare SPEC_TEX_ENV"
+            );
         }
     }
     // The key's bytes are the specialization data: constant i at offset 4 i.

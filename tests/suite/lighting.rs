@@ -64,6 +64,7 @@ fn render_variant(scene: &Scene, state: LightingState, specialize: Specialize) -
         projection: scene.projection,
         state,
         cull_face: None,
+        texture: None,
     });
     let image = r.render(&frame).unwrap().into_rgba_image();
     // The variant really drew: one pipeline, specialized or not.
@@ -114,7 +115,7 @@ fn check(name: &str, scene: &Scene, mode: LightingMode) {
                 continue;
             }
             let tri = idx.map(|i| &v[i]);
-            let want = reference::pixel_color(&state, scene.modelview, scene.projection, tri, cov);
+            let want = reference::pixel_color(&state, scene.modelview, scene.projection, tri, cov, None);
             for (variant, image) in &images {
                 let what = format!("{name} {} {}", mode.name(), variant.name());
                 assert_pixel(image, px, py, want, 1.0, &what);

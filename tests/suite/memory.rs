@@ -23,6 +23,7 @@ fn teapot_frame(r: &mut Renderer, mesh: &MeshData, size: u32) -> Pixels {
         projection: perspective(40.0, 1.0, 0.5, 10.0),
         state: gl.lighting,
         cull_face: None,
+        texture: None,
     });
     r.render(&frame).unwrap()
 }

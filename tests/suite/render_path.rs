@@ -75,6 +75,7 @@ fn counter_clockwise_is_front() {
             projection: Mat4::IDENTITY,
             state: gl.lighting,
             cull_face: None,
+            texture: None,
         });
     }
     let image = r.render(&frame).unwrap().into_rgba_image();
@@ -119,6 +120,7 @@ fn cull_face_drops_the_faces_it_names() {
         for modelview in [Mat4::IDENTITY, mirror] {
             frame.draws.push(Draw {
                 cull_face: cull,
+                texture: None,
                 modelview,
                 ..ndc_draw(&ccw)
             });

@@ -34,6 +34,7 @@ fn draw_states(r: &mut Renderer, states: &[LightingState]) {
             projection: perspective(45.0, 1.0, 0.5, 10.0),
             state,
             cull_face: None,
+            texture: None,
         });
         r.render(&frame).unwrap().into_rgba_image();
     }
@@ -108,7 +109,7 @@ fn the_key_keeps_only_what_changes_the_lighting() {
     unlit_with_lights.lighting = false;
     unlit_with_lights.model.local_viewer = true;
     assert_eq!(key(&unlit_with_lights), key(&unlit()));
-    assert_eq!(key(&unlit()).values, [0; 8]);
+    assert_eq!(key(&unlit()).values, [0; 9]);
 
     // Without lights the viewer and color control cannot matter; two-sided still does (the
     // back material's emission and ambient).
@@ -154,33 +155,41 @@ fn one_sided_single_color_states_pass_one_color_between_the_stages() {
     separate.model.color_control = ColorControl::SeparateSpecularColor;
     let flat = lit(2, LightingMode::Flat);
     assert_eq!(
-        variant_name(LightingMode::Vertex, key(&one_sided), true),
+        variant_name(LightingMode::Vertex, key(&one_sided), true, false),
         "vertex_one_color"
     );
     assert_eq!(
-        variant_name(LightingMode::Flat, key(&flat), true),
+        variant_name(LightingMode::Flat, key(&flat), true, false),
         "flat_one_color"
     );
     assert_eq!(
-        variant_name(LightingMode::Vertex, key(&unlit()), true),
+        variant_name(LightingMode::Vertex, key(&unlit()), true, false),
         "vertex_one_color"
     );
     for s in [two_sided, separate] {
-        assert_eq!(variant_name(LightingMode::Vertex, key(&s), true), "vertex");
+        assert_eq!(variant_name(LightingMode::Vertex, key(&s), true, false), "vertex");
     }
     // The uber-shader passes every color; fragment mode has one pair of stages.
-    assert_eq!(variant_name(LightingMode::Vertex, SpecKey::UBER, true), "vertex");
     assert_eq!(
-        variant_name(LightingMode::Fragment, key(&one_sided), true),
+        variant_name(LightingMode::Vertex, SpecKey::UBER, true, false),
+        "vertex"
+    );
+    assert_eq!(
+        variant_name(LightingMode::Fragment, key(&one_sided), true, false),
         "fragment"
     );
     // Without a color array, the same variants read GL's current color.
     assert_eq!(
-        variant_name(LightingMode::Vertex, key(&one_sided), false),
+        variant_name(LightingMode::Vertex, key(&one_sided), false, false),
         "vertex_one_color_current_color"
     );
     assert_eq!(
-        variant_name(LightingMode::Fragment, key(&one_sided), false),
+        variant_name(LightingMode::Fragment, key(&one_sided), false, false),
         "fragment_current_color"
+    );
+    // A textured draw takes the textured build of the same variant.
+    assert_eq!(
+        variant_name(LightingMode::Flat, key(&flat), false, true),
+        "flat_one_color_current_color_textured"
     );
 }

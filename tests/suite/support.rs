@@ -179,6 +179,7 @@ pub fn ndc_draw(mesh: &ffvk::Mesh) -> ffvk::Draw<'_> {
         projection: Mat4::IDENTITY,
         state: unlit(),
         cull_face: None,
+        texture: None,
     }
 }
 
@@ -203,7 +204,13 @@ pub fn reference_at(
     let mut state = scene.draw_state(mesh);
     state.mode = mode;
     let tri = hit.vertices.map(|i| &mesh.data.vertices[i]);
-    let color =
-        ffvk::reference::pixel_color(&state, scene.modelview(mesh), scene.projection, tri, hit.coverage);
+    let color = ffvk::reference::pixel_color(
+        &state,
+        scene.modelview(mesh),
+        scene.projection,
+        tri,
+        hit.coverage,
+        None,
+    );
     Some((hit, color))
 }

@@ -110,6 +110,7 @@ pub fn measure_draw_cost(
             projection,
             state: gl.lighting,
             cull_face: None,
+            texture: None,
         })
         .collect();
 
@@ -140,6 +141,7 @@ pub fn measure_draw_cost(
             projection,
             state: gl.lighting,
             cull_face: None,
+            texture: None,
         });
         let first = renderer.measure(&one)?.wall_ns;
         let again = renderer.measure(&one)?.wall_ns;

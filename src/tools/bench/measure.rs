@@ -166,6 +166,7 @@ pub(super) fn measure_ffvk(
             projection,
             state,
             cull_face: None,
+            texture: None,
         })
         .collect();
     let start = Instant::now();

@@ -290,6 +290,7 @@ fn cap_enum(cap: Cap) -> GLenum {
         Cap::ColorMaterial => gl::COLOR_MATERIAL,
         Cap::Normalize => gl::NORMALIZE,
         Cap::RescaleNormal => gl::RESCALE_NORMAL,
+        Cap::Texture2D => gl::TEXTURE_2D,
     }
 }
 
