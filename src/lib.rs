@@ -54,5 +54,8 @@ pub mod vk;
 pub use draw::lighting::{Lighting, LightingOptions, LitDraw};
 pub use draw::pipeline::{Attribute, Blend, RasterState, Specialize, Target, VertexInput};
 pub use draw::record::Geometry;
+pub use draw::texture::TextureBinding;
 pub use error::{Error, LightingError, MeshError, Result};
-pub use renderer::{Draw, Frame, FrameStats, Mesh, PipelineStats, Pixels, Renderer, RendererOptions, Upload};
+pub use renderer::{
+    Draw, Frame, FrameStats, Mesh, PipelineStats, Pixels, Renderer, RendererOptions, Texture, Upload,
+};

@@ -19,3 +19,4 @@ mod scene;
 mod specialization;
 mod state;
 mod support;
+mod texturing;
