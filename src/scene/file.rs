@@ -22,6 +22,8 @@ pub(super) struct SceneFile {
     pub(super) material: Option<MaterialSpec>,
     pub(super) back_material: Option<MaterialSpec>,
     pub(super) color_material: Option<ColorMaterialSpec>,
+    /// GL_TEXTURE_2D with a texture, for every mesh without its own.
+    pub(super) texture: Option<super::texture::TextureSpec>,
     /// GL_NORMALIZE; off (GL's default), or on under `gltf_defaults`.
     pub(super) normalize: Option<bool>,
     #[serde(default)]
@@ -162,11 +164,13 @@ pub(super) struct MeshSpec {
     /// Front (and back unless `back_material`) material for this mesh only.
     pub(super) material: Option<MaterialSpec>,
     pub(super) back_material: Option<MaterialSpec>,
+    /// This mesh's texture (`enabled = false` draws it untextured).
+    pub(super) texture: Option<super::texture::TextureSpec>,
 }
 
 /// A fixed-length array that refuses extra or missing elements (serde's own arrays, read from
 /// TOML, ignore extra ones: `size = [64, 64, 64]` would pass).
-fn exact<'de, D, T, const N: usize>(d: D) -> Result<Option<[T; N]>, D::Error>
+pub(super) fn exact<'de, D, T, const N: usize>(d: D) -> Result<Option<[T; N]>, D::Error>
 where
     D: serde::Deserializer<'de>,
     T: serde::Deserialize<'de> + Copy + Default,

@@ -9,6 +9,7 @@ pub mod direct;
 mod file;
 pub mod gltf;
 mod meaning;
+mod texture;
 
 use std::path::{Path, PathBuf};
 
@@ -19,6 +20,7 @@ use self::file::{
 };
 use self::gltf::{LoadError, PunctualLight};
 pub use self::meaning::{auto_exposure, GltfMeaning};
+pub use self::texture::MeshTexture;
 use crate::gl::presets;
 use crate::gl::state::{
     Cap, ColorControl, ColorMaterialMode, Face, GlState, LightModelParam, LightParam, LightingMode,
@@ -33,8 +35,8 @@ pub const MAX_SIZE: u32 = 16384;
 /// larger is refused before it is read.
 pub const MAX_SCENE_BYTES: u64 = 16 << 20;
 
-/// The host memory a scene's meshes may take by default: 1 GiB, about 27 million vertices
-/// (40 bytes each, shared between triangles) or 6.7 million triangles with vertices of their
+/// The host memory a scene's meshes may take by default: 1 GiB, about 22 million vertices
+/// (48 bytes each, shared between triangles) or 6.9 million triangles with vertices of their
 /// own. [`Limits::mesh_bytes`] (`ffvk --max-mesh-mib`) raises it.
 pub const DEFAULT_MESH_BYTES: u64 = 1 << 30;
 
@@ -45,7 +47,7 @@ pub struct Limits {
     /// by default none, so that an untrusted asset reads nothing outside its folder.
     pub asset_roots: Vec<PathBuf>,
     /// The bytes all the scene's meshes may take on the host, counted as ffvk stores them
-    /// (a [`Vertex`](crate::mesh::Vertex) is 40 bytes, an index 4), each glTF primitive
+    /// (a [`Vertex`](crate::mesh::Vertex) is 48 bytes, an index 4), each glTF primitive
     /// before it is read and once per node that places it. The device holds the same
     /// amount.
     pub mesh_bytes: u64,
@@ -207,6 +209,9 @@ pub struct SceneMesh {
     /// What glTF asks of this mesh where the scene follows glTF's meaning (`gltf_defaults`);
     /// `None` for built-in shapes and in scenes that keep GL's defaults.
     pub gltf: Option<GltfMeaning>,
+    /// The texture it is drawn with: the mesh's `texture`, else the scene's `[texture]`, else
+    /// (under glTF's meaning) its glTF base color texture; `None` draws it untextured.
+    pub texture: Option<MeshTexture>,
 }
 
 /// A scene ready to draw: GL state already in eye space, matrices in GL conventions.
@@ -245,6 +250,9 @@ impl Scene {
         state.back = mesh.back;
         if let Some(meaning) = &mesh.gltf {
             meaning.apply(&mut state);
+        }
+        if let Some(texture) = &mesh.texture {
+            state.texture = texture.unit;
         }
         state
     }
@@ -498,6 +506,10 @@ impl Builder<'_> {
         let exposure_spec = self.exposure_spec(&file, gltf_meaning)?;
         let mut meshes = Vec::new();
         let mut warnings = Vec::new();
+        let scene_texture = match &file.texture {
+            Some(t) => self.texture("texture", t, &mut warnings)?,
+            None => None,
+        };
         let mut gltf_lights: Vec<(String, PunctualLight, Mat4)> = Vec::new();
         let textures = if gltf_meaning {
             self::gltf::Textures::Means
@@ -540,6 +552,10 @@ impl Builder<'_> {
                     }
                     _ => None,
                 };
+                let texture = match &spec.texture {
+                    Some(t) => self.texture(&format!("{field}.texture"), t, &mut warnings)?,
+                    None => scene_texture.clone(),
+                };
                 meshes.push(SceneMesh {
                     name: p.name,
                     data,
@@ -547,6 +563,7 @@ impl Builder<'_> {
                     front,
                     back,
                     gltf: meaning,
+                    texture,
                 });
             }
         }
@@ -1079,6 +1096,23 @@ pub fn render_scene(
         .iter()
         .map(|m| renderer.upload(&m.data))
         .collect::<crate::Result<Vec<_>>>()?;
+    // Each image once, however many meshes share it (by image and sampling, as a GL program
+    // keeps one texture object per image and parameters).
+    let mut textures: Vec<(&MeshTexture, crate::Texture)> = Vec::new();
+    for t in scene.meshes.iter().filter_map(|m| m.texture.as_ref()) {
+        if !textures
+            .iter()
+            .any(|(u, _)| std::sync::Arc::ptr_eq(&u.image, &t.image) && u.sampling == t.sampling)
+        {
+            textures.push((t, renderer.upload_texture(&t.image, &t.sampling)?));
+        }
+    }
+    let texture_of = |t: &MeshTexture| {
+        textures
+            .iter()
+            .find(|(u, _)| std::sync::Arc::ptr_eq(&u.image, &t.image) && u.sampling == t.sampling)
+            .map(|(_, gpu)| gpu)
+    };
     let mut frame = crate::Frame::new(width, height);
     frame.clear_color = scene.clear_color;
     frame.depth_test = scene.depth_test;
@@ -1093,7 +1127,7 @@ pub fn render_scene(
             projection: scene.projection,
             state,
             cull_face: scene.cull_face(mesh),
-            texture: None,
+            texture: mesh.texture.as_ref().and_then(texture_of),
         });
     }
     Ok(renderer.render(&frame)?.into())

@@ -247,9 +247,64 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
             color
         }
     };
+    let bound = mesh.texture.as_ref().map(|t| (&*t.image, &t.sampling));
+    let pixel = reference::pixel_terms(&state, modelview, scene.projection, verts, hit.coverage, bound);
+    let color = match (&mesh.texture, pixel.textured) {
+        (Some(t), Some(tex)) => {
+            let image = &t.image;
+            let _ = writeln!(
+                out,
+                "texture: {} ({}x{}, {} level(s){}), min {} mag {}, wrap {} {}, env {}",
+                t.source,
+                image.width(),
+                image.height(),
+                image.levels.len(),
+                if image.srgb { ", sRGB" } else { "" },
+                t.sampling.min_filter.name(),
+                t.sampling.mag_filter.name(),
+                t.sampling.wrap_s.name(),
+                t.sampling.wrap_t.name(),
+                t.unit.env_mode.name()
+            );
+            let _ = writeln!(
+                out,
+                "  (s/q, t/q) ({:.4}, {:.4}), texel ({:.2}, {:.2}) of level 0, λ {:.3}",
+                tex.st.x,
+                tex.st.y,
+                tex.st.x * image.width() as f64,
+                tex.st.y * image.height() as f64,
+                tex.lambda
+            );
+            let _ = writeln!(
+                out,
+                "  C_s, A_s (filtered texel)  {} = {}",
+                rgba(tex.texel),
+                bytes(tex.texel)
+            );
+            let _ = writeln!(out, "  C_f, A_f (c_pri)           {}", rgba(pixel.c_pri));
+            let _ = writeln!(
+                out,
+                "  C_v, A_v ({})         {}",
+                t.unit.env_mode.name(),
+                rgba(tex.env)
+            );
+            let _ = writeln!(out, "  c_sec, added after texturing {}", rgba(pixel.c_sec));
+            pixel.color
+        }
+        (Some(t), None) => {
+            let _ = writeln!(
+                out,
+                "texture: {} textures nothing (GL_TEXTURE_2D off, or incomplete: min filter {} without mipmaps)",
+                t.source,
+                t.sampling.min_filter.name()
+            );
+            color
+        }
+        (None, _) => color,
+    };
     let _ = writeln!(
         out,
-        "final color (clamp(c_pri + c_sec), alpha of c_pri) {} = {}",
+        "final color (clamp(c_pri + c_sec), alpha of c_pri; textured: C_v for c_pri) {} = {}",
         rgba(color),
         bytes(color)
     );

@@ -210,7 +210,7 @@ pub fn reference_at(
         scene.projection,
         tri,
         hit.coverage,
-        None,
+        mesh.texture.as_ref().map(|t| (&*t.image, &t.sampling)),
     );
     Some((hit, color))
 }
