@@ -552,9 +552,24 @@ impl Builder<'_> {
                     }
                     _ => None,
                 };
-                let texture = match &spec.texture {
-                    Some(t) => self.texture(&format!("{field}.texture"), t, &mut warnings)?,
-                    None => scene_texture.clone(),
+                // Texture precedence: the mesh's own, the scene's, the glTF base color texture
+                // (under glTF's meaning, through GL_MODULATE), none.
+                let texture = match (&spec.texture, &scene_texture, &pbr) {
+                    (Some(t), _, _) => self.texture(&format!("{field}.texture"), t, &mut warnings)?,
+                    (None, Some(t), _) => Some(t.clone()),
+                    (None, None, Some(pbr)) if gltf_meaning => {
+                        pbr.base_color_sampled.as_ref().map(|s| MeshTexture {
+                            image: s.image.clone(),
+                            sampling: s.sampling,
+                            unit: crate::gl::texture::TextureUnit {
+                                enabled: true,
+                                matrix: s.matrix,
+                                ..Default::default()
+                            },
+                            source: format!("glTF image {} (base color, GL_MODULATE)", s.image_index),
+                        })
+                    }
+                    _ => None,
                 };
                 meshes.push(SceneMesh {
                     name: p.name,

@@ -1,7 +1,7 @@
 //! glTF metallic-roughness materials: their factors as read from the file, and mapped onto
 //! GL's fixed-function material ([`gl_material`]).
 
-use super::textures::{TextureMean, Textures};
+use super::textures::{SampledTexture, TextureMean, Textures};
 use super::Context;
 use crate::gl::state::Material;
 use glam::{Vec3, Vec4};
@@ -29,15 +29,21 @@ pub struct PbrMaterial {
     pub base_color_texture: Option<TextureMean>,
     /// emissiveTexture, when the material has one.
     pub emissive_texture: Option<TextureMean>,
+    /// The base color texture decoded for sampling (textures read, PNG or JPEG).
+    pub base_color_sampled: Option<SampledTexture>,
 }
 
 impl PbrMaterial {
     /// The material with its textures' means multiplied into the factors they scale, as glTF
     /// multiplies the texel into the factor: baseColorFactor × the base color texture's mean
     /// (RGBA), emissiveFactor × the emissive texture's mean (RGB). Unread textures count as
-    /// white, so the factor stays as it is.
+    /// white, so the factor stays as it is. A base color texture that is sampled is not
+    /// averaged in: the texture environment multiplies it per fragment instead.
     pub fn with_texture_means(&self) -> PbrMaterial {
-        let base = self.base_color_texture.map_or(Vec4::ONE, TextureMean::or_white);
+        let base = match self.base_color_sampled {
+            Some(_) => Vec4::ONE,
+            None => self.base_color_texture.map_or(Vec4::ONE, TextureMean::or_white),
+        };
         let emissive = self.emissive_texture.map_or(Vec4::ONE, TextureMean::or_white);
         PbrMaterial {
             base_color_factor: self.base_color_factor * base,
@@ -61,6 +67,7 @@ impl Default for PbrMaterial {
             double_sided: false,
             base_color_texture: None,
             emissive_texture: None,
+            base_color_sampled: None,
         }
     }
 }
@@ -118,6 +125,7 @@ pub(super) fn pbr_material(cx: &Context, material: gltf::Material) -> Option<Pbr
         // Filled in from the file's table of texture means after the walk.
         base_color_texture: None,
         emissive_texture: None,
+        base_color_sampled: None,
     })
 }
 
@@ -128,7 +136,8 @@ pub(super) fn texture_warnings(cx: &Context, document: &gltf::Document, textures
         .materials()
         .filter(|material| {
             let pbr = material.pbr_metallic_roughness();
-            pbr.base_color_texture().is_some()
+            // Sampled base color textures need no word; the rest are left out or averaged.
+            (pbr.base_color_texture().is_some() && textures == Textures::Ignore)
                 || pbr.metallic_roughness_texture().is_some()
                 || material.normal_texture().is_some()
                 || material.occlusion_texture().is_some()
@@ -151,14 +160,15 @@ pub(super) fn texture_warnings(cx: &Context, document: &gltf::Document, textures
         which.push_str(&format!(" and {} more", textured.len() - SHOWN));
     }
     let what = match textures {
-        Textures::Ignore => "ffvk uses the materials' factors",
+        Textures::Ignore => "ffvk does not read them and uses the materials' factors",
         Textures::Means => {
-            "base color and emissive factors are multiplied by their texture's mean texel; normal, \
-             occlusion and metallic-roughness textures are ignored"
+            "emissive factors are multiplied by their texture's mean texel (GL has one texture \
+             unit, which the base color takes); normal, occlusion and metallic-roughness textures \
+             are ignored"
         }
     };
     vec![format!(
-        "{} material{} use{} textures, which ffvk does not sample (material {which}): {what}",
+        "{} material{} use{} textures (material {which}): {what}",
         textured.len(),
         if textured.len() == 1 { "" } else { "s" },
         if textured.len() == 1 { "s" } else { "" },

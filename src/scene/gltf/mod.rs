@@ -30,7 +30,7 @@ pub use cameras::{CameraProjection, PlacedCamera};
 pub use lights::{gl_light, spot_exponent, LightKind, PunctualLight};
 pub use materials::{gl_material, PbrMaterial};
 pub use primitives::{AccessorPart, AccessorProblem};
-pub use textures::{TextureMean, Textures};
+pub use textures::{SampledTexture, TextureMean, Textures};
 
 use crate::mesh::MeshData;
 use crate::scene::{Limits, MeshBudget, OverBudget};
@@ -39,12 +39,16 @@ use gltf::json::Value;
 use std::path::{Path, PathBuf};
 
 /// The glTF extensions ffvk understands; a file that requires any other is rejected.
-pub const SUPPORTED_EXTENSIONS: &[&str] = &["KHR_lights_punctual", "KHR_materials_emissive_strength"];
-
-/// Extensions that change only how textures are read or placed. ffvk draws no textures, so
-/// a file that requires one still renders (with a warning) as it would without them.
-pub const TEXTURE_EXTENSIONS: &[&str] = &[
+pub const SUPPORTED_EXTENSIONS: &[&str] = &[
+    "KHR_lights_punctual",
+    "KHR_materials_emissive_strength",
     "KHR_texture_transform",
+];
+
+/// Extensions that change only how textures are read. ffvk samples PNG and JPEG base color
+/// textures, so a file that requires one of these still renders (with a warning), the
+/// texture in question left out.
+pub const TEXTURE_EXTENSIONS: &[&str] = &[
     "KHR_texture_basisu",
     "EXT_texture_webp",
     "EXT_texture_avif",
@@ -394,7 +398,7 @@ pub fn load_with(
     for extension in document.extensions_used() {
         if TEXTURE_EXTENSIONS.contains(&extension) {
             warnings.push(format!(
-                "extension {extension} changes only textures, which ffvk does not draw: ignored"
+                "extension {extension} changes only textures (ffvk reads PNG and JPEG): ignored"
             ));
         } else if !SUPPORTED_EXTENSIONS.contains(&extension) {
             warnings.push(format!(
@@ -428,6 +432,7 @@ pub fn load_with(
         if let Some(t) = material.index.and_then(|i| table.get(i)) {
             material.base_color_texture = t.base_color;
             material.emissive_texture = t.emissive;
+            material.base_color_sampled = t.base_color_sampled.clone();
         }
     }
     Ok(out)
@@ -492,16 +497,16 @@ mod tests {
             "{text}"
         );
 
-        // An extension that changes only textures is a warning, even when required.
+        // An extension that changes only how textures are read is a warning, even when
+        // required; KHR_texture_transform is supported.
         let body = format!(
             r#""extensionsUsed": ["KHR_texture_transform", "EXT_texture_webp"],
                "extensionsRequired": ["KHR_texture_transform", "EXT_texture_webp"], {mesh}"#
         );
         let loaded = load(&a.write_gltf(&dir, "texture", &body)).unwrap();
-        assert_eq!(loaded.warnings.len(), 2, "{:?}", loaded.warnings);
+        assert_eq!(loaded.warnings.len(), 1, "{:?}", loaded.warnings);
         assert!(
-            loaded.warnings[0].contains("KHR_texture_transform changes only textures")
-                && loaded.warnings[1].contains("EXT_texture_webp changes only textures"),
+            loaded.warnings[0].contains("EXT_texture_webp changes only textures"),
             "{:?}",
             loaded.warnings
         );

@@ -423,6 +423,34 @@ pub(super) fn read_primitive(
         }
     };
 
+    // Texture coordinates in every type glTF allows: FLOAT, or normalized UNSIGNED_BYTE or
+    // UNSIGNED_SHORT (divided by 255 or 65535), VEC2.
+    let texcoords = match primitive.get(&Semantic::TexCoords(0)) {
+        None => None,
+        Some(accessor) => {
+            let supported = matches!(accessor.data_type(), DataType::F32 | DataType::U8 | DataType::U16);
+            if !supported || accessor.dimensions() != Dimensions::Vec2 {
+                return Err(format_error(
+                    "TEXCOORD_0",
+                    &accessor,
+                    "FLOAT, normalized UNSIGNED_BYTE or normalized UNSIGNED_SHORT, VEC2",
+                ));
+            }
+            if accessor.count() != vertex_count {
+                return Err(count_error("TEXCOORD_0", &accessor, vertex_count));
+            }
+            let iter = reader.read_tex_coords(0).map(|t| t.into_f32());
+            let st = read_checked(cx, &label, &accessor, buffers, iter)?;
+            check_finite(cx, &label, "TEXCOORD_0", &accessor, &st)?;
+            Some(st)
+        }
+    };
+    let texcoord_of = |i: u32| {
+        texcoords
+            .as_ref()
+            .map_or(glam::Vec2::ZERO, |t| glam::Vec2::from_array(t[i as usize]))
+    };
+
     let sequence: Vec<u32> = match primitive.indices() {
         None => {
             let mut sequence = try_vec(vertex_count, "mesh indices").map_err(alloc_error)?;
@@ -497,10 +525,10 @@ pub(super) fn read_primitive(
     match &normals {
         Some(normals) => {
             data.vertices = try_vec(vertex_count, "mesh vertices").map_err(alloc_error)?;
-            data.vertices
-                .extend((0..vertex_count as u32).map(|i| {
-                    Vertex::new(position_of(i), Vec3::from_array(normals[i as usize]), color_of(i))
-                }));
+            data.vertices.extend((0..vertex_count as u32).map(|i| {
+                Vertex::new(position_of(i), Vec3::from_array(normals[i as usize]), color_of(i))
+                    .with_texcoord(texcoord_of(i))
+            }));
         }
         None => {
             // Flat normals: every triangle gets its own three vertices.
@@ -509,10 +537,9 @@ pub(super) fn read_primitive(
                 let [a, b, c] = t.map(position_of);
                 let normal = (b - a).cross(c - a).normalize_or(Vec3::Z);
                 let base = flat.len() as u32;
-                flat.extend(
-                    t.iter()
-                        .map(|&i| Vertex::new(position_of(i), normal, color_of(i))),
-                );
+                flat.extend(t.iter().map(|&i| {
+                    Vertex::new(position_of(i), normal, color_of(i)).with_texcoord(texcoord_of(i))
+                }));
                 *t = [base, base + 1, base + 2];
             }
             data.vertices = flat;

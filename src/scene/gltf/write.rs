@@ -74,7 +74,12 @@ fn gltf_document(mesh: &MeshData, name: &str) -> io::Result<String> {
         )));
     }
     for (k, v) in mesh.vertices.iter().enumerate() {
-        let all = v.position.iter().chain(v.normal.iter()).chain(v.color.iter());
+        let all = v
+            .position
+            .iter()
+            .chain(&v.normal)
+            .chain(&v.color)
+            .chain(&v.texcoord);
         if let Some(x) = all.copied().find(|x| !x.is_finite()) {
             return Err(invalid(format!(
                 "vertex {k} has the non-finite value {x}: glTF (JSON) needs finite numbers"
@@ -84,7 +89,7 @@ fn gltf_document(mesh: &MeshData, name: &str) -> io::Result<String> {
 
     let mut min = [f32::INFINITY; 3];
     let mut max = [f32::NEG_INFINITY; 3];
-    let mut bin = Vec::with_capacity(vertex_count * 40 + index_count * 4);
+    let mut bin = Vec::with_capacity(vertex_count * 48 + index_count * 4);
     for v in &mesh.vertices {
         for k in 0..3 {
             min[k] = min[k].min(v.position[k]);
@@ -98,17 +103,22 @@ fn gltf_document(mesh: &MeshData, name: &str) -> io::Result<String> {
     for v in &mesh.vertices {
         bin.extend(v.color.iter().flat_map(|x| x.to_le_bytes()));
     }
+    for v in &mesh.vertices {
+        bin.extend(v.texcoord.iter().flat_map(|x| x.to_le_bytes()));
+    }
     bin.extend(mesh.indices.iter().flat_map(|i| i.to_le_bytes()));
 
-    let (pos_len, nrm_len, col_len, idx_len) = (
+    let (pos_len, nrm_len, col_len, tex_len, idx_len) = (
         12 * vertex_count,
         12 * vertex_count,
         16 * vertex_count,
+        8 * vertex_count,
         4 * index_count,
     );
     let nrm_off = pos_len;
     let col_off = nrm_off + nrm_len;
-    let idx_off = col_off + col_len;
+    let tex_off = col_off + col_len;
+    let idx_off = tex_off + tex_len;
     let vec3 = |a: [f32; 3]| format!("[{}, {}, {}]", a[0], a[1], a[2]);
     let name = json_string(name);
     Ok(format!(
@@ -120,7 +130,7 @@ fn gltf_document(mesh: &MeshData, name: &str) -> io::Result<String> {
   "meshes": [ {{
     "name": {name},
     "primitives": [ {{
-      "attributes": {{ "POSITION": 0, "NORMAL": 1, "COLOR_0": 2 }},
+      "attributes": {{ "POSITION": 0, "NORMAL": 1, "COLOR_0": 2, "TEXCOORD_0": 4 }},
       "indices": 3,
       "material": 0,
       "mode": 4
@@ -134,13 +144,15 @@ fn gltf_document(mesh: &MeshData, name: &str) -> io::Result<String> {
     {{ "bufferView": 0, "componentType": 5126, "count": {vertex_count}, "type": "VEC3", "min": {min}, "max": {max} }},
     {{ "bufferView": 1, "componentType": 5126, "count": {vertex_count}, "type": "VEC3" }},
     {{ "bufferView": 2, "componentType": 5126, "count": {vertex_count}, "type": "VEC4" }},
-    {{ "bufferView": 3, "componentType": 5125, "count": {index_count}, "type": "SCALAR" }}
+    {{ "bufferView": 3, "componentType": 5125, "count": {index_count}, "type": "SCALAR" }},
+    {{ "bufferView": 4, "componentType": 5126, "count": {vertex_count}, "type": "VEC2" }}
   ],
   "bufferViews": [
     {{ "buffer": 0, "byteOffset": 0, "byteLength": {pos_len}, "target": 34962 }},
     {{ "buffer": 0, "byteOffset": {nrm_off}, "byteLength": {nrm_len}, "target": 34962 }},
     {{ "buffer": 0, "byteOffset": {col_off}, "byteLength": {col_len}, "target": 34962 }},
-    {{ "buffer": 0, "byteOffset": {idx_off}, "byteLength": {idx_len}, "target": 34963 }}
+    {{ "buffer": 0, "byteOffset": {idx_off}, "byteLength": {idx_len}, "target": 34963 }},
+    {{ "buffer": 0, "byteOffset": {tex_off}, "byteLength": {tex_len}, "target": 34962 }}
   ],
   "buffers": [
     {{ "byteLength": {total}, "uri": "data:application/octet-stream;base64,{data}" }}
@@ -156,7 +168,8 @@ fn gltf_document(mesh: &MeshData, name: &str) -> io::Result<String> {
 
 /// Writes `mesh` as a glTF 2.0 `.gltf` JSON file with one embedded (base64 data URI) buffer:
 /// one scene with one node holding one mesh of one indexed triangle primitive with POSITION
-/// (float VEC3, with the min/max glTF requires), NORMAL (float VEC3), COLOR_0 (float VEC4)
+/// (float VEC3, with the min/max glTF requires), NORMAL (float VEC3), COLOR_0 (float VEC4),
+/// TEXCOORD_0 (float VEC2)
 /// and UNSIGNED_INT indices, using one default PBR material (white, metallic 0, roughness
 /// 0.5). The scene, node and mesh are named after the file stem.
 ///
