@@ -1,13 +1,18 @@
 //! The demo: the emerald teapot under one directional light, term by term, and the same
 //! teapot in each lighting mode at a coarse tessellation, as separate PNGs and one labelled
-//! contact sheet; then the glTF files of `assets/gltf` drawn directly, on a sheet of their own.
+//! contact sheet; the white teapot textured in each texture environment mode, with and without
+//! separate specular color; then the glTF files of `assets/gltf` drawn directly, on a sheet of
+//! their own.
 
 use std::path::Path;
 
 use glam::{Mat4, Vec3, Vec4};
 
 use crate::gl::presets;
-use crate::gl::state::{Cap, Face, GlState, LightModelParam, LightParam, LightingMode, MaterialParam};
+use crate::gl::state::{
+    Cap, ColorControl, Face, GlState, LightModelParam, LightParam, LightingMode, MaterialParam, TexEnvParam,
+};
+use crate::gl::texture::{MagFilter, MinFilter, Sampling, TexEnvMode, TextureImage, Wrap};
 use crate::images::save_png;
 use crate::mesh::teapot;
 use crate::renderer::{Draw, Frame, Renderer, RendererOptions};
@@ -111,17 +116,70 @@ fn render_teapot(
     gl: &GlState,
     size: u32,
 ) -> Result<image::RgbaImage> {
+    render_textured(renderer, mesh, gl, None, size)
+}
+
+fn render_textured(
+    renderer: &mut Renderer,
+    mesh: &crate::Mesh,
+    gl: &GlState,
+    texture: Option<&crate::Texture>,
+    size: u32,
+) -> Result<image::RgbaImage> {
     let mut frame = Frame::new(size, size);
     frame.clear_color = Vec4::new(0.08, 0.08, 0.1, 1.0);
     frame.draws.push(Draw {
-        mesh,
-        modelview: view(),
-        projection: projection(),
-        state: gl.lighting,
-        cull_face: None,
-        texture: None,
+        texture,
+        ..Draw::new(mesh, view(), projection(), gl.lighting)
     });
     Ok(renderer.render(&frame)?.into())
+}
+
+/// The texture of the texturing panels: a 64² checker of 8 cells, warm white opaque cells and
+/// blue cells of alpha 0.4 (so that DECAL, which blends by the texel's alpha, shows them).
+fn demo_texture() -> TextureImage {
+    TextureImage::checker(64, 8, [250, 236, 210, 255], [30, 80, 200, 102])
+        .expect("a 64x64 checker is a valid texture")
+        .with_mipmaps()
+}
+
+/// The white teapot with [`demo_texture`] in each environment mode (GL_BLEND's color orange),
+/// per fragment, first with GL_SINGLE_COLOR, then GL_SEPARATE_SPECULAR_COLOR, whose highlight
+/// the texture does not touch.
+pub fn texture_panels(renderer: &mut Renderer, size: u32) -> Result<Vec<(String, image::RgbaImage)>> {
+    let mesh = renderer.upload(&teapot::teapot(12)?)?;
+    let sampling = Sampling {
+        min_filter: MinFilter::LinearMipmapLinear,
+        mag_filter: MagFilter::Linear,
+        wrap_s: Wrap::Repeat,
+        wrap_t: Wrap::Repeat,
+    };
+    let texture = renderer.upload_texture(&demo_texture(), &sampling)?;
+    let mut panels = Vec::new();
+    for control in [ColorControl::SingleColor, ColorControl::SeparateSpecularColor] {
+        for env in TexEnvMode::ALL {
+            let mut gl = state(&PANELS[4], LightingMode::Fragment)?;
+            let white = presets::preset("white_plastic").expect("the preset table has white_plastic");
+            gl.lighting.front = white;
+            gl.lighting.back = white;
+            gl.material(
+                Face::FrontAndBack,
+                MaterialParam::Specular(Vec4::new(0.9, 0.9, 0.9, 1.0)),
+            )?;
+            gl.material(Face::FrontAndBack, MaterialParam::Shininess(40.0))?;
+            gl.light_model(LightModelParam::ColorControl(control))?;
+            gl.enable(Cap::Texture2D)?;
+            gl.tex_env(TexEnvParam::Mode(env))?;
+            gl.tex_env(TexEnvParam::Color(Vec4::new(1.0, 0.55, 0.1, 1.0)))?;
+            let image = render_textured(renderer, &mesh, &gl, Some(&texture), size)?;
+            let label = match control {
+                ColorControl::SingleColor => env.name().to_string(),
+                ColorControl::SeparateSpecularColor => format!("{}, separate specular", env.name()),
+            };
+            panels.push((label, image));
+        }
+    }
+    Ok(panels)
 }
 
 /// One demo panel: file name, label, image.
@@ -172,6 +230,15 @@ pub fn run(options: &RendererOptions, out: &Path) -> Result<()> {
         labelled.len(),
         out.display()
     );
+    let textured = texture_panels(&mut renderer, 256)?;
+    for (name, image) in &textured {
+        let file = name.replace(", separate specular", "_separate");
+        save_png(image, &out.join("texture").join(format!("{file}.png")))?;
+    }
+    let sheet = contact_sheet(&textured, 5)?;
+    let path = out.join("texture_sheet.png");
+    save_png(&sheet, &path)?;
+    println!("wrote {} (the texture environment modes)", path.display());
     let gltf = gltf_panels(
         &mut renderer,
         &Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/gltf"),
