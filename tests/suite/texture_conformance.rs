@@ -1,9 +1,48 @@
 //! Texturing against Mesa's GL: the same lit, textured sphere drawn by ffvk and by Mesa's
 //! fixed-function OpenGL (llvmpipe through EGL; `glTexImage2D` with ffvk's own mip levels,
 //! `glTexParameter`, `glTexEnv`, the `GL_TEXTURE` matrix, a texture coordinate array), compared
-//! with conformance.rs's mask (both renderers' coverage, eroded by one pixel).
+//! with conformance.rs's mask (both renderers' coverage, eroded by one pixel) over its 128²
+//! view (about 8 800 compared pixels per scene). A failing scene writes
+//! `tests/output/conformance/texture_NAME_VARIANT_{ffvk,gl,diff}.png`.
 //!
-//! TOLERANCES: filled in from measurements below.
+//! Measured here (lavapipe against llvmpipe, one Mesa; the results are deterministic):
+//!
+//! | scenes | within 1/255 | worst |
+//! |---|---|---|
+//! | nearest, no mipmaps: 5 modes × vertex/flat × single/separate, both pipeline variants (40) | 100 % | 1/255 |
+//! | linear, no mipmaps: 5 modes × vertex/flat (10) | 100 % | 1/255 |
+//! | trilinear, s and t over [−1, 2], 3 wraps × modulate/decal × vertex/flat (12) | ≥ 99.955 % | 2/255 |
+//! | sRGB, nearest and trilinear, modulate/replace × vertex/flat (8) | ≥ 99.955 % | 2/255 |
+//! | fragment mode against GL's Gouraud on the 131k-vertex sphere, linear (10) | ≥ 99.989 % | 3/255 |
+//! | every min × mag filter, texture ×2 (12) | ≥ 99.875 % (≥ 99.932 % within 2) | 19/255 |
+//! | every min × mag filter, texture ×12 (12), `*_MIPMAP_NEAREST` | 99.456 % (≥ 99.456 % within 2) | 54/255 |
+//! | every min × mag filter, texture ×12 (12), the others | ≥ 99.388 % (≥ 99.955 % within 2) | 4/255 |
+//!
+//! Both renderers are gallivm underneath, so texels, filter weights (8-bit on both) and
+//! rounding agree; what is left is 1/255 ties (alpha 0.7 × 255 = 178.5 is 178 in ffvk, 179 in
+//! Mesa) and λ, which the two compute in differently written shaders (ffvk's GLSL divides
+//! (s, t) by q; Mesa generates its own fixed-function shader), so it can differ by an ulp: a pixel whose λ lies on a switch (magnification against
+//! minification at λ = 0, or a nearest-level choice at λ = k + ½) may land on the other side.
+//! Such pixels are isolated (scattered over the sphere, densest near the rim where λ is
+//! large) and differ by as much as the two filters or levels do: up to 19/255 at ×2, 54/255
+//! at ×12 where neighbouring levels of the waves texture differ most.
+//!
+//! Tolerances, set just past those: 2/255 (the lighting tests' tolerance) on 99.9 % of the
+//! masked pixels for every scene with one filter throughout (measured 100 %; 99.9 % leaves
+//! about nine pixels for a λ or texel-edge flip on another Mesa); 3/255 on 99.9 % for fragment
+//! mode (measured 100 %; 3/255 as conformance.rs's fragment comparison, which this one
+//! follows); the filter sweep 2/255 on 99.8 % (measured ≥ 99.932 %), and 99.3 % for
+//! `*_MIPMAP_NEAREST` at ×12 (measured 99.456 %), where every level boundary crossing the
+//! sphere is a line of pixels whose level may flip. Fragment mode has no GL counterpart: as in
+//! conformance.rs it is compared with GL's Gouraud on a mesh dense enough to converge; texture
+//! sampling and the environment are per fragment in both and the same in every mode.
+//!
+//! GL 2.1 puts the min/mag switch at λ = 0.5 for a LINEAR mag filter with
+//! `NEAREST_MIPMAP_*` min (section 3.8.9); Vulkan, and so ffvk, at 0. Mesa switches at 0 too:
+//! [`the_min_mag_switch_is_at_lambda_zero_in_mesa_as_in_ffvk`] pins it on a quad at λ = 0.25.
+//! [`a_scene_with_another_texture_setting_fails_the_comparison`] checks the comparison can
+//! fail: a scene against GL's image of the scene with another environment mode, wrap or sRGB
+//! flag has under 1 % of its pixels within tolerance.
 
 use ffvk::gl::state::*;
 use ffvk::gl::texture::{MagFilter, MinFilter, Sampling, TexEnvMode, TextureImage, Wrap};
@@ -233,7 +272,7 @@ fn nearest_cases() -> Vec<Case> {
                     image: texels(),
                     sampling: Sampling::NEAREST,
                     tol: 2,
-                    need: 0.995,
+                    need: 0.999,
                 });
             }
         }
@@ -265,7 +304,7 @@ fn linear_filtering_without_mipmaps_matches_mesa_gl() {
                 image: waves(),
                 sampling,
                 tol: 2,
-                need: 0.995,
+                need: 0.999,
             });
         }
     }
@@ -289,7 +328,7 @@ fn trilinear_filtering_with_every_wrap_mode_matches_mesa_gl() {
                         wrap_t: wrap,
                     },
                     tol: 2,
-                    need: 0.995,
+                    need: 0.999,
                 });
             }
         }
@@ -312,7 +351,7 @@ fn srgb_textures_match_mesa_gl() {
                 image: srgb(texels()),
                 sampling: Sampling::NEAREST,
                 tol: 2,
-                need: 0.995,
+                need: 0.999,
             });
             cases.push(Case {
                 name: format!("srgb_trilinear_{}_{}", env.name(), mode.name()),
@@ -325,7 +364,7 @@ fn srgb_textures_match_mesa_gl() {
                     wrap_t: Wrap::MirroredRepeat,
                 },
                 tol: 2,
-                need: 0.995,
+                need: 0.999,
             });
         }
     }
@@ -357,7 +396,13 @@ fn every_min_and_mag_filter_matches_mesa_gl() {
                         wrap_t: Wrap::Repeat,
                     },
                     tol: 2,
-                    need: 0.995,
+                    // Nearest level choice under strong minification: see the module doc.
+                    need: if how == "x12" && min_filter.uses_mipmaps() && !min_filter.between_levels_linear()
+                    {
+                        0.993
+                    } else {
+                        0.998
+                    },
                 });
             }
         }
@@ -421,13 +466,21 @@ fn the_min_mag_switch_is_at_lambda_zero_in_mesa_as_in_ffvk() {
     for min in [MinFilter::NearestMipmapNearest, MinFilter::NearestMipmapLinear] {
         let gl_image = gl_at(min, MagFilter::Linear);
         let ours = ffvk_image(&mut r, &view, state, &image, &sampling(min, MagFilter::Linear));
-        println!(
-            "{}: GL differs from level-0 nearest at {} pixels, from level-0 linear at {}, from ffvk at {}",
-            min.name(),
+        let (from_nearest, from_linear, from_ffvk) = (
             differ(&gl_image, &nearest),
             differ(&gl_image, &linear),
-            differ(&gl_image, &ours)
+            differ(&gl_image, &ours),
         );
+        println!(
+            "{}: GL differs from level-0 nearest at {from_nearest} pixels, from level-0 linear at {from_linear}, from ffvk at {from_ffvk}",
+            min.name(),
+        );
+        // Measured: 0 pixels from ffvk for both filters; NEAREST_MIPMAP_NEAREST is level 0's
+        // nearest texel at every pixel (minification), not level 0's linear blend.
+        assert_eq!(from_ffvk, 0, "{}: ffvk and Mesa differ", min.name());
+        if min == MinFilter::NearestMipmapNearest {
+            assert_eq!(from_nearest, 0, "Mesa minifies at λ = 0.25");
+        }
     }
     finish(r);
 }
@@ -453,7 +506,7 @@ fn fragment_mode_with_textures_converges_to_mesa_gl_on_a_dense_mesh() {
                     wrap_t: Wrap::Repeat,
                 },
                 tol: 3,
-                need: 0.99,
+                need: 0.999,
             });
         }
     }
@@ -555,7 +608,45 @@ fn a_scene_with_another_texture_setting_fails_the_comparison() {
             share * 100.0,
             s.worst.4
         );
-        assert!(share < 0.9, "{what}: {:.2}% within 2/255", share * 100.0);
+        // Measured: 0.00 % to 0.68 %.
+        assert!(share < 0.05, "{what}: {:.2}% within 2/255", share * 100.0);
     }
     finish(r);
+}
+
+/// The timing loop draws textured scenes from buffer objects with the texture uploaded once;
+/// a level whose bytes do not match its size is an error naming it, before GL reads them.
+#[test]
+fn textured_scenes_time_and_a_malformed_level_is_an_error() {
+    use ffvk::tools::gl_reference::{render_gl_with, time_frames_with, DrawError, GlError, GlScene};
+    let view = sphere();
+    let image = waves().with_mipmaps();
+    let s = state(
+        TexEnvMode::Modulate,
+        ColorControl::SeparateSpecularColor,
+        LightingMode::Vertex,
+        past_the_edges(),
+    );
+    let scene = |image| {
+        let mut draw = GlDraw::new(&view.mesh, view.modelview, view.projection, s);
+        draw.texture = Some((image, Sampling::default()));
+        GlScene {
+            width: SIZE,
+            height: SIZE,
+            clear_color: [0.0, 0.0, 0.0, 1.0],
+            depth_test: true,
+            draws: vec![draw],
+        }
+    };
+    let timing = time_frames_with(&scene(&image), 1, 2, &gl_options()).unwrap();
+    assert_eq!(timing.frame_ns.len(), 2);
+    let mut bad = image.clone();
+    bad.levels[2].rgba.pop();
+    match render_gl_with(&scene(&bad), &gl_options()) {
+        Err(ffvk::tools::Error::Gl(GlError::Draw {
+            index: 0,
+            problem: DrawError::TextureLevel { level: 2, .. },
+        })) => {}
+        other => panic!("expected a TextureLevel error for level 2, got {other:?}"),
+    }
 }
