@@ -21,7 +21,7 @@ use image::{Rgba, RgbaImage};
 use crate::support::*;
 use ffvk::tools::gl_reference::{render_gl_with, GlDraw, GlScene};
 
-const SIZE: u32 = 128;
+pub(crate) const SIZE: u32 = 128;
 
 struct Case {
     name: &'static str,
@@ -343,7 +343,7 @@ fn gl_image(mesh: &MeshData, modelview: Mat4, projection: Mat4, state: LightingS
 }
 
 /// GL's image of one draw on a `SIZE`² frame cleared to `clear`, depth test on.
-fn gl_draw_image(draw: GlDraw, clear: [f32; 4]) -> RgbaImage {
+pub(crate) fn gl_draw_image(draw: GlDraw, clear: [f32; 4]) -> RgbaImage {
     render_gl_with(
         &GlScene {
             width: SIZE,
@@ -358,7 +358,7 @@ fn gl_draw_image(draw: GlDraw, clear: [f32; 4]) -> RgbaImage {
 }
 
 /// Pixels both renderers cover, away from silhouettes (eroded by one pixel).
-fn mask(r: &mut Renderer, mesh: &MeshData, modelview: Mat4, projection: Mat4) -> Vec<bool> {
+pub(crate) fn mask(r: &mut Renderer, mesh: &MeshData, modelview: Mat4, projection: Mat4) -> Vec<bool> {
     let mut white = mesh.clone();
     white.vertices.iter_mut().for_each(|v| v.color = [1.0; 4]);
     let unlit = LightingState::default();
@@ -382,7 +382,7 @@ fn mask(r: &mut Renderer, mesh: &MeshData, modelview: Mat4, projection: Mat4) ->
 }
 
 /// Leaves out pixels within one pixel of a jump of more than 24/255 between 4-neighbours.
-fn exclude_discontinuities(image: &RgbaImage, mask: &mut [bool]) {
+pub(crate) fn exclude_discontinuities(image: &RgbaImage, mask: &mut [bool]) {
     let jump = |a: &Rgba<u8>, b: &Rgba<u8>| (0..3).any(|c| a.0[c].abs_diff(b.0[c]) > 24);
     let mut edge = vec![false; mask.len()];
     for y in 0..SIZE {
@@ -402,13 +402,14 @@ fn exclude_discontinuities(image: &RgbaImage, mask: &mut [bool]) {
     }
 }
 
-struct Stats {
-    compared: usize,
-    within: usize,
-    worst: (u32, u32, [u8; 4], [u8; 4], u8),
+pub(crate) struct Stats {
+    pub(crate) compared: usize,
+    pub(crate) within: usize,
+    /// x, y, ffvk's pixel, GL's, the largest channel difference.
+    pub(crate) worst: (u32, u32, [u8; 4], [u8; 4], u8),
 }
 
-fn compare(ours: &RgbaImage, theirs: &RgbaImage, mask: &[bool], tol: u8) -> Stats {
+pub(crate) fn compare(ours: &RgbaImage, theirs: &RgbaImage, mask: &[bool], tol: u8) -> Stats {
     let mut s = Stats {
         compared: 0,
         within: 0,
@@ -432,7 +433,12 @@ fn compare(ours: &RgbaImage, theirs: &RgbaImage, mask: &[bool], tol: u8) -> Stat
 }
 
 /// Saves GL's image, ffvk's and a diff (differences ×16, masked-out pixels dark blue).
-fn save_triplet(name: &str, ours: &RgbaImage, theirs: &RgbaImage, mask: &[bool]) -> std::path::PathBuf {
+pub(crate) fn save_triplet(
+    name: &str,
+    ours: &RgbaImage,
+    theirs: &RgbaImage,
+    mask: &[bool],
+) -> std::path::PathBuf {
     let dir = output_dir().join("conformance");
     std::fs::create_dir_all(&dir).unwrap();
     ours.save(dir.join(format!("{name}_ffvk.png"))).unwrap();

@@ -39,6 +39,7 @@ fn scene<'a>(mesh: &'a MeshData, state: LightingState) -> GlScene<'a> {
             state,
             color_array: true,
             calls: Vec::new(),
+            texture: None,
         }],
     }
 }

@@ -19,4 +19,5 @@ mod scene;
 mod specialization;
 mod state;
 mod support;
+mod texture_conformance;
 mod texturing;

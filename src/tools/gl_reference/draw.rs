@@ -6,6 +6,7 @@ use std::ffi::c_void;
 use std::time::Instant;
 
 use crate::gl::state::{Cap, ColorControl, ColorMaterialMode, Face, Light, LightingMode, Material};
+use crate::gl::texture::{MagFilter, MinFilter, Sampling, TexEnvMode, TextureImage, TextureUnit, Wrap};
 use crate::mesh::{MeshData, Vertex};
 
 use super::bindings::types::{GLenum, GLint, GLsizei, GLsizeiptr, GLuint};
@@ -60,7 +61,15 @@ pub(super) fn render(gl: &Gl, scene: &GlScene) -> Result<image::RgbaImage, GlErr
     check(gl, || "while setting up the frame".into())?;
 
     for (index, draw) in scene.draws.iter().enumerate() {
-        draw_one(gl, draw, max_lights, Arrays::Client).map_err(|problem| GlError::Draw { index, problem })?;
+        // The draw's texture object lives for the draw only (deleted when dropped).
+        let texture = draw
+            .texture
+            .map(|(image, sampling)| GlTexture::upload(gl, image, &sampling))
+            .transpose()
+            .map_err(|problem| GlError::Draw { index, problem })?;
+        draw_one(gl, draw, max_lights, Arrays::Client, texture.as_ref())
+            .map_err(|problem| GlError::Draw { index, problem })?;
+        drop(texture);
         check(gl, || format!("after draw {index}"))?;
     }
 
@@ -107,6 +116,19 @@ pub(super) fn time(gl: &Gl, scene: &GlScene, warmup: u32, frames: u32) -> Result
         .map(|(index, d)| MeshBuffers::upload(gl, d.mesh).map_err(|problem| GlError::Draw { index, problem }))
         .collect::<Result<Vec<_>, _>>()?;
     check(gl, || "while uploading the meshes".into())?;
+    // Textures too are uploaded once, as ffvk uploads them once.
+    let textures = scene
+        .draws
+        .iter()
+        .enumerate()
+        .map(|(index, d)| {
+            d.texture
+                .map(|(image, sampling)| GlTexture::upload(gl, image, &sampling))
+                .transpose()
+                .map_err(|problem| GlError::Draw { index, problem })
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    check(gl, || "while uploading the textures".into())?;
     let timer = TimerQuery::new(gl);
     let mut first_frame_ns = 0.0;
     let mut frame_ns = Vec::with_capacity(frames as usize);
@@ -119,8 +141,8 @@ pub(super) fn time(gl: &Gl, scene: &GlScene, warmup: u32, frames: u32) -> Result
             unsafe { gl.BeginQuery(gl::TIME_ELAPSED, t.name) };
         }
         begin_frame(gl, scene);
-        for (index, (draw, b)) in scene.draws.iter().zip(&buffers).enumerate() {
-            draw_one(gl, draw, max_lights, Arrays::Buffers(b))
+        for (index, ((draw, b), t)) in scene.draws.iter().zip(&buffers).zip(&textures).enumerate() {
+            draw_one(gl, draw, max_lights, Arrays::Buffers(b), t.as_ref())
                 .map_err(|problem| GlError::Draw { index, problem })?;
         }
         if timer.is_some() {
@@ -233,6 +255,157 @@ impl Drop for MeshBuffers<'_> {
         // `time`, which runs inside its context).
         unsafe { self.gl.DeleteBuffers(2, self.names.as_ptr()) };
     }
+}
+
+/// A texture object of the current context holding every level of a [`TextureImage`], with
+/// its parameters set; deleted when dropped.
+struct GlTexture<'g> {
+    gl: &'g Gl,
+    name: GLuint,
+}
+
+impl<'g> GlTexture<'g> {
+    /// glTexImage2D for every level (`GL_SRGB8_ALPHA8` for an sRGB image, else `GL_RGBA8`), and
+    /// glTexParameter for the filters and wraps. A complete chain gets `GL_TEXTURE_MAX_LEVEL`
+    /// = levels − 1; any other image keeps GL's default of 1000, so that GL, like ffvk
+    /// ([`crate::gl::texture::texturing_applies`]), finds it incomplete under a mipmap filter
+    /// rather than complete at its levels. Leaves the texture bound to `GL_TEXTURE_2D`.
+    fn upload(gl: &'g Gl, image: &TextureImage, sampling: &Sampling) -> Result<GlTexture<'g>, DrawError> {
+        for (level, l) in image.levels.iter().enumerate() {
+            let fits = GLsizei::try_from(l.width).is_ok() && GLsizei::try_from(l.height).is_ok();
+            if !fits || Some(l.rgba.len()) != (l.width as usize).checked_mul(l.height as usize * 4) {
+                return Err(DrawError::TextureLevel {
+                    level,
+                    width: l.width,
+                    height: l.height,
+                    bytes: l.rgba.len(),
+                });
+            }
+        }
+        let mut texture = GlTexture { gl, name: 0 };
+        let internal = if image.srgb { gl::SRGB8_ALPHA8 } else { gl::RGBA8 };
+        // SAFETY: a context is current on this thread; glGenTextures writes one name (owned by
+        // `texture` from here on); each level's bytes were checked to be width * height * 4,
+        // which glTexImage2D reads with UNPACK_ALIGNMENT 1 (no row padding) and no unpack
+        // buffer bound.
+        unsafe {
+            gl.GenTextures(1, &mut texture.name);
+            gl.BindTexture(gl::TEXTURE_2D, texture.name);
+            gl.PixelStorei(gl::UNPACK_ALIGNMENT, 1);
+            for (level, l) in image.levels.iter().enumerate() {
+                gl.TexImage2D(
+                    gl::TEXTURE_2D,
+                    level as GLint,
+                    internal as GLint,
+                    l.width as GLsizei,
+                    l.height as GLsizei,
+                    0,
+                    gl::RGBA,
+                    gl::UNSIGNED_BYTE,
+                    l.rgba.as_ptr().cast(),
+                );
+            }
+            if image.has_mipmaps() {
+                gl.TexParameteri(
+                    gl::TEXTURE_2D,
+                    gl::TEXTURE_MAX_LEVEL,
+                    image.levels.len() as GLint - 1,
+                );
+            }
+            gl.TexParameteri(
+                gl::TEXTURE_2D,
+                gl::TEXTURE_MIN_FILTER,
+                min_filter_enum(sampling.min_filter) as GLint,
+            );
+            gl.TexParameteri(
+                gl::TEXTURE_2D,
+                gl::TEXTURE_MAG_FILTER,
+                mag_filter_enum(sampling.mag_filter) as GLint,
+            );
+            gl.TexParameteri(
+                gl::TEXTURE_2D,
+                gl::TEXTURE_WRAP_S,
+                wrap_enum(sampling.wrap_s) as GLint,
+            );
+            gl.TexParameteri(
+                gl::TEXTURE_2D,
+                gl::TEXTURE_WRAP_T,
+                wrap_enum(sampling.wrap_t) as GLint,
+            );
+        }
+        check_draw(gl, "uploading the texture")?;
+        Ok(texture)
+    }
+}
+
+impl Drop for GlTexture<'_> {
+    fn drop(&mut self) {
+        // SAFETY: the context that made the name is current (textures never outlive the
+        // `render` or `time` call that made them, which runs inside its context).
+        unsafe { self.gl.DeleteTextures(1, &self.name) };
+    }
+}
+
+fn min_filter_enum(filter: MinFilter) -> GLenum {
+    match filter {
+        MinFilter::Nearest => gl::NEAREST,
+        MinFilter::Linear => gl::LINEAR,
+        MinFilter::NearestMipmapNearest => gl::NEAREST_MIPMAP_NEAREST,
+        MinFilter::LinearMipmapNearest => gl::LINEAR_MIPMAP_NEAREST,
+        MinFilter::NearestMipmapLinear => gl::NEAREST_MIPMAP_LINEAR,
+        MinFilter::LinearMipmapLinear => gl::LINEAR_MIPMAP_LINEAR,
+    }
+}
+
+fn mag_filter_enum(filter: MagFilter) -> GLenum {
+    match filter {
+        MagFilter::Nearest => gl::NEAREST,
+        MagFilter::Linear => gl::LINEAR,
+    }
+}
+
+fn wrap_enum(wrap: Wrap) -> GLenum {
+    match wrap {
+        Wrap::Repeat => gl::REPEAT,
+        Wrap::ClampToEdge => gl::CLAMP_TO_EDGE,
+        Wrap::MirroredRepeat => gl::MIRRORED_REPEAT,
+    }
+}
+
+fn tex_env_enum(mode: TexEnvMode) -> GLenum {
+    match mode {
+        TexEnvMode::Modulate => gl::MODULATE,
+        TexEnvMode::Replace => gl::REPLACE,
+        TexEnvMode::Decal => gl::DECAL,
+        TexEnvMode::Blend => gl::BLEND,
+        TexEnvMode::Add => gl::ADD,
+    }
+}
+
+/// The texture unit: `texture`'s object bound (else object 0, which has no image), the
+/// environment, the `GL_TEXTURE` matrix and the `GL_TEXTURE_2D` enable. Leaves the matrix mode
+/// at `GL_MODELVIEW`.
+fn set_texture_unit(gl: &Gl, unit: &TextureUnit, texture: Option<&GlTexture>) {
+    // SAFETY: a context is current on this thread; the name, when there is one, is a texture
+    // it made and has not deleted; the color has four components and the matrix 16,
+    // column-major as both glam and GL store it.
+    unsafe {
+        gl.BindTexture(gl::TEXTURE_2D, texture.map_or(0, |t| t.name));
+        gl.TexEnvi(
+            gl::TEXTURE_ENV,
+            gl::TEXTURE_ENV_MODE,
+            tex_env_enum(unit.env_mode) as GLint,
+        );
+        gl.TexEnvfv(
+            gl::TEXTURE_ENV,
+            gl::TEXTURE_ENV_COLOR,
+            unit.env_color.to_array().as_ptr(),
+        );
+        gl.MatrixMode(gl::TEXTURE);
+        gl.LoadMatrixf(unit.matrix.to_cols_array().as_ptr());
+        gl.MatrixMode(gl::MODELVIEW);
+    }
+    set_enabled(gl, gl::TEXTURE_2D, unit.enabled);
 }
 
 /// Where a draw's vertex and index arrays are.
@@ -369,7 +542,13 @@ fn set_material(gl: &Gl, face: GLenum, m: &Material) {
     }
 }
 
-fn draw_one(gl: &Gl, draw: &GlDraw, max_lights: usize, arrays: Arrays) -> Result<(), DrawError> {
+fn draw_one(
+    gl: &Gl,
+    draw: &GlDraw,
+    max_lights: usize,
+    arrays: Arrays,
+    texture: Option<&GlTexture>,
+) -> Result<(), DrawError> {
     let state = &draw.state;
     if let Some((index, _)) = state
         .lights
@@ -435,6 +614,7 @@ fn draw_one(gl: &Gl, draw: &GlDraw, max_lights: usize, arrays: Arrays) -> Result
     set_enabled(gl, gl::NORMALIZE, state.normalize);
     set_enabled(gl, gl::RESCALE_NORMAL, state.rescale_normal);
     set_enabled(gl, gl::LIGHTING, state.lighting);
+    set_texture_unit(gl, &state.texture, texture);
     for call in &draw.calls {
         replay(gl, *call);
     }
@@ -470,6 +650,17 @@ fn draw_one(gl: &Gl, draw: &GlDraw, max_lights: usize, arrays: Arrays) -> Result
         if draw.color_array {
             gl.EnableClientState(gl::COLOR_ARRAY);
         }
+        // Texture coordinates matter only with a texture bound (as in ffvk, each vertex's
+        // (s, t, 0, 1) then goes through the texture matrix).
+        if texture.is_some() {
+            gl.EnableClientState(gl::TEXTURE_COORD_ARRAY);
+        }
+        gl.TexCoordPointer(
+            2,
+            gl::FLOAT,
+            stride,
+            field(std::mem::offset_of!(Vertex, texcoord)),
+        );
         gl.VertexPointer(
             3,
             gl::FLOAT,
@@ -482,6 +673,7 @@ fn draw_one(gl: &Gl, draw: &GlDraw, max_lights: usize, arrays: Arrays) -> Result
         gl.DisableClientState(gl::VERTEX_ARRAY);
         gl.DisableClientState(gl::NORMAL_ARRAY);
         gl.DisableClientState(gl::COLOR_ARRAY);
+        gl.DisableClientState(gl::TEXTURE_COORD_ARRAY);
         gl.BindBuffer(gl::ARRAY_BUFFER, 0);
         gl.BindBuffer(gl::ELEMENT_ARRAY_BUFFER, 0);
     }

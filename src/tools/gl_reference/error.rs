@@ -114,6 +114,16 @@ pub enum DrawError {
     #[error("{0} bytes are too many for a buffer")]
     TooManyBytes(usize),
 
+    /// A texture level whose bytes are not width × height × 4 (glTexImage2D would read past
+    /// them), or whose size does not fit GL's.
+    #[error("texture level {level} is {width}x{height} with {bytes} bytes: expected width × height × 4 bytes and sides that fit a GLsizei")]
+    TextureLevel {
+        level: usize,
+        width: u32,
+        height: u32,
+        bytes: usize,
+    },
+
     /// GL raised errors for this draw's calls.
     #[error("GL error {} {when}", hex_codes(.codes))]
     Gl { codes: Vec<u32>, when: &'static str },

@@ -2,8 +2,9 @@
 //! anchor of `ffvk bench`.
 //!
 //! It maps a [`LightingState`] onto the legacy GL entry points one to one (glLight, glMaterial,
-//! glLightModel, glColorMaterial, glShadeModel, glEnable) and lets the GL driver evaluate the
-//! lighting. Nothing is linked: `libEGL.so.1` is opened when a render starts (`egl.rs`), the
+//! glLightModel, glColorMaterial, glShadeModel, glEnable; glTexImage2D, glTexParameter,
+//! glTexEnv and the `GL_TEXTURE` matrix for a textured draw) and lets the GL driver evaluate
+//! the lighting and texturing. Nothing is linked: `libEGL.so.1` is opened when a render starts (`egl.rs`), the
 //! display comes from `EGL_EXT_platform_device` (else `EGL_MESA_platform_surfaceless`), and
 //! the GL entry points, generated from Khronos' registry by `build.rs`, are loaded through
 //! `eglGetProcAddress`. A machine without EGL or without a GL driver gets
@@ -39,6 +40,7 @@ use std::sync::Mutex;
 use glam::{Mat4, Vec4};
 
 use crate::gl::state::{Cap, ColorMaterialMode, Face, LightingState};
+use crate::gl::texture::{Sampling, TextureImage};
 use crate::mesh::MeshData;
 use crate::tools::Result;
 
@@ -70,10 +72,16 @@ pub struct GlDraw<'a> {
     /// GL calls made after the state is set and before the draw, so that GL's own rules
     /// (the current color, color-material tracking and write-back) apply to them.
     pub calls: Vec<GlCall>,
+    /// The texture bound to `GL_TEXTURE_2D` for this draw, with its parameters; `None` binds
+    /// texture object 0 (no image, so `GL_TEXTURE_2D` on textures nothing). Every level of the
+    /// image is uploaded as it is (ffvk's own mipmaps, so that a comparison is about sampling,
+    /// not mipmap generation); the texture environment and matrix come from
+    /// [`LightingState::texture`] and the texture coordinates from the mesh.
+    pub texture: Option<(&'a TextureImage, Sampling)>,
 }
 
 impl<'a> GlDraw<'a> {
-    /// A draw of `mesh` with its color array and no extra calls.
+    /// A draw of `mesh` with its color array, no extra calls and no texture.
     pub fn new(mesh: &'a MeshData, modelview: Mat4, projection: Mat4, state: LightingState) -> Self {
         GlDraw {
             mesh,
@@ -82,6 +90,7 @@ impl<'a> GlDraw<'a> {
             state,
             color_array: true,
             calls: Vec::new(),
+            texture: None,
         }
     }
 }
