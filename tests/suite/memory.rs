@@ -83,15 +83,15 @@ fn many_meshes_share_a_few_blocks_and_dropping_them_returns_every_allocation() {
 }
 
 #[test]
-fn a_frame_uses_twelve_bytes_a_pixel_and_a_mesh_forty_a_vertex_and_four_an_index() {
+fn a_frame_uses_twelve_bytes_a_pixel_and_a_mesh_forty_eight_a_vertex_and_four_an_index() {
     let mut r = renderer();
     let before = r.memory_usage().used_bytes;
-    // Large enough for its vertex buffer (40 B a vertex, 7.6 MB) to take memory of its own.
+    // Large enough for its vertex buffer (48 B a vertex, 9 MB) to take memory of its own.
     let mesh = teapot(60).unwrap();
     let uploaded = r.upload(&mesh).unwrap();
     let usage = r.memory_usage();
     let mesh_bytes = usage.used_bytes - before;
-    let expected = 40 * mesh.vertices.len() as u64 + 4 * mesh.indices.len() as u64;
+    let expected = 48 * mesh.vertices.len() as u64 + 4 * mesh.indices.len() as u64;
     assert!(
         mesh_bytes >= expected && mesh_bytes <= expected + (128 << 10),
         "the mesh uses {mesh_bytes} bytes, expected {expected} plus alignment"
@@ -125,7 +125,7 @@ fn frames_measured_back_to_back_write_each_draws_uniforms_once() {
     }
     r.measure_frames(&frame, 1).unwrap();
     let one = r.memory_usage();
-    // 1,000 repeats of 40 draws would need 40,000 blocks (89 MB) if each repeat wrote its own.
+    // 1,000 repeats of 40 draws would need 40,000 blocks (93 MB) if each repeat wrote its own.
     let frames = r.measure_frames(&frame, 1000).unwrap();
     assert_eq!(frames.len(), 1000);
     assert_eq!(r.memory_usage(), one, "uniform memory grew with the repeats");
