@@ -39,13 +39,7 @@ fn run() -> Result<(), String> {
     let mut renderer = Renderer::new(&RendererOptions::default()).map_err(|e| e.to_string())?;
     let mesh = renderer.upload(&quad).map_err(|e| e.to_string())?;
     let mut frame = Frame::new(8, 8);
-    frame.draws.push(Draw {
-        mesh: &mesh,
-        modelview: Mat4::IDENTITY,
-        projection: Mat4::IDENTITY,
-        state: gl.lighting,
-        cull_face: None,
-    });
+    frame.draws.push(Draw::new(&mesh, Mat4::IDENTITY, Mat4::IDENTITY, gl.lighting));
     let pixels = renderer.render(&frame).map_err(|e| e.to_string())?;
     let got = pixels.pixel(4, 4).ok_or("the image has no pixel (4, 4)")?;
 
