@@ -127,11 +127,8 @@ impl Builder<'_> {
         if spec.generate_mipmap.unwrap_or(false) {
             image = image.with_mipmaps();
         }
-        let wrap = [
-            ("repeat", Wrap::Repeat),
-            ("clamp_to_edge", Wrap::ClampToEdge),
-            ("mirrored_repeat", Wrap::MirroredRepeat),
-        ];
+        // The words are the enums' own names, so the file format and messages cannot drift.
+        let wrap: Vec<(&'static str, Wrap)> = Wrap::ALL.iter().map(|&w| (w.name(), w)).collect();
         let min: Vec<(&'static str, MinFilter)> = MinFilter::ALL.iter().map(|&m| (m.name(), m)).collect();
         let mag = [("nearest", MagFilter::Nearest), ("linear", MagFilter::Linear)];
         let defaults = Sampling::default();

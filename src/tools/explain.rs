@@ -167,7 +167,8 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
         let _ = writeln!(out, "LIGHTING is disabled: the vertex color passes through.");
     }
 
-    let color = match mode {
+    // The terms are printed from here; the colors at the pixel come from pixel_terms below.
+    match mode {
         LightingMode::Vertex | LightingMode::Flat => {
             let shown: Vec<usize> = if mode == LightingMode::Flat {
                 vec![2]
@@ -211,13 +212,10 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
             if mode == LightingMode::Vertex {
                 let _ = writeln!(out, "interpolated c_pri {}  c_sec {}", rgba(pri), rgba(sec));
             }
-            reference::color_sum(pri, sec)
         }
         LightingMode::Fragment => {
             let p = eye[0].eye * w.x + eye[1].eye * w.y + eye[2].eye * w.z;
             let c = eye[0].color * w.x + eye[1].color * w.y + eye[2].color * w.z;
-            let color =
-                reference::pixel_color(&state, modelview, scene.projection, verts, hit.coverage, None);
             let _ = writeln!(out, "fragment: eye {}, color {}", rgba(p), rgba(c));
             if state.lighting {
                 let unit = |v: DVec3| {
@@ -244,12 +242,11 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
                     &indices,
                 );
             }
-            color
         }
-    };
+    }
     let bound = mesh.texture.as_ref().map(|t| (&*t.image, &t.sampling));
     let pixel = reference::pixel_terms(&state, modelview, scene.projection, verts, hit.coverage, bound);
-    let color = match (&mesh.texture, pixel.textured) {
+    match (&mesh.texture, pixel.textured) {
         (Some(t), Some(tex)) => {
             let image = &t.image;
             let _ = writeln!(
@@ -289,7 +286,6 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
                 rgba(tex.env)
             );
             let _ = writeln!(out, "  c_sec, added after texturing {}", rgba(pixel.c_sec));
-            pixel.color
         }
         (Some(t), None) => {
             let _ = writeln!(
@@ -298,10 +294,10 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
                 t.source,
                 t.sampling.min_filter.name()
             );
-            color
         }
-        (None, _) => color,
-    };
+        (None, _) => {}
+    }
+    let color = pixel.color;
     let _ = writeln!(
         out,
         "final color (clamp(c_pri + c_sec), alpha of c_pri; textured: C_v for c_pri) {} = {}",

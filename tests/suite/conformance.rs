@@ -324,14 +324,7 @@ fn ffvk_image(
 ) -> RgbaImage {
     let gpu = r.upload(mesh).unwrap();
     let mut frame = Frame::new(SIZE, SIZE);
-    frame.draws.push(Draw {
-        mesh: &gpu,
-        modelview,
-        projection,
-        state,
-        cull_face: None,
-        texture: None,
-    });
+    frame.draws.push(Draw::new(&gpu, modelview, projection, state));
     r.render(&frame).unwrap().into_rgba_image()
 }
 
@@ -644,14 +637,7 @@ fn the_current_color_and_its_color_material_write_back_match_mesa_gl() {
             let gpu = r.upload(&colored_teapot).unwrap();
             let mut frame = Frame::new(SIZE, SIZE);
             frame.clear_color = Vec4::from_array(embed::CLEAR);
-            frame.draws.push(Draw {
-                mesh: &gpu,
-                modelview: view,
-                projection,
-                state: frame_state,
-                cull_face: None,
-                texture: None,
-            });
+            frame.draws.push(Draw::new(&gpu, view, projection, frame_state));
             r.render(&frame).unwrap().into_rgba_image()
         };
         let mut draw = GlDraw::new(&colored_teapot, view, projection, base.lighting);

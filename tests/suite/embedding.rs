@@ -46,14 +46,9 @@ fn renderer_frame(
 ) -> ffvk::Pixels {
     let mut frame = Frame::new(embed::SIZE, embed::SIZE);
     frame.clear_color = Vec4::from_array(embed::CLEAR);
-    frame.draws.push(Draw {
-        mesh,
-        modelview: embed::view(),
-        projection: embed::projection(),
-        state: *state,
-        cull_face: None,
-        texture: None,
-    });
+    frame
+        .draws
+        .push(Draw::new(mesh, embed::view(), embed::projection(), *state));
     r.render(&frame).unwrap()
 }
 
@@ -177,14 +172,9 @@ fn ten_thousand_draws_with_distinct_states_in_one_command_buffer_each_light_as_t
     let mut frame = Frame::new(2 * SIDE, 2 * SIDE);
     frame.depth_test = false;
     for (mesh, gl) in uploaded.iter().zip(&states) {
-        frame.draws.push(Draw {
-            mesh,
-            modelview: Mat4::IDENTITY,
-            projection: Mat4::IDENTITY,
-            state: gl.lighting,
-            cull_face: None,
-            texture: None,
-        });
+        frame
+            .draws
+            .push(Draw::new(mesh, Mat4::IDENTITY, Mat4::IDENTITY, gl.lighting));
     }
     let image = r.render(&frame).unwrap().into_rgba_image();
     for j in 0..SIDE {

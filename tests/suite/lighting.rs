@@ -58,14 +58,9 @@ fn render_variant(scene: &Scene, state: LightingState, specialize: Specialize) -
     let mesh = r.upload(&scene.mesh).unwrap();
     let mut frame = Frame::new(SIZE, SIZE);
     frame.clear_color = Vec4::new(0.1, 0.2, 0.3, 1.0);
-    frame.draws.push(Draw {
-        mesh: &mesh,
-        modelview: scene.modelview,
-        projection: scene.projection,
-        state,
-        cull_face: None,
-        texture: None,
-    });
+    frame
+        .draws
+        .push(Draw::new(&mesh, scene.modelview, scene.projection, state));
     let image = r.render(&frame).unwrap().into_rgba_image();
     // The variant really drew: one pipeline, specialized or not.
     let specialized = usize::from(specialize == Specialize::Always);
@@ -94,23 +89,9 @@ fn check(name: &str, scene: &Scene, mode: LightingMode) {
     let mut probes = 0;
     for py in (1..SIZE).step_by(2) {
         for px in (1..SIZE).step_by(2) {
-            // The nearest triangle covering the pixel center (depth test LESS).
-            let mut best: Option<(f64, [usize; 3], reference::Coverage)> = None;
-            for t in scene.mesh.indices.chunks(3) {
-                let idx = [t[0] as usize, t[1] as usize, t[2] as usize];
-                let clip = idx.map(|i| clips[i]);
-                let Some(cov) = reference::coverage(clip, SIZE, SIZE, px, py) else {
-                    continue;
-                };
-                let w = cov.weights;
-                let z = (clip[0].z / clip[0].w) * w.x
-                    + (clip[1].z / clip[1].w) * w.y
-                    + (clip[2].z / clip[2].w) * w.z;
-                if best.as_ref().is_none_or(|b| z < b.0) {
-                    best = Some((z, idx, cov));
-                }
-            }
-            let Some((_, idx, cov)) = best else { continue };
+            let Some((idx, cov)) = nearest_covering(&scene.mesh, &clips, SIZE, px, py) else {
+                continue;
+            };
             if !away_from_edges(idx.map(|i| clips[i]), px, py) {
                 continue;
             }

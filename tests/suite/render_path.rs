@@ -69,14 +69,9 @@ fn counter_clockwise_is_front() {
     let mirror = Mat4::from_scale(glam::Vec3::new(-1.0, 1.0, 1.0));
     let mut frame = Frame::new(64, 64);
     for (modelview, _) in [(Mat4::IDENTITY, "ccw"), (mirror, "cw")] {
-        frame.draws.push(Draw {
-            mesh: &ccw,
-            modelview,
-            projection: Mat4::IDENTITY,
-            state: gl.lighting,
-            cull_face: None,
-            texture: None,
-        });
+        frame
+            .draws
+            .push(Draw::new(&ccw, modelview, Mat4::IDENTITY, gl.lighting));
     }
     let image = r.render(&frame).unwrap().into_rgba_image();
     assert_pixel(

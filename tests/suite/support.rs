@@ -3,7 +3,11 @@
 
 use std::path::PathBuf;
 
-use ffvk::gl::state::{Cap, GlState, LightingState, StateError};
+use ffvk::gl::state::{
+    Cap, ColorControl, Face, GlState, LightModelParam, LightParam, LightingMode, LightingState,
+    MaterialParam, StateError, TexEnvParam,
+};
+use ffvk::gl::texture::TexEnvMode;
 use ffvk::mesh::{MeshData, Vertex};
 use ffvk::tools::gl_reference::GlOptions;
 use ffvk::vk::{Validation, ValidationSink};
@@ -173,14 +177,7 @@ pub fn with(mut gl: GlState, f: impl FnOnce(&mut GlState) -> Result<(), StateErr
 /// An unlit draw with identity matrices: object coordinates are GL's normalized device
 /// coordinates.
 pub fn ndc_draw(mesh: &ffvk::Mesh) -> ffvk::Draw<'_> {
-    ffvk::Draw {
-        mesh,
-        modelview: Mat4::IDENTITY,
-        projection: Mat4::IDENTITY,
-        state: unlit(),
-        cull_face: None,
-        texture: None,
-    }
+    ffvk::Draw::new(mesh, Mat4::IDENTITY, Mat4::IDENTITY, unlit())
 }
 
 /// The ffvk binary on lavapipe with `args`.
@@ -213,4 +210,62 @@ pub fn reference_at(
         mesh.texture.as_ref().map(|t| (&*t.image, &t.sampling)),
     );
     Some((hit, color))
+}
+
+/// The lit, textured state of the texturing tests: light 0 from the upper right with a white
+/// highlight on an orange, partly transparent material; the texture environment `env` with color (0.2, 0.4, 1, 0.5) and `matrix`.
+pub fn textured_state(
+    env: TexEnvMode,
+    control: ColorControl,
+    mode: LightingMode,
+    matrix: Mat4,
+) -> LightingState {
+    let mut gl = lit_state();
+    gl.light(0, LightParam::Position(Vec4::new(1.0, 1.0, 2.0, 0.0)))
+        .unwrap();
+    gl.material(
+        Face::FrontAndBack,
+        MaterialParam::AmbientAndDiffuse(rgba(0.9, 0.6, 0.3, 0.7)),
+    )
+    .unwrap();
+    gl.material(
+        Face::FrontAndBack,
+        MaterialParam::Specular(rgba(0.8, 0.8, 0.8, 1.0)),
+    )
+    .unwrap();
+    gl.material(Face::FrontAndBack, MaterialParam::Shininess(20.0))
+        .unwrap();
+    gl.light_model(LightModelParam::ColorControl(control)).unwrap();
+    gl.enable(Cap::Texture2D).unwrap();
+    gl.tex_env(TexEnvParam::Mode(env)).unwrap();
+    gl.tex_env(TexEnvParam::Color(rgba(0.2, 0.4, 1.0, 0.5))).unwrap();
+    gl.load_texture_matrix(matrix).unwrap();
+    gl.lighting_mode(mode);
+    gl.lighting
+}
+
+/// The nearest triangle of `mesh` (depth test LESS) whose interior holds the center of pixel
+/// (px, py) of a `size`² image, `clips` its vertices' GL clip positions: the triangle's
+/// vertex indices and the pixel's coverage.
+pub fn nearest_covering(
+    mesh: &MeshData,
+    clips: &[DVec4],
+    size: u32,
+    px: u32,
+    py: u32,
+) -> Option<([usize; 3], ffvk::reference::Coverage)> {
+    let mut best: Option<(f64, [usize; 3], ffvk::reference::Coverage)> = None;
+    for t in mesh.indices.chunks(3) {
+        let idx = [t[0] as usize, t[1] as usize, t[2] as usize];
+        let clip = idx.map(|i| clips[i]);
+        let Some(cov) = ffvk::reference::coverage(clip, size, size, px, py) else {
+            continue;
+        };
+        let w = cov.weights;
+        let z = (0..3).map(|k| clip[k].z / clip[k].w * w[k]).sum::<f64>();
+        if best.as_ref().is_none_or(|b| z < b.0) {
+            best = Some((z, idx, cov));
+        }
+    }
+    best.map(|(_, idx, cov)| (idx, cov))
 }

@@ -94,33 +94,6 @@ fn waves() -> TextureImage {
     TextureImage::new(64, 64, rgba).unwrap()
 }
 
-/// Light 0 from the upper right with a white highlight on an orange, partly transparent
-/// material; the texture environment `env` with color (0.2, 0.4, 1, 0.5) and `matrix`.
-fn state(env: TexEnvMode, control: ColorControl, mode: LightingMode, matrix: Mat4) -> LightingState {
-    let mut gl = lit_state();
-    gl.light(0, LightParam::Position(Vec4::new(1.0, 1.0, 2.0, 0.0)))
-        .unwrap();
-    gl.material(
-        Face::FrontAndBack,
-        MaterialParam::AmbientAndDiffuse(rgba(0.9, 0.6, 0.3, 0.7)),
-    )
-    .unwrap();
-    gl.material(
-        Face::FrontAndBack,
-        MaterialParam::Specular(rgba(0.8, 0.8, 0.8, 1.0)),
-    )
-    .unwrap();
-    gl.material(Face::FrontAndBack, MaterialParam::Shininess(20.0))
-        .unwrap();
-    gl.light_model(LightModelParam::ColorControl(control)).unwrap();
-    gl.enable(Cap::Texture2D).unwrap();
-    gl.tex_env(TexEnvParam::Mode(env)).unwrap();
-    gl.tex_env(TexEnvParam::Color(rgba(0.2, 0.4, 1.0, 0.5))).unwrap();
-    gl.load_texture_matrix(matrix).unwrap();
-    gl.lighting_mode(mode);
-    gl.lighting
-}
-
 /// The texture repeated twice around the sphere.
 fn twice_around() -> Mat4 {
     Mat4::from_scale(Vec3::new(2.0, 1.0, 1.0))
@@ -268,7 +241,7 @@ fn nearest_cases() -> Vec<Case> {
                 };
                 cases.push(Case {
                     name: format!("nearest_{}_{}{sep}", env.name(), mode.name()),
-                    state: state(env, control, mode, twice_around()),
+                    state: textured_state(env, control, mode, twice_around()),
                     image: texels(),
                     sampling: Sampling::NEAREST,
                     tol: 2,
@@ -300,7 +273,7 @@ fn linear_filtering_without_mipmaps_matches_mesa_gl() {
         for mode in MODES {
             cases.push(Case {
                 name: format!("linear_{}_{}", env.name(), mode.name()),
-                state: state(env, ColorControl::SeparateSpecularColor, mode, twice_around()),
+                state: textured_state(env, ColorControl::SeparateSpecularColor, mode, twice_around()),
                 image: waves(),
                 sampling,
                 tol: 2,
@@ -319,7 +292,7 @@ fn trilinear_filtering_with_every_wrap_mode_matches_mesa_gl() {
             for mode in MODES {
                 cases.push(Case {
                     name: format!("trilinear_{}_{}_{}", wrap.name(), env.name(), mode.name()),
-                    state: state(env, ColorControl::SeparateSpecularColor, mode, past_the_edges()),
+                    state: textured_state(env, ColorControl::SeparateSpecularColor, mode, past_the_edges()),
                     image: waves().with_mipmaps(),
                     sampling: Sampling {
                         min_filter: MinFilter::LinearMipmapLinear,
@@ -347,7 +320,7 @@ fn srgb_textures_match_mesa_gl() {
         for mode in MODES {
             cases.push(Case {
                 name: format!("srgb_nearest_{}_{}", env.name(), mode.name()),
-                state: state(env, ColorControl::SingleColor, mode, twice_around()),
+                state: textured_state(env, ColorControl::SingleColor, mode, twice_around()),
                 image: srgb(texels()),
                 sampling: Sampling::NEAREST,
                 tol: 2,
@@ -355,7 +328,7 @@ fn srgb_textures_match_mesa_gl() {
             });
             cases.push(Case {
                 name: format!("srgb_trilinear_{}_{}", env.name(), mode.name()),
-                state: state(env, ColorControl::SeparateSpecularColor, mode, past_the_edges()),
+                state: textured_state(env, ColorControl::SeparateSpecularColor, mode, past_the_edges()),
                 image: srgb(waves().with_mipmaps()),
                 sampling: Sampling {
                     min_filter: MinFilter::LinearMipmapLinear,
@@ -382,7 +355,7 @@ fn every_min_and_mag_filter_matches_mesa_gl() {
             for mag_filter in [MagFilter::Nearest, MagFilter::Linear] {
                 cases.push(Case {
                     name: format!("{how}_min_{}_mag_{}", min_filter.name(), mag_filter.name()),
-                    state: state(
+                    state: textured_state(
                         TexEnvMode::Replace,
                         ColorControl::SingleColor,
                         LightingMode::Vertex,
@@ -497,7 +470,7 @@ fn fragment_mode_with_textures_converges_to_mesa_gl_on_a_dense_mesh() {
             };
             cases.push(Case {
                 name: format!("fragment_linear_{}{sep}", env.name()),
-                state: state(env, control, LightingMode::Fragment, twice_around()),
+                state: textured_state(env, control, LightingMode::Fragment, twice_around()),
                 image: waves(),
                 sampling: Sampling {
                     min_filter: MinFilter::Linear,
@@ -520,7 +493,7 @@ fn a_scene_with_another_texture_setting_fails_the_comparison() {
     let mut r = renderer();
     let view = sphere();
     let m = mask(&mut r, &view.mesh, view.modelview, view.projection);
-    let lit = |env, matrix| state(env, ColorControl::SingleColor, LightingMode::Vertex, matrix);
+    let lit = |env, matrix| textured_state(env, ColorControl::SingleColor, LightingMode::Vertex, matrix);
     let trilinear = |wrap| Sampling {
         min_filter: MinFilter::LinearMipmapLinear,
         mag_filter: MagFilter::Linear,
@@ -621,7 +594,7 @@ fn textured_scenes_time_and_a_malformed_level_is_an_error() {
     use ffvk::tools::gl_reference::{render_gl_with, time_frames_with, DrawError, GlError, GlScene};
     let view = sphere();
     let image = waves().with_mipmaps();
-    let s = state(
+    let s = textured_state(
         TexEnvMode::Modulate,
         ColorControl::SeparateSpecularColor,
         LightingMode::Vertex,

@@ -36,32 +36,9 @@ fn texels() -> TextureImage {
     TextureImage::new(TEXELS, TEXELS, rgba).unwrap()
 }
 
-/// A lit state: light 0 from the upper right with a white highlight on an orange material,
-/// the texture repeated twice around the sphere by the texture matrix.
+/// [`textured_state`] with the texture repeated twice around the sphere by the texture matrix.
 fn state(env: TexEnvMode, control: ColorControl, mode: LightingMode) -> LightingState {
-    let mut gl = lit_state();
-    gl.light(0, LightParam::Position(Vec4::new(1.0, 1.0, 2.0, 0.0)))
-        .unwrap();
-    gl.material(
-        Face::FrontAndBack,
-        MaterialParam::AmbientAndDiffuse(rgba(0.9, 0.6, 0.3, 0.7)),
-    )
-    .unwrap();
-    gl.material(
-        Face::FrontAndBack,
-        MaterialParam::Specular(rgba(0.8, 0.8, 0.8, 1.0)),
-    )
-    .unwrap();
-    gl.material(Face::FrontAndBack, MaterialParam::Shininess(20.0))
-        .unwrap();
-    gl.light_model(LightModelParam::ColorControl(control)).unwrap();
-    gl.enable(Cap::Texture2D).unwrap();
-    gl.tex_env(TexEnvParam::Mode(env)).unwrap();
-    gl.tex_env(TexEnvParam::Color(rgba(0.2, 0.4, 1.0, 0.5))).unwrap();
-    gl.load_texture_matrix(Mat4::from_scale(Vec3::new(2.0, 1.0, 1.0)))
-        .unwrap();
-    gl.lighting_mode(mode);
-    gl.lighting
+    textured_state(env, control, mode, Mat4::from_scale(Vec3::new(2.0, 1.0, 1.0)))
 }
 
 struct Scene {
@@ -106,21 +83,9 @@ fn probes(scene: &Scene, state: &LightingState) -> Vec<(u32, u32, [usize; 3], Co
     let mut out = Vec::new();
     for py in (1..SIZE).step_by(2) {
         for px in (1..SIZE).step_by(2) {
-            let mut best: Option<(f64, [usize; 3], Coverage)> = None;
-            for t in scene.mesh.indices.chunks(3) {
-                let idx = [t[0] as usize, t[1] as usize, t[2] as usize];
-                let clip = idx.map(|i| clips[i]);
-                let Some(cov) = reference::coverage(clip, SIZE, SIZE, px, py) else {
-                    continue;
-                };
-                let w = cov.weights;
-                let z = (0..3).map(|k| clip[k].z / clip[k].w * w[k]).sum::<f64>();
-                if best.as_ref().is_none_or(|b| z < b.0) {
-                    best = Some((z, idx, cov));
-                }
-            }
             // Well inside the triangle: no rasterizer tie-break can pick another one.
-            if let Some((_, idx, cov)) = best.filter(|b| b.2.weights.min_element() > 0.02) {
+            let hit = nearest_covering(&scene.mesh, &clips, SIZE, px, py);
+            if let Some((idx, cov)) = hit.filter(|h| h.1.weights.min_element() > 0.02) {
                 out.push((px, py, idx, cov));
             }
         }

@@ -104,14 +104,7 @@ pub fn measure_draw_cost(
     frame.depth_test = false;
     frame.draws = states
         .iter()
-        .map(|gl| Draw {
-            mesh: &mesh,
-            modelview: Mat4::IDENTITY,
-            projection,
-            state: gl.lighting,
-            cull_face: None,
-            texture: None,
-        })
+        .map(|gl| Draw::new(&mesh, Mat4::IDENTITY, projection, gl.lighting))
         .collect();
 
     // One warm-up frame makes the pipeline and lets the driver finish compiling it.
@@ -135,14 +128,8 @@ pub fn measure_draw_cost(
         create.push(renderer.prepare(&gl.lighting, false)? / 1e6);
         let mut one = Frame::new(64, 64);
         one.depth_test = false;
-        one.draws.push(Draw {
-            mesh: &mesh,
-            modelview: Mat4::IDENTITY,
-            projection,
-            state: gl.lighting,
-            cull_face: None,
-            texture: None,
-        });
+        one.draws
+            .push(Draw::new(&mesh, Mat4::IDENTITY, projection, gl.lighting));
         let first = renderer.measure(&one)?.wall_ns;
         let again = renderer.measure(&one)?.wall_ns;
         first_draw.push((first - again) / 1e6);

@@ -160,14 +160,7 @@ pub(super) fn measure_ffvk(
     frame.clear_color = CLEAR;
     frame.draws = modelviews
         .into_iter()
-        .map(|modelview| Draw {
-            mesh,
-            modelview,
-            projection,
-            state,
-            cull_face: None,
-            texture: None,
-        })
+        .map(|modelview| Draw::new(mesh, modelview, projection, state))
         .collect();
     let start = Instant::now();
     renderer.measure(&frame)?;
