@@ -34,6 +34,9 @@ struct Cli {
     /// folder); may be given more than once.
     #[arg(long, global = true, value_name = "DIR")]
     allow_root: Vec<PathBuf>,
+    /// Run as a worker process of `render --jobs` (started by ffvk itself).
+    #[arg(long, hide = true)]
+    render_worker: bool,
     #[command(subcommand)]
     command: Command,
 }
@@ -73,10 +76,33 @@ enum Command {
         /// Write missing or changed references into the --check directory (also FFVK_BLESS=1).
         #[arg(long, requires = "check")]
         bless: bool,
+        /// Worker processes to render in (default: one per CPU). A worker that crashes costs
+        /// only the scene it was rendering, which becomes an error row.
+        #[arg(short, long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024))]
+        jobs: Option<u32>,
+        /// Render only shard K of N: the scenes whose name (path below the folder given)
+        /// hashes to K; the N shards together are the whole suite (see `ffvk results merge`).
+        #[arg(long, value_name = "K/N")]
+        partition: Option<regress::Partition>,
+        /// Write the results as JUnit XML (one test case per scene and mode).
+        #[arg(long, value_name = "FILE")]
+        junit: Option<PathBuf>,
+        /// Write the results as JSON (what `ffvk results merge` reads).
+        #[arg(long, value_name = "FILE")]
+        json: Option<PathBuf>,
+        /// Seconds one scene (all its modes) may take before its worker is killed and the
+        /// scene reported as an error.
+        #[arg(long, value_name = "SECONDS", default_value_t = 600.0, value_parser = parse_seconds)]
+        timeout: f64,
         #[command(flatten)]
         tolerance: ToleranceArgs,
         #[command(flatten)]
         gltf: GltfArgs,
+    },
+    /// Results files of `render --json`: merge the shards of a partitioned run.
+    Results {
+        #[command(subcommand)]
+        action: ResultsAction,
     },
     /// Print the scene TOML ffvk draws a glTF file with (camera, lights, glTF's meaning), as
     /// the start of a hand-tuned scene.
@@ -122,6 +148,34 @@ enum Command {
         #[command(flatten)]
         gltf: GltfArgs,
     },
+}
+
+#[derive(Subcommand)]
+enum ResultsAction {
+    /// Join the results files of every shard of one suite (each written by `render
+    /// --partition K/N --json FILE`) into one summary, and optionally one JSON and one JUnit
+    /// file; refuses shards of different suites, a shard given twice and missing shards.
+    /// Exits as `render --check` does: 0 pass, 1 a difference or missing reference, 2 an error.
+    Merge {
+        /// The shards' results files.
+        #[arg(required = true)]
+        files: Vec<PathBuf>,
+        /// Write the merged results as JSON.
+        #[arg(long, value_name = "FILE")]
+        json: Option<PathBuf>,
+        /// Write the merged results as JUnit XML.
+        #[arg(long, value_name = "FILE")]
+        junit: Option<PathBuf>,
+    },
+}
+
+fn parse_seconds(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(x) if x > 0.0 && x <= 1e6 => Ok(x),
+        _ => Err(format!(
+            "{s:?}: expected a number of seconds, > 0 and at most 1000000"
+        )),
+    }
 }
 
 /// How a glTF file given without a scene file is drawn.
@@ -328,27 +382,15 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
             size,
             check,
             bless,
+            jobs,
+            partition,
+            junit,
+            json,
+            timeout,
             tolerance,
             gltf,
         } => {
             gltf.check(scenes)?;
-            let direct = gltf.options();
-            let files = regress::scene_files(scenes)?;
-            let single = files.len() == 1 && lighting.len() <= 1 && check.is_none();
-            let mut renderer = Renderer::new(&options(&cli))?;
-            if single {
-                let file = &files[0].path;
-                let path = out.clone().unwrap_or_else(|| file.with_extension("png"));
-                if ffvk::files::same_file(&path, file) {
-                    return Err(ffvk::tools::Error::OverwritesInput { path });
-                }
-                let scene =
-                    regress::load_scene(file, *size, &limits(&cli), &direct, &mut |m| eprintln!("{m}"))?;
-                let image = render_scene(&mut renderer, &scene, lighting.first().copied())?;
-                save_png(&image, &path)?;
-                println!("{} -> {}", file.display(), path.display());
-                return Ok(ExitCode::SUCCESS);
-            }
             let job = regress::Job {
                 scenes: scenes.clone(),
                 out_dir: out.clone(),
@@ -358,44 +400,72 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
                 bless: *bless || regress::bless_from_env(),
                 tolerance: tolerance.tolerance(),
                 limits: limits(&cli),
-                direct,
-                driver_family: Some(regress::driver_family(renderer.device_info())),
+                direct: gltf.options(),
+                // Each worker sets its own, from its device.
+                driver_family: None,
+                partition: *partition,
             };
-            // Warnings go to stderr, apart from the images written and the results table.
-            let rows = regress::run(&mut renderer, &job, &mut |m| match m {
-                regress::Message::Warning { .. } | regress::Message::Chose { .. } => eprintln!("{m}"),
-                regress::Message::Wrote { .. } => println!("{m}"),
-            })?;
-            if check.is_none() {
+            if cli.render_worker {
+                regress::pool::worker_main(&options(&cli), job)?;
                 return Ok(ExitCode::SUCCESS);
             }
-            println!("{}", regress::table(&rows));
-            let failed: Vec<&regress::Row> = rows.iter().filter(|r| r.status.failed()).collect();
-            for r in &failed {
-                let what = match (&r.comparison, &r.problem) {
-                    (Some(c), _) => c.summary(),
-                    (None, Some(problem)) => problem.clone(),
-                    (None, None) => "no reference".to_string(),
-                };
-                println!(
-                    "{}: {what}; actual {}{}",
-                    r.name,
-                    r.output.display(),
-                    r.diff
-                        .as_ref()
-                        .map(|d| format!(", diff {}", d.display()))
-                        .unwrap_or_default()
-                );
+            let files = regress::scene_files(scenes)?;
+            let results_asked = check.is_some() || junit.is_some() || json.is_some() || partition.is_some();
+            if files.len() == 1 && lighting.len() <= 1 && !results_asked {
+                return render_one(&cli, &files[0].path, out.as_ref(), &job);
             }
-            if failed.is_empty() {
-                Ok(ExitCode::SUCCESS)
-            } else {
-                println!(
-                    "to accept these images as the new references: rerun with --bless (or {}=1)",
-                    regress::BLESS_VAR
-                );
-                Ok(ExitCode::FAILURE)
+            for path in [junit, json].into_iter().flatten() {
+                if scenes.iter().any(|s| ffvk::files::same_file(path, s)) {
+                    return Err(ffvk::tools::Error::OverwritesInput { path: path.clone() });
+                }
             }
+            let worker = regress::pool::WorkerCommand {
+                program: std::env::current_exe().map_err(|source| ffvk::tools::Error::Read {
+                    path: "/proc/self/exe".into(),
+                    source,
+                })?,
+                args: std::iter::once("--render-worker".into())
+                    .chain(std::env::args_os().skip(1))
+                    .collect(),
+            };
+            let results = regress::pool::run_suite(
+                &job,
+                &worker,
+                jobs.map(|j| j as usize),
+                std::time::Duration::from_secs_f64(*timeout),
+                &mut |m| match m {
+                    regress::Message::Wrote { .. } => println!("{m}"),
+                    _ => eprintln!("{m}"),
+                },
+            )?;
+            let run = &results.runs[0].info;
+            eprintln!(
+                "ffvk: {} scene(s){} in {} worker process(es), LP_NUM_THREADS={} each, {:.1} s",
+                run.scenes,
+                run.partition
+                    .map(|p| format!(" (shard {p} of a suite of {})", run.suite_scenes))
+                    .unwrap_or_default(),
+                run.jobs,
+                run.lp_num_threads.as_deref().unwrap_or("unset"),
+                run.seconds
+            );
+            finish_results(&results, check.is_some(), json.as_deref(), junit.as_deref())
+        }
+        Command::Results {
+            action: ResultsAction::Merge { files, json, junit },
+        } => {
+            for path in [junit, json].into_iter().flatten() {
+                if files.iter().any(|f| ffvk::files::same_file(path, f)) {
+                    return Err(ffvk::tools::Error::OverwritesInput { path: path.clone() });
+                }
+            }
+            let parts = files
+                .iter()
+                .map(|f| Ok((f.clone(), regress::results::Results::read_json(f)?)))
+                .collect::<ffvk::tools::Result<Vec<_>>>()?;
+            let merged = regress::results::Results::merge(parts)?;
+            let checked = merged.runs.iter().any(|r| r.info.references.is_some());
+            finish_results(&merged, checked, json.as_deref(), junit.as_deref())
         }
         Command::Compare {
             expected,
@@ -537,6 +607,48 @@ fn write_scene(
         }
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// Renders one scene in one mode in this process (no results asked for).
+fn render_one(
+    cli: &Cli,
+    file: &std::path::Path,
+    out: Option<&PathBuf>,
+    job: &regress::Job,
+) -> ffvk::tools::Result<ExitCode> {
+    let path = out.cloned().unwrap_or_else(|| file.with_extension("png"));
+    if ffvk::files::same_file(&path, file) {
+        return Err(ffvk::tools::Error::OverwritesInput { path });
+    }
+    let mut renderer = Renderer::new(&options(cli))?;
+    let scene = regress::load_scene(file, job.size, &job.limits, &job.direct, &mut |m| {
+        eprintln!("{m}")
+    })?;
+    let image = render_scene(&mut renderer, &scene, job.modes.first().copied())?;
+    save_png(&image, &path)?;
+    println!("{} -> {}", file.display(), path.display());
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Writes the results files asked for, prints the summary and exits as documented: 2 on an
+/// error, else 1 on a difference or missing reference, else 0.
+fn finish_results(
+    results: &regress::results::Results,
+    checked: bool,
+    json: Option<&std::path::Path>,
+    junit: Option<&std::path::Path>,
+) -> ffvk::tools::Result<ExitCode> {
+    if let Some(path) = json {
+        results.write_json(path)?;
+        eprintln!("wrote {}", path.display());
+    }
+    if let Some(path) = junit {
+        regress::junit::write(results, path)?;
+        eprintln!("wrote {}", path.display());
+    }
+    let rows = results.rows();
+    println!("{}", regress::summary(&rows, checked));
+    Ok(ExitCode::from(results.counts().exit_code()))
 }
 
 fn main() -> ExitCode {

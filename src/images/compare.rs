@@ -27,6 +27,7 @@ pub struct SizeMismatch {
 
 /// When a comparison passes.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Tolerance {
     /// Largest per-channel difference (of 255) a pixel may have without counting as over.
     pub threshold: u8,
@@ -85,6 +86,7 @@ impl Tolerance {
 }
 
 /// One pixel where the images differ most.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct WorstPixel {
     pub x: u32,
@@ -95,6 +97,7 @@ pub struct WorstPixel {
 
 /// What a comparison found.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Comparison {
     pub width: u32,
     pub height: u32,

@@ -101,6 +101,14 @@ pub enum Error {
     #[error("benchmark: {0}")]
     Bench(String),
 
+    /// Results files that cannot be read or merged.
+    #[error(transparent)]
+    Merge(#[from] regress::results::MergeError),
+
+    /// A regression run's worker processes that could not start or be talked to.
+    #[error(transparent)]
+    Worker(#[from] regress::pool::WorkerError),
+
     /// The GL reference renderer (fixed-function OpenGL through EGL): no GL driver, or a
     /// render that failed. Its messages start with "no GL driver:" or "GL reference:".
     #[error(transparent)]

@@ -1,9 +1,24 @@
-//! Regression runs: render many scenes with one device, check each image against a directory
-//! of references, bless new or changed references on request, and summarize in a table.
+//! Regression runs: render many scenes, check each image against a directory of references,
+//! bless new or changed references on request, and report the results as a table, JSON and
+//! JUnit XML.
+//!
+//! One scene is rendered by [`render_file`], which never fails: a scene that cannot be loaded,
+//! rendered or written becomes an error row. [`run`] renders a suite with one renderer in this
+//! process; [`pool::run_pool`] spreads it over worker processes (`ffvk render --jobs N`), so
+//! that a crash costs one scene; [`partition`] splits a suite into shards for several machines
+//! and [`results`] merges what the shards wrote and writes it for CI systems.
 
 #![warn(missing_docs)]
 
+pub mod junit;
+pub mod partition;
+pub mod pool;
+pub mod results;
+
 use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use serde::{Deserialize, Serialize};
 
 use crate::gl::state::LightingMode;
 use crate::images::compare::{compare, heat_map, load_image, Comparison, Tolerance};
@@ -13,6 +28,8 @@ use crate::scene::{render_scene, Limits, Scene};
 use crate::tools::table::{Align, Table};
 use crate::tools::{Error, Result};
 use crate::Renderer;
+
+pub use partition::Partition;
 
 /// The environment variable that blesses references (any value but "0").
 pub const BLESS_VAR: &str = "FFVK_BLESS";
@@ -49,6 +66,8 @@ pub struct Job {
     /// The renderer's driver family ([`driver_family`]): references in
     /// `references/FAMILY/` take precedence over the shared ones when they exist.
     pub driver_family: Option<String>,
+    /// Render only this shard of the suite ([`Partition`]).
+    pub partition: Option<Partition>,
 }
 
 /// The folder name of a device's driver family for per-driver references: the Vulkan driver
@@ -87,18 +106,22 @@ fn reference_path(refs: &Path, family: Option<&str>, name: &str) -> PathBuf {
 }
 
 /// What happened to one image.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
 pub enum Status {
     /// Rendered; nothing to check against.
     Rendered,
     /// Within the tolerance of its reference.
     Pass,
-    /// Beyond the tolerance of its reference.
+    /// Beyond the tolerance of its reference (or of another size).
     Fail,
     /// No reference and no blessing: a failure.
     Missing,
     /// The reference was written (new) or replaced (changed) by blessing.
     Blessed,
+    /// The scene could not be loaded, rendered or written, or its worker process crashed or
+    /// ran out of time: the message says which.
+    Error,
 }
 
 impl Status {
@@ -106,30 +129,120 @@ impl Status {
     pub fn failed(self) -> bool {
         matches!(self, Status::Fail | Status::Missing)
     }
+
+    /// How the summary table spells the status.
+    pub fn word(self) -> &'static str {
+        match self {
+            Status::Rendered => "rendered",
+            Status::Pass => "ok",
+            Status::Fail => "FAILED",
+            Status::Missing => "MISSING",
+            Status::Blessed => "blessed",
+            Status::Error => "ERROR",
+        }
+    }
 }
 
-/// One line of the summary.
-#[derive(Debug, Clone)]
+/// One line of the summary: one scene in one lighting mode.
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Row {
-    /// The image's name: the scene file's stem, with the mode when there are several.
+    /// The image's name: the scene's name, with `_MODE` when several modes were asked for.
     pub name: String,
+    /// The scene's name ([`SceneFile::name`]).
+    pub scene: String,
+    /// The scene file.
+    pub file: PathBuf,
+    /// The scene's place in the whole suite (before partitioning): rows sort by it.
+    pub index: usize,
+    /// The lighting mode rendered (`vertex`, `fragment`, `flat`); `None` when the scene could
+    /// not be loaded and no mode was asked for.
+    pub mode: Option<String>,
     /// What happened.
     pub status: Status,
-    /// Why the image could not be compared (a reference of another size), when it could not.
-    pub problem: Option<String>,
+    /// Why the image could not be compared (a reference of another size) or rendered.
+    pub message: Option<String>,
     /// The comparison with the reference, when there was one.
     pub comparison: Option<Comparison>,
-    /// The image written.
-    pub output: PathBuf,
+    /// The image written, when one was.
+    pub output: Option<PathBuf>,
     /// The heat map of the differences, when the image is not identical to its reference.
     pub diff: Option<PathBuf>,
     /// The reference checked against (or blessed), when there is a reference folder.
     pub reference: Option<PathBuf>,
+    /// Seconds spent on this image (its share of loading the scene included).
+    pub seconds: f64,
+}
+
+impl Row {
+    /// A row for `file` in `mode`, before anything happened to it.
+    fn new(file: &SceneFile, name: String, mode: Option<LightingMode>) -> Row {
+        Row {
+            name,
+            scene: file.name.clone(),
+            file: file.path.clone(),
+            index: file.index,
+            mode: mode.map(|m| m.name().to_owned()),
+            status: Status::Rendered,
+            message: None,
+            comparison: None,
+            output: None,
+            diff: None,
+            reference: None,
+            seconds: 0.0,
+        }
+    }
+
+    /// The rows of a scene that failed as a whole (it did not load, or its worker crashed):
+    /// one error row per mode asked for, or one for the scene's own mode.
+    pub fn errors(job: &Job, file: &SceneFile, message: &str, seconds: f64) -> Vec<Row> {
+        let modes = requested_modes(job);
+        let share = seconds / modes.len() as f64;
+        modes
+            .iter()
+            .map(|mode| {
+                let mut row = Row::new(file, image_name(file, *mode, modes.len()), *mode);
+                row.status = Status::Error;
+                row.message = Some(message.to_owned());
+                row.seconds = share;
+                row
+            })
+            .collect()
+    }
+
+    /// What the row says beyond its status: the comparison, the problem or the error.
+    pub fn detail(&self) -> String {
+        match (&self.comparison, &self.message, self.status) {
+            (_, Some(message), _) => message.clone(),
+            (Some(c), None, _) => c.summary(),
+            (None, None, Status::Missing) => "no reference".into(),
+            (None, None, _) => String::new(),
+        }
+    }
+}
+
+/// The modes a job renders each scene in: those asked for, or the scene's own (`None`).
+fn requested_modes(job: &Job) -> Vec<Option<LightingMode>> {
+    if job.modes.is_empty() {
+        vec![None]
+    } else {
+        job.modes.iter().copied().map(Some).collect()
+    }
+}
+
+/// The name of `file`'s image in `mode`: the scene's name, with the mode when there are
+/// several.
+fn image_name(file: &SceneFile, mode: Option<LightingMode>, modes: usize) -> String {
+    match mode {
+        Some(m) if modes > 1 => format!("{}_{}", file.name, m.name()),
+        _ => file.name.clone(),
+    }
 }
 
 /// One scene of a run: its file and the name its images take (no extension).
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 pub struct SceneFile {
+    /// Its place in the suite, counting from 0.
+    pub index: usize,
     /// The scene file.
     pub path: PathBuf,
     /// Its path relative to the folder given, without `.toml` (`a/s` for `DIR/a/s.toml`), or
@@ -159,7 +272,11 @@ pub fn scene_files(inputs: &[PathBuf]) -> Result<Vec<SceneFile>> {
                     .map(|c| c.as_os_str().to_string_lossy().into_owned())
                     .collect::<Vec<_>>()
                     .join("/");
-                files.push(SceneFile { path, name });
+                files.push(SceneFile {
+                    index: files.len(),
+                    path,
+                    name,
+                });
             }
         } else {
             let name = input
@@ -167,6 +284,7 @@ pub fn scene_files(inputs: &[PathBuf]) -> Result<Vec<SceneFile>> {
                 .map(|s| s.to_string_lossy().into_owned())
                 .unwrap_or_default();
             files.push(SceneFile {
+                index: files.len(),
                 path: input.clone(),
                 name,
             });
@@ -255,6 +373,12 @@ pub enum Message<'a> {
         /// The choice.
         text: &'a str,
     },
+    /// A line a worker process wrote to stderr, or to stdout outside its protocol (for a
+    /// terminal's stderr: it is not part of the results).
+    Output {
+        /// The line.
+        text: &'a str,
+    },
     /// An image was written.
     Wrote {
         /// The scene file.
@@ -271,6 +395,7 @@ impl std::fmt::Display for Message<'_> {
             Message::Warning { text, times } => write!(f, "warning: {text} (×{times})"),
             Message::Chose { scene, text } => write!(f, "{}: {text}", scene.display()),
             Message::Wrote { scene, image } => write!(f, "{} -> {}", scene.display(), image.display()),
+            Message::Output { text } => write!(f, "{text}"),
         }
     }
 }
@@ -314,106 +439,146 @@ pub fn load_scene(
     Ok(scene)
 }
 
-/// Renders every scene of `job` in every mode, checking and blessing as asked. Errors stop
-/// the run (a scene that cannot load is not a difference); differences, missing references
-/// and references of another size are rows. Refuses, before rendering anything, a job whose
-/// outputs would land in its reference folder or two scenes that would write one image.
-pub fn run(renderer: &mut Renderer, job: &Job, log: &mut dyn FnMut(Message)) -> Result<Vec<Row>> {
+/// The suite's scene files that `job` renders: every one, or those of its partition, after
+/// refusing two scenes that would write one image and outputs that would land in the
+/// reference folder.
+pub fn job_files(job: &Job) -> Result<(Vec<SceneFile>, usize)> {
     job.tolerance.validate()?;
     let files = scene_files(&job.scenes)?;
     check_outputs(job, &files)?;
-    let mut rows = Vec::new();
-    for file in &files {
-        let scene = load_scene(&file.path, job.size, &job.limits, &job.direct, log)?;
-        let modes: Vec<Option<LightingMode>> = if job.modes.is_empty() {
-            vec![None]
-        } else {
-            job.modes.iter().copied().map(Some).collect()
-        };
-        for mode in &modes {
-            let name = match mode {
-                Some(m) if modes.len() > 1 => format!("{}_{}", file.name, m.name()),
-                _ => file.name.clone(),
-            };
-            let image = render_scene(renderer, &scene, *mode)?;
-            // Next to the scene file, an image is named by the file's stem.
-            let (dir, local) = match &job.out_dir {
-                Some(d) => (d.clone(), name.clone()),
-                None => {
-                    let stem = name.rsplit('/').next().unwrap_or(&name).to_string();
-                    (file.path.parent().unwrap_or(Path::new(".")).to_path_buf(), stem)
-                }
-            };
-            let output = dir.join(format!("{local}.png"));
-            if crate::files::same_file(&output, &file.path) {
-                return Err(Error::OverwritesInput { path: output });
-            }
-            save_png(&image, &output)?;
-            let mut row = Row {
-                name: name.clone(),
-                status: Status::Rendered,
-                problem: None,
-                comparison: None,
-                output: output.clone(),
-                diff: None,
-                reference: None,
-            };
-            if let Some(refs) = &job.references {
-                let reference = reference_path(refs, job.driver_family.as_deref(), &name);
-                row.reference = Some(reference.clone());
-                if !reference.exists() {
-                    row.status = if job.bless {
-                        Status::Blessed
-                    } else {
-                        Status::Missing
-                    };
-                } else {
-                    let expected = load_image(&reference)?;
-                    match compare(&expected, &image, &job.tolerance) {
-                        Err(mismatch) if !job.bless => {
-                            row.status = Status::Fail;
-                            row.problem = Some(format!(
-                                "the reference {} is {}x{}, the image {} is {}x{}",
-                                reference.display(),
-                                mismatch.expected.0,
-                                mismatch.expected.1,
-                                output.display(),
-                                mismatch.actual.0,
-                                mismatch.actual.1
-                            ));
-                        }
-                        Err(_) => row.status = Status::Blessed,
-                        Ok(c) => {
-                            row.status = match (c.passes(&job.tolerance), job.bless && !c.identical()) {
-                                (_, true) => Status::Blessed,
-                                (true, false) => Status::Pass,
-                                (false, false) => Status::Fail,
-                            };
-                            if !c.identical() {
-                                let diff = dir.join(format!("{local}.diff.png"));
-                                save_png(&heat_map(&expected, &image, job.tolerance.threshold)?, &diff)?;
-                                row.diff = Some(diff);
-                            }
-                            row.comparison = Some(c);
-                        }
-                    }
-                }
-                if row.status == Status::Blessed {
-                    save_png(&image, &reference)?;
-                }
-            }
+    let suite = files.len();
+    let files = match job.partition {
+        Some(p) => files.into_iter().filter(|f| p.contains(&f.name)).collect(),
+        None => files,
+    };
+    Ok((files, suite))
+}
+
+/// Renders every scene of `job` (of its partition) in every mode with `renderer`, in this
+/// process, checking and blessing as asked. A scene that cannot be loaded, rendered or
+/// written is an error row and the run goes on; refuses, before rendering anything, a job
+/// whose outputs would land in its reference folder or two scenes that would write one
+/// image.
+pub fn run(renderer: &mut Renderer, job: &Job, log: &mut dyn FnMut(Message)) -> Result<Vec<Row>> {
+    let (files, _) = job_files(job)?;
+    Ok(files
+        .iter()
+        .flat_map(|file| render_file(renderer, job, file, log))
+        .collect())
+}
+
+/// Renders one scene of `job` in every mode asked for, checking and blessing as asked. Never
+/// fails: what goes wrong is an error row (the scene's, when it does not load; the mode's,
+/// when one image cannot be rendered or written).
+pub fn render_file(
+    renderer: &mut Renderer,
+    job: &Job,
+    file: &SceneFile,
+    log: &mut dyn FnMut(Message),
+) -> Vec<Row> {
+    let started = Instant::now();
+    let scene = match load_scene(&file.path, job.size, &job.limits, &job.direct, log) {
+        Ok(scene) => scene,
+        Err(e) => return Row::errors(job, file, &e.to_string(), started.elapsed().as_secs_f64()),
+    };
+    let modes = requested_modes(job);
+    let load_share = started.elapsed().as_secs_f64() / modes.len() as f64;
+    let mut rows = Vec::with_capacity(modes.len());
+    for mode in &modes {
+        let started = Instant::now();
+        let name = image_name(file, *mode, modes.len());
+        let mut row = Row::new(file, name, Some(mode.unwrap_or(scene.state.mode)));
+        if let Err(e) = render_image(renderer, job, file, &scene, *mode, &mut row) {
+            row.status = Status::Error;
+            row.message = Some(e.to_string());
+        }
+        row.seconds = load_share + started.elapsed().as_secs_f64();
+        if let Some(image) = &row.output {
             log(Message::Wrote {
                 scene: &file.path,
-                image: &output,
+                image,
             });
-            rows.push(row);
+        }
+        rows.push(row);
+    }
+    rows
+}
+
+/// Renders `scene` in `mode` into `row`'s image, then checks it against (or blesses) its
+/// reference. The row keeps what happened before an error.
+fn render_image(
+    renderer: &mut Renderer,
+    job: &Job,
+    file: &SceneFile,
+    scene: &Scene,
+    mode: Option<LightingMode>,
+    row: &mut Row,
+) -> Result<()> {
+    let image = render_scene(renderer, scene, mode)?;
+    // Next to the scene file, an image is named by the file's stem.
+    let (dir, local) = match &job.out_dir {
+        Some(d) => (d.clone(), row.name.clone()),
+        None => {
+            let stem = row.name.rsplit('/').next().unwrap_or(&row.name).to_string();
+            (file.path.parent().unwrap_or(Path::new(".")).to_path_buf(), stem)
+        }
+    };
+    let output = dir.join(format!("{local}.png"));
+    if crate::files::same_file(&output, &file.path) {
+        return Err(Error::OverwritesInput { path: output });
+    }
+    save_png(&image, &output)?;
+    row.output = Some(output.clone());
+    let Some(refs) = &job.references else {
+        return Ok(());
+    };
+    let reference = reference_path(refs, job.driver_family.as_deref(), &row.name);
+    row.reference = Some(reference.clone());
+    if !reference.exists() {
+        row.status = if job.bless {
+            Status::Blessed
+        } else {
+            Status::Missing
+        };
+    } else {
+        let expected = load_image(&reference)?;
+        match compare(&expected, &image, &job.tolerance) {
+            Err(mismatch) if !job.bless => {
+                row.status = Status::Fail;
+                row.message = Some(format!(
+                    "the reference {} is {}x{}, the image {} is {}x{}",
+                    reference.display(),
+                    mismatch.expected.0,
+                    mismatch.expected.1,
+                    output.display(),
+                    mismatch.actual.0,
+                    mismatch.actual.1
+                ));
+            }
+            Err(_) => row.status = Status::Blessed,
+            Ok(c) => {
+                row.status = match (c.passes(&job.tolerance), job.bless && !c.identical()) {
+                    (_, true) => Status::Blessed,
+                    (true, false) => Status::Pass,
+                    (false, false) => Status::Fail,
+                };
+                if !c.identical() {
+                    let diff = dir.join(format!("{local}.diff.png"));
+                    save_png(&heat_map(&expected, &image, job.tolerance.threshold)?, &diff)?;
+                    row.diff = Some(diff);
+                }
+                row.comparison = Some(c);
+            }
         }
     }
-    Ok(rows)
+    if row.status == Status::Blessed {
+        save_png(&image, &reference)?;
+    }
+    Ok(())
 }
 
 /// The summary table: scene, status, max difference, share over the threshold, FLIP mean;
-/// then the count of images and of failures.
+/// then the counts ([`results::Counts`]).
 pub fn table(rows: &[Row]) -> String {
     let mut t = Table::new([
         ("scene", Align::Left),
@@ -423,13 +588,6 @@ pub fn table(rows: &[Row]) -> String {
         ("FLIP", Align::Right),
     ]);
     for r in rows {
-        let status = match r.status {
-            Status::Rendered => "rendered",
-            Status::Pass => "ok",
-            Status::Fail => "FAILED",
-            Status::Missing => "MISSING",
-            Status::Blessed => "blessed",
-        };
         let (diff, over, flip) = match &r.comparison {
             Some(c) => (
                 format!("{:?}", c.max_diff),
@@ -438,10 +596,39 @@ pub fn table(rows: &[Row]) -> String {
             ),
             None => ("-".into(), "-".into(), "-".into()),
         };
-        t.row([r.name.clone(), status.into(), diff, over, flip]);
+        t.row([r.name.clone(), r.status.word().into(), diff, over, flip]);
     }
-    let failed = rows.iter().filter(|r| r.status.failed()).count();
-    format!("{}{} image(s), {} failed", t.text(), rows.len(), failed)
+    format!("{}{}", t.text(), results::Counts::of(rows))
+}
+
+/// What a run prints at its end: the summary table when images were checked (else the
+/// counts), then a line for each failure and error with its figures or message and its
+/// paths, and how to bless when something failed.
+pub fn summary(rows: &[Row], checked: bool) -> String {
+    let mut text = if checked {
+        table(rows)
+    } else {
+        results::Counts::of(rows).to_string()
+    };
+    for r in rows
+        .iter()
+        .filter(|r| r.status.failed() || r.status == Status::Error)
+    {
+        let paths: Vec<String> = [("actual", &r.output), ("diff", &r.diff)]
+            .into_iter()
+            .filter_map(|(what, p)| p.as_ref().map(|p| format!("{what} {}", p.display())))
+            .collect();
+        text.push_str(&format!("\n{}: {}", r.name, r.detail()));
+        if !paths.is_empty() {
+            text.push_str(&format!("; {}", paths.join(", ")));
+        }
+    }
+    if rows.iter().any(|r| r.status.failed()) {
+        text.push_str(&format!(
+            "\nto accept these images as the new references: rerun with --bless (or {BLESS_VAR}=1)"
+        ));
+    }
+    text
 }
 
 #[cfg(test)]
@@ -466,12 +653,17 @@ mod tests {
     fn the_summary_table() {
         let row = |name: &str, status, comparison| Row {
             name: name.into(),
+            scene: name.into(),
+            file: PathBuf::from(format!("{name}.toml")),
+            index: 0,
+            mode: Some("vertex".into()),
             status,
             comparison,
-            output: PathBuf::from(format!("out/{name}.png")),
+            output: Some(PathBuf::from(format!("out/{name}.png"))),
             diff: None,
-            problem: None,
+            message: None,
             reference: None,
+            seconds: 0.0,
         };
         let same = comparison([0; 4], 0.0, 0.0);
         let different = comparison([255, 12, 3, 0], 0.0123, 0.04567);
@@ -481,6 +673,7 @@ mod tests {
             row("b", Status::Fail, Some(different)),
             row("missing_one", Status::Missing, None),
             row("new", Status::Blessed, None),
+            row("broken", Status::Error, None),
         ];
         let expected = "\
 scene              status      max diff RGBA  over %     FLIP\n\
@@ -489,7 +682,8 @@ spot_light_vertex  ok           [0, 0, 0, 0]  0.0000  0.00000\n\
 b                  FAILED    [255, 12, 3, 0]  1.2300  0.04567\n\
 missing_one        MISSING                 -       -        -\n\
 new                blessed                 -       -        -\n\
-5 image(s), 2 failed";
+broken             ERROR                   -       -        -\n\
+6 image(s): 1 passed, 1 failed, 1 missing, 1 blessed, 1 rendered, 1 error(s)";
         assert_eq!(table(&rows), expected);
     }
 }
