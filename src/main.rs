@@ -374,7 +374,13 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
             Ok(ExitCode::SUCCESS)
         }
         Command::Demo { out } => ffvk::tools::demo::run(&options(&cli), out).map(|()| ExitCode::SUCCESS),
-        Command::Bench(args) => ffvk::tools::bench::run(args, &options(&cli)).map(|()| ExitCode::SUCCESS),
+        Command::Bench(args) => {
+            let program = std::env::current_exe().map_err(|source| ffvk::tools::Error::Read {
+                path: "/proc/self/exe".into(),
+                source,
+            })?;
+            ffvk::tools::bench::run(args, &options(&cli), &program).map(|()| ExitCode::SUCCESS)
+        }
         Command::Render {
             scenes,
             out,
@@ -431,8 +437,11 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
             let results = regress::pool::run_suite(
                 &job,
                 &worker,
-                jobs.map(|j| j as usize),
-                std::time::Duration::from_secs_f64(*timeout),
+                &regress::pool::SuiteOptions {
+                    jobs: jobs.map(|j| j as usize),
+                    lp_num_threads: None,
+                    timeout: std::time::Duration::from_secs_f64(*timeout),
+                },
                 &mut |m| match m {
                     regress::Message::Wrote { .. } => println!("{m}"),
                     _ => eprintln!("{m}"),
@@ -620,7 +629,11 @@ fn render_one(
     if ffvk::files::same_file(&path, file) {
         return Err(ffvk::tools::Error::OverwritesInput { path });
     }
-    let mut renderer = Renderer::new(&options(cli))?;
+    // As a worker of a suite renders it (pool::worker_main).
+    let mut renderer = Renderer::new(&RendererOptions {
+        specialize: ffvk::Specialize::Always,
+        ..options(cli)
+    })?;
     let scene = regress::load_scene(file, job.size, &job.limits, &job.direct, &mut |m| {
         eprintln!("{m}")
     })?;

@@ -48,7 +48,8 @@ fn check_scenes(area: &str, scenes: PathBuf) {
     let rows = regress::run(&mut r, &job, &mut |_| {}).unwrap();
     finish(r);
     assert!(
-        rows.iter().all(|r| matches!(r.status, Status::Pass | Status::Blessed)),
+        rows.iter()
+            .all(|r| matches!(r.status, Status::Pass | Status::Blessed)),
         "golden images differ:\n{}\n{HOW_TO_BLESS}",
         regress::summary(&rows, true),
     );

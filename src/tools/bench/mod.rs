@@ -26,6 +26,7 @@ mod draw_cost;
 mod measure;
 mod plots;
 mod report;
+mod suite;
 mod sweep;
 
 use std::collections::hash_map::Entry;
@@ -44,6 +45,7 @@ use crate::tools::{Error, Result};
 pub use draw_cost::{measure_draw_cost, DrawCost, DRAWS};
 pub use measure::{crossover, fit_line, summarize, Costs, GlRatio, PointStats, Spread, Summary};
 pub use report::{csv, markdown, write_outputs, CSV_COLUMNS};
+pub use suite::{generate_scenes, jobs_markdown, run_jobs_sweep, JobsPoint, SuiteConfig, SuiteReport};
 pub use sweep::{
     point_state, points, BenchMode, Engine, Group, LightKind, Point, SweepConfig, Variant, MAX_DRAWS,
 };
@@ -66,9 +68,17 @@ pub struct BenchArgs {
     /// `full` (more of everything, about 25 minutes), `gpu` (16 draws per frame, frames
     /// timed in batches, images to 4096², up to 16 lights: for GPUs, where a standard frame
     /// is too short to show the lighting) or `auto`: `gpu` on a discrete, integrated or
-    /// virtual GPU, else `standard`.
-    #[arg(long, default_value = "auto", value_parser = ["auto", "quick", "standard", "full", "gpu"])]
+    /// virtual GPU, else `standard`. `jobs` is another kind of sweep: regression-suite
+    /// throughput (`ffvk render --check` of generated scenes) with 1, 2, … worker processes.
+    #[arg(long, default_value = "auto", value_parser = ["auto", "quick", "standard", "full", "gpu", "jobs"])]
     pub sweep: String,
+    /// `--sweep jobs`: scenes in the generated suite (128² each).
+    #[arg(long, default_value_t = 200, value_parser = clap::value_parser!(u32).range(1..=100_000))]
+    pub scenes: u32,
+    /// `--sweep jobs`: the numbers of workers to time, comma-separated (default: 1, 2, the
+    /// powers of two below the CPU count and the CPU count).
+    #[arg(long, value_delimiter = ',', value_parser = clap::value_parser!(u32).range(1..=1024))]
+    pub jobs: Vec<u32>,
     /// Same as `--sweep quick`.
     #[arg(long, conflicts_with_all = ["full", "sweep"])]
     pub quick: bool,
@@ -106,7 +116,13 @@ pub struct BenchArgs {
 ///
 /// Sets the process environment, so call it before any other thread exists (ffvk's CLI calls
 /// it first thing); library users and tests call [`run_sweep`] and [`write_outputs`].
-pub fn run(args: &BenchArgs, options: &RendererOptions) -> Result<()> {
+/// `program` is ffvk's own executable: the jobs sweep starts its workers from it.
+pub fn run(args: &BenchArgs, options: &RendererOptions, program: &std::path::Path) -> Result<()> {
+    if args.sweep == "jobs" {
+        // Before LP_NUM_THREADS is pinned for this process: each number of workers gets its
+        // own default unless --lp-threads fixes one for all.
+        return run_jobs(args, options, program);
+    }
     let threads = match (args.lp_threads, std::env::var("LP_NUM_THREADS")) {
         (Some(n), _) => n.to_string(),
         (None, Ok(v)) if !v.trim().is_empty() => v,
@@ -173,6 +189,34 @@ pub fn run(args: &BenchArgs, options: &RendererOptions) -> Result<()> {
             .map(|p| p.display().to_string())
             .collect::<Vec<_>>()
             .join(", ")
+    );
+    Ok(())
+}
+
+/// `ffvk bench --sweep jobs`: writes the suite under `--out`, prints and writes the table.
+fn run_jobs(args: &BenchArgs, options: &RendererOptions, program: &std::path::Path) -> Result<()> {
+    let mut config = SuiteConfig::standard();
+    config.scenes = args.scenes as usize;
+    if !args.jobs.is_empty() {
+        config.jobs = args.jobs.iter().map(|&j| j as usize).collect();
+    }
+    if let Some(f) = args.frames {
+        config.runs = f as usize;
+    }
+    config.lp_num_threads = args.lp_threads.map(|t| t.to_string());
+    let dir = args.out.join("jobs");
+    let started = Instant::now();
+    let report = run_jobs_sweep(&config, options, program, &dir, &mut |step| {
+        if !args.no_progress {
+            eprintln!("{step}");
+        }
+    })?;
+    println!("{}", jobs_markdown(&report));
+    println!(
+        "{:.0} s; wrote {} and {}",
+        started.elapsed().as_secs_f64(),
+        dir.join("jobs.md").display(),
+        dir.join("jobs.json").display()
     );
     Ok(())
 }
@@ -301,7 +345,7 @@ pub fn mesa_version(text: &str) -> Option<String> {
     (!version.is_empty()).then_some(version)
 }
 
-fn cpu_model() -> String {
+pub(crate) fn cpu_model() -> String {
     std::fs::read_to_string("/proc/cpuinfo")
         .ok()
         .and_then(|s| {

@@ -155,7 +155,14 @@ pub enum WorkerError {
 /// the error.
 pub fn worker_main(options: &RendererOptions, mut job: Job) -> crate::tools::Result<()> {
     let mut stdout = io::stdout().lock();
-    let mut renderer = match Renderer::new(options) {
+    // Every state its specialized pipeline, however many came before: under the default
+    // policy a worker past its budget of states would draw later scenes with the uber-shader,
+    // and which scenes come later depends on the number of workers.
+    let options = RendererOptions {
+        specialize: crate::Specialize::Always,
+        ..options.clone()
+    };
+    let mut renderer = match Renderer::new(&options) {
         Ok(r) => r,
         Err(e) => {
             let _ = reply(&mut stdout, &Reply::Failed(e.to_string()));
@@ -579,32 +586,45 @@ pub fn default_lp_threads(jobs: usize) -> usize {
     (default_jobs() / jobs.max(1)).max(1)
 }
 
-/// Renders `job`'s suite (its partition, when it has one) over `jobs` worker processes
-/// (default [`default_jobs`]; never more than there are scenes), each with LP_NUM_THREADS as
-/// the environment sets it or else [`default_lp_threads`], and returns the results with what
-/// the run was. Fails before rendering for the reasons [`super::job_files`] gives, or when a
-/// worker cannot start.
+/// How [`run_suite`] runs its workers.
+#[derive(Debug, Clone)]
+pub struct SuiteOptions {
+    /// Worker processes; `None`: [`default_jobs`]. Never more than there are scenes.
+    pub jobs: Option<usize>,
+    /// LP_NUM_THREADS for each worker; `None`: the environment's, else
+    /// [`default_lp_threads`].
+    pub lp_num_threads: Option<String>,
+    /// How long one scene may take ([`PoolOptions::timeout`]).
+    pub timeout: Duration,
+}
+
+/// Renders `job`'s suite (its partition, when it has one) over worker processes and returns
+/// the results with what the run was. Fails before rendering for the reasons
+/// [`super::job_files`] gives, or when a worker cannot start.
 pub fn run_suite(
     job: &Job,
     worker: &WorkerCommand,
-    jobs: Option<usize>,
-    timeout: Duration,
+    options: &SuiteOptions,
     log: &mut dyn FnMut(Message),
 ) -> crate::tools::Result<super::results::Results> {
     let started = std::time::SystemTime::now();
     let clock = Instant::now();
     let (files, suite) = super::job_files(job)?;
-    let jobs = jobs.unwrap_or_else(default_jobs).clamp(1, files.len().max(1));
-    let lp_num_threads = match std::env::var("LP_NUM_THREADS") {
-        Ok(v) if !v.trim().is_empty() => v,
+    let jobs = options
+        .jobs
+        .unwrap_or_else(default_jobs)
+        .clamp(1, files.len().max(1));
+    let lp_num_threads = match (&options.lp_num_threads, std::env::var("LP_NUM_THREADS")) {
+        (Some(t), _) => t.clone(),
+        (None, Ok(v)) if !v.trim().is_empty() => v,
         _ => default_lp_threads(jobs).to_string(),
     };
-    let options = PoolOptions {
+    let pool = PoolOptions {
         jobs,
         lp_num_threads: Some(lp_num_threads.clone()),
-        timeout,
+        timeout: options.timeout,
     };
-    let (rows, device) = run_pool(job, &files, worker, &options, log)?;
+    let (rows, device) = run_pool(job, &files, worker, &pool, log)?;
     let info = super::results::RunInfo {
         ffvk: env!("CARGO_PKG_VERSION").into(),
         device,
