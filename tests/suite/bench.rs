@@ -244,3 +244,39 @@ fn the_auto_sweep_is_the_gpu_sweep_on_gpus_and_the_standard_one_on_lavapipe() {
     assert_eq!(gpu.light_counts.last(), Some(&ffvk::gl::state::MAX_LIGHTS));
     assert!(gpu.batch && gpu.draws > 1);
 }
+
+#[test]
+fn the_jobs_sweep_times_every_number_of_workers_on_a_suite_that_passes() {
+    let dir = output_dir().join("bench_jobs");
+    let _ = std::fs::remove_dir_all(&dir);
+    let config = ffvk::tools::bench::SuiteConfig {
+        scenes: 6,
+        size: 32,
+        jobs: vec![1, 2],
+        runs: 2,
+        lp_num_threads: None,
+    };
+    let options = RendererOptions {
+        validation: Validation::Required,
+        ..RendererOptions::default()
+    };
+    let program = std::path::Path::new(env!("CARGO_BIN_EXE_ffvk"));
+    let report = ffvk::tools::bench::run_jobs_sweep(&config, &options, program, &dir, &mut |_| {}).unwrap();
+    assert_eq!(report.points.iter().map(|p| p.jobs).collect::<Vec<_>>(), [1, 2]);
+    for p in &report.points {
+        assert_eq!(p.images, 6);
+        assert_eq!(p.seconds.len(), 2);
+        assert!(p.seconds.iter().all(|s| *s > 0.0) && p.images_per_second > 0.0);
+        assert!(p.lp_num_threads.parse::<u32>().is_ok_and(|t| t >= 1), "{p:?}");
+    }
+    assert_eq!(report.points[0].speedup, 1.0);
+    assert!(report.device.as_ref().is_some_and(|d| d.driver == "llvmpipe"));
+    let markdown = std::fs::read_to_string(dir.join("jobs.md")).unwrap();
+    assert!(
+        markdown.contains("| workers |") && markdown.contains("Mesa"),
+        "{markdown}"
+    );
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("jobs.json")).unwrap()).unwrap();
+    assert_eq!(json["points"].as_array().unwrap().len(), 2);
+}

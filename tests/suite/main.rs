@@ -14,6 +14,7 @@ mod layout;
 mod lighting;
 mod memory;
 mod reference;
+mod regression;
 mod render_path;
 mod scene;
 mod specialization;
