@@ -133,5 +133,14 @@ impl From<crate::gl::state::StateError> for Error {
     }
 }
 
+/// Writes `bytes` to `path` atomically ([`crate::files::write_bytes`]), the error naming the
+/// path.
+pub(crate) fn write_file(path: &std::path::Path, bytes: &[u8]) -> Result<()> {
+    crate::files::write_bytes(path, bytes).map_err(|source| Error::Write {
+        path: path.to_path_buf(),
+        source,
+    })
+}
+
 /// Result with the tools' [`Error`].
 pub type Result<T, E = Error> = std::result::Result<T, E>;

@@ -10,17 +10,10 @@ use super::measure::Spread;
 use super::sweep::{sphere_counts, BenchMode, Engine, Group, Point, Variant, GL_MODES};
 use super::{BenchReport, BenchResult, DrawCost};
 use crate::tools::table::{Align, Table};
-use crate::tools::{Error, Result};
+use crate::tools::{write_file, Error, Result};
 
 // ---------------------------------------------------------------------------------------------
 // The files.
-
-fn write_file(path: &Path, bytes: &[u8]) -> Result<()> {
-    crate::files::write_bytes(path, bytes).map_err(|source| Error::Write {
-        path: path.to_path_buf(),
-        source,
-    })
-}
 
 /// The CSV columns, in order.
 pub const CSV_COLUMNS: [&str; 37] = [

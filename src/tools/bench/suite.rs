@@ -111,12 +111,7 @@ pub fn generate_scenes(dir: &Path, count: usize, size: u32) -> Result<Vec<PathBu
     for i in 0..count {
         let path = dir.join(format!("scene_{i:03}.toml"));
         let text = scene_text(i, size);
-        crate::files::write_atomically(&path, |w| std::io::Write::write_all(w, text.as_bytes())).map_err(
-            |source| Error::Write {
-                path: path.clone(),
-                source,
-            },
-        )?;
+        crate::tools::write_file(&path, text.as_bytes())?;
         written.push(path);
     }
     Ok(written)
@@ -296,14 +291,7 @@ pub fn run_jobs_sweep(
         }
     }
     for point in &mut points {
-        let mut sorted = point.seconds.clone();
-        sorted.sort_by(f64::total_cmp);
-        let n = sorted.len();
-        point.median_seconds = if n % 2 == 1 {
-            sorted[n / 2]
-        } else {
-            (sorted[n / 2 - 1] + sorted[n / 2]) / 2.0
-        };
+        point.median_seconds = super::Spread::of(&point.seconds).map_or(f64::NAN, |s| s.median);
         point.images_per_second = point.images as f64 / point.median_seconds;
     }
     let base = points[0].images_per_second;
@@ -326,8 +314,7 @@ pub fn run_jobs_sweep(
     })?;
     for (name, text) in [("jobs.json", json), ("jobs.md", jobs_markdown(&report))] {
         let path = dir.join(name);
-        crate::files::write_atomically(&path, |w| std::io::Write::write_all(w, text.as_bytes()))
-            .map_err(|source| Error::Write { path, source })?;
+        crate::tools::write_file(&path, text.as_bytes())?;
     }
     Ok(report)
 }
@@ -344,8 +331,7 @@ pub fn jobs_markdown(report: &SuiteReport) -> String {
         ("× 1 worker", super::super::table::Align::Right),
     ]);
     for p in &report.points {
-        let min = p.seconds.iter().copied().fold(f64::INFINITY, f64::min);
-        let max = p.seconds.iter().copied().fold(0.0, f64::max);
+        let (min, max) = super::Spread::of(&p.seconds).map_or((f64::NAN, f64::NAN), |s| (s.min, s.max));
         t.row([
             p.jobs.to_string(),
             p.lp_num_threads.clone(),

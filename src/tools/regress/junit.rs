@@ -232,12 +232,7 @@ fn escape(s: &str, attribute: bool) -> String {
 /// Writes the JUnit XML of `results` to `path`, atomically.
 pub fn write(results: &Results, path: &Path) -> crate::tools::Result<()> {
     let text = junit(results);
-    crate::files::write_atomically(path, |w| std::io::Write::write_all(w, text.as_bytes())).map_err(
-        |source| crate::tools::Error::Write {
-            path: path.to_path_buf(),
-            source,
-        },
-    )
+    crate::tools::write_file(path, text.as_bytes())
 }
 
 #[cfg(test)]

@@ -194,12 +194,7 @@ impl Results {
             path: path.to_path_buf(),
             source,
         })?;
-        crate::files::write_atomically(path, |w| std::io::Write::write_all(w, text.as_bytes())).map_err(
-            |source| Error::Write {
-                path: path.to_path_buf(),
-                source,
-            },
-        )
+        crate::tools::write_file(path, text.as_bytes())
     }
 
     /// Reads a results file written by [`Results::write_json`].
