@@ -457,36 +457,17 @@ fn shards_render_every_scene_exactly_once_and_merge_into_the_whole_run() {
     let scenes = suite(&dir, 10);
     let refs = dir.join("refs");
     let whole = dir.join("whole.json");
-    let out = ffvk(
-        &[
-            &"render",
-            &scenes,
-            &"--out",
-            &dir.join("out"),
-            &"--check",
-            &refs,
-            &"--bless",
-            &"--json",
-            &whole,
-        ],
-        &[],
-    );
-    assert_exit(&out, 0);
+    let out_dir = dir.join("out");
+    // The suite checked against refs/, with `extra` arguments.
+    let check = |extra: &[&dyn AsRef<std::ffi::OsStr>]| {
+        let mut args: Vec<&dyn AsRef<std::ffi::OsStr>> =
+            vec![&"render", &scenes, &"--out", &out_dir, &"--check", &refs];
+        args.extend_from_slice(extra);
+        ffvk(&args, &[])
+    };
+    assert_exit(&check(&[&"--bless", &"--json", &whole]), 0);
     // Check the whole suite once more, so that every row passes as the shards' will.
-    let out = ffvk(
-        &[
-            &"render",
-            &scenes,
-            &"--out",
-            &dir.join("out"),
-            &"--check",
-            &refs,
-            &"--json",
-            &whole,
-        ],
-        &[],
-    );
-    assert_exit(&out, 0);
+    assert_exit(&check(&[&"--json", &whole]), 0);
     let whole = json(&whole);
 
     let mut shard_files = Vec::new();
@@ -494,21 +475,7 @@ fn shards_render_every_scene_exactly_once_and_merge_into_the_whole_run() {
     for k in 1..=3 {
         let results = dir.join(format!("shard_{k}.json"));
         let partition = format!("{k}/3");
-        let out = ffvk(
-            &[
-                &"render",
-                &scenes,
-                &"--out",
-                &dir.join("out"),
-                &"--check",
-                &refs,
-                &"--partition",
-                &partition,
-                &"--json",
-                &results,
-            ],
-            &[],
-        );
+        let out = check(&[&"--partition", &partition, &"--json", &results]);
         assert_exit(&out, 0);
         let shard = json(&results);
         let p: Partition = partition.parse().unwrap();
