@@ -90,6 +90,10 @@ enum Command {
         /// Write the results as JSON (what `ffvk results merge` reads).
         #[arg(long, value_name = "FILE")]
         json: Option<PathBuf>,
+        /// Write an HTML report into DIR (index.html): the failed, missing, errored and
+        /// blessed images worst first, each with its reference, difference maps and figures.
+        #[arg(long, value_name = "DIR", requires = "check")]
+        report: Option<PathBuf>,
         /// Seconds one scene (all its modes) may take before its worker is killed and the
         /// scene reported as an error.
         #[arg(long, value_name = "SECONDS", default_value_t = 600.0, value_parser = parse_seconds)]
@@ -166,6 +170,20 @@ enum ResultsAction {
         /// Write the merged results as JUnit XML.
         #[arg(long, value_name = "FILE")]
         junit: Option<PathBuf>,
+        /// Write the merged results as an HTML report into DIR.
+        #[arg(long, value_name = "DIR")]
+        report: Option<PathBuf>,
+    },
+    /// Write the HTML report of results files (one run's, or every shard's: they are merged
+    /// first) into DIR. The image paths the files record are read as they were written
+    /// (relative ones from the current folder). Exits as `render --check` does.
+    Report {
+        /// The results files (`render --json`).
+        #[arg(required = true)]
+        files: Vec<PathBuf>,
+        /// The folder to write index.html, report.css and images/ into.
+        #[arg(short, long, value_name = "DIR", required = true)]
+        out: PathBuf,
     },
 }
 
@@ -392,6 +410,7 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
             partition,
             junit,
             json,
+            report,
             timeout,
             tolerance,
             gltf,
@@ -420,7 +439,7 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
             if files.len() == 1 && lighting.len() <= 1 && !results_asked {
                 return render_one(&cli, &files[0].path, out.as_ref(), &job);
             }
-            for path in [junit, json].into_iter().flatten() {
+            for path in [junit, json, report].into_iter().flatten() {
                 if scenes.iter().any(|s| ffvk::files::same_file(path, s)) {
                     return Err(ffvk::tools::Error::OverwritesInput { path: path.clone() });
                 }
@@ -458,14 +477,41 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
                 run.lp_num_threads.as_deref().unwrap_or("unset"),
                 run.seconds
             );
-            finish_results(&results, check.is_some(), json.as_deref(), junit.as_deref())
+            let outputs = Outputs {
+                json: json.as_deref(),
+                junit: junit.as_deref(),
+                report: report.as_deref(),
+            };
+            finish_results(&results, check.is_some(), &outputs)
         }
-        Command::Results {
-            action: ResultsAction::Merge { files, json, junit },
-        } => {
-            for path in [junit, json].into_iter().flatten() {
+        Command::Results { action } => {
+            let (files, outputs) = match action {
+                ResultsAction::Merge {
+                    files,
+                    json,
+                    junit,
+                    report,
+                } => (
+                    files,
+                    Outputs {
+                        json: json.as_deref(),
+                        junit: junit.as_deref(),
+                        report: report.as_deref(),
+                    },
+                ),
+                ResultsAction::Report { files, out } => (
+                    files,
+                    Outputs {
+                        report: Some(out),
+                        ..Outputs::default()
+                    },
+                ),
+            };
+            for path in [outputs.junit, outputs.json].into_iter().flatten() {
                 if files.iter().any(|f| ffvk::files::same_file(path, f)) {
-                    return Err(ffvk::tools::Error::OverwritesInput { path: path.clone() });
+                    return Err(ffvk::tools::Error::OverwritesInput {
+                        path: path.to_path_buf(),
+                    });
                 }
             }
             let parts = files
@@ -474,7 +520,7 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
                 .collect::<ffvk::tools::Result<Vec<_>>>()?;
             let merged = regress::results::Results::merge(parts)?;
             let checked = merged.runs.iter().any(|r| r.info.references.is_some());
-            finish_results(&merged, checked, json.as_deref(), junit.as_deref())
+            finish_results(&merged, checked, &outputs)
         }
         Command::Compare {
             expected,
@@ -643,21 +689,40 @@ fn render_one(
     Ok(ExitCode::SUCCESS)
 }
 
+/// The files a run's results are written to.
+#[derive(Default)]
+struct Outputs<'a> {
+    json: Option<&'a std::path::Path>,
+    junit: Option<&'a std::path::Path>,
+    /// The HTML report's folder.
+    report: Option<&'a std::path::Path>,
+}
+
 /// Writes the results files asked for, prints the summary and exits as documented: 2 on an
 /// error, else 1 on a difference or missing reference, else 0.
 fn finish_results(
     results: &regress::results::Results,
     checked: bool,
-    json: Option<&std::path::Path>,
-    junit: Option<&std::path::Path>,
+    outputs: &Outputs,
 ) -> ffvk::tools::Result<ExitCode> {
-    if let Some(path) = json {
+    if let Some(path) = outputs.json {
         results.write_json(path)?;
         eprintln!("wrote {}", path.display());
     }
-    if let Some(path) = junit {
+    if let Some(path) = outputs.junit {
         regress::junit::write(results, path)?;
         eprintln!("wrote {}", path.display());
+    }
+    if let Some(dir) = outputs.report {
+        let written = regress::report::write(results, dir)?;
+        for problem in &written.unreadable {
+            eprintln!("ffvk: report: {problem}");
+        }
+        eprintln!(
+            "wrote {} ({} image(s) to look at)",
+            written.page.display(),
+            written.entries
+        );
     }
     let rows = results.rows();
     println!("{}", regress::summary(&rows, checked));

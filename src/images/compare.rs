@@ -85,10 +85,10 @@ impl Tolerance {
     };
 }
 
-/// One pixel where the images differ most.
+/// One pixel where the images differ, with both values.
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct WorstPixel {
+pub struct PixelDiff {
     pub x: u32,
     pub y: u32,
     pub expected: [u8; 4],
@@ -113,7 +113,12 @@ pub struct Comparison {
     pub flip_mean: Option<f32>,
     /// Whether `flip_mean` counted every pixel ([`Tolerance::flip_all_pixels`]).
     pub flip_all_pixels: bool,
-    pub worst: Option<WorstPixel>,
+    /// The pixel whose largest channel difference is the largest (the first such, row by
+    /// row).
+    pub worst: Option<PixelDiff>,
+    /// The first pixel, row by row from the top left, with a channel over the threshold.
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub first_over: Option<PixelDiff>,
     pub threshold: u8,
 }
 
@@ -199,16 +204,12 @@ pub fn compare_with(
 
 /// The per-channel part of a comparison (no FLIP yet).
 fn channels(expected: &RgbaImage, actual: &RgbaImage, threshold: u8) -> Result<Comparison, SizeMismatch> {
-    if expected.dimensions() != actual.dimensions() {
-        return Err(SizeMismatch {
-            expected: expected.dimensions(),
-            actual: actual.dimensions(),
-        });
-    }
+    same_size(expected, actual)?;
     let (width, height) = expected.dimensions();
     let mut max_diff = [0u8; 4];
     let mut over = 0;
-    let mut worst: Option<(u8, WorstPixel)> = None;
+    let mut worst: Option<(u8, PixelDiff)> = None;
+    let mut first_over = None;
     for (i, (e, a)) in expected
         .as_raw()
         .chunks_exact(4)
@@ -225,19 +226,18 @@ fn channels(expected: &RgbaImage, actual: &RgbaImage, threshold: u8) -> Result<C
             *m = (*m).max(d);
             pixel_max = pixel_max.max(d);
         }
+        let here = PixelDiff {
+            x,
+            y,
+            expected: [e[0], e[1], e[2], e[3]],
+            actual: [a[0], a[1], a[2], a[3]],
+        };
         if pixel_max > threshold {
             over += 1;
+            first_over.get_or_insert(here);
         }
         if pixel_max > 0 && worst.is_none_or(|(d, _)| pixel_max > d) {
-            worst = Some((
-                pixel_max,
-                WorstPixel {
-                    x,
-                    y,
-                    expected: [e[0], e[1], e[2], e[3]],
-                    actual: [a[0], a[1], a[2], a[3]],
-                },
-            ));
+            worst = Some((pixel_max, here));
         }
     }
     Ok(Comparison {
@@ -249,6 +249,7 @@ fn channels(expected: &RgbaImage, actual: &RgbaImage, threshold: u8) -> Result<C
         flip_mean: None,
         flip_all_pixels: false,
         worst: worst.map(|(_, w)| w),
+        first_over,
         threshold,
     })
 }
@@ -434,21 +435,39 @@ fn flip_mean(expected: &RgbaImage, actual: &RgbaImage, over: Option<u8>) -> f32 
 /// over `threshold` that FLIP rates dim are painted red, so that a change of a few levels past
 /// the threshold cannot hide in the dark end of the map.
 pub fn heat_map(expected: &RgbaImage, actual: &RgbaImage, threshold: u8) -> Result<RgbaImage, SizeMismatch> {
-    if expected.dimensions() != actual.dimensions() {
-        return Err(SizeMismatch {
-            expected: expected.dimensions(),
-            actual: actual.dimensions(),
-        });
-    }
+    Ok(heat_map_and_flip(expected, actual, threshold, false)?.0)
+}
+
+/// [`heat_map`] and, from the same FLIP values, the FLIP mean as [`compare`] counts it under
+/// `tolerance` (at the pixels over its threshold, or at every pixel).
+pub fn heat_map_with_flip(
+    expected: &RgbaImage,
+    actual: &RgbaImage,
+    tolerance: &Tolerance,
+) -> Result<(RgbaImage, f32), SizeMismatch> {
+    heat_map_and_flip(expected, actual, tolerance.threshold, tolerance.flip_all_pixels)
+}
+
+fn heat_map_and_flip(
+    expected: &RgbaImage,
+    actual: &RgbaImage,
+    threshold: u8,
+    all_pixels: bool,
+) -> Result<(RgbaImage, f32), SizeMismatch> {
+    same_size(expected, actual)?;
     let (w, h) = expected.dimensions();
     let lut = nv_flip::magma_lut().to_vec();
     // Pixels no region covers have FLIP 0.
     let mut map = RgbaImage::from_pixel(w, h, Rgba([lut[0], lut[1], lut[2], 255]));
+    let mut sum = 0.0f64;
     flip_tiles(expected, actual, |tx, ty, tw, _th, values| {
         for (i, &v) in values.iter().enumerate() {
             let (x, y) = (tx + i as u32 % tw, ty + i as u32 / tw);
             let (e, a) = (expected.get_pixel(x, y), actual.get_pixel(x, y));
             let over = over_threshold(e, a, threshold);
+            if over || all_pixels {
+                sum += f64::from(v);
+            }
             let k = (v.clamp(0.0, 1.0) * 255.0).round() as usize * 3;
             let colored = [lut[k], lut[k + 1], lut[k + 2]];
             let pixel = if over && colored[0] < 160 {
@@ -459,7 +478,55 @@ pub fn heat_map(expected: &RgbaImage, actual: &RgbaImage, threshold: u8) -> Resu
             map.put_pixel(x, y, pixel);
         }
     });
+    Ok((map, (sum / (f64::from(w) * f64::from(h))) as f32))
+}
+
+/// A map of the per-channel differences: each pixel's red, green and blue are |actual −
+/// expected| of that channel, scaled so that the largest difference of any channel in the
+/// image is 255 (identical pixels are black; a difference in alpha lights all three, gray).
+/// [`channel_gain`] is the scale.
+pub fn channel_map(expected: &RgbaImage, actual: &RgbaImage) -> Result<RgbaImage, SizeMismatch> {
+    same_size(expected, actual)?;
+    let (w, h) = expected.dimensions();
+    let diff = |e: &[u8], a: &[u8]| -> [u8; 4] { std::array::from_fn(|c| e[c].abs_diff(a[c])) };
+    let largest = expected
+        .as_raw()
+        .chunks_exact(4)
+        .zip(actual.as_raw().chunks_exact(4))
+        .map(|(e, a)| diff(e, a).into_iter().max().unwrap_or(0))
+        .max()
+        .unwrap_or(0);
+    let gain = channel_gain(largest);
+    let mut map = RgbaImage::new(w, h);
+    for ((out, e), a) in map
+        .as_mut()
+        .chunks_exact_mut(4)
+        .zip(expected.as_raw().chunks_exact(4))
+        .zip(actual.as_raw().chunks_exact(4))
+    {
+        let d = diff(e, a);
+        for c in 0..3 {
+            out[c] = (f32::from(d[c].max(d[3])) * gain).round().min(255.0) as u8;
+        }
+        out[3] = 255;
+    }
     Ok(map)
+}
+
+/// The factor [`channel_map`] multiplies differences by when the largest difference of any
+/// channel is `largest` (1 when the images are identical).
+pub fn channel_gain(largest: u8) -> f32 {
+    255.0 / f32::from(largest.max(1))
+}
+
+fn same_size(expected: &RgbaImage, actual: &RgbaImage) -> Result<(), SizeMismatch> {
+    if expected.dimensions() != actual.dimensions() {
+        return Err(SizeMismatch {
+            expected: expected.dimensions(),
+            actual: actual.dimensions(),
+        });
+    }
+    Ok(())
 }
 
 #[cfg(test)]
@@ -550,6 +617,64 @@ mod tests {
         let map = flip_region(&expected, &actual, 0, 0, 64, 64).to_vec();
         let expected_mean = map[30 * 64 + 30] / 4096.0;
         assert!((over - expected_mean).abs() < 1e-7, "{over} vs {expected_mean}");
+    }
+
+    #[test]
+    fn the_first_pixel_over_the_threshold_is_the_first_row_by_row() {
+        let expected = RgbaImage::from_pixel(8, 8, Rgba([10, 20, 30, 255]));
+        let mut actual = expected.clone();
+        // Within the threshold earlier, over it later, and the worst last.
+        actual.put_pixel(0, 0, Rgba([11, 20, 30, 255]));
+        actual.put_pixel(6, 2, Rgba([10, 25, 30, 255]));
+        actual.put_pixel(1, 3, Rgba([10, 20, 30, 200]));
+        actual.put_pixel(7, 7, Rgba([90, 20, 30, 255]));
+        let c = compare(&expected, &actual, &Tolerance::default()).unwrap();
+        let first = c.first_over.unwrap();
+        assert_eq!(
+            (first.x, first.y, first.expected, first.actual),
+            (6, 2, [10, 20, 30, 255], [10, 25, 30, 255])
+        );
+        assert_eq!((c.worst.unwrap().x, c.worst.unwrap().y), (7, 7));
+        assert_eq!((c.over, c.max_diff), (3, [80, 5, 0, 55]));
+        let same = compare(&expected, &expected, &Tolerance::default()).unwrap();
+        assert_eq!((same.first_over, same.worst), (None, None));
+    }
+
+    #[test]
+    fn the_channel_map_scales_each_channel_by_the_largest_difference() {
+        let expected = RgbaImage::from_pixel(4, 2, Rgba([100, 100, 100, 255]));
+        let mut actual = expected.clone();
+        actual.put_pixel(1, 0, Rgba([110, 100, 95, 255]));
+        actual.put_pixel(2, 1, Rgba([100, 102, 100, 250]));
+        let map = channel_map(&expected, &actual).unwrap();
+        // The largest difference, 10, is 255: gain 25.5.
+        assert_eq!(map.get_pixel(1, 0).0, [255, 0, 128, 255]);
+        // Alpha's 5 lights every channel; green's own 2 is below it.
+        assert_eq!(map.get_pixel(2, 1).0, [128, 128, 128, 255]);
+        assert_eq!(map.get_pixel(0, 0).0, [0, 0, 0, 255]);
+        assert_eq!(channel_gain(10), 25.5);
+        assert!(channel_map(&expected, &RgbaImage::new(2, 2)).is_err());
+    }
+
+    #[test]
+    fn the_heat_map_gives_the_flip_mean_compare_gives() {
+        let (expected, mut actual) = dark_and_shifted(1);
+        actual.put_pixel(30, 30, Rgba([255, 0, 0, 255]));
+        actual.put_pixel(5, 50, Rgba([0, 200, 0, 255]));
+        for tolerance in [
+            Tolerance::default(),
+            Tolerance {
+                flip_all_pixels: true,
+                ..Tolerance::default()
+            },
+        ] {
+            let c = compare_with(&expected, &actual, &tolerance, Flip::Always).unwrap();
+            let (_, mean) = heat_map_with_flip(&expected, &actual, &tolerance).unwrap();
+            // Over every pixel of a small image, compare takes FLIP's own pool, which sums
+            // in f32.
+            let want = c.flip_mean.unwrap();
+            assert!((mean - want).abs() <= 1e-4 * want, "{mean} vs {want}");
+        }
     }
 
     #[test]

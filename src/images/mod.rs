@@ -2,6 +2,7 @@
 //! their comparison.
 
 pub mod compare;
+pub mod thumbnail;
 
 use std::path::{Path, PathBuf};
 

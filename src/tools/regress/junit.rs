@@ -208,8 +208,9 @@ impl Xml {
 /// `s` as XML 1.0 character data or (`attribute`) an attribute value: markup characters
 /// escaped; in attribute values, line breaks and tabs as character references (a parser would
 /// fold them into spaces); the control characters XML 1.0 cannot carry at all replaced by
-/// U+FFFD.
-fn escape(s: &str, attribute: bool) -> String {
+/// U+FFFD. (As attribute values, the result is also valid HTML text and attribute values:
+/// the regression report uses it.)
+pub(super) fn escape(s: &str, attribute: bool) -> String {
     let mut out = String::with_capacity(s.len());
     for c in s.chars() {
         match c {

@@ -13,6 +13,7 @@
 pub mod junit;
 pub mod partition;
 pub mod pool;
+pub mod report;
 pub mod results;
 
 use std::path::{Path, PathBuf};
@@ -21,7 +22,9 @@ use std::time::Instant;
 use serde::{Deserialize, Serialize};
 
 use crate::gl::state::LightingMode;
-use crate::images::compare::{compare, heat_map, load_image, Comparison, Tolerance};
+#[cfg(doc)]
+use crate::images::compare::heat_map;
+use crate::images::compare::{channel_map, compare, heat_map_with_flip, load_image, Comparison, Tolerance};
 use crate::images::save_png;
 use crate::scene::direct::DirectOptions;
 use crate::scene::{render_scene, Limits, Scene};
@@ -165,8 +168,17 @@ pub struct Row {
     pub comparison: Option<Comparison>,
     /// The image written, when one was.
     pub output: Option<PathBuf>,
-    /// The heat map of the differences, when the image is not identical to its reference.
+    /// The FLIP heat map of the differences ([`heat_map`]), when the image is not identical
+    /// to its reference.
     pub diff: Option<PathBuf>,
+    /// The map of the per-channel differences ([`channel_map`]), when the image is not
+    /// identical to its reference.
+    #[serde(default)]
+    pub channels: Option<PathBuf>,
+    /// The reference that blessing replaced, kept beside the image so that what was accepted
+    /// can be looked at.
+    #[serde(default)]
+    pub replaced: Option<PathBuf>,
     /// The reference checked against (or blessed), when there is a reference folder.
     pub reference: Option<PathBuf>,
     /// Seconds spent on this image (its share of loading the scene included).
@@ -187,6 +199,8 @@ impl Row {
             comparison: None,
             output: None,
             diff: None,
+            channels: None,
+            replaced: None,
             reference: None,
             seconds: 0.0,
         }
@@ -556,19 +570,31 @@ fn render_image(
                 ));
             }
             Err(_) => row.status = Status::Blessed,
-            Ok(c) => {
+            Ok(mut c) => {
                 row.status = match (c.passes(&job.tolerance), job.bless && !c.identical()) {
                     (_, true) => Status::Blessed,
                     (true, false) => Status::Pass,
                     (false, false) => Status::Fail,
                 };
                 if !c.identical() {
+                    let (map, flip) = heat_map_with_flip(&expected, &image, &job.tolerance)?;
+                    // Where the share over the threshold decided, the map's FLIP values
+                    // still give the figure the summary and the report show.
+                    c.flip_mean.get_or_insert(flip);
                     let diff = dir.join(format!("{local}.diff.png"));
-                    save_png(&heat_map(&expected, &image, job.tolerance.threshold)?, &diff)?;
+                    save_png(&map, &diff)?;
                     row.diff = Some(diff);
+                    let channels = dir.join(format!("{local}.channels.png"));
+                    save_png(&channel_map(&expected, &image)?, &channels)?;
+                    row.channels = Some(channels);
                 }
                 row.comparison = Some(c);
             }
+        }
+        if row.status == Status::Blessed {
+            let replaced = dir.join(format!("{local}.replaced.png"));
+            save_png(&expected, &replaced)?;
+            row.replaced = Some(replaced);
         }
     }
     if row.status == Status::Blessed {
@@ -645,6 +671,7 @@ mod tests {
             flip_mean: Some(flip_mean),
             flip_all_pixels: false,
             worst: None,
+            first_over: None,
             threshold: 1,
         }
     }
@@ -661,6 +688,8 @@ mod tests {
             comparison,
             output: Some(PathBuf::from(format!("out/{name}.png"))),
             diff: None,
+            channels: None,
+            replaced: None,
             message: None,
             reference: None,
             seconds: 0.0,
