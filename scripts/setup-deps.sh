@@ -16,6 +16,7 @@ if [[ "${1:-}" == "--test" ]]; then
     libegl-mesa0             # Mesa's EGL vendor library (EGL_EXT_platform_device, surfaceless)
     libgl1-mesa-dri          # Mesa's GL drivers, llvmpipe (swrast_dri.so) among them
     libxml2-utils            # xmllint: the JUnit files checked against the JUnit schemas
+    chromium                 # headless Chromium: the HTML report opened, clicked and screenshot
   )
 fi
 

@@ -1,6 +1,7 @@
 //! ffvk's integration tests: one binary, modules by area.
 
 mod bench;
+mod browser;
 mod conformance;
 mod determinism;
 mod embedding;
@@ -16,6 +17,7 @@ mod memory;
 mod reference;
 mod regression;
 mod render_path;
+mod report;
 mod scene;
 mod specialization;
 mod state;

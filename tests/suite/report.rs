@@ -1,0 +1,289 @@
+//! The HTML regression report (`render --check --report DIR`, `ffvk results report`), opened
+//! in a real headless Chromium (tests/suite/browser.rs): the failing image's entry shows its
+//! reference, actual image and both difference maps with the figures the test computes from
+//! the PNGs itself, the toggle flips reference and actual in place (read back from the
+//! browser's own screenshot), nothing is fetched from outside the report's folder, and a page
+//! of 1,000 entries loads only the images in view. Screenshots go to tests/output/report/.
+
+use std::path::{Path, PathBuf};
+use std::process::Output;
+
+use ffvk::images::{load_image, save_png};
+use ffvk::tools::bench::generate_scenes;
+use image::{Rgba, RgbaImage};
+
+use crate::browser::Browser;
+use crate::support::{ffvk_command, output_dir};
+
+/// The check's default threshold: a channel must differ by more to count.
+const THRESHOLD: u8 = 2;
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = output_dir().join("report").join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn ffvk(args: &[&dyn AsRef<std::ffi::OsStr>]) -> Output {
+    ffvk_command(args)
+        .env("FFVK_VALIDATION", "1")
+        .output()
+        .expect("the ffvk binary runs")
+}
+
+fn assert_exit(out: &Output, code: i32) {
+    assert_eq!(
+        out.status.code(),
+        Some(code),
+        "stdout:\n{}\nstderr:\n{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+/// A suite of `count` generated scenes of `size`² in `dir/scenes`, rendered into `dir/out`
+/// and blessed into `dir/refs`.
+fn blessed_suite(dir: &Path, count: usize, size: u32) -> (PathBuf, PathBuf, PathBuf) {
+    let (scenes, out, refs) = (dir.join("scenes"), dir.join("out"), dir.join("refs"));
+    generate_scenes(&scenes, count, size).unwrap();
+    let blessed = ffvk(&[&"render", &scenes, &"--out", &out, &"--check", &refs, &"--bless"]);
+    assert_exit(&blessed, 0);
+    (scenes, out, refs)
+}
+
+/// Paints `color` over the `w`×`h` block at (`x`, `y`) of the reference `path`.
+fn change_reference(path: &Path, (x, y, w, h): (u32, u32, u32, u32), color: [u8; 4]) {
+    let mut image = load_image(path).unwrap();
+    for yy in y..y + h {
+        for xx in x..x + w {
+            image.put_pixel(xx, yy, Rgba(color));
+        }
+    }
+    save_png(&image, path).unwrap();
+}
+
+/// The figures a report must show for `reference` against `actual`, computed here: the
+/// largest difference per channel, the first pixel (row by row) over the threshold, and how
+/// many pixels are over it.
+fn expected_figures(reference: &RgbaImage, actual: &RgbaImage) -> ([u8; 4], (u32, u32), usize) {
+    let mut max = [0u8; 4];
+    let mut first = None;
+    let mut over = 0;
+    for (x, y, r) in reference.enumerate_pixels() {
+        let a = actual.get_pixel(x, y);
+        let d: [u8; 4] = std::array::from_fn(|c| r.0[c].abs_diff(a.0[c]));
+        for c in 0..4 {
+            max[c] = max[c].max(d[c]);
+        }
+        if d.iter().any(|&v| v > THRESHOLD) {
+            over += 1;
+            first.get_or_insert((x, y));
+        }
+    }
+    (max, first.expect("the images differ past the threshold"), over)
+}
+
+fn rgba(p: &Rgba<u8>) -> String {
+    format!("({}, {}, {}, {})", p.0[0], p.0[1], p.0[2], p.0[3])
+}
+
+/// JavaScript: the entry of image `name`.
+fn entry(name: &str) -> String {
+    format!("document.querySelector('section.entry[data-name=\"{name}\"]')")
+}
+
+/// Which image the browser shows at the center of `slot`'s place in the entry (the topmost
+/// visible element there): its `data-kind`.
+fn shown_in(browser: &mut Browser, entry: &str, slot: &str) -> String {
+    let kind = browser.eval(&format!(
+        "(() => {{ const r = {entry}.querySelector('.slot.{slot} .stack').getBoundingClientRect();
+                  const e = document.elementFromPoint(r.left + r.width / 2, r.top + r.height / 2);
+                  return e && e.dataset.kind ? e.dataset.kind : String(e && e.tagName); }})()"
+    ));
+    kind.as_str().unwrap().to_owned()
+}
+
+/// The screenshot pixel showing image pixel (`x`, `y`) in `slot`'s place, at `zoom` screen
+/// pixels per image pixel.
+fn screen_pixel(
+    browser: &mut Browser,
+    shot: &RgbaImage,
+    entry: &str,
+    slot: &str,
+    zoom: f64,
+    (x, y): (u32, u32),
+) -> Rgba<u8> {
+    let rect = browser.eval(&format!(
+        "(() => {{ const r = {entry}.querySelector('.slot.{slot} .stack').getBoundingClientRect(); return [r.left, r.top]; }})()"
+    ));
+    let (left, top) = (rect[0].as_f64().unwrap(), rect[1].as_f64().unwrap());
+    let sx = (left + (f64::from(x) + 0.5) * zoom).floor() as u32;
+    let sy = (top + (f64::from(y) + 0.5) * zoom).floor() as u32;
+    *shot.get_pixel(sx, sy)
+}
+
+/// The text of figure `key` in the entry `e`.
+fn figure(browser: &mut Browser, e: &str, key: &str) -> String {
+    browser
+        .eval(&format!(
+            "{e}.querySelector('tr[data-figure=\"{key}\"] td').textContent"
+        ))
+        .as_str()
+        .unwrap_or_else(|| panic!("no figure {key}"))
+        .to_owned()
+}
+
+#[test]
+fn a_failing_image_shows_its_reference_actual_image_difference_maps_and_figures_and_the_toggle_flips_them() {
+    let dir = scratch("one_failure");
+    let (scenes, out, refs) = blessed_suite(&dir, 3, 32);
+    let name = "scene_001";
+    let reference_path = refs.join(format!("{name}.png"));
+    let painted = [250, 10, 200, 255];
+    let before = load_image(&out.join(format!("{name}.png"))).unwrap();
+    assert!(
+        (0..4).any(|c| before.get_pixel(5, 7).0[c].abs_diff(painted[c]) > THRESHOLD),
+        "the painted block must differ from the image"
+    );
+    change_reference(&reference_path, (5, 7, 4, 3), painted);
+    let report = dir.join("report");
+    let checked = ffvk(&[
+        &"render",
+        &scenes,
+        &"--out",
+        &out,
+        &"--check",
+        &refs,
+        &"--report",
+        &report,
+    ]);
+    assert_exit(&checked, 1);
+
+    let reference = load_image(&reference_path).unwrap();
+    let actual = load_image(&out.join(format!("{name}.png"))).unwrap();
+    let (max, first, over) = expected_figures(&reference, &actual);
+    assert_eq!(first, (5, 7));
+
+    let mut browser = Browser::launch(&dir.join("browser"), 1400, 1000);
+    browser.open(&report.join("index.html"));
+    let e = entry(name);
+    assert_eq!(
+        browser.eval("document.querySelectorAll('section.entry').length"),
+        1
+    );
+    assert_eq!(browser.eval(&format!("{e}.dataset.status")), "fail");
+    browser.eval(&format!("{e}.scrollIntoView()"));
+    browser.wait_for(&format!(
+        "[...{e}.querySelectorAll('img')].every(i => i.complete && i.naturalWidth > 0)"
+    ));
+    // The four places, each showing a 32² PNG the browser decoded.
+    let images = browser.eval(&format!(
+        "[...{e}.querySelectorAll('.stack > a.a img, .stack > a.only img')].map(i => [i.closest('figure').classList[1], i.naturalWidth * i.naturalHeight])"
+    ));
+    assert_eq!(
+        images,
+        serde_json::json!([
+            ["reference", 1024],
+            ["actual", 1024],
+            ["channels", 1024],
+            ["flip", 1024]
+        ])
+    );
+
+    // The figures, as the page states them, against those computed here.
+    assert_eq!(
+        figure(&mut browser, &e, "max-diff"),
+        format!("{}, {}, {}, {} (of 255)", max[0], max[1], max[2], max[3])
+    );
+    assert_eq!(
+        figure(&mut browser, &e, "first-over"),
+        format!(
+            "(5, 7): reference {}, actual {}",
+            rgba(reference.get_pixel(5, 7)),
+            rgba(actual.get_pixel(5, 7))
+        )
+    );
+    assert_eq!(
+        figure(&mut browser, &e, "over"),
+        format!("{over} pixel(s), {:.4} %", over as f64 / 1024.0 * 100.0)
+    );
+    let flip = figure(&mut browser, &e, "flip");
+    let flip_value: f64 = flip.split(' ').next().unwrap().parse().unwrap();
+    assert!(
+        flip_value > 0.0 && flip.ends_with("(pixels over the threshold)"),
+        "{flip}"
+    );
+
+    // Everything the page loads or links to lies in the report's folder (links within the
+    // page aside), and its style sheet was applied.
+    let base = format!("file://{}/", report.canonicalize().unwrap().display());
+    let urls = browser.eval(
+        "[...document.querySelectorAll('[src], [href]')].map(e => e.src || e.href)
+           .filter(u => !u.startsWith(location.href.split('#')[0] + '#'))",
+    );
+    assert!(urls.as_array().unwrap().len() > 8, "{urls}");
+    for u in urls.as_array().unwrap() {
+        assert!(u.as_str().unwrap().starts_with(&base), "{u} is outside {base}");
+    }
+    assert_eq!(
+        browser.eval(&format!("getComputedStyle({e}).borderLeftWidth")),
+        "6px"
+    );
+
+    // The toggle, clicked as a user does: the two places swap images, which the browser's
+    // own screenshot shows pixel for pixel.
+    let width = browser.eval(&format!(
+        "{e}.querySelector('.slot.reference .stack').getBoundingClientRect().width"
+    ));
+    let zoom = width.as_f64().unwrap() / 32.0;
+    assert!(
+        zoom >= 2.0 && zoom.fract() == 0.0,
+        "small images are enlarged whole: {zoom}"
+    );
+    let shot = browser.screenshot(false);
+    save_png(&shot, &dir.join("before_toggle.png")).unwrap();
+    assert_eq!(shown_in(&mut browser, &e, "reference"), "reference");
+    assert_eq!(shown_in(&mut browser, &e, "actual"), "actual");
+    let at = |browser: &mut Browser, shot: &RgbaImage, slot: &str, p: (u32, u32)| {
+        screen_pixel(browser, shot, &e, slot, zoom, p)
+    };
+    assert_eq!(at(&mut browser, &shot, "reference", (5, 7)).0, painted);
+    assert_eq!(at(&mut browser, &shot, "actual", (5, 7)), *actual.get_pixel(5, 7));
+    assert_eq!(
+        at(&mut browser, &shot, "reference", (20, 20)),
+        *reference.get_pixel(20, 20)
+    );
+
+    let label = browser.eval(&format!(
+        "(() => {{ const r = {e}.querySelector('label.flip-button').getBoundingClientRect(); return [r.left + r.width / 2, r.top + r.height / 2]; }})()"
+    ));
+    let (lx, ly) = (label[0].as_f64().unwrap(), label[1].as_f64().unwrap());
+    browser.click(lx, ly);
+    assert_eq!(
+        browser.eval(&format!("{e}.querySelector('input.flip').checked")),
+        true
+    );
+    assert_eq!(shown_in(&mut browser, &e, "reference"), "actual");
+    assert_eq!(shown_in(&mut browser, &e, "actual"), "reference");
+    let shot = browser.screenshot(false);
+    save_png(&shot, &dir.join("after_toggle.png")).unwrap();
+    assert_eq!(
+        at(&mut browser, &shot, "reference", (5, 7)),
+        *actual.get_pixel(5, 7)
+    );
+    assert_eq!(at(&mut browser, &shot, "actual", (5, 7)).0, painted);
+    let caption = browser.eval(&format!(
+        "[...{e}.querySelectorAll('.slot.reference figcaption span')].filter(s => getComputedStyle(s).visibility === 'visible').map(s => s.textContent)"
+    ));
+    assert_eq!(caption, serde_json::json!(["actual (flipped)"]));
+
+    browser.click(lx, ly);
+    assert_eq!(shown_in(&mut browser, &e, "reference"), "reference");
+
+    browser.eval("window.scrollTo(0, 0)");
+    let page = browser.screenshot(true);
+    let saved = dir.join("report.png");
+    save_png(&page, &saved).unwrap();
+    eprintln!("screenshot of the report: {}", saved.display());
+}
