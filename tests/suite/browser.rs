@@ -4,8 +4,9 @@
 //!
 //! The browser is Debian's `chromium` (`make test` installs it), or `FFVK_CHROMIUM`.
 
+use std::fs::File;
 use std::io::{BufRead, BufReader, Write};
-use std::os::fd::AsRawFd;
+use std::os::fd::{AsRawFd, FromRawFd};
 use std::os::unix::process::CommandExt;
 use std::path::Path;
 use std::process::{Child, Command, Stdio};
@@ -21,7 +22,7 @@ const CALL_TIMEOUT: Duration = Duration::from_secs(60);
 /// A running headless browser with one page.
 pub struct Browser {
     child: Child,
-    to_browser: std::io::PipeWriter,
+    to_browser: File,
     from_browser: Receiver<Value>,
     next_id: u64,
     /// The page's session ("flattened" sessions: page calls carry its id).
@@ -36,8 +37,8 @@ impl Browser {
         let program = std::env::var("FFVK_CHROMIUM").unwrap_or_else(|_| "chromium".into());
         std::fs::create_dir_all(scratch).unwrap();
         let log = std::fs::File::create(scratch.join("chromium.log")).unwrap();
-        let (to_reader, to_browser) = std::io::pipe().unwrap();
-        let (from_reader, from_writer) = std::io::pipe().unwrap();
+        let (to_reader, to_browser) = pipe();
+        let (from_reader, from_writer) = pipe();
         let (child_in, child_out) = (to_reader.as_raw_fd(), from_writer.as_raw_fd());
         let mut command = Command::new(&program);
         command
@@ -86,7 +87,9 @@ impl Browser {
             let mut reader = BufReader::new(from_reader);
             let mut message = Vec::new();
             while reader.read_until(0, &mut message).is_ok_and(|n| n > 0) {
-                message.pop_if(|b| *b == 0);
+                if message.last() == Some(&0) {
+                    message.pop();
+                }
                 if let Ok(value) = serde_json::from_slice::<Value>(&message) {
                     if send.send(value).is_err() {
                         break;
@@ -217,6 +220,16 @@ impl Drop for Browser {
         let _ = self.child.kill();
         let _ = self.child.wait();
     }
+}
+
+/// A pipe (read end, write end), both closed on exec.
+fn pipe() -> (File, File) {
+    let mut fds = [0; 2];
+    // SAFETY: `fds` has room for the two descriptors pipe2 writes.
+    let made = unsafe { libc::pipe2(fds.as_mut_ptr(), libc::O_CLOEXEC) };
+    assert_eq!(made, 0, "pipe2: {}", std::io::Error::last_os_error());
+    // SAFETY: both descriptors were just created and are owned by nothing else.
+    unsafe { (File::from_raw_fd(fds[0]), File::from_raw_fd(fds[1])) }
 }
 
 /// Standard base64 (the protocol's encoding of binary data).
