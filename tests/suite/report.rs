@@ -287,3 +287,263 @@ fn a_failing_image_shows_its_reference_actual_image_difference_maps_and_figures_
     save_png(&page, &saved).unwrap();
     eprintln!("screenshot of the report: {}", saved.display());
 }
+
+/// The report's page as text.
+fn page(report: &Path) -> String {
+    std::fs::read_to_string(report.join("index.html")).unwrap()
+}
+
+#[test]
+fn large_images_are_shown_as_thumbnails_linking_to_the_full_png_and_keep_a_single_differing_pixel() {
+    let dir = scratch("large");
+    let (scenes, out, refs) = (dir.join("scenes"), dir.join("out"), dir.join("refs"));
+    generate_scenes(&scenes, 1, 32).unwrap();
+    let size: &[&dyn AsRef<std::ffi::OsStr>] = &[&"--size", &"1300x700"];
+    let bless = [
+        &[
+            &"render" as &dyn AsRef<_>,
+            &scenes,
+            &"--out",
+            &out,
+            &"--check",
+            &refs,
+            &"--bless",
+        ],
+        size,
+    ]
+    .concat();
+    assert_exit(&ffvk(&bless), 0);
+    // One pixel off: the strictest tolerance fails it.
+    change_reference(&refs.join("scene_000.png"), (1000, 600, 1, 1), [255, 0, 255, 255]);
+    let report = dir.join("report");
+    let strict: &[&dyn AsRef<std::ffi::OsStr>] =
+        &[&"--threshold", &"0", &"--max-share", &"0", &"--max-flip", &"0"];
+    let check = [
+        &[
+            &"render" as &dyn AsRef<_>,
+            &scenes,
+            &"--out",
+            &out,
+            &"--check",
+            &refs,
+            &"--report",
+            &report,
+        ],
+        size,
+        strict,
+    ]
+    .concat();
+    assert_exit(&ffvk(&check), 1);
+
+    let html = page(&report);
+    for kind in ["reference", "actual", "channels", "flip"] {
+        let (thumb, full) = (
+            format!("images/1-{kind}.thumb.png"),
+            format!("images/1-{kind}.png"),
+        );
+        assert!(
+            html.contains(&format!("href=\"{full}\"")) && html.contains(&format!("src=\"{thumb}\"")),
+            "{kind}: no thumbnail linking to the full image"
+        );
+        let thumbnail = load_image(&report.join(&thumb)).unwrap();
+        assert_eq!(thumbnail.dimensions(), (640, 345), "{kind}");
+        assert_eq!(
+            load_image(&report.join(&full)).unwrap().dimensions(),
+            (1300, 700),
+            "{kind}"
+        );
+    }
+    // The full images are the run's own files.
+    assert_eq!(
+        std::fs::read(report.join("images/1-actual.png")).unwrap(),
+        std::fs::read(out.join("scene_000.png")).unwrap()
+    );
+    // The one differing pixel, (1000, 600), lies in one block of the thumbnail (blocks
+    // split the image at ⌊i·1300/640⌋ and ⌊i·700/345⌋): the per-channel map's thumbnail
+    // keeps it at full strength, and nothing else is lit.
+    let block = |p: u32, side: u32, thumb: u32| (0..thumb).rfind(|&i| i * side / thumb <= p).unwrap();
+    let (bx, by) = (block(1000, 1300, 640), block(600, 700, 345));
+    assert_eq!((bx, by), (492, 296));
+    let channels = load_image(&report.join("images/1-channels.thumb.png")).unwrap();
+    let lit: Vec<(u32, u32)> = channels
+        .enumerate_pixels()
+        .filter(|(_, _, p)| p.0[..3] != [0, 0, 0])
+        .map(|(x, y, _)| (x, y))
+        .collect();
+    assert_eq!(lit, [(bx, by)]);
+    assert_eq!(channels.get_pixel(bx, by).0[..3].iter().max(), Some(&255));
+}
+
+/// `ffvk render` of `scenes` checked against `refs` for shard `k` of 2, its results in
+/// `dir/shard_K.json`.
+fn shard(dir: &Path, scenes: &Path, refs: &Path, k: u32) -> PathBuf {
+    let json = dir.join(format!("shard_{k}.json"));
+    let out = dir.join(format!("out_{k}"));
+    let partition = format!("{k}/2");
+    let run = ffvk(&[
+        &"render",
+        &scenes,
+        &"--out",
+        &out,
+        &"--check",
+        &refs,
+        &"--partition",
+        &partition,
+        &"--json",
+        &json,
+    ]);
+    assert!(run.status.code().is_some_and(|c| c <= 1));
+    json
+}
+
+#[test]
+fn the_shards_of_a_run_make_one_report_and_a_folder_that_is_not_a_report_is_never_written_into() {
+    let dir = scratch("shards");
+    let (scenes, _, refs) = blessed_suite(&dir, 6, 24);
+    change_reference(&refs.join("scene_004.png"), (0, 0, 24, 2), [255, 255, 0, 255]);
+    let shards = [shard(&dir, &scenes, &refs, 1), shard(&dir, &scenes, &refs, 2)];
+    let report = dir.join("report");
+    let made = ffvk(&[&"results", &"report", &shards[0], &shards[1], &"--out", &report]);
+    assert_exit(&made, 1);
+    let html = page(&report);
+    assert_eq!(html.matches("<section class=\"entry").count(), 1);
+    assert!(html.contains("data-name=\"scene_004\" data-status=\"fail\""));
+    assert!(html.contains("<td>shard 1/2</td>") && html.contains("<td>shard 2/2</td>"));
+    assert!(html.contains("data-count=\"pass\">5 passed") && html.contains("data-count=\"fail\">1 failed"));
+    assert!(html.contains("<summary>5 image(s) passed or rendered</summary>"));
+
+    // A second report into the same folder replaces the first.
+    assert_exit(
+        &ffvk(&[&"results", &"report", &shards[0], &shards[1], &"--out", &report]),
+        1,
+    );
+    assert!(report.join("images/1-flip.png").is_file());
+
+    // A folder with other files in it is refused and left as it was.
+    let foreign = dir.join("foreign");
+    std::fs::create_dir_all(&foreign).unwrap();
+    std::fs::write(foreign.join("notes.txt"), "mine").unwrap();
+    let refused = ffvk(&[&"results", &"report", &shards[0], &shards[1], &"--out", &foreign]);
+    assert_exit(&refused, 2);
+    let stderr = String::from_utf8_lossy(&refused.stderr);
+    assert!(
+        stderr.contains(&foreign.display().to_string()) && stderr.contains("holds no earlier ffvk report"),
+        "{stderr}"
+    );
+    let left: Vec<_> = std::fs::read_dir(&foreign)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(left, ["notes.txt"]);
+    // And so is a folder inside the references.
+    let inside = ffvk(&[
+        &"results",
+        &"report",
+        &shards[0],
+        &shards[1],
+        &"--out",
+        &refs.join("report"),
+    ]);
+    assert_exit(&inside, 2);
+    assert!(!refs.join("report").exists());
+}
+
+#[test]
+fn a_blessed_image_is_shown_against_the_reference_it_replaced() {
+    let dir = scratch("blessed");
+    let (scenes, out, refs) = blessed_suite(&dir, 2, 24);
+    let changed = refs.join("scene_001.png");
+    change_reference(&changed, (3, 3, 5, 5), [0, 0, 255, 255]);
+    let old = std::fs::read(&changed).unwrap();
+    let report = dir.join("report");
+    let blessed = ffvk(&[
+        &"render",
+        &scenes,
+        &"--out",
+        &out,
+        &"--check",
+        &refs,
+        &"--bless",
+        &"--report",
+        &report,
+    ]);
+    assert_exit(&blessed, 0);
+    let html = page(&report);
+    assert!(html.contains("data-name=\"scene_001\" data-status=\"blessed\""));
+    assert!(html.contains("previous reference") && html.contains("actual (the new reference)"));
+    // The report's previous reference is the painted one; the reference is now the image.
+    assert_eq!(
+        load_image(&report.join("images/1-reference.png")).unwrap(),
+        image::load_from_memory(&old).unwrap().into_rgba8()
+    );
+    assert_eq!(
+        std::fs::read(&changed).unwrap(),
+        std::fs::read(out.join("scene_001.png")).unwrap()
+    );
+    assert!(out.join("scene_001.replaced.png").is_file());
+}
+
+#[test]
+fn a_page_of_a_thousand_entries_loads_only_the_images_in_view() {
+    let dir = scratch("thousand");
+    let (scenes, out, refs) = blessed_suite(&dir, 1, 64);
+    change_reference(&refs.join("scene_000.png"), (10, 10, 20, 20), [255, 0, 0, 255]);
+    let json = dir.join("one.json");
+    assert_exit(
+        &ffvk(&[
+            &"render", &scenes, &"--out", &out, &"--check", &refs, &"--json", &json,
+        ]),
+        1,
+    );
+    // The one failing row, a thousand times over (the same images, other names).
+    let mut results: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let run = &mut results["runs"][0];
+    let row = run["rows"][0].clone();
+    let rows: Vec<serde_json::Value> = (0..1000)
+        .map(|i| {
+            let mut r = row.clone();
+            r["name"] = format!("image_{i:04}").into();
+            r["index"] = i.into();
+            r
+        })
+        .collect();
+    run["rows"] = rows.into();
+    run["info"]["scenes"] = 1000.into();
+    run["info"]["suite_scenes"] = 1000.into();
+    let big = dir.join("thousand.json");
+    std::fs::write(&big, serde_json::to_string(&results).unwrap()).unwrap();
+    let report = dir.join("report");
+    assert_exit(&ffvk(&[&"results", &"report", &big, &"--out", &report]), 1);
+
+    let mut browser = Browser::launch(&dir.join("browser"), 1400, 1000);
+    browser.open(&report.join("index.html"));
+    assert_eq!(
+        browser.eval("document.querySelectorAll('section.entry').length"),
+        1000
+    );
+    browser.wait_for(&format!(
+        "[...{}.querySelectorAll('img')].every(i => i.complete && i.naturalWidth > 0)",
+        entry("image_0000")
+    ));
+    let (loaded, total) = (
+        browser.eval("[...document.images].filter(i => i.naturalWidth > 0).length"),
+        browser.eval("document.images.length"),
+    );
+    assert_eq!(total, 6000);
+    let loaded = loaded.as_u64().unwrap();
+    assert!(
+        (6..200).contains(&loaded),
+        "{loaded} of 6000 images loaded up front"
+    );
+    // The far end of the page, once scrolled to, loads too.
+    browser.eval(&format!("{}.scrollIntoView()", entry("image_0999")));
+    browser.wait_for(&format!(
+        "[...{}.querySelectorAll('img')].every(i => i.complete && i.naturalWidth > 0)",
+        entry("image_0999")
+    ));
+    eprintln!(
+        "1000 entries: {loaded} images loaded up front; load event after {} ms",
+        browser.eval("performance.getEntriesByType('navigation')[0].loadEventEnd")
+    );
+}
