@@ -12,7 +12,7 @@ use crate::tools::regress::{Row, Status};
 pub(super) const CSS: &str = include_str!("report.css");
 
 /// The longest side, in CSS pixels, an entry's images are shown at.
-const SHOWN_SIDE: u32 = 320;
+const SHOWN_SIDE: u32 = 288;
 /// The largest whole-number enlargement of small images.
 const MAX_ZOOM: u32 = 8;
 
