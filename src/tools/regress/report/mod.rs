@@ -8,7 +8,7 @@
 //! neither a server, the network nor scripts: the reference/actual toggle is a checkbox and
 //! CSS, and the styles live in their own file, so the page also works under the
 //! content-security policies CI servers put on artifacts (Jenkins forbids inline styles and
-//! scripts). Images larger than [`THUMBNAIL_SIDE`] are shown as thumbnails linking to the
+//! scripts); the page's own policy allows images and styles from its folder only. Images larger than [`THUMBNAIL_SIDE`] are shown as thumbnails linking to the
 //! full PNG.
 
 mod page;

@@ -38,6 +38,7 @@ pub(super) fn page(results: &Results, entries: &[Entry], passes: &[&Row]) -> Str
 <meta charset="utf-8">
 <meta name="viewport" content="width=device-width, initial-scale=1">
 <meta name="generator" content="ffvk {version}">
+<meta http-equiv="Content-Security-Policy" content="default-src 'none'; img-src 'self'; style-src 'self'">
 <title>ffvk report: {title}</title>
 <link rel="stylesheet" href="report.css">
 </head>
