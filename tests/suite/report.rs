@@ -93,6 +93,19 @@ fn entry(name: &str) -> String {
     format!("document.querySelector('section.entry[data-name=\"{name}\"]')")
 }
 
+/// Waits until every image of the entry `e` has loaded and decoded.
+fn wait_for_images(browser: &mut Browser, e: &str) {
+    browser.wait_for(&format!(
+        "[...{e}.querySelectorAll('img')].every(i => i.complete && i.naturalWidth > 0)"
+    ));
+}
+
+/// Scrolls the entry `e` into view and waits for its (lazily loaded) images.
+fn scroll_to_and_load(browser: &mut Browser, e: &str) {
+    browser.eval(&format!("{e}.scrollIntoView()"));
+    wait_for_images(browser, e);
+}
+
 /// Which image the browser shows at the center of `slot`'s place in the entry (the topmost
 /// visible element there): its `data-kind`.
 fn shown_in(browser: &mut Browser, entry: &str, slot: &str) -> String {
@@ -173,10 +186,7 @@ fn a_failing_image_shows_its_reference_actual_image_difference_maps_and_figures_
         1
     );
     assert_eq!(browser.eval(&format!("{e}.dataset.status")), "fail");
-    browser.eval(&format!("{e}.scrollIntoView()"));
-    browser.wait_for(&format!(
-        "[...{e}.querySelectorAll('img')].every(i => i.complete && i.naturalWidth > 0)"
-    ));
+    scroll_to_and_load(&mut browser, &e);
     // The four places, each showing a 32² PNG the browser decoded.
     let images = browser.eval(&format!(
         "[...{e}.querySelectorAll('.stack > a.a img, .stack > a.only img')].map(i => [i.closest('figure').classList[1], i.naturalWidth * i.naturalHeight])"
@@ -522,10 +532,7 @@ fn a_page_of_a_thousand_entries_loads_only_the_images_in_view() {
         browser.eval("document.querySelectorAll('section.entry').length"),
         1000
     );
-    browser.wait_for(&format!(
-        "[...{}.querySelectorAll('img')].every(i => i.complete && i.naturalWidth > 0)",
-        entry("image_0000")
-    ));
+    wait_for_images(&mut browser, &entry("image_0000"));
     let (loaded, total) = (
         browser.eval("[...document.images].filter(i => i.naturalWidth > 0).length"),
         browser.eval("document.images.length"),
@@ -537,11 +544,7 @@ fn a_page_of_a_thousand_entries_loads_only_the_images_in_view() {
         "{loaded} of 6000 images loaded up front"
     );
     // The far end of the page, once scrolled to, loads too.
-    browser.eval(&format!("{}.scrollIntoView()", entry("image_0999")));
-    browser.wait_for(&format!(
-        "[...{}.querySelectorAll('img')].every(i => i.complete && i.naturalWidth > 0)",
-        entry("image_0999")
-    ));
+    scroll_to_and_load(&mut browser, &entry("image_0999"));
     eprintln!(
         "1000 entries: {loaded} images loaded up front; load event after {} ms",
         browser.eval("performance.getEntriesByType('navigation')[0].loadEventEnd")
