@@ -444,6 +444,10 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
                     return Err(ffvk::tools::Error::OverwritesInput { path: path.clone() });
                 }
             }
+            if let (Some(dir), Some(refs)) = (report, check) {
+                // Refused now rather than after the run.
+                regress::report::claim(dir, &[refs.as_path()])?;
+            }
             let worker = regress::pool::WorkerCommand {
                 program: std::env::current_exe().map_err(|source| ffvk::tools::Error::Read {
                     path: "/proc/self/exe".into(),
@@ -520,6 +524,14 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
                 .collect::<ffvk::tools::Result<Vec<_>>>()?;
             let merged = regress::results::Results::merge(parts)?;
             let checked = merged.runs.iter().any(|r| r.info.references.is_some());
+            if let Some(dir) = outputs.report {
+                let references: Vec<&std::path::Path> = merged
+                    .runs
+                    .iter()
+                    .filter_map(|r| r.info.references.as_deref())
+                    .collect();
+                regress::report::claim(dir, &references)?;
+            }
             finish_results(&merged, checked, &outputs)
         }
         Command::Compare {

@@ -81,6 +81,10 @@ pub enum Error {
     #[error("the output folder {} is, or lies inside, the reference folder {}: references are read-only unless blessed; expected --out outside it", .output.display(), .references.display())]
     OutputInReferences { output: PathBuf, references: PathBuf },
 
+    /// A report folder that is, lies inside or holds a reference folder.
+    #[error("the report folder {} is, lies inside or holds the reference folder {}: references are read-only unless blessed; expected a report folder apart from them", .report.display(), .references.display())]
+    ReportInReferences { report: PathBuf, references: PathBuf },
+
     /// An output would replace one of the command's own inputs.
     #[error("{}: the output would overwrite an input of the same command: expected another path", .path.display())]
     OverwritesInput { path: PathBuf },

@@ -422,12 +422,14 @@ fn the_shards_of_a_run_make_one_report_and_a_folder_that_is_not_a_report_is_neve
     assert!(html.contains("data-count=\"pass\">5 passed") && html.contains("data-count=\"fail\">1 failed"));
     assert!(html.contains("<summary>5 image(s) passed or rendered</summary>"));
 
-    // A second report into the same folder replaces the first.
+    // A second report into the same folder replaces the first, images and all.
+    let stale = report.join("images/99-flip.png");
+    std::fs::write(&stale, "an image of an earlier report").unwrap();
     assert_exit(
         &ffvk(&[&"results", &"report", &shards[0], &shards[1], &"--out", &report]),
         1,
     );
-    assert!(report.join("images/1-flip.png").is_file());
+    assert!(report.join("images/1-flip.png").is_file() && !stale.exists());
 
     // A folder with other files in it is refused and left as it was.
     let foreign = dir.join("foreign");
@@ -549,4 +551,80 @@ fn a_page_of_a_thousand_entries_loads_only_the_images_in_view() {
         "1000 entries: {loaded} images loaded up front; load event after {} ms",
         browser.eval("performance.getEntriesByType('navigation')[0].loadEventEnd")
     );
+}
+
+#[test]
+fn a_symlinked_reference_is_copied_as_a_file_and_images_gone_since_the_run_are_named_in_their_place() {
+    let dir = scratch("links");
+    let (scenes, out, refs) = blessed_suite(&dir, 3, 24);
+    // The reference of scene_001 lives elsewhere, behind a symbolic link, and differs.
+    let elsewhere = dir.join("elsewhere");
+    std::fs::create_dir_all(&elsewhere).unwrap();
+    let real = elsewhere.join("scene_001.png");
+    std::fs::rename(refs.join("scene_001.png"), &real).unwrap();
+    change_reference(&real, (0, 0, 6, 6), [0, 255, 0, 255]);
+    std::os::unix::fs::symlink(&real, refs.join("scene_001.png")).unwrap();
+    // The results file goes into the report's own folder.
+    let report = dir.join("report");
+    let json = report.join("results.json");
+    let checked = ffvk(&[
+        &"render",
+        &scenes,
+        &"--out",
+        &out,
+        &"--check",
+        &refs,
+        &"--json",
+        &json,
+        &"--report",
+        &report,
+    ]);
+    assert_exit(&checked, 1);
+    let shown = report.join("images/1-reference.png");
+    let kind = std::fs::symlink_metadata(&shown).unwrap().file_type();
+    assert!(kind.is_file() && !kind.is_symlink(), "{kind:?}");
+    assert_eq!(std::fs::read(&shown).unwrap(), std::fs::read(&real).unwrap());
+
+    // The actual image and its maps are gone when the report is made again.
+    for file in ["scene_001.png", "scene_001.diff.png", "scene_001.channels.png"] {
+        std::fs::remove_file(out.join(file)).unwrap();
+    }
+    let again = dir.join("again");
+    let made = ffvk(&[&"results", &"report", &json, &"--out", &again]);
+    assert_exit(&made, 1);
+    let stderr = String::from_utf8_lossy(&made.stderr);
+    let gone = out.join("scene_001.png").display().to_string();
+    assert!(
+        stderr.contains(&gone) && stderr.contains("cannot read the image"),
+        "{stderr}"
+    );
+    let html = page(&again);
+    assert!(
+        html.contains(&format!("{gone}: cannot read the image")),
+        "no placeholder naming {gone}"
+    );
+    assert!(again.join("images/1-reference.png").is_file());
+}
+
+#[test]
+fn a_scene_that_would_write_over_another_scenes_difference_map_is_refused() {
+    let dir = scratch("clash");
+    let scenes = dir.join("scenes");
+    let files = generate_scenes(&scenes, 1, 16).unwrap();
+    std::fs::copy(&files[0], scenes.join("scene_000.channels.toml")).unwrap();
+    let refused = ffvk(&[
+        &"render",
+        &scenes,
+        &"--out",
+        &dir.join("out"),
+        &"--check",
+        &dir.join("refs"),
+    ]);
+    assert_exit(&refused, 2);
+    let stderr = String::from_utf8_lossy(&refused.stderr);
+    assert!(
+        stderr.contains("would both write the image scene_000.channels.png"),
+        "{stderr}"
+    );
+    assert!(!dir.join("out").exists());
 }

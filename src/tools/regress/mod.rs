@@ -304,10 +304,22 @@ pub fn scene_files(inputs: &[PathBuf]) -> Result<Vec<SceneFile>> {
             });
         }
     }
+    // Beside its image a scene may write NAME.diff.png, NAME.channels.png and
+    // NAME.replaced.png: a scene named NAME.diff would write over the first.
+    let writes_over = |a: &str, b: &str| {
+        a == b
+            || [".diff", ".channels", ".replaced"]
+                .iter()
+                .any(|suffix| a.strip_suffix(suffix) == Some(b) || b.strip_suffix(suffix) == Some(a))
+    };
     for (i, f) in files.iter().enumerate() {
-        if let Some(other) = files[..i].iter().find(|o| o.name == f.name) {
+        if let Some(other) = files[..i].iter().find(|o| writes_over(&o.name, &f.name)) {
             return Err(Error::NameClash {
-                name: f.name.clone(),
+                name: if other.name.len() > f.name.len() {
+                    other.name.clone()
+                } else {
+                    f.name.clone()
+                },
                 first: other.path.clone(),
                 second: f.path.clone(),
             });
@@ -548,6 +560,13 @@ fn render_image(
     };
     let reference = reference_path(refs, job.driver_family.as_deref(), &row.name);
     row.reference = Some(reference.clone());
+    if reference.exists() && !reference.is_file() {
+        // A pipe would block the worker until its timeout; a folder cannot be compared.
+        return Err(Error::Path {
+            path: reference,
+            problem: "is not a regular file: expected a PNG reference (or no file, to bless one)",
+        });
+    }
     if !reference.exists() {
         row.status = if job.bless {
             Status::Blessed

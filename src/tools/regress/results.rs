@@ -14,6 +14,9 @@ use crate::tools::{Error, Result};
 /// The `format` field of a results file this version writes and reads.
 pub const FORMAT: &str = "ffvk-results/1";
 
+/// The largest results file read: a suite of about a million images.
+const MAX_RESULTS_BYTES: u64 = 1 << 30;
+
 /// The device the images were rendered on, as a worker reports it.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 pub struct DeviceSummary {
@@ -199,13 +202,26 @@ impl Results {
 
     /// Reads a results file written by [`Results::write_json`].
     pub fn read_json(path: &Path) -> Result<Results> {
-        let text = std::fs::read_to_string(path).map_err(|source| Error::Read {
+        let read = |source| Error::Read {
             path: path.to_path_buf(),
             source,
+        };
+        // A regular file of bounded size: a pipe or /dev/zero given by mistake must not
+        // hang the command or fill memory.
+        let bytes = crate::files::read_regular(path, MAX_RESULTS_BYTES).map_err(read)?;
+        let text = String::from_utf8(bytes).map_err(|e| MergeError::Parse {
+            path: path.to_path_buf(),
+            message: format!("not UTF-8 text: {e}"),
         })?;
-        let format = serde_json::from_str::<serde_json::Value>(&text)
-            .ok()
-            .and_then(|v| v.get("format").and_then(|f| f.as_str()).map(str::to_owned));
+        // Broken JSON (a download cut short) says where, before the format is looked at.
+        let value = serde_json::from_str::<serde_json::Value>(&text).map_err(|e| MergeError::Parse {
+            path: path.to_path_buf(),
+            message: e.to_string(),
+        })?;
+        let format = value.get("format").map(|f| match f.as_str() {
+            Some(s) => s.to_owned(),
+            None => f.to_string(),
+        });
         if format.as_deref() != Some(FORMAT) {
             return Err(MergeError::Format {
                 path: path.to_path_buf(),
@@ -267,6 +283,19 @@ impl Results {
         if !missing.is_empty() {
             return Err(MergeError::MissingShards { missing, count }.into());
         }
+        for (path, run) in &runs {
+            let mut indices: Vec<usize> = run.rows.iter().map(|r| r.index).collect();
+            indices.sort_unstable();
+            indices.dedup();
+            if indices.len() != run.info.scenes {
+                return Err(MergeError::Rows {
+                    path: path.clone(),
+                    scenes: run.info.scenes,
+                    found: indices.len(),
+                }
+                .into());
+            }
+        }
         let scenes: usize = runs.iter().map(|(_, r)| r.info.scenes).sum();
         if scenes != suite {
             return Err(MergeError::Coverage { scenes, suite }.into());
@@ -306,7 +335,7 @@ pub enum MergeError {
     #[error("{}: not a results file: {message}", .path.display())]
     Parse { path: PathBuf, message: String },
     /// Shards of different suites or partition counts.
-    #[error("{} is shard of {other_shards} of a suite of {other_scenes} scenes, but {} is one of {first_shards} of {first_scenes}: expected the shards of one suite", .other.display(), .first.display())]
+    #[error("{} is one of {other_shards} shard(s) of a suite of {other_scenes} scenes, but {} is one of {first_shards} of {first_scenes}: expected the shards of one suite", .other.display(), .first.display())]
     OtherSuite {
         first: PathBuf,
         first_shards: u32,
@@ -328,6 +357,13 @@ pub enum MergeError {
     /// The shards' scenes do not add up to the suite.
     #[error("the shards rendered {scenes} scenes, the suite has {suite}: expected every scene exactly once (did the suite change between shards?)")]
     Coverage { scenes: usize, suite: usize },
+    /// A run whose rows do not cover the scenes it says it rendered.
+    #[error("{}: the run says it rendered {scenes} scene(s) but its rows cover {found}: expected a row for every scene (was the file edited or cut short?)", .path.display())]
+    Rows {
+        path: PathBuf,
+        scenes: usize,
+        found: usize,
+    },
     /// One image in two shards.
     #[error("{} and {} both have the image {name}: expected each image in one shard", .first.display(), .second.display())]
     SameImage {
@@ -392,6 +428,44 @@ mod tests {
         // 2026-11-23T00:00:00 and the second before it.
         assert_eq!(at(1_795_392_000), "2026-11-23T00:00:00");
         assert_eq!(at(1_795_391_999), "2026-11-22T23:59:59");
+    }
+
+    #[test]
+    fn a_cut_short_results_file_says_where_and_a_pipe_is_refused_unread() {
+        let dir = std::env::temp_dir().join(format!("ffvk-results-test-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let cut = dir.join("cut.json");
+        std::fs::write(&cut, "{\"format\": \"ffvk-results/1\", \"runs\": [").unwrap();
+        let e = Results::read_json(&cut).unwrap_err().to_string();
+        assert!(
+            e.contains("cut.json") && e.contains("EOF") && e.contains("line 1"),
+            "{e}"
+        );
+        let fifo = dir.join("fifo.json");
+        let made = std::process::Command::new("mkfifo").arg(&fifo).status().unwrap();
+        assert!(made.success());
+        let e = Results::read_json(&fifo).unwrap_err().to_string();
+        assert!(e.contains("not a regular file"), "{e}");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_run_whose_rows_miss_scenes_is_refused() {
+        let text = format!(
+            r#"{{"format": "{FORMAT}", "runs": [{{"info": {{"ffvk": "x", "device": null, "jobs": 1,
+              "lp_num_threads": null, "partition": null, "suite_scenes": 7, "scenes": 7, "modes": [],
+              "references": null, "bless": false, "tolerance": {{"threshold": 2, "max_share": 0.001,
+              "max_flip": 0.005, "flip_all_pixels": false}}, "timestamp": "t", "hostname": "h",
+              "seconds": 1.0}}, "rows": []}}]}}"#
+        );
+        let results: Results = serde_json::from_str(&text).unwrap();
+        let e = Results::merge(vec![("norows.json".into(), results)])
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("norows.json") && e.contains("7 scene(s)") && e.contains("cover 0"),
+            "{e}"
+        );
     }
 
     #[test]

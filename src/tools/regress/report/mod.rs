@@ -21,8 +21,8 @@ use crate::images::load_image;
 use crate::images::thumbnail::{thumbnail, Reduce};
 use crate::tools::{Error, Result};
 
-/// Images whose longer side exceeds this are shown through a thumbnail of this size (twice
-/// the largest size the page shows them at, for high-density screens).
+/// Images whose longer side exceeds this are shown through a thumbnail of this size (more
+/// than twice the largest size the page shows them at, for high-density screens).
 pub const THUMBNAIL_SIDE: u32 = 640;
 
 /// The file that marks a folder as a report, so that a later report may replace its images
@@ -109,16 +109,43 @@ struct Entry<'a> {
 /// it may not lie inside a reference folder. Image files the rows name but that cannot be read
 /// are reported in [`Written::unreadable`] and in the page, not as an error.
 pub fn write(results: &Results, dir: &Path) -> Result<Written> {
-    prepare(results, dir)?;
+    let references: Vec<&Path> = results
+        .runs
+        .iter()
+        .filter_map(|r| r.info.references.as_deref())
+        .collect();
+    claim(dir, &references)?;
     let rows = results.rows();
+    // The images are copied into a folder of their own and swapped in at the end, so that
+    // an earlier report stays whole until this one is.
+    let final_images = dir.join("images");
+    for row in &rows {
+        let paths = [
+            &row.output,
+            &row.reference,
+            &row.diff,
+            &row.channels,
+            &row.replaced,
+        ];
+        if let Some(path) = paths
+            .into_iter()
+            .flatten()
+            .find(|p| crate::files::is_within(p, &final_images))
+        {
+            return Err(Error::Path {
+                path: path.clone(),
+                problem: "lies in the report's images/ folder, which each report replaces: expected the run's images outside the report folder",
+            });
+        }
+    }
+    let images = dir.join(".images.new");
+    remove_folder(&images)?;
+    std::fs::create_dir_all(&images).map_err(|source| Error::Write {
+        path: images.clone(),
+        source,
+    })?;
     let mut attention: Vec<&Row> = rows.iter().filter(|r| needs_attention(r)).collect();
-    attention.sort_by(|a, b| {
-        severity(a)
-            .total_cmp(&severity(b))
-            .reverse()
-            .then(a.index.cmp(&b.index))
-    });
-    let images = dir.join("images");
+    attention.sort_by(|a, b| worse_first(a, b));
     let mut unreadable = Vec::new();
     let mut entries = Vec::with_capacity(attention.len());
     for (i, row) in attention.into_iter().enumerate() {
@@ -154,8 +181,21 @@ pub fn write(results: &Results, dir: &Path) -> Result<Written> {
     let passes: Vec<&Row> = rows.iter().filter(|r| !needs_attention(r)).collect();
     let html = page::page(results, &entries, &passes);
     crate::tools::write_file(&dir.join("report.css"), page::CSS.as_bytes())?;
+    let old = dir.join(".images.old");
+    remove_folder(&old)?;
+    let moved = |from: &Path, to: &Path| {
+        std::fs::rename(from, to).map_err(|source| Error::Write {
+            path: to.to_path_buf(),
+            source,
+        })
+    };
+    if final_images.exists() {
+        moved(&final_images, &old)?;
+    }
+    moved(&images, &final_images)?;
     let index = dir.join("index.html");
     crate::tools::write_file(&index, html.as_bytes())?;
+    remove_folder(&old)?;
     Ok(Written {
         page: index,
         entries: entries.len(),
@@ -171,25 +211,34 @@ fn needs_attention(row: &Row) -> bool {
     )
 }
 
-/// How bad a row is, for the order of the page (larger first): errors, then failures by
-/// their mean FLIP, share over the threshold and largest difference (a size mismatch first of
-/// all), then missing references, then blessings by the same figures.
-fn severity(row: &Row) -> f64 {
-    let figures = |row: &Row| match &row.comparison {
-        // FLIP and share are in [0, 1], the difference in [0, 255]: FLIP decides first.
-        Some(c) => {
-            let max = c.max_diff.iter().copied().max().unwrap_or(0);
-            f64::from(c.flip_mean.unwrap_or(1.0)) * 0.5 + c.share_over * 0.25 + f64::from(max) / 255.0 * 0.2
-        }
-        None => 1.0,
+/// The page's order, worst first: errors, then failures, then missing references, then
+/// blessings. Failures and blessings are ordered by mean FLIP, then share over the threshold,
+/// then largest difference, each larger first; a failure of another size (nothing compared)
+/// comes before every compared one, a blessing of a new reference (nothing compared) after
+/// every changed one. Ties keep suite order.
+fn worse_first(a: &Row, b: &Row) -> std::cmp::Ordering {
+    let rank = |r: &Row| match r.status {
+        Status::Error => 0,
+        Status::Fail => 1,
+        Status::Missing => 2,
+        _ => 3,
     };
-    match row.status {
-        Status::Error => 4.0,
-        Status::Fail => 2.0 + figures(row),
-        Status::Missing => 1.5,
-        Status::Blessed => figures(row),
-        _ => 0.0,
-    }
+    let figures = |r: &Row| match &r.comparison {
+        Some(c) => (
+            f64::from(c.flip_mean.unwrap_or(f32::INFINITY)),
+            c.share_over,
+            f64::from(c.max_diff.into_iter().max().unwrap_or(0)),
+        ),
+        None if r.status == Status::Fail => (f64::INFINITY, f64::INFINITY, f64::INFINITY),
+        None => (-1.0, -1.0, -1.0),
+    };
+    let (fa, fb) = (figures(a), figures(b));
+    rank(a)
+        .cmp(&rank(b))
+        .then(fb.0.total_cmp(&fa.0))
+        .then(fb.1.total_cmp(&fa.1))
+        .then(fb.2.total_cmp(&fa.2))
+        .then(a.index.cmp(&b.index))
 }
 
 /// Why an image could not be shown: a file the run named that is gone or broken (shown in
@@ -202,12 +251,20 @@ enum Unshown {
 /// Copies `source` into the report's `images/` as NUMBER-KIND.png (a hard link when the
 /// file system allows), with a thumbnail when it is large.
 fn show(source: &Path, kind: Kind, number: usize, images: &Path) -> std::result::Result<Slot, Unshown> {
-    let (width, height) = image::image_dimensions(source)
-        .map_err(|e| Unshown::Unreadable(format!("{}: cannot read the image: {e}", source.display())))?;
+    let unreadable = |e: &dyn std::fmt::Display| {
+        Unshown::Unreadable(format!("{}: cannot read the image: {e}", source.display()))
+    };
+    // The file itself: a hard link to a symbolic link would be the link, which may point
+    // outside the folder or nowhere.
+    let real = std::fs::canonicalize(source).map_err(|e| unreadable(&e))?;
+    if !real.is_file() {
+        return Err(unreadable(&"not a file"));
+    }
+    let (width, height) = image::image_dimensions(&real).map_err(|e| unreadable(&e))?;
     let name = format!("{number}-{}.png", kind.file_stem());
     let target = images.join(&name);
-    if std::fs::hard_link(source, &target).is_err() {
-        std::fs::copy(source, &target).map_err(|e| {
+    if std::fs::hard_link(&real, &target).is_err() {
+        std::fs::copy(&real, &target).map_err(|e| {
             Unshown::Fatal(Error::Write {
                 path: target.clone(),
                 source: e,
@@ -216,7 +273,7 @@ fn show(source: &Path, kind: Kind, number: usize, images: &Path) -> std::result:
     }
     let mut src = format!("images/{name}");
     if width.max(height) > THUMBNAIL_SIDE {
-        let image = load_image(source).map_err(|e| Unshown::Unreadable(e.to_string()))?;
+        let image = load_image(&real).map_err(|e| unreadable(&e))?;
         if let Some(small) = thumbnail(&image, THUMBNAIL_SIDE, kind.reduce()) {
             let name = format!("{number}-{}.thumb.png", kind.file_stem());
             crate::images::save_png(&small, &images.join(&name)).map_err(|e| Unshown::Fatal(e.into()))?;
@@ -231,24 +288,24 @@ fn show(source: &Path, kind: Kind, number: usize, images: &Path) -> std::result:
     }))
 }
 
-/// Makes `dir` ready for a report: refuses a folder inside a reference folder and a
-/// non-empty folder that no report wrote; empties an earlier report's images.
-fn prepare(results: &Results, dir: &Path) -> Result<()> {
-    for run in &results.runs {
-        if let Some(refs) = &run.info.references {
-            if crate::files::is_within(dir, refs) {
-                return Err(Error::OutputInReferences {
-                    output: dir.to_path_buf(),
-                    references: refs.clone(),
-                });
-            }
+/// Claims `dir` for a report before anything is written (`render --report` calls it before
+/// rendering, so that a folder it would refuse is refused at once): refuses a folder inside a
+/// reference folder or holding one, and a non-empty folder that no report wrote; creates the
+/// folder and its marker. Nothing in it is removed.
+pub fn claim(dir: &Path, references: &[&Path]) -> Result<()> {
+    for refs in references {
+        if crate::files::is_within(dir, refs) || crate::files::is_within(refs, dir) {
+            return Err(Error::ReportInReferences {
+                report: dir.to_path_buf(),
+                references: refs.to_path_buf(),
+            });
         }
     }
     if dir.exists() {
         if !dir.is_dir() {
             return Err(Error::Path {
                 path: dir.to_path_buf(),
-                problem: "is not a folder: --report expects a folder to write the report into",
+                problem: "is not a folder: expected a folder to write the report into",
             });
         }
         let read = |source| Error::Read {
@@ -263,19 +320,141 @@ fn prepare(results: &Results, dir: &Path) -> Result<()> {
             });
         }
     }
-    let images = dir.join("images");
-    if images.exists() {
-        std::fs::remove_dir_all(&images).map_err(|source| Error::Write {
-            path: images.clone(),
-            source,
-        })?;
-    }
-    std::fs::create_dir_all(&images).map_err(|source| Error::Write {
-        path: images.clone(),
+    std::fs::create_dir_all(dir).map_err(|source| Error::Write {
+        path: dir.to_path_buf(),
         source,
     })?;
     crate::tools::write_file(
         &dir.join(MARKER),
         b"An ffvk regression report: each report written here replaces images/ and index.html.\n",
     )
+}
+
+/// Removes a folder of the report's own making, if it is there.
+fn remove_folder(path: &Path) -> Result<()> {
+    match std::fs::remove_dir_all(path) {
+        Ok(()) => Ok(()),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(()),
+        Err(source) => Err(Error::Write {
+            path: path.to_path_buf(),
+            source,
+        }),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::images::compare::{Comparison, Tolerance};
+    use crate::tools::regress::results::RunInfo;
+
+    fn row(name: &str, index: usize, status: Status, figures: Option<(f32, f64, u8)>) -> Row {
+        Row {
+            name: name.into(),
+            scene: name.into(),
+            file: format!("{name}.toml").into(),
+            index,
+            mode: Some("vertex".into()),
+            status,
+            message: None,
+            comparison: figures.map(|(flip, share, max)| Comparison {
+                width: 8,
+                height: 8,
+                max_diff: [max, 0, 0, 0],
+                over: (share * 64.0) as usize,
+                share_over: share,
+                flip_mean: Some(flip),
+                flip_all_pixels: false,
+                worst: None,
+                first_over: None,
+                threshold: 2,
+            }),
+            output: None,
+            diff: None,
+            channels: None,
+            replaced: None,
+            reference: None,
+            seconds: 0.0,
+        }
+    }
+
+    #[test]
+    fn entries_come_worst_first_by_status_then_flip_then_share_then_difference() {
+        let rows = [
+            row("large_share_small_flip", 0, Status::Fail, Some((0.10, 1.0, 255))),
+            row("new_reference", 1, Status::Blessed, None),
+            row("changed_reference", 2, Status::Blessed, Some((0.2, 0.1, 40))),
+            row("no_reference", 3, Status::Missing, None),
+            row("large_flip", 4, Status::Fail, Some((0.60, 0.001, 10))),
+            row("another_size", 5, Status::Fail, None),
+            row("crashed", 6, Status::Error, None),
+            row("same_flip_larger_share", 7, Status::Fail, Some((0.10, 1.0, 255))),
+            row("same_flip_smaller_share", 8, Status::Fail, Some((0.10, 0.5, 255))),
+            row("passed", 9, Status::Pass, Some((0.0, 0.0, 1))),
+        ];
+        let mut order: Vec<&Row> = rows.iter().filter(|r| needs_attention(r)).collect();
+        order.sort_by(|a, b| worse_first(a, b));
+        let names: Vec<&str> = order.iter().map(|r| r.name.as_str()).collect();
+        assert_eq!(
+            names,
+            [
+                "crashed",
+                "another_size",
+                "large_flip",
+                // Equal figures keep suite order.
+                "large_share_small_flip",
+                "same_flip_larger_share",
+                "same_flip_smaller_share",
+                "no_reference",
+                "changed_reference",
+                "new_reference",
+            ]
+        );
+    }
+
+    #[test]
+    fn names_and_messages_are_escaped_in_the_page() {
+        let mut bad = row("a<b>&\"c'", 0, Status::Error, None);
+        bad.message = Some("<script>alert(1)</script>\nline 2".into());
+        let results = Results::single(
+            RunInfo {
+                ffvk: "test".into(),
+                device: None,
+                jobs: 1,
+                lp_num_threads: None,
+                partition: None,
+                suite_scenes: 1,
+                scenes: 1,
+                modes: vec![],
+                references: Some("refs<1>".into()),
+                bless: false,
+                tolerance: Tolerance::default(),
+                timestamp: "2026-11-23T00:00:00".into(),
+                hostname: "<host>".into(),
+                seconds: 0.0,
+            },
+            vec![bad],
+        );
+        let rows = results.rows();
+        let entries = [Entry {
+            row: &rows[0],
+            number: 1,
+            reference: Slot::Absent,
+            actual: Slot::Unreadable("out/<x>.png: cannot read the image".into()),
+            channels: Slot::Absent,
+            flip: Slot::Absent,
+        }];
+        let html = page::page(&results, &entries, &[]);
+        for raw in ["<script>", "a<b>", "<host>", "refs<1>", "out/<x>.png"] {
+            assert!(!html.contains(raw), "{raw} is not escaped");
+        }
+        for escaped in [
+            "data-name=\"a&lt;b&gt;&amp;&quot;c&apos;\"",
+            "&lt;script&gt;alert(1)&lt;/script&gt;&#10;line 2",
+            "&lt;host&gt;",
+            "out/&lt;x&gt;.png: cannot read the image",
+        ] {
+            assert!(html.contains(escaped), "no {escaped}");
+        }
+    }
 }

@@ -146,7 +146,7 @@ fn tolerances(runs: &[Run]) -> String {
         let line = format!(
             "Tolerance: a channel may differ by {}/255; at most {} % of the pixels may exceed that; mean FLIP at most {} ({scope}). {}{}.",
             t.threshold,
-            t.max_share * 100.0,
+            percent(t.max_share),
             t.max_flip,
             refs,
             if run.info.bless { ", blessing" } else { "" }
@@ -160,6 +160,13 @@ fn tolerances(runs: &[Run]) -> String {
         .map(|l| format!("<p class=\"tolerance\">{}</p>", text(l)))
         .collect::<Vec<_>>()
         .join("\n")
+}
+
+/// A share as a percentage with at most six decimals, trailing zeros dropped (0.007 →
+/// "0.7", not "0.7000000000000001").
+fn percent(share: f64) -> String {
+    let text = format!("{:.6}", share * 100.0);
+    text.trim_end_matches('0').trim_end_matches('.').to_string()
 }
 
 /// The scale the images of an entry are shown at: whole-number enlargements of small images
@@ -277,11 +284,13 @@ fn entry(entry: &Entry) -> String {
     } else {
         String::new()
     };
-    let largest = row
-        .comparison
-        .as_ref()
-        .map_or(0, |c| c.max_diff.into_iter().max().unwrap_or(0));
-    let channels_caption = format!("per-channel |actual − reference| ×{:.1}", channel_gain(largest));
+    let channels_caption = match &row.comparison {
+        Some(c) => format!(
+            "per-channel |actual − reference| ×{:.1}",
+            channel_gain(c.max_diff.into_iter().max().unwrap_or(0))
+        ),
+        None => "per-channel |actual − reference|".to_string(),
+    };
     let identical = match (row.status, &row.comparison) {
         (Status::Missing, _) => "no reference to compare with",
         (Status::Blessed, None) if matches!(entry.reference, Slot::Absent) => {
@@ -403,7 +412,12 @@ fn comparison_figures(c: &Comparison) -> Vec<(&'static str, String, String)> {
         (
             "first-over",
             "first pixel over the threshold".into(),
-            c.first_over.as_ref().map_or_else(none, pixel),
+            match &c.first_over {
+                Some(p) => pixel(p),
+                // Results files of ffvk before the report do not record it.
+                None if c.over > 0 => "not recorded".into(),
+                None => none(),
+            },
         ),
         (
             "worst",
