@@ -27,7 +27,20 @@ struct Light {
     float k0;         // CONSTANT_ATTENUATION
     float k1;         // LINEAR_ATTENUATION
     float k2;         // QUADRATIC_ATTENUATION
+    uint spot_edge;   // EDGE_* (ffvk's extension; GL's is EDGE_GL_EXPONENT)
+    float cos_inner;  // cos of a soft edge's inner angle, computed on the host
+    uint falloff;     // FALLOFF_* (ffvk's extension; GL's is FALLOFF_GL_K012)
+    float range;      // glTF's range, 0 for none
 };
+
+// Values of Light.spot_edge, Light.falloff and specular_model: GL's is 0 in each.
+#define EDGE_GL_EXPONENT 0u
+#define EDGE_LINEAR_INNER_OUTER 1u
+#define EDGE_SMOOTHSTEP_INNER_OUTER 2u
+#define FALLOFF_GL_K012 0u
+#define FALLOFF_GLTF_INVERSE_SQUARE 1u
+#define SPECULAR_BLINN_HALFWAY 0u
+#define SPECULAR_PHONG_REFLECT 1u
 
 // Values of color_material_mode.
 #define CM_EMISSION 0u
@@ -55,6 +68,7 @@ layout(std140, set = 0, binding = 0) uniform Draw {
     uint color_material_mode;   // CM_*
     uint normalize;       // NORMALIZE enabled
     float rescale;        // RESCALE_NORMAL factor, 1 when disabled
+    uint specular_model;  // SPECULAR_* (ffvk's extension)
     Light lights[MAX_LIGHTS];
     mat4 texture_matrix;  // GL_TEXTURE matrix, read by the TEXTURE variants
     vec4 c_c;             // TEXTURE_ENV_COLOR
@@ -76,6 +90,11 @@ layout(constant_id = 5) const int SPEC_COLOR_MATERIAL = -1;     // COLOR_MATERIA
 layout(constant_id = 6) const int SPEC_ANY_LOCAL_LIGHT = -1;    // some light has w != 0
 layout(constant_id = 7) const int SPEC_ANY_SPOT_LIGHT = -1;     // some light has cutoff != 180
 layout(constant_id = 8) const int SPEC_TEX_ENV = -1;            // TEXTURE_ENV_MODE, TEV_*
+// ffvk's extensions: the specular term, and promises (0) that every light has GL's spot edge
+// and GL's attenuation, so that GL's own path carries none of the other variants.
+layout(constant_id = 9) const int SPEC_SPECULAR_MODEL = -1;     // SPECULAR_*
+layout(constant_id = 10) const int SPEC_ANY_SOFT_SPOT = -1;     // some light has a soft edge
+layout(constant_id = 11) const int SPEC_ANY_GLTF_FALLOFF = -1;  // some light has glTF's falloff
 
 // The state as the shader sees it: the specialization constant when set, else the uniform.
 // (The light count is chosen the same way, in light_equation: SPEC_LIGHT_COUNT < 0 reads
@@ -101,6 +120,15 @@ bool may_be_local() {
 }
 bool may_be_spot() {
     return SPEC_ANY_SPOT_LIGHT != 0;
+}
+bool may_be_soft_spot() {
+    return SPEC_ANY_SOFT_SPOT != 0;
+}
+bool may_be_gltf_falloff() {
+    return SPEC_ANY_GLTF_FALLOFF != 0;
+}
+uint specular_model() {
+    return SPEC_SPECULAR_MODEL < 0 ? draw.specular_model : uint(SPEC_SPECULAR_MODEL);
 }
 
 // The material of one face, with COLOR_MATERIAL applied for the current color c.

@@ -34,6 +34,53 @@ vec3 unit_from_to(vec4 P1, vec4 P2) {
     return unit(P2.xyz / P2.w - P1.xyz / P1.w);
 }
 
+// att_i, GL's: 1 / (k0 + k1 d + k2 d^2), d = ||VP_pli||.
+float attenuation_gl_k012(float d, float k0, float k1, float k2) {
+    return 1.0 / (k0 + k1 * d + k2 * d * d);
+}
+
+// att_i, glTF's (KHR_lights_punctual, ffvk's extension): 1 / d^2, windowed to 0 at the range
+// by clamp(1 - (d / range)^4, 0, 1) when the light has one (range > 0).
+float attenuation_gltf_inverse_square(float d, float range) {
+    float window = range > 0.0 ? clamp(1.0 - pow(d / range, 4.0), 0.0, 1.0) : 1.0;
+    return window / (d * d);
+}
+
+// spot_i, GL's: (P_pliV ⊙ ŝ_dli)^s_rli inside the cone, 0 outside.
+float spot_gl_exponent(float cos_angle, float cos_c_rli, float s_rli) {
+    return cos_angle >= cos_c_rli ? pow_gl(cos_angle, s_rli) : 0.0;
+}
+
+// spot_i with a linear edge (ffvk's extension): 1 inside the inner cone, 0 outside the outer
+// (c_rli), a straight ramp in the cosine between; equal cones are a hard cutoff.
+float spot_linear_inner_outer(float cos_angle, float cos_outer, float cos_inner) {
+    if (cos_inner <= cos_outer) return cos_angle >= cos_outer ? 1.0 : 0.0;
+    return clamp((cos_angle - cos_outer) / (cos_inner - cos_outer), 0.0, 1.0);
+}
+
+// spot_i with a smoothstep edge (ffvk's extension; glTF's cone): as the linear edge with
+// smoothstep(cos outer, cos inner, cos θ) between the cones. GLSL leaves smoothstep
+// undefined for equal edges, so equal cones are tested first.
+float spot_smoothstep_inner_outer(float cos_angle, float cos_outer, float cos_inner) {
+    if (cos_inner <= cos_outer) return cos_angle >= cos_outer ? 1.0 : 0.0;
+    return smoothstep(cos_outer, cos_inner, cos_angle);
+}
+
+// The specular factor before f_i and the colors, GL's: (n ⊙ ĥ_i)^s_rm, ĥ_i the unit halfway
+// vector of VP_pli and v (VPe for a local viewer, else (0, 0, 1)).
+float specular_blinn_halfway(vec3 n, vec3 VP_pli, vec3 v, float s_rm) {
+    vec3 h_i = VP_pli + v;
+    return pow_gl(odot(n, unit(h_i)), s_rm);
+}
+
+// The specular factor, Phong's (ffvk's extension): (r_i ⊙ v)^s_rm, r_i = 2 (n · VP_pli) n −
+// VP_pli the reflection of VP_pli about n (with n as the equation receives it, as GL's ĥ_i
+// term does).
+float specular_phong_reflect(vec3 n, vec3 VP_pli, vec3 v, float s_rm) {
+    vec3 r_i = 2.0 * dot(n, VP_pli) * n - VP_pli;
+    return pow_gl(odot(r_i, v), s_rm);
+}
+
 // Light i's term of the sum over lights, added to c_pri and c_sec: vertex (or fragment) V,
 // eye space, normal n, material m, VPe the unit vector from V to the eye.
 void light_term(uint i, vec4 V, vec3 n, Material m, vec3 VPe, inout vec3 c_pri, inout vec3 c_sec) {
@@ -45,20 +92,32 @@ void light_term(uint i, vec4 V, vec3 n, Material m, vec3 VPe, inout vec3 c_pri, 
     float att_i = 1.0;
     if (may_be_local() && L.P_pli.w != 0.0) {
         float d = length(L.P_pli.xyz / L.P_pli.w - V.xyz / V.w);  // ||VP_pli||
-        att_i = 1.0 / (L.k0 + L.k1 * d + L.k2 * d * d);
+        att_i = may_be_gltf_falloff() && L.falloff == FALLOFF_GLTF_INVERSE_SQUARE
+            ? attenuation_gltf_inverse_square(d, L.range)
+            : attenuation_gl_k012(d, L.k0, L.k1, L.k2);
     }
 
     float spot_i = 1.0;
     if (may_be_spot() && L.c_rli != 180.0) {
         float cos_angle = odot(unit_from_to(L.P_pli, V), unit(L.s_dli));  // P_pliV ⊙ ŝ_dli
-        spot_i = cos_angle >= L.cos_c_rli ? pow_gl(cos_angle, L.s_rli) : 0.0;
+        uint edge = may_be_soft_spot() ? L.spot_edge : EDGE_GL_EXPONENT;
+        if (edge == EDGE_LINEAR_INNER_OUTER) {
+            spot_i = spot_linear_inner_outer(cos_angle, L.cos_c_rli, L.cos_inner);
+        } else if (edge == EDGE_SMOOTHSTEP_INNER_OUTER) {
+            spot_i = spot_smoothstep_inner_outer(cos_angle, L.cos_c_rli, L.cos_inner);
+        } else {
+            spot_i = spot_gl_exponent(cos_angle, L.cos_c_rli, L.s_rli);
+        }
     }
 
     float n_VP = odot(n, VP_pli);
     float f_i = n_VP != 0.0 ? 1.0 : 0.0;
 
-    vec3 h_i = local_viewer() ? VP_pli + VPe : VP_pli + vec3(0.0, 0.0, 1.0);
-    vec3 specular = f_i * pow_gl(odot(n, unit(h_i)), m.s_rm) * m.s_cm.rgb * L.s_cli.rgb;
+    vec3 v = local_viewer() ? VPe : vec3(0.0, 0.0, 1.0);
+    float s_factor = specular_model() == SPECULAR_PHONG_REFLECT
+        ? specular_phong_reflect(n, VP_pli, v, m.s_rm)
+        : specular_blinn_halfway(n, VP_pli, v, m.s_rm);
+    vec3 specular = f_i * s_factor * m.s_cm.rgb * L.s_cli.rgb;
 
     vec3 ambient = m.a_cm.rgb * L.a_cli.rgb;
     vec3 diffuse = n_VP * m.d_cm.rgb * L.d_cli.rgb;

@@ -7,7 +7,9 @@ pub mod texture;
 
 use glam::{DMat3, DVec3, DVec4, Mat4};
 
-use crate::gl::state::{ColorControl, Light, LightingMode, LightingState, Material};
+use crate::gl::state::{
+    Attenuation, ColorControl, Light, LightingMode, LightingState, Material, SpecularModel, SpotEdge,
+};
 use crate::gl::texture::{texturing_applies, Sampling, TextureImage};
 use crate::mesh::Vertex;
 
@@ -15,24 +17,38 @@ use crate::mesh::Vertex;
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LightTerms {
     /// Distance attenuation: 1 / (k0 + k1·d + k2·d²) for a positional light (d the eye-space
-    /// distance), 1 for a directional one. Not clamped, as in GL.
+    /// distance), 1 for a directional one. Not clamped, as in GL. With glTF's falloff
+    /// ([`Attenuation::GltfInverseSquare`]): window / d².
     pub att_i: f64,
+    /// The eye-space distance d to a positional light (`None` for a directional one).
+    pub distance: Option<f64>,
+    /// The attenuation this light uses.
+    pub attenuation: Attenuation,
     /// Spotlight factor: (P_pliV ⊙ ŝ_dli)^s_rli inside the cone, 0 outside it, 1 when
-    /// c_rli = 180.
+    /// c_rli = 180; with a soft edge ([`SpotEdge`]), its ramp between the cones instead.
     pub spot_i: f64,
+    /// cos θ = P_pliV ⊙ ŝ_dli, for a spot (`None` when c_rli = 180).
+    pub cos_spot: Option<f64>,
+    /// The spot edge this light uses.
+    pub spot_edge: SpotEdge,
+    /// The specular factor before f_i and the colors: (n ⊙ ĥ_i)^s_rm (GL's) or
+    /// (r_i ⊙ v)^s_rm (Phong's), as the light model says.
+    pub specular_factor: f64,
     /// 1 when n · VP_pli > 0, else 0: a light behind the surface leaves no highlight.
     pub f_i: f64,
     /// a_cm * a_cli
     pub ambient: DVec3,
     /// (n ⊙ VP_pli) d_cm * d_cli
     pub diffuse: DVec3,
-    /// f_i (n ⊙ ĥ_i)^s_rm s_cm * s_cli
+    /// f_i (n ⊙ ĥ_i)^s_rm s_cm * s_cli (or Phong's (r_i ⊙ v)^s_rm in place of the power)
     pub specular: DVec3,
 }
 
 /// The equation's result at one point, with every term.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Lit {
+    /// The specular term's model.
+    pub specular_model: SpecularModel,
     /// e_cm
     pub emission: DVec3,
     /// a_cm * a_cs
@@ -134,6 +150,7 @@ pub fn light(state: &LightingState, v: DVec4, n: DVec3, m: &Material) -> Lit {
         lights.push(t);
     }
     Lit {
+        specular_model: state.model.specular_model,
         emission,
         scene_ambient,
         lights,
@@ -157,41 +174,83 @@ fn light_terms(
     let p_pli = d4(l.position);
     let vp_pli = unit_from_to(v, p_pli);
 
-    let att_i = if p_pli.w != 0.0 {
-        let d = (p_pli.truncate() / p_pli.w - v.truncate() / v.w).length();
-        1.0 / (l.constant_attenuation as f64
-            + l.linear_attenuation as f64 * d
-            + l.quadratic_attenuation as f64 * d * d)
-    } else {
-        1.0
+    let distance = (p_pli.w != 0.0).then(|| (p_pli.truncate() / p_pli.w - v.truncate() / v.w).length());
+    let att_i = match (distance, l.attenuation) {
+        (None, _) => 1.0,
+        (Some(d), Attenuation::GlK012) => {
+            1.0 / (l.constant_attenuation as f64
+                + l.linear_attenuation as f64 * d
+                + l.quadratic_attenuation as f64 * d * d)
+        }
+        (Some(d), Attenuation::GltfInverseSquare { range }) => gltf_inverse_square(d, range.map(f64::from)),
     };
 
-    let spot_i = if l.spot_cutoff != 180.0 {
-        let c = odot(unit_from_to(p_pli, v), unit(l.spot_direction.as_dvec3()));
-        if c >= cos_cutoff(l.spot_cutoff) {
-            pow_gl(c, l.spot_exponent as f64)
-        } else {
-            0.0
+    let cos_spot =
+        (l.spot_cutoff != 180.0).then(|| odot(unit_from_to(p_pli, v), unit(l.spot_direction.as_dvec3())));
+    let spot_i = match cos_spot {
+        None => 1.0,
+        Some(c) => {
+            let cos_outer = cos_cutoff(l.spot_cutoff);
+            match l.spot_edge {
+                SpotEdge::GlExponent if c >= cos_outer => pow_gl(c, l.spot_exponent as f64),
+                SpotEdge::GlExponent => 0.0,
+                SpotEdge::LinearInnerOuter { inner_degrees } => {
+                    soft_edge(c, cos_outer, cos_cutoff(inner_degrees), |t| t)
+                }
+                SpotEdge::SmoothstepInnerOuter { inner_degrees } => {
+                    soft_edge(c, cos_outer, cos_cutoff(inner_degrees), |t| {
+                        t * t * (3.0 - 2.0 * t)
+                    })
+                }
+            }
         }
-    } else {
-        1.0
     };
 
     let n_vp = odot(n, vp_pli);
     let f_i = if n_vp != 0.0 { 1.0 } else { 0.0 };
-    let h_i = if state.model.local_viewer {
-        vp_pli + unit_from_to(v, p_e)
+    // The direction to the viewer: to the eye, or +z for a viewer at infinity.
+    let to_viewer = if state.model.local_viewer {
+        unit_from_to(v, p_e)
     } else {
-        vp_pli + DVec3::Z
+        DVec3::Z
+    };
+    let specular_factor = match state.model.specular_model {
+        SpecularModel::BlinnHalfway => pow_gl(odot(n, unit(vp_pli + to_viewer)), s_rm),
+        SpecularModel::PhongReflect => {
+            // r_i, the reflection of VP_pli about n (n as given, as the halfway term takes it).
+            let r_i = 2.0 * n.dot(vp_pli) * n - vp_pli;
+            pow_gl(odot(r_i, to_viewer), s_rm)
+        }
     };
     LightTerms {
         att_i,
+        distance,
+        attenuation: l.attenuation,
         spot_i,
+        cos_spot,
+        spot_edge: l.spot_edge,
+        specular_factor,
         f_i,
         ambient: a_cm.truncate() * d4(l.ambient).truncate(),
         diffuse: n_vp * d_cm.truncate() * d4(l.diffuse).truncate(),
-        specular: f_i * pow_gl(odot(n, unit(h_i)), s_rm) * s_cm.truncate() * d4(l.specular).truncate(),
+        specular: f_i * specular_factor * s_cm.truncate() * d4(l.specular).truncate(),
     }
+}
+
+/// glTF's falloff (KHR_lights_punctual, as Khronos' sample viewer draws it): 1 / d², times
+/// clamp(1 − (d / range)⁴, 0, 1) with a range.
+pub fn gltf_inverse_square(d: f64, range: Option<f64>) -> f64 {
+    let window = range.map_or(1.0, |r| (1.0 - (d / r).powi(4)).clamp(0.0, 1.0));
+    window / (d * d)
+}
+
+/// A soft spot edge: 1 at or inside the inner cone, 0 outside the outer, `ramp` of the
+/// position between them (0 at the outer cone, 1 at the inner); equal cones are a hard cutoff.
+fn soft_edge(cos_angle: f64, cos_outer: f64, cos_inner: f64, ramp: impl Fn(f64) -> f64) -> f64 {
+    if cos_inner <= cos_outer {
+        return if cos_angle >= cos_outer { 1.0 } else { 0.0 };
+    }
+    ramp(((cos_angle - cos_outer) / (cos_inner - cos_outer)).clamp(0.0, 1.0))
 }
 
 /// Section 2.11.3: the eye-space normal, with RESCALE_NORMAL and NORMALIZE as enabled.

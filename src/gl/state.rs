@@ -47,6 +47,18 @@ pub enum StateError {
         /// What would have been accepted, in words.
         valid: &'static str,
     },
+    /// A soft spot edge whose inner cone is wider than its outer cone (`GL_SPOT_CUTOFF`):
+    /// ffvk's extension, checked when the light is drawn, since GL's order of calls lets
+    /// either angle be set first.
+    #[error("light {light}: the spot edge's inner angle {inner}° is wider than its outer angle (GL_SPOT_CUTOFF) {outer}°: expected inner <= outer")]
+    SpotCone {
+        /// The light's index (`GL_LIGHTi`).
+        light: usize,
+        /// The inner cone's half-angle, degrees.
+        inner: f32,
+        /// The outer cone's half-angle (`GL_SPOT_CUTOFF`), degrees.
+        outer: f32,
+    },
     /// A light index at or past [`MAX_LIGHTS`] (GL's `INVALID_ENUM` for `GL_LIGHTi`).
     #[error("light index {index} is out of range: expected 0..{max} (GL_MAX_LIGHTS = {max})")]
     LightIndex {
@@ -90,6 +102,107 @@ pub struct Light {
     pub linear_attenuation: f32,
     /// k2, `GL_QUADRATIC_ATTENUATION`, the factor of d², >= 0; default 0.
     pub quadratic_attenuation: f32,
+    /// How the cone's edge falls off (ffvk's extension); default [`SpotEdge::GlExponent`],
+    /// GL's.
+    pub spot_edge: SpotEdge,
+    /// How intensity falls off with distance (ffvk's extension); default
+    /// [`Attenuation::GlK012`], GL's.
+    pub attenuation: Attenuation,
+}
+
+/// How a spotlight's intensity falls off towards its cone's edge. cos θ is GL's
+/// P_pliV ⊙ ŝ_dli, the outer cone is `GL_SPOT_CUTOFF` (c_rli); with c_rli = 180 there is no
+/// cone and every edge gives spot_i = 1.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum SpotEdge {
+    /// GL's: (cos θ)^s_rli inside the cone, 0 outside (`GL_SPOT_EXPONENT`).
+    #[default]
+    GlExponent,
+    /// 1 inside the inner cone, 0 outside the outer, and between them
+    /// clamp((cos θ − cos outer) / (cos inner − cos outer), 0, 1); the exponent is not used.
+    /// An inner angle equal to the outer is a hard cutoff at that angle.
+    LinearInnerOuter {
+        /// The inner cone's half-angle in degrees, in [0, 90] and at most the outer.
+        inner_degrees: f32,
+    },
+    /// As [`SpotEdge::LinearInnerOuter`], with smoothstep(cos outer, cos inner, cos θ)
+    /// between the cones (glTF's KHR_lights_punctual cone, as Khronos' sample viewer draws
+    /// it).
+    SmoothstepInnerOuter {
+        /// The inner cone's half-angle in degrees, in [0, 90] and at most the outer.
+        inner_degrees: f32,
+    },
+}
+
+impl SpotEdge {
+    /// The name scene files and `ffvk explain` use.
+    pub fn name(self) -> &'static str {
+        match self {
+            SpotEdge::GlExponent => "gl_exponent",
+            SpotEdge::LinearInnerOuter { .. } => "linear_inner_outer",
+            SpotEdge::SmoothstepInnerOuter { .. } => "smoothstep_inner_outer",
+        }
+    }
+
+    /// The inner cone's half-angle, for the soft edges.
+    pub fn inner_degrees(self) -> Option<f32> {
+        match self {
+            SpotEdge::GlExponent => None,
+            SpotEdge::LinearInnerOuter { inner_degrees }
+            | SpotEdge::SmoothstepInnerOuter { inner_degrees } => Some(inner_degrees),
+        }
+    }
+}
+
+/// How a positional light's intensity falls off with the eye-space distance d to it.
+/// Directional lights (w = 0) are never attenuated.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum Attenuation {
+    /// GL's: att_i = 1 / (k0 + k1·d + k2·d²).
+    #[default]
+    GlK012,
+    /// glTF's (KHR_lights_punctual): att_i = 1 / d², times the window
+    /// clamp(1 − (d / range)⁴, 0, 1) when the light has a range (as Khronos' sample viewer
+    /// draws it); k0, k1 and k2 are not used. Infinite at d = 0, as GL's k2-only falloff is.
+    GltfInverseSquare {
+        /// Where the light's influence ends, > 0 (eye-space units); `None`: unbounded.
+        range: Option<f32>,
+    },
+}
+
+impl Attenuation {
+    /// The name scene files and `ffvk explain` use.
+    pub fn name(self) -> &'static str {
+        match self {
+            Attenuation::GlK012 => "gl_k012",
+            Attenuation::GltfInverseSquare { .. } => "gltf_inverse_square",
+        }
+    }
+}
+
+/// Which specular term the equation uses (ffvk's extension to the light model).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum SpecularModel {
+    /// GL's: f_i (n ⊙ ĥ_i)^s_rm, ĥ_i the unit halfway vector between VP_pli and the
+    /// direction to the viewer (Blinn).
+    #[default]
+    BlinnHalfway,
+    /// Phong's original: f_i (r_i ⊙ v)^s_rm, r_i = 2 (n · VP_pli) n − VP_pli the reflection of
+    /// the direction to the light about n, v the direction to the viewer ((0, 0, 1) unless
+    /// the viewer is local), with the same clamping of negative products and the same f_i.
+    /// For the same exponent its highlight is wider: for coplanar vectors the halfway angle
+    /// is half of r_i's.
+    PhongReflect,
+}
+
+impl SpecularModel {
+    /// The name scene files and `ffvk explain` use.
+    pub fn name(self) -> &'static str {
+        match self {
+            SpecularModel::BlinnHalfway => "blinn_halfway",
+            SpecularModel::PhongReflect => "phong_reflect",
+        }
+    }
 }
 
 impl Light {
@@ -112,6 +225,8 @@ impl Light {
             constant_attenuation: 1.0,
             linear_attenuation: 0.0,
             quadratic_attenuation: 0.0,
+            spot_edge: SpotEdge::GlExponent,
+            attenuation: Attenuation::GlK012,
         }
     }
 }
@@ -185,6 +300,8 @@ pub struct LightModel {
     pub two_side: bool,
     /// c_es, `GL_LIGHT_MODEL_COLOR_CONTROL`; default [`ColorControl::SingleColor`].
     pub color_control: ColorControl,
+    /// The specular term (ffvk's extension); default [`SpecularModel::BlinnHalfway`], GL's.
+    pub specular_model: SpecularModel,
 }
 
 impl Default for LightModel {
@@ -194,6 +311,7 @@ impl Default for LightModel {
             local_viewer: false,
             two_side: false,
             color_control: ColorControl::SingleColor,
+            specular_model: SpecularModel::BlinnHalfway,
         }
     }
 }
@@ -376,6 +494,11 @@ pub enum LightParam {
     LinearAttenuation(f32),
     /// `GL_QUADRATIC_ATTENUATION`, k2, >= 0.
     QuadraticAttenuation(f32),
+    /// ffvk's extension: the spot edge; a soft edge's inner angle in [0, 90] (and, when the
+    /// light is drawn, at most `GL_SPOT_CUTOFF`).
+    SpotEdge(SpotEdge),
+    /// ffvk's extension: the distance falloff; a glTF range > 0.
+    Attenuation(Attenuation),
 }
 
 /// Parameters of glMaterial.
@@ -406,6 +529,8 @@ pub enum LightModelParam {
     TwoSide(bool),
     /// `GL_LIGHT_MODEL_COLOR_CONTROL`, c_es.
     ColorControl(ColorControl),
+    /// ffvk's extension: the specular term.
+    SpecularModel(SpecularModel),
 }
 
 /// Everything the lighting of one draw depends on, besides its geometry and matrices.
@@ -465,8 +590,9 @@ impl LightingState {
         finite_vec("GL_LIGHT_MODEL_AMBIENT", self.model.ambient.to_array().as_slice())?;
         finite_vec("GL_CURRENT_COLOR", self.current_color.to_array().as_slice())?;
         self.texture.validate()?;
-        for light in &self.lights {
+        for (index, light) in self.lights.iter().enumerate() {
             validate_light(light)?;
+            check_cone(index, light)?;
         }
         Ok(())
     }
@@ -492,7 +618,21 @@ pub fn validate_light(l: &Light) -> Result<(), StateError> {
     check_light_scalar(&LightParam::SpotCutoff(l.spot_cutoff))?;
     check_light_scalar(&LightParam::ConstantAttenuation(l.constant_attenuation))?;
     check_light_scalar(&LightParam::LinearAttenuation(l.linear_attenuation))?;
-    check_light_scalar(&LightParam::QuadraticAttenuation(l.quadratic_attenuation))
+    check_light_scalar(&LightParam::QuadraticAttenuation(l.quadratic_attenuation))?;
+    check_light_scalar(&LightParam::SpotEdge(l.spot_edge))?;
+    check_light_scalar(&LightParam::Attenuation(l.attenuation))
+}
+
+/// A soft edge's inner cone must fit in the outer one (`GL_SPOT_CUTOFF`; no cone at 180).
+fn check_cone(index: usize, l: &Light) -> Result<(), StateError> {
+    match l.spot_edge.inner_degrees() {
+        Some(inner) if l.spot_cutoff != 180.0 && inner > l.spot_cutoff => Err(StateError::SpotCone {
+            light: index,
+            inner,
+            outer: l.spot_cutoff,
+        }),
+        _ => Ok(()),
+    }
 }
 
 fn finite_vec(parameter: &'static str, values: &[f32]) -> Result<(), StateError> {
@@ -549,6 +689,13 @@ fn check_light_scalar(p: &LightParam) -> Result<(), StateError> {
         }
         LightParam::QuadraticAttenuation(v) => {
             in_range("GL_QUADRATIC_ATTENUATION", v, 0.0, f32::MAX, "a value >= 0")
+        }
+        LightParam::SpotEdge(edge) => match edge.inner_degrees() {
+            Some(inner) => in_range("spot inner angle", inner, 0.0, 90.0, "a value in [0, 90] degrees"),
+            None => Ok(()),
+        },
+        LightParam::Attenuation(Attenuation::GltfInverseSquare { range: Some(r) }) => {
+            in_range("range", r, f32::MIN_POSITIVE, f32::MAX, "a value > 0")
         }
         _ => Ok(()),
     }
@@ -618,6 +765,8 @@ impl GlState {
             LightParam::ConstantAttenuation(v) => light.constant_attenuation = v,
             LightParam::LinearAttenuation(v) => light.linear_attenuation = v,
             LightParam::QuadraticAttenuation(v) => light.quadratic_attenuation = v,
+            LightParam::SpotEdge(edge) => light.spot_edge = edge,
+            LightParam::Attenuation(a) => light.attenuation = a,
         }
         Ok(())
     }
@@ -659,6 +808,7 @@ impl GlState {
             LightModelParam::LocalViewer(b) => model.local_viewer = b,
             LightModelParam::TwoSide(b) => model.two_side = b,
             LightModelParam::ColorControl(c) => model.color_control = c,
+            LightModelParam::SpecularModel(m) => model.specular_model = m,
         }
         Ok(())
     }

@@ -7,7 +7,8 @@
 use glam::{Mat3, Mat4};
 
 use crate::gl::state::{
-    ColorControl, ColorMaterialMode, Light, LightingState, Material, StateError, MAX_LIGHTS,
+    Attenuation, ColorControl, ColorMaterialMode, Light, LightingState, Material, SpecularModel, SpotEdge,
+    StateError, MAX_LIGHTS,
 };
 
 /// GL clip space (z in [-w, w], y up) to Vulkan clip space (z in [0, w], y down), applied
@@ -51,7 +52,7 @@ impl From<&Material> for GpuMaterial {
     }
 }
 
-/// One enabled [`Light`] as the GLSL `Light` struct (std140, 112 bytes), eye space.
+/// One enabled [`Light`] as the GLSL `Light` struct (std140, 128 bytes), eye space.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct GpuLight {
@@ -78,6 +79,16 @@ pub struct GpuLight {
     pub k1: f32,
     /// `GL_QUADRATIC_ATTENUATION`.
     pub k2: f32,
+    /// The spot edge, the GLSL `EDGE_*` values: 0 GL's exponent, 1 linear, 2 smoothstep.
+    pub spot_edge: u32,
+    /// cos of the soft edge's inner angle (double precision, as `cos_c_rli`); 1 for GL's
+    /// edge.
+    pub cos_inner: f32,
+    /// The distance falloff, the GLSL `FALLOFF_*` values: 0 GL's k0, k1, k2; 1 glTF's
+    /// inverse square.
+    pub falloff: u32,
+    /// glTF's range, > 0; 0 for none.
+    pub range: f32,
     /// Rounds the struct up to std140's 16-byte struct alignment; always zero.
     pub _pad: [f32; 3],
 }
@@ -97,8 +108,43 @@ impl From<&Light> for GpuLight {
             k0: l.constant_attenuation,
             k1: l.linear_attenuation,
             k2: l.quadratic_attenuation,
+            spot_edge: spot_edge_code(l.spot_edge),
+            cos_inner: l
+                .spot_edge
+                .inner_degrees()
+                .map_or(1.0, |inner| crate::reference::cos_cutoff(inner) as f32),
+            falloff: falloff_code(l.attenuation),
+            range: match l.attenuation {
+                Attenuation::GltfInverseSquare { range: Some(r) } => r,
+                _ => 0.0,
+            },
             _pad: [0.0; 3],
         }
+    }
+}
+
+/// The GLSL `EDGE_*` value of a spot edge.
+pub fn spot_edge_code(edge: SpotEdge) -> u32 {
+    match edge {
+        SpotEdge::GlExponent => 0,
+        SpotEdge::LinearInnerOuter { .. } => 1,
+        SpotEdge::SmoothstepInnerOuter { .. } => 2,
+    }
+}
+
+/// The GLSL `FALLOFF_*` value of an attenuation.
+pub fn falloff_code(a: Attenuation) -> u32 {
+    match a {
+        Attenuation::GlK012 => 0,
+        Attenuation::GltfInverseSquare { .. } => 1,
+    }
+}
+
+/// The GLSL `SPECULAR_*` value of a specular model.
+pub fn specular_code(m: SpecularModel) -> u32 {
+    match m {
+        SpecularModel::BlinnHalfway => 0,
+        SpecularModel::PhongReflect => 1,
     }
 }
 
@@ -147,8 +193,9 @@ pub struct DrawBlock {
     /// What eye-space normals are multiplied by: [`rescale_factor`] with
     /// `GL_RESCALE_NORMAL` on, else 1.
     pub rescale: f32,
-    /// Starts `lights` on a 16-byte boundary, as std140 requires; always zero.
-    pub _pad: u32,
+    /// The specular term, the GLSL `SPECULAR_*` values: 0 GL's (Blinn's halfway vector),
+    /// 1 Phong's reflection vector. (It also starts `lights` on a 16-byte boundary.)
+    pub specular_model: u32,
     /// The enabled lights packed in index order, so entry i is not necessarily `GL_LIGHTi`;
     /// entries from `light_count` on are zeroed.
     pub lights: [GpuLight; MAX_LIGHTS],
@@ -190,10 +237,18 @@ pub enum SpecConstant {
     /// [`TexEnvMode::code`](crate::gl::texture::TexEnvMode::code); read only by the textured
     /// variants.
     TexEnv = 8,
+    /// `SPEC_SPECULAR_MODEL`: the specular term as [`specular_code`].
+    SpecularModel = 9,
+    /// `SPEC_ANY_SOFT_SPOT`: 0 promises that every enabled light has GL's spot edge, so the
+    /// soft edges are compiled out; 1 means some light may have another.
+    AnySoftSpot = 10,
+    /// `SPEC_ANY_GLTF_FALLOFF`: 0 promises that every enabled light has GL's attenuation,
+    /// so glTF's falloff is compiled out; 1 means some light may have it.
+    AnyGltfFalloff = 11,
 }
 
 /// How many specialization constants there are.
-pub const SPEC_CONSTANT_COUNT: usize = 9;
+pub const SPEC_CONSTANT_COUNT: usize = 12;
 
 impl SpecConstant {
     /// Every constant, in `constant_id` order.
@@ -207,6 +262,9 @@ impl SpecConstant {
         SpecConstant::AnyLocalLight,
         SpecConstant::AnySpotLight,
         SpecConstant::TexEnv,
+        SpecConstant::SpecularModel,
+        SpecConstant::AnySoftSpot,
+        SpecConstant::AnyGltfFalloff,
     ];
 
     /// The `constant_id` in the GLSL.
@@ -226,6 +284,9 @@ impl SpecConstant {
             SpecConstant::AnyLocalLight => "SPEC_ANY_LOCAL_LIGHT",
             SpecConstant::AnySpotLight => "SPEC_ANY_SPOT_LIGHT",
             SpecConstant::TexEnv => "SPEC_TEX_ENV",
+            SpecConstant::SpecularModel => "SPEC_SPECULAR_MODEL",
+            SpecConstant::AnySoftSpot => "SPEC_ANY_SOFT_SPOT",
+            SpecConstant::AnyGltfFalloff => "SPEC_ANY_GLTF_FALLOFF",
         }
     }
 }
@@ -281,6 +342,19 @@ impl SpecKey {
                 SpecConstant::AnySpotLight,
                 lights.iter().any(|l| l.spot_cutoff != 180.0),
             );
+            set(
+                SpecConstant::AnySoftSpot,
+                lights
+                    .iter()
+                    .any(|l| l.spot_cutoff != 180.0 && l.spot_edge != SpotEdge::GlExponent),
+            );
+            set(
+                SpecConstant::AnyGltfFalloff,
+                lights
+                    .iter()
+                    .any(|l| l.position.w != 0.0 && l.attenuation != Attenuation::GlK012),
+            );
+            values[SpecConstant::SpecularModel as usize] = specular_code(state.model.specular_model) as i32;
         }
         values[SpecConstant::LightCount as usize] = lights.len() as i32;
         SpecKey { values }
@@ -313,7 +387,10 @@ impl DrawBlock {
                 });
             }
             // att_i = 1 / (k0 + k1 d + k2 d²) is infinite when all three are 0.
-            for l in state.enabled_lights().filter(|l| l.position.w != 0.0) {
+            for l in state
+                .enabled_lights()
+                .filter(|l| l.position.w != 0.0 && l.attenuation == Attenuation::GlK012)
+            {
                 let sum = l.constant_attenuation + l.linear_attenuation + l.quadratic_attenuation;
                 if sum == 0.0 {
                     return Err(StateError::OutOfRange {
@@ -361,7 +438,7 @@ impl DrawBlock {
             } else {
                 1.0
             },
-            _pad: 0,
+            specular_model: specular_code(state.model.specular_model),
             lights,
             texture_matrix: state.texture.matrix.to_cols_array(),
             c_c: state.texture.env_color.to_array(),

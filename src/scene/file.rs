@@ -87,6 +87,8 @@ pub(super) struct LightModelSpec {
     pub(super) local_viewer: Option<bool>,
     pub(super) two_side: Option<bool>,
     pub(super) color_control: Option<String>,
+    /// ffvk's extension: "blinn_halfway" (GL's) or "phong_reflect".
+    pub(super) specular_model: Option<String>,
 }
 
 /// One `[[lights]]` table: glLight for one light.
@@ -111,6 +113,15 @@ pub(super) struct LightSpec {
     pub(super) constant_attenuation: Option<f32>,
     pub(super) linear_attenuation: Option<f32>,
     pub(super) quadratic_attenuation: Option<f32>,
+    /// ffvk's extension: "gl_exponent" (GL's), "linear_inner_outer" or
+    /// "smoothstep_inner_outer".
+    pub(super) spot_edge: Option<String>,
+    /// The soft edge's inner half-angle, degrees.
+    pub(super) spot_inner_cutoff: Option<f32>,
+    /// ffvk's extension: "gl_k012" (GL's) or "gltf_inverse_square".
+    pub(super) attenuation: Option<String>,
+    /// glTF's range for "gltf_inverse_square", > 0.
+    pub(super) range: Option<f32>,
 }
 
 /// A `material` table: glMaterial for one face, from a preset or from scratch.

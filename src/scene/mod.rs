@@ -23,8 +23,8 @@ pub use self::meaning::{auto_exposure, GltfMeaning};
 pub use self::texture::MeshTexture;
 use crate::gl::presets;
 use crate::gl::state::{
-    Cap, ColorControl, ColorMaterialMode, Face, GlState, LightModelParam, LightParam, LightingMode,
-    LightingState, Material, StateError, MAX_LIGHTS,
+    Attenuation, Cap, ColorControl, ColorMaterialMode, Face, GlState, LightModelParam, LightParam,
+    LightingMode, LightingState, Material, SpecularModel, SpotEdge, StateError, MAX_LIGHTS,
 };
 use crate::mesh::MeshData;
 
@@ -825,6 +825,97 @@ impl Builder<'_> {
             gl.light_model(LightModelParam::ColorControl(control))
                 .map_err(self.state("light_model.color_control"))?;
         }
+        if let Some(m) = &m.specular_model {
+            let model = match m.as_str() {
+                "blinn_halfway" => SpecularModel::BlinnHalfway,
+                "phong_reflect" => SpecularModel::PhongReflect,
+                other => {
+                    return Err(self.field(
+                        "light_model.specular_model",
+                        format!(
+                            "{:?}: expected \"blinn_halfway\" (GL's) or \"phong_reflect\"",
+                            shorten(other)
+                        ),
+                    ))
+                }
+            };
+            gl.light_model(LightModelParam::SpecularModel(model))
+                .map_err(self.state("light_model.specular_model"))?;
+        }
+        Ok(())
+    }
+
+    /// The spot edge and attenuation of a `[[lights]]` table (ffvk's extensions), checked
+    /// against each other and against the light's cone.
+    fn light_variants(
+        &self,
+        gl: &mut GlState,
+        field: &str,
+        index: usize,
+        l: &LightSpec,
+    ) -> Result<(), SceneError> {
+        let f = |name: &str| format!("{field}.{name}");
+        let inner = l.spot_inner_cutoff;
+        let edge = match (l.spot_edge.as_deref(), inner) {
+            (None | Some("gl_exponent"), None) => None,
+            (None | Some("gl_exponent"), Some(v)) => {
+                return Err(self.field(
+                    f("spot_inner_cutoff"),
+                    format!("{v}: a soft spot edge's inner angle, but the light has GL's edge: expected spot_edge = \"linear_inner_outer\" or \"smoothstep_inner_outer\" with it"),
+                ))
+            }
+            (Some(kind @ ("linear_inner_outer" | "smoothstep_inner_outer")), None) => {
+                return Err(self.field(
+                    f("spot_inner_cutoff"),
+                    format!("missing: spot_edge = \"{kind}\" needs the inner cone's half-angle in degrees, in [0, spot_cutoff]"),
+                ))
+            }
+            (Some("linear_inner_outer"), Some(v)) => Some(SpotEdge::LinearInnerOuter { inner_degrees: v }),
+            (Some("smoothstep_inner_outer"), Some(v)) => Some(SpotEdge::SmoothstepInnerOuter { inner_degrees: v }),
+            (Some(other), _) => {
+                return Err(self.field(
+                    f("spot_edge"),
+                    format!(
+                        "{:?}: expected \"gl_exponent\" (GL's), \"linear_inner_outer\" or \"smoothstep_inner_outer\"",
+                        shorten(other)
+                    ),
+                ))
+            }
+        };
+        if let Some(edge) = edge {
+            gl.light(index, LightParam::SpotEdge(edge))
+                .map_err(self.state(f("spot_inner_cutoff")))?;
+            let outer = gl.lighting.lights[index].spot_cutoff;
+            if let Some(inner) = edge.inner_degrees().filter(|&i| outer != 180.0 && i > outer) {
+                return Err(self.field(
+                    f("spot_inner_cutoff"),
+                    format!("{inner}: wider than the outer cone, spot_cutoff = {outer}: expected an inner angle <= {outer}"),
+                ));
+            }
+        }
+        let attenuation = match (l.attenuation.as_deref(), l.range) {
+            (None | Some("gl_k012"), None) => None,
+            (None | Some("gl_k012"), Some(r)) => {
+                return Err(self.field(
+                    f("range"),
+                    format!("{r}: glTF's range, but the light has GL's attenuation: expected attenuation = \"gltf_inverse_square\" with it"),
+                ))
+            }
+            (Some("gltf_inverse_square"), range) => Some(Attenuation::GltfInverseSquare { range }),
+            (Some(other), _) => {
+                return Err(self.field(
+                    f("attenuation"),
+                    format!(
+                        "{:?}: expected \"gl_k012\" (GL's) or \"gltf_inverse_square\"",
+                        shorten(other)
+                    ),
+                ))
+            }
+        };
+        if let Some(a) = attenuation {
+            gl.light(index, LightParam::Attenuation(a))
+                .map_err(self.state(f("range")))?;
+        }
         Ok(())
     }
 
@@ -918,7 +1009,7 @@ impl Builder<'_> {
                 gl.light(index, param(v)).map_err(self.state(f(name)))?;
             }
         }
-        Ok(())
+        self.light_variants(gl, field, index, l)
     }
 
     fn material(&self, field: &str, m: &MaterialSpec) -> Result<Material, SceneError> {

@@ -131,7 +131,7 @@ fn draw_block_matches_the_glsl_in_every_stage() {
         let draw = r.struct_id("Draw");
         let want = rust_offsets!(DrawBlock: modelview, projection, normal_matrix, front, back, a_cs,
             current_color, light_count, lighting, v_bs, t_bs, separate_specular, color_material,
-            color_material_front, color_material_back, color_material_mode, normalize, rescale, lights,
+            color_material_front, color_material_back, color_material_mode, normalize, rescale, specular_model, lights,
             texture_matrix, c_c, tex_env_mode);
         assert_eq!(r.members(draw), want, "{stage}: Draw block offsets");
 
@@ -140,8 +140,7 @@ fn draw_block_matches_the_glsl_in_every_stage() {
         assert_eq!(r.members(material), want, "{stage}: Material offsets");
 
         let light = r.struct_id("Light");
-        let want =
-            rust_offsets!(GpuLight: a_cli, d_cli, s_cli, P_pli, s_dli, s_rli, c_rli, cos_c_rli, k0, k1, k2);
+        let want = rust_offsets!(GpuLight: a_cli, d_cli, s_cli, P_pli, s_dli, s_rli, c_rli, cos_c_rli, k0, k1, k2, spot_edge, cos_inner, falloff, range);
         assert_eq!(r.members(light), want, "{stage}: Light offsets");
 
         // The lights array: its stride is the Rust struct's size.

@@ -109,7 +109,7 @@ fn the_key_keeps_only_what_changes_the_lighting() {
     unlit_with_lights.lighting = false;
     unlit_with_lights.model.local_viewer = true;
     assert_eq!(key(&unlit_with_lights), key(&unlit()));
-    assert_eq!(key(&unlit()).values, [0; 9]);
+    assert_eq!(key(&unlit()).values, [0; ffvk::gpu::layout::SPEC_CONSTANT_COUNT]);
 
     // Without lights the viewer and color control cannot matter; two-sided still does (the
     // back material's emission and ambient).
