@@ -464,3 +464,91 @@ pub fn pixel_terms(
         color: color_sum(textured_pri, c_sec),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gl::state::GlState;
+
+    /// Unit vectors in the upper half space, from a small deterministic generator.
+    fn directions(count: usize) -> Vec<DVec3> {
+        let mut x = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = move || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x >> 11) as f64 / (1u64 << 53) as f64
+        };
+        (0..count)
+            .map(|_| unit(DVec3::new(next() * 2.0 - 1.0, next() * 2.0 - 1.0, next() + 0.05)))
+            .collect()
+    }
+
+    /// The angles of r_i (Phong) and ĥ_i (GL) for light `l`, viewer `v`, normal `n`.
+    fn angles(n: DVec3, l: DVec3, v: DVec3) -> (f64, f64) {
+        let r = 2.0 * n.dot(l) * n - l;
+        (
+            r.dot(v).clamp(-1.0, 1.0).acos(),
+            n.dot(unit(l + v)).clamp(-1.0, 1.0).acos(),
+        )
+    }
+
+    #[test]
+    fn the_halfway_angle_is_half_the_reflection_angle_for_coplanar_vectors_and_more_otherwise() {
+        let n = DVec3::Z;
+        for (i, l) in directions(200).into_iter().enumerate() {
+            // A viewer in the plane of n and l, and one out of it.
+            let in_plane = unit(DVec3::new(-l.x * 0.3, -l.y * 0.3, 1.0));
+            let (reflect, halfway) = angles(n, l, in_plane);
+            assert!(
+                (reflect - 2.0 * halfway).abs() < 1e-9,
+                "{i}: {reflect} vs 2 × {halfway}"
+            );
+            let out = unit(DVec3::new(l.y, -l.x, 0.5));
+            let (reflect, halfway) = angles(n, l, out);
+            assert!(halfway >= reflect / 2.0 - 1e-12, "{i}: {halfway} < {reflect} / 2");
+        }
+    }
+
+    #[test]
+    fn a_soft_edge_tends_to_the_hard_cutoff_as_the_inner_cone_meets_the_outer() {
+        let outer = 20.0f32;
+        let cos_outer = cos_cutoff(outer);
+        for k in 0..=60 {
+            // Angles from 15° to 25°, across the outer cone.
+            let theta = 15.0 + k as f64 / 6.0;
+            let c = theta.to_radians().cos();
+            let hard = if c >= cos_outer { 1.0 } else { 0.0 };
+            for inner in [outer, outer - 1e-4] {
+                let cos_inner = cos_cutoff(inner);
+                let linear = soft_edge(c, cos_outer, cos_inner, |t| t);
+                let smooth = soft_edge(c, cos_outer, cos_inner, |t| t * t * (3.0 - 2.0 * t));
+                // Within 0.01° of the outer cone the ramp is still a ramp.
+                if (theta - outer as f64).abs() > 0.01 || inner == outer {
+                    assert_eq!((linear, smooth), (hard, hard), "θ {theta}, inner {inner}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_gltf_falloff_is_the_inverse_square_windowed_to_zero_at_the_range() {
+        assert_eq!(gltf_inverse_square(2.0, None), 0.25);
+        assert_eq!(gltf_inverse_square(2.0, Some(4.0)), (1.0 - 1.0 / 16.0) / 4.0);
+        assert_eq!(gltf_inverse_square(4.0, Some(4.0)), 0.0);
+        assert_eq!(gltf_inverse_square(5.0, Some(4.0)), 0.0);
+        // Through the equation: a light at distance 2 with range 4.
+        let mut gl = GlState::new();
+        gl.lighting.lights[0].enabled = true;
+        gl.lighting.lights[0].position = glam::Vec4::new(0.0, 0.0, 2.0, 1.0);
+        gl.lighting.lights[0].attenuation = Attenuation::GltfInverseSquare { range: Some(4.0) };
+        let lit = light(
+            &gl.lighting,
+            DVec4::new(0.0, 0.0, 0.0, 1.0),
+            DVec3::Z,
+            &Material::default(),
+        );
+        assert_eq!(lit.lights[0].distance, Some(2.0));
+        assert!((lit.lights[0].att_i - 15.0 / 64.0).abs() < 1e-15);
+    }
+}

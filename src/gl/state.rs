@@ -190,8 +190,9 @@ pub enum SpecularModel {
     /// Phong's original: f_i (r_i ⊙ v)^s_rm, r_i = 2 (n · VP_pli) n − VP_pli the reflection of
     /// the direction to the light about n, v the direction to the viewer ((0, 0, 1) unless
     /// the viewer is local), with the same clamping of negative products and the same f_i.
-    /// For the same exponent its highlight is wider: for coplanar vectors the halfway angle
-    /// is half of r_i's.
+    /// For the same exponent its highlight is narrower than GL's: for coplanar vectors the
+    /// halfway angle is half of r_i's (larger otherwise), so (n ⊙ ĥ_i)^s_rm falls off more
+    /// slowly (about four times the exponent gives GL's term a similar highlight).
     PhongReflect,
 }
 

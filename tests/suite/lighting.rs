@@ -242,6 +242,44 @@ scenes! {
         gl.light(0, LightParam::SpotDirection(Vec3::new(0.0, 0.0, 1.0)))?;
         gl.light(0, LightParam::SpotCutoff(60.0))
     }));
+    phong_reflect_infinite_viewer => sphere_scene(with(specular_scene(), |gl| {
+        gl.light_model(LightModelParam::SpecularModel(SpecularModel::PhongReflect))
+    }));
+    phong_reflect_local_viewer_separate_specular => sphere_scene(with(specular_scene(), |gl| {
+        gl.light_model(LightModelParam::SpecularModel(SpecularModel::PhongReflect))?;
+        gl.light_model(LightModelParam::LocalViewer(true))?;
+        gl.light_model(LightModelParam::ColorControl(ColorControl::SeparateSpecularColor))
+    }));
+    phong_reflect_light_behind_keeps_f_i => sphere_scene(with(dark(), |gl| {
+        // r_i can point at the viewer while the light is behind the surface: f_i removes it.
+        gl.light_model(LightModelParam::SpecularModel(SpecularModel::PhongReflect))?;
+        gl.enable(Cap::Light(0))?;
+        gl.light(0, LightParam::Diffuse(Vec4::ZERO))?;
+        gl.light(0, LightParam::Position(Vec4::new(0.0, 0.2, -1.0, 0.0)))?;
+        gl.material(Face::Front, MaterialParam::Specular(Vec4::ONE))?;
+        gl.material(Face::Front, MaterialParam::Shininess(1.0))
+    }));
+    spot_linear_inner_outer => sphere_scene(soft_spot(SpotEdge::LinearInnerOuter { inner_degrees: 10.0 }));
+    spot_smoothstep_inner_outer => sphere_scene(soft_spot(SpotEdge::SmoothstepInnerOuter { inner_degrees: 10.0 }));
+    spot_soft_edge_with_equal_cones_is_a_hard_cutoff => sphere_scene(with(soft_spot(SpotEdge::LinearInnerOuter { inner_degrees: 12.0 }), |gl| gl.light(0, LightParam::SpotCutoff(12.0))));
+    gltf_inverse_square_without_range => sphere_scene(gltf_point(None));
+    gltf_inverse_square_with_a_range_across_the_sphere => sphere_scene(gltf_point(Some(3.2)));
+    gl_and_variant_lights_in_one_draw => sphere_scene(with(soft_spot(SpotEdge::SmoothstepInnerOuter { inner_degrees: 5.0 }), |gl| {
+        // Light 1 keeps GL's edge and falloff beside light 0's soft edge and light 2's glTF
+        // falloff: each light reads its own.
+        gl.light_model(LightModelParam::SpecularModel(SpecularModel::PhongReflect))?;
+        gl.enable(Cap::Light(1))?;
+        gl.light(1, LightParam::Diffuse(rgba(0.2, 0.4, 0.1, 1.0)))?;
+        gl.light(1, LightParam::Position(Vec4::new(-1.0, 0.5, -1.0, 1.0)))?;
+        gl.light(1, LightParam::SpotDirection(Vec3::new(1.0, -0.5, -2.0)))?;
+        gl.light(1, LightParam::SpotCutoff(40.0))?;
+        gl.light(1, LightParam::SpotExponent(4.0))?;
+        gl.light(1, LightParam::QuadraticAttenuation(0.3))?;
+        gl.enable(Cap::Light(2))?;
+        gl.light(2, LightParam::Diffuse(rgba(1.5, 0.5, 0.5, 1.0)))?;
+        gl.light(2, LightParam::Position(Vec4::new(1.2, -1.0, -1.5, 1.0)))?;
+        gl.light(2, LightParam::Attenuation(Attenuation::GltfInverseSquare { range: Some(2.5) }))
+    }));
     eight_mixed_lights => sphere_scene(eight_lights(dark()));
     sixteen_lights => sphere_scene(with(dark(), |gl| {
         for i in 0..MAX_LIGHTS {
@@ -328,6 +366,39 @@ fn spot_90(exponent: f32) -> Scene {
     }));
     scene.gl.lighting.normalize = true;
     scene
+}
+
+/// A spotlight at the eye aiming at the sphere, outer cone 25°, with `edge`; specular on so
+/// that the edge shapes the highlight too.
+fn soft_spot(edge: SpotEdge) -> GlState {
+    with(dark(), |gl| {
+        gl.enable(Cap::Light(0))?;
+        gl.light(0, LightParam::Position(Vec4::new(0.3, 0.2, 0.0, 1.0)))?;
+        gl.light(0, LightParam::SpotDirection(Vec3::new(-0.1, -0.05, -1.0)))?;
+        gl.light(0, LightParam::SpotCutoff(25.0))?;
+        gl.light(0, LightParam::SpotExponent(30.0))?;
+        gl.light(0, LightParam::SpotEdge(edge))?;
+        gl.material(Face::Front, MaterialParam::Specular(rgba(0.5, 0.5, 0.5, 1.0)))?;
+        gl.material(Face::Front, MaterialParam::Shininess(16.0))
+    })
+}
+
+/// A point light beside the sphere with glTF's inverse-square falloff (k0, k1 and k2 set to
+/// values that would change the image if they were read).
+fn gltf_point(range: Option<f32>) -> GlState {
+    with(dark(), |gl| {
+        gl.enable(Cap::Light(0))?;
+        gl.light(0, LightParam::Diffuse(rgba(3.0, 2.5, 2.0, 1.0)))?;
+        gl.light(0, LightParam::Position(Vec4::new(1.5, 1.0, -1.2, 1.0)))?;
+        gl.light(0, LightParam::ConstantAttenuation(5.0))?;
+        gl.light(0, LightParam::LinearAttenuation(2.0))?;
+        gl.light(
+            0,
+            LightParam::Attenuation(Attenuation::GltfInverseSquare { range }),
+        )?;
+        gl.material(Face::Front, MaterialParam::Specular(rgba(0.5, 0.5, 0.5, 1.0)))?;
+        gl.material(Face::Front, MaterialParam::Shininess(30.0))
+    })
 }
 
 fn specular_scene() -> GlState {
@@ -422,4 +493,74 @@ fn scaled(f: impl FnOnce(&mut GlState) -> Result<(), StateError>) -> Scene {
     // Uniform scale 0.6: without NORMALIZE or RESCALE_NORMAL normals grow by 1/0.6.
     scene.modelview *= Mat4::from_scale(Vec3::splat(0.6));
     scene
+}
+
+/// Renders `state` on the sphere scene with specialized pipelines, in vertex mode.
+fn sphere_image(state: GlState) -> RgbaImage {
+    render_variant(&sphere_scene(state.clone()), state.lighting, Specialize::Always)
+}
+
+#[test]
+fn a_soft_edge_with_equal_cones_draws_gls_hard_cutoff_exactly() {
+    for edge in [
+        SpotEdge::LinearInnerOuter { inner_degrees: 12.0 },
+        SpotEdge::SmoothstepInnerOuter { inner_degrees: 12.0 },
+    ] {
+        let soft = with(soft_spot(edge), |gl| gl.light(0, LightParam::SpotCutoff(12.0)));
+        let hard = with(soft.clone(), |gl| {
+            gl.light(0, LightParam::SpotEdge(SpotEdge::GlExponent))?;
+            gl.light(0, LightParam::SpotExponent(0.0))
+        });
+        let (a, b) = (sphere_image(soft), sphere_image(hard));
+        // The cutoff crosses the sphere: lit and unlit pixels both.
+        let lit = a.pixels().filter(|p| p.0[0] > 60).count();
+        assert!(lit > 200 && lit < 4000, "{} lit pixels", lit);
+        assert!(
+            a == b,
+            "{}: the soft edge with equal cones differs from GL's hard cutoff",
+            edge.name()
+        );
+    }
+}
+
+#[test]
+fn phong_reflect_equals_blinn_halfway_where_light_and_viewer_lie_on_the_normal() {
+    // A sheet facing the viewer (n = +z), the light along +z, the viewer at infinity on +z:
+    // r_i = ĥ_i = n, both factors are 1, the images are the same.
+    let state = |model| {
+        with(dark(), |gl| {
+            gl.light_model(LightModelParam::SpecularModel(model))?;
+            gl.enable(Cap::Light(0))?;
+            gl.light(0, LightParam::Position(Vec4::new(0.0, 0.0, 1.0, 0.0)))?;
+            gl.material(Face::Front, MaterialParam::Specular(rgba(0.6, 0.5, 0.4, 1.0)))?;
+            gl.material(Face::Front, MaterialParam::Shininess(50.0))
+        })
+    };
+    let flat = |gl: GlState| Scene {
+        mesh: grid(4, |_, _| Vec3::Z, |_, _| Vec4::ONE),
+        modelview: Mat4::from_translation(Vec3::new(0.0, 0.0, -3.0)),
+        projection: perspective(45.0, 1.0, 1.0, 10.0),
+        gl,
+    };
+    let [blinn, phong] = [SpecularModel::BlinnHalfway, SpecularModel::PhongReflect].map(|m| {
+        let s = flat(state(m));
+        render_variant(&s, s.gl.lighting, Specialize::Always)
+    });
+    assert!(blinn == phong);
+    // And on a sphere they differ: for the same exponent GL's halfway highlight is wider
+    // (its angle is half of r_i's), Phong's narrower (the specular term alone drawn).
+    let [blinn, phong] = [SpecularModel::BlinnHalfway, SpecularModel::PhongReflect].map(|m| {
+        sphere_image(with(state(m), |gl| {
+            gl.light_model(LightModelParam::Ambient(Vec4::ZERO))?;
+            gl.light(0, LightParam::Diffuse(Vec4::ZERO))?;
+            gl.light(0, LightParam::Position(Vec4::new(-1.0, 1.0, 1.0, 0.0)))
+        }))
+    });
+    let bright = |i: &RgbaImage| i.pixels().filter(|p| p.0[0] > 60).count();
+    assert!(
+        bright(&blinn) > 4 * bright(&phong),
+        "phong {} blinn {}",
+        bright(&phong),
+        bright(&blinn)
+    );
 }

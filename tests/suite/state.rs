@@ -312,3 +312,64 @@ fn states_that_would_light_with_nan_are_rejected_at_draw_time() {
         .unwrap();
     DrawBlock::new(&gl.lighting, Mat4::IDENTITY, Mat4::IDENTITY).unwrap();
 }
+
+#[test]
+fn the_lighting_variants_default_to_gls_and_refuse_impossible_cones_and_ranges() {
+    let gl = GlState::new();
+    assert_eq!(gl.lighting.model.specular_model, SpecularModel::BlinnHalfway);
+    for l in &gl.lighting.lights {
+        assert_eq!(
+            (l.spot_edge, l.attenuation),
+            (SpotEdge::GlExponent, Attenuation::GlK012)
+        );
+    }
+    let mut gl = GlState::new();
+    // An inner angle past 90°, or a range that is not positive, is refused at once and
+    // changes nothing.
+    let e = gl
+        .light(
+            2,
+            LightParam::SpotEdge(SpotEdge::LinearInnerOuter { inner_degrees: 95.0 }),
+        )
+        .unwrap_err();
+    assert!(
+        e.to_string().contains("95") && e.to_string().contains("[0, 90]"),
+        "{e}"
+    );
+    for range in [-1.0, 0.0, f32::NAN] {
+        let e = gl
+            .light(
+                2,
+                LightParam::Attenuation(Attenuation::GltfInverseSquare { range: Some(range) }),
+            )
+            .unwrap_err();
+        assert!(e.to_string().contains("range"), "{e}");
+    }
+    assert_eq!(gl.lighting.lights[2].spot_edge, SpotEdge::GlExponent);
+    assert_eq!(gl.lighting.lights[2].attenuation, Attenuation::GlK012);
+    // An inner cone wider than the outer may be set in either order; drawing refuses it,
+    // naming the light and both angles.
+    gl.light(
+        2,
+        LightParam::SpotEdge(SpotEdge::SmoothstepInnerOuter { inner_degrees: 30.0 }),
+    )
+    .unwrap();
+    gl.light(2, LightParam::SpotCutoff(20.0)).unwrap();
+    let e = gl.lighting.validate().unwrap_err();
+    assert_eq!(
+        e,
+        StateError::SpotCone {
+            light: 2,
+            inner: 30.0,
+            outer: 20.0
+        }
+    );
+    assert!(
+        e.to_string().starts_with(
+            "light 2: the spot edge's inner angle 30° is wider than its outer angle (GL_SPOT_CUTOFF) 20°"
+        ),
+        "{e}"
+    );
+    gl.light(2, LightParam::SpotCutoff(30.0)).unwrap();
+    assert!(gl.lighting.validate().is_ok());
+}
