@@ -4,8 +4,8 @@ use std::fmt::Write as _;
 
 use glam::{DVec3, DVec4};
 
-use crate::gl::state::{Face, LightingMode};
-use crate::reference::{self, Coverage, EyeVertex, Lit};
+use crate::gl::state::{Attenuation, Face, Light, LightingMode, SpecularModel, SpotEdge};
+use crate::reference::{self, Coverage, EyeVertex, LightTerms, Lit};
 use crate::scene::Scene;
 
 /// The surface at a pixel: which mesh and triangle, and where in it.
@@ -81,27 +81,73 @@ fn bytes(v: DVec4) -> String {
     format!("[{}, {}, {}, {}]", b(v.x), b(v.y), b(v.z), b(v.w))
 }
 
+/// How a light's att_i came about: the attenuation's name and its inputs.
+fn attenuation_terms(t: &LightTerms, l: &Light) -> String {
+    match (t.distance, t.attenuation) {
+        (None, _) => "directional, never attenuated".into(),
+        (Some(d), Attenuation::GlK012) => format!(
+            "gl_k012: 1 / (k0 + k1 d + k2 d²), k0 {} k1 {} k2 {} d {d:.4}",
+            l.constant_attenuation, l.linear_attenuation, l.quadratic_attenuation
+        ),
+        (Some(d), Attenuation::GltfInverseSquare { range: None }) => {
+            format!("gltf_inverse_square: 1 / d², d {d:.4}, no range")
+        }
+        (Some(d), Attenuation::GltfInverseSquare { range: Some(r) }) => {
+            format!("gltf_inverse_square: clamp(1 − (d / range)⁴, 0, 1) / d², d {d:.4}, range {r}")
+        }
+    }
+}
+
+/// How a light's spot_i came about: the edge's name and its inputs.
+fn spot_terms(t: &LightTerms, l: &Light) -> String {
+    let Some(c) = t.cos_spot else {
+        return "no cone (c_rli = 180)".into();
+    };
+    let outer = l.spot_cutoff;
+    match t.spot_edge {
+        SpotEdge::GlExponent => format!(
+            "gl_exponent: (cos θ)^s_rli inside c_rli, cos θ {c:.4}, c_rli {outer}°, s_rli {}",
+            l.spot_exponent
+        ),
+        SpotEdge::LinearInnerOuter { inner_degrees } => format!(
+            "linear_inner_outer: clamp((cos θ − cos outer) / (cos inner − cos outer), 0, 1), cos θ {c:.4}, outer {outer}°, inner {inner_degrees}°"
+        ),
+        SpotEdge::SmoothstepInnerOuter { inner_degrees } => format!(
+            "smoothstep_inner_outer: smoothstep(cos outer, cos inner, cos θ), cos θ {c:.4}, outer {outer}°, inner {inner_degrees}°"
+        ),
+    }
+}
+
 /// Writes the terms of one evaluation of the equation; `indices` are the GL indices of the
 /// enabled lights, in the order the sum runs.
-fn terms(out: &mut String, indent: &str, lit: &Lit, indices: &[usize]) {
+fn terms(out: &mut String, indent: &str, lit: &Lit, indices: &[usize], lights: &[Light]) {
     let _ = writeln!(out, "{indent}e_cm (emission)            {}", rgb(lit.emission));
     let _ = writeln!(
         out,
         "{indent}a_cm * a_cs (scene ambient) {}",
         rgb(lit.scene_ambient)
     );
+    let specular = match lit.specular_model {
+        SpecularModel::BlinnHalfway => "f_i (n ⊙ ĥ_i)^s_rm s_cm * s_cli",
+        SpecularModel::PhongReflect => "f_i (r_i ⊙ v)^s_rm s_cm * s_cli",
+    };
     for (i, t) in indices.iter().zip(&lit.lights) {
+        let l = &lights[*i];
         let _ = writeln!(
             out,
             "{indent}GL_LIGHT{i}: att_i {:.4}  spot_i {:.4}  f_i {}",
             t.att_i, t.spot_i, t.f_i
         );
+        let _ = writeln!(out, "{indent}  att_i  {}", attenuation_terms(t, l));
+        let _ = writeln!(out, "{indent}  spot_i {}", spot_terms(t, l));
         let _ = writeln!(out, "{indent}  a_cm * a_cli               {}", rgb(t.ambient));
         let _ = writeln!(out, "{indent}  (n ⊙ VP_pli) d_cm * d_cli  {}", rgb(t.diffuse));
         let _ = writeln!(
             out,
-            "{indent}  f_i (n ⊙ ĥ_i)^s_rm s_cm * s_cli {}",
-            rgb(t.specular)
+            "{indent}  {specular} {}  ({}, factor {:.4})",
+            rgb(t.specular),
+            lit.specular_model.name(),
+            t.specular_factor
         );
     }
     let _ = writeln!(out, "{indent}c_pri (clamped)            {}", rgba(lit.c_pri));
@@ -203,7 +249,7 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
                     rgba(e.color)
                 );
                 if state.lighting {
-                    terms(&mut out, "  ", &lit, &indices);
+                    terms(&mut out, "  ", &lit, &indices, &state.lights);
                 }
                 let (p, s) = reference::vertex_color(&state, e, back);
                 pri += p * weight;
@@ -240,6 +286,7 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
                     "  ",
                     &reference::light_face(&state, p, n, c, back),
                     &indices,
+                    &state.lights,
                 );
             }
         }

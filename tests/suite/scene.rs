@@ -400,3 +400,91 @@ fn gltf_node_and_mesh_selection_and_hierarchy() {
     let m = load("mesh = \"square\"").unwrap_err().to_string();
     contains_all(&m, &["no mesh named \"square\""]);
 }
+
+#[test]
+fn lighting_variants_in_scene_files_name_the_light_field_and_values_when_wrong() {
+    let light = |extra: &str| format!("[[lights]]\nposition = [0.0, 0.0, 2.0, 1.0]\n{extra}\n{MINIMAL}");
+    let m = load_err(
+        "inner_wider",
+        &light("spot_cutoff = 20\nspot_edge = \"linear_inner_outer\"\nspot_inner_cutoff = 30"),
+    );
+    contains_all(
+        &m,
+        &["lights[0].spot_inner_cutoff", "30", "spot_cutoff = 20", "<= 20"],
+    );
+    let m = load_err(
+        "inner_missing",
+        &light("spot_cutoff = 20\nspot_edge = \"smoothstep_inner_outer\""),
+    );
+    contains_all(
+        &m,
+        &["lights[0].spot_inner_cutoff", "missing", "smoothstep_inner_outer"],
+    );
+    let m = load_err(
+        "inner_without_edge",
+        &light("spot_cutoff = 20\nspot_inner_cutoff = 5"),
+    );
+    contains_all(&m, &["lights[0].spot_inner_cutoff", "5", "spot_edge"]);
+    let m = load_err(
+        "inner_past_90",
+        &light("spot_edge = \"linear_inner_outer\"\nspot_inner_cutoff = 95"),
+    );
+    contains_all(&m, &["lights[0].spot_inner_cutoff", "95", "[0, 90]"]);
+    let m = load_err("edge_word", &light("spot_edge = \"soft\""));
+    contains_all(&m, &["lights[0].spot_edge", "\"soft\"", "linear_inner_outer"]);
+    let m = load_err(
+        "range_negative",
+        &light("attenuation = \"gltf_inverse_square\"\nrange = -1"),
+    );
+    contains_all(&m, &["lights[0].range", "-1", "> 0"]);
+    let m = load_err("range_without_gltf", &light("range = 3"));
+    contains_all(&m, &["lights[0].range", "3", "gltf_inverse_square"]);
+    let m = load_err("attenuation_word", &light("attenuation = \"physical\""));
+    contains_all(&m, &["lights[0].attenuation", "\"physical\"", "gl_k012"]);
+    let m = load_err(
+        "specular_word",
+        &format!("[light_model]\nspecular_model = \"phong\"\n{MINIMAL}"),
+    );
+    contains_all(&m, &["light_model.specular_model", "\"phong\"", "phong_reflect"]);
+}
+
+#[test]
+fn explain_names_each_variant_and_its_terms_and_agrees_with_the_gpu() {
+    let dir = scratch("variants_explain");
+    let scene = write(
+        &dir,
+        "variants.toml",
+        "[image]\nsize = [48, 48]\nlighting_mode = \"fragment\"\n\
+         [camera]\neye = [0.0, 0.0, 3.0]\n\
+         [light_model]\nspecular_model = \"phong_reflect\"\n\
+         [[lights]]\nposition = [0.3, 0.3, 2.0, 1.0]\nspot_direction = [-0.1, -0.1, -1.0]\nspot_cutoff = 20\n\
+         spot_edge = \"smoothstep_inner_outer\"\nspot_inner_cutoff = 4\n\
+         attenuation = \"gltf_inverse_square\"\nrange = 4.5\ndiffuse = [3.0, 3.0, 3.0]\n\
+         [material]\npreset = \"gold\"\n\
+         [[meshes]]\nbuiltin = \"sphere\"\nlevel = 24\n",
+    );
+    let (ok, stdout, stderr) = ffvk(&["explain", &scene.display().to_string(), "--pixel", "22,22"]);
+    assert!(ok, "{stderr}");
+    contains_all(
+        &stdout,
+        &[
+            "att_i  gltf_inverse_square: clamp(1 − (d / range)⁴, 0, 1) / d²",
+            "range 4.5",
+            "spot_i smoothstep_inner_outer: smoothstep(cos outer, cos inner, cos θ)",
+            "outer 20°, inner 4°",
+            "f_i (r_i ⊙ v)^s_rm s_cm * s_cli",
+            "(phong_reflect, factor",
+        ],
+    );
+    let final_line = stdout.lines().find(|l| l.starts_with("final color")).unwrap();
+    let drew_line = stdout.lines().find(|l| l.contains(" drew ")).unwrap();
+    let nums = |s: &str| -> Vec<i32> {
+        let inner = &s[s.rfind('[').unwrap() + 1..s.rfind(']').unwrap()];
+        inner.split(',').map(|v| v.trim().parse().unwrap()).collect()
+    };
+    let (a, b) = (nums(final_line), nums(drew_line));
+    assert!(
+        a.iter().zip(&b).all(|(x, y)| (x - y).abs() <= 1),
+        "reference {a:?} vs GPU {b:?}"
+    );
+}
