@@ -31,7 +31,9 @@ fn destination(path: &Path) -> io::Result<PathBuf> {
             "exists and is not a regular file: expected a file or a new path",
         )),
         Err(e) if e.kind() == io::ErrorKind::NotFound => {
-            if fs::symlink_metadata(path).is_ok() {
+            // Only a link counts: a file another writer renamed into place since the
+            // metadata call is replaced like any other.
+            if fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_symlink()) {
                 return Err(refuse(
                     path,
                     "is a dangling symbolic link: expected a file or a new path",
