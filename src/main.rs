@@ -8,6 +8,7 @@ use ffvk::gl::state::LightingMode;
 use ffvk::images::compare::{self, Tolerance};
 use ffvk::images::save_png;
 use ffvk::scene::direct::{is_gltf, CameraChoice, DirectOptions, LightChoice};
+use ffvk::scene::gltf::GltfLights;
 use ffvk::scene::render_scene;
 use ffvk::tools::regress;
 use ffvk::vk::Validation;
@@ -207,6 +208,11 @@ struct GltfArgs {
     /// from the camera) or "auto" (the file's, else the headlight; the default).
     #[arg(long, value_parser = ["auto", "file", "headlight"])]
     lights: Option<String>,
+    /// glTF files only: how the file's lights are drawn: "gl" (GL's light for each, the
+    /// default), "exact" (glTF's inverse-square falloff with its range, and its smooth cone)
+    /// or "off" (left out); "true" and "false" are "gl" and "off".
+    #[arg(long, value_name = "off|gl|exact", value_parser = parse_gltf_lights)]
+    gltf_lights: Option<GltfLights>,
     /// glTF files only: GL light color per lux or candela, or "auto" (the default: the lights
     /// together light the scene's center with illuminance 1).
     #[arg(long, value_parser = parse_exposure)]
@@ -217,6 +223,11 @@ struct GltfArgs {
 enum Exposure {
     Auto,
     Scale(f32),
+}
+
+fn parse_gltf_lights(s: &str) -> Result<GltfLights, String> {
+    GltfLights::parse(s)
+        .ok_or_else(|| format!("{s:?}: expected \"off\", \"gl\" or \"exact\" (or true/false)"))
 }
 
 fn parse_exposure(s: &str) -> Result<Exposure, String> {
@@ -231,7 +242,10 @@ fn parse_exposure(s: &str) -> Result<Exposure, String> {
 
 impl GltfArgs {
     fn given(&self) -> bool {
-        self.camera.is_some() || self.lights.is_some() || self.exposure.is_some()
+        self.camera.is_some()
+            || self.lights.is_some()
+            || self.gltf_lights.is_some()
+            || self.exposure.is_some()
     }
 
     fn options(&self) -> DirectOptions {
@@ -246,6 +260,7 @@ impl GltfArgs {
                 Some("headlight") => LightChoice::Headlight,
                 _ => LightChoice::Auto,
             },
+            gltf_lights: self.gltf_lights.unwrap_or_default(),
             exposure: match self.exposure {
                 Some(Exposure::Scale(x)) => Some(x),
                 _ => None,
@@ -259,8 +274,8 @@ impl GltfArgs {
         if self.given() && !inputs.iter().any(|p| is_gltf(p)) {
             return Err(ffvk::tools::Error::Path {
                 path: inputs[0].clone(),
-                problem: "--camera, --lights and --exposure apply to .gltf and .glb inputs: expected one, \
-                          or the camera, lights and gltf_exposure set in the scene file",
+                problem: "--camera, --lights, --gltf-lights and --exposure apply to .gltf and .glb inputs: expected \
+                          one, or the camera, lights, gltf_lights and gltf_exposure set in the scene file",
             });
         }
         Ok(())

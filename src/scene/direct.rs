@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use glam::{Mat4, Vec3};
 
-use super::gltf::{CameraProjection, LoadError, Loaded, PlacedCamera, Textures};
+use super::gltf::{CameraProjection, GltfLights, LoadError, Loaded, PlacedCamera, Textures};
 use super::meaning::world_bounds;
 use super::{shorten, Limits, MeshBudget, Scene, SceneError, SceneErrorKind, MAX_SIZE};
 
@@ -40,6 +40,10 @@ pub enum LightChoice {
 pub struct DirectOptions {
     pub camera: CameraChoice,
     pub lights: LightChoice,
+    /// How the file's lights are drawn when they are: GL's mapping (the default) or glTF's
+    /// own falloff and cones. [`GltfLights::Off`] leaves them out, as
+    /// [`LightChoice::Headlight`] does.
+    pub gltf_lights: GltfLights,
     /// GL light color per lux or candela; `None` is "auto" (see
     /// [`auto_exposure`](super::auto_exposure)).
     pub exposure: Option<f32>,
@@ -129,10 +133,16 @@ pub fn from_gltf(
         }
     };
 
-    let headlight = match options.lights {
-        LightChoice::Headlight => true,
-        LightChoice::File => false,
-        LightChoice::Auto => loaded.lights.is_empty(),
+    let headlight = match (options.lights, options.gltf_lights) {
+        (LightChoice::Headlight, _) => true,
+        (LightChoice::File, _) => false,
+        (LightChoice::Auto, GltfLights::Off) => true,
+        (LightChoice::Auto, _) => loaded.lights.is_empty(),
+    };
+    let mapping = match (headlight, options.gltf_lights) {
+        (true, _) => GltfLights::Off,
+        (false, GltfLights::Off) => GltfLights::Off,
+        (false, m) => m,
     };
     let exposure = match options.exposure {
         Some(x) => format!("{x}"),
@@ -152,14 +162,15 @@ pub fn from_gltf(
             .to_owned()
     } else {
         format!(
-            "lights: {} KHR_lights_punctual light{} from the file, gltf_exposure = {exposure}",
+            "lights: {} KHR_lights_punctual light{} from the file, gltf_lights = \"{}\", gltf_exposure = {exposure}",
             loaded.lights.len(),
-            if loaded.lights.len() == 1 { "" } else { "s" }
+            if loaded.lights.len() == 1 { "" } else { "s" },
+            mapping.name()
         )
     });
     choices.push("glTF's meaning (gltf_defaults = true): see the README's \"glTF files\"".to_owned());
 
-    let toml = |gltf_ref: &str| scene_toml(path, gltf_ref, &view, headlight, &exposure, &choices);
+    let toml = |gltf_ref: &str| scene_toml(path, gltf_ref, &view, headlight, mapping, &exposure, &choices);
     let base = path.parent().unwrap_or(Path::new("."));
     let name = path
         .file_name()
@@ -354,6 +365,7 @@ fn scene_toml(
     gltf_ref: &str,
     view: &View,
     headlight: bool,
+    mapping: GltfLights,
     exposure: &str,
     choices: &[String],
 ) -> String {
@@ -366,7 +378,11 @@ fn scene_toml(
         t,
         "gltf_defaults = true   # glTF's meaning: see the README's \"glTF files\""
     );
-    let _ = writeln!(t, "gltf_lights = {}", !headlight);
+    let _ = writeln!(
+        t,
+        "gltf_lights = \"{}\"   # the file's lights: \"off\", \"gl\" (GL's light each) or \"exact\" (glTF's falloff and cones)",
+        mapping.name()
+    );
     let _ = writeln!(
         t,
         "gltf_exposure = {exposure}   # GL light color per lux or candela, or \"auto\""

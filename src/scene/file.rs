@@ -28,14 +28,23 @@ pub(super) struct SceneFile {
     pub(super) normalize: Option<bool>,
     #[serde(default)]
     pub(super) rescale_normal: bool,
-    /// Whether KHR_lights_punctual lights of the glTF files are added after `lights`.
-    pub(super) gltf_lights: Option<bool>,
+    /// How the KHR_lights_punctual lights of the glTF files are added after `lights`:
+    /// "off", "gl" or "exact" (true and false as "gl" and "off").
+    pub(super) gltf_lights: Option<GltfLightsSpec>,
     /// glTF's meaning for the glTF meshes (see `meaning.rs`) instead of GL's defaults.
     pub(super) gltf_defaults: Option<bool>,
     /// GL light color per glTF light unit (lux, candela), or "auto".
     pub(super) gltf_exposure: Option<ExposureSpec>,
     #[serde(default)]
     pub(super) meshes: Vec<MeshSpec>,
+}
+
+/// `gltf_lights`: a word, or a boolean as earlier versions wrote.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(untagged)]
+pub(super) enum GltfLightsSpec {
+    Bool(bool),
+    Word(String),
 }
 
 /// `gltf_exposure`: a number, or a word (only "auto" is one).

@@ -18,7 +18,7 @@ use glam::{EulerRot, Mat4, Quat, Vec3, Vec4};
 use self::file::{
     CameraSpec, ColorMaterialSpec, LightModelSpec, LightSpec, MaterialSpec, MeshSpec, SceneFile,
 };
-use self::gltf::{LoadError, PunctualLight};
+use self::gltf::{GltfLights, LoadError, PunctualLight};
 pub use self::meaning::{auto_exposure, GltfMeaning};
 pub use self::texture::MeshTexture;
 use crate::gl::presets;
@@ -582,10 +582,14 @@ impl Builder<'_> {
                 });
             }
         }
-        if !gltf_lights.is_empty() && file.gltf_lights.unwrap_or(true) {
+        let mapping = self.gltf_lights(&file)?;
+        if !gltf_lights.is_empty() && mapping != GltfLights::Off {
             let exposure = Builder::exposure(exposure_spec, &gltf_lights, &meshes, &mut notes);
             for (f, light, model) in &gltf_lights {
-                let mut gl_light = self::gltf::gl_light(light);
+                let mut gl_light = match mapping {
+                    GltfLights::Exact => self::gltf::exact_light(light),
+                    _ => self::gltf::gl_light(light),
+                };
                 gl_light.diffuse = (gl_light.diffuse.truncate() * exposure).extend(1.0);
                 gl_light.specular = gl_light.diffuse;
                 // World-space light under the scene's model transform.
@@ -629,6 +633,25 @@ impl Builder<'_> {
             warnings,
             notes,
         })
+    }
+
+    /// `gltf_lights` checked: GL's mapping unless the file says otherwise.
+    fn gltf_lights(&self, file: &SceneFile) -> Result<GltfLights, SceneError> {
+        use self::file::GltfLightsSpec;
+        match &file.gltf_lights {
+            None => Ok(GltfLights::Gl),
+            Some(GltfLightsSpec::Bool(true)) => Ok(GltfLights::Gl),
+            Some(GltfLightsSpec::Bool(false)) => Ok(GltfLights::Off),
+            Some(GltfLightsSpec::Word(w)) => GltfLights::parse(w).ok_or_else(|| {
+                self.field(
+                    "gltf_lights",
+                    format!(
+                        "{:?}: expected \"off\", \"gl\" (GL's light for each glTF light, the default) or \"exact\" (glTF's falloff and cones), or true/false",
+                        shorten(w)
+                    ),
+                )
+            }),
+        }
     }
 
     /// `gltf_exposure` checked: `Some(scale)`, or `None` for "auto" (the default under glTF's

@@ -353,3 +353,67 @@ fn ffvk_render_and_scene_take_a_gltf_file_and_agree() {
         "{err}"
     );
 }
+
+#[test]
+fn gltf_lights_exact_draws_gltfs_own_falloff_and_cone_and_gl_stays_the_default() {
+    use ffvk::gl::state::{Attenuation, SpotEdge};
+    use ffvk::scene::gltf::GltfLights;
+    let with = |mapping| {
+        direct(
+            "lamp.glb",
+            DirectOptions {
+                gltf_lights: mapping,
+                ..small()
+            },
+        )
+    };
+    let lit = |scene: &Scene| {
+        scene
+            .state
+            .lights
+            .iter()
+            .filter(|l| l.enabled)
+            .copied()
+            .collect::<Vec<_>>()
+    };
+    // GL's mapping, the default: GL's attenuation and edge everywhere.
+    let gl = with(GltfLights::Gl);
+    assert_eq!(lit(&gl), lit(&direct("lamp.glb", small())));
+    assert!(lit(&gl)
+        .iter()
+        .all(|l| l.attenuation == Attenuation::GlK012 && l.spot_edge == SpotEdge::GlExponent));
+    // Exact: the point and the spot fall off as 1 / d² (no range in the file), the spot's
+    // edge is smoothstep from its inner cone (0.3 rad) to its outer (0.6 rad = the cutoff).
+    let exact = with(GltfLights::Exact);
+    let lights = lit(&exact);
+    assert_eq!(lights.len(), 3);
+    let positional: Vec<_> = lights.iter().filter(|l| l.position.w != 0.0).collect();
+    assert_eq!(positional.len(), 2);
+    assert!(positional
+        .iter()
+        .all(|l| l.attenuation == Attenuation::GltfInverseSquare { range: None }));
+    let spot = lights.iter().find(|l| l.spot_cutoff != 180.0).unwrap();
+    assert!((spot.spot_cutoff - 0.6f32.to_degrees()).abs() < 1e-4);
+    match spot.spot_edge {
+        SpotEdge::SmoothstepInnerOuter { inner_degrees } => {
+            assert!((inner_degrees - 0.3f32.to_degrees()).abs() < 1e-4)
+        }
+        other => panic!("{other:?}"),
+    }
+    // The same colors as GL's mapping (the same exposure).
+    for (a, b) in lit(&gl).iter().zip(&lights) {
+        assert_eq!(a.diffuse, b.diffuse);
+    }
+    // Off: the file's lights left out, the headlight instead.
+    let off = with(GltfLights::Off);
+    assert_eq!(lit(&off).len(), 1);
+    assert_eq!(lit(&off)[0].position.w, 0.0);
+    // The two images differ.
+    let mut r = renderer();
+    let (a, b) = (
+        render_scene(&mut r, &gl, None).unwrap(),
+        render_scene(&mut r, &exact, None).unwrap(),
+    );
+    finish(r);
+    assert!(a != b);
+}

@@ -446,6 +446,20 @@ fn lighting_variants_in_scene_files_name_the_light_field_and_values_when_wrong()
         &format!("[light_model]\nspecular_model = \"phong\"\n{MINIMAL}"),
     );
     contains_all(&m, &["light_model.specular_model", "\"phong\"", "phong_reflect"]);
+    let m = load_err(
+        "gltf_lights_word",
+        &format!("gltf_lights = \"physical\"\n{MINIMAL}"),
+    );
+    contains_all(
+        &m,
+        &[
+            "gltf_lights",
+            "\"physical\"",
+            "\"off\", \"gl\"",
+            "\"exact\"",
+            "true/false",
+        ],
+    );
 }
 
 #[test]

@@ -2,7 +2,7 @@
 //! fixed-function light ([`gl_light`]).
 
 use super::Context;
-use crate::gl::state::Light;
+use crate::gl::state::{Attenuation, Light, SpotEdge};
 use glam::{Mat4, Vec3, Vec4};
 
 /// A KHR_lights_punctual light type. Cone angles are in radians from the spot axis.
@@ -99,6 +99,57 @@ pub fn gl_light(light: &PunctualLight) -> Light {
         gl.spot_direction = w.transform_vector3(Vec3::NEG_Z).normalize_or(Vec3::NEG_Z);
         gl.spot_cutoff = outer_cone.to_degrees().clamp(0.0, 90.0);
         gl.spot_exponent = spot_exponent(inner_cone, outer_cone);
+    }
+    gl
+}
+
+/// How a scene draws the KHR_lights_punctual lights of its glTF files (`gltf_lights`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum GltfLights {
+    /// Left out.
+    Off,
+    /// Mapped onto GL's light ([`gl_light`]): GL's 1 / (1 + d²) attenuation and a spot
+    /// exponent for the cone. The default.
+    #[default]
+    Gl,
+    /// glTF's own falloff ([`exact_light`]): inverse square with the range window, and the
+    /// smooth inner/outer cone (ffvk's lighting variants).
+    Exact,
+}
+
+impl GltfLights {
+    /// The word scene files and the command line use.
+    pub fn name(self) -> &'static str {
+        match self {
+            GltfLights::Off => "off",
+            GltfLights::Gl => "gl",
+            GltfLights::Exact => "exact",
+        }
+    }
+
+    /// Reads "off", "gl", "exact", or "true" (gl) and "false" (off) as earlier versions wrote.
+    pub fn parse(word: &str) -> Option<GltfLights> {
+        match word {
+            "off" | "false" => Some(GltfLights::Off),
+            "gl" | "true" => Some(GltfLights::Gl),
+            "exact" => Some(GltfLights::Exact),
+            _ => None,
+        }
+    }
+}
+
+/// [`gl_light`] with glTF's own falloff instead of GL's: attenuation
+/// [`Attenuation::GltfInverseSquare`] with the light's range (1 / d², the range window), and
+/// for a spot [`SpotEdge::SmoothstepInnerOuter`] between the inner and the outer cone (the
+/// outer as `GL_SPOT_CUTOFF`); color, position and direction as [`gl_light`] sets them.
+pub fn exact_light(light: &PunctualLight) -> Light {
+    let mut gl = gl_light(light);
+    if light.kind != LightKind::Directional {
+        gl.attenuation = Attenuation::GltfInverseSquare { range: light.range };
+    }
+    if let LightKind::Spot { inner_cone, .. } = light.kind {
+        let inner = inner_cone.to_degrees().clamp(0.0, gl.spot_cutoff);
+        gl.spot_edge = SpotEdge::SmoothstepInnerOuter { inner_degrees: inner };
     }
     gl
 }

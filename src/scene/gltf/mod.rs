@@ -27,7 +27,7 @@ mod values;
 pub mod write;
 
 pub use cameras::{CameraProjection, PlacedCamera};
-pub use lights::{gl_light, spot_exponent, LightKind, PunctualLight};
+pub use lights::{exact_light, gl_light, spot_exponent, GltfLights, LightKind, PunctualLight};
 pub use materials::{gl_material, PbrMaterial};
 pub use primitives::{AccessorPart, AccessorProblem};
 pub use textures::{SampledTexture, TextureMean, Textures};
