@@ -65,6 +65,13 @@ fn golden_hard_states_in_every_mode() {
     check_scenes("states", root().join("tests/golden/states"));
 }
 
+/// ffvk's lighting variants (Phong's specular, soft spot edges, glTF's falloff): pinned the
+/// same way, once their images matched the CPU reference (tests/suite/lighting.rs).
+#[test]
+fn golden_lighting_variants_in_every_mode() {
+    check_scenes("variants", root().join("tests/golden/variants"));
+}
+
 #[test]
 fn golden_demo_panels() {
     let mut r = renderer();
