@@ -2,7 +2,8 @@
 //! teapot in each lighting mode at a coarse tessellation, as separate PNGs and one labelled
 //! contact sheet; the white teapot textured in each texture environment mode, with and without
 //! separate specular color; then the glTF files of `assets/gltf` drawn directly, on a sheet of
-//! their own.
+//! their own; and a sheet of ffvk's lighting variants: Blinn's (GL's) against Phong's specular
+//! term, and hard against soft spot edges.
 
 use std::path::Path;
 
@@ -10,11 +11,12 @@ use glam::{Mat4, Vec3, Vec4};
 
 use crate::gl::presets;
 use crate::gl::state::{
-    Cap, ColorControl, Face, GlState, LightModelParam, LightParam, LightingMode, MaterialParam, TexEnvParam,
+    Cap, ColorControl, Face, GlState, LightModelParam, LightParam, LightingMode, MaterialParam,
+    SpecularModel, SpotEdge, TexEnvParam,
 };
 use crate::gl::texture::{MagFilter, MinFilter, Sampling, TexEnvMode, TextureImage, Wrap};
 use crate::images::save_png;
-use crate::mesh::teapot;
+use crate::mesh::{teapot, MeshData, Vertex};
 use crate::renderer::{Draw, Frame, Renderer, RendererOptions};
 use crate::tools::sheet::contact_sheet;
 use crate::tools::Result;
@@ -213,6 +215,132 @@ pub fn panels(renderer: &mut Renderer, size: u32) -> Result<Vec<Panel>> {
     Ok(panels)
 }
 
+/// The specular exponents the model sheet compares Blinn's and Phong's terms at.
+const MODEL_EXPONENTS: [f32; 4] = [4.0, 16.0, 64.0, 128.0];
+
+/// A floor of `n` × `n` quads in the plane y = `y`, 4 wide, facing up: dense enough for
+/// per-vertex lighting to show a spot's edge.
+fn floor(n: u32, y: f32) -> MeshData {
+    let mut mesh = MeshData::default();
+    for j in 0..=n {
+        for i in 0..=n {
+            let (x, z) = (4.0 * i as f32 / n as f32 - 2.0, 4.0 * j as f32 / n as f32 - 2.0);
+            mesh.vertices
+                .push(Vertex::new(Vec3::new(x, y, z), Vec3::Y, Vec4::ONE));
+        }
+    }
+    let at = |i: u32, j: u32| j * (n + 1) + i;
+    for j in 0..n {
+        for i in 0..n {
+            // Counter-clockwise seen from above.
+            mesh.indices.extend([
+                at(i, j),
+                at(i, j + 1),
+                at(i + 1, j + 1),
+                at(i, j),
+                at(i + 1, j + 1),
+                at(i + 1, j),
+            ]);
+        }
+    }
+    mesh
+}
+
+/// The model sheet's panels: the emerald teapot with GL's halfway specular term (Blinn)
+/// against Phong's reflection term at the same exponents, then a spotlight on the teapot and
+/// a floor with GL's hard edge, GL's exponent, a linear and a smoothstep edge between 9° and
+/// 18° (ffvk's lighting variants), per fragment.
+pub fn model_panels(renderer: &mut Renderer, size: u32) -> Result<Vec<Panel>> {
+    let teapot = renderer.upload(&teapot::teapot(12)?)?;
+    let ground = renderer.upload(&floor(48, -0.55))?;
+    let mut panels = Vec::new();
+    for (model, tag) in [
+        (SpecularModel::BlinnHalfway, "blinn"),
+        (SpecularModel::PhongReflect, "phong"),
+    ] {
+        for s in MODEL_EXPONENTS {
+            let mut gl = state(&PANELS[3], LightingMode::Fragment)?;
+            gl.light_model(LightModelParam::SpecularModel(model))?;
+            gl.material(Face::FrontAndBack, MaterialParam::Shininess(s))?;
+            let image = render_meshes(renderer, &[&teapot], &gl, size)?;
+            let label = match model {
+                SpecularModel::BlinnHalfway => format!("Blinn (GL's n·h), s = {s}"),
+                SpecularModel::PhongReflect => format!("Phong (r·v), s = {s}"),
+            };
+            panels.push(Panel {
+                name: format!("{tag}_{s}"),
+                label,
+                image,
+            });
+        }
+    }
+    let edges = [
+        (
+            "spot_gl_hard",
+            "GL cutoff 18°, exponent 0",
+            SpotEdge::GlExponent,
+            0.0,
+        ),
+        (
+            "spot_gl_exponent",
+            "GL cutoff 18°, exponent 20",
+            SpotEdge::GlExponent,
+            20.0,
+        ),
+        (
+            "spot_linear",
+            "linear 9° to 18°",
+            SpotEdge::LinearInnerOuter { inner_degrees: 9.0 },
+            0.0,
+        ),
+        (
+            "spot_smoothstep",
+            "smoothstep 9° to 18°",
+            SpotEdge::SmoothstepInnerOuter { inner_degrees: 9.0 },
+            0.0,
+        ),
+    ];
+    for (name, label, edge, exponent) in edges {
+        let mut gl = state(&PANELS[4], LightingMode::Fragment)?;
+        // Light 0 off: the spot alone.
+        gl.disable(Cap::Light(0))?;
+        gl.light_model(LightModelParam::Ambient(Vec4::new(0.05, 0.05, 0.05, 1.0)))?;
+        gl.enable(Cap::Light(1))?;
+        // The view is the modelview: the spot is placed in world space.
+        gl.light(1, LightParam::Position(Vec4::new(0.4, 2.4, 0.6, 1.0)))?;
+        gl.light(1, LightParam::SpotDirection(Vec3::new(-0.15, -1.0, -0.25)))?;
+        gl.light(1, LightParam::Diffuse(Vec4::new(1.0, 0.95, 0.85, 1.0)))?;
+        gl.light(1, LightParam::Specular(Vec4::ONE))?;
+        gl.light(1, LightParam::SpotCutoff(18.0))?;
+        gl.light(1, LightParam::SpotExponent(exponent))?;
+        gl.light(1, LightParam::SpotEdge(edge))?;
+        let image = render_meshes(renderer, &[&ground, &teapot], &gl, size)?;
+        panels.push(Panel {
+            name: name.to_string(),
+            label: label.to_string(),
+            image,
+        });
+    }
+    Ok(panels)
+}
+
+/// Draws `meshes` with one state into one image.
+fn render_meshes(
+    renderer: &mut Renderer,
+    meshes: &[&crate::Mesh],
+    gl: &GlState,
+    size: u32,
+) -> Result<image::RgbaImage> {
+    let mut frame = Frame::new(size, size);
+    frame.clear_color = Vec4::new(0.08, 0.08, 0.1, 1.0);
+    for mesh in meshes {
+        frame
+            .draws
+            .push(Draw::new(mesh, view(), projection(), gl.lighting));
+    }
+    Ok(renderer.render(&frame)?.into())
+}
+
 /// Renders every panel into `out` and writes `contact_sheet.png` there.
 pub fn run(options: &RendererOptions, out: &Path) -> Result<()> {
     let mut renderer = Renderer::new(options)?;
@@ -239,6 +367,18 @@ pub fn run(options: &RendererOptions, out: &Path) -> Result<()> {
     let path = out.join("texture_sheet.png");
     save_png(&sheet, &path)?;
     println!("wrote {} (the texture environment modes)", path.display());
+    let models = model_panels(&mut renderer, 256)?;
+    for p in &models {
+        save_png(&p.image, &out.join("models").join(format!("{}.png", p.name)))?;
+    }
+    let labelled: Vec<(String, image::RgbaImage)> = models.into_iter().map(|p| (p.label, p.image)).collect();
+    let sheet = contact_sheet(&labelled, 4)?;
+    let path = out.join("models_sheet.png");
+    save_png(&sheet, &path)?;
+    println!(
+        "wrote {} (Blinn against Phong, hard against soft spot edges)",
+        path.display()
+    );
     let gltf = gltf_panels(
         &mut renderer,
         &Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/gltf"),

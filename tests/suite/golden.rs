@@ -76,7 +76,8 @@ fn golden_lighting_variants_in_every_mode() {
 fn golden_demo_panels() {
     let mut r = renderer();
     let tolerance = golden_tolerance(&r);
-    let panels = ffvk::tools::demo::panels(&mut r, 128).unwrap();
+    let mut panels = ffvk::tools::demo::panels(&mut r, 128).unwrap();
+    panels.extend(ffvk::tools::demo::model_panels(&mut r, 128).unwrap());
     finish(r);
     let refs = root().join("tests/golden/demo");
     let out = root().join("tests/output/golden/demo");
