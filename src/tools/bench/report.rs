@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use serde::Serialize;
 
 use super::measure::Spread;
-use super::sweep::{sphere_counts, BenchMode, Engine, Group, Point, Variant, GL_MODES};
+use super::sweep::{sphere_counts, BenchMode, Engine, Group, LightKind, Point, Variant, GL_MODES};
 use super::{BenchReport, BenchResult, DrawCost};
 use crate::tools::table::{Align, Table};
 use crate::tools::{write_file, Error, Result};
@@ -642,6 +642,10 @@ fn light_kind_table(report: &BenchReport, has_gl: bool) -> Table {
             t.column(h, Align::Right);
         }
     }
+    // What a lighting variant costs: its specialized time over its GL form's.
+    for h in ["vertex vs GL form", "fragment vs GL form"] {
+        t.column(h, Align::Right);
+    }
     for &kind in &report.sweep.kinds {
         for local in [false, true] {
             let at = |engine, mode, variant| {
@@ -669,6 +673,21 @@ fn light_kind_table(report: &BenchReport, has_gl: bool) -> Table {
                     .map(|(f, g)| f.stats.wall_ms.median / g.stats.wall_ms.median);
                 row.extend([cell(g), ratio(gl)]);
             }
+            for mode in [BenchMode::Vertex, BenchMode::Fragment] {
+                let time = |kind: LightKind| {
+                    find(&report.results, |p| {
+                        p.group == Group::Kind
+                            && p.light_kind == kind
+                            && p.local_viewer == local
+                            && p.engine == Engine::Ffvk
+                            && p.mode == mode
+                            && p.variant == Variant::Specialized
+                    })
+                    .map(|p| p.stats.wall_ms.median)
+                };
+                let cost = kind.gl_form().and_then(|form| Some(time(kind)? / time(form)?));
+                row.push(ratio(cost));
+            }
             t.row(row);
         }
     }
@@ -690,13 +709,20 @@ mod tests {
             BenchMode::Flat => (3e-4 * lights, 2e-4),
             BenchMode::Unlit => (1e-4, 2e-4),
         };
-        let kind = match p.light_kind {
+        let kind = match p.light_kind.gl_form().unwrap_or(p.light_kind) {
             LightKind::Directional => 1.0,
             LightKind::Point => 1.05,
-            LightKind::Spot => 1.1,
+            _ => 1.1,
         };
         let viewer = if p.local_viewer { 1.02 } else { 1.0 };
-        let t = (0.05 + per_vertex * p.vertices as f64 + per_pixel * p.pixels as f64) * kind * viewer;
+        // A lighting variant costs 20 % more than its GL form.
+        let variant = if p.light_kind.gl_form().is_some() {
+            1.2
+        } else {
+            1.0
+        };
+        let t =
+            (0.05 + per_vertex * p.vertices as f64 + per_pixel * p.pixels as f64) * kind * viewer * variant;
         match p.variant {
             Variant::Specialized => t,
             Variant::Uber => t * 1.25,
@@ -811,12 +837,14 @@ Times are per frame in ms: the median, then the interquartile range; ffvk's from
 
 ### Light kind (2 lights of one kind, 91 vertices, 24²)
 
-| lights | viewer | vertex specialized | vertex uber | fragment specialized | fragment uber | GL smooth | ffvk vertex ÷ GL |
-| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |
-| directional | infinite | 1.26 (1.19–1.32) | 1.57 (1.49–1.65) | 1.79 (1.70–1.88) | 2.23 (2.12–2.35) | 1.89 (1.79–1.98) | 0.67 |
-| directional | local | 1.28 (1.22–1.35) | 1.60 (1.52–1.68) | 1.82 (1.73–1.91) | 2.28 (2.16–2.39) | 1.92 (1.83–2.02) | 0.67 |
-| spot | infinite | 1.38 (1.31–1.45) | 1.73 (1.64–1.82) | 1.97 (1.87–2.06) | 2.46 (2.33–2.58) | 2.07 (1.97–2.18) | 0.67 |
-| spot | local | 1.41 (1.34–1.48) | 1.76 (1.68–1.85) | 2.01 (1.90–2.11) | 2.51 (2.38–2.63) | 2.12 (2.01–2.22) | 0.67 |
+| lights | viewer | vertex specialized | vertex uber | fragment specialized | fragment uber | GL smooth | ffvk vertex ÷ GL | vertex vs GL form | fragment vs GL form |
+| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |
+| directional | infinite | 1.26 (1.19–1.32) | 1.57 (1.49–1.65) | 1.79 (1.70–1.88) | 2.23 (2.12–2.35) | 1.89 (1.79–1.98) | 0.67 | – | – |
+| directional | local | 1.28 (1.22–1.35) | 1.60 (1.52–1.68) | 1.82 (1.73–1.91) | 2.28 (2.16–2.39) | 1.92 (1.83–2.02) | 0.67 | – | – |
+| spot | infinite | 1.38 (1.31–1.45) | 1.73 (1.64–1.82) | 1.97 (1.87–2.06) | 2.46 (2.33–2.58) | 2.07 (1.97–2.18) | 0.67 | – | – |
+| spot | local | 1.41 (1.34–1.48) | 1.76 (1.68–1.85) | 2.01 (1.90–2.11) | 2.51 (2.38–2.63) | 2.12 (2.01–2.22) | 0.67 | – | – |
+| spot_smoothstep | infinite | 1.66 (1.58–1.74) | 2.07 (1.97–2.18) | 2.36 (2.24–2.48) | 2.95 (2.80–3.10) | – | – | 1.20 | 1.20 |
+| spot_smoothstep | local | 1.69 (1.61–1.78) | 2.12 (2.01–2.22) | 2.41 (2.29–2.53) | 3.01 (2.86–3.16) | – | – | 1.20 | 1.20 |
 
 ### What a vertex, a pixel and a light cost
 

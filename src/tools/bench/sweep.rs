@@ -5,7 +5,8 @@ use glam::{Mat4, Vec3, Vec4};
 use serde::Serialize;
 
 use crate::gl::state::{
-    Cap, Face, GlState, LightModelParam, LightParam, LightingMode, LightingState, MaterialParam,
+    Attenuation, Cap, Face, GlState, LightModelParam, LightParam, LightingMode, LightingState, MaterialParam,
+    SpecularModel, SpotEdge,
 };
 use crate::tools::{Error, Result};
 
@@ -127,7 +128,7 @@ impl SweepConfig {
             stacks: vec![4, 8],
             sizes: vec![16, 32],
             light_counts: vec![1, 2],
-            kinds: vec![LightKind::Directional, LightKind::Spot],
+            kinds: vec![LightKind::Directional, LightKind::Spot, LightKind::SpotSmoothstep],
             kind_lights: 2,
             base_lights: 1,
             base_stacks: 6,
@@ -316,7 +317,8 @@ impl Variant {
     }
 }
 
-/// The kind of every light of a point.
+/// The kind of every light of a point: GL's three, and ffvk's lighting variants on them
+/// (what each variant costs is its time against its GL form's).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum LightKind {
@@ -326,11 +328,27 @@ pub enum LightKind {
     Point,
     /// A point light with a 35° cone, exponent 8.
     Spot,
+    /// Directional lights with Phong's (r_i ⊙ v)^s_rm specular term.
+    DirectionalPhong,
+    /// Point lights with glTF's inverse-square falloff and a range.
+    PointGltf,
+    /// The spot with a linear edge from 20° to 35° instead of the exponent.
+    SpotLinear,
+    /// The spot with a smoothstep edge from 20° to 35°.
+    SpotSmoothstep,
 }
 
 impl LightKind {
     /// Every kind, in the order of the tables.
-    pub const ALL: [LightKind; 3] = [LightKind::Directional, LightKind::Point, LightKind::Spot];
+    pub const ALL: [LightKind; 7] = [
+        LightKind::Directional,
+        LightKind::Point,
+        LightKind::Spot,
+        LightKind::DirectionalPhong,
+        LightKind::PointGltf,
+        LightKind::SpotLinear,
+        LightKind::SpotSmoothstep,
+    ];
 
     /// The kind's name in tables and CSV.
     pub fn name(self) -> &'static str {
@@ -338,6 +356,20 @@ impl LightKind {
             LightKind::Directional => "directional",
             LightKind::Point => "point",
             LightKind::Spot => "spot",
+            LightKind::DirectionalPhong => "directional_phong",
+            LightKind::PointGltf => "point_gltf",
+            LightKind::SpotLinear => "spot_linear",
+            LightKind::SpotSmoothstep => "spot_smoothstep",
+        }
+    }
+
+    /// The GL kind a variant kind changes, `None` for GL's own (which GL draws too).
+    pub fn gl_form(self) -> Option<LightKind> {
+        match self {
+            LightKind::Directional | LightKind::Point | LightKind::Spot => None,
+            LightKind::DirectionalPhong => Some(LightKind::Directional),
+            LightKind::PointGltf => Some(LightKind::Point),
+            LightKind::SpotLinear | LightKind::SpotSmoothstep => Some(LightKind::Spot),
         }
     }
 }
@@ -525,7 +557,8 @@ pub fn points(config: &SweepConfig) -> Vec<Point> {
                     out.push(with_kind(base(Group::Kind, Engine::Ffvk, mode, variant)));
                 }
             }
-            if config.gl {
+            // GL has no lighting variants to draw.
+            if config.gl && kind.gl_form().is_none() {
                 out.push(with_kind(base(
                     Group::Kind,
                     Engine::Gl,
@@ -567,21 +600,40 @@ pub fn point_state(point: &Point) -> Result<LightingState> {
         gl.light(i, LightParam::Specular(Vec4::new(share, share, share, 1.0)))?;
         // Eye space (the modelview is the identity here): the sphere's center is at z = -2.6.
         let local = Vec3::new(1.6 * c, 1.6 * s, -1.0);
-        match point.light_kind {
+        let kind = point.light_kind.gl_form().unwrap_or(point.light_kind);
+        match kind {
             LightKind::Directional => {
                 gl.light(i, LightParam::Position(Vec4::new(0.6 * c, 0.6 * s, 1.0, 0.0)))?;
             }
-            LightKind::Point | LightKind::Spot => {
+            _ => {
                 gl.light(i, LightParam::Position(local.extend(1.0)))?;
                 gl.light(i, LightParam::ConstantAttenuation(1.0))?;
                 gl.light(i, LightParam::LinearAttenuation(0.05))?;
                 gl.light(i, LightParam::QuadraticAttenuation(0.02))?;
             }
         }
-        if point.light_kind == LightKind::Spot {
+        if kind == LightKind::Spot {
             gl.light(i, LightParam::SpotDirection(Vec3::new(0.0, 0.0, -2.6) - local))?;
             gl.light(i, LightParam::SpotCutoff(35.0))?;
             gl.light(i, LightParam::SpotExponent(8.0))?;
+        }
+        match point.light_kind {
+            LightKind::DirectionalPhong => {
+                gl.light_model(LightModelParam::SpecularModel(SpecularModel::PhongReflect))?;
+            }
+            LightKind::PointGltf => gl.light(
+                i,
+                LightParam::Attenuation(Attenuation::GltfInverseSquare { range: Some(6.0) }),
+            )?,
+            LightKind::SpotLinear => gl.light(
+                i,
+                LightParam::SpotEdge(SpotEdge::LinearInnerOuter { inner_degrees: 20.0 }),
+            )?,
+            LightKind::SpotSmoothstep => gl.light(
+                i,
+                LightParam::SpotEdge(SpotEdge::SmoothstepInnerOuter { inner_degrees: 20.0 }),
+            )?,
+            _ => {}
         }
     }
     Ok(gl.lighting)
