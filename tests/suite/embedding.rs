@@ -356,3 +356,59 @@ fn features_the_caller_did_not_enable_are_named_in_the_error() {
     drop(lighting);
     drop(device);
 }
+
+/// The lighting variants reach a caller's device through `LitDraw::state` as they reach the
+/// Renderer: the same bytes in every mode, and not GL's image.
+#[test]
+fn the_lighting_variants_draw_the_same_bytes_through_a_callers_device() {
+    use ffvk::gl::state::{Attenuation, LightModelParam, LightParam, SpecularModel, SpotEdge};
+    use glam::Vec3;
+    let variant = |mode| {
+        let mut gl = embed::gl_state(mode).unwrap();
+        gl.light_model(LightModelParam::SpecularModel(SpecularModel::PhongReflect))
+            .unwrap();
+        gl.load_modelview(embed::view()).unwrap();
+        gl.enable(Cap::Light(1)).unwrap();
+        gl.light(1, LightParam::Position(Vec4::new(0.5, 2.0, 1.0, 1.0)))
+            .unwrap();
+        gl.light(1, LightParam::SpotDirection(Vec3::new(-0.2, -1.0, -0.5)))
+            .unwrap();
+        gl.light(1, LightParam::SpotCutoff(30.0)).unwrap();
+        gl.light(
+            1,
+            LightParam::SpotEdge(SpotEdge::SmoothstepInnerOuter { inner_degrees: 15.0 }),
+        )
+        .unwrap();
+        gl.light(
+            1,
+            LightParam::Attenuation(Attenuation::GltfInverseSquare { range: Some(5.0) }),
+        )
+        .unwrap();
+        gl.light(1, LightParam::Diffuse(Vec4::new(2.0, 1.5, 1.0, 1.0)))
+            .unwrap();
+        gl.lighting
+    };
+    let frames: Vec<embed::EmbedFrame> = LightingMode::ALL
+        .iter()
+        .map(|&mode| embed::EmbedFrame {
+            state: variant(mode),
+            color_array: true,
+        })
+        .collect();
+    let embedded =
+        embed::render_frames(None, true, embed::SIZE, &frames).expect("renders with validation on");
+    let mut r = renderer();
+    let mesh = r.upload(&embed::teapot()).unwrap();
+    for (mode, bytes) in LightingMode::ALL.into_iter().zip(&embedded) {
+        let pixels = renderer_frame(&mut r, &mesh, &variant(mode));
+        assert_same_bytes(&pixels, bytes, &format!("variants_{}", mode.name()));
+        let gl = renderer_frame(&mut r, &mesh, &embed::gl_state(mode).unwrap().lighting);
+        assert_ne!(
+            gl.rgba,
+            pixels.rgba,
+            "{}: the variants change the image",
+            mode.name()
+        );
+    }
+    finish(r);
+}
