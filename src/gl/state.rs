@@ -593,7 +593,10 @@ impl LightingState {
         self.texture.validate()?;
         for (index, light) in self.lights.iter().enumerate() {
             validate_light(light)?;
-            check_cone(index, light)?;
+            // A disabled light may be half set up: its cones count once it is enabled.
+            if light.enabled {
+                check_cone(index, light)?;
+            }
         }
         Ok(())
     }

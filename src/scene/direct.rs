@@ -157,6 +157,9 @@ pub fn from_gltf(
                 "the file's left out; "
             }
         )
+    } else if mapping == GltfLights::Off && !loaded.lights.is_empty() {
+        "lights: the file's left out (gltf_lights \"off\"), and no headlight asked for: only emission and ambient light show"
+            .to_owned()
     } else if loaded.lights.is_empty() {
         "lights: none in the file, and no headlight asked for: only emission and ambient light show"
             .to_owned()

@@ -4,7 +4,7 @@
 
 use glam::{Mat4, Vec3, Vec4};
 
-use super::gltf::{gl_light, LightKind, PunctualLight};
+use super::gltf::{gl_light, GltfLights, LightKind, PunctualLight};
 use crate::gl::state::{ColorMaterialMode, Face, LightingState};
 use crate::mesh::MeshData;
 
@@ -88,6 +88,17 @@ pub const KEY_LIGHT: f32 = 0.75;
 /// light counts at no less than half the bounds' radius, so that a lamp inside its own shade
 /// does not darken the rest of the scene. Spot cones are not counted. 1 when nothing lights.
 pub fn auto_exposure(lights: &[(PunctualLight, Mat4)], bounds: Option<(Vec3, Vec3)>) -> f32 {
+    auto_exposure_for(lights, bounds, GltfLights::Gl)
+}
+
+/// [`auto_exposure`] for the lights as `mapping` draws them: with [`GltfLights::Exact`] each
+/// point or spot light counts with glTF's falloff (1 / d² and its range window) instead of
+/// GL's 1 / (1 + d²).
+pub fn auto_exposure_for(
+    lights: &[(PunctualLight, Mat4)],
+    bounds: Option<(Vec3, Vec3)>,
+    mapping: GltfLights,
+) -> f32 {
     let (center, radius) = match bounds {
         Some((lo, hi)) => ((lo + hi) / 2.0, (hi - lo).length() / 2.0),
         None => (Vec3::ZERO, 0.0),
@@ -107,7 +118,10 @@ pub fn auto_exposure(lights: &[(PunctualLight, Mat4)], bounds: Option<(Vec3, Vec
                     gl.quadratic_attenuation,
                 ]
                 .map(f64::from);
-                1.0 / (k[0] + k[1] * d + k[2] * d * d)
+                match mapping {
+                    GltfLights::Exact => crate::reference::gltf_inverse_square(d, light.range.map(f64::from)),
+                    _ => 1.0 / (k[0] + k[1] * d + k[2] * d * d),
+                }
             }
         };
         total += brightest * attenuation;

@@ -584,7 +584,7 @@ impl Builder<'_> {
         }
         let mapping = self.gltf_lights(&file)?;
         if !gltf_lights.is_empty() && mapping != GltfLights::Off {
-            let exposure = Builder::exposure(exposure_spec, &gltf_lights, &meshes, &mut notes);
+            let exposure = Builder::exposure(exposure_spec, &gltf_lights, &meshes, mapping, &mut notes);
             for (f, light, model) in &gltf_lights {
                 let mut gl_light = match mapping {
                     GltfLights::Exact => self::gltf::exact_light(light),
@@ -681,11 +681,12 @@ impl Builder<'_> {
 
     /// The scale from glTF light units to GL light colors: `spec` (from
     /// [`Builder::exposure_spec`]), "auto" computed by [`auto_exposure`] over the lights and
-    /// the meshes' bounds; the choice goes into `notes`.
+    /// the meshes' bounds with the falloff `mapping` draws; the choice goes into `notes`.
     fn exposure(
         spec: Option<f32>,
         lights: &[(String, PunctualLight, Mat4)],
         meshes: &[SceneMesh],
+        mapping: GltfLights,
         notes: &mut Vec<String>,
     ) -> f32 {
         let (scale, how) = match spec {
@@ -694,12 +695,13 @@ impl Builder<'_> {
                 let placed: Vec<(PunctualLight, Mat4)> =
                     lights.iter().map(|(_, l, m)| (l.clone(), *m)).collect();
                 let bounds = self::meaning::world_bounds(meshes.iter().map(|m| (&m.data, m.model)));
-                (auto_exposure(&placed, bounds), "auto")
+                (self::meaning::auto_exposure_for(&placed, bounds, mapping), "auto")
             }
         };
         notes.push(format!(
-            "glTF lights: {} from the files, GL color = color × intensity × {scale} (gltf_exposure {how})",
-            lights.len()
+            "glTF lights: {} from the files (gltf_lights \"{}\"), GL color = color × intensity × {scale} (gltf_exposure {how})",
+            lights.len(),
+            mapping.name()
         ));
         scale
     }
@@ -723,7 +725,9 @@ impl Builder<'_> {
         }
         for (index, light) in state.lights.iter().enumerate() {
             let sum = light.constant_attenuation + light.linear_attenuation + light.quadratic_attenuation;
-            if light.enabled && light.position.w != 0.0 && sum == 0.0 {
+            // glTF's falloff does not read k0, k1, k2.
+            let gl_falloff = light.attenuation == Attenuation::GlK012;
+            if light.enabled && light.position.w != 0.0 && gl_falloff && sum == 0.0 {
                 let field = match light_of_index.iter().find(|(gl_index, _)| *gl_index == index) {
                     Some((_, i)) => format!("lights[{i}]"),
                     None => format!("GL_LIGHT{index}"),

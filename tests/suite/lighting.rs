@@ -511,15 +511,26 @@ fn a_soft_edge_with_equal_cones_draws_gls_hard_cutoff_exactly() {
             gl.light(0, LightParam::SpotEdge(SpotEdge::GlExponent))?;
             gl.light(0, LightParam::SpotExponent(0.0))
         });
-        let (a, b) = (sphere_image(soft), sphere_image(hard));
-        // The cutoff crosses the sphere: lit and unlit pixels both.
-        let lit = a.pixels().filter(|p| p.0[0] > 60).count();
-        assert!(lit > 200 && lit < 4000, "{} lit pixels", lit);
-        assert!(
-            a == b,
-            "{}: the soft edge with equal cones differs from GL's hard cutoff",
-            edge.name()
-        );
+        for mode in LightingMode::ALL {
+            for specialize in VARIANTS {
+                let image = |gl: &GlState| {
+                    let mut state = gl.lighting;
+                    state.mode = mode;
+                    render_variant(&sphere_scene(gl.clone()), state, specialize)
+                };
+                let (a, b) = (image(&soft), image(&hard));
+                // The cutoff crosses the sphere: lit and unlit pixels both.
+                let lit = a.pixels().filter(|p| p.0[0] > 60).count();
+                assert!(lit > 200 && lit < 4000, "{} lit pixels", lit);
+                assert!(
+                    a == b,
+                    "{} {} {}: the soft edge with equal cones differs from GL's hard cutoff",
+                    edge.name(),
+                    mode.name(),
+                    specialize.name()
+                );
+            }
+        }
     }
 }
 

@@ -463,6 +463,27 @@ fn lighting_variants_in_scene_files_name_the_light_field_and_values_when_wrong()
 }
 
 #[test]
+fn a_light_with_gltfs_falloff_needs_no_gl_attenuation() {
+    // k0 = k1 = k2 = 0 would be 1/0 for GL's falloff, which glTF's does not read.
+    let dir = scratch("gltf_falloff_k0");
+    let path = write(
+        &dir,
+        "scene.toml",
+        &format!(
+            "[[lights]]\nposition = [0.0, 0.0, 3.0, 1.0]\nconstant_attenuation = 0.0\n\
+             attenuation = \"gltf_inverse_square\"\n{MINIMAL}"
+        ),
+    );
+    let scene = Scene::load(&path).expect("glTF's falloff ignores k0, k1 and k2");
+    assert_eq!(scene.state.lights[0].constant_attenuation, 0.0);
+    let m = load_err(
+        "gl_falloff_k0",
+        &format!("[[lights]]\nposition = [0.0, 0.0, 3.0, 1.0]\nconstant_attenuation = 0.0\n{MINIMAL}"),
+    );
+    contains_all(&m, &["lights[0]", "= 0 for a positional light"]);
+}
+
+#[test]
 fn explain_names_each_variant_and_its_terms_and_agrees_with_the_gpu() {
     let dir = scratch("variants_explain");
     let scene = write(

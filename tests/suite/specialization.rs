@@ -145,6 +145,48 @@ fn the_key_keeps_only_what_changes_the_lighting() {
 }
 
 #[test]
+fn gls_own_state_promises_no_lighting_variant_and_a_variant_that_cannot_act_changes_no_key() {
+    let key = |s: &LightingState| SpecKey::for_state(s);
+    let variants = |k: SpecKey| {
+        [
+            SpecConstant::SpecularModel,
+            SpecConstant::AnySoftSpot,
+            SpecConstant::AnyGltfFalloff,
+        ]
+        .map(|c| k.get(c))
+    };
+    // GL's own states, spots and point lights included: every variant compiled out.
+    let mut gl = lit(3, LightingMode::Vertex);
+    gl.lights[1].position.w = 1.0;
+    gl.lights[2].position.w = 1.0;
+    gl.lights[2].spot_cutoff = 30.0;
+    assert_eq!(variants(key(&gl)), [0, 0, 0]);
+    // A soft edge without a cone (cutoff 180) and glTF's falloff on a directional light do
+    // nothing: the same key as GL's.
+    let mut inert = gl;
+    inert.lights[0].spot_edge = SpotEdge::LinearInnerOuter { inner_degrees: 10.0 };
+    inert.lights[0].attenuation = Attenuation::GltfInverseSquare { range: None };
+    assert_eq!(key(&inert), key(&gl));
+    // Each variant that acts sets its own constant, and only it.
+    let mut soft = gl;
+    soft.lights[2].spot_edge = SpotEdge::SmoothstepInnerOuter { inner_degrees: 10.0 };
+    assert_eq!(variants(key(&soft)), [0, 1, 0]);
+    let mut falloff = gl;
+    falloff.lights[1].attenuation = Attenuation::GltfInverseSquare { range: Some(3.0) };
+    assert_eq!(variants(key(&falloff)), [0, 0, 1]);
+    let mut phong = gl;
+    phong.model.specular_model = SpecularModel::PhongReflect;
+    assert_eq!(variants(key(&phong)), [1, 0, 0]);
+    // A disabled light's variants count for nothing.
+    let mut disabled = gl;
+    disabled.lights[7].position.w = 1.0;
+    disabled.lights[7].spot_cutoff = 20.0;
+    disabled.lights[7].spot_edge = SpotEdge::LinearInnerOuter { inner_degrees: 5.0 };
+    disabled.lights[7].attenuation = Attenuation::GltfInverseSquare { range: None };
+    assert_eq!(key(&disabled), key(&gl));
+}
+
+#[test]
 fn one_sided_single_color_states_pass_one_color_between_the_stages() {
     use ffvk::draw::pipeline::variant_name;
     let key = |s: &LightingState| SpecKey::for_state(s);

@@ -285,6 +285,43 @@ mod tests {
     }
 
     #[test]
+    fn the_exact_mapping_keeps_the_files_range_and_cones() {
+        let spot = PunctualLight {
+            name: "spot".into(),
+            kind: LightKind::Spot {
+                inner_cone: FRAC_PI_8,
+                outer_cone: FRAC_PI_4,
+            },
+            color: Vec3::ONE,
+            intensity: 10.0,
+            range: Some(4.5),
+            world_transform: Mat4::IDENTITY,
+        };
+        let l = exact_light(&spot);
+        assert_eq!(l.attenuation, Attenuation::GltfInverseSquare { range: Some(4.5) });
+        assert_eq!(l.spot_cutoff, 45.0);
+        assert_eq!(
+            l.spot_edge,
+            SpotEdge::SmoothstepInnerOuter { inner_degrees: 22.5 }
+        );
+        // Colors, position and direction as GL's mapping sets them.
+        let gl = gl_light(&spot);
+        assert_eq!(
+            (l.diffuse, l.position, l.spot_direction),
+            (gl.diffuse, gl.position, gl.spot_direction)
+        );
+        // A directional light keeps GL's (it is never attenuated), whatever its range.
+        let sun = PunctualLight {
+            kind: LightKind::Directional,
+            ..spot
+        };
+        assert_eq!(exact_light(&sun), gl_light(&sun));
+        assert_eq!(GltfLights::parse("true"), Some(GltfLights::Gl));
+        assert_eq!(GltfLights::parse("false"), Some(GltfLights::Off));
+        assert_eq!(GltfLights::parse("physical"), None);
+    }
+
+    #[test]
     fn spot_exponent_halves_the_spot_factor_midway_between_the_cones() {
         for (inner, outer) in [
             (0.0, FRAC_PI_4),
