@@ -355,6 +355,9 @@ fn the_lighting_variants_default_to_gls_and_refuse_impossible_cones_and_ranges()
     )
     .unwrap();
     gl.light(2, LightParam::SpotCutoff(20.0)).unwrap();
+    // Disabled, the light may stay half set up; enabled, it is drawn and refused.
+    assert!(gl.lighting.validate().is_ok());
+    gl.enable(Cap::Light(2)).unwrap();
     let e = gl.lighting.validate().unwrap_err();
     assert_eq!(
         e,
