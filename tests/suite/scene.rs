@@ -35,6 +35,21 @@ fn load_err(name: &str, text: &str) -> String {
     message
 }
 
+/// The final bytes `ffvk explain` predicts and the ones it says the GPU drew agree within 1.
+fn assert_explain_agrees_with_the_gpu(stdout: &str) {
+    let final_line = stdout.lines().find(|l| l.starts_with("final color")).unwrap();
+    let drew_line = stdout.lines().find(|l| l.contains(" drew ")).unwrap();
+    let nums = |s: &str| -> Vec<i32> {
+        let inner = &s[s.rfind('[').unwrap() + 1..s.rfind(']').unwrap()];
+        inner.split(',').map(|v| v.trim().parse().unwrap()).collect()
+    };
+    let (a, b) = (nums(final_line), nums(drew_line));
+    assert!(
+        a.iter().zip(&b).all(|(x, y)| (x - y).abs() <= 1),
+        "reference {a:?} vs GPU {b:?}"
+    );
+}
+
 fn contains_all(message: &str, parts: &[&str]) {
     for p in parts {
         assert!(message.contains(p), "{message:?} should mention {p:?}");
@@ -347,17 +362,7 @@ fn render_and_explain_from_the_command_line() {
         ],
     );
     // The reference's final bytes and the GPU's agree within 1 at the center.
-    let final_line = stdout.lines().find(|l| l.starts_with("final color")).unwrap();
-    let drew_line = stdout.lines().find(|l| l.contains(" drew ")).unwrap();
-    let nums = |s: &str| -> Vec<i32> {
-        let inner = &s[s.rfind('[').unwrap() + 1..s.rfind(']').unwrap()];
-        inner.split(',').map(|v| v.trim().parse().unwrap()).collect()
-    };
-    let (a, b) = (nums(final_line), nums(drew_line));
-    assert!(
-        a.iter().zip(&b).all(|(x, y)| (x - y).abs() <= 1),
-        "reference {a:?} vs GPU {b:?}"
-    );
+    assert_explain_agrees_with_the_gpu(&stdout);
 }
 
 #[test]
@@ -511,15 +516,5 @@ fn explain_names_each_variant_and_its_terms_and_agrees_with_the_gpu() {
             "(phong_reflect, factor",
         ],
     );
-    let final_line = stdout.lines().find(|l| l.starts_with("final color")).unwrap();
-    let drew_line = stdout.lines().find(|l| l.contains(" drew ")).unwrap();
-    let nums = |s: &str| -> Vec<i32> {
-        let inner = &s[s.rfind('[').unwrap() + 1..s.rfind(']').unwrap()];
-        inner.split(',').map(|v| v.trim().parse().unwrap()).collect()
-    };
-    let (a, b) = (nums(final_line), nums(drew_line));
-    assert!(
-        a.iter().zip(&b).all(|(x, y)| (x - y).abs() <= 1),
-        "reference {a:?} vs GPU {b:?}"
-    );
+    assert_explain_agrees_with_the_gpu(&stdout);
 }
