@@ -7,7 +7,7 @@ use ffvk::gl::state::{
     Cap, ColorControl, Face, GlState, LightModelParam, LightParam, LightingMode, LightingState,
     MaterialParam, StateError, TexEnvParam,
 };
-use ffvk::gl::texture::TexEnvMode;
+use ffvk::gl::texture::{TexEnvMode, TextureImage};
 use ffvk::mesh::{MeshData, Vertex};
 use ffvk::tools::gl_reference::GlOptions;
 use ffvk::vk::{Validation, ValidationSink};
@@ -268,4 +268,24 @@ pub fn nearest_covering(
         }
     }
     best.map(|(_, idx, cov)| (idx, cov))
+}
+
+/// A `side`×`side` texture (`side` a power of two up to 16) whose every texel differs: colors
+/// from a hash of its position, blue rising along the rows, alpha from 64 down the rows in
+/// steps of 192 / `side`; so that the wrong texel, a blend where nearest was asked for, or
+/// alpha used wrongly (DECAL, MODULATE) shows.
+pub fn hashed_texels(side: u32) -> TextureImage {
+    let mut rgba = Vec::new();
+    for j in 0..side {
+        for i in 0..side {
+            let h = (i * 73 + j * 151 + i * j * 37) % 256;
+            rgba.extend([
+                h as u8,
+                (255 - h) as u8,
+                ((i * (256 / side)) % 256) as u8,
+                (64 + j * (192 / side)) as u8,
+            ]);
+        }
+    }
+    TextureImage::new(side, side, rgba).unwrap()
 }

@@ -55,23 +55,9 @@ use crate::conformance::{compare, gl_draw_image, mask, save_triplet, Stats, SIZE
 use crate::support::*;
 use ffvk::tools::gl_reference::GlDraw;
 
-/// A 16×16 texture whose every texel differs (colors from a hash of its position, alpha from
-/// 64 to 244 down the rows), so that the wrong texel, a blend where nearest was asked for, or
-/// alpha used wrongly (DECAL, MODULATE) shows.
+/// [`hashed_texels`] of the tests' size.
 fn texels() -> TextureImage {
-    let mut rgba = Vec::new();
-    for j in 0..16u32 {
-        for i in 0..16u32 {
-            let h = (i * 73 + j * 151 + i * j * 37) % 256;
-            rgba.extend([
-                h as u8,
-                (255 - h) as u8,
-                ((i * 16) % 256) as u8,
-                (64 + j * 12) as u8,
-            ]);
-        }
-    }
-    TextureImage::new(16, 16, rgba).unwrap()
+    hashed_texels(16)
 }
 
 /// A 64×64 texture of smooth waves with a finer ripple and alpha: linear filtering and mip

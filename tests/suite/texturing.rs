@@ -18,22 +18,9 @@ const SIZE: u32 = 96;
 /// Texels of the test texture per side.
 const TEXELS: u32 = 8;
 
-/// An 8×8 texture whose every texel differs (colors and alpha from a hash of its position), so
-/// that the wrong texel, or a blend where nearest was asked for, shows.
+/// [`hashed_texels`] of the tests' size.
 fn texels() -> TextureImage {
-    let mut rgba = Vec::new();
-    for j in 0..TEXELS {
-        for i in 0..TEXELS {
-            let h = (i * 73 + j * 151 + i * j * 37) % 256;
-            rgba.extend([
-                h as u8,
-                (255 - h) as u8,
-                ((i * 32) % 256) as u8,
-                (64 + j * 24) as u8,
-            ]);
-        }
-    }
-    TextureImage::new(TEXELS, TEXELS, rgba).unwrap()
+    hashed_texels(TEXELS)
 }
 
 /// [`textured_state`] with the texture repeated twice around the sphere by the texture matrix.

@@ -349,33 +349,26 @@ mod tests {
     use crate::tools::regress::results::RunInfo;
 
     fn row(name: &str, index: usize, status: Status, figures: Option<(f32, f64, u8)>) -> Row {
-        Row {
-            name: name.into(),
-            scene: name.into(),
-            file: format!("{name}.toml").into(),
+        let file = crate::tools::regress::SceneFile {
             index,
-            mode: Some("vertex".into()),
-            status,
-            message: None,
-            comparison: figures.map(|(flip, share, max)| Comparison {
-                width: 8,
-                height: 8,
-                max_diff: [max, 0, 0, 0],
-                over: (share * 64.0) as usize,
-                share_over: share,
-                flip_mean: Some(flip),
-                flip_all_pixels: false,
-                worst: None,
-                first_over: None,
-                threshold: 2,
-            }),
-            output: None,
-            diff: None,
-            channels: None,
-            replaced: None,
-            reference: None,
-            seconds: 0.0,
-        }
+            path: format!("{name}.toml").into(),
+            name: name.into(),
+        };
+        let mut row = Row::new(&file, name.into(), Some(crate::gl::state::LightingMode::Vertex));
+        row.status = status;
+        row.comparison = figures.map(|(flip, share, max)| Comparison {
+            width: 8,
+            height: 8,
+            max_diff: [max, 0, 0, 0],
+            over: (share * 64.0) as usize,
+            share_over: share,
+            flip_mean: Some(flip),
+            flip_all_pixels: false,
+            worst: None,
+            first_over: None,
+            threshold: 2,
+        });
+        row
     }
 
     #[test]
