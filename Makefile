@@ -18,7 +18,12 @@ test-deps: check-cargo
 demo: deps
 	$(CARGO) run -- demo --out out/demo
 
+# The workspace's tests (the suite, unit tests, examples, benches built), the doctests (the
+# README's Rust snippets and the API's examples), the lints, the library alone as a plain
+# dependency builds it, and a crate outside the workspace that depends on it.
 test: test-deps
-	$(CARGO) test --all-targets
-	$(CARGO) build --lib --no-default-features
+	$(CARGO) test --workspace --all-targets
+	$(CARGO) test --workspace --doc
+	$(CARGO) clippy --workspace --all-targets -- -D warnings
+	$(CARGO) build -p ffvk
 	bash scripts/check-dependent.sh

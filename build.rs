@@ -1,176 +1,31 @@
-//! Compiles the shader variants under `glsl/` to SPIR-V with shaderc's compiler, `glslc`
-//! (glslang inside; Debian package `glslc`).
-//!
-//! A variant is a lighting mode's pair of stage sources compiled with its own macro
-//! definitions (the table below), so no variant needs a file of its own. `#include "x"`
-//! resolves relative to the including file. SPIR-V lands in `OUT_DIR/<variant>.<stage>.spv`,
-//! and `OUT_DIR/shaders.rs` lists every variant for `include_bytes!`.
-//!
-//! glslc runs as a program rather than through shaderc's Rust bindings: Debian's
-//! `libshaderc.so.1` is underlinked, and the link override that worked around it lived in this
-//! repository's `.cargo/config.toml`, which Cargo ignores when ffvk is another crate's
-//! dependency. A program needs no linking, so ffvk builds the same from any workspace.
+//! Generates the GL reference's bindings (`OUT_DIR/gl_bindings.rs`) with gl_generator: GL 2.1
+//! in the compatibility profile (glLight, glMaterial, client arrays, ...) and the framebuffer
+//! objects it renders into. GL_ARB_framebuffer_object names its functions without a suffix, as
+//! GL 3.0 does, so they exist in Mesa's and NVIDIA's compatibility contexts (3.0 and later);
+//! `Fallbacks::All` also tries the `EXT` names of GL_EXT_framebuffer_object for a driver that
+//! has only those. GL_ARB_timer_query (core in 3.3) gives the bench GL's GPU time per frame.
+//! Nothing is linked: the entry points are loaded through `eglGetProcAddress` at run time.
 
-use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
-use std::process::Command;
-use std::{env, fs};
+use std::fs;
+use std::io::{BufWriter, Write};
+use std::path::PathBuf;
 
-/// One pipeline variant: its name (a lighting mode, optionally with a suffix), the stage
-/// sources and the macros both stages are compiled with.
-struct Variant {
-    name: &'static str,
-    vertex: &'static str,
-    fragment: &'static str,
-    defines: &'static [(&'static str, &'static str)],
-    doc: &'static str,
-}
-
-/// `INTERP`: the interpolation qualifier of the per-vertex colors. `ONE_COLOR`: only the front
-/// primary color passes between the stages (specialized one-sided, single-color states).
-/// Each is also compiled with `CURRENT_COLOR` (see [`CURRENT_COLOR`]).
-const VARIANTS: &[Variant] = &[
-    Variant {
-        name: "vertex",
-        vertex: "vertex.vert",
-        fragment: "vertex.frag",
-        defines: &[("INTERP", "smooth")],
-        doc: "Lit at each vertex; four colors interpolated (GL's SMOOTH shading).",
-    },
-    Variant {
-        name: "vertex_one_color",
-        vertex: "vertex.vert",
-        fragment: "vertex.frag",
-        defines: &[("INTERP", "smooth"), ("ONE_COLOR", "1")],
-        doc: "`vertex` with only the front primary color between the stages.",
-    },
-    Variant {
-        name: "flat",
-        vertex: "vertex.vert",
-        fragment: "vertex.frag",
-        defines: &[("INTERP", "flat")],
-        doc: "Lit at each vertex; the provoking (last) vertex's colors (GL's FLAT shading).",
-    },
-    Variant {
-        name: "flat_one_color",
-        vertex: "vertex.vert",
-        fragment: "vertex.frag",
-        defines: &[("INTERP", "flat"), ("ONE_COLOR", "1")],
-        doc: "`flat` with only the front primary color between the stages.",
-    },
-    Variant {
-        name: "fragment",
-        vertex: "fragment.vert",
-        fragment: "fragment.frag",
-        defines: &[],
-        doc: "Eye-space position and normal interpolated; lit at each fragment.",
-    },
-];
-
-/// The second build of every variant, named `<variant>_current_color`: for meshes without a
-/// color array, it reads GL's current color from the draw block instead of location 2.
-const CURRENT_COLOR: (&str, &str) = ("CURRENT_COLOR", "1");
-
-/// The textured build of each of those, named `<…>_textured`: texture coordinates at
-/// location 3, the texture environment before the color sum (`glsl/texture.glsl`).
-/// Untextured draws keep the variants without it, unchanged.
-const TEXTURE: (&str, &str) = ("TEXTURE", "1");
+use gl_generator::{Api, Fallbacks, Profile, Registry, StructGenerator};
 
 fn main() {
-    let manifest = PathBuf::from(env::var("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR"));
-    let glsl_dir = manifest.join("glsl");
-    let out_dir = PathBuf::from(env::var("OUT_DIR").expect("cargo sets OUT_DIR"));
-    // A directory is scanned recursively: any change to a source or an include reruns this.
-    println!("cargo:rerun-if-changed={}", glsl_dir.display());
-    println!("cargo:rerun-if-env-changed=GLSLC");
-    let glslc = env::var_os("GLSLC").map_or_else(|| PathBuf::from("glslc"), PathBuf::from);
-
-    let mut table = String::new();
-    let mut errors = Vec::new();
-    let builds = VARIANTS.iter().flat_map(|v| {
-        let mut with_current = v.defines.to_vec();
-        with_current.push(CURRENT_COLOR);
-        [
-            (v.name.to_string(), v.doc.to_string(), v.defines.to_vec()),
-            (
-                format!("{}_current_color", v.name),
-                format!("{} No color array: GL's current color.", v.doc),
-                with_current,
-            ),
-        ]
-        .into_iter()
-        .flat_map(|(name, doc, defines)| {
-            let mut textured = defines.clone();
-            textured.push(TEXTURE);
-            [
-                (name.clone(), doc.clone(), defines),
-                (
-                    format!("{name}_textured"),
-                    format!("{doc} Textured: the texture environment before the color sum."),
-                    textured,
-                ),
-            ]
-        })
-        .map(move |(name, doc, defines)| (v, name, doc, defines))
-    });
-    for (variant, name, doc, defines) in builds {
-        let mut stages = Vec::new();
-        for (source, stage) in [(variant.vertex, "vert"), (variant.fragment, "frag")] {
-            let spv = out_dir.join(format!("{name}.{stage}.spv"));
-            match compile(&glslc, &glsl_dir.join(source), stage, &defines, &spv) {
-                Ok(()) => stages.push(spv),
-                Err(e) => errors.push(format!("variant {name}: {e}")),
-            }
-        }
-        if let [vertex, fragment] = stages.as_slice() {
-            writeln!(
-                table,
-                "    ShaderVariant {{\n        name: {:?},\n        doc: {:?},\n        \
-                 vertex_source: {:?},\n        fragment_source: {:?},\n        \
-                 defines: &{:?},\n        \
-                 vertex: include_bytes!({:?}),\n        fragment: include_bytes!({:?}),\n    }},",
-                name,
-                doc,
-                variant.vertex,
-                variant.fragment,
-                defines,
-                vertex.display().to_string(),
-                fragment.display().to_string(),
-            )
-            .expect("writing to a String cannot fail");
-        }
-    }
-    if !errors.is_empty() {
-        fail(&errors.join("\n"));
-    }
-    let generated = format!(
-        "/// Every compiled variant, in build order.\npub const VARIANTS: &[ShaderVariant] = &[\n{table}];\n"
-    );
-    if let Err(e) = fs::write(out_dir.join("shaders.rs"), generated) {
-        fail(&format!("{}: {e}", out_dir.join("shaders.rs").display()));
-    }
-
-    // Cargo sets CARGO_FEATURE_TOOLS exactly when it compiles this script with the `tools`
-    // feature (and so with the optional gl_generator); the cfg keeps the lean core from
-    // needing the crate at all.
-    #[cfg(feature = "tools")]
-    if env::var_os("CARGO_FEATURE_TOOLS").is_some() {
-        let path = out_dir.join("gl_bindings.rs");
-        if let Err(e) = write_gl_bindings(&path) {
-            fail(&format!("{}: {e}", path.display()));
-        }
+    println!("cargo:rerun-if-changed=build.rs");
+    let Some(out_dir) = std::env::var_os("OUT_DIR") else {
+        eprintln!("OUT_DIR is not set: run this build script through cargo");
+        std::process::exit(1);
+    };
+    let path = PathBuf::from(out_dir).join("gl_bindings.rs");
+    if let Err(e) = write_gl_bindings(&path) {
+        eprintln!("{}: {e}", path.display());
+        std::process::exit(1);
     }
 }
 
-/// The GL reference's entry points: GL 2.1 in the compatibility profile (glLight, glMaterial,
-/// client arrays, ...) and the framebuffer objects it renders into. GL_ARB_framebuffer_object
-/// names its functions without a suffix, as GL 3.0 does, so they exist in Mesa's and NVIDIA's
-/// compatibility contexts (3.0 and later); `Fallbacks::All` also tries the `EXT` names of
-/// GL_EXT_framebuffer_object for a driver that has only those. GL_ARB_timer_query (core in
-/// 3.3) gives the bench GL's GPU time per frame.
-#[cfg(feature = "tools")]
-fn write_gl_bindings(path: &Path) -> std::io::Result<()> {
-    use gl_generator::{Api, Fallbacks, Profile, Registry, StructGenerator};
+fn write_gl_bindings(path: &std::path::Path) -> std::io::Result<()> {
     let registry = Registry::new(
         Api::Gl,
         (2, 1),
@@ -178,55 +33,7 @@ fn write_gl_bindings(path: &Path) -> std::io::Result<()> {
         Fallbacks::All,
         ["GL_ARB_framebuffer_object", "GL_ARB_timer_query"],
     );
-    let mut file = std::io::BufWriter::new(fs::File::create(path)?);
+    let mut file = BufWriter::new(fs::File::create(path)?);
     registry.write_bindings(StructGenerator, &mut file)?;
-    std::io::Write::flush(&mut file)
-}
-
-/// Runs glslc on one stage source. Its messages are already `file:line: error: text`.
-fn compile(
-    glslc: &Path,
-    source: &Path,
-    stage: &str,
-    defines: &[(&str, &str)],
-    spv: &Path,
-) -> Result<(), String> {
-    let mut command = Command::new(glslc);
-    command
-        .arg(format!("-fshader-stage={stage}"))
-        .arg("--target-env=vulkan1.3")
-        // No spirv-opt: Debian's SPIRV-Tools 2023.1 rejects glslang 12's copies of std140
-        // structs into locals ("OpStore Pointer type does not match"). The driver optimizes
-        // the SPIR-V itself (Mesa's NIR), so nothing is lost at run time.
-        .arg("-O0")
-        .arg("-Werror");
-    for (name, value) in defines {
-        command.arg(format!("-D{name}={value}"));
-    }
-    command.arg("-o").arg(spv).arg(source);
-    let output = command.output().map_err(|e| {
-        format!(
-            "cannot run {}: {e}; install the Debian package glslc (shaderc's compiler) or set GLSLC",
-            glslc.display()
-        )
-    })?;
-    if output.status.success() {
-        Ok(())
-    } else {
-        let stderr = String::from_utf8_lossy(&output.stderr);
-        Err(format!(
-            "{} ({}): {}",
-            source.display(),
-            output.status,
-            stderr.trim_end()
-        ))
-    }
-}
-
-fn fail(message: &str) -> ! {
-    for line in message.lines() {
-        println!("cargo:warning={line}");
-    }
-    eprintln!("{message}");
-    std::process::exit(1);
+    file.flush()
 }

@@ -7,7 +7,7 @@ repo="$(cd "$(dirname "$0")/.." && pwd)"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 cp -r "$repo/tests/dependent/." "$work/"
-sed -i "s|FFVK_PATH|$repo|" "$work/Cargo.toml"
+sed -i "s|FFVK_PATH|$repo/ffvk|" "$work/Cargo.toml"
 # Its own target folder under ours, so later runs reuse the build.
 export CARGO_TARGET_DIR="$repo/target/dependent"
 cd "$work"

@@ -1,61 +1,150 @@
-//! ffvk: the OpenGL 2.1 fixed-function lighting equation, verbatim, on Vulkan.
-//!
-//! The core (always built) follows the data: GL state ([`gl`]) → its GPU layout and the
-//! SPIR-V of the shaders ([`gpu`]) → pipelines and draw recording ([`draw`]) over an owned
-//! Vulkan layer ([`vk`]) → the offscreen renderer ([`renderer`]); beside them the CPU
-//! reference of the same equation ([`reference`](mod@reference)) and host meshes ([`mesh`]).
-//! It depends on ash, glam, bytemuck and thiserror only, never prints, reads arguments or sets
-//! environment variables.
-//!
-//! # Two ways in
-//!
-//! - [`Renderer`] opens its own device and draws [`Frame`]s offscreen into images: what the
-//!   tools, the tests and regression renders use.
-//! - [`Lighting`] records GL's lighting into a caller's own device, command buffers and
-//!   render targets ([`vk::Device::from_caller`]); see its module, [`draw::lighting`], for
-//!   what it owns and records, and `examples/embed.rs` (in the repository) for a complete
-//!   program with plain `ash`. [`Renderer`] is built on it.
-//!
-//! Renderers that build their own pipelines take the pieces: the SPIR-V ([`gpu::shaders`]),
-//! the uniform block's layout and the specialization constants ([`gpu::layout`]).
-//!
-//! Features add the rest: `images` (PNG files and image comparison), `scene` (TOML scene files
-//! and glTF), `tools` (what the `ffvk` command runs: bench, demo, explain, regression runs,
-//! and fixed-function OpenGL through EGL, loaded at run time, as a reference renderer; on by
-//! default).
+//! The tools behind the `ffvk` command line (feature `tools`): the benchmark, the demo, the
+//! per-pixel explanation, regression runs, contact sheets and the tables they print. They
+//! print, read arguments and set environment variables; the core library does none of that.
 
-#[warn(missing_docs)]
-pub mod alloc;
-#[warn(missing_docs)]
-pub mod draw;
-#[warn(missing_docs)]
-pub mod error;
-#[cfg(feature = "images")]
-pub mod files;
-#[warn(missing_docs)]
-pub mod gl;
-#[warn(missing_docs)]
-pub mod gpu;
-#[cfg(feature = "images")]
-pub mod images;
-#[warn(missing_docs)]
-pub mod mesh;
-#[warn(missing_docs)]
-pub mod reference;
-#[warn(missing_docs)]
-pub mod renderer;
-#[cfg(feature = "scene")]
-pub mod scene;
-#[cfg(feature = "tools")]
-pub mod tools;
-#[warn(missing_docs)]
-pub mod vk;
+pub mod bench;
+pub mod demo;
+pub mod explain;
+pub mod gl_reference;
+pub mod regress;
+pub mod sheet;
+pub mod table;
 
-pub use draw::lighting::{Lighting, LightingOptions, LitDraw};
-pub use draw::pipeline::{Attribute, Blend, RasterState, Specialize, Target, VertexInput};
-pub use draw::record::Geometry;
-pub use draw::texture::TextureBinding;
-pub use error::{Error, LightingError, MeshError, Result};
-pub use renderer::{
-    Draw, Frame, FrameStats, Mesh, PipelineStats, Pixels, Renderer, RendererOptions, Texture, Upload,
-};
+use std::path::PathBuf;
+
+/// Why a tool failed: an error of one of the layers below it, or of the tool itself.
+#[derive(Debug, thiserror::Error)]
+pub enum Error {
+    /// The renderer, the device or the GL state.
+    #[error(transparent)]
+    Core(#[from] ffvk::Error),
+
+    /// A PNG that could not be read or written.
+    #[error(transparent)]
+    Image(#[from] ffvk::images::ImageError),
+
+    /// Two images of different sizes.
+    #[error(transparent)]
+    Size(#[from] ffvk::images::compare::SizeMismatch),
+
+    /// A scene file (or its glTF) that could not be loaded. Boxed: scene errors are large.
+    #[error(transparent)]
+    Scene(Box<ffvk::scene::SceneError>),
+
+    /// A file or folder that could not be read.
+    #[error("cannot read {}: {source}", .path.display())]
+    Read { path: PathBuf, source: std::io::Error },
+
+    /// A file that could not be written.
+    #[error("cannot write {}: {source}", .path.display())]
+    Write { path: PathBuf, source: std::io::Error },
+
+    /// A benchmark report that could not be serialized.
+    #[error("cannot write {}: {source}", .path.display())]
+    Json {
+        path: PathBuf,
+        source: serde_json::Error,
+    },
+
+    /// A plot that could not be drawn (plotters reports its errors as text).
+    #[error("cannot draw the plot {}: {message}", .path.display())]
+    Plot { path: PathBuf, message: String },
+
+    /// Two images given for comparison that differ in size.
+    #[error("{} and {}: {source}", .expected.display(), .actual.display())]
+    Compare {
+        expected: PathBuf,
+        actual: PathBuf,
+        source: ffvk::images::compare::SizeMismatch,
+    },
+
+    /// A pixel asked for outside the scene's image.
+    #[error(
+        "{}: --pixel {},{} is outside the {}x{} image: expected x < {} and y < {}",
+        .path.display(), .pixel.0, .pixel.1, .size.0, .size.1, .size.0, .size.1
+    )]
+    PixelOutside {
+        path: PathBuf,
+        pixel: (u32, u32),
+        size: (u32, u32),
+    },
+
+    /// Two scenes of one run would write the same image.
+    #[error("{} and {} would both write the image {name}.png: expected scene names that differ (in a folder run, images mirror the scenes' paths below the folder)", .first.display(), .second.display())]
+    NameClash {
+        name: String,
+        first: PathBuf,
+        second: PathBuf,
+    },
+
+    /// Outputs would be written into the reference folder.
+    #[error("the output folder {} is, or lies inside, the reference folder {}: references are read-only unless blessed; expected --out outside it", .output.display(), .references.display())]
+    OutputInReferences { output: PathBuf, references: PathBuf },
+
+    /// A report folder that is, lies inside or holds a reference folder.
+    #[error("the report folder {} is, lies inside or holds the reference folder {}: references are read-only unless blessed; expected a report folder apart from them", .report.display(), .references.display())]
+    ReportInReferences { report: PathBuf, references: PathBuf },
+
+    /// An output would replace one of the command's own inputs.
+    #[error("{}: the output would overwrite an input of the same command: expected another path", .path.display())]
+    OverwritesInput { path: PathBuf },
+
+    /// A tolerance out of its range.
+    #[error(transparent)]
+    Tolerance(#[from] ffvk::images::compare::ToleranceError),
+
+    /// A path argument that names the wrong kind of thing.
+    #[error("{}: {problem}", .path.display())]
+    Path { path: PathBuf, problem: &'static str },
+
+    /// The embedded label font could not be used (a build defect).
+    #[error("cannot draw labels: {message}")]
+    Font { message: String },
+
+    /// A benchmark that cannot run as asked.
+    #[error("benchmark: {0}")]
+    Bench(String),
+
+    /// Results files that cannot be read or merged.
+    #[error(transparent)]
+    Merge(#[from] regress::results::MergeError),
+
+    /// A regression run's worker processes that could not start or be talked to.
+    #[error(transparent)]
+    Worker(#[from] regress::pool::WorkerError),
+
+    /// The GL reference renderer (fixed-function OpenGL through EGL): no GL driver, or a
+    /// render that failed. Its messages start with "no GL driver:" or "GL reference:".
+    #[error(transparent)]
+    Gl(#[from] gl_reference::GlError),
+}
+
+impl From<ffvk::scene::SceneError> for Error {
+    fn from(e: ffvk::scene::SceneError) -> Self {
+        Error::Scene(Box::new(e))
+    }
+}
+
+impl From<ffvk::error::MeshError> for Error {
+    fn from(e: ffvk::error::MeshError) -> Self {
+        Error::Core(e.into())
+    }
+}
+
+impl From<ffvk::gl::state::StateError> for Error {
+    fn from(e: ffvk::gl::state::StateError) -> Self {
+        Error::Core(e.into())
+    }
+}
+
+/// Writes `bytes` to `path` atomically ([`ffvk::files::write_bytes`]), the error naming the
+/// path.
+pub(crate) fn write_file(path: &std::path::Path, bytes: &[u8]) -> Result<()> {
+    ffvk::files::write_bytes(path, bytes).map_err(|source| Error::Write {
+        path: path.to_path_buf(),
+        source,
+    })
+}
+
+/// Result with the tools' [`Error`].
+pub type Result<T, E = Error> = std::result::Result<T, E>;

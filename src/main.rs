@@ -10,9 +10,9 @@ use ffvk::images::save_png;
 use ffvk::scene::direct::{is_gltf, CameraChoice, DirectOptions, LightChoice};
 use ffvk::scene::gltf::GltfLights;
 use ffvk::scene::render_scene;
-use ffvk::tools::regress;
 use ffvk::vk::Validation;
 use ffvk::{Renderer, RendererOptions};
+use ffvk_cli::regress;
 
 #[derive(Parser)]
 #[command(
@@ -53,7 +53,7 @@ enum Command {
         out: PathBuf,
     },
     /// Benchmark the lighting modes, densities, sizes, lights and pipeline variants.
-    Bench(ffvk::tools::bench::BenchArgs),
+    Bench(ffvk_cli::bench::BenchArgs),
     /// Render scene files, glTF files (or directories of scene files) with one device;
     /// optionally check each image against references.
     Render {
@@ -249,30 +249,29 @@ impl GltfArgs {
     }
 
     fn options(&self) -> DirectOptions {
-        DirectOptions {
-            camera: match self.camera.as_deref() {
-                None => CameraChoice::Auto,
-                Some("frame") => CameraChoice::Frame,
-                Some(name) => CameraChoice::File(name.to_owned()),
-            },
-            lights: match self.lights.as_deref() {
-                Some("file") => LightChoice::File,
-                Some("headlight") => LightChoice::Headlight,
-                _ => LightChoice::Auto,
-            },
-            gltf_lights: self.gltf_lights.unwrap_or_default(),
-            exposure: match self.exposure {
-                Some(Exposure::Scale(x)) => Some(x),
-                _ => None,
-            },
-            size: None,
-        }
+        let mut options = DirectOptions::default();
+        options.camera = match self.camera.as_deref() {
+            None => CameraChoice::Auto,
+            Some("frame") => CameraChoice::Frame,
+            Some(name) => CameraChoice::File(name.to_owned()),
+        };
+        options.lights = match self.lights.as_deref() {
+            Some("file") => LightChoice::File,
+            Some("headlight") => LightChoice::Headlight,
+            _ => LightChoice::Auto,
+        };
+        options.gltf_lights = self.gltf_lights.unwrap_or_default();
+        options.exposure = match self.exposure {
+            Some(Exposure::Scale(x)) => Some(x),
+            _ => None,
+        };
+        options
     }
 
     /// Refuses the flags for inputs none of which is a glTF file: a scene file sets its own.
-    fn check(&self, inputs: &[PathBuf]) -> ffvk::tools::Result<()> {
+    fn check(&self, inputs: &[PathBuf]) -> ffvk_cli::Result<()> {
         if self.given() && !inputs.iter().any(|p| is_gltf(p)) {
-            return Err(ffvk::tools::Error::Path {
+            return Err(ffvk_cli::Error::Path {
                 path: inputs[0].clone(),
                 problem: "--camera, --lights, --gltf-lights and --exposure apply to .gltf and .glb inputs: expected \
                           one, or the camera, lights, gltf_lights and gltf_exposure set in the scene file",
@@ -309,10 +308,10 @@ fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
 }
 
 fn limits(cli: &Cli) -> ffvk::scene::Limits {
-    ffvk::scene::Limits {
-        asset_roots: cli.allow_root.clone(),
-        mesh_bytes: cli.max_mesh_mib << 20,
-    }
+    let mut limits = ffvk::scene::Limits::default();
+    limits.asset_roots = cli.allow_root.clone();
+    limits.mesh_bytes = cli.max_mesh_mib << 20;
+    limits
 }
 
 fn options(cli: &Cli) -> RendererOptions {
@@ -323,15 +322,14 @@ fn options(cli: &Cli) -> RendererOptions {
             ffvk::Error::NoValidationLayer
         );
     }
-    RendererOptions {
-        device: cli.device.clone(),
-        validation: if cli.validate || env_validate {
-            Validation::IfPresent
-        } else {
-            Validation::Off
-        },
-        ..RendererOptions::default()
-    }
+    let mut options = RendererOptions::default();
+    options.device = cli.device.clone();
+    options.validation = if cli.validate || env_validate {
+        Validation::IfPresent
+    } else {
+        Validation::Off
+    };
+    options
 }
 
 /// The comparison tolerance (see the README's tolerance policy).
@@ -353,16 +351,16 @@ struct ToleranceArgs {
 
 impl ToleranceArgs {
     fn tolerance(&self) -> Tolerance {
-        Tolerance {
-            threshold: self.threshold,
-            max_share: self.max_share,
-            max_flip: self.max_flip,
-            flip_all_pixels: self.flip_all_pixels,
-        }
+        let mut tolerance = Tolerance::default();
+        tolerance.threshold = self.threshold;
+        tolerance.max_share = self.max_share;
+        tolerance.max_flip = self.max_flip;
+        tolerance.flip_all_pixels = self.flip_all_pixels;
+        tolerance
     }
 }
 
-fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
+fn run(cli: Cli) -> ffvk_cli::Result<ExitCode> {
     match &cli.command {
         Command::Info => {
             let renderer = Renderer::new(&options(&cli))?;
@@ -406,13 +404,13 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
             );
             Ok(ExitCode::SUCCESS)
         }
-        Command::Demo { out } => ffvk::tools::demo::run(&options(&cli), out).map(|()| ExitCode::SUCCESS),
+        Command::Demo { out } => ffvk_cli::demo::run(&options(&cli), out).map(|()| ExitCode::SUCCESS),
         Command::Bench(args) => {
-            let program = std::env::current_exe().map_err(|source| ffvk::tools::Error::Read {
+            let program = std::env::current_exe().map_err(|source| ffvk_cli::Error::Read {
                 path: "/proc/self/exe".into(),
                 source,
             })?;
-            ffvk::tools::bench::run(args, &options(&cli), &program).map(|()| ExitCode::SUCCESS)
+            ffvk_cli::bench::run(args, &options(&cli), &program).map(|()| ExitCode::SUCCESS)
         }
         Command::Render {
             scenes,
@@ -456,7 +454,7 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
             }
             for path in [junit, json, report].into_iter().flatten() {
                 if scenes.iter().any(|s| ffvk::files::same_file(path, s)) {
-                    return Err(ffvk::tools::Error::OverwritesInput { path: path.clone() });
+                    return Err(ffvk_cli::Error::OverwritesInput { path: path.clone() });
                 }
             }
             if let (Some(dir), Some(refs)) = (report, check) {
@@ -464,7 +462,7 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
                 regress::report::claim(dir, &[refs.as_path()])?;
             }
             let worker = regress::pool::WorkerCommand {
-                program: std::env::current_exe().map_err(|source| ffvk::tools::Error::Read {
+                program: std::env::current_exe().map_err(|source| ffvk_cli::Error::Read {
                     path: "/proc/self/exe".into(),
                     source,
                 })?,
@@ -528,7 +526,7 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
             };
             for path in [outputs.junit, outputs.json].into_iter().flatten() {
                 if files.iter().any(|f| ffvk::files::same_file(path, f)) {
-                    return Err(ffvk::tools::Error::OverwritesInput {
+                    return Err(ffvk_cli::Error::OverwritesInput {
                         path: path.to_path_buf(),
                     });
                 }
@@ -536,7 +534,7 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
             let parts = files
                 .iter()
                 .map(|f| Ok((f.clone(), regress::results::Results::read_json(f)?)))
-                .collect::<ffvk::tools::Result<Vec<_>>>()?;
+                .collect::<ffvk_cli::Result<Vec<_>>>()?;
             let merged = regress::results::Results::merge(parts)?;
             let checked = merged.runs.iter().any(|r| r.info.references.is_some());
             if let Some(dir) = outputs.report {
@@ -559,12 +557,12 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
             tolerance.validate()?;
             if let Some(path) = diff {
                 if ffvk::files::same_file(path, expected) || ffvk::files::same_file(path, actual) {
-                    return Err(ffvk::tools::Error::OverwritesInput { path: path.clone() });
+                    return Err(ffvk_cli::Error::OverwritesInput { path: path.clone() });
                 }
             }
             let e = compare::load_image(expected)?;
             let a = compare::load_image(actual)?;
-            let c = compare::compare(&e, &a, &tolerance).map_err(|source| ffvk::tools::Error::Compare {
+            let c = compare::compare(&e, &a, &tolerance).map_err(|source| ffvk_cli::Error::Compare {
                 expected: expected.clone(),
                 actual: actual.clone(),
                 source,
@@ -590,7 +588,7 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
         }
         Command::Teapot { level, out } => {
             let mesh = ffvk::mesh::teapot::teapot(*level)?;
-            ffvk::scene::gltf::write::write_gltf(&mesh, out).map_err(|source| ffvk::tools::Error::Write {
+            ffvk::scene::gltf::write::write_gltf(&mesh, out).map_err(|source| ffvk_cli::Error::Write {
                 path: out.clone(),
                 source,
             })?;
@@ -621,14 +619,14 @@ fn run(cli: Cli) -> ffvk::tools::Result<ExitCode> {
             })?;
             let (x, y) = *pixel;
             if x >= scene.width || y >= scene.height {
-                return Err(ffvk::tools::Error::PixelOutside {
+                return Err(ffvk_cli::Error::PixelOutside {
                     path: scene.path.clone(),
                     pixel: (x, y),
                     size: (scene.width, scene.height),
                 });
             }
             let mode = lighting.unwrap_or(scene.state.mode);
-            match ffvk::tools::explain::explain(&scene, x, y, mode) {
+            match ffvk_cli::explain::explain(&scene, x, y, mode) {
                 Some(text) => print!("{text}"),
                 None => println!(
                     "pixel ({x}, {y}): no surface; the clear color {} shows",
@@ -655,17 +653,15 @@ fn write_scene(
     out: Option<&std::path::Path>,
     size: Option<(u32, u32)>,
     choices: &GltfArgs,
-) -> ffvk::tools::Result<ExitCode> {
+) -> ffvk_cli::Result<ExitCode> {
     if !is_gltf(gltf) {
-        return Err(ffvk::tools::Error::Path {
+        return Err(ffvk_cli::Error::Path {
             path: gltf.to_path_buf(),
             problem: "expected a .gltf or .glb file",
         });
     }
-    let options = DirectOptions {
-        size,
-        ..choices.options()
-    };
+    let mut options = choices.options();
+    options.size = size;
     let reference = ffvk::scene::direct::relative_ref(gltf, out);
     let made = ffvk::scene::direct::from_gltf(gltf, &reference.to_string_lossy(), &limits(cli), &options)?;
     for w in &made.scene.warnings {
@@ -675,12 +671,12 @@ fn write_scene(
         None => print!("{}", made.toml),
         Some(path) => {
             if ffvk::files::same_file(path, gltf) {
-                return Err(ffvk::tools::Error::OverwritesInput {
+                return Err(ffvk_cli::Error::OverwritesInput {
                     path: path.to_path_buf(),
                 });
             }
             ffvk::files::write_bytes(path, made.toml.as_bytes()).map_err(|source| {
-                ffvk::tools::Error::Write {
+                ffvk_cli::Error::Write {
                     path: path.to_path_buf(),
                     source,
                 }
@@ -697,16 +693,15 @@ fn render_one(
     file: &std::path::Path,
     out: Option<&PathBuf>,
     job: &regress::Job,
-) -> ffvk::tools::Result<ExitCode> {
+) -> ffvk_cli::Result<ExitCode> {
     let path = out.cloned().unwrap_or_else(|| file.with_extension("png"));
     if ffvk::files::same_file(&path, file) {
-        return Err(ffvk::tools::Error::OverwritesInput { path });
+        return Err(ffvk_cli::Error::OverwritesInput { path });
     }
     // As a worker of a suite renders it (pool::worker_main).
-    let mut renderer = Renderer::new(&RendererOptions {
-        specialize: ffvk::Specialize::Always,
-        ..options(cli)
-    })?;
+    let mut renderer_options = options(cli);
+    renderer_options.specialize = ffvk::Specialize::Always;
+    let mut renderer = Renderer::new(&renderer_options)?;
     let scene = regress::load_scene(file, job.size, &job.limits, &job.direct, &mut |m| {
         eprintln!("{m}")
     })?;
@@ -731,7 +726,7 @@ fn finish_results(
     results: &regress::results::Results,
     checked: bool,
     outputs: &Outputs,
-) -> ffvk::tools::Result<ExitCode> {
+) -> ffvk_cli::Result<ExitCode> {
     if let Some(path) = outputs.json {
         results.write_json(path)?;
         eprintln!("wrote {}", path.display());

@@ -2,11 +2,11 @@
 //! JSON, Markdown, PNG plots) are written and well-formed. No timed assertions: times only
 //! have to be positive numbers.
 
-use ffvk::tools::bench::{
-    crossover, points, run_sweep, write_outputs, Engine, Spread, SweepConfig, CSV_COLUMNS,
-};
 use ffvk::vk::Validation;
 use ffvk::RendererOptions;
+use ffvk_cli::bench::{
+    crossover, points, run_sweep, write_outputs, Engine, Spread, SweepConfig, CSV_COLUMNS,
+};
 use indicatif::ProgressBar;
 
 use crate::support::output_dir;
@@ -33,11 +33,9 @@ fn csv_fields(line: &str) -> Vec<String> {
 #[test]
 fn a_tiny_sweep_runs_every_point_and_writes_csv_json_and_plots() {
     let config = SweepConfig::tiny();
-    let options = RendererOptions {
-        device: None,
-        validation: Validation::Required,
-        ..Default::default()
-    };
+    let options = RendererOptions::default()
+        .with_device(None)
+        .with_validation(Validation::Required);
     // Validation errors fail the frame that caused them, and so the sweep.
     let report = run_sweep(&config, &options, &ProgressBar::hidden()).unwrap();
 
@@ -73,7 +71,7 @@ fn a_tiny_sweep_runs_every_point_and_writes_csv_json_and_plots() {
         "{d:?}"
     );
     assert!(d.new_key_create_ms.median > 0.0, "{d:?}");
-    assert!(ffvk::tools::bench::markdown(&report).contains("### Recording draws (host)"));
+    assert!(ffvk_cli::bench::markdown(&report).contains("### Recording draws (host)"));
     assert!(report.env.mesa_version.starts_with(|c: char| c.is_ascii_digit()));
 
     let dir = output_dir().join("bench");
@@ -160,7 +158,7 @@ fn sweeps_are_validated() {
         },
     ] {
         let err = run_sweep(&bad, &options, &ProgressBar::hidden()).unwrap_err();
-        assert!(matches!(err, ffvk::tools::Error::Bench(_)), "{err}");
+        assert!(matches!(err, ffvk_cli::Error::Bench(_)), "{err}");
     }
 }
 
@@ -183,10 +181,7 @@ fn spreads_and_crossovers() {
 #[test]
 fn a_batched_sweep_draws_every_point_several_times_and_fits_what_a_vertex_pixel_and_light_cost() {
     let config = SweepConfig::tiny_batched();
-    let options = RendererOptions {
-        validation: Validation::Required,
-        ..Default::default()
-    };
+    let options = RendererOptions::default().with_validation(Validation::Required);
     let report = run_sweep(&config, &options, &ProgressBar::hidden()).unwrap();
     assert_eq!(
         report.results.len(),
@@ -209,12 +204,12 @@ fn a_batched_sweep_draws_every_point_several_times_and_fits_what_a_vertex_pixel_
     let costs = &report.summary.costs;
     let ffvk_vertex = costs
         .iter()
-        .find(|c| c.engine == Engine::Ffvk && c.mode == ffvk::tools::bench::BenchMode::Vertex)
+        .find(|c| c.engine == Engine::Ffvk && c.mode == ffvk_cli::bench::BenchMode::Vertex)
         .expect("ffvk's vertex mode ran every sweep");
     assert!(ffvk_vertex.ns_per_vertex.is_some() && ffvk_vertex.ns_per_pixel.is_some());
     assert!(ffvk_vertex.ns_per_light.is_some() && ffvk_vertex.ns_per_light_evaluation.is_some());
     assert!(costs.iter().any(|c| c.engine == Engine::Gl), "{costs:?}");
-    let md = ffvk::tools::bench::markdown(&report);
+    let md = ffvk_cli::bench::markdown(&report);
     assert!(md.contains("### What a vertex, a pixel and a light cost"), "{md}");
     assert!(md.contains("3 draws of the mesh per frame"), "{md}");
     assert!(md.contains("GL_TIME_ELAPSED"), "{md}");
@@ -222,7 +217,7 @@ fn a_batched_sweep_draws_every_point_several_times_and_fits_what_a_vertex_pixel_
 
 #[test]
 fn a_least_squares_line_through_exact_points_is_that_line() {
-    use ffvk::tools::bench::fit_line;
+    use ffvk_cli::bench::fit_line;
     let points: Vec<(f64, f64)> = [1.0, 2.0, 4.0, 8.0].iter().map(|&x| (x, 3.0 * x + 5.0)).collect();
     let (slope, intercept) = fit_line(&points).unwrap();
     assert!((slope - 3.0).abs() < 1e-12 && (intercept - 5.0).abs() < 1e-12);
@@ -236,7 +231,7 @@ fn a_least_squares_line_through_exact_points_is_that_line() {
 
 #[test]
 fn the_auto_sweep_is_the_gpu_sweep_on_gpus_and_the_standard_one_on_lavapipe() {
-    use ffvk::tools::bench::is_gpu;
+    use ffvk_cli::bench::is_gpu;
     assert!(is_gpu("DISCRETE_GPU") && is_gpu("INTEGRATED_GPU") && is_gpu("VIRTUAL_GPU"));
     assert!(!is_gpu("CPU") && !is_gpu("OTHER"));
     let gpu = SweepConfig::gpu();
@@ -249,19 +244,16 @@ fn the_auto_sweep_is_the_gpu_sweep_on_gpus_and_the_standard_one_on_lavapipe() {
 fn the_jobs_sweep_times_every_number_of_workers_on_a_suite_that_passes() {
     let dir = output_dir().join("bench_jobs");
     let _ = std::fs::remove_dir_all(&dir);
-    let config = ffvk::tools::bench::SuiteConfig {
+    let config = ffvk_cli::bench::SuiteConfig {
         scenes: 6,
         size: 32,
         jobs: vec![1, 2],
         runs: 2,
         lp_num_threads: None,
     };
-    let options = RendererOptions {
-        validation: Validation::Required,
-        ..RendererOptions::default()
-    };
+    let options = RendererOptions::default().with_validation(Validation::Required);
     let program = std::path::Path::new(env!("CARGO_BIN_EXE_ffvk"));
-    let report = ffvk::tools::bench::run_jobs_sweep(&config, &options, program, &dir, &mut |_| {}).unwrap();
+    let report = ffvk_cli::bench::run_jobs_sweep(&config, &options, program, &dir, &mut |_| {}).unwrap();
     assert_eq!(report.points.iter().map(|p| p.jobs).collect::<Vec<_>>(), [1, 2]);
     for p in &report.points {
         assert_eq!(p.images, 6);

@@ -19,7 +19,7 @@ use glam::{Mat4, Vec3, Vec4};
 use image::{Rgba, RgbaImage};
 
 use crate::support::*;
-use ffvk::tools::gl_reference::{render_gl_with, GlDraw, GlScene};
+use ffvk_cli::gl_reference::{render_gl_with, GlDraw, GlScene};
 
 pub(crate) const SIZE: u32 = 128;
 
@@ -569,7 +569,7 @@ fn check_against_gl(
 #[test]
 fn the_current_color_and_its_color_material_write_back_match_mesa_gl() {
     use crate::embedding::embed;
-    use ffvk::tools::gl_reference::GlCall;
+    use ffvk_cli::gl_reference::GlCall;
     let c = rgba(0.2, 0.7, 0.4, 1.0);
     let (c1, c2) = (rgba(0.9, 0.3, 0.1, 1.0), rgba(0.1, 0.2, 0.9, 1.0));
     let teapot = embed::teapot();

@@ -1,7 +1,7 @@
 //! The embedding API: GL lighting recorded into a caller's own device and command buffers
 //! (`ffvk::Lighting`), and the offscreen renderer built on it.
 
-#[path = "../../examples/embed.rs"]
+#[path = "../../ffvk/examples/embed.rs"]
 #[allow(dead_code)]
 pub(crate) mod embed;
 
@@ -204,22 +204,14 @@ fn bad_vertex_layouts_and_draws_are_clear_errors() {
     use ash::vk;
     use ffvk::{Attribute, LightingError, VertexInput};
     let mut input = VertexInput::interleaved();
-    input.normal = Attribute {
-        binding: 3,
-        offset: 0,
-        format: vk::Format::R32G32B32_SFLOAT,
-    };
+    input.normal = Attribute::new(3, 0, vk::Format::R32G32B32_SFLOAT);
     let e = input.validate().unwrap_err().to_string();
     assert!(
         e.contains("normal") && e.contains("binding 3") && e.contains("[0]"),
         "{e}"
     );
     let mut input = VertexInput::interleaved();
-    input.color = Some(Attribute {
-        binding: 0,
-        offset: 24,
-        format: vk::Format::R32G32B32A32_UINT,
-    });
+    input.color = Some(Attribute::new(0, 24, vk::Format::R32G32B32A32_UINT));
     let e = input.validate().unwrap_err();
     assert!(
         matches!(
@@ -321,10 +313,9 @@ fn features_the_caller_did_not_enable_are_named_in_the_error() {
         ),
         "{e}"
     );
-    let features = EnabledFeatures {
-        dynamic_rendering: true,
-        provoking_vertex_last: false,
-    };
+    let features = EnabledFeatures::default()
+        .with_dynamic_rendering(true)
+        .with_provoking_vertex_last(false);
     // SAFETY: as above.
     let device =
         unsafe { Device::from_caller(&plain.instance, plain.physical, plain.device.clone(), features) }

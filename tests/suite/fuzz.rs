@@ -333,10 +333,7 @@ fn generated_scene_files_load_or_fail_with_an_error_and_render_without_panicking
     let dir = sandbox("scenes");
     write_assets(&dir);
     let path = dir.join("scene.toml");
-    let limits = Limits {
-        mesh_bytes: 64 << 20,
-        ..Limits::default()
-    };
+    let limits = Limits::default().with_mesh_bytes(64 << 20);
     let r = RefCell::new(Some(renderer()));
     let (loaded, refused) = (Cell::new(0), Cell::new(0));
     runner(1000)

@@ -4,7 +4,7 @@
 
 use ffvk::gl::state::{LightingMode, LightingState};
 use ffvk::mesh::{MeshData, Vertex};
-use ffvk::tools::gl_reference::{
+use ffvk_cli::gl_reference::{
     gl_info, gl_info_with, render_gl, render_gl_with, time_frames_with, GlDraw, GlError, GlOptions, GlScene,
     NoDriver,
 };
@@ -17,13 +17,13 @@ const SIZE: u32 = 16;
 /// Two counter-clockwise triangles covering the whole view under identity matrices.
 fn full_screen_quad(normal: Vec3, color: Vec4) -> MeshData {
     let corners = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)];
-    MeshData {
-        vertices: corners
+    MeshData::new(
+        corners
             .iter()
             .map(|&(x, y)| Vertex::new(Vec3::new(x, y, 0.0), normal, color))
             .collect(),
-        indices: vec![0, 1, 2, 0, 2, 3],
-    }
+        vec![0, 1, 2, 0, 2, 3],
+    )
 }
 
 fn scene<'a>(mesh: &'a MeshData, state: LightingState) -> GlScene<'a> {
@@ -45,7 +45,7 @@ fn scene<'a>(mesh: &'a MeshData, state: LightingState) -> GlScene<'a> {
 }
 
 /// The oracle's render (see [`gl_options`]).
-fn render(scene: &GlScene) -> ffvk::tools::Result<image::RgbaImage> {
+fn render(scene: &GlScene) -> ffvk_cli::Result<image::RgbaImage> {
     render_gl_with(scene, &gl_options())
 }
 
@@ -64,10 +64,8 @@ fn assert_every_pixel(img: &image::RgbaImage, expected: [u8; 4], tolerance: u8) 
 }
 
 fn lit_default_light0() -> LightingState {
-    let mut state = LightingState {
-        lighting: true,
-        ..LightingState::default()
-    };
+    let mut state = LightingState::default();
+    state.lighting = true;
     state.lights[0].enabled = true;
     state
 }
@@ -103,13 +101,13 @@ fn default_light0_on_a_facing_quad() {
 fn row_zero_is_the_top_of_the_view() {
     // A counter-clockwise red triangle in the top part of the view only (y from 0.2 to 1).
     let red = Vec4::new(1.0, 0.0, 0.0, 1.0);
-    let mesh = MeshData {
-        vertices: [(-1.0, 0.2), (1.0, 0.2), (0.0, 1.0)]
+    let mesh = MeshData::new(
+        [(-1.0, 0.2), (1.0, 0.2), (0.0, 1.0)]
             .iter()
             .map(|&(x, y)| Vertex::new(Vec3::new(x, y, 0.0), Vec3::Z, red))
             .collect(),
-        indices: vec![0, 1, 2],
-    };
+        vec![0, 1, 2],
+    );
     let img = render(&scene(&mesh, LightingState::default())).expect("render");
     let mid = SIZE / 2;
     // Row 2 at the center column lies near y = +0.75 in NDC: inside the triangle.
@@ -132,18 +130,16 @@ fn flat_shading_takes_the_last_vertex() {
         Vec4::new(0.0, 0.0, 1.0, 1.0),
     ];
     let positions = [(-1.0, -1.0), (3.0, -1.0), (-1.0, 3.0)];
-    let mesh = MeshData {
-        vertices: positions
+    let mesh = MeshData::new(
+        positions
             .iter()
             .zip(colors)
             .map(|(&(x, y), c)| Vertex::new(Vec3::new(x, y, 0.0), Vec3::Z, c))
             .collect(),
-        indices: vec![0, 1, 2],
-    };
-    let state = LightingState {
-        mode: LightingMode::Flat,
-        ..LightingState::default()
-    };
+        vec![0, 1, 2],
+    );
+    let mut state = LightingState::default();
+    state.mode = LightingMode::Flat;
     let img = render(&scene(&mesh, state)).expect("render");
     assert_every_pixel(&img, [0, 0, 255, 255], 0);
 }
@@ -206,7 +202,7 @@ fn a_missing_egl_library_is_no_gl_driver() {
     assert!(
         matches!(
             &err,
-            ffvk::tools::Error::Gl(GlError::NoDriver(NoDriver::Library { library, .. }))
+            ffvk_cli::Error::Gl(GlError::NoDriver(NoDriver::Library { library, .. }))
                 if library == "/nonexistent/libEGL.so.1"
         ),
         "{err:?}"
@@ -258,7 +254,7 @@ fn a_device_that_is_not_there_is_a_clear_error() {
     ] {
         let err = gl_info_with(&options).expect_err("no such device");
         assert!(
-            matches!(err, ffvk::tools::Error::Gl(GlError::NoMatchingDevice { .. })),
+            matches!(err, ffvk_cli::Error::Gl(GlError::NoMatchingDevice { .. })),
             "{err:?}"
         );
         let message = err.to_string();

@@ -25,10 +25,7 @@ fn direct(name: &str, options: DirectOptions) -> Scene {
 }
 
 fn small() -> DirectOptions {
-    DirectOptions {
-        size: Some((96, 96)),
-        ..Default::default()
-    }
+    DirectOptions::default().with_size(Some((96, 96)))
 }
 
 /// The clear color the direct scene uses, as bytes.
@@ -234,13 +231,7 @@ fn punctual_lights_are_scaled_by_the_documented_auto_exposure() {
     );
 
     // A given exposure replaces it; "headlight" replaces the file's lights.
-    let given = direct(
-        "lamp.glb",
-        DirectOptions {
-            exposure: Some(0.01),
-            ..small()
-        },
-    );
+    let given = direct("lamp.glb", small().with_exposure(Some(0.01)));
     let bulb = given
         .state
         .lights
@@ -251,13 +242,7 @@ fn punctual_lights_are_scaled_by_the_documented_auto_exposure() {
         .diffuse
         .truncate()
         .abs_diff_eq(Vec3::new(1.2, 1.08, 0.84), 1e-5));
-    let headlight = direct(
-        "lamp.glb",
-        DirectOptions {
-            lights: LightChoice::Headlight,
-            ..small()
-        },
-    );
+    let headlight = direct("lamp.glb", small().with_lights(LightChoice::Headlight));
     assert_eq!(headlight.state.lights.iter().filter(|l| l.enabled).count(), 1);
 }
 
@@ -271,22 +256,13 @@ fn the_files_camera_is_used_with_its_aspect_ratio_unless_framing_is_asked_for() 
     // GL's projection for yfov 0.6 rad: y scale 1 / tan(0.3).
     assert!((scene.projection.y_axis.y - 1.0 / 0.3f32.tan()).abs() < 1e-4);
 
-    let framed = direct(
-        "camera.gltf",
-        DirectOptions {
-            camera: CameraChoice::Frame,
-            ..small()
-        },
-    );
+    let framed = direct("camera.gltf", small().with_camera(CameraChoice::Frame));
     assert_ne!(framed.view, scene.view);
     let e = from_gltf(
         &assets().join("camera.gltf"),
         "camera.gltf",
         &Default::default(),
-        &DirectOptions {
-            camera: CameraChoice::File("top".into()),
-            ..small()
-        },
+        &small().with_camera(CameraChoice::File("top".into())),
     )
     .unwrap_err()
     .to_string();
@@ -358,15 +334,7 @@ fn ffvk_render_and_scene_take_a_gltf_file_and_agree() {
 fn gltf_lights_exact_draws_gltfs_own_falloff_and_cone_and_gl_stays_the_default() {
     use ffvk::gl::state::{Attenuation, SpotEdge};
     use ffvk::scene::gltf::GltfLights;
-    let with = |mapping| {
-        direct(
-            "lamp.glb",
-            DirectOptions {
-                gltf_lights: mapping,
-                ..small()
-            },
-        )
-    };
+    let with = |mapping| direct("lamp.glb", small().with_gltf_lights(mapping));
     let lit = |scene: &Scene| {
         scene
             .state

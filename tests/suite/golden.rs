@@ -10,7 +10,7 @@ use std::path::PathBuf;
 use ffvk::gl::state::LightingMode;
 use ffvk::images::compare::{compare, heat_map, load_image, Tolerance};
 use ffvk::images::save_png;
-use ffvk::tools::regress::{self, Job, Status};
+use ffvk_cli::regress::{self, Job, Status};
 
 use crate::support::*;
 
@@ -76,8 +76,8 @@ fn golden_lighting_variants_in_every_mode() {
 fn golden_demo_panels() {
     let mut r = renderer();
     let tolerance = golden_tolerance(&r);
-    let mut panels = ffvk::tools::demo::panels(&mut r, 128).unwrap();
-    panels.extend(ffvk::tools::demo::model_panels(&mut r, 128).unwrap());
+    let mut panels = ffvk_cli::demo::panels(&mut r, 128).unwrap();
+    panels.extend(ffvk_cli::demo::model_panels(&mut r, 128).unwrap());
     finish(r);
     let refs = root().join("tests/golden/demo");
     let out = root().join("tests/output/golden/demo");

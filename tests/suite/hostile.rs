@@ -94,10 +94,7 @@ fn buffer_uris_may_not_leave_the_assets_folder() {
         assert!(e.to_string().contains("leaves the asset's folder"), "{e}");
     }
     // A folder the user allows explicitly widens the rule to it, and only to it.
-    let allowed = Limits {
-        asset_roots: vec![dir.clone()],
-        ..Limits::default()
-    };
+    let allowed = Limits::default().with_asset_roots(vec![dir.clone()]);
     std::fs::write(asset.join("s.toml"), "[[meshes]]\ngltf = \"a.gltf\"\n").unwrap();
     for (uri, loads) in [
         ("../outside.bin", true),
@@ -327,10 +324,7 @@ fn meshes_past_the_scenes_memory_limit_are_refused_before_they_are_read() {
     let many = dir.join("many.gltf");
     std::fs::write(&many, gltf_json("t.bin", &nodes, &roots.join(","))).unwrap();
     std::fs::write(dir.join("many.toml"), "[[meshes]]\ngltf = \"many.gltf\"\n").unwrap();
-    let limits = Limits {
-        mesh_bytes: 100_000,
-        ..Limits::default()
-    };
+    let limits = Limits::default().with_mesh_bytes(100_000);
     let e = Scene::load_with(&dir.join("many.toml"), &limits)
         .unwrap_err()
         .to_string();
@@ -346,10 +340,7 @@ fn meshes_past_the_scenes_memory_limit_are_refused_before_they_are_read() {
     }
     let scene = Scene::load_with(
         &dir.join("many.toml"),
-        &Limits {
-            mesh_bytes: 2000 * 156,
-            ..Limits::default()
-        },
+        &Limits::default().with_mesh_bytes(2000 * 156),
     )
     .unwrap();
     assert_eq!(scene.meshes.len(), 2000, "exactly at the limit loads");
@@ -361,10 +352,7 @@ fn meshes_past_the_scenes_memory_limit_are_refused_before_they_are_read() {
     .unwrap();
     let e = Scene::load_with(
         &dir.join("spheres.toml"),
-        &Limits {
-            mesh_bytes: 80 << 20,
-            ..Limits::default()
-        },
+        &Limits::default().with_mesh_bytes(80 << 20),
     )
     .unwrap_err()
     .to_string();

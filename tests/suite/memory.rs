@@ -17,14 +17,12 @@ fn teapot_frame(r: &mut Renderer, mesh: &MeshData, size: u32) -> Pixels {
     gl.enable(Cap::Light(0)).unwrap();
     gl.enable(Cap::ColorMaterial).unwrap();
     let mut frame = Frame::new(size, size);
-    frame.draws.push(Draw {
-        mesh: &uploaded,
-        modelview: Mat4::look_at_rh(Vec3::new(0.0, 1.2, 3.0), Vec3::new(0.0, -0.05, 0.0), Vec3::Y),
-        projection: perspective(40.0, 1.0, 0.5, 10.0),
-        state: gl.lighting,
-        cull_face: None,
-        texture: None,
-    });
+    frame.draws.push(Draw::new(
+        &uploaded,
+        Mat4::look_at_rh(Vec3::new(0.0, 1.2, 3.0), Vec3::new(0.0, -0.05, 0.0), Vec3::Y),
+        perspective(40.0, 1.0, 0.5, 10.0),
+        gl.lighting,
+    ));
     r.render(&frame).unwrap()
 }
 
@@ -32,10 +30,7 @@ fn teapot_frame(r: &mut Renderer, mesh: &MeshData, size: u32) -> Pixels {
 fn meshes_copied_through_a_staging_buffer_draw_the_same_pixels_as_meshes_written_directly() {
     let mesh = teapot(6).unwrap();
     let mut direct = renderer();
-    let mut staged = renderer_from(RendererOptions {
-        upload: Upload::Staging,
-        ..RendererOptions::default()
-    });
+    let mut staged = renderer_from(RendererOptions::default().with_upload(Upload::Staging));
     let a = teapot_frame(&mut direct, &mesh, 96);
     let b = teapot_frame(&mut staged, &mesh, 96);
     let background = a.pixel(0, 0).unwrap();

@@ -8,8 +8,8 @@
 use std::path::{Path, PathBuf};
 use std::process::Output;
 
-use ffvk::tools::bench::generate_scenes;
-use ffvk::tools::regress::{self, Partition};
+use ffvk_cli::bench::generate_scenes;
+use ffvk_cli::regress::{self, Partition};
 use serde_json::Value;
 
 use crate::support::{ffvk_command, output_dir};

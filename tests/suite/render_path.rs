@@ -113,12 +113,9 @@ fn cull_face_drops_the_faces_it_names() {
     ] {
         let mut frame = Frame::new(64, 64);
         for modelview in [Mat4::IDENTITY, mirror] {
-            frame.draws.push(Draw {
-                cull_face: cull,
-                texture: None,
-                modelview,
-                ..ndc_draw(&ccw)
-            });
+            let mut draw = ndc_draw(&ccw).with_cull_face(cull);
+            draw.modelview = modelview;
+            frame.draws.push(draw);
         }
         let image = r.render(&frame).unwrap().into_rgba_image();
         assert_pixel(
@@ -239,11 +236,11 @@ fn bad_sizes_and_meshes_are_errors() {
 
 #[test]
 fn an_unknown_device_name_is_a_clear_error() {
-    let err = ffvk::Renderer::new(&ffvk::RendererOptions {
-        device: Some("no-such-gpu".into()),
-        validation: ffvk::vk::Validation::Off,
-        ..Default::default()
-    })
+    let err = ffvk::Renderer::new(
+        &ffvk::RendererOptions::default()
+            .with_device(Some("no-such-gpu".into()))
+            .with_validation(ffvk::vk::Validation::Off),
+    )
     .err()
     .expect("no device named no-such-gpu");
     let text = err.to_string();

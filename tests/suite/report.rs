@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use std::process::Output;
 
 use ffvk::images::{load_image, save_png};
-use ffvk::tools::bench::generate_scenes;
+use ffvk_cli::bench::generate_scenes;
 use image::{Rgba, RgbaImage};
 
 use crate::browser::Browser;

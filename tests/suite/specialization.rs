@@ -28,14 +28,12 @@ fn draw_states(r: &mut Renderer, states: &[LightingState]) {
     let mesh = r.upload(&quad(-1.0, -1.0, 1.0, 1.0, 0.0, Vec4::ONE)).unwrap();
     for &state in states {
         let mut frame = Frame::new(8, 8);
-        frame.draws.push(Draw {
-            mesh: &mesh,
-            modelview: Mat4::from_translation(Vec3::new(0.0, 0.0, -2.0)),
-            projection: perspective(45.0, 1.0, 0.5, 10.0),
+        frame.draws.push(Draw::new(
+            &mesh,
+            Mat4::from_translation(Vec3::new(0.0, 0.0, -2.0)),
+            perspective(45.0, 1.0, 0.5, 10.0),
             state,
-            cull_face: None,
-            texture: None,
-        });
+        ));
         r.render(&frame).unwrap().into_rgba_image();
     }
 }

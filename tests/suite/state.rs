@@ -46,14 +46,9 @@ fn defaults_are_gls() {
     assert_eq!(s.model.ambient, Vec4::new(0.2, 0.2, 0.2, 1.0));
     assert!(!s.model.local_viewer && !s.model.two_side);
     assert_eq!(s.model.color_control, ColorControl::SingleColor);
-    assert_eq!(
-        s.color_material,
-        ColorMaterial {
-            enabled: false,
-            face: Face::FrontAndBack,
-            mode: ColorMaterialMode::AmbientAndDiffuse
-        }
-    );
+    assert!(!s.color_material.enabled);
+    assert_eq!(s.color_material.face, Face::FrontAndBack);
+    assert_eq!(s.color_material.mode, ColorMaterialMode::AmbientAndDiffuse);
     assert!(!s.normalize && !s.rescale_normal);
     assert_eq!(s.mode, LightingMode::Vertex);
     assert_eq!(gl.modelview, Mat4::IDENTITY);
@@ -276,10 +271,12 @@ fn shade_model_and_lighting_mode() {
     gl.lighting_mode(LightingMode::Fragment);
     assert_eq!(gl.lighting.mode, LightingMode::Fragment);
     assert_eq!("fragment".parse::<LightingMode>(), Ok(LightingMode::Fragment));
-    assert!("phong"
-        .parse::<LightingMode>()
-        .unwrap_err()
-        .contains("vertex, fragment or flat"));
+    let err = "phong".parse::<LightingMode>().unwrap_err();
+    assert_eq!((err.what, err.value.as_str()), ("lighting mode", "phong"));
+    assert_eq!(
+        err.to_string(),
+        r#"unknown lighting mode "phong": expected vertex, fragment or flat"#
+    );
 }
 
 #[test]

@@ -9,9 +9,9 @@ use ffvk::gl::state::{
 };
 use ffvk::gl::texture::{TexEnvMode, TextureImage};
 use ffvk::mesh::{MeshData, Vertex};
-use ffvk::tools::gl_reference::GlOptions;
 use ffvk::vk::{Validation, ValidationSink};
 use ffvk::{Renderer, RendererOptions, Specialize};
+use ffvk_cli::gl_reference::GlOptions;
 use glam::{DVec4, Mat4, Vec3, Vec4};
 use image::RgbaImage;
 
@@ -22,19 +22,13 @@ pub fn renderer() -> Renderer {
 
 /// [`renderer`] with a given pipeline specialization policy.
 pub fn renderer_with(specialize: Specialize) -> Renderer {
-    renderer_from(RendererOptions {
-        specialize,
-        ..RendererOptions::default()
-    })
+    renderer_from(RendererOptions::default().with_specialize(specialize))
 }
 
 /// A renderer of `options` with the validation layer required.
 pub fn renderer_from(options: RendererOptions) -> Renderer {
-    Renderer::new(&RendererOptions {
-        validation: Validation::Required,
-        ..options
-    })
-    .expect("a renderer on lavapipe with VK_LAYER_KHRONOS_validation")
+    Renderer::new(&options.clone().with_validation(Validation::Required))
+        .expect("a renderer on lavapipe with VK_LAYER_KHRONOS_validation")
 }
 
 /// The GL the oracle tests compare with: a software device (Mesa's llvmpipe, whose results
@@ -91,10 +85,10 @@ pub fn lit_state() -> GlState {
 pub fn quad(x0: f32, y0: f32, x1: f32, y1: f32, z: f32, color: Vec4) -> MeshData {
     let n = Vec3::Z;
     let v = |x, y| Vertex::new(Vec3::new(x, y, z), n, color);
-    MeshData {
-        vertices: vec![v(x0, y0), v(x1, y0), v(x1, y1), v(x0, y1)],
-        indices: vec![0, 1, 2, 0, 2, 3],
-    }
+    MeshData::new(
+        vec![v(x0, y0), v(x1, y0), v(x1, y1), v(x0, y1)],
+        vec![0, 1, 2, 0, 2, 3],
+    )
 }
 
 /// A regular grid over [-1, 1]² in the z = 0 plane with `n`×`n` cells, normals from `normal`,
@@ -116,7 +110,7 @@ pub fn grid(n: u32, normal: impl Fn(f32, f32) -> Vec3, color: impl Fn(f32, f32) 
             indices.extend([at(i, j), at(i + 1, j + 1), at(i, j + 1)]);
         }
     }
-    MeshData { vertices, indices }
+    MeshData::new(vertices, indices)
 }
 
 /// A GL perspective projection (gluPerspective).
@@ -195,8 +189,8 @@ pub fn reference_at(
     x: u32,
     y: u32,
     mode: ffvk::gl::state::LightingMode,
-) -> Option<(ffvk::tools::explain::Hit, DVec4)> {
-    let hit = ffvk::tools::explain::find_surface(scene, x, y)?;
+) -> Option<(ffvk_cli::explain::Hit, DVec4)> {
+    let hit = ffvk_cli::explain::find_surface(scene, x, y)?;
     let mesh = &scene.meshes[hit.mesh];
     let mut state = scene.draw_state(mesh);
     state.mode = mode;

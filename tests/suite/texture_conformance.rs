@@ -53,7 +53,7 @@ use image::RgbaImage;
 
 use crate::conformance::{compare, gl_draw_image, mask, save_triplet, Stats, SIZE};
 use crate::support::*;
-use ffvk::tools::gl_reference::GlDraw;
+use ffvk_cli::gl_reference::GlDraw;
 
 /// [`hashed_texels`] of the tests' size.
 fn texels() -> TextureImage {
@@ -134,10 +134,9 @@ fn ffvk_image(
     let gpu = r.upload(&view.mesh).unwrap();
     let tex = r.upload_texture(image, sampling).unwrap();
     let mut frame = Frame::new(SIZE, SIZE);
-    frame.draws.push(Draw {
-        texture: Some(&tex),
-        ..Draw::new(&gpu, view.modelview, view.projection, state)
-    });
+    frame
+        .draws
+        .push(Draw::new(&gpu, view.modelview, view.projection, state).with_texture(Some(&tex)));
     r.render(&frame).unwrap().into_rgba_image()
 }
 
@@ -248,12 +247,11 @@ fn every_environment_mode_with_nearest_texels_matches_mesa_gl() {
 
 #[test]
 fn linear_filtering_without_mipmaps_matches_mesa_gl() {
-    let sampling = Sampling {
-        min_filter: MinFilter::Linear,
-        mag_filter: MagFilter::Linear,
-        wrap_s: Wrap::Repeat,
-        wrap_t: Wrap::Repeat,
-    };
+    let sampling = Sampling::default()
+        .with_min_filter(MinFilter::Linear)
+        .with_mag_filter(MagFilter::Linear)
+        .with_wrap_s(Wrap::Repeat)
+        .with_wrap_t(Wrap::Repeat);
     let mut cases = Vec::new();
     for env in TexEnvMode::ALL {
         for mode in MODES {
@@ -280,12 +278,11 @@ fn trilinear_filtering_with_every_wrap_mode_matches_mesa_gl() {
                     name: format!("trilinear_{}_{}_{}", wrap.name(), env.name(), mode.name()),
                     state: textured_state(env, ColorControl::SeparateSpecularColor, mode, past_the_edges()),
                     image: waves().with_mipmaps(),
-                    sampling: Sampling {
-                        min_filter: MinFilter::LinearMipmapLinear,
-                        mag_filter: MagFilter::Linear,
-                        wrap_s: wrap,
-                        wrap_t: wrap,
-                    },
+                    sampling: Sampling::default()
+                        .with_min_filter(MinFilter::LinearMipmapLinear)
+                        .with_mag_filter(MagFilter::Linear)
+                        .with_wrap_s(wrap)
+                        .with_wrap_t(wrap),
                     tol: 2,
                     need: 0.999,
                 });
@@ -316,12 +313,11 @@ fn srgb_textures_match_mesa_gl() {
                 name: format!("srgb_trilinear_{}_{}", env.name(), mode.name()),
                 state: textured_state(env, ColorControl::SeparateSpecularColor, mode, past_the_edges()),
                 image: srgb(waves().with_mipmaps()),
-                sampling: Sampling {
-                    min_filter: MinFilter::LinearMipmapLinear,
-                    mag_filter: MagFilter::Linear,
-                    wrap_s: Wrap::Repeat,
-                    wrap_t: Wrap::MirroredRepeat,
-                },
+                sampling: Sampling::default()
+                    .with_min_filter(MinFilter::LinearMipmapLinear)
+                    .with_mag_filter(MagFilter::Linear)
+                    .with_wrap_s(Wrap::Repeat)
+                    .with_wrap_t(Wrap::MirroredRepeat),
                 tol: 2,
                 need: 0.999,
             });
@@ -348,12 +344,11 @@ fn every_min_and_mag_filter_matches_mesa_gl() {
                         matrix,
                     ),
                     image: waves().with_mipmaps(),
-                    sampling: Sampling {
-                        min_filter,
-                        mag_filter,
-                        wrap_s: Wrap::Repeat,
-                        wrap_t: Wrap::Repeat,
-                    },
+                    sampling: Sampling::default()
+                        .with_min_filter(min_filter)
+                        .with_mag_filter(mag_filter)
+                        .with_wrap_s(Wrap::Repeat)
+                        .with_wrap_t(Wrap::Repeat),
                     tol: 2,
                     // Nearest level choice under strong minification: see the module doc.
                     need: if how == "x12" && min_filter.uses_mipmaps() && !min_filter.between_levels_linear()
@@ -379,10 +374,10 @@ fn flat_quad(lambda: f32) -> View {
             .with_texcoord(Vec2::new((x + 1.0) * 0.5 * k, (y + 1.0) * 0.5 * k))
     };
     View {
-        mesh: MeshData {
-            vertices: vec![v(-1.0, -1.0), v(1.0, -1.0), v(1.0, 1.0), v(-1.0, 1.0)],
-            indices: vec![0, 1, 2, 0, 2, 3],
-        },
+        mesh: MeshData::new(
+            vec![v(-1.0, -1.0), v(1.0, -1.0), v(1.0, 1.0), v(-1.0, 1.0)],
+            vec![0, 1, 2, 0, 2, 3],
+        ),
         modelview: Mat4::IDENTITY,
         projection: Mat4::IDENTITY,
     }
@@ -404,11 +399,12 @@ fn the_min_mag_switch_is_at_lambda_zero_in_mesa_as_in_ffvk() {
     gl.tex_env(TexEnvParam::Mode(TexEnvMode::Replace)).unwrap();
     let state = gl.lighting;
     let image = texels().with_mipmaps();
-    let sampling = |min_filter, mag_filter| Sampling {
-        min_filter,
-        mag_filter,
-        wrap_s: Wrap::Repeat,
-        wrap_t: Wrap::Repeat,
+    let sampling = |min_filter, mag_filter| {
+        Sampling::default()
+            .with_min_filter(min_filter)
+            .with_mag_filter(mag_filter)
+            .with_wrap_s(Wrap::Repeat)
+            .with_wrap_t(Wrap::Repeat)
     };
     let m = mask(&mut r, &view.mesh, view.modelview, view.projection);
     let gl_at = |min, mag| gl_image(&view, state, &image, sampling(min, mag));
@@ -458,12 +454,11 @@ fn fragment_mode_with_textures_converges_to_mesa_gl_on_a_dense_mesh() {
                 name: format!("fragment_linear_{}{sep}", env.name()),
                 state: textured_state(env, control, LightingMode::Fragment, twice_around()),
                 image: waves(),
-                sampling: Sampling {
-                    min_filter: MinFilter::Linear,
-                    mag_filter: MagFilter::Linear,
-                    wrap_s: Wrap::Repeat,
-                    wrap_t: Wrap::Repeat,
-                },
+                sampling: Sampling::default()
+                    .with_min_filter(MinFilter::Linear)
+                    .with_mag_filter(MagFilter::Linear)
+                    .with_wrap_s(Wrap::Repeat)
+                    .with_wrap_t(Wrap::Repeat),
                 tol: 3,
                 need: 0.999,
             });
@@ -480,11 +475,12 @@ fn a_scene_with_another_texture_setting_fails_the_comparison() {
     let view = sphere();
     let m = mask(&mut r, &view.mesh, view.modelview, view.projection);
     let lit = |env, matrix| textured_state(env, ColorControl::SingleColor, LightingMode::Vertex, matrix);
-    let trilinear = |wrap| Sampling {
-        min_filter: MinFilter::LinearMipmapLinear,
-        mag_filter: MagFilter::Linear,
-        wrap_s: wrap,
-        wrap_t: wrap,
+    let trilinear = |wrap| {
+        Sampling::default()
+            .with_min_filter(MinFilter::LinearMipmapLinear)
+            .with_mag_filter(MagFilter::Linear)
+            .with_wrap_s(wrap)
+            .with_wrap_t(wrap)
     };
     let mut srgb = waves().with_mipmaps();
     srgb.srgb = true;
@@ -577,7 +573,7 @@ fn a_scene_with_another_texture_setting_fails_the_comparison() {
 /// a level whose bytes do not match its size is an error naming it, before GL reads them.
 #[test]
 fn textured_scenes_time_and_a_malformed_level_is_an_error() {
-    use ffvk::tools::gl_reference::{render_gl_with, time_frames_with, DrawError, GlError, GlScene};
+    use ffvk_cli::gl_reference::{render_gl_with, time_frames_with, DrawError, GlError, GlScene};
     let view = sphere();
     let image = waves().with_mipmaps();
     let s = textured_state(
@@ -602,7 +598,7 @@ fn textured_scenes_time_and_a_malformed_level_is_an_error() {
     let mut bad = image.clone();
     bad.levels[2].rgba.pop();
     match render_gl_with(&scene(&bad), &gl_options()) {
-        Err(ffvk::tools::Error::Gl(GlError::Draw {
+        Err(ffvk_cli::Error::Gl(GlError::Draw {
             index: 0,
             problem: DrawError::TextureLevel { level: 2, .. },
         })) => {}

@@ -51,10 +51,9 @@ fn render(
     let mesh = r.upload(&scene.mesh).unwrap();
     let mut frame = Frame::new(SIZE, SIZE);
     frame.clear_color = Vec4::new(0.1, 0.2, 0.3, 1.0);
-    frame.draws.push(Draw {
-        texture,
-        ..Draw::new(&mesh, scene.modelview, scene.projection, state)
-    });
+    frame
+        .draws
+        .push(Draw::new(&mesh, scene.modelview, scene.projection, state).with_texture(texture));
     r.render(&frame).unwrap().into_rgba_image()
 }
 
@@ -252,12 +251,11 @@ fn linear_filtering_with_mipmaps_and_every_wrap_mode_matches_the_reference_where
     let mut r = renderer();
     let scene = sphere();
     for wrap in Wrap::ALL {
-        let sampling = Sampling {
-            min_filter: MinFilter::LinearMipmapLinear,
-            mag_filter: MagFilter::Linear,
-            wrap_s: wrap,
-            wrap_t: wrap,
-        };
+        let sampling = Sampling::default()
+            .with_min_filter(MinFilter::LinearMipmapLinear)
+            .with_mag_filter(MagFilter::Linear)
+            .with_wrap_s(wrap)
+            .with_wrap_t(wrap);
         let tex = r.upload_texture(&image, &sampling).unwrap();
         for mode in LightingMode::ALL {
             let s = state(TexEnvMode::Modulate, ColorControl::SeparateSpecularColor, mode);

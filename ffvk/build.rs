@@ -1,0 +1,200 @@
+//! Compiles the shader variants under `glsl/` to SPIR-V with shaderc's compiler, `glslc`
+//! (glslang inside; Debian package `glslc`).
+//!
+//! A variant is a lighting mode's pair of stage sources compiled with its own macro
+//! definitions (the table below), so no variant needs a file of its own. `#include "x"`
+//! resolves relative to the including file. SPIR-V lands in `OUT_DIR/<variant>.<stage>.spv`,
+//! and `OUT_DIR/shaders.rs` lists every variant for `include_bytes!`.
+//!
+//! glslc runs as a program rather than through shaderc's Rust bindings: Debian's
+//! `libshaderc.so.1` is underlinked, and the link override that worked around it lived in this
+//! repository's `.cargo/config.toml`, which Cargo ignores when ffvk is another crate's
+//! dependency. A program needs no linking, so ffvk builds the same from any workspace.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::{env, fs};
+
+/// One pipeline variant: its name (a lighting mode, optionally with a suffix), the stage
+/// sources and the macros both stages are compiled with.
+struct Variant {
+    name: &'static str,
+    vertex: &'static str,
+    fragment: &'static str,
+    defines: &'static [(&'static str, &'static str)],
+    doc: &'static str,
+}
+
+/// `INTERP`: the interpolation qualifier of the per-vertex colors. `ONE_COLOR`: only the front
+/// primary color passes between the stages (specialized one-sided, single-color states).
+/// Each is also compiled with `CURRENT_COLOR` (see [`CURRENT_COLOR`]).
+const VARIANTS: &[Variant] = &[
+    Variant {
+        name: "vertex",
+        vertex: "vertex.vert",
+        fragment: "vertex.frag",
+        defines: &[("INTERP", "smooth")],
+        doc: "Lit at each vertex; four colors interpolated (GL's SMOOTH shading).",
+    },
+    Variant {
+        name: "vertex_one_color",
+        vertex: "vertex.vert",
+        fragment: "vertex.frag",
+        defines: &[("INTERP", "smooth"), ("ONE_COLOR", "1")],
+        doc: "`vertex` with only the front primary color between the stages.",
+    },
+    Variant {
+        name: "flat",
+        vertex: "vertex.vert",
+        fragment: "vertex.frag",
+        defines: &[("INTERP", "flat")],
+        doc: "Lit at each vertex; the provoking (last) vertex's colors (GL's FLAT shading).",
+    },
+    Variant {
+        name: "flat_one_color",
+        vertex: "vertex.vert",
+        fragment: "vertex.frag",
+        defines: &[("INTERP", "flat"), ("ONE_COLOR", "1")],
+        doc: "`flat` with only the front primary color between the stages.",
+    },
+    Variant {
+        name: "fragment",
+        vertex: "fragment.vert",
+        fragment: "fragment.frag",
+        defines: &[],
+        doc: "Eye-space position and normal interpolated; lit at each fragment.",
+    },
+];
+
+/// The second build of every variant, named `<variant>_current_color`: for meshes without a
+/// color array, it reads GL's current color from the draw block instead of location 2.
+const CURRENT_COLOR: (&str, &str) = ("CURRENT_COLOR", "1");
+
+/// The textured build of each of those, named `<…>_textured`: texture coordinates at
+/// location 3, the texture environment before the color sum (`glsl/texture.glsl`).
+/// Untextured draws keep the variants without it, unchanged.
+const TEXTURE: (&str, &str) = ("TEXTURE", "1");
+
+fn main() {
+    let manifest = PathBuf::from(env::var("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR"));
+    let glsl_dir = manifest.join("glsl");
+    let out_dir = PathBuf::from(env::var("OUT_DIR").expect("cargo sets OUT_DIR"));
+    // A directory is scanned recursively: any change to a source or an include reruns this.
+    println!("cargo:rerun-if-changed={}", glsl_dir.display());
+    println!("cargo:rerun-if-env-changed=GLSLC");
+    let glslc = env::var_os("GLSLC").map_or_else(|| PathBuf::from("glslc"), PathBuf::from);
+
+    let mut table = String::new();
+    let mut errors = Vec::new();
+    let builds = VARIANTS.iter().flat_map(|v| {
+        let mut with_current = v.defines.to_vec();
+        with_current.push(CURRENT_COLOR);
+        [
+            (v.name.to_string(), v.doc.to_string(), v.defines.to_vec()),
+            (
+                format!("{}_current_color", v.name),
+                format!("{} No color array: GL's current color.", v.doc),
+                with_current,
+            ),
+        ]
+        .into_iter()
+        .flat_map(|(name, doc, defines)| {
+            let mut textured = defines.clone();
+            textured.push(TEXTURE);
+            [
+                (name.clone(), doc.clone(), defines),
+                (
+                    format!("{name}_textured"),
+                    format!("{doc} Textured: the texture environment before the color sum."),
+                    textured,
+                ),
+            ]
+        })
+        .map(move |(name, doc, defines)| (v, name, doc, defines))
+    });
+    for (variant, name, doc, defines) in builds {
+        let mut stages = Vec::new();
+        for (source, stage) in [(variant.vertex, "vert"), (variant.fragment, "frag")] {
+            let spv = out_dir.join(format!("{name}.{stage}.spv"));
+            match compile(&glslc, &glsl_dir.join(source), stage, &defines, &spv) {
+                Ok(()) => stages.push(spv),
+                Err(e) => errors.push(format!("variant {name}: {e}")),
+            }
+        }
+        if let [vertex, fragment] = stages.as_slice() {
+            writeln!(
+                table,
+                "    ShaderVariant {{\n        name: {:?},\n        doc: {:?},\n        \
+                 vertex_source: {:?},\n        fragment_source: {:?},\n        \
+                 defines: &{:?},\n        \
+                 vertex: include_bytes!({:?}),\n        fragment: include_bytes!({:?}),\n    }},",
+                name,
+                doc,
+                variant.vertex,
+                variant.fragment,
+                defines,
+                vertex.display().to_string(),
+                fragment.display().to_string(),
+            )
+            .expect("writing to a String cannot fail");
+        }
+    }
+    if !errors.is_empty() {
+        fail(&errors.join("\n"));
+    }
+    let generated = format!(
+        "/// Every compiled variant, in build order.\npub const VARIANTS: &[ShaderVariant] = &[\n{table}];\n"
+    );
+    if let Err(e) = fs::write(out_dir.join("shaders.rs"), generated) {
+        fail(&format!("{}: {e}", out_dir.join("shaders.rs").display()));
+    }
+}
+
+/// Runs glslc on one stage source. Its messages are already `file:line: error: text`.
+fn compile(
+    glslc: &Path,
+    source: &Path,
+    stage: &str,
+    defines: &[(&str, &str)],
+    spv: &Path,
+) -> Result<(), String> {
+    let mut command = Command::new(glslc);
+    command
+        .arg(format!("-fshader-stage={stage}"))
+        .arg("--target-env=vulkan1.3")
+        // No spirv-opt: Debian's SPIRV-Tools 2023.1 rejects glslang 12's copies of std140
+        // structs into locals ("OpStore Pointer type does not match"). The driver optimizes
+        // the SPIR-V itself (Mesa's NIR), so nothing is lost at run time.
+        .arg("-O0")
+        .arg("-Werror");
+    for (name, value) in defines {
+        command.arg(format!("-D{name}={value}"));
+    }
+    command.arg("-o").arg(spv).arg(source);
+    let output = command.output().map_err(|e| {
+        format!(
+            "cannot run {}: {e}; install the Debian package glslc (shaderc's compiler) or set GLSLC",
+            glslc.display()
+        )
+    })?;
+    if output.status.success() {
+        Ok(())
+    } else {
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        Err(format!(
+            "{} ({}): {}",
+            source.display(),
+            output.status,
+            stderr.trim_end()
+        ))
+    }
+}
+
+fn fail(message: &str) -> ! {
+    for line in message.lines() {
+        println!("cargo:warning={line}");
+    }
+    eprintln!("{message}");
+    std::process::exit(1);
+}

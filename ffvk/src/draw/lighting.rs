@@ -1,0 +1,379 @@
+//! [`Lighting`]: GL's lighting inside a caller's own Vulkan device, render targets and
+//! command buffers.
+//!
+//! # What it takes, owns and records
+//!
+//! The caller keeps its instance, device, queues, command pools and buffers, images, vertex
+//! and index buffers, synchronization and submission; ffvk touches none of them beyond
+//! recording commands into the command buffer it is given. A [`Lighting`] owns what it
+//! creates: one descriptor set layout (binding 0, `UNIFORM_BUFFER_DYNAMIC`, vertex and
+//! fragment stages; empty layouts for the sets below [`LightingOptions::set_index`]), the
+//! texture's layout for the set after it (binding 0, `COMBINED_IMAGE_SAMPLER`, fragment
+//! stage), one pipeline layout (no push constants), a pipeline cache unless the caller passes one, the
+//! pipelines (created on first use per lighting mode, specialization key and
+//! [`RasterState`]), and for each frame slot host-visible, coherent uniform memory with its
+//! descriptor sets; and the [`TextureBinding`]s the caller asks for (a descriptor set naming
+//! the caller's image view and sampler), which the caller holds. Dropping it frees all of that; the caller must first make sure no
+//! submitted command buffer still uses it (wait for its fences or the device).
+//!
+//! [`Lighting::draw`] records, into the caller's command buffer inside the caller's dynamic
+//! rendering pass (`vkCmdBeginRendering`; render passes are not supported): bind pipeline,
+//! bind the descriptor set at the draw's dynamic offset (and, textured, the texture's set
+//! after it), bind the caller's vertex buffers
+//! (and index buffer), draw. The commands read the caller's vertex and index buffers and
+//! ffvk's uniform memory, and write the caller's color attachment (and depth attachment when
+//! the draw's [`RasterState`] tests depth), with blending as that state says. They need the
+//! viewport and scissor the caller sets (both are dynamic state). The bindings stay bound
+//! after the call: the caller rebinds whatever it needs next.
+//!
+//! # Frame slots
+//!
+//! Per-draw GL state goes into the memory of the frame slot the caller names. Call
+//! [`Lighting::begin_frame`] for a slot before recording its draws, and only once the fence
+//! of the submission that last used that slot has signalled: that is when its memory may be
+//! rewritten. With `frames_in_flight` slots the caller cycles through them as it cycles
+//! through its own per-frame resources.
+//!
+//! # Threads
+//!
+//! `Lighting` is `Send` and `Sync`; recording takes `&mut self`, so one thread records with a
+//! given `Lighting` at a time (a renderer that records on several threads makes one per
+//! thread).
+
+//!
+//! # Example
+//!
+//! `examples/embed.rs` in the repository: its own instance, device, queue, images and
+//! buffers with plain `ash`, the teapot in the three modes (`cargo run --release --example
+//! embed`):
+//!
+#![doc = concat!("```rust,ignore\n", include_str!("../../examples/embed.rs"), "\n```")]
+
+use std::sync::Arc;
+
+use ash::vk;
+use glam::Mat4;
+
+use super::pipeline::{
+    PipelineConfig, Pipelines, RasterState, Specialize, Target, VertexInput, MAX_AUTO_VARIANTS,
+};
+use super::record::{record, Bound, Geometry};
+use super::ring::UniformRing;
+use super::texture::TextureBinding;
+use crate::error::{LightingError, Result};
+use crate::gl::state::LightingState;
+use crate::gpu::layout::{DrawBlock, SpecKey};
+use crate::vk::Device;
+
+/// A draw's pipeline and uniform block, ready to record ([`Lighting::stage`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Staged {
+    pipeline: vk::Pipeline,
+    set: vk::DescriptorSet,
+    uniform_offset: u32,
+}
+
+/// How to make a [`Lighting`].
+#[derive(Debug, Clone)]
+#[non_exhaustive]
+pub struct LightingOptions {
+    /// The caller's attachments.
+    pub target: Target,
+    /// The caller's vertex layout.
+    pub vertex_input: VertexInput,
+    /// Frame slots: how many frames the caller records before it waits for the oldest.
+    pub frames_in_flight: u32,
+    /// The descriptor set index of ffvk's uniform block in the pipeline layout (0 unless the
+    /// caller's shaders share the layout's lower sets).
+    pub set_index: u32,
+    /// The caller's pipeline cache; `None` makes ffvk's own.
+    pub pipeline_cache: Option<vk::PipelineCache>,
+    /// Specialized pipelines per lighting state, or the uber-shader.
+    pub specialize: Specialize,
+}
+
+impl LightingOptions {
+    /// Options for `target` and `vertex_input`: one frame slot, set 0, ffvk's own cache,
+    /// [`Specialize::Auto`].
+    pub fn new(target: Target, vertex_input: VertexInput) -> Self {
+        LightingOptions {
+            target,
+            vertex_input,
+            frames_in_flight: 1,
+            set_index: 0,
+            pipeline_cache: None,
+            specialize: Specialize::Auto,
+        }
+    }
+}
+
+with_fields!(LightingOptions {
+    /// Sets [`frames_in_flight`](LightingOptions::frames_in_flight).
+    with_frames_in_flight => frames_in_flight: u32,
+    /// Sets [`set_index`](LightingOptions::set_index).
+    with_set_index => set_index: u32,
+    /// Sets [`pipeline_cache`](LightingOptions::pipeline_cache).
+    with_pipeline_cache => pipeline_cache: Option<vk::PipelineCache>,
+    /// Sets [`specialize`](LightingOptions::specialize).
+    with_specialize => specialize: Specialize,
+});
+
+/// One lit draw: GL's state for it, its matrices, its raster state and the caller's buffers.
+#[derive(Debug, Clone, Copy)]
+#[non_exhaustive]
+pub struct LitDraw<'a> {
+    /// The lighting state the draw captures (from [`GlState`](crate::gl::state::GlState)).
+    pub state: &'a LightingState,
+    /// Object to eye space (GL conventions: column vectors, viewer looking down −z).
+    pub modelview: Mat4,
+    /// GL's projection (clip z in [−w, w]); ffvk converts it to Vulkan's clip space.
+    pub projection: Mat4,
+    /// Culling, winding, depth and blending.
+    pub raster: RasterState,
+    /// One (buffer, byte offset) per entry of [`VertexInput::bindings`], in that order.
+    pub vertex_buffers: &'a [(vk::Buffer, u64)],
+    /// Which vertices to draw.
+    pub geometry: Geometry,
+    /// The texture bound to `GL_TEXTURE_2D` ([`Lighting::bind_texture`]); it is sampled when
+    /// [`TextureUnit::enabled`](crate::gl::texture::TextureUnit::enabled) is on too. `None` is
+    /// GL's texture object 0, which textures nothing. Whether the texture is complete for its
+    /// sampler (mipmaps where the min filter reads them) is the caller's to ensure, as GL's
+    /// completeness rule is about the caller's image.
+    pub texture: Option<&'a TextureBinding>,
+}
+
+impl<'a> LitDraw<'a> {
+    /// A draw of `geometry` from `vertex_buffers` (one `(buffer, byte offset)` per entry of
+    /// [`VertexInput::bindings`]) under `state`, with these matrices, GL's initial
+    /// [`RasterState`] (no depth test, no culling, no blending) and no texture. The `with_*`
+    /// methods set the rest.
+    pub fn new(
+        state: &'a LightingState,
+        modelview: Mat4,
+        projection: Mat4,
+        vertex_buffers: &'a [(vk::Buffer, u64)],
+        geometry: Geometry,
+    ) -> Self {
+        LitDraw {
+            state,
+            modelview,
+            projection,
+            raster: RasterState::default(),
+            vertex_buffers,
+            geometry,
+            texture: None,
+        }
+    }
+
+    /// This draw with `raster` (culling, winding, depth and blending).
+    #[must_use]
+    pub fn with_raster(mut self, raster: RasterState) -> Self {
+        self.raster = raster;
+        self
+    }
+
+    /// This draw with `texture` bound to `GL_TEXTURE_2D` (`None`: texture object 0).
+    #[must_use]
+    pub fn with_texture(mut self, texture: Option<&'a TextureBinding>) -> Self {
+        self.texture = texture;
+        self
+    }
+}
+
+// Recording takes &mut self; the type itself may move between and be shared by threads.
+const _: () = {
+    const fn send_and_sync<T: Send + Sync>() {}
+    send_and_sync::<Lighting>();
+};
+
+/// GL 2.1 lighting for a caller's device: pipelines, layouts and per-draw state memory,
+/// recorded into the caller's command buffers (see the module docs for what it owns, what
+/// it records and when a frame slot may be reused).
+pub struct Lighting {
+    // Field order is drop order: the uniform memory and pipelines before the device.
+    ring: UniformRing,
+    pipelines: Pipelines,
+    specialize: Specialize,
+    device: Arc<Device>,
+}
+
+impl Lighting {
+    /// Creates the layouts, the cache (unless the options pass one) and empty frame slots
+    /// on `device`, which may be ffvk's own or a caller's
+    /// ([`Device::from_caller`](crate::vk::Device::from_caller)). Fails on an invalid vertex
+    /// layout, zero frame slots, or a set index the device cannot bind.
+    pub fn new(device: &Arc<Device>, options: &LightingOptions) -> Result<Self> {
+        // The texture's set goes right after the block's.
+        let max_sets = device.limits.max_bound_descriptor_sets;
+        if options.set_index + 1 >= max_sets {
+            return Err(LightingError::SetIndex {
+                index: options.set_index,
+                max: max_sets - 1,
+            }
+            .into());
+        }
+        let pipelines = Pipelines::new(
+            device,
+            PipelineConfig {
+                target: options.target,
+                vertex_input: options.vertex_input.clone(),
+                set_index: options.set_index,
+                cache: options.pipeline_cache,
+            },
+        )?;
+        let ring = UniformRing::new(device, options.frames_in_flight)?;
+        Ok(Lighting {
+            ring,
+            pipelines,
+            specialize: options.specialize,
+            device: device.clone(),
+        })
+    }
+
+    /// The device the pipelines live on.
+    pub fn device(&self) -> &Arc<Device> {
+        &self.device
+    }
+
+    /// Starts recording the draws of frame slot `slot`: its earlier draws' state memory is
+    /// reused. Call it only when no submitted work still uses that slot (its fence has
+    /// signalled).
+    pub fn begin_frame(&mut self, slot: u32) -> Result<()> {
+        self.ring.reset(slot)
+    }
+
+    /// How many frame slots there are.
+    pub fn frames_in_flight(&self) -> u32 {
+        self.ring.slots()
+    }
+
+    /// Creates the pipeline a draw of `state` with `raster`, textured or not, would use, so
+    /// that the first such draw does not pay for it (pipeline creation is the slow part of a
+    /// cold start).
+    pub fn prepare(&mut self, state: &LightingState, raster: RasterState, textured: bool) -> Result<()> {
+        self.pipeline_for(state, raster, textured && state.texture.enabled)
+            .map(|_| ())
+    }
+
+    /// A descriptor set naming the caller's image `view` and `sampler`, for
+    /// [`LitDraw::texture`]. The view is a 2D color view the fragment stage samples as floats
+    /// (e.g. `R8G8B8A8_UNORM`, or `R8G8B8A8_SRGB` for GL's `GL_SRGB8_ALPHA8`), in
+    /// `SHADER_READ_ONLY_OPTIMAL` layout whenever a draw that uses it executes;
+    /// [`sampler_info`](super::texture::sampler_info) makes a sampler that samples as GL's
+    /// texture parameters say. The binding holds no reference to either: the caller keeps
+    /// both alive as long as the binding may be drawn with.
+    ///
+    /// # Safety
+    ///
+    /// `view` and `sampler` are live objects of this device and outlive every command buffer
+    /// that draws with the returned binding.
+    pub unsafe fn bind_texture(&self, view: vk::ImageView, sampler: vk::Sampler) -> Result<TextureBinding> {
+        // SAFETY: the caller's contract above.
+        unsafe { TextureBinding::new(&self.device, self.pipelines.texture_set_layout(), view, sampler) }
+    }
+
+    /// How many pipelines exist, and how many of them are specialized.
+    pub fn pipeline_counts(&self) -> (usize, usize) {
+        self.pipelines.counts()
+    }
+
+    /// Records one lit draw into `cmd` for frame slot `slot`: binds its pipeline (created now
+    /// if it is new), writes its state into the slot's memory and binds it, binds the
+    /// caller's buffers and draws. Fails, recording nothing, when the state is invalid (a
+    /// NaN, or a singular modelview while lighting), when the buffers do not match the
+    /// vertex layout, or when the pipeline cannot be made.
+    ///
+    /// # Safety
+    ///
+    /// `cmd` is a command buffer of this device in the recording state, inside a dynamic
+    /// rendering pass whose attachments have the [`Target`]'s formats and samples, with
+    /// viewport and scissor set; the buffers belong to this device, hold what the geometry
+    /// reads, and live until the command buffer has finished executing; the slot was begun
+    /// with [`Lighting::begin_frame`] after its previous use finished.
+    pub unsafe fn draw(&mut self, cmd: vk::CommandBuffer, slot: u32, draw: &LitDraw) -> Result<()> {
+        let staged = self.stage(slot, draw)?;
+        // SAFETY: the caller's contract above.
+        unsafe { self.record_staged(cmd, &staged, draw) };
+        Ok(())
+    }
+
+    /// The first half of [`Lighting::draw`]: checks the draw, packs its state into the slot's
+    /// uniform memory and finds its pipeline. What it returns may be recorded any number of
+    /// times in the slot's frame ([`Lighting::record_staged`]): a frame repeated for
+    /// measurement writes its uniforms once.
+    pub(crate) fn stage(&mut self, slot: u32, draw: &LitDraw) -> Result<Staged> {
+        let bindings = &self.pipelines.config().vertex_input.bindings;
+        if draw.vertex_buffers.len() != bindings.len() {
+            return Err(LightingError::VertexBuffers {
+                given: draw.vertex_buffers.len(),
+                expected: bindings.len(),
+            }
+            .into());
+        }
+        let block = DrawBlock::new(draw.state, draw.modelview, draw.projection)?;
+        let pipeline = self.pipeline_for(draw.state, draw.raster, Self::textured(draw))?;
+        let (set, uniform_offset) = self.ring.push(slot, &block, self.pipelines.set_layout())?;
+        Ok(Staged {
+            pipeline,
+            set,
+            uniform_offset,
+        })
+    }
+
+    /// Whether `draw` samples its texture: one is bound and `GL_TEXTURE_2D` is on.
+    fn textured(draw: &LitDraw) -> bool {
+        draw.texture.is_some() && draw.state.texture.enabled
+    }
+
+    /// The second half of [`Lighting::draw`]: binds what `staged` found and draws.
+    ///
+    /// # Safety
+    ///
+    /// As [`Lighting::draw`]; `staged` came from [`Lighting::stage`] with the same draw and a
+    /// slot whose frame this command buffer belongs to.
+    pub(crate) unsafe fn record_staged(&self, cmd: vk::CommandBuffer, staged: &Staged, draw: &LitDraw) {
+        let config = self.pipelines.config();
+        let bound = Bound {
+            pipeline: staged.pipeline,
+            layout: self.pipelines.layout(),
+            set_index: config.set_index,
+            set: staged.set,
+            uniform_offset: staged.uniform_offset,
+            texture_set: draw
+                .texture
+                .filter(|_| Self::textured(draw))
+                .map(TextureBinding::set),
+            bindings: &config.vertex_input.bindings,
+            vertex_buffers: draw.vertex_buffers,
+        };
+        // SAFETY: the caller's contract above; the pipeline, layout and set are this
+        // Lighting's and live as long as it does.
+        unsafe { record(&self.device.raw, cmd, &bound, &draw.geometry) };
+    }
+
+    /// The pipeline a draw with `state` and `raster`, textured or not, uses under the
+    /// [`Specialize`] policy.
+    fn pipeline_for(
+        &mut self,
+        state: &LightingState,
+        raster: RasterState,
+        textured: bool,
+    ) -> Result<vk::Pipeline> {
+        let mode = state.mode;
+        let key = match self.specialize {
+            Specialize::Never => SpecKey::UBER,
+            Specialize::Always => SpecKey::for_state(state),
+            Specialize::Auto => {
+                let key = SpecKey::for_state(state);
+                if self.pipelines.contains(mode, key, raster, textured)
+                    || self.pipelines.counts().1 < MAX_AUTO_VARIANTS
+                {
+                    key
+                } else {
+                    SpecKey::UBER
+                }
+            }
+        };
+        self.pipelines.get(mode, key, raster, textured)
+    }
+}

@@ -1,0 +1,179 @@
+//! Recording draws: what one lit draw binds and issues inside a rendering pass.
+
+use ash::vk;
+
+/// Which vertices a draw reads: GL's `glDrawElements` or `glDrawArrays` with
+/// `GL_TRIANGLES`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Geometry {
+    /// Indexed triangles (`vkCmdDrawIndexed`): made by [`Geometry::indexed`].
+    #[non_exhaustive]
+    Indexed {
+        /// The index buffer.
+        buffer: vk::Buffer,
+        /// Byte offset of index 0 in it.
+        offset: u64,
+        /// `UINT16` or `UINT32`.
+        index_type: vk::IndexType,
+        /// The first index read.
+        first_index: u32,
+        /// How many indices, three per triangle.
+        index_count: u32,
+        /// Added to every index before the vertex is fetched.
+        vertex_offset: i32,
+    },
+    /// Consecutive vertices, three per triangle (`vkCmdDraw`): made by [`Geometry::vertices`].
+    #[non_exhaustive]
+    Vertices {
+        /// The first vertex.
+        first_vertex: u32,
+        /// How many vertices.
+        vertex_count: u32,
+    },
+}
+
+impl Geometry {
+    /// `index_count` indices of `index_type` from the start of `buffer`, each fetching that
+    /// vertex of the bound vertex buffers: `glDrawElements(GL_TRIANGLES, index_count, type, 0)`.
+    /// The `with_*` methods set the rest.
+    pub fn indexed(buffer: vk::Buffer, index_type: vk::IndexType, index_count: u32) -> Self {
+        Geometry::Indexed {
+            buffer,
+            offset: 0,
+            index_type,
+            first_index: 0,
+            index_count,
+            vertex_offset: 0,
+        }
+    }
+
+    /// `vertex_count` consecutive vertices from the first: `glDrawArrays(GL_TRIANGLES, 0,
+    /// vertex_count)`.
+    pub fn vertices(vertex_count: u32) -> Self {
+        Geometry::Vertices {
+            first_vertex: 0,
+            vertex_count,
+        }
+    }
+
+    /// Starts at index `first` (indexed) or vertex `first` (`glDrawArrays`' `first`).
+    #[must_use]
+    pub fn with_first(mut self, first: u32) -> Self {
+        match &mut self {
+            Geometry::Indexed { first_index, .. } => *first_index = first,
+            Geometry::Vertices { first_vertex, .. } => *first_vertex = first,
+        }
+        self
+    }
+
+    /// Indexed: index 0 lies `bytes` into the index buffer (no effect on `vertices`).
+    #[must_use]
+    pub fn with_buffer_offset(mut self, bytes: u64) -> Self {
+        if let Geometry::Indexed { offset, .. } = &mut self {
+            *offset = bytes;
+        }
+        self
+    }
+
+    /// Indexed: `base` is added to every index before its vertex is fetched
+    /// (`glDrawElementsBaseVertex`; no effect on `vertices`).
+    #[must_use]
+    pub fn with_vertex_offset(mut self, base: i32) -> Self {
+        if let Geometry::Indexed { vertex_offset, .. } = &mut self {
+            *vertex_offset = base;
+        }
+        self
+    }
+}
+
+/// Everything one draw binds.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Bound<'a> {
+    /// The pipeline for the draw's mode, state and raster state.
+    pub pipeline: vk::Pipeline,
+    /// The pipeline layout it was created with.
+    pub layout: vk::PipelineLayout,
+    /// The index of the uniform block's set in that layout.
+    pub set_index: u32,
+    /// The set (binding 0: the uniform block, `UNIFORM_BUFFER_DYNAMIC`).
+    pub set: vk::DescriptorSet,
+    /// Offset of this draw's block, a multiple of `minUniformBufferOffsetAlignment`.
+    pub uniform_offset: u32,
+    /// The texture's set (binding 0: a combined image sampler), bound at `set_index + 1`,
+    /// for a textured draw.
+    pub texture_set: Option<vk::DescriptorSet>,
+    /// The pipeline's vertex binding numbers.
+    pub bindings: &'a [vk::VertexInputBindingDescription],
+    /// One (buffer, byte offset) per entry of `bindings`.
+    pub vertex_buffers: &'a [(vk::Buffer, u64)],
+}
+
+/// Binds `bound` into `cmd` and draws `geometry`.
+///
+/// # Safety
+///
+/// `cmd` is a command buffer of `device` in the recording state, inside a dynamic rendering
+/// pass whose formats match the pipeline's, with viewport and scissor set; every handle
+/// belongs to `device` and stays alive until the command buffer has finished executing; the
+/// buffers hold what the geometry reads.
+pub(crate) unsafe fn record(
+    device: &ash::Device,
+    cmd: vk::CommandBuffer,
+    bound: &Bound,
+    geometry: &Geometry,
+) {
+    // SAFETY: the caller's contract above (it covers each call below too): `cmd` is recording
+    // inside a rendering pass and the pipeline belongs to `device`.
+    unsafe { device.cmd_bind_pipeline(cmd, vk::PipelineBindPoint::GRAPHICS, bound.pipeline) };
+    // SAFETY: as above; the set is at its index in the layout, with one dynamic offset.
+    unsafe {
+        device.cmd_bind_descriptor_sets(
+            cmd,
+            vk::PipelineBindPoint::GRAPHICS,
+            bound.layout,
+            bound.set_index,
+            &[bound.set],
+            &[bound.uniform_offset],
+        )
+    };
+    if let Some(set) = bound.texture_set {
+        // SAFETY: as above; the texture's set is the one after the block's in the layout.
+        unsafe {
+            device.cmd_bind_descriptor_sets(
+                cmd,
+                vk::PipelineBindPoint::GRAPHICS,
+                bound.layout,
+                bound.set_index + 1,
+                &[set],
+                &[],
+            )
+        };
+    }
+    for (binding, &(buffer, offset)) in bound.bindings.iter().zip(bound.vertex_buffers) {
+        // SAFETY: as above; one buffer per binding of the pipeline.
+        unsafe { device.cmd_bind_vertex_buffers(cmd, binding.binding, &[buffer], &[offset]) };
+    }
+    match *geometry {
+        Geometry::Indexed {
+            buffer,
+            offset,
+            index_type,
+            first_index,
+            index_count,
+            vertex_offset,
+        } => {
+            // SAFETY: as above.
+            unsafe { device.cmd_bind_index_buffer(cmd, buffer, offset, index_type) };
+            // SAFETY: as above; the caller's indices address its vertices.
+            unsafe { device.cmd_draw_indexed(cmd, index_count, 1, first_index, vertex_offset, 0) };
+        }
+        Geometry::Vertices {
+            first_vertex,
+            vertex_count,
+        } => {
+            // SAFETY: as above.
+            unsafe { device.cmd_draw(cmd, vertex_count, 1, first_vertex, 0) };
+        }
+    }
+}

@@ -1,0 +1,342 @@
+//! The core's error type. Library code returns these; only the binary decides how to print
+//! them. Errors of the optional layers (images, scenes, tools) live with them and wrap this one.
+
+use ash::vk;
+
+use crate::gl::state::StateError;
+
+/// Everything that can go wrong in ffvk.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// `libvulkan.so.1` could not be opened, so no Vulkan call is possible on this machine;
+    /// the string is the dynamic loader's reason.
+    #[error("cannot load the Vulkan loader (libvulkan.so.1): {0}; install the Debian package libvulkan1")]
+    NoLoader(String),
+
+    #[error("no Vulkan device{requested}: available devices: {available}; install mesa-vulkan-drivers for lavapipe")]
+    /// No physical device matched: there is none, or none has the requested name in it.
+    /// Retrying with a name from `available` (or after installing lavapipe) can succeed.
+    NoDevice {
+        /// ` named "…"` (leading space included) when a name was asked for, else empty: it is
+        /// spliced into the message as is.
+        requested: String,
+        /// Every enumerated device name, comma-separated, or `none`.
+        available: String,
+    },
+
+    /// The chosen device lacks something ffvk cannot work without: Vulkan 1.3,
+    /// `dynamicRendering` (and, for ffvk's own device, `synchronization2`), a graphics queue,
+    /// `VK_EXT_provoking_vertex` with `provokingVertexLast`, or a suitable memory type; or an
+    /// embedded shader variant is absent or not valid SPIR-V (a build defect). The string
+    /// names what is missing. Another device may work; retrying this one will not.
+    #[error("the device lacks {0}, which ffvk needs")]
+    MissingFeature(String),
+
+    /// The caller's device was not created with a feature ffvk needs, as its
+    /// [`EnabledFeatures`](crate::vk::EnabledFeatures) says: create the device with it and
+    /// set the flag.
+    #[error("the caller's device was created without {feature} (EnabledFeatures::{flag} is false), which {needed_for}")]
+    NotEnabled {
+        /// The Vulkan feature.
+        feature: &'static str,
+        /// The field of `EnabledFeatures` that says it is enabled.
+        flag: &'static str,
+        /// What needs it.
+        needed_for: &'static str,
+    },
+
+    /// `VK_ERROR_DEVICE_LOST` from the named call, or a frame asked of a renderer whose
+    /// earlier submission failed. That renderer is unusable from then on: make a new one.
+    #[error("the Vulkan device was lost during {0}")]
+    DeviceLost(&'static str),
+
+    #[error("out of {kind} memory during {call}")]
+    /// `VK_ERROR_OUT_OF_HOST_MEMORY` or `VK_ERROR_OUT_OF_DEVICE_MEMORY`: smaller images or
+    /// meshes may fit.
+    OutOfMemory {
+        /// `"host"` or `"device"`.
+        kind: &'static str,
+        /// The Vulkan entry point that failed, e.g. `"vkAllocateMemory"`.
+        call: &'static str,
+    },
+
+    /// A host allocation ffvk sized from its input failed (see [`crate::alloc`]).
+    #[error(transparent)]
+    Alloc(#[from] crate::alloc::AllocError),
+
+    /// One device allocation larger than the device's memory heap (or its
+    /// `maxMemoryAllocationSize`), refused before asking the driver.
+    #[error("{what}: {bytes} bytes of device memory asked for, more than the device's {limit_name} ({limit} bytes)")]
+    TooLarge {
+        /// What the memory was for, e.g. `"vertex buffer"`.
+        what: &'static str,
+        /// The size asked for.
+        bytes: u64,
+        /// The device's limit.
+        limit: u64,
+        /// Which limit: `"memory heap"` or `"maxMemoryAllocationSize"`.
+        limit_name: &'static str,
+    },
+
+    /// The driver refused device memory ffvk asked for (`vkAllocateMemory` or
+    /// `vkMapMemory`), usually because the memory is exhausted: smaller images or meshes may
+    /// fit.
+    #[error("cannot allocate {bytes} bytes of device memory (memory type {memory_type}, {flags}) for the {what}: {result}")]
+    DeviceMemory {
+        /// What the memory was for, e.g. `"vertex buffer"`.
+        what: &'static str,
+        /// The size asked of the driver: the resource's, or that of the block it would share.
+        bytes: u64,
+        /// The memory type's index.
+        memory_type: u32,
+        /// The memory type's property flags.
+        flags: String,
+        /// What the driver returned.
+        result: vk::Result,
+    },
+
+    /// [`Buffer::write`](crate::vk::Buffer::write) or a read of a buffer whose memory the host
+    /// cannot see (device-local memory of a discrete GPU): a bug in the caller.
+    #[error("the buffer's memory is not host-visible; fill it with a copy from a staging buffer")]
+    NotMapped,
+
+    /// [`Buffer::write`](crate::vk::Buffer::write) past the buffer's end: a bug in the caller.
+    #[error("a write of {bytes} bytes at offset {offset} is outside the buffer of {size} bytes")]
+    OutOfBounds {
+        /// Where the write starts.
+        offset: u64,
+        /// Its length.
+        bytes: u64,
+        /// The buffer's size.
+        size: u64,
+    },
+
+    /// [`Renderer::measure_frames`](crate::Renderer::measure_frames) was asked for no frames
+    /// or more than one submission records.
+    #[error("{count} frames asked of one measurement: expected 1..={max}")]
+    TooManyFrames {
+        /// The count asked for.
+        count: u32,
+        /// [`MAX_REPEAT`](crate::renderer::MAX_REPEAT).
+        max: u32,
+    },
+
+    #[error("{call} failed: {result}")]
+    /// Any other failing `VkResult`: unexpected, and not specific to the caller's input.
+    Vulkan {
+        /// The Vulkan entry point that failed.
+        call: &'static str,
+        /// What it returned.
+        result: vk::Result,
+    },
+
+    #[error("image size {width}x{height} is invalid: expected each side in 1..={max} (the device's maxImageDimension2D)")]
+    /// A frame's size is 0 or beyond the device's limit; nothing was drawn.
+    InvalidSize {
+        /// Requested width, in pixels.
+        width: u32,
+        /// Requested height, in pixels.
+        height: u32,
+        /// The device's `maxImageDimension2D`, the largest side allowed.
+        max: u32,
+    },
+
+    /// [`Validation::Required`](crate::vk::Validation::Required) was asked for and the
+    /// layer is not installed.
+    #[error("the validation layer VK_LAYER_KHRONOS_validation is not installed (Debian package vulkan-validationlayers)")]
+    NoValidationLayer,
+
+    /// The validation layer reported errors, one message per entry, while the renderer was
+    /// made or a frame was drawn: a bug in ffvk's use of Vulkan, reported instead of the
+    /// frame's pixels. Warnings never cause it.
+    #[error("the validation layer reported {} error(s):\n{}", .0.len(), .0.join("\n"))]
+    Validation(Vec<String>),
+
+    /// A [`Lighting`](crate::Lighting) setting or draw that cannot be used.
+    #[error(transparent)]
+    Lighting(#[from] LightingError),
+
+    /// A mesh was rejected before anything was uploaded or drawn.
+    #[error("invalid mesh: {0}")]
+    Mesh(#[from] MeshError),
+
+    /// A lighting state that GL would reject (`INVALID_VALUE`), or one that cannot be drawn:
+    /// a singular modelview with lighting on, or an enabled positional light whose three
+    /// attenuation factors are all 0.
+    #[error(transparent)]
+    State(#[from] StateError),
+}
+
+/// Why a [`Lighting`](crate::Lighting) cannot be made as asked or cannot record a draw.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum LightingError {
+    /// A vertex binding appears twice in [`VertexInput::bindings`](crate::VertexInput).
+    #[error("vertex binding {binding} is listed twice: expected each binding once")]
+    DuplicateBinding {
+        /// The binding number.
+        binding: u32,
+    },
+    /// A binding steps per instance; GL's vertex arrays step per vertex.
+    #[error(
+        "vertex binding {binding} has input rate {rate:?}: expected VERTEX (GL's arrays are per vertex)"
+    )]
+    InputRate {
+        /// The binding number.
+        binding: u32,
+        /// Its input rate.
+        rate: ash::vk::VertexInputRate,
+    },
+    /// An attribute reads a binding the layout does not have.
+    #[error("the {attribute} attribute reads binding {binding}: expected one of the bindings {available:?}")]
+    UnknownBinding {
+        /// `position`, `normal`, `color` or `texcoord`.
+        attribute: &'static str,
+        /// The binding it names.
+        binding: u32,
+        /// The bindings the layout has.
+        available: Vec<u32>,
+    },
+    /// An attribute's format is not one the shaders read as floats.
+    #[error("the {attribute} attribute has format {format:?}: expected a format the shader reads as floats (SFLOAT, UNORM or SNORM, as listed in VertexInput::validate)")]
+    AttributeFormat {
+        /// `position`, `normal`, `color` or `texcoord`.
+        attribute: &'static str,
+        /// The format given.
+        format: ash::vk::Format,
+    },
+    /// A draw tests depth but the target has no depth attachment.
+    #[error("the draw tests depth, but the target has no depth format: expected RasterState::depth_test false or a Target::depth_format")]
+    NoDepthAttachment,
+    /// `frames_in_flight` is 0.
+    #[error("frames_in_flight is 0: expected at least 1 frame slot")]
+    NoFrameSlots,
+    /// A frame slot past `frames_in_flight`.
+    #[error("frame slot {slot} does not exist: expected 0..{slots} (frames_in_flight)")]
+    FrameSlot {
+        /// The slot given.
+        slot: u32,
+        /// How many there are.
+        slots: u32,
+    },
+    /// The set index is past what the device can bind.
+    #[error("set_index {index} leaves no room for the texture's set after it within the device's maxBoundDescriptorSets: expected 0..{max}")]
+    SetIndex {
+        /// The index given.
+        index: u32,
+        /// `maxBoundDescriptorSets`.
+        max: u32,
+    },
+    /// A textured draw with a vertex layout that has no texture coordinates.
+    #[error("the draw is textured, but the vertex layout has no texture coordinates: expected VertexInput::texcoord")]
+    NoTexcoord,
+    /// A draw passes a different number of vertex buffers than the layout has bindings.
+    #[error(
+        "the draw passes {given} vertex buffer(s): expected {expected}, one per binding of the vertex layout"
+    )]
+    VertexBuffers {
+        /// Buffers passed.
+        given: usize,
+        /// Bindings in the layout.
+        expected: usize,
+    },
+    /// So many draws in one frame slot that a dynamic offset would pass 4 GiB.
+    #[error(
+        "{draws} draws in one frame slot put a uniform offset past 4 GiB: expected fewer draws per frame"
+    )]
+    TooManyDraws {
+        /// Draws recorded in the slot so far.
+        draws: u64,
+    },
+}
+
+/// Why a mesh cannot be drawn or made.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum MeshError {
+    #[error("{count} indices is not a whole number of triangles: expected a multiple of 3")]
+    /// The index count is not a multiple of 3 (meshes are independent triangles).
+    NotTriangles {
+        /// The number of indices given.
+        count: usize,
+    },
+
+    #[error("index {at} is {index}: expected a vertex index below {vertex_count} (the vertex count)")]
+    /// An index points past the last vertex.
+    IndexOutOfRange {
+        /// Position of the first bad index in the index list.
+        at: usize,
+        /// Its value.
+        index: u32,
+        /// The number of vertices; valid indices are below it.
+        vertex_count: usize,
+    },
+
+    #[error(
+        "draw {draw}: the mesh was uploaded by another renderer: expected a mesh from this renderer's upload"
+    )]
+    /// A [`Mesh`](crate::Mesh) lives on another renderer's device; upload it again here.
+    ForeignMesh {
+        /// Position of the offending draw in [`Frame::draws`](crate::Frame::draws).
+        draw: usize,
+    },
+
+    #[error(
+        "draw {draw}: the texture was uploaded by another renderer: expected a texture from this renderer's upload_texture"
+    )]
+    /// A [`Texture`](crate::renderer::Texture) lives on another renderer's device.
+    ForeignTexture {
+        /// Position of the offending draw in [`Frame::draws`](crate::Frame::draws).
+        draw: usize,
+    },
+
+    #[error("teapot tessellation level {level} is out of range: expected 1..={max}")]
+    /// The teapot's tessellation level is 0 or above the maximum.
+    TeapotLevel {
+        /// The level asked for.
+        level: u32,
+        /// [`MAX_LEVEL`](crate::mesh::teapot::MAX_LEVEL), the largest accepted.
+        max: u32,
+    },
+}
+
+/// Result with ffvk's [`Error`].
+pub type Result<T, E = Error> = std::result::Result<T, E>;
+
+/// The one place where `vk::Result` codes become ffvk errors: device loss and memory
+/// exhaustion get their own variants so callers can tell them apart; the rest keep the call.
+pub(crate) fn vk_error(call: &'static str) -> impl Fn(vk::Result) -> Error {
+    move |result| match result {
+        vk::Result::ERROR_DEVICE_LOST => Error::DeviceLost(call),
+        vk::Result::ERROR_OUT_OF_HOST_MEMORY => Error::OutOfMemory { kind: "host", call },
+        vk::Result::ERROR_OUT_OF_DEVICE_MEMORY => Error::OutOfMemory { kind: "device", call },
+        result => Error::Vulkan { call, result },
+    }
+}
+
+/// A name that [`FromStr`](std::str::FromStr) does not know: `"phong"` for a
+/// [`LightingMode`](crate::gl::state::LightingMode), say. Its message names what was being
+/// read, the value and the names that exist.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("unknown {what} {value:?}: expected {expected}")]
+#[non_exhaustive]
+pub struct UnknownName {
+    /// What the name was for, e.g. `"lighting mode"`.
+    pub what: &'static str,
+    /// The text given.
+    pub value: String,
+    /// The names that exist, e.g. `"vertex, fragment or flat"`.
+    pub expected: &'static str,
+}
+
+impl UnknownName {
+    /// `value` is not one of the names of `what`, which are `expected`.
+    pub fn new(what: &'static str, value: &str, expected: &'static str) -> Self {
+        UnknownName {
+            what,
+            value: value.to_owned(),
+            expected,
+        }
+    }
+}

@@ -1,0 +1,931 @@
+//! GL 2.1 lighting state (tables 2.10-2.12) with GL's defaults, GL's validation and GL's
+//! "transform at specification time" rule for light positions and spot directions.
+//!
+//! [`GlState`] behaves like the fixed-function state machine an emulation layer ports:
+//! `glLight`, `glMaterial`, `glLightModel`, `glColorMaterial`, `glShadeModel`, `glEnable`.
+//! Values GL would answer with `INVALID_VALUE` (or `INVALID_ENUM`) are rejected with a
+//! [`StateError`] naming the parameter, the value and the valid range.
+//!
+//! One difference from GL's state machine: GL has a current color, and with COLOR_MATERIAL
+//! enabled it writes that color into the tracked material parameter, which keeps it after
+//! glDisable(COLOR_MATERIAL). Here the current color is per vertex (the mesh's colors) and
+//! color material is applied while drawing, so disabling it restores the material set by
+//! glMaterial. An emulation layer that relies on the written-back value should copy its
+//! current color into the material when it disables COLOR_MATERIAL.
+
+use glam::{Mat3, Mat4, Vec3, Vec4};
+
+use super::texture::{TexEnvMode, TextureUnit};
+
+/// Lights ffvk evaluates per draw (GL_MAX_LIGHTS). GL requires at least 8.
+pub const MAX_LIGHTS: usize = 16;
+
+/// A value GL would reject. A [`GlState`] entry point that returns it changes nothing.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum StateError {
+    /// GL's `INVALID_VALUE`: a finite value outside the parameter's range. Also used for a
+    /// state that is in range but cannot be drawn (see [`DrawBlock::new`]).
+    ///
+    /// [`DrawBlock::new`]: crate::gpu::layout::DrawBlock::new
+    #[error("{parameter} = {value} is out of range: expected {valid}")]
+    OutOfRange {
+        /// The GL name of the parameter, e.g. `"GL_SPOT_CUTOFF"`.
+        parameter: &'static str,
+        /// The rejected value.
+        value: f32,
+        /// The valid range, in words, e.g. `"a value in [0, 90] or exactly 180"`.
+        valid: &'static str,
+    },
+    /// A NaN or infinite component. GL leaves their effect unspecified; ffvk refuses them so
+    /// they cannot spread NaN through the lighting.
+    #[error("{parameter} = {value} is not a finite number: expected {valid}")]
+    NotFinite {
+        /// The GL name of the parameter (or `"modelview matrix"`).
+        parameter: &'static str,
+        /// The first non-finite component found.
+        value: f32,
+        /// What would have been accepted, in words.
+        valid: &'static str,
+    },
+    /// A soft spot edge whose inner cone is wider than its outer cone (`GL_SPOT_CUTOFF`):
+    /// ffvk's extension, checked when the light is drawn, since GL's order of calls lets
+    /// either angle be set first.
+    #[error("light {light}: the spot edge's inner angle {inner}° is wider than its outer angle (GL_SPOT_CUTOFF) {outer}°: expected inner <= outer")]
+    SpotCone {
+        /// The light's index (`GL_LIGHTi`).
+        light: usize,
+        /// The inner cone's half-angle, degrees.
+        inner: f32,
+        /// The outer cone's half-angle (`GL_SPOT_CUTOFF`), degrees.
+        outer: f32,
+    },
+    /// A light index at or past [`MAX_LIGHTS`] (GL's `INVALID_ENUM` for `GL_LIGHTi`).
+    #[error("light index {index} is out of range: expected 0..{max} (GL_MAX_LIGHTS = {max})")]
+    LightIndex {
+        /// The index given.
+        index: usize,
+        /// [`MAX_LIGHTS`]; valid indices are below it.
+        max: usize,
+    },
+}
+
+/// One light source's state, in eye coordinates as GL stores it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub struct Light {
+    /// `GL_LIGHTi` (glEnable); false for every light initially, light 0 included. A disabled
+    /// light contributes nothing.
+    pub enabled: bool,
+    /// a_cli, `GL_AMBIENT`: default (0, 0, 0, 1). Components are unrestricted (negative or
+    /// above 1 allowed); only RGB enters the equation.
+    pub ambient: Vec4,
+    /// d_cli, `GL_DIFFUSE`: default (1, 1, 1, 1) for light 0, (0, 0, 0, 1) for the others.
+    pub diffuse: Vec4,
+    /// s_cli, `GL_SPECULAR`: default (1, 1, 1, 1) for light 0, (0, 0, 0, 1) for the others.
+    pub specular: Vec4,
+    /// P_pli, `GL_POSITION`, homogeneous, eye space (already transformed by the modelview at
+    /// specification time). w = 0: a directional light from direction (x, y, z), never
+    /// attenuated; w ≠ 0: a positional light at (x, y, z) / w. Default (0, 0, 1, 0).
+    pub position: Vec4,
+    /// s_dli, `GL_SPOT_DIRECTION`, eye space (transformed by the upper 3x3 of the modelview
+    /// at specification time); any length, normalized where used. Default (0, 0, -1).
+    pub spot_direction: Vec3,
+    /// s_rli, `GL_SPOT_EXPONENT`, in [0, 128]; default 0 (uniform cone, with 0^0 = 1).
+    pub spot_exponent: f32,
+    /// c_rli, `GL_SPOT_CUTOFF`, the cone's half-angle in degrees, in [0, 90] or exactly 180;
+    /// default 180, which turns the spot off (spot_i = 1).
+    pub spot_cutoff: f32,
+    /// k0, `GL_CONSTANT_ATTENUATION`, >= 0; default 1. att_i = 1 / (k0 + k1·d + k2·d²), d
+    /// the eye-space distance to the light, applies only when `position.w != 0`; drawing
+    /// fails if an enabled positional light has k0 + k1 + k2 = 0.
+    pub constant_attenuation: f32,
+    /// k1, `GL_LINEAR_ATTENUATION`, the factor of d, >= 0; default 0.
+    pub linear_attenuation: f32,
+    /// k2, `GL_QUADRATIC_ATTENUATION`, the factor of d², >= 0; default 0.
+    pub quadratic_attenuation: f32,
+    /// How the cone's edge falls off (ffvk's extension); default [`SpotEdge::GlExponent`],
+    /// GL's.
+    pub spot_edge: SpotEdge,
+    /// How intensity falls off with distance (ffvk's extension); default
+    /// [`Attenuation::GlK012`], GL's.
+    pub attenuation: Attenuation,
+}
+
+/// How a spotlight's intensity falls off towards its cone's edge. cos θ is GL's
+/// P_pliV ⊙ ŝ_dli, the outer cone is `GL_SPOT_CUTOFF` (c_rli); with c_rli = 180 there is no
+/// cone and every edge gives spot_i = 1.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[non_exhaustive]
+pub enum SpotEdge {
+    /// GL's: (cos θ)^s_rli inside the cone, 0 outside (`GL_SPOT_EXPONENT`).
+    #[default]
+    GlExponent,
+    /// 1 inside the inner cone, 0 outside the outer, and between them
+    /// clamp((cos θ − cos outer) / (cos inner − cos outer), 0, 1); the exponent is not used.
+    /// An inner angle equal to the outer is a hard cutoff at that angle.
+    LinearInnerOuter {
+        /// The inner cone's half-angle in degrees, in [0, 90] and at most the outer.
+        inner_degrees: f32,
+    },
+    /// As [`SpotEdge::LinearInnerOuter`], with smoothstep(cos outer, cos inner, cos θ)
+    /// between the cones (glTF's KHR_lights_punctual cone, as Khronos' sample viewer draws
+    /// it).
+    SmoothstepInnerOuter {
+        /// The inner cone's half-angle in degrees, in [0, 90] and at most the outer.
+        inner_degrees: f32,
+    },
+}
+
+impl SpotEdge {
+    /// The name scene files and `ffvk explain` use.
+    pub fn name(self) -> &'static str {
+        match self {
+            SpotEdge::GlExponent => "gl_exponent",
+            SpotEdge::LinearInnerOuter { .. } => "linear_inner_outer",
+            SpotEdge::SmoothstepInnerOuter { .. } => "smoothstep_inner_outer",
+        }
+    }
+
+    /// The inner cone's half-angle, for the soft edges.
+    pub fn inner_degrees(self) -> Option<f32> {
+        match self {
+            SpotEdge::GlExponent => None,
+            SpotEdge::LinearInnerOuter { inner_degrees }
+            | SpotEdge::SmoothstepInnerOuter { inner_degrees } => Some(inner_degrees),
+        }
+    }
+}
+
+/// How a positional light's intensity falls off with the eye-space distance d to it.
+/// Directional lights (w = 0) are never attenuated.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[non_exhaustive]
+pub enum Attenuation {
+    /// GL's: att_i = 1 / (k0 + k1·d + k2·d²).
+    #[default]
+    GlK012,
+    /// glTF's (KHR_lights_punctual): att_i = 1 / d², times the window
+    /// clamp(1 − (d / range)⁴, 0, 1) when the light has a range (as Khronos' sample viewer
+    /// draws it); k0, k1 and k2 are not used. Infinite at d = 0, as GL's k2-only falloff is.
+    GltfInverseSquare {
+        /// Where the light's influence ends, > 0 (eye-space units); `None`: unbounded.
+        range: Option<f32>,
+    },
+}
+
+impl Attenuation {
+    /// The name scene files and `ffvk explain` use.
+    pub fn name(self) -> &'static str {
+        match self {
+            Attenuation::GlK012 => "gl_k012",
+            Attenuation::GltfInverseSquare { .. } => "gltf_inverse_square",
+        }
+    }
+}
+
+/// Which specular term the equation uses (ffvk's extension to the light model).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[non_exhaustive]
+pub enum SpecularModel {
+    /// GL's: f_i (n ⊙ ĥ_i)^s_rm, ĥ_i the unit halfway vector between VP_pli and the
+    /// direction to the viewer (Blinn).
+    #[default]
+    BlinnHalfway,
+    /// Phong's original: f_i (r_i ⊙ v)^s_rm, r_i = 2 (n · VP_pli) n − VP_pli the reflection of
+    /// the direction to the light about n, v the direction to the viewer ((0, 0, 1) unless
+    /// the viewer is local), with the same clamping of negative products and the same f_i.
+    /// For the same exponent its highlight is narrower than GL's: for coplanar vectors the
+    /// halfway angle is half of r_i's (larger otherwise), so (n ⊙ ĥ_i)^s_rm falls off more
+    /// slowly (about four times the exponent gives GL's term a similar highlight).
+    PhongReflect,
+}
+
+impl SpecularModel {
+    /// The name scene files and `ffvk explain` use.
+    pub fn name(self) -> &'static str {
+        match self {
+            SpecularModel::BlinnHalfway => "blinn_halfway",
+            SpecularModel::PhongReflect => "phong_reflect",
+        }
+    }
+}
+
+impl Light {
+    /// GL's initial state of light `index`: light 0 has white diffuse and specular, the others black.
+    pub fn gl_default(index: usize) -> Self {
+        let white_if_first = if index == 0 {
+            Vec4::ONE
+        } else {
+            Vec4::new(0.0, 0.0, 0.0, 1.0)
+        };
+        Light {
+            enabled: false,
+            ambient: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            diffuse: white_if_first,
+            specular: white_if_first,
+            position: Vec4::new(0.0, 0.0, 1.0, 0.0),
+            spot_direction: Vec3::new(0.0, 0.0, -1.0),
+            spot_exponent: 0.0,
+            spot_cutoff: 180.0,
+            constant_attenuation: 1.0,
+            linear_attenuation: 0.0,
+            quadratic_attenuation: 0.0,
+            spot_edge: SpotEdge::GlExponent,
+            attenuation: Attenuation::GlK012,
+        }
+    }
+}
+
+/// Material state of one face.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub struct Material {
+    /// a_cm, `GL_AMBIENT`: default (0.2, 0.2, 0.2, 1). Components are unrestricted.
+    pub ambient: Vec4,
+    /// d_cm, `GL_DIFFUSE`: default (0.8, 0.8, 0.8, 1). Its alpha is the lit color's alpha.
+    pub diffuse: Vec4,
+    /// s_cm, `GL_SPECULAR`: default (0, 0, 0, 1), so no highlight until it is set.
+    pub specular: Vec4,
+    /// e_cm, `GL_EMISSION`: default (0, 0, 0, 1); added unlit and unattenuated.
+    pub emission: Vec4,
+    /// s_rm, `GL_SHININESS`, the specular exponent, in [0, 128]; default 0 (with 0^0 = 1).
+    pub shininess: f32,
+}
+
+impl Default for Material {
+    /// GL's initial material (table 2.10).
+    fn default() -> Self {
+        Material {
+            ambient: Vec4::new(0.2, 0.2, 0.2, 1.0),
+            diffuse: Vec4::new(0.8, 0.8, 0.8, 1.0),
+            specular: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            emission: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            shininess: 0.0,
+        }
+    }
+}
+
+impl Material {
+    /// Checks the ranges GL checks (shininess in [0, 128]) and that every value is finite.
+    pub fn validate(&self) -> Result<(), StateError> {
+        for (name, c) in [
+            ("GL_AMBIENT", self.ambient),
+            ("GL_DIFFUSE", self.diffuse),
+            ("GL_SPECULAR", self.specular),
+            ("GL_EMISSION", self.emission),
+        ] {
+            finite_vec(name, c.to_array().as_slice())?;
+        }
+        in_range("GL_SHININESS", self.shininess, 0.0, 128.0, "a value in [0, 128]")
+    }
+}
+
+/// c_es, `GL_LIGHT_MODEL_COLOR_CONTROL`: where the specular term goes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ColorControl {
+    /// `GL_SINGLE_COLOR` (the default): specular is part of c_pri; c_sec is (0, 0, 0, 1).
+    #[default]
+    SingleColor,
+    /// `GL_SEPARATE_SPECULAR_COLOR`: specular goes to c_sec, which GL adds after texturing
+    /// (so a texture does not darken the highlight); untextured, only the clamping differs:
+    /// each color is clamped before the color sum.
+    SeparateSpecularColor,
+}
+
+/// Light-model state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub struct LightModel {
+    /// a_cs, `GL_LIGHT_MODEL_AMBIENT`, scaled by a_cm for every lit point even with no light
+    /// enabled; default (0.2, 0.2, 0.2, 1).
+    pub ambient: Vec4,
+    /// v_bs, `GL_LIGHT_MODEL_LOCAL_VIEWER`; default false: the viewer is at infinity along +z
+    /// and h_i uses (0, 0, 1) instead of the direction to the eye.
+    pub local_viewer: bool,
+    /// t_bs, `GL_LIGHT_MODEL_TWO_SIDE`; default false. When true, back faces are lit with the
+    /// back material and the negated normal.
+    pub two_side: bool,
+    /// c_es, `GL_LIGHT_MODEL_COLOR_CONTROL`; default [`ColorControl::SingleColor`].
+    pub color_control: ColorControl,
+    /// The specular term (ffvk's extension); default [`SpecularModel::BlinnHalfway`], GL's.
+    pub specular_model: SpecularModel,
+}
+
+impl Default for LightModel {
+    fn default() -> Self {
+        LightModel {
+            ambient: Vec4::new(0.2, 0.2, 0.2, 1.0),
+            local_viewer: false,
+            two_side: false,
+            color_control: ColorControl::SingleColor,
+            specular_model: SpecularModel::BlinnHalfway,
+        }
+    }
+}
+
+/// A face selector for glMaterial and glColorMaterial.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Face {
+    /// `GL_FRONT`.
+    Front,
+    /// `GL_BACK`: the back material, which lights only with two-sided lighting on.
+    Back,
+    /// `GL_FRONT_AND_BACK`, glColorMaterial's initial face.
+    #[default]
+    FrontAndBack,
+}
+
+impl Face {
+    /// Whether the selector affects the front material (`GL_FRONT` or `GL_FRONT_AND_BACK`).
+    pub fn includes_front(self) -> bool {
+        matches!(self, Face::Front | Face::FrontAndBack)
+    }
+    /// Whether the selector affects the back material (`GL_BACK` or `GL_FRONT_AND_BACK`).
+    pub fn includes_back(self) -> bool {
+        matches!(self, Face::Back | Face::FrontAndBack)
+    }
+}
+
+/// The material parameter(s) glColorMaterial makes track the current color.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ColorMaterialMode {
+    /// `GL_EMISSION`: e_cm.
+    Emission,
+    /// `GL_AMBIENT`: a_cm.
+    Ambient,
+    /// `GL_DIFFUSE`: d_cm, and with it the lit alpha.
+    Diffuse,
+    /// `GL_SPECULAR`: s_cm.
+    Specular,
+    /// `GL_AMBIENT_AND_DIFFUSE` (the initial mode): a_cm and d_cm.
+    #[default]
+    AmbientAndDiffuse,
+}
+
+/// COLOR_MATERIAL state.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[non_exhaustive]
+pub struct ColorMaterial {
+    /// glEnable(`GL_COLOR_MATERIAL`); default false.
+    pub enabled: bool,
+    /// glColorMaterial's face; default [`Face::FrontAndBack`].
+    pub face: Face,
+    /// glColorMaterial's mode; default [`ColorMaterialMode::AmbientAndDiffuse`].
+    pub mode: ColorMaterialMode,
+}
+
+impl ColorMaterial {
+    /// The material of one face with the tracked parameter(s) replaced by `color`.
+    pub fn apply(&self, material: &Material, color: Vec4, back: bool) -> Material {
+        let mut m = *material;
+        let applies = if back {
+            self.face.includes_back()
+        } else {
+            self.face.includes_front()
+        };
+        if !self.enabled || !applies {
+            return m;
+        }
+        match self.mode {
+            ColorMaterialMode::Emission => m.emission = color,
+            ColorMaterialMode::Ambient => m.ambient = color,
+            ColorMaterialMode::Diffuse => m.diffuse = color,
+            ColorMaterialMode::Specular => m.specular = color,
+            ColorMaterialMode::AmbientAndDiffuse => {
+                m.ambient = color;
+                m.diffuse = color;
+            }
+        }
+        m
+    }
+}
+
+/// Where the one equation is evaluated.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Hash)]
+pub enum LightingMode {
+    /// Lit at each vertex, clamped there, colors interpolated (GL's SMOOTH; Gouraud's method).
+    #[default]
+    Vertex,
+    /// Eye-space position and normal interpolated, lit at each fragment (Phong's
+    /// interpolation; the specular term stays GL's halfway-vector one).
+    Fragment,
+    /// GL's ShadeModel(FLAT): lit per vertex, the triangle takes its last vertex's color.
+    Flat,
+}
+
+impl LightingMode {
+    /// Every mode, in declaration order (for loops over modes in tests and benchmarks).
+    pub const ALL: [LightingMode; 3] = [LightingMode::Vertex, LightingMode::Fragment, LightingMode::Flat];
+
+    /// Lowercase name (`vertex`, `fragment`, `flat`), the one [`str::parse`] accepts.
+    pub fn name(self) -> &'static str {
+        match self {
+            LightingMode::Vertex => "vertex",
+            LightingMode::Fragment => "fragment",
+            LightingMode::Flat => "flat",
+        }
+    }
+}
+
+impl std::str::FromStr for LightingMode {
+    type Err = crate::error::UnknownName;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        match s {
+            "vertex" => Ok(LightingMode::Vertex),
+            "fragment" => Ok(LightingMode::Fragment),
+            "flat" => Ok(LightingMode::Flat),
+            other => Err(crate::error::UnknownName::new(
+                "lighting mode",
+                other,
+                "vertex, fragment or flat",
+            )),
+        }
+    }
+}
+
+/// GL's ShadeModel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ShadeModel {
+    /// `GL_SMOOTH` (GL's default): selects [`LightingMode::Vertex`].
+    Smooth,
+    /// `GL_FLAT`: selects [`LightingMode::Flat`].
+    Flat,
+}
+
+/// Capabilities toggled by glEnable/glDisable that touch lighting.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Cap {
+    /// `GL_LIGHTING`: without it the clamped vertex color is drawn unlit.
+    Lighting,
+    /// `GL_LIGHTi`, i in 0..[`MAX_LIGHTS`]; a larger i is a [`StateError::LightIndex`].
+    Light(usize),
+    /// `GL_COLOR_MATERIAL`.
+    ColorMaterial,
+    /// `GL_NORMALIZE`: eye-space normals are made unit length.
+    Normalize,
+    /// `GL_RESCALE_NORMAL`: eye-space normals are scaled to undo a uniform scale in the
+    /// modelview (the factor comes from the third row of its inverse).
+    RescaleNormal,
+    /// `GL_TEXTURE_2D`: texturing with the bound texture, when it is complete.
+    Texture2D,
+}
+
+/// Parameters of glTexEnv (target `GL_TEXTURE_ENV`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum TexEnvParam {
+    /// `GL_TEXTURE_ENV_MODE`.
+    Mode(TexEnvMode),
+    /// `GL_TEXTURE_ENV_COLOR`, C_c: clamped to [0, 1] as GL does; NaN or infinity is an error.
+    Color(Vec4),
+}
+
+/// Parameters of glLight.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum LightParam {
+    /// `GL_AMBIENT`, a_cli: any finite RGBA.
+    Ambient(Vec4),
+    /// `GL_DIFFUSE`, d_cli: any finite RGBA.
+    Diffuse(Vec4),
+    /// `GL_SPECULAR`, s_cli: any finite RGBA.
+    Specular(Vec4),
+    /// `GL_POSITION`, P_pli. Object coordinates: transformed by the modelview in force at
+    /// the call.
+    Position(Vec4),
+    /// `GL_SPOT_DIRECTION`, s_dli. Object coordinates: transformed by the upper 3x3 of the
+    /// modelview in force at the call.
+    SpotDirection(Vec3),
+    /// `GL_SPOT_EXPONENT`, s_rli, in [0, 128].
+    SpotExponent(f32),
+    /// `GL_SPOT_CUTOFF`, c_rli, in degrees: [0, 90] or exactly 180.
+    SpotCutoff(f32),
+    /// `GL_CONSTANT_ATTENUATION`, k0, >= 0.
+    ConstantAttenuation(f32),
+    /// `GL_LINEAR_ATTENUATION`, k1, >= 0.
+    LinearAttenuation(f32),
+    /// `GL_QUADRATIC_ATTENUATION`, k2, >= 0.
+    QuadraticAttenuation(f32),
+    /// ffvk's extension: the spot edge; a soft edge's inner angle in [0, 90] (and, when the
+    /// light is drawn, at most `GL_SPOT_CUTOFF`).
+    SpotEdge(SpotEdge),
+    /// ffvk's extension: the distance falloff; a glTF range > 0.
+    Attenuation(Attenuation),
+}
+
+/// Parameters of glMaterial.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum MaterialParam {
+    /// `GL_AMBIENT`, a_cm: any finite RGBA.
+    Ambient(Vec4),
+    /// `GL_DIFFUSE`, d_cm: any finite RGBA.
+    Diffuse(Vec4),
+    /// `GL_SPECULAR`, s_cm: any finite RGBA.
+    Specular(Vec4),
+    /// `GL_EMISSION`, e_cm: any finite RGBA.
+    Emission(Vec4),
+    /// `GL_SHININESS`, s_rm, in [0, 128].
+    Shininess(f32),
+    /// `GL_AMBIENT_AND_DIFFUSE`: sets a_cm and d_cm to the same color.
+    AmbientAndDiffuse(Vec4),
+}
+
+/// Parameters of glLightModel.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum LightModelParam {
+    /// `GL_LIGHT_MODEL_AMBIENT`, a_cs: any finite RGBA.
+    Ambient(Vec4),
+    /// `GL_LIGHT_MODEL_LOCAL_VIEWER`, v_bs.
+    LocalViewer(bool),
+    /// `GL_LIGHT_MODEL_TWO_SIDE`, t_bs.
+    TwoSide(bool),
+    /// `GL_LIGHT_MODEL_COLOR_CONTROL`, c_es.
+    ColorControl(ColorControl),
+    /// ffvk's extension: the specular term.
+    SpecularModel(SpecularModel),
+}
+
+/// Everything the lighting of one draw depends on, besides its geometry and matrices.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub struct LightingState {
+    /// GL_LIGHTING; off by default, as in GL: the vertex color passes through.
+    pub lighting: bool,
+    /// `GL_LIGHT0` onwards, [`MAX_LIGHTS`] of them, each starting at [`Light::gl_default`].
+    pub lights: [Light; MAX_LIGHTS],
+    /// The front material, also used for back faces unless two-sided lighting is on.
+    pub front: Material,
+    /// The back material: used only when [`LightModel::two_side`] is on.
+    pub back: Material,
+    /// glLightModel state.
+    pub model: LightModel,
+    /// glColorMaterial state.
+    pub color_material: ColorMaterial,
+    /// `GL_TEXTURE_2D`, glTexEnv and the texture matrix: how a bound texture is applied to the
+    /// primary color before the color sum.
+    pub texture: TextureUnit,
+    /// `GL_NORMALIZE`; off by default, so a scaled modelview lights with unnormalized normals.
+    pub normalize: bool,
+    /// `GL_RESCALE_NORMAL`; off by default.
+    pub rescale_normal: bool,
+    /// Where the equation is evaluated; [`LightingMode::Vertex`] by default (GL's SMOOTH).
+    pub mode: LightingMode,
+    /// GL's current color (`GL_CURRENT_COLOR`, set by `glColor`), (1, 1, 1, 1) initially: the
+    /// color of every vertex of a draw without a color array. With a color array each vertex
+    /// has its own color and this one is not read.
+    pub current_color: Vec4,
+}
+
+impl Default for LightingState {
+    fn default() -> Self {
+        LightingState {
+            lighting: false,
+            lights: std::array::from_fn(Light::gl_default),
+            front: Material::default(),
+            back: Material::default(),
+            model: LightModel::default(),
+            color_material: ColorMaterial::default(),
+            texture: TextureUnit::default(),
+            normalize: false,
+            rescale_normal: false,
+            mode: LightingMode::Vertex,
+            current_color: Vec4::ONE,
+        }
+    }
+}
+
+impl LightingState {
+    /// Checks every value against GL's ranges; for state built field by field rather than
+    /// through [`GlState`]'s setters.
+    pub fn validate(&self) -> Result<(), StateError> {
+        self.front.validate()?;
+        self.back.validate()?;
+        finite_vec("GL_LIGHT_MODEL_AMBIENT", self.model.ambient.to_array().as_slice())?;
+        finite_vec("GL_CURRENT_COLOR", self.current_color.to_array().as_slice())?;
+        self.texture.validate()?;
+        for (index, light) in self.lights.iter().enumerate() {
+            validate_light(light)?;
+            // A disabled light may be half set up: its cones count once it is enabled.
+            if light.enabled {
+                check_cone(index, light)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The enabled lights, in index order.
+    pub fn enabled_lights(&self) -> impl Iterator<Item = &Light> {
+        self.lights.iter().filter(|l| l.enabled)
+    }
+}
+
+/// Checks one light's values against GL's ranges and that every value is finite.
+pub fn validate_light(l: &Light) -> Result<(), StateError> {
+    for (name, c) in [
+        ("GL_AMBIENT", l.ambient),
+        ("GL_DIFFUSE", l.diffuse),
+        ("GL_SPECULAR", l.specular),
+        ("GL_POSITION", l.position),
+    ] {
+        finite_vec(name, c.to_array().as_slice())?;
+    }
+    finite_vec("GL_SPOT_DIRECTION", l.spot_direction.to_array().as_slice())?;
+    check_light_scalar(&LightParam::SpotExponent(l.spot_exponent))?;
+    check_light_scalar(&LightParam::SpotCutoff(l.spot_cutoff))?;
+    check_light_scalar(&LightParam::ConstantAttenuation(l.constant_attenuation))?;
+    check_light_scalar(&LightParam::LinearAttenuation(l.linear_attenuation))?;
+    check_light_scalar(&LightParam::QuadraticAttenuation(l.quadratic_attenuation))?;
+    check_light_scalar(&LightParam::SpotEdge(l.spot_edge))?;
+    check_light_scalar(&LightParam::Attenuation(l.attenuation))
+}
+
+/// A soft edge's inner cone must fit in the outer one (`GL_SPOT_CUTOFF`; no cone at 180).
+fn check_cone(index: usize, l: &Light) -> Result<(), StateError> {
+    match l.spot_edge.inner_degrees() {
+        Some(inner) if l.spot_cutoff != 180.0 && inner > l.spot_cutoff => Err(StateError::SpotCone {
+            light: index,
+            inner,
+            outer: l.spot_cutoff,
+        }),
+        _ => Ok(()),
+    }
+}
+
+fn finite_vec(parameter: &'static str, values: &[f32]) -> Result<(), StateError> {
+    match values.iter().find(|v| !v.is_finite()) {
+        Some(&value) => Err(StateError::NotFinite {
+            parameter,
+            value,
+            valid: "finite components",
+        }),
+        None => Ok(()),
+    }
+}
+
+fn in_range(
+    parameter: &'static str,
+    value: f32,
+    lo: f32,
+    hi: f32,
+    valid: &'static str,
+) -> Result<(), StateError> {
+    if !value.is_finite() {
+        return Err(StateError::NotFinite {
+            parameter,
+            value,
+            valid,
+        });
+    }
+    if value < lo || value > hi {
+        return Err(StateError::OutOfRange {
+            parameter,
+            value,
+            valid,
+        });
+    }
+    Ok(())
+}
+
+fn check_light_scalar(p: &LightParam) -> Result<(), StateError> {
+    match *p {
+        LightParam::SpotExponent(v) => in_range("GL_SPOT_EXPONENT", v, 0.0, 128.0, "a value in [0, 128]"),
+        LightParam::SpotCutoff(v) => {
+            const VALID: &str = "a value in [0, 90] or exactly 180";
+            if v == 180.0 {
+                Ok(())
+            } else {
+                in_range("GL_SPOT_CUTOFF", v, 0.0, 90.0, VALID)
+            }
+        }
+        LightParam::ConstantAttenuation(v) => {
+            in_range("GL_CONSTANT_ATTENUATION", v, 0.0, f32::MAX, "a value >= 0")
+        }
+        LightParam::LinearAttenuation(v) => {
+            in_range("GL_LINEAR_ATTENUATION", v, 0.0, f32::MAX, "a value >= 0")
+        }
+        LightParam::QuadraticAttenuation(v) => {
+            in_range("GL_QUADRATIC_ATTENUATION", v, 0.0, f32::MAX, "a value >= 0")
+        }
+        LightParam::SpotEdge(edge) => match edge.inner_degrees() {
+            Some(inner) => in_range("spot inner angle", inner, 0.0, 90.0, "a value in [0, 90] degrees"),
+            None => Ok(()),
+        },
+        LightParam::Attenuation(Attenuation::GltfInverseSquare { range: Some(r) }) => {
+            in_range("range", r, f32::MIN_POSITIVE, f32::MAX, "a value > 0")
+        }
+        _ => Ok(()),
+    }
+}
+
+/// The fixed-function state machine: the lighting state plus the current modelview matrix,
+/// with GL's entry points. Start from [`GlState::new`] for GL's initial state.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub struct GlState {
+    /// The state a draw captures.
+    pub lighting: LightingState,
+    /// The modelview matrix in force (glLoadMatrix / glMultMatrix).
+    pub modelview: Mat4,
+}
+
+impl Default for GlState {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl GlState {
+    /// GL's initial state: identity modelview, every default of table 2.10.
+    pub fn new() -> Self {
+        GlState {
+            lighting: LightingState::default(),
+            modelview: Mat4::IDENTITY,
+        }
+    }
+
+    /// glLoadMatrix on the MODELVIEW stack.
+    pub fn load_modelview(&mut self, m: Mat4) -> Result<(), StateError> {
+        finite_vec("modelview matrix", &m.to_cols_array())?;
+        self.modelview = m;
+        Ok(())
+    }
+
+    /// glMultMatrix on the MODELVIEW stack.
+    pub fn mult_modelview(&mut self, m: Mat4) -> Result<(), StateError> {
+        self.load_modelview(self.modelview * m)
+    }
+
+    fn light_mut(&mut self, index: usize) -> Result<&mut Light, StateError> {
+        self.lighting.lights.get_mut(index).ok_or(StateError::LightIndex {
+            index,
+            max: MAX_LIGHTS,
+        })
+    }
+
+    /// glLight: sets one parameter of light `index`. Positions and spot directions are
+    /// transformed by the current modelview and stored in eye space, as GL does.
+    pub fn light(&mut self, index: usize, param: LightParam) -> Result<(), StateError> {
+        check_light_scalar(&param)?;
+        let modelview = self.modelview;
+        let light = self.light_mut(index)?;
+        match param {
+            LightParam::Ambient(c) => light.ambient = finite4("GL_AMBIENT", c)?,
+            LightParam::Diffuse(c) => light.diffuse = finite4("GL_DIFFUSE", c)?,
+            LightParam::Specular(c) => light.specular = finite4("GL_SPECULAR", c)?,
+            LightParam::Position(p) => light.position = modelview * finite4("GL_POSITION", p)?,
+            LightParam::SpotDirection(d) => {
+                finite_vec("GL_SPOT_DIRECTION", &d.to_array())?;
+                light.spot_direction = Mat3::from_mat4(modelview) * d;
+            }
+            LightParam::SpotExponent(v) => light.spot_exponent = v,
+            LightParam::SpotCutoff(v) => light.spot_cutoff = v,
+            LightParam::ConstantAttenuation(v) => light.constant_attenuation = v,
+            LightParam::LinearAttenuation(v) => light.linear_attenuation = v,
+            LightParam::QuadraticAttenuation(v) => light.quadratic_attenuation = v,
+            LightParam::SpotEdge(edge) => light.spot_edge = edge,
+            LightParam::Attenuation(a) => light.attenuation = a,
+        }
+        Ok(())
+    }
+
+    /// glMaterial on `face`.
+    pub fn material(&mut self, face: Face, param: MaterialParam) -> Result<(), StateError> {
+        let apply = |m: &mut Material| -> Result<(), StateError> {
+            match param {
+                MaterialParam::Ambient(c) => m.ambient = finite4("GL_AMBIENT", c)?,
+                MaterialParam::Diffuse(c) => m.diffuse = finite4("GL_DIFFUSE", c)?,
+                MaterialParam::Specular(c) => m.specular = finite4("GL_SPECULAR", c)?,
+                MaterialParam::Emission(c) => m.emission = finite4("GL_EMISSION", c)?,
+                MaterialParam::AmbientAndDiffuse(c) => {
+                    let c = finite4("GL_AMBIENT_AND_DIFFUSE", c)?;
+                    m.ambient = c;
+                    m.diffuse = c;
+                }
+                MaterialParam::Shininess(s) => {
+                    in_range("GL_SHININESS", s, 0.0, 128.0, "a value in [0, 128]")?;
+                    m.shininess = s;
+                }
+            }
+            Ok(())
+        };
+        if face.includes_front() {
+            apply(&mut self.lighting.front)?;
+        }
+        if face.includes_back() {
+            apply(&mut self.lighting.back)?;
+        }
+        Ok(())
+    }
+
+    /// glLightModel.
+    pub fn light_model(&mut self, param: LightModelParam) -> Result<(), StateError> {
+        let model = &mut self.lighting.model;
+        match param {
+            LightModelParam::Ambient(c) => model.ambient = finite4("GL_LIGHT_MODEL_AMBIENT", c)?,
+            LightModelParam::LocalViewer(b) => model.local_viewer = b,
+            LightModelParam::TwoSide(b) => model.two_side = b,
+            LightModelParam::ColorControl(c) => model.color_control = c,
+            LightModelParam::SpecularModel(m) => model.specular_model = m,
+        }
+        Ok(())
+    }
+
+    /// glColorMaterial.
+    pub fn color_material(&mut self, face: Face, mode: ColorMaterialMode) {
+        self.lighting.color_material.face = face;
+        self.lighting.color_material.mode = mode;
+        self.track_current_color();
+    }
+
+    /// glColor4f: sets the current color, which a draw without a color array gives every
+    /// vertex. With `GL_COLOR_MATERIAL` enabled the color is also written into the tracked
+    /// material parameters (section 2.14.3: they track the current color), where it stays
+    /// after `glDisable(GL_COLOR_MATERIAL)`. Colors are not clamped here (GL clamps after
+    /// lighting); a NaN or infinite component is an error.
+    ///
+    /// GL leaves the current color undefined after a draw that used a color array (2.1,
+    /// section 2.8); this state keeps the last `glColor`, and callers that need Mesa's
+    /// behaviour after such draws set it again.
+    pub fn color(&mut self, color: Vec4) -> Result<(), StateError> {
+        finite_vec("GL_CURRENT_COLOR", color.to_array().as_slice())?;
+        self.lighting.current_color = color;
+        self.track_current_color();
+        Ok(())
+    }
+
+    /// While `GL_COLOR_MATERIAL` is enabled, writes the current color into the material
+    /// parameters it tracks (glColor, glColorMaterial and glEnable do this in GL).
+    fn track_current_color(&mut self) {
+        let l = &mut self.lighting;
+        let color = l.current_color;
+        l.front = l.color_material.apply(&l.front, color, false);
+        l.back = l.color_material.apply(&l.back, color, true);
+    }
+
+    /// glShadeModel: FLAT selects [`LightingMode::Flat`]; SMOOTH selects per-vertex lighting.
+    pub fn shade_model(&mut self, model: ShadeModel) {
+        self.lighting.mode = match model {
+            ShadeModel::Flat => LightingMode::Flat,
+            ShadeModel::Smooth => LightingMode::Vertex,
+        };
+    }
+
+    /// ffvk's extension: where the equation is evaluated.
+    pub fn lighting_mode(&mut self, mode: LightingMode) {
+        self.lighting.mode = mode;
+    }
+
+    /// glEnable / glDisable.
+    pub fn set_enabled(&mut self, cap: Cap, on: bool) -> Result<(), StateError> {
+        match cap {
+            Cap::Lighting => self.lighting.lighting = on,
+            Cap::Light(i) => self.light_mut(i)?.enabled = on,
+            Cap::ColorMaterial => {
+                self.lighting.color_material.enabled = on;
+                self.track_current_color();
+            }
+            Cap::Normalize => self.lighting.normalize = on,
+            Cap::RescaleNormal => self.lighting.rescale_normal = on,
+            Cap::Texture2D => self.lighting.texture.enabled = on,
+        }
+        Ok(())
+    }
+
+    /// glTexEnv on `GL_TEXTURE_ENV`.
+    pub fn tex_env(&mut self, param: TexEnvParam) -> Result<(), StateError> {
+        match param {
+            TexEnvParam::Mode(mode) => self.lighting.texture.env_mode = mode,
+            TexEnvParam::Color(c) => {
+                let c = finite4("GL_TEXTURE_ENV_COLOR", c)?;
+                self.lighting.texture.env_color = c.clamp(Vec4::ZERO, Vec4::ONE);
+            }
+        }
+        Ok(())
+    }
+
+    /// glLoadMatrix on the `GL_TEXTURE` stack.
+    pub fn load_texture_matrix(&mut self, m: Mat4) -> Result<(), StateError> {
+        finite_vec("GL_TEXTURE matrix", &m.to_cols_array())?;
+        self.lighting.texture.matrix = m;
+        Ok(())
+    }
+
+    /// glEnable; fails only for a light index at or past [`MAX_LIGHTS`].
+    pub fn enable(&mut self, cap: Cap) -> Result<(), StateError> {
+        self.set_enabled(cap, true)
+    }
+
+    /// glDisable; fails only for a light index at or past [`MAX_LIGHTS`].
+    pub fn disable(&mut self, cap: Cap) -> Result<(), StateError> {
+        self.set_enabled(cap, false)
+    }
+}
+
+fn finite4(parameter: &'static str, v: Vec4) -> Result<Vec4, StateError> {
+    finite_vec(parameter, &v.to_array())?;
+    Ok(v)
+}

@@ -1,0 +1,532 @@
+//! GL 2.1's one texture unit (sections 3.8 and 3.13): the texture image with its parameters,
+//! and the texture environment that combines a texel with the lit primary color before the
+//! secondary color is added (section 3.9, color sum).
+//!
+//! What a draw captures splits as in GL: [`TextureUnit`] (`GL_TEXTURE_2D` enabled, the
+//! environment, the texture matrix) is part of [`LightingState`](super::state::LightingState);
+//! the texture object ([`TextureImage`] and [`Sampling`]) is bound per draw.
+
+use glam::{Mat4, Vec4};
+
+use super::state::StateError;
+
+/// `GL_TEXTURE_ENV_MODE` (table 3.22): how the texel C_s, A_s combines with the incoming
+/// fragment color C_f, A_f (the lit primary color).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[non_exhaustive]
+pub enum TexEnvMode {
+    /// `GL_MODULATE` (GL's default): C_v = C_f C_s, A_v = A_f A_s.
+    #[default]
+    Modulate,
+    /// `GL_REPLACE`: C_v = C_s, A_v = A_s.
+    Replace,
+    /// `GL_DECAL`: C_v = C_f (1 − A_s) + C_s A_s, A_v = A_f.
+    Decal,
+    /// `GL_BLEND`: C_v = C_f (1 − C_s) + C_c C_s, A_v = A_f A_s, C_c the environment color.
+    Blend,
+    /// `GL_ADD`: C_v = C_f + C_s (clamped to [0, 1]), A_v = A_f A_s.
+    Add,
+}
+
+impl TexEnvMode {
+    /// Every mode, in the order of table 3.22's columns as ffvk lists them.
+    pub const ALL: [TexEnvMode; 5] = [
+        TexEnvMode::Modulate,
+        TexEnvMode::Replace,
+        TexEnvMode::Decal,
+        TexEnvMode::Blend,
+        TexEnvMode::Add,
+    ];
+
+    /// Lowercase name (`modulate`, `replace`, `decal`, `blend`, `add`), the one scene files use.
+    pub fn name(self) -> &'static str {
+        match self {
+            TexEnvMode::Modulate => "modulate",
+            TexEnvMode::Replace => "replace",
+            TexEnvMode::Decal => "decal",
+            TexEnvMode::Blend => "blend",
+            TexEnvMode::Add => "add",
+        }
+    }
+
+    /// The value the shaders' `tex_env_mode` and `SPEC_TEX_ENV` take (`TEV_*` in
+    /// `glsl/texture.glsl`).
+    pub fn code(self) -> u32 {
+        self as u32
+    }
+}
+
+impl std::str::FromStr for TexEnvMode {
+    type Err = crate::error::UnknownName;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        TexEnvMode::ALL
+            .into_iter()
+            .find(|m| m.name() == s)
+            .ok_or_else(|| {
+                crate::error::UnknownName::new(
+                    "texture environment",
+                    s,
+                    "modulate, replace, decal, blend or add",
+                )
+            })
+    }
+}
+
+/// The texture unit's state besides the bound texture.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub struct TextureUnit {
+    /// `GL_TEXTURE_2D` (glEnable); off by default. On, with a complete texture bound, every
+    /// fragment is textured; on without one (GL's texture object 0 has no image) it is as if
+    /// texturing were off (section 3.8.10).
+    pub enabled: bool,
+    /// `GL_TEXTURE_ENV_MODE`; [`TexEnvMode::Modulate`] by default.
+    pub env_mode: TexEnvMode,
+    /// C_c, `GL_TEXTURE_ENV_COLOR`; (0, 0, 0, 0) by default. Clamped to [0, 1] when set, as GL
+    /// does; only [`TexEnvMode::Blend`] reads it.
+    pub env_color: Vec4,
+    /// The `GL_TEXTURE` matrix: (s, t, 0, 1) is multiplied by it, then s and t are divided by
+    /// q per fragment (section 2.11.4). Identity by default.
+    pub matrix: Mat4,
+}
+
+impl Default for TextureUnit {
+    fn default() -> Self {
+        TextureUnit {
+            enabled: false,
+            env_mode: TexEnvMode::Modulate,
+            env_color: Vec4::ZERO,
+            matrix: Mat4::IDENTITY,
+        }
+    }
+}
+
+impl TextureUnit {
+    /// Checks that the environment color is in [0, 1] and the matrix finite (state built field
+    /// by field rather than through [`GlState`](super::state::GlState)'s setters).
+    pub fn validate(&self) -> Result<(), StateError> {
+        for v in self.env_color.to_array() {
+            if !v.is_finite() {
+                return Err(StateError::NotFinite {
+                    parameter: "GL_TEXTURE_ENV_COLOR",
+                    value: v,
+                    valid: "components in [0, 1]",
+                });
+            }
+            if !(0.0..=1.0).contains(&v) {
+                return Err(StateError::OutOfRange {
+                    parameter: "GL_TEXTURE_ENV_COLOR",
+                    value: v,
+                    valid: "components in [0, 1] (glTexEnv clamps them)",
+                });
+            }
+        }
+        if let Some(&v) = self.matrix.to_cols_array().iter().find(|v| !v.is_finite()) {
+            return Err(StateError::NotFinite {
+                parameter: "GL_TEXTURE matrix",
+                value: v,
+                valid: "finite components",
+            });
+        }
+        Ok(())
+    }
+}
+
+/// `GL_TEXTURE_MAG_FILTER`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum MagFilter {
+    /// `GL_NEAREST`: the texel whose square holds (u, v).
+    Nearest,
+    /// `GL_LINEAR` (GL's default): the 2×2 texels around (u, v), weighted.
+    #[default]
+    Linear,
+}
+
+/// `GL_TEXTURE_MIN_FILTER`: the filter within a level and, for the `*_MIPMAP_*` ones, how
+/// levels are chosen.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum MinFilter {
+    /// `GL_NEAREST`, level 0 only.
+    Nearest,
+    /// `GL_LINEAR`, level 0 only.
+    Linear,
+    /// `GL_NEAREST_MIPMAP_NEAREST`.
+    NearestMipmapNearest,
+    /// `GL_LINEAR_MIPMAP_NEAREST`.
+    LinearMipmapNearest,
+    /// `GL_NEAREST_MIPMAP_LINEAR` (GL's default, which needs mipmaps: a texture without them
+    /// is incomplete under it and textures nothing).
+    #[default]
+    NearestMipmapLinear,
+    /// `GL_LINEAR_MIPMAP_LINEAR` (trilinear).
+    LinearMipmapLinear,
+}
+
+impl MinFilter {
+    /// Every filter.
+    pub const ALL: [MinFilter; 6] = [
+        MinFilter::Nearest,
+        MinFilter::Linear,
+        MinFilter::NearestMipmapNearest,
+        MinFilter::LinearMipmapNearest,
+        MinFilter::NearestMipmapLinear,
+        MinFilter::LinearMipmapLinear,
+    ];
+
+    /// Lowercase name as scene files write it (`nearest_mipmap_linear`, …).
+    pub fn name(self) -> &'static str {
+        match self {
+            MinFilter::Nearest => "nearest",
+            MinFilter::Linear => "linear",
+            MinFilter::NearestMipmapNearest => "nearest_mipmap_nearest",
+            MinFilter::LinearMipmapNearest => "linear_mipmap_nearest",
+            MinFilter::NearestMipmapLinear => "nearest_mipmap_linear",
+            MinFilter::LinearMipmapLinear => "linear_mipmap_linear",
+        }
+    }
+
+    /// Whether it reads levels past 0 (and so needs a complete mipmap chain).
+    pub fn uses_mipmaps(self) -> bool {
+        !matches!(self, MinFilter::Nearest | MinFilter::Linear)
+    }
+
+    /// The filter within one level: linear or nearest.
+    pub fn within_level(self) -> MagFilter {
+        match self {
+            MinFilter::Nearest | MinFilter::NearestMipmapNearest | MinFilter::NearestMipmapLinear => {
+                MagFilter::Nearest
+            }
+            _ => MagFilter::Linear,
+        }
+    }
+
+    /// Whether the two nearest levels are blended (`*_MIPMAP_LINEAR`).
+    pub fn between_levels_linear(self) -> bool {
+        matches!(
+            self,
+            MinFilter::NearestMipmapLinear | MinFilter::LinearMipmapLinear
+        )
+    }
+}
+
+impl MagFilter {
+    /// Lowercase name as scene files write it.
+    pub fn name(self) -> &'static str {
+        match self {
+            MagFilter::Nearest => "nearest",
+            MagFilter::Linear => "linear",
+        }
+    }
+}
+
+/// `GL_TEXTURE_WRAP_S` / `GL_TEXTURE_WRAP_T`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[non_exhaustive]
+pub enum Wrap {
+    /// `GL_REPEAT` (GL's default): the fractional part.
+    #[default]
+    Repeat,
+    /// `GL_CLAMP_TO_EDGE`: never past the edge texels' centers.
+    ClampToEdge,
+    /// `GL_MIRRORED_REPEAT`: every other repeat mirrored.
+    MirroredRepeat,
+}
+
+impl Wrap {
+    /// Every mode.
+    pub const ALL: [Wrap; 3] = [Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat];
+
+    /// Lowercase name as scene files write it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Wrap::Repeat => "repeat",
+            Wrap::ClampToEdge => "clamp_to_edge",
+            Wrap::MirroredRepeat => "mirrored_repeat",
+        }
+    }
+}
+
+/// A texture object's sampling parameters (glTexParameter), GL's defaults by `Default`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[non_exhaustive]
+pub struct Sampling {
+    /// `GL_TEXTURE_MIN_FILTER`; default `GL_NEAREST_MIPMAP_LINEAR`.
+    pub min_filter: MinFilter,
+    /// `GL_TEXTURE_MAG_FILTER`; default `GL_LINEAR`.
+    pub mag_filter: MagFilter,
+    /// `GL_TEXTURE_WRAP_S`; default `GL_REPEAT`.
+    pub wrap_s: Wrap,
+    /// `GL_TEXTURE_WRAP_T`; default `GL_REPEAT`.
+    pub wrap_t: Wrap,
+}
+
+with_fields!(Sampling {
+    /// Sets [`min_filter`](Sampling::min_filter) (`GL_TEXTURE_MIN_FILTER`).
+    with_min_filter => min_filter: MinFilter,
+    /// Sets [`mag_filter`](Sampling::mag_filter) (`GL_TEXTURE_MAG_FILTER`).
+    with_mag_filter => mag_filter: MagFilter,
+    /// Sets [`wrap_s`](Sampling::wrap_s) (`GL_TEXTURE_WRAP_S`).
+    with_wrap_s => wrap_s: Wrap,
+    /// Sets [`wrap_t`](Sampling::wrap_t) (`GL_TEXTURE_WRAP_T`).
+    with_wrap_t => wrap_t: Wrap,
+});
+
+impl Sampling {
+    /// Nearest filtering without mipmaps and repeat: every texel reaches the screen unblended
+    /// (what the exact tests use).
+    pub const NEAREST: Sampling = Sampling {
+        min_filter: MinFilter::Nearest,
+        mag_filter: MagFilter::Nearest,
+        wrap_s: Wrap::Repeat,
+        wrap_t: Wrap::Repeat,
+    };
+}
+
+/// Why a texture image cannot be made.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum TextureError {
+    /// A side of 0 or past the largest texture ffvk takes.
+    #[error("texture size {width}x{height} is invalid: expected each side in 1..={max}")]
+    Size {
+        /// Width in texels.
+        width: u32,
+        /// Height in texels.
+        height: u32,
+        /// [`MAX_TEXTURE_SIZE`].
+        max: u32,
+    },
+    /// The byte count is not width × height × 4.
+    #[error("{bytes} bytes of RGBA8 for a {width}x{height} texture: expected {expected}")]
+    Bytes {
+        /// Bytes given.
+        bytes: usize,
+        /// Width in texels.
+        width: u32,
+        /// Height in texels.
+        height: u32,
+        /// width × height × 4.
+        expected: usize,
+    },
+}
+
+/// The largest texture side ffvk takes (GL 2.1 asks for at least 64; Vulkan 1.3 devices
+/// offer at least 4096 for sampled images).
+pub const MAX_TEXTURE_SIZE: u32 = 4096;
+
+/// One level of an RGBA8 texture: rows in upload order, so row 0 is t = 0 (GL's
+/// glTexImage2D convention; an image file's first row, usually its top, lands at t = 0, as
+/// glTF's texture coordinates expect).
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Level {
+    /// Width in texels.
+    pub width: u32,
+    /// Height in texels.
+    pub height: u32,
+    /// `width * height * 4` bytes, R, G, B, A.
+    pub rgba: Vec<u8>,
+}
+
+impl Level {
+    /// The texel at (i, j) (column, row), as 0..=255 per channel.
+    pub fn texel(&self, i: u32, j: u32) -> [u8; 4] {
+        let at = (j as usize * self.width as usize + i as usize) * 4;
+        [
+            self.rgba[at],
+            self.rgba[at + 1],
+            self.rgba[at + 2],
+            self.rgba[at + 3],
+        ]
+    }
+}
+
+/// A 2D texture's image: `GL_RGBA8` (or `GL_SRGB8_ALPHA8` when `srgb`), level 0 and, when
+/// generated, its mipmaps.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct TextureImage {
+    /// Level 0 first; either one level or the whole chain down to 1×1.
+    pub levels: Vec<Level>,
+    /// GL 2.1's `GL_SRGB8_ALPHA8`: texels are decoded from sRGB to linear when sampled (alpha
+    /// stays linear). Off by default, as a legacy program's `GL_RGBA8`: a texel then reaches a
+    /// UNORM framebuffer unchanged under full white light.
+    pub srgb: bool,
+}
+
+impl TextureImage {
+    /// One level of RGBA8 texels, `width` × `height`, rows in upload order.
+    pub fn new(width: u32, height: u32, rgba: Vec<u8>) -> Result<Self, TextureError> {
+        if width == 0 || height == 0 || width > MAX_TEXTURE_SIZE || height > MAX_TEXTURE_SIZE {
+            return Err(TextureError::Size {
+                width,
+                height,
+                max: MAX_TEXTURE_SIZE,
+            });
+        }
+        let expected = width as usize * height as usize * 4;
+        if rgba.len() != expected {
+            return Err(TextureError::Bytes {
+                bytes: rgba.len(),
+                width,
+                height,
+                expected,
+            });
+        }
+        Ok(TextureImage {
+            levels: vec![Level { width, height, rgba }],
+            srgb: false,
+        })
+    }
+
+    /// A `cells` × `cells` checkerboard of `size`² texels, alternating `a` (at texel (0, 0))
+    /// and `b`.
+    pub fn checker(size: u32, cells: u32, a: [u8; 4], b: [u8; 4]) -> Result<Self, TextureError> {
+        let cell = (size / cells.max(1)).max(1);
+        let mut rgba = Vec::with_capacity(size as usize * size as usize * 4);
+        for j in 0..size {
+            for i in 0..size {
+                rgba.extend_from_slice(if (i / cell + j / cell) % 2 == 0 { &a } else { &b });
+            }
+        }
+        TextureImage::new(size, size, rgba)
+    }
+
+    /// Level 0's width.
+    pub fn width(&self) -> u32 {
+        self.levels[0].width
+    }
+
+    /// Level 0's height.
+    pub fn height(&self) -> u32 {
+        self.levels[0].height
+    }
+
+    /// Whether the levels run down to 1×1 (a complete mipmap chain).
+    pub fn has_mipmaps(&self) -> bool {
+        self.levels.len() == mip_count(self.width(), self.height()) as usize
+    }
+
+    /// GL_GENERATE_MIPMAP's result, computed here so every device samples the same levels:
+    /// each level halves each side (rounding down, never below 1), and each texel is the
+    /// rounded mean of the 2×2 texels it covers (1×2 or 2×1 where the level above is one
+    /// texel wide or high; odd sides drop their last row or column, as a box filter of GL's
+    /// floor(size / 2) rule). The channels are averaged as stored, sRGB or not.
+    pub fn with_mipmaps(mut self) -> Self {
+        self.levels.truncate(1);
+        while let Some(above) = self.levels.last().filter(|l| l.width > 1 || l.height > 1) {
+            let (w, h) = ((above.width / 2).max(1), (above.height / 2).max(1));
+            let (sx, sy) = (
+                if above.width > 1 { 2 } else { 1 },
+                if above.height > 1 { 2 } else { 1 },
+            );
+            let mut rgba = Vec::with_capacity(w as usize * h as usize * 4);
+            for j in 0..h {
+                for i in 0..w {
+                    for c in 0..4 {
+                        let mut sum = 0u32;
+                        for dy in 0..sy {
+                            for dx in 0..sx {
+                                sum += u32::from(above.texel(i * sx + dx, j * sy + dy)[c]);
+                            }
+                        }
+                        let n = sx * sy;
+                        rgba.push(((sum + n / 2) / n) as u8);
+                    }
+                }
+            }
+            self.levels.push(Level {
+                width: w,
+                height: h,
+                rgba,
+            });
+        }
+        self
+    }
+}
+
+/// The number of levels of a complete mipmap chain for a `width` × `height` level 0.
+pub fn mip_count(width: u32, height: u32) -> u32 {
+    32 - width.max(height).max(1).leading_zeros()
+}
+
+/// Whether texturing applies to a draw (section 3.8.10): `GL_TEXTURE_2D` enabled and a bound
+/// texture that is complete for its min filter (mipmaps present when the filter reads them).
+pub fn texturing_applies(unit: &TextureUnit, bound: Option<(&TextureImage, &Sampling)>) -> bool {
+    unit.enabled
+        && bound.is_some_and(|(image, sampling)| !sampling.min_filter.uses_mipmaps() || image.has_mipmaps())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_complete_chain_halves_down_to_one_texel() {
+        assert_eq!(mip_count(1, 1), 1);
+        assert_eq!(mip_count(8, 2), 4);
+        assert_eq!(mip_count(5, 3), 3);
+        let image = TextureImage::checker(8, 2, [255; 4], [0, 0, 0, 255])
+            .unwrap()
+            .with_mipmaps();
+        let sizes: Vec<_> = image.levels.iter().map(|l| (l.width, l.height)).collect();
+        assert_eq!(sizes, [(8, 8), (4, 4), (2, 2), (1, 1)]);
+        assert!(image.has_mipmaps());
+        // 2 cells of 4: level 2 is the cells themselves, level 3 their rounded mean.
+        assert_eq!(image.levels[2].texel(0, 0), [255; 4]);
+        assert_eq!(image.levels[2].texel(1, 0), [0, 0, 0, 255]);
+        assert_eq!(image.levels[3].texel(0, 0), [128, 128, 128, 255]);
+    }
+
+    #[test]
+    fn a_one_texel_wide_level_averages_pairs() {
+        let image = TextureImage::new(
+            1,
+            4,
+            [0, 10, 20, 30].iter().flat_map(|&v| [v, v, v, 255]).collect(),
+        )
+        .unwrap()
+        .with_mipmaps();
+        assert_eq!(image.levels[1].texel(0, 0)[0], 5);
+        assert_eq!(image.levels[1].texel(0, 1)[0], 25);
+        assert_eq!(image.levels[2].texel(0, 0)[0], 15);
+    }
+
+    #[test]
+    fn texturing_needs_a_texture_complete_for_its_min_filter() {
+        let unit = TextureUnit {
+            enabled: true,
+            ..TextureUnit::default()
+        };
+        let image = TextureImage::checker(4, 2, [255; 4], [0; 4]).unwrap();
+        // GL's default min filter reads mipmaps: without them the texture is incomplete.
+        assert!(!texturing_applies(&unit, Some((&image, &Sampling::default()))));
+        assert!(texturing_applies(&unit, Some((&image, &Sampling::NEAREST))));
+        assert!(texturing_applies(
+            &unit,
+            Some((&image.clone().with_mipmaps(), &Sampling::default()))
+        ));
+        assert!(!texturing_applies(&unit, None));
+        assert!(!texturing_applies(
+            &TextureUnit::default(),
+            Some((&image, &Sampling::NEAREST))
+        ));
+    }
+
+    #[test]
+    fn bad_sizes_and_byte_counts_are_errors_naming_the_values() {
+        let e = TextureImage::new(0, 4, vec![]).unwrap_err().to_string();
+        assert!(e.contains("0x4") && e.contains("4096"), "{e}");
+        let e = TextureImage::new(2, 2, vec![0; 15]).unwrap_err().to_string();
+        assert!(e.contains("15 bytes") && e.contains("expected 16"), "{e}");
+        let bad = TextureUnit {
+            env_color: Vec4::new(0.0, 2.0, 0.0, 0.0),
+            ..TextureUnit::default()
+        };
+        assert!(bad
+            .validate()
+            .unwrap_err()
+            .to_string()
+            .contains("GL_TEXTURE_ENV_COLOR = 2"));
+    }
+}

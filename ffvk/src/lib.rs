@@ -1,0 +1,86 @@
+//! ffvk: the OpenGL 2.1 fixed-function lighting equation, verbatim, on Vulkan.
+//!
+//! The core (always built) follows the data: GL state ([`gl`]) → its GPU layout and the
+//! SPIR-V of the shaders ([`gpu`]) → pipelines and draw recording ([`draw`]) over an owned
+//! Vulkan layer ([`vk`]) → the offscreen renderer ([`renderer`]); beside them the CPU
+//! reference of the same equation ([`reference`](mod@reference)) and host meshes ([`mesh`]).
+//! It depends on ash, glam, bytemuck and thiserror only, never prints, reads arguments or sets
+//! environment variables.
+//!
+//! # Two ways in
+//!
+//! - [`Renderer`] opens its own device and draws [`Frame`]s offscreen into images: what the
+//!   tools, the tests and regression renders use.
+//! - [`Lighting`] records GL's lighting into a caller's own device, command buffers and
+//!   render targets ([`vk::Device::from_caller`]); see its module, [`draw::lighting`], for
+//!   what it owns and records, and `examples/embed.rs` (in the repository) for a complete
+//!   program with plain `ash`. [`Renderer`] is built on it.
+//!
+//! Renderers that build their own pipelines take the pieces: the SPIR-V ([`gpu::shaders`]),
+//! the uniform block's layout and the specialization constants ([`gpu::layout`]).
+//!
+//! Features add the rest: `images` (PNG files and image comparison), `scene` (TOML scene files
+//! and glTF), `tools` (what the `ffvk` command runs: bench, demo, explain, regression runs,
+//! and fixed-function OpenGL through EGL, loaded at run time, as a reference renderer; on by
+//! default).
+
+/// `with_*` methods for a `#[non_exhaustive]` options struct: callers outside the crate cannot
+/// write its literal, so they start from its constructor or `Default` and chain these, and a
+/// field added later breaks nobody.
+macro_rules! with_fields {
+    ($ty:ident $(<$lt:lifetime>)? { $( $(#[$doc:meta])* $method:ident => $field:ident : $t:ty ),* $(,)? }) => {
+        impl $(<$lt>)? $ty $(<$lt>)? {
+            $(
+                $(#[$doc])*
+                #[must_use]
+                pub fn $method(mut self, value: $t) -> Self {
+                    self.$field = value;
+                    self
+                }
+            )*
+        }
+    };
+}
+
+#[warn(missing_docs)]
+pub mod alloc;
+#[warn(missing_docs)]
+pub mod draw;
+#[warn(missing_docs)]
+pub mod error;
+#[cfg(feature = "images")]
+pub mod files;
+#[warn(missing_docs)]
+pub mod gl;
+#[warn(missing_docs)]
+pub mod gpu;
+#[cfg(feature = "images")]
+pub mod images;
+#[warn(missing_docs)]
+pub mod mesh;
+#[warn(missing_docs)]
+pub mod reference;
+#[warn(missing_docs)]
+pub mod renderer;
+#[cfg(feature = "scene")]
+pub mod scene;
+#[warn(missing_docs)]
+pub mod vk;
+
+/// The `ash` ffvk is built with: its Vulkan types are part of ffvk's API ([`Target`],
+/// [`VertexInput`], [`LitDraw`] take `ash::vk` handles and formats), so a caller's handles must
+/// come from this very version. Use `ffvk::ash` (or pin the same version) to be sure.
+pub use ash;
+/// The `glam` ffvk is built with: matrices and colors ([`Mat4`](glam::Mat4),
+/// [`Vec4`](glam::Vec4), the reference's `DVec`s) are `glam` types in ffvk's API, so a caller's
+/// must come from this very version. Use `ffvk::glam` (or pin the same version) to be sure.
+pub use glam;
+
+pub use draw::lighting::{Lighting, LightingOptions, LitDraw};
+pub use draw::pipeline::{Attribute, Blend, RasterState, Specialize, Target, VertexInput};
+pub use draw::record::Geometry;
+pub use draw::texture::TextureBinding;
+pub use error::{Error, LightingError, MeshError, Result, UnknownName};
+pub use renderer::{
+    Draw, Frame, FrameStats, Mesh, PipelineStats, Pixels, Renderer, RendererOptions, Texture, Upload,
+};

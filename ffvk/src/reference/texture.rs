@@ -1,0 +1,262 @@
+//! Texturing in the CPU reference (GL 2.1 sections 3.8.8 and 3.13), written from the spec
+//! pages: texture coordinates through the texture matrix, the level of detail λ from their
+//! screen-space derivatives, wrapping, nearest and linear filtering within a level and between
+//! levels, and the texture environment of table 3.22. `glsl/texture.glsl` is the GPU's copy of
+//! the environment; sampling there is the device's.
+
+use glam::{DVec2, DVec3, DVec4};
+
+use crate::gl::texture::{MagFilter, Sampling, TexEnvMode, TextureImage, TextureUnit, Wrap};
+
+/// What texturing did at one fragment (what `ffvk explain` prints).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub struct Textured {
+    /// (s/q, t/q) after the texture matrix.
+    pub st: DVec2,
+    /// The level of detail λ = log2 ρ (−∞ where the coordinates do not change on screen).
+    pub lambda: f64,
+    /// The filtered texel C_s, A_s, each channel in [0, 1].
+    pub texel: DVec4,
+    /// The environment's result C_v, A_v (before the secondary color is added).
+    pub env: DVec4,
+}
+
+/// Table 3.22 for an RGBA texture: the fragment color `c_f` (the primary color) combined with
+/// the texel `c_s` in `mode`, `c_c` the environment color. Every result is in [0, 1] (ADD
+/// clamps).
+pub fn tex_env(mode: TexEnvMode, c_f: DVec4, c_s: DVec4, c_c: DVec4) -> DVec4 {
+    let (cf, cs, cc) = (c_f.truncate(), c_s.truncate(), c_c.truncate());
+    let (af, a_s) = (c_f.w, c_s.w);
+    match mode {
+        TexEnvMode::Replace => c_s,
+        TexEnvMode::Modulate => (cf * cs).extend(af * a_s),
+        TexEnvMode::Decal => (cf * (1.0 - a_s) + cs * a_s).extend(af),
+        TexEnvMode::Blend => (cf * (DVec3::ONE - cs) + cc * cs).extend(af * a_s),
+        TexEnvMode::Add => (cf + cs).clamp(DVec3::ZERO, DVec3::ONE).extend(af * a_s),
+    }
+}
+
+/// A texture coordinate (s, t) through the texture matrix, divided by q.
+pub fn transform_st(unit: &TextureUnit, st: [f32; 2]) -> DVec4 {
+    unit.matrix.as_dmat4() * DVec4::new(st[0] as f64, st[1] as f64, 0.0, 1.0)
+}
+
+/// (s, t, r, q) → (s/q, t/q).
+pub fn project(stq: DVec4) -> DVec2 {
+    DVec2::new(stq.x / stq.w, stq.y / stq.w)
+}
+
+/// λ from the derivatives of (s, t) along window x and y (GL's ρ: the larger of the two
+/// lengths of (∂u/∂x, ∂v/∂x) and (∂u/∂y, ∂v/∂y) in texels of level 0).
+pub fn lambda(image: &TextureImage, d_dx: DVec2, d_dy: DVec2) -> f64 {
+    let size = DVec2::new(image.width() as f64, image.height() as f64);
+    let rho = (d_dx * size).length().max((d_dy * size).length());
+    rho.log2()
+}
+
+/// A texel coordinate wrapped into 0..size (Vulkan's and GL 4's integer form of the wrap
+/// modes, which GL 2.1's clamped coordinates agree with).
+pub fn wrap_index(i: i64, size: u32, wrap: Wrap) -> u32 {
+    let n = i64::from(size);
+    let w = match wrap {
+        Wrap::Repeat => i.rem_euclid(n),
+        Wrap::ClampToEdge => i.clamp(0, n - 1),
+        Wrap::MirroredRepeat => {
+            let m = i.rem_euclid(2 * n) - n;
+            let mirror = if m >= 0 { m } else { -(1 + m) };
+            (n - 1) - mirror
+        }
+    };
+    w as u32
+}
+
+/// One texel as [0, 1] floats, decoded from sRGB when the image is.
+fn fetch(image: &TextureImage, level: usize, i: u32, j: u32) -> DVec4 {
+    let raw = image.levels[level].texel(i, j);
+    let c = DVec4::from(raw.map(|v| f64::from(v) / 255.0));
+    if image.srgb {
+        let decode = |v: f64| {
+            if v <= 0.04045 {
+                v / 12.92
+            } else {
+                ((v + 0.055) / 1.055).powf(2.4)
+            }
+        };
+        DVec4::new(decode(c.x), decode(c.y), decode(c.z), c.w)
+    } else {
+        c
+    }
+}
+
+/// Samples one level at (s, t) with `filter`.
+pub fn sample_level(
+    image: &TextureImage,
+    level: usize,
+    st: DVec2,
+    filter: MagFilter,
+    sampling: &Sampling,
+) -> DVec4 {
+    let l = &image.levels[level];
+    let (u, v) = (st.x * l.width as f64, st.y * l.height as f64);
+    match filter {
+        MagFilter::Nearest => {
+            let i = wrap_index(u.floor() as i64, l.width, sampling.wrap_s);
+            let j = wrap_index(v.floor() as i64, l.height, sampling.wrap_t);
+            fetch(image, level, i, j)
+        }
+        MagFilter::Linear => {
+            let (u, v) = (u - 0.5, v - 0.5);
+            let (i0, j0) = (u.floor() as i64, v.floor() as i64);
+            let (a, b) = (u - u.floor(), v - v.floor());
+            let i = [i0, i0 + 1].map(|i| wrap_index(i, l.width, sampling.wrap_s));
+            let j = [j0, j0 + 1].map(|j| wrap_index(j, l.height, sampling.wrap_t));
+            fetch(image, level, i[0], j[0]) * (1.0 - a) * (1.0 - b)
+                + fetch(image, level, i[1], j[0]) * a * (1.0 - b)
+                + fetch(image, level, i[0], j[1]) * (1.0 - a) * b
+                + fetch(image, level, i[1], j[1]) * a * b
+        }
+    }
+}
+
+/// The filtered texel at (s, t) with level of detail `lambda` (section 3.8.8): magnified
+/// (λ ≤ 0) with the mag filter, else minified with the min filter, choosing and blending
+/// levels as it says.
+pub fn sample(image: &TextureImage, sampling: &Sampling, st: DVec2, lambda: f64) -> DVec4 {
+    if lambda <= 0.0 || lambda.is_nan() {
+        return sample_level(image, 0, st, sampling.mag_filter, sampling);
+    }
+    let min = sampling.min_filter;
+    let within = min.within_level();
+    if !min.uses_mipmaps() {
+        return sample_level(image, 0, st, within, sampling);
+    }
+    let q = (image.levels.len() - 1) as f64;
+    if min.between_levels_linear() {
+        let d1 = lambda.floor().min(q);
+        let d2 = (d1 + 1.0).min(q);
+        let frac = if lambda >= q { 0.0 } else { lambda - lambda.floor() };
+        sample_level(image, d1 as usize, st, within, sampling) * (1.0 - frac)
+            + sample_level(image, d2 as usize, st, within, sampling) * frac
+    } else {
+        let d = if lambda <= 0.5 {
+            0.0
+        } else {
+            ((lambda + 0.5).ceil() - 1.0).min(q)
+        };
+        sample_level(image, d as usize, st, within, sampling)
+    }
+}
+
+/// Texturing at one fragment: `stq` the interpolated (s, t, r, q) after the texture matrix,
+/// `stq_dx` and `stq_dy` the same one pixel to the right and one below (for λ), `c_pri` the
+/// fragment's primary color.
+pub fn texture_fragment(
+    unit: &TextureUnit,
+    image: &TextureImage,
+    sampling: &Sampling,
+    stq: [DVec4; 3],
+    c_pri: DVec4,
+) -> Textured {
+    let [st, st_dx, st_dy] = stq.map(project);
+    let lambda = lambda(image, st_dx - st, st_dy - st);
+    let texel = sample(image, sampling, st, lambda);
+    let env = tex_env(unit.env_mode, c_pri, texel, unit.env_color.as_dvec4());
+    Textured {
+        st,
+        lambda,
+        texel,
+        env,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gl::texture::MinFilter;
+
+    fn c(r: f64, g: f64, b: f64, a: f64) -> DVec4 {
+        DVec4::new(r, g, b, a)
+    }
+
+    #[test]
+    fn table_3_22_for_rgba_textures() {
+        let (f, s, cc) = (
+            c(0.5, 0.25, 1.0, 0.8),
+            c(0.5, 1.0, 0.0, 0.25),
+            c(1.0, 0.0, 0.5, 1.0),
+        );
+        assert_eq!(tex_env(TexEnvMode::Replace, f, s, cc), s);
+        assert_eq!(tex_env(TexEnvMode::Modulate, f, s, cc), c(0.25, 0.25, 0.0, 0.2));
+        // Decal: C_f (1 − A_s) + C_s A_s, alpha A_f.
+        assert_eq!(tex_env(TexEnvMode::Decal, f, s, cc), c(0.5, 0.4375, 0.75, 0.8));
+        // Blend: C_f (1 − C_s) + C_c C_s, alpha A_f A_s.
+        assert_eq!(tex_env(TexEnvMode::Blend, f, s, cc), c(0.75, 0.0, 1.0, 0.2));
+        // Add clamps.
+        assert_eq!(tex_env(TexEnvMode::Add, f, s, cc), c(1.0, 1.0, 1.0, 0.2));
+    }
+
+    #[test]
+    fn wrap_modes_fold_texel_indices() {
+        let idx = |w| (-5..9).map(|i| wrap_index(i, 4, w)).collect::<Vec<_>>();
+        assert_eq!(idx(Wrap::Repeat), [3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0]);
+        assert_eq!(idx(Wrap::ClampToEdge), [0, 0, 0, 0, 0, 0, 1, 2, 3, 3, 3, 3, 3, 3]);
+        assert_eq!(
+            idx(Wrap::MirroredRepeat),
+            [3, 3, 2, 1, 0, 0, 1, 2, 3, 3, 2, 1, 0, 0]
+        );
+    }
+
+    #[test]
+    fn linear_filtering_weighs_the_four_nearest_texels() {
+        // A 2x1 texture, black then white: halfway between the texel centers is grey.
+        let image = TextureImage::new(2, 1, vec![0, 0, 0, 255, 255, 255, 255, 255]).unwrap();
+        let s = Sampling {
+            mag_filter: MagFilter::Linear,
+            wrap_s: Wrap::ClampToEdge,
+            ..Sampling::NEAREST
+        };
+        let mid = sample(&image, &s, DVec2::new(0.5, 0.5), -1.0);
+        assert!((mid.x - 0.5).abs() < 1e-12, "{mid}");
+        let at_center = sample(&image, &s, DVec2::new(0.25, 0.5), -1.0);
+        assert_eq!(at_center.x, 0.0);
+        // Nearest picks the texel whose square holds the point.
+        let n = sample(&image, &Sampling::NEAREST, DVec2::new(0.49, 0.5), -1.0);
+        assert_eq!(n.x, 0.0);
+    }
+
+    #[test]
+    fn minification_walks_the_mipmap_chain() {
+        let image = TextureImage::checker(8, 8, [255; 4], [0, 0, 0, 255])
+            .unwrap()
+            .with_mipmaps();
+        let s = Sampling {
+            min_filter: MinFilter::NearestMipmapNearest,
+            ..Sampling::NEAREST
+        };
+        // λ = 3: the 1x1 level, the checker's mean.
+        let t = sample(&image, &s, DVec2::new(0.3, 0.3), 3.0);
+        assert!((t.x - 128.0 / 255.0).abs() < 1e-12, "{t}");
+        // λ = 0.4 ≤ 1/2: level 0 still.
+        assert_eq!(sample(&image, &s, DVec2::new(0.01, 0.01), 0.4).x, 1.0);
+        let lin = Sampling {
+            min_filter: MinFilter::NearestMipmapLinear,
+            ..Sampling::NEAREST
+        };
+        // λ = 2.5 blends levels 2 (a 2x2 checker of 4x4 cells... here all 1-texel cells, so
+        // level 1 onward are grey) equally.
+        let t = sample(&image, &lin, DVec2::new(0.3, 0.3), 2.5);
+        assert!((t.x - 128.0 / 255.0).abs() < 1e-12, "{t}");
+        assert_eq!(lambda(&image, DVec2::new(0.5, 0.0), DVec2::new(0.0, 0.25)), 2.0);
+    }
+
+    #[test]
+    fn srgb_textures_decode_rgb_but_not_alpha() {
+        let mut image = TextureImage::new(1, 1, vec![128, 0, 255, 128]).unwrap();
+        image.srgb = true;
+        let t = sample(&image, &Sampling::NEAREST, DVec2::ZERO, 0.0);
+        assert!((t.x - 0.2158605).abs() < 1e-6, "{t}");
+        assert_eq!((t.y, t.z), (0.0, 1.0));
+        assert!((t.w - 128.0 / 255.0).abs() < 1e-12);
+    }
+}

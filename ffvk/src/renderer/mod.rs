@@ -1,0 +1,693 @@
+//! The offscreen render path: one device, many frames, many scenes.
+
+use std::sync::Arc;
+
+use ash::vk;
+use glam::{Mat4, Vec4};
+
+use crate::draw::lighting::{Lighting, LightingOptions};
+use crate::draw::pipeline::{RasterState, Target, VertexInput};
+use crate::draw::pipeline::{Specialize, COLOR_FORMAT, DEPTH_FORMAT};
+use crate::draw::texture::sampler_info;
+use crate::error::{vk_error, Error, MeshError, Result};
+use crate::gl::state::{Face, LightingState};
+use crate::gl::texture::{Sampling, TextureImage};
+use crate::gpu::layout::DrawBlock;
+use crate::mesh::MeshData;
+use crate::vk::objects::{CommandPool, Fence, Sampler};
+use crate::vk::{
+    Buffer, Device, DeviceInfo, Image, Instance, MemoryUsage, MemoryUse, Validation, ValidationSink,
+};
+
+mod queries;
+mod record;
+mod texture;
+mod upload;
+use queries::Queries;
+pub use texture::Texture;
+pub use upload::Upload;
+use upload::{Part, Uploader};
+
+/// How to open a renderer.
+#[derive(Debug, Clone, Default)]
+#[non_exhaustive]
+pub struct RendererOptions {
+    /// A substring of the device name; `None` picks lavapipe ("llvmpipe") when present.
+    pub device: Option<String>,
+    /// Whether to load the validation layer (default: off). With it loaded, validation errors
+    /// fail [`Renderer::new`] or the frame that caused them with [`Error::Validation`].
+    pub validation: Validation,
+    /// Specialized pipelines per lighting state, or the uber-shader.
+    pub specialize: Specialize,
+    /// How meshes reach device-local memory (default: directly where the host can write it).
+    pub upload: Upload,
+}
+
+with_fields!(RendererOptions {
+    /// Sets [`device`](RendererOptions::device): a substring of the device's name.
+    with_device => device: Option<String>,
+    /// Sets [`validation`](RendererOptions::validation).
+    with_validation => validation: Validation,
+    /// Sets [`specialize`](RendererOptions::specialize).
+    with_specialize => specialize: Specialize,
+    /// Sets [`upload`](RendererOptions::upload).
+    with_upload => upload: Upload,
+});
+
+/// A mesh uploaded to the renderer's device. Drawing it with another renderer is an error.
+pub struct Mesh {
+    vertices: Buffer,
+    indices: Buffer,
+    index_count: u32,
+    vertex_count: u32,
+}
+
+impl Mesh {
+    /// Indices uploaded: three per triangle.
+    pub fn index_count(&self) -> u32 {
+        self.index_count
+    }
+    /// Vertices uploaded.
+    pub fn vertex_count(&self) -> u32 {
+        self.vertex_count
+    }
+}
+
+/// One draw: a mesh, its matrices (GL conventions) and the lighting state it captures.
+#[derive(Clone, Copy)]
+#[non_exhaustive]
+pub struct Draw<'a> {
+    /// Uploaded by the renderer that draws it, else [`MeshError::ForeignMesh`].
+    pub mesh: &'a Mesh,
+    /// Object to eye space. Eye space: viewer at the origin looking down -z, y up.
+    pub modelview: Mat4,
+    /// GL projection (clip z in [-w, w]); ffvk converts it to Vulkan's clip space.
+    pub projection: Mat4,
+    /// The lighting state, checked when the frame is drawn: a value GL would reject, a
+    /// singular modelview with lighting on, or an enabled positional light with all three
+    /// attenuations 0 fails the frame with [`Error::State`].
+    pub state: LightingState,
+    /// `GL_CULL_FACE` with `glCullFace(face)`: `None` (GL's default) draws both faces;
+    /// `Some(Face::Back)` drops the triangles that are clockwise on screen.
+    pub cull_face: Option<Face>,
+    /// The texture bound to `GL_TEXTURE_2D` (uploaded by the same renderer): sampled when
+    /// `state.texture.enabled` is on and the texture is complete. `None`: GL's texture 0,
+    /// which textures nothing.
+    pub texture: Option<&'a Texture>,
+}
+
+impl<'a> Draw<'a> {
+    /// A draw of `mesh` with both faces drawn (GL's default: culling off).
+    pub fn new(mesh: &'a Mesh, modelview: Mat4, projection: Mat4, state: LightingState) -> Self {
+        Draw {
+            mesh,
+            modelview,
+            projection,
+            state,
+            cull_face: None,
+            texture: None,
+        }
+    }
+
+    /// This draw with `glCullFace(face)` and `GL_CULL_FACE` on (`None`: off).
+    #[must_use]
+    pub fn with_cull_face(mut self, face: Option<Face>) -> Self {
+        self.cull_face = face;
+        self
+    }
+
+    /// This draw with `texture` bound to `GL_TEXTURE_2D` (`None`: texture object 0).
+    #[must_use]
+    pub fn with_texture(mut self, texture: Option<&'a Texture>) -> Self {
+        self.texture = texture;
+        self
+    }
+
+    /// Whether this draw samples its texture: bound, complete, and `GL_TEXTURE_2D` on.
+    pub fn textured(&self) -> bool {
+        self.state.texture.enabled && self.texture.is_some_and(Texture::is_complete)
+    }
+
+    /// The raster state of this draw in `frame`: GL's defaults, with the frame's depth test
+    /// and the draw's culling.
+    fn raster(&self, frame: &Frame) -> RasterState {
+        RasterState {
+            depth_test: frame.depth_test,
+            cull_mode: match self.cull_face {
+                None => vk::CullModeFlags::NONE,
+                Some(Face::Front) => vk::CullModeFlags::FRONT,
+                Some(Face::Back) => vk::CullModeFlags::BACK,
+                Some(Face::FrontAndBack) => vk::CullModeFlags::FRONT_AND_BACK,
+            },
+            ..RasterState::default()
+        }
+    }
+}
+
+/// One image: its size, clear color, depth test and draws, in order.
+#[derive(Clone)]
+#[non_exhaustive]
+pub struct Frame<'a> {
+    /// Width in pixels, 1..=the device's `maxImageDimension2D` (else [`Error::InvalidSize`]).
+    pub width: u32,
+    /// Height in pixels, same range as `width`.
+    pub height: u32,
+    /// RGBA the image is cleared to before the draws; stored as 8-bit UNORM, so components
+    /// are clamped to [0, 1]. [`Frame::new`] uses opaque black.
+    pub clear_color: Vec4,
+    /// GL_DEPTH_TEST with LESS against a depth buffer cleared to 1.
+    pub depth_test: bool,
+    /// Recorded in order; with `depth_test` off, later draws cover earlier ones.
+    pub draws: Vec<Draw<'a>>,
+}
+
+impl<'a> Frame<'a> {
+    /// An empty frame of `width` × `height` pixels, cleared to (0, 0, 0, 1), depth test on.
+    /// The size is checked only when the frame is drawn.
+    pub fn new(width: u32, height: u32) -> Self {
+        Frame {
+            width,
+            height,
+            clear_color: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            depth_test: true,
+            draws: Vec::new(),
+        }
+    }
+}
+
+/// What one measured frame cost, from queries around its rendering pass (clears and draws;
+/// not the readback copy).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[non_exhaustive]
+pub struct FrameStats {
+    /// Device time between the timestamp written before the rendering pass and the one
+    /// written after it, in nanoseconds; `None` when the queue has no timestamps.
+    pub gpu_ns: Option<f64>,
+    /// Host time from `vkQueueSubmit` to the fence, in nanoseconds (with the readback copy
+    /// when the frame has one).
+    pub wall_ns: f64,
+    /// The pipeline statistics of the rendering pass; `None` when the device lacks
+    /// `pipelineStatisticsQuery`.
+    pub pipeline: Option<PipelineStats>,
+    /// Host time spent recording the frame's draws ([`Lighting::draw`] for each: state packed
+    /// and written, pipeline found, binds and draw recorded), in nanoseconds. Pipelines are
+    /// made before recording starts, so this is the warm cost.
+    pub record_ns: f64,
+}
+
+/// The counters of one pipeline-statistics query, summed over every draw of the pass.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[non_exhaustive]
+pub struct PipelineStats {
+    /// Vertices the input assembler read (`INPUT_ASSEMBLY_VERTICES`).
+    pub input_assembly_vertices: u64,
+    /// Triangles it assembled (`INPUT_ASSEMBLY_PRIMITIVES`).
+    pub input_assembly_primitives: u64,
+    /// Vertex shader runs (`VERTEX_SHADER_INVOCATIONS`); may be fewer than the vertices read
+    /// where the implementation reuses results for repeated indices.
+    pub vertex_shader_invocations: u64,
+    /// Primitives that reached the clipping stage (`CLIPPING_INVOCATIONS`).
+    pub clipping_invocations: u64,
+    /// Primitives that left it (`CLIPPING_PRIMITIVES`).
+    pub clipping_primitives: u64,
+    /// Fragment shader runs (`FRAGMENT_SHADER_INVOCATIONS`): where per-fragment lighting
+    /// spends its time.
+    pub fragment_shader_invocations: u64,
+}
+
+/// The most frames [`Renderer::measure_frames`] records in one submission.
+pub const MAX_REPEAT: u32 = 4096;
+
+/// What one submission records besides the rendering pass.
+#[derive(Debug, Clone, Copy)]
+struct Pass {
+    /// Copy the color image to the readback buffer after the last pass.
+    readback: bool,
+    /// Write a timestamp before the first pass and after each.
+    timestamps: bool,
+    /// Count the pipeline statistics of the (only) pass.
+    statistics: bool,
+    /// How many times the frame's pass is recorded: measured frames repeated in one
+    /// submission, so that submission and waiting stay outside what is measured.
+    repeat: u32,
+}
+
+impl Pass {
+    const RENDER: Pass = Pass {
+        readback: true,
+        timestamps: false,
+        statistics: false,
+        repeat: 1,
+    };
+}
+
+/// The render target of one size, reused while the size stays the same.
+struct Targets {
+    extent: vk::Extent2D,
+    color: Image,
+    depth: Image,
+    readback: Buffer,
+}
+
+/// An image read back from the renderer: RGBA8, rows top to bottom, no padding.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Pixels {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// `width * height * 4` bytes, R, G, B, A per pixel, row 0 at the top of the view.
+    pub rgba: Vec<u8>,
+}
+
+impl Pixels {
+    /// The RGBA value at (x, y), from the top-left corner; `None` outside the image.
+    pub fn pixel(&self, x: u32, y: u32) -> Option<[u8; 4]> {
+        if x >= self.width || y >= self.height {
+            return None;
+        }
+        let at = (y as usize * self.width as usize + x as usize) * 4;
+        self.rgba.get(at..at + 4).map(|p| [p[0], p[1], p[2], p[3]])
+    }
+}
+
+#[cfg(feature = "images")]
+impl Pixels {
+    /// The same pixels as an `image` crate buffer (feature `images`).
+    pub fn into_rgba_image(self) -> image::RgbaImage {
+        image::RgbaImage::from_raw(self.width, self.height, self.rgba)
+            .expect("Pixels holds width * height * 4 bytes")
+    }
+}
+
+#[cfg(feature = "images")]
+impl From<Pixels> for image::RgbaImage {
+    fn from(p: Pixels) -> Self {
+        p.into_rgba_image()
+    }
+}
+
+/// Draws frames offscreen and returns them as images. Owns its device; meshes hold it too.
+pub struct Renderer {
+    // Field order is drop order (after Drop waits for the device): everything that holds the
+    // device goes before `device`, the last Arc this renderer keeps.
+    targets: Option<Targets>,
+    /// The lighting pipelines and per-draw state memory (one frame slot: every frame is
+    /// waited for before the next).
+    lighting: Lighting,
+    commands: CommandPool,
+    fence: Fence,
+    /// Staging copies of meshes, behind a lock since uploads take `&self`.
+    uploader: std::sync::Mutex<Uploader>,
+    upload: Upload,
+    /// Timestamps and pipeline statistics, where the device has them.
+    queries: Queries,
+    /// Set when a submission failed: the renderer refuses further frames.
+    lost: bool,
+    device: Arc<Device>,
+}
+
+impl Renderer {
+    /// Opens the instance and device `options` asks for and creates what every frame needs.
+    pub fn new(options: &RendererOptions) -> Result<Self> {
+        let instance = Instance::new(options.validation)?;
+        let device = Device::new(instance, options.device.as_deref())?;
+        let lighting = Lighting::new(
+            &device,
+            &LightingOptions {
+                specialize: options.specialize,
+                ..LightingOptions::new(Target::OFFSCREEN, VertexInput::interleaved())
+            },
+        )?;
+        let commands = CommandPool::with_one_buffer(&device, device.own().queue_family)?;
+        let fence = Fence::new(&device)?;
+        let queries = Queries::new(&device)?;
+        let uploader = std::sync::Mutex::new(Uploader::new(&device)?);
+        let renderer = Renderer {
+            targets: None,
+            lighting,
+            commands,
+            fence,
+            uploader,
+            upload: options.upload,
+            queries,
+            lost: false,
+            device,
+        };
+        renderer.check_validation()?;
+        Ok(renderer)
+    }
+
+    /// The device this renderer opened: its name, driver, limits and optional features.
+    pub fn device_info(&self) -> &DeviceInfo {
+        self.device.info()
+    }
+
+    /// The validation messages of this renderer's instance. Messages reported while the
+    /// device is destroyed arrive after the renderer is dropped; keep a clone to read them.
+    pub fn validation_sink(&self) -> ValidationSink {
+        self.device.own().instance.validation_sink()
+    }
+
+    fn check_validation(&self) -> Result<()> {
+        let errors = self.validation_sink().take_errors();
+        if errors.is_empty() {
+            Ok(())
+        } else {
+            Err(Error::Validation(errors))
+        }
+    }
+
+    /// Uploads a triangle list. Fails when an index is past the vertices or the index count
+    /// is not a multiple of three.
+    pub fn upload(&self, mesh: &MeshData) -> Result<Mesh> {
+        if mesh.indices.len() % 3 != 0 {
+            return Err(MeshError::NotTriangles {
+                count: mesh.indices.len(),
+            }
+            .into());
+        }
+        let count = mesh.vertices.len();
+        if let Some((at, &bad)) = mesh
+            .indices
+            .iter()
+            .enumerate()
+            .find(|(_, &i)| i as usize >= count)
+        {
+            return Err(MeshError::IndexOutOfRange {
+                at,
+                index: bad,
+                vertex_count: count,
+            }
+            .into());
+        }
+        let parts = [
+            Part {
+                what: "vertex buffer",
+                bytes: bytemuck::cast_slice(&mesh.vertices),
+                usage: vk::BufferUsageFlags::VERTEX_BUFFER,
+                read_stage: vk::PipelineStageFlags2::VERTEX_ATTRIBUTE_INPUT,
+                read_access: vk::AccessFlags2::VERTEX_ATTRIBUTE_READ,
+            },
+            Part {
+                what: "index buffer",
+                bytes: bytemuck::cast_slice(&mesh.indices),
+                usage: vk::BufferUsageFlags::INDEX_BUFFER,
+                read_stage: vk::PipelineStageFlags2::INDEX_INPUT,
+                read_access: vk::AccessFlags2::INDEX_READ,
+            },
+        ];
+        let mut uploader = self
+            .uploader
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner());
+        let [vertices, indices]: [Buffer; 2] = uploader
+            .upload(&self.device, &parts, self.upload)?
+            .try_into()
+            .map_err(|_| ())
+            .expect("one buffer per part");
+        Ok(Mesh {
+            vertices,
+            indices,
+            index_count: mesh.indices.len() as u32,
+            vertex_count: count as u32,
+        })
+    }
+
+    /// Uploads a texture with its sampling parameters (glTexImage2D for every level, then
+    /// glTexParameter). A texture whose min filter reads mipmaps it lacks is made anyway, as in
+    /// GL, and draws with it are untextured ([`Texture::is_complete`]).
+    pub fn upload_texture(&self, image: &TextureImage, sampling: &Sampling) -> Result<Texture> {
+        let max = self.device.limits.max_image_dimension2_d;
+        let (width, height) = (image.width(), image.height());
+        if width > max || height > max {
+            return Err(Error::InvalidSize { width, height, max });
+        }
+        let levels = image.levels.len() as u32;
+        let gpu_image = Image::with_levels(
+            &self.device,
+            vk::Extent2D { width, height },
+            texture::format(image),
+            vk::ImageUsageFlags::SAMPLED | vk::ImageUsageFlags::TRANSFER_DST,
+            vk::ImageAspectFlags::COLOR,
+            levels,
+        )?;
+        self.uploader
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner())
+            .upload_image(&self.device, &gpu_image, &image.levels)?;
+        let sampler = Sampler::new(&self.device, &sampler_info(sampling, levels))?;
+        // SAFETY: the view and sampler are this device's and live in the Texture as long as
+        // the binding (dropped first); frames that draw it are waited for before it can drop
+        // (draw_frame waits, and the Texture is borrowed by the frame).
+        let binding = unsafe { self.lighting.bind_texture(gpu_image.view(), sampler.raw()) }?;
+        Ok(Texture::new(gpu_image, sampler, binding, image, sampling))
+    }
+
+    fn ensure_targets(&mut self, width: u32, height: u32) -> Result<()> {
+        let max = self.device.limits.max_image_dimension2_d;
+        if width == 0 || height == 0 || width > max || height > max {
+            return Err(Error::InvalidSize { width, height, max });
+        }
+        let extent = vk::Extent2D { width, height };
+        if self.targets.as_ref().is_some_and(|t| t.extent == extent) {
+            return Ok(());
+        }
+        self.targets = None;
+        let color = Image::new(
+            &self.device,
+            extent,
+            COLOR_FORMAT,
+            vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::TRANSFER_SRC,
+            vk::ImageAspectFlags::COLOR,
+        )?;
+        let depth = Image::new(
+            &self.device,
+            extent,
+            DEPTH_FORMAT,
+            vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT,
+            vk::ImageAspectFlags::DEPTH,
+        )?;
+        let readback = Buffer::new(
+            &self.device,
+            "readback buffer",
+            width as u64 * height as u64 * 4,
+            vk::BufferUsageFlags::TRANSFER_DST,
+            MemoryUse::Readback,
+        )?;
+        self.targets = Some(Targets {
+            extent,
+            color,
+            depth,
+            readback,
+        });
+        Ok(())
+    }
+
+    /// Draws `frame` and returns its pixels, row 0 at the top of the view.
+    pub fn render(&mut self, frame: &Frame) -> Result<Pixels> {
+        self.draw_frame(frame, Pass::RENDER)?;
+        self.read_image(frame)
+    }
+
+    /// [`Renderer::render`] with timestamps and a pipeline-statistics query around the
+    /// rendering pass.
+    pub fn render_measured(&mut self, frame: &Frame) -> Result<(Pixels, FrameStats)> {
+        let pass = Pass {
+            timestamps: true,
+            statistics: true,
+            ..Pass::RENDER
+        };
+        let stats = self.draw_frame(frame, pass)?.remove(0);
+        Ok((self.read_image(frame)?, stats))
+    }
+
+    /// Draws `frame` with the queries of [`Renderer::render_measured`] but without reading
+    /// the image back.
+    pub fn measure(&mut self, frame: &Frame) -> Result<FrameStats> {
+        let pass = Pass {
+            readback: false,
+            timestamps: true,
+            statistics: true,
+            repeat: 1,
+        };
+        Ok(self.draw_frame(frame, pass)?.remove(0))
+    }
+
+    /// Draws `frame` `count` times in one submission, with a timestamp
+    /// before the first and after each, and returns each one's [`FrameStats`]: the way to
+    /// time frames whose GPU work is short, since nothing but the frame itself (its layout
+    /// transitions, clears and draws) lies between two timestamps. No pipeline statistics
+    /// (they cost GPU time on some devices; [`Renderer::measure`] has them) and no readback;
+    /// `wall_ns` is the submission's host time divided by `count`. `count` is 1 to
+    /// [`MAX_REPEAT`], else [`Error::TooManyFrames`].
+    pub fn measure_frames(&mut self, frame: &Frame, count: u32) -> Result<Vec<FrameStats>> {
+        if count == 0 || count > MAX_REPEAT {
+            return Err(Error::TooManyFrames {
+                count,
+                max: MAX_REPEAT,
+            });
+        }
+        let pass = Pass {
+            readback: false,
+            timestamps: true,
+            statistics: false,
+            repeat: count,
+        };
+        self.draw_frame(frame, pass)
+    }
+
+    /// Uploads the uniforms, records, submits and waits; returns what the queries measured,
+    /// one entry per repeat of the pass.
+    fn draw_frame(&mut self, frame: &Frame, pass: Pass) -> Result<Vec<FrameStats>> {
+        if self.lost {
+            return Err(Error::DeviceLost(
+                "render (an earlier submission failed; make a new renderer)",
+            ));
+        }
+        for (i, d) in frame.draws.iter().enumerate() {
+            if !Arc::ptr_eq(d.mesh.vertices.device(), &self.device) {
+                return Err(MeshError::ForeignMesh { draw: i }.into());
+            }
+            if d.texture
+                .is_some_and(|t| !Arc::ptr_eq(t.image.device(), &self.device))
+            {
+                return Err(MeshError::ForeignTexture { draw: i }.into());
+            }
+        }
+        self.ensure_targets(frame.width, frame.height)?;
+        // Every state is checked and every pipeline made before recording starts, so that a
+        // bad draw records nothing and pipeline creation never lands inside a measured frame.
+        for d in &frame.draws {
+            DrawBlock::new(&d.state, d.modelview, d.projection)?;
+            self.lighting.prepare(&d.state, d.raster(frame), d.textured())?;
+        }
+        debug_assert!(
+            !pass.statistics || pass.repeat == 1,
+            "one statistics query per submission"
+        );
+        if pass.timestamps {
+            self.queries.ensure_timestamps(&self.device, pass.repeat + 1)?;
+        }
+        self.lighting.begin_frame(0)?;
+        let record_ns = self.record(frame, pass)?;
+        let wall_ns = self.submit_and_wait()? / f64::from(pass.repeat);
+        self.check_validation()?;
+        let gpu_ns = if pass.timestamps {
+            self.queries.read_timestamps(&self.device, pass.repeat + 1)?
+        } else {
+            None
+        };
+        let pipeline = if pass.statistics {
+            self.queries.read_statistics()?
+        } else {
+            None
+        };
+        Ok((0..pass.repeat as usize)
+            .map(|i| FrameStats {
+                gpu_ns: gpu_ns.as_ref().map(|ns| ns[i]),
+                wall_ns,
+                pipeline,
+                record_ns,
+            })
+            .collect())
+    }
+
+    /// The readback buffer as an image (after a frame recorded with `readback`).
+    fn read_image(&self, frame: &Frame) -> Result<Pixels> {
+        let targets = self.targets.as_ref().expect("ensure_targets made them");
+        let len = usize::try_from(u64::from(frame.width) * u64::from(frame.height) * 4)
+            .expect("ensure_targets bounded the size by the device's limit");
+        Ok(Pixels {
+            width: frame.width,
+            height: frame.height,
+            rgba: crate::alloc::try_copy(
+                &targets.readback.bytes().ok_or(Error::NotMapped)?[..len],
+                "the rendered image",
+            )?,
+        })
+    }
+
+    /// Creates the pipeline a draw of `state` would use in a frame with `depth_test`, so that
+    /// the frame does not pay for it; returns the host time that took, in nanoseconds (only a
+    /// lookup when the pipeline exists already). Drivers may still compile part of a new
+    /// pipeline at its first draw (lavapipe compiles fragment code then).
+    pub fn prepare(&mut self, state: &LightingState, depth_test: bool) -> Result<f64> {
+        let raster = RasterState {
+            depth_test,
+            ..RasterState::default()
+        };
+        let start = std::time::Instant::now();
+        self.lighting.prepare(state, raster, false)?;
+        Ok(start.elapsed().as_nanos() as f64)
+    }
+
+    /// The device this renderer opened, for what [`Renderer::device_info`] does not say (its
+    /// memory choices, say).
+    pub fn device(&self) -> &Device {
+        &self.device
+    }
+
+    /// How much device memory this renderer's device holds (meshes, render targets, uniforms)
+    /// and how much of it is in use.
+    pub fn memory_usage(&self) -> MemoryUsage {
+        self.device.memory_usage()
+    }
+
+    /// How many pipelines this renderer has created, and how many of them are specialized.
+    pub fn pipeline_counts(&self) -> (usize, usize) {
+        self.lighting.pipeline_counts()
+    }
+
+    /// Submits the command buffer and waits for it; returns the host time that took, in ns.
+    fn submit_and_wait(&mut self) -> Result<f64> {
+        let result = self.submit_and_wait_once();
+        if result.is_err() {
+            // The command buffer may still be pending and the fence signaled: nothing recorded
+            // later could be trusted, so wait for the device and refuse further frames.
+            let _ = self.device.wait_idle();
+            self.lost = true;
+        }
+        result
+    }
+
+    fn submit_and_wait_once(&self) -> Result<f64> {
+        let vkd = &self.device.raw;
+        let buffers = [self.commands.buffer()];
+        let submit = vk::SubmitInfo::default().command_buffers(&buffers);
+        let start = std::time::Instant::now();
+        // SAFETY: the command buffer is fully recorded; the fence is unsignaled (reset after
+        // every wait); &self plus the renderer's exclusive ownership of the queue serialize
+        // queue access.
+        unsafe {
+            vkd.queue_submit(self.device.own().queue, &[submit], self.fence.raw())
+                .map_err(vk_error("vkQueueSubmit"))?;
+            vkd.wait_for_fences(&[self.fence.raw()], true, u64::MAX)
+                .map_err(vk_error("vkWaitForFences"))?;
+        }
+        let wall_ns = start.elapsed().as_nanos() as f64;
+        // SAFETY: the fence was signaled and nothing else waits on it.
+        unsafe { vkd.reset_fences(&[self.fence.raw()]) }.map_err(vk_error("vkResetFences"))?;
+        Ok(wall_ns)
+    }
+}
+
+fn subresource(aspect: vk::ImageAspectFlags) -> vk::ImageSubresourceRange {
+    vk::ImageSubresourceRange {
+        aspect_mask: aspect,
+        base_mip_level: 0,
+        level_count: 1,
+        base_array_layer: 0,
+        layer_count: 1,
+    }
+}
+
+impl Drop for Renderer {
+    fn drop(&mut self) {
+        // Nothing the fields own may be in use when they are freed, right after this.
+        let _ = self.device.wait_idle();
+    }
+}

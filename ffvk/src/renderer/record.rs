@@ -1,0 +1,294 @@
+//! Recording a submission: a frame's rendering pass, once or repeated for measurement, with
+//! the queries a measurement asks for and the copy a readback needs.
+
+use ash::vk;
+
+use super::{subresource, Frame, Pass, Renderer, Targets};
+use crate::draw::lighting::{Lighting, LitDraw, Staged};
+use crate::draw::record::Geometry;
+use crate::error::{vk_error, Result};
+use crate::vk::objects::QueryPool;
+
+impl Renderer {
+    /// Records the submission `pass` describes; returns the host time the first pass's draws
+    /// took to record, in nanoseconds (the repeats only bind again what it wrote).
+    pub(super) fn record(&mut self, frame: &Frame, pass: Pass) -> Result<f64> {
+        let vkd = &self.device.raw;
+        let targets = self.targets.as_ref().expect("ensure_targets made them");
+        // SAFETY: the previous submission was waited for.
+        let cmd = unsafe { self.commands.begin_one_time() }?;
+        // A pool where the device has it and the pass asks for it.
+        let wanted = |pool: &Option<QueryPool>, on: bool| pool.as_ref().filter(|_| on).map(QueryPool::raw);
+        let timestamps = wanted(&self.queries.timestamps, pass.timestamps);
+        let statistics = wanted(&self.queries.statistics, pass.statistics);
+        if let Some(pool) = timestamps {
+            // SAFETY: recording outside any rendering pass; the pool has a query per repeat
+            // and one more (Queries::ensure_timestamps), all reset before they are written.
+            // On lavapipe a timestamp after any stage but TOP_OF_PIPE flushes the work before
+            // it, and its value is taken when the next flush runs: the barrier right after
+            // this one, before the pass starts.
+            unsafe {
+                vkd.cmd_reset_query_pool(cmd, pool, 0, pass.repeat + 1);
+                vkd.cmd_write_timestamp2(cmd, vk::PipelineStageFlags2::ALL_COMMANDS, pool, 0);
+            }
+        }
+        if let Some(pool) = statistics {
+            // SAFETY: outside any rendering pass; the pool has one query.
+            unsafe { vkd.cmd_reset_query_pool(cmd, pool, 0, 1) };
+        }
+        // The draws' uniforms are written once, by the first pass; the repeats bind them again.
+        let mut staged = Vec::new();
+        let mut record_ns = 0.0;
+        for i in 0..pass.repeat {
+            // SAFETY: the command buffer is recording, outside any pass; every handle belongs
+            // to this device and outlives the submission (the renderer waits for it).
+            let ns = unsafe {
+                record_pass(
+                    vkd,
+                    &mut self.lighting,
+                    &mut staged,
+                    targets,
+                    cmd,
+                    frame,
+                    statistics,
+                )
+            }?;
+            if i == 0 {
+                record_ns = ns;
+            }
+            if let Some(pool) = timestamps {
+                // After every command of the pass has completed (on lavapipe: a flush that
+                // waits for the rasterizer threads).
+                // SAFETY: as above; query i + 1 was reset with query 0.
+                unsafe { vkd.cmd_write_timestamp2(cmd, vk::PipelineStageFlags2::ALL_COMMANDS, pool, i + 1) };
+            }
+        }
+        if pass.readback {
+            // SAFETY: as above; the last pass left the color image in COLOR_ATTACHMENT_OPTIMAL.
+            unsafe { record_readback(vkd, targets, cmd) };
+        }
+        // SAFETY: as above; recording is complete.
+        unsafe { vkd.end_command_buffer(cmd) }.map_err(vk_error("vkEndCommandBuffer"))?;
+        Ok(record_ns)
+    }
+}
+
+/// Records one frame's rendering pass: the attachments' layouts, the clears and the draws,
+/// inside the statistics query when there is one. Stages the draws into `staged` when it is
+/// empty, else records what it holds. Returns the host time the draws took.
+///
+/// # Safety
+///
+/// `cmd` is a command buffer of `vkd` in the recording state, outside any pass; every handle
+/// belongs to that device and stays alive until the submission has finished; the lighting's
+/// frame slot 0 was begun after the last frame's fence.
+unsafe fn record_pass(
+    vkd: &ash::Device,
+    lighting: &mut Lighting,
+    staged: &mut Vec<Staged>,
+    targets: &Targets,
+    cmd: vk::CommandBuffer,
+    frame: &Frame,
+    statistics: Option<vk::QueryPool>,
+) -> Result<f64> {
+    let extent = targets.extent;
+    let color_range = subresource(vk::ImageAspectFlags::COLOR);
+    let depth_range = subresource(vk::ImageAspectFlags::DEPTH);
+    let to_attachment = [
+        vk::ImageMemoryBarrier2::default()
+            // After the last frame's readback copy or its rendering (a measured frame
+            // repeated in one submission).
+            .src_stage_mask(vk::PipelineStageFlags2::COPY | vk::PipelineStageFlags2::COLOR_ATTACHMENT_OUTPUT)
+            .src_access_mask(vk::AccessFlags2::TRANSFER_READ | vk::AccessFlags2::COLOR_ATTACHMENT_WRITE)
+            .dst_stage_mask(vk::PipelineStageFlags2::COLOR_ATTACHMENT_OUTPUT)
+            .dst_access_mask(vk::AccessFlags2::COLOR_ATTACHMENT_WRITE)
+            .old_layout(vk::ImageLayout::UNDEFINED)
+            .new_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
+            .image(targets.color.raw())
+            .subresource_range(color_range),
+        vk::ImageMemoryBarrier2::default()
+            // Early tests write depth too (the clear among them).
+            .src_stage_mask(
+                vk::PipelineStageFlags2::EARLY_FRAGMENT_TESTS | vk::PipelineStageFlags2::LATE_FRAGMENT_TESTS,
+            )
+            .src_access_mask(vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_WRITE)
+            .dst_stage_mask(
+                vk::PipelineStageFlags2::EARLY_FRAGMENT_TESTS | vk::PipelineStageFlags2::LATE_FRAGMENT_TESTS,
+            )
+            .dst_access_mask(
+                vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_READ
+                    | vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_WRITE,
+            )
+            .old_layout(vk::ImageLayout::UNDEFINED)
+            .new_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
+            .image(targets.depth.raw())
+            .subresource_range(depth_range),
+    ];
+    let c = frame.clear_color;
+    let color_attachments = [vk::RenderingAttachmentInfo::default()
+        .image_view(targets.color.view())
+        .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
+        .load_op(vk::AttachmentLoadOp::CLEAR)
+        .store_op(vk::AttachmentStoreOp::STORE)
+        .clear_value(vk::ClearValue {
+            color: vk::ClearColorValue {
+                float32: [c.x, c.y, c.z, c.w],
+            },
+        })];
+    let depth_attachment = vk::RenderingAttachmentInfo::default()
+        .image_view(targets.depth.view())
+        .image_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
+        .load_op(vk::AttachmentLoadOp::CLEAR)
+        .store_op(vk::AttachmentStoreOp::DONT_CARE)
+        .clear_value(vk::ClearValue {
+            depth_stencil: vk::ClearDepthStencilValue {
+                depth: 1.0,
+                stencil: 0,
+            },
+        });
+    let area = vk::Rect2D {
+        offset: vk::Offset2D { x: 0, y: 0 },
+        extent,
+    };
+    let rendering = vk::RenderingInfo::default()
+        .render_area(area)
+        .layer_count(1)
+        .color_attachments(&color_attachments)
+        .depth_attachment(&depth_attachment);
+    let viewport = vk::Viewport {
+        x: 0.0,
+        y: 0.0,
+        width: extent.width as f32,
+        height: extent.height as f32,
+        min_depth: 0.0,
+        max_depth: 1.0,
+    };
+
+    // SAFETY: recording into a command buffer in the recording state; every handle belongs
+    // to this device and outlives the submission (render waits for it). The same holds for
+    // the next blocks of this function.
+    unsafe {
+        vkd.cmd_pipeline_barrier2(
+            cmd,
+            &vk::DependencyInfo::default().image_memory_barriers(&to_attachment),
+        )
+    };
+    if let Some(pool) = statistics {
+        // SAFETY: as above; the query was reset before this, outside the pass.
+        unsafe { vkd.cmd_begin_query(cmd, pool, 0, vk::QueryControlFlags::empty()) };
+    }
+    // SAFETY: as above; the attachments are in the layouts the barrier set.
+    unsafe { vkd.cmd_begin_rendering(cmd, &rendering) };
+    // SAFETY: as above; viewport and scissor are dynamic in every pipeline.
+    unsafe {
+        vkd.cmd_set_viewport(cmd, 0, &[viewport]);
+        vkd.cmd_set_scissor(cmd, 0, &[area]);
+    }
+    let draws_start = std::time::Instant::now();
+    let first = staged.is_empty();
+    for (i, draw) in frame.draws.iter().enumerate() {
+        let mesh = draw.mesh;
+        let lit = LitDraw {
+            state: &draw.state,
+            modelview: draw.modelview,
+            projection: draw.projection,
+            raster: draw.raster(frame),
+            vertex_buffers: &[(mesh.vertices.raw(), 0)],
+            geometry: Geometry::Indexed {
+                buffer: mesh.indices.raw(),
+                offset: 0,
+                index_type: vk::IndexType::UINT32,
+                first_index: 0,
+                index_count: mesh.index_count,
+                vertex_offset: 0,
+            },
+            texture: draw.texture.filter(|_| draw.textured()).map(|t| &t.binding),
+        };
+        // Recording below is safe: inside the rendering pass begun above, whose formats are
+        // the Target::OFFSCREEN the lighting was made for, viewport and scissor set; the mesh
+        // buffers outlive the submission; slot 0 was begun after the last frame's fence.
+        if first {
+            staged.push(lighting.stage(0, &lit)?);
+        }
+        // SAFETY: as above; staged[i] was staged for this draw in this frame's slot.
+        unsafe { lighting.record_staged(cmd, &staged[i], &lit) };
+    }
+    let record_ns = draws_start.elapsed().as_nanos() as f64;
+    // SAFETY: as above; the pass begun above ends here.
+    unsafe { vkd.cmd_end_rendering(cmd) };
+    if let Some(pool) = statistics {
+        // SAFETY: as above; ends the query begun before the pass.
+        unsafe { vkd.cmd_end_query(cmd, pool, 0) };
+    }
+    Ok(record_ns)
+}
+
+/// Records the copy of the color image into the readback buffer, visible to the host after
+/// the fence.
+///
+/// # Safety
+///
+/// As [`record_pass`]; the color image is in `COLOR_ATTACHMENT_OPTIMAL` after a pass.
+unsafe fn record_readback(vkd: &ash::Device, targets: &Targets, cmd: vk::CommandBuffer) {
+    let extent = targets.extent;
+    let color_range = subresource(vk::ImageAspectFlags::COLOR);
+    let to_transfer = [vk::ImageMemoryBarrier2::default()
+        .src_stage_mask(vk::PipelineStageFlags2::COLOR_ATTACHMENT_OUTPUT)
+        .src_access_mask(vk::AccessFlags2::COLOR_ATTACHMENT_WRITE)
+        .dst_stage_mask(vk::PipelineStageFlags2::COPY)
+        .dst_access_mask(vk::AccessFlags2::TRANSFER_READ)
+        .old_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
+        .new_layout(vk::ImageLayout::TRANSFER_SRC_OPTIMAL)
+        .image(targets.color.raw())
+        .subresource_range(color_range)];
+    let region = vk::BufferImageCopy {
+        buffer_offset: 0,
+        buffer_row_length: 0,
+        buffer_image_height: 0,
+        image_subresource: vk::ImageSubresourceLayers {
+            aspect_mask: vk::ImageAspectFlags::COLOR,
+            mip_level: 0,
+            base_array_layer: 0,
+            layer_count: 1,
+        },
+        image_offset: vk::Offset3D { x: 0, y: 0, z: 0 },
+        image_extent: vk::Extent3D {
+            width: extent.width,
+            height: extent.height,
+            depth: 1,
+        },
+    };
+    let to_host = [vk::BufferMemoryBarrier2::default()
+        .src_stage_mask(vk::PipelineStageFlags2::COPY)
+        .src_access_mask(vk::AccessFlags2::TRANSFER_WRITE)
+        .dst_stage_mask(vk::PipelineStageFlags2::HOST)
+        .dst_access_mask(vk::AccessFlags2::HOST_READ)
+        .buffer(targets.readback.raw())
+        .offset(0)
+        .size(vk::WHOLE_SIZE)];
+    // SAFETY: the function's contract; moves the color image to TRANSFER_SRC_OPTIMAL after the pass.
+    unsafe {
+        vkd.cmd_pipeline_barrier2(
+            cmd,
+            &vk::DependencyInfo::default().image_memory_barriers(&to_transfer),
+        )
+    };
+    // SAFETY: as above; the image is in TRANSFER_SRC_OPTIMAL and the readback buffer holds
+    // width * height * 4 bytes.
+    unsafe {
+        vkd.cmd_copy_image_to_buffer(
+            cmd,
+            targets.color.raw(),
+            vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
+            targets.readback.raw(),
+            &[region],
+        )
+    };
+    // SAFETY: as above; makes the copy visible to the host read after the fence.
+    unsafe {
+        vkd.cmd_pipeline_barrier2(
+            cmd,
+            &vk::DependencyInfo::default().buffer_memory_barriers(&to_host),
+        )
+    };
+}

@@ -1,0 +1,471 @@
+//! A glTF file drawn without a scene file: the scene ffvk makes for it (its first camera or
+//! one framing its bounds, its punctual lights or a headlight, glTF's meaning), written as
+//! scene TOML so that `ffvk scene FILE` prints exactly what `ffvk render FILE` draws.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use glam::{Mat4, Vec3};
+
+use super::gltf::{CameraProjection, GltfLights, LoadError, Loaded, PlacedCamera, Textures};
+use super::meaning::world_bounds;
+use super::{shorten, Limits, MeshBudget, Scene, SceneError, SceneErrorKind, MAX_SIZE};
+
+/// Which camera a glTF file is drawn from.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+#[non_exhaustive]
+pub enum CameraChoice {
+    /// The file's first camera (in node order), else [`CameraChoice::Frame`].
+    #[default]
+    Auto,
+    /// A camera framing the scene's bounds, whatever the file holds.
+    Frame,
+    /// The file's camera with this name, or this index in `cameras`.
+    File(String),
+}
+
+/// Which lights a glTF file is drawn with.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[non_exhaustive]
+pub enum LightChoice {
+    /// The file's KHR_lights_punctual lights, else [`LightChoice::Headlight`].
+    #[default]
+    Auto,
+    /// The file's lights only (none: only emission and ambient light show).
+    File,
+    /// One white directional light shining from the camera, the file's lights left out.
+    Headlight,
+}
+
+/// How a glTF file drawn directly is set up; `Default` is what `ffvk render FILE.glb` does.
+#[derive(Debug, Clone, PartialEq, Default)]
+#[non_exhaustive]
+pub struct DirectOptions {
+    pub camera: CameraChoice,
+    pub lights: LightChoice,
+    /// How the file's lights are drawn when they are: GL's mapping (the default) or glTF's
+    /// own falloff and cones. [`GltfLights::Off`] leaves them out, as
+    /// [`LightChoice::Headlight`] does.
+    pub gltf_lights: GltfLights,
+    /// GL light color per lux or candela; `None` is "auto" (see
+    /// [`auto_exposure`](super::auto_exposure)).
+    pub exposure: Option<f32>,
+    /// The image size; `None`: 512 × 512, or 512 high with the camera's aspect ratio.
+    pub size: Option<(u32, u32)>,
+}
+
+with_fields!(DirectOptions {
+    /// Sets [`camera`](DirectOptions::camera).
+    with_camera => camera: CameraChoice,
+    /// Sets [`lights`](DirectOptions::lights).
+    with_lights => lights: LightChoice,
+    /// Sets [`gltf_lights`](DirectOptions::gltf_lights).
+    with_gltf_lights => gltf_lights: GltfLights,
+    /// Sets [`exposure`](DirectOptions::exposure).
+    with_exposure => exposure: Option<f32>,
+    /// Sets [`size`](DirectOptions::size).
+    with_size => size: Option<(u32, u32)>,
+});
+
+/// The scene made for a glTF file, the TOML that makes it, and what was chosen.
+#[derive(Debug, Clone)]
+#[non_exhaustive]
+pub struct DirectScene {
+    pub scene: Scene,
+    /// Scene TOML naming the glTF file as `gltf_ref` (see [`from_gltf`]).
+    pub toml: String,
+    /// One line per choice (camera, lights, glTF's meaning), for the user to see.
+    pub choices: Vec<String>,
+}
+
+/// The side of the image made for a camera without an aspect ratio.
+const SIDE: u32 = 512;
+/// The vertical field of view of the framing camera, in degrees.
+const FRAME_FOVY: f32 = 45.0;
+/// The direction the framing camera looks from, seen from the scene's center: glTF's front
+/// (+Z), raised and turned to the right a little, so that both the front and the top show.
+const FRAME_FROM: Vec3 = Vec3::new(0.45, 0.35, 1.0);
+
+/// The scene for the glTF file at `path` (see the module docs); the TOML names the file as
+/// `gltf_ref`, which must lead to it from wherever the TOML is to be kept.
+pub fn from_gltf(
+    path: &Path,
+    gltf_ref: &str,
+    limits: &Limits,
+    options: &DirectOptions,
+) -> Result<DirectScene, SceneError> {
+    let error = |kind| SceneError {
+        path: path.to_path_buf(),
+        kind,
+    };
+    let field = |field: &str, message: String| {
+        error(SceneErrorKind::Field {
+            field: field.to_owned(),
+            message,
+        })
+    };
+    let mut budget = MeshBudget::new(limits.mesh_bytes);
+    let loaded =
+        super::gltf::load_with(path, limits, &mut budget, Textures::Means).map_err(|e: LoadError| {
+            error(SceneErrorKind::Gltf {
+                field: "gltf".to_owned(),
+                source: Box::new(e),
+            })
+        })?;
+    let (lo, hi) = world_bounds(loaded.meshes.iter().map(|m| (&m.data, m.transform))).ok_or_else(|| {
+        field(
+            "meshes",
+            "no triangle meshes in the file's scene: expected something to draw".into(),
+        )
+    })?;
+    let (center, radius) = ((lo + hi) / 2.0, ((hi - lo).length() / 2.0).max(1e-6));
+
+    let mut choices = Vec::new();
+    let camera = match &options.camera {
+        CameraChoice::Frame => None,
+        CameraChoice::Auto => loaded.cameras.first(),
+        CameraChoice::File(want) => Some(find_camera(&loaded, want).map_err(|m| field("--camera", m))?),
+    };
+    let view = match camera {
+        Some(c) => {
+            choices.push(format!(
+                "camera: {:?} (camera {}) from the file",
+                shorten(&c.name),
+                c.index
+            ));
+            file_view(c, center, lo, hi, options.size)
+        }
+        None => {
+            choices.push(format!(
+                "camera: {}framing the scene's bounds (center {}, radius {}) from the front, right and above",
+                if loaded.cameras.is_empty() && options.camera == CameraChoice::Auto {
+                    "none in the file; "
+                } else {
+                    ""
+                },
+                fmt3(center),
+                radius
+            ));
+            frame_view(lo, hi, options.size)
+        }
+    };
+
+    let headlight = match (options.lights, options.gltf_lights) {
+        (LightChoice::Headlight, _) => true,
+        (LightChoice::File, _) => false,
+        (LightChoice::Auto, GltfLights::Off) => true,
+        (LightChoice::Auto, _) => loaded.lights.is_empty(),
+    };
+    let mapping = match (headlight, options.gltf_lights) {
+        (true, _) => GltfLights::Off,
+        (false, GltfLights::Off) => GltfLights::Off,
+        (false, m) => m,
+    };
+    let exposure = match options.exposure {
+        Some(x) => format!("{x}"),
+        None => "\"auto\"".to_owned(),
+    };
+    choices.push(if headlight {
+        format!(
+            "lights: {}one headlight (white at 0.75, directional, from the camera)",
+            if loaded.lights.is_empty() {
+                "none in the file; "
+            } else {
+                "the file's left out; "
+            }
+        )
+    } else if mapping == GltfLights::Off && !loaded.lights.is_empty() {
+        "lights: the file's left out (gltf_lights \"off\"), and no headlight asked for: only emission and ambient light show"
+            .to_owned()
+    } else if loaded.lights.is_empty() {
+        "lights: none in the file, and no headlight asked for: only emission and ambient light show"
+            .to_owned()
+    } else {
+        format!(
+            "lights: {} KHR_lights_punctual light{} from the file, gltf_lights = \"{}\", gltf_exposure = {exposure}",
+            loaded.lights.len(),
+            if loaded.lights.len() == 1 { "" } else { "s" },
+            mapping.name()
+        )
+    });
+    choices.push("glTF's meaning (gltf_defaults = true): see the README's \"glTF files\"".to_owned());
+
+    let toml = |gltf_ref: &str| scene_toml(path, gltf_ref, &view, headlight, mapping, &exposure, &choices);
+    let base = path.parent().unwrap_or(Path::new("."));
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .ok_or_else(|| field("gltf", format!("{}: expected a file name", path.display())))?;
+    let mut scene = Scene::parse_preloaded(&toml(&name), path, limits, budget, base.join(&name), loaded)?;
+    let mut notes = choices.clone();
+    notes.append(&mut scene.notes);
+    scene.notes = notes;
+    Ok(DirectScene {
+        scene,
+        toml: toml(gltf_ref),
+        choices,
+    })
+}
+
+/// `true` for the paths [`from_gltf`] reads: `.gltf` and `.glb` files.
+pub fn is_gltf(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("gltf") || e.eq_ignore_ascii_case("glb"))
+}
+
+/// A camera as scene TOML writes it: look-at, and a perspective or an explicit projection.
+struct View {
+    eye: Vec3,
+    target: Vec3,
+    up: Vec3,
+    size: (u32, u32),
+    projection: ViewProjection,
+}
+
+enum ViewProjection {
+    Perspective {
+        fovy: f32,
+        near: f32,
+        far: f32,
+    },
+    /// Column-major, for orthographic cameras.
+    Matrix(Mat4),
+}
+
+fn find_camera<'a>(loaded: &'a Loaded, want: &str) -> Result<&'a PlacedCamera, String> {
+    let by_index = want.parse::<usize>().ok();
+    loaded
+        .cameras
+        .iter()
+        .find(|c| Some(c.index) == by_index || c.name == want)
+        .ok_or_else(|| {
+            let have: Vec<String> = loaded
+                .cameras
+                .iter()
+                .map(|c| format!("{} ({:?})", c.index, shorten(&c.name)))
+                .collect();
+            format!(
+                "{:?} names no camera of the file's scene: expected {}",
+                shorten(want),
+                if have.is_empty() {
+                    "\"frame\" (the file has no cameras)".to_owned()
+                } else {
+                    format!("\"frame\" or one of {}", have.join(", "))
+                }
+            )
+        })
+}
+
+/// The size for an aspect ratio (width / height): 512 high, or 512 wide when taller than wide.
+fn size_for(aspect: f32) -> (u32, u32) {
+    let side = |x: f32| (x.round() as u32).clamp(1, MAX_SIZE);
+    if aspect >= 1.0 {
+        (side(SIDE as f32 * aspect), SIDE)
+    } else {
+        (SIDE, side(SIDE as f32 / aspect))
+    }
+}
+
+/// The file's camera: where its node puts it, its projection.
+fn file_view(c: &PlacedCamera, center: Vec3, lo: Vec3, hi: Vec3, size: Option<(u32, u32)>) -> View {
+    let (eye, forward, up) = (c.eye(), c.forward(), c.up());
+    let target = eye
+        + forward
+            * (center - eye)
+                .dot(forward)
+                .max((hi - lo).length() * 0.01)
+                .max(1e-6);
+    // The farthest corner of the bounds, for a far plane where the file gives none.
+    let farthest = corners(lo, hi)
+        .map(|p| (p - eye).dot(forward))
+        .into_iter()
+        .fold(0.0f32, f32::max);
+    match c.projection {
+        CameraProjection::Perspective {
+            yfov,
+            aspect_ratio,
+            znear,
+            zfar,
+        } => View {
+            eye,
+            target,
+            up,
+            size: size.unwrap_or_else(|| aspect_ratio.map_or((SIDE, SIDE), size_for)),
+            projection: ViewProjection::Perspective {
+                fovy: yfov.to_degrees(),
+                near: znear,
+                far: zfar.unwrap_or((farthest * 2.0).max(znear * 2.0)),
+            },
+        },
+        CameraProjection::Orthographic {
+            xmag,
+            ymag,
+            znear,
+            zfar,
+        } => {
+            let size = size.unwrap_or_else(|| size_for((xmag / ymag).abs()));
+            // glTF 2.0's orthographic matrix, for the image's own aspect ratio.
+            let aspect = size.0 as f32 / size.1 as f32;
+            let x = ymag.abs() * aspect;
+            View {
+                eye,
+                target,
+                up,
+                size,
+                projection: ViewProjection::Matrix(Mat4::orthographic_rh_gl(
+                    -x,
+                    x,
+                    -ymag.abs(),
+                    ymag.abs(),
+                    znear,
+                    zfar,
+                )),
+            }
+        }
+    }
+}
+
+fn corners(lo: Vec3, hi: Vec3) -> [Vec3; 8] {
+    std::array::from_fn(|i| {
+        Vec3::new(
+            if i & 1 == 0 { lo.x } else { hi.x },
+            if i & 2 == 0 { lo.y } else { hi.y },
+            if i & 4 == 0 { lo.z } else { hi.z },
+        )
+    })
+}
+
+/// A camera on [`FRAME_FROM`] from the bounds' center, as near as it can be with all eight
+/// corners of the bounds inside 90 % of the image's height and width.
+fn frame_view(lo: Vec3, hi: Vec3, size: Option<(u32, u32)>) -> View {
+    let size = size.unwrap_or((SIDE, SIDE));
+    let center = (lo + hi) / 2.0;
+    let back = FRAME_FROM.normalize();
+    let right = Vec3::Y.cross(back).normalize();
+    let up = back.cross(right);
+    let tan_y = (FRAME_FOVY.to_radians() / 2.0).tan() * 0.9;
+    let tan_x = tan_y * size.0 as f32 / size.1 as f32;
+    // Distance along `back` from the center so that each corner fits: depth d − z must be at
+    // least |x| / tan_x and |y| / tan_y.
+    let mut distance = 0.0f32;
+    let mut nearest = f32::INFINITY;
+    let mut farthest = 0.0f32;
+    let relative = corners(lo, hi).map(|p| p - center);
+    for p in relative {
+        let (x, y, z) = (p.dot(right), p.dot(up), p.dot(back));
+        distance = distance.max(z + x.abs() / tan_x).max(z + y.abs() / tan_y);
+    }
+    let radius = ((hi - lo).length() / 2.0).max(1e-6);
+    distance = distance.max(radius * 1e-3);
+    for p in relative {
+        let depth = distance - p.dot(back);
+        nearest = nearest.min(depth);
+        farthest = farthest.max(depth);
+    }
+    View {
+        eye: center + back * distance,
+        target: center,
+        up: Vec3::Y,
+        size,
+        projection: ViewProjection::Perspective {
+            fovy: FRAME_FOVY,
+            near: (nearest * 0.5).max(distance * 1e-4),
+            far: farthest * 2.0,
+        },
+    }
+}
+
+fn fmt3(v: Vec3) -> String {
+    format!("[{}, {}, {}]", v.x, v.y, v.z)
+}
+
+/// The scene TOML for `view` and the lights chosen.
+fn scene_toml(
+    path: &Path,
+    gltf_ref: &str,
+    view: &View,
+    headlight: bool,
+    mapping: GltfLights,
+    exposure: &str,
+    choices: &[String],
+) -> String {
+    let mut t = String::new();
+    let _ = writeln!(t, "# The scene ffvk draws for {} (ffvk scene).", path.display());
+    for c in choices {
+        let _ = writeln!(t, "# {c}");
+    }
+    let _ = writeln!(
+        t,
+        "gltf_defaults = true   # glTF's meaning: see the README's \"glTF files\""
+    );
+    let _ = writeln!(
+        t,
+        "gltf_lights = \"{}\"   # the file's lights: \"off\", \"gl\" (GL's light each) or \"exact\" (glTF's falloff and cones)",
+        mapping.name()
+    );
+    let _ = writeln!(
+        t,
+        "gltf_exposure = {exposure}   # GL light color per lux or candela, or \"auto\""
+    );
+    let _ = writeln!(
+        t,
+        "\n[image]\nsize = [{}, {}]\nclear_color = [0.2, 0.2, 0.2, 1.0]",
+        view.size.0, view.size.1
+    );
+    let _ = writeln!(
+        t,
+        "\n[camera]\neye = {}\ntarget = {}\nup = {}",
+        fmt3(view.eye),
+        fmt3(view.target),
+        fmt3(view.up)
+    );
+    match &view.projection {
+        ViewProjection::Perspective { fovy, near, far } => {
+            let _ = writeln!(t, "fovy = {fovy}\nnear = {near}\nfar = {far}");
+        }
+        ViewProjection::Matrix(m) => {
+            let cols: Vec<String> = m.to_cols_array().iter().map(|x| x.to_string()).collect();
+            let _ = writeln!(t, "projection = [{}]", cols.join(", "));
+        }
+    }
+    if headlight {
+        let toward = (view.eye - view.target).normalize_or(Vec3::Z);
+        let _ = writeln!(
+            t,
+            "\n[[lights]]   # the headlight\nposition = [{}, {}, {}, 0.0]\ndiffuse = [{k}, {k}, {k}]\nspecular = [{k}, {k}, {k}]",
+            toward.x,
+            toward.y,
+            toward.z,
+            k = super::meaning::KEY_LIGHT
+        );
+    }
+    let quoted = toml::Value::String(gltf_ref.to_owned()).to_string();
+    let _ = writeln!(t, "\n[[meshes]]\ngltf = {quoted}");
+    t
+}
+
+/// The path to write into a scene file at `scene_file` so that it leads to `gltf`: relative to
+/// the scene file's folder where both are below one folder, else absolute.
+pub fn relative_ref(gltf: &Path, scene_file: Option<&Path>) -> PathBuf {
+    let Some(scene_file) = scene_file else {
+        return gltf.to_path_buf();
+    };
+    let absolute = |p: &Path| std::path::absolute(p).unwrap_or_else(|_| p.to_path_buf());
+    let (target, from) = (
+        absolute(gltf),
+        absolute(scene_file.parent().unwrap_or(Path::new("."))),
+    );
+    let (t, f): (Vec<_>, Vec<_>) = (target.components().collect(), from.components().collect());
+    let common = t.iter().zip(&f).take_while(|(a, b)| a == b).count();
+    if common == 0 {
+        return target;
+    }
+    let mut out = PathBuf::new();
+    for _ in common..f.len() {
+        out.push("..");
+    }
+    for c in &t[common..] {
+        out.push(c);
+    }
+    out
+}

@@ -1,0 +1,932 @@
+//! Mesh primitives: their accessors checked and read, and turned into counter-clockwise
+//! triangle lists ([`MeshData`]) as documented on [`load`](super::load).
+
+use super::{Context, LoadError, LoadErrorKind};
+use crate::alloc::try_vec;
+use crate::mesh::{MeshData, Vertex};
+use crate::scene::MeshBudget;
+use glam::{Vec3, Vec4};
+use gltf::accessor::{DataType, Dimensions};
+use gltf::json::Value;
+use gltf::mesh::Mode;
+use gltf::Semantic;
+
+/// Checks in the raw JSON that every primitive names a POSITION accessor that exists, before
+/// the `gltf` crate's validator (which indexes the accessors with it unchecked) and for a
+/// better message than the validator's.
+pub(super) fn check_positions(cx: &Context) -> Result<(), LoadError> {
+    let raw = cx.raw;
+    if let Some(meshes) = raw.get("meshes").and_then(Value::as_array) {
+        for (m, mesh) in meshes.iter().enumerate() {
+            let primitives = mesh.get("primitives").and_then(Value::as_array);
+            for (p, primitive) in primitives.into_iter().flatten().enumerate() {
+                let Some(position) = primitive.get("attributes").and_then(|a| a.get("POSITION")) else {
+                    return Err(cx.error(LoadErrorKind::MissingAttribute {
+                        primitive: cx.primitive_label(m, p),
+                        attribute: "POSITION",
+                    }));
+                };
+                // The gltf crate's validator indexes the accessors with this unchecked.
+                let accessor_count = raw.get("accessors").and_then(Value::as_array).map_or(0, Vec::len);
+                if position.as_u64().is_none_or(|i| i >= accessor_count as u64) {
+                    return Err(cx.error(LoadErrorKind::PositionAccessor {
+                        primitive: cx.primitive_label(m, p),
+                        accessor: position.to_string(),
+                        accessor_count,
+                    }));
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+fn type_name(accessor: &gltf::Accessor) -> String {
+    let component = match accessor.data_type() {
+        DataType::I8 => "BYTE",
+        DataType::U8 => "UNSIGNED_BYTE",
+        DataType::I16 => "SHORT",
+        DataType::U16 => "UNSIGNED_SHORT",
+        DataType::U32 => "UNSIGNED_INT",
+        DataType::F32 => "FLOAT",
+    };
+    let dims = match accessor.dimensions() {
+        Dimensions::Scalar => "SCALAR",
+        Dimensions::Vec2 => "VEC2",
+        Dimensions::Vec3 => "VEC3",
+        Dimensions::Vec4 => "VEC4",
+        Dimensions::Mat2 => "MAT2",
+        Dimensions::Mat3 => "MAT3",
+        Dimensions::Mat4 => "MAT4",
+    };
+    format!("{component} {dims}")
+}
+
+/// Whether a primitive of `mode` is made of triangles (the others are skipped).
+pub(super) fn draws_triangles(mode: Mode) -> bool {
+    matches!(mode, Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan)
+}
+
+pub(super) fn mode_name(mode: Mode) -> &'static str {
+    match mode {
+        Mode::Points => "POINTS",
+        Mode::Lines => "LINES",
+        Mode::LineLoop => "LINE_LOOP",
+        Mode::LineStrip => "LINE_STRIP",
+        Mode::Triangles => "TRIANGLES",
+        Mode::TriangleStrip => "TRIANGLE_STRIP",
+        Mode::TriangleFan => "TRIANGLE_FAN",
+    }
+}
+
+/// Which elements of an accessor a bounds problem is about.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum AccessorPart {
+    /// The accessor's own elements.
+    Elements,
+    /// The indices of its sparse substitution.
+    SparseIndices,
+    /// The values of its sparse substitution.
+    SparseValues,
+}
+
+impl AccessorPart {
+    /// What a message about this part starts with (nothing for the elements themselves).
+    fn prefix(self) -> &'static str {
+        match self {
+            AccessorPart::Elements => "",
+            AccessorPart::SparseIndices => "sparse indices: ",
+            AccessorPart::SparseValues => "sparse values: ",
+        }
+    }
+}
+
+/// Why an accessor's data could not be read: it is not inside its buffer view and buffer,
+/// or the `gltf` crate's reader did not return it all.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum AccessorProblem {
+    /// An accessor with no elements.
+    #[error("count is 0: expected at least 1")]
+    Empty,
+
+    /// A buffer view whose byteStride is smaller than the element.
+    #[error(
+        "{}buffer view {view} has byteStride {stride}: expected at least {element} (the element size)",
+        .part.prefix()
+    )]
+    Stride {
+        part: AccessorPart,
+        view: usize,
+        stride: usize,
+        element: usize,
+    },
+
+    /// `count` elements of `element` bytes from byte `offset` that end past their buffer view.
+    #[error(
+        "{}{count} elements of {element} bytes from byte {offset} overrun buffer view {view} \
+         ({view_length} bytes)",
+        .part.prefix()
+    )]
+    ViewOverrun {
+        part: AccessorPart,
+        count: usize,
+        element: usize,
+        offset: usize,
+        view: usize,
+        view_length: usize,
+    },
+
+    /// A buffer view that ends past its buffer (which holds `available` bytes).
+    #[error(
+        "{}buffer view {view} (bytes {view_offset}..+{view_length}) overruns buffer {buffer} \
+         ({available} bytes)",
+        .part.prefix()
+    )]
+    BufferOverrun {
+        part: AccessorPart,
+        view: usize,
+        view_offset: usize,
+        view_length: usize,
+        buffer: usize,
+        available: usize,
+    },
+
+    /// A sparse substitution of none or of more elements than the accessor has.
+    #[error("sparse count is {sparse}: expected 1..={count} (the accessor count)")]
+    SparseCount { sparse: usize, count: usize },
+
+    /// Data the `gltf` crate's reader could not find (e.g. an accessor without a buffer view).
+    #[error("its data could not be read from its buffer view")]
+    Unreadable,
+
+    /// The reader stopped after `read` elements.
+    #[error("read {read} elements: expected {count} (its count)")]
+    ShortRead { read: usize, count: usize },
+}
+
+/// Checks that an accessor's elements lie inside its buffer view and buffer, so the `gltf`
+/// crate's reader neither panics nor silently stops short.
+fn check_accessor_bounds(
+    accessor: &gltf::Accessor,
+    buffers: &[gltf::buffer::Data],
+) -> Result<(), AccessorProblem> {
+    let count = accessor.count();
+    if count == 0 {
+        return Err(AccessorProblem::Empty);
+    }
+    let element = accessor.size();
+    let view_fits = |view: gltf::buffer::View, offset: usize, count: usize, element: usize, part| {
+        let stride = view.stride().unwrap_or(element);
+        if stride < element {
+            return Err(AccessorProblem::Stride {
+                part,
+                view: view.index(),
+                stride,
+                element,
+            });
+        }
+        let end = stride
+            .checked_mul(count - 1)
+            .and_then(|x| x.checked_add(offset))
+            .and_then(|x| x.checked_add(element));
+        match end {
+            Some(end) if end <= view.length() => {}
+            _ => {
+                return Err(AccessorProblem::ViewOverrun {
+                    part,
+                    count,
+                    element,
+                    offset,
+                    view: view.index(),
+                    view_length: view.length(),
+                })
+            }
+        }
+        let buffer = view.buffer().index();
+        let available = buffers.get(buffer).map_or(0, |b| b.len());
+        if view
+            .offset()
+            .checked_add(view.length())
+            .is_none_or(|end| end > available)
+        {
+            return Err(AccessorProblem::BufferOverrun {
+                part,
+                view: view.index(),
+                view_offset: view.offset(),
+                view_length: view.length(),
+                buffer,
+                available,
+            });
+        }
+        Ok(())
+    };
+    if let Some(view) = accessor.view() {
+        view_fits(view, accessor.offset(), count, element, AccessorPart::Elements)?;
+    }
+    if let Some(sparse) = accessor.sparse() {
+        let n = sparse.count();
+        if n == 0 || n > count {
+            return Err(AccessorProblem::SparseCount { sparse: n, count });
+        }
+        let indices = sparse.indices();
+        view_fits(
+            indices.view(),
+            indices.offset(),
+            n,
+            indices.index_type().size(),
+            AccessorPart::SparseIndices,
+        )?;
+        let values = sparse.values();
+        view_fits(
+            values.view(),
+            values.offset(),
+            n,
+            element,
+            AccessorPart::SparseValues,
+        )?;
+    }
+    Ok(())
+}
+
+/// Reads one attribute or index accessor after its bounds check, as `T`.
+fn read_checked<T, I>(
+    cx: &Context,
+    primitive: &str,
+    accessor: &gltf::Accessor,
+    buffers: &[gltf::buffer::Data],
+    iter: Option<I>,
+) -> Result<Vec<T>, LoadError>
+where
+    I: Iterator<Item = T>,
+{
+    let data_error = |problem| {
+        cx.error(LoadErrorKind::AccessorData {
+            primitive: primitive.to_owned(),
+            accessor: accessor.index(),
+            problem,
+        })
+    };
+    check_accessor_bounds(accessor, buffers).map_err(data_error)?;
+    let iter = iter.ok_or_else(|| data_error(AccessorProblem::Unreadable))?;
+    let mut values = try_vec(accessor.count(), "accessor data").map_err(|source| {
+        cx.error(LoadErrorKind::Alloc {
+            primitive: primitive.to_owned(),
+            source,
+        })
+    })?;
+    // At most count elements: the bounds check says the data holds that many.
+    values.extend(iter.take(accessor.count()));
+    if values.len() != accessor.count() {
+        return Err(data_error(AccessorProblem::ShortRead {
+            read: values.len(),
+            count: accessor.count(),
+        }));
+    }
+    Ok(values)
+}
+
+/// The first element of `values` with a NaN or infinite component is an error: GL would
+/// drop its triangles (positions) or light them with NaN (normals, colors) without a word.
+fn check_finite<const N: usize>(
+    cx: &Context,
+    primitive: &str,
+    attribute: &'static str,
+    accessor: &gltf::Accessor,
+    values: &[[f32; N]],
+) -> Result<(), LoadError> {
+    match values.iter().position(|v| !v.iter().all(|x| x.is_finite())) {
+        None => Ok(()),
+        Some(element) => Err(cx.error(LoadErrorKind::NotFinite {
+            primitive: primitive.to_owned(),
+            attribute,
+            accessor: accessor.index(),
+            element,
+            value: values[element].to_vec(),
+        })),
+    }
+}
+
+/// Reads one primitive of mesh `mesh` as a triangle list (see [`load`](super::load));
+/// `mirrored` swaps each triangle's first two vertices.
+pub(super) fn read_primitive(
+    cx: &Context,
+    buffers: &[gltf::buffer::Data],
+    mesh: usize,
+    primitive: &gltf::Primitive,
+    mirrored: bool,
+    budget: &mut MeshBudget,
+    warnings: &mut Vec<String>,
+) -> Result<MeshData, LoadError> {
+    let label = cx.primitive_label(mesh, primitive.index());
+    let mode = primitive.mode();
+    debug_assert!(draws_triangles(mode), "the caller skips points and lines");
+    // What the triangle list will take, charged before anything is read.
+    let vertex_count = primitive.get(&Semantic::Positions).map_or(0, |a| a.count());
+    let sequence_len = primitive.indices().map_or(vertex_count, |a| a.count());
+    let triangle_count = match mode {
+        Mode::Triangles => sequence_len / 3,
+        _ => sequence_len.saturating_sub(2),
+    };
+    let kept_vertices = if primitive.get(&Semantic::Normals).is_some() {
+        vertex_count
+    } else {
+        triangle_count.saturating_mul(3)
+    };
+    budget
+        .charge(kept_vertices, triangle_count.saturating_mul(3))
+        .map_err(|source| {
+            cx.error(LoadErrorKind::OverBudget {
+                primitive: label.clone(),
+                source,
+            })
+        })?;
+    let alloc_error = |source| {
+        cx.error(LoadErrorKind::Alloc {
+            primitive: label.clone(),
+            source,
+        })
+    };
+    let reader = primitive.reader(|b| buffers.get(b.index()).map(|d| &d.0[..]));
+    let format_error = |attribute: &str, accessor: &gltf::Accessor, expected: &'static str| {
+        cx.error(LoadErrorKind::AttributeFormat {
+            primitive: label.clone(),
+            attribute: attribute.to_owned(),
+            accessor: accessor.index(),
+            found: type_name(accessor),
+            expected,
+        })
+    };
+    let count_error = |attribute: &str, accessor: &gltf::Accessor, expected: usize| {
+        cx.error(LoadErrorKind::AttributeCount {
+            primitive: label.clone(),
+            attribute: attribute.to_owned(),
+            accessor: accessor.index(),
+            count: accessor.count(),
+            expected,
+        })
+    };
+
+    let Some(position_accessor) = primitive.get(&Semantic::Positions) else {
+        return Err(cx.error(LoadErrorKind::MissingAttribute {
+            primitive: label,
+            attribute: "POSITION",
+        }));
+    };
+    if (position_accessor.data_type(), position_accessor.dimensions()) != (DataType::F32, Dimensions::Vec3) {
+        return Err(format_error("POSITION", &position_accessor, "FLOAT VEC3"));
+    }
+    let positions = read_checked(cx, &label, &position_accessor, buffers, reader.read_positions())?;
+    check_finite(cx, &label, "POSITION", &position_accessor, &positions)?;
+    let vertex_count = positions.len();
+
+    let normals = match primitive.get(&Semantic::Normals) {
+        None => None,
+        Some(accessor) => {
+            if (accessor.data_type(), accessor.dimensions()) != (DataType::F32, Dimensions::Vec3) {
+                return Err(format_error("NORMAL", &accessor, "FLOAT VEC3"));
+            }
+            if accessor.count() != vertex_count {
+                return Err(count_error("NORMAL", &accessor, vertex_count));
+            }
+            let normals = read_checked(cx, &label, &accessor, buffers, reader.read_normals())?;
+            check_finite(cx, &label, "NORMAL", &accessor, &normals)?;
+            Some(normals)
+        }
+    };
+
+    let colors = match primitive.get(&Semantic::Colors(0)) {
+        None => None,
+        Some(accessor) => {
+            let supported_type = matches!(accessor.data_type(), DataType::F32 | DataType::U8 | DataType::U16);
+            let supported_dims = matches!(accessor.dimensions(), Dimensions::Vec3 | Dimensions::Vec4);
+            if !(supported_type && supported_dims) {
+                return Err(format_error(
+                    "COLOR_0",
+                    &accessor,
+                    "FLOAT, normalized UNSIGNED_BYTE or normalized UNSIGNED_SHORT, VEC3 or VEC4",
+                ));
+            }
+            if accessor.data_type() != DataType::F32 && !accessor.normalized() {
+                warnings.push(format!(
+                    "{label}: COLOR_0 (accessor {}) is {} without normalized: true; read as normalized",
+                    accessor.index(),
+                    type_name(&accessor)
+                ));
+            }
+            if accessor.count() != vertex_count {
+                return Err(count_error("COLOR_0", &accessor, vertex_count));
+            }
+            let iter = reader.read_colors(0).map(|c| c.into_rgba_f32());
+            let colors = read_checked(cx, &label, &accessor, buffers, iter)?;
+            check_finite(cx, &label, "COLOR_0", &accessor, &colors)?;
+            Some(colors)
+        }
+    };
+
+    // Texture coordinates in every type glTF allows: FLOAT, or normalized UNSIGNED_BYTE or
+    // UNSIGNED_SHORT (divided by 255 or 65535), VEC2.
+    let texcoords = match primitive.get(&Semantic::TexCoords(0)) {
+        None => None,
+        Some(accessor) => {
+            let supported = matches!(accessor.data_type(), DataType::F32 | DataType::U8 | DataType::U16);
+            if !supported || accessor.dimensions() != Dimensions::Vec2 {
+                return Err(format_error(
+                    "TEXCOORD_0",
+                    &accessor,
+                    "FLOAT, normalized UNSIGNED_BYTE or normalized UNSIGNED_SHORT, VEC2",
+                ));
+            }
+            if accessor.count() != vertex_count {
+                return Err(count_error("TEXCOORD_0", &accessor, vertex_count));
+            }
+            let iter = reader.read_tex_coords(0).map(|t| t.into_f32());
+            let st = read_checked(cx, &label, &accessor, buffers, iter)?;
+            check_finite(cx, &label, "TEXCOORD_0", &accessor, &st)?;
+            Some(st)
+        }
+    };
+    let texcoord_of = |i: u32| {
+        texcoords
+            .as_ref()
+            .map_or(glam::Vec2::ZERO, |t| glam::Vec2::from_array(t[i as usize]))
+    };
+
+    let sequence: Vec<u32> = match primitive.indices() {
+        None => {
+            let mut sequence = try_vec(vertex_count, "mesh indices").map_err(alloc_error)?;
+            sequence.extend(0..vertex_count as u32);
+            sequence
+        }
+        Some(accessor) => {
+            let unsigned = matches!(accessor.data_type(), DataType::U8 | DataType::U16 | DataType::U32);
+            if !(unsigned && accessor.dimensions() == Dimensions::Scalar) {
+                return Err(format_error(
+                    "indices",
+                    &accessor,
+                    "UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT SCALAR",
+                ));
+            }
+            let iter = reader.read_indices().map(|i| i.into_u32());
+            let indices = read_checked(cx, &label, &accessor, buffers, iter)?;
+            if let Some((element, &value)) = indices
+                .iter()
+                .enumerate()
+                .find(|(_, &i)| i as usize >= vertex_count)
+            {
+                return Err(cx.error(LoadErrorKind::IndexOutOfRange {
+                    primitive: label,
+                    accessor: accessor.index(),
+                    element,
+                    value,
+                    vertex_count,
+                }));
+            }
+            indices
+        }
+    };
+
+    let mut triangles: Vec<[u32; 3]> = try_vec(triangle_count, "mesh triangles").map_err(alloc_error)?;
+    match mode {
+        Mode::Triangles => {
+            if sequence.len() % 3 != 0 {
+                return Err(cx.error(LoadErrorKind::PartialTriangle {
+                    primitive: label,
+                    what: if primitive.indices().is_some() {
+                        "indices"
+                    } else {
+                        "vertices"
+                    },
+                    count: sequence.len(),
+                }));
+            }
+            triangles.extend(sequence.chunks_exact(3).map(|t| [t[0], t[1], t[2]]));
+        }
+        // GL's order: triangle i is (i, i+1, i+2) for even i and (i+1, i, i+2) for odd i,
+        // glTF's {i, i+2, i+1} up to rotation; the provoking vertex i+2 comes last.
+        Mode::TriangleStrip => triangles.extend(sequence.windows(3).enumerate().map(|(i, w)| {
+            if i % 2 == 0 {
+                [w[0], w[1], w[2]]
+            } else {
+                [w[1], w[0], w[2]]
+            }
+        })),
+        // GL's (0, i+1, i+2), glTF's {i+1, i+2, 0} up to rotation; provoking vertex last.
+        Mode::TriangleFan => triangles.extend(sequence.windows(2).skip(1).map(|w| [sequence[0], w[0], w[1]])),
+        _ => unreachable!("checked above"),
+    }
+
+    let color_of = |i: u32| {
+        colors
+            .as_ref()
+            .map_or(Vec4::ONE, |c| Vec4::from_array(c[i as usize]))
+    };
+    let position_of = |i: u32| Vec3::from_array(positions[i as usize]);
+    let mut data = MeshData::default();
+    match &normals {
+        Some(normals) => {
+            data.vertices = try_vec(vertex_count, "mesh vertices").map_err(alloc_error)?;
+            data.vertices.extend((0..vertex_count as u32).map(|i| {
+                Vertex::new(position_of(i), Vec3::from_array(normals[i as usize]), color_of(i))
+                    .with_texcoord(texcoord_of(i))
+            }));
+        }
+        None => {
+            // Flat normals: every triangle gets its own three vertices.
+            let mut flat = try_vec(triangles.len() * 3, "mesh vertices").map_err(alloc_error)?;
+            for t in &mut triangles {
+                let [a, b, c] = t.map(position_of);
+                let normal = (b - a).cross(c - a).normalize_or(Vec3::Z);
+                let base = flat.len() as u32;
+                flat.extend(t.iter().map(|&i| {
+                    Vertex::new(position_of(i), normal, color_of(i)).with_texcoord(texcoord_of(i))
+                }));
+                *t = [base, base + 1, base + 2];
+            }
+            data.vertices = flat;
+        }
+    }
+    if mirrored {
+        triangles.iter_mut().for_each(|t| t.swap(0, 1));
+    }
+    data.indices = try_vec(triangles.len() * 3, "mesh indices").map_err(alloc_error)?;
+    data.indices.extend(triangles.into_iter().flatten());
+    Ok(data)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::gltf::load;
+    use crate::scene::gltf::testing::{message, one_mesh_body, scratch_dir, Asset, QUAD};
+
+    fn face_normal(mesh: &MeshData, t: usize) -> Vec3 {
+        let [a, b, c] =
+            [0, 1, 2].map(|k| Vec3::from_array(mesh.vertices[mesh.indices[3 * t + k] as usize].position));
+        (b - a).cross(c - a)
+    }
+
+    #[test]
+    fn external_bin_u8_indices_missing_normals_give_flat_unshared_vertices() {
+        let dir = scratch_dir("flat");
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD);
+        let colors: Vec<u8> = vec![255, 0, 0, 0, 255, 0, 0, 0, 255, 51, 102, 153];
+        let col = a.accessor(&colors, 5121, 4, "VEC3", r#", "normalized": true"#);
+        let idx = a.u8s(&[0, 1, 2, 0, 2, 3]);
+        let body = one_mesh_body(&format!(
+            r#"{{ "attributes": {{ "POSITION": {pos}, "COLOR_0": {col} }}, "indices": {idx} }}"#
+        ));
+        let path = a.write_gltf(&dir, "flat", &body);
+        let loaded = load(&path).unwrap();
+        assert!(loaded.warnings.is_empty(), "{:?}", loaded.warnings);
+        let m = &loaded.meshes[0];
+        assert_eq!(m.name, "thing");
+        assert!(m.material.is_none());
+        assert_eq!(m.data.vertices.len(), 6, "every triangle has its own vertices");
+        assert_eq!(m.data.indices, vec![0, 1, 2, 3, 4, 5]);
+        for v in &m.data.vertices {
+            assert_eq!(v.normal, [0.0, 0.0, 1.0]);
+        }
+        assert_eq!(m.data.vertices[0].color, [1.0, 0.0, 0.0, 1.0]);
+        assert_eq!(m.data.vertices[2].color, [0.0, 0.0, 1.0, 1.0]);
+        assert!(Vec4::from_array(m.data.vertices[5].color).abs_diff_eq(Vec4::new(0.2, 0.4, 0.6, 1.0), 1e-6));
+        assert_eq!(m.data.vertices[5].position, [0.0, 1.0, 0.0]);
+    }
+
+    #[test]
+    fn triangle_strip_alternates_and_keeps_counter_clockwise_winding() {
+        let dir = scratch_dir("strip");
+        let mut a = Asset::default();
+        // A zig-zag strip along x: 0 (0,0) 1 (0,1)? No: glTF/GL strips list bottom, top pairs
+        // such that the first triangle (0, 1, 2) is counter-clockwise.
+        let p = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [0.0, 2.0, 0.0],
+        ];
+        let pos = a.positions(&p);
+        let nrm = a.vec3s(&[[0.0, 0.0, 1.0]; 5]);
+        let body = one_mesh_body(&format!(
+            r#"{{ "attributes": {{ "POSITION": {pos}, "NORMAL": {nrm} }}, "mode": 5 }}"#
+        ));
+        let m = load(&a.write_gltf(&dir, "strip", &body))
+            .unwrap()
+            .meshes
+            .remove(0);
+        assert_eq!(m.data.vertices.len(), 5, "normals given: vertices are shared");
+        assert_eq!(m.data.indices, vec![0, 1, 2, 2, 1, 3, 2, 3, 4]);
+        for t in 0..3 {
+            assert!(
+                face_normal(&m.data, t).z > 0.0,
+                "triangle {t} is counter-clockwise"
+            );
+        }
+    }
+
+    #[test]
+    fn triangle_fan_and_u32_indices() {
+        let dir = scratch_dir("fan");
+        let mut a = Asset::default();
+        let p = [
+            [0.0, 0.0, 0.0],
+            [1.0, -1.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [-1.0, 1.0, 0.0],
+            [-1.0, -1.0, 0.0],
+        ];
+        let pos = a.positions(&p);
+        let idx = a.u32s(&[0, 1, 2, 3, 4]);
+        let body = one_mesh_body(&format!(
+            r#"{{ "attributes": {{ "POSITION": {pos} }}, "indices": {idx}, "mode": 6 }}"#
+        ));
+        let m = load(&a.write_gltf(&dir, "fan", &body)).unwrap().meshes.remove(0);
+        assert_eq!(m.data.triangle_count(), 3);
+        for t in 0..3 {
+            assert!(
+                face_normal(&m.data, t).z > 0.0,
+                "triangle {t} is counter-clockwise"
+            );
+            let first = m.data.vertices[m.data.indices[3 * t] as usize].position;
+            assert_eq!(first, [0.0, 0.0, 0.0], "the fan center leads each triangle");
+            assert_eq!(
+                m.data.vertices[m.data.indices[3 * t] as usize].normal,
+                [0.0, 0.0, 1.0]
+            );
+        }
+    }
+
+    #[test]
+    fn u16_indices_u16_rgba_colors_and_given_normals_share_vertices() {
+        let dir = scratch_dir("u16");
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD);
+        let nrm = a.vec3s(&[[0.0, 0.0, 1.0]; 4]);
+        let rgba: Vec<u8> = [
+            65535u16, 0, 0, 65535, 0, 65535, 0, 32768, 0, 0, 65535, 0, 65535, 65535, 65535, 65535,
+        ]
+        .iter()
+        .flat_map(|x| x.to_le_bytes())
+        .collect();
+        let col = a.accessor(&rgba, 5123, 4, "VEC4", r#", "normalized": true"#);
+        let idx = a.u16s(&[0, 1, 2, 0, 2, 3]);
+        let body = one_mesh_body(&format!(
+            r#"{{ "attributes": {{ "POSITION": {pos}, "NORMAL": {nrm}, "COLOR_0": {col} }}, "indices": {idx} }}"#
+        ));
+        let m = load(&a.write_gltf(&dir, "u16", &body)).unwrap().meshes.remove(0);
+        assert_eq!(m.data.vertices.len(), 4);
+        assert_eq!(m.data.indices, vec![0, 1, 2, 0, 2, 3]);
+        assert_eq!(m.data.vertices[0].color, [1.0, 0.0, 0.0, 1.0]);
+        assert!((m.data.vertices[1].color[3] - 32768.0 / 65535.0).abs() < 1e-6);
+        assert_eq!(m.data.vertices[2].color, [0.0, 0.0, 1.0, 0.0]);
+        assert_eq!(m.data.vertices[3].color, [1.0; 4]);
+        assert_eq!(m.data.vertices[3].normal, [0.0, 0.0, 1.0]);
+    }
+
+    #[test]
+    fn unnormalized_integer_colors_warn_and_float_rgb_colors_get_alpha_one() {
+        let dir = scratch_dir("colors");
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD[..3]);
+        let col = a.accessor(&[255, 0, 0, 255, 0, 0, 255, 0, 0, 0, 0, 0], 5121, 3, "VEC4", "");
+        let body = one_mesh_body(&format!(
+            r#"{{ "attributes": {{ "POSITION": {pos}, "COLOR_0": {col} }} }}"#
+        ));
+        let loaded = load(&a.write_gltf(&dir, "u8_unnormalized", &body)).unwrap();
+        assert_eq!(loaded.warnings.len(), 1, "{:?}", loaded.warnings);
+        assert!(loaded.warnings[0].contains("COLOR_0") && loaded.warnings[0].contains("normalized"));
+        assert_eq!(loaded.meshes[0].data.vertices[0].color, [1.0, 0.0, 0.0, 1.0]);
+
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD[..3]);
+        let col = a.vec3s(&[[0.5, 0.25, 1.0]; 3]);
+        let body = one_mesh_body(&format!(
+            r#"{{ "attributes": {{ "POSITION": {pos}, "COLOR_0": {col} }} }}"#
+        ));
+        let loaded = load(&a.write_gltf(&dir, "f32_rgb", &body)).unwrap();
+        assert!(loaded.warnings.is_empty());
+        assert_eq!(loaded.meshes[0].data.vertices[2].color, [0.5, 0.25, 1.0, 1.0]);
+    }
+
+    #[test]
+    fn mirrored_nodes_swap_winding() {
+        let dir = scratch_dir("mirror");
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD[..3]);
+        let body = format!(
+            r#""scene": 0, "scenes": [ {{ "nodes": [0, 1] }} ],
+               "nodes": [ {{ "mesh": 0 }}, {{ "mesh": 0, "scale": [-1, 1, 1] }} ],
+               "meshes": [ {{ "primitives": [ {{ "attributes": {{ "POSITION": {pos} }} }} ] }} ],"#
+        );
+        let loaded = load(&a.write_gltf(&dir, "mirror", &body)).unwrap();
+        let (plain, mirrored) = (&loaded.meshes[0], &loaded.meshes[1]);
+        assert_eq!(plain.data.indices, vec![0, 1, 2]);
+        assert_eq!(mirrored.data.indices, vec![1, 0, 2]);
+        // The normal is the object-space face normal either way (the normal matrix mirrors it).
+        assert_eq!(mirrored.data.vertices[0].normal, [0.0, 0.0, 1.0]);
+        // Drawn with its transform, the mirrored triangle is counter-clockwise again.
+        let w: Vec<Vec3> = mirrored
+            .data
+            .indices
+            .iter()
+            .map(|&i| {
+                mirrored
+                    .transform
+                    .transform_point3(Vec3::from_array(mirrored.data.vertices[i as usize].position))
+            })
+            .collect();
+        assert!((w[1] - w[0]).cross(w[2] - w[0]).z > 0.0);
+    }
+
+    #[test]
+    fn missing_position_names_mesh_primitive_and_attribute() {
+        let dir = scratch_dir("missing_position");
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD[..3]);
+        let nrm = a.vec3s(&[[0.0, 0.0, 1.0]; 3]);
+        let body = one_mesh_body(&format!(
+            r#"{{ "attributes": {{ "POSITION": {pos} }} }}, {{ "attributes": {{ "NORMAL": {nrm} }} }}"#
+        ));
+        let path = a.write_gltf(&dir, "missing_position", &body);
+        let e = message(load(&path).unwrap_err());
+        assert!(e.contains("missing_position.gltf"), "{e}");
+        assert!(e.contains("mesh 0 (\"thing\") primitive 1"), "{e}");
+        assert!(e.contains("POSITION") && e.contains("missing"), "{e}");
+    }
+
+    #[test]
+    fn index_out_of_range_names_accessor_and_value() {
+        let dir = scratch_dir("bad_index");
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD[..3]);
+        let idx = a.u8s(&[0, 1, 7]);
+        let body = one_mesh_body(&format!(
+            r#"{{ "attributes": {{ "POSITION": {pos} }}, "indices": {idx} }}"#
+        ));
+        let e = load(&a.write_gltf(&dir, "bad_index", &body)).unwrap_err();
+        assert!(matches!(
+            e.kind,
+            LoadErrorKind::IndexOutOfRange {
+                accessor: 1,
+                element: 2,
+                value: 7,
+                vertex_count: 3,
+                ..
+            }
+        ));
+        let e = message(e);
+        assert!(
+            e.contains("bad_index.gltf") && e.contains("accessor 1") && e.contains("holds 7"),
+            "{e}"
+        );
+        assert!(e.contains("< 3"), "{e}");
+    }
+
+    #[test]
+    fn points_and_lines_are_skipped_by_name_and_the_triangles_beside_them_kept() {
+        let dir = scratch_dir("modes");
+        for (mode, name) in [(0, "POINTS"), (1, "LINES"), (2, "LINE_LOOP"), (3, "LINE_STRIP")] {
+            let mut a = Asset::default();
+            let pos = a.positions(&QUAD[..3]);
+            let body = one_mesh_body(&format!(
+                r#"{{ "attributes": {{ "POSITION": {pos} }}, "mode": {mode} }},
+                   {{ "attributes": {{ "POSITION": {pos} }} }}"#
+            ));
+            let loaded = load(&a.write_gltf(&dir, name, &body)).unwrap();
+            assert_eq!(loaded.meshes.len(), 1, "the triangle primitive stays");
+            assert_eq!(loaded.meshes[0].data.indices.len(), 3);
+            let warning = loaded
+                .warnings
+                .iter()
+                .find(|w| w.contains(name))
+                .expect("a warning");
+            assert!(
+                warning.contains("primitive 0") && warning.contains(&format!("mode {name}")),
+                "{warning}"
+            );
+        }
+    }
+
+    #[test]
+    fn nan_or_infinite_positions_normals_and_colors_are_errors() {
+        let dir = scratch_dir("not_finite");
+        let floats =
+            |v: &[[f32; 3]]| -> Vec<u8> { v.iter().flatten().flat_map(|x| x.to_le_bytes()).collect() };
+        let bounds = r#", "min": [0, 0, 0], "max": [1, 1, 0]"#;
+        for (case, bad) in [("nan", f32::NAN), ("inf", f32::INFINITY)] {
+            let mut a = Asset::default();
+            let pos = a.accessor(
+                &floats(&[[0.0; 3], [1.0, 0.0, 0.0], [bad, 1.0, 0.0]]),
+                5126,
+                3,
+                "VEC3",
+                bounds,
+            );
+            let body = one_mesh_body(&format!(r#"{{ "attributes": {{ "POSITION": {pos} }} }}"#));
+            let e = message(load(&a.write_gltf(&dir, &format!("position_{case}"), &body)).unwrap_err());
+            assert!(
+                e.contains("mesh 0 (\"thing\") primitive 0: POSITION (accessor 0) element 2")
+                    && e.contains(&format!("[{bad:?}, 1.0, 0.0]"))
+                    && e.contains("expected finite numbers"),
+                "{e}"
+            );
+        }
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD[..3]);
+        let nrm = a.vec3s(&[[0.0, 0.0, 1.0], [f32::NAN, 0.0, 1.0], [0.0, 0.0, 1.0]]);
+        let body = one_mesh_body(&format!(
+            r#"{{ "attributes": {{ "POSITION": {pos}, "NORMAL": {nrm} }} }}"#
+        ));
+        let e = message(load(&a.write_gltf(&dir, "normal_nan", &body)).unwrap_err());
+        assert!(
+            e.contains("NORMAL (accessor 1) element 1 is [NaN, 0.0, 1.0]"),
+            "{e}"
+        );
+
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD[..3]);
+        let col = a.vec3s(&[[1.0; 3], [1.0; 3], [0.0, f32::NEG_INFINITY, 0.0]]);
+        let body = one_mesh_body(&format!(
+            r#"{{ "attributes": {{ "POSITION": {pos}, "COLOR_0": {col} }} }}"#
+        ));
+        let e = message(load(&a.write_gltf(&dir, "color_inf", &body)).unwrap_err());
+        assert!(
+            e.contains("COLOR_0 (accessor 1) element 2 is [0.0, -inf, 0.0, 1.0]"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn attribute_format_count_and_data_errors() {
+        let dir = scratch_dir("attributes");
+        // POSITION as UNSIGNED_SHORT VEC3.
+        let mut a = Asset::default();
+        let p16: Vec<u8> = [0u16, 0, 0, 1, 0, 0, 0, 1, 0]
+            .iter()
+            .flat_map(|x| x.to_le_bytes())
+            .collect();
+        let pos = a.accessor(&p16, 5123, 3, "VEC3", r#", "min": [0, 0, 0], "max": [1, 1, 0]"#);
+        let body = one_mesh_body(&format!(r#"{{ "attributes": {{ "POSITION": {pos} }} }}"#));
+        let e = message(load(&a.write_gltf(&dir, "u16_position", &body)).unwrap_err());
+        assert!(
+            e.contains("POSITION (accessor 0) is UNSIGNED_SHORT VEC3: expected FLOAT VEC3"),
+            "{e}"
+        );
+
+        // NORMAL with the wrong count.
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD[..3]);
+        let nrm = a.vec3s(&[[0.0, 0.0, 1.0]; 2]);
+        let body = one_mesh_body(&format!(
+            r#"{{ "attributes": {{ "POSITION": {pos}, "NORMAL": {nrm} }} }}"#
+        ));
+        let e = message(load(&a.write_gltf(&dir, "normal_count", &body)).unwrap_err());
+        assert!(
+            e.contains("NORMAL (accessor 1) has 2 elements: expected 3"),
+            "{e}"
+        );
+
+        // COLOR_0 as FLOAT VEC2.
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD[..3]);
+        let c: Vec<u8> = [0.0f32; 6].iter().flat_map(|x| x.to_le_bytes()).collect();
+        let col = a.accessor(&c, 5126, 3, "VEC2", "");
+        let body = one_mesh_body(&format!(
+            r#"{{ "attributes": {{ "POSITION": {pos}, "COLOR_0": {col} }} }}"#
+        ));
+        let e = message(load(&a.write_gltf(&dir, "color_vec2", &body)).unwrap_err());
+        assert!(
+            e.contains("COLOR_0 (accessor 1) is FLOAT VEC2: expected FLOAT, normalized"),
+            "{e}"
+        );
+
+        // An accessor claiming more elements than its view holds.
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD[..3]);
+        let idx = a.u16s(&[0, 1, 2]);
+        a.accessors[idx] = a.accessors[idx].replace("\"count\": 3", "\"count\": 6");
+        let body = one_mesh_body(&format!(
+            r#"{{ "attributes": {{ "POSITION": {pos} }}, "indices": {idx} }}"#
+        ));
+        let e = message(load(&a.write_gltf(&dir, "overrun", &body)).unwrap_err());
+        assert!(
+            e.contains("accessor 1: 6 elements of 2 bytes") && e.contains("overrun buffer view 1"),
+            "{e}"
+        );
+
+        // TRIANGLES with 4 indices.
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD[..3]);
+        let idx = a.u16s(&[0, 1, 2, 0]);
+        let body = one_mesh_body(&format!(
+            r#"{{ "attributes": {{ "POSITION": {pos} }}, "indices": {idx} }}"#
+        ));
+        let e = message(load(&a.write_gltf(&dir, "partial", &body)).unwrap_err());
+        assert!(
+            e.contains("4 indices do not make whole TRIANGLES: expected a multiple of 3"),
+            "{e}"
+        );
+    }
+}

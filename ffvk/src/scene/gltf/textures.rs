@@ -1,0 +1,436 @@
+//! What ffvk reads of a material's textures until it samples them: the mean texel of the base
+//! color and emissive textures, decoded from sRGB (both are sRGB-encoded in glTF) to linear,
+//! so that a textured material's factor is scaled by what its texture averages to rather than
+//! drawn as if the texture were white.
+
+use super::{Context, MAX_FILE_BYTES};
+use crate::gl::texture::{MagFilter, MinFilter, Sampling, TextureImage, Wrap, MAX_TEXTURE_SIZE};
+use glam::{Mat4, Vec4};
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+/// A base color texture ready to sample: its image as stored (GL_RGBA8, no sRGB decode, as a
+/// legacy GL program loads it; mipmaps generated, as glGenerateMipmap), the sampler mapped
+/// from glTF's, and KHR_texture_transform as the GL_TEXTURE matrix.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub struct SampledTexture {
+    /// The decoded image with its mipmaps; shared by every material that uses the image.
+    pub image: Arc<TextureImage>,
+    /// glTF's sampler as glTexParameter values; without one, linear and trilinear with repeat.
+    pub sampling: Sampling,
+    /// KHR_texture_transform's offset, rotation and scale as a matrix of (s, t); identity
+    /// without it.
+    pub matrix: Mat4,
+    /// The glTF image's index, for messages.
+    pub image_index: usize,
+}
+
+/// A texture a material names, as far as ffvk read it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum TextureMean {
+    /// Not read: the scene does not follow glTF's meaning, or the image could not be decoded
+    /// (a warning says why). The material's factor is used alone.
+    Unread,
+    /// The mean of its texels: linear RGB (decoded from sRGB) and alpha.
+    Mean(Vec4),
+}
+
+impl TextureMean {
+    /// The mean, or white where the texture was not read.
+    pub fn or_white(self) -> Vec4 {
+        match self {
+            TextureMean::Unread => Vec4::ONE,
+            TextureMean::Mean(m) => m,
+        }
+    }
+}
+
+/// Whether [`load_with`](super::load_with) decodes textures for their means.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Textures {
+    /// Textures are named, not read: every texture is [`TextureMean::Unread`].
+    #[default]
+    Ignore,
+    /// Base color and emissive textures are decoded and averaged.
+    Means,
+}
+
+/// The base color and emissive textures of one material.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub(super) struct MaterialTextures {
+    pub(super) base_color: Option<TextureMean>,
+    pub(super) emissive: Option<TextureMean>,
+    pub(super) base_color_sampled: Option<SampledTexture>,
+}
+
+/// One entry per material of the file; each image decoded at most once. Images that cannot be
+/// read or decoded become warnings.
+pub(super) fn material_textures(
+    cx: &Context,
+    document: &gltf::Document,
+    buffers: &[gltf::buffer::Data],
+    roots: &[PathBuf],
+    textures: Textures,
+    warnings: &mut Vec<String>,
+) -> Vec<MaterialTextures> {
+    type Decoded = Option<(Vec4, Arc<TextureImage>)>;
+    let mut cache: Vec<Option<Decoded>> = vec![None; document.images().len()];
+    let mut decode = |texture: &gltf::Texture| -> Decoded {
+        if textures == Textures::Ignore {
+            return None;
+        }
+        let image = texture.source();
+        let i = image.index();
+        cache[i]
+            .get_or_insert_with(|| match decode_image(cx, &image, buffers, roots) {
+                Ok(decoded) => {
+                    let mean = mean_linear(&decoded);
+                    let (w, h) = decoded.dimensions();
+                    let texture = TextureImage::new(w, h, decoded.into_raw())
+                        .expect("decode_image checked the size")
+                        .with_mipmaps();
+                    Some((mean, Arc::new(texture)))
+                }
+                Err(why) => {
+                    warnings.push(format!(
+                        "image {i}{}: {why}; the materials using it take their factors alone",
+                        cx.name("images", i)
+                            .map(|n| format!(" ({:?})", crate::scene::shorten(&n)))
+                            .unwrap_or_default()
+                    ));
+                    None
+                }
+            })
+            .clone()
+    };
+    let mean_of = |decoded: &Decoded| match decoded {
+        Some((mean, _)) => TextureMean::Mean(*mean),
+        None => TextureMean::Unread,
+    };
+    let mut other_coords = Vec::new();
+    let out = document
+        .materials()
+        .map(|m| {
+            let info = m.pbr_metallic_roughness().base_color_texture();
+            let base_decoded = info.as_ref().map(|t| decode(&t.texture()));
+            let base_color = base_decoded.as_ref().map(mean_of);
+            let emissive = m.emissive_texture().map(|t| mean_of(&decode(&t.texture())));
+            let base_color_sampled = info.and_then(|info| {
+                let transform = info.texture_transform();
+                let coords = transform
+                    .as_ref()
+                    .and_then(|t| t.tex_coord())
+                    .unwrap_or(info.tex_coord());
+                if coords != 0 {
+                    other_coords.push(m.index().unwrap_or_default());
+                    return None;
+                }
+                let (_, image) = base_decoded.flatten()?;
+                Some(SampledTexture {
+                    image,
+                    sampling: sampling(&info.texture().sampler()),
+                    matrix: transform.map_or(Mat4::IDENTITY, |t| {
+                        transform_matrix(t.offset(), t.rotation(), t.scale())
+                    }),
+                    image_index: info.texture().source().index(),
+                })
+            });
+            MaterialTextures {
+                base_color,
+                emissive,
+                base_color_sampled,
+            }
+        })
+        .collect();
+    if !other_coords.is_empty() {
+        warnings.push(format!(
+            "materials {other_coords:?}: the base color texture reads TEXCOORD_1 or later; ffvk reads TEXCOORD_0 only, so these take the texture's mean texel instead"
+        ));
+    }
+    out
+}
+
+/// glTF's sampler as GL's texture parameters (glTF uses GL's enums). Without a filter glTF
+/// leaves the choice to the renderer: ffvk takes linear magnification and trilinear
+/// minification (the mipmaps are generated).
+pub fn sampling(sampler: &gltf::texture::Sampler) -> Sampling {
+    use gltf::texture::{MagFilter as GMag, MinFilter as GMin, WrappingMode};
+    let wrap = |w: WrappingMode| match w {
+        WrappingMode::ClampToEdge => Wrap::ClampToEdge,
+        WrappingMode::MirroredRepeat => Wrap::MirroredRepeat,
+        WrappingMode::Repeat => Wrap::Repeat,
+    };
+    Sampling {
+        mag_filter: match sampler.mag_filter() {
+            Some(GMag::Nearest) => MagFilter::Nearest,
+            Some(GMag::Linear) | None => MagFilter::Linear,
+        },
+        min_filter: match sampler.min_filter() {
+            Some(GMin::Nearest) => MinFilter::Nearest,
+            Some(GMin::Linear) => MinFilter::Linear,
+            Some(GMin::NearestMipmapNearest) => MinFilter::NearestMipmapNearest,
+            Some(GMin::LinearMipmapNearest) => MinFilter::LinearMipmapNearest,
+            Some(GMin::NearestMipmapLinear) => MinFilter::NearestMipmapLinear,
+            Some(GMin::LinearMipmapLinear) | None => MinFilter::LinearMipmapLinear,
+        },
+        wrap_s: wrap(sampler.wrap_s()),
+        wrap_t: wrap(sampler.wrap_t()),
+    }
+}
+
+/// KHR_texture_transform's matrix: translation × rotation × scale of (u, v), the rotation
+/// turning UVs counter-clockwise in the image (whose v runs down), as the extension's example
+/// says (offset [0, 1], rotation π/2 and scale ½ pick the lower left quadrant).
+pub fn transform_matrix(offset: [f32; 2], rotation: f32, scale: [f32; 2]) -> Mat4 {
+    let (sin, cos) = rotation.sin_cos();
+    let rotate = Mat4::from_cols(
+        glam::Vec4::new(cos, -sin, 0.0, 0.0),
+        glam::Vec4::new(sin, cos, 0.0, 0.0),
+        glam::Vec4::Z,
+        glam::Vec4::W,
+    );
+    Mat4::from_translation(glam::Vec3::new(offset[0], offset[1], 0.0))
+        * rotate
+        * Mat4::from_scale(glam::Vec3::new(scale[0], scale[1], 1.0))
+}
+
+/// The image's encoded bytes: from a bufferView, a data: URI or a file beside the glTF file.
+fn image_bytes(
+    cx: &Context,
+    image: &gltf::Image,
+    buffers: &[gltf::buffer::Data],
+    roots: &[PathBuf],
+) -> Result<Vec<u8>, String> {
+    match image.source() {
+        gltf::image::Source::View { view, .. } => {
+            let data = buffers
+                .get(view.buffer().index())
+                .ok_or_else(|| format!("bufferView {} names a missing buffer", view.index()))?;
+            let range = view.offset()..view.offset().saturating_add(view.length());
+            data.0
+                .get(range)
+                .map(<[u8]>::to_vec)
+                .ok_or_else(|| format!("bufferView {} lies outside its buffer", view.index()))
+        }
+        gltf::image::Source::Uri { uri, .. } if uri.starts_with("data:") => {
+            gltf::buffer::Data::from_source(gltf::buffer::Source::Uri(uri), None)
+                .map(|d| d.0)
+                .map_err(|e| format!("bad data URI: {e}"))
+        }
+        gltf::image::Source::Uri { uri, .. } => {
+            let base = cx.path.parent().unwrap_or(Path::new(""));
+            let file = super::read::asset_file(base, uri, roots).ok_or_else(|| {
+                format!(
+                    "the URI {:?} leaves the asset's folder (ffvk --allow-root DIR widens that)",
+                    crate::scene::shorten(uri)
+                )
+            })?;
+            crate::files::read_regular(&file, MAX_FILE_BYTES)
+                .map_err(|e| format!("cannot read {}: {e}", file.display()))
+        }
+    }
+}
+
+/// `image` decoded to RGBA8 as stored, no larger than a texture may be.
+fn decode_image(
+    cx: &Context,
+    image: &gltf::Image,
+    buffers: &[gltf::buffer::Data],
+    roots: &[PathBuf],
+) -> Result<image::RgbaImage, String> {
+    let bytes = image_bytes(cx, image, buffers, roots)?;
+    let reader = || {
+        image::ImageReader::new(std::io::Cursor::new(&bytes[..]))
+            .with_guessed_format()
+            .map_err(|e| format!("cannot read: {e}"))
+    };
+    let (w, h) = reader()?
+        .into_dimensions()
+        .map_err(|e| format!("cannot decode (ffvk reads PNG and JPEG): {e}"))?;
+    if w == 0 || h == 0 || w > MAX_TEXTURE_SIZE || h > MAX_TEXTURE_SIZE {
+        return Err(format!(
+            "{w}x{h} texels: expected each side in 1..={MAX_TEXTURE_SIZE}"
+        ));
+    }
+    Ok(reader()?
+        .decode()
+        .map_err(|e| format!("cannot decode (ffvk reads PNG and JPEG): {e}"))?
+        .into_rgba8())
+}
+
+/// The mean of `image`'s texels with RGB decoded from sRGB (alpha is linear already).
+pub(super) fn mean_linear(image: &image::RgbaImage) -> Vec4 {
+    let linear: [f32; 256] = std::array::from_fn(|i| srgb_to_linear(i as f32 / 255.0));
+    let mut sum = [0f64; 4];
+    for p in image.pixels() {
+        for k in 0..3 {
+            sum[k] += f64::from(linear[usize::from(p.0[k])]);
+        }
+        sum[3] += f64::from(p.0[3]) / 255.0;
+    }
+    let n = f64::from(image.width()) * f64::from(image.height());
+    if n == 0.0 {
+        return Vec4::ONE;
+    }
+    Vec4::from_array(sum.map(|s| (s / n) as f32))
+}
+
+/// The sRGB transfer function's inverse (IEC 61966-2-1).
+fn srgb_to_linear(c: f32) -> f32 {
+    if c <= 0.04045 {
+        c / 12.92
+    } else {
+        ((c + 0.055) / 1.055).powf(2.4)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::gltf::testing::{one_mesh_body, scratch_dir, Asset, QUAD};
+    use crate::scene::gltf::{load_with, MeshBudget};
+    use crate::scene::Limits;
+
+    #[test]
+    fn base_color_and_emissive_textures_enter_as_their_means_when_asked() {
+        let dir = scratch_dir("texture_means");
+        // A 2×2 emissive image: two opaque sRGB 188 texels (linear 0.5029), two transparent black.
+        let mut glow = image::RgbaImage::new(2, 2);
+        glow.put_pixel(0, 0, image::Rgba([188, 188, 188, 255]));
+        glow.put_pixel(1, 1, image::Rgba([188, 188, 188, 255]));
+        glow.save(dir.join("glow.png")).unwrap();
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD[..3]);
+        let body = one_mesh_body(&format!(
+            r#"{{ "attributes": {{ "POSITION": {pos} }}, "material": 0 }}"#
+        )) + r#""materials": [ { "emissiveFactor": [1, 1, 0.5], "emissiveTexture": { "index": 0 },
+                                  "pbrMetallicRoughness": { "baseColorTexture": { "index": 1 } } } ],
+                 "textures": [ { "source": 0 }, { "source": 1 } ],
+                 "images": [ { "uri": "glow.png" }, { "name": "gone", "uri": "missing.png" } ],"#;
+        let path = a.write_gltf(&dir, "textured", &body);
+        let limits = Limits::default();
+        let mut budget = MeshBudget::new(limits.mesh_bytes);
+        let loaded = load_with(&path, &limits, &mut budget, Textures::Means).unwrap();
+        let material = loaded.meshes[0].material.clone().unwrap();
+        let Some(TextureMean::Mean(mean)) = material.emissive_texture else {
+            panic!("{:?}", material.emissive_texture);
+        };
+        assert!(
+            mean.abs_diff_eq(Vec4::new(0.2514, 0.2514, 0.2514, 0.5), 1e-3),
+            "{mean}"
+        );
+        assert_eq!(material.base_color_texture, Some(TextureMean::Unread));
+        assert!(
+            loaded
+                .warnings
+                .iter()
+                .any(|w| w.contains("image 1 (\"gone\")") && w.contains("missing.png")),
+            "{:?}",
+            loaded.warnings
+        );
+        let scaled = material.with_texture_means();
+        assert!(scaled
+            .emissive_factor
+            .abs_diff_eq(glam::Vec3::new(0.2514, 0.2514, 0.1257), 1e-3));
+        assert_eq!(
+            scaled.base_color_factor,
+            Vec4::ONE,
+            "an unread texture leaves the factor"
+        );
+
+        // Ignored, nothing is decoded.
+        let loaded = load_with(
+            &path,
+            &limits,
+            &mut MeshBudget::new(limits.mesh_bytes),
+            Textures::Ignore,
+        )
+        .unwrap();
+        let material = loaded.meshes[0].material.clone().unwrap();
+        assert_eq!(material.emissive_texture, Some(TextureMean::Unread));
+        assert!(!loaded.warnings.iter().any(|w| w.contains("missing.png")));
+    }
+
+    #[test]
+    fn base_color_textures_are_sampled_with_their_sampler_transform_and_normalized_texcoords() {
+        let dir = scratch_dir("texture_sampled");
+        let mut checker = image::RgbaImage::new(2, 2);
+        checker.put_pixel(0, 0, image::Rgba([255, 0, 0, 255]));
+        checker.put_pixel(1, 1, image::Rgba([0, 0, 255, 255]));
+        checker.save(dir.join("checker.png")).unwrap();
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD[..3]);
+        // TEXCOORD_0 as normalized UNSIGNED_BYTE: 255 is 1.0.
+        let uv = a.accessor(
+            &[0, 0, 255, 0, 255, 255],
+            5121,
+            3,
+            "VEC2",
+            r#", "normalized": true"#,
+        );
+        let body = one_mesh_body(&format!(
+            r#"{{ "attributes": {{ "POSITION": {pos}, "TEXCOORD_0": {uv} }}, "material": 0 }}"#
+        )) + r#""materials": [ { "pbrMetallicRoughness": { "baseColorTexture": { "index": 0,
+                   "extensions": { "KHR_texture_transform": { "offset": [0, 1], "rotation": 1.57079632679, "scale": [0.5, 0.5] } } } } } ],
+                 "extensionsUsed": ["KHR_texture_transform"],
+                 "samplers": [ { "magFilter": 9728, "minFilter": 9984, "wrapS": 33071, "wrapT": 33648 } ],
+                 "textures": [ { "source": 0, "sampler": 0 } ],
+                 "images": [ { "uri": "checker.png" } ],"#;
+        let path = a.write_gltf(&dir, "sampled", &body);
+        let limits = Limits::default();
+        let mut budget = MeshBudget::new(limits.mesh_bytes);
+        let loaded = load_with(&path, &limits, &mut budget, Textures::Means).unwrap();
+        assert!(loaded.warnings.is_empty(), "{:?}", loaded.warnings);
+        let mesh = &loaded.meshes[0];
+        let st: Vec<[f32; 2]> = mesh.data.vertices.iter().map(|v| v.texcoord).collect();
+        assert_eq!(st, [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]]);
+        let material = mesh.material.clone().unwrap();
+        let sampled = material
+            .base_color_sampled
+            .clone()
+            .expect("the base color texture is sampled");
+        assert_eq!(
+            sampled.sampling,
+            Sampling {
+                mag_filter: MagFilter::Nearest,
+                min_filter: MinFilter::NearestMipmapNearest,
+                wrap_s: Wrap::ClampToEdge,
+                wrap_t: Wrap::MirroredRepeat,
+            }
+        );
+        // Stored as is (no sRGB decode), with its mipmaps.
+        assert_eq!(sampled.image.levels[0].texel(0, 0), [255, 0, 0, 255]);
+        assert_eq!(sampled.image.levels.len(), 2);
+        // The extension's own example: the lower left quadrant, turned.
+        let at = |u: f32, v: f32| {
+            let p = sampled.matrix * Vec4::new(u, v, 0.0, 1.0);
+            [p.x, p.y]
+        };
+        for (uv, want) in [
+            ((0.0, 0.0), [0.0, 1.0]),
+            ((1.0, 0.0), [0.0, 0.5]),
+            ((1.0, 1.0), [0.5, 0.5]),
+        ] {
+            let got = at(uv.0, uv.1);
+            assert!(
+                (got[0] - want[0]).abs() < 1e-6 && (got[1] - want[1]).abs() < 1e-6,
+                "{uv:?}: {got:?}"
+            );
+        }
+        // Sampled, so the factor is not scaled by the mean.
+        assert_eq!(material.with_texture_means().base_color_factor, Vec4::ONE);
+    }
+
+    #[test]
+    fn the_mean_is_taken_after_srgb_decoding() {
+        let mut image = image::RgbaImage::new(2, 1);
+        image.put_pixel(0, 0, image::Rgba([255, 0, 188, 255]));
+        image.put_pixel(1, 0, image::Rgba([0, 0, 188, 0]));
+        let m = mean_linear(&image);
+        // sRGB 188/255 is linear 0.5029; white and black average to 0.5 in linear light.
+        assert!(m.abs_diff_eq(Vec4::new(0.5, 0.0, 0.5029, 0.5), 1e-3), "{m}");
+        assert_eq!(srgb_to_linear(0.0), 0.0);
+        assert!((srgb_to_linear(1.0) - 1.0).abs() < 1e-6);
+    }
+}

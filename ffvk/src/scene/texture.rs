@@ -1,0 +1,248 @@
+//! The `[texture]` table of a scene file (and a mesh's own `texture`): GL_TEXTURE_2D with a
+//! texture image from a PNG or JPEG file or a built-in pattern, glTexParameter's filters and
+//! wraps, GL_GENERATE_MIPMAP, glTexEnv and the GL_TEXTURE matrix.
+
+use std::path::Path;
+use std::sync::Arc;
+
+use glam::{Mat4, Quat, Vec3, Vec4};
+use serde::Deserialize;
+
+use super::{shorten, Builder, SceneError};
+use crate::gl::texture::{
+    MagFilter, MinFilter, Sampling, TexEnvMode, TextureImage, TextureUnit, Wrap, MAX_TEXTURE_SIZE,
+};
+
+/// The largest image file read for a texture, in bytes.
+const MAX_IMAGE_BYTES: u64 = 256 << 20;
+
+/// A `texture` table as serde reads it.
+#[derive(Debug, Default, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct TextureSpec {
+    /// GL_TEXTURE_2D; on when the table is present unless this says otherwise.
+    pub(super) enabled: Option<bool>,
+    /// A PNG or JPEG file, relative to the scene file.
+    pub(super) image: Option<std::path::PathBuf>,
+    /// A built-in image: "checker".
+    pub(super) builtin: Option<String>,
+    pub(super) env: Option<String>,
+    pub(super) env_color: Option<Vec<f32>>,
+    pub(super) min_filter: Option<String>,
+    pub(super) mag_filter: Option<String>,
+    pub(super) wrap_s: Option<String>,
+    pub(super) wrap_t: Option<String>,
+    /// GL_GENERATE_MIPMAP; off, as in GL.
+    pub(super) generate_mipmap: Option<bool>,
+    /// GL_SRGB8_ALPHA8 instead of GL_RGBA8.
+    pub(super) srgb: Option<bool>,
+    /// The GL_TEXTURE matrix, column-major; or scale, rotate (degrees about r) and translate
+    /// of (s, t), applied in that order.
+    #[serde(default, deserialize_with = "super::file::exact")]
+    pub(super) matrix: Option<[f32; 16]>,
+    #[serde(default, deserialize_with = "super::file::exact")]
+    pub(super) scale: Option<[f32; 2]>,
+    pub(super) rotate: Option<f32>,
+    #[serde(default, deserialize_with = "super::file::exact")]
+    pub(super) translate: Option<[f32; 2]>,
+}
+
+/// A texture a mesh is drawn with: the image (shared between the meshes that name the same
+/// one), GL's texture parameters and the texture unit's state.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub struct MeshTexture {
+    /// The texture image, all its levels.
+    pub image: Arc<TextureImage>,
+    /// glTexParameter's filters and wraps.
+    pub sampling: Sampling,
+    /// GL_TEXTURE_2D, glTexEnv and the texture matrix for this mesh's draw.
+    pub unit: TextureUnit,
+    /// Where the image came from, for messages: a file, a built-in pattern, a glTF image.
+    pub source: String,
+}
+
+impl MeshTexture {
+    /// Whether drawing with it textures anything (enabled, and complete for its min filter).
+    pub fn applies(&self) -> bool {
+        crate::gl::texture::texturing_applies(&self.unit, Some((&self.image, &self.sampling)))
+    }
+}
+
+/// A word of `valid`, or an error naming the field, the value and the choices.
+fn word<T: Copy>(
+    b: &Builder,
+    field: &str,
+    value: &str,
+    valid: &[(&'static str, T)],
+) -> Result<T, SceneError> {
+    valid
+        .iter()
+        .find(|(name, _)| *name == value)
+        .map(|&(_, v)| v)
+        .ok_or_else(|| {
+            let names: Vec<String> = valid.iter().map(|(n, _)| format!("{n:?}")).collect();
+            b.field(
+                field,
+                format!("{:?}: expected one of {}", shorten(value), names.join(", ")),
+            )
+        })
+}
+
+impl Builder<'_> {
+    /// The texture a `texture` table at `field` describes, or `None` when it is disabled;
+    /// `warnings` gets a sentence when the texture is incomplete (it then textures nothing,
+    /// as in GL).
+    pub(super) fn texture(
+        &self,
+        field: &str,
+        spec: &TextureSpec,
+        warnings: &mut Vec<String>,
+    ) -> Result<Option<MeshTexture>, SceneError> {
+        let f = |name: &str| format!("{field}.{name}");
+        let (image, source) = match (&spec.image, &spec.builtin) {
+            (Some(_), Some(_)) => {
+                return Err(self.field(
+                    f("image"),
+                    "given with builtin: expected either an image file or a builtin",
+                ))
+            }
+            (Some(path), None) => (self.texture_file(&f("image"), path)?, path.display().to_string()),
+            (None, Some(name)) => {
+                let checker = word(self, &f("builtin"), name, &[("checker", ())])
+                    .map(|()| TextureImage::checker(64, 8, [235, 235, 235, 255], [40, 90, 160, 255]))?;
+                (
+                    checker.expect("a 64x64 checker is a valid texture"),
+                    format!("builtin {name}"),
+                )
+            }
+            (None, None) => {
+                return Err(self.field(
+                    field,
+                    "no image: expected image = \"file.png\" or builtin = \"checker\"",
+                ))
+            }
+        };
+        let mut image = image;
+        image.srgb = spec.srgb.unwrap_or(false);
+        if spec.generate_mipmap.unwrap_or(false) {
+            image = image.with_mipmaps();
+        }
+        // The words are the enums' own names, so the file format and messages cannot drift.
+        let wrap: Vec<(&'static str, Wrap)> = Wrap::ALL.iter().map(|&w| (w.name(), w)).collect();
+        let min: Vec<(&'static str, MinFilter)> = MinFilter::ALL.iter().map(|&m| (m.name(), m)).collect();
+        let mag = [("nearest", MagFilter::Nearest), ("linear", MagFilter::Linear)];
+        let defaults = Sampling::default();
+        let sampling = Sampling {
+            min_filter: spec
+                .min_filter
+                .as_deref()
+                .map_or(Ok(defaults.min_filter), |v| word(self, &f("min_filter"), v, &min))?,
+            mag_filter: spec
+                .mag_filter
+                .as_deref()
+                .map_or(Ok(defaults.mag_filter), |v| word(self, &f("mag_filter"), v, &mag))?,
+            wrap_s: spec
+                .wrap_s
+                .as_deref()
+                .map_or(Ok(defaults.wrap_s), |v| word(self, &f("wrap_s"), v, &wrap))?,
+            wrap_t: spec
+                .wrap_t
+                .as_deref()
+                .map_or(Ok(defaults.wrap_t), |v| word(self, &f("wrap_t"), v, &wrap))?,
+        };
+        let modes: Vec<(&'static str, TexEnvMode)> = TexEnvMode::ALL.iter().map(|&m| (m.name(), m)).collect();
+        let unit = TextureUnit {
+            enabled: spec.enabled.unwrap_or(true),
+            env_mode: spec
+                .env
+                .as_deref()
+                .map_or(Ok(TexEnvMode::Modulate), |v| word(self, &f("env"), v, &modes))?,
+            env_color: match &spec.env_color {
+                Some(c) => self.color(&f("env_color"), c)?,
+                None => Vec4::ZERO,
+            },
+            matrix: self.texture_matrix(field, spec)?,
+        };
+        unit.validate().map_err(self.state(field))?;
+        if !unit.enabled {
+            return Ok(None);
+        }
+        let texture = MeshTexture {
+            image: Arc::new(image),
+            sampling,
+            unit,
+            source,
+        };
+        if !texture.applies() {
+            warnings.push(format!(
+                "{field}: min_filter {:?} reads mipmaps and generate_mipmap is off, so the texture is incomplete and textures nothing, as in GL: expected generate_mipmap = true or min_filter = \"linear\" or \"nearest\"",
+                sampling.min_filter.name()
+            ));
+        }
+        Ok(Some(texture))
+    }
+
+    fn texture_matrix(&self, field: &str, spec: &TextureSpec) -> Result<Mat4, SceneError> {
+        let f = |name: &str| format!("{field}.{name}");
+        if let Some(m) = spec.matrix {
+            if spec.scale.is_some() || spec.rotate.is_some() || spec.translate.is_some() {
+                return Err(self.field(
+                    f("matrix"),
+                    "given with scale/rotate/translate: expected either a matrix or those",
+                ));
+            }
+            self.finite(&f("matrix"), &m)?;
+            return Ok(Mat4::from_cols_array(&m));
+        }
+        let s = spec.scale.unwrap_or([1.0, 1.0]);
+        let r = spec.rotate.unwrap_or(0.0);
+        let t = spec.translate.unwrap_or([0.0, 0.0]);
+        self.finite(&f("scale"), &s)?;
+        self.finite(&f("rotate"), &[r])?;
+        self.finite(&f("translate"), &t)?;
+        Ok(Mat4::from_translation(Vec3::new(t[0], t[1], 0.0))
+            * Mat4::from_quat(Quat::from_rotation_z(r.to_radians()))
+            * Mat4::from_scale(Vec3::new(s[0], s[1], 1.0)))
+    }
+
+    /// A PNG or JPEG file as an RGBA8 texture, rows as stored (the file's first row at t = 0).
+    fn texture_file(&self, field: &str, path: &Path) -> Result<TextureImage, SceneError> {
+        let full = self.path.parent().unwrap_or(Path::new("")).join(path);
+        let bytes = crate::files::read_regular(&full, MAX_IMAGE_BYTES)
+            .map_err(|e| self.field(field, format!("cannot read {}: {e}", full.display())))?;
+        let reader = || {
+            image::ImageReader::new(std::io::Cursor::new(&bytes[..]))
+                .with_guessed_format()
+                .map_err(|e| self.field(field, format!("{}: {e}", full.display())))
+        };
+        // The size first, from the header: a huge image is refused before it is decoded.
+        let (width, height) = reader()?.into_dimensions().map_err(|e| {
+            self.field(
+                field,
+                format!("{}: cannot decode (ffvk reads PNG and JPEG): {e}", full.display()),
+            )
+        })?;
+        if width == 0 || height == 0 || width > MAX_TEXTURE_SIZE || height > MAX_TEXTURE_SIZE {
+            return Err(self.field(
+                field,
+                format!(
+                    "{}: {width}x{height} texels: expected each side in 1..={MAX_TEXTURE_SIZE}",
+                    full.display()
+                ),
+            ));
+        }
+        let decoded = reader()?
+            .decode()
+            .map_err(|e| {
+                self.field(
+                    field,
+                    format!("{}: cannot decode (ffvk reads PNG and JPEG): {e}", full.display()),
+                )
+            })?
+            .into_rgba8();
+        let (w, h) = decoded.dimensions();
+        TextureImage::new(w, h, decoded.into_raw())
+            .map_err(|e| self.field(field, format!("{}: {e}", full.display())))
+    }
+}

@@ -1,0 +1,487 @@
+//! Physical device choice (lavapipe by default) and the logical device with one graphics queue.
+
+use std::ffi::CStr;
+use std::sync::{Arc, Mutex};
+
+use ash::{ext, vk};
+
+use super::instance::Instance;
+use super::memory::{choose_memory_type, Allocator, MemoryUsage, MemoryUse};
+use crate::error::{vk_error, Error, Result};
+
+/// What `ffvk info` prints and benchmarks record.
+#[derive(Debug, Clone)]
+#[non_exhaustive]
+pub struct DeviceInfo {
+    /// `deviceName`, e.g. `llvmpipe (LLVM …)` for lavapipe; what
+    /// [`RendererOptions::device`](crate::RendererOptions::device) is matched against.
+    pub name: String,
+    /// `VkPhysicalDeviceType` as ash's `Debug` spells it, e.g. `CPU` or `DISCRETE_GPU`.
+    pub device_type: String,
+    /// `driverName` (`VkPhysicalDeviceDriverProperties`), e.g. `llvmpipe`.
+    pub driver_name: String,
+    /// `driverInfo`: the driver's own version text (the Mesa version for lavapipe).
+    pub driver_info: String,
+    /// The device's Vulkan version, `major.minor.patch`; at least 1.3.
+    pub api_version: String,
+    /// `vendorID`: the PCI vendor ID, or a Khronos-assigned one for non-PCI drivers.
+    pub vendor_id: u32,
+    /// `deviceID`, vendor-specific.
+    pub device_id: u32,
+    /// `maxImageDimension2D`: the largest frame width or height, in pixels.
+    pub max_image_dimension_2d: u32,
+    /// `maxUniformBufferRange`: the largest uniform block a descriptor can see, in bytes.
+    pub max_uniform_buffer_range: u32,
+    /// `minUniformBufferOffsetAlignment`, in bytes: the per-draw uniform blocks sit at
+    /// multiples of it (and of 16).
+    pub min_uniform_buffer_offset_alignment: u64,
+    /// `maxVertexOutputComponents`: scalar outputs a vertex shader may pass on; the
+    /// per-vertex modes pass up to four colors.
+    pub max_vertex_output_components: u32,
+    /// `timestampPeriod`: nanoseconds per timestamp tick.
+    pub timestamp_period_ns: f32,
+    /// Meaningful bits of the graphics queue's timestamps (0: no timestamps).
+    pub timestamp_valid_bits: u32,
+    /// Whether the graphics queue writes timestamps; without them
+    /// [`FrameStats::gpu_ns`](crate::FrameStats::gpu_ns) is `None`.
+    pub timestamps_supported: bool,
+    /// Whether `pipelineStatisticsQuery` is available (ffvk enables it when it is); without
+    /// it [`FrameStats::pipeline`](crate::FrameStats::pipeline) is `None`.
+    pub pipeline_statistics_query: bool,
+    /// `provokingVertexLast` of `VK_EXT_provoking_vertex`, which GL's flat shading needs:
+    /// always true, since [`Device::new`] refuses a device without it.
+    pub provoking_vertex_last: bool,
+    /// Whether the validation layer is active on the instance.
+    pub validation: bool,
+}
+
+/// A logical device and what ffvk knows about it: either ffvk's own (opened by
+/// [`Device::new`], with its instance and one graphics queue, destroyed when the last `Arc`
+/// goes) or a caller's (wrapped by [`Device::from_caller`], never destroyed by ffvk).
+pub struct Device {
+    pub(crate) raw: ash::Device,
+    pub(crate) memory: vk::PhysicalDeviceMemoryProperties,
+    pub(crate) limits: vk::PhysicalDeviceLimits,
+    /// Where every buffer and image of this device gets its memory.
+    allocator: Mutex<Allocator>,
+    pub(crate) info: DeviceInfo,
+    /// What only ffvk's own device has; `None` for a caller's device.
+    pub(crate) own: Option<OwnDevice>,
+}
+
+/// The instance and queue of a device ffvk opened itself.
+pub(crate) struct OwnDevice {
+    pub(crate) instance: Arc<Instance>,
+    pub(crate) queue: vk::Queue,
+    pub(crate) queue_family: u32,
+}
+
+/// A memory type chosen for a use ([`Device::memory_choices`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct MemoryChoice {
+    /// The memory type's index.
+    pub index: u32,
+    /// Its property flags.
+    pub flags: vk::MemoryPropertyFlags,
+    /// The size of its heap, in bytes.
+    pub heap_bytes: u64,
+}
+
+/// The device features a caller enabled on its own device, as it tells
+/// [`Device::from_caller`] (Vulkan cannot be asked which features a device was created with).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[non_exhaustive]
+pub struct EnabledFeatures {
+    /// `dynamicRendering` (Vulkan 1.3 core): required; ffvk's pipelines render without render
+    /// passes.
+    pub dynamic_rendering: bool,
+    /// `provokingVertexLast` of `VK_EXT_provoking_vertex` (with the extension enabled): needed
+    /// for the `flat` lighting mode, whose triangles take their last vertex's color as in GL.
+    pub provoking_vertex_last: bool,
+}
+
+with_fields!(EnabledFeatures {
+    /// Sets [`dynamic_rendering`](EnabledFeatures::dynamic_rendering).
+    with_dynamic_rendering => dynamic_rendering: bool,
+    /// Sets [`provoking_vertex_last`](EnabledFeatures::provoking_vertex_last).
+    with_provoking_vertex_last => provoking_vertex_last: bool,
+});
+
+fn device_name(props: &vk::PhysicalDeviceProperties) -> String {
+    props
+        .device_name_as_c_str()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default()
+}
+
+impl Device {
+    /// Opens the device whose name contains `requested` (case-insensitive), or lavapipe
+    /// ("llvmpipe") by default, or else the first device.
+    pub fn new(instance: Arc<Instance>, requested: Option<&str>) -> Result<Arc<Self>> {
+        let vki = &instance.raw;
+        // SAFETY: the instance is alive for the duration of the call.
+        let physicals =
+            unsafe { vki.enumerate_physical_devices() }.map_err(vk_error("vkEnumeratePhysicalDevices"))?;
+        let named: Vec<(vk::PhysicalDevice, String)> = physicals
+            .iter()
+            // SAFETY: each handle comes from the enumeration above.
+            .map(|&p| (p, device_name(&unsafe { vki.get_physical_device_properties(p) })))
+            .collect();
+        let available = if named.is_empty() {
+            "none".to_owned()
+        } else {
+            named
+                .iter()
+                .map(|(_, n)| n.as_str())
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        let wanted = requested.unwrap_or("llvmpipe").to_lowercase();
+        let pick = named
+            .iter()
+            .find(|(_, n)| n.to_lowercase().contains(&wanted))
+            .or_else(|| if requested.is_none() { named.first() } else { None });
+        let Some(&(physical, _)) = pick else {
+            return Err(Error::NoDevice {
+                requested: requested.map(|r| format!(" named {r:?}")).unwrap_or_default(),
+                available,
+            });
+        };
+
+        // SAFETY: physical is a valid handle from this instance.
+        let (props, memory, families) = unsafe {
+            (
+                vki.get_physical_device_properties(physical),
+                vki.get_physical_device_memory_properties(physical),
+                vki.get_physical_device_queue_family_properties(physical),
+            )
+        };
+        require_vulkan_1_3(&props)?;
+        let queue_family = families
+            .iter()
+            .position(|f| f.queue_flags.contains(vk::QueueFlags::GRAPHICS))
+            .ok_or_else(|| Error::MissingFeature("a graphics queue".into()))?
+            as u32;
+        let timestamp_valid_bits = families[queue_family as usize].timestamp_valid_bits;
+
+        // Features: dynamic rendering (1.3), last-vertex provoking convention (GL's flat
+        // shading), pipeline statistics (benchmarks).
+        // SAFETY: physical comes from this instance's enumeration.
+        let supported = unsafe { Supported::query(vki, physical) };
+        let pipeline_statistics_query = supported.pipeline_statistics_query;
+        if !supported.dynamic_rendering || !supported.synchronization2 {
+            return Err(Error::MissingFeature(
+                "dynamicRendering and synchronization2".into(),
+            ));
+        }
+        // SAFETY: physical is valid.
+        let extensions = unsafe { vki.enumerate_device_extension_properties(physical) }
+            .map_err(vk_error("vkEnumerateDeviceExtensionProperties"))?;
+        let has_provoking = extensions.iter().any(|e| {
+            e.extension_name_as_c_str()
+                .is_ok_and(|n| n == ext::provoking_vertex::NAME)
+        });
+        let provoking_vertex_last = has_provoking && supported.provoking_vertex_last;
+        if !provoking_vertex_last {
+            return Err(Error::MissingFeature(
+                "VK_EXT_provoking_vertex with provokingVertexLast (GL's flat shading takes the last vertex)"
+                    .into(),
+            ));
+        }
+
+        let info = describe(
+            &props,
+            &supported,
+            timestamp_valid_bits,
+            pipeline_statistics_query,
+            provoking_vertex_last,
+            instance.validation_enabled(),
+        );
+
+        let priorities = [1.0f32];
+        let queues = [vk::DeviceQueueCreateInfo::default()
+            .queue_family_index(queue_family)
+            .queue_priorities(&priorities)];
+        let extension_names = [ext::provoking_vertex::NAME.as_ptr()];
+        let mut enable_v13 = vk::PhysicalDeviceVulkan13Features::default()
+            .dynamic_rendering(true)
+            .synchronization2(true);
+        let mut enable_provoking =
+            vk::PhysicalDeviceProvokingVertexFeaturesEXT::default().provoking_vertex_last(true);
+        let base = vk::PhysicalDeviceFeatures::default().pipeline_statistics_query(pipeline_statistics_query);
+        let create = vk::DeviceCreateInfo::default()
+            .queue_create_infos(&queues)
+            .enabled_extension_names(&extension_names)
+            .enabled_features(&base)
+            .push_next(&mut enable_v13)
+            .push_next(&mut enable_provoking);
+        // SAFETY: the create info and everything it points to live until the call returns.
+        let raw =
+            unsafe { vki.create_device(physical, &create, None) }.map_err(vk_error("vkCreateDevice"))?;
+        // SAFETY: the queue family and index 0 were requested above.
+        let queue = unsafe { raw.get_device_queue(queue_family, 0) };
+
+        let own = OwnDevice {
+            instance,
+            queue,
+            queue_family,
+        };
+        Ok(Device::assemble(raw, memory, &props, &supported, info, Some(own)))
+    }
+
+    /// Wraps a device the caller created and keeps: ffvk creates its objects on it and frees
+    /// them, and never destroys the device, submits to its queues or waits on it. Fails with
+    /// [`Error::MissingFeature`] when the device is older than Vulkan 1.3, when `enabled`
+    /// lacks dynamic rendering, or when it claims a feature the device does not support.
+    ///
+    /// # Safety
+    ///
+    /// `device` was created from `physical_device` of `instance` with the features `enabled`
+    /// says, and stays alive until every ffvk object made from the returned `Arc` is dropped.
+    pub unsafe fn from_caller(
+        instance: &ash::Instance,
+        physical_device: vk::PhysicalDevice,
+        device: ash::Device,
+        enabled: EnabledFeatures,
+    ) -> Result<Arc<Self>> {
+        // SAFETY: the caller's contract: physical_device belongs to instance.
+        let (props, memory) = unsafe {
+            (
+                instance.get_physical_device_properties(physical_device),
+                instance.get_physical_device_memory_properties(physical_device),
+            )
+        };
+        require_vulkan_1_3(&props)?;
+        // SAFETY: the caller's contract: physical_device belongs to instance.
+        let supported = unsafe { Supported::query(instance, physical_device) };
+        if !enabled.dynamic_rendering {
+            return Err(Error::NotEnabled {
+                feature: "dynamicRendering",
+                flag: "dynamic_rendering",
+                needed_for: "every ffvk pipeline needs (they render without render passes)",
+            });
+        }
+        if !supported.dynamic_rendering {
+            return Err(Error::MissingFeature("dynamicRendering".into()));
+        }
+        if enabled.provoking_vertex_last && !supported.provoking_vertex_last {
+            return Err(Error::MissingFeature(
+                "VK_EXT_provoking_vertex with provokingVertexLast (EnabledFeatures::provoking_vertex_last says it is enabled)"
+                    .into(),
+            ));
+        }
+        let info = describe(&props, &supported, 0, false, enabled.provoking_vertex_last, false);
+        Ok(Device::assemble(device, memory, &props, &supported, info, None))
+    }
+
+    /// The device value of either constructor, with its allocator.
+    fn assemble(
+        raw: ash::Device,
+        memory: vk::PhysicalDeviceMemoryProperties,
+        props: &vk::PhysicalDeviceProperties,
+        supported: &Supported,
+        info: DeviceInfo,
+        own: Option<OwnDevice>,
+    ) -> Arc<Self> {
+        let allocator = Allocator::new(
+            memory,
+            props.limits.buffer_image_granularity,
+            supported.max_memory_allocation_size,
+        );
+        Arc::new(Device {
+            raw,
+            memory,
+            limits: props.limits,
+            allocator: Mutex::new(allocator),
+            info,
+            own,
+        })
+    }
+
+    /// The instance and queue of ffvk's own device. Only the renderer submits, and it
+    /// always opens its own device.
+    pub(crate) fn own(&self) -> &OwnDevice {
+        self.own
+            .as_ref()
+            .expect("the renderer opens its own device; a caller's device has no ffvk queue")
+    }
+
+    /// What ffvk found out about the device when it opened it.
+    pub fn info(&self) -> &DeviceInfo {
+        &self.info
+    }
+
+    /// The allocator every buffer and image of this device takes its memory from.
+    pub(crate) fn allocator(&self) -> std::sync::MutexGuard<'_, Allocator> {
+        // A panic while the lock was held leaves the allocator's books as they were before
+        // the call that panicked (it changes them only after the driver succeeded).
+        self.allocator
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner())
+    }
+
+    /// For each use, the memory type a resource that allows every type would get (`None`
+    /// where no type is acceptable). What `ffvk info` prints.
+    pub fn memory_choices(&self) -> Vec<(MemoryUse, Option<MemoryChoice>)> {
+        [
+            MemoryUse::Gpu,
+            MemoryUse::Uniforms,
+            MemoryUse::Staging,
+            MemoryUse::Readback,
+        ]
+        .into_iter()
+        .map(|usage| {
+            let chosen = choose_memory_type(&self.memory, !0, usage).map(|index| {
+                let t = self.memory.memory_types[index as usize];
+                MemoryChoice {
+                    index,
+                    flags: t.property_flags,
+                    heap_bytes: self.memory.memory_heaps[t.heap_index as usize].size,
+                }
+            });
+            (usage, chosen)
+        })
+        .collect()
+    }
+
+    /// How much device memory ffvk holds on this device, and how much of it is in use.
+    pub fn memory_usage(&self) -> MemoryUsage {
+        self.allocator().usage()
+    }
+
+    /// Waits until the device is idle.
+    pub(crate) fn wait_idle(&self) -> Result<()> {
+        // SAFETY: the device is alive; no other thread submits to its queue (the renderer
+        // owns the only queue and takes &mut self to submit).
+        unsafe { self.raw.device_wait_idle() }.map_err(vk_error("vkDeviceWaitIdle"))
+    }
+}
+
+impl Drop for Device {
+    fn drop(&mut self) {
+        if self.own.is_some() {
+            // SAFETY: the device is alive and every child holding an Arc of it is gone; no
+            // submitted work may use the memory freed next.
+            let _ = unsafe { self.raw.device_wait_idle() };
+        }
+        // Every allocation holds the device, so none is left, and their owners kept the GPU
+        // off them before dropping them (on a caller's device, the caller's contract): the
+        // blocks go back first, on the caller's device too.
+        let allocator = self
+            .allocator
+            .get_mut()
+            .unwrap_or_else(|poisoned| poisoned.into_inner());
+        allocator.free_all(&self.raw);
+        if self.own.is_none() {
+            // The caller's device: the caller destroys it.
+            return;
+        }
+        // SAFETY: every child holds an Arc<Device>, so none is left, and the device is idle
+        // (waited for above).
+        unsafe { self.raw.destroy_device(None) };
+    }
+}
+
+/// What a physical device supports of what ffvk uses, and its driver's name and version.
+struct Supported {
+    dynamic_rendering: bool,
+    synchronization2: bool,
+    /// The feature bit only; the extension must be listed too.
+    provoking_vertex_last: bool,
+    pipeline_statistics_query: bool,
+    driver_name: String,
+    driver_info: String,
+    /// Vulkan 1.1's maxMemoryAllocationSize.
+    max_memory_allocation_size: u64,
+}
+
+impl Supported {
+    /// # Safety
+    ///
+    /// `physical` belongs to `instance`.
+    unsafe fn query(instance: &ash::Instance, physical: vk::PhysicalDevice) -> Supported {
+        let mut provoking = vk::PhysicalDeviceProvokingVertexFeaturesEXT::default();
+        let mut v13 = vk::PhysicalDeviceVulkan13Features::default();
+        let mut features = vk::PhysicalDeviceFeatures2::default()
+            .push_next(&mut v13)
+            .push_next(&mut provoking);
+        let mut driver = vk::PhysicalDeviceDriverProperties::default();
+        let mut v11 = vk::PhysicalDeviceVulkan11Properties::default();
+        let mut props2 = vk::PhysicalDeviceProperties2::default()
+            .push_next(&mut driver)
+            .push_next(&mut v11);
+        // SAFETY: the chained structs live until the calls return; the caller vouches for
+        // the handle.
+        unsafe {
+            instance.get_physical_device_features2(physical, &mut features);
+            instance.get_physical_device_properties2(physical, &mut props2);
+        }
+        let pipeline_statistics_query = features.features.pipeline_statistics_query == vk::TRUE;
+        let cstr = |bytes: &[std::ffi::c_char]| {
+            // SAFETY: the driver properties hold NUL-terminated strings within their arrays.
+            unsafe { CStr::from_ptr(bytes.as_ptr()) }
+                .to_string_lossy()
+                .into_owned()
+        };
+        Supported {
+            dynamic_rendering: v13.dynamic_rendering == vk::TRUE,
+            synchronization2: v13.synchronization2 == vk::TRUE,
+            provoking_vertex_last: provoking.provoking_vertex_last == vk::TRUE,
+            pipeline_statistics_query,
+            driver_name: cstr(&driver.driver_name),
+            driver_info: cstr(&driver.driver_info),
+            max_memory_allocation_size: v11.max_memory_allocation_size,
+        }
+    }
+}
+
+/// What `ffvk info` shows of a physical device.
+fn describe(
+    props: &vk::PhysicalDeviceProperties,
+    supported: &Supported,
+    timestamp_valid_bits: u32,
+    pipeline_statistics_query: bool,
+    provoking_vertex_last: bool,
+    validation: bool,
+) -> DeviceInfo {
+    DeviceInfo {
+        name: device_name(props),
+        device_type: format!("{:?}", props.device_type),
+        driver_name: supported.driver_name.clone(),
+        driver_info: supported.driver_info.clone(),
+        api_version: version_string(props.api_version),
+        vendor_id: props.vendor_id,
+        device_id: props.device_id,
+        max_image_dimension_2d: props.limits.max_image_dimension2_d,
+        max_uniform_buffer_range: props.limits.max_uniform_buffer_range,
+        min_uniform_buffer_offset_alignment: props.limits.min_uniform_buffer_offset_alignment,
+        max_vertex_output_components: props.limits.max_vertex_output_components,
+        timestamp_period_ns: props.limits.timestamp_period,
+        timestamp_valid_bits,
+        timestamps_supported: timestamp_valid_bits > 0,
+        pipeline_statistics_query,
+        provoking_vertex_last,
+        validation,
+    }
+}
+
+/// ffvk's pipelines need Vulkan 1.3 (dynamic rendering, synchronization2 in core).
+fn require_vulkan_1_3(props: &vk::PhysicalDeviceProperties) -> Result<()> {
+    if props.api_version < vk::API_VERSION_1_3 {
+        return Err(Error::MissingFeature(format!(
+            "Vulkan 1.3 (the device offers {})",
+            version_string(props.api_version)
+        )));
+    }
+    Ok(())
+}
+
+pub(crate) fn version_string(v: u32) -> String {
+    format!(
+        "{}.{}.{}",
+        vk::api_version_major(v),
+        vk::api_version_minor(v),
+        vk::api_version_patch(v)
+    )
+}

@@ -1,0 +1,953 @@
+//! The outputs of a run: results.csv, results.json and summary.md (the plots are in
+//! [`super::plots`]).
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use serde::Serialize;
+
+use super::measure::Spread;
+use super::sweep::{sphere_counts, BenchMode, Engine, Group, LightKind, Point, Variant, GL_MODES};
+use super::{BenchReport, BenchResult, DrawCost};
+use crate::table::{Align, Table};
+use crate::{write_file, Error, Result};
+
+// ---------------------------------------------------------------------------------------------
+// The files.
+
+/// The CSV columns, in order.
+pub const CSV_COLUMNS: [&str; 37] = [
+    "group",
+    "engine",
+    "mode",
+    "variant",
+    "stacks",
+    "vertices",
+    "triangles",
+    "width",
+    "height",
+    "pixels",
+    "lights",
+    "light_kind",
+    "local_viewer",
+    "draws",
+    "warmup",
+    "frames",
+    "time_ms",
+    "gpu_ms_median",
+    "gpu_ms_min",
+    "gpu_ms_p25",
+    "gpu_ms_p75",
+    "gpu_ms_max",
+    "wall_ms_median",
+    "wall_ms_min",
+    "wall_ms_p25",
+    "wall_ms_p75",
+    "wall_ms_max",
+    "first_frame_ms",
+    "vs_invocations",
+    "fs_invocations",
+    "clipping_primitives",
+    "lp_num_threads",
+    "device",
+    "driver_info",
+    "mesa_version",
+    "optimized_build",
+    "malloc_no_trim",
+];
+
+fn csv_field(s: &str) -> String {
+    if s.contains([',', '"', '\n']) {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s.to_string()
+    }
+}
+
+/// The results as CSV: a header of [`CSV_COLUMNS`] and one row per point.
+pub fn csv(report: &BenchReport) -> String {
+    let mut out = CSV_COLUMNS.join(",");
+    out.push('\n');
+    let num = |v: f64| format!("{v:.4}");
+    let opt_spread = |s: Option<Spread>| match s {
+        Some(s) => [s.median, s.min, s.p25, s.p75, s.max].map(num),
+        None => std::array::from_fn(|_| String::new()),
+    };
+    let opt = |v: Option<u64>| v.map_or(String::new(), |v| v.to_string());
+    for r in &report.results {
+        let p = &r.point;
+        let s = &r.stats;
+        let w = s.wall_ms;
+        let mut row: Vec<String> = vec![
+            serde_name(&p.group),
+            serde_name(&p.engine),
+            p.mode.name().into(),
+            p.variant.name().into(),
+            p.stacks.to_string(),
+            p.vertices.to_string(),
+            p.triangles.to_string(),
+            p.width.to_string(),
+            p.height.to_string(),
+            p.pixels.to_string(),
+            p.lights.to_string(),
+            p.light_kind.name().into(),
+            p.local_viewer.to_string(),
+            p.draws.to_string(),
+            s.warmup.to_string(),
+            s.frames.to_string(),
+            num(s.time_ms),
+        ];
+        row.extend(opt_spread(s.gpu_ms));
+        row.extend([w.median, w.min, w.p25, w.p75, w.max].map(num));
+        row.extend([
+            num(s.first_frame_ms),
+            opt(s.vs_invocations),
+            opt(s.fs_invocations),
+            opt(s.clipping_primitives),
+            r.lp_num_threads.clone(),
+            r.device.clone(),
+            r.driver_info.clone(),
+            r.mesa_version.clone(),
+            report.env.optimized_build.to_string(),
+            report.sweep.malloc_no_trim.to_string(),
+        ]);
+        debug_assert_eq!(row.len(), CSV_COLUMNS.len());
+        out.push_str(&row.iter().map(|f| csv_field(f)).collect::<Vec<_>>().join(","));
+        out.push('\n');
+    }
+    out
+}
+
+/// The serde name of a unit enum variant ("density", "ffvk").
+fn serde_name<T: Serialize>(value: &T) -> String {
+    match serde_json::to_value(value) {
+        Ok(serde_json::Value::String(s)) => s,
+        _ => String::new(),
+    }
+}
+
+/// Writes results.csv, results.json, summary.md and the plots into `dir` (created when
+/// missing); returns the paths written.
+pub fn write_outputs(report: &BenchReport, dir: &Path) -> Result<Vec<PathBuf>> {
+    std::fs::create_dir_all(dir).map_err(|source| Error::Write {
+        path: dir.to_path_buf(),
+        source,
+    })?;
+    let mut written = Vec::new();
+    let path = dir.join("results.csv");
+    write_file(&path, csv(report).as_bytes())?;
+    written.push(path);
+    let path = dir.join("results.json");
+    let json = serde_json::to_string_pretty(report).map_err(|source| Error::Json {
+        path: path.clone(),
+        source,
+    })?;
+    write_file(&path, json.as_bytes())?;
+    written.push(path);
+    let path = dir.join("summary.md");
+    write_file(&path, markdown(report).as_bytes())?;
+    written.push(path);
+    written.extend(super::plots::write_all(report, dir)?);
+    Ok(written)
+}
+
+// ---------------------------------------------------------------------------------------------
+// summary.md: the environment and one table per sweep, from rows of data.
+
+/// "1 directional light", "4 directional lights".
+pub(super) fn lights_text(n: usize) -> String {
+    format!("{n} directional light{}", if n == 1 { "" } else { "s" })
+}
+
+fn ms(v: f64) -> String {
+    if v >= 100.0 {
+        format!("{v:.0}")
+    } else if v >= 10.0 {
+        format!("{v:.1}")
+    } else {
+        format!("{v:.2}")
+    }
+}
+
+/// "median (p25–p75)" of a result's main time.
+fn cell(r: Option<&BenchResult>) -> String {
+    match r {
+        None => "–".into(),
+        Some(r) => {
+            let s = r.stats.gpu_ms.unwrap_or(r.stats.wall_ms);
+            format!("{} ({}–{})", ms(r.stats.time_ms), ms(s.p25), ms(s.p75))
+        }
+    }
+}
+
+fn find(results: &[BenchResult], keep: impl Fn(&Point) -> bool) -> Option<&BenchResult> {
+    results.iter().find(|r| keep(&r.point))
+}
+
+pub(super) fn count(n: f64) -> String {
+    if n >= 1e6 {
+        format!("{:.2} M", n / 1e6)
+    } else if n >= 1e3 {
+        format!("{:.1} k", n / 1e3)
+    } else {
+        format!("{n:.0}")
+    }
+}
+
+/// "–" for nothing, else the ratio to two decimals.
+fn ratio(r: Option<f64>) -> String {
+    r.map_or("–".into(), |r| format!("{r:.2}"))
+}
+
+/// "–" for nothing, else the count.
+fn count_or_dash(n: Option<u64>) -> String {
+    n.map_or("–".into(), |n| count(n as f64))
+}
+
+/// The tables of a run, as Markdown (written to summary.md and quoted in BENCHMARKS.md).
+pub fn markdown(report: &BenchReport) -> String {
+    let c = &report.sweep;
+    let has_gl = report.results.iter().any(|r| r.point.engine == Engine::Gl);
+    let mut m = format!("### Environment\n\n{}\n", environment(report).markdown());
+    m.push_str(if c.batch {
+        "Times are per frame in ms: the median, then the interquartile range; ffvk's from \
+         timestamps between frames recorded back to back in one submission, GL's from \
+         GL_TIME_ELAPSED around each frame's clear and draws (the host clock around the draws \
+         and glFinish where the driver has no timer queries).\n"
+    } else {
+        "Times are per frame in ms: the median, then the interquartile range; ffvk's from \
+         timestamps around the rendering pass, GL's from the host clock around the draw and \
+         glFinish.\n"
+    });
+    let sections = [
+        (
+            format!(
+                "Time against vertex count ({}² image, {})",
+                c.base_size,
+                lights_text(c.base_lights)
+            ),
+            density_table(report, has_gl),
+        ),
+        (
+            format!(
+                "Time against pixel count ({} vertices, {})",
+                sphere_counts(c.size_stacks).0,
+                lights_text(c.base_lights)
+            ),
+            size_table(report),
+        ),
+        (
+            format!(
+                "Light count: specialized pipelines against the uber-shader ({} vertices, {}², \
+                 directional lights)",
+                sphere_counts(c.base_stacks).0,
+                c.base_size
+            ),
+            light_count_table(report, has_gl),
+        ),
+        (
+            format!(
+                "Light kind ({} lights of one kind, {} vertices, {}²)",
+                c.kind_lights,
+                sphere_counts(c.base_stacks).0,
+                c.base_size
+            ),
+            light_kind_table(report, has_gl),
+        ),
+    ];
+    for (title, table) in sections {
+        let _ = write!(m, "\n### {title}\n\n{}", table.markdown());
+    }
+    if !report.summary.costs.is_empty() {
+        let _ = write!(
+            m,
+            "\n### What a vertex, a pixel and a light cost\n\n{}\n{}\n",
+            costs_table(report).markdown(),
+            COSTS_NOTE
+        );
+    }
+    if let Some(d) = &report.draw_cost {
+        let _ = write!(
+            m,
+            "\n### Recording draws (host)\n\n{}\n{}\n",
+            draw_cost_table(d).markdown(),
+            draw_cost_note(d)
+        );
+    }
+
+    let s = &report.summary;
+    let gl_name = report.env.gl_renderer.as_deref();
+    let _ = writeln!(m, "\n### Summary\n");
+    let _ = writeln!(
+        m,
+        "- vertex and fragment mode cost the same at about {} ({}² image)",
+        s.crossover_vertices
+            .map_or("— (no crossing in this sweep)".into(), |v| format!(
+                "{} vertices",
+                count(v)
+            )),
+        c.base_size
+    );
+    let _ = writeln!(
+        m,
+        "- with {} vertices they cost the same at about {}",
+        sphere_counts(c.size_stacks).0,
+        s.crossover_pixels
+            .map_or("— (no crossing in this sweep)".into(), |p| format!(
+                "{} pixels ({:.0}²)",
+                count(p),
+                p.sqrt()
+            ))
+    );
+    for (mode, g) in &s.specialization_speedup {
+        let _ = writeln!(
+            m,
+            "- {mode} mode: the uber-shader takes {g:.2}× the time of specialized pipelines (geometric mean)"
+        );
+    }
+    let _ = writeln!(m, "- ffvk's default: Specialize::{}", s.default_specialize);
+    if let Some(g) = s.gl_vertex_ratio_geomean {
+        let basis = if s.gl_ratios.iter().any(|r| r.gl_gpu_ms.is_some()) {
+            "GPU time"
+        } else {
+            "host time"
+        };
+        let _ = writeln!(
+            m,
+            "- ffvk vertex mode ÷ the GL driver's fixed-function GL{} ({basis} per frame, geometric mean over {} scenes): {g:.2}",
+            gl_name.map(|n| format!(" ({n})")).unwrap_or_default(),
+            s.gl_ratios.iter().filter(|r| r.mode == BenchMode::Vertex).count()
+        );
+    }
+    m
+}
+
+const COSTS_NOTE: &str = "Least-squares slopes of the sweeps above, in ns: per vertex drawn \
+(density sweep, vertices × draws per frame), per pixel drawn (size sweep, pixels × draws), per \
+light enabled (light sweep) and per light and evaluation of the equation (that slope over the \
+vertices shaded in vertex and flat mode, the fragments shaded in fragment mode); \"fixed\" is \
+the density fit's intercept, an estimate of a frame without geometry. Straight lines through \
+sweeps whose counts grow geometrically follow the largest points: where time is not linear in \
+the count (lavapipe's small frames), read them as rough. Unlit rows show what the pipeline \
+costs without lighting.";
+
+/// The fitted costs of each engine and mode.
+fn costs_table(report: &BenchReport) -> Table {
+    let mut t = Table::new([
+        ("engine", Align::Left),
+        ("mode", Align::Left),
+        ("ns / vertex", Align::Right),
+        ("ns / pixel", Align::Right),
+        ("ns / light", Align::Right),
+        ("ns / light / evaluation", Align::Right),
+        ("fixed ms", Align::Right),
+    ]);
+    // Three significant digits or so, whatever the scale (rounded first, so that a fit's
+    // 99.9999 reads 100).
+    let ns = |v: Option<f64>| match v.map(|v| (v * 1e3).round() / 1e3) {
+        None => "—".to_string(),
+        Some(v) if v.abs() >= 100.0 => format!("{v:.0}"),
+        Some(v) if v.abs() >= 1.0 => format!("{v:.2}"),
+        Some(v) => format!("{v:.3}"),
+    };
+    for c in &report.summary.costs {
+        t.row([
+            match c.engine {
+                Engine::Ffvk => "ffvk".to_string(),
+                Engine::Gl => "GL".to_string(),
+            },
+            c.mode.name().to_string(),
+            ns(c.ns_per_vertex),
+            ns(c.ns_per_pixel),
+            ns(c.ns_per_light),
+            ns(c.ns_per_light_evaluation),
+            c.fixed_ns.map_or("—".to_string(), |v| format!("{:.3}", v / 1e6)),
+        ]);
+    }
+    t
+}
+
+/// The machine, the drivers, the sweep and the build: one row each, then the notes.
+/// The recording cost: medians with their interquartile range.
+fn draw_cost_table(d: &DrawCost) -> Table {
+    let mut t = Table::new([
+        ("", Align::Left),
+        ("median", Align::Right),
+        ("25–75%", Align::Right),
+    ]);
+    let row = |t: &mut Table, what: String, s: &Spread, digits: usize| {
+        t.row([
+            what,
+            format!("{:.*}", digits, s.median),
+            format!("{:.*}–{:.*}", digits, s.p25, digits, s.p75),
+        ])
+    };
+    row(
+        &mut t,
+        format!(
+            "one warm draw with a state change, µs ({} draws a frame, {} frames)",
+            d.draws, d.frames
+        ),
+        &d.warm_us_per_draw,
+        3,
+    );
+    row(
+        &mut t,
+        "of which packing the state (DrawBlock::new), µs".into(),
+        &d.pack_us_per_draw,
+        3,
+    );
+    row(
+        &mut t,
+        "a new specialization key: creating its pipeline, ms".into(),
+        &d.new_key_create_ms,
+        2,
+    );
+    row(
+        &mut t,
+        "a new specialization key: extra time of its first frame, ms".into(),
+        &d.new_key_first_draw_ms,
+        2,
+    );
+    t
+}
+
+/// What dominates the warm draw.
+fn draw_cost_note(d: &DrawCost) -> String {
+    let (all, pack) = (d.warm_us_per_draw.median, d.pack_us_per_draw.median);
+    let share = if all > 0.0 { 100.0 * pack / all } else { 0.0 };
+    format!(
+        "Packing the GL state (normal matrix, clip conversion, the lights' eye-space values) is \
+         {share:.0}% of a warm draw; the rest is writing the block into the frame slot, finding \
+         the pipeline and recording five commands into the driver's command buffer."
+    )
+}
+
+fn environment(report: &BenchReport) -> Table {
+    let e = &report.env;
+    let c = &report.sweep;
+    let mut rows = vec![
+        ("device", format!("{} ({})", e.device, e.driver)),
+        (
+            "driver",
+            // Mesa's driver_info already names its version; other drivers' is their own.
+            if e.mesa_version.is_empty() || e.driver_info.contains(&e.mesa_version) {
+                e.driver_info.clone()
+            } else {
+                format!("{} (Mesa {})", e.driver_info, e.mesa_version)
+            },
+        ),
+    ];
+    if let (Some(r), Some(v)) = (&e.gl_renderer, &e.gl_version) {
+        rows.push(("GL anchor", format!("{r}, GL {v} (EGL)")));
+    }
+    let heap = if c.malloc_no_trim {
+        "freed memory kept (--malloc-no-trim: glibc M_TRIM_THRESHOLD = max, M_TOP_PAD = 256 MiB)"
+    } else {
+        "glibc defaults (freed memory trimmed)"
+    };
+    let load = |l: Option<f64>| l.map_or("?".into(), |l| format!("{l:.2}"));
+    let build = if e.optimized_build {
+        "optimized"
+    } else {
+        "debug (numbers not representative)"
+    };
+    if e.uses_lp_threads() {
+        rows.push(("LP_NUM_THREADS", e.lp_num_threads.clone()));
+    }
+    rows.extend([
+        ("heap", heap.into()),
+        ("CPU", format!("{} ({} CPUs)", e.cpu, e.cpus)),
+        (
+            "load average (1 min)",
+            format!("{} before, {} after", load(e.load_before), load(e.load_after)),
+        ),
+        (
+            "sweep",
+            format!(
+                "{} — {} warm-up + {} measured frames per point{}; image {}² but in the size \
+                 sweep; {} vertices in the size sweep, {} in the light sweeps{}",
+                c.name,
+                c.warmup,
+                c.frames,
+                if c.batch { " (in one submission)" } else { "" },
+                c.base_size,
+                sphere_counts(c.size_stacks).0,
+                sphere_counts(c.base_stacks).0,
+                if c.draws > 1 {
+                    format!("; {} draws of the mesh per frame, each lit in full", c.draws)
+                } else {
+                    String::new()
+                }
+            ),
+        ),
+        (
+            "build",
+            format!(
+                "ffvk {}, {build}{}",
+                e.ffvk_version,
+                if e.validation { ", validation layer on" } else { "" }
+            ),
+        ),
+    ]);
+    rows.extend(report.notes.iter().map(|n| ("note", n.clone())));
+
+    let mut t = Table::new([("", Align::Left), ("", Align::Left)]);
+    for (key, value) in rows {
+        t.row([key.to_string(), value]);
+    }
+    t
+}
+
+/// Time against vertex count: ffvk's modes and vertex-shader invocations, then GL's modes and
+/// the ratio of ffvk's vertex mode to GL's.
+fn density_table(report: &BenchReport, has_gl: bool) -> Table {
+    let spec = Variant::Specialized;
+    let mut t = Table::new(
+        ["vertices", "triangles"]
+            .into_iter()
+            .chain(BenchMode::ALL.map(BenchMode::name))
+            .chain(["VS invocations (vertex)"])
+            .map(|h| (h, Align::Right)),
+    );
+    if has_gl {
+        for h in ["GL smooth", "GL flat", "GL unlit", "ffvk vertex ÷ GL"] {
+            t.column(h, Align::Right);
+        }
+    }
+    for &stacks in &report.sweep.stacks {
+        let at = |engine, mode, variant| {
+            find(&report.results, |p| {
+                p.group == Group::Density
+                    && p.stacks == stacks
+                    && p.engine == engine
+                    && p.mode == mode
+                    && p.variant == variant
+            })
+        };
+        let (v, triangles) = sphere_counts(stacks);
+        let mut row = vec![count(v as f64), count(triangles as f64)];
+        row.extend(BenchMode::ALL.map(|mode| cell(at(Engine::Ffvk, mode, spec))));
+        row.push(count_or_dash(
+            at(Engine::Ffvk, BenchMode::Vertex, spec).and_then(|r| r.stats.vs_invocations),
+        ));
+        if has_gl {
+            row.extend(GL_MODES.map(|mode| cell(at(Engine::Gl, mode, Variant::FixedFunction))));
+            let gl = report
+                .summary
+                .gl_ratios
+                .iter()
+                .find(|r| r.group == Group::Density && r.mode == BenchMode::Vertex && r.vertices == v);
+            row.push(ratio(gl.map(|r| r.ratio)));
+        }
+        t.row(row);
+    }
+    t
+}
+
+/// Time against pixel count: ffvk's modes and fragment-shader invocations.
+fn size_table(report: &BenchReport) -> Table {
+    let mut t = Table::new(
+        ["image", "pixels"]
+            .into_iter()
+            .chain(BenchMode::ALL.map(BenchMode::name))
+            .chain(["FS invocations (fragment)"])
+            .map(|h| (h, Align::Right)),
+    );
+    for &size in &report.sweep.sizes {
+        let at = |mode| {
+            find(&report.results, |p| {
+                p.group == Group::Size
+                    && p.width == size
+                    && p.engine == Engine::Ffvk
+                    && p.mode == mode
+                    && p.variant == Variant::Specialized
+            })
+        };
+        let mut row = vec![format!("{size}²"), count(size as f64 * size as f64)];
+        row.extend(BenchMode::ALL.map(|mode| cell(at(mode))));
+        row.push(count_or_dash(
+            at(BenchMode::Fragment).and_then(|r| r.stats.fs_invocations),
+        ));
+        t.row(row);
+    }
+    t
+}
+
+/// Time against light count: vertex and fragment mode, specialized and uber, and GL's smooth
+/// shading.
+fn light_count_table(report: &BenchReport, has_gl: bool) -> Table {
+    let mut t = Table::new(
+        [
+            "lights",
+            "vertex specialized",
+            "vertex uber",
+            "uber ÷ spec.",
+            "fragment specialized",
+            "fragment uber",
+            "uber ÷ spec.",
+        ]
+        .map(|h| (h, Align::Right)),
+    );
+    if has_gl {
+        for h in ["GL smooth", "ffvk vertex ÷ GL"] {
+            t.column(h, Align::Right);
+        }
+    }
+    for &lights in &report.sweep.light_counts {
+        let at = |engine, mode, variant| {
+            find(&report.results, |p| {
+                p.group == Group::Lights
+                    && p.lights == lights
+                    && p.engine == engine
+                    && p.mode == mode
+                    && p.variant == variant
+            })
+        };
+        let mut row = vec![lights.to_string()];
+        for mode in [BenchMode::Vertex, BenchMode::Fragment] {
+            let s = at(Engine::Ffvk, mode, Variant::Specialized);
+            let u = at(Engine::Ffvk, mode, Variant::Uber);
+            let uber = s.zip(u).map(|(s, u)| u.stats.time_ms / s.stats.time_ms);
+            row.extend([cell(s), cell(u), ratio(uber)]);
+        }
+        if has_gl {
+            let g = at(Engine::Gl, BenchMode::Vertex, Variant::FixedFunction);
+            let gl = report
+                .summary
+                .gl_ratios
+                .iter()
+                .find(|r| r.group == Group::Lights && r.lights == lights);
+            row.extend([cell(g), ratio(gl.map(|r| r.ratio))]);
+        }
+        t.row(row);
+    }
+    t
+}
+
+/// Time against light kind and viewer: vertex and fragment mode, specialized and uber, and
+/// GL's smooth shading.
+fn light_kind_table(report: &BenchReport, has_gl: bool) -> Table {
+    let mut t = Table::new([("lights", Align::Left), ("viewer", Align::Left)]);
+    for h in [
+        "vertex specialized",
+        "vertex uber",
+        "fragment specialized",
+        "fragment uber",
+    ] {
+        t.column(h, Align::Right);
+    }
+    if has_gl {
+        for h in ["GL smooth", "ffvk vertex ÷ GL"] {
+            t.column(h, Align::Right);
+        }
+    }
+    // What a lighting variant costs: its specialized time over its GL form's.
+    for h in ["vertex vs GL form", "fragment vs GL form"] {
+        t.column(h, Align::Right);
+    }
+    for &kind in &report.sweep.kinds {
+        for local in [false, true] {
+            let at = |engine, mode, variant| {
+                find(&report.results, |p| {
+                    p.group == Group::Kind
+                        && p.light_kind == kind
+                        && p.local_viewer == local
+                        && p.engine == engine
+                        && p.mode == mode
+                        && p.variant == variant
+                })
+            };
+            let viewer = if local { "local" } else { "infinite" };
+            let mut row = vec![kind.name().to_string(), viewer.to_string()];
+            for mode in [BenchMode::Vertex, BenchMode::Fragment] {
+                for variant in [Variant::Specialized, Variant::Uber] {
+                    row.push(cell(at(Engine::Ffvk, mode, variant)));
+                }
+            }
+            if has_gl {
+                let g = at(Engine::Gl, BenchMode::Vertex, Variant::FixedFunction);
+                let f = at(Engine::Ffvk, BenchMode::Vertex, Variant::Specialized);
+                let gl = f
+                    .zip(g)
+                    .map(|(f, g)| f.stats.wall_ms.median / g.stats.wall_ms.median);
+                row.extend([cell(g), ratio(gl)]);
+            }
+            for mode in [BenchMode::Vertex, BenchMode::Fragment] {
+                let time = |kind: LightKind| {
+                    find(&report.results, |p| {
+                        p.group == Group::Kind
+                            && p.light_kind == kind
+                            && p.local_viewer == local
+                            && p.engine == Engine::Ffvk
+                            && p.mode == mode
+                            && p.variant == Variant::Specialized
+                    })
+                    .map(|p| p.stats.wall_ms.median)
+                };
+                let cost = kind.gl_form().and_then(|form| Some(time(kind)? / time(form)?));
+                row.push(ratio(cost));
+            }
+            t.row(row);
+        }
+    }
+    t
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bench::{points, summarize, BenchEnv, LightKind, PointStats, SweepConfig};
+
+    /// Made-up times that grow with vertices, pixels and lights, the uber-shader and GL slower;
+    /// vertex and fragment mode cross in the density and the size sweep.
+    fn fake_time(p: &Point) -> f64 {
+        let lights = 1.0 + p.lights as f64;
+        let (per_vertex, per_pixel) = match p.mode {
+            BenchMode::Vertex => (4e-3 * lights, 2e-4),
+            BenchMode::Fragment => (1e-4, 1e-3 * lights),
+            BenchMode::Flat => (3e-4 * lights, 2e-4),
+            BenchMode::Unlit => (1e-4, 2e-4),
+        };
+        let kind = match p.light_kind.gl_form().unwrap_or(p.light_kind) {
+            LightKind::Directional => 1.0,
+            LightKind::Point => 1.05,
+            _ => 1.1,
+        };
+        let viewer = if p.local_viewer { 1.02 } else { 1.0 };
+        // A lighting variant costs 20 % more than its GL form.
+        let variant = if p.light_kind.gl_form().is_some() {
+            1.2
+        } else {
+            1.0
+        };
+        let t =
+            (0.05 + per_vertex * p.vertices as f64 + per_pixel * p.pixels as f64) * kind * viewer * variant;
+        match p.variant {
+            Variant::Specialized => t,
+            Variant::Uber => t * 1.25,
+            Variant::FixedFunction => t * 1.5,
+        }
+    }
+
+    /// A report of the tiny sweep with [`fake_time`]s: no device needed.
+    pub(crate) fn synthetic_report() -> BenchReport {
+        let sweep = SweepConfig::tiny();
+        let env = BenchEnv {
+            lp_num_threads: "2".into(),
+            device: "llvmpipe (LLVM 15.0.6, 256 bits)".into(),
+            driver: "llvmpipe".into(),
+            driver_info: "Mesa 22.3.6 (LLVM 15.0.6)".into(),
+            mesa_version: "22.3.6".into(),
+            vulkan_api: "1.3.230".into(),
+            gl_renderer: Some("llvmpipe (LLVM 15.0.6, 256 bits)".into()),
+            gl_version: Some("2.1 Mesa 22.3.6".into()),
+            cpu: "Some CPU".into(),
+            cpus: 2,
+            ffvk_version: "0.1.0".into(),
+            optimized_build: true,
+            validation: false,
+            load_before: Some(0.5),
+            load_after: None,
+        };
+        let results: Vec<BenchResult> = points(&sweep)
+            .into_iter()
+            .map(|point| {
+                let t = fake_time(&point);
+                let spread = Spread {
+                    median: t,
+                    min: t * 0.9,
+                    p25: t * 0.95,
+                    p75: t * 1.05,
+                    max: t * 1.2,
+                };
+                let ffvk = point.engine == Engine::Ffvk;
+                BenchResult {
+                    stats: PointStats {
+                        warmup: sweep.warmup,
+                        frames: sweep.frames,
+                        first_frame_ms: 10.0 * t,
+                        gpu_ms: ffvk.then_some(spread),
+                        wall_ms: Spread {
+                            median: t * 1.1,
+                            ..spread
+                        },
+                        time_ms: t,
+                        vs_invocations: ffvk.then_some(point.vertices),
+                        fs_invocations: ffvk.then_some(point.pixels / 2),
+                        clipping_primitives: ffvk.then_some(point.triangles),
+                    },
+                    point,
+                    lp_num_threads: env.lp_num_threads.clone(),
+                    device: env.device.clone(),
+                    driver_info: env.driver_info.clone(),
+                    mesa_version: env.mesa_version.clone(),
+                }
+            })
+            .collect();
+        let summary = summarize(&results);
+        BenchReport {
+            env,
+            sweep,
+            results,
+            summary,
+            draw_cost: None,
+            notes: vec!["a note".into()],
+        }
+    }
+
+    /// summary.md of [`synthetic_report`], to the character.
+    const SYNTHETIC_SUMMARY: &str = r#"### Environment
+
+| | |
+| --- | --- |
+| device | llvmpipe (LLVM 15.0.6, 256 bits) (llvmpipe) |
+| driver | Mesa 22.3.6 (LLVM 15.0.6) |
+| GL anchor | llvmpipe (LLVM 15.0.6, 256 bits), GL 2.1 Mesa 22.3.6 (EGL) |
+| LP_NUM_THREADS | 2 |
+| heap | glibc defaults (freed memory trimmed) |
+| CPU | Some CPU (2 CPUs) |
+| load average (1 min) | 0.50 before, ? after |
+| sweep | tiny — 1 warm-up + 2 measured frames per point; image 24² but in the size sweep; 66 vertices in the size sweep, 91 in the light sweeps |
+| build | ffvk 0.1.0, optimized |
+| note | a note |
+
+Times are per frame in ms: the median, then the interquartile range; ffvk's from timestamps around the rendering pass, GL's from the host clock around the draw and glFinish.
+
+### Time against vertex count (24² image, 1 directional light)
+
+| vertices | triangles | vertex | fragment | flat | unlit | VS invocations (vertex) | GL smooth | GL flat | GL unlit | ffvk vertex ÷ GL |
+| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |
+| 45 | 48 | 0.53 (0.50–0.55) | 1.21 (1.15–1.27) | 0.19 (0.18–0.20) | 0.17 (0.16–0.18) | 45 | 0.79 (0.75–0.83) | 0.29 (0.27–0.30) | 0.25 (0.24–0.27) | 0.67 |
+| 153 | 224 | 1.39 (1.32–1.46) | 1.22 (1.16–1.28) | 0.26 (0.24–0.27) | 0.18 (0.17–0.19) | 153 | 2.08 (1.98–2.19) | 0.39 (0.37–0.40) | 0.27 (0.26–0.28) | 0.67 |
+
+### Time against pixel count (66 vertices, 1 directional light)
+
+| image | pixels | vertex | fragment | flat | unlit | FS invocations (fragment) |
+| ---: | ---: | ---: | ---: | ---: | ---: | ---: |
+| 16² | 256 | 0.63 (0.60–0.66) | 0.57 (0.54–0.60) | 0.14 (0.13–0.15) | 0.11 (0.10–0.11) | 128 |
+| 32² | 1.0 k | 0.78 (0.74–0.82) | 2.10 (2.00–2.21) | 0.29 (0.28–0.31) | 0.26 (0.25–0.27) | 512 |
+
+### Light count: specialized pipelines against the uber-shader (91 vertices, 24², directional lights)
+
+| lights | vertex specialized | vertex uber | uber ÷ spec. | fragment specialized | fragment uber | uber ÷ spec. | GL smooth | ffvk vertex ÷ GL |
+| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |
+| 1 | 0.89 (0.85–0.94) | 1.12 (1.06–1.17) | 1.25 | 1.21 (1.15–1.27) | 1.51 (1.44–1.59) | 1.25 | 1.34 (1.27–1.41) | 0.67 |
+| 2 | 1.26 (1.19–1.32) | 1.57 (1.49–1.65) | 1.25 | 1.79 (1.70–1.88) | 2.23 (2.12–2.35) | 1.25 | 1.89 (1.79–1.98) | 0.67 |
+
+### Light kind (2 lights of one kind, 91 vertices, 24²)
+
+| lights | viewer | vertex specialized | vertex uber | fragment specialized | fragment uber | GL smooth | ffvk vertex ÷ GL | vertex vs GL form | fragment vs GL form |
+| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |
+| directional | infinite | 1.26 (1.19–1.32) | 1.57 (1.49–1.65) | 1.79 (1.70–1.88) | 2.23 (2.12–2.35) | 1.89 (1.79–1.98) | 0.67 | – | – |
+| directional | local | 1.28 (1.22–1.35) | 1.60 (1.52–1.68) | 1.82 (1.73–1.91) | 2.28 (2.16–2.39) | 1.92 (1.83–2.02) | 0.67 | – | – |
+| spot | infinite | 1.38 (1.31–1.45) | 1.73 (1.64–1.82) | 1.97 (1.87–2.06) | 2.46 (2.33–2.58) | 2.07 (1.97–2.18) | 0.67 | – | – |
+| spot | local | 1.41 (1.34–1.48) | 1.76 (1.68–1.85) | 2.01 (1.90–2.11) | 2.51 (2.38–2.63) | 2.12 (2.01–2.22) | 0.67 | – | – |
+| spot_smoothstep | infinite | 1.66 (1.58–1.74) | 2.07 (1.97–2.18) | 2.36 (2.24–2.48) | 2.95 (2.80–3.10) | – | – | 1.20 | 1.20 |
+| spot_smoothstep | local | 1.69 (1.61–1.78) | 2.12 (2.01–2.22) | 2.41 (2.29–2.53) | 3.01 (2.86–3.16) | – | – | 1.20 | 1.20 |
+
+### What a vertex, a pixel and a light cost
+
+| engine | mode | ns / vertex | ns / pixel | ns / light | ns / light / evaluation | fixed ms |
+| --- | --- | ---: | ---: | ---: | ---: | ---: |
+| ffvk | vertex | 8000 | 200 | 364000 | 4000 | 0.165 |
+| ffvk | fragment | 100 | 2000 | 576000 | 2000 | 1.202 |
+| ffvk | flat | 600 | 200 | — | — | 0.165 |
+| ffvk | unlit | 100 | 200 | — | — | 0.165 |
+| GL | vertex | 12000 | 300 | 546000 | — | 0.248 |
+| GL | flat | 900 | 300 | — | — | 0.248 |
+| GL | unlit | 150 | 300 | — | — | 0.248 |
+
+Least-squares slopes of the sweeps above, in ns: per vertex drawn (density sweep, vertices × draws per frame), per pixel drawn (size sweep, pixels × draws), per light enabled (light sweep) and per light and evaluation of the equation (that slope over the vertices shaded in vertex and flat mode, the fragments shaded in fragment mode); "fixed" is the density fit's intercept, an estimate of a frame without geometry. Straight lines through sweeps whose counts grow geometrically follow the largest points: where time is not linear in the count (lavapipe's small frames), read them as rough. Unlit rows show what the pipeline costs without lighting.
+
+### Summary
+
+- vertex and fragment mode cost the same at about 129 vertices (24² image)
+- with 66 vertices they cost the same at about 291 pixels (17²)
+- fragment mode: the uber-shader takes 1.25× the time of specialized pipelines (geometric mean)
+- vertex mode: the uber-shader takes 1.25× the time of specialized pipelines (geometric mean)
+- ffvk's default: Specialize::auto (specialized pipelines)
+- ffvk vertex mode ÷ the GL driver's fixed-function GL (llvmpipe (LLVM 15.0.6, 256 bits)) (host time per frame, geometric mean over 10 scenes): 0.67
+"#;
+
+    #[test]
+    fn markdown_of_a_synthetic_report() {
+        let m = markdown(&synthetic_report());
+        for (line, (actual, expected)) in m.lines().zip(SYNTHETIC_SUMMARY.lines()).enumerate() {
+            assert_eq!(actual, expected, "line {}", line + 1);
+        }
+        assert_eq!(m, SYNTHETIC_SUMMARY);
+    }
+
+    #[test]
+    fn the_fitted_costs_are_the_slopes_fake_time_was_made_of() {
+        // fake_time: ffvk vertex mode costs 4e-3 ms × (1 + lights) per vertex and 2e-4 ms per
+        // pixel over 0.05 ms; the density and size sweeps have 1 light, the light sweep 91
+        // vertices (6 stacks) at 24² = 576 pixels.
+        let report = synthetic_report();
+        let c = |engine, mode| {
+            report
+                .summary
+                .costs
+                .iter()
+                .find(|c| c.engine == engine && c.mode == mode)
+                .unwrap()
+                .clone()
+        };
+        let close =
+            |a: Option<f64>, b: f64| assert!(a.is_some_and(|a| (a - b).abs() < 1e-6 * b), "{a:?} vs {b}");
+        let vertex = c(Engine::Ffvk, BenchMode::Vertex);
+        close(vertex.ns_per_vertex, 4e-3 * 2.0 * 1e6);
+        close(vertex.ns_per_pixel, 2e-4 * 1e6);
+        close(vertex.ns_per_light, 4e-3 * 91.0 * 1e6);
+        // Per evaluation: the 91 vertices the pipeline statistics say were shaded.
+        close(vertex.ns_per_light_evaluation, 4e-3 * 1e6);
+        close(vertex.fixed_ns, (0.05 + 2e-4 * 576.0) * 1e6);
+        // Fragment mode: 1e-3 ms × (1 + lights) per pixel, fs_invocations = pixels / 2.
+        let fragment = c(Engine::Ffvk, BenchMode::Fragment);
+        close(fragment.ns_per_pixel, 1e-3 * 2.0 * 1e6);
+        close(fragment.ns_per_light_evaluation, 1e-3 * 576.0 * 1e6 / 288.0);
+        // GL: the same times × 1.5, no pipeline statistics.
+        let gl = c(Engine::Gl, BenchMode::Vertex);
+        close(gl.ns_per_vertex, 1.5 * 4e-3 * 2.0 * 1e6);
+        assert_eq!(gl.ns_per_light_evaluation, None);
+    }
+
+    #[test]
+    fn on_a_driver_that_is_not_mesa_the_environment_names_it_plainly() {
+        let mut report = synthetic_report();
+        report.env.device = "NVIDIA H100 80GB HBM3".into();
+        report.env.driver = "NVIDIA".into();
+        report.env.driver_info = "580.159.04".into();
+        report.env.mesa_version = String::new();
+        report.env.gl_renderer = Some("NVIDIA H100 80GB HBM3/PCIe/SSE2".into());
+        report.env.gl_version = Some("4.6.0 NVIDIA 580.159.04".into());
+        let m = markdown(&report);
+        assert!(m.contains("| driver | 580.159.04 |"), "{m}");
+        assert!(!m.contains("Mesa") && !m.contains("LP_NUM_THREADS"), "{m}");
+        assert!(
+            m.contains("÷ the GL driver's fixed-function GL (NVIDIA H100"),
+            "{m}"
+        );
+        // A Mesa driver whose driver_info does not name the version gets it added.
+        report.env.driver_info = "some build".into();
+        report.env.mesa_version = "25.1.0".into();
+        assert!(markdown(&report).contains("| driver | some build (Mesa 25.1.0) |"));
+    }
+
+    #[test]
+    fn without_gl_the_tables_have_no_gl_columns() {
+        let mut report = synthetic_report();
+        report.results.retain(|r| r.point.engine == Engine::Ffvk);
+        report.summary = summarize(&report.results);
+        let m = markdown(&report);
+        assert!(!m.contains("GL smooth") && !m.contains("÷ GL"), "{m}");
+        // Every line of a table has as many cells as its headings.
+        let tables: Vec<&str> = m.split("\n\n").filter(|b| b.starts_with('|')).collect();
+        assert_eq!(tables.len(), 6, "{m}");
+        for table in tables {
+            let cells: Vec<usize> = table.lines().map(|l| l.matches(" |").count()).collect();
+            assert!(cells.iter().all(|&n| n == cells[0]), "{table}");
+        }
+    }
+}

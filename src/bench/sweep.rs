@@ -1,0 +1,656 @@
+//! What a sweep measures: its configuration, the points it runs (modes, densities, image
+//! sizes, light counts and kinds, pipeline variants) and the scene of each point.
+
+use glam::{Mat4, Vec3, Vec4};
+use serde::Serialize;
+
+use crate::{Error, Result};
+use ffvk::gl::state::{
+    Attenuation, Cap, Face, GlState, LightModelParam, LightParam, LightingMode, LightingState, MaterialParam,
+    SpecularModel, SpotEdge,
+};
+
+/// A sweep: which points, how many frames each.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SweepConfig {
+    /// The sweep's name ("quick", "standard", "full", "tiny").
+    pub name: String,
+    /// Unmeasured frames first (at least one: it compiles what the point needs).
+    pub warmup: u32,
+    /// Measured frames per point (at least one).
+    pub frames: u32,
+    /// Densities of the density sweep, as sphere stacks (slices = 2 × stacks;
+    /// (2s + 1)(s + 1) vertices).
+    pub stacks: Vec<u32>,
+    /// Image sides of the size sweep (square images).
+    pub sizes: Vec<u32>,
+    /// Light counts of the light-count sweep (directional lights).
+    pub light_counts: Vec<usize>,
+    /// Light kinds of the light-kind sweep, each with an infinite and a local viewer.
+    pub kinds: Vec<LightKind>,
+    /// Lights in the light-kind sweep.
+    pub kind_lights: usize,
+    /// Directional lights in the density and size sweeps.
+    pub base_lights: usize,
+    /// The mesh of the light-count and light-kind sweeps.
+    pub base_stacks: u32,
+    /// The mesh of the size sweep: dense enough that per-vertex and per-fragment lighting
+    /// cross over within its image sizes.
+    pub size_stacks: u32,
+    /// The image side of every sweep but the size sweep.
+    pub base_size: u32,
+    /// Run the density and size sweeps with the uber-shader too (the light sweeps always
+    /// run both variants).
+    pub variants_everywhere: bool,
+    /// Draw the OpenGL anchor points (left out, with a note, when no GL driver is found).
+    pub gl: bool,
+    /// Whether the process keeps freed heap memory (`--malloc-no-trim`). [`run`](super::run)
+    /// sets the allocator up, process-wide; [`run_sweep`](super::run_sweep) only records this.
+    pub malloc_no_trim: bool,
+    /// Draws per frame of the recording-cost measurement, each with its own state.
+    pub record_draws: usize,
+    /// Draws of the point's sphere per frame, each a little nearer than the last so that
+    /// every one passes the depth test and is lit in full: work enough per frame that a
+    /// GPU's fixed cost per frame does not hide the lighting.
+    pub draws: u32,
+    /// Time the measured frames of a point in one submission ([`Renderer::measure_frames`]),
+    /// and GL's with GL_TIME_ELAPSED queries where the driver has them: GPU time without
+    /// submission and waiting, which on a GPU are larger than a frame's work.
+    ///
+    /// [`Renderer::measure_frames`]: ffvk::Renderer::measure_frames
+    pub batch: bool,
+    /// New specialization keys whose pipeline creation is timed (at most 16).
+    pub new_keys: usize,
+}
+
+impl SweepConfig {
+    /// About a minute on 2 cores.
+    pub fn quick() -> Self {
+        SweepConfig {
+            name: "quick".into(),
+            warmup: 2,
+            frames: 5,
+            stacks: vec![8, 32, 128, 512, 768],
+            sizes: vec![128, 256, 512, 1024],
+            light_counts: vec![1, 4, 8],
+            kinds: LightKind::ALL.to_vec(),
+            kind_lights: 4,
+            base_lights: 4,
+            base_stacks: 128,
+            size_stacks: 256,
+            base_size: 512,
+            variants_everywhere: false,
+            gl: true,
+            malloc_no_trim: false,
+            record_draws: 10_000,
+            new_keys: 8,
+            draws: 1,
+            batch: false,
+        }
+    }
+
+    /// The default: about 4 minutes on 2 cores, from 153 to 2.1 million vertices and from
+    /// 64² to 2048².
+    pub fn standard() -> Self {
+        SweepConfig {
+            name: "standard".into(),
+            warmup: 3,
+            frames: 11,
+            stacks: vec![8, 16, 32, 64, 128, 256, 512, 768, 1024],
+            sizes: vec![64, 128, 256, 512, 1024, 2048],
+            light_counts: vec![1, 2, 4, 8, 16],
+            base_stacks: 256,
+            size_stacks: 512,
+            ..SweepConfig::quick()
+        }
+    }
+
+    /// More of everything: about 25 minutes on 2 cores.
+    pub fn full() -> Self {
+        SweepConfig {
+            name: "full".into(),
+            warmup: 4,
+            frames: 17,
+            stacks: vec![8, 16, 32, 64, 128, 256, 384, 512, 768, 1024],
+            sizes: vec![64, 96, 128, 192, 256, 384, 512, 768, 1024, 1536, 2048],
+            light_counts: vec![1, 2, 3, 4, 6, 8, 12, 16],
+            variants_everywhere: true,
+            ..SweepConfig::standard()
+        }
+    }
+
+    /// A few tiny points, one or two frames each: proves the harness works (tests).
+    pub fn tiny() -> Self {
+        SweepConfig {
+            name: "tiny".into(),
+            warmup: 1,
+            frames: 2,
+            stacks: vec![4, 8],
+            sizes: vec![16, 32],
+            light_counts: vec![1, 2],
+            kinds: vec![LightKind::Directional, LightKind::Spot, LightKind::SpotSmoothstep],
+            kind_lights: 2,
+            base_lights: 1,
+            base_stacks: 6,
+            size_stacks: 5,
+            base_size: 24,
+            variants_everywhere: false,
+            gl: true,
+            malloc_no_trim: false,
+            record_draws: 200,
+            new_keys: 1,
+            draws: 1,
+            batch: false,
+        }
+    }
+
+    /// The sweep for GPUs (chosen for discrete, integrated and virtual GPUs): 16 draws per
+    /// frame, frames timed in batches, images up to 4096², up to 16 lights, 2.1 million
+    /// vertices per draw. A GPU runs the standard sweep's frames in tens of microseconds,
+    /// where the fixed cost of a frame is as large as its lighting.
+    pub fn gpu() -> Self {
+        SweepConfig {
+            name: "gpu".into(),
+            warmup: 20,
+            frames: 51,
+            stacks: vec![8, 16, 32, 64, 128, 256, 512, 1024],
+            sizes: vec![256, 512, 1024, 2048, 4096],
+            light_counts: vec![1, 2, 4, 8, 12, 16],
+            base_stacks: 128,
+            size_stacks: 128,
+            base_size: 1024,
+            draws: 16,
+            batch: true,
+            ..SweepConfig::standard()
+        }
+    }
+
+    /// [`SweepConfig::tiny`] the way the GPU sweep runs it: several draws per frame, frames
+    /// timed in batches (tests).
+    pub fn tiny_batched() -> Self {
+        SweepConfig {
+            name: "tiny-batched".into(),
+            draws: 3,
+            batch: true,
+            ..SweepConfig::tiny()
+        }
+    }
+    pub(super) fn validate(&self) -> Result<()> {
+        let bad = |what: String| Err(Error::Bench(what));
+        if !(1..=MAX_DRAWS).contains(&self.draws) {
+            return bad(format!(
+                "{} draws per frame: expected 1..={MAX_DRAWS}",
+                self.draws
+            ));
+        }
+        if self.batch && self.frames > ffvk::renderer::MAX_REPEAT {
+            return bad(format!(
+                "{} frames in one batch: expected at most {}",
+                self.frames,
+                ffvk::renderer::MAX_REPEAT
+            ));
+        }
+        if self.warmup == 0 || self.frames == 0 {
+            return bad(format!(
+                "warm-up {} and frames {}: expected at least 1 of each",
+                self.warmup, self.frames
+            ));
+        }
+        let max_lights = ffvk::gl::state::MAX_LIGHTS;
+        if let Some(n) = self
+            .light_counts
+            .iter()
+            .chain([&self.kind_lights, &self.base_lights])
+            .find(|&&n| n == 0 || n > max_lights)
+        {
+            return bad(format!("{n} lights: expected 1..={max_lights}"));
+        }
+        if let Some(s) = self
+            .sizes
+            .iter()
+            .chain([&self.base_size])
+            .find(|&&s| s == 0 || s > ffvk::scene::MAX_SIZE)
+        {
+            return bad(format!("image size {s}: expected 1..={}", ffvk::scene::MAX_SIZE));
+        }
+        if let Some(s) = self
+            .stacks
+            .iter()
+            .chain([&self.base_stacks, &self.size_stacks])
+            .find(|&&s| !(2..=2048).contains(&s))
+        {
+            return bad(format!("{s} sphere stacks: expected 2..=2048"));
+        }
+        Ok(())
+    }
+}
+
+/// The most draws per frame a sweep may ask for.
+pub const MAX_DRAWS: u32 = 256;
+
+/// Which sweep a point belongs to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Group {
+    /// Mesh density: time against vertices.
+    Density,
+    /// Image size: time against pixels.
+    Size,
+    /// Light count: time against directional lights.
+    Lights,
+    /// Light kind: directional, point or spot lights, infinite or local viewer.
+    Kind,
+}
+
+/// Who draws.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Engine {
+    /// ffvk on Vulkan.
+    Ffvk,
+    /// Fixed-function OpenGL through EGL (the GL reference renderer).
+    Gl,
+}
+
+/// Where the equation is evaluated, or nowhere.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum BenchMode {
+    /// Lit at each vertex, colors interpolated (GL's SMOOTH).
+    Vertex,
+    /// Lit at each fragment.
+    Fragment,
+    /// Lit at each vertex, each triangle in its last vertex's color (GL's FLAT).
+    Flat,
+    /// The same geometry with lighting off: the vertex color passes through (the floor).
+    Unlit,
+}
+
+impl BenchMode {
+    /// Every mode, in the order of the tables.
+    pub const ALL: [BenchMode; 4] = [
+        BenchMode::Vertex,
+        BenchMode::Fragment,
+        BenchMode::Flat,
+        BenchMode::Unlit,
+    ];
+
+    /// The mode's name in tables, plots and CSV.
+    pub fn name(self) -> &'static str {
+        match self {
+            BenchMode::Vertex => "vertex",
+            BenchMode::Fragment => "fragment",
+            BenchMode::Flat => "flat",
+            BenchMode::Unlit => "unlit",
+        }
+    }
+
+    fn lighting_mode(self) -> LightingMode {
+        match self {
+            BenchMode::Fragment => LightingMode::Fragment,
+            BenchMode::Flat => LightingMode::Flat,
+            BenchMode::Vertex | BenchMode::Unlit => LightingMode::Vertex,
+        }
+    }
+}
+
+/// Which pipelines drew the point.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Variant {
+    /// ffvk's pipelines specialized for the state ([`Specialize::Always`](ffvk::Specialize::Always)).
+    Specialized,
+    /// ffvk's uber-shader ([`Specialize::Never`](ffvk::Specialize::Never)).
+    Uber,
+    /// GL's own fixed-function pipeline.
+    FixedFunction,
+}
+
+impl Variant {
+    /// The variant's name in tables, plots and CSV.
+    pub fn name(self) -> &'static str {
+        match self {
+            Variant::Specialized => "specialized",
+            Variant::Uber => "uber",
+            Variant::FixedFunction => "fixed_function",
+        }
+    }
+}
+
+/// The kind of every light of a point: GL's three, and ffvk's lighting variants on them
+/// (what each variant costs is its time against its GL form's).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LightKind {
+    /// w = 0.
+    Directional,
+    /// w = 1, attenuated.
+    Point,
+    /// A point light with a 35° cone, exponent 8.
+    Spot,
+    /// Directional lights with Phong's (r_i ⊙ v)^s_rm specular term.
+    DirectionalPhong,
+    /// Point lights with glTF's inverse-square falloff and a range.
+    PointGltf,
+    /// The spot with a linear edge from 20° to 35° instead of the exponent.
+    SpotLinear,
+    /// The spot with a smoothstep edge from 20° to 35°.
+    SpotSmoothstep,
+}
+
+impl LightKind {
+    /// Every kind, in the order of the tables.
+    pub const ALL: [LightKind; 7] = [
+        LightKind::Directional,
+        LightKind::Point,
+        LightKind::Spot,
+        LightKind::DirectionalPhong,
+        LightKind::PointGltf,
+        LightKind::SpotLinear,
+        LightKind::SpotSmoothstep,
+    ];
+
+    /// The kind's name in tables and CSV.
+    pub fn name(self) -> &'static str {
+        match self {
+            LightKind::Directional => "directional",
+            LightKind::Point => "point",
+            LightKind::Spot => "spot",
+            LightKind::DirectionalPhong => "directional_phong",
+            LightKind::PointGltf => "point_gltf",
+            LightKind::SpotLinear => "spot_linear",
+            LightKind::SpotSmoothstep => "spot_smoothstep",
+        }
+    }
+
+    /// The GL kind a variant kind changes, `None` for GL's own (which GL draws too).
+    pub fn gl_form(self) -> Option<LightKind> {
+        match self {
+            LightKind::Directional | LightKind::Point | LightKind::Spot => None,
+            LightKind::DirectionalPhong => Some(LightKind::Directional),
+            LightKind::PointGltf => Some(LightKind::Point),
+            LightKind::SpotLinear | LightKind::SpotSmoothstep => Some(LightKind::Spot),
+        }
+    }
+}
+
+/// One measured configuration.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Point {
+    /// The sweep it belongs to.
+    pub group: Group,
+    /// Who draws it.
+    pub engine: Engine,
+    /// Where the equation is evaluated.
+    pub mode: BenchMode,
+    /// Which pipelines draw it.
+    pub variant: Variant,
+    /// Sphere stacks (slices are twice as many).
+    pub stacks: u32,
+    /// The sphere's vertices.
+    pub vertices: u64,
+    /// The sphere's triangles.
+    pub triangles: u64,
+    /// Image width.
+    pub width: u32,
+    /// Image height.
+    pub height: u32,
+    /// width × height.
+    pub pixels: u64,
+    /// Enabled lights (0 when unlit).
+    pub lights: usize,
+    /// The kind of every light.
+    pub light_kind: LightKind,
+    /// GL_LIGHT_MODEL_LOCAL_VIEWER.
+    pub local_viewer: bool,
+    /// Draws of the sphere per frame ([`SweepConfig::draws`]).
+    pub draws: u32,
+}
+
+impl Point {
+    pub(super) fn label(&self) -> String {
+        format!(
+            "{:?} {} {} {} {}v{} {}x{} {}×{}{}",
+            self.group,
+            match self.engine {
+                Engine::Ffvk => "ffvk",
+                Engine::Gl => "GL",
+            },
+            self.mode.name(),
+            self.variant.name(),
+            self.vertices,
+            if self.draws > 1 {
+                format!(" ×{}", self.draws)
+            } else {
+                String::new()
+            },
+            self.width,
+            self.height,
+            self.lights,
+            self.light_kind.name(),
+            if self.local_viewer { " local" } else { "" }
+        )
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The points of a sweep.
+
+pub(super) fn sphere_counts(stacks: u32) -> (u64, u64) {
+    let (slices, stacks) = (2 * stacks as u64, stacks as u64);
+    ((slices + 1) * (stacks + 1), slices * (2 * stacks - 2))
+}
+
+/// The modes of GL's points in the density and size sweeps (smooth, flat, unlit).
+pub(super) const GL_MODES: [BenchMode; 3] = [BenchMode::Vertex, BenchMode::Flat, BenchMode::Unlit];
+
+/// The points of `config`, in a stable order: density, size, lights, kind; GL after ffvk.
+pub fn points(config: &SweepConfig) -> Vec<Point> {
+    let mut out = Vec::new();
+    let base = |group, engine, mode, variant| {
+        let (vertices, triangles) = sphere_counts(config.base_stacks);
+        Point {
+            group,
+            engine,
+            mode,
+            variant,
+            stacks: config.base_stacks,
+            vertices,
+            triangles,
+            width: config.base_size,
+            height: config.base_size,
+            pixels: config.base_size as u64 * config.base_size as u64,
+            lights: if mode == BenchMode::Unlit {
+                0
+            } else {
+                config.base_lights
+            },
+            light_kind: LightKind::Directional,
+            local_viewer: false,
+            draws: config.draws,
+        }
+    };
+    let some_variants = |everywhere: bool| {
+        if everywhere {
+            vec![Variant::Specialized, Variant::Uber]
+        } else {
+            vec![Variant::Specialized]
+        }
+    };
+
+    for &stacks in &config.stacks {
+        let (vertices, triangles) = sphere_counts(stacks);
+        for mode in BenchMode::ALL {
+            for variant in some_variants(config.variants_everywhere) {
+                out.push(Point {
+                    stacks,
+                    vertices,
+                    triangles,
+                    ..base(Group::Density, Engine::Ffvk, mode, variant)
+                });
+            }
+        }
+        if config.gl {
+            for mode in GL_MODES {
+                out.push(Point {
+                    stacks,
+                    vertices,
+                    triangles,
+                    ..base(Group::Density, Engine::Gl, mode, Variant::FixedFunction)
+                });
+            }
+        }
+    }
+    for &size in &config.sizes {
+        let (vertices, triangles) = sphere_counts(config.size_stacks);
+        let sized = |p: Point| Point {
+            stacks: config.size_stacks,
+            vertices,
+            triangles,
+            width: size,
+            height: size,
+            pixels: size as u64 * size as u64,
+            ..p
+        };
+        for mode in BenchMode::ALL {
+            for variant in some_variants(config.variants_everywhere) {
+                out.push(sized(base(Group::Size, Engine::Ffvk, mode, variant)));
+            }
+        }
+        if config.gl {
+            for mode in GL_MODES {
+                out.push(sized(base(Group::Size, Engine::Gl, mode, Variant::FixedFunction)));
+            }
+        }
+    }
+    for &lights in &config.light_counts {
+        for mode in [BenchMode::Vertex, BenchMode::Fragment] {
+            for variant in [Variant::Specialized, Variant::Uber] {
+                out.push(Point {
+                    lights,
+                    ..base(Group::Lights, Engine::Ffvk, mode, variant)
+                });
+            }
+        }
+        if config.gl {
+            out.push(Point {
+                lights,
+                ..base(
+                    Group::Lights,
+                    Engine::Gl,
+                    BenchMode::Vertex,
+                    Variant::FixedFunction,
+                )
+            });
+        }
+    }
+    for &kind in &config.kinds {
+        for local_viewer in [false, true] {
+            let with_kind = |p: Point| Point {
+                lights: config.kind_lights,
+                light_kind: kind,
+                local_viewer,
+                ..p
+            };
+            for mode in [BenchMode::Vertex, BenchMode::Fragment] {
+                for variant in [Variant::Specialized, Variant::Uber] {
+                    out.push(with_kind(base(Group::Kind, Engine::Ffvk, mode, variant)));
+                }
+            }
+            // GL has no lighting variants to draw.
+            if config.gl && kind.gl_form().is_none() {
+                out.push(with_kind(base(
+                    Group::Kind,
+                    Engine::Gl,
+                    BenchMode::Vertex,
+                    Variant::FixedFunction,
+                )));
+            }
+        }
+    }
+    out
+}
+
+/// The lighting state of a point: `lights` lights of one kind around the view axis, white
+/// light split between them, a shiny material on both faces.
+pub fn point_state(point: &Point) -> Result<LightingState> {
+    let mut gl = GlState::new();
+    gl.lighting_mode(point.mode.lighting_mode());
+    if point.mode == BenchMode::Unlit {
+        return Ok(gl.lighting);
+    }
+    gl.enable(Cap::Lighting)?;
+    gl.light_model(LightModelParam::LocalViewer(point.local_viewer))?;
+    gl.material(
+        Face::FrontAndBack,
+        MaterialParam::Diffuse(Vec4::new(0.8, 0.7, 0.6, 1.0)),
+    )?;
+    gl.material(
+        Face::FrontAndBack,
+        MaterialParam::Specular(Vec4::new(0.6, 0.6, 0.6, 1.0)),
+    )?;
+    gl.material(Face::FrontAndBack, MaterialParam::Shininess(32.0))?;
+    let n = point.lights.max(1);
+    let share = 1.0 / n as f32;
+    for i in 0..point.lights {
+        let a = std::f32::consts::TAU * i as f32 / n as f32;
+        let (s, c) = a.sin_cos();
+        gl.enable(Cap::Light(i))?;
+        gl.light(i, LightParam::Diffuse(Vec4::new(share, share, share, 1.0)))?;
+        gl.light(i, LightParam::Specular(Vec4::new(share, share, share, 1.0)))?;
+        // Eye space (the modelview is the identity here): the sphere's center is at z = -2.6.
+        let local = Vec3::new(1.6 * c, 1.6 * s, -1.0);
+        let kind = point.light_kind.gl_form().unwrap_or(point.light_kind);
+        match kind {
+            LightKind::Directional => {
+                gl.light(i, LightParam::Position(Vec4::new(0.6 * c, 0.6 * s, 1.0, 0.0)))?;
+            }
+            _ => {
+                gl.light(i, LightParam::Position(local.extend(1.0)))?;
+                gl.light(i, LightParam::ConstantAttenuation(1.0))?;
+                gl.light(i, LightParam::LinearAttenuation(0.05))?;
+                gl.light(i, LightParam::QuadraticAttenuation(0.02))?;
+            }
+        }
+        if kind == LightKind::Spot {
+            gl.light(i, LightParam::SpotDirection(Vec3::new(0.0, 0.0, -2.6) - local))?;
+            gl.light(i, LightParam::SpotCutoff(35.0))?;
+            gl.light(i, LightParam::SpotExponent(8.0))?;
+        }
+        match point.light_kind {
+            LightKind::DirectionalPhong => {
+                gl.light_model(LightModelParam::SpecularModel(SpecularModel::PhongReflect))?;
+            }
+            LightKind::PointGltf => gl.light(
+                i,
+                LightParam::Attenuation(Attenuation::GltfInverseSquare { range: Some(6.0) }),
+            )?,
+            LightKind::SpotLinear => gl.light(
+                i,
+                LightParam::SpotEdge(SpotEdge::LinearInnerOuter { inner_degrees: 20.0 }),
+            )?,
+            LightKind::SpotSmoothstep => gl.light(
+                i,
+                LightParam::SpotEdge(SpotEdge::SmoothstepInnerOuter { inner_degrees: 20.0 }),
+            )?,
+            _ => {}
+        }
+    }
+    Ok(gl.lighting)
+}
+
+/// The modelview of each of the point's draws and the GL projection (square image). Draw
+/// `i` sits `i` × 1/1024 nearer than the first: drawn back to front, each passes GL_LESS and
+/// is lit in full, while the image stays the one sphere's.
+pub(super) fn matrices(point: &Point) -> (Vec<Mat4>, Mat4) {
+    let aspect = point.width as f32 / point.height as f32;
+    let modelviews = (0..point.draws.max(1))
+        .map(|i| Mat4::from_translation(Vec3::new(0.0, 0.0, -2.6 + i as f32 / 1024.0)))
+        .collect();
+    (
+        modelviews,
+        Mat4::perspective_rh_gl(45f32.to_radians(), aspect, 0.5, 10.0),
+    )
+}
+
+pub(super) const CLEAR: Vec4 = Vec4::new(0.1, 0.1, 0.12, 1.0);

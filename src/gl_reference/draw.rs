@@ -1,0 +1,688 @@
+//! The GL side: a scene's state and draws as legacy GL calls, the readback, and the timing
+//! loop. Everything here runs with a context current on this thread and the framebuffer
+//! object bound ([`super::egl::with_context`]).
+
+use std::ffi::c_void;
+use std::time::Instant;
+
+use ffvk::gl::state::{Cap, ColorControl, ColorMaterialMode, Face, Light, LightingMode, Material};
+use ffvk::gl::texture::{MagFilter, MinFilter, Sampling, TexEnvMode, TextureImage, TextureUnit, Wrap};
+use ffvk::mesh::{MeshData, Vertex};
+
+use super::bindings::types::{GLenum, GLint, GLsizei, GLsizeiptr, GLuint};
+use super::bindings::{self as gl, Gl};
+use super::egl::{drain_errors, gl_string, has_extension, version_number};
+use super::error::{DrawError, GlError};
+use super::{GlCall, GlDraw, GlInfo, GlScene, GlTiming};
+
+/// GL_VERSION, GL_RENDERER, GL_VENDOR and GL_MAX_LIGHTS of the current context.
+pub(super) fn info(gl: &Gl, created_with: &str) -> Result<GlInfo, GlError> {
+    Ok(GlInfo {
+        version: gl_string(gl, gl::VERSION)?,
+        renderer: gl_string(gl, gl::RENDERER)?,
+        vendor: gl_string(gl, gl::VENDOR)?,
+        max_lights: max_lights(gl),
+        created_with: created_with.to_string(),
+    })
+}
+
+fn max_lights(gl: &Gl) -> GLint {
+    let mut max_lights: GLint = 0;
+    // SAFETY: a context is current on this thread; one GLint is written.
+    unsafe { gl.GetIntegerv(gl::MAX_LIGHTS, &mut max_lights) };
+    max_lights
+}
+
+/// Err with `when` if GL has recorded an error (draining every pending error flag).
+fn check(gl: &Gl, when: impl FnOnce() -> String) -> Result<(), GlError> {
+    let codes = drain_errors(gl);
+    if codes.is_empty() {
+        Ok(())
+    } else {
+        Err(GlError::Gl { codes, when: when() })
+    }
+}
+
+/// Like [`check`], for the calls of one draw.
+fn check_draw(gl: &Gl, when: &'static str) -> Result<(), DrawError> {
+    let codes = drain_errors(gl);
+    if codes.is_empty() {
+        Ok(())
+    } else {
+        Err(DrawError::Gl { codes, when })
+    }
+}
+
+/// Renders `scene` into the bound framebuffer and reads it back, row 0 at the top.
+pub(super) fn render(gl: &Gl, scene: &GlScene) -> Result<image::RgbaImage, GlError> {
+    let (width, height) = (scene.width, scene.height);
+    let max_lights = usize::try_from(max_lights(gl)).unwrap_or(0);
+    begin_frame(gl, scene);
+    check(gl, || "while setting up the frame".into())?;
+
+    for (index, draw) in scene.draws.iter().enumerate() {
+        // The draw's texture object lives for the draw only (deleted when dropped).
+        let texture = draw
+            .texture
+            .map(|(image, sampling)| GlTexture::upload(gl, image, &sampling))
+            .transpose()
+            .map_err(|problem| GlError::Draw { index, problem })?;
+        draw_one(gl, draw, max_lights, Arrays::Client, texture.as_ref())
+            .map_err(|problem| GlError::Draw { index, problem })?;
+        drop(texture);
+        check(gl, || format!("after draw {index}"))?;
+    }
+
+    // The framebuffer object was made at this size, so it fits in memory's terms already;
+    // the product is checked anyway rather than trusted.
+    let row = width as usize * 4;
+    let bytes = row.checked_mul(height as usize).ok_or_else(|| GlError::Size {
+        width,
+        height,
+        problem: "too large to read back".into(),
+    })?;
+    let mut pixels = vec![0u8; bytes];
+    // SAFETY: a context is current on this thread; `pixels` holds exactly width * height
+    // RGBA8 pixels with no row padding (PACK_ALIGNMENT 1), and the size fits the
+    // framebuffer object, whose sizes are GLsizei.
+    unsafe {
+        gl.Finish();
+        gl.PixelStorei(gl::PACK_ALIGNMENT, 1);
+        gl.ReadPixels(
+            0,
+            0,
+            width as GLsizei,
+            height as GLsizei,
+            gl::RGBA,
+            gl::UNSIGNED_BYTE,
+            pixels.as_mut_ptr().cast::<c_void>(),
+        );
+    }
+    check(gl, || "from glReadPixels".into())?;
+
+    // glReadPixels returns the bottom row first; the image wants the top row first.
+    let flipped: Vec<u8> = pixels.chunks_exact(row).rev().flatten().copied().collect();
+    Ok(image::RgbaImage::from_raw(width, height, flipped).expect("the readback has width * height pixels"))
+}
+
+/// Draws `scene` `warmup` + `frames` times, timing each frame (see [`super::time_frames`]).
+pub(super) fn time(gl: &Gl, scene: &GlScene, warmup: u32, frames: u32) -> Result<GlTiming, GlError> {
+    let max_lights = usize::try_from(max_lights(gl)).unwrap_or(0);
+    // Buffer objects die (are deleted) before the context, at the end of this function.
+    let buffers = scene
+        .draws
+        .iter()
+        .enumerate()
+        .map(|(index, d)| MeshBuffers::upload(gl, d.mesh).map_err(|problem| GlError::Draw { index, problem }))
+        .collect::<Result<Vec<_>, _>>()?;
+    check(gl, || "while uploading the meshes".into())?;
+    // Textures too are uploaded once, as ffvk uploads them once.
+    let textures = scene
+        .draws
+        .iter()
+        .enumerate()
+        .map(|(index, d)| {
+            d.texture
+                .map(|(image, sampling)| GlTexture::upload(gl, image, &sampling))
+                .transpose()
+                .map_err(|problem| GlError::Draw { index, problem })
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    check(gl, || "while uploading the textures".into())?;
+    let timer = TimerQuery::new(gl);
+    let mut first_frame_ns = 0.0;
+    let mut frame_ns = Vec::with_capacity(frames as usize);
+    let mut gpu_ns = timer.as_ref().map(|_| Vec::with_capacity(frames as usize));
+    for i in 0..warmup + frames {
+        let start = Instant::now();
+        if let Some(t) = &timer {
+            // SAFETY: a context is current on this thread; the query name is live and no
+            // other GL_TIME_ELAPSED query is active.
+            unsafe { gl.BeginQuery(gl::TIME_ELAPSED, t.name) };
+        }
+        begin_frame(gl, scene);
+        for (index, ((draw, b), t)) in scene.draws.iter().zip(&buffers).zip(&textures).enumerate() {
+            draw_one(gl, draw, max_lights, Arrays::Buffers(b), t.as_ref())
+                .map_err(|problem| GlError::Draw { index, problem })?;
+        }
+        if timer.is_some() {
+            // SAFETY: a context is current; ends the query begun above.
+            unsafe { gl.EndQuery(gl::TIME_ELAPSED) };
+        }
+        // SAFETY: a context is current on this thread.
+        unsafe { gl.Finish() };
+        let ns = start.elapsed().as_nanos() as f64;
+        check(gl, || format!("in frame {i}"))?;
+        if i == 0 {
+            first_frame_ns = ns;
+        } else if i >= warmup {
+            frame_ns.push(ns);
+            if let (Some(t), Some(gpu)) = (&timer, gpu_ns.as_mut()) {
+                gpu.push(t.result() as f64);
+            }
+        }
+    }
+    check(gl, || "reading the timer queries".into())?;
+    Ok(GlTiming {
+        first_frame_ns,
+        frame_ns,
+        gpu_ns,
+    })
+}
+
+/// A GL_TIME_ELAPSED query object, where the context has timer queries (GL 3.3 or
+/// GL_ARB_timer_query); deleted when dropped.
+struct TimerQuery<'g> {
+    gl: &'g Gl,
+    name: GLuint,
+}
+
+impl<'g> TimerQuery<'g> {
+    fn new(gl: &'g Gl) -> Option<Self> {
+        let version = version_number(&gl_string(gl, gl::VERSION).unwrap_or_default());
+        let listed = || gl_string(gl, gl::EXTENSIONS).is_ok_and(|e| has_extension(&e, "GL_ARB_timer_query"));
+        if !gl.GetQueryObjectui64v.is_loaded() || !(version >= (3, 3) || listed()) {
+            return None;
+        }
+        let mut name = 0;
+        // SAFETY: a context is current on this thread; one name is written.
+        unsafe { gl.GenQueries(1, &mut name) };
+        Some(TimerQuery { gl, name })
+    }
+
+    /// The last query's nanoseconds (waits for it: called after glFinish).
+    fn result(&self) -> u64 {
+        let mut ns = 0u64;
+        // SAFETY: a context is current; the query has ended; one GLuint64 is written.
+        unsafe { self.gl.GetQueryObjectui64v(self.name, gl::QUERY_RESULT, &mut ns) };
+        ns
+    }
+}
+
+impl Drop for TimerQuery<'_> {
+    fn drop(&mut self) {
+        // SAFETY: the name was made by glGenQueries in the context still current here.
+        unsafe { self.gl.DeleteQueries(1, &self.name) };
+    }
+}
+
+/// A mesh in a vertex and an index buffer object of the current context.
+struct MeshBuffers<'g> {
+    gl: &'g Gl,
+    /// Vertex buffer, index buffer.
+    names: [GLuint; 2],
+}
+
+impl<'g> MeshBuffers<'g> {
+    fn upload(gl: &'g Gl, mesh: &MeshData) -> Result<MeshBuffers<'g>, DrawError> {
+        check_indices(mesh)?;
+        let vertex_bytes: &[u8] = bytemuck::cast_slice(&mesh.vertices);
+        let index_bytes: &[u8] = bytemuck::cast_slice(&mesh.indices);
+        let size = |bytes: &[u8]| {
+            GLsizeiptr::try_from(bytes.len()).map_err(|_| DrawError::TooManyBytes(bytes.len()))
+        };
+        let (vertex_size, index_size) = (size(vertex_bytes)?, size(index_bytes)?);
+        let mut buffers = MeshBuffers { gl, names: [0; 2] };
+        // SAFETY: a context is current on this thread; glGenBuffers writes two names (owned by
+        // `buffers` from here on), and glBufferData copies `size` bytes from slices that are
+        // at least that long.
+        unsafe {
+            gl.GenBuffers(2, buffers.names.as_mut_ptr());
+            gl.BindBuffer(gl::ARRAY_BUFFER, buffers.names[0]);
+            gl.BufferData(
+                gl::ARRAY_BUFFER,
+                vertex_size,
+                vertex_bytes.as_ptr().cast(),
+                gl::STATIC_DRAW,
+            );
+            gl.BindBuffer(gl::ELEMENT_ARRAY_BUFFER, buffers.names[1]);
+            gl.BufferData(
+                gl::ELEMENT_ARRAY_BUFFER,
+                index_size,
+                index_bytes.as_ptr().cast(),
+                gl::STATIC_DRAW,
+            );
+            gl.BindBuffer(gl::ARRAY_BUFFER, 0);
+            gl.BindBuffer(gl::ELEMENT_ARRAY_BUFFER, 0);
+        }
+        Ok(buffers)
+    }
+}
+
+impl Drop for MeshBuffers<'_> {
+    fn drop(&mut self) {
+        // SAFETY: the context that made the names is current (MeshBuffers never outlive
+        // `time`, which runs inside its context).
+        unsafe { self.gl.DeleteBuffers(2, self.names.as_ptr()) };
+    }
+}
+
+/// A texture object of the current context holding every level of a [`TextureImage`], with
+/// its parameters set; deleted when dropped.
+struct GlTexture<'g> {
+    gl: &'g Gl,
+    name: GLuint,
+}
+
+impl<'g> GlTexture<'g> {
+    /// glTexImage2D for every level (`GL_SRGB8_ALPHA8` for an sRGB image, else `GL_RGBA8`), and
+    /// glTexParameter for the filters and wraps. A complete chain gets `GL_TEXTURE_MAX_LEVEL`
+    /// = levels − 1; any other image keeps GL's default of 1000, so that GL, like ffvk
+    /// ([`ffvk::gl::texture::texturing_applies`]), finds it incomplete under a mipmap filter
+    /// rather than complete at its levels. Leaves the texture bound to `GL_TEXTURE_2D`.
+    fn upload(gl: &'g Gl, image: &TextureImage, sampling: &Sampling) -> Result<GlTexture<'g>, DrawError> {
+        for (level, l) in image.levels.iter().enumerate() {
+            let fits = GLsizei::try_from(l.width).is_ok() && GLsizei::try_from(l.height).is_ok();
+            if !fits || Some(l.rgba.len()) != (l.width as usize).checked_mul(l.height as usize * 4) {
+                return Err(DrawError::TextureLevel {
+                    level,
+                    width: l.width,
+                    height: l.height,
+                    bytes: l.rgba.len(),
+                });
+            }
+        }
+        let mut texture = GlTexture { gl, name: 0 };
+        let internal = if image.srgb { gl::SRGB8_ALPHA8 } else { gl::RGBA8 };
+        // SAFETY: a context is current on this thread; glGenTextures writes one name (owned by
+        // `texture` from here on); each level's bytes were checked to be width * height * 4,
+        // which glTexImage2D reads with UNPACK_ALIGNMENT 1 (no row padding) and no unpack
+        // buffer bound.
+        unsafe {
+            gl.GenTextures(1, &mut texture.name);
+            gl.BindTexture(gl::TEXTURE_2D, texture.name);
+            gl.PixelStorei(gl::UNPACK_ALIGNMENT, 1);
+            for (level, l) in image.levels.iter().enumerate() {
+                gl.TexImage2D(
+                    gl::TEXTURE_2D,
+                    level as GLint,
+                    internal as GLint,
+                    l.width as GLsizei,
+                    l.height as GLsizei,
+                    0,
+                    gl::RGBA,
+                    gl::UNSIGNED_BYTE,
+                    l.rgba.as_ptr().cast(),
+                );
+            }
+            if image.has_mipmaps() {
+                gl.TexParameteri(
+                    gl::TEXTURE_2D,
+                    gl::TEXTURE_MAX_LEVEL,
+                    image.levels.len() as GLint - 1,
+                );
+            }
+            gl.TexParameteri(
+                gl::TEXTURE_2D,
+                gl::TEXTURE_MIN_FILTER,
+                min_filter_enum(sampling.min_filter) as GLint,
+            );
+            gl.TexParameteri(
+                gl::TEXTURE_2D,
+                gl::TEXTURE_MAG_FILTER,
+                mag_filter_enum(sampling.mag_filter) as GLint,
+            );
+            gl.TexParameteri(
+                gl::TEXTURE_2D,
+                gl::TEXTURE_WRAP_S,
+                wrap_enum(sampling.wrap_s) as GLint,
+            );
+            gl.TexParameteri(
+                gl::TEXTURE_2D,
+                gl::TEXTURE_WRAP_T,
+                wrap_enum(sampling.wrap_t) as GLint,
+            );
+        }
+        check_draw(gl, "uploading the texture")?;
+        Ok(texture)
+    }
+}
+
+impl Drop for GlTexture<'_> {
+    fn drop(&mut self) {
+        // SAFETY: the context that made the name is current (textures never outlive the
+        // `render` or `time` call that made them, which runs inside its context).
+        unsafe { self.gl.DeleteTextures(1, &self.name) };
+    }
+}
+
+fn min_filter_enum(filter: MinFilter) -> GLenum {
+    match filter {
+        MinFilter::Nearest => gl::NEAREST,
+        MinFilter::Linear => gl::LINEAR,
+        MinFilter::NearestMipmapNearest => gl::NEAREST_MIPMAP_NEAREST,
+        MinFilter::LinearMipmapNearest => gl::LINEAR_MIPMAP_NEAREST,
+        MinFilter::NearestMipmapLinear => gl::NEAREST_MIPMAP_LINEAR,
+        MinFilter::LinearMipmapLinear => gl::LINEAR_MIPMAP_LINEAR,
+    }
+}
+
+fn mag_filter_enum(filter: MagFilter) -> GLenum {
+    match filter {
+        MagFilter::Nearest => gl::NEAREST,
+        MagFilter::Linear => gl::LINEAR,
+    }
+}
+
+fn wrap_enum(wrap: Wrap) -> GLenum {
+    match wrap {
+        Wrap::Repeat => gl::REPEAT,
+        Wrap::ClampToEdge => gl::CLAMP_TO_EDGE,
+        Wrap::MirroredRepeat => gl::MIRRORED_REPEAT,
+        // A mode added to ffvk after this table: GL_NONE makes GL raise INVALID_ENUM, which
+        // fails the render with GL's error rather than drawing another mode.
+        _ => gl::NONE,
+    }
+}
+
+fn tex_env_enum(mode: TexEnvMode) -> GLenum {
+    match mode {
+        TexEnvMode::Modulate => gl::MODULATE,
+        TexEnvMode::Replace => gl::REPLACE,
+        TexEnvMode::Decal => gl::DECAL,
+        TexEnvMode::Blend => gl::BLEND,
+        TexEnvMode::Add => gl::ADD,
+        // As in wrap_enum: GL's INVALID_ENUM fails the render.
+        _ => gl::NONE,
+    }
+}
+
+/// The texture unit: `texture`'s object bound (else object 0, which has no image), the
+/// environment, the `GL_TEXTURE` matrix and the `GL_TEXTURE_2D` enable. Leaves the matrix mode
+/// at `GL_MODELVIEW`.
+fn set_texture_unit(gl: &Gl, unit: &TextureUnit, texture: Option<&GlTexture>) {
+    // SAFETY: a context is current on this thread; the name, when there is one, is a texture
+    // it made and has not deleted; the color has four components and the matrix 16,
+    // column-major as both glam and GL store it.
+    unsafe {
+        gl.BindTexture(gl::TEXTURE_2D, texture.map_or(0, |t| t.name));
+        gl.TexEnvi(
+            gl::TEXTURE_ENV,
+            gl::TEXTURE_ENV_MODE,
+            tex_env_enum(unit.env_mode) as GLint,
+        );
+        gl.TexEnvfv(
+            gl::TEXTURE_ENV,
+            gl::TEXTURE_ENV_COLOR,
+            unit.env_color.to_array().as_ptr(),
+        );
+        gl.MatrixMode(gl::TEXTURE);
+        gl.LoadMatrixf(unit.matrix.to_cols_array().as_ptr());
+        gl.MatrixMode(gl::MODELVIEW);
+    }
+    set_enabled(gl, gl::TEXTURE_2D, unit.enabled);
+}
+
+/// Where a draw's vertex and index arrays are.
+#[derive(Clone, Copy)]
+enum Arrays<'a, 'g> {
+    /// In the mesh's own memory (client arrays).
+    Client,
+    /// In buffer objects of the current context.
+    Buffers(&'a MeshBuffers<'g>),
+}
+
+/// Every index of `mesh` within its vertices.
+fn check_indices(mesh: &MeshData) -> Result<(), DrawError> {
+    let count = mesh.triangle_count() * 3;
+    match mesh.indices[..count]
+        .iter()
+        .find(|&&i| i as usize >= mesh.vertices.len())
+    {
+        Some(&index) => Err(DrawError::IndexOutOfRange {
+            index,
+            vertices: mesh.vertices.len(),
+        }),
+        None => Ok(()),
+    }
+}
+
+/// Viewport, clear and the per-frame fixed state.
+fn begin_frame(gl: &Gl, scene: &GlScene) {
+    // SAFETY: a context is current on this thread; the framebuffer object was made at the
+    // scene's size, so the sizes fit a GLsizei.
+    unsafe {
+        gl.Viewport(0, 0, scene.width as GLsizei, scene.height as GLsizei);
+        let [r, g, b, a] = scene.clear_color;
+        gl.ClearColor(r, g, b, a);
+        gl.ClearDepth(1.0);
+        gl.Clear(gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT);
+        if scene.depth_test {
+            gl.Enable(gl::DEPTH_TEST);
+            gl.DepthFunc(gl::LESS);
+        } else {
+            gl.Disable(gl::DEPTH_TEST);
+        }
+        gl.FrontFace(gl::CCW);
+        gl.Disable(gl::CULL_FACE);
+        gl.Disable(gl::BLEND);
+        // Dithering is on by default in GL; the Vulkan side never dithers.
+        gl.Disable(gl::DITHER);
+    }
+}
+
+fn cap_enum(cap: Cap) -> GLenum {
+    match cap {
+        Cap::Lighting => gl::LIGHTING,
+        Cap::Light(i) => gl::LIGHT0 + i as GLenum,
+        Cap::ColorMaterial => gl::COLOR_MATERIAL,
+        Cap::Normalize => gl::NORMALIZE,
+        Cap::RescaleNormal => gl::RESCALE_NORMAL,
+        Cap::Texture2D => gl::TEXTURE_2D,
+        // As in wrap_enum: GL's INVALID_ENUM fails the render.
+        _ => gl::NONE,
+    }
+}
+
+/// Makes one replayed call.
+fn replay(gl: &Gl, call: GlCall) {
+    match call {
+        // SAFETY: a context is current on this thread; the color has four components.
+        GlCall::Color(c) => unsafe { gl.Color4fv(c.to_array().as_ptr()) },
+        GlCall::Enable(cap) => set_enabled(gl, cap_enum(cap), true),
+        GlCall::Disable(cap) => set_enabled(gl, cap_enum(cap), false),
+        // SAFETY: a context is current on this thread.
+        GlCall::ColorMaterial(face, mode) => unsafe {
+            gl.ColorMaterial(face_enum(face), color_material_enum(mode))
+        },
+    }
+}
+
+fn face_enum(face: Face) -> GLenum {
+    match face {
+        Face::Front => gl::FRONT,
+        Face::Back => gl::BACK,
+        Face::FrontAndBack => gl::FRONT_AND_BACK,
+    }
+}
+
+fn color_material_enum(mode: ColorMaterialMode) -> GLenum {
+    match mode {
+        ColorMaterialMode::Emission => gl::EMISSION,
+        ColorMaterialMode::Ambient => gl::AMBIENT,
+        ColorMaterialMode::Diffuse => gl::DIFFUSE,
+        ColorMaterialMode::Specular => gl::SPECULAR,
+        ColorMaterialMode::AmbientAndDiffuse => gl::AMBIENT_AND_DIFFUSE,
+    }
+}
+
+fn set_enabled(gl: &Gl, cap: GLenum, on: bool) {
+    // SAFETY: a context is current on this thread.
+    unsafe {
+        if on {
+            gl.Enable(cap)
+        } else {
+            gl.Disable(cap)
+        }
+    }
+}
+
+/// glLight for every parameter of light `index`, with the MODELVIEW matrix at identity so the
+/// eye-space position and spot direction are stored unchanged.
+fn set_light(gl: &Gl, index: usize, light: &Light) {
+    let id = gl::LIGHT0 + index as GLenum;
+    let spot = light.spot_direction.to_array();
+    // SAFETY: a context is current on this thread; every array has the length GL reads.
+    unsafe {
+        gl.Lightfv(id, gl::AMBIENT, light.ambient.to_array().as_ptr());
+        gl.Lightfv(id, gl::DIFFUSE, light.diffuse.to_array().as_ptr());
+        gl.Lightfv(id, gl::SPECULAR, light.specular.to_array().as_ptr());
+        gl.Lightfv(id, gl::POSITION, light.position.to_array().as_ptr());
+        gl.Lightfv(id, gl::SPOT_DIRECTION, spot.as_ptr());
+        gl.Lightf(id, gl::SPOT_EXPONENT, light.spot_exponent);
+        gl.Lightf(id, gl::SPOT_CUTOFF, light.spot_cutoff);
+        gl.Lightf(id, gl::CONSTANT_ATTENUATION, light.constant_attenuation);
+        gl.Lightf(id, gl::LINEAR_ATTENUATION, light.linear_attenuation);
+        gl.Lightf(id, gl::QUADRATIC_ATTENUATION, light.quadratic_attenuation);
+    }
+    set_enabled(gl, id, light.enabled);
+}
+
+fn set_material(gl: &Gl, face: GLenum, m: &Material) {
+    // SAFETY: a context is current on this thread; every array has four components.
+    unsafe {
+        gl.Materialfv(face, gl::AMBIENT, m.ambient.to_array().as_ptr());
+        gl.Materialfv(face, gl::DIFFUSE, m.diffuse.to_array().as_ptr());
+        gl.Materialfv(face, gl::SPECULAR, m.specular.to_array().as_ptr());
+        gl.Materialfv(face, gl::EMISSION, m.emission.to_array().as_ptr());
+        gl.Materialf(face, gl::SHININESS, m.shininess);
+    }
+}
+
+fn draw_one(
+    gl: &Gl,
+    draw: &GlDraw,
+    max_lights: usize,
+    arrays: Arrays,
+    texture: Option<&GlTexture>,
+) -> Result<(), DrawError> {
+    let state = &draw.state;
+    if let Some((index, _)) = state
+        .lights
+        .iter()
+        .enumerate()
+        .find(|(i, l)| *i >= max_lights && l.enabled)
+    {
+        return Err(DrawError::TooManyLights { index, max_lights });
+    }
+    let mesh = draw.mesh;
+    let count = mesh.triangle_count() * 3;
+    if let Arrays::Client = arrays {
+        // Buffer objects were checked when they were filled.
+        check_indices(mesh)?;
+    }
+    let count = GLsizei::try_from(count).map_err(|_| DrawError::TooManyIndices(count))?;
+
+    // SAFETY: a context is current on this thread; matrices are 16 floats, column-major as
+    // both glam and GL store them.
+    unsafe {
+        gl.MatrixMode(gl::PROJECTION);
+        gl.LoadMatrixf(draw.projection.to_cols_array().as_ptr());
+        // Light positions and spot directions are already in eye space.
+        gl.MatrixMode(gl::MODELVIEW);
+        gl.LoadIdentity();
+    }
+    for (index, light) in state.lights.iter().enumerate().take(max_lights) {
+        set_light(gl, index, light);
+    }
+
+    // Materials first, with COLOR_MATERIAL off so no parameter is tracking the color and every
+    // glMaterial call takes effect; then glColorMaterial, then the enable (which, in GL, writes
+    // the current color into the tracked parameters).
+    set_enabled(gl, gl::COLOR_MATERIAL, false);
+    // SAFETY: a context is current on this thread; the color has four components.
+    unsafe { gl.Color4fv(state.current_color.to_array().as_ptr()) };
+    set_material(gl, gl::FRONT, &state.front);
+    set_material(gl, gl::BACK, &state.back);
+    let model = &state.model;
+    let color_control = match model.color_control {
+        ColorControl::SingleColor => gl::SINGLE_COLOR,
+        ColorControl::SeparateSpecularColor => gl::SEPARATE_SPECULAR_COLOR,
+    };
+    let boolean = |on: bool| (if on { gl::TRUE } else { gl::FALSE }) as GLint;
+    // SAFETY: a context is current on this thread; the ambient array has four components.
+    unsafe {
+        gl.ColorMaterial(
+            face_enum(state.color_material.face),
+            color_material_enum(state.color_material.mode),
+        );
+        gl.LightModelfv(gl::LIGHT_MODEL_AMBIENT, model.ambient.to_array().as_ptr());
+        gl.LightModeli(gl::LIGHT_MODEL_LOCAL_VIEWER, boolean(model.local_viewer));
+        gl.LightModeli(gl::LIGHT_MODEL_TWO_SIDE, boolean(model.two_side));
+        gl.LightModeli(gl::LIGHT_MODEL_COLOR_CONTROL, color_control as GLint);
+        // ffvk's per-fragment mode has no GL counterpart: compare it with SMOOTH.
+        gl.ShadeModel(if state.mode == LightingMode::Flat {
+            gl::FLAT
+        } else {
+            gl::SMOOTH
+        });
+    }
+    set_enabled(gl, gl::COLOR_MATERIAL, state.color_material.enabled);
+    set_enabled(gl, gl::NORMALIZE, state.normalize);
+    set_enabled(gl, gl::RESCALE_NORMAL, state.rescale_normal);
+    set_enabled(gl, gl::LIGHTING, state.lighting);
+    set_texture_unit(gl, &state.texture, texture);
+    for call in &draw.calls {
+        replay(gl, *call);
+    }
+    check_draw(gl, "from the replayed calls")?;
+
+    if count == 0 {
+        return Ok(());
+    }
+    let stride = std::mem::size_of::<Vertex>() as GLsizei;
+    // Client arrays are addresses in the mesh; with buffer objects bound, GL reads the same
+    // arguments as offsets into them (from a null base).
+    let (vertex_base, index_base): (*const u8, *const c_void) = match arrays {
+        Arrays::Client => (mesh.vertices.as_ptr().cast(), mesh.indices.as_ptr().cast()),
+        Arrays::Buffers(b) => {
+            // SAFETY: a context is current on this thread; both names are buffers it made.
+            unsafe {
+                gl.BindBuffer(gl::ARRAY_BUFFER, b.names[0]);
+                gl.BindBuffer(gl::ELEMENT_ARRAY_BUFFER, b.names[1]);
+            }
+            (std::ptr::null(), std::ptr::null())
+        }
+    };
+    let field = |offset: usize| vertex_base.wrapping_add(offset).cast::<c_void>();
+    // SAFETY: a context is current on this thread. Client arrays point into `mesh.vertices`
+    // (repr(C) f32 fields, `stride` bytes apart) and glDrawElements reads them before it
+    // returns; buffer objects hold the same bytes. Every index was checked against the vertex
+    // count, and the arrays are disabled (and buffers unbound) after the draw.
+    unsafe {
+        gl.MatrixMode(gl::MODELVIEW);
+        gl.LoadMatrixf(draw.modelview.to_cols_array().as_ptr());
+        gl.EnableClientState(gl::VERTEX_ARRAY);
+        gl.EnableClientState(gl::NORMAL_ARRAY);
+        if draw.color_array {
+            gl.EnableClientState(gl::COLOR_ARRAY);
+        }
+        // Texture coordinates matter only with a texture bound (as in ffvk, each vertex's
+        // (s, t, 0, 1) then goes through the texture matrix).
+        if texture.is_some() {
+            gl.EnableClientState(gl::TEXTURE_COORD_ARRAY);
+        }
+        gl.TexCoordPointer(
+            2,
+            gl::FLOAT,
+            stride,
+            field(std::mem::offset_of!(Vertex, texcoord)),
+        );
+        gl.VertexPointer(
+            3,
+            gl::FLOAT,
+            stride,
+            field(std::mem::offset_of!(Vertex, position)),
+        );
+        gl.NormalPointer(gl::FLOAT, stride, field(std::mem::offset_of!(Vertex, normal)));
+        gl.ColorPointer(4, gl::FLOAT, stride, field(std::mem::offset_of!(Vertex, color)));
+        gl.DrawElements(gl::TRIANGLES, count, gl::UNSIGNED_INT, index_base);
+        gl.DisableClientState(gl::VERTEX_ARRAY);
+        gl.DisableClientState(gl::NORMAL_ARRAY);
+        gl.DisableClientState(gl::COLOR_ARRAY);
+        gl.DisableClientState(gl::TEXTURE_COORD_ARRAY);
+        gl.BindBuffer(gl::ARRAY_BUFFER, 0);
+        gl.BindBuffer(gl::ELEMENT_ARRAY_BUFFER, 0);
+    }
+    Ok(())
+}
