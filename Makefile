@@ -25,5 +25,5 @@ test: test-deps
 	$(CARGO) test --workspace --all-targets
 	$(CARGO) test --workspace --doc
 	$(CARGO) clippy --workspace --all-targets -- -D warnings
-	$(CARGO) build -p ffvk
+	bash scripts/check-lean-core.sh
 	bash scripts/check-dependent.sh

@@ -6,6 +6,10 @@
 //! tiles). Each measurement runs in a fresh process (this program re-run with `--child`), so
 //! its peak resident memory (VmHWM) is its own; the medians of 3 runs are printed.
 
+// A measurement harness, run by hand: a failure ends it with the panic's message, as a
+// test's would.
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;

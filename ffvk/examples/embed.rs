@@ -75,8 +75,8 @@ pub fn gl_state(mode: LightingMode) -> Result<GlState, ffvk::Error> {
 }
 
 /// The teapot the example draws.
-pub fn teapot() -> MeshData {
-    ffvk::mesh::teapot::teapot(12).expect("level 12 is in range")
+pub fn teapot() -> Result<MeshData, ffvk::MeshError> {
+    ffvk::mesh::teapot::teapot(12)
 }
 
 /// One image: the teapot under `state`, with or without its color array (without one,
@@ -152,7 +152,10 @@ fn main() {
     let out = std::path::Path::new("out/embed");
     for (mode, rgba) in images {
         let path = out.join(format!("teapot_{}.png", mode.name()));
-        let image = image::RgbaImage::from_raw(SIZE, SIZE, rgba).expect("SIZE x SIZE x 4 bytes");
+        let Some(image) = image::RgbaImage::from_raw(SIZE, SIZE, rgba) else {
+            eprintln!("embed: the {} image is not {SIZE} x {SIZE} RGBA8", mode.name());
+            std::process::exit(1);
+        };
         if let Err(e) = ffvk::images::save_png(&image, &path) {
             eprintln!("embed: {e}");
             std::process::exit(1);
@@ -417,7 +420,7 @@ impl App {
 
     fn render(&mut self, frames: &[EmbedFrame], set_index: u32) -> Result<Vec<Vec<u8>>, String> {
         // The caller's vertex data: positions alone, then normals with 8-bit colors.
-        let mesh = teapot();
+        let mesh = teapot().map_err(|e| e.to_string())?;
         let positions: Vec<[f32; 3]> = mesh.vertices.iter().map(|v| v.position).collect();
         let mut normal_color = Vec::with_capacity(mesh.vertices.len() * 16);
         for v in &mesh.vertices {

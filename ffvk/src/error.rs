@@ -142,6 +142,11 @@ pub enum Error {
         max: u32,
     },
 
+    /// ffvk found one of its own invariants broken (the string says which): a bug in ffvk,
+    /// reported as an error rather than a panic. Please report it with the message.
+    #[error("internal error: {0}; this is a bug in ffvk, please report it")]
+    Internal(&'static str),
+
     /// [`Validation::Required`](crate::vk::Validation::Required) was asked for and the
     /// layer is not installed.
     #[error("the validation layer VK_LAYER_KHRONOS_validation is not installed (Debian package vulkan-validationlayers)")]
@@ -318,6 +323,14 @@ pub(crate) fn vk_error(call: &'static str) -> impl Fn(vk::Result) -> Error {
 /// A name that [`FromStr`](std::str::FromStr) does not know: `"phong"` for a
 /// [`LightingMode`](crate::gl::state::LightingMode), say. Its message names what was being
 /// read, the value and the names that exist.
+///
+/// ```
+/// use ffvk::gl::state::LightingMode;
+///
+/// assert_eq!("flat".parse::<LightingMode>(), Ok(LightingMode::Flat));
+/// let err = "phong".parse::<LightingMode>().unwrap_err();
+/// assert_eq!(err.to_string(), r#"unknown lighting mode "phong": expected vertex, fragment or flat"#);
+/// ```
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 #[error("unknown {what} {value:?}: expected {expected}")]
 #[non_exhaustive]

@@ -13,16 +13,38 @@
 //!   tools, the tests and regression renders use.
 //! - [`Lighting`] records GL's lighting into a caller's own device, command buffers and
 //!   render targets ([`vk::Device::from_caller`]); see its module, [`draw::lighting`], for
-//!   what it owns and records, and `examples/embed.rs` (in the repository) for a complete
+//!   what it owns and records, and `ffvk/examples/embed.rs` (in the repository) for a complete
 //!   program with plain `ash`. [`Renderer`] is built on it.
 //!
 //! Renderers that build their own pipelines take the pieces: the SPIR-V ([`gpu::shaders`]),
 //! the uniform block's layout and the specialization constants ([`gpu::layout`]).
 //!
-//! Features add the rest: `images` (PNG files and image comparison), `scene` (TOML scene files
-//! and glTF), `tools` (what the `ffvk` command runs: bench, demo, explain, regression runs,
-//! and fixed-function OpenGL through EGL, loaded at run time, as a reference renderer; on by
-//! default).
+//! Features add the rest: `images` (PNG files and image comparison) and `scene` (TOML scene
+//! files and glTF). The `ffvk` command (bench, demo, explain, regression runs, the GL
+//! reference) is another crate of the repository's workspace, `ffvk-cli`: a plain dependency
+//! on this one builds none of it.
+//!
+//! `ash` and `glam` are part of the API and re-exported as [`ash`] and [`glam`]: take them from
+//! here, so a caller's handles and matrices are always of the versions ffvk was built with.
+//!
+//! # Growing without breaking
+//!
+//! Options, descriptions and errors are `#[non_exhaustive]`: callers build them with their
+//! constructors or `Default`, then set fields or chain the `with_*` methods, and match them
+//! with a `_` arm, so that a field or variant added later breaks no caller.
+//!
+//! ```
+//! use ffvk::ash::vk;
+//! use ffvk::glam::Mat4;
+//! use ffvk::gl::state::GlState;
+//! use ffvk::{Geometry, LitDraw, RasterState};
+//!
+//! let gl = GlState::new();
+//! let buffers = [(vk::Buffer::null(), 0)];
+//! let draw = LitDraw::new(&gl.lighting, Mat4::IDENTITY, Mat4::IDENTITY, &buffers, Geometry::vertices(3))
+//!     .with_raster(RasterState::default().with_depth_test(true));
+//! assert!(draw.raster.depth_test && draw.texture.is_none());
+//! ```
 
 /// `with_*` methods for a `#[non_exhaustive]` options struct: callers outside the crate cannot
 /// write its literal, so they start from its constructor or `Default` and chain these, and a
@@ -42,29 +64,20 @@ macro_rules! with_fields {
     };
 }
 
-#[warn(missing_docs)]
 pub mod alloc;
-#[warn(missing_docs)]
 pub mod draw;
-#[warn(missing_docs)]
 pub mod error;
 #[cfg(feature = "images")]
 pub mod files;
-#[warn(missing_docs)]
 pub mod gl;
-#[warn(missing_docs)]
 pub mod gpu;
 #[cfg(feature = "images")]
 pub mod images;
-#[warn(missing_docs)]
 pub mod mesh;
-#[warn(missing_docs)]
 pub mod reference;
-#[warn(missing_docs)]
 pub mod renderer;
 #[cfg(feature = "scene")]
 pub mod scene;
-#[warn(missing_docs)]
 pub mod vk;
 
 /// The `ash` ffvk is built with: its Vulkan types are part of ffvk's API ([`Target`],
@@ -75,6 +88,11 @@ pub use ash;
 /// [`Vec4`](glam::Vec4), the reference's `DVec`s) are `glam` types in ffvk's API, so a caller's
 /// must come from this very version. Use `ffvk::glam` (or pin the same version) to be sure.
 pub use glam;
+
+/// The README's Rust snippets, compiled (and those that can run, run) by `cargo test --doc`.
+#[cfg(doctest)]
+#[doc = include_str!("../../README.md")]
+pub struct ReadmeDoctests;
 
 pub use draw::lighting::{Lighting, LightingOptions, LitDraw};
 pub use draw::pipeline::{Attribute, Blend, RasterState, Specialize, Target, VertexInput};

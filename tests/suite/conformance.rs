@@ -572,7 +572,7 @@ fn the_current_color_and_its_color_material_write_back_match_mesa_gl() {
     use ffvk_cli::gl_reference::GlCall;
     let c = rgba(0.2, 0.7, 0.4, 1.0);
     let (c1, c2) = (rgba(0.9, 0.3, 0.1, 1.0), rgba(0.1, 0.2, 0.9, 1.0));
-    let teapot = embed::teapot();
+    let teapot = embed::teapot().unwrap();
     let (view, projection) = (embed::view(), embed::projection());
     let mut r = renderer();
     let mut failures = Vec::new();

@@ -57,7 +57,7 @@ fn a_callers_device_draws_the_same_bytes_as_the_renderer_in_every_mode() {
     let embedded = embed::render_modes(None, true).expect("the embedding example renders with validation on");
     assert_eq!(embedded.len(), 3);
     let mut r = renderer();
-    let mesh = r.upload(&embed::teapot()).unwrap();
+    let mesh = r.upload(&embed::teapot().unwrap()).unwrap();
     for (mode, bytes) in embedded {
         let gl = embed::gl_state(mode).unwrap();
         let pixels = renderer_frame(&mut r, &mesh, &gl.lighting);
@@ -100,7 +100,7 @@ fn without_a_color_array_every_vertex_takes_the_current_color() {
     let embedded =
         embed::render_frames(None, true, embed::SIZE, &frames).expect("renders with validation on");
     let mut r = renderer();
-    let mut teapot = embed::teapot();
+    let mut teapot = embed::teapot().unwrap();
     for v in &mut teapot.vertices {
         v.color = c.to_array();
     }
@@ -389,7 +389,7 @@ fn the_lighting_variants_draw_the_same_bytes_through_a_callers_device() {
     let embedded =
         embed::render_frames(None, true, embed::SIZE, &frames).expect("renders with validation on");
     let mut r = renderer();
-    let mesh = r.upload(&embed::teapot()).unwrap();
+    let mesh = r.upload(&embed::teapot().unwrap()).unwrap();
     for (mode, bytes) in LightingMode::ALL.into_iter().zip(&embedded) {
         let pixels = renderer_frame(&mut r, &mesh, &variant(mode));
         assert_same_bytes(&pixels, bytes, &format!("variants_{}", mode.name()));

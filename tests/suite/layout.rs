@@ -227,3 +227,14 @@ fn specialization_constant_ids_match_the_rust_side() {
     assert_eq!(size_of::<SpecKey>(), 4 * SPEC_CONSTANT_COUNT);
     assert_eq!(SpecKey::UBER.values, [-1; SPEC_CONSTANT_COUNT]);
 }
+
+#[test]
+fn the_readme_states_the_per_draw_block_size_and_the_constant_ids_the_code_has() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let size = size_of::<DrawBlock>();
+    let with_comma = format!("{},{:03}", size / 1000, size % 1000);
+    let block = format!("one {with_comma}-byte block of GL state per draw");
+    assert!(readme.contains(&block), "README.md should say \"{block}\"");
+    let ids = format!("constant_id 0-{}", SPEC_CONSTANT_COUNT - 1);
+    assert!(readme.contains(&ids), "README.md should say \"{ids}\"");
+}

@@ -43,9 +43,9 @@
 //!
 //! # Example
 //!
-//! `examples/embed.rs` in the repository: its own instance, device, queue, images and
-//! buffers with plain `ash`, the teapot in the three modes (`cargo run --release --example
-//! embed`):
+//! `ffvk/examples/embed.rs` in the repository: its own instance, device, queue, images and
+//! buffers with plain `ash`, the teapot in the three modes (`cargo run --release -p ffvk
+//! --features images --example embed`):
 //!
 #![doc = concat!("```rust,ignore\n", include_str!("../../examples/embed.rs"), "\n```")]
 

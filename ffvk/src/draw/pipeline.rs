@@ -164,7 +164,26 @@ pub struct Attribute {
 }
 
 /// The caller's vertex layout: its buffer bindings and where each GL attribute lives. The
-/// shaders read position at location 0, normal at 1 and color at 2.
+/// shaders read position at location 0, normal at 1, color at 2 and texture coordinates at 3.
+///
+/// ```
+/// use ffvk::ash::vk;
+/// use ffvk::{Attribute, VertexInput};
+///
+/// // Positions in their own buffer; normals and RGBA8 colors interleaved in a second one.
+/// let binding = |binding, stride| vk::VertexInputBindingDescription {
+///     binding,
+///     stride,
+///     input_rate: vk::VertexInputRate::VERTEX,
+/// };
+/// let input = VertexInput::new(
+///     vec![binding(0, 12), binding(1, 16)],
+///     Attribute::new(0, 0, vk::Format::R32G32B32_SFLOAT),
+///     Attribute::new(1, 0, vk::Format::R32G32B32_SFLOAT),
+/// )
+/// .with_color(Attribute::new(1, 12, vk::Format::R8G8B8A8_UNORM));
+/// assert!(input.texcoord.is_none());
+/// ```
 #[derive(Debug, Clone)]
 #[non_exhaustive]
 pub struct VertexInput {

@@ -4,6 +4,24 @@ use ash::vk;
 
 /// Which vertices a draw reads: GL's `glDrawElements` or `glDrawArrays` with
 /// `GL_TRIANGLES`.
+///
+/// ```
+/// use ffvk::ash::vk;
+/// use ffvk::Geometry;
+///
+/// // glDrawElementsBaseVertex(GL_TRIANGLES, 36, GL_UNSIGNED_SHORT, (void*)12, 100)
+/// let index_buffer = vk::Buffer::null(); // the caller's
+/// let cube = Geometry::indexed(index_buffer, vk::IndexType::UINT16, 36)
+///     .with_first(6)
+///     .with_vertex_offset(100);
+/// assert!(matches!(
+///     cube,
+///     Geometry::Indexed { first_index: 6, index_count: 36, vertex_offset: 100, .. }
+/// ));
+/// // glDrawArrays(GL_TRIANGLES, 3, 6)
+/// let two = Geometry::vertices(6).with_first(3);
+/// assert!(matches!(two, Geometry::Vertices { first_vertex: 3, vertex_count: 6, .. }));
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum Geometry {

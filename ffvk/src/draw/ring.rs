@@ -12,7 +12,7 @@ use std::sync::Arc;
 
 use ash::vk;
 
-use crate::error::{LightingError, Result};
+use crate::error::{Error, LightingError, Result};
 use crate::gpu::layout::DrawBlock;
 use crate::vk::objects::{DescriptorPool, DescriptorSetLayout};
 use crate::vk::{Buffer, Device, MemoryUse};
@@ -74,9 +74,8 @@ impl UniformRing {
     /// guarantees that no submitted work still reads them.
     pub(crate) fn reset(&mut self, slot: u32) -> Result<()> {
         let s = self.slot_mut(slot)?;
-        if s.chunks.len() > 1 {
-            // The last chunk is the largest: each new one doubles the one before.
-            let last = s.chunks.pop().expect("more than one chunk");
+        // The last chunk is the largest: each new one doubles the one before.
+        if let Some(last) = s.chunks.pop() {
             s.chunks.clear();
             s.chunks.push(last);
         }
@@ -106,7 +105,10 @@ impl UniformRing {
                 .push(Chunk::new(&self.device, capacity, stride, set_layout)?);
             s.used = 0;
         }
-        let chunk = s.chunks.last_mut().expect("a chunk with room was just ensured");
+        let chunk = s
+            .chunks
+            .last_mut()
+            .ok_or(Error::Internal("no uniform chunk after one was added"))?;
         let offset = s.used * stride;
         chunk.buffer.write(offset, bytemuck::bytes_of(block))?;
         s.used += 1;

@@ -6,12 +6,37 @@
 //! Values GL would answer with `INVALID_VALUE` (or `INVALID_ENUM`) are rejected with a
 //! [`StateError`] naming the parameter, the value and the valid range.
 //!
-//! One difference from GL's state machine: GL has a current color, and with COLOR_MATERIAL
-//! enabled it writes that color into the tracked material parameter, which keeps it after
-//! glDisable(COLOR_MATERIAL). Here the current color is per vertex (the mesh's colors) and
-//! color material is applied while drawing, so disabling it restores the material set by
-//! glMaterial. An emulation layer that relies on the written-back value should copy its
-//! current color into the material when it disables COLOR_MATERIAL.
+//! Color material is GL's (section 2.14.3): while `COLOR_MATERIAL` is enabled, `glColor`
+//! ([`GlState::color`]), `glColorMaterial` and `glEnable(COLOR_MATERIAL)` write the current
+//! color into the tracked material parameters, which keep it after
+//! `glDisable(COLOR_MATERIAL)`, as in Mesa's GL (a conformance test pins it). A draw with a
+//! per-vertex color array applies color material to each vertex's color while drawing and
+//! leaves the state's material alone; GL leaves the current color undefined after such a draw
+//! (section 2.8), and the state keeps the last `glColor`.
+//!
+//! ```
+//! use ffvk::gl::state::{Cap, ColorMaterialMode, Face, GlState, LightParam, MaterialParam};
+//! use ffvk::glam::{Mat4, Vec3, Vec4};
+//!
+//! let mut gl = GlState::new();
+//! gl.enable(Cap::Lighting)?;
+//! gl.enable(Cap::Light(0))?;
+//! // Set under a view matrix, a light position is stored in eye space, as glLight does.
+//! gl.load_modelview(Mat4::from_translation(Vec3::new(0.0, 0.0, -5.0)))?;
+//! gl.light(0, LightParam::Position(Vec4::new(0.0, 0.0, 1.0, 1.0)))?;
+//! assert_eq!(gl.lighting.lights[0].position, Vec4::new(0.0, 0.0, -4.0, 1.0));
+//! // GL's INVALID_VALUE is an error naming the parameter; the state is unchanged.
+//! let err = gl.light(0, LightParam::SpotCutoff(95.0)).unwrap_err();
+//! assert!(err.to_string().starts_with("GL_SPOT_CUTOFF = 95"));
+//! // glColor under COLOR_MATERIAL is written into the material, and stays after glDisable.
+//! gl.color_material(Face::FrontAndBack, ColorMaterialMode::Diffuse);
+//! gl.enable(Cap::ColorMaterial)?;
+//! gl.color(Vec4::new(1.0, 0.5, 0.0, 1.0))?;
+//! gl.disable(Cap::ColorMaterial)?;
+//! assert_eq!(gl.lighting.front.diffuse, Vec4::new(1.0, 0.5, 0.0, 1.0));
+//! # let _ = MaterialParam::Shininess(0.0);
+//! # Ok::<(), ffvk::gl::state::StateError>(())
+//! ```
 
 use glam::{Mat3, Mat4, Vec3, Vec4};
 

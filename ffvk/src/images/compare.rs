@@ -104,9 +104,13 @@ impl Tolerance {
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[non_exhaustive]
 pub struct PixelDiff {
+    /// Column, in pixels from the left.
     pub x: u32,
+    /// Row, in pixels from the top.
     pub y: u32,
+    /// The expected image's RGBA bytes at the pixel.
     pub expected: [u8; 4],
+    /// The actual image's RGBA bytes at the pixel.
     pub actual: [u8; 4],
 }
 
@@ -115,7 +119,9 @@ pub struct PixelDiff {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[non_exhaustive]
 pub struct Comparison {
+    /// Width of both images, in pixels.
     pub width: u32,
+    /// Height of both images, in pixels.
     pub height: u32,
     /// Largest difference per channel (R, G, B, A).
     pub max_diff: [u8; 4],
@@ -135,6 +141,7 @@ pub struct Comparison {
     /// The first pixel, row by row from the top left, with a channel over the threshold.
     #[cfg_attr(feature = "serde", serde(default))]
     pub first_over: Option<PixelDiff>,
+    /// The [`Tolerance::threshold`] `over` was counted with (of 255).
     pub threshold: u8,
 }
 
@@ -145,6 +152,7 @@ impl Comparison {
         self.share_over <= tolerance.max_share && self.flip_mean.is_some_and(|f| f <= tolerance.max_flip)
     }
 
+    /// Whether the images are byte-identical, alpha included.
     pub fn identical(&self) -> bool {
         self.max_diff == [0; 4]
     }

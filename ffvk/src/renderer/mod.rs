@@ -277,6 +277,10 @@ impl Pixels {
 #[cfg(feature = "images")]
 impl Pixels {
     /// The same pixels as an `image` crate buffer (feature `images`).
+    #[allow(
+        clippy::expect_used,
+        reason = "Pixels is made only by read_image, with exactly width * height * 4 bytes"
+    )]
     pub fn into_rgba_image(self) -> image::RgbaImage {
         image::RgbaImage::from_raw(self.width, self.height, self.rgba)
             .expect("Pixels holds width * height * 4 bytes")
@@ -291,6 +295,25 @@ impl From<Pixels> for image::RgbaImage {
 }
 
 /// Draws frames offscreen and returns them as images. Owns its device; meshes hold it too.
+///
+/// ```
+/// use ffvk::gl::state::GlState;
+/// use ffvk::glam::{Mat4, Vec3, Vec4};
+/// use ffvk::mesh::{MeshData, Vertex};
+/// use ffvk::{Draw, Frame, Renderer, RendererOptions};
+///
+/// // A green quad over the whole of GL's clip space, lighting off (GL's default).
+/// let v = |x, y| Vertex::new(Vec3::new(x, y, 0.0), Vec3::Z, Vec4::new(0.0, 1.0, 0.0, 1.0));
+/// let quad = MeshData::new(vec![v(-1.0, -1.0), v(1.0, -1.0), v(1.0, 1.0), v(-1.0, 1.0)], vec![0, 1, 2, 0, 2, 3]);
+/// let mut renderer = Renderer::new(&RendererOptions::default())?;
+/// let quad = renderer.upload(&quad)?;
+/// let gl = GlState::new();
+/// let mut frame = Frame::new(4, 4);
+/// frame.draws.push(Draw::new(&quad, Mat4::IDENTITY, Mat4::IDENTITY, gl.lighting));
+/// let pixels = renderer.render(&frame)?;
+/// assert_eq!(pixels.pixel(2, 2), Some([0, 255, 0, 255]));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub struct Renderer {
     // Field order is drop order (after Drop waits for the device): everything that holds the
     // device goes before `device`, the last Arc this renderer keeps.
@@ -307,6 +330,10 @@ pub struct Renderer {
     queries: Queries,
     /// Set when a submission failed: the renderer refuses further frames.
     lost: bool,
+    /// The queue of its own device, which it alone submits to.
+    queue: vk::Queue,
+    /// Its instance's validation messages.
+    validation: ValidationSink,
     device: Arc<Device>,
 }
 
@@ -317,12 +344,12 @@ impl Renderer {
         let device = Device::new(instance, options.device.as_deref())?;
         let lighting = Lighting::new(
             &device,
-            &LightingOptions {
-                specialize: options.specialize,
-                ..LightingOptions::new(Target::OFFSCREEN, VertexInput::interleaved())
-            },
+            &LightingOptions::new(Target::OFFSCREEN, VertexInput::interleaved())
+                .with_specialize(options.specialize),
         )?;
-        let commands = CommandPool::with_one_buffer(&device, device.own().queue_family)?;
+        let own = device.own()?;
+        let (queue_family, queue, validation) = (own.queue_family, own.queue, own.instance.validation_sink());
+        let commands = CommandPool::with_one_buffer(&device, queue_family)?;
         let fence = Fence::new(&device)?;
         let queries = Queries::new(&device)?;
         let uploader = std::sync::Mutex::new(Uploader::new(&device)?);
@@ -335,6 +362,8 @@ impl Renderer {
             upload: options.upload,
             queries,
             lost: false,
+            queue,
+            validation,
             device,
         };
         renderer.check_validation()?;
@@ -349,7 +378,7 @@ impl Renderer {
     /// The validation messages of this renderer's instance. Messages reported while the
     /// device is destroyed arrive after the renderer is dropped; keep a clone to read them.
     pub fn validation_sink(&self) -> ValidationSink {
-        self.device.own().instance.validation_sink()
+        self.validation.clone()
     }
 
     fn check_validation(&self) -> Result<()> {
@@ -407,8 +436,7 @@ impl Renderer {
         let [vertices, indices]: [Buffer; 2] = uploader
             .upload(&self.device, &parts, self.upload)?
             .try_into()
-            .map_err(|_| ())
-            .expect("one buffer per part");
+            .map_err(|_| Error::Internal("the uploader returned another number of buffers than parts"))?;
         Ok(Mesh {
             vertices,
             indices,
@@ -596,11 +624,18 @@ impl Renderer {
             .collect())
     }
 
+    /// The frame's attachments and readback buffer, which `ensure_targets` made.
+    fn targets(&self) -> Result<&Targets> {
+        self.targets.as_ref().ok_or(Error::Internal(
+            "a frame was recorded before its targets were made",
+        ))
+    }
+
     /// The readback buffer as an image (after a frame recorded with `readback`).
     fn read_image(&self, frame: &Frame) -> Result<Pixels> {
-        let targets = self.targets.as_ref().expect("ensure_targets made them");
+        let targets = self.targets()?;
         let len = usize::try_from(u64::from(frame.width) * u64::from(frame.height) * 4)
-            .expect("ensure_targets bounded the size by the device's limit");
+            .map_err(|_| Error::Internal("an image larger than the address space was rendered"))?;
         Ok(Pixels {
             width: frame.width,
             height: frame.height,
@@ -663,7 +698,7 @@ impl Renderer {
         // every wait); &self plus the renderer's exclusive ownership of the queue serialize
         // queue access.
         unsafe {
-            vkd.queue_submit(self.device.own().queue, &[submit], self.fence.raw())
+            vkd.queue_submit(self.queue, &[submit], self.fence.raw())
                 .map_err(vk_error("vkQueueSubmit"))?;
             vkd.wait_for_fences(&[self.fence.raw()], true, u64::MAX)
                 .map_err(vk_error("vkWaitForFences"))?;

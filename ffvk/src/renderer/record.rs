@@ -6,7 +6,7 @@ use ash::vk;
 use super::{subresource, Frame, Pass, Renderer, Targets};
 use crate::draw::lighting::{Lighting, LitDraw, Staged};
 use crate::draw::record::Geometry;
-use crate::error::{vk_error, Result};
+use crate::error::{vk_error, Error, Result};
 use crate::vk::objects::QueryPool;
 
 impl Renderer {
@@ -14,7 +14,11 @@ impl Renderer {
     /// took to record, in nanoseconds (the repeats only bind again what it wrote).
     pub(super) fn record(&mut self, frame: &Frame, pass: Pass) -> Result<f64> {
         let vkd = &self.device.raw;
-        let targets = self.targets.as_ref().expect("ensure_targets made them");
+        // Borrowed as a field (not through self.targets()): the draws below take the lighting
+        // mutably at the same time.
+        let targets = self.targets.as_ref().ok_or(Error::Internal(
+            "a frame was recorded before its targets were made",
+        ))?;
         // SAFETY: the previous submission was waited for.
         let cmd = unsafe { self.commands.begin_one_time() }?;
         // A pool where the device has it and the pass asks for it.

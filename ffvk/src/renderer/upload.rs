@@ -47,7 +47,7 @@ pub(super) struct Uploader {
 impl Uploader {
     pub(super) fn new(device: &Arc<Device>) -> Result<Self> {
         Ok(Uploader {
-            commands: CommandPool::with_one_buffer(device, device.own().queue_family)?,
+            commands: CommandPool::with_one_buffer(device, device.own()?.queue_family)?,
             fence: Fence::new(device)?,
         })
     }
@@ -229,11 +229,12 @@ impl Uploader {
         let vkd = &device.raw;
         let buffers = [self.commands.buffer()];
         let submit = vk::SubmitInfo::default().command_buffers(&buffers);
+        let queue = device.own()?.queue;
         // SAFETY: the command buffer is recorded, the fence unsignaled; the renderer's queue
         // is used by one call at a time (uploads hold the uploader's lock, frames take the
         // renderer by &mut, and the two cannot overlap).
         let result = unsafe {
-            vkd.queue_submit(device.own().queue, &[submit], self.fence.raw())
+            vkd.queue_submit(queue, &[submit], self.fence.raw())
                 .map_err(vk_error("vkQueueSubmit"))
                 .and_then(|()| {
                     vkd.wait_for_fences(&[self.fence.raw()], true, u64::MAX)

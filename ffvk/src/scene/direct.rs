@@ -41,7 +41,9 @@ pub enum LightChoice {
 #[derive(Debug, Clone, PartialEq, Default)]
 #[non_exhaustive]
 pub struct DirectOptions {
+    /// The camera the file is drawn from (`ffvk --camera`).
     pub camera: CameraChoice,
+    /// The lights it is drawn with (`ffvk --lights`).
     pub lights: LightChoice,
     /// How the file's lights are drawn when they are: GL's mapping (the default) or glTF's
     /// own falloff and cones. [`GltfLights::Off`] leaves them out, as
@@ -71,6 +73,8 @@ with_fields!(DirectOptions {
 #[derive(Debug, Clone)]
 #[non_exhaustive]
 pub struct DirectScene {
+    /// The scene [`toml`](DirectScene::toml) makes, ready to draw; its notes start with
+    /// [`choices`](DirectScene::choices).
     pub scene: Scene,
     /// Scene TOML naming the glTF file as `gltf_ref` (see [`from_gltf`]).
     pub toml: String,

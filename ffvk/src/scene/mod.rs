@@ -174,28 +174,50 @@ pub struct SceneError {
 pub enum SceneErrorKind {
     /// The file could not be read.
     #[error("cannot read the scene: {source}")]
-    Io { source: std::io::Error },
+    Io {
+        /// The I/O error from opening or reading the scene file.
+        source: std::io::Error,
+    },
 
     /// Not TOML, or not a scene's tables: an unknown field, a value of the wrong type. The
     /// message is the TOML parser's, which shows the line.
     #[error("{}", shorten_lines(&.source.to_string()))]
-    Toml { source: toml::de::Error },
+    Toml {
+        /// The TOML parser's error, with the offending line and column.
+        source: toml::de::Error,
+    },
 
     /// A value outside what the field allows, or fields that do not go together.
     #[error("{field}: {message}")]
-    Field { field: String, message: String },
+    Field {
+        /// Where in the scene, as a TOML path: `camera.fovy`, `lights[0].index`, `meshes[2]`.
+        field: String,
+        /// The offending value and what was expected.
+        message: String,
+    },
 
     /// A value GL's own checks reject (what glLight, glMaterial, ... would flag).
     #[error("{field}: {source}")]
-    State { field: String, source: StateError },
+    State {
+        /// The scene field whose value GL rejected, as a TOML path (`light_model.color_control`).
+        field: String,
+        /// GL's error: the GL parameter, the rejected value and what is valid.
+        source: StateError,
+    },
 
     /// A built-in mesh past the scene's mesh memory limit.
     #[error("{field}: {source}")]
-    OverBudget { field: String, source: OverBudget },
+    OverBudget {
+        /// The `[[meshes]]` table of the refused mesh (`meshes[2]`).
+        field: String,
+        /// The mesh's size, the bytes already used and the limit.
+        source: OverBudget,
+    },
 
     /// A glTF file named by a `[[meshes]]` table that could not be loaded.
     #[error("{field}: {source}")]
     Gltf {
+        /// The field naming the glTF file (`meshes[2].gltf`; `gltf` for a file drawn directly).
         field: String,
         /// Boxed: glTF errors are large.
         source: Box<LoadError>,

@@ -109,12 +109,10 @@ impl Builder<'_> {
             }
             (Some(path), None) => (self.texture_file(&f("image"), path)?, path.display().to_string()),
             (None, Some(name)) => {
-                let checker = word(self, &f("builtin"), name, &[("checker", ())])
-                    .map(|()| TextureImage::checker(64, 8, [235, 235, 235, 255], [40, 90, 160, 255]))?;
-                (
-                    checker.expect("a 64x64 checker is a valid texture"),
-                    format!("builtin {name}"),
-                )
+                word(self, &f("builtin"), name, &[("checker", ())])?;
+                let checker = TextureImage::checker(64, 8, [235, 235, 235, 255], [40, 90, 160, 255])
+                    .map_err(|e| self.field(f("builtin"), e.to_string()))?;
+                (checker, format!("builtin {name}"))
             }
             (None, None) => {
                 return Err(self.field(

@@ -301,10 +301,10 @@ impl Device {
 
     /// The instance and queue of ffvk's own device. Only the renderer submits, and it
     /// always opens its own device.
-    pub(crate) fn own(&self) -> &OwnDevice {
-        self.own
-            .as_ref()
-            .expect("the renderer opens its own device; a caller's device has no ffvk queue")
+    pub(crate) fn own(&self) -> Result<&OwnDevice> {
+        self.own.as_ref().ok_or(Error::Internal(
+            "a caller's device was asked for ffvk's own queue",
+        ))
     }
 
     /// What ffvk found out about the device when it opened it.

@@ -403,9 +403,11 @@ impl Allocator {
             None => {
                 let (memory, mapped) = self.allocate_memory(device, what, block_size, type_index)?;
                 let mut ranges = Ranges::new(block_size);
-                let offset = ranges
-                    .allocate(size, align)
-                    .expect("a new block holds half its size");
+                let Some(offset) = ranges.allocate(size, align) else {
+                    // SAFETY: the memory was just allocated and nothing uses it.
+                    unsafe { device.free_memory(memory, None) };
+                    return Err(Error::Internal("a new memory block cannot hold half its size"));
+                };
                 let block = Block {
                     memory,
                     ranges,
@@ -425,7 +427,9 @@ impl Allocator {
                 (i, offset)
             }
         };
-        let block = self.blocks[index][i].as_ref().expect("the block just used");
+        let block = self.blocks[index][i]
+            .as_ref()
+            .ok_or(Error::Internal("the memory block just used is gone"))?;
         // SAFETY: the offset lies inside the block's mapping, which covers the whole block.
         let mapped = block
             .mapped
@@ -521,9 +525,10 @@ impl Allocator {
         // that changes image size frees and allocates the same amount again.
         let others = slots.iter().filter(|b| b.is_some()).count() > 1;
         if empty && others {
-            let block = slots[index].take().expect("checked above");
-            // SAFETY: no allocation is left in the block.
-            unsafe { device.free_memory(block.memory, None) };
+            if let Some(block) = slots[index].take() {
+                // SAFETY: no allocation is left in the block.
+                unsafe { device.free_memory(block.memory, None) };
+            }
         }
     }
 

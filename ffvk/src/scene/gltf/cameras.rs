@@ -9,16 +9,24 @@ use glam::{Mat4, Vec3};
 pub enum CameraProjection {
     /// `perspective`: `zfar` absent means an infinite projection.
     Perspective {
+        /// The vertical field of view, in radians (0 < yfov < π).
         yfov: f32,
+        /// Width over height; `None` leaves it to the image's size.
         aspect_ratio: Option<f32>,
+        /// The distance to the near clip plane (> 0).
         znear: f32,
+        /// The distance to the far clip plane; `None` for an infinite projection.
         zfar: Option<f32>,
     },
     /// `orthographic`: half the view's width and height, and the clip planes.
     Orthographic {
+        /// Half the view's width, in the camera's space (non-zero).
         xmag: f32,
+        /// Half the view's height, in the camera's space (non-zero).
         ymag: f32,
+        /// The distance to the near clip plane (≥ 0).
         znear: f32,
+        /// The distance to the far clip plane (> znear).
         zfar: f32,
     },
 }
@@ -31,6 +39,7 @@ pub struct PlacedCamera {
     pub name: String,
     /// Its index in the file's `cameras`.
     pub index: usize,
+    /// Its projection, its values checked against the ranges glTF allows.
     pub projection: CameraProjection,
     /// The node's world transform: the camera sits at its origin, looks down its −Z, +Y up.
     pub world_transform: Mat4,

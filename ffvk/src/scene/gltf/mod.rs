@@ -114,11 +114,17 @@ pub struct LoadError {
 pub enum LoadErrorKind {
     /// The file itself could not be read.
     #[error("cannot read the file: {source}")]
-    Io { source: std::io::Error },
+    Io {
+        /// The I/O error from opening or reading the `.gltf` or `.glb` file.
+        source: std::io::Error,
+    },
 
     /// Neither glTF JSON nor GLB; `message` is the parser's.
     #[error("not a glTF 2.0 file (.gltf JSON or .glb): {message}")]
-    Parse { message: String },
+    Parse {
+        /// The GLB header check's, the GLB reader's or the JSON parser's message.
+        message: String,
+    },
 
     /// extensionsRequired names extensions outside [`SUPPORTED_EXTENSIONS`] (and
     /// [`TEXTURE_EXTENSIONS`]); every one is named.
@@ -127,12 +133,18 @@ pub enum LoadErrorKind {
         extensions.join(", "),
         SUPPORTED_EXTENSIONS.join(", ")
     )]
-    UnsupportedExtension { extensions: Vec<String> },
+    UnsupportedExtension {
+        /// The required extensions ffvk neither supports nor may ignore, in the file's order.
+        extensions: Vec<String>,
+    },
 
     /// What the `gltf` crate's validator found, one entry per problem; the message shows the
     /// first eight.
     #[error("invalid glTF: {}", problem_list(.problems))]
-    Invalid { problems: Vec<String> },
+    Invalid {
+        /// One `JSON path: problem` entry per problem, in the validator's order.
+        problems: Vec<String>,
+    },
 
     /// A primitive's POSITION (`accessor`, as written in the JSON) is not an accessor index.
     #[error(
@@ -140,16 +152,22 @@ pub enum LoadErrorKind {
          < {accessor_count}"
     )]
     PositionAccessor {
+        /// `mesh M ("name") primitive P`.
         primitive: String,
+        /// The POSITION value as JSON text (a number out of range, a string, a float...).
         accessor: String,
+        /// How many accessors the file has: valid indices are below it.
         accessor_count: usize,
     },
 
     /// A buffer's external file could not be read.
     #[error("buffer {buffer}: cannot read {}: {source}", .file.display())]
     BufferFile {
+        /// The buffer's index in `buffers`.
         buffer: usize,
+        /// The file its URI leads to, resolved against the glTF file's folder.
         file: PathBuf,
+        /// The I/O error from opening or reading it.
         source: std::io::Error,
     },
 
@@ -162,27 +180,41 @@ pub enum LoadErrorKind {
         .folder.display()
     )]
     BufferOutside {
+        /// The buffer's index in `buffers`.
         buffer: usize,
+        /// The buffer's URI as written (its first 200 characters).
         uri: String,
+        /// The glTF file's folder, which the URI had to stay inside.
         folder: PathBuf,
     },
 
     /// A buffer that refers to the GLB binary chunk, in a file without one.
     #[error("buffer {buffer}: refers to the GLB binary chunk, which is missing")]
-    MissingBinChunk { buffer: usize },
+    MissingBinChunk {
+        /// The buffer's index in `buffers`.
+        buffer: usize,
+    },
 
     /// A buffer that holds fewer bytes than its byteLength.
     #[error("buffer {buffer}: holds {len} bytes: expected at least {byte_length} (its byteLength)")]
     BufferLength {
+        /// The buffer's index in `buffers`.
         buffer: usize,
+        /// The bytes it holds (an external file's padded with zeros to a multiple of 4).
         len: usize,
+        /// The byteLength the JSON declares for it.
         byte_length: usize,
     },
 
     /// A buffer that could not be loaded otherwise (a bad data URI, an unsupported URI);
     /// `message` is the `gltf` crate's.
     #[error("buffer {buffer}: {message}")]
-    Buffer { buffer: usize, message: String },
+    Buffer {
+        /// The buffer's index in `buffers`.
+        buffer: usize,
+        /// What was wrong with its URI or data.
+        message: String,
+    },
 
     /// A primitive whose attribute or indices exist only compressed by an extension ffvk
     /// cannot decode (see `compressed.rs` for why).
@@ -191,17 +223,25 @@ pub enum LoadErrorKind {
          {extension}: expected uncompressed geometry (export the file without mesh compression)"
     )]
     Compressed {
+        /// `mesh M ("name") primitive P`.
         primitive: String,
+        /// The attribute's semantic (`POSITION`, `NORMAL`, ...) or `indices`.
         attribute: String,
+        /// The index of the accessor it names.
         accessor: u64,
+        /// The extension its data is compressed with: `KHR_draco_mesh_compression` or a
+        /// meshopt one.
         extension: &'static str,
+        /// Why the accessor holds no data: no bufferView, or a meshopt fallback buffer.
         detail: &'static str,
     },
 
     /// A primitive without an attribute ffvk needs (POSITION).
     #[error("{primitive}: the required attribute {attribute} is missing")]
     MissingAttribute {
+        /// `mesh M ("name") primitive P`.
         primitive: String,
+        /// The missing attribute's semantic.
         attribute: &'static str,
     },
 
@@ -209,10 +249,15 @@ pub enum LoadErrorKind {
     /// `found` is the accessor's, e.g. `UNSIGNED_SHORT VEC3`.
     #[error("{primitive}: {attribute} (accessor {accessor}) is {found}: expected {expected}")]
     AttributeFormat {
+        /// `mesh M ("name") primitive P`.
         primitive: String,
+        /// The attribute's semantic (`POSITION`, `NORMAL`, `COLOR_0`, `TEXCOORD_0`) or `indices`.
         attribute: String,
+        /// The accessor's index.
         accessor: usize,
+        /// The accessor's component and element type.
         found: String,
+        /// The types ffvk reads for this attribute, e.g. `FLOAT VEC3`.
         expected: &'static str,
     },
 
@@ -222,18 +267,26 @@ pub enum LoadErrorKind {
          (the POSITION count)"
     )]
     AttributeCount {
+        /// `mesh M ("name") primitive P`.
         primitive: String,
+        /// The attribute's semantic (`NORMAL`, `COLOR_0`, `TEXCOORD_0`).
         attribute: String,
+        /// The accessor's index.
         accessor: usize,
+        /// The accessor's element count.
         count: usize,
+        /// The POSITION accessor's element count.
         expected: usize,
     },
 
     /// An accessor whose data is not where it says, or could not be read.
     #[error("{primitive}: accessor {accessor}: {problem}")]
     AccessorData {
+        /// `mesh M ("name") primitive P`.
         primitive: String,
+        /// The accessor's index.
         accessor: usize,
+        /// What is out of bounds or could not be read.
         problem: AccessorProblem,
     },
 
@@ -243,19 +296,26 @@ pub enum LoadErrorKind {
          < {vertex_count} (the POSITION count)"
     )]
     IndexOutOfRange {
+        /// `mesh M ("name") primitive P`.
         primitive: String,
+        /// The index accessor's index.
         accessor: usize,
+        /// The position of the first offending index in the accessor.
         element: usize,
+        /// The offending index.
         value: u32,
+        /// The POSITION element count: indices must be below it.
         vertex_count: usize,
     },
 
     /// A TRIANGLES primitive whose index or vertex count is not a multiple of 3.
     #[error("{primitive}: {count} {what} do not make whole TRIANGLES: expected a multiple of 3")]
     PartialTriangle {
+        /// `mesh M ("name") primitive P`.
         primitive: String,
         /// "indices" or "vertices".
         what: &'static str,
+        /// How many indices (or, unindexed, vertices) the primitive has.
         count: usize,
     },
 
@@ -268,6 +328,7 @@ pub enum LoadErrorKind {
         field: &'static str,
         /// The value as found (shortened when long).
         value: String,
+        /// What the specification allows, e.g. `a number in [0, 1]`.
         expected: &'static str,
     },
 
@@ -277,27 +338,42 @@ pub enum LoadErrorKind {
          finite numbers"
     )]
     NotFinite {
+        /// `mesh M ("name") primitive P`.
         primitive: String,
+        /// `POSITION`, `NORMAL` or `COLOR_0`.
         attribute: &'static str,
+        /// The accessor's index.
         accessor: usize,
+        /// The position of the first offending element in the accessor.
         element: usize,
+        /// That element's components, as read.
         value: Vec<f32>,
     },
 
     /// A primitive past the scene's mesh memory limit.
     #[error("{primitive}: {source}")]
-    OverBudget { primitive: String, source: OverBudget },
+    OverBudget {
+        /// `mesh M ("name") primitive P`.
+        primitive: String,
+        /// The primitive's size, the bytes already used and the limit.
+        source: OverBudget,
+    },
 
     /// A host allocation for a primitive's data failed.
     #[error("{primitive}: {source}")]
     Alloc {
+        /// `mesh M ("name") primitive P`.
         primitive: String,
+        /// What was being allocated, and how many bytes.
         source: crate::alloc::AllocError,
     },
 
     /// A node hierarchy with a cycle through node `node`.
     #[error("node {node} is its own ancestor: expected the node hierarchy to be a forest")]
-    NodeCycle { node: usize },
+    NodeCycle {
+        /// The index of a node on the cycle: the first one found to be its own ancestor.
+        node: usize,
+    },
 }
 
 /// The validator's first eight problems, and how many more there are.

@@ -116,9 +116,13 @@ pub enum AccessorProblem {
         .part.prefix()
     )]
     Stride {
+        /// The elements whose buffer view it is.
         part: AccessorPart,
+        /// The buffer view's index.
         view: usize,
+        /// Its byteStride, in bytes.
         stride: usize,
+        /// The size of one element, in bytes.
         element: usize,
     },
 
@@ -129,11 +133,17 @@ pub enum AccessorProblem {
         .part.prefix()
     )]
     ViewOverrun {
+        /// The elements that overrun.
         part: AccessorPart,
+        /// How many elements are read.
         count: usize,
+        /// The size of one element, in bytes.
         element: usize,
+        /// Where the first element starts in the buffer view, in bytes (the byteOffset).
         offset: usize,
+        /// The buffer view's index.
         view: usize,
+        /// The buffer view's byteLength.
         view_length: usize,
     },
 
@@ -144,17 +154,28 @@ pub enum AccessorProblem {
         .part.prefix()
     )]
     BufferOverrun {
+        /// The elements whose buffer view it is.
         part: AccessorPart,
+        /// The buffer view's index.
         view: usize,
+        /// The buffer view's byteOffset in its buffer.
         view_offset: usize,
+        /// The buffer view's byteLength.
         view_length: usize,
+        /// The buffer's index.
         buffer: usize,
+        /// The bytes the buffer holds (0 for a buffer that was not loaded).
         available: usize,
     },
 
     /// A sparse substitution of none or of more elements than the accessor has.
     #[error("sparse count is {sparse}: expected 1..={count} (the accessor count)")]
-    SparseCount { sparse: usize, count: usize },
+    SparseCount {
+        /// The sparse substitution's count.
+        sparse: usize,
+        /// The accessor's count.
+        count: usize,
+    },
 
     /// Data the `gltf` crate's reader could not find (e.g. an accessor without a buffer view).
     #[error("its data could not be read from its buffer view")]
@@ -162,7 +183,12 @@ pub enum AccessorProblem {
 
     /// The reader stopped after `read` elements.
     #[error("read {read} elements: expected {count} (its count)")]
-    ShortRead { read: usize, count: usize },
+    ShortRead {
+        /// How many elements the reader returned.
+        read: usize,
+        /// The accessor's count.
+        count: usize,
+    },
 }
 
 /// Checks that an accessor's elements lie inside its buffer view and buffer, so the `gltf`

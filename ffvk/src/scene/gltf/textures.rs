@@ -83,23 +83,25 @@ pub(super) fn material_textures(
         let image = texture.source();
         let i = image.index();
         cache[i]
-            .get_or_insert_with(|| match decode_image(cx, &image, buffers, roots) {
-                Ok(decoded) => {
+            .get_or_insert_with(|| {
+                let texture = decode_image(cx, &image, buffers, roots).and_then(|decoded| {
                     let mean = mean_linear(&decoded);
                     let (w, h) = decoded.dimensions();
-                    let texture = TextureImage::new(w, h, decoded.into_raw())
-                        .expect("decode_image checked the size")
-                        .with_mipmaps();
-                    Some((mean, Arc::new(texture)))
-                }
-                Err(why) => {
-                    warnings.push(format!(
-                        "image {i}{}: {why}; the materials using it take their factors alone",
-                        cx.name("images", i)
-                            .map(|n| format!(" ({:?})", crate::scene::shorten(&n)))
-                            .unwrap_or_default()
-                    ));
-                    None
+                    TextureImage::new(w, h, decoded.into_raw())
+                        .map(|texture| (mean, texture))
+                        .map_err(|e| e.to_string())
+                });
+                match texture {
+                    Ok((mean, texture)) => Some((mean, Arc::new(texture.with_mipmaps()))),
+                    Err(why) => {
+                        warnings.push(format!(
+                            "image {i}{}: {why}; the materials using it take their factors alone",
+                            cx.name("images", i)
+                                .map(|n| format!(" ({:?})", crate::scene::shorten(&n)))
+                                .unwrap_or_default()
+                        ));
+                        None
+                    }
                 }
             })
             .clone()
