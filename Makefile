@@ -19,11 +19,13 @@ demo: deps
 	$(CARGO) run -- demo --out out/demo
 
 # The workspace's tests (the suite, unit tests, examples, benches built), the doctests (the
-# README's Rust snippets and the API's examples), the lints, the library alone as a plain
-# dependency builds it, and a crate outside the workspace that depends on it.
+# README's Rust snippets and the API's examples), the lints, the library's rustdoc without a
+# warning (broken links), the library alone as a plain dependency builds it, and a crate
+# outside the workspace that depends on it.
 test: test-deps
 	$(CARGO) test --workspace --all-targets
 	$(CARGO) test --workspace --doc
 	$(CARGO) clippy --workspace --all-targets -- -D warnings
+	RUSTDOCFLAGS="-D warnings" $(CARGO) doc -p ffvk --no-deps --all-features --quiet
 	bash scripts/check-lean-core.sh
 	bash scripts/check-dependent.sh

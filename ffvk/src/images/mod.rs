@@ -14,7 +14,7 @@ use image::{ExtendedColorType, ImageEncoder, ImageReader, Limits, RgbaImage};
 #[error("{}: {kind}", .path.display())]
 #[non_exhaustive]
 pub struct ImageError {
-    /// The file (or, for [`ImageErrorKind::CreateDir`], the folder).
+    /// The image file read or written.
     pub path: PathBuf,
     /// What went wrong.
     pub kind: ImageErrorKind,

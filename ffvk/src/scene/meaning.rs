@@ -83,7 +83,7 @@ pub const KEY_LIGHT: f32 = 0.75;
 
 /// The exposure `auto` chooses: the scale of GL light color per glTF unit (lux, candela) that
 /// makes the glTF lights, as [`gl_light`] maps them, together light the center of the scene's
-/// bounds with an illuminance of [`KEY_LIGHT`] (in GL units: 1 is a white light falling
+/// bounds with an illuminance of `KEY_LIGHT` (0.75) (in GL units: 1 is a white light falling
 /// head-on). Each light counts with
 /// its brightest channel and GL's attenuation at its distance from the center; a point or spot
 /// light counts at no less than half the bounds' radius, so that a lamp inside its own shade
