@@ -4,15 +4,21 @@ SHELL := /bin/bash
 CARGO ?= cargo
 export VK_DRIVER_FILES ?= /usr/share/vulkan/icd.d/lvp_icd.x86_64.json
 
-.PHONY: demo test deps test-deps check-cargo
+.PHONY: demo test deps test-deps check-cargo check-clippy
 
 check-cargo:
 	@command -v $(CARGO) >/dev/null || { echo "ffvk: cargo not found: install a Rust toolchain (rustup) first" >&2; exit 1; }
 
+# make test lints with clippy: add it where the toolchain came without it (rustup's minimal
+# profile), else say how.
+check-clippy: check-cargo
+	@$(CARGO) clippy --version >/dev/null 2>&1 || { command -v rustup >/dev/null && rustup component add clippy; } || \
+		{ echo "ffvk: cargo clippy not found: install it (rustup component add clippy)" >&2; exit 1; }
+
 deps: check-cargo
 	@bash scripts/setup-deps.sh
 
-test-deps: check-cargo
+test-deps: check-clippy
 	@bash scripts/setup-deps.sh --test
 
 demo: deps

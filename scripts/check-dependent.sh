@@ -7,6 +7,9 @@ repo="$(cd "$(dirname "$0")/.." && pwd)"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 cp -r "$repo/tests/dependent/." "$work/"
+# The workspace's lockfile: the dependent resolves the same crate versions ffvk is tested with
+# (cargo drops the workspace's own entries and adds the dependent's).
+cp "$repo/Cargo.lock" "$work/"
 sed -i "s|FFVK_PATH|$repo/ffvk|" "$work/Cargo.toml"
 # Its own target folder under ours, so later runs reuse the build.
 export CARGO_TARGET_DIR="$repo/target/dependent"

@@ -18,3 +18,6 @@ if ((${#found[@]})); then
 fi
 echo "check-lean-core: ffvk's default build depends on $(sort -u <<<"$tree" | grep -cv '^ffvk v') crates, none of ${tool_crates[*]}"
 cargo build -p ffvk --quiet
+# Within the workspace the tool crate turns the library's features on; lint the library as a
+# dependent builds it too.
+cargo clippy -p ffvk --quiet -- -D warnings

@@ -157,7 +157,7 @@ pub fn texture_panels(renderer: &mut Renderer, size: u32) -> Result<Vec<(String,
     let texture = renderer.upload_texture(&demo_texture(), &sampling)?;
     let mut panels = Vec::new();
     for control in [ColorControl::SingleColor, ColorControl::SeparateSpecularColor] {
-        for env in TexEnvMode::ALL {
+        for &env in TexEnvMode::ALL {
             let mut gl = state(&PANELS[4], LightingMode::Fragment)?;
             let white = presets::preset("white_plastic").expect("the preset table has white_plastic");
             gl.lighting.front = white;

@@ -305,7 +305,7 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
                 t.source,
                 image.width(),
                 image.height(),
-                image.levels.len(),
+                image.levels().len(),
                 if image.srgb { ", sRGB" } else { "" },
                 t.sampling.min_filter.name(),
                 t.sampling.mag_filter.name(),

@@ -1,6 +1,8 @@
-//! The tools behind the `ffvk` command line (feature `tools`): the benchmark, the demo, the
-//! per-pixel explanation, regression runs, contact sheets and the tables they print. They
-//! print, read arguments and set environment variables; the core library does none of that.
+//! `ffvk-cli`: the tools behind the `ffvk` command line (`src/main.rs`), built on the `ffvk`
+//! library: the benchmark, the demo, the per-pixel explanation, regression runs and their
+//! report, contact sheets and the tables they print, and the GL reference (fixed-function
+//! OpenGL through EGL). They print, read arguments and set environment variables; the library
+//! does none of that. A library target of its own so that the test suite can reach them.
 
 pub mod bench;
 pub mod demo;

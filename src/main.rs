@@ -226,8 +226,8 @@ enum Exposure {
 }
 
 fn parse_gltf_lights(s: &str) -> Result<GltfLights, String> {
-    GltfLights::parse(s)
-        .ok_or_else(|| format!("{s:?}: expected \"off\", \"gl\" or \"exact\" (or true/false)"))
+    s.parse::<GltfLights>()
+        .map_err(|_| format!("{s:?}: expected \"off\", \"gl\" or \"exact\" (or true/false)"))
 }
 
 fn parse_exposure(s: &str) -> Result<Exposure, String> {

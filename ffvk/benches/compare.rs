@@ -1,4 +1,4 @@
-//! `cargo bench --bench compare`: reading and comparing two differing 8192² PNGs, the way
+//! `cargo bench -p ffvk --features images --bench compare`: reading and comparing two differing 8192² PNGs, the way
 //! `ffvk compare` and `render --check` do, in time and peak memory.
 //!
 //! Two cases: images that differ in a block (the per-channel check decides: FLIP is not

@@ -9,8 +9,8 @@
 //! The teapot is drawn in the three lighting modes and written to `out/embed/`:
 //!
 //! ```sh
-//! cargo run --release --example embed            # lavapipe by default
-//! FFVK_DEVICE=NVIDIA cargo run --release --example embed
+//! cargo run --release -p ffvk --features images --example embed            # lavapipe by default
+//! FFVK_DEVICE=NVIDIA cargo run --release -p ffvk --features images --example embed
 //! ```
 //!
 //! The vertex layout is the caller's own: positions in binding 0 (`R32G32B32_SFLOAT`),
@@ -476,7 +476,7 @@ impl App {
         let vertex_input =
             without_colors
                 .clone()
-                .with_color(Attribute::new(1, 12, vk::Format::R8G8B8A8_UNORM));
+                .with_color(Some(Attribute::new(1, 12, vk::Format::R8G8B8A8_UNORM)));
         let target = Target::new(COLOR_FORMAT, DEPTH_FORMAT);
         let options = |vertex_input| {
             let mut options = LightingOptions::new(target, vertex_input);

@@ -1,5 +1,6 @@
-//! The core's error type. Library code returns these; only the binary decides how to print
-//! them. Errors of the optional layers (images, scenes, tools) live with them and wrap this one.
+//! The core's error type. Library code returns these; only a program (the `ffvk` command of
+//! the `ffvk-cli` crate, or the caller's) decides how to print them. Errors of the optional
+//! layers (images, scenes) live with them and wrap this one; so do the tool crate's.
 
 use ash::vk;
 

@@ -10,7 +10,7 @@
 //! # Two ways in
 //!
 //! - [`Renderer`] opens its own device and draws [`Frame`]s offscreen into images: what the
-//!   tools, the tests and regression renders use.
+//!   `ffvk` command, the tests and regression renders use.
 //! - [`Lighting`] records GL's lighting into a caller's own device, command buffers and
 //!   render targets ([`vk::Device::from_caller`]); see its module, [`draw::lighting`], for
 //!   what it owns and records, and `ffvk/examples/embed.rs` (in the repository) for a complete

@@ -271,14 +271,14 @@ impl<'g> GlTexture<'g> {
     /// ([`ffvk::gl::texture::texturing_applies`]), finds it incomplete under a mipmap filter
     /// rather than complete at its levels. Leaves the texture bound to `GL_TEXTURE_2D`.
     fn upload(gl: &'g Gl, image: &TextureImage, sampling: &Sampling) -> Result<GlTexture<'g>, DrawError> {
-        for (level, l) in image.levels.iter().enumerate() {
-            let fits = GLsizei::try_from(l.width).is_ok() && GLsizei::try_from(l.height).is_ok();
-            if !fits || Some(l.rgba.len()) != (l.width as usize).checked_mul(l.height as usize * 4) {
+        for (level, l) in image.levels().iter().enumerate() {
+            let fits = GLsizei::try_from(l.width()).is_ok() && GLsizei::try_from(l.height()).is_ok();
+            if !fits || Some(l.rgba().len()) != (l.width() as usize).checked_mul(l.height() as usize * 4) {
                 return Err(DrawError::TextureLevel {
                     level,
-                    width: l.width,
-                    height: l.height,
-                    bytes: l.rgba.len(),
+                    width: l.width(),
+                    height: l.height(),
+                    bytes: l.rgba().len(),
                 });
             }
         }
@@ -292,24 +292,24 @@ impl<'g> GlTexture<'g> {
             gl.GenTextures(1, &mut texture.name);
             gl.BindTexture(gl::TEXTURE_2D, texture.name);
             gl.PixelStorei(gl::UNPACK_ALIGNMENT, 1);
-            for (level, l) in image.levels.iter().enumerate() {
+            for (level, l) in image.levels().iter().enumerate() {
                 gl.TexImage2D(
                     gl::TEXTURE_2D,
                     level as GLint,
                     internal as GLint,
-                    l.width as GLsizei,
-                    l.height as GLsizei,
+                    l.width() as GLsizei,
+                    l.height() as GLsizei,
                     0,
                     gl::RGBA,
                     gl::UNSIGNED_BYTE,
-                    l.rgba.as_ptr().cast(),
+                    l.rgba().as_ptr().cast(),
                 );
             }
             if image.has_mipmaps() {
                 gl.TexParameteri(
                     gl::TEXTURE_2D,
                     gl::TEXTURE_MAX_LEVEL,
-                    image.levels.len() as GLint - 1,
+                    image.levels().len() as GLint - 1,
                 );
             }
             gl.TexParameteri(

@@ -14,28 +14,28 @@ use crate::support::*;
 /// Fails with the first pixel where the Renderer's image and the caller's differ, saving both.
 fn assert_same_bytes(renderer: &ffvk::Pixels, caller: &[u8], what: &str) {
     let first_difference = renderer
-        .rgba
+        .rgba()
         .chunks(4)
         .zip(caller.chunks(4))
         .position(|(a, b)| a != b);
     if let Some(i) = first_difference {
-        let (x, y) = (i as u32 % renderer.width, i as u32 / renderer.width);
+        let (x, y) = (i as u32 % renderer.width(), i as u32 / renderer.width());
         let renderer_path = save_for_inspection(
             &renderer.clone().into_rgba_image(),
             &format!("embed_renderer_{what}"),
         );
         let caller_image =
-            image::RgbaImage::from_raw(renderer.width, renderer.height, caller.to_vec()).unwrap();
+            image::RgbaImage::from_raw(renderer.width(), renderer.height(), caller.to_vec()).unwrap();
         let caller_path = save_for_inspection(&caller_image, &format!("embed_caller_{what}"));
         panic!(
             "{what}: pixel ({x}, {y}) is {:?} through the Renderer but {:?} through the caller's device; images {} and {}",
-            &renderer.rgba[i * 4..i * 4 + 4],
+            &renderer.rgba()[i * 4..i * 4 + 4],
             &caller[i * 4..i * 4 + 4],
             renderer_path.display(),
             caller_path.display()
         );
     }
-    assert_eq!(renderer.rgba.len(), caller.len(), "{what}: image sizes");
+    assert_eq!(renderer.rgba().len(), caller.len(), "{what}: image sizes");
 }
 
 /// The teapot frame of the embedding example, drawn through the Renderer.
@@ -395,8 +395,8 @@ fn the_lighting_variants_draw_the_same_bytes_through_a_callers_device() {
         assert_same_bytes(&pixels, bytes, &format!("variants_{}", mode.name()));
         let gl = renderer_frame(&mut r, &mesh, &embed::gl_state(mode).unwrap().lighting);
         assert_ne!(
-            gl.rgba,
-            pixels.rgba,
+            gl.rgba(),
+            pixels.rgba(),
             "{}: the variants change the image",
             mode.name()
         );

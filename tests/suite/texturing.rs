@@ -141,7 +141,7 @@ fn every_environment_mode_in_every_lighting_mode_matches_the_reference_with_near
     let tex = r.upload_texture(&image, &sampling).unwrap();
     let tex_uber = uber.upload_texture(&image, &sampling).unwrap();
     let scene = sphere();
-    for env in TexEnvMode::ALL {
+    for &env in TexEnvMode::ALL {
         for control in [ColorControl::SingleColor, ColorControl::SeparateSpecularColor] {
             for mode in LightingMode::ALL {
                 let s = state(env, control, mode);
@@ -250,7 +250,7 @@ fn linear_filtering_with_mipmaps_and_every_wrap_mode_matches_the_reference_where
     let image = TextureImage::new(64, 64, rgba).unwrap().with_mipmaps();
     let mut r = renderer();
     let scene = sphere();
-    for wrap in Wrap::ALL {
+    for &wrap in Wrap::ALL {
         let sampling = Sampling::default()
             .with_min_filter(MinFilter::LinearMipmapLinear)
             .with_mag_filter(MagFilter::Linear)

@@ -214,12 +214,9 @@ impl Lighting {
         }
         let pipelines = Pipelines::new(
             device,
-            PipelineConfig {
-                target: options.target,
-                vertex_input: options.vertex_input.clone(),
-                set_index: options.set_index,
-                cache: options.pipeline_cache,
-            },
+            PipelineConfig::new(options.target, options.vertex_input.clone())
+                .with_set_index(options.set_index)
+                .with_cache(options.pipeline_cache),
         )?;
         let ring = UniformRing::new(device, options.frames_in_flight)?;
         Ok(Lighting {

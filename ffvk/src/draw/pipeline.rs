@@ -56,19 +56,22 @@ fn shader_module(device: &Arc<Device>, name: &str, bytes: &[u8], set: u32) -> Re
 
 /// Adds `set` to every `OpDecorate … DescriptorSet n` of a SPIR-V module: the GLSL declares
 /// its uniform block in set 0 and the texture in set 1, and callers choose where the block
-/// goes (the texture follows it).
+/// goes (the texture follows it). A module cut short ends the walk where its last whole
+/// instruction ends.
 pub fn set_descriptor_set(words: &mut [u32], set: u32) {
     const OP_DECORATE: u32 = 71;
     const DESCRIPTOR_SET: u32 = 34;
     // The header is 5 words; each instruction starts with (word count << 16) | opcode.
     let mut at = 5;
-    while at < words.len() {
-        let count = (words[at] >> 16) as usize;
-        if count == 0 {
+    while let Some(&first) = words.get(at) {
+        let count = (first >> 16) as usize;
+        let Some(instruction) = words.get_mut(at..at + count).filter(|_| count > 0) else {
             break;
-        }
-        if words[at] & 0xffff == OP_DECORATE && count == 4 && words[at + 2] == DESCRIPTOR_SET {
-            words[at + 3] += set;
+        };
+        if let [op, _target, DESCRIPTOR_SET, n] = instruction {
+            if *op & 0xffff == OP_DECORATE {
+                *n = n.wrapping_add(set);
+            }
         }
         at += count;
     }
@@ -97,7 +100,7 @@ pub const MAX_AUTO_VARIANTS: usize = 64;
 
 impl Specialize {
     /// Every policy, in declaration order.
-    pub const ALL: [Specialize; 3] = [Specialize::Auto, Specialize::Always, Specialize::Never];
+    pub const ALL: &'static [Specialize] = &[Specialize::Auto, Specialize::Always, Specialize::Never];
 
     /// Lowercase name (`auto`, `always`, `never`), the one [`str::parse`] accepts.
     pub fn name(self) -> &'static str {
@@ -113,7 +116,8 @@ impl std::str::FromStr for Specialize {
     type Err = crate::error::UnknownName;
     fn from_str(s: &str) -> Result<Self, Self::Err> {
         Specialize::ALL
-            .into_iter()
+            .iter()
+            .copied()
             .find(|v| v.name() == s)
             .ok_or_else(|| crate::error::UnknownName::new("specialization", s, "auto, always or never"))
     }
@@ -181,7 +185,7 @@ pub struct Attribute {
 ///     Attribute::new(0, 0, vk::Format::R32G32B32_SFLOAT),
 ///     Attribute::new(1, 0, vk::Format::R32G32B32_SFLOAT),
 /// )
-/// .with_color(Attribute::new(1, 12, vk::Format::R8G8B8A8_UNORM));
+/// .with_color(Some(Attribute::new(1, 12, vk::Format::R8G8B8A8_UNORM)));
 /// assert!(input.texcoord.is_none());
 /// ```
 #[derive(Debug, Clone)]
@@ -246,17 +250,19 @@ impl VertexInput {
         }
     }
 
-    /// This layout with a per-vertex color array (`glColorPointer`) at `color`.
+    /// This layout with a per-vertex color array (`glColorPointer`) at `color`; `None`: GL's
+    /// current color for every vertex.
     #[must_use]
-    pub fn with_color(mut self, color: Attribute) -> Self {
-        self.color = Some(color);
+    pub fn with_color(mut self, color: Option<Attribute>) -> Self {
+        self.color = color;
         self
     }
 
-    /// This layout with texture coordinates (`glTexCoordPointer`) at `texcoord`.
+    /// This layout with texture coordinates (`glTexCoordPointer`) at `texcoord`; `None`: none
+    /// (textured draws then fail with [`LightingError::NoTexcoord`]).
     #[must_use]
-    pub fn with_texcoord(mut self, texcoord: Attribute) -> Self {
-        self.texcoord = Some(texcoord);
+    pub fn with_texcoord(mut self, texcoord: Option<Attribute>) -> Self {
+        self.texcoord = texcoord;
         self
     }
 
@@ -351,6 +357,21 @@ impl VertexInput {
 }
 
 /// A blend equation (`glBlendFuncSeparate`, `glBlendEquationSeparate`) in Vulkan's terms.
+///
+/// ```
+/// use ffvk::ash::vk::{BlendFactor, BlendOp};
+/// use ffvk::{Blend, RasterState};
+///
+/// // glEnable(GL_BLEND); glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA)
+/// let over = RasterState::default().with_blend(Some(Blend::ALPHA));
+/// assert_eq!(over.blend, Some(Blend::new(BlendFactor::SRC_ALPHA, BlendFactor::ONE_MINUS_SRC_ALPHA, BlendOp::ADD)));
+/// // glBlendFuncSeparate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE): add color, keep alpha
+/// let add = Blend::separate(
+///     (BlendFactor::ONE, BlendFactor::ONE, BlendOp::ADD),
+///     (BlendFactor::ZERO, BlendFactor::ONE, BlendOp::ADD),
+/// );
+/// assert_eq!((add.src_alpha, add.dst_color), (BlendFactor::ZERO, BlendFactor::ONE));
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub struct Blend {
@@ -366,6 +387,45 @@ pub struct Blend {
     pub dst_alpha: vk::BlendFactor,
     /// Equation for alpha.
     pub alpha_op: vk::BlendOp,
+}
+
+impl Blend {
+    /// `glBlendFunc(src, dst)` with `glBlendEquation(op)`: the same factors and equation for
+    /// color and alpha.
+    pub const fn new(src: vk::BlendFactor, dst: vk::BlendFactor, op: vk::BlendOp) -> Self {
+        Blend {
+            src_color: src,
+            dst_color: dst,
+            color_op: op,
+            src_alpha: src,
+            dst_alpha: dst,
+            alpha_op: op,
+        }
+    }
+
+    /// `glBlendFuncSeparate(src_color, dst_color, src_alpha, dst_alpha)` with
+    /// `glBlendEquationSeparate(color_op, alpha_op)`.
+    pub const fn separate(
+        (src_color, dst_color, color_op): (vk::BlendFactor, vk::BlendFactor, vk::BlendOp),
+        (src_alpha, dst_alpha, alpha_op): (vk::BlendFactor, vk::BlendFactor, vk::BlendOp),
+    ) -> Self {
+        Blend {
+            src_color,
+            dst_color,
+            color_op,
+            src_alpha,
+            dst_alpha,
+            alpha_op,
+        }
+    }
+
+    /// `glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA)`, `GL_FUNC_ADD`: the usual
+    /// transparency.
+    pub const ALPHA: Blend = Blend::new(
+        vk::BlendFactor::SRC_ALPHA,
+        vk::BlendFactor::ONE_MINUS_SRC_ALPHA,
+        vk::BlendOp::ADD,
+    );
 }
 
 /// The fixed-function state GL keeps beside lighting that Vulkan bakes into a pipeline: part
@@ -418,6 +478,7 @@ with_fields!(RasterState {
 
 /// What every pipeline of one [`Pipelines`] shares.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct PipelineConfig {
     /// The attachments' formats and samples.
     pub target: Target,
@@ -429,7 +490,24 @@ pub struct PipelineConfig {
     pub cache: Option<vk::PipelineCache>,
 }
 
+with_fields!(PipelineConfig {
+    /// Sets [`set_index`](PipelineConfig::set_index).
+    with_set_index => set_index: u32,
+    /// Sets [`cache`](PipelineConfig::cache).
+    with_cache => cache: Option<vk::PipelineCache>,
+});
+
 impl PipelineConfig {
+    /// Pipelines for `target` and `vertex_input`, the uniform block at set 0, ffvk's own cache.
+    pub fn new(target: Target, vertex_input: VertexInput) -> Self {
+        PipelineConfig {
+            target,
+            vertex_input,
+            set_index: 0,
+            cache: None,
+        }
+    }
+
     /// ffvk's offscreen renderer: [`Target::OFFSCREEN`], [`VertexInput::interleaved`], set 0.
     pub fn offscreen() -> Self {
         PipelineConfig {

@@ -30,7 +30,7 @@ pub enum TexEnvMode {
 
 impl TexEnvMode {
     /// Every mode, in the order of table 3.22's columns as ffvk lists them.
-    pub const ALL: [TexEnvMode; 5] = [
+    pub const ALL: &'static [TexEnvMode] = &[
         TexEnvMode::Modulate,
         TexEnvMode::Replace,
         TexEnvMode::Decal,
@@ -60,7 +60,8 @@ impl std::str::FromStr for TexEnvMode {
     type Err = crate::error::UnknownName;
     fn from_str(s: &str) -> Result<Self, Self::Err> {
         TexEnvMode::ALL
-            .into_iter()
+            .iter()
+            .copied()
             .find(|m| m.name() == s)
             .ok_or_else(|| {
                 crate::error::UnknownName::new(
@@ -234,7 +235,7 @@ pub enum Wrap {
 
 impl Wrap {
     /// Every mode.
-    pub const ALL: [Wrap; 3] = [Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat];
+    pub const ALL: &'static [Wrap] = &[Wrap::Repeat, Wrap::ClampToEdge, Wrap::MirroredRepeat];
 
     /// Lowercase name as scene files write it.
     pub fn name(self) -> &'static str {
@@ -308,6 +309,29 @@ pub enum TextureError {
         /// width × height × 4.
         expected: usize,
     },
+    /// [`TextureImage::from_levels`] was given no level.
+    #[error("a texture image without levels: expected level 0 at least")]
+    NoLevels,
+    /// [`TextureImage::from_levels`] was given more levels than the chain down to 1×1 has.
+    #[error("{levels} texture levels: expected at most {max}, the chain down to 1x1")]
+    TooManyLevels {
+        /// Levels given.
+        levels: usize,
+        /// The levels of the complete chain.
+        max: usize,
+    },
+    /// A level of [`TextureImage::from_levels`] that is not half the level above.
+    #[error("texture level {level} is {width}x{height}: expected {}x{}, half the level above (rounded down, at least 1)", .expected.0, .expected.1)]
+    LevelSize {
+        /// The level's number (1 for the first below level 0).
+        level: usize,
+        /// Its width in texels.
+        width: u32,
+        /// Its height in texels.
+        height: u32,
+        /// The width and height it must have.
+        expected: (u32, u32),
+    },
 }
 
 /// The largest texture side ffvk takes (GL 2.1 asks for at least 64; Vulkan 1.3 devices
@@ -320,42 +344,15 @@ pub const MAX_TEXTURE_SIZE: u32 = 4096;
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct Level {
-    /// Width in texels.
-    pub width: u32,
-    /// Height in texels.
-    pub height: u32,
-    /// `width * height * 4` bytes, R, G, B, A.
-    pub rgba: Vec<u8>,
+    // Private: `rgba` holds exactly width × height × 4 bytes, which every reader relies on.
+    width: u32,
+    height: u32,
+    rgba: Vec<u8>,
 }
 
 impl Level {
-    /// The texel at (i, j) (column, row), as 0..=255 per channel.
-    pub fn texel(&self, i: u32, j: u32) -> [u8; 4] {
-        let at = (j as usize * self.width as usize + i as usize) * 4;
-        [
-            self.rgba[at],
-            self.rgba[at + 1],
-            self.rgba[at + 2],
-            self.rgba[at + 3],
-        ]
-    }
-}
-
-/// A 2D texture's image: `GL_RGBA8` (or `GL_SRGB8_ALPHA8` when `srgb`), level 0 and, when
-/// generated, its mipmaps.
-#[derive(Debug, Clone, PartialEq, Eq)]
-#[non_exhaustive]
-pub struct TextureImage {
-    /// Level 0 first; either one level or the whole chain down to 1×1.
-    pub levels: Vec<Level>,
-    /// GL 2.1's `GL_SRGB8_ALPHA8`: texels are decoded from sRGB to linear when sampled (alpha
-    /// stays linear). Off by default, as a legacy program's `GL_RGBA8`: a texel then reaches a
-    /// UNORM framebuffer unchanged under full white light.
-    pub srgb: bool,
-}
-
-impl TextureImage {
-    /// One level of RGBA8 texels, `width` × `height`, rows in upload order.
+    /// A level of `width` × `height` RGBA8 texels (`rgba` holds width × height × 4 bytes,
+    /// R, G, B, A, rows in upload order), each side in 1..=[`MAX_TEXTURE_SIZE`].
     pub fn new(width: u32, height: u32, rgba: Vec<u8>) -> Result<Self, TextureError> {
         if width == 0 || height == 0 || width > MAX_TEXTURE_SIZE || height > MAX_TEXTURE_SIZE {
             return Err(TextureError::Size {
@@ -373,10 +370,95 @@ impl TextureImage {
                 expected,
             });
         }
+        Ok(Level { width, height, rgba })
+    }
+
+    /// Width in texels.
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// Height in texels.
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    /// The texels: width × height × 4 bytes, R, G, B, A, rows in upload order.
+    pub fn rgba(&self) -> &[u8] {
+        &self.rgba
+    }
+
+    /// The texel at (i, j) (column, row), as 0..=255 per channel.
+    ///
+    /// # Panics
+    ///
+    /// When `i >= width` or `j >= height`, as indexing a slice out of range does.
+    pub fn texel(&self, i: u32, j: u32) -> [u8; 4] {
+        let at = (j as usize * self.width as usize + i as usize) * 4;
+        [
+            self.rgba[at],
+            self.rgba[at + 1],
+            self.rgba[at + 2],
+            self.rgba[at + 3],
+        ]
+    }
+}
+
+/// A 2D texture's image: `GL_RGBA8` (or `GL_SRGB8_ALPHA8` when `srgb`), level 0 and, when
+/// generated, its mipmaps.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct TextureImage {
+    // Private: never empty, and each level halves the one above (see `from_levels`).
+    levels: Vec<Level>,
+    /// GL 2.1's `GL_SRGB8_ALPHA8`: texels are decoded from sRGB to linear when sampled (alpha
+    /// stays linear). Off by default, as a legacy program's `GL_RGBA8`: a texel then reaches a
+    /// UNORM framebuffer unchanged under full white light.
+    pub srgb: bool,
+}
+
+impl TextureImage {
+    /// One level of RGBA8 texels, `width` × `height`, rows in upload order.
+    pub fn new(width: u32, height: u32, rgba: Vec<u8>) -> Result<Self, TextureError> {
         Ok(TextureImage {
-            levels: vec![Level { width, height, rgba }],
+            levels: vec![Level::new(width, height, rgba)?],
             srgb: false,
         })
+    }
+
+    /// The caller's own levels, as successive `glTexImage2D` calls for levels 0, 1, …: each
+    /// level's sides are half the level above's (rounded down, never below 1), and there are
+    /// at most as many levels as the chain down to 1×1 has. A complete chain makes the
+    /// texture complete for a min filter that reads mipmaps ([`TextureImage::has_mipmaps`]).
+    pub fn from_levels(levels: Vec<Level>) -> Result<Self, TextureError> {
+        let Some(first) = levels.first() else {
+            return Err(TextureError::NoLevels);
+        };
+        let max = mip_count(first.width, first.height) as usize;
+        if levels.len() > max {
+            return Err(TextureError::TooManyLevels {
+                levels: levels.len(),
+                max,
+            });
+        }
+        for (i, pair) in levels.windows(2).enumerate() {
+            let (above, level) = (&pair[0], &pair[1]);
+            let expected = ((above.width / 2).max(1), (above.height / 2).max(1));
+            if (level.width, level.height) != expected {
+                return Err(TextureError::LevelSize {
+                    level: i + 1,
+                    width: level.width,
+                    height: level.height,
+                    expected,
+                });
+            }
+        }
+        Ok(TextureImage { levels, srgb: false })
+    }
+
+    /// Level 0 first; either one level or more, down to the whole chain to 1×1.
+    pub fn levels(&self) -> &[Level] {
+        &self.levels
     }
 
     /// A `cells` × `cells` checkerboard of `size`² texels, alternating `a` (at texel (0, 0))
@@ -394,12 +476,12 @@ impl TextureImage {
 
     /// Level 0's width.
     pub fn width(&self) -> u32 {
-        self.levels[0].width
+        self.levels.first().map_or(0, |l| l.width)
     }
 
     /// Level 0's height.
     pub fn height(&self) -> u32 {
-        self.levels[0].height
+        self.levels.first().map_or(0, |l| l.height)
     }
 
     /// Whether the levels run down to 1×1 (a complete mipmap chain).
@@ -460,6 +542,51 @@ pub fn texturing_applies(unit: &TextureUnit, bound: Option<(&TextureImage, &Samp
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_callers_own_levels_make_a_texture_when_each_halves_the_one_above() {
+        let chain = TextureImage::checker(8, 2, [255; 4], [0, 0, 0, 255])
+            .unwrap()
+            .with_mipmaps();
+        let own = TextureImage::from_levels(chain.levels().to_vec()).unwrap();
+        assert_eq!(own, chain);
+        assert!(own.has_mipmaps());
+        // Levels 0 and 1 only: a texture, incomplete for a mipmap filter, as in GL.
+        let partial = TextureImage::from_levels(chain.levels()[..2].to_vec()).unwrap();
+        assert!(!partial.has_mipmaps());
+        assert_eq!((partial.width(), partial.height()), (8, 8));
+    }
+
+    #[test]
+    fn levels_that_do_not_halve_or_outnumber_the_chain_are_refused() {
+        let level = |w: u32, h: u32| Level::new(w, h, vec![0; (w * h * 4) as usize]).unwrap();
+        assert_eq!(TextureImage::from_levels(vec![]), Err(TextureError::NoLevels));
+        assert_eq!(
+            TextureImage::from_levels(vec![level(8, 4), level(4, 4)]),
+            Err(TextureError::LevelSize {
+                level: 1,
+                width: 4,
+                height: 4,
+                expected: (4, 2)
+            })
+        );
+        // 5×3 halves to 2×1, then 1×1; a fourth level is one too many.
+        let chain = vec![level(5, 3), level(2, 1), level(1, 1), level(1, 1)];
+        assert_eq!(
+            TextureImage::from_levels(chain),
+            Err(TextureError::TooManyLevels { levels: 4, max: 3 })
+        );
+        assert_eq!(
+            Level::new(2, 2, vec![0; 15]),
+            Err(TextureError::Bytes {
+                bytes: 15,
+                width: 2,
+                height: 2,
+                expected: 16
+            })
+        );
+        assert!(matches!(Level::new(0, 2, vec![]), Err(TextureError::Size { .. })));
+    }
 
     #[test]
     fn a_complete_chain_halves_down_to_one_texel() {

@@ -187,6 +187,7 @@ impl Comparison {
 
 /// When to compute FLIP.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum Flip {
     /// Only when the per-channel check does not decide: the images differ in RGB and the
     /// share over the threshold is within the tolerance.

@@ -7,6 +7,7 @@ use image::RgbaImage;
 
 /// How a block of pixels becomes one thumbnail pixel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum Reduce {
     /// The mean of each channel (for rendered images).
     Mean,

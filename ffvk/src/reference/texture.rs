@@ -73,7 +73,7 @@ pub fn wrap_index(i: i64, size: u32, wrap: Wrap) -> u32 {
 
 /// One texel as [0, 1] floats, decoded from sRGB when the image is.
 fn fetch(image: &TextureImage, level: usize, i: u32, j: u32) -> DVec4 {
-    let raw = image.levels[level].texel(i, j);
+    let raw = image.levels()[level].texel(i, j);
     let c = DVec4::from(raw.map(|v| f64::from(v) / 255.0));
     if image.srgb {
         let decode = |v: f64| {
@@ -97,20 +97,20 @@ pub fn sample_level(
     filter: MagFilter,
     sampling: &Sampling,
 ) -> DVec4 {
-    let l = &image.levels[level];
-    let (u, v) = (st.x * l.width as f64, st.y * l.height as f64);
+    let l = &image.levels()[level];
+    let (u, v) = (st.x * l.width() as f64, st.y * l.height() as f64);
     match filter {
         MagFilter::Nearest => {
-            let i = wrap_index(u.floor() as i64, l.width, sampling.wrap_s);
-            let j = wrap_index(v.floor() as i64, l.height, sampling.wrap_t);
+            let i = wrap_index(u.floor() as i64, l.width(), sampling.wrap_s);
+            let j = wrap_index(v.floor() as i64, l.height(), sampling.wrap_t);
             fetch(image, level, i, j)
         }
         MagFilter::Linear => {
             let (u, v) = (u - 0.5, v - 0.5);
             let (i0, j0) = (u.floor() as i64, v.floor() as i64);
             let (a, b) = (u - u.floor(), v - v.floor());
-            let i = [i0, i0 + 1].map(|i| wrap_index(i, l.width, sampling.wrap_s));
-            let j = [j0, j0 + 1].map(|j| wrap_index(j, l.height, sampling.wrap_t));
+            let i = [i0, i0 + 1].map(|i| wrap_index(i, l.width(), sampling.wrap_s));
+            let j = [j0, j0 + 1].map(|j| wrap_index(j, l.height(), sampling.wrap_t));
             fetch(image, level, i[0], j[0]) * (1.0 - a) * (1.0 - b)
                 + fetch(image, level, i[1], j[0]) * a * (1.0 - b)
                 + fetch(image, level, i[0], j[1]) * (1.0 - a) * b
@@ -131,7 +131,7 @@ pub fn sample(image: &TextureImage, sampling: &Sampling, st: DVec2, lambda: f64)
     if !min.uses_mipmaps() {
         return sample_level(image, 0, st, within, sampling);
     }
-    let q = (image.levels.len() - 1) as f64;
+    let q = (image.levels().len() - 1) as f64;
     if min.between_levels_linear() {
         let d1 = lambda.floor().min(q);
         let d2 = (d1 + 1.0).min(q);

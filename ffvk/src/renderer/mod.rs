@@ -255,15 +255,33 @@ struct Targets {
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct Pixels {
-    /// Width in pixels.
-    pub width: u32,
-    /// Height in pixels.
-    pub height: u32,
-    /// `width * height * 4` bytes, R, G, B, A per pixel, row 0 at the top of the view.
-    pub rgba: Vec<u8>,
+    // Private: `rgba` holds exactly width × height × 4 bytes (read_image makes it so).
+    width: u32,
+    height: u32,
+    rgba: Vec<u8>,
 }
 
 impl Pixels {
+    /// Width in pixels.
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// Height in pixels.
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    /// `width * height * 4` bytes, R, G, B, A per pixel, row 0 at the top of the view.
+    pub fn rgba(&self) -> &[u8] {
+        &self.rgba
+    }
+
+    /// The bytes of [`rgba`](Pixels::rgba), taken.
+    pub fn into_rgba(self) -> Vec<u8> {
+        self.rgba
+    }
+
     /// The RGBA value at (x, y), from the top-left corner; `None` outside the image.
     pub fn pixel(&self, x: u32, y: u32) -> Option<[u8; 4]> {
         if x >= self.width || y >= self.height {
@@ -279,7 +297,7 @@ impl Pixels {
     /// The same pixels as an `image` crate buffer (feature `images`).
     #[allow(
         clippy::expect_used,
-        reason = "Pixels is made only by read_image, with exactly width * height * 4 bytes"
+        reason = "Pixels' fields are private and read_image makes exactly width * height * 4 bytes"
     )]
     pub fn into_rgba_image(self) -> image::RgbaImage {
         image::RgbaImage::from_raw(self.width, self.height, self.rgba)
@@ -454,7 +472,7 @@ impl Renderer {
         if width > max || height > max {
             return Err(Error::InvalidSize { width, height, max });
         }
-        let levels = image.levels.len() as u32;
+        let levels = image.levels().len() as u32;
         let gpu_image = Image::with_levels(
             &self.device,
             vk::Extent2D { width, height },
@@ -466,7 +484,7 @@ impl Renderer {
         self.uploader
             .lock()
             .unwrap_or_else(|poisoned| poisoned.into_inner())
-            .upload_image(&self.device, &gpu_image, &image.levels)?;
+            .upload_image(&self.device, &gpu_image, image.levels())?;
         let sampler = Sampler::new(&self.device, &sampler_info(sampling, levels))?;
         // SAFETY: the view and sampler are this device's and live in the Texture as long as
         // the binding (dropped first); frames that draw it are waited for before it can drop

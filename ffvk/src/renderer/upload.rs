@@ -110,7 +110,7 @@ impl Uploader {
         image: &Image,
         levels: &[Level],
     ) -> Result<()> {
-        let total: u64 = levels.iter().map(|l| l.rgba.len() as u64).sum();
+        let total: u64 = levels.iter().map(|l| l.rgba().len() as u64).sum();
         let mut staging = Buffer::new(
             device,
             "texture staging buffer",
@@ -121,7 +121,7 @@ impl Uploader {
         let mut regions = Vec::with_capacity(levels.len());
         let mut offset = 0;
         for (index, level) in levels.iter().enumerate() {
-            staging.write(offset, &level.rgba)?;
+            staging.write(offset, level.rgba())?;
             regions.push(
                 vk::BufferImageCopy::default()
                     .buffer_offset(offset)
@@ -132,12 +132,12 @@ impl Uploader {
                         layer_count: 1,
                     })
                     .image_extent(vk::Extent3D {
-                        width: level.width,
-                        height: level.height,
+                        width: level.width(),
+                        height: level.height(),
                         depth: 1,
                     }),
             );
-            offset += level.rgba.len() as u64;
+            offset += level.rgba().len() as u64;
         }
         let vkd = &device.raw;
         let range = vk::ImageSubresourceRange {

@@ -677,7 +677,7 @@ impl Builder<'_> {
             None => Ok(GltfLights::Gl),
             Some(GltfLightsSpec::Bool(true)) => Ok(GltfLights::Gl),
             Some(GltfLightsSpec::Bool(false)) => Ok(GltfLights::Off),
-            Some(GltfLightsSpec::Word(w)) => GltfLights::parse(w).ok_or_else(|| {
+            Some(GltfLightsSpec::Word(w)) => w.parse::<GltfLights>().map_err(|_| {
                 self.field(
                     "gltf_lights",
                     format!(

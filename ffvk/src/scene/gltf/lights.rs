@@ -128,14 +128,22 @@ impl GltfLights {
             GltfLights::Exact => "exact",
         }
     }
+}
+
+impl std::str::FromStr for GltfLights {
+    type Err = crate::error::UnknownName;
 
     /// Reads "off", "gl", "exact", or "true" (gl) and "false" (off) as earlier versions wrote.
-    pub fn parse(word: &str) -> Option<GltfLights> {
+    fn from_str(word: &str) -> Result<Self, Self::Err> {
         match word {
-            "off" | "false" => Some(GltfLights::Off),
-            "gl" | "true" => Some(GltfLights::Gl),
-            "exact" => Some(GltfLights::Exact),
-            _ => None,
+            "off" | "false" => Ok(GltfLights::Off),
+            "gl" | "true" => Ok(GltfLights::Gl),
+            "exact" => Ok(GltfLights::Exact),
+            _ => Err(crate::error::UnknownName::new(
+                "glTF light mapping",
+                word,
+                "off, gl or exact (or true/false)",
+            )),
         }
     }
 }
@@ -318,9 +326,12 @@ mod tests {
             ..spot
         };
         assert_eq!(exact_light(&sun), gl_light(&sun));
-        assert_eq!(GltfLights::parse("true"), Some(GltfLights::Gl));
-        assert_eq!(GltfLights::parse("false"), Some(GltfLights::Off));
-        assert_eq!(GltfLights::parse("physical"), None);
+        assert_eq!("true".parse(), Ok(GltfLights::Gl));
+        assert_eq!("false".parse(), Ok(GltfLights::Off));
+        assert_eq!(
+            "physical".parse::<GltfLights>().map_err(|e| e.to_string()),
+            Err(r#"unknown glTF light mapping "physical": expected off, gl or exact (or true/false)"#.into())
+        );
     }
 
     #[test]

@@ -346,7 +346,15 @@ pub(super) fn read_primitive(
 ) -> Result<MeshData, LoadError> {
     let label = cx.primitive_label(mesh, primitive.index());
     let mode = primitive.mode();
-    debug_assert!(draws_triangles(mode), "the caller skips points and lines");
+    // The caller skips points and lines with a warning; one reaching here is refused by name.
+    if !draws_triangles(mode) {
+        return Err(cx.error(LoadErrorKind::InvalidValue {
+            object: label,
+            field: "mode",
+            value: mode_name(mode).to_owned(),
+            expected: "TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN (ffvk draws triangles)",
+        }));
+    }
     // What the triangle list will take, charged before anything is read.
     let vertex_count = primitive.get(&Semantic::Positions).map_or(0, |a| a.count());
     let sequence_len = primitive.indices().map_or(vertex_count, |a| a.count());
@@ -539,7 +547,8 @@ pub(super) fn read_primitive(
         })),
         // GL's (0, i+1, i+2), glTF's {i+1, i+2, 0} up to rotation; provoking vertex last.
         Mode::TriangleFan => triangles.extend(sequence.windows(2).skip(1).map(|w| [sequence[0], w[0], w[1]])),
-        _ => unreachable!("checked above"),
+        // Refused at the top of this function.
+        Mode::Points | Mode::Lines | Mode::LineLoop | Mode::LineStrip => {}
     }
 
     let color_of = |i: u32| {

@@ -48,6 +48,7 @@ impl TextureMean {
 
 /// Whether [`load_with`](super::load_with) decodes textures for their means.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[non_exhaustive]
 pub enum Textures {
     /// Textures are named, not read: every texture is [`TextureMean::Unread`].
     #[default]
@@ -402,8 +403,8 @@ mod tests {
             }
         );
         // Stored as is (no sRGB decode), with its mipmaps.
-        assert_eq!(sampled.image.levels[0].texel(0, 0), [255, 0, 0, 255]);
-        assert_eq!(sampled.image.levels.len(), 2);
+        assert_eq!(sampled.image.levels()[0].texel(0, 0), [255, 0, 0, 255]);
+        assert_eq!(sampled.image.levels().len(), 2);
         // The extension's own example: the lower left quadrant, turned.
         let at = |u: f32, v: f32| {
             let p = sampled.matrix * Vec4::new(u, v, 0.0, 1.0);
