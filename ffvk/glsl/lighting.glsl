@@ -17,7 +17,8 @@ float odot(vec3 d1, vec3 d2) {
 
 // x^y with 0^0 = 1 (section 2.1.1); GLSL leaves pow(0, 0) undefined.
 float pow_gl(float x, float y) {
-    return y == 0.0 ? 1.0 : pow(x, y);
+    float p = pow(x, y);
+    return y == 0.0 ? 1.0 : p;  // a select (see light_term)
 }
 
 // Normalizes, keeping a zero vector zero rather than NaN.
@@ -42,7 +43,8 @@ float attenuation_gl_k012(float d, float k0, float k1, float k2) {
 // att_i, glTF's (KHR_lights_punctual, ffvk's extension): 1 / d^2, windowed to 0 at the range
 // by clamp(1 - (d / range)^4, 0, 1) when the light has one (range > 0).
 float attenuation_gltf_inverse_square(float d, float range) {
-    float window = range > 0.0 ? clamp(1.0 - pow(d / range, 4.0), 0.0, 1.0) : 1.0;
+    float windowed = clamp(1.0 - pow(d / range, 4.0), 0.0, 1.0);
+    float window = range > 0.0 ? windowed : 1.0;  // a select (see light_term)
     return window / (d * d);
 }
 
@@ -54,16 +56,18 @@ float spot_gl_exponent(float cos_angle, float cos_c_rli, float s_rli) {
 // spot_i with a linear edge (ffvk's extension): 1 inside the inner cone, 0 outside the outer
 // (c_rli), a straight ramp in the cosine between; equal cones are a hard cutoff.
 float spot_linear_inner_outer(float cos_angle, float cos_outer, float cos_inner) {
-    if (cos_inner <= cos_outer) return cos_angle >= cos_outer ? 1.0 : 0.0;
-    return clamp((cos_angle - cos_outer) / (cos_inner - cos_outer), 0.0, 1.0);
+    float hard = cos_angle >= cos_outer ? 1.0 : 0.0;
+    float ramp = clamp((cos_angle - cos_outer) / (cos_inner - cos_outer), 0.0, 1.0);
+    return cos_inner <= cos_outer ? hard : ramp;  // a select (see light_term)
 }
 
 // spot_i with a smoothstep edge (ffvk's extension; glTF's cone): as the linear edge with
 // smoothstep(cos outer, cos inner, cos θ) between the cones. GLSL leaves smoothstep
 // undefined for equal edges, so equal cones are tested first.
 float spot_smoothstep_inner_outer(float cos_angle, float cos_outer, float cos_inner) {
-    if (cos_inner <= cos_outer) return cos_angle >= cos_outer ? 1.0 : 0.0;
-    return smoothstep(cos_outer, cos_inner, cos_angle);
+    float hard = cos_angle >= cos_outer ? 1.0 : 0.0;
+    float ramp = smoothstep(cos_outer, cos_inner, cos_angle);
+    return cos_inner <= cos_outer ? hard : ramp;  // a select (see light_term)
 }
 
 // The specular factor before f_i and the colors, GL's: (n ⊙ ĥ_i)^s_rm, ĥ_i the unit halfway
@@ -89,25 +93,30 @@ void light_term(uint i, vec4 V, vec3 n, Material m, vec3 VPe, inout vec3 c_pri, 
 
     vec3 VP_pli = unit_from_to(V, L.P_pli);
 
+    // Branches on the light's own values (w, c_rli, its edge and falloff) are selects, not
+    // ifs: lavapipe compiles a shader variant for every draw whose uniforms changed when an
+    // "if" tests uniform values alone (BENCHMARKS.md, "Many draws"). The terms are computed
+    // for every light the pipeline's promises allow and the select keeps GL's value.
     float att_i = 1.0;
-    if (may_be_local() && L.P_pli.w != 0.0) {
+    if (may_be_local()) {
         float d = length(L.P_pli.xyz / L.P_pli.w - V.xyz / V.w);  // ||VP_pli||
-        att_i = may_be_gltf_falloff() && L.falloff == FALLOFF_GLTF_INVERSE_SQUARE
-            ? attenuation_gltf_inverse_square(d, L.range)
-            : attenuation_gl_k012(d, L.k0, L.k1, L.k2);
+        float att_gl = attenuation_gl_k012(d, L.k0, L.k1, L.k2);
+        float att_gltf = may_be_gltf_falloff() ? attenuation_gltf_inverse_square(d, L.range) : att_gl;
+        float att = L.falloff == FALLOFF_GLTF_INVERSE_SQUARE ? att_gltf : att_gl;
+        att_i = L.P_pli.w != 0.0 ? att : 1.0;
     }
 
     float spot_i = 1.0;
-    if (may_be_spot() && L.c_rli != 180.0) {
+    if (may_be_spot()) {
         float cos_angle = odot(unit_from_to(L.P_pli, V), unit(L.s_dli));  // P_pliV ⊙ ŝ_dli
-        uint edge = may_be_soft_spot() ? L.spot_edge : EDGE_GL_EXPONENT;
-        if (edge == EDGE_LINEAR_INNER_OUTER) {
-            spot_i = spot_linear_inner_outer(cos_angle, L.cos_c_rli, L.cos_inner);
-        } else if (edge == EDGE_SMOOTHSTEP_INNER_OUTER) {
-            spot_i = spot_smoothstep_inner_outer(cos_angle, L.cos_c_rli, L.cos_inner);
-        } else {
-            spot_i = spot_gl_exponent(cos_angle, L.cos_c_rli, L.s_rli);
+        float spot = spot_gl_exponent(cos_angle, L.cos_c_rli, L.s_rli);
+        if (may_be_soft_spot()) {
+            float linear = spot_linear_inner_outer(cos_angle, L.cos_c_rli, L.cos_inner);
+            float smooth_ = spot_smoothstep_inner_outer(cos_angle, L.cos_c_rli, L.cos_inner);
+            spot = L.spot_edge == EDGE_LINEAR_INNER_OUTER ? linear : spot;
+            spot = L.spot_edge == EDGE_SMOOTHSTEP_INNER_OUTER ? smooth_ : spot;
         }
+        spot_i = L.c_rli != 180.0 ? spot : 1.0;
     }
 
     float n_VP = odot(n, VP_pli);
