@@ -15,7 +15,7 @@ use ffvk::mesh::MeshData;
 use ffvk::renderer::{Draw, Frame, FrameStats, Mesh, Renderer};
 
 /// Median, quartiles and extremes of a point's frames.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Default)]
 pub struct Spread {
     /// The median (the figure a point reports).
     pub median: f64,
@@ -240,6 +240,11 @@ impl GlAnchor {
                 None
             }
         }
+    }
+
+    /// The device the anchor draws on.
+    pub(super) fn options(&self) -> &GlOptions {
+        &self.options
     }
 
     pub(super) fn measure(&self, mesh: &MeshData, point: &Point, config: &SweepConfig) -> Result<PointStats> {

@@ -23,6 +23,7 @@
 #![warn(missing_docs)]
 
 mod draw_cost;
+pub mod draws;
 mod measure;
 mod plots;
 mod report;
@@ -297,6 +298,8 @@ pub struct BenchReport {
     pub summary: Summary,
     /// The host cost of recording draws; `None` when it was not measured.
     pub draw_cost: Option<DrawCost>,
+    /// The draws sweep: frames of many draws, each with its own material.
+    pub draws: Vec<draws::DrawsResult>,
     /// What was left out and why (the GL anchor without a GL driver or a matching device, GL
     /// points over GL_MAX_LIGHTS).
     pub notes: Vec<String>,
@@ -504,6 +507,17 @@ pub fn run_sweep(
         config.new_keys,
     )?);
     drop(recorder);
+    // The draws sweep on a renderer of its own too: its thousands of states stay out of the
+    // other measurements' pipelines and memory.
+    let mut draws_renderer = Renderer::new(options)?;
+    progress.set_length(
+        progress.length().unwrap_or(0)
+            + draws::DRAW_MODES.len() as u64
+                * config.draw_counts.len() as u64
+                * (1 + u64::from(gl.is_some())),
+    );
+    let draws = draws::run_draws(config, &mut draws_renderer, gl.as_ref(), progress)?;
+    drop(draws_renderer);
     Ok(BenchReport {
         env: BenchEnv {
             load_after: load_average(),
@@ -513,6 +527,7 @@ pub fn run_sweep(
         results,
         summary,
         draw_cost,
+        draws,
         notes,
     })
 }

@@ -274,6 +274,9 @@ pub fn markdown(report: &BenchReport) -> String {
             draw_cost_note(d)
         );
     }
+    if !report.draws.is_empty() {
+        let _ = write!(m, "\n{}", super::draws::draws_markdown(&report.draws));
+    }
 
     let s = &report.summary;
     let gl_name = report.env.gl_renderer.as_deref();
@@ -792,6 +795,7 @@ mod tests {
             results,
             summary,
             draw_cost: None,
+            draws: Vec::new(),
             notes: vec!["a note".into()],
         }
     }

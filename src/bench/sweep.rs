@@ -61,6 +61,9 @@ pub struct SweepConfig {
     pub batch: bool,
     /// New specialization keys whose pipeline creation is timed (at most 16).
     pub new_keys: usize,
+    /// Draws per frame of the draws sweep ([`super::draws`]), each with its own material; empty
+    /// leaves the sweep out.
+    pub draw_counts: Vec<u32>,
 }
 
 impl SweepConfig {
@@ -84,6 +87,7 @@ impl SweepConfig {
             malloc_no_trim: false,
             record_draws: 10_000,
             new_keys: 8,
+            draw_counts: DRAW_COUNTS.to_vec(),
             draws: 1,
             batch: false,
         }
@@ -139,6 +143,7 @@ impl SweepConfig {
             malloc_no_trim: false,
             record_draws: 200,
             new_keys: 1,
+            draw_counts: vec![1, 16],
             draws: 1,
             batch: false,
         }
@@ -190,6 +195,16 @@ impl SweepConfig {
                 ffvk::renderer::MAX_REPEAT
             ));
         }
+        if let Some(n) = self
+            .draw_counts
+            .iter()
+            .find(|&&n| !(1..=super::draws::MAX_DRAW_COUNT).contains(&n))
+        {
+            return bad(format!(
+                "{n} draws in the draws sweep: expected 1..={}",
+                super::draws::MAX_DRAW_COUNT
+            ));
+        }
         if self.warmup == 0 || self.frames == 0 {
             return bad(format!(
                 "warm-up {} and frames {}: expected at least 1 of each",
@@ -224,6 +239,10 @@ impl SweepConfig {
         Ok(())
     }
 }
+
+/// The draw counts of the draws sweep in every sweep but the tiny ones: an emulation layer's
+/// frames, from one object to ten thousand.
+pub const DRAW_COUNTS: [u32; 5] = [1, 10, 100, 1_000, 10_000];
 
 /// The most draws per frame a sweep may ask for.
 pub const MAX_DRAWS: u32 = 256;
@@ -285,7 +304,7 @@ impl BenchMode {
         }
     }
 
-    fn lighting_mode(self) -> LightingMode {
+    pub(super) fn lighting_mode(self) -> LightingMode {
         match self {
             BenchMode::Fragment => LightingMode::Fragment,
             BenchMode::Flat => LightingMode::Flat,

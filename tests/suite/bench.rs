@@ -72,6 +72,21 @@ fn a_tiny_sweep_runs_every_point_and_writes_csv_json_and_plots() {
     );
     assert!(d.new_key_create_ms.median > 0.0, "{d:?}");
     assert!(ffvk_cli::bench::markdown(&report).contains("### Recording draws (host)"));
+    // The draws sweep: every count in every mode, ffvk and GL, each frame measured.
+    assert_eq!(
+        report.draws.len(),
+        config.draw_counts.len() * 3 * 2,
+        "{:?}",
+        report.draws
+    );
+    for r in &report.draws {
+        assert!(r.frame_ms.min > 0.0 && r.frame_ms.min <= r.frame_ms.max, "{r:?}");
+        if r.engine == Engine::Ffvk {
+            assert!(r.record_us_per_draw.is_some_and(|us| us > 0.0), "{r:?}");
+            assert!(r.device_us_per_draw.is_some_and(|us| us > 0.0), "{r:?}");
+        }
+    }
+    assert!(ffvk_cli::bench::markdown(&report).contains("### Many draws, each with its own material"));
     assert!(report.env.mesa_version.starts_with(|c: char| c.is_ascii_digit()));
 
     let dir = output_dir().join("bench");

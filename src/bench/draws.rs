@@ -1,0 +1,228 @@
+//! The draws sweep: frames of many small draws, each with its own material and modelview, as a
+//! fixed-function emulation layer records them (a `glMaterial` and a `glLoadMatrix` before each
+//! `glDrawElements`), under a directional and a point light; the GL anchor draws the same
+//! calls. What it reports per point: the frame's host time (recording start to fence), the
+//! host recording time and the device time per draw, and how much the process grew per frame.
+
+use std::time::Instant;
+
+use glam::{Mat4, Vec3, Vec4};
+use indicatif::ProgressBar;
+use serde::Serialize;
+
+use super::measure::{GlAnchor, Spread};
+use super::sweep::{BenchMode, Engine, SweepConfig, CLEAR};
+use crate::gl_reference::{time_frames_with, GlDraw, GlScene};
+use crate::Result;
+use ffvk::gl::state::{Cap, Face, GlState, LightParam, LightingState, MaterialParam};
+use ffvk::mesh::{MeshData, Vertex};
+use ffvk::{Draw, Frame, FrameStats, Renderer};
+
+/// The most draws a frame of the sweep may have.
+pub const MAX_DRAW_COUNT: u32 = 100_000;
+
+/// The image side of the sweep's frames (the emulation frame of the issue that asked for it).
+const SIZE: u32 = 512;
+
+/// The modes the sweep draws.
+pub const DRAW_MODES: [BenchMode; 3] = [BenchMode::Vertex, BenchMode::Fragment, BenchMode::Flat];
+
+/// One point of the draws sweep.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DrawsResult {
+    /// Who drew it.
+    pub engine: Engine,
+    /// Where the equation is evaluated.
+    pub mode: BenchMode,
+    /// Draws per frame, each with its own material and modelview.
+    pub draws: u32,
+    /// The first frame (pipeline creation, GL's program build).
+    pub first_frame_ms: f64,
+    /// Each measured frame's host time: recording (or GL's calls) to the fence (`glFinish`).
+    pub frame_ms: Spread,
+    /// ffvk: the median host time to record one draw (checking its state, writing its block,
+    /// binding and drawing), in µs; `None` for GL.
+    pub record_us_per_draw: Option<f64>,
+    /// The median device time of a frame (timestamps around the pass) divided by the draws,
+    /// in µs, where the device has timestamps; `None` for GL.
+    pub device_us_per_draw: Option<f64>,
+    /// The process's resident memory after the measured frames less before them, per frame,
+    /// in KiB (after the warm-up: what every further frame costs).
+    pub rss_kib_per_frame: f64,
+}
+
+/// A quad of side 1 facing the viewer, each vertex white (the material gives the color).
+fn quad() -> MeshData {
+    let v = |x, y| Vertex::new(Vec3::new(x, y, 0.0), Vec3::Z, Vec4::ONE);
+    MeshData::new(
+        vec![v(-0.5, -0.5), v(0.5, -0.5), v(0.5, 0.5), v(-0.5, 0.5)],
+        vec![0, 1, 2, 0, 2, 3],
+    )
+}
+
+/// The frame of `draws` quads: a grid filling the view, draw `i` with its own diffuse color and
+/// shininess; a directional and a point light (the point light's attenuation is a per-light
+/// term the shaders must evaluate for every draw).
+fn scene(mode: BenchMode, draws: u32) -> Result<(Vec<(Mat4, LightingState)>, Mat4)> {
+    let mut gl = GlState::new();
+    gl.lighting_mode(mode.lighting_mode());
+    for cap in [Cap::Lighting, Cap::Light(0), Cap::Light(1)] {
+        gl.enable(cap)?;
+    }
+    gl.light(0, LightParam::Position(Vec4::new(0.3, 0.4, 1.0, 0.0)))?;
+    gl.light(0, LightParam::Diffuse(Vec4::splat(0.6)))?;
+    gl.light(1, LightParam::Position(Vec4::new(1.0, 1.0, 1.0, 1.0)))?;
+    gl.light(1, LightParam::Diffuse(Vec4::splat(0.5)))?;
+    gl.light(1, LightParam::Specular(Vec4::splat(0.5)))?;
+    gl.light(1, LightParam::LinearAttenuation(0.2))?;
+    gl.material(Face::FrontAndBack, MaterialParam::Specular(Vec4::splat(0.5)))?;
+    let side = (f64::from(draws).sqrt().ceil() as u32).max(1);
+    let cell = 2.0 / side as f32;
+    let mut out = Vec::with_capacity(draws as usize);
+    for i in 0..draws {
+        let h = i as f32 / draws as f32;
+        gl.material(
+            Face::FrontAndBack,
+            MaterialParam::Diffuse(Vec4::new(h, 1.0 - h, 0.5 + 0.5 * h, 1.0)),
+        )?;
+        gl.material(Face::FrontAndBack, MaterialParam::Shininess(4.0 + 60.0 * h))?;
+        let (x, y) = ((i % side) as f32, (i / side) as f32);
+        let at = Vec3::new(-1.0 + cell * (x + 0.5), -1.0 + cell * (y + 0.5), -2.0);
+        let modelview = Mat4::from_translation(at) * Mat4::from_scale(Vec3::splat(cell * 0.9));
+        out.push((modelview, gl.lighting));
+    }
+    // 2 units away, a 53° field of view shows the 2 × 2 grid whole.
+    Ok((out, Mat4::perspective_rh_gl(53f32.to_radians(), 1.0, 0.5, 10.0)))
+}
+
+/// The process's resident memory in KiB (VmRSS), 0 where /proc does not say.
+fn resident_kib() -> u64 {
+    std::fs::read_to_string("/proc/self/status")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find_map(|l| l.strip_prefix("VmRSS:"))
+                .and_then(|v| v.split_whitespace().next())
+                .and_then(|v| v.parse().ok())
+        })
+        .unwrap_or(0)
+}
+
+fn median(values: &[f64]) -> Option<f64> {
+    Spread::of(values).map(|s| s.median)
+}
+
+/// Runs the draws sweep of `config` with `renderer` (and the GL anchor, when there is one).
+pub(super) fn run_draws(
+    config: &SweepConfig,
+    renderer: &mut Renderer,
+    gl: Option<&GlAnchor>,
+    progress: &ProgressBar,
+) -> Result<Vec<DrawsResult>> {
+    let mesh = quad();
+    let uploaded = renderer.upload(&mesh)?;
+    let mut out = Vec::new();
+    for &draws in &config.draw_counts {
+        for mode in DRAW_MODES {
+            progress.set_message(format!("draws: {draws} {}", mode.name()));
+            let (objects, projection) = scene(mode, draws)?;
+            let mut frame = Frame::new(SIZE, SIZE);
+            frame.clear_color = CLEAR;
+            frame.draws = objects
+                .iter()
+                .map(|(modelview, state)| Draw::new(&uploaded, *modelview, projection, *state))
+                .collect();
+            let start = Instant::now();
+            renderer.measure(&frame)?;
+            let first_frame_ms = start.elapsed().as_secs_f64() * 1e3;
+            for _ in 1..config.warmup {
+                renderer.measure(&frame)?;
+            }
+            let before = resident_kib();
+            let samples = (0..config.frames)
+                .map(|_| renderer.measure(&frame))
+                .collect::<ffvk::Result<Vec<FrameStats>>>()?;
+            let grown = resident_kib().saturating_sub(before) as f64 / f64::from(config.frames);
+            let per_draw = |ns: &[f64]| median(ns).map(|m| m / 1e3 / f64::from(draws));
+            let wall: Vec<f64> = samples.iter().map(|s| s.wall_ns / 1e6).collect();
+            let record: Vec<f64> = samples.iter().map(|s| s.record_ns).collect();
+            let device: Vec<f64> = samples.iter().filter_map(|s| s.gpu_ns).collect();
+            out.push(DrawsResult {
+                engine: Engine::Ffvk,
+                mode,
+                draws,
+                first_frame_ms,
+                frame_ms: Spread::of(&wall).unwrap_or_default(),
+                record_us_per_draw: per_draw(&record),
+                device_us_per_draw: per_draw(&device),
+                rss_kib_per_frame: grown,
+            });
+            progress.inc(1);
+
+            let Some(gl) = gl else { continue };
+            let scene = GlScene {
+                width: SIZE,
+                height: SIZE,
+                clear_color: CLEAR.to_array(),
+                depth_test: true,
+                draws: objects
+                    .iter()
+                    .map(|(modelview, state)| GlDraw::new(&mesh, *modelview, projection, *state))
+                    .collect(),
+            };
+            let before = resident_kib();
+            let timing = time_frames_with(&scene, config.warmup, config.frames, gl.options())?;
+            // The context (and its memory) lives for this call only: what it kept is counted
+            // over all its frames, warm-up included.
+            let grown =
+                resident_kib().saturating_sub(before) as f64 / f64::from(config.warmup + config.frames);
+            let wall: Vec<f64> = timing.frame_ns.iter().map(|ns| ns / 1e6).collect();
+            out.push(DrawsResult {
+                engine: Engine::Gl,
+                mode,
+                draws,
+                first_frame_ms: timing.first_frame_ns / 1e6,
+                frame_ms: Spread::of(&wall).unwrap_or_default(),
+                record_us_per_draw: None,
+                device_us_per_draw: None,
+                rss_kib_per_frame: grown,
+            });
+            progress.inc(1);
+        }
+    }
+    Ok(out)
+}
+
+/// The draws sweep as a Markdown table: per draw count and mode, ffvk against GL.
+pub fn draws_markdown(results: &[DrawsResult]) -> String {
+    if results.is_empty() {
+        return String::new();
+    }
+    let mut md = String::from(
+        "### Many draws, each with its own material\n\n\
+         Frames of quads in a grid at 512², each draw after its own glMaterial and modelview, \
+         a directional and a point light; host time from recording (GL: the calls) to the \
+         fence (glFinish), medians.\n\n\
+         | draws | mode | ffvk ms | GL ms | ffvk ÷ GL | ffvk record µs/draw | ffvk device µs/draw | ffvk RSS KiB/frame |\n\
+         | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: |\n",
+    );
+    let fmt = |v: Option<f64>, digits: usize| v.map_or("—".into(), |v| format!("{v:.digits$}"));
+    for r in results.iter().filter(|r| r.engine == Engine::Ffvk) {
+        let gl = results
+            .iter()
+            .find(|g| g.engine == Engine::Gl && g.mode == r.mode && g.draws == r.draws)
+            .map(|g| g.frame_ms.median);
+        md.push_str(&format!(
+            "| {} | {} | {:.2} | {} | {} | {} | {} | {:.0} |\n",
+            r.draws,
+            r.mode.name(),
+            r.frame_ms.median,
+            fmt(gl, 2),
+            fmt(gl.map(|g| r.frame_ms.median / g), 2),
+            fmt(r.record_us_per_draw, 2),
+            fmt(r.device_us_per_draw, 2),
+            r.rss_kib_per_frame,
+        ));
+    }
+    md
+}
