@@ -141,14 +141,18 @@ Material face_material(bool back_face, vec4 c) {
     } else {
         m = Material(draw.front.a_cm, draw.front.d_cm, draw.front.s_cm, draw.front.e_cm, draw.front.s_rm);
     }
-    bool tracks = color_material_enabled()
-        && (back_face ? draw.color_material_back != 0u : draw.color_material_front != 0u);
-    if (tracks) {
+    if (color_material_enabled()) {
+        // Selects rather than ifs on the face and mode, which are uniform values: lavapipe
+        // compiles a shader variant per draw for an if on uniform values alone (see
+        // light_term). all() and any() do not short-circuit, so no branch appears either.
+        bool tracks = back_face ? draw.color_material_back != 0u : draw.color_material_front != 0u;
         uint mode = draw.color_material_mode;
-        if (mode == CM_EMISSION) m.e_cm = c;
-        if (mode == CM_AMBIENT || mode == CM_AMBIENT_AND_DIFFUSE) m.a_cm = c;
-        if (mode == CM_DIFFUSE || mode == CM_AMBIENT_AND_DIFFUSE) m.d_cm = c;
-        if (mode == CM_SPECULAR) m.s_cm = c;
+        bool ambient = any(bvec2(mode == CM_AMBIENT, mode == CM_AMBIENT_AND_DIFFUSE));
+        bool diffuse = any(bvec2(mode == CM_DIFFUSE, mode == CM_AMBIENT_AND_DIFFUSE));
+        m.e_cm = all(bvec2(tracks, mode == CM_EMISSION)) ? c : m.e_cm;
+        m.a_cm = all(bvec2(tracks, ambient)) ? c : m.a_cm;
+        m.d_cm = all(bvec2(tracks, diffuse)) ? c : m.d_cm;
+        m.s_cm = all(bvec2(tracks, mode == CM_SPECULAR)) ? c : m.s_cm;
     }
     return m;
 }
@@ -158,11 +162,10 @@ Material face_material(bool back_face, vec4 c) {
 vec3 eye_normal(vec3 n_object) {
     vec3 n = mat3(draw.normal_matrix) * n_object;
     n *= draw.rescale;
-    if (draw.normalize != 0u) {
-        float len = length(n);
-        n = len > 0.0 ? n / len : vec3(0.0);
-    }
-    return n;
+    // A select on the uniform switch, not an if (see face_material).
+    float len = length(n);
+    vec3 unit_n = len > 0.0 ? n / len : vec3(0.0);
+    return draw.normalize != 0u ? unit_n : n;
 }
 
 #endif

@@ -184,14 +184,18 @@ fn frames_of_many_differently_lit_draws_stop_growing_memory_after_warm_up() {
 
 /// 256 draws a frame, each with its own material and modelview, under a directional light, a
 /// point light and a soft-edged spot with glTF's falloff (so every per-light term is in the
-/// pipeline), in every lighting mode. lavapipe compiled a shader variant for every such draw
+/// pipeline), in every lighting mode; then again with color material, two-sided lighting, a
+/// local viewer and separate specular. lavapipe compiled a shader variant for every such draw
 /// (about 220 KB each, never freed) while the vertex stage branched on uniform values; after
 /// three warm-up frames the process may grow by 24 MB at most over twelve more, and the test
 /// stops at the first frame past that rather than exhausting the machine's memory.
 #[test]
 #[ignore = "measures its own process's memory: run by frames_of_many_differently_lit_draws_stop_growing_memory_after_warm_up"]
 fn many_differently_lit_draws_in_their_own_process() {
-    use ffvk::gl::state::{Attenuation, Face, LightParam, LightingMode, MaterialParam, SpotEdge};
+    use ffvk::gl::state::{
+        Attenuation, ColorControl, ColorMaterialMode, Face, LightModelParam, LightParam, LightingMode,
+        MaterialParam, SpotEdge,
+    };
     const DRAWS: usize = 256;
     const WARM_UP: usize = 3;
     const MEASURED: usize = 12;
@@ -232,7 +236,23 @@ fn many_differently_lit_draws_in_their_own_process() {
         LightParam::Attenuation(Attenuation::GltfInverseSquare { range: Some(40.0) }),
     )
     .unwrap();
-    for mode in LightingMode::ALL {
+    let mut with_switches = gl.clone();
+    with_switches.color_material(Face::FrontAndBack, ColorMaterialMode::AmbientAndDiffuse);
+    with_switches.enable(Cap::ColorMaterial).unwrap();
+    with_switches.light_model(LightModelParam::TwoSide(true)).unwrap();
+    with_switches
+        .light_model(LightModelParam::LocalViewer(true))
+        .unwrap();
+    with_switches
+        .light_model(LightModelParam::ColorControl(ColorControl::SeparateSpecularColor))
+        .unwrap();
+    let runs = LightingMode::ALL.into_iter().flat_map(|mode| {
+        [
+            (mode, gl.clone(), ""),
+            (mode, with_switches.clone(), " with the switches"),
+        ]
+    });
+    for (mode, mut gl, what) in runs {
         gl.lighting_mode(mode);
         let draws: Vec<_> = (0..DRAWS)
             .map(|i| {
@@ -268,14 +288,14 @@ fn many_differently_lit_draws_in_their_own_process() {
             } else if f >= WARM_UP {
                 let grown = now.saturating_sub(base);
                 println!(
-                    "{}: frame {f}: {} MB resident, {:.1} MB over the warm-up",
+                    "{}{what}: frame {f}: {} MB resident, {:.1} MB over the warm-up",
                     mode.name(),
                     now >> 20,
                     grown as f64 / 1e6
                 );
                 assert!(
                     grown <= BOUND,
-                    "{}: frame {f}: the process grew by {:.1} MB since the warm-up ({} draws a frame): expected at most {} MB",
+                    "{}{what}: frame {f}: the process grew by {:.1} MB since the warm-up ({} draws a frame): expected at most {} MB",
                     mode.name(),
                     grown as f64 / 1e6,
                     DRAWS,
