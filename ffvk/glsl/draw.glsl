@@ -96,23 +96,33 @@ layout(constant_id = 9) const int SPEC_SPECULAR_MODEL = -1;     // SPECULAR_*
 layout(constant_id = 10) const int SPEC_ANY_SOFT_SPOT = -1;     // some light has a soft edge
 layout(constant_id = 11) const int SPEC_ANY_GLTF_FALLOFF = -1;  // some light has glTF's falloff
 
+// A switch of the uber-shader, read from the uniform block. lavapipe 22.3 compiles a shader
+// variant for every draw whose uniforms changed when an if or a loop bound depends on uniform
+// values alone (BENCHMARKS.md, "Many draws"); OR-ing in a zero it cannot prove zero keeps the
+// uber-shader's switches and light count out of its sight, with the same value.
+uint uber_value(uint value) {
+    return value | HIDDEN_ZERO;
+}
+
 // The state as the shader sees it: the specialization constant when set, else the uniform.
 // (The light count is chosen the same way, in light_equation: SPEC_LIGHT_COUNT < 0 reads
 // draw.light_count.)
 bool lighting_enabled() {
-    return SPEC_LIGHTING < 0 ? draw.lighting != 0u : SPEC_LIGHTING != 0;
+    return SPEC_LIGHTING < 0 ? uber_value(draw.lighting) != 0u : SPEC_LIGHTING != 0;
 }
 bool local_viewer() {
-    return SPEC_LOCAL_VIEWER < 0 ? draw.v_bs != 0u : SPEC_LOCAL_VIEWER != 0;
+    return SPEC_LOCAL_VIEWER < 0 ? uber_value(draw.v_bs) != 0u : SPEC_LOCAL_VIEWER != 0;
 }
 bool two_side() {
-    return SPEC_TWO_SIDE < 0 ? draw.t_bs != 0u : SPEC_TWO_SIDE != 0;
+    return SPEC_TWO_SIDE < 0 ? uber_value(draw.t_bs) != 0u : SPEC_TWO_SIDE != 0;
 }
 bool separate_specular() {
-    return SPEC_SEPARATE_SPECULAR < 0 ? draw.separate_specular != 0u : SPEC_SEPARATE_SPECULAR != 0;
+    return SPEC_SEPARATE_SPECULAR < 0
+        ? uber_value(draw.separate_specular) != 0u
+        : SPEC_SEPARATE_SPECULAR != 0;
 }
 bool color_material_enabled() {
-    return SPEC_COLOR_MATERIAL < 0 ? draw.color_material != 0u : SPEC_COLOR_MATERIAL != 0;
+    return SPEC_COLOR_MATERIAL < 0 ? uber_value(draw.color_material) != 0u : SPEC_COLOR_MATERIAL != 0;
 }
 // Whether light i may be positional or a spot: only the promise 0 answers "no" for all lights.
 bool may_be_local() {
@@ -128,7 +138,7 @@ bool may_be_gltf_falloff() {
     return SPEC_ANY_GLTF_FALLOFF != 0;
 }
 uint specular_model() {
-    return SPEC_SPECULAR_MODEL < 0 ? draw.specular_model : uint(SPEC_SPECULAR_MODEL);
+    return SPEC_SPECULAR_MODEL < 0 ? uber_value(draw.specular_model) : uint(SPEC_SPECULAR_MODEL);
 }
 
 // The material of one face, with COLOR_MATERIAL applied for the current color c.

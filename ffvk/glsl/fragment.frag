@@ -10,6 +10,9 @@ layout(location = 3) in vec4 color;
 
 layout(location = 0) out vec4 out_color;
 
+// A zero the compiler cannot prove zero (fragments lie inside the framebuffer, at x >= 0):
+// the uber-shader's switches pass through it (draw.glsl, uber_value).
+#define HIDDEN_ZERO uint(gl_FragCoord.x < 0.0)
 #include "lighting.glsl"
 #ifdef TEXTURE
 #include "texture.glsl"

@@ -21,6 +21,9 @@ layout(location = 3) in vec2 in_texcoord;
 layout(location = 4) out vec4 stq;
 #endif
 
+// A zero the compiler cannot prove zero (valid draws have no negative vertex index): the
+// uber-shader's switches pass through it (draw.glsl, uber_value).
+#define HIDDEN_ZERO uint(gl_VertexIndex < 0)
 #include "draw.glsl"
 
 void main() {

@@ -159,7 +159,7 @@ LitColor light_equation(vec4 V, vec3 n, Material m) {
             light_term(uint(i), V, n, m, VPe, c_pri, c_sec);
         }
     } else {
-        for (uint i = 0u; i < draw.light_count; i++) {
+        for (uint i = 0u; i < uber_value(draw.light_count); i++) {
             light_term(i, V, n, m, VPe, c_pri, c_sec);
         }
     }

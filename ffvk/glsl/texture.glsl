@@ -20,7 +20,7 @@ layout(set = 1, binding = 0) uniform sampler2D texture_2d;
 #define TEV_ADD 4u
 
 uint tex_env_mode() {
-    return SPEC_TEX_ENV < 0 ? draw.tex_env_mode : uint(SPEC_TEX_ENV);
+    return SPEC_TEX_ENV < 0 ? uber_value(draw.tex_env_mode) : uint(SPEC_TEX_ENV);
 }
 
 // Table 3.22 for an RGBA texture: fragment color C_f (the primary color), texel C_s,

@@ -13,6 +13,9 @@ layout(location = 3) INTERP in vec4 back_sec;
 
 layout(location = 0) out vec4 out_color;
 
+// A zero the compiler cannot prove zero (fragments lie inside the framebuffer, at x >= 0):
+// the uber-shader's switches pass through it (draw.glsl, uber_value).
+#define HIDDEN_ZERO uint(gl_FragCoord.x < 0.0)
 #include "lighting.glsl"
 #ifdef TEXTURE
 #include "texture.glsl"
