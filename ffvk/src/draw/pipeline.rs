@@ -83,11 +83,9 @@ pub fn set_descriptor_set(words: &mut [u32], set: u32) {
 ///
 /// A "lighting state" here is its specialization key ([`SpecKey`]): the switches and the kinds
 /// of the enabled lights, never materials, colors, matrices or light values, so frames of
-/// thousands of differently-lit draws use a handful of pipelines. On lavapipe 22.3 the
-/// uber-shader costs much more than its branches in frames of many draws: its `if`s and loop
-/// bound read uniform values, and lavapipe compiles a shader variant for every draw whose
-/// uniforms changed (BENCHMARKS.md, "Many draws"); the specialized pipelines have no such
-/// `if`, and draw any number of draws without driver work per draw.
+/// thousands of differently-lit draws use a handful of pipelines. Neither kind of pipeline
+/// makes lavapipe 22.3 compile a shader variant per draw (it would for an `if` or a loop bound
+/// on uniform values alone: BENCHMARKS.md, "Many draws").
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 #[non_exhaustive]
 pub enum Specialize {
