@@ -75,7 +75,7 @@ use super::ring::UniformRing;
 use super::texture::TextureBinding;
 use crate::error::{LightingError, Result};
 use crate::gl::state::LightingState;
-use crate::gpu::layout::{DrawBlock, SpecKey};
+use crate::gpu::layout::{DrawBlock, LightCache, SpecKey};
 use crate::vk::Device;
 
 /// A draw's pipeline and uniform block, ready to record ([`Lighting::stage`]).
@@ -207,6 +207,8 @@ pub struct Lighting {
     ring: UniformRing,
     pipelines: Pipelines,
     specialize: Specialize,
+    /// The last draw's lights, checked and packed.
+    lights: LightCache,
     device: Arc<Device>,
 }
 
@@ -236,6 +238,7 @@ impl Lighting {
             ring,
             pipelines,
             specialize: options.specialize,
+            lights: LightCache::default(),
             device: device.clone(),
         })
     }
@@ -320,7 +323,7 @@ impl Lighting {
             }
             .into());
         }
-        let block = DrawBlock::new(draw.state, draw.modelview, draw.projection)?;
+        let block = DrawBlock::new_cached(draw.state, draw.modelview, draw.projection, &mut self.lights)?;
         let pipeline = self.pipeline_for(draw.state, draw.raster, Self::textured(draw))?;
         let (set, uniform_offset) = self.ring.push(slot, &block, self.pipelines.set_layout())?;
         Ok(Staged {

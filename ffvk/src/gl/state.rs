@@ -627,25 +627,36 @@ impl LightingState {
     /// Checks every value against GL's ranges; for state built field by field rather than
     /// through [`GlState`]'s setters.
     pub fn validate(&self) -> Result<(), StateError> {
+        self.validate_all_but_lights()?;
+        validate_lights(&self.lights)
+    }
+
+    /// [`LightingState::validate`] but for the lights, which [`validate_lights`] checks (draws
+    /// under unchanged lights skip that part).
+    pub(crate) fn validate_all_but_lights(&self) -> Result<(), StateError> {
         self.front.validate()?;
         self.back.validate()?;
         finite_vec("GL_LIGHT_MODEL_AMBIENT", self.model.ambient.to_array().as_slice())?;
         finite_vec("GL_CURRENT_COLOR", self.current_color.to_array().as_slice())?;
-        self.texture.validate()?;
-        for (index, light) in self.lights.iter().enumerate() {
-            validate_light(light)?;
-            // A disabled light may be half set up: its cones count once it is enabled.
-            if light.enabled {
-                check_cone(index, light)?;
-            }
-        }
-        Ok(())
+        self.texture.validate()
     }
 
     /// The enabled lights, in index order.
     pub fn enabled_lights(&self) -> impl Iterator<Item = &Light> {
         self.lights.iter().filter(|l| l.enabled)
     }
+}
+
+/// The lights' part of [`LightingState::validate`]: every light's values, and the cones of the
+/// enabled ones (a disabled light may be half set up: its cones count once it is enabled).
+pub(crate) fn validate_lights(lights: &[Light; MAX_LIGHTS]) -> Result<(), StateError> {
+    for (index, light) in lights.iter().enumerate() {
+        validate_light(light)?;
+        if light.enabled {
+            check_cone(index, light)?;
+        }
+    }
+    Ok(())
 }
 
 /// Checks one light's values against GL's ranges and that every value is finite.

@@ -374,10 +374,71 @@ pub fn rescale_factor(modelview: Mat4) -> f32 {
     1.0 / inv.row(2).length()
 }
 
+/// att_i = 1 / (k0 + k1 d + k2 d²) is infinite when all three are 0: refused for an enabled
+/// positional light with GL's attenuation (drawn with lighting on).
+fn check_attenuation_sums(lights: &[Light; MAX_LIGHTS]) -> Result<(), StateError> {
+    for l in lights
+        .iter()
+        .filter(|l| l.enabled && l.position.w != 0.0 && l.attenuation == Attenuation::GlK012)
+    {
+        let sum = l.constant_attenuation + l.linear_attenuation + l.quadratic_attenuation;
+        if sum == 0.0 {
+            return Err(StateError::OutOfRange {
+                parameter: "GL_CONSTANT_ATTENUATION + GL_LINEAR_ATTENUATION + GL_QUADRATIC_ATTENUATION",
+                value: sum,
+                valid: "> 0 for an enabled positional light (else att_i = 1/0)",
+            });
+        }
+    }
+    Ok(())
+}
+
+/// The last lights a [`DrawBlock`] was packed from, checked, and their packed form: draws
+/// under unchanged lights (materials and matrices change per draw in a GL program; lights
+/// rarely do) copy them instead of checking sixteen lights and computing their cone cosines
+/// again. Lights that fail their checks are not kept, so they fail every draw.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct LightCache {
+    last: Option<([Light; MAX_LIGHTS], [GpuLight; MAX_LIGHTS], u32)>,
+}
+
+impl LightCache {
+    /// The enabled lights of `lights` packed in index order, and how many there are.
+    fn packed(&mut self, lights: &[Light; MAX_LIGHTS]) -> Result<([GpuLight; MAX_LIGHTS], u32), StateError> {
+        if let Some((source, packed, count)) = &self.last {
+            if source == lights {
+                return Ok((*packed, *count));
+            }
+        }
+        crate::gl::state::validate_lights(lights)?;
+        let mut packed = [GpuLight::zeroed(); MAX_LIGHTS];
+        let mut count = 0;
+        for (slot, light) in packed.iter_mut().zip(lights.iter().filter(|l| l.enabled)) {
+            *slot = GpuLight::from(light);
+            count += 1;
+        }
+        self.last = Some((*lights, packed, count));
+        Ok((packed, count))
+    }
+}
+
 impl DrawBlock {
     /// Packs one draw's state. `projection` is GL's; the Vulkan clip conversion is applied here.
     pub fn new(state: &LightingState, modelview: Mat4, projection: Mat4) -> Result<Self, StateError> {
-        state.validate()?;
+        Self::new_cached(state, modelview, projection, &mut LightCache::default())
+    }
+
+    /// [`DrawBlock::new`] with the lights checked and packed through `cache`: a draw under
+    /// the same lights as the one before (GL's rhythm: materials and matrices change per draw,
+    /// lights between frames) copies them instead.
+    pub(crate) fn new_cached(
+        state: &LightingState,
+        modelview: Mat4,
+        projection: Mat4,
+        cache: &mut LightCache,
+    ) -> Result<Self, StateError> {
+        state.validate_all_but_lights()?;
+        let (lights, light_count) = cache.packed(&state.lights)?;
         if state.lighting {
             // Normals need (M⁻¹)ᵀ; a singular modelview would light with NaN normals.
             let det = Mat3::from_mat4(modelview).determinant();
@@ -388,27 +449,7 @@ impl DrawBlock {
                     valid: "a finite non-zero value (an invertible modelview, for the normal matrix)",
                 });
             }
-            // att_i = 1 / (k0 + k1 d + k2 d²) is infinite when all three are 0.
-            for l in state
-                .enabled_lights()
-                .filter(|l| l.position.w != 0.0 && l.attenuation == Attenuation::GlK012)
-            {
-                let sum = l.constant_attenuation + l.linear_attenuation + l.quadratic_attenuation;
-                if sum == 0.0 {
-                    return Err(StateError::OutOfRange {
-                        parameter:
-                            "GL_CONSTANT_ATTENUATION + GL_LINEAR_ATTENUATION + GL_QUADRATIC_ATTENUATION",
-                        value: sum,
-                        valid: "> 0 for an enabled positional light (else att_i = 1/0)",
-                    });
-                }
-            }
-        }
-        let mut lights = [GpuLight::zeroed(); MAX_LIGHTS];
-        let mut light_count = 0;
-        for (slot, light) in lights.iter_mut().zip(state.enabled_lights()) {
-            *slot = GpuLight::from(light);
-            light_count += 1;
+            check_attenuation_sums(&state.lights)?;
         }
         let cm = &state.color_material;
         Ok(DrawBlock {
@@ -451,3 +492,61 @@ impl DrawBlock {
 }
 
 use bytemuck::Zeroable as _;
+
+#[cfg(test)]
+mod tests {
+    use glam::{Mat4, Vec3, Vec4};
+
+    use super::*;
+    use crate::gl::state::{Cap, Face, GlState, LightParam, MaterialParam};
+
+    fn lit() -> GlState {
+        let mut gl = GlState::new();
+        gl.enable(Cap::Lighting).unwrap();
+        gl.enable(Cap::Light(0)).unwrap();
+        gl.enable(Cap::Light(1)).unwrap();
+        gl.light(1, LightParam::Position(Vec4::new(1.0, 2.0, 3.0, 1.0)))
+            .unwrap();
+        gl.light(1, LightParam::SpotCutoff(30.0)).unwrap();
+        gl
+    }
+
+    #[test]
+    fn draws_packed_through_the_light_cache_equal_draws_packed_alone() {
+        let mut cache = LightCache::default();
+        let mut gl = lit();
+        let mv = Mat4::from_translation(Vec3::new(0.0, 0.0, -3.0));
+        for i in 0..4 {
+            // A new material every draw, new lights every other draw.
+            gl.material(Face::FrontAndBack, MaterialParam::Shininess(10.0 * i as f32))
+                .unwrap();
+            if i % 2 == 1 {
+                gl.light(0, LightParam::Position(Vec4::new(i as f32, 1.0, 1.0, 0.0)))
+                    .unwrap();
+            }
+            let cached = DrawBlock::new_cached(&gl.lighting, mv, Mat4::IDENTITY, &mut cache).unwrap();
+            let alone = DrawBlock::new(&gl.lighting, mv, Mat4::IDENTITY).unwrap();
+            assert_eq!(cached, alone, "draw {i}");
+        }
+    }
+
+    #[test]
+    fn lights_that_fail_their_checks_fail_every_draw_through_the_cache() {
+        let mut cache = LightCache::default();
+        let good = lit();
+        DrawBlock::new_cached(&good.lighting, Mat4::IDENTITY, Mat4::IDENTITY, &mut cache).unwrap();
+        let mut bad = good.lighting;
+        bad.lights[1].constant_attenuation = 0.0;
+        bad.lights[1].spot_exponent = f32::NAN;
+        for _ in 0..2 {
+            assert!(DrawBlock::new_cached(&bad, Mat4::IDENTITY, Mat4::IDENTITY, &mut cache).is_err());
+        }
+        // And the good lights still pack after them.
+        let again =
+            DrawBlock::new_cached(&good.lighting, Mat4::IDENTITY, Mat4::IDENTITY, &mut cache).unwrap();
+        assert_eq!(
+            again,
+            DrawBlock::new(&good.lighting, Mat4::IDENTITY, Mat4::IDENTITY).unwrap()
+        );
+    }
+}

@@ -12,7 +12,7 @@ use crate::draw::texture::sampler_info;
 use crate::error::{vk_error, Error, MeshError, Result};
 use crate::gl::state::{Face, LightingState};
 use crate::gl::texture::{Sampling, TextureImage};
-use crate::gpu::layout::DrawBlock;
+use crate::gpu::layout::{DrawBlock, LightCache};
 use crate::mesh::MeshData;
 use crate::vk::objects::{CommandPool, Fence, Sampler};
 use crate::vk::{
@@ -607,8 +607,9 @@ impl Renderer {
         self.ensure_targets(frame.width, frame.height)?;
         // Every state is checked and every pipeline made before recording starts, so that a
         // bad draw records nothing and pipeline creation never lands inside a measured frame.
+        let mut lights = LightCache::default();
         for d in &frame.draws {
-            DrawBlock::new(&d.state, d.modelview, d.projection)?;
+            DrawBlock::new_cached(&d.state, d.modelview, d.projection, &mut lights)?;
             self.lighting.prepare(&d.state, d.raster(frame), d.textured())?;
         }
         debug_assert!(
