@@ -503,10 +503,13 @@ impl App {
             let buffers = [(position_buffer, 0), (normal_buffer, 0)];
             let draw =
                 LitDraw::new(&frame.state, view(), projection(), &buffers, geometry).with_raster(raster);
+            // A run of one draw here; an emulation layer passes all the draws it records
+            // back to back, and ffvk binds only what changes between them.
             // SAFETY: cmd is recording inside the rendering pass `begin` started on
             // attachments of the target's formats, viewport and scissor set; the buffers live
             // until after the fence wait below; slot 0 is free (the last frame was waited for).
-            unsafe { lighting.draw(self.cmd, 0, &draw) }.map_err(|e| e.to_string())?;
+            unsafe { lighting.draw_run(self.cmd, 0, std::slice::from_ref(&draw)) }
+                .map_err(|e| e.to_string())?;
             images.push(self.finish(color, readback)?);
         }
         drop(with_color_array);

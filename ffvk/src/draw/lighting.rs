@@ -36,9 +36,11 @@
 //!
 //! # What a draw costs
 //!
-//! [`Lighting::draw`] checks the draw's whole GL state and packs it into one uniform block
-//! ([`DrawBlock`], 2,576 bytes), writes it into the frame slot, finds the pipeline and records
-//! five commands: about 1–1.3 µs on the host on lavapipe (BENCHMARKS.md, "Many draws"). A
+//! [`Lighting::draw`] checks the draw's GL state and packs it into one uniform block
+//! ([`DrawBlock`], 2,576 bytes; the lights only when they changed since the draw before),
+//! writes it into the frame slot, finds the pipeline and records five commands: about 1 µs on
+//! the host on lavapipe; [`Lighting::draw_run`] records many draws and binds only what changes
+//! between them, about 0.6–1 µs a draw (BENCHMARKS.md, "Many draws"). A
 //! pipeline is made per lighting mode, [`RasterState`], texturing and specialization key (the
 //! switches and the kinds of the enabled lights, never materials, colors, matrices or light
 //! values): about 15 ms on lavapipe, on the first draw that needs it unless
@@ -70,7 +72,7 @@ use glam::Mat4;
 use super::pipeline::{
     PipelineConfig, Pipelines, RasterState, Specialize, Target, VertexInput, MAX_AUTO_VARIANTS,
 };
-use super::record::{record, Bound, Geometry};
+use super::record::{record, record_in_run, Bound, Geometry, RunState};
 use super::ring::UniformRing;
 use super::texture::TextureBinding;
 use crate::error::{LightingError, Result};
@@ -338,6 +340,50 @@ impl Lighting {
         draw.texture.is_some() && draw.state.texture.enabled
     }
 
+    /// Records `draws` one after the other into `cmd` for frame slot `slot`, as
+    /// [`Lighting::draw`] records each, but binding only what changes from one draw to the
+    /// next: the pipeline when the state's key or the raster state changes, the vertex and
+    /// index buffers when they do, the texture's set when it does (each draw's block is bound
+    /// at its own offset). This is the recording scope of a run of draws: no command of the
+    /// caller's comes between them, which is what lets ffvk skip the binds. Every draw is
+    /// checked (and its block written) before anything is recorded, so a bad draw fails the
+    /// run with nothing recorded; its error names no index, so check draws with
+    /// [`Lighting::draw`] where that matters.
+    ///
+    /// # Safety
+    ///
+    /// As [`Lighting::draw`], for every draw of the run.
+    pub unsafe fn draw_run(&mut self, cmd: vk::CommandBuffer, slot: u32, draws: &[LitDraw]) -> Result<()> {
+        let staged = draws
+            .iter()
+            .map(|draw| self.stage(slot, draw))
+            .collect::<Result<Vec<_>>>()?;
+        // SAFETY: the caller's contract above; each staged entry was staged for its draw.
+        unsafe { self.record_staged_run(cmd, &staged, draws) };
+        Ok(())
+    }
+
+    /// The second half of [`Lighting::draw_run`]: binds what each of `staged` found, only
+    /// where it differs from the draw before, and draws.
+    ///
+    /// # Safety
+    ///
+    /// As [`Lighting::record_staged`], for every draw; `staged[i]` came from `draws[i]`.
+    pub(crate) unsafe fn record_staged_run(
+        &self,
+        cmd: vk::CommandBuffer,
+        staged: &[Staged],
+        draws: &[LitDraw],
+    ) {
+        let mut run = RunState::default();
+        for (staged, draw) in staged.iter().zip(draws) {
+            let bound = self.bound(staged, draw);
+            // SAFETY: the caller's contract above; `run` holds what this loop bound in `cmd`,
+            // and nothing else is recorded between its draws.
+            unsafe { record_in_run(&self.device.raw, cmd, &bound, &draw.geometry, &mut run) };
+        }
+    }
+
     /// The second half of [`Lighting::draw`]: binds what `staged` found and draws.
     ///
     /// # Safety
@@ -345,8 +391,16 @@ impl Lighting {
     /// As [`Lighting::draw`]; `staged` came from [`Lighting::stage`] with the same draw and a
     /// slot whose frame this command buffer belongs to.
     pub(crate) unsafe fn record_staged(&self, cmd: vk::CommandBuffer, staged: &Staged, draw: &LitDraw) {
+        let bound = self.bound(staged, draw);
+        // SAFETY: the caller's contract above; the pipeline, layout and set are this
+        // Lighting's and live as long as it does.
+        unsafe { record(&self.device.raw, cmd, &bound, &draw.geometry) };
+    }
+
+    /// What `draw` binds, with what staging it found.
+    fn bound<'a>(&'a self, staged: &Staged, draw: &LitDraw<'a>) -> Bound<'a> {
         let config = self.pipelines.config();
-        let bound = Bound {
+        Bound {
             pipeline: staged.pipeline,
             layout: self.pipelines.layout(),
             set_index: config.set_index,
@@ -358,10 +412,7 @@ impl Lighting {
                 .map(TextureBinding::set),
             bindings: &config.vertex_input.bindings,
             vertex_buffers: draw.vertex_buffers,
-        };
-        // SAFETY: the caller's contract above; the pipeline, layout and set are this
-        // Lighting's and live as long as it does.
-        unsafe { record(&self.device.raw, cmd, &bound, &draw.geometry) };
+        }
     }
 
     /// The pipeline a draw with `state` and `raster`, textured or not, uses under the

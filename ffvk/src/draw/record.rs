@@ -127,23 +127,56 @@ pub(crate) struct Bound<'a> {
     pub vertex_buffers: &'a [(vk::Buffer, u64)],
 }
 
-/// Binds `bound` into `cmd` and draws `geometry`.
+/// What a run of draws last bound: a draw in the same run binds only what differs, since no
+/// command of the caller's comes between them ([`Lighting::draw_run`]).
+///
+/// [`Lighting::draw_run`]: crate::Lighting::draw_run
+#[derive(Debug, Default)]
+pub(crate) struct RunState {
+    pipeline: Option<vk::Pipeline>,
+    texture_set: Option<vk::DescriptorSet>,
+    vertex_buffers: Vec<(u32, vk::Buffer, u64)>,
+    index_buffer: Option<(vk::Buffer, u64, vk::IndexType)>,
+}
+
+/// Binds `bound` into `cmd` and draws `geometry`: [`record_in_run`] with nothing bound before.
 ///
 /// # Safety
 ///
-/// `cmd` is a command buffer of `device` in the recording state, inside a dynamic rendering
-/// pass whose formats match the pipeline's, with viewport and scissor set; every handle
-/// belongs to `device` and stays alive until the command buffer has finished executing; the
-/// buffers hold what the geometry reads.
+/// As [`record_in_run`].
 pub(crate) unsafe fn record(
     device: &ash::Device,
     cmd: vk::CommandBuffer,
     bound: &Bound,
     geometry: &Geometry,
 ) {
-    // SAFETY: the caller's contract above (it covers each call below too): `cmd` is recording
-    // inside a rendering pass and the pipeline belongs to `device`.
-    unsafe { device.cmd_bind_pipeline(cmd, vk::PipelineBindPoint::GRAPHICS, bound.pipeline) };
+    // SAFETY: the caller's contract, which is record_in_run's.
+    unsafe { record_in_run(device, cmd, bound, geometry, &mut RunState::default()) }
+}
+
+/// Binds what of `bound` differs from what `run` says is bound (the block's set always: its
+/// dynamic offset is the draw's own) and draws `geometry`.
+///
+/// # Safety
+///
+/// `cmd` is a command buffer of `device` in the recording state, inside a dynamic rendering
+/// pass whose formats match the pipeline's, with viewport and scissor set; every handle
+/// belongs to `device` and stays alive until the command buffer has finished executing; the
+/// buffers hold what the geometry reads; what `run` records as bound is bound in `cmd` (no
+/// command since the run's last draw changed it).
+pub(crate) unsafe fn record_in_run(
+    device: &ash::Device,
+    cmd: vk::CommandBuffer,
+    bound: &Bound,
+    geometry: &Geometry,
+    run: &mut RunState,
+) {
+    if run.pipeline != Some(bound.pipeline) {
+        // SAFETY: the caller's contract above (it covers each call below too): `cmd` is
+        // recording inside a rendering pass and the pipeline belongs to `device`.
+        unsafe { device.cmd_bind_pipeline(cmd, vk::PipelineBindPoint::GRAPHICS, bound.pipeline) };
+        run.pipeline = Some(bound.pipeline);
+    }
     // SAFETY: as above; the set is at its index in the layout, with one dynamic offset.
     unsafe {
         device.cmd_bind_descriptor_sets(
@@ -155,7 +188,8 @@ pub(crate) unsafe fn record(
             &[bound.uniform_offset],
         )
     };
-    if let Some(set) = bound.texture_set {
+    if let Some(set) = bound.texture_set.filter(|&set| run.texture_set != Some(set)) {
+        run.texture_set = Some(set);
         // SAFETY: as above; the texture's set is the one after the block's in the layout.
         unsafe {
             device.cmd_bind_descriptor_sets(
@@ -169,6 +203,12 @@ pub(crate) unsafe fn record(
         };
     }
     for (binding, &(buffer, offset)) in bound.bindings.iter().zip(bound.vertex_buffers) {
+        let now = (binding.binding, buffer, offset);
+        if run.vertex_buffers.contains(&now) {
+            continue;
+        }
+        run.vertex_buffers.retain(|&(b, ..)| b != binding.binding);
+        run.vertex_buffers.push(now);
         // SAFETY: as above; one buffer per binding of the pipeline.
         unsafe { device.cmd_bind_vertex_buffers(cmd, binding.binding, &[buffer], &[offset]) };
     }
@@ -181,8 +221,11 @@ pub(crate) unsafe fn record(
             index_count,
             vertex_offset,
         } => {
-            // SAFETY: as above.
-            unsafe { device.cmd_bind_index_buffer(cmd, buffer, offset, index_type) };
+            if run.index_buffer != Some((buffer, offset, index_type)) {
+                run.index_buffer = Some((buffer, offset, index_type));
+                // SAFETY: as above.
+                unsafe { device.cmd_bind_index_buffer(cmd, buffer, offset, index_type) };
+            }
             // SAFETY: as above; the caller's indices address its vertices.
             unsafe { device.cmd_draw_indexed(cmd, index_count, 1, first_index, vertex_offset, 0) };
         }

@@ -60,6 +60,8 @@ pub struct Mesh {
     indices: Buffer,
     index_count: u32,
     vertex_count: u32,
+    /// `vertices` at offset 0, as a draw binds it (kept so draws can borrow it).
+    vertex_binding: (vk::Buffer, u64),
 }
 
 impl Mesh {
@@ -456,6 +458,7 @@ impl Renderer {
             .try_into()
             .map_err(|_| Error::Internal("the uploader returned another number of buffers than parts"))?;
         Ok(Mesh {
+            vertex_binding: (vertices.raw(), 0),
             vertices,
             indices,
             index_count: mesh.indices.len() as u32,

@@ -189,34 +189,29 @@ unsafe fn record_pass(
         vkd.cmd_set_scissor(cmd, 0, &[area]);
     }
     let draws_start = std::time::Instant::now();
-    let first = staged.is_empty();
-    for (i, draw) in frame.draws.iter().enumerate() {
-        let mesh = draw.mesh;
-        let lit = LitDraw {
-            state: &draw.state,
-            modelview: draw.modelview,
-            projection: draw.projection,
-            raster: draw.raster(frame),
-            vertex_buffers: &[(mesh.vertices.raw(), 0)],
-            geometry: Geometry::Indexed {
-                buffer: mesh.indices.raw(),
-                offset: 0,
-                index_type: vk::IndexType::UINT32,
-                first_index: 0,
-                index_count: mesh.index_count,
-                vertex_offset: 0,
-            },
-            texture: draw.texture.filter(|_| draw.textured()).map(|t| &t.binding),
-        };
-        // Recording below is safe: inside the rendering pass begun above, whose formats are
-        // the Target::OFFSCREEN the lighting was made for, viewport and scissor set; the mesh
-        // buffers outlive the submission; slot 0 was begun after the last frame's fence.
-        if first {
-            staged.push(lighting.stage(0, &lit)?);
+    let lits: Vec<LitDraw> = frame
+        .draws
+        .iter()
+        .map(|draw| {
+            let mesh = draw.mesh;
+            let geometry = Geometry::indexed(mesh.indices.raw(), vk::IndexType::UINT32, mesh.index_count);
+            let buffers: &[(vk::Buffer, u64)] = std::slice::from_ref(&mesh.vertex_binding);
+            LitDraw::new(&draw.state, draw.modelview, draw.projection, buffers, geometry)
+                .with_raster(draw.raster(frame))
+                .with_texture(draw.texture.filter(|_| draw.textured()).map(|t| &t.binding))
+        })
+        .collect();
+    // Recording below is safe: inside the rendering pass begun above, whose formats are the
+    // Target::OFFSCREEN the lighting was made for, viewport and scissor set; the mesh buffers
+    // outlive the submission; slot 0 was begun after the last frame's fence. The draws are one
+    // run: nothing else is recorded between them.
+    if staged.is_empty() {
+        for lit in &lits {
+            staged.push(lighting.stage(0, lit)?);
         }
-        // SAFETY: as above; staged[i] was staged for this draw in this frame's slot.
-        unsafe { lighting.record_staged(cmd, &staged[i], &lit) };
     }
+    // SAFETY: as above; staged[i] was staged for draw i in this frame's slot.
+    unsafe { lighting.record_staged_run(cmd, staged, &lits) };
     let record_ns = draws_start.elapsed().as_nanos() as f64;
     // SAFETY: as above; the pass begun above ends here.
     unsafe { vkd.cmd_end_rendering(cmd) };
