@@ -154,15 +154,16 @@ Material face_material(bool back_face, vec4 c) {
     if (color_material_enabled()) {
         // Selects rather than ifs on the face and mode, which are uniform values: lavapipe
         // compiles a shader variant per draw for an if on uniform values alone (see
-        // light_term). all() and any() do not short-circuit, so no branch appears either.
+        // light_term). all() and any() do not short-circuit, and mix() with a bvec4 is an
+        // OpSelect in the SPIR-V (glslang turns ?: into one only between plain variables).
         bool tracks = back_face ? draw.color_material_back != 0u : draw.color_material_front != 0u;
         uint mode = draw.color_material_mode;
         bool ambient = any(bvec2(mode == CM_AMBIENT, mode == CM_AMBIENT_AND_DIFFUSE));
         bool diffuse = any(bvec2(mode == CM_DIFFUSE, mode == CM_AMBIENT_AND_DIFFUSE));
-        m.e_cm = all(bvec2(tracks, mode == CM_EMISSION)) ? c : m.e_cm;
-        m.a_cm = all(bvec2(tracks, ambient)) ? c : m.a_cm;
-        m.d_cm = all(bvec2(tracks, diffuse)) ? c : m.d_cm;
-        m.s_cm = all(bvec2(tracks, mode == CM_SPECULAR)) ? c : m.s_cm;
+        m.e_cm = mix(m.e_cm, c, bvec4(all(bvec2(tracks, mode == CM_EMISSION))));
+        m.a_cm = mix(m.a_cm, c, bvec4(all(bvec2(tracks, ambient))));
+        m.d_cm = mix(m.d_cm, c, bvec4(all(bvec2(tracks, diffuse))));
+        m.s_cm = mix(m.s_cm, c, bvec4(all(bvec2(tracks, mode == CM_SPECULAR))));
     }
     return m;
 }

@@ -24,14 +24,18 @@ float pow_gl(float x, float y) {
 // Normalizes, keeping a zero vector zero rather than NaN.
 vec3 unit(vec3 v) {
     float len = length(v);
-    return len > 0.0 ? v / len : vec3(0.0);
+    vec3 q = v / len;
+    return len > 0.0 ? q : vec3(0.0);  // a select: v may be a light's (see light_term)
 }
 
 // P1P2 with a hat: the unit vector from homogeneous point P1 to P2.
 vec3 unit_from_to(vec4 P1, vec4 P2) {
-    if (P2.w == 0.0 && P1.w != 0.0) return unit(P2.xyz);
-    if (P1.w == 0.0 && P2.w != 0.0) return -unit(P1.xyz);
-    if (P1.w == 0.0 && P2.w == 0.0) return unit(P2.xyz - P1.xyz);
+    // all() does not short-circuit: no branch tests a light's w alone (see light_term).
+    bool far1 = P1.w == 0.0;
+    bool far2 = P2.w == 0.0;
+    if (all(bvec2(far2, !far1))) return unit(P2.xyz);
+    if (all(bvec2(far1, !far2))) return -unit(P1.xyz);
+    if (all(bvec2(far1, far2))) return unit(P2.xyz - P1.xyz);
     return unit(P2.xyz / P2.w - P1.xyz / P1.w);
 }
 

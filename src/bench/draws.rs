@@ -1,7 +1,7 @@
 //! The draws sweep: frames of many small draws, each with its own material and modelview, as a
 //! fixed-function emulation layer records them (a `glMaterial` and a `glLoadMatrix` before each
 //! `glDrawElements`), under a directional and a point light; the GL anchor draws the same
-//! calls. What it reports per point: the frame's host time (recording start to fence), the
+//! calls. What it reports per point: the frame's host time (handed over to fence), the
 //! host recording time and the device time per draw, and how much the process grew per frame.
 
 use std::time::Instant;
@@ -38,8 +38,12 @@ pub struct DrawsResult {
     pub draws: u32,
     /// The first frame (pipeline creation, GL's program build).
     pub first_frame_ms: f64,
-    /// Each measured frame's host time: recording (or GL's calls) to the fence (`glFinish`).
+    /// Each measured frame's host time, from the frame handed over to the fence signalled: for
+    /// ffvk the whole `Renderer::measure` call (checking the draws, recording, submission, wait),
+    /// for GL its calls and `glFinish`.
     pub frame_ms: Spread,
+    /// ffvk: each measured frame's time from submission to fence alone; `None` for GL.
+    pub submit_ms: Option<Spread>,
     /// ffvk: the median host time to record one draw (checking its state, writing its block,
     /// binding and drawing), in µs; `None` for GL.
     pub record_us_per_draw: Option<f64>,
@@ -139,12 +143,17 @@ pub(super) fn run_draws(
                 renderer.measure(&frame)?;
             }
             let before = resident_kib();
-            let samples = (0..config.frames)
-                .map(|_| renderer.measure(&frame))
-                .collect::<ffvk::Result<Vec<FrameStats>>>()?;
+            let mut wall = Vec::new();
+            let mut samples = Vec::new();
+            for _ in 0..config.frames {
+                let start = Instant::now();
+                samples.push(renderer.measure(&frame)?);
+                wall.push(start.elapsed().as_secs_f64() * 1e3);
+            }
+            let samples: Vec<FrameStats> = samples;
             let grown = resident_kib().saturating_sub(before) as f64 / f64::from(config.frames);
             let per_draw = |ns: &[f64]| median(ns).map(|m| m / 1e3 / f64::from(draws));
-            let wall: Vec<f64> = samples.iter().map(|s| s.wall_ns / 1e6).collect();
+            let submit: Vec<f64> = samples.iter().map(|s| s.wall_ns / 1e6).collect();
             let record: Vec<f64> = samples.iter().map(|s| s.record_ns).collect();
             let device: Vec<f64> = samples.iter().filter_map(|s| s.gpu_ns).collect();
             out.push(DrawsResult {
@@ -153,6 +162,7 @@ pub(super) fn run_draws(
                 draws,
                 first_frame_ms,
                 frame_ms: Spread::of(&wall).unwrap_or_default(),
+                submit_ms: Spread::of(&submit),
                 record_us_per_draw: per_draw(&record),
                 device_us_per_draw: per_draw(&device),
                 rss_kib_per_frame: grown,
@@ -183,6 +193,7 @@ pub(super) fn run_draws(
                 draws,
                 first_frame_ms: timing.first_frame_ns / 1e6,
                 frame_ms: Spread::of(&wall).unwrap_or_default(),
+                submit_ms: None,
                 record_us_per_draw: None,
                 device_us_per_draw: None,
                 rss_kib_per_frame: grown,
@@ -201,8 +212,9 @@ pub fn draws_markdown(results: &[DrawsResult]) -> String {
     let mut md = String::from(
         "### Many draws, each with its own material\n\n\
          Frames of quads in a grid at 512², each draw after its own glMaterial and modelview, \
-         a directional and a point light; host time from recording (GL: the calls) to the \
-         fence (glFinish), medians.\n\n\
+         a directional and a point light; host time per frame, medians: ffvk from the frame \
+         handed to the renderer (checking the draws, recording, submission) to the fence, GL from \
+         its first call to glFinish's return.\n\n\
          | draws | mode | ffvk ms | GL ms | ffvk ÷ GL | ffvk record µs/draw | ffvk device µs/draw | ffvk RSS KiB/frame |\n\
          | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: |\n",
     );

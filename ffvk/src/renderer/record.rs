@@ -12,7 +12,13 @@ use crate::vk::objects::QueryPool;
 impl Renderer {
     /// Records the submission `pass` describes; returns the host time the first pass's draws
     /// took to record, in nanoseconds (the repeats only bind again what it wrote).
-    pub(super) fn record(&mut self, frame: &Frame, pass: Pass) -> Result<f64> {
+    pub(super) fn record(
+        &mut self,
+        frame: &Frame,
+        pass: Pass,
+        lits: &[LitDraw],
+        staged: &[Staged],
+    ) -> Result<f64> {
         let vkd = &self.device.raw;
         // Borrowed as a field (not through self.targets()): the draws below take the lighting
         // mutably at the same time.
@@ -40,23 +46,12 @@ impl Renderer {
             // SAFETY: outside any rendering pass; the pool has one query.
             unsafe { vkd.cmd_reset_query_pool(cmd, pool, 0, 1) };
         }
-        // The draws' uniforms are written once, by the first pass; the repeats bind them again.
-        let mut staged = Vec::new();
+        // The draws' uniforms were written once, before recording; every pass binds them.
         let mut record_ns = 0.0;
         for i in 0..pass.repeat {
             // SAFETY: the command buffer is recording, outside any pass; every handle belongs
             // to this device and outlives the submission (the renderer waits for it).
-            let ns = unsafe {
-                record_pass(
-                    vkd,
-                    &mut self.lighting,
-                    &mut staged,
-                    targets,
-                    cmd,
-                    frame,
-                    statistics,
-                )
-            }?;
+            let ns = unsafe { record_pass(&self.lighting, frame, (lits, staged), targets, cmd, statistics) }?;
             if i == 0 {
                 record_ns = ns;
             }
@@ -78,23 +73,23 @@ impl Renderer {
 }
 
 /// Records one frame's rendering pass: the attachments' layouts, the clears and the draws,
-/// inside the statistics query when there is one. Stages the draws into `staged` when it is
-/// empty, else records what it holds. Returns the host time the draws took.
+/// inside the statistics query when there is one; the draws are `lits`, staged as `staged`,
+/// recorded as one run. Returns the host time their recording took.
 ///
 /// # Safety
 ///
-/// `cmd` is a command buffer of `vkd` in the recording state, outside any pass; every handle
+/// `cmd` is a command buffer of the lighting's device in the recording state, outside any pass; every handle
 /// belongs to that device and stays alive until the submission has finished; the lighting's
 /// frame slot 0 was begun after the last frame's fence.
 unsafe fn record_pass(
-    vkd: &ash::Device,
-    lighting: &mut Lighting,
-    staged: &mut Vec<Staged>,
+    lighting: &Lighting,
+    frame: &Frame,
+    (lits, staged): (&[LitDraw], &[Staged]),
     targets: &Targets,
     cmd: vk::CommandBuffer,
-    frame: &Frame,
     statistics: Option<vk::QueryPool>,
 ) -> Result<f64> {
+    let vkd = &lighting.device().raw;
     let extent = targets.extent;
     let color_range = subresource(vk::ImageAspectFlags::COLOR);
     let depth_range = subresource(vk::ImageAspectFlags::DEPTH);
@@ -189,29 +184,12 @@ unsafe fn record_pass(
         vkd.cmd_set_scissor(cmd, 0, &[area]);
     }
     let draws_start = std::time::Instant::now();
-    let lits: Vec<LitDraw> = frame
-        .draws
-        .iter()
-        .map(|draw| {
-            let mesh = draw.mesh;
-            let geometry = Geometry::indexed(mesh.indices.raw(), vk::IndexType::UINT32, mesh.index_count);
-            let buffers: &[(vk::Buffer, u64)] = std::slice::from_ref(&mesh.vertex_binding);
-            LitDraw::new(&draw.state, draw.modelview, draw.projection, buffers, geometry)
-                .with_raster(draw.raster(frame))
-                .with_texture(draw.texture.filter(|_| draw.textured()).map(|t| &t.binding))
-        })
-        .collect();
     // Recording below is safe: inside the rendering pass begun above, whose formats are the
     // Target::OFFSCREEN the lighting was made for, viewport and scissor set; the mesh buffers
     // outlive the submission; slot 0 was begun after the last frame's fence. The draws are one
     // run: nothing else is recorded between them.
-    if staged.is_empty() {
-        for lit in &lits {
-            staged.push(lighting.stage(0, lit)?);
-        }
-    }
-    // SAFETY: as above; staged[i] was staged for draw i in this frame's slot.
-    unsafe { lighting.record_staged_run(cmd, staged, &lits) };
+    // SAFETY: as above; staged[i] was staged for lits[i] in this frame's slot.
+    unsafe { lighting.record_staged_run(cmd, staged, lits) };
     let record_ns = draws_start.elapsed().as_nanos() as f64;
     // SAFETY: as above; the pass begun above ends here.
     unsafe { vkd.cmd_end_rendering(cmd) };
@@ -290,4 +268,21 @@ unsafe fn record_readback(vkd: &ash::Device, targets: &Targets, cmd: vk::Command
             &vk::DependencyInfo::default().buffer_memory_barriers(&to_host),
         )
     };
+}
+
+/// The lit draws of `frame`: each mesh's vertices and indices, the frame's raster state with
+/// the draw's culling, its texture when it samples one.
+pub(super) fn lit_draws<'f>(frame: &'f Frame) -> Vec<LitDraw<'f>> {
+    frame
+        .draws
+        .iter()
+        .map(|draw| {
+            let mesh = draw.mesh;
+            let geometry = Geometry::indexed(mesh.indices.raw(), vk::IndexType::UINT32, mesh.index_count);
+            let buffers: &[(vk::Buffer, u64)] = std::slice::from_ref(&mesh.vertex_binding);
+            LitDraw::new(&draw.state, draw.modelview, draw.projection, buffers, geometry)
+                .with_raster(draw.raster(frame))
+                .with_texture(draw.texture.filter(|_| draw.textured()).map(|t| &t.binding))
+        })
+        .collect()
 }
