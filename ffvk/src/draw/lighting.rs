@@ -44,9 +44,9 @@
 //! pipeline is made per lighting mode, [`RasterState`], texturing and specialization key (the
 //! switches and the kinds of the enabled lights, never materials, colors, matrices or light
 //! values): about 15 ms on lavapipe, on the first draw that needs it unless
-//! [`Lighting::prepare`] made it before the frame. No shader branches or loops on uniform
-//! values alone, so the driver compiles nothing per draw (lavapipe 22.3 would, for every draw
-//! whose uniforms changed); the uber-shader ([`Specialize::Never`], or [`Specialize::Auto`]
+//! [`Lighting::prepare`] made it before the frame. The shaders keep their branches and loop
+//! bounds off uniform values alone, so the driver compiles nothing per draw (lavapipe 22.3
+//! would, for every draw whose uniforms changed; a test guards it); the uber-shader ([`Specialize::Never`], or [`Specialize::Auto`]
 //! past its budget) is about twice as slow per vertex and fragment as specialized pipelines.
 //!
 //! # Threads
