@@ -190,17 +190,19 @@ fn frames_of_many_differently_lit_draws_stop_growing_memory_after_warm_up() {
 /// 256 draws a frame, each with its own material and modelview, under a directional light, a
 /// point light and a soft-edged spot with glTF's falloff (so every per-light term is in the
 /// pipeline), in every lighting mode; then again with color material, two-sided lighting, a
-/// local viewer and separate specular; with specialized pipelines and with the uber-shader. lavapipe compiled a shader variant for every such draw
+/// local viewer, separate specular and a texture in GL_DECAL; with specialized pipelines and
+/// with the uber-shader. lavapipe compiled a shader variant for every such draw
 /// (about 220 KB each, never freed) while the vertex stage branched on uniform values; after
-/// three warm-up frames the process may grow by 24 MB at most over twelve more, and the test
+/// three warm-up frames the process may grow by 24 MiB at most over twelve more, and the test
 /// stops at the first frame past that rather than exhausting the machine's memory.
 #[test]
 #[ignore = "measures its own process's memory: run by frames_of_many_differently_lit_draws_stop_growing_memory_after_warm_up"]
 fn many_differently_lit_draws_in_their_own_process() {
     use ffvk::gl::state::{
         Attenuation, ColorControl, ColorMaterialMode, Face, LightModelParam, LightParam, LightingMode,
-        MaterialParam, SpotEdge,
+        MaterialParam, SpotEdge, TexEnvParam,
     };
+    use ffvk::gl::texture::{Sampling, TexEnvMode, TextureImage};
     if std::env::var_os(ALONE).is_none() {
         println!("skipped: run by frames_of_many_differently_lit_draws_stop_growing_memory_after_warm_up");
         return;
@@ -245,6 +247,10 @@ fn many_differently_lit_draws_in_their_own_process() {
     .unwrap();
     let mut with_switches = gl.clone();
     with_switches.color_material(Face::FrontAndBack, ColorMaterialMode::AmbientAndDiffuse);
+    with_switches.enable(Cap::Texture2D).unwrap();
+    with_switches
+        .tex_env(TexEnvParam::Mode(TexEnvMode::Decal))
+        .unwrap();
     with_switches.enable(Cap::ColorMaterial).unwrap();
     with_switches.light_model(LightModelParam::TwoSide(true)).unwrap();
     with_switches
@@ -256,6 +262,8 @@ fn many_differently_lit_draws_in_their_own_process() {
     for specialize in [Specialize::Auto, Specialize::Never] {
         let mut r = renderer_with(specialize);
         let sphere = r.upload(&MeshData::uv_sphere(8, 6)).unwrap();
+        let checker = TextureImage::checker(8, 2, [255, 255, 255, 255], [90, 90, 90, 128]).unwrap();
+        let texture = r.upload_texture(&checker, &Sampling::NEAREST).unwrap();
         let runs = LightingMode::ALL.into_iter().flat_map(|mode| {
             [
                 (mode, gl.clone(), ""),
@@ -297,6 +305,7 @@ fn many_differently_lit_draws_in_their_own_process() {
                             perspective(50.0, 1.0, 1.0, 60.0),
                             *state,
                         )
+                        .with_texture(Some(&texture))
                     })
                     .collect();
                 r.render(&frame).unwrap();
@@ -306,10 +315,10 @@ fn many_differently_lit_draws_in_their_own_process() {
                 } else if f >= WARM_UP {
                     let grown = now.saturating_sub(base);
                     println!(
-                        "{}{what} ({specialize:?}): frame {f}: {} MB resident, {:.1} MB over the warm-up",
+                        "{}{what} ({specialize:?}): frame {f}: {} MiB resident, {:.1} MiB over the warm-up",
                         mode.name(),
                         now >> 20,
-                        grown as f64 / 1e6
+                        grown as f64 / f64::from(1 << 20)
                     );
                     assert!(
                     grown <= BOUND,
