@@ -16,7 +16,7 @@ use crate::gl_reference::{time_frames_with, GlDraw, GlScene};
 use crate::Result;
 use ffvk::gl::state::{Cap, Face, GlState, LightParam, LightingState, MaterialParam};
 use ffvk::mesh::{MeshData, Vertex};
-use ffvk::{Draw, Frame, FrameStats, Renderer};
+use ffvk::{Draw, Frame, Renderer};
 
 /// The most draws a frame of the sweep may have.
 pub const MAX_DRAW_COUNT: u32 = 100_000;
@@ -99,17 +99,22 @@ fn scene(mode: BenchMode, draws: u32) -> Result<(Vec<(Mat4, LightingState)>, Mat
     Ok((out, Mat4::perspective_rh_gl(53f32.to_radians(), 1.0, 0.5, 10.0)))
 }
 
-/// The process's resident memory in KiB (VmRSS), 0 where /proc does not say.
-fn resident_kib() -> u64 {
-    std::fs::read_to_string("/proc/self/status")
-        .ok()
-        .and_then(|s| {
-            s.lines()
-                .find_map(|l| l.strip_prefix("VmRSS:"))
-                .and_then(|v| v.split_whitespace().next())
-                .and_then(|v| v.parse().ok())
-        })
-        .unwrap_or(0)
+/// The process's resident memory in KiB (VmRSS); `None` where /proc does not say.
+pub fn resident_kib() -> Option<u64> {
+    std::fs::read_to_string("/proc/self/status").ok().and_then(|s| {
+        s.lines()
+            .find_map(|l| l.strip_prefix("VmRSS:"))
+            .and_then(|v| v.split_whitespace().next())
+            .and_then(|v| v.parse().ok())
+    })
+}
+
+/// How much the process grew since `before` (KiB), per one of `frames`; 0 without /proc.
+fn grown_per_frame(before: Option<u64>, frames: u32) -> f64 {
+    match (before, resident_kib()) {
+        (Some(before), Some(now)) => now.saturating_sub(before) as f64 / f64::from(frames),
+        _ => 0.0,
+    }
 }
 
 fn median(values: &[f64]) -> Option<f64> {
@@ -150,8 +155,7 @@ pub(super) fn run_draws(
                 samples.push(renderer.measure(&frame)?);
                 wall.push(start.elapsed().as_secs_f64() * 1e3);
             }
-            let samples: Vec<FrameStats> = samples;
-            let grown = resident_kib().saturating_sub(before) as f64 / f64::from(config.frames);
+            let grown = grown_per_frame(before, config.frames);
             let per_draw = |ns: &[f64]| median(ns).map(|m| m / 1e3 / f64::from(draws));
             let submit: Vec<f64> = samples.iter().map(|s| s.wall_ns / 1e6).collect();
             let record: Vec<f64> = samples.iter().map(|s| s.record_ns).collect();
@@ -184,8 +188,7 @@ pub(super) fn run_draws(
             let timing = time_frames_with(&scene, config.warmup, config.frames, gl.options())?;
             // The context (and its memory) lives for this call only: what it kept is counted
             // over all its frames, warm-up included.
-            let grown =
-                resident_kib().saturating_sub(before) as f64 / f64::from(config.warmup + config.frames);
+            let grown = grown_per_frame(before, config.warmup + config.frames);
             let wall: Vec<f64> = timing.frame_ns.iter().map(|ns| ns / 1e6).collect();
             out.push(DrawsResult {
                 engine: Engine::Gl,

@@ -172,14 +172,7 @@ const ALONE: &str = "FFVK_TEST_ALONE";
 
 /// The process's resident memory, in bytes (VmRSS).
 fn resident_bytes() -> u64 {
-    let status = std::fs::read_to_string("/proc/self/status").unwrap();
-    let kib: u64 = status
-        .lines()
-        .find_map(|l| l.strip_prefix("VmRSS:"))
-        .and_then(|v| v.split_whitespace().next())
-        .and_then(|v| v.parse().ok())
-        .unwrap();
-    kib * 1024
+    ffvk_cli::bench::draws::resident_kib().expect("/proc/self/status names VmRSS") * 1024
 }
 
 #[test]

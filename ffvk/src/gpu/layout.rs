@@ -410,22 +410,28 @@ impl LightCache {
                 return Ok((*packed, *count));
             }
         }
-        crate::gl::state::validate_lights(lights)?;
-        let mut packed = [GpuLight::zeroed(); MAX_LIGHTS];
-        let mut count = 0;
-        for (slot, light) in packed.iter_mut().zip(lights.iter().filter(|l| l.enabled)) {
-            *slot = GpuLight::from(light);
-            count += 1;
-        }
+        let (packed, count) = pack_lights(lights)?;
         self.last = Some((*lights, packed, count));
         Ok((packed, count))
     }
 }
 
+/// Checks `lights` and packs the enabled ones in index order; returns them and their count.
+fn pack_lights(lights: &[Light; MAX_LIGHTS]) -> Result<([GpuLight; MAX_LIGHTS], u32), StateError> {
+    crate::gl::state::validate_lights(lights)?;
+    let mut packed = [GpuLight::zeroed(); MAX_LIGHTS];
+    let mut count = 0;
+    for (slot, light) in packed.iter_mut().zip(lights.iter().filter(|l| l.enabled)) {
+        *slot = GpuLight::from(light);
+        count += 1;
+    }
+    Ok((packed, count))
+}
+
 impl DrawBlock {
     /// Packs one draw's state. `projection` is GL's; the Vulkan clip conversion is applied here.
     pub fn new(state: &LightingState, modelview: Mat4, projection: Mat4) -> Result<Self, StateError> {
-        Self::new_cached(state, modelview, projection, &mut LightCache::default())
+        Self::assemble(state, modelview, projection, pack_lights)
     }
 
     /// [`DrawBlock::new`] with the lights checked and packed through `cache`: a draw under
@@ -437,8 +443,19 @@ impl DrawBlock {
         projection: Mat4,
         cache: &mut LightCache,
     ) -> Result<Self, StateError> {
+        Self::assemble(state, modelview, projection, |lights| cache.packed(lights))
+    }
+
+    /// Checks and packs one draw's state, its lights through `pack` (after the rest is checked,
+    /// so errors come in the order of [`LightingState::validate`]).
+    fn assemble(
+        state: &LightingState,
+        modelview: Mat4,
+        projection: Mat4,
+        pack: impl FnOnce(&[Light; MAX_LIGHTS]) -> Result<([GpuLight; MAX_LIGHTS], u32), StateError>,
+    ) -> Result<Self, StateError> {
         state.validate_all_but_lights()?;
-        let (lights, light_count) = cache.packed(&state.lights)?;
+        let (lights, light_count) = pack(&state.lights)?;
         if state.lighting {
             // Normals need (M⁻¹)ᵀ; a singular modelview would light with NaN normals.
             let det = Mat3::from_mat4(modelview).determinant();
