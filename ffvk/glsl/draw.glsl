@@ -1,5 +1,6 @@
-// The per-draw uniform block: GL lighting state in std140, mirrored by src/gpu/layout.rs
-// (a test checks the offsets in the compiled SPIR-V against the Rust structs).
+// GL lighting state as the shaders see it: the State uniform block in std140 and the draw's
+// materials, mirrored by src/gpu/layout.rs (a test checks the offsets in the compiled SPIR-V
+// against the Rust structs).
 #ifndef FFVK_DRAW_GLSL
 #define FFVK_DRAW_GLSL
 
@@ -49,14 +50,13 @@ struct Light {
 #define CM_SPECULAR 3u
 #define CM_AMBIENT_AND_DIFFUSE 4u
 
-layout(std140, set = 0, binding = 0) uniform Draw {
-    mat4 modelview;       // M
+// GL's lighting state but the draw's own values: staged when it changes (a new block only when
+// a draw's state differs from the draw before), bound at a dynamic offset.
+layout(std140, set = 0, binding = 0) uniform State {
     mat4 projection;      // GL projection, premultiplied by GL-to-Vulkan clip conversion
-    mat4 normal_matrix;   // (M^-1)^T, upper 3x3 used
-    Material front;
-    Material back;
+    mat4 texture_matrix;  // GL_TEXTURE matrix, read by the TEXTURE variants
     vec4 a_cs;            // LIGHT_MODEL_AMBIENT
-    vec4 current_color;   // CURRENT_COLOR (glColor), read by the CURRENT_COLOR variants
+    vec4 c_c;             // TEXTURE_ENV_COLOR
     uint light_count;     // enabled lights, packed in index order
     uint lighting;        // LIGHTING enabled
     uint v_bs;            // LIGHT_MODEL_LOCAL_VIEWER
@@ -67,13 +67,17 @@ layout(std140, set = 0, binding = 0) uniform Draw {
     uint color_material_back;   // ColorMaterial face includes BACK
     uint color_material_mode;   // CM_*
     uint normalize;       // NORMALIZE enabled
-    float rescale;        // RESCALE_NORMAL factor, 1 when disabled
     uint specular_model;  // SPECULAR_* (ffvk's extension)
-    Light lights[MAX_LIGHTS];
-    mat4 texture_matrix;  // GL_TEXTURE matrix, read by the TEXTURE variants
-    vec4 c_c;             // TEXTURE_ENV_COLOR
     uint tex_env_mode;    // TEXTURE_ENV_MODE, TEV_* in texture.glsl
-} draw;
+    Light lights[MAX_LIGHTS];
+} state;
+
+// The draw's own materials (its DrawRecord, src/gpu/layout.rs): each stage's main sets them
+// before lighting, from the record's instance attributes (vertex stages, record.glsl) or from
+// flat inputs (the fragment stage of the fragment mode). Per-draw values are vertex data, not
+// uniforms: a frame of draws that change only these binds nothing between them.
+Material draw_front;
+Material draw_back;
 
 // Specialization constants, mirrored by src/gpu/layout.rs (`SpecConstant`; a test reads the
 // SpecId decorations from the SPIR-V). The default, -1, means "read the uniform": the
@@ -106,23 +110,23 @@ uint uber_value(uint value) {
 
 // The state as the shader sees it: the specialization constant when set, else the uniform.
 // (The light count is chosen the same way, in light_equation: SPEC_LIGHT_COUNT < 0 reads
-// draw.light_count.)
+// state.light_count.)
 bool lighting_enabled() {
-    return SPEC_LIGHTING < 0 ? uber_value(draw.lighting) != 0u : SPEC_LIGHTING != 0;
+    return SPEC_LIGHTING < 0 ? uber_value(state.lighting) != 0u : SPEC_LIGHTING != 0;
 }
 bool local_viewer() {
-    return SPEC_LOCAL_VIEWER < 0 ? uber_value(draw.v_bs) != 0u : SPEC_LOCAL_VIEWER != 0;
+    return SPEC_LOCAL_VIEWER < 0 ? uber_value(state.v_bs) != 0u : SPEC_LOCAL_VIEWER != 0;
 }
 bool two_side() {
-    return SPEC_TWO_SIDE < 0 ? uber_value(draw.t_bs) != 0u : SPEC_TWO_SIDE != 0;
+    return SPEC_TWO_SIDE < 0 ? uber_value(state.t_bs) != 0u : SPEC_TWO_SIDE != 0;
 }
 bool separate_specular() {
     return SPEC_SEPARATE_SPECULAR < 0
-        ? uber_value(draw.separate_specular) != 0u
+        ? uber_value(state.separate_specular) != 0u
         : SPEC_SEPARATE_SPECULAR != 0;
 }
 bool color_material_enabled() {
-    return SPEC_COLOR_MATERIAL < 0 ? uber_value(draw.color_material) != 0u : SPEC_COLOR_MATERIAL != 0;
+    return SPEC_COLOR_MATERIAL < 0 ? uber_value(state.color_material) != 0u : SPEC_COLOR_MATERIAL != 0;
 }
 // Whether light i may be positional or a spot: only the promise 0 answers "no" for all lights.
 bool may_be_local() {
@@ -138,26 +142,19 @@ bool may_be_gltf_falloff() {
     return SPEC_ANY_GLTF_FALLOFF != 0;
 }
 uint specular_model() {
-    return SPEC_SPECULAR_MODEL < 0 ? uber_value(draw.specular_model) : uint(SPEC_SPECULAR_MODEL);
+    return SPEC_SPECULAR_MODEL < 0 ? uber_value(state.specular_model) : uint(SPEC_SPECULAR_MODEL);
 }
 
 // The material of one face, with COLOR_MATERIAL applied for the current color c.
 Material face_material(bool back_face, vec4 c) {
-    // Member by member: glslang 12 copies whole std140 structs with an OpStore that
-    // SPIR-V validation rejects (block layout and function layout differ).
-    Material m;
-    if (back_face) {
-        m = Material(draw.back.a_cm, draw.back.d_cm, draw.back.s_cm, draw.back.e_cm, draw.back.s_rm);
-    } else {
-        m = Material(draw.front.a_cm, draw.front.d_cm, draw.front.s_cm, draw.front.e_cm, draw.front.s_rm);
-    }
+    Material m = back_face ? draw_back : draw_front;
     if (color_material_enabled()) {
         // Selects rather than ifs on the face and mode, which are uniform values: lavapipe
         // compiles a shader variant per draw for an if on uniform values alone (see
         // light_term). all() and any() do not short-circuit, and mix() with a bvec4 is an
         // OpSelect in the SPIR-V (glslang turns ?: into one only between plain variables).
-        bool tracks = back_face ? draw.color_material_back != 0u : draw.color_material_front != 0u;
-        uint mode = draw.color_material_mode;
+        bool tracks = back_face ? state.color_material_back != 0u : state.color_material_front != 0u;
+        uint mode = state.color_material_mode;
         bool ambient = any(bvec2(mode == CM_AMBIENT, mode == CM_AMBIENT_AND_DIFFUSE));
         bool diffuse = any(bvec2(mode == CM_DIFFUSE, mode == CM_AMBIENT_AND_DIFFUSE));
         m.e_cm = mix(m.e_cm, c, bvec4(all(bvec2(tracks, mode == CM_EMISSION))));
@@ -166,17 +163,6 @@ Material face_material(bool back_face, vec4 c) {
         m.s_cm = mix(m.s_cm, c, bvec4(all(bvec2(tracks, mode == CM_SPECULAR))));
     }
     return m;
-}
-
-// Section 2.11.3: n = (M^-1)^T n_object, then RESCALE_NORMAL, then NORMALIZE.
-// A zero normal stays zero instead of becoming NaN.
-vec3 eye_normal(vec3 n_object) {
-    vec3 n = mat3(draw.normal_matrix) * n_object;
-    n *= draw.rescale;
-    // A select on the uniform switch, not an if (see face_material).
-    float len = length(n);
-    vec3 unit_n = len > 0.0 ? n / len : vec3(0.0);
-    return draw.normalize != 0u ? unit_n : n;
 }
 
 #endif

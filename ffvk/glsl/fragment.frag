@@ -7,6 +7,16 @@ layout(location = 0) in vec4 eye_position;
 layout(location = 1) in vec3 normal_direction;
 layout(location = 2) in float normal_length;
 layout(location = 3) in vec4 color;
+// The draw's materials (fragment.vert).
+layout(location = 5) flat in vec4 front_a_cm;
+layout(location = 6) flat in vec4 front_d_cm;
+layout(location = 7) flat in vec4 front_s_cm;
+layout(location = 8) flat in vec4 front_e_cm;
+layout(location = 9) flat in vec4 back_a_cm;
+layout(location = 10) flat in vec4 back_d_cm;
+layout(location = 11) flat in vec4 back_s_cm;
+layout(location = 12) flat in vec4 back_e_cm;
+layout(location = 13) flat in vec2 s_rm;  // front, back
 
 layout(location = 0) out vec4 out_color;
 
@@ -20,6 +30,8 @@ layout(location = 4) in vec4 stq;
 #endif
 
 void main() {
+    draw_front = Material(front_a_cm, front_d_cm, front_s_cm, front_e_cm, s_rm.x);
+    draw_back = Material(back_a_cm, back_d_cm, back_s_cm, back_e_cm, s_rm.y);
     LitColor lit;
     if (!lighting_enabled()) {
         lit.c_pri = color;

@@ -5,7 +5,7 @@ layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
 #ifdef CURRENT_COLOR
 // No color array: GL's current color (glColor), the same for every vertex of the draw.
-#define in_color draw.current_color
+#define in_color in_current_color
 #else
 layout(location = 2) in vec4 in_color;
 #endif
@@ -14,6 +14,16 @@ layout(location = 0) out vec4 eye_position;
 layout(location = 1) out vec3 normal_direction;
 layout(location = 2) out float normal_length;
 layout(location = 3) out vec4 color;
+// The draw's materials, the same for every vertex of it (fragment.frag).
+layout(location = 5) flat out vec4 front_a_cm;
+layout(location = 6) flat out vec4 front_d_cm;
+layout(location = 7) flat out vec4 front_s_cm;
+layout(location = 8) flat out vec4 front_e_cm;
+layout(location = 9) flat out vec4 back_a_cm;
+layout(location = 10) flat out vec4 back_d_cm;
+layout(location = 11) flat out vec4 back_s_cm;
+layout(location = 12) flat out vec4 back_e_cm;
+layout(location = 13) flat out vec2 s_rm;  // front, back
 
 #ifdef TEXTURE
 // Texture coordinates, as in vertex.vert.
@@ -24,14 +34,23 @@ layout(location = 4) out vec4 stq;
 // A zero the compiler cannot prove zero (valid draws have no negative vertex index): the
 // uber-shader's switches pass through it (draw.glsl, uber_value).
 #define HIDDEN_ZERO uint(gl_VertexIndex < 0)
-#include "draw.glsl"
+#include "record.glsl"
 
 void main() {
-    eye_position = draw.modelview * vec4(in_position, 1.0);
-    gl_Position = draw.projection * eye_position;
+    eye_position = in_modelview * vec4(in_position, 1.0);
+    gl_Position = state.projection * eye_position;
 #ifdef TEXTURE
-    stq = draw.texture_matrix * vec4(in_texcoord, 0.0, 1.0);
+    stq = state.texture_matrix * vec4(in_texcoord, 0.0, 1.0);
 #endif
+    front_a_cm = in_front_a_cm;
+    front_d_cm = in_front_d_cm;
+    front_s_cm = in_front_s_cm;
+    front_e_cm = in_front_e_cm;
+    back_a_cm = in_back_a_cm;
+    back_d_cm = in_back_d_cm;
+    back_s_cm = in_back_s_cm;
+    back_e_cm = in_back_e_cm;
+    s_rm = vec2(in_normal_matrix_0.w, in_normal_matrix_1.w);
     vec3 n = eye_normal(in_normal);
     normal_length = length(n);
     normal_direction = normal_length > 0.0 ? n / normal_length : vec3(0.0);

@@ -92,8 +92,9 @@ float specular_phong_reflect(vec3 n, vec3 VP_pli, vec3 v, float s_rm) {
 // Light i's term of the sum over lights, added to c_pri and c_sec: vertex (or fragment) V,
 // eye space, normal n, material m, VPe the unit vector from V to the eye.
 void light_term(uint i, vec4 V, vec3 n, Material m, vec3 VPe, inout vec3 c_pri, inout vec3 c_sec) {
-    // Read in place (a copy of the std140 struct trips glslang 12, see draw.glsl).
-#define L draw.lights[i]
+    // Read in place: glslang 12 copies a whole std140 struct with an OpStore that SPIR-V
+    // validation rejects (block layout and function layout differ).
+#define L state.lights[i]
 
     vec3 VP_pli = unit_from_to(V, L.P_pli);
 
@@ -150,7 +151,7 @@ LitColor light_equation(vec4 V, vec3 n, Material m) {
     const vec4 Pe = vec4(0.0, 0.0, 0.0, 1.0);
     vec3 VPe = unit_from_to(V, Pe);
 
-    vec3 c_pri = m.e_cm.rgb + m.a_cm.rgb * draw.a_cs.rgb;
+    vec3 c_pri = m.e_cm.rgb + m.a_cm.rgb * state.a_cs.rgb;
     vec3 c_sec = vec3(0.0);
 
     // The light count: SPEC_LIGHT_COUNT when the pipeline is specialized, else the uniform
@@ -163,7 +164,7 @@ LitColor light_equation(vec4 V, vec3 n, Material m) {
             light_term(uint(i), V, n, m, VPe, c_pri, c_sec);
         }
     } else {
-        for (uint i = 0u; i < uber_value(draw.light_count); i++) {
+        for (uint i = 0u; i < uber_value(state.light_count); i++) {
             light_term(i, V, n, m, VPe, c_pri, c_sec);
         }
     }

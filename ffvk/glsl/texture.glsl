@@ -8,7 +8,7 @@
 #include "draw.glsl"
 
 // The bound texture: GL_TEXTURE_2D's image and its parameters (a VkSampler made from
-// glTexParameter's values). Set 1 is moved to the set after the Draw block's at pipeline
+// glTexParameter's values). Set 1 is moved to the set after the State block's at pipeline
 // creation.
 layout(set = 1, binding = 0) uniform sampler2D texture_2d;
 
@@ -20,13 +20,13 @@ layout(set = 1, binding = 0) uniform sampler2D texture_2d;
 #define TEV_ADD 4u
 
 uint tex_env_mode() {
-    return SPEC_TEX_ENV < 0 ? uber_value(draw.tex_env_mode) : uint(SPEC_TEX_ENV);
+    return SPEC_TEX_ENV < 0 ? uber_value(state.tex_env_mode) : uint(SPEC_TEX_ENV);
 }
 
 // Table 3.22 for an RGBA texture: fragment color C_f (the primary color), texel C_s,
 // environment color c_c.
 vec4 texture_environment(vec4 C_f, vec4 C_s) {
-    vec3 c_c = draw.c_c.rgb;
+    vec3 c_c = state.c_c.rgb;
     uint mode = tex_env_mode();
     if (mode == TEV_REPLACE) return C_s;
     if (mode == TEV_DECAL) return vec4(mix(C_f.rgb, C_s.rgb, C_s.a), C_f.a);

@@ -9,7 +9,7 @@ layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
 #ifdef CURRENT_COLOR
 // No color array: GL's current color (glColor), the same for every vertex of the draw.
-#define in_color draw.current_color
+#define in_color in_current_color
 #else
 layout(location = 2) in vec4 in_color;
 #endif
@@ -36,12 +36,13 @@ layout(location = 4) out vec4 stq;
 // uber-shader's switches pass through it (draw.glsl, uber_value).
 #define HIDDEN_ZERO uint(gl_VertexIndex < 0)
 #include "lighting.glsl"
+#include "record.glsl"
 
 void main() {
-    vec4 V = draw.modelview * vec4(in_position, 1.0);
-    gl_Position = draw.projection * V;
+    vec4 V = in_modelview * vec4(in_position, 1.0);
+    gl_Position = state.projection * V;
 #ifdef TEXTURE
-    stq = draw.texture_matrix * vec4(in_texcoord, 0.0, 1.0);
+    stq = state.texture_matrix * vec4(in_texcoord, 0.0, 1.0);
 #endif
 
     if (!lighting_enabled()) {
@@ -52,6 +53,7 @@ void main() {
         back_sec = front_sec;
         return;
     }
+    load_record();
     vec3 n = eye_normal(in_normal);
     LitColor front = light_equation(V, n, face_material(false, in_color));
     front_pri = front.c_pri;

@@ -234,6 +234,21 @@ pub enum LightingError {
         /// `maxBoundDescriptorSets`.
         max: u32,
     },
+    /// The device cannot take the caller's vertex bindings and ffvk's per-draw record beside
+    /// them.
+    #[error(
+        "the vertex layout needs {needed} vertex {what} (the caller's and ffvk's per-draw record's), but the device's {limit} is {max}: expected a device with more, or fewer bindings"
+    )]
+    VertexInputLimit {
+        /// `bindings` or `attribute locations`.
+        what: &'static str,
+        /// How many are needed.
+        needed: u32,
+        /// The limit's name.
+        limit: &'static str,
+        /// The device's limit.
+        max: u32,
+    },
     /// A textured draw with a vertex layout that has no texture coordinates.
     #[error("the draw is textured, but the vertex layout has no texture coordinates: expected VertexInput::texcoord")]
     NoTexcoord,

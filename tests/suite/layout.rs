@@ -1,10 +1,13 @@
-//! The std140 layout of the `Draw` block, read from the SPIR-V glslang compiled, must match
-//! the Rust structs that fill it.
+//! The std140 layout of the `State` block and the locations of the draw record's attributes,
+//! read from the SPIR-V glslang compiled, must match the Rust structs that fill them.
 
 use std::collections::HashMap;
 use std::mem::{offset_of, size_of};
 
-use ffvk::gpu::layout::{DrawBlock, GpuLight, GpuMaterial, SpecConstant, SpecKey, SPEC_CONSTANT_COUNT};
+use ffvk::gpu::layout::{
+    DrawRecord, GpuLight, SpecConstant, SpecKey, StateBlock, RECORD_FIRST_LOCATION, RECORD_LOCATIONS,
+    SPEC_CONSTANT_COUNT,
+};
 
 const OP_NAME: u32 = 5;
 const OP_MEMBER_NAME: u32 = 6;
@@ -16,6 +19,7 @@ const OP_MEMBER_DECORATE: u32 = 72;
 const DECORATION_SPEC_ID: u32 = 1;
 const DECORATION_ARRAY_STRIDE: u32 = 6;
 const DECORATION_OFFSET: u32 = 35;
+const DECORATION_LOCATION: u32 = 30;
 
 /// What a test needs of a module: struct names, member names and offsets, array strides.
 #[derive(Default)]
@@ -30,6 +34,8 @@ struct Reflection {
     spec_ids: HashMap<u32, u32>,
     /// OpSpecConstant default values (32-bit), by result id.
     spec_defaults: HashMap<u32, u32>,
+    /// Location decorations: result id to location.
+    locations: HashMap<u32, u32>,
 }
 
 fn string(words: &[u32]) -> String {
@@ -64,6 +70,9 @@ fn reflect(spirv: &[u8]) -> Reflection {
             }
             OP_DECORATE if ins[1] == DECORATION_ARRAY_STRIDE => {
                 r.strides.insert(ins[0], ins[2]);
+            }
+            OP_DECORATE if ins[1] == DECORATION_LOCATION => {
+                r.locations.insert(ins[0], ins[2]);
             }
             OP_DECORATE if ins[1] == DECORATION_SPEC_ID => {
                 r.spec_ids.insert(ins[0], ins[2]);
@@ -125,32 +134,22 @@ macro_rules! rust_offsets {
 }
 
 #[test]
-fn draw_block_matches_the_glsl_in_every_stage() {
+fn the_state_block_matches_the_glsl_in_every_stage() {
     for (stage, spirv) in stages() {
         let r = reflect(spirv);
-        let draw = r.struct_id("Draw");
-        let want = rust_offsets!(DrawBlock: modelview, projection, normal_matrix, front, back, a_cs,
-            current_color, light_count, lighting, v_bs, t_bs, separate_specular, color_material,
-            color_material_front, color_material_back, color_material_mode, normalize, rescale, specular_model, lights,
-            texture_matrix, c_c, tex_env_mode);
-        assert_eq!(r.members(draw), want, "{stage}: Draw block offsets");
-
-        let material = r.struct_id("Material");
-        let want = rust_offsets!(GpuMaterial: a_cm, d_cm, s_cm, e_cm, s_rm);
-        assert_eq!(r.members(material), want, "{stage}: Material offsets");
+        let block = r.struct_id("State");
+        let want = rust_offsets!(StateBlock: projection, texture_matrix, a_cs, c_c, light_count, lighting,
+            v_bs, t_bs, separate_specular, color_material, color_material_front, color_material_back,
+            color_material_mode, normalize, specular_model, tex_env_mode, lights);
+        assert_eq!(r.members(block), want, "{stage}: State block offsets");
 
         let light = r.struct_id("Light");
         let want = rust_offsets!(GpuLight: a_cli, d_cli, s_cli, P_pli, s_dli, s_rli, c_rli, cos_c_rli, k0, k1, k2, spot_edge, cos_inner, falloff, range);
         assert_eq!(r.members(light), want, "{stage}: Light offsets");
 
-        // The lights array: its stride is the Rust struct's size.
-        let members = &r.struct_members[&draw];
-        let lights_at = r
-            .members(draw)
-            .iter()
-            .position(|(name, _)| name == "lights")
-            .unwrap();
-        let lights_type = members[lights_at];
+        // The lights array: its stride is the Rust struct's size, and it ends the block.
+        let members = &r.struct_members[&block];
+        let lights_type = *members.last().unwrap();
         assert_eq!(
             r.array_element[&lights_type], light,
             "{stage}: lights is an array of Light"
@@ -161,9 +160,55 @@ fn draw_block_matches_the_glsl_in_every_stage() {
             "{stage}: Light array stride"
         );
         assert_eq!(
-            offset_of!(DrawBlock, lights) + ffvk::gl::state::MAX_LIGHTS * size_of::<GpuLight>(),
-            offset_of!(DrawBlock, texture_matrix),
-            "the texture state follows the lights"
+            offset_of!(StateBlock, lights) + ffvk::gl::state::MAX_LIGHTS * size_of::<GpuLight>(),
+            size_of::<StateBlock>(),
+            "the lights end the block"
+        );
+    }
+}
+
+#[test]
+fn the_draw_records_attributes_sit_at_the_locations_the_vertex_stages_read() {
+    let at = |offset: usize| RECORD_FIRST_LOCATION + (offset / 16) as u32;
+    let nm = offset_of!(DrawRecord, normal_matrix);
+    let (front, back) = (offset_of!(DrawRecord, front), offset_of!(DrawRecord, back));
+    let want = [
+        ("in_modelview", at(offset_of!(DrawRecord, modelview))),
+        ("in_normal_matrix_0", at(nm)),
+        ("in_normal_matrix_1", at(nm + 16)),
+        ("in_normal_matrix_2", at(nm + 32)),
+        ("in_front_a_cm", at(front)),
+        ("in_front_d_cm", at(front + 16)),
+        ("in_front_s_cm", at(front + 32)),
+        ("in_front_e_cm", at(front + 48)),
+        ("in_back_a_cm", at(back)),
+        ("in_back_d_cm", at(back + 16)),
+        ("in_back_s_cm", at(back + 32)),
+        ("in_back_e_cm", at(back + 48)),
+        ("in_current_color", at(offset_of!(DrawRecord, current_color))),
+    ];
+    assert_eq!(size_of::<DrawRecord>(), 16 * RECORD_LOCATIONS as usize);
+    for (stage, spirv) in stages().into_iter().filter(|(s, _)| s.ends_with(".vert")) {
+        let r = reflect(spirv);
+        let mut seen = 0;
+        for (name, location) in want {
+            let found: Vec<u32> = r
+                .names
+                .iter()
+                .filter(|(_, n)| n.as_str() == name)
+                .filter_map(|(id, _)| r.locations.get(id).copied())
+                .collect();
+            // glslang keeps only the inputs a stage reads (the current color is read by the
+            // *_current_color variants alone); each one it keeps is where the record puts it.
+            assert!(
+                found.iter().all(|&l| l == location),
+                "{stage}: {name} at {found:?}, expected {location}"
+            );
+            seen += found.len();
+        }
+        assert!(
+            seen >= 12,
+            "{stage}: only {seen} of the record's attributes found"
         );
     }
 }
@@ -229,12 +274,14 @@ fn specialization_constant_ids_match_the_rust_side() {
 }
 
 #[test]
-fn the_readme_states_the_per_draw_block_size_and_the_constant_ids_the_code_has() {
+fn the_readme_states_the_block_and_record_sizes_and_the_constant_ids_the_code_has() {
     let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
-    let size = size_of::<DrawBlock>();
+    let size = size_of::<StateBlock>();
     let with_comma = format!("{},{:03}", size / 1000, size % 1000);
-    let block = format!("one {with_comma}-byte block of GL state per draw");
+    let block = format!("one {with_comma}-byte block of GL state per change of state");
     assert!(readme.contains(&block), "README.md should say \"{block}\"");
+    let record = format!("one {}-byte record per draw", size_of::<DrawRecord>());
+    assert!(readme.contains(&record), "README.md should say \"{record}\"");
     let ids = format!("constant_id 0-{}", SPEC_CONSTANT_COUNT - 1);
     assert!(readme.contains(&ids), "README.md should say \"{ids}\"");
 }

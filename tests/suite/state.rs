@@ -256,8 +256,8 @@ fn enabled_lights_pack_in_index_order() {
             .unwrap();
     }
     let block = DrawBlock::new(&gl.lighting, Mat4::IDENTITY, Mat4::IDENTITY).unwrap();
-    assert_eq!(block.light_count, 3);
-    let order: Vec<f32> = block.lights[..3].iter().map(|l| l.a_cli[0]).collect();
+    assert_eq!(block.state.light_count, 3);
+    let order: Vec<f32> = block.state.lights[..3].iter().map(|l| l.a_cli[0]).collect();
     assert_eq!(order, [1.0, 5.0, 9.0]);
 }
 

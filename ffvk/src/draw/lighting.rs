@@ -73,19 +73,32 @@ use super::pipeline::{
     PipelineConfig, Pipelines, RasterState, Specialize, Target, VertexInput, MAX_AUTO_VARIANTS,
 };
 use super::record::{record, record_in_run, Bound, Geometry, RunState};
-use super::ring::UniformRing;
+use super::ring::{Pushed, Ring, RingUse};
 use super::texture::TextureBinding;
 use crate::error::{LightingError, Result};
-use crate::gl::state::LightingState;
-use crate::gpu::layout::{DrawBlock, LightCache, SpecKey};
+use crate::gl::state::{LightingMode, LightingState};
+use crate::gpu::layout::{DrawRecord, SpecKey, StateBlock, StateKey};
 use crate::vk::Device;
 
-/// A draw's pipeline and uniform block, ready to record ([`Lighting::stage`]).
+/// A draw's pipeline, state block and record, ready to record ([`Lighting::stage`]).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Staged {
     pipeline: vk::Pipeline,
-    set: vk::DescriptorSet,
-    uniform_offset: u32,
+    /// The state block's set and dynamic offset.
+    state: (vk::DescriptorSet, u32),
+    /// The record's buffer and index.
+    record: (vk::Buffer, u32),
+}
+
+/// The state block the last staged draw used, and the pipelines found for it: the next draw
+/// with an equal [`StateKey`] in the same slot reuses both, so that a draw which changes only
+/// its own values (materials, color, modelview) writes only its record.
+struct LastState {
+    slot: u32,
+    key: StateKey,
+    block: Pushed,
+    /// (mode, raster state, textured) and the pipeline such a draw of this state uses.
+    pipelines: Vec<(LightingMode, RasterState, bool, vk::Pipeline)>,
 }
 
 /// How to make a [`Lighting`].
@@ -205,12 +218,14 @@ const _: () = {
 /// recorded into the caller's command buffers (see the module docs for what it owns, what
 /// it records and when a frame slot may be reused).
 pub struct Lighting {
-    // Field order is drop order: the uniform memory and pipelines before the device.
-    ring: UniformRing,
+    // Field order is drop order: the per-frame memory and pipelines before the device.
+    /// The state blocks of each frame slot.
+    states: Ring,
+    /// The draw records of each frame slot.
+    records: Ring,
     pipelines: Pipelines,
     specialize: Specialize,
-    /// The last draw's lights, checked and packed.
-    lights: LightCache,
+    last: Option<LastState>,
     device: Arc<Device>,
 }
 
@@ -235,12 +250,23 @@ impl Lighting {
                 .with_set_index(options.set_index)
                 .with_cache(options.pipeline_cache),
         )?;
-        let ring = UniformRing::new(device, options.frames_in_flight)?;
+        let slots = options.frames_in_flight;
         Ok(Lighting {
-            ring,
+            states: Ring::new(
+                device,
+                slots,
+                RingUse::Uniforms,
+                std::mem::size_of::<StateBlock>(),
+            )?,
+            records: Ring::new(
+                device,
+                slots,
+                RingUse::InstanceData,
+                std::mem::size_of::<DrawRecord>(),
+            )?,
             pipelines,
             specialize: options.specialize,
-            lights: LightCache::default(),
+            last: None,
             device: device.clone(),
         })
     }
@@ -254,12 +280,17 @@ impl Lighting {
     /// reused. Call it only when no submitted work still uses that slot (its fence has
     /// signalled).
     pub fn begin_frame(&mut self, slot: u32) -> Result<()> {
-        self.ring.reset(slot)
+        self.states.reset(slot)?;
+        self.records.reset(slot)?;
+        if self.last.as_ref().is_some_and(|last| last.slot == slot) {
+            self.last = None;
+        }
+        Ok(())
     }
 
     /// How many frame slots there are.
     pub fn frames_in_flight(&self) -> u32 {
-        self.ring.slots()
+        self.states.slots()
     }
 
     /// Creates the pipeline a draw of `state` with `raster`, textured or not, would use, so
@@ -325,13 +356,53 @@ impl Lighting {
             }
             .into());
         }
-        let block = DrawBlock::new_cached(draw.state, draw.modelview, draw.projection, &mut self.lights)?;
-        let pipeline = self.pipeline_for(draw.state, draw.raster, Self::textured(draw))?;
-        let (set, uniform_offset) = self.ring.push(slot, &block, self.pipelines.set_layout())?;
+        let record = DrawRecord::new(draw.state, draw.modelview)?;
+        let key = StateKey::new(draw.state, draw.projection);
+        let same_state = self
+            .last
+            .as_ref()
+            .is_some_and(|last| last.slot == slot && last.key == key);
+        if !same_state {
+            let block = StateBlock::new(draw.state, draw.projection)?;
+            let block = self
+                .states
+                .push(slot, bytemuck::bytes_of(&block), self.pipelines.set_layout())?;
+            self.last = Some(LastState {
+                slot,
+                key,
+                block,
+                pipelines: Vec::new(),
+            });
+        }
+        let (mode, raster, textured) = (draw.state.mode, draw.raster, Self::textured(draw));
+        let found = self.last.as_ref().and_then(|last| {
+            last.pipelines
+                .iter()
+                .find(|p| (p.0, p.1, p.2) == (mode, raster, textured))
+                .map(|p| p.3)
+        });
+        let pipeline = match found {
+            Some(pipeline) => pipeline,
+            None => {
+                let pipeline = self.pipeline_for(draw.state, raster, textured)?;
+                if let Some(last) = &mut self.last {
+                    last.pipelines.push((mode, raster, textured, pipeline));
+                }
+                pipeline
+            }
+        };
+        let block = self
+            .last
+            .as_ref()
+            .map(|last| last.block)
+            .ok_or(crate::Error::Internal("no state block after one was staged"))?;
+        let record = self
+            .records
+            .push(slot, bytemuck::bytes_of(&record), self.pipelines.set_layout())?;
         Ok(Staged {
             pipeline,
-            set,
-            uniform_offset,
+            state: (block.set, block.offset),
+            record: (record.buffer, record.index),
         })
     }
 
@@ -376,12 +447,36 @@ impl Lighting {
         draws: &[LitDraw],
     ) {
         let mut run = RunState::default();
-        for (staged, draw) in staged.iter().zip(draws) {
-            let bound = self.bound(staged, draw);
+        let mut at = 0;
+        while let (Some(first), Some(draw)) = (staged.get(at), draws.get(at)) {
+            // Consecutive draws of the same geometry with everything bound alike and their
+            // records one after the other become instances of one draw command.
+            let same = |i: usize| match (staged.get(i - 1), staged.get(i), draws.get(i - 1), draws.get(i)) {
+                (Some(a), Some(b), Some(da), Some(db)) => {
+                    (a.pipeline, a.state, a.record.0) == (b.pipeline, b.state, b.record.0)
+                        && a.record.1.checked_add(1) == Some(b.record.1)
+                        && da.geometry == db.geometry
+                        && da.vertex_buffers == db.vertex_buffers
+                        && self.texture_set(da) == self.texture_set(db)
+                }
+                _ => false,
+            };
+            let count = (at + 1..).take_while(|&i| same(i)).count() + 1;
+            let mut bound = self.bound(first, draw);
+            bound.draws = count as u32;
             // SAFETY: the caller's contract above; `run` holds what this loop bound in `cmd`,
-            // and nothing else is recorded between its draws.
+            // and nothing else is recorded between its draws; the merged draws' records are
+            // consecutive in one buffer.
             unsafe { record_in_run(&self.device.raw, cmd, &bound, &draw.geometry, &mut run) };
+            at += count;
         }
+    }
+
+    /// The texture set `draw` binds, if it samples one.
+    fn texture_set(&self, draw: &LitDraw) -> Option<vk::DescriptorSet> {
+        draw.texture
+            .filter(|_| Self::textured(draw))
+            .map(TextureBinding::set)
     }
 
     /// The second half of [`Lighting::draw`]: binds what `staged` found and draws.
@@ -404,14 +499,15 @@ impl Lighting {
             pipeline: staged.pipeline,
             layout: self.pipelines.layout(),
             set_index: config.set_index,
-            set: staged.set,
-            uniform_offset: staged.uniform_offset,
-            texture_set: draw
-                .texture
-                .filter(|_| Self::textured(draw))
-                .map(TextureBinding::set),
+            set: staged.state.0,
+            uniform_offset: staged.state.1,
+            texture_set: self.texture_set(draw),
             bindings: &config.vertex_input.bindings,
             vertex_buffers: draw.vertex_buffers,
+            record_binding: config.vertex_input.record_binding(),
+            record_buffer: staged.record.0,
+            first_record: staged.record.1,
+            draws: 1,
         }
     }
 

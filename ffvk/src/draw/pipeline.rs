@@ -9,7 +9,9 @@ use ash::vk;
 
 use crate::error::{Error, LightingError, Result};
 use crate::gl::state::LightingMode;
-use crate::gpu::layout::{SpecConstant, SpecKey, SPEC_CONSTANT_COUNT};
+use crate::gpu::layout::{
+    DrawRecord, SpecConstant, SpecKey, RECORD_FIRST_LOCATION, RECORD_LOCATIONS, SPEC_CONSTANT_COUNT,
+};
 use crate::gpu::shaders;
 use crate::mesh::Vertex;
 use crate::vk::objects::{DescriptorSetLayout, Pipeline, PipelineCache, PipelineLayout, ShaderModule};
@@ -342,8 +344,54 @@ impl VertexInput {
         Ok(())
     }
 
+    /// The binding ffvk reads its per-draw records from: the lowest binding number the
+    /// caller's layout leaves free.
+    pub fn record_binding(&self) -> u32 {
+        (0..)
+            .find(|n| self.bindings.iter().all(|b| b.binding != *n))
+            .unwrap_or(0)
+    }
+
+    /// The binding descriptions the pipelines use: the caller's and the per-draw record's
+    /// (per instance: a draw's `firstInstance` picks its record).
+    fn binding_descriptions(&self) -> Vec<vk::VertexInputBindingDescription> {
+        let mut out = self.bindings.clone();
+        out.push(vk::VertexInputBindingDescription {
+            binding: self.record_binding(),
+            stride: std::mem::size_of::<DrawRecord>() as u32,
+            input_rate: vk::VertexInputRate::INSTANCE,
+        });
+        out
+    }
+
+    /// Checks that `device` can take this layout with the record beside it.
+    fn check_limits(&self, device: &Device) -> Result<()> {
+        let limits = &device.limits;
+        let bindings = self.record_binding() + 1;
+        if bindings > limits.max_vertex_input_bindings {
+            return Err(LightingError::VertexInputLimit {
+                what: "bindings",
+                needed: bindings,
+                limit: "maxVertexInputBindings",
+                max: limits.max_vertex_input_bindings,
+            }
+            .into());
+        }
+        let locations = RECORD_FIRST_LOCATION + RECORD_LOCATIONS;
+        if locations > limits.max_vertex_input_attributes {
+            return Err(LightingError::VertexInputLimit {
+                what: "attribute locations",
+                needed: locations,
+                limit: "maxVertexInputAttributes",
+                max: limits.max_vertex_input_attributes,
+            }
+            .into());
+        }
+        Ok(())
+    }
+
     /// The attribute descriptions the pipelines use: locations 0, 1, (with a color array) 2
-    /// and (textured) 3.
+    /// and (textured) 3, then the record's, 4 to 19.
     fn attributes(&self, textured: bool) -> Vec<vk::VertexInputAttributeDescription> {
         let described = |location, a: Attribute| vk::VertexInputAttributeDescription {
             location,
@@ -358,6 +406,15 @@ impl VertexInput {
         if let (true, Some(texcoord)) = (textured, self.texcoord) {
             out.push(described(3, texcoord));
         }
+        let binding = self.record_binding();
+        out.extend(
+            (0..RECORD_LOCATIONS).map(|i| vk::VertexInputAttributeDescription {
+                location: RECORD_FIRST_LOCATION + i,
+                binding,
+                format: vk::Format::R32G32B32A32_SFLOAT,
+                offset: 16 * i,
+            }),
+        );
         out
     }
 }
@@ -556,6 +613,7 @@ impl Pipelines {
     /// The layouts and a cache; pipelines are created by [`Pipelines::get`].
     pub fn new(device: &Arc<Device>, config: PipelineConfig) -> Result<Self> {
         config.vertex_input.validate()?;
+        config.vertex_input.check_limits(device)?;
         let bindings = [vk::DescriptorSetLayoutBinding::default()
             .binding(0)
             .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC)
@@ -702,8 +760,9 @@ impl Pipelines {
             }
         }
         let attributes = config.vertex_input.attributes(k.textured);
+        let bindings = config.vertex_input.binding_descriptions();
         let vertex_input = vk::PipelineVertexInputStateCreateInfo::default()
-            .vertex_binding_descriptions(&config.vertex_input.bindings)
+            .vertex_binding_descriptions(&bindings)
             .vertex_attribute_descriptions(&attributes);
         let input_assembly = vk::PipelineInputAssemblyStateCreateInfo::default()
             .topology(vk::PrimitiveTopology::TRIANGLE_LIST);

@@ -112,19 +112,28 @@ pub(crate) struct Bound<'a> {
     pub pipeline: vk::Pipeline,
     /// The pipeline layout it was created with.
     pub layout: vk::PipelineLayout,
-    /// The index of the uniform block's set in that layout.
+    /// The index of the state block's set in that layout.
     pub set_index: u32,
-    /// The set (binding 0: the uniform block, `UNIFORM_BUFFER_DYNAMIC`).
+    /// The set (binding 0: the state block, `UNIFORM_BUFFER_DYNAMIC`).
     pub set: vk::DescriptorSet,
-    /// Offset of this draw's block, a multiple of `minUniformBufferOffsetAlignment`.
+    /// Offset of the draw's state block, a multiple of `minUniformBufferOffsetAlignment`.
     pub uniform_offset: u32,
     /// The texture's set (binding 0: a combined image sampler), bound at `set_index + 1`,
     /// for a textured draw.
     pub texture_set: Option<vk::DescriptorSet>,
-    /// The pipeline's vertex binding numbers.
+    /// The pipeline's vertex binding numbers (the caller's; the record's is `record_binding`).
     pub bindings: &'a [vk::VertexInputBindingDescription],
     /// One (buffer, byte offset) per entry of `bindings`.
     pub vertex_buffers: &'a [(vk::Buffer, u64)],
+    /// The binding of the per-draw records.
+    pub record_binding: u32,
+    /// The buffer holding the draw's record, bound at offset 0.
+    pub record_buffer: vk::Buffer,
+    /// The index of the draw's record in it: the draw's `firstInstance`.
+    pub first_record: u32,
+    /// How many draws of the same geometry this one command draws, their records consecutive
+    /// from `first_record`: instances of one draw.
+    pub draws: u32,
 }
 
 /// What a run of draws last bound: a draw in the same run binds only what differs, since no
@@ -134,6 +143,7 @@ pub(crate) struct Bound<'a> {
 #[derive(Debug, Default)]
 pub(crate) struct RunState {
     pipeline: Option<vk::Pipeline>,
+    state_block: Option<(vk::DescriptorSet, u32)>,
     texture_set: Option<vk::DescriptorSet>,
     vertex_buffers: Vec<(u32, vk::Buffer, u64)>,
     index_buffer: Option<(vk::Buffer, u64, vk::IndexType)>,
@@ -154,16 +164,16 @@ pub(crate) unsafe fn record(
     unsafe { record_in_run(device, cmd, bound, geometry, &mut RunState::default()) }
 }
 
-/// Binds what of `bound` differs from what `run` says is bound (the block's set always: its
-/// dynamic offset is the draw's own) and draws `geometry`.
+/// Binds what of `bound` differs from what `run` says is bound and draws `geometry`, once
+/// per draw of `bound` (as instances, each reading its own record).
 ///
 /// # Safety
 ///
 /// `cmd` is a command buffer of `device` in the recording state, inside a dynamic rendering
 /// pass whose formats match the pipeline's, with viewport and scissor set; every handle
 /// belongs to `device` and stays alive until the command buffer has finished executing; the
-/// buffers hold what the geometry reads; what `run` records as bound is bound in `cmd` (no
-/// command since the run's last draw changed it).
+/// buffers hold what the geometry reads and the records `bound` names; what `run` records as
+/// bound is bound in `cmd` (no command since the run's last draw changed it).
 pub(crate) unsafe fn record_in_run(
     device: &ash::Device,
     cmd: vk::CommandBuffer,
@@ -177,17 +187,21 @@ pub(crate) unsafe fn record_in_run(
         unsafe { device.cmd_bind_pipeline(cmd, vk::PipelineBindPoint::GRAPHICS, bound.pipeline) };
         run.pipeline = Some(bound.pipeline);
     }
-    // SAFETY: as above; the set is at its index in the layout, with one dynamic offset.
-    unsafe {
-        device.cmd_bind_descriptor_sets(
-            cmd,
-            vk::PipelineBindPoint::GRAPHICS,
-            bound.layout,
-            bound.set_index,
-            &[bound.set],
-            &[bound.uniform_offset],
-        )
-    };
+    let state_block = (bound.set, bound.uniform_offset);
+    if run.state_block != Some(state_block) {
+        run.state_block = Some(state_block);
+        // SAFETY: as above; the set is at its index in the layout, with one dynamic offset.
+        unsafe {
+            device.cmd_bind_descriptor_sets(
+                cmd,
+                vk::PipelineBindPoint::GRAPHICS,
+                bound.layout,
+                bound.set_index,
+                &[bound.set],
+                &[bound.uniform_offset],
+            )
+        };
+    }
     if let Some(set) = bound.texture_set.filter(|&set| run.texture_set != Some(set)) {
         run.texture_set = Some(set);
         // SAFETY: as above; the texture's set is the one after the block's in the layout.
@@ -202,16 +216,23 @@ pub(crate) unsafe fn record_in_run(
             )
         };
     }
-    for (binding, &(buffer, offset)) in bound.bindings.iter().zip(bound.vertex_buffers) {
-        let now = (binding.binding, buffer, offset);
+    let caller = bound
+        .bindings
+        .iter()
+        .map(|b| b.binding)
+        .zip(bound.vertex_buffers.iter().copied());
+    let record = std::iter::once((bound.record_binding, (bound.record_buffer, 0)));
+    for (binding, (buffer, offset)) in caller.chain(record) {
+        let now = (binding, buffer, offset);
         if run.vertex_buffers.contains(&now) {
             continue;
         }
-        run.vertex_buffers.retain(|&(b, ..)| b != binding.binding);
+        run.vertex_buffers.retain(|&(b, ..)| b != binding);
         run.vertex_buffers.push(now);
         // SAFETY: as above; one buffer per binding of the pipeline.
-        unsafe { device.cmd_bind_vertex_buffers(cmd, binding.binding, &[buffer], &[offset]) };
+        unsafe { device.cmd_bind_vertex_buffers(cmd, binding, &[buffer], &[offset]) };
     }
+    let (instances, first_instance) = (bound.draws, bound.first_record);
     match *geometry {
         Geometry::Indexed {
             buffer,
@@ -226,15 +247,25 @@ pub(crate) unsafe fn record_in_run(
                 // SAFETY: as above.
                 unsafe { device.cmd_bind_index_buffer(cmd, buffer, offset, index_type) };
             }
-            // SAFETY: as above; the caller's indices address its vertices.
-            unsafe { device.cmd_draw_indexed(cmd, index_count, 1, first_index, vertex_offset, 0) };
+            // SAFETY: as above; the caller's indices address its vertices, and the records
+            // from first_instance on are the draws'.
+            unsafe {
+                device.cmd_draw_indexed(
+                    cmd,
+                    index_count,
+                    instances,
+                    first_index,
+                    vertex_offset,
+                    first_instance,
+                )
+            };
         }
         Geometry::Vertices {
             first_vertex,
             vertex_count,
         } => {
             // SAFETY: as above.
-            unsafe { device.cmd_draw(cmd, vertex_count, 1, first_vertex, 0) };
+            unsafe { device.cmd_draw(cmd, vertex_count, instances, first_vertex, first_instance) };
         }
     }
 }

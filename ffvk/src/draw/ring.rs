@@ -1,58 +1,97 @@
-//! The per-draw GL state in flight: for each frame slot, host-visible uniform memory (the
-//! device-local memory the host can map, where the device has it) holding one [`DrawBlock`]
-//! per draw recorded for that slot, each seen through a dynamic offset.
+//! Per-frame memory of the draws in flight: for each frame slot, host-visible memory (the
+//! device-local memory the host can map, where the device has it) holding the [`StateBlock`]s
+//! (a uniform buffer seen through a dynamic offset) or the [`DrawRecord`]s (a vertex buffer
+//! read per instance) written while the slot's draws were recorded.
 //!
 //! A slot's memory is written while its draws are recorded and read when the GPU runs them,
-//! so a slot may be reset ([`UniformRing::reset`]) only when the caller's fence for the frame
-//! that last used it has signalled. A slot grows by chunks: a full chunk is never moved
-//! (recorded draws still point at it); a new, twice as large one is added, and the next reset
-//! keeps only the largest.
+//! so a slot may be reset ([`Ring::reset`]) only when the caller's fence for the frame that
+//! last used it has signalled. A slot grows by chunks: a full chunk is never moved (recorded
+//! draws still point at it); a new, twice as large one is added, and the next reset keeps
+//! only the largest.
+//!
+//! [`StateBlock`]: crate::gpu::layout::StateBlock
+//! [`DrawRecord`]: crate::gpu::layout::DrawRecord
 
 use std::sync::Arc;
 
 use ash::vk;
 
 use crate::error::{Error, LightingError, Result};
-use crate::gpu::layout::DrawBlock;
 use crate::vk::objects::{DescriptorPool, DescriptorSetLayout};
 use crate::vk::{Buffer, Device, MemoryUse};
 
-/// Draws the first chunk of a slot holds.
-const FIRST_CHUNK_DRAWS: u64 = 64;
+/// What a ring holds, and so how its chunks are seen by the shaders.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum RingUse {
+    /// Uniform blocks, each chunk with a descriptor set (`UNIFORM_BUFFER_DYNAMIC`, binding 0)
+    /// whose dynamic offset picks the block.
+    Uniforms,
+    /// Vertex data read per instance: a chunk is bound as a vertex buffer at offset 0 and a
+    /// draw's `firstInstance` picks its element.
+    InstanceData,
+}
 
-/// One buffer of blocks and the descriptor set that points at it.
+/// Where an element pushed into a ring lies.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Pushed {
+    /// Its chunk's buffer.
+    pub buffer: vk::Buffer,
+    /// Its chunk's descriptor set ([`RingUse::Uniforms`]), else null.
+    pub set: vk::DescriptorSet,
+    /// Its index in the chunk: the byte offset is `index` times the ring's stride.
+    pub index: u32,
+    /// Its byte offset in the chunk (for a uniform block, the dynamic offset).
+    pub offset: u32,
+}
+
+/// Elements the first chunk of a slot holds.
+const FIRST_CHUNK: u64 = 64;
+
+/// One buffer of elements and, for uniform blocks, the descriptor set that points at it.
 struct Chunk {
     // Field order is drop order: the set's pool before the buffer it points at.
-    descriptors: DescriptorPool,
+    descriptors: Option<DescriptorPool>,
     buffer: Buffer,
     capacity: u64,
 }
 
-/// The chunks of one frame slot and how many blocks its last chunk holds.
+/// The chunks of one frame slot and how many elements its last chunk holds.
 #[derive(Default)]
 struct Slot {
     chunks: Vec<Chunk>,
     used: u64,
 }
 
-/// Uniform memory for the draws of `slots` frames in flight.
-pub(crate) struct UniformRing {
+/// Memory for elements of one size, for the draws of `slots` frames in flight.
+pub(crate) struct Ring {
     slots: Vec<Slot>,
-    /// Bytes between blocks: the block size rounded up to the offset alignment.
+    use_: RingUse,
+    /// The element's size in bytes.
+    size: u64,
+    /// Bytes between elements: the size, rounded up to the offset alignment for uniforms.
     stride: u64,
     device: Arc<Device>,
 }
 
-impl UniformRing {
-    /// An empty ring of `slots` frame slots (memory comes with the first draws).
-    pub(crate) fn new(device: &Arc<Device>, slots: u32) -> Result<Self> {
+impl Ring {
+    /// An empty ring of `slots` frame slots for elements of `size` bytes (memory comes with
+    /// the first draws).
+    pub(crate) fn new(device: &Arc<Device>, slots: u32, use_: RingUse, size: usize) -> Result<Self> {
         if slots == 0 {
             return Err(LightingError::NoFrameSlots.into());
         }
-        let align = device.limits.min_uniform_buffer_offset_alignment.max(16);
-        let stride = (std::mem::size_of::<DrawBlock>() as u64).div_ceil(align) * align;
-        Ok(UniformRing {
+        let size = size as u64;
+        let stride = match use_ {
+            RingUse::Uniforms => {
+                let align = device.limits.min_uniform_buffer_offset_alignment.max(16);
+                size.div_ceil(align) * align
+            }
+            RingUse::InstanceData => size,
+        };
+        Ok(Ring {
             slots: (0..slots).map(|_| Slot::default()).collect(),
+            use_,
+            size,
             stride,
             device: device.clone(),
         })
@@ -63,17 +102,14 @@ impl UniformRing {
         self.slots.len() as u32
     }
 
-    fn slot_mut(&mut self, slot: u32) -> Result<&mut Slot> {
-        let slots = self.slots.len() as u32;
-        self.slots
-            .get_mut(slot as usize)
-            .ok_or_else(|| LightingError::FrameSlot { slot, slots }.into())
-    }
-
-    /// Forgets the blocks of `slot`, keeping its largest chunk for reuse. The caller
+    /// Forgets the elements of `slot`, keeping its largest chunk for reuse. The caller
     /// guarantees that no submitted work still reads them.
     pub(crate) fn reset(&mut self, slot: u32) -> Result<()> {
-        let s = self.slot_mut(slot)?;
+        let slots = self.slots();
+        let s = self
+            .slots
+            .get_mut(slot as usize)
+            .ok_or(LightingError::FrameSlot { slot, slots })?;
         // The last chunk is the largest: each new one doubles the one before.
         if let Some(last) = s.chunks.pop() {
             s.chunks.clear();
@@ -83,16 +119,19 @@ impl UniformRing {
         Ok(())
     }
 
-    /// Stores `block` for a draw of `slot`; returns the descriptor set and dynamic offset
-    /// that draw binds.
+    /// Stores `bytes` (one element) for a draw of `slot`; `set_layout` is the layout of a
+    /// uniform ring's descriptor sets. Returns where it lies.
     pub(crate) fn push(
         &mut self,
         slot: u32,
-        block: &DrawBlock,
+        bytes: &[u8],
         set_layout: &DescriptorSetLayout,
-    ) -> Result<(vk::DescriptorSet, u32)> {
-        let stride = self.stride;
-        let slots = self.slots.len() as u32;
+    ) -> Result<Pushed> {
+        if bytes.len() as u64 != self.size {
+            return Err(Error::Internal("an element of another size pushed into a ring"));
+        }
+        let slots = self.slots();
+        let (stride, size, use_) = (self.stride, self.size, self.use_);
         // Fields borrowed apart: the slot mutably, the device shared.
         let s = self
             .slots
@@ -100,55 +139,69 @@ impl UniformRing {
             .ok_or(LightingError::FrameSlot { slot, slots })?;
         let full = s.chunks.last().is_none_or(|c| s.used == c.capacity);
         if full {
-            let capacity = s.chunks.last().map_or(FIRST_CHUNK_DRAWS, |c| c.capacity * 2);
-            s.chunks
-                .push(Chunk::new(&self.device, capacity, stride, set_layout)?);
+            let capacity = s.chunks.last().map_or(FIRST_CHUNK, |c| c.capacity * 2);
+            let chunk = Chunk::new(&self.device, use_, capacity, (size, stride), set_layout)?;
+            s.chunks.push(chunk);
             s.used = 0;
         }
         let chunk = s
             .chunks
             .last_mut()
-            .ok_or(Error::Internal("no uniform chunk after one was added"))?;
-        let offset = s.used * stride;
-        chunk.buffer.write(offset, bytemuck::bytes_of(block))?;
+            .ok_or(Error::Internal("no chunk after one was added"))?;
+        let index = s.used;
+        let offset = index * stride;
+        chunk.buffer.write(offset, bytes)?;
         s.used += 1;
-        let offset = u32::try_from(offset).map_err(|_| LightingError::TooManyDraws { draws: s.used })?;
-        Ok((chunk.descriptors.set(), offset))
+        let too_many = || LightingError::TooManyDraws { draws: index + 1 };
+        Ok(Pushed {
+            buffer: chunk.buffer.raw(),
+            set: chunk
+                .descriptors
+                .as_ref()
+                .map_or(vk::DescriptorSet::null(), DescriptorPool::set),
+            index: u32::try_from(index).map_err(|_| too_many())?,
+            offset: u32::try_from(offset).map_err(|_| too_many())?,
+        })
     }
 }
 
 impl Chunk {
     fn new(
         device: &Arc<Device>,
+        use_: RingUse,
         capacity: u64,
-        stride: u64,
+        (size, stride): (u64, u64),
         set_layout: &DescriptorSetLayout,
     ) -> Result<Self> {
-        let buffer = Buffer::new(
-            device,
-            "uniform buffer",
-            capacity * stride,
-            vk::BufferUsageFlags::UNIFORM_BUFFER,
-            MemoryUse::Uniforms,
-        )?;
-        let sizes = [vk::DescriptorPoolSize {
-            ty: vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC,
-            descriptor_count: 1,
-        }];
-        let descriptors = DescriptorPool::with_one_set(device, &sizes, set_layout)?;
-        let info = [vk::DescriptorBufferInfo {
-            buffer: buffer.raw(),
-            offset: 0,
-            range: std::mem::size_of::<DrawBlock>() as u64,
-        }];
-        let write = vk::WriteDescriptorSet::default()
-            .dst_set(descriptors.set())
-            .dst_binding(0)
-            .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC)
-            .buffer_info(&info);
-        // SAFETY: the set is new, so no command buffer uses it; the buffer is alive and as
-        // large as the range at every offset the ring hands out.
-        unsafe { device.raw.update_descriptor_sets(&[write], &[]) };
+        let (what, usage) = match use_ {
+            RingUse::Uniforms => ("uniform buffer", vk::BufferUsageFlags::UNIFORM_BUFFER),
+            RingUse::InstanceData => ("draw record buffer", vk::BufferUsageFlags::VERTEX_BUFFER),
+        };
+        let buffer = Buffer::new(device, what, capacity * stride, usage, MemoryUse::Uniforms)?;
+        let descriptors = match use_ {
+            RingUse::InstanceData => None,
+            RingUse::Uniforms => {
+                let sizes = [vk::DescriptorPoolSize {
+                    ty: vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC,
+                    descriptor_count: 1,
+                }];
+                let descriptors = DescriptorPool::with_one_set(device, &sizes, set_layout)?;
+                let info = [vk::DescriptorBufferInfo {
+                    buffer: buffer.raw(),
+                    offset: 0,
+                    range: size,
+                }];
+                let write = vk::WriteDescriptorSet::default()
+                    .dst_set(descriptors.set())
+                    .dst_binding(0)
+                    .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC)
+                    .buffer_info(&info);
+                // SAFETY: the set is new, so no command buffer uses it; the buffer is alive
+                // and as large as the range at every offset the ring hands out.
+                unsafe { device.raw.update_descriptor_sets(&[write], &[]) };
+                Some(descriptors)
+            }
+        };
         Ok(Chunk {
             descriptors,
             buffer,

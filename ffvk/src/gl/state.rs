@@ -691,7 +691,7 @@ fn check_cone(index: usize, l: &Light) -> Result<(), StateError> {
     }
 }
 
-fn finite_vec(parameter: &'static str, values: &[f32]) -> Result<(), StateError> {
+pub(crate) fn finite_vec(parameter: &'static str, values: &[f32]) -> Result<(), StateError> {
     match values.iter().find(|v| !v.is_finite()) {
         Some(&value) => Err(StateError::NotFinite {
             parameter,

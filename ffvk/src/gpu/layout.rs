@@ -21,37 +21,6 @@ pub const VK_FROM_GL_CLIP: Mat4 = Mat4::from_cols_array(&[
     0.0, 0.0, 0.5, 1.0,
 ]);
 
-/// One face's [`Material`] as the GLSL `Material` struct (std140, 80 bytes).
-#[repr(C)]
-#[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
-pub struct GpuMaterial {
-    /// `GL_AMBIENT`, RGBA.
-    pub a_cm: [f32; 4],
-    /// `GL_DIFFUSE`, RGBA; its alpha is the lit alpha.
-    pub d_cm: [f32; 4],
-    /// `GL_SPECULAR`, RGBA.
-    pub s_cm: [f32; 4],
-    /// `GL_EMISSION`, RGBA.
-    pub e_cm: [f32; 4],
-    /// `GL_SHININESS`, in [0, 128].
-    pub s_rm: f32,
-    /// Rounds the struct up to std140's 16-byte struct alignment; always zero.
-    pub _pad: [f32; 3],
-}
-
-impl From<&Material> for GpuMaterial {
-    fn from(m: &Material) -> Self {
-        GpuMaterial {
-            a_cm: m.ambient.to_array(),
-            d_cm: m.diffuse.to_array(),
-            s_cm: m.specular.to_array(),
-            e_cm: m.emission.to_array(),
-            s_rm: m.shininess,
-            _pad: [0.0; 3],
-        }
-    }
-}
-
 /// One enabled [`Light`] as the GLSL `Light` struct (std140, 128 bytes), eye space.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
@@ -148,27 +117,20 @@ pub fn specular_code(m: SpecularModel) -> u32 {
     }
 }
 
-/// The `Draw` uniform block: one per draw, bound at a dynamic offset. Matrices are
-/// column-major; the `u32` flags are 0 or 1.
+/// The `State` uniform block: GL's lighting state but the draw's own values (those are its
+/// [`DrawRecord`]), written when a draw's state differs from the draw before and bound at a
+/// dynamic offset. Matrices are column-major; the `u32` flags are 0 or 1.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
-pub struct DrawBlock {
-    /// M: object to eye space.
-    pub modelview: [f32; 16],
+pub struct StateBlock {
     /// GL's projection premultiplied by [`VK_FROM_GL_CLIP`].
     pub projection: [f32; 16],
-    /// [`normal_matrix`] of the modelview in the upper 3x3 of a mat4 (the shader reads only
-    /// that part).
-    pub normal_matrix: [f32; 16],
-    /// The front material.
-    pub front: GpuMaterial,
-    /// The back material (read only when `t_bs` is 1).
-    pub back: GpuMaterial,
+    /// The `GL_TEXTURE` matrix, column-major (read by the textured variants).
+    pub texture_matrix: [f32; 16],
     /// `GL_LIGHT_MODEL_AMBIENT`, RGBA.
     pub a_cs: [f32; 4],
-    /// GL's current color (`glColor`), RGBA: the vertex color of the variants compiled for
-    /// meshes without a color array.
-    pub current_color: [f32; 4],
+    /// `GL_TEXTURE_ENV_COLOR`, RGBA in [0, 1].
+    pub c_c: [f32; 4],
     /// How many entries of `lights` are in use: the enabled lights, 0..=[`MAX_LIGHTS`].
     pub light_count: u32,
     /// `GL_LIGHTING`.
@@ -190,23 +152,52 @@ pub struct DrawBlock {
     pub color_material_mode: u32,
     /// `GL_NORMALIZE`.
     pub normalize: u32,
-    /// What eye-space normals are multiplied by: [`rescale_factor`] with
-    /// `GL_RESCALE_NORMAL` on, else 1.
-    pub rescale: f32,
     /// The specular term, the GLSL `SPECULAR_*` values: 0 GL's (Blinn's halfway vector),
-    /// 1 Phong's reflection vector. (It also starts `lights` on a 16-byte boundary.)
+    /// 1 Phong's reflection vector.
     pub specular_model: u32,
+    /// `GL_TEXTURE_ENV_MODE` as [`TexEnvMode::code`](crate::gl::texture::TexEnvMode::code).
+    /// (It also starts `lights` on a 16-byte boundary.)
+    pub tex_env_mode: u32,
     /// The enabled lights packed in index order, so entry i is not necessarily `GL_LIGHTi`;
     /// entries from `light_count` on are zeroed.
     pub lights: [GpuLight; MAX_LIGHTS],
-    /// The `GL_TEXTURE` matrix, column-major (read by the textured variants).
-    pub texture_matrix: [f32; 16],
-    /// `GL_TEXTURE_ENV_COLOR`, RGBA in [0, 1].
-    pub c_c: [f32; 4],
-    /// `GL_TEXTURE_ENV_MODE` as [`TexEnvMode::code`](crate::gl::texture::TexEnvMode::code).
-    pub tex_env_mode: u32,
-    /// Rounds the block up to 16 bytes; always zero.
-    pub _pad_end: [u32; 3],
+}
+
+/// One draw's own values, as the vertex stages read them: per-instance vertex attributes at
+/// locations 4-19 (`glsl/record.glsl`), one record per draw in ffvk's record buffer, the draw's
+/// `firstInstance` naming its record. 256 bytes, sixteen `vec4`s.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct DrawRecord {
+    /// M: object to eye space (locations 4-7, one column each).
+    pub modelview: [f32; 16],
+    /// [`normal_matrix`] of the modelview, one column per location (8-10), each with a fourth
+    /// value: the front material's `GL_SHININESS`, the back's, and what eye-space normals are
+    /// multiplied by ([`rescale_factor`] with `GL_RESCALE_NORMAL` on, else 1).
+    pub normal_matrix: [[f32; 4]; 3],
+    /// The front material's ambient, diffuse, specular and emission, RGBA (locations 11-14).
+    pub front: [[f32; 4]; 4],
+    /// The back material's, as `front` (locations 15-18; read only when `t_bs` is 1).
+    pub back: [[f32; 4]; 4],
+    /// GL's current color (`glColor`), RGBA: the vertex color of the variants compiled for
+    /// meshes without a color array (location 19).
+    pub current_color: [f32; 4],
+}
+
+/// The first vertex-attribute location of a [`DrawRecord`].
+pub const RECORD_FIRST_LOCATION: u32 = 4;
+/// How many vertex-attribute locations a [`DrawRecord`] takes (one `vec4` each).
+pub const RECORD_LOCATIONS: u32 = (std::mem::size_of::<DrawRecord>() / 16) as u32;
+
+/// One draw packed: its GL state's block and its own record. [`DrawBlock::new`] checks
+/// everything a draw is checked for.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub struct DrawBlock {
+    /// The state block (shared with every following draw of the same state).
+    pub state: StateBlock,
+    /// The draw's own record.
+    pub record: DrawRecord,
 }
 
 /// The specialization constants of `glsl/draw.glsl`, by `constant_id`. Each is an `int`
@@ -393,29 +384,6 @@ fn check_attenuation_sums(lights: &[Light; MAX_LIGHTS]) -> Result<(), StateError
     Ok(())
 }
 
-/// The last lights a [`DrawBlock`] was packed from, checked, and their packed form: draws
-/// under unchanged lights (materials and matrices change per draw in a GL program; lights
-/// rarely do) copy them instead of checking sixteen lights and computing their cone cosines
-/// again. Lights that fail their checks are not kept, so they fail every draw.
-#[derive(Debug, Clone, Default)]
-pub(crate) struct LightCache {
-    last: Option<([Light; MAX_LIGHTS], [GpuLight; MAX_LIGHTS], u32)>,
-}
-
-impl LightCache {
-    /// The enabled lights of `lights` packed in index order, and how many there are.
-    fn packed(&mut self, lights: &[Light; MAX_LIGHTS]) -> Result<([GpuLight; MAX_LIGHTS], u32), StateError> {
-        if let Some((source, packed, count)) = &self.last {
-            if source == lights {
-                return Ok((*packed, *count));
-            }
-        }
-        let (packed, count) = pack_lights(lights)?;
-        self.last = Some((*lights, packed, count));
-        Ok((packed, count))
-    }
-}
-
 /// Checks `lights` and packs the enabled ones in index order; returns them and their count.
 fn pack_lights(lights: &[Light; MAX_LIGHTS]) -> Result<([GpuLight; MAX_LIGHTS], u32), StateError> {
     crate::gl::state::validate_lights(lights)?;
@@ -428,55 +396,55 @@ fn pack_lights(lights: &[Light; MAX_LIGHTS]) -> Result<([GpuLight; MAX_LIGHTS], 
     Ok((packed, count))
 }
 
-impl DrawBlock {
-    /// Packs one draw's state. `projection` is GL's; the Vulkan clip conversion is applied here.
-    pub fn new(state: &LightingState, modelview: Mat4, projection: Mat4) -> Result<Self, StateError> {
-        Self::assemble(state, modelview, projection, pack_lights)
-    }
+/// What of a draw its [`StateBlock`] is made from: its [`LightingState`] but the materials,
+/// the current color, `GL_RESCALE_NORMAL` and the mode, and its projection. Two draws with
+/// equal keys share a block (and a pipeline, for equal raster states and texturing).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct StateKey {
+    lighting: bool,
+    normalize: bool,
+    model: crate::gl::state::LightModel,
+    color_material: crate::gl::state::ColorMaterial,
+    texture: crate::gl::texture::TextureUnit,
+    projection: Mat4,
+    lights: [Light; MAX_LIGHTS],
+}
 
-    /// [`DrawBlock::new`] with the lights checked and packed through `cache`: a draw under
-    /// the same lights as the one before (GL's rhythm: materials and matrices change per draw,
-    /// lights between frames) copies them instead.
-    pub(crate) fn new_cached(
-        state: &LightingState,
-        modelview: Mat4,
-        projection: Mat4,
-        cache: &mut LightCache,
-    ) -> Result<Self, StateError> {
-        Self::assemble(state, modelview, projection, |lights| cache.packed(lights))
+impl StateKey {
+    /// The key of a draw of `state` under `projection`.
+    pub(crate) fn new(state: &LightingState, projection: Mat4) -> Self {
+        StateKey {
+            lighting: state.lighting,
+            normalize: state.normalize,
+            model: state.model,
+            color_material: state.color_material,
+            texture: state.texture,
+            projection,
+            lights: state.lights,
+        }
     }
+}
 
-    /// Checks and packs one draw's state, its lights through `pack` (after the rest is checked,
-    /// so errors come in the order of [`LightingState::validate`]).
-    fn assemble(
-        state: &LightingState,
-        modelview: Mat4,
-        projection: Mat4,
-        pack: impl FnOnce(&[Light; MAX_LIGHTS]) -> Result<([GpuLight; MAX_LIGHTS], u32), StateError>,
-    ) -> Result<Self, StateError> {
-        state.validate_all_but_lights()?;
-        let (lights, light_count) = pack(&state.lights)?;
+impl StateBlock {
+    /// Checks and packs the state part of a draw of `state` under GL's `projection` (the
+    /// Vulkan clip conversion is applied here): the light model, the lights (and, lighting,
+    /// that no enabled positional light has all-zero attenuation), the texture unit.
+    pub fn new(state: &LightingState, projection: Mat4) -> Result<Self, StateError> {
+        crate::gl::state::finite_vec(
+            "GL_LIGHT_MODEL_AMBIENT",
+            state.model.ambient.to_array().as_slice(),
+        )?;
+        state.texture.validate()?;
+        let (lights, light_count) = pack_lights(&state.lights)?;
         if state.lighting {
-            // Normals need (M⁻¹)ᵀ; a singular modelview would light with NaN normals.
-            let det = Mat3::from_mat4(modelview).determinant();
-            if det == 0.0 || !det.is_finite() {
-                return Err(StateError::OutOfRange {
-                    parameter: "determinant of the modelview's upper 3x3",
-                    value: det,
-                    valid: "a finite non-zero value (an invertible modelview, for the normal matrix)",
-                });
-            }
             check_attenuation_sums(&state.lights)?;
         }
         let cm = &state.color_material;
-        Ok(DrawBlock {
-            modelview: modelview.to_cols_array(),
+        Ok(StateBlock {
             projection: (VK_FROM_GL_CLIP * projection).to_cols_array(),
-            normal_matrix: Mat4::from_mat3(normal_matrix(modelview)).to_cols_array(),
-            front: GpuMaterial::from(&state.front),
-            back: GpuMaterial::from(&state.back),
+            texture_matrix: state.texture.matrix.to_cols_array(),
             a_cs: state.model.ambient.to_array(),
-            current_color: state.current_color.to_array(),
+            c_c: state.texture.env_color.to_array(),
             light_count,
             lighting: state.lighting as u32,
             v_bs: state.model.local_viewer as u32,
@@ -493,17 +461,68 @@ impl DrawBlock {
                 ColorMaterialMode::AmbientAndDiffuse => 4,
             },
             normalize: state.normalize as u32,
-            rescale: if state.rescale_normal {
-                rescale_factor(modelview)
-            } else {
-                1.0
-            },
             specular_model: specular_code(state.model.specular_model),
-            lights,
-            texture_matrix: state.texture.matrix.to_cols_array(),
-            c_c: state.texture.env_color.to_array(),
             tex_env_mode: state.texture.env_mode.code(),
-            _pad_end: [0; 3],
+            lights,
+        })
+    }
+}
+
+impl DrawRecord {
+    /// Checks and packs a draw's own values: the materials and current color of `state` and
+    /// the `modelview` (invertible, while lighting: normals need (M⁻¹)ᵀ).
+    pub fn new(state: &LightingState, modelview: Mat4) -> Result<Self, StateError> {
+        state.front.validate()?;
+        state.back.validate()?;
+        crate::gl::state::finite_vec("GL_CURRENT_COLOR", state.current_color.to_array().as_slice())?;
+        if state.lighting {
+            // A singular modelview would light with NaN normals.
+            let det = Mat3::from_mat4(modelview).determinant();
+            if det == 0.0 || !det.is_finite() {
+                return Err(StateError::OutOfRange {
+                    parameter: "determinant of the modelview's upper 3x3",
+                    value: det,
+                    valid: "a finite non-zero value (an invertible modelview, for the normal matrix)",
+                });
+            }
+        }
+        let n = normal_matrix(modelview);
+        let rescale = if state.rescale_normal {
+            rescale_factor(modelview)
+        } else {
+            1.0
+        };
+        let with_w = |column: glam::Vec3, w: f32| [column.x, column.y, column.z, w];
+        let face = |m: &Material| {
+            [
+                m.ambient.to_array(),
+                m.diffuse.to_array(),
+                m.specular.to_array(),
+                m.emission.to_array(),
+            ]
+        };
+        Ok(DrawRecord {
+            modelview: modelview.to_cols_array(),
+            normal_matrix: [
+                with_w(n.x_axis, state.front.shininess),
+                with_w(n.y_axis, state.back.shininess),
+                with_w(n.z_axis, rescale),
+            ],
+            front: face(&state.front),
+            back: face(&state.back),
+            current_color: state.current_color.to_array(),
+        })
+    }
+}
+
+impl DrawBlock {
+    /// Checks and packs one draw: its [`DrawRecord`] and [`StateBlock`]. `projection` is GL's;
+    /// the Vulkan clip conversion is applied here.
+    pub fn new(state: &LightingState, modelview: Mat4, projection: Mat4) -> Result<Self, StateError> {
+        let record = DrawRecord::new(state, modelview)?;
+        Ok(DrawBlock {
+            state: StateBlock::new(state, projection)?,
+            record,
         })
     }
 }
@@ -517,53 +536,37 @@ mod tests {
     use super::*;
     use crate::gl::state::{Cap, Face, GlState, LightParam, MaterialParam};
 
-    fn lit() -> GlState {
+    #[test]
+    fn the_state_key_ignores_what_the_record_carries_and_sees_the_rest() {
         let mut gl = GlState::new();
         gl.enable(Cap::Lighting).unwrap();
-        gl.enable(Cap::Light(0)).unwrap();
-        gl.enable(Cap::Light(1)).unwrap();
-        gl.light(1, LightParam::Position(Vec4::new(1.0, 2.0, 3.0, 1.0)))
-            .unwrap();
-        gl.light(1, LightParam::SpotCutoff(30.0)).unwrap();
-        gl
-    }
-
-    #[test]
-    fn draws_packed_through_the_light_cache_equal_draws_packed_alone() {
-        let mut cache = LightCache::default();
-        let mut gl = lit();
-        let mv = Mat4::from_translation(Vec3::new(0.0, 0.0, -3.0));
-        for i in 0..4 {
-            // A new material every draw, new lights every other draw.
-            gl.material(Face::FrontAndBack, MaterialParam::Shininess(10.0 * i as f32))
-                .unwrap();
-            if i % 2 == 1 {
-                gl.light(0, LightParam::Position(Vec4::new(i as f32, 1.0, 1.0, 0.0)))
-                    .unwrap();
-            }
-            let cached = DrawBlock::new_cached(&gl.lighting, mv, Mat4::IDENTITY, &mut cache).unwrap();
-            let alone = DrawBlock::new(&gl.lighting, mv, Mat4::IDENTITY).unwrap();
-            assert_eq!(cached, alone, "draw {i}");
-        }
-    }
-
-    #[test]
-    fn lights_that_fail_their_checks_fail_every_draw_through_the_cache() {
-        let mut cache = LightCache::default();
-        let good = lit();
-        DrawBlock::new_cached(&good.lighting, Mat4::IDENTITY, Mat4::IDENTITY, &mut cache).unwrap();
-        let mut bad = good.lighting;
-        bad.lights[1].constant_attenuation = 0.0;
-        bad.lights[1].spot_exponent = f32::NAN;
-        for _ in 0..2 {
-            assert!(DrawBlock::new_cached(&bad, Mat4::IDENTITY, Mat4::IDENTITY, &mut cache).is_err());
-        }
-        // And the good lights still pack after them.
-        let again =
-            DrawBlock::new_cached(&good.lighting, Mat4::IDENTITY, Mat4::IDENTITY, &mut cache).unwrap();
-        assert_eq!(
-            again,
-            DrawBlock::new(&good.lighting, Mat4::IDENTITY, Mat4::IDENTITY).unwrap()
+        let key = StateKey::new(&gl.lighting, Mat4::IDENTITY);
+        gl.material(Face::Back, MaterialParam::Shininess(7.0)).unwrap();
+        gl.color(Vec4::new(0.5, 0.5, 0.5, 1.0)).unwrap();
+        gl.enable(Cap::RescaleNormal).unwrap();
+        assert_eq!(StateKey::new(&gl.lighting, Mat4::IDENTITY), key);
+        assert_ne!(StateKey::new(&gl.lighting, Mat4::from_translation(Vec3::X)), key);
+        gl.light(3, LightParam::Diffuse(Vec4::ONE)).unwrap();
+        assert_ne!(
+            StateKey::new(&gl.lighting, Mat4::IDENTITY),
+            key,
+            "a disabled light's values"
         );
+    }
+
+    #[test]
+    fn the_record_carries_both_shininesses_and_the_rescale_factor_in_the_normal_columns() {
+        let mut gl = GlState::new();
+        gl.enable(Cap::Lighting).unwrap();
+        gl.enable(Cap::RescaleNormal).unwrap();
+        gl.material(Face::Front, MaterialParam::Shininess(5.0)).unwrap();
+        gl.material(Face::Back, MaterialParam::Shininess(9.0)).unwrap();
+        let mv = Mat4::from_scale(Vec3::splat(2.0));
+        let r = DrawRecord::new(&gl.lighting, mv).unwrap();
+        assert_eq!([r.normal_matrix[0][3], r.normal_matrix[1][3]], [5.0, 9.0]);
+        // (M⁻¹)ᵀ of 2I is I/2, and RESCALE_NORMAL's factor brings its normals back to length 1.
+        assert_eq!(r.normal_matrix[0][0], 0.5);
+        assert_eq!(r.normal_matrix[2][3], 2.0);
+        assert_eq!(RECORD_LOCATIONS, 16);
     }
 }
