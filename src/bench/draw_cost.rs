@@ -1,11 +1,12 @@
 //! The host cost of recording lit draws: what an emulation layer pays per draw call.
 //!
 //! One frame holds [`DRAWS`] draws of a small quad, each with its own lighting state (its own
-//! material, so every draw writes a different uniform block) but one specialization key, so
+//! material, so every draw writes a different record) but one specialization key, so
 //! every pipeline exists before recording starts: the warm cost. The renderer times the loop
-//! of [`Lighting::draw`](ffvk::Lighting::draw) calls ([`FrameStats::record_ns`]); the
-//! packing of the state ([`DrawBlock::new`]) is timed alone over the same states, so the
-//! report can say what dominates. A new specialization key costs a pipeline: its creation is
+//! checking, packing and recording of the frame's draws ([`FrameStats::record_ns`]); then the
+//! same frame with one material, each draw changing only its modelview. Packing a whole draw
+//! ([`DrawBlock::new`], its lights included) is timed alone over the same states, so the
+//! report can say what staging state only when it changes saves. A new specialization key costs a pipeline: its creation is
 //! timed by [`Renderer::prepare`], and the first frame that draws with it is compared with
 //! the next one (lavapipe compiles fragment code at the first draw).
 
@@ -34,7 +35,11 @@ pub struct DrawCost {
     /// Recording one warm draw with a state change, in µs: the median over frames of the
     /// frame's recording time divided by its draws.
     pub warm_us_per_draw: Spread,
-    /// Of that, packing the state into its uniform block ([`DrawBlock::new`]), in µs per draw.
+    /// Recording one warm draw that changes only its modelview (the same material and lights
+    /// as the draw before), in µs, as `warm_us_per_draw`.
+    pub modelview_only_us_per_draw: Spread,
+    /// Packing a whole draw alone, its state block and record ([`DrawBlock::new`]), in µs per
+    /// draw: what a draw would cost if every draw changed the lights.
     pub pack_us_per_draw: Spread,
     /// Creating the pipeline of a new specialization key, in ms.
     pub new_key_create_ms: Spread,
@@ -121,6 +126,18 @@ pub fn measure_draw_cost(
         pack.push(start.elapsed().as_nanos() as f64 / 1e3 / draws as f64);
     }
 
+    // The same draws with one material: each changes only its modelview.
+    let same = warm_state(0, draws)?;
+    for (k, d) in frame.draws.iter_mut().enumerate() {
+        d.state = same.lighting;
+        d.modelview = Mat4::from_translation(Vec3::new(0.0, 0.0, -(k as f32) / draws as f32));
+    }
+    renderer.measure(&frame)?;
+    let mut modelview_only = Vec::new();
+    for _ in 0..frames {
+        modelview_only.push(renderer.measure(&frame)?.record_ns / 1e3 / draws as f64);
+    }
+
     let mut create = Vec::new();
     let mut first_draw = Vec::new();
     for k in 0..new_keys {
@@ -139,6 +156,7 @@ pub fn measure_draw_cost(
         draws,
         frames,
         warm_us_per_draw: spread(&record),
+        modelview_only_us_per_draw: spread(&modelview_only),
         pack_us_per_draw: spread(&pack),
         new_key_create_ms: spread(&create),
         new_key_first_draw_ms: spread(&first_draw),

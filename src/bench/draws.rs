@@ -27,11 +27,74 @@ const SIZE: u32 = 512;
 /// The modes the sweep draws.
 pub const DRAW_MODES: [BenchMode; 3] = [BenchMode::Vertex, BenchMode::Fragment, BenchMode::Flat];
 
+/// What the sweep's draws draw.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum DrawShape {
+    /// Every draw the same quad mesh: ffvk may draw consecutive draws as instances of one
+    /// draw command (GL draws each, from its own buffer object).
+    OneQuadMesh,
+    /// Every draw a quad mesh of its own (its own vertex and index buffers): nothing merges,
+    /// each draw is a draw command.
+    QuadMeshEach,
+    /// 1,024 spheres of 240 triangles sharing one mesh: the emulation frame whose cost is
+    /// also its lit vertices.
+    Spheres,
+}
+
+impl DrawShape {
+    /// Every shape, in the order the sweep runs them.
+    pub const ALL: [DrawShape; 3] = [
+        DrawShape::OneQuadMesh,
+        DrawShape::QuadMeshEach,
+        DrawShape::Spheres,
+    ];
+
+    /// How the report names it.
+    pub fn name(self) -> &'static str {
+        match self {
+            DrawShape::OneQuadMesh => "quads, one mesh",
+            DrawShape::QuadMeshEach => "quads, a mesh each",
+            DrawShape::Spheres => "spheres, one mesh",
+        }
+    }
+
+    /// The draw counts of this shape in a sweep whose quad counts are `counts`: the spheres'
+    /// frame has 1,024 draws.
+    pub fn counts(self, counts: &[u32]) -> Vec<u32> {
+        match self {
+            DrawShape::Spheres => vec![SPHERES],
+            _ => counts.to_vec(),
+        }
+    }
+
+    /// The mesh each draw draws.
+    fn mesh(self) -> MeshData {
+        match self {
+            DrawShape::Spheres => MeshData::uv_sphere(12, 11),
+            _ => quad(),
+        }
+    }
+
+    /// The scale that fits the mesh in a grid cell of side 1.
+    fn fit(self) -> f32 {
+        match self {
+            DrawShape::Spheres => 0.45,
+            _ => 0.9,
+        }
+    }
+}
+
+/// The draws of the spheres' frame.
+pub const SPHERES: u32 = 1_024;
+
 /// One point of the draws sweep.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct DrawsResult {
     /// Who drew it.
     pub engine: Engine,
+    /// What the draws draw.
+    pub shape: DrawShape,
     /// Where the equation is evaluated.
     pub mode: BenchMode,
     /// Draws per frame, each with its own material and modelview.
@@ -67,7 +130,7 @@ fn quad() -> MeshData {
 /// The frame of `draws` quads: a grid filling the view, draw `i` with its own diffuse color and
 /// shininess; a directional and a point light (the point light's attenuation is a per-light
 /// term the shaders must evaluate for every draw).
-fn scene(mode: BenchMode, draws: u32) -> Result<(Vec<(Mat4, LightingState)>, Mat4)> {
+fn scene(mode: BenchMode, draws: u32, fit: f32) -> Result<(Vec<(Mat4, LightingState)>, Mat4)> {
     let mut gl = GlState::new();
     gl.lighting_mode(mode.lighting_mode());
     for cap in [Cap::Lighting, Cap::Light(0), Cap::Light(1)] {
@@ -92,7 +155,7 @@ fn scene(mode: BenchMode, draws: u32) -> Result<(Vec<(Mat4, LightingState)>, Mat
         gl.material(Face::FrontAndBack, MaterialParam::Shininess(4.0 + 60.0 * h))?;
         let (x, y) = ((i % side) as f32, (i / side) as f32);
         let at = Vec3::new(-1.0 + cell * (x + 0.5), -1.0 + cell * (y + 0.5), -2.0);
-        let modelview = Mat4::from_translation(at) * Mat4::from_scale(Vec3::splat(cell * 0.9));
+        let modelview = Mat4::from_translation(at) * Mat4::from_scale(Vec3::splat(cell * fit));
         out.push((modelview, gl.lighting));
     }
     // 2 units away, a 53° field of view shows the 2 × 2 grid whole.
@@ -128,82 +191,115 @@ pub(super) fn run_draws(
     gl: Option<&GlAnchor>,
     progress: &ProgressBar,
 ) -> Result<Vec<DrawsResult>> {
-    let mesh = quad();
-    let uploaded = renderer.upload(&mesh)?;
     let mut out = Vec::new();
-    for &draws in &config.draw_counts {
-        for mode in DRAW_MODES {
-            progress.set_message(format!("draws: {draws} {}", mode.name()));
-            let (objects, projection) = scene(mode, draws)?;
-            let mut frame = Frame::new(SIZE, SIZE);
-            frame.clear_color = CLEAR;
-            frame.draws = objects
-                .iter()
-                .map(|(modelview, state)| Draw::new(&uploaded, *modelview, projection, *state))
-                .collect();
-            let start = Instant::now();
-            renderer.measure(&frame)?;
-            let first_frame_ms = start.elapsed().as_secs_f64() * 1e3;
-            for _ in 1..config.warmup {
-                renderer.measure(&frame)?;
+    for shape in DrawShape::ALL {
+        let mesh = shape.mesh();
+        let counts = shape.counts(&config.draw_counts);
+        let most = counts.iter().copied().max().unwrap_or(1);
+        let meshes = match shape {
+            DrawShape::QuadMeshEach => (0..most)
+                .map(|_| renderer.upload(&mesh))
+                .collect::<ffvk::Result<Vec<_>>>()?,
+            _ => vec![renderer.upload(&mesh)?],
+        };
+        for &draws in &counts {
+            for mode in DRAW_MODES {
+                progress.set_message(format!("draws: {} {draws} {}", shape.name(), mode.name()));
+                out.extend(run_point(
+                    config,
+                    renderer,
+                    gl,
+                    (shape, &mesh, &meshes),
+                    draws,
+                    mode,
+                )?);
+                progress.inc(1 + u64::from(gl.is_some()));
             }
-            let before = resident_kib();
-            let mut wall = Vec::new();
-            let mut samples = Vec::new();
-            for _ in 0..config.frames {
-                let start = Instant::now();
-                samples.push(renderer.measure(&frame)?);
-                wall.push(start.elapsed().as_secs_f64() * 1e3);
-            }
-            let grown = grown_per_frame(before, config.frames);
-            let per_draw = |ns: &[f64]| median(ns).map(|m| m / 1e3 / f64::from(draws));
-            let submit: Vec<f64> = samples.iter().map(|s| s.wall_ns / 1e6).collect();
-            let record: Vec<f64> = samples.iter().map(|s| s.record_ns).collect();
-            let device: Vec<f64> = samples.iter().filter_map(|s| s.gpu_ns).collect();
-            out.push(DrawsResult {
-                engine: Engine::Ffvk,
-                mode,
-                draws,
-                first_frame_ms,
-                frame_ms: Spread::of(&wall).unwrap_or_default(),
-                submit_ms: Spread::of(&submit),
-                record_us_per_draw: per_draw(&record),
-                device_us_per_draw: per_draw(&device),
-                rss_kib_per_frame: grown,
-            });
-            progress.inc(1);
-
-            let Some(gl) = gl else { continue };
-            let scene = GlScene {
-                width: SIZE,
-                height: SIZE,
-                clear_color: CLEAR.to_array(),
-                depth_test: true,
-                draws: objects
-                    .iter()
-                    .map(|(modelview, state)| GlDraw::new(&mesh, *modelview, projection, *state))
-                    .collect(),
-            };
-            let before = resident_kib();
-            let timing = time_frames_with(&scene, config.warmup, config.frames, gl.options())?;
-            // The context (and its memory) lives for this call only: what it kept is counted
-            // over all its frames, warm-up included.
-            let grown = grown_per_frame(before, config.warmup + config.frames);
-            let wall: Vec<f64> = timing.frame_ns.iter().map(|ns| ns / 1e6).collect();
-            out.push(DrawsResult {
-                engine: Engine::Gl,
-                mode,
-                draws,
-                first_frame_ms: timing.first_frame_ns / 1e6,
-                frame_ms: Spread::of(&wall).unwrap_or_default(),
-                submit_ms: None,
-                record_us_per_draw: None,
-                device_us_per_draw: None,
-                rss_kib_per_frame: grown,
-            });
-            progress.inc(1);
         }
     }
+    Ok(out)
+}
+
+/// One point of the sweep: ffvk's frame of `draws` draws of `shape` in `mode` (drawing `meshes`
+/// in turn, the uploads of `mesh`) and GL's of the same calls.
+fn run_point(
+    config: &SweepConfig,
+    renderer: &mut Renderer,
+    gl: Option<&GlAnchor>,
+    (shape, mesh, meshes): (DrawShape, &MeshData, &[ffvk::Mesh]),
+    draws: u32,
+    mode: BenchMode,
+) -> Result<Vec<DrawsResult>> {
+    let mut out = Vec::new();
+    let (objects, projection) = scene(mode, draws, shape.fit())?;
+    let mut frame = Frame::new(SIZE, SIZE);
+    frame.clear_color = CLEAR;
+    frame.draws = objects
+        .iter()
+        .zip(meshes.iter().cycle())
+        .map(|((modelview, state), mesh)| Draw::new(mesh, *modelview, projection, *state))
+        .collect();
+    let start = Instant::now();
+    renderer.measure(&frame)?;
+    let first_frame_ms = start.elapsed().as_secs_f64() * 1e3;
+    for _ in 1..config.warmup {
+        renderer.measure(&frame)?;
+    }
+    let before = resident_kib();
+    let mut wall = Vec::new();
+    let mut samples = Vec::new();
+    for _ in 0..config.frames {
+        let start = Instant::now();
+        samples.push(renderer.measure(&frame)?);
+        wall.push(start.elapsed().as_secs_f64() * 1e3);
+    }
+    let grown = grown_per_frame(before, config.frames);
+    let per_draw = |ns: &[f64]| median(ns).map(|m| m / 1e3 / f64::from(draws));
+    let submit: Vec<f64> = samples.iter().map(|s| s.wall_ns / 1e6).collect();
+    let record: Vec<f64> = samples.iter().map(|s| s.record_ns).collect();
+    let device: Vec<f64> = samples.iter().filter_map(|s| s.gpu_ns).collect();
+    out.push(DrawsResult {
+        engine: Engine::Ffvk,
+        shape,
+        mode,
+        draws,
+        first_frame_ms,
+        frame_ms: Spread::of(&wall).unwrap_or_default(),
+        submit_ms: Spread::of(&submit),
+        record_us_per_draw: per_draw(&record),
+        device_us_per_draw: per_draw(&device),
+        rss_kib_per_frame: grown,
+    });
+
+    let Some(gl) = gl else { return Ok(out) };
+    let scene = GlScene {
+        width: SIZE,
+        height: SIZE,
+        clear_color: CLEAR.to_array(),
+        depth_test: true,
+        draws: objects
+            .iter()
+            .map(|(modelview, state)| GlDraw::new(mesh, *modelview, projection, *state))
+            .collect(),
+    };
+    let before = resident_kib();
+    let timing = time_frames_with(&scene, config.warmup, config.frames, gl.options())?;
+    // The context (and its memory) lives for this call only: what it kept is counted
+    // over all its frames, warm-up included.
+    let grown = grown_per_frame(before, config.warmup + config.frames);
+    let wall: Vec<f64> = timing.frame_ns.iter().map(|ns| ns / 1e6).collect();
+    out.push(DrawsResult {
+        engine: Engine::Gl,
+        shape,
+        mode,
+        draws,
+        first_frame_ms: timing.first_frame_ns / 1e6,
+        frame_ms: Spread::of(&wall).unwrap_or_default(),
+        submit_ms: None,
+        record_us_per_draw: None,
+        device_us_per_draw: None,
+        rss_kib_per_frame: grown,
+    });
     Ok(out)
 }
 
@@ -214,21 +310,24 @@ pub fn draws_markdown(results: &[DrawsResult]) -> String {
     }
     let mut md = String::from(
         "### Many draws, each with its own material\n\n\
-         Frames of quads in a grid at 512², each draw after its own glMaterial and modelview, \
-         a directional and a point light; host time per frame, medians: ffvk from the frame \
-         handed to the renderer (checking the draws, recording, submission) to the fence, GL from \
-         its first call to glFinish's return.\n\n\
-         | draws | mode | ffvk ms | GL ms | ffvk ÷ GL | ffvk record µs/draw | ffvk device µs/draw | ffvk RSS KiB/frame |\n\
-         | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: |\n",
+         Frames of quads (or 1,024 spheres of 240 triangles) in a grid at 512², each draw after \
+         its own glMaterial and modelview, a directional and a point light; host time per frame, \
+         medians: ffvk from the frame handed to the renderer (checking the draws, recording, \
+         submission) to the fence, GL from its first call to glFinish's return. With one mesh \
+         ffvk draws consecutive draws as instances of one draw command; with a mesh each, every \
+         draw is a command of its own. GL draws each from its own buffer objects.\n\n\
+         | meshes | draws | mode | ffvk ms | GL ms | ffvk ÷ GL | ffvk record µs/draw | ffvk device µs/draw | ffvk RSS KiB/frame |\n\
+         | --- | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: |\n",
     );
     let fmt = |v: Option<f64>, digits: usize| v.map_or("—".into(), |v| format!("{v:.digits$}"));
     for r in results.iter().filter(|r| r.engine == Engine::Ffvk) {
         let gl = results
             .iter()
-            .find(|g| g.engine == Engine::Gl && g.mode == r.mode && g.draws == r.draws)
+            .find(|g| g.engine == Engine::Gl && g.shape == r.shape && g.mode == r.mode && g.draws == r.draws)
             .map(|g| g.frame_ms.median);
         md.push_str(&format!(
-            "| {} | {} | {:.2} | {} | {} | {} | {} | {:.0} |\n",
+            "| {} | {} | {} | {:.2} | {} | {} | {} | {} | {:.0} |\n",
+            r.shape.name(),
             r.draws,
             r.mode.name(),
             r.frame_ms.median,

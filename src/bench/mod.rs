@@ -513,7 +513,10 @@ pub fn run_sweep(
     progress.set_length(
         progress.length().unwrap_or(0)
             + draws::DRAW_MODES.len() as u64
-                * config.draw_counts.len() as u64
+                * draws::DrawShape::ALL
+                    .iter()
+                    .map(|s| s.counts(&config.draw_counts).len() as u64)
+                    .sum::<u64>()
                 * (1 + u64::from(gl.is_some())),
     );
     let draws = draws::run_draws(config, &mut draws_renderer, gl.as_ref(), progress)?;

@@ -10,6 +10,7 @@ use ffvk_cli::bench::{
 use indicatif::ProgressBar;
 
 use crate::support::output_dir;
+use ffvk_cli::bench::draws::DrawShape;
 
 /// Splits one CSV line, honouring double quotes (the device name has commas).
 fn csv_fields(line: &str) -> Vec<String> {
@@ -67,18 +68,27 @@ fn a_tiny_sweep_runs_every_point_and_writes_csv_json_and_plots() {
         .expect("the sweep measures the recording cost");
     assert_eq!((d.draws, d.frames), (config.record_draws, config.frames));
     assert!(
-        d.warm_us_per_draw.median > 0.0 && d.pack_us_per_draw.median > 0.0,
+        d.warm_us_per_draw.median > 0.0
+            && d.modelview_only_us_per_draw.median > 0.0
+            && d.pack_us_per_draw.median > 0.0,
         "{d:?}"
     );
     assert!(d.new_key_create_ms.median > 0.0, "{d:?}");
     assert!(ffvk_cli::bench::markdown(&report).contains("### Recording draws (host)"));
-    // The draws sweep: every count in every mode, ffvk and GL, each frame measured.
+    // The draws sweep: every count of both quad shapes and the spheres' frame, in every mode,
+    // ffvk and GL, each frame measured.
     assert_eq!(
         report.draws.len(),
-        config.draw_counts.len() * 3 * 2,
+        (2 * config.draw_counts.len() + 1) * 3 * 2,
         "{:?}",
         report.draws
     );
+    for shape in DrawShape::ALL {
+        assert!(
+            report.draws.iter().any(|r| r.shape == shape),
+            "no {shape:?} point"
+        );
+    }
     for r in &report.draws {
         assert!(r.frame_ms.min > 0.0 && r.frame_ms.min <= r.frame_ms.max, "{r:?}");
         if r.engine == Engine::Ffvk {

@@ -7,24 +7,32 @@
 //! and index buffers, synchronization and submission; ffvk touches none of them beyond
 //! recording commands into the command buffer it is given. A [`Lighting`] owns what it
 //! creates: one descriptor set layout (binding 0, `UNIFORM_BUFFER_DYNAMIC`, vertex and
-//! fragment stages; empty layouts for the sets below [`LightingOptions::set_index`]), the
-//! texture's layout for the set after it (binding 0, `COMBINED_IMAGE_SAMPLER`, fragment
-//! stage), one pipeline layout (no push constants), a pipeline cache unless the caller passes one, the
-//! pipelines (created on first use per lighting mode, specialization key and
-//! [`RasterState`]), and for each frame slot host-visible, coherent uniform memory with its
-//! descriptor sets; and the [`TextureBinding`]s the caller asks for (a descriptor set naming
-//! the caller's image view and sampler), which the caller holds. Dropping it frees all of that; the caller must first make sure no
-//! submitted command buffer still uses it (wait for its fences or the device).
+//! fragment stages: the state block; empty layouts for the sets below
+//! [`LightingOptions::set_index`]), the texture's layout for the set after it (binding 0,
+//! `COMBINED_IMAGE_SAMPLER`, fragment stage), one pipeline layout (no push constants), a
+//! pipeline cache unless the caller passes one, the pipelines (created on first use per
+//! lighting mode, specialization key and [`RasterState`]), and for each frame slot
+//! host-visible, coherent memory for the state blocks (uniform buffers with their descriptor
+//! sets) and the draw records (vertex buffers); and the [`TextureBinding`]s the caller asks
+//! for (a descriptor set naming the caller's image view and sampler), which the caller holds.
+//! Dropping it frees all of that; the caller must first make sure no submitted command buffer
+//! still uses it (wait for its fences or the device).
+//!
+//! The pipelines read the caller's vertex bindings per vertex and ffvk's draw records per
+//! instance, at the lowest binding number the caller's [`VertexInput`] leaves free, as
+//! attribute locations 4-19 ([`DrawRecord`]); the device needs `maxVertexInputAttributes` ≥ 20
+//! ([`LightingError::VertexInputLimit`] otherwise). Instancing and `firstInstance` are ffvk's.
 //!
 //! [`Lighting::draw`] records, into the caller's command buffer inside the caller's dynamic
 //! rendering pass (`vkCmdBeginRendering`; render passes are not supported): bind pipeline,
-//! bind the descriptor set at the draw's dynamic offset (and, textured, the texture's set
-//! after it), bind the caller's vertex buffers
-//! (and index buffer), draw. The commands read the caller's vertex and index buffers and
-//! ffvk's uniform memory, and write the caller's color attachment (and depth attachment when
-//! the draw's [`RasterState`] tests depth), with blending as that state says. They need the
-//! viewport and scissor the caller sets (both are dynamic state). The bindings stay bound
-//! after the call: the caller rebinds whatever it needs next.
+//! bind the state block's descriptor set at its dynamic offset (and, textured, the texture's
+//! set after it), bind the caller's vertex buffers and ffvk's record buffer (and the caller's
+//! index buffer), draw with `firstInstance` naming the draw's record. The commands read the
+//! caller's vertex and index buffers and ffvk's per-frame memory, and write the caller's color
+//! attachment (and depth attachment when the draw's [`RasterState`] tests depth), with
+//! blending as that state says. They need the viewport and scissor the caller sets (both are
+//! dynamic state). The bindings stay bound after the call: the caller rebinds whatever it
+//! needs next.
 //!
 //! # Frame slots
 //!
@@ -36,18 +44,24 @@
 //!
 //! # What a draw costs
 //!
-//! [`Lighting::draw`] checks the draw's GL state and packs it into one uniform block
-//! ([`DrawBlock`], 2,576 bytes; the lights only when they changed since the draw before),
-//! writes it into the frame slot, finds the pipeline and records five commands: about 1 µs on
-//! the host on lavapipe; [`Lighting::draw_run`] records many draws and binds only what changes
-//! between them, about 0.6–1 µs a draw (BENCHMARKS.md, "Many draws"). A
+//! A draw's GL state is staged in GL's rhythm. Its own values, the ones GL programs change
+//! between draws (modelview, materials, current color), are checked and written as its
+//! [`DrawRecord`] (256 bytes, with the normal matrix): that is all a draw that changes only
+//! those writes, about 0.4-0.5 µs on the host on lavapipe. The rest ([`StateBlock`]: lights,
+//! light model, switches, texture environment and matrix, projection; 2,256 bytes) is checked,
+//! packed and written only when it differs from the previous draw's in the same frame slot,
+//! and then bound at a new dynamic offset; the pipeline, too, is looked up only then (about
+//! 0.7 µs more). [`Lighting::draw_run`] is the recording scope: its draws bind only what
+//! changes between them, and consecutive draws of the same geometry, buffers, pipeline, state
+//! and texture become instances of one draw command (BENCHMARKS.md, "Many draws"). A
 //! pipeline is made per lighting mode, [`RasterState`], texturing and specialization key (the
 //! switches and the kinds of the enabled lights, never materials, colors, matrices or light
 //! values): about 15 ms on lavapipe, on the first draw that needs it unless
 //! [`Lighting::prepare`] made it before the frame. The shaders keep their branches and loop
-//! bounds off uniform values alone, so the driver compiles nothing per draw (lavapipe 22.3
-//! would, for every draw whose uniforms changed; a test guards it); the uber-shader ([`Specialize::Never`], or [`Specialize::Auto`]
-//! past its budget) is about twice as slow per vertex and fragment as specialized pipelines.
+//! bounds off uniform values alone and read per-draw values as vertex data, so the driver
+//! compiles nothing per draw (lavapipe 22.3 would, for every draw whose uniforms changed; a
+//! test guards it); the uber-shader ([`Specialize::Never`], or [`Specialize::Auto`] past its
+//! budget) is about twice as slow per vertex and fragment as specialized pipelines.
 //!
 //! # Threads
 //!

@@ -1,6 +1,7 @@
-//! The GPU layout of GL state: std140 mirrors of `glsl/draw.glsl`'s `Draw` block.
-//! Field names are the GLSL member names; a test compares their offsets with the ones
-//! glslang wrote into the SPIR-V.
+//! The GPU layout of GL state: the std140 mirror of `glsl/draw.glsl`'s `State` block and the
+//! per-draw record `glsl/record.glsl` reads as vertex attributes. Field names are the GLSL
+//! member names; tests compare their offsets and locations with the ones glslang wrote into
+//! the SPIR-V.
 
 #![allow(non_snake_case)]
 

@@ -1,5 +1,6 @@
-//! What the GPU sees of the GL state: the std140 layout of the per-draw uniform block, the
-//! specialization constants, and the SPIR-V of every shader variant.
+//! What the GPU sees of the GL state: the std140 layout of the state block, the per-draw
+//! record read as vertex attributes, the specialization constants, and the SPIR-V of every
+//! shader variant.
 //!
 //! This is the lower tier of the embedding API, for renderers that build their own pipelines
 //! from ffvk's shaders. **It may change before 1.0**: the other lighting models will extend
@@ -8,15 +9,17 @@
 //! The interface of every variant in [`shaders::VARIANTS`]:
 //! - entry point `main` in both stages;
 //! - vertex inputs: location 0 position (`vec3`), 1 normal (`vec3`), 2 color (`vec4`; absent
-//!   in the `*_current_color` variants, which read [`layout::DrawBlock::current_color`]), and
-//!   in the `*_textured` variants 3 texture coordinates (`vec2`);
-//! - one uniform block, [`layout::DrawBlock`], at descriptor set 0, binding 0, read by both
+//!   in the `*_current_color` variants, which read [`layout::DrawRecord::current_color`]), in
+//!   the `*_textured` variants 3 texture coordinates (`vec2`), and locations 4-19 the draw's
+//!   [`layout::DrawRecord`], sixteen `vec4`s (`R32G32B32A32_SFLOAT` at 16-byte steps) read per
+//!   instance: ffvk binds one buffer of records and names a draw's by its `firstInstance`;
+//! - one uniform block, [`layout::StateBlock`], at descriptor set 0, binding 0, read by both
 //!   stages ([`crate::draw::pipeline::set_descriptor_set`] rewrites the set of a module);
 //!   ffvk binds it as `UNIFORM_BUFFER_DYNAMIC`, a plain `UNIFORM_BUFFER` works the same;
 //! - in the `*_textured` variants, a `sampler2D` (combined image sampler) at set 1, binding 0,
 //!   read by the fragment stage (moved with the block: set_descriptor_set adds its offset);
 //! - no push constants;
-//! - the specialization constants of [`layout::SpecConstant`] (`int`, constant_id 0-8, -1 =
+//! - the specialization constants of [`layout::SpecConstant`] (`int`, constant_id 0-11, -1 =
 //!   read the uniform); [`layout::SpecKey::for_state`] gives a state's values;
 //! - the `flat` variants need the last-vertex provoking convention
 //!   (`VK_EXT_provoking_vertex`), as GL's flat shading takes each triangle's last vertex;

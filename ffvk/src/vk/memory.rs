@@ -23,7 +23,8 @@ pub enum MemoryUse {
     /// copies; on devices whose device-local memory is host-visible (lavapipe, integrated
     /// GPUs) the host writes it directly.
     Gpu,
-    /// Written by the host for every frame and read by the GPU: the per-draw uniforms.
+    /// Written by the host for every frame and read by the GPU: the draws' state blocks and
+    /// records.
     /// Device-local and host-visible where the device offers it (a GPU's BAR), else host
     /// memory.
     Uniforms,
