@@ -25,7 +25,9 @@ use ffvk::gl::state::{Cap, Face, GlState, LightModelParam, LightParam, LightingM
 use ffvk::glam::{Mat4, Vec3, Vec4};
 use ffvk::mesh::MeshData;
 use ffvk::vk::EnabledFeatures;
-use ffvk::{Attribute, Geometry, Lighting, LightingOptions, LitDraw, RasterState, Target, VertexInput};
+use ffvk::{
+    Attribute, DrawValues, Geometry, Lighting, LightingOptions, LitDraw, RasterState, Target, VertexInput,
+};
 
 /// The size of the images `main` writes.
 pub const SIZE: u32 = 256;
@@ -86,6 +88,35 @@ pub struct EmbedFrame {
     pub state: ffvk::gl::state::LightingState,
     /// Whether the mesh has a color array (binding 1, 8-bit colors).
     pub color_array: bool,
+    /// 0: one teapot. n: n × n small teapots in one run of draws, each with its own material
+    /// and modelview ([`grid_objects`]) under the one shared `state`, as an emulation layer
+    /// records a frame of many objects.
+    pub grid: u32,
+}
+
+/// The objects of an `n` × `n` frame under `state`: each teapot's modelview and its own values
+/// (the state's, with a diffuse color and shininess of its own, as after a glMaterial call).
+pub fn grid_objects(state: &ffvk::gl::state::LightingState, n: u32) -> Vec<(Mat4, DrawValues)> {
+    let n = n.max(1);
+    let cell = 2.4 / n as f32;
+    (0..n * n)
+        .map(|k| {
+            let (i, j) = ((k % n) as f32, (k / n) as f32);
+            let at = Vec3::new(
+                -1.2 + cell * (i + 0.5),
+                1.0 - cell * (j + 0.5),
+                -0.4 * j / n as f32,
+            );
+            let modelview = view() * Mat4::from_translation(at) * Mat4::from_scale(Vec3::splat(cell * 0.45));
+            let mut values = DrawValues::of(state);
+            let t = k as f32 / (n * n) as f32;
+            let diffuse = Vec4::new(0.2 + 0.8 * t, 0.9 - 0.7 * t, 0.3 + 0.5 * (1.0 - t), 1.0);
+            values.front.diffuse = diffuse;
+            values.back.diffuse = diffuse * 0.5;
+            values.front.shininess = 5.0 + 100.0 * t;
+            (modelview, values)
+        })
+        .collect()
 }
 
 /// Renders the teapot in each mode with its color array; see [`render_frames`].
@@ -99,6 +130,7 @@ pub fn render_modes(
             Ok(EmbedFrame {
                 state: gl_state(mode).map_err(|e| e.to_string())?.lighting,
                 color_array: true,
+                grid: 0,
             })
         })
         .collect::<Result<Vec<_>, String>>()?;
@@ -149,11 +181,35 @@ fn main() {
             std::process::exit(1);
         }
     };
+    // And a frame of 64 teapots with a material each, under one shared state, in one run.
+    let grid = gl_state(LightingMode::Vertex)
+        .map_err(|e| e.to_string())
+        .and_then(|mut gl| {
+            // The teapots are scaled down: GL_NORMALIZE keeps their normals unit length.
+            gl.enable(Cap::Normalize).map_err(|e| e.to_string())?;
+            let frame = EmbedFrame {
+                state: gl.lighting,
+                color_array: true,
+                grid: 8,
+            };
+            render_frames(device.as_deref(), validation, SIZE, &[frame])
+        });
+    let grid = match grid {
+        Ok(mut images) => images.pop().unwrap_or_default(),
+        Err(e) => {
+            eprintln!("embed: {e}");
+            std::process::exit(1);
+        }
+    };
     let out = std::path::Path::new("out/embed");
-    for (mode, rgba) in images {
-        let path = out.join(format!("teapot_{}.png", mode.name()));
+    let named = images
+        .into_iter()
+        .map(|(mode, rgba)| (format!("teapot_{}.png", mode.name()), rgba))
+        .chain([("teapots_8x8.png".to_string(), grid)]);
+    for (name, rgba) in named {
+        let path = out.join(name);
         let Some(image) = image::RgbaImage::from_raw(SIZE, SIZE, rgba) else {
-            eprintln!("embed: the {} image is not {SIZE} x {SIZE} RGBA8", mode.name());
+            eprintln!("embed: {} is not {SIZE} x {SIZE} RGBA8", path.display());
             std::process::exit(1);
         };
         if let Err(e) = ffvk::images::save_png(&image, &path) {
@@ -501,15 +557,26 @@ impl App {
             self.begin(color, depth, color_view, depth_view)?;
             let geometry = Geometry::indexed(index_buffer, vk::IndexType::UINT32, mesh.indices.len() as u32);
             let buffers = [(position_buffer, 0), (normal_buffer, 0)];
-            let draw =
-                LitDraw::new(&frame.state, view(), projection(), &buffers, geometry).with_raster(raster);
-            // A run of one draw here; an emulation layer passes all the draws it records
-            // back to back, and ffvk binds only what changes between them.
+            let draws: Vec<LitDraw> = if frame.grid == 0 {
+                vec![LitDraw::new(&frame.state, view(), projection(), &buffers, geometry).with_raster(raster)]
+            } else {
+                // Many objects under one state: each draw carries only its modelview and its
+                // own values, and borrows the state it shares with the others.
+                grid_objects(&frame.state, frame.grid)
+                    .into_iter()
+                    .map(|(modelview, values)| {
+                        LitDraw::new(&frame.state, modelview, projection(), &buffers, geometry)
+                            .with_raster(raster)
+                            .with_values(Some(values))
+                    })
+                    .collect()
+            };
+            // One run: an emulation layer passes all the draws it records back to back, and
+            // ffvk binds only what changes between them (draws of one mesh become instances).
             // SAFETY: cmd is recording inside the rendering pass `begin` started on
             // attachments of the target's formats, viewport and scissor set; the buffers live
             // until after the fence wait below; slot 0 is free (the last frame was waited for).
-            unsafe { lighting.draw_run(self.cmd, 0, std::slice::from_ref(&draw)) }
-                .map_err(|e| e.to_string())?;
+            unsafe { lighting.draw_run(self.cmd, 0, &draws) }.map_err(|e| e.to_string())?;
             images.push(self.finish(color, readback)?);
         }
         drop(with_color_array);

@@ -94,7 +94,7 @@ pub use glam;
 #[doc = include_str!("../../README.md")]
 pub struct ReadmeDoctests;
 
-pub use draw::lighting::{Lighting, LightingOptions, LitDraw};
+pub use draw::lighting::{DrawValues, Lighting, LightingOptions, LitDraw};
 pub use draw::pipeline::{Attribute, Blend, RasterState, Specialize, Target, VertexInput};
 pub use draw::record::Geometry;
 pub use draw::texture::TextureBinding;

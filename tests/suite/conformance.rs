@@ -613,6 +613,7 @@ fn the_current_color_and_its_color_material_write_back_match_mesa_gl() {
             .map(|(_, gl, _)| embed::EmbedFrame {
                 state: gl.lighting,
                 color_array: false,
+                grid: 0,
             })
             .collect();
         let ours = embed::render_frames(None, true, SIZE, &frames).unwrap();

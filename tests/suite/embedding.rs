@@ -74,6 +74,58 @@ fn a_callers_device_draws_the_same_bytes_as_the_renderer_in_every_mode() {
     finish(r);
 }
 
+/// An emulation layer's frame: many objects under one shared state, each draw carrying only its
+/// modelview and its own materials (`LitDraw::with_values`), recorded as one run (where draws
+/// of one mesh become instances of one command) on the caller's device, against the Renderer
+/// drawing the same objects each with a whole state of its own, one draw command each.
+#[test]
+fn a_run_of_draws_sharing_one_state_with_values_of_their_own_draws_what_a_state_per_draw_draws() {
+    let mut r = renderer();
+    let mesh = r.upload(&embed::teapot().unwrap()).unwrap();
+    // A mesh per object on the Renderer's side: nothing merges there.
+    let meshes: Vec<ffvk::Mesh> = (0..36)
+        .map(|_| r.upload(&embed::teapot().unwrap()).unwrap())
+        .collect();
+    for mode in LightingMode::ALL {
+        let mut gl = embed::gl_state(mode).unwrap();
+        gl.enable(Cap::Normalize).unwrap();
+        let state = gl.lighting;
+        let frames = [embed::EmbedFrame {
+            state,
+            color_array: true,
+            grid: 6,
+        }];
+        let embedded = embed::render_frames(None, true, embed::SIZE, &frames)
+            .expect("the run renders with validation on");
+        for (merged, meshes) in [(true, std::slice::from_ref(&mesh)), (false, meshes.as_slice())] {
+            let mut frame = Frame::new(embed::SIZE, embed::SIZE);
+            frame.clear_color = Vec4::from_array(embed::CLEAR);
+            for ((modelview, values), mesh) in embed::grid_objects(&state, 6)
+                .into_iter()
+                .zip(meshes.iter().cycle())
+            {
+                let mut own = state;
+                (own.front, own.back, own.current_color) = (values.front, values.back, values.current_color);
+                frame
+                    .draws
+                    .push(Draw::new(mesh, modelview, embed::projection(), own));
+            }
+            let pixels = r.render(&frame).unwrap();
+            let what = format!(
+                "{}_grid_{}",
+                mode.name(),
+                if merged { "one_mesh" } else { "a_mesh_each" }
+            );
+            assert_same_bytes(&pixels, &embedded[0], &what);
+        }
+        // Thirty-six teapots in thirty-six colors, not one.
+        let image = image::RgbaImage::from_raw(embed::SIZE, embed::SIZE, embedded[0].clone()).unwrap();
+        let colors: std::collections::HashSet<[u8; 4]> = image.pixels().map(|p| p.0).collect();
+        assert!(colors.len() > 200, "{}: {} colors", mode.name(), colors.len());
+    }
+    finish(r);
+}
+
 /// Without a color array every vertex takes GL's current color: the same bytes as a color
 /// array holding that color at every vertex, lit through COLOR_MATERIAL in each mode, and
 /// unlit.
@@ -95,6 +147,7 @@ fn without_a_color_array_every_vertex_takes_the_current_color() {
         .map(|s| embed::EmbedFrame {
             state: *s,
             color_array: false,
+            grid: 0,
         })
         .collect();
     let embedded =
@@ -126,6 +179,7 @@ fn the_uniform_block_may_live_in_another_descriptor_set() {
         .map(|&mode| embed::EmbedFrame {
             state: embed::gl_state(mode).unwrap().lighting,
             color_array: true,
+            grid: 0,
         })
         .collect();
     let in_set_0 = embed::render_frames_in_set(None, true, 64, 0, &frames).unwrap();
@@ -384,6 +438,7 @@ fn the_lighting_variants_draw_the_same_bytes_through_a_callers_device() {
         .map(|&mode| embed::EmbedFrame {
             state: variant(mode),
             color_array: true,
+            grid: 0,
         })
         .collect();
     let embedded =

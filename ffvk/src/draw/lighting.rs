@@ -81,7 +81,7 @@
 use std::sync::Arc;
 
 use ash::vk;
-use glam::Mat4;
+use glam::{Mat4, Vec4};
 
 use super::pipeline::{
     PipelineConfig, Pipelines, RasterState, Specialize, Target, VertexInput, MAX_AUTO_VARIANTS,
@@ -90,7 +90,7 @@ use super::record::{record, record_in_run, Bound, Geometry, RunState};
 use super::ring::{Pushed, Ring, RingUse};
 use super::texture::TextureBinding;
 use crate::error::{LightingError, Result};
-use crate::gl::state::{LightingMode, LightingState};
+use crate::gl::state::{LightingMode, LightingState, Material};
 use crate::gpu::layout::{DrawRecord, SpecKey, StateBlock, StateKey};
 use crate::vk::Device;
 
@@ -160,6 +160,57 @@ with_fields!(LightingOptions {
     with_specialize => specialize: Specialize,
 });
 
+/// A draw's own values, the GL state programs change between draws without touching lights or
+/// switches: the two materials (`glMaterial`, or `COLOR_MATERIAL`'s tracking) and the current
+/// color (`glColor`). A [`LitDraw`] with its own values ([`LitDraw::with_values`]) takes them
+/// instead of its state's, so that draws which differ only in these can share one
+/// [`LightingState`]: an emulation layer keeps a state per change of lights or switches and
+/// these per draw (152 bytes instead of a 2.5 KB state).
+///
+/// ```
+/// use ffvk::gl::state::{Face, GlState, MaterialParam};
+/// use ffvk::glam::Vec4;
+/// use ffvk::DrawValues;
+///
+/// let mut gl = GlState::new();
+/// gl.material(Face::Front, MaterialParam::Diffuse(Vec4::new(1.0, 0.0, 0.0, 1.0))).unwrap();
+/// let red = DrawValues::of(&gl.lighting);
+/// assert_eq!(red.front.diffuse, Vec4::new(1.0, 0.0, 0.0, 1.0));
+/// assert_eq!(red.current_color, Vec4::ONE);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub struct DrawValues {
+    /// The front material (also the back's, unless two-sided lighting is on).
+    pub front: Material,
+    /// The back material.
+    pub back: Material,
+    /// GL's current color: every vertex's color when the mesh has no color array.
+    pub current_color: Vec4,
+}
+
+impl DrawValues {
+    /// The values `state` holds now: after a program's `glMaterial`, `glColor` and
+    /// `glColorMaterial` calls on a [`GlState`](crate::gl::state::GlState), its materials
+    /// already carry what color-material tracking wrote into them.
+    pub fn of(state: &LightingState) -> Self {
+        DrawValues {
+            front: state.front,
+            back: state.back,
+            current_color: state.current_color,
+        }
+    }
+
+    /// These materials and current color.
+    pub fn new(front: Material, back: Material, current_color: Vec4) -> Self {
+        DrawValues {
+            front,
+            back,
+            current_color,
+        }
+    }
+}
+
 /// One lit draw: GL's state for it, its matrices, its raster state and the caller's buffers.
 #[derive(Debug, Clone, Copy)]
 #[non_exhaustive]
@@ -182,6 +233,9 @@ pub struct LitDraw<'a> {
     /// sampler (mipmaps where the min filter reads them) is the caller's to ensure, as GL's
     /// completeness rule is about the caller's image.
     pub texture: Option<&'a TextureBinding>,
+    /// The draw's own materials and current color, in place of `state`'s; `None` takes
+    /// `state`'s.
+    pub values: Option<DrawValues>,
 }
 
 impl<'a> LitDraw<'a> {
@@ -204,6 +258,7 @@ impl<'a> LitDraw<'a> {
             vertex_buffers,
             geometry,
             texture: None,
+            values: None,
         }
     }
 
@@ -218,6 +273,13 @@ impl<'a> LitDraw<'a> {
     #[must_use]
     pub fn with_texture(mut self, texture: Option<&'a TextureBinding>) -> Self {
         self.texture = texture;
+        self
+    }
+
+    /// This draw with its own materials and current color (`None`: its state's).
+    #[must_use]
+    pub fn with_values(mut self, values: Option<DrawValues>) -> Self {
+        self.values = values;
         self
     }
 }
@@ -351,7 +413,7 @@ impl Lighting {
     /// reads, and live until the command buffer has finished executing; the slot was begun
     /// with [`Lighting::begin_frame`] after its previous use finished.
     pub unsafe fn draw(&mut self, cmd: vk::CommandBuffer, slot: u32, draw: &LitDraw) -> Result<()> {
-        let staged = self.stage(slot, draw)?;
+        let staged = self.stage(slot, draw, false)?;
         // SAFETY: the caller's contract above.
         unsafe { self.record_staged(cmd, &staged, draw) };
         Ok(())
@@ -360,8 +422,10 @@ impl Lighting {
     /// The first half of [`Lighting::draw`]: checks the draw, packs its state into the slot's
     /// uniform memory and finds its pipeline. What it returns may be recorded any number of
     /// times in the slot's frame ([`Lighting::record_staged`]): a frame repeated for
-    /// measurement writes its uniforms once.
-    pub(crate) fn stage(&mut self, slot: u32, draw: &LitDraw) -> Result<Staged> {
+    /// measurement writes its uniforms once. `same_state` says that the draw's state and
+    /// projection are those of the draw staged just before in this slot (the same borrowed
+    /// state in one run, which cannot have changed in between): its block is reused unchecked.
+    pub(crate) fn stage(&mut self, slot: u32, draw: &LitDraw, same_state: bool) -> Result<Staged> {
         let bindings = &self.pipelines.config().vertex_input.bindings;
         if draw.vertex_buffers.len() != bindings.len() {
             return Err(LightingError::VertexBuffers {
@@ -370,13 +434,17 @@ impl Lighting {
             }
             .into());
         }
-        let record = DrawRecord::new(draw.state, draw.modelview)?;
-        let key = StateKey::new(draw.state, draw.projection);
-        let same_state = self
-            .last
-            .as_ref()
-            .is_some_and(|last| last.slot == slot && last.key == key);
+        let record = match &draw.values {
+            Some(v) => {
+                DrawRecord::with_values(draw.state, (&v.front, &v.back, v.current_color), draw.modelview)?
+            }
+            None => DrawRecord::new(draw.state, draw.modelview)?,
+        };
+        let same_state = self.last.as_ref().is_some_and(|last| {
+            last.slot == slot && (same_state || last.key == StateKey::new(draw.state, draw.projection))
+        });
         if !same_state {
+            let key = StateKey::new(draw.state, draw.projection);
             let block = StateBlock::new(draw.state, draw.projection)?;
             let block = self
                 .states
@@ -420,6 +488,23 @@ impl Lighting {
         })
     }
 
+    /// Stages `draws` in order ([`Lighting::stage`]), telling each whether it shares the draw
+    /// before's state: the same borrowed [`LightingState`] (which cannot change while the run
+    /// borrows it) and an equal projection.
+    pub(crate) fn stage_run(&mut self, slot: u32, draws: &[LitDraw]) -> Result<Vec<Staged>> {
+        let mut staged = Vec::with_capacity(draws.len());
+        for (i, draw) in draws.iter().enumerate() {
+            let same = i
+                .checked_sub(1)
+                .and_then(|before| draws.get(before))
+                .is_some_and(|before| {
+                    std::ptr::eq(before.state, draw.state) && before.projection == draw.projection
+                });
+            staged.push(self.stage(slot, draw, same)?);
+        }
+        Ok(staged)
+    }
+
     /// Whether `draw` samples its texture: one is bound and `GL_TEXTURE_2D` is on.
     fn textured(draw: &LitDraw) -> bool {
         draw.texture.is_some() && draw.state.texture.enabled
@@ -439,10 +524,7 @@ impl Lighting {
     ///
     /// As [`Lighting::draw`], for every draw of the run.
     pub unsafe fn draw_run(&mut self, cmd: vk::CommandBuffer, slot: u32, draws: &[LitDraw]) -> Result<()> {
-        let staged = draws
-            .iter()
-            .map(|draw| self.stage(slot, draw))
-            .collect::<Result<Vec<_>>>()?;
+        let staged = self.stage_run(slot, draws)?;
         // SAFETY: the caller's contract above; each staged entry was staged for its draw.
         unsafe { self.record_staged_run(cmd, &staged, draws) };
         Ok(())

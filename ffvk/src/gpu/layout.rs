@@ -473,9 +473,19 @@ impl DrawRecord {
     /// Checks and packs a draw's own values: the materials and current color of `state` and
     /// the `modelview` (invertible, while lighting: normals need (M⁻¹)ᵀ).
     pub fn new(state: &LightingState, modelview: Mat4) -> Result<Self, StateError> {
-        state.front.validate()?;
-        state.back.validate()?;
-        crate::gl::state::finite_vec("GL_CURRENT_COLOR", state.current_color.to_array().as_slice())?;
+        Self::with_values(state, (&state.front, &state.back, state.current_color), modelview)
+    }
+
+    /// [`DrawRecord::new`] with the front and back materials and the current color given apart
+    /// from `state`, whose switches (`GL_LIGHTING`, `GL_RESCALE_NORMAL`) still apply.
+    pub fn with_values(
+        state: &LightingState,
+        (front, back, current_color): (&Material, &Material, glam::Vec4),
+        modelview: Mat4,
+    ) -> Result<Self, StateError> {
+        front.validate()?;
+        back.validate()?;
+        crate::gl::state::finite_vec("GL_CURRENT_COLOR", current_color.to_array().as_slice())?;
         if state.lighting {
             // A singular modelview would light with NaN normals.
             let det = Mat3::from_mat4(modelview).determinant();
@@ -505,13 +515,13 @@ impl DrawRecord {
         Ok(DrawRecord {
             modelview: modelview.to_cols_array(),
             normal_matrix: [
-                with_w(n.x_axis, state.front.shininess),
-                with_w(n.y_axis, state.back.shininess),
+                with_w(n.x_axis, front.shininess),
+                with_w(n.y_axis, back.shininess),
                 with_w(n.z_axis, rescale),
             ],
-            front: face(&state.front),
-            back: face(&state.back),
-            current_color: state.current_color.to_array(),
+            front: face(front),
+            back: face(back),
+            current_color: current_color.to_array(),
         })
     }
 }

@@ -624,10 +624,7 @@ impl Renderer {
         // draw records nothing; the time counts as recording, as it does in Lighting::draw.
         let staging = std::time::Instant::now();
         let lits = record::lit_draws(frame);
-        let staged = lits
-            .iter()
-            .map(|lit| self.lighting.stage(0, lit))
-            .collect::<Result<Vec<_>>>()?;
+        let staged = self.lighting.stage_run(0, &lits)?;
         let staging_ns = staging.elapsed().as_nanos() as f64;
         let record_ns = staging_ns + self.record(frame, pass, &lits, &staged)?;
         let wall_ns = self.submit_and_wait()? / f64::from(pass.repeat);
