@@ -220,6 +220,36 @@ fn main() {
     }
 }
 
+/// Host time per draw to record runs through `Lighting::draw_run`, in ns, one entry per frame.
+#[derive(Debug, Default)]
+pub struct RecordTimes {
+    /// Draws sharing one state, each with its own values (materials) and modelview.
+    pub shared_state_own_values: Vec<f64>,
+    /// Draws sharing one state, each with only its own modelview.
+    pub modelview_only: Vec<f64>,
+    /// Draws each with a whole state of its own (its material in it).
+    pub state_each: Vec<f64>,
+}
+
+/// How long recording costs an emulation layer: runs of `objects` draws, each its own draw
+/// command (a triangle of its own), recorded `frames` times after one warm-up frame and never
+/// submitted, on the device whose name contains `device_name`.
+pub fn record_times(device_name: Option<&str>, objects: u32, frames: u32) -> Result<RecordTimes, String> {
+    let mut app = App::new(device_name, false, SIZE)?;
+    app.time_runs(objects, frames)
+}
+
+/// What a frame draws with and into.
+struct Scene {
+    /// Positions (binding 0); normals and colors (binding 1).
+    buffers: [(vk::Buffer, u64); 2],
+    index_buffer: vk::Buffer,
+    index_count: u32,
+    readback: vk::Buffer,
+    color: (vk::Image, vk::ImageView),
+    depth: (vk::Image, vk::ImageView),
+}
+
 /// A buffer or image's memory.
 struct Allocation {
     memory: vk::DeviceMemory,
@@ -474,7 +504,8 @@ impl App {
         Ok((image, view))
     }
 
-    fn render(&mut self, frames: &[EmbedFrame], set_index: u32) -> Result<Vec<Vec<u8>>, String> {
+    /// The teapot's buffers, the readback buffer and the attachments, made on this device.
+    fn scene(&mut self) -> Result<Scene, String> {
         // The caller's vertex data: positions alone, then normals with 8-bit colors.
         let mesh = teapot().map_err(|e| e.to_string())?;
         let positions: Vec<[f32; 3]> = mesh.vertices.iter().map(|v| v.position).collect();
@@ -506,13 +537,27 @@ impl App {
             vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT,
             vk::ImageAspectFlags::DEPTH,
         )?;
+        Ok(Scene {
+            buffers: [(position_buffer, 0), (normal_buffer, 0)],
+            index_buffer,
+            index_count: mesh.indices.len() as u32,
+            readback,
+            color: (color, color_view),
+            depth: (depth, depth_view),
+        })
+    }
 
-        // ffvk on the caller's device.
+    /// ffvk on this device: the device wrapped, and a `Lighting` for the vertex layout with
+    /// the color array and one without (GL's current color), the block at `set_index`.
+    fn lightings(
+        &self,
+        set_index: u32,
+    ) -> Result<(std::sync::Arc<ffvk::vk::Device>, Lighting, Lighting), String> {
         let mut features = EnabledFeatures::default();
         features.dynamic_rendering = true;
         features.provoking_vertex_last = true;
         // SAFETY: the device was made from this physical device of this instance with these
-        // features, and outlives `lighting` (dropped at the end of this function).
+        // features, and outlives the returned device (the caller drops it before `self`).
         let ffvk_device = unsafe {
             ffvk::vk::Device::from_caller(&self.instance, self.physical, self.device.clone(), features)
         }
@@ -539,10 +584,16 @@ impl App {
             options.set_index = set_index;
             options
         };
-        let mut with_color_array =
+        let with_color_array =
             Lighting::new(&ffvk_device, &options(vertex_input)).map_err(|e| e.to_string())?;
-        let mut with_current_color =
+        let with_current_color =
             Lighting::new(&ffvk_device, &options(without_colors)).map_err(|e| e.to_string())?;
+        Ok((ffvk_device, with_color_array, with_current_color))
+    }
+
+    fn render(&mut self, frames: &[EmbedFrame], set_index: u32) -> Result<Vec<Vec<u8>>, String> {
+        let scene = self.scene()?;
+        let (ffvk_device, mut with_color_array, mut with_current_color) = self.lightings(set_index)?;
         let mut raster = RasterState::default();
         raster.depth_test = true;
 
@@ -554,18 +605,18 @@ impl App {
                 &mut with_current_color
             };
             lighting.begin_frame(0).map_err(|e| e.to_string())?;
-            self.begin(color, depth, color_view, depth_view)?;
-            let geometry = Geometry::indexed(index_buffer, vk::IndexType::UINT32, mesh.indices.len() as u32);
-            let buffers = [(position_buffer, 0), (normal_buffer, 0)];
+            self.begin(&scene)?;
+            let geometry = Geometry::indexed(scene.index_buffer, vk::IndexType::UINT32, scene.index_count);
+            let buffers = &scene.buffers;
             let draws: Vec<LitDraw> = if frame.grid == 0 {
-                vec![LitDraw::new(&frame.state, view(), projection(), &buffers, geometry).with_raster(raster)]
+                vec![LitDraw::new(&frame.state, view(), projection(), buffers, geometry).with_raster(raster)]
             } else {
                 // Many objects under one state: each draw carries only its modelview and its
                 // own values, and borrows the state it shares with the others.
                 grid_objects(&frame.state, frame.grid)
                     .into_iter()
                     .map(|(modelview, values)| {
-                        LitDraw::new(&frame.state, modelview, projection(), &buffers, geometry)
+                        LitDraw::new(&frame.state, modelview, projection(), buffers, geometry)
                             .with_raster(raster)
                             .with_values(Some(values))
                     })
@@ -577,7 +628,7 @@ impl App {
             // attachments of the target's formats, viewport and scissor set; the buffers live
             // until after the fence wait below; slot 0 is free (the last frame was waited for).
             unsafe { lighting.draw_run(self.cmd, 0, &draws) }.map_err(|e| e.to_string())?;
-            images.push(self.finish(color, readback)?);
+            images.push(self.finish(&scene)?);
         }
         drop(with_color_array);
         drop(with_current_color);
@@ -585,14 +636,86 @@ impl App {
         Ok(images)
     }
 
+    /// Host time to record runs of `objects` draws (see [`record_times`]), `frames` of each kind.
+    fn time_runs(&mut self, objects: u32, frames: u32) -> Result<RecordTimes, String> {
+        let scene = self.scene()?;
+        let (ffvk_device, mut lighting, _) = self.lightings(0)?;
+        let mut gl = gl_state(LightingMode::Vertex).map_err(|e| e.to_string())?;
+        gl.enable(Cap::Normalize).map_err(|e| e.to_string())?;
+        let state = gl.lighting;
+        let grid = (f64::from(objects).sqrt().ceil() as u32).max(1);
+        let objects_here: Vec<(Mat4, DrawValues)> = grid_objects(&state, grid)
+            .into_iter()
+            .take(objects as usize)
+            .collect();
+        // A triangle of its own per draw: no two draws merge, each is a command.
+        let triangles = scene.index_count / 3;
+        let geometry = |k: usize| {
+            Geometry::indexed(scene.index_buffer, vk::IndexType::UINT32, 3)
+                .with_first(3 * (k as u32 % triangles))
+        };
+        let states: Vec<ffvk::gl::state::LightingState> = objects_here
+            .iter()
+            .map(|(_, v)| {
+                let mut own = state;
+                (own.front, own.back, own.current_color) = (v.front, v.back, v.current_color);
+                own
+            })
+            .collect();
+        let buffers = &scene.buffers;
+        let shared: Vec<LitDraw> = objects_here
+            .iter()
+            .enumerate()
+            .map(|(k, (mv, v))| {
+                LitDraw::new(&state, *mv, projection(), buffers, geometry(k)).with_values(Some(*v))
+            })
+            .collect();
+        let modelview_only: Vec<LitDraw> = objects_here
+            .iter()
+            .enumerate()
+            .map(|(k, (mv, _))| LitDraw::new(&state, *mv, projection(), buffers, geometry(k)))
+            .collect();
+        let state_each: Vec<LitDraw> = objects_here
+            .iter()
+            .zip(&states)
+            .enumerate()
+            .map(|(k, ((mv, _), own))| LitDraw::new(own, *mv, projection(), buffers, geometry(k)))
+            .collect();
+        let mut times = RecordTimes::default();
+        for (draws, out) in [
+            (&shared, &mut times.shared_state_own_values),
+            (&modelview_only, &mut times.modelview_only),
+            (&state_each, &mut times.state_each),
+        ] {
+            // One frame first: the pipeline is made and the frame slot's memory grows.
+            for frame in 0..=frames {
+                lighting.begin_frame(0).map_err(|e| e.to_string())?;
+                self.begin(&scene)?;
+                let start = std::time::Instant::now();
+                // SAFETY: as in `render`; the command buffer is never submitted, and is reset
+                // by the next `begin`.
+                unsafe { lighting.draw_run(self.cmd, 0, draws) }.map_err(|e| e.to_string())?;
+                let ns = start.elapsed().as_nanos() as f64;
+                // SAFETY: ends the pass `begin` started and the recording.
+                unsafe {
+                    self.device.cmd_end_rendering(self.cmd);
+                    self.device
+                        .end_command_buffer(self.cmd)
+                        .map_err(|e| e.to_string())?;
+                }
+                if frame > 0 {
+                    out.push(ns / draws.len().max(1) as f64);
+                }
+            }
+        }
+        drop(lighting);
+        drop(ffvk_device);
+        Ok(times)
+    }
+
     /// Begins the command buffer and the rendering pass: clear color and depth.
-    fn begin(
-        &self,
-        color: vk::Image,
-        depth: vk::Image,
-        color_view: vk::ImageView,
-        depth_view: vk::ImageView,
-    ) -> Result<(), String> {
+    fn begin(&self, scene: &Scene) -> Result<(), String> {
+        let ((color, color_view), (depth, depth_view)) = (scene.color, scene.depth);
         let d = &self.device;
         let barriers = [
             vk::ImageMemoryBarrier2::default()
@@ -677,7 +800,8 @@ impl App {
     }
 
     /// Ends the pass, copies the image out, submits, waits and returns the pixels.
-    fn finish(&self, color: vk::Image, readback: vk::Buffer) -> Result<Vec<u8>, String> {
+    fn finish(&self, scene: &Scene) -> Result<Vec<u8>, String> {
+        let (color, readback) = (scene.color.0, scene.readback);
         let d = &self.device;
         let to_transfer = [vk::ImageMemoryBarrier2::default()
             .src_stage_mask(vk::PipelineStageFlags2::COLOR_ATTACHMENT_OUTPUT)

@@ -88,6 +88,11 @@ pub use ash;
 /// [`Vec4`](glam::Vec4), the reference's `DVec`s) are `glam` types in ffvk's API, so a caller's
 /// must come from this very version. Use `ffvk::glam` (or pin the same version) to be sure.
 pub use glam;
+/// The `image` ffvk is built with (feature `images`): [`images::save_png`] and the
+/// comparisons take its `RgbaImage`, so a caller holding raw RGBA bytes builds one from this
+/// very version (`ffvk::image::RgbaImage::from_raw`).
+#[cfg(feature = "images")]
+pub use image;
 
 /// The README's Rust snippets, compiled (and those that can run, run) by `cargo test --doc`.
 #[cfg(doctest)]

@@ -12,6 +12,12 @@
 
 use std::time::Instant;
 
+// The embedding example's caller-side renderer (its own instance, device and command buffer
+// with plain ash): what an emulation layer records through, measured as it would.
+#[path = "../../ffvk/examples/embed.rs"]
+#[allow(dead_code, clippy::all)]
+mod embed;
+
 use glam::{Mat4, Vec3, Vec4};
 use serde::Serialize;
 
@@ -41,6 +47,14 @@ pub struct DrawCost {
     /// Packing a whole draw alone, its state block and record ([`DrawBlock::new`]), in µs per
     /// draw: what a draw would cost if every draw changed the lights.
     pub pack_us_per_draw: Spread,
+    /// Through `Lighting::draw_run` on a caller's device (the embedding example), each draw a
+    /// command of its own: draws sharing one state, each with its own material
+    /// (`LitDraw::with_values`) and modelview, µs per draw.
+    pub run_own_values_us_per_draw: Spread,
+    /// The same, each draw changing only its modelview.
+    pub run_modelview_only_us_per_draw: Spread,
+    /// The same, each draw with a whole state of its own.
+    pub run_state_each_us_per_draw: Spread,
     /// Creating the pipeline of a new specialization key, in ms.
     pub new_key_create_ms: Spread,
     /// The first frame drawing with a new key, less the same frame drawn again, in ms
@@ -90,6 +104,7 @@ fn new_key_state(k: usize) -> Result<GlState> {
 /// draws a frame over `frames` frames, and `new_keys` (at most 16) new specialization keys.
 pub fn measure_draw_cost(
     renderer: &mut Renderer,
+    device: Option<&str>,
     draws: usize,
     frames: u32,
     new_keys: usize,
@@ -151,6 +166,9 @@ pub fn measure_draw_cost(
         let again = renderer.measure(&one)?.wall_ns;
         first_draw.push((first - again) / 1e6);
     }
+    let run = embed::record_times(device, draws as u32, frames)
+        .map_err(|e| Error::Bench(format!("recording runs on a caller's device: {e}")))?;
+    let us = |ns: &[f64]| ns.iter().map(|ns| ns / 1e3).collect::<Vec<_>>();
     let spread = |v: &[f64]| Spread::of(v).expect("at least one sample");
     Ok(DrawCost {
         draws,
@@ -158,6 +176,9 @@ pub fn measure_draw_cost(
         warm_us_per_draw: spread(&record),
         modelview_only_us_per_draw: spread(&modelview_only),
         pack_us_per_draw: spread(&pack),
+        run_own_values_us_per_draw: spread(&us(&run.shared_state_own_values)),
+        run_modelview_only_us_per_draw: spread(&us(&run.modelview_only)),
+        run_state_each_us_per_draw: spread(&us(&run.state_each)),
         new_key_create_ms: spread(&create),
         new_key_first_draw_ms: spread(&first_draw),
     })

@@ -502,6 +502,7 @@ pub fn run_sweep(
     let mut recorder = Renderer::new(&recorder_options)?;
     let draw_cost = Some(measure_draw_cost(
         &mut recorder,
+        options.device.as_deref(),
         config.record_draws,
         config.frames.clamp(1, 21),
         config.new_keys,

@@ -232,8 +232,11 @@ impl Device {
 
     /// Wraps a device the caller created and keeps: ffvk creates its objects on it and frees
     /// them, and never destroys the device, submits to its queues or waits on it. Fails with
-    /// [`Error::MissingFeature`] when the device is older than Vulkan 1.3, when `enabled`
-    /// lacks dynamic rendering, or when it claims a feature the device does not support.
+    /// [`Error::NotEnabled`] when `enabled` lacks dynamic rendering, and with
+    /// [`Error::MissingFeature`] when the device is older than Vulkan 1.3 or when `enabled`
+    /// claims a feature the device does not support. The caller's instance asks for
+    /// `apiVersion` 1.3 (ffvk records `vkCmdBeginRendering`'s pipelines and reads their
+    /// 1.3 limits); `synchronization2` is the caller's own choice, ffvk records no barriers.
     ///
     /// # Safety
     ///
