@@ -74,8 +74,9 @@ layout(std140, set = 0, binding = 0) uniform State {
 
 // The draw's own materials (its DrawRecord, src/gpu/layout.rs): each stage's main sets them
 // before lighting, from the record's instance attributes (vertex stages, record.glsl) or from
-// flat inputs (the fragment stage of the fragment mode). Per-draw values are vertex data, not
-// uniforms: a frame of draws that change only these binds nothing between them.
+// the record as a uniform block (the fragment stage of the fragment mode). Per-draw values are
+// vertex data, not uniforms, in the vertex stages: a frame of draws that change only these
+// binds nothing between them in the vertex and flat modes.
 Material draw_front;
 Material draw_back;
 

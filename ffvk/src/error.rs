@@ -227,7 +227,7 @@ pub enum LightingError {
         slots: u32,
     },
     /// The set index is past what the device can bind.
-    #[error("set_index {index} leaves no room for the texture's set after it within the device's maxBoundDescriptorSets: expected 0..{max}")]
+    #[error("set_index {index} leaves no room for the texture's and the draw records' sets after it within the device's maxBoundDescriptorSets: expected 0..={max}")]
     SetIndex {
         /// The index given.
         index: u32,

@@ -168,6 +168,22 @@ fn the_state_block_matches_the_glsl_in_every_stage() {
 }
 
 #[test]
+fn the_record_block_of_the_fragment_stages_matches_the_draw_record() {
+    let mut seen = 0;
+    for (stage, spirv) in stages()
+        .into_iter()
+        .filter(|(s, _)| s.starts_with("fragment") && s.ends_with(".frag"))
+    {
+        let r = reflect(spirv);
+        let block = r.struct_id("Record");
+        let want = rust_offsets!(DrawRecord: modelview, normal_matrix, front, back, current_color);
+        assert_eq!(r.members(block), want, "{stage}: Record block offsets");
+        seen += 1;
+    }
+    assert_eq!(seen, 4, "the fragment mode's four fragment stages");
+}
+
+#[test]
 fn the_draw_records_attributes_sit_at_the_locations_the_vertex_stages_read() {
     let at = |offset: usize| RECORD_FIRST_LOCATION + (offset / 16) as u32;
     let nm = offset_of!(DrawRecord, normal_matrix);

@@ -9,11 +9,13 @@
 //! creates: one descriptor set layout (binding 0, `UNIFORM_BUFFER_DYNAMIC`, vertex and
 //! fragment stages: the state block; empty layouts for the sets below
 //! [`LightingOptions::set_index`]), the texture's layout for the set after it (binding 0,
-//! `COMBINED_IMAGE_SAMPLER`, fragment stage), one pipeline layout (no push constants), a
+//! `COMBINED_IMAGE_SAMPLER`, fragment stage), the draw records' layout for the set after that
+//! (binding 0, `UNIFORM_BUFFER_DYNAMIC`, fragment stage: the fragment mode reads a draw's
+//! materials there), one pipeline layout (no push constants), a
 //! pipeline cache unless the caller passes one, the pipelines (created on first use per
 //! lighting mode, specialization key and [`RasterState`]), and for each frame slot
-//! host-visible, coherent memory for the state blocks (uniform buffers with their descriptor
-//! sets) and the draw records (vertex buffers); and the [`TextureBinding`]s the caller asks
+//! host-visible, coherent memory for the state blocks and the draw records (buffers with
+//! their descriptor sets); and the [`TextureBinding`]s the caller asks
 //! for (a descriptor set naming the caller's image view and sampler), which the caller holds.
 //! Dropping it frees all of that; the caller must first make sure no submitted command buffer
 //! still uses it (wait for its fences or the device).
@@ -26,8 +28,9 @@
 //! [`Lighting::draw`] records, into the caller's command buffer inside the caller's dynamic
 //! rendering pass (`vkCmdBeginRendering`; render passes are not supported): bind pipeline,
 //! bind the state block's descriptor set at its dynamic offset (and, textured, the texture's
-//! set after it), bind the caller's vertex buffers and ffvk's record buffer (and the caller's
-//! index buffer), draw with `firstInstance` naming the draw's record. The commands read the
+//! set after it; in the fragment mode, the record's set at the record's dynamic offset), bind
+//! the caller's vertex buffers and ffvk's record buffer (and the caller's index buffer), draw
+//! with `firstInstance` naming the draw's record. The commands read the
 //! caller's vertex and index buffers and ffvk's per-frame memory, and write the caller's color
 //! attachment (and depth attachment when the draw's [`RasterState`] tests depth), with
 //! blending as that state says. They need the viewport and scissor the caller sets (both are
@@ -53,7 +56,9 @@
 //! and then bound at a new dynamic offset; the pipeline, too, is looked up only then (about
 //! 0.7 µs more). [`Lighting::draw_run`] is the recording scope: its draws bind only what
 //! changes between them, and consecutive draws of the same geometry, buffers, pipeline, state
-//! and texture become instances of one draw command (BENCHMARKS.md, "Many draws"). A
+//! and texture become instances of one draw command in the vertex and flat modes (the
+//! fragment mode binds each draw's record for its fragment stage, a fragment constant buffer
+//! per draw on lavapipe; BENCHMARKS.md, "Many draws"). A
 //! pipeline is made per lighting mode, [`RasterState`], texturing and specialization key (the
 //! switches and the kinds of the enabled lights, never materials, colors, matrices or light
 //! values): about 15 ms on lavapipe, on the first draw that needs it unless
@@ -102,6 +107,9 @@ pub(crate) struct Staged {
     state: (vk::DescriptorSet, u32),
     /// The record's buffer and index.
     record: (vk::Buffer, u32),
+    /// The record chunk's set and the record's offset, for a fragment stage that reads it as a
+    /// uniform block (the fragment mode).
+    record_block: Option<(vk::DescriptorSet, u32)>,
 }
 
 /// The state block the last staged draw used, and the pipelines found for it: the next draw
@@ -311,12 +319,12 @@ impl Lighting {
     /// ([`Device::from_caller`](crate::vk::Device::from_caller)). Fails on an invalid vertex
     /// layout, zero frame slots, or a set index the device cannot bind.
     pub fn new(device: &Arc<Device>, options: &LightingOptions) -> Result<Self> {
-        // The texture's set goes right after the block's.
+        // The texture's set goes right after the block's, the records' after it.
         let max_sets = device.limits.max_bound_descriptor_sets;
-        if options.set_index + 1 >= max_sets {
+        if options.set_index + 2 >= max_sets {
             return Err(LightingError::SetIndex {
                 index: options.set_index,
-                max: max_sets - 1,
+                max: max_sets.saturating_sub(3),
             }
             .into());
         }
@@ -478,13 +486,16 @@ impl Lighting {
             .as_ref()
             .map(|last| last.block)
             .ok_or(crate::Error::Internal("no state block after one was staged"))?;
-        let record = self
-            .records
-            .push(slot, bytemuck::bytes_of(&record), self.pipelines.set_layout())?;
+        let record = self.records.push(
+            slot,
+            bytemuck::bytes_of(&record),
+            self.pipelines.record_set_layout(),
+        )?;
         Ok(Staged {
             pipeline,
             state: (block.set, block.offset),
             record: (record.buffer, record.index),
+            record_block: (mode == LightingMode::Fragment).then_some((record.set, record.offset)),
         })
     }
 
@@ -551,6 +562,7 @@ impl Lighting {
                 (Some(a), Some(b), Some(da), Some(db)) => {
                     (a.pipeline, a.state, a.record.0) == (b.pipeline, b.state, b.record.0)
                         && a.record.1.checked_add(1) == Some(b.record.1)
+                        && a.record_block.is_none()
                         && da.geometry == db.geometry
                         && da.vertex_buffers == db.vertex_buffers
                         && self.texture_set(da) == self.texture_set(db)
@@ -604,6 +616,7 @@ impl Lighting {
             record_buffer: staged.record.0,
             first_record: staged.record.1,
             draws: 1,
+            record_block: staged.record_block,
         }
     }
 

@@ -603,6 +603,9 @@ pub struct Pipelines {
     set_layout: DescriptorSetLayout,
     /// The texture's set, right after `set_layout`'s.
     texture_set_layout: DescriptorSetLayout,
+    /// The draw records' set as the fragment mode's fragment stage reads them, after the
+    /// texture's.
+    record_set_layout: DescriptorSetLayout,
     /// Empty layouts for the sets below `set_index`.
     _lower_sets: Vec<DescriptorSetLayout>,
     config: PipelineConfig,
@@ -624,9 +627,16 @@ impl Pipelines {
             .map(|_| DescriptorSetLayout::new(device, &[]))
             .collect::<Result<Vec<_>>>()?;
         let texture_set_layout = super::texture::set_layout(device)?;
+        let record_bindings = [vk::DescriptorSetLayoutBinding::default()
+            .binding(0)
+            .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC)
+            .descriptor_count(1)
+            .stage_flags(vk::ShaderStageFlags::FRAGMENT)];
+        let record_set_layout = DescriptorSetLayout::new(device, &record_bindings)?;
         let mut set_layouts: Vec<&DescriptorSetLayout> = lower_sets.iter().collect();
         set_layouts.push(&set_layout);
         set_layouts.push(&texture_set_layout);
+        set_layouts.push(&record_set_layout);
         let layout = PipelineLayout::new(device, &set_layouts)?;
         let (cache, own_cache) = match config.cache {
             Some(caller) => (caller, None),
@@ -642,6 +652,7 @@ impl Pipelines {
             layout,
             set_layout,
             texture_set_layout,
+            record_set_layout,
             _lower_sets: lower_sets,
             config,
             device: device.clone(),
@@ -658,6 +669,13 @@ impl Pipelines {
     /// set after the uniform block's.
     pub fn texture_set_layout(&self) -> &DescriptorSetLayout {
         &self.texture_set_layout
+    }
+
+    /// The layout of a record chunk's descriptor set (binding 0: the draw's record, at a
+    /// dynamic offset, read by the fragment mode's fragment stage), two sets after the state
+    /// block's.
+    pub fn record_set_layout(&self) -> &DescriptorSetLayout {
+        &self.record_set_layout
     }
 
     /// The pipeline layout every pipeline uses.

@@ -134,6 +134,9 @@ pub(crate) struct Bound<'a> {
     /// How many draws of the same geometry this one command draws, their records consecutive
     /// from `first_record`: instances of one draw.
     pub draws: u32,
+    /// For a pipeline whose fragment stage reads the record as a uniform block (the fragment
+    /// mode): the record chunk's set, bound at `set_index + 2`, and the record's offset in it.
+    pub record_block: Option<(vk::DescriptorSet, u32)>,
 }
 
 /// What a run of draws last bound: a draw in the same run binds only what differs, since no
@@ -144,6 +147,7 @@ pub(crate) struct Bound<'a> {
 pub(crate) struct RunState {
     pipeline: Option<vk::Pipeline>,
     state_block: Option<(vk::DescriptorSet, u32)>,
+    record_block: Option<(vk::DescriptorSet, u32)>,
     texture_set: Option<vk::DescriptorSet>,
     vertex_buffers: Vec<(u32, vk::Buffer, u64)>,
     index_buffer: Option<(vk::Buffer, u64, vk::IndexType)>,
@@ -199,6 +203,23 @@ pub(crate) unsafe fn record_in_run(
                 bound.set_index,
                 &[bound.set],
                 &[bound.uniform_offset],
+            )
+        };
+    }
+    if let Some((set, offset)) = bound
+        .record_block
+        .filter(|&block| run.record_block != Some(block))
+    {
+        run.record_block = Some((set, offset));
+        // SAFETY: as above; the record's set is two after the block's, one dynamic offset.
+        unsafe {
+            device.cmd_bind_descriptor_sets(
+                cmd,
+                vk::PipelineBindPoint::GRAPHICS,
+                bound.layout,
+                bound.set_index + 2,
+                &[set],
+                &[offset],
             )
         };
     }

@@ -27,7 +27,9 @@ pub(crate) enum RingUse {
     /// whose dynamic offset picks the block.
     Uniforms,
     /// Vertex data read per instance: a chunk is bound as a vertex buffer at offset 0 and a
-    /// draw's `firstInstance` picks its element.
+    /// draw's `firstInstance` picks its element; each chunk also has a descriptor set
+    /// (`UNIFORM_BUFFER_DYNAMIC`, binding 0) through which a dynamic offset picks the same
+    /// element as a uniform block.
     InstanceData,
 }
 
@@ -36,7 +38,7 @@ pub(crate) enum RingUse {
 pub(crate) struct Pushed {
     /// Its chunk's buffer.
     pub buffer: vk::Buffer,
-    /// Its chunk's descriptor set ([`RingUse::Uniforms`]), else null.
+    /// Its chunk's descriptor set.
     pub set: vk::DescriptorSet,
     /// Its index in the chunk: the byte offset is `index` times the ring's stride.
     pub index: u32,
@@ -47,10 +49,10 @@ pub(crate) struct Pushed {
 /// Elements the first chunk of a slot holds.
 const FIRST_CHUNK: u64 = 64;
 
-/// One buffer of elements and, for uniform blocks, the descriptor set that points at it.
+/// One buffer of elements and the descriptor set that points at it.
 struct Chunk {
     // Field order is drop order: the set's pool before the buffer it points at.
-    descriptors: Option<DescriptorPool>,
+    descriptors: DescriptorPool,
     buffer: Buffer,
     capacity: u64,
 }
@@ -81,12 +83,17 @@ impl Ring {
             return Err(LightingError::NoFrameSlots.into());
         }
         let size = size as u64;
+        let align = device.limits.min_uniform_buffer_offset_alignment.max(16);
         let stride = match use_ {
-            RingUse::Uniforms => {
-                let align = device.limits.min_uniform_buffer_offset_alignment.max(16);
-                size.div_ceil(align) * align
+            RingUse::Uniforms => size.div_ceil(align) * align,
+            // The instance stride is the element's size; Vulkan caps the alignment at 256,
+            // which a record's size is a multiple of.
+            RingUse::InstanceData if size % align == 0 => size,
+            RingUse::InstanceData => {
+                return Err(Error::Internal(
+                    "an instance element whose size is not a multiple of the uniform offset alignment",
+                ))
             }
-            RingUse::InstanceData => size,
         };
         Ok(Ring {
             slots: (0..slots).map(|_| Slot::default()).collect(),
@@ -119,8 +126,8 @@ impl Ring {
         Ok(())
     }
 
-    /// Stores `bytes` (one element) for a draw of `slot`; `set_layout` is the layout of a
-    /// uniform ring's descriptor sets. Returns where it lies.
+    /// Stores `bytes` (one element) for a draw of `slot`; `set_layout` is the layout of the
+    /// chunks' descriptor sets. Returns where it lies.
     pub(crate) fn push(
         &mut self,
         slot: u32,
@@ -155,10 +162,7 @@ impl Ring {
         let too_many = || LightingError::TooManyDraws { draws: index + 1 };
         Ok(Pushed {
             buffer: chunk.buffer.raw(),
-            set: chunk
-                .descriptors
-                .as_ref()
-                .map_or(vk::DescriptorSet::null(), DescriptorPool::set),
+            set: chunk.descriptors.set(),
             index: u32::try_from(index).map_err(|_| too_many())?,
             offset: u32::try_from(offset).map_err(|_| too_many())?,
         })
@@ -175,33 +179,30 @@ impl Chunk {
     ) -> Result<Self> {
         let (what, usage) = match use_ {
             RingUse::Uniforms => ("uniform buffer", vk::BufferUsageFlags::UNIFORM_BUFFER),
-            RingUse::InstanceData => ("draw record buffer", vk::BufferUsageFlags::VERTEX_BUFFER),
+            RingUse::InstanceData => (
+                "draw record buffer",
+                vk::BufferUsageFlags::VERTEX_BUFFER | vk::BufferUsageFlags::UNIFORM_BUFFER,
+            ),
         };
         let buffer = Buffer::new(device, what, capacity * stride, usage, MemoryUse::Uniforms)?;
-        let descriptors = match use_ {
-            RingUse::InstanceData => None,
-            RingUse::Uniforms => {
-                let sizes = [vk::DescriptorPoolSize {
-                    ty: vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC,
-                    descriptor_count: 1,
-                }];
-                let descriptors = DescriptorPool::with_one_set(device, &sizes, set_layout)?;
-                let info = [vk::DescriptorBufferInfo {
-                    buffer: buffer.raw(),
-                    offset: 0,
-                    range: size,
-                }];
-                let write = vk::WriteDescriptorSet::default()
-                    .dst_set(descriptors.set())
-                    .dst_binding(0)
-                    .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC)
-                    .buffer_info(&info);
-                // SAFETY: the set is new, so no command buffer uses it; the buffer is alive
-                // and as large as the range at every offset the ring hands out.
-                unsafe { device.raw.update_descriptor_sets(&[write], &[]) };
-                Some(descriptors)
-            }
-        };
+        let sizes = [vk::DescriptorPoolSize {
+            ty: vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC,
+            descriptor_count: 1,
+        }];
+        let descriptors = DescriptorPool::with_one_set(device, &sizes, set_layout)?;
+        let info = [vk::DescriptorBufferInfo {
+            buffer: buffer.raw(),
+            offset: 0,
+            range: size,
+        }];
+        let write = vk::WriteDescriptorSet::default()
+            .dst_set(descriptors.set())
+            .dst_binding(0)
+            .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC)
+            .buffer_info(&info);
+        // SAFETY: the set is new, so no command buffer uses it; the buffer is alive and as
+        // large as the range at every offset the ring hands out.
+        unsafe { device.raw.update_descriptor_sets(&[write], &[]) };
         Ok(Chunk {
             descriptors,
             buffer,

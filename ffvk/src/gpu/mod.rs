@@ -18,6 +18,9 @@
 //!   ffvk binds it as `UNIFORM_BUFFER_DYNAMIC`, a plain `UNIFORM_BUFFER` works the same;
 //! - in the `*_textured` variants, a `sampler2D` (combined image sampler) at set 1, binding 0,
 //!   read by the fragment stage (moved with the block: set_descriptor_set adds its offset);
+//! - in the `fragment*` variants, the draw's [`layout::DrawRecord`] again, as a std140 uniform
+//!   block `Record` at set 2, binding 0, read by the fragment stage (its materials; ffvk binds
+//!   the record buffer there as `UNIFORM_BUFFER_DYNAMIC` at the record's offset);
 //! - no push constants;
 //! - the specialization constants of [`layout::SpecConstant`] (`int`, constant_id 0-11, -1 =
 //!   read the uniform); [`layout::SpecKey::for_state`] gives a state's values;
