@@ -63,7 +63,14 @@ const VARIANTS: &[Variant] = &[
         vertex: "fragment.vert",
         fragment: "fragment.frag",
         defines: &[],
-        doc: "Eye-space position and normal interpolated; lit at each fragment.",
+        doc: "Eye-space position and normal interpolated; lit at each fragment; the materials read from the draw's record as a uniform block.",
+    },
+    Variant {
+        name: "fragment_small",
+        vertex: "fragment.vert",
+        fragment: "fragment.frag",
+        defines: &[("VARYING_MATERIALS", "1")],
+        doc: "`fragment` for small draws: the materials pass from the vertex stage as flat varyings, so consecutive draws bind nothing of their own.",
     },
 ];
 

@@ -7,11 +7,25 @@ layout(location = 0) in vec4 eye_position;
 layout(location = 1) in vec3 normal_direction;
 layout(location = 2) in float normal_length;
 layout(location = 3) in vec4 color;
+#ifdef VARYING_MATERIALS
+// The draw's materials (fragment.vert), for small draws: flat inputs cost lavapipe a setup
+// per attribute per triangle, which few triangles make cheaper than a draw's own uniform block.
+layout(location = 5) flat in vec4 front_a_cm;
+layout(location = 6) flat in vec4 front_d_cm;
+layout(location = 7) flat in vec4 front_s_cm;
+layout(location = 8) flat in vec4 front_e_cm;
+layout(location = 9) flat in vec4 back_a_cm;
+layout(location = 10) flat in vec4 back_d_cm;
+layout(location = 11) flat in vec4 back_s_cm;
+layout(location = 12) flat in vec4 back_e_cm;
+layout(location = 13) flat in vec2 s_rm;  // front, back
+#else
 // The draw's record (src/gpu/layout.rs, DrawRecord), the same bytes the vertex stage reads as
 // instance attributes, here as a uniform block at the draw's own offset: its materials. Flat
 // inputs would cost lavapipe a setup per attribute per triangle (about 15 ms per vec4 on a
 // million triangles); a block read at constant offsets costs a new fragment constant buffer per
-// draw. Set 2 is moved after the texture's set at pipeline creation.
+// draw (about 5 µs there), the better deal for draws of more than a few dozen triangles. Set 2
+// is moved after the texture's set at pipeline creation.
 layout(std140, set = 2, binding = 0) uniform Record {
     mat4 modelview;
     vec4 normal_matrix[3];  // w: front SHININESS, back SHININESS, RESCALE_NORMAL's factor
@@ -19,6 +33,7 @@ layout(std140, set = 2, binding = 0) uniform Record {
     vec4 back[4];
     vec4 current_color;
 } record;
+#endif
 
 layout(location = 0) out vec4 out_color;
 
@@ -32,10 +47,15 @@ layout(location = 4) in vec4 stq;
 #endif
 
 void main() {
+#ifdef VARYING_MATERIALS
+    draw_front = Material(front_a_cm, front_d_cm, front_s_cm, front_e_cm, s_rm.x);
+    draw_back = Material(back_a_cm, back_d_cm, back_s_cm, back_e_cm, s_rm.y);
+#else
     draw_front = Material(record.front[0], record.front[1], record.front[2], record.front[3],
                           record.normal_matrix[0].w);
     draw_back = Material(record.back[0], record.back[1], record.back[2], record.back[3],
                          record.normal_matrix[1].w);
+#endif
     LitColor lit;
     if (!lighting_enabled()) {
         lit.c_pri = color;

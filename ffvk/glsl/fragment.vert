@@ -14,6 +14,18 @@ layout(location = 0) out vec4 eye_position;
 layout(location = 1) out vec3 normal_direction;
 layout(location = 2) out float normal_length;
 layout(location = 3) out vec4 color;
+#ifdef VARYING_MATERIALS
+// The draw's materials, the same for every vertex of it (fragment.frag).
+layout(location = 5) flat out vec4 front_a_cm;
+layout(location = 6) flat out vec4 front_d_cm;
+layout(location = 7) flat out vec4 front_s_cm;
+layout(location = 8) flat out vec4 front_e_cm;
+layout(location = 9) flat out vec4 back_a_cm;
+layout(location = 10) flat out vec4 back_d_cm;
+layout(location = 11) flat out vec4 back_s_cm;
+layout(location = 12) flat out vec4 back_e_cm;
+layout(location = 13) flat out vec2 s_rm;  // front, back
+#endif
 
 #ifdef TEXTURE
 // Texture coordinates, as in vertex.vert.
@@ -31,6 +43,17 @@ void main() {
     gl_Position = state.projection * eye_position;
 #ifdef TEXTURE
     stq = state.texture_matrix * vec4(in_texcoord, 0.0, 1.0);
+#endif
+#ifdef VARYING_MATERIALS
+    front_a_cm = in_front_a_cm;
+    front_d_cm = in_front_d_cm;
+    front_s_cm = in_front_s_cm;
+    front_e_cm = in_front_e_cm;
+    back_a_cm = in_back_a_cm;
+    back_d_cm = in_back_d_cm;
+    back_s_cm = in_back_s_cm;
+    back_e_cm = in_back_e_cm;
+    s_rm = vec2(in_normal_matrix_0.w, in_normal_matrix_1.w);
 #endif
     vec3 n = eye_normal(in_normal);
     normal_length = length(n);

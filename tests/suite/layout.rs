@@ -121,8 +121,8 @@ fn stages() -> Vec<(String, &'static [u8])> {
     }
     assert_eq!(
         stages.len(),
-        40,
-        "twenty variants (ten, untextured and textured) of two stages"
+        48,
+        "twenty-four variants (twelve, untextured and textured) of two stages"
     );
     stages
 }
@@ -170,17 +170,19 @@ fn the_state_block_matches_the_glsl_in_every_stage() {
 #[test]
 fn the_record_block_of_the_fragment_stages_matches_the_draw_record() {
     let mut seen = 0;
-    for (stage, spirv) in stages()
-        .into_iter()
-        .filter(|(s, _)| s.starts_with("fragment") && s.ends_with(".frag"))
-    {
+    for (stage, spirv) in stages().into_iter().filter(|(s, _)| {
+        s.starts_with("fragment") && !s.starts_with("fragment_small") && s.ends_with(".frag")
+    }) {
         let r = reflect(spirv);
         let block = r.struct_id("Record");
         let want = rust_offsets!(DrawRecord: modelview, normal_matrix, front, back, current_color);
         assert_eq!(r.members(block), want, "{stage}: Record block offsets");
         seen += 1;
     }
-    assert_eq!(seen, 4, "the fragment mode's four fragment stages");
+    assert_eq!(
+        seen, 4,
+        "the fragment mode's four fragment stages for large draws"
+    );
 }
 
 #[test]
@@ -230,7 +232,7 @@ fn the_draw_records_attributes_sit_at_the_locations_the_vertex_stages_read() {
 }
 
 /// The stages that evaluate the lighting equation, and so read every specialization constant.
-const LIGHTING_STAGES: [&str; 10] = [
+const LIGHTING_STAGES: [&str; 12] = [
     "vertex.vert",
     "vertex_one_color.vert",
     "flat.vert",
@@ -241,6 +243,8 @@ const LIGHTING_STAGES: [&str; 10] = [
     "flat_current_color.vert",
     "flat_one_color_current_color.vert",
     "fragment_current_color.frag",
+    "fragment_small.frag",
+    "fragment_small_current_color.frag",
 ];
 
 #[test]

@@ -254,7 +254,12 @@ fn many_differently_lit_draws_in_their_own_process() {
         .unwrap();
     for specialize in [Specialize::Auto, Specialize::Never] {
         let mut r = renderer_with(specialize);
-        let sphere = r.upload(&MeshData::uv_sphere(8, 6)).unwrap();
+        // A sphere under the fragment mode's small-draw size and one over it: the small draws
+        // pass their materials as varyings, the others bind their records for the fragment
+        // stage, a new uniform offset every draw.
+        let spheres = [MeshData::uv_sphere(8, 6), MeshData::uv_sphere(8, 8)].map(|m| r.upload(&m).unwrap());
+        assert!(spheres[0].index_count() < ffvk::draw::pipeline::SMALL_DRAW_VERTICES);
+        assert!(spheres[1].index_count() >= ffvk::draw::pipeline::SMALL_DRAW_VERTICES);
         let checker = TextureImage::checker(8, 2, [255, 255, 255, 255], [90, 90, 90, 128]).unwrap();
         let texture = r.upload_texture(&checker, &Sampling::NEAREST).unwrap();
         let runs = LightingMode::ALL.into_iter().flat_map(|mode| {
@@ -291,9 +296,10 @@ fn many_differently_lit_draws_in_their_own_process() {
                 let mut frame = Frame::new(128, 128);
                 frame.draws = draws
                     .iter()
-                    .map(|(modelview, state)| {
+                    .zip(spheres.iter().cycle())
+                    .map(|((modelview, state), sphere)| {
                         Draw::new(
-                            &sphere,
+                            sphere,
                             spin * *modelview,
                             perspective(50.0, 1.0, 1.0, 60.0),
                             *state,

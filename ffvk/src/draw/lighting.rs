@@ -90,6 +90,7 @@ use glam::{Mat4, Vec4};
 
 use super::pipeline::{
     PipelineConfig, Pipelines, RasterState, Specialize, Target, VertexInput, MAX_AUTO_VARIANTS,
+    SMALL_DRAW_VERTICES,
 };
 use super::record::{record, record_in_run, Bound, Geometry, RunState};
 use super::ring::{Pushed, Ring, RingUse};
@@ -119,8 +120,8 @@ struct LastState {
     slot: u32,
     key: StateKey,
     block: Pushed,
-    /// (mode, raster state, textured) and the pipeline such a draw of this state uses.
-    pipelines: Vec<(LightingMode, RasterState, bool, vk::Pipeline)>,
+    /// (mode, raster state, (textured, small)) and the pipeline such a draw of this state uses.
+    pipelines: Vec<(LightingMode, RasterState, (bool, bool), vk::Pipeline)>,
 }
 
 /// How to make a [`Lighting`].
@@ -381,8 +382,26 @@ impl Lighting {
     /// that the first such draw does not pay for it (pipeline creation is the slow part of a
     /// cold start).
     pub fn prepare(&mut self, state: &LightingState, raster: RasterState, textured: bool) -> Result<()> {
-        self.pipeline_for(state, raster, textured && state.texture.enabled)
-            .map(|_| ())
+        self.prepare_sized(state, raster, textured, false)?;
+        if state.mode == LightingMode::Fragment {
+            // Small draws of the fragment mode have a pipeline of their own.
+            self.prepare_sized(state, raster, textured, true)?;
+        }
+        Ok(())
+    }
+
+    /// [`Lighting::prepare`] for draws of one size: `small` when they fetch fewer than
+    /// [`SMALL_DRAW_VERTICES`] vertices.
+    pub(crate) fn prepare_sized(
+        &mut self,
+        state: &LightingState,
+        raster: RasterState,
+        textured: bool,
+        small: bool,
+    ) -> Result<()> {
+        let textured = textured && state.texture.enabled;
+        let small = small && state.mode == LightingMode::Fragment;
+        self.pipeline_for(state, raster, (textured, small)).map(|_| ())
     }
 
     /// A descriptor set naming the caller's image `view` and `sampler`, for
@@ -464,19 +483,23 @@ impl Lighting {
                 pipelines: Vec::new(),
             });
         }
-        let (mode, raster, textured) = (draw.state.mode, draw.raster, Self::textured(draw));
+        let (mode, raster) = (draw.state.mode, draw.raster);
+        // A small draw of the fragment mode takes its materials as flat varyings; a larger one
+        // reads them from its record, bound for its fragment stage.
+        let small = mode == LightingMode::Fragment && draw.geometry.fetched() < SMALL_DRAW_VERTICES;
+        let variant = (Self::textured(draw), small);
         let found = self.last.as_ref().and_then(|last| {
             last.pipelines
                 .iter()
-                .find(|p| (p.0, p.1, p.2) == (mode, raster, textured))
+                .find(|p| (p.0, p.1, p.2) == (mode, raster, variant))
                 .map(|p| p.3)
         });
         let pipeline = match found {
             Some(pipeline) => pipeline,
             None => {
-                let pipeline = self.pipeline_for(draw.state, raster, textured)?;
+                let pipeline = self.pipeline_for(draw.state, raster, variant)?;
                 if let Some(last) = &mut self.last {
-                    last.pipelines.push((mode, raster, textured, pipeline));
+                    last.pipelines.push((mode, raster, variant, pipeline));
                 }
                 pipeline
             }
@@ -495,7 +518,7 @@ impl Lighting {
             pipeline,
             state: (block.set, block.offset),
             record: (record.buffer, record.index),
-            record_block: (mode == LightingMode::Fragment).then_some((record.set, record.offset)),
+            record_block: (mode == LightingMode::Fragment && !small).then_some((record.set, record.offset)),
         })
     }
 
@@ -620,13 +643,13 @@ impl Lighting {
         }
     }
 
-    /// The pipeline a draw with `state` and `raster`, textured or not, uses under the
-    /// [`Specialize`] policy.
+    /// The pipeline a draw with `state` and `raster`, (textured or not, small or not), uses
+    /// under the [`Specialize`] policy.
     fn pipeline_for(
         &mut self,
         state: &LightingState,
         raster: RasterState,
-        textured: bool,
+        textured: (bool, bool),
     ) -> Result<vk::Pipeline> {
         let mode = state.mode;
         let key = match self.specialize {

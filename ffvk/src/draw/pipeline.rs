@@ -33,15 +33,35 @@ pub fn one_color(key: SpecKey) -> bool {
             || (key.get(SpecConstant::TwoSide) == 0 && key.get(SpecConstant::SeparateSpecular) == 0))
 }
 
+/// Draws of fewer indices (or, not indexed, vertices) than this are small: in the fragment mode
+/// they pass their materials from the vertex stage as flat varyings (the `fragment_small`
+/// variants), so that consecutive small draws bind nothing of their own; larger draws read them
+/// from their record as a uniform block bound per draw. On lavapipe a flat varying costs its
+/// triangle setup per triangle (about 70 ns for the materials) and a draw's own block about
+/// 5 µs: the two meet near 80 triangles.
+pub const SMALL_DRAW_VERTICES: u32 = 256;
+
 /// The name of the shader variant a mode's pipeline specialized by `key` uses: the mode's
-/// name, with `_one_color` when [`one_color`] holds for a per-vertex mode, with
-/// `_current_color` when the mesh has no color array (`color_array` false), and with
-/// `_textured` when the draw samples a texture.
-pub fn variant_name(mode: LightingMode, key: SpecKey, color_array: bool, textured: bool) -> String {
+/// name, with `_small` for a small draw of the fragment mode ([`SMALL_DRAW_VERTICES`]), with
+/// `_one_color` when [`one_color`] holds for a per-vertex mode, with `_current_color` when the
+/// mesh has no color array (`color_array` false), and with `_textured` when the draw samples
+/// a texture.
+pub fn variant_name(
+    mode: LightingMode,
+    key: SpecKey,
+    color_array: bool,
+    textured: bool,
+    small: bool,
+) -> String {
     let one = one_color(key) && mode != LightingMode::Fragment;
     format!(
-        "{}{}{}{}",
+        "{}{}{}{}{}",
         mode.name(),
+        if small && mode == LightingMode::Fragment {
+            "_small"
+        } else {
+            ""
+        },
         if one { "_one_color" } else { "" },
         if color_array { "" } else { "_current_color" },
         if textured { "_textured" } else { "" },
@@ -589,6 +609,8 @@ struct PipelineKey {
     spec: SpecKey,
     raster: RasterState,
     textured: bool,
+    /// A small draw of the fragment mode (always false in the other modes).
+    small: bool,
 }
 
 /// The descriptor layouts, pipeline layout, cache and the pipelines made so far.
@@ -689,19 +711,21 @@ impl Pipelines {
     }
 
     /// The pipeline of `mode` specialized by `key` ([`SpecKey::UBER`]: the uber-shader) with
-    /// `raster`, textured or not, created on first use.
+    /// `raster`, textured or not, for small draws or not ([`SMALL_DRAW_VERTICES`]; only the
+    /// fragment mode tells them apart), created on first use.
     pub fn get(
         &mut self,
         mode: LightingMode,
         key: SpecKey,
         raster: RasterState,
-        textured: bool,
+        (textured, small): (bool, bool),
     ) -> Result<vk::Pipeline> {
         let k = PipelineKey {
             mode,
             spec: key,
             raster,
             textured,
+            small: small && mode == LightingMode::Fragment,
         };
         if let Some(pipeline) = self.pipelines.get(&k) {
             return Ok(pipeline.raw());
@@ -712,13 +736,20 @@ impl Pipelines {
         Ok(raw)
     }
 
-    /// Whether the pipeline of `mode`, `key`, `raster` and `textured` exists already.
-    pub fn contains(&self, mode: LightingMode, key: SpecKey, raster: RasterState, textured: bool) -> bool {
+    /// Whether the pipeline [`Pipelines::get`] would return for these exists already.
+    pub fn contains(
+        &self,
+        mode: LightingMode,
+        key: SpecKey,
+        raster: RasterState,
+        (textured, small): (bool, bool),
+    ) -> bool {
         self.pipelines.contains_key(&PipelineKey {
             mode,
             spec: key,
             raster,
             textured,
+            small: small && mode == LightingMode::Fragment,
         })
     }
 
@@ -744,7 +775,13 @@ impl Pipelines {
         if k.textured && config.vertex_input.texcoord.is_none() {
             return Err(LightingError::NoTexcoord.into());
         }
-        let name = variant_name(k.mode, k.spec, config.vertex_input.color.is_some(), k.textured);
+        let name = variant_name(
+            k.mode,
+            k.spec,
+            config.vertex_input.color.is_some(),
+            k.textured,
+            k.small,
+        );
         let name = name.as_str();
         let variant = shaders::variant(name)
             .ok_or_else(|| Error::MissingFeature(format!("the embedded shader variant {name}")))?;

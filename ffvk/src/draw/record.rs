@@ -105,6 +105,16 @@ impl Geometry {
     }
 }
 
+impl Geometry {
+    /// How many vertices the draw fetches: its indices, or its vertices.
+    pub(crate) fn fetched(&self) -> u32 {
+        match *self {
+            Geometry::Indexed { index_count, .. } => index_count,
+            Geometry::Vertices { vertex_count, .. } => vertex_count,
+        }
+    }
+}
+
 /// Everything one draw binds.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Bound<'a> {

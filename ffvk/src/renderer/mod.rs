@@ -610,7 +610,9 @@ impl Renderer {
         // Every pipeline is made before recording starts, so that pipeline creation never
         // lands inside a measured frame.
         for d in &frame.draws {
-            self.lighting.prepare(&d.state, d.raster(frame), d.textured())?;
+            let small = d.mesh.index_count < crate::draw::pipeline::SMALL_DRAW_VERTICES;
+            self.lighting
+                .prepare_sized(&d.state, d.raster(frame), d.textured(), small)?;
         }
         debug_assert!(
             !pass.statistics || pass.repeat == 1,
@@ -673,15 +675,18 @@ impl Renderer {
 
     /// Creates the pipeline a draw of `state` would use in a frame with `depth_test`, so that
     /// the frame does not pay for it; returns the host time that took, in nanoseconds (only a
-    /// lookup when the pipeline exists already). Drivers may still compile part of a new
-    /// pipeline at its first draw (lavapipe compiles fragment code then).
+    /// lookup when the pipeline exists already). In the fragment mode that is the pipeline of
+    /// draws of at least [`SMALL_DRAW_VERTICES`](crate::draw::pipeline::SMALL_DRAW_VERTICES)
+    /// indices (smaller ones have their own, made before the first frame that draws one).
+    /// Drivers may still compile part of a new pipeline at its first draw (lavapipe compiles
+    /// fragment code then).
     pub fn prepare(&mut self, state: &LightingState, depth_test: bool) -> Result<f64> {
         let raster = RasterState {
             depth_test,
             ..RasterState::default()
         };
         let start = std::time::Instant::now();
-        self.lighting.prepare(state, raster, false)?;
+        self.lighting.prepare_sized(state, raster, false, false)?;
         Ok(start.elapsed().as_nanos() as f64)
     }
 
