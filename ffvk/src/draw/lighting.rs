@@ -50,15 +50,18 @@
 //! A draw's GL state is staged in GL's rhythm. Its own values, the ones GL programs change
 //! between draws (modelview, materials, current color), are checked and written as its
 //! [`DrawRecord`] (256 bytes, with the normal matrix): that is all a draw that changes only
-//! those writes, about 0.4-0.5 µs on the host on lavapipe. The rest ([`StateBlock`]: lights,
+//! those writes, about 0.1 µs on the host on lavapipe in a run whose draws borrow one
+//! [`LightingState`] and carry their own [`DrawValues`] (0.3-0.5 µs when each draw brings a
+//! state of its own, which is compared with the one before). The rest ([`StateBlock`]: lights,
 //! light model, switches, texture environment and matrix, projection; 2,256 bytes) is checked,
 //! packed and written only when it differs from the previous draw's in the same frame slot,
 //! and then bound at a new dynamic offset; the pipeline, too, is looked up only then (about
 //! 0.7 µs more). [`Lighting::draw_run`] is the recording scope: its draws bind only what
 //! changes between them, and consecutive draws of the same geometry, buffers, pipeline, state
-//! and texture become instances of one draw command in the vertex and flat modes (the
-//! fragment mode binds each draw's record for its fragment stage, a fragment constant buffer
-//! per draw on lavapipe; BENCHMARKS.md, "Many draws"). A
+//! and texture become instances of one draw command, but for the fragment mode's draws of
+//! [`SMALL_DRAW_VERTICES`] or more vertices, whose fragment stage reads the draw's record as a
+//! uniform block bound per draw (smaller ones pass their materials as flat varyings, which
+//! lavapipe's triangle setup pays per triangle; BENCHMARKS.md, "Many draws"). A
 //! pipeline is made per lighting mode, [`RasterState`], texturing and specialization key (the
 //! switches and the kinds of the enabled lights, never materials, colors, matrices or light
 //! values): about 15 ms on lavapipe, on the first draw that needs it unless
