@@ -75,7 +75,8 @@ const VARIANTS: &[Variant] = &[
 ];
 
 /// The second build of every variant, named `<variant>_current_color`: for meshes without a
-/// color array, it reads GL's current color from the draw block instead of location 2.
+/// color array, it reads GL's current color from the draw record (location 19) instead of
+/// location 2.
 const CURRENT_COLOR: (&str, &str) = ("CURRENT_COLOR", "1");
 
 /// The textured build of each of those, named `<…>_textured`: texture coordinates at

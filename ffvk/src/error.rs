@@ -172,6 +172,16 @@ pub enum Error {
     /// attenuation factors are all 0.
     #[error(transparent)]
     State(#[from] StateError),
+    /// A draw of a run ([`Lighting::draw_run`](crate::Lighting::draw_run)) failed: which one,
+    /// and why. Nothing of the run was recorded.
+    #[error("draw {index} of the run: {source}")]
+    InRun {
+        /// The draw's index in the run.
+        index: usize,
+        /// Why it failed.
+        #[source]
+        source: Box<Error>,
+    },
 }
 
 /// Why a [`Lighting`](crate::Lighting) cannot be made as asked or cannot record a draw.

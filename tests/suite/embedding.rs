@@ -191,6 +191,67 @@ fn the_uniform_block_may_live_in_another_descriptor_set() {
 
 /// 10,000 draws in one frame, each with its own material: one command buffer, the per-draw
 /// state memory growing chunk by chunk, every quad its own color from the CPU reference.
+/// Draws of one mesh merge into instanced commands, but never across a chunk of the frame
+/// slot's record memory: 300 draws fill chunks of 64, 128 and 256 records, and every draw still
+/// lights with its own material, in the modes that merge (vertex and flat) and in the
+/// fragment mode's small-draw path.
+#[test]
+fn merged_draws_of_one_mesh_across_record_chunks_each_light_as_the_reference_says() {
+    const SIDE: u32 = 20;
+    const DRAWS: u32 = 300;
+    let mut r = renderer();
+    let cell = 2.0 / SIDE as f32;
+    let mesh = r.upload(&quad(0.0, 0.0, cell, cell, 0.0, Vec4::ONE)).unwrap();
+    for mode in LightingMode::ALL {
+        let states: Vec<GlState> = (0..DRAWS)
+            .map(|k| {
+                let mut gl = lit_state();
+                let d = Vec4::new(
+                    (k % 97) as f32 / 96.0,
+                    (k % 13) as f32 / 12.0,
+                    (k % 7) as f32 / 6.0,
+                    1.0,
+                );
+                gl.material(Face::FrontAndBack, MaterialParam::Diffuse(d))
+                    .unwrap();
+                gl.lighting_mode(mode);
+                gl
+            })
+            .collect();
+        let mut frame = Frame::new(2 * SIDE, 2 * SIDE);
+        frame.depth_test = false;
+        for (k, gl) in states.iter().enumerate() {
+            let (i, j) = (k as u32 % SIDE, k as u32 / SIDE);
+            let at = glam::Vec3::new(-1.0 + i as f32 * cell, 1.0 - (j + 1) as f32 * cell, 0.0);
+            frame.draws.push(Draw::new(
+                &mesh,
+                Mat4::from_translation(at),
+                Mat4::IDENTITY,
+                gl.lighting,
+            ));
+        }
+        let image = r.render(&frame).unwrap().into_rgba_image();
+        for (k, gl) in states.iter().enumerate() {
+            let (i, j) = (k as u32 % SIDE, k as u32 / SIDE);
+            let lit = ffvk::reference::light(
+                &gl.lighting,
+                DVec4::new(0.0, 0.0, 0.0, 1.0),
+                DVec3::Z,
+                &gl.lighting.front,
+            );
+            assert_pixel(
+                &image,
+                2 * i,
+                2 * j,
+                lit.color(),
+                1.0,
+                &format!("{} draw {k}", mode.name()),
+            );
+        }
+    }
+    finish(r);
+}
+
 #[test]
 fn ten_thousand_draws_with_distinct_states_in_one_command_buffer_each_light_as_the_reference_says() {
     const SIDE: u32 = 100;
@@ -398,8 +459,60 @@ fn features_the_caller_did_not_enable_are_named_in_the_error() {
         "{e}"
     );
     assert!(e.to_string().contains("flat mode"), "{e}");
+
+    // A run whose second draw is bad fails naming it, with nothing recorded.
+    use ffvk::ash::vk;
+    use ffvk::{Geometry, LitDraw};
+    // SAFETY: the pool and its buffer are made, begun and destroyed on this device here; nothing
+    // is submitted.
+    let (pool, cmd) = unsafe {
+        let pool = plain
+            .device
+            .create_command_pool(&vk::CommandPoolCreateInfo::default().queue_family_index(0), None)
+            .unwrap();
+        let cmd = plain
+            .device
+            .allocate_command_buffers(
+                &vk::CommandBufferAllocateInfo::default()
+                    .command_pool(pool)
+                    .command_buffer_count(1),
+            )
+            .unwrap()[0];
+        plain
+            .device
+            .begin_command_buffer(cmd, &vk::CommandBufferBeginInfo::default())
+            .unwrap();
+        (pool, cmd)
+    };
+    gl.lighting_mode(LightingMode::Vertex);
+    let buffers = [(vk::Buffer::null(), 0)];
+    let good = LitDraw::new(
+        &gl.lighting,
+        Mat4::IDENTITY,
+        Mat4::IDENTITY,
+        &buffers,
+        Geometry::vertices(3),
+    );
+    let flat = Mat4::from_scale(glam::Vec3::new(1.0, 0.0, 1.0));
+    let singular = LitDraw::new(
+        &gl.lighting,
+        flat,
+        Mat4::IDENTITY,
+        &buffers,
+        Geometry::vertices(3),
+    );
+    lighting.begin_frame(0).unwrap();
+    // SAFETY: the run fails at its second draw's checks, which come before anything is
+    // recorded, so neither the rendering pass the contract asks for nor the null buffer is
+    // ever reached.
+    let e = unsafe { lighting.draw_run(cmd, 0, &[good, singular]) }.unwrap_err();
+    assert!(matches!(e, ffvk::Error::InRun { index: 1, .. }), "{e}");
+    assert!(e.to_string().starts_with("draw 1 of the run: "), "{e}");
+    assert!(e.to_string().contains("modelview"), "{e}");
     drop(lighting);
     drop(device);
+    // SAFETY: the command buffer was never submitted.
+    unsafe { plain.device.destroy_command_pool(pool, None) };
 }
 
 /// The lighting variants reach a caller's device through `LitDraw::state` as they reach the

@@ -28,7 +28,8 @@
 //! [`Lighting::draw`] records, into the caller's command buffer inside the caller's dynamic
 //! rendering pass (`vkCmdBeginRendering`; render passes are not supported): bind pipeline,
 //! bind the state block's descriptor set at its dynamic offset (and, textured, the texture's
-//! set after it; in the fragment mode, the record's set at the record's dynamic offset), bind
+//! set after it; in the fragment mode, for draws of [`SMALL_DRAW_VERTICES`] or more vertices,
+//! the record's set at the record's dynamic offset), bind
 //! the caller's vertex buffers and ffvk's record buffer (and the caller's index buffer), draw
 //! with `firstInstance` naming the draw's record. The commands read the
 //! caller's vertex and index buffers and ffvk's per-frame memory, and write the caller's color
@@ -137,8 +138,10 @@ pub struct LightingOptions {
     pub vertex_input: VertexInput,
     /// Frame slots: how many frames the caller records before it waits for the oldest.
     pub frames_in_flight: u32,
-    /// The descriptor set index of ffvk's uniform block in the pipeline layout (0 unless the
-    /// caller's shaders share the layout's lower sets).
+    /// The descriptor set index of ffvk's state block in the pipeline layout (0 unless the
+    /// caller's shaders share the layout's lower sets). ffvk uses sets `set_index` (the state
+    /// block), `set_index + 1` (the texture) and `set_index + 2` (the draw records, read by
+    /// the fragment mode), so `set_index + 2` must be below `maxBoundDescriptorSets`.
     pub set_index: u32,
     /// The caller's pipeline cache; `None` makes ffvk's own.
     pub pipeline_cache: Option<vk::PipelineCache>,
@@ -177,7 +180,7 @@ with_fields!(LightingOptions {
 /// color (`glColor`). A [`LitDraw`] with its own values ([`LitDraw::with_values`]) takes them
 /// instead of its state's, so that draws which differ only in these can share one
 /// [`LightingState`]: an emulation layer keeps a state per change of lights or switches and
-/// these per draw (152 bytes instead of a 2.5 KB state).
+/// these per draw (176 bytes instead of a 2.5 KB state).
 ///
 /// ```
 /// use ffvk::gl::state::{Face, GlState, MaterialParam};
@@ -325,7 +328,7 @@ impl Lighting {
     pub fn new(device: &Arc<Device>, options: &LightingOptions) -> Result<Self> {
         // The texture's set goes right after the block's, the records' after it.
         let max_sets = device.limits.max_bound_descriptor_sets;
-        if options.set_index + 2 >= max_sets {
+        if options.set_index.checked_add(2).is_none_or(|top| top >= max_sets) {
             return Err(LightingError::SetIndex {
                 index: options.set_index,
                 max: max_sets.saturating_sub(3),
@@ -528,7 +531,12 @@ impl Lighting {
     /// Stages `draws` in order ([`Lighting::stage`]), telling each whether it shares the draw
     /// before's state: the same borrowed [`LightingState`] (which cannot change while the run
     /// borrows it) and an equal projection.
-    pub(crate) fn stage_run(&mut self, slot: u32, draws: &[LitDraw]) -> Result<Vec<Staged>> {
+    /// On failure, the index of the draw that failed and why.
+    pub(crate) fn stage_run(
+        &mut self,
+        slot: u32,
+        draws: &[LitDraw],
+    ) -> std::result::Result<Vec<Staged>, (usize, crate::Error)> {
         let mut staged = Vec::with_capacity(draws.len());
         for (i, draw) in draws.iter().enumerate() {
             let same = i
@@ -537,7 +545,7 @@ impl Lighting {
                 .is_some_and(|before| {
                     std::ptr::eq(before.state, draw.state) && before.projection == draw.projection
                 });
-            staged.push(self.stage(slot, draw, same)?);
+            staged.push(self.stage(slot, draw, same).map_err(|e| (i, e))?);
         }
         Ok(staged)
     }
@@ -554,14 +562,18 @@ impl Lighting {
     /// at its own offset). This is the recording scope of a run of draws: no command of the
     /// caller's comes between them, which is what lets ffvk skip the binds. Every draw is
     /// checked (and its block written) before anything is recorded, so a bad draw fails the
-    /// run with nothing recorded; its error names no index, so check draws with
-    /// [`Lighting::draw`] where that matters.
+    /// run with nothing recorded, with [`Error::InRun`](crate::Error::InRun) naming the draw.
     ///
     /// # Safety
     ///
     /// As [`Lighting::draw`], for every draw of the run.
     pub unsafe fn draw_run(&mut self, cmd: vk::CommandBuffer, slot: u32, draws: &[LitDraw]) -> Result<()> {
-        let staged = self.stage_run(slot, draws)?;
+        let staged = self
+            .stage_run(slot, draws)
+            .map_err(|(index, e)| crate::Error::InRun {
+                index,
+                source: Box::new(e),
+            })?;
         // SAFETY: the caller's contract above; each staged entry was staged for its draw.
         unsafe { self.record_staged_run(cmd, &staged, draws) };
         Ok(())

@@ -387,7 +387,8 @@ impl VertexInput {
     /// Checks that `device` can take this layout with the record beside it.
     fn check_limits(&self, device: &Device) -> Result<()> {
         let limits = &device.limits;
-        let bindings = self.record_binding() + 1;
+        let highest = self.bindings.iter().map(|b| b.binding).max().unwrap_or(0);
+        let bindings = highest.max(self.record_binding()).saturating_add(1);
         if bindings > limits.max_vertex_input_bindings {
             return Err(LightingError::VertexInputLimit {
                 what: "bindings",

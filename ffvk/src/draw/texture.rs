@@ -72,7 +72,7 @@ impl TextureBinding {
         Ok(TextureBinding { pool })
     }
 
-    /// The set, bound after the draw block's.
+    /// The set, bound after the state block's.
     pub fn set(&self) -> vk::DescriptorSet {
         self.pool.set()
     }

@@ -18,9 +18,12 @@
 //!   ffvk binds it as `UNIFORM_BUFFER_DYNAMIC`, a plain `UNIFORM_BUFFER` works the same;
 //! - in the `*_textured` variants, a `sampler2D` (combined image sampler) at set 1, binding 0,
 //!   read by the fragment stage (moved with the block: set_descriptor_set adds its offset);
-//! - in the `fragment*` variants, the draw's [`layout::DrawRecord`] again, as a std140 uniform
-//!   block `Record` at set 2, binding 0, read by the fragment stage (its materials; ffvk binds
-//!   the record buffer there as `UNIFORM_BUFFER_DYNAMIC` at the record's offset);
+//! - in the `fragment` variants (and their `_current_color` and `_textured` builds), the
+//!   draw's [`layout::DrawRecord`] again, as a std140 uniform block `Record` at set 2, binding
+//!   0, read by the fragment stage (its materials; ffvk binds the record buffer there as
+//!   `UNIFORM_BUFFER_DYNAMIC` at the record's offset); the `fragment_small` variants have no
+//!   set 2 and pass the materials from the vertex stage as flat varyings (locations 5-13), for
+//!   draws of fewer than [`crate::draw::pipeline::SMALL_DRAW_VERTICES`] vertices;
 //! - no push constants;
 //! - the specialization constants of [`layout::SpecConstant`] (`int`, constant_id 0-11, -1 =
 //!   read the uniform); [`layout::SpecKey::for_state`] gives a state's values;

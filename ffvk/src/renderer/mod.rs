@@ -626,7 +626,9 @@ impl Renderer {
         // draw records nothing; the time counts as recording, as it does in Lighting::draw.
         let staging = std::time::Instant::now();
         let lits = record::lit_draws(frame);
-        let staged = self.lighting.stage_run(0, &lits)?;
+        // The Renderer's own errors name the draw where it matters (its meshes and textures);
+        // the state's errors stay as they are.
+        let staged = self.lighting.stage_run(0, &lits).map_err(|(_, e)| e)?;
         let staging_ns = staging.elapsed().as_nanos() as f64;
         let record_ns = staging_ns + self.record(frame, pass, &lits, &staged)?;
         let wall_ns = self.submit_and_wait()? / f64::from(pass.repeat);

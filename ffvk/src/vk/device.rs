@@ -32,7 +32,7 @@ pub struct DeviceInfo {
     pub max_image_dimension_2d: u32,
     /// `maxUniformBufferRange`: the largest uniform block a descriptor can see, in bytes.
     pub max_uniform_buffer_range: u32,
-    /// `minUniformBufferOffsetAlignment`, in bytes: the per-draw uniform blocks sit at
+    /// `minUniformBufferOffsetAlignment`, in bytes: the state blocks and draw records sit at
     /// multiples of it (and of 16).
     pub min_uniform_buffer_offset_alignment: u64,
     /// `maxVertexOutputComponents`: scalar outputs a vertex shader may pass on; the
