@@ -484,3 +484,110 @@ fn glb_headers_with_a_short_length_or_another_version_are_errors() {
         );
     }
 }
+
+/// An image with no source, or in a bufferView without a mimeType, made the `gltf` crate
+/// unwrap a `None` (a panic in `render`, `scene` and `explain`): it is a load error naming the
+/// image and what was expected.
+#[test]
+fn gltf_images_without_a_source_or_a_mime_type_are_errors_not_panics() {
+    let dir = scratch("image-sources");
+    triangle_bin(&dir, "t.bin");
+    let cases = [
+        ("none", "{}", "images[0]: neither uri nor bufferView"),
+        (
+            "mime-only",
+            r#"{"mimeType": "image/png"}"#,
+            "images[0]: neither uri nor bufferView",
+        ),
+        (
+            "view-without-mime",
+            r#"{"bufferView": 0}"#,
+            "images[0].mimeType: missing",
+        ),
+        (
+            "both",
+            r#"{"uri": "x.png", "bufferView": 0, "mimeType": "image/png"}"#,
+            "images[0]: both uri and bufferView",
+        ),
+    ];
+    for (name, image, expected) in cases {
+        let json = gltf_json("t.bin", r#"{"mesh": 0}"#, "0");
+        // The triangle's material samples texture 0, whose image is the case's.
+        let json = json.replacen(
+            r#""meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}}]}]"#,
+            &format!(
+                r#""meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0, "NORMAL": 1}}, "material": 0}}]}}],
+  "materials": [{{"pbrMetallicRoughness": {{"baseColorTexture": {{"index": 0}}}}}}],
+  "textures": [{{"source": 0}}], "images": [{image}]"#
+            ),
+            1,
+        );
+        assert!(
+            json.contains("\"images\""),
+            "{name}: the case's JSON was not spliced in"
+        );
+        let path = dir.join(format!("{name}.gltf"));
+        std::fs::write(&path, json).unwrap();
+        let out_png = dir.join(format!("{name}.png"));
+        let runs: [Vec<&dyn AsRef<std::ffi::OsStr>>; 3] = [
+            vec![&"render", &path, &"-o", &out_png],
+            vec![&"scene", &path],
+            vec![&"explain", &"--pixel", &"1,1", &path],
+        ];
+        for args in runs {
+            let out = ffvk_command(&args).output().unwrap();
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            // 2: an error (a panic exits with 101).
+            assert_eq!(
+                out.status.code(),
+                Some(2),
+                "{name} {:?}: {stderr}",
+                args[0].as_ref()
+            );
+            assert!(!stderr.contains("panicked"), "{name}: {stderr}");
+            assert!(
+                stderr.contains(expected) && stderr.contains(&format!("{name}.gltf")),
+                "{name}: {stderr}"
+            );
+        }
+        assert!(!out_png.exists(), "{name}: no image is written");
+    }
+}
+
+/// `compare` refuses a pipe or a device as either image, as every other command does, instead
+/// of blocking on the pipe until a writer comes.
+#[test]
+fn compare_refuses_pipes_and_devices_instead_of_blocking() {
+    let dir = scratch("compare-fifo");
+    let fifo = dir.join("a.png");
+    assert!(Command::new("mkfifo").arg(&fifo).status().unwrap().success());
+    let png = dir.join("b.png");
+    image::RgbaImage::new(2, 2).save(&png).unwrap();
+    for (expected, actual) in [
+        (fifo.as_path(), png.as_path()),
+        (png.as_path(), fifo.as_path()),
+        (Path::new("/dev/zero"), png.as_path()),
+    ] {
+        let mut child = ffvk_command(&[&"compare", &expected, &actual])
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        // A blocked child is killed after 20 s, and the test fails.
+        let start = std::time::Instant::now();
+        let status = loop {
+            if let Some(status) = child.try_wait().unwrap() {
+                break status;
+            }
+            if start.elapsed() > std::time::Duration::from_secs(20) {
+                child.kill().unwrap();
+                panic!("compare {} {} blocked", expected.display(), actual.display());
+            }
+            std::thread::sleep(std::time::Duration::from_millis(20));
+        };
+        let out = child.wait_with_output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(status.code(), Some(2), "an error: {stderr}");
+        assert!(stderr.contains("not a regular file"), "{stderr}");
+    }
+}

@@ -36,6 +36,10 @@ pub enum ImageErrorKind {
     /// Reading or decoding failed.
     #[error("cannot read the image: {0}")]
     Read(image::ImageError),
+    /// The path is not a regular file (a pipe, a device, a folder): reading it could block or
+    /// never end.
+    #[error("not a regular file: expected an image file (not a device, pipe or folder)")]
+    NotAFile,
     /// The image is not 8 bits per channel; comparing it at 8 bits would hide differences.
     #[error("the image has {found:?} pixels: expected 8 bits per channel (RGB or RGBA, as ffvk writes); convert it, or compare it with a 16-bit tool")]
     Not8Bit {
@@ -90,6 +94,12 @@ pub fn load_image(path: &Path) -> Result<RgbaImage, ImageError> {
         path: path.to_path_buf(),
         kind,
     };
+    // Before opening: opening a FIFO blocks until a writer comes, and a device never ends.
+    let meta =
+        std::fs::metadata(path).map_err(|e| err(ImageErrorKind::Read(image::ImageError::IoError(e))))?;
+    if !meta.is_file() {
+        return Err(err(ImageErrorKind::NotAFile));
+    }
     let mut reader = ImageReader::open(path)
         .map_err(|e| err(ImageErrorKind::Read(image::ImageError::IoError(e))))?
         .with_guessed_format()

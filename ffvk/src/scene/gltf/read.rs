@@ -78,6 +78,22 @@ pub(super) fn validate(cx: &Context, document: &gltf::Document) -> Result<(), Lo
             problems.push(format!("{}: {error}", path()));
         }
     });
+    // The crate's image accessors unwrap these (gltf 1.4, image.rs): an image must name
+    // exactly one source, and an image in a bufferView its mimeType (glTF 2.0, 5.17).
+    for (index, image) in root.images.iter().enumerate() {
+        match (&image.uri, &image.buffer_view, &image.mime_type) {
+            (Some(_), None, _) | (None, Some(_), Some(_)) => {}
+            (None, None, _) => problems.push(format!(
+                "images[{index}]: neither uri nor bufferView: expected one of them"
+            )),
+            (Some(_), Some(_), _) => problems.push(format!(
+                "images[{index}]: both uri and bufferView: expected one of them"
+            )),
+            (None, Some(_), None) => problems.push(format!(
+                "images[{index}].mimeType: missing: expected \"image/png\" or \"image/jpeg\" for an image in a bufferView"
+            )),
+        }
+    }
     if problems.is_empty() {
         return Ok(());
     }
