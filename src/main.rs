@@ -752,6 +752,10 @@ fn finish_results(
 }
 
 fn main() -> ExitCode {
+    // Output piped into a reader that stops early (`ffvk compare … | head -1`) ends ffvk as it
+    // ends other Unix tools, instead of a panic in println! on EPIPE (Rust ignores SIGPIPE).
+    // SAFETY: called first, before any thread exists; SIG_DFL is a valid disposition.
+    unsafe { libc::signal(libc::SIGPIPE, libc::SIG_DFL) };
     match run(Cli::parse()) {
         Ok(code) => code,
         Err(e) => {

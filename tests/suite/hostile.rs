@@ -591,3 +591,25 @@ fn compare_refuses_pipes_and_devices_instead_of_blocking() {
         assert!(stderr.contains("not a regular file"), "{stderr}");
     }
 }
+
+/// Output piped into a reader that has gone (`ffvk compare a b | head -1`) ends ffvk quietly, as
+/// it ends other Unix tools, instead of a panic in `println!` on a broken pipe.
+#[test]
+fn a_closed_output_pipe_ends_ffvk_without_a_panic() {
+    let dir = scratch("broken-pipe");
+    let err = dir.join("stderr.txt");
+    let ffvk = env!("CARGO_BIN_EXE_ffvk");
+    // `true` exits without reading, so ffvk's first line meets a closed pipe.
+    let status = Command::new("sh")
+        .arg("-c")
+        .arg(r#""$1" info 2>"$2" | true"#)
+        .arg("sh")
+        .arg(ffvk)
+        .arg(&err)
+        .env("VK_DRIVER_FILES", "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json")
+        .status()
+        .unwrap();
+    assert!(status.success(), "the pipeline's status is true's");
+    let stderr = std::fs::read_to_string(&err).unwrap();
+    assert!(!stderr.contains("panicked"), "{stderr}");
+}
