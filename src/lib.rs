@@ -87,6 +87,29 @@ pub enum Error {
     #[error("the report folder {} is, lies inside or holds the reference folder {}: references are read-only unless blessed; expected a report folder apart from them", .report.display(), .references.display())]
     ReportInReferences { report: PathBuf, references: PathBuf },
 
+    /// An output file would land in the reference folder: a run's image (a reference folder
+    /// nested inside the output folder), `--json`, `--junit`.
+    #[error("{} lies inside the reference folder {}: references are read-only unless blessed; expected {what} outside it", .output.display(), .references.display())]
+    FileInReferences {
+        /// The file that would be written.
+        output: PathBuf,
+        /// The reference folder.
+        references: PathBuf,
+        /// What it is (`the run's images`, `--json`, …).
+        what: &'static str,
+    },
+
+    /// Two outputs of one command name the same file.
+    #[error("{first} and {second} both name {}: expected a file for each", .path.display())]
+    SameOutput {
+        /// The first option.
+        first: &'static str,
+        /// The second option.
+        second: &'static str,
+        /// The file.
+        path: PathBuf,
+    },
+
     /// An output would replace one of the command's own inputs.
     #[error("{}: the output would overwrite an input of the same command: expected another path", .path.display())]
     OverwritesInput { path: PathBuf },

@@ -452,11 +452,25 @@ fn run(cli: Cli) -> ffvk_cli::Result<ExitCode> {
             if files.len() == 1 && lighting.len() <= 1 && !results_asked {
                 return render_one(&cli, &files[0].path, out.as_ref(), &job);
             }
-            for path in [junit, json, report].into_iter().flatten() {
-                if scenes.iter().any(|s| ffvk::files::same_file(path, s)) {
-                    return Err(ffvk_cli::Error::OverwritesInput { path: path.clone() });
-                }
-            }
+            // Results files: not over a scene file, one of the run's images, each other, or
+            // into the references.
+            let outputs: Vec<(&'static str, &std::path::Path)> =
+                [("--junit", junit), ("--json", json), ("--report", report)]
+                    .into_iter()
+                    .filter_map(|(flag, path)| path.as_deref().map(|p| (flag, p)))
+                    .collect();
+            let inputs: Vec<&std::path::Path> = scenes
+                .iter()
+                .map(PathBuf::as_path)
+                .chain(files.iter().map(|f| f.path.as_path()))
+                .collect();
+            let references: Vec<&std::path::Path> = check.iter().map(PathBuf::as_path).collect();
+            regress::refuse_overlaps(
+                &outputs,
+                &inputs,
+                &regress::image_paths(&job, &files),
+                &references,
+            )?;
             if let (Some(dir), Some(refs)) = (report, check) {
                 // Refused now rather than after the run.
                 regress::report::claim(dir, &[refs.as_path()])?;
@@ -524,17 +538,27 @@ fn run(cli: Cli) -> ffvk_cli::Result<ExitCode> {
                     },
                 ),
             };
-            for path in [outputs.junit, outputs.json].into_iter().flatten() {
-                if files.iter().any(|f| ffvk::files::same_file(path, f)) {
-                    return Err(ffvk_cli::Error::OverwritesInput {
-                        path: path.to_path_buf(),
-                    });
-                }
-            }
             let parts = files
                 .iter()
                 .map(|f| Ok((f.clone(), regress::results::Results::read_json(f)?)))
                 .collect::<ffvk_cli::Result<Vec<_>>>()?;
+            // The merged files' own rule: not over an input, each other, or the references the
+            // runs checked against.
+            let written: Vec<(&'static str, &std::path::Path)> = [
+                ("--junit", outputs.junit),
+                ("--json", outputs.json),
+                ("--report", outputs.report),
+            ]
+            .into_iter()
+            .filter_map(|(flag, path)| path.map(|p| (flag, p)))
+            .collect();
+            let inputs: Vec<&std::path::Path> = files.iter().map(PathBuf::as_path).collect();
+            let references: Vec<PathBuf> = parts
+                .iter()
+                .flat_map(|(_, r)| r.runs.iter().filter_map(|run| run.info.references.clone()))
+                .collect();
+            let references: Vec<&std::path::Path> = references.iter().map(PathBuf::as_path).collect();
+            regress::refuse_overlaps(&written, &inputs, &[], &references)?;
             let merged = regress::results::Results::merge(parts)?;
             let checked = merged.runs.iter().any(|r| r.info.references.is_some());
             if let Some(dir) = outputs.report {

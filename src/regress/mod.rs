@@ -350,8 +350,88 @@ fn collect_toml(dir: &Path, found: &mut Vec<PathBuf>) -> Result<()> {
     Ok(())
 }
 
+/// Every image `job` writes for `files` (in every mode asked for): what a results file may not
+/// replace, and what may not land in the reference folder.
+pub fn image_paths(job: &Job, files: &[SceneFile]) -> Vec<PathBuf> {
+    let modes = requested_modes(job);
+    files
+        .iter()
+        .flat_map(|file| {
+            modes
+                .iter()
+                .map(|&mode| image_path(job, file, &image_name(file, mode, modes.len())))
+                .collect::<Vec<_>>()
+        })
+        .collect()
+}
+
+/// Where the image named `name` of `file` goes: `--out`'s folder and the name, or beside the
+/// scene file under its stem.
+fn image_path(job: &Job, file: &SceneFile, name: &str) -> PathBuf {
+    match &job.out_dir {
+        Some(d) => d.join(format!("{name}.png")),
+        None => {
+            let stem = name.rsplit('/').next().unwrap_or(name);
+            file.path
+                .parent()
+                .unwrap_or(Path::new("."))
+                .join(format!("{stem}.png"))
+        }
+    }
+}
+
+/// The one rule for what a command writes: `outputs` (each with the option that names it) may
+/// not name one file twice, replace one of `inputs` or one of the `images` the same run
+/// writes, or lie inside one of `references`. Paths are compared after symbolic links, whether
+/// they exist yet or not.
+pub fn refuse_overlaps(
+    outputs: &[(&'static str, &Path)],
+    inputs: &[&Path],
+    images: &[PathBuf],
+    references: &[&Path],
+) -> Result<()> {
+    use ffvk::files::resolved;
+    let resolved_outputs: Vec<PathBuf> = outputs.iter().map(|(_, p)| resolved(p)).collect();
+    let inputs: Vec<PathBuf> = inputs.iter().map(|p| resolved(p)).collect();
+    let images: std::collections::HashSet<PathBuf> = if outputs.is_empty() {
+        Default::default()
+    } else {
+        images.iter().map(|p| resolved(p)).collect()
+    };
+    for (i, (&(first, path), at)) in outputs.iter().zip(&resolved_outputs).enumerate() {
+        if let Some(j) = resolved_outputs[i + 1..].iter().position(|b| b == at) {
+            return Err(Error::SameOutput {
+                first,
+                second: outputs[i + 1 + j].0,
+                path: path.to_path_buf(),
+            });
+        }
+        if inputs.contains(at) {
+            return Err(Error::OverwritesInput {
+                path: path.to_path_buf(),
+            });
+        }
+        if images.contains(at) {
+            return Err(Error::SameOutput {
+                first,
+                second: "the run's images",
+                path: path.to_path_buf(),
+            });
+        }
+        if let Some(refs) = references.iter().find(|refs| ffvk::files::is_within(path, refs)) {
+            return Err(Error::FileInReferences {
+                output: path.to_path_buf(),
+                references: refs.to_path_buf(),
+                what: first,
+            });
+        }
+    }
+    Ok(())
+}
+
 /// Refuses a job that would write into its references or over its own inputs: references
-/// are only written by blessing, and only the references themselves.
+/// are only written by blessing, and only the references themselves. Each image the run
+/// writes is checked, so a reference folder inside the output folder is caught too.
 pub fn check_outputs(job: &Job, files: &[SceneFile]) -> Result<()> {
     let Some(refs) = &job.references else {
         return Ok(());
@@ -376,6 +456,17 @@ pub fn check_outputs(job: &Job, files: &[SceneFile]) -> Result<()> {
                 references: refs.clone(),
             });
         }
+    }
+    // A reference folder inside the output folder: an image may still land in it.
+    if let Some(image) = image_paths(job, files)
+        .into_iter()
+        .find(|image| ffvk::files::is_within(image, refs))
+    {
+        return Err(Error::FileInReferences {
+            output: image,
+            references: refs.clone(),
+            what: "the run's images",
+        });
     }
     Ok(())
 }
@@ -540,14 +631,11 @@ fn render_image(
 ) -> Result<()> {
     let image = render_scene(renderer, scene, mode)?;
     // Next to the scene file, an image is named by the file's stem.
-    let (dir, local) = match &job.out_dir {
-        Some(d) => (d.clone(), row.name.clone()),
-        None => {
-            let stem = row.name.rsplit('/').next().unwrap_or(&row.name).to_string();
-            (file.path.parent().unwrap_or(Path::new(".")).to_path_buf(), stem)
-        }
-    };
-    let output = dir.join(format!("{local}.png"));
+    let output = image_path(job, file, &row.name);
+    let dir = output.parent().unwrap_or(Path::new(".")).to_path_buf();
+    let local = output
+        .file_stem()
+        .map_or_else(|| row.name.clone(), |s| s.to_string_lossy().into_owned());
     if ffvk::files::same_file(&output, &file.path) {
         return Err(Error::OverwritesInput { path: output });
     }

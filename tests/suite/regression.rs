@@ -567,3 +567,125 @@ fn adding_a_scene_moves_no_other_scene_between_shards() {
     let kept: Vec<(String, u32)> = after.into_iter().filter(|(n, _)| n != "a_new_scene").collect();
     assert_eq!(kept, before);
 }
+
+/// The one rule for what a run writes (`regress::refuse_overlaps`): results files go neither
+/// over a reference, a scene file, one of the run's own images nor each other, and a reference
+/// folder nested inside `--out` keeps its images; `results merge` follows it too. Every case is
+/// refused before anything is written, and the references are byte for byte as blessed.
+#[test]
+fn results_files_and_images_never_land_on_references_scenes_or_each_other() {
+    let dir = scratch("overlaps");
+    let scenes = suite(&dir, 2);
+    let refs = dir.join("refs");
+    let out_dir = dir.join("out");
+    let bless = ffvk(
+        &[
+            &"render", &scenes, &"--out", &out_dir, &"--check", &refs, &"--bless",
+        ],
+        &[],
+    );
+    assert_exit(&bless, 0);
+    let reference = refs.join("scene_000.png");
+    let blessed = std::fs::read(&reference).unwrap();
+    let scene = scenes.join("scene_000.toml");
+    let scene_text = std::fs::read(&scene).unwrap();
+    let image = out_dir.join("scene_000.png");
+    let both = dir.join("both.xml");
+    let cases: [(&str, Vec<&dyn AsRef<std::ffi::OsStr>>, &str); 5] = [
+        (
+            "--json over a reference",
+            vec![&"--json", &reference],
+            "inside the reference folder",
+        ),
+        (
+            "--junit over a reference",
+            vec![&"--junit", &reference],
+            "inside the reference folder",
+        ),
+        (
+            "--junit over a scene file",
+            vec![&"--junit", &scene],
+            "would overwrite an input",
+        ),
+        (
+            "--json over the run's image",
+            vec![&"--json", &image],
+            "the run's images",
+        ),
+        (
+            "--json and --junit on one file",
+            vec![&"--json", &both, &"--junit", &both],
+            "--junit and --json both name",
+        ),
+    ];
+    for (what, extra, expected) in cases {
+        let mut args: Vec<&dyn AsRef<std::ffi::OsStr>> =
+            vec![&"render", &scenes, &"--out", &out_dir, &"--check", &refs];
+        args.extend(extra);
+        let out = ffvk(&args, &[]);
+        assert_exit(&out, 2);
+        assert!(text(&out).contains(expected), "{what}: {}", text(&out));
+        assert_eq!(
+            std::fs::read(&reference).unwrap(),
+            blessed,
+            "{what}: the reference"
+        );
+        assert_eq!(
+            std::fs::read(&scene).unwrap(),
+            scene_text,
+            "{what}: the scene file"
+        );
+    }
+    assert!(!both.exists(), "nothing written");
+
+    // A reference folder nested the other way: references in X/refs, --out X, and a suite that
+    // holds refs/NAME.toml, whose image would be X/refs/NAME.png.
+    let x = dir.join("x");
+    let nested_refs = x.join("refs");
+    std::fs::create_dir_all(&nested_refs).unwrap();
+    let nested_suite = dir.join("nested");
+    std::fs::create_dir_all(nested_suite.join("refs")).unwrap();
+    std::fs::copy(&scene, nested_suite.join("refs").join("r.toml")).unwrap();
+    std::fs::write(nested_refs.join("r.png"), &blessed).unwrap();
+    let out = ffvk(
+        &[&"render", &nested_suite, &"--out", &x, &"--check", &nested_refs],
+        &[],
+    );
+    assert_exit(&out, 2);
+    assert!(
+        text(&out).contains("the run's images outside it"),
+        "{}",
+        text(&out)
+    );
+    assert_eq!(
+        std::fs::read(nested_refs.join("r.png")).unwrap(),
+        blessed,
+        "the nested reference"
+    );
+
+    // results merge writes neither over its inputs nor into the references its runs checked.
+    let results = dir.join("results.json");
+    assert_exit(
+        &ffvk(
+            &[
+                &"render", &scenes, &"--out", &out_dir, &"--check", &refs, &"--json", &results,
+            ],
+            &[],
+        ),
+        0,
+    );
+    let out = ffvk(&[&"results", &"merge", &results, &"--junit", &reference], &[]);
+    assert_exit(&out, 2);
+    assert!(
+        text(&out).contains("inside the reference folder"),
+        "{}",
+        text(&out)
+    );
+    assert_eq!(
+        std::fs::read(&reference).unwrap(),
+        blessed,
+        "merge: the reference"
+    );
+    let out = ffvk(&[&"results", &"merge", &results, &"--json", &results], &[]);
+    assert_exit(&out, 2);
+}
