@@ -692,3 +692,43 @@ fn twenty_thousand_nodes_render_in_seconds_not_minutes() {
         "{orange} orange pixels"
     );
 }
+
+/// What the specification forbids and the `gltf` crate's validator lets through is refused with
+/// the field, its value and what was expected: a buffer of 0 bytes, a vertex stride that is not
+/// a multiple of 4, a zero rotation quaternion (drawn before as if it were no rotation).
+#[test]
+fn zero_buffers_odd_strides_and_zero_rotations_are_refused_naming_the_field() {
+    let dir = scratch("spec-limits");
+    triangle_bin(&dir, "t.bin");
+    let base = gltf_json("t.bin", r#"{"mesh": 0}"#, "0");
+    let cases = [
+        (
+            "zero-buffer",
+            base.replace(r#""byteLength": 72}"#, r#""byteLength": 0}"#),
+            "buffers[0].byteLength: 0: expected at least 1",
+        ),
+        (
+            "odd-stride",
+            base.replacen(
+                r#"{"buffer": 0, "byteOffset": 0, "byteLength": 36}"#,
+                r#"{"buffer": 0, "byteOffset": 0, "byteLength": 36, "byteStride": 14}"#,
+                1,
+            ),
+            "bufferViews[0].byteStride: 14: expected a multiple of 4",
+        ),
+        (
+            "zero-rotation",
+            gltf_json("t.bin", r#"{"mesh": 0, "rotation": [0, 0, 0, 0]}"#, "0"),
+            "nodes[0].rotation: [0, 0, 0, 0]: expected a unit quaternion",
+        ),
+    ];
+    for (name, json, expected) in cases {
+        let path = dir.join(format!("{name}.gltf"));
+        std::fs::write(&path, &json).unwrap();
+        let e = load(&path).unwrap_err().to_string();
+        assert!(
+            e.contains(expected) && e.contains(&format!("{name}.gltf")),
+            "{name}: {e}"
+        );
+    }
+}

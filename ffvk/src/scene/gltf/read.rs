@@ -94,6 +94,36 @@ pub(super) fn validate(cx: &Context, document: &gltf::Document) -> Result<(), Lo
             )),
         }
     }
+    // What the crate's validator lets through and the specification forbids (glTF 2.0: a
+    // buffer's byteLength ≥ 1, a vertex bufferView's byteStride a multiple of 4, a node's
+    // rotation a unit quaternion; a zero one has no rotation to take).
+    for (index, buffer) in root.buffers.iter().enumerate() {
+        if buffer.byte_length.0 == 0 {
+            problems.push(format!("buffers[{index}].byteLength: 0: expected at least 1"));
+        }
+    }
+    for (index, view) in root.buffer_views.iter().enumerate() {
+        if let Some(stride) = view.byte_stride {
+            if stride.0 % 4 != 0 {
+                problems.push(format!(
+                    "bufferViews[{index}].byteStride: {}: expected a multiple of 4",
+                    stride.0
+                ));
+            }
+        }
+    }
+    for (index, node) in root.nodes.iter().enumerate() {
+        if let Some(rotation) = &node.rotation {
+            let q = rotation.0;
+            let length = q.iter().map(|c| c * c).sum::<f32>().sqrt();
+            if !length.is_finite() || length < 1e-6 {
+                problems.push(format!(
+                    "nodes[{index}].rotation: [{}, {}, {}, {}]: expected a unit quaternion",
+                    q[0], q[1], q[2], q[3]
+                ));
+            }
+        }
+    }
     if problems.is_empty() {
         return Ok(());
     }
