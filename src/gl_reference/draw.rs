@@ -312,26 +312,14 @@ impl<'g> GlTexture<'g> {
                     image.levels().len() as GLint - 1,
                 );
             }
-            gl.TexParameteri(
-                gl::TEXTURE_2D,
-                gl::TEXTURE_MIN_FILTER,
-                min_filter_enum(sampling.min_filter) as GLint,
-            );
-            gl.TexParameteri(
-                gl::TEXTURE_2D,
-                gl::TEXTURE_MAG_FILTER,
-                mag_filter_enum(sampling.mag_filter) as GLint,
-            );
-            gl.TexParameteri(
-                gl::TEXTURE_2D,
-                gl::TEXTURE_WRAP_S,
-                wrap_enum(sampling.wrap_s) as GLint,
-            );
-            gl.TexParameteri(
-                gl::TEXTURE_2D,
-                gl::TEXTURE_WRAP_T,
-                wrap_enum(sampling.wrap_t) as GLint,
-            );
+            for (parameter, value) in [
+                (gl::TEXTURE_MIN_FILTER, min_filter_enum(sampling.min_filter)),
+                (gl::TEXTURE_MAG_FILTER, mag_filter_enum(sampling.mag_filter)),
+                (gl::TEXTURE_WRAP_S, wrap_enum(sampling.wrap_s)),
+                (gl::TEXTURE_WRAP_T, wrap_enum(sampling.wrap_t)),
+            ] {
+                gl.TexParameteri(gl::TEXTURE_2D, parameter, value as GLint);
+            }
         }
         check_draw(gl, "uploading the texture")?;
         Ok(texture)

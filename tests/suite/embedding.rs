@@ -11,6 +11,18 @@ use glam::{DVec3, DVec4, Mat4, Vec4};
 
 use crate::support::*;
 
+/// Cell (i, j) of a grid of 2×2-pixel quads facing the viewer at the eye is lit as the CPU
+/// reference lights `gl`'s front material there (within 1/255).
+fn assert_cell_lit(image: &image::RgbaImage, (i, j): (u32, u32), gl: &GlState, what: &str) {
+    let lit = ffvk::reference::light(
+        &gl.lighting,
+        DVec4::new(0.0, 0.0, 0.0, 1.0),
+        DVec3::Z,
+        &gl.lighting.front,
+    );
+    assert_pixel(image, 2 * i, 2 * j, lit.color(), 1.0, what);
+}
+
 /// Fails with the first pixel where the Renderer's image and the caller's differ, saving both.
 fn assert_same_bytes(renderer: &ffvk::Pixels, caller: &[u8], what: &str) {
     let first_difference = renderer
@@ -233,20 +245,7 @@ fn merged_draws_of_one_mesh_across_record_chunks_each_light_as_the_reference_say
         let image = r.render(&frame).unwrap().into_rgba_image();
         for (k, gl) in states.iter().enumerate() {
             let (i, j) = (k as u32 % SIDE, k as u32 / SIDE);
-            let lit = ffvk::reference::light(
-                &gl.lighting,
-                DVec4::new(0.0, 0.0, 0.0, 1.0),
-                DVec3::Z,
-                &gl.lighting.front,
-            );
-            assert_pixel(
-                &image,
-                2 * i,
-                2 * j,
-                lit.color(),
-                1.0,
-                &format!("{} draw {k}", mode.name()),
-            );
+            assert_cell_lit(&image, (i, j), gl, &format!("{} draw {k}", mode.name()));
         }
     }
     finish(r);
@@ -295,20 +294,7 @@ fn ten_thousand_draws_with_distinct_states_in_one_command_buffer_each_light_as_t
     for j in 0..SIDE {
         for i in 0..SIDE {
             let gl = &states[(j * SIDE + i) as usize];
-            let lit = ffvk::reference::light(
-                &gl.lighting,
-                DVec4::new(0.0, 0.0, 0.0, 1.0),
-                DVec3::Z,
-                &gl.lighting.front,
-            );
-            assert_pixel(
-                &image,
-                2 * i,
-                2 * j,
-                lit.color(),
-                1.0,
-                &format!("draw {}", j * SIDE + i),
-            );
+            assert_cell_lit(&image, (i, j), gl, &format!("draw {}", j * SIDE + i));
         }
     }
     finish(r);

@@ -9,6 +9,26 @@ use ffvk::scene::{Limits, Scene};
 
 use crate::support::{ffvk_command, output_dir};
 
+/// Waits for `child` at most `seconds`, then kills it and fails the test naming `what`.
+fn finish_within(
+    mut child: std::process::Child,
+    seconds: u64,
+    what: &str,
+) -> (std::process::ExitStatus, std::process::Output) {
+    let start = std::time::Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break status;
+        }
+        if start.elapsed() > std::time::Duration::from_secs(seconds) {
+            child.kill().unwrap();
+            panic!("{what} took more than {seconds} s");
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    };
+    (status, child.wait_with_output().unwrap())
+}
+
 fn scratch(name: &str) -> PathBuf {
     let dir = output_dir().join("hostile").join(name);
     let _ = std::fs::remove_dir_all(&dir);
@@ -568,24 +588,14 @@ fn compare_refuses_pipes_and_devices_instead_of_blocking() {
         (png.as_path(), fifo.as_path()),
         (Path::new("/dev/zero"), png.as_path()),
     ] {
-        let mut child = ffvk_command(&[&"compare", &expected, &actual])
+        let child = ffvk_command(&[&"compare", &expected, &actual])
             .stdout(std::process::Stdio::piped())
             .stderr(std::process::Stdio::piped())
             .spawn()
             .unwrap();
         // A blocked child is killed after 20 s, and the test fails.
-        let start = std::time::Instant::now();
-        let status = loop {
-            if let Some(status) = child.try_wait().unwrap() {
-                break status;
-            }
-            if start.elapsed() > std::time::Duration::from_secs(20) {
-                child.kill().unwrap();
-                panic!("compare {} {} blocked", expected.display(), actual.display());
-            }
-            std::thread::sleep(std::time::Duration::from_millis(20));
-        };
-        let out = child.wait_with_output().unwrap();
+        let what = format!("compare {} {}", expected.display(), actual.display());
+        let (status, out) = finish_within(child, 20, &what);
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert_eq!(status.code(), Some(2), "an error: {stderr}");
         assert!(stderr.contains("not a regular file"), "{stderr}");
@@ -666,23 +676,12 @@ fn twenty_thousand_nodes_render_in_seconds_not_minutes() {
     let path = dir.join("nodes.gltf");
     std::fs::write(&path, json).unwrap();
     let png = dir.join("nodes.png");
-    let mut child = ffvk_command(&[&"render", &path, &"-o", &png])
+    let child = ffvk_command(&[&"render", &path, &"-o", &png])
         .stdout(std::process::Stdio::null())
         .stderr(std::process::Stdio::piped())
         .spawn()
         .unwrap();
-    let start = std::time::Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status;
-        }
-        if start.elapsed() > std::time::Duration::from_secs(30) {
-            child.kill().unwrap();
-            panic!("{NODES} nodes took more than 30 s");
-        }
-        std::thread::sleep(std::time::Duration::from_millis(20));
-    };
-    let out = child.wait_with_output().unwrap();
+    let (status, out) = finish_within(child, 30, &format!("{NODES} nodes"));
     assert!(status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let image = image::open(&png).unwrap().to_rgba8();
     // The grid is drawn: most of the image is the quads' lit orange, not the clear color.

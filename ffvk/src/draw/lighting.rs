@@ -317,6 +317,8 @@ pub struct Lighting {
     pipelines: Pipelines,
     specialize: Specialize,
     last: Option<LastState>,
+    /// The vertex binding of the draw records (the lowest the caller's layout leaves free).
+    record_binding: u32,
     device: Arc<Device>,
 }
 
@@ -358,6 +360,7 @@ impl Lighting {
             pipelines,
             specialize: options.specialize,
             last: None,
+            record_binding: options.vertex_input.record_binding(),
             device: device.clone(),
         })
     }
@@ -473,11 +476,18 @@ impl Lighting {
             }
             None => DrawRecord::new(draw.state, draw.modelview)?,
         };
-        let same_state = self.last.as_ref().is_some_and(|last| {
-            last.slot == slot && (same_state || last.key == StateKey::new(draw.state, draw.projection))
-        });
-        if !same_state {
-            let key = StateKey::new(draw.state, draw.projection);
+        // The key is made once: to compare with the last state's, and kept when it differs.
+        let in_slot = self.last.as_ref().filter(|last| last.slot == slot);
+        let key = match in_slot {
+            Some(_) if same_state => None,
+            _ => Some(StateKey::new(draw.state, draw.projection)),
+        };
+        let changed = match (in_slot, key) {
+            (Some(last), Some(key)) => last.key != key,
+            (Some(_), None) => false,
+            (None, _) => true,
+        };
+        if let (true, Some(key)) = (changed, key) {
             let block = StateBlock::new(draw.state, draw.projection)?;
             let block = self
                 .states
@@ -650,7 +660,7 @@ impl Lighting {
             texture_set: self.texture_set(draw),
             bindings: &config.vertex_input.bindings,
             vertex_buffers: draw.vertex_buffers,
-            record_binding: config.vertex_input.record_binding(),
+            record_binding: self.record_binding,
             record_buffer: staged.record.0,
             first_record: staged.record.1,
             draws: 1,

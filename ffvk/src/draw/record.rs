@@ -163,6 +163,33 @@ pub(crate) struct RunState {
     index_buffer: Option<(vk::Buffer, u64, vk::IndexType)>,
 }
 
+/// Binds `set` at `index` of `bound`'s pipeline layout, with its dynamic offsets.
+///
+/// # Safety
+///
+/// As [`record_in_run`]; `set` matches the layout's set `index` and `offsets` its dynamic
+/// bindings.
+unsafe fn bind_set(
+    device: &ash::Device,
+    cmd: vk::CommandBuffer,
+    bound: &Bound,
+    index: u32,
+    set: vk::DescriptorSet,
+    offsets: &[u32],
+) {
+    // SAFETY: the caller's contract above.
+    unsafe {
+        device.cmd_bind_descriptor_sets(
+            cmd,
+            vk::PipelineBindPoint::GRAPHICS,
+            bound.layout,
+            index,
+            &[set],
+            offsets,
+        )
+    };
+}
+
 /// Binds `bound` into `cmd` and draws `geometry`: [`record_in_run`] with nothing bound before.
 ///
 /// # Safety
@@ -206,12 +233,12 @@ pub(crate) unsafe fn record_in_run(
         run.state_block = Some(state_block);
         // SAFETY: as above; the set is at its index in the layout, with one dynamic offset.
         unsafe {
-            device.cmd_bind_descriptor_sets(
+            bind_set(
+                device,
                 cmd,
-                vk::PipelineBindPoint::GRAPHICS,
-                bound.layout,
+                bound,
                 bound.set_index,
-                &[bound.set],
+                bound.set,
                 &[bound.uniform_offset],
             )
         };
@@ -222,30 +249,12 @@ pub(crate) unsafe fn record_in_run(
     {
         run.record_block = Some((set, offset));
         // SAFETY: as above; the record's set is two after the block's, one dynamic offset.
-        unsafe {
-            device.cmd_bind_descriptor_sets(
-                cmd,
-                vk::PipelineBindPoint::GRAPHICS,
-                bound.layout,
-                bound.set_index + 2,
-                &[set],
-                &[offset],
-            )
-        };
+        unsafe { bind_set(device, cmd, bound, bound.set_index + 2, set, &[offset]) };
     }
     if let Some(set) = bound.texture_set.filter(|&set| run.texture_set != Some(set)) {
         run.texture_set = Some(set);
         // SAFETY: as above; the texture's set is the one after the block's in the layout.
-        unsafe {
-            device.cmd_bind_descriptor_sets(
-                cmd,
-                vk::PipelineBindPoint::GRAPHICS,
-                bound.layout,
-                bound.set_index + 1,
-                &[set],
-                &[],
-            )
-        };
+        unsafe { bind_set(device, cmd, bound, bound.set_index + 1, set, &[]) };
     }
     let caller = bound
         .bindings
