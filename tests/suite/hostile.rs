@@ -490,7 +490,11 @@ fn glb_headers_with_a_short_length_or_another_version_are_errors() {
     let cases = [
         ("zero_length", header(2, 0), "length is 0"),
         ("short_length", header(2, 11), "length is 11"),
-        ("past_the_end", header(2, 400), "at most the file's 12 bytes"),
+        (
+            "past_the_end",
+            header(2, 400),
+            "expected the file's length, 12 bytes",
+        ),
         ("version_0", header(0, 12), "GLB version 0: expected 2"),
         ("truncated", b"glTF\x02\x00".to_vec(), "a GLB header of 6 bytes"),
     ];

@@ -11,6 +11,7 @@ mod gl_oracle;
 mod gltf_files;
 mod golden;
 mod hostile;
+mod hostile_gltf;
 mod layout;
 mod lighting;
 mod memory;

@@ -507,16 +507,24 @@ fn a_page_of_a_thousand_entries_loads_only_the_images_in_view() {
         ]),
         1,
     );
-    // The one failing row, a thousand times over (the same images, other names).
+    // The one failing row, a thousand times over, each with its own copies of the images
+    // (a report shows a file met twice once).
     let mut results: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
     let run = &mut results["runs"][0];
     let row = run["rows"][0].clone();
+    let copies = dir.join("copies");
+    std::fs::create_dir_all(&copies).unwrap();
     let rows: Vec<serde_json::Value> = (0..1000)
         .map(|i| {
             let mut r = row.clone();
             r["name"] = format!("image_{i:04}").into();
             r["index"] = i.into();
+            for field in ["output", "reference", "diff", "channels"] {
+                let copy = copies.join(format!("{i:04}-{field}.png"));
+                std::fs::copy(r[field].as_str().unwrap(), &copy).unwrap();
+                r[field] = copy.to_str().unwrap().into();
+            }
             r
         })
         .collect();
@@ -627,4 +635,144 @@ fn a_scene_that_would_write_over_another_scenes_difference_map_is_refused() {
         "{stderr}"
     );
     assert!(!dir.join("out").exists());
+}
+
+/// The results of `dir`'s one-scene suite with its one failing row repeated `count` times
+/// (other names, the same image files), written to `dir/NAME.json`.
+fn repeated_failure(dir: &Path, size: &[&dyn AsRef<std::ffi::OsStr>], count: usize) -> PathBuf {
+    let (scenes, out, refs) = (dir.join("scenes"), dir.join("out"), dir.join("refs"));
+    generate_scenes(&scenes, 1, 32).unwrap();
+    let bless = [
+        &[
+            &"render" as &dyn AsRef<_>,
+            &scenes,
+            &"--out",
+            &out,
+            &"--check",
+            &refs,
+            &"--bless",
+        ],
+        size,
+    ]
+    .concat();
+    assert_exit(&ffvk(&bless), 0);
+    change_reference(&refs.join("scene_000.png"), (2, 2, 8, 8), [255, 0, 0, 255]);
+    let json = dir.join("one.json");
+    let check = [
+        &[
+            &"render" as &dyn AsRef<_>,
+            &scenes,
+            &"--out",
+            &out,
+            &"--check",
+            &refs,
+            &"--json",
+            &json,
+        ],
+        size,
+        &[&"--threshold", &"0", &"--max-share", &"0", &"--max-flip", &"0"],
+    ]
+    .concat();
+    assert_exit(&ffvk(&check), 1);
+    let mut results: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let run = &mut results["runs"][0];
+    let row = run["rows"][0].clone();
+    run["rows"] = (0..count)
+        .map(|i| {
+            let mut r = row.clone();
+            r["name"] = format!("image_{i}").into();
+            r["index"] = i.into();
+            r
+        })
+        .collect::<Vec<_>>()
+        .into();
+    run["info"]["scenes"] = count.into();
+    run["info"]["suite_scenes"] = count.into();
+    let path = dir.join(format!("repeated_{count}.json"));
+    std::fs::write(&path, serde_json::to_string(&results).unwrap()).unwrap();
+    path
+}
+
+/// One reference behind many failing rows was linked into the report once per row (and
+/// copied once the file system's link limit was reached: 872 MB for 100,000 rows); each file
+/// is now shown from one copy, however many entries show it.
+#[test]
+fn an_image_behind_many_entries_is_copied_into_the_report_once() {
+    use std::os::unix::fs::MetadataExt;
+    let dir = scratch("shared");
+    let results = repeated_failure(&dir, &[], 50);
+    let report = dir.join("report");
+    assert_exit(&ffvk(&[&"results", &"report", &results, &"--out", &report]), 1);
+    let mut files: Vec<String> = std::fs::read_dir(report.join("images"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    files.sort();
+    assert_eq!(
+        files,
+        ["1-actual.png", "1-channels.png", "1-flip.png", "1-reference.png"]
+    );
+    let html = page(&report);
+    // Fifty entries, each showing the four files of the first.
+    assert_eq!(html.matches("<section class=\"entry").count(), 50, "{html}");
+    assert!(!html.contains("images/2-"));
+    // The reference itself, and its one link in the report.
+    let reference = dir.join("refs/scene_000.png");
+    assert_eq!(std::fs::metadata(&reference).unwrap().nlink(), 2);
+}
+
+/// A fault while the report's images are staged (here a file-size limit the thumbnail passes,
+/// as a full disk would stop it) left a part-written staging folder; now nothing of the
+/// failed report stays, and the earlier report, page and images, is whole.
+#[test]
+fn a_report_that_fails_while_staging_its_images_leaves_the_earlier_report_whole() {
+    use std::os::unix::process::CommandExt;
+    let dir = scratch("staging-fault");
+    let size: &[&dyn AsRef<std::ffi::OsStr>] = &[&"--size", &"1300x700"];
+    let results = repeated_failure(&dir, size, 2);
+    let report = dir.join("report");
+    assert_exit(&ffvk(&[&"results", &"report", &results, &"--out", &report]), 1);
+    let snapshot = |report: &Path| -> Vec<(PathBuf, Vec<u8>)> {
+        let mut files = vec![(
+            PathBuf::from("index.html"),
+            std::fs::read(report.join("index.html")).unwrap(),
+        )];
+        for e in std::fs::read_dir(report.join("images")).unwrap() {
+            let e = e.unwrap();
+            files.push((e.path(), std::fs::read(e.path()).unwrap()));
+        }
+        files.sort();
+        files
+    };
+    let before = snapshot(&report);
+    assert!(before.iter().any(|(p, _)| p.ends_with("1-actual.thumb.png")));
+
+    let mut command = ffvk_command(&[&"results", &"report", &results, &"--out", &report]);
+    // SAFETY: between fork and exec only async-signal-safe calls: setrlimit and signal.
+    unsafe {
+        command.pre_exec(|| {
+            let limit = libc::rlimit {
+                rlim_cur: 4096,
+                rlim_max: 4096,
+            };
+            // Writing past the limit fails with EFBIG instead of ending the process.
+            libc::signal(libc::SIGXFSZ, libc::SIG_IGN);
+            if libc::setrlimit(libc::RLIMIT_FSIZE, &limit) != 0 {
+                return Err(std::io::Error::last_os_error());
+            }
+            Ok(())
+        });
+    }
+    let failed = command.output().unwrap();
+    assert_exit(&failed, 2);
+    let stderr = String::from_utf8_lossy(&failed.stderr);
+    assert!(stderr.contains("thumb.png"), "{stderr}");
+    let left: Vec<String> = std::fs::read_dir(&report)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.starts_with('.') && n != ".ffvk-report")
+        .collect();
+    assert!(left.is_empty(), "left behind: {left:?}");
+    assert!(snapshot(&report) == before, "the earlier report changed");
 }

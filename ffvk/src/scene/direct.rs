@@ -132,12 +132,20 @@ pub fn from_gltf(
     };
     let view = match camera {
         Some(c) => {
+            let view = file_view(c, center, lo, hi, options.size);
             choices.push(format!(
-                "camera: {:?} (camera {}) from the file",
+                "camera: {:?} (camera {}) from the file{}",
                 shorten(&c.name),
-                c.index
+                c.index,
+                match options.size {
+                    Some(_) => String::new(),
+                    None => format!(
+                        ", the image {} × {} for its aspect ratio",
+                        view.size.0, view.size.1
+                    ),
+                }
             ));
-            file_view(c, center, lo, hi, options.size)
+            view
         }
         None => {
             choices.push(format!(
@@ -260,13 +268,22 @@ fn find_camera<'a>(loaded: &'a Loaded, want: &str) -> Result<&'a PlacedCamera, S
         })
 }
 
-/// The size for an aspect ratio (width / height): 512 high, or 512 wide when taller than wide.
+/// The size for an aspect ratio (width / height): 512 high, or 512 wide when taller than wide;
+/// where the longer side would pass [`MAX_SIZE`], that side is `MAX_SIZE` and the shorter one
+/// follows the ratio (a ratio past `MAX_SIZE`:1 is refused with the camera, see
+/// [`super::gltf`]'s cameras).
 fn size_for(aspect: f32) -> (u32, u32) {
     let side = |x: f32| (x.round() as u32).clamp(1, MAX_SIZE);
-    if aspect >= 1.0 {
-        (side(SIDE as f32 * aspect), SIDE)
+    let (long, short) = (aspect.max(1.0 / aspect), SIDE as f32);
+    let (long, short) = if short * long > MAX_SIZE as f32 {
+        (MAX_SIZE as f32, MAX_SIZE as f32 / long)
     } else {
-        (SIDE, side(SIDE as f32 / aspect))
+        (short * long, short)
+    };
+    if aspect >= 1.0 {
+        (side(long), side(short))
+    } else {
+        (side(short), side(long))
     }
 }
 
@@ -472,4 +489,20 @@ pub fn relative_ref(gltf: &Path, scene_file: Option<&Path>) -> PathBuf {
         out.push(c);
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::size_for;
+
+    /// 512 high (or wide) with the camera's ratio; where that passes 16384 pixels, the longer
+    /// side is 16384 and the ratio kept (it was clamped to 16384 × 512: 32:1 for 40:1).
+    #[test]
+    fn an_image_for_an_aspect_ratio_keeps_the_ratio_within_16384_pixels() {
+        assert_eq!(size_for(1.5), (768, 512));
+        assert_eq!(size_for(0.5), (512, 1024));
+        assert_eq!(size_for(40.0), (16384, 410));
+        assert_eq!(size_for(1.0 / 40.0), (410, 16384));
+        assert_eq!(size_for(16384.0), (16384, 1));
+    }
 }

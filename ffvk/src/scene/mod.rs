@@ -156,7 +156,7 @@ fn shorten_lines(text: &str) -> String {
 /// Why a scene could not be loaded: the scene file, and what was wrong with it. The message
 /// is the path followed by the kind's message.
 #[derive(Debug, thiserror::Error)]
-#[error("{}: {kind}", .path.display())]
+#[error("{}", scene_error_text(self))]
 #[non_exhaustive]
 pub struct SceneError {
     /// The scene file (for errors in a glTF file it names, the kind names that file).
@@ -165,6 +165,17 @@ pub struct SceneError {
     /// GL state, glTF) stays reachable.
     #[source]
     pub kind: SceneErrorKind,
+}
+
+/// A [`SceneError`]'s message: the path, then the kind's message; a glTF file drawn directly
+/// (the scene's path is the glTF file's) is named once, not as the scene and again as its file.
+fn scene_error_text(error: &SceneError) -> String {
+    match &error.kind {
+        SceneErrorKind::Gltf { field, source } if field == "gltf" && source.path == error.path => {
+            source.to_string()
+        }
+        kind => format!("{}: {kind}", error.path.display()),
+    }
 }
 
 /// What was wrong with a scene file. Every message names the field, the value and what was

@@ -13,6 +13,7 @@
 
 mod page;
 
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 use super::results::Results;
@@ -54,7 +55,7 @@ struct Shown {
 }
 
 /// The four places of an entry, in the order the page shows them.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 enum Kind {
     Reference,
     Actual,
@@ -144,15 +145,59 @@ pub fn write(results: &Results, dir: &Path) -> Result<Written> {
         path: images.clone(),
         source,
     })?;
+    // A fault while the images are staged (a full disk in the middle of a copy) leaves no
+    // part-written folder behind: the earlier report's images/ are untouched.
+    let staged = stage_entries(&rows, &images).inspect_err(|_| {
+        let _ = remove_folder(&images);
+    });
+    let (entries, unreadable) = staged?;
+    let passes: Vec<&Row> = rows.iter().filter(|r| !needs_attention(r)).collect();
+    let html = page::page(results, &entries, &passes);
+    crate::write_file(&dir.join("report.css"), page::CSS.as_bytes())?;
+    let old = dir.join(".images.old");
+    remove_folder(&old)?;
+    let moved = |from: &Path, to: &Path| {
+        std::fs::rename(from, to).map_err(|source| Error::Write {
+            path: to.to_path_buf(),
+            source,
+        })
+    };
+    if final_images.exists() {
+        moved(&final_images, &old)?;
+    }
+    // Past this point a fault puts the earlier report's images back, so that its page and
+    // its images still go together.
+    let restore = || {
+        let _ = remove_folder(&images);
+        let _ = remove_folder(&final_images);
+        if old.exists() {
+            let _ = std::fs::rename(&old, &final_images);
+        }
+    };
+    moved(&images, &final_images).inspect_err(|_| restore())?;
+    let index = dir.join("index.html");
+    crate::write_file(&index, html.as_bytes()).inspect_err(|_| restore())?;
+    remove_folder(&old)?;
+    Ok(Written {
+        page: index,
+        entries: entries.len(),
+        unreadable,
+    })
+}
+
+/// Copies the images of every row that needs attention into `images` and makes the page's
+/// entries, worst first; also the messages of the images that could not be read.
+fn stage_entries<'a>(rows: &'a [Row], images: &Path) -> Result<(Vec<Entry<'a>>, Vec<String>)> {
     let mut attention: Vec<&Row> = rows.iter().filter(|r| needs_attention(r)).collect();
     attention.sort_by(|a, b| worse_first(a, b));
     let mut unreadable = Vec::new();
+    let mut shown = HashMap::new();
     let mut entries = Vec::with_capacity(attention.len());
     for (i, row) in attention.into_iter().enumerate() {
         let number = i + 1;
         let mut slot = |kind: Kind, source: Option<&PathBuf>| match source {
             None => Ok(Slot::Absent),
-            Some(path) => show(path, kind, number, &images).or_else(|e| match e {
+            Some(path) => show(path, kind, number, images, &mut shown).or_else(|e| match e {
                 Unshown::Unreadable(why) => {
                     unreadable.push(why.clone());
                     Ok(Slot::Unreadable(why))
@@ -178,29 +223,7 @@ pub fn write(results: &Results, dir: &Path) -> Result<Written> {
             flip: slot(Kind::Flip, row.diff.as_ref())?,
         });
     }
-    let passes: Vec<&Row> = rows.iter().filter(|r| !needs_attention(r)).collect();
-    let html = page::page(results, &entries, &passes);
-    crate::write_file(&dir.join("report.css"), page::CSS.as_bytes())?;
-    let old = dir.join(".images.old");
-    remove_folder(&old)?;
-    let moved = |from: &Path, to: &Path| {
-        std::fs::rename(from, to).map_err(|source| Error::Write {
-            path: to.to_path_buf(),
-            source,
-        })
-    };
-    if final_images.exists() {
-        moved(&final_images, &old)?;
-    }
-    moved(&images, &final_images)?;
-    let index = dir.join("index.html");
-    crate::write_file(&index, html.as_bytes())?;
-    remove_folder(&old)?;
-    Ok(Written {
-        page: index,
-        entries: entries.len(),
-        unreadable,
-    })
+    Ok((entries, unreadable))
 }
 
 /// Whether a row is shown in full: it failed, lacks its reference, errored or was blessed.
@@ -249,8 +272,17 @@ enum Unshown {
 }
 
 /// Copies `source` into the report's `images/` as NUMBER-KIND.png (a hard link when the
-/// file system allows), with a thumbnail when it is large.
-fn show(source: &Path, kind: Kind, number: usize, images: &Path) -> std::result::Result<Slot, Unshown> {
+/// file system allows), with a thumbnail when it is large. A file shown before as the same
+/// kind (one reference behind many failing rows) is shown from its first copy: `shown` holds
+/// those, so that a long report neither copies it again nor links it past the file system's
+/// link limit.
+fn show(
+    source: &Path,
+    kind: Kind,
+    number: usize,
+    images: &Path,
+    shown: &mut HashMap<(PathBuf, Kind), Shown>,
+) -> std::result::Result<Slot, Unshown> {
     let unreadable = |e: &dyn std::fmt::Display| {
         Unshown::Unreadable(format!("{}: cannot read the image: {e}", source.display()))
     };
@@ -259,6 +291,9 @@ fn show(source: &Path, kind: Kind, number: usize, images: &Path) -> std::result:
     let real = std::fs::canonicalize(source).map_err(|e| unreadable(&e))?;
     if !real.is_file() {
         return Err(unreadable(&"not a file"));
+    }
+    if let Some(earlier) = shown.get(&(real.clone(), kind)) {
+        return Ok(Slot::Shown(earlier.clone()));
     }
     let (width, height) = image::image_dimensions(&real).map_err(|e| unreadable(&e))?;
     let name = format!("{number}-{}.png", kind.file_stem());
@@ -280,12 +315,14 @@ fn show(source: &Path, kind: Kind, number: usize, images: &Path) -> std::result:
             src = format!("images/{name}");
         }
     }
-    Ok(Slot::Shown(Shown {
+    let this = Shown {
         full: format!("images/{name}"),
         src,
         width,
         height,
-    }))
+    };
+    shown.insert((real, kind), this.clone());
+    Ok(Slot::Shown(this))
 }
 
 /// Claims `dir` for a report before anything is written (`render --report` calls it before

@@ -89,9 +89,12 @@ pub(super) fn placed_camera(cx: &Context, camera: gltf::Camera, world: Mat4) -> 
                     "{label}: znear = {znear}, zfar = {zfar:?}: expected 0 < znear < zfar; the camera is not used"
                 ));
             }
-            if aspect_ratio.is_some_and(|a| !(a > 0.0 && a.is_finite())) {
+            // The image keeps the ratio with each side in 1..=MAX_SIZE.
+            let most = crate::scene::MAX_SIZE as f32;
+            if let Some(a) = aspect_ratio.filter(|a| !(*a >= 1.0 / most && *a <= most)) {
                 return Err(format!(
-                    "{label}: aspectRatio = {aspect_ratio:?}: expected > 0; the camera is not used"
+                    "{label}: aspectRatio = {a}: expected 1/{most} to {most} (an image's sides are \
+                     1 to {most} pixels); the camera is not used"
                 ));
             }
             CameraProjection::Perspective {
@@ -106,6 +109,13 @@ pub(super) fn placed_camera(cx: &Context, camera: gltf::Camera, world: Mat4) -> 
             if !(xmag != 0.0 && ymag != 0.0 && xmag.is_finite() && ymag.is_finite()) {
                 return Err(format!(
                     "{label}: xmag = {xmag}, ymag = {ymag}: expected non-zero finite values; the camera is not used"
+                ));
+            }
+            let (most, ratio) = (crate::scene::MAX_SIZE as f32, (xmag / ymag).abs());
+            if !(ratio >= 1.0 / most && ratio <= most) {
+                return Err(format!(
+                    "{label}: xmag / ymag = {ratio}: expected 1/{most} to {most} (the image's \
+                     aspect ratio; its sides are 1 to {most} pixels); the camera is not used"
                 ));
             }
             if !(znear >= 0.0 && zfar > znear && zfar.is_finite()) {
@@ -183,5 +193,45 @@ mod tests {
             "{:?}",
             loaded.warnings
         );
+    }
+
+    /// An aspect ratio no image of at most 16384 pixels a side can keep (it was clamped, so
+    /// the image's ratio was not the camera's) leaves the camera out with a warning.
+    #[test]
+    fn an_aspect_ratio_past_16384_to_1_leaves_the_camera_out() {
+        let dir = scratch_dir("camera_aspect");
+        for (name, projection) in [
+            (
+                "wide",
+                r#""type": "perspective", "perspective": { "yfov": 0.8, "znear": 0.1, "aspectRatio": 1e6 }"#,
+            ),
+            (
+                "tall",
+                r#""type": "perspective", "perspective": { "yfov": 0.8, "znear": 0.1, "aspectRatio": 1e-5 }"#,
+            ),
+            (
+                "ortho",
+                r#""type": "orthographic", "orthographic": { "xmag": 20000, "ymag": 1, "znear": 0, "zfar": 20 }"#,
+            ),
+        ] {
+            let mut a = Asset::default();
+            let pos = a.positions(&QUAD[..3]);
+            let body = format!(
+                r#""scene": 0, "scenes": [ {{ "nodes": [0, 1] }} ],
+                   "nodes": [ {{ "mesh": 0 }}, {{ "camera": 0, "translation": [0, 0, 5] }} ],
+                   "meshes": [ {{ "primitives": [ {{ "attributes": {{ "POSITION": {pos} }} }} ] }} ],
+                   "cameras": [ {{ {projection} }} ],"#
+            );
+            let loaded = load(&a.write_gltf(&dir, name, &body)).unwrap();
+            assert!(loaded.cameras.is_empty(), "{name}");
+            assert!(
+                loaded
+                    .warnings
+                    .iter()
+                    .any(|w| w.contains("camera 0") && w.contains("expected 1/16384 to 16384")),
+                "{name}: {:?}",
+                loaded.warnings
+            );
+        }
     }
 }

@@ -182,7 +182,7 @@ pub enum LoadErrorKind {
     BufferOutside {
         /// The buffer's index in `buffers`.
         buffer: usize,
-        /// The buffer's URI as written (its first 200 characters).
+        /// The buffer's URI as written, shortened past 120 characters.
         uri: String,
         /// The glTF file's folder, which the URI had to stay inside.
         folder: PathBuf,
@@ -287,7 +287,7 @@ pub enum LoadErrorKind {
         /// The accessor's index.
         accessor: usize,
         /// What is out of bounds or could not be read.
-        problem: AccessorProblem,
+        problem: Box<AccessorProblem>,
     },
 
     /// An index (element `element` of the index accessor) that names no vertex.
@@ -461,14 +461,18 @@ pub fn load_with(
     budget: &mut MeshBudget,
     textures: Textures,
 ) -> Result<Loaded, LoadError> {
-    let read::Parsed { raw, document, blob } = read::parse(path)?;
+    let read::Parsed {
+        raw,
+        document,
+        blob,
+        mut warnings,
+    } = read::parse(path)?;
     let cx = Context { path, raw: &raw };
-    let mut warnings = Vec::new();
 
     let unsupported: Vec<String> = document
         .extensions_required()
         .filter(|e| !SUPPORTED_EXTENSIONS.contains(e) && !TEXTURE_EXTENSIONS.contains(e))
-        .map(str::to_owned)
+        .map(crate::scene::shorten)
         .collect();
     if !unsupported.is_empty() {
         return Err(cx.error(LoadErrorKind::UnsupportedExtension {
@@ -482,7 +486,8 @@ pub fn load_with(
             ));
         } else if !SUPPORTED_EXTENSIONS.contains(&extension) {
             warnings.push(format!(
-                "extension {extension} is used but not supported by ffvk: ignored"
+                "extension {} is used but not supported by ffvk: ignored",
+                crate::scene::shorten(extension)
             ));
         }
     }

@@ -126,12 +126,9 @@ pub enum AccessorProblem {
         element: usize,
     },
 
-    /// `count` elements of `element` bytes from byte `offset` that end past their buffer view.
-    #[error(
-        "{}{count} elements of {element} bytes from byte {offset} overrun buffer view {view} \
-         ({view_length} bytes)",
-        .part.prefix()
-    )]
+    /// `count` elements of `element` bytes from byte `offset`, `stride` apart where the view
+    /// has a byteStride, that end past their buffer view.
+    #[error("{}", overrun_text(self))]
     ViewOverrun {
         /// The elements that overrun.
         part: AccessorPart,
@@ -139,6 +136,8 @@ pub enum AccessorProblem {
         count: usize,
         /// The size of one element, in bytes.
         element: usize,
+        /// The buffer view's byteStride, where it has one (the elements are packed otherwise).
+        stride: Option<usize>,
         /// Where the first element starts in the buffer view, in bytes (the byteOffset).
         offset: usize,
         /// The buffer view's index.
@@ -177,6 +176,40 @@ pub enum AccessorProblem {
         count: usize,
     },
 
+    /// A sparse substitution's buffer view with a byteStride (glTF 2.0: sparse data is
+    /// tightly packed and its views have none).
+    #[error("{}buffer view {view} has byteStride {stride}: expected none (sparse data is tightly packed)", .part.prefix())]
+    SparseStride {
+        /// The sparse indices or values.
+        part: AccessorPart,
+        /// The buffer view's index.
+        view: usize,
+        /// Its byteStride, in bytes.
+        stride: usize,
+    },
+
+    /// A sparse index that names no element of the accessor.
+    #[error("sparse index {position} is {index}: expected less than {count} (the accessor's count)")]
+    SparseIndexOutOfRange {
+        /// Where the index is among the sparse indices.
+        position: usize,
+        /// Its value.
+        index: u32,
+        /// The accessor's count.
+        count: usize,
+    },
+
+    /// A sparse index not greater than the one before it (glTF 2.0: they strictly increase).
+    #[error("sparse index {position} is {index}, after {previous}: expected strictly increasing indices")]
+    SparseIndexOrder {
+        /// Where the index is among the sparse indices.
+        position: usize,
+        /// Its value.
+        index: u32,
+        /// The index before it.
+        previous: u32,
+    },
+
     /// Data the `gltf` crate's reader could not find (e.g. an accessor without a buffer view).
     #[error("its data could not be read from its buffer view")]
     Unreadable,
@@ -189,6 +222,41 @@ pub enum AccessorProblem {
         /// The accessor's count.
         count: usize,
     },
+}
+
+/// [`AccessorProblem::ViewOverrun`]'s message: where the elements end, and, where the view's
+/// byteStride spaces them, that stride and the largest that would fit.
+fn overrun_text(problem: &AccessorProblem) -> String {
+    let AccessorProblem::ViewOverrun {
+        part,
+        count,
+        element,
+        stride,
+        offset,
+        view,
+        view_length,
+    } = *problem
+    else {
+        return String::new();
+    };
+    // In u128: the product of a hostile stride and count may not fit a usize.
+    let spacing = stride.unwrap_or(element) as u128;
+    let end = spacing * (count as u128 - 1) + (offset + element) as u128;
+    let head = format!("{}{count} elements of {element} bytes", part.prefix());
+    match stride {
+        Some(stride) if stride != element && count > 1 => {
+            let fits = (view_length as u128).saturating_sub((offset + element) as u128) / (count as u128 - 1);
+            format!(
+                "{head}, {stride} apart (buffer view {view}'s byteStride), from byte {offset} end at \
+                 byte {end} and overrun buffer view {view} ({view_length} bytes): expected a \
+                 byteStride of at most {fits} or a longer view"
+            )
+        }
+        _ => format!(
+            "{head} from byte {offset} end at byte {end} and overrun buffer view {view} \
+             ({view_length} bytes)"
+        ),
+    }
 }
 
 /// Checks that an accessor's elements lie inside its buffer view and buffer, so the `gltf`
@@ -223,6 +291,7 @@ fn check_accessor_bounds(
                     part,
                     count,
                     element,
+                    stride: view.stride(),
                     offset,
                     view: view.index(),
                     view_length: view.length(),
@@ -256,14 +325,28 @@ fn check_accessor_bounds(
             return Err(AccessorProblem::SparseCount { sparse: n, count });
         }
         let indices = sparse.indices();
+        let values = sparse.values();
+        for (view, part) in [
+            (indices.view(), AccessorPart::SparseIndices),
+            (values.view(), AccessorPart::SparseValues),
+        ] {
+            if let Some(stride) = view.stride() {
+                return Err(AccessorProblem::SparseStride {
+                    part,
+                    view: view.index(),
+                    stride,
+                });
+            }
+        }
+        let size = indices.index_type().size();
         view_fits(
             indices.view(),
             indices.offset(),
             n,
-            indices.index_type().size(),
+            size,
             AccessorPart::SparseIndices,
         )?;
-        let values = sparse.values();
+        check_sparse_indices(&indices, n, count, buffers)?;
         view_fits(
             values.view(),
             values.offset(),
@@ -271,6 +354,50 @@ fn check_accessor_bounds(
             element,
             AccessorPart::SparseValues,
         )?;
+    }
+    Ok(())
+}
+
+/// Checks the `n` sparse indices (inside their view and buffer, as checked before) strictly
+/// increase and stay below the accessor's `count`: the `gltf` crate's reader drops a
+/// substitution that breaks this without a word.
+fn check_sparse_indices(
+    indices: &gltf::accessor::sparse::Indices,
+    n: usize,
+    count: usize,
+    buffers: &[gltf::buffer::Data],
+) -> Result<(), AccessorProblem> {
+    use gltf::accessor::sparse::IndexType;
+    let view = indices.view();
+    let size = indices.index_type().size();
+    // Sparse index views are tightly packed (glTF 2.0 forbids them a byteStride).
+    let start = view.offset() + indices.offset();
+    let bytes = buffers
+        .get(view.buffer().index())
+        .and_then(|b| b.get(start..start + n * size))
+        .ok_or(AccessorProblem::Unreadable)?;
+    let mut previous: Option<u32> = None;
+    for (position, raw) in bytes.chunks_exact(size).enumerate() {
+        let index = match indices.index_type() {
+            IndexType::U8 => u32::from(raw[0]),
+            IndexType::U16 => u32::from(u16::from_le_bytes([raw[0], raw[1]])),
+            IndexType::U32 => u32::from_le_bytes([raw[0], raw[1], raw[2], raw[3]]),
+        };
+        if index as usize >= count {
+            return Err(AccessorProblem::SparseIndexOutOfRange {
+                position,
+                index,
+                count,
+            });
+        }
+        if let Some(previous) = previous.filter(|&p| index <= p) {
+            return Err(AccessorProblem::SparseIndexOrder {
+                position,
+                index,
+                previous,
+            });
+        }
+        previous = Some(index);
     }
     Ok(())
 }
@@ -290,7 +417,7 @@ where
         cx.error(LoadErrorKind::AccessorData {
             primitive: primitive.to_owned(),
             accessor: accessor.index(),
-            problem,
+            problem: Box::new(problem),
         })
     };
     check_accessor_bounds(accessor, buffers).map_err(data_error)?;

@@ -12,11 +12,13 @@ use glam::Mat4;
 use gltf::json::Value;
 use std::path::Path;
 
-/// A file as parsed: the raw JSON (for names) and the `gltf` crate's document and GLB blob.
+/// A file as parsed: the raw JSON (for names), the `gltf` crate's document, the GLB's binary
+/// chunk, and what reading the container skipped.
 pub(super) struct Parsed {
     pub raw: Value,
     pub document: gltf::Document,
     pub blob: Option<Vec<u8>>,
+    pub warnings: Vec<String>,
 }
 
 /// Reads and parses `path`, a `.gltf` (JSON) or `.glb` file, without validating it.
@@ -28,22 +30,70 @@ pub(super) fn parse(path: &Path) -> Result<Parsed, LoadError> {
     let bytes = crate::files::read_regular(path, super::MAX_FILE_BYTES)
         .map_err(|source| error(LoadErrorKind::Io { source }))?;
     let parse_error = |message: String| error(LoadErrorKind::Parse { message });
-    let raw: Value = if bytes.starts_with(b"glTF") {
-        check_glb_header(&bytes).map_err(parse_error)?;
-        let glb = gltf::Glb::from_slice(&bytes).map_err(|e| parse_error(e.to_string()))?;
-        gltf::json::deserialize::from_slice(&glb.json).map_err(|e| parse_error(e.to_string()))?
+    let mut warnings = Vec::new();
+    let (json, blob) = if bytes.starts_with(b"glTF") {
+        let glb = split_glb(&bytes).map_err(parse_error)?;
+        for (index, kind) in glb.skipped {
+            warnings.push(format!(
+                "GLB chunk {index} has type {}: not JSON or BIN, skipped (as glTF 2.0 asks of unknown chunks)",
+                chunk_type_name(kind)
+            ));
+        }
+        (glb.json, glb.bin.map(<[u8]>::to_vec))
     } else {
-        gltf::json::deserialize::from_slice(&bytes).map_err(|e| parse_error(e.to_string()))?
+        (&bytes[..], None)
     };
-    let gltf::Gltf { document, blob } =
-        gltf::Gltf::from_slice_without_validation(&bytes).map_err(|e| parse_error(e.to_string()))?;
-    Ok(Parsed { raw, document, blob })
+    let raw: Value = gltf::json::deserialize::from_slice(json).map_err(|e| parse_error(e.to_string()))?;
+    let root: gltf::json::Root =
+        gltf::json::deserialize::from_slice(json).map_err(|e| parse_error(e.to_string()))?;
+    Ok(Parsed {
+        raw,
+        document: gltf::Document::from_json_without_validation(root),
+        blob,
+        warnings,
+    })
 }
 
-/// The GLB header's version and length, checked before the `gltf` crate reads them (its
-/// reader subtracts the header size from the length unchecked, which panics on a length
-/// below 12 in builds with overflow checks).
-fn check_glb_header(bytes: &[u8]) -> Result<(), String> {
+/// A GLB file's chunks: the JSON chunk, the binary chunk if there is one, and the index and
+/// type of each chunk of another type (which readers skip).
+struct GlbChunks<'a> {
+    json: &'a [u8],
+    bin: Option<&'a [u8]>,
+    skipped: Vec<(usize, u32)>,
+}
+
+const CHUNK_JSON: u32 = u32::from_le_bytes(*b"JSON");
+const CHUNK_BIN: u32 = u32::from_le_bytes(*b"BIN\0");
+
+/// A chunk type as its four bytes read (when printable) and its value.
+fn chunk_type_name(kind: u32) -> String {
+    let bytes = kind.to_le_bytes();
+    if bytes
+        .iter()
+        .all(|b| b.is_ascii_graphic() || *b == b' ' || *b == 0)
+    {
+        let text: String = bytes
+            .iter()
+            .map(|&b| {
+                if b == 0 {
+                    "\\0".to_owned()
+                } else {
+                    (b as char).to_string()
+                }
+            })
+            .collect();
+        format!("\"{text}\" (0x{kind:08X})")
+    } else {
+        format!("0x{kind:08X}")
+    }
+}
+
+/// Splits a GLB file (glTF 2.0, "GLB File Format Specification"): a 12-byte header (magic,
+/// version 2, the file's length), then chunks of an 8-byte header (length, type) and their
+/// data. The first chunk is JSON; a BIN chunk may only be the second; chunks of other types
+/// are skipped. Every length is checked here, before the `gltf` crate is given anything (its
+/// reader subtracts the header size from the length unchecked, and refuses unknown chunks).
+fn split_glb(bytes: &[u8]) -> Result<GlbChunks<'_>, String> {
     let word = |at: usize| {
         bytes
             .get(at..at + 4)
@@ -55,22 +105,72 @@ fn check_glb_header(bytes: &[u8]) -> Result<(), String> {
     if version != 2 {
         return Err(format!("GLB version {version}: expected 2"));
     }
-    // The 12-byte header and at least one chunk header (the JSON chunk's).
-    if length < 20 || length as usize > bytes.len() {
+    if length as usize != bytes.len() {
         return Err(format!(
-            "the GLB header's length is {length}: expected at least 20 (a header and a JSON chunk) \
-             and at most the file's {} bytes",
+            "the GLB header's length is {length}: expected the file's length, {} bytes",
             bytes.len()
         ));
     }
-    Ok(())
+    let mut chunks = GlbChunks {
+        json: &[],
+        bin: None,
+        skipped: Vec::new(),
+    };
+    let (mut at, mut index) = (12usize, 0usize);
+    while at < bytes.len() {
+        let (Some(chunk_length), Some(kind)) = (word(at), word(at + 4)) else {
+            return Err(format!(
+                "chunk {index}: its header at byte {at} is cut short by the end of the file ({} bytes)",
+                bytes.len()
+            ));
+        };
+        let start = at + 8;
+        let end = start
+            .checked_add(chunk_length as usize)
+            .filter(|&end| end <= bytes.len())
+            .ok_or_else(|| {
+                format!(
+                    "chunk {index} ({}): its length is {chunk_length}: expected at most the {} bytes \
+                     left in the file after its header",
+                    chunk_type_name(kind),
+                    bytes.len() - start
+                )
+            })?;
+        let data = &bytes[start..end];
+        match (index, kind) {
+            (0, CHUNK_JSON) => chunks.json = data,
+            (0, _) => {
+                return Err(format!(
+                    "chunk 0 has type {}: expected \"JSON\" (0x{CHUNK_JSON:08X}), the JSON chunk first",
+                    chunk_type_name(kind)
+                ))
+            }
+            (1, CHUNK_BIN) => chunks.bin = Some(data),
+            (_, CHUNK_JSON | CHUNK_BIN) => {
+                return Err(format!(
+                    "chunk {index} has type {}: expected one JSON chunk, first, and at most one BIN \
+                     chunk, second",
+                    chunk_type_name(kind)
+                ))
+            }
+            _ => chunks.skipped.push((index, kind)),
+        }
+        // Chunks start on 4-byte boundaries; a writer that left out the padding of the last
+        // chunk still ends at the file's end.
+        at = end.next_multiple_of(4);
+        index += 1;
+    }
+    if index == 0 {
+        return Err("no JSON chunk after the 12-byte GLB header: expected one".to_owned());
+    }
+    Ok(chunks)
 }
 
 /// Runs the `gltf` crate's validator; what it finds makes the error.
 pub(super) fn validate(cx: &Context, document: &gltf::Document) -> Result<(), LoadError> {
     use gltf::json::validation::Validate;
     let root = document.as_json();
-    let mut problems = Vec::new();
+    let mut problems = super::values::out_of_float_range(cx.raw);
     root.validate(root, gltf::json::Path::new, &mut |path, error| {
         // extensionsRequired was checked before, against what ffvk supports or may ignore
         // (the crate knows only the extensions it parses).
@@ -157,7 +257,7 @@ pub(super) fn read_buffers(
                 let file = asset_file(base, uri, roots).ok_or_else(|| {
                     cx.error(LoadErrorKind::BufferOutside {
                         buffer: index,
-                        uri: uri.chars().take(200).collect(),
+                        uri: crate::scene::shorten(uri),
                         folder: base.to_path_buf(),
                     })
                 })?;
@@ -198,7 +298,9 @@ pub(super) fn read_buffers(
                     (gltf::buffer::Source::Uri(uri), e) if uri.starts_with("data:") => {
                         message(format!("bad data URI: {e}"))
                     }
-                    (gltf::buffer::Source::Uri(uri), e) => message(format!("cannot load {uri:?}: {e}")),
+                    (gltf::buffer::Source::Uri(uri), e) => {
+                        message(format!("cannot load {:?}: {e}", crate::scene::shorten(uri)))
+                    }
                     (gltf::buffer::Source::Bin, e) => message(e.to_string()),
                 })
             })?;
@@ -352,6 +454,18 @@ fn visit(
         on_path[index] = true;
         names.push(cx.name("nodes", index).unwrap_or_else(|| format!("node {index}")));
         let world = parent * Mat4::from_cols_array_2d(&node.transform().matrix());
+        if !world.is_finite() {
+            // Each number is within float32's range (validated); their product is not.
+            return Err(cx.error(LoadErrorKind::Invalid {
+                problems: vec![format!(
+                    "nodes[{index}] ({:?}, {} deep): its world transform (its ancestors' \
+                     transforms times its own) overflows float32: expected transforms whose \
+                     product is finite",
+                    crate::scene::shorten(names.last().map_or("", String::as_str)),
+                    names.len()
+                )],
+            }));
+        }
 
         if let Some(mesh) = node.mesh() {
             let m = mesh.index();

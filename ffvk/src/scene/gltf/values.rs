@@ -20,6 +20,57 @@ pub(super) fn check(cx: &Context, document: &gltf::Document) -> Result<(), LoadE
     Ok(())
 }
 
+/// Every number of the file's JSON past float32's range, as `path: value: expectation`. glTF
+/// stores its numbers as float32, so such a number would become an infinity in a transform, a
+/// factor or a texture transform, and fail later without the field that holds it. `extras`
+/// and the objects of extensions ffvk does not read are left alone: they are for other readers.
+pub(super) fn out_of_float_range(raw: &gltf::json::Value) -> Vec<String> {
+    use gltf::json::Value;
+    let mut problems = Vec::new();
+    let mut stack: Vec<(String, &Value)> = vec![(String::new(), raw)];
+    while let Some((path, value)) = stack.pop() {
+        match value {
+            Value::Number(n) if n.as_f64().is_some_and(|x| x.abs() > f64::from(f32::MAX)) => {
+                problems.push(format!(
+                    "{path}: {}: expected a number float32 holds (magnitude at most {:e})",
+                    crate::scene::shorten(&n.to_string()),
+                    f32::MAX
+                ));
+            }
+            Value::Array(items) => stack.extend(
+                items
+                    .iter()
+                    .enumerate()
+                    .rev()
+                    .map(|(i, item)| (format!("{path}[{i}]"), item)),
+            ),
+            Value::Object(members) => {
+                let in_extensions = path == "extensions" || path.ends_with(".extensions");
+                let mut children: Vec<(String, &Value)> = members
+                    .iter()
+                    .filter(|(key, _)| key.as_str() != "extras")
+                    .filter(|(key, _)| !in_extensions || super::SUPPORTED_EXTENSIONS.contains(&key.as_str()))
+                    .map(|(key, item)| {
+                        let key = crate::scene::shorten(key);
+                        (
+                            if path.is_empty() {
+                                key
+                            } else {
+                                format!("{path}.{key}")
+                            },
+                            item,
+                        )
+                    })
+                    .collect();
+                children.reverse();
+                stack.extend(children);
+            }
+            _ => {}
+        }
+    }
+    problems
+}
+
 /// An out-of-range value of `object`'s `field`.
 fn invalid(
     cx: &Context,
