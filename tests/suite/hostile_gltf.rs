@@ -209,9 +209,10 @@ fn glb_chunks_of_unknown_type_are_skipped_and_a_header_length_not_the_files_is_r
 /// glTF's numbers are float32: one past its range became an infinity that failed later without
 /// its field (a node's transform emptied the scene: "no triangle meshes"; a texture transform
 /// reached the GL state's check). Each is now refused naming its JSON path; a product of
-/// finite transforms that overflows is refused naming the node.
+/// finite transforms that overflows is refused naming the node, and so is an index or enum
+/// past 32 bits.
 #[test]
-fn numbers_past_float32_and_transforms_that_overflow_are_refused_naming_the_field() {
+fn numbers_past_float32_or_u32_and_transforms_that_overflow_are_refused_naming_the_field() {
     let dir = scratch("float-range");
     let bin = quad_buffer(&[]);
     let buffer = |name: &str| format!(r#"{{"uri": "{name}.bin", "byteLength": {}}}"#, bin.len());
@@ -222,6 +223,14 @@ fn numbers_past_float32_and_transforms_that_overflow_are_refused_naming_the_fiel
     let cases = [
         ("translation", r#"{"mesh": 0, "translation": [1e39, 0, 0]}"#, "", "nodes[0].translation[0]: 1e+39: expected a number float32 holds"),
         ("matrix", r#"{"mesh": 0, "matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,-4e38,1]}"#, "", "nodes[0].matrix[14]: -4e+38"),
+        // Indices and enums are 32-bit: the gltf crate wrapped 2³² to 0 and drew mesh 0.
+        ("wrapped-index", r#"{"mesh": 4294967296}"#, "", "nodes[0].mesh: 4294967296: expected an integer from 0 to 4294967295"),
+        (
+            "wrapped-enum",
+            r#"{"mesh": 0}"#,
+            r#""samplers": [{"magFilter": 4294977025}],"#,
+            "samplers[0].magFilter: 4294977025: expected an integer",
+        ),
         (
             "texture-transform",
             r#"{"mesh": 0}"#,
@@ -358,4 +367,37 @@ fn values_past_120_characters_are_shortened_in_errors_and_warnings() {
         "{:?}",
         loaded.warnings
     );
+}
+
+/// An accessor (or a sparse substitution) of count 0 made the `gltf` crate's reader compute
+/// `count - 1` before ffvk's check ran: a panic with overflow checks (found by the fuzz
+/// harness). Now the check runs first and names the accessor.
+#[test]
+fn accessors_and_sparse_substitutions_of_count_0_are_errors_not_panics() {
+    let dir = scratch("count-0");
+    let bin = quad_buffer(&[0, 1, 2, 3]);
+    let buffer = |name: &str| format!(r#"{{"uri": "{name}.bin", "byteLength": {}}}"#, bin.len());
+    let views = r#", {"buffer": 0, "byteOffset": 60, "byteLength": 4}"#;
+    let cases = [
+        ("count-0", "", "accessor 0: count is 0: expected at least 1"),
+        (
+            "sparse-count-0",
+            r#", "sparse": {"count": 0, "indices": {"bufferView": 2, "componentType": 5121}, "values": {"bufferView": 0}}"#,
+            "accessor 0: sparse count is 0: expected 1..=4",
+        ),
+    ];
+    for (name, sparse, words) in cases {
+        let mut json = quad_json(&buffer(name), views, sparse, r#"{"mesh": 0}"#);
+        if name == "count-0" {
+            json = json.replacen(r#""count": 4"#, r#""count": 0"#, 1);
+        }
+        let path = write_gltf(&dir, name, &json, &bin);
+        let e = std::thread::spawn(move || load(&path).map(|_| ()).unwrap_err().to_string())
+            .join()
+            .expect("no panic");
+        assert!(
+            e.contains(&format!("{name}.gltf")) && e.contains(words),
+            "{name}: {e}"
+        );
+    }
 }

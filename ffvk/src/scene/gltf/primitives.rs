@@ -402,13 +402,16 @@ fn check_sparse_indices(
     Ok(())
 }
 
-/// Reads one attribute or index accessor after its bounds check, as `T`.
+/// Reads one attribute or index accessor after its bounds check, as `T`. The reader's
+/// iterator is made (by `iter`) only after the check: the `gltf` crate's iterators compute
+/// `count - 1` when they are made, which overflows (a panic with overflow checks) for a count
+/// of 0.
 fn read_checked<T, I>(
     cx: &Context,
     primitive: &str,
     accessor: &gltf::Accessor,
     buffers: &[gltf::buffer::Data],
-    iter: Option<I>,
+    iter: impl FnOnce() -> Option<I>,
 ) -> Result<Vec<T>, LoadError>
 where
     I: Iterator<Item = T>,
@@ -421,7 +424,7 @@ where
         })
     };
     check_accessor_bounds(accessor, buffers).map_err(data_error)?;
-    let iter = iter.ok_or_else(|| data_error(AccessorProblem::Unreadable))?;
+    let iter = iter().ok_or_else(|| data_error(AccessorProblem::Unreadable))?;
     let mut values = try_vec(accessor.count(), "accessor data").map_err(|source| {
         cx.error(LoadErrorKind::Alloc {
             primitive: primitive.to_owned(),
@@ -537,7 +540,9 @@ pub(super) fn read_primitive(
     if (position_accessor.data_type(), position_accessor.dimensions()) != (DataType::F32, Dimensions::Vec3) {
         return Err(format_error("POSITION", &position_accessor, "FLOAT VEC3"));
     }
-    let positions = read_checked(cx, &label, &position_accessor, buffers, reader.read_positions())?;
+    let positions = read_checked(cx, &label, &position_accessor, buffers, || {
+        reader.read_positions()
+    })?;
     check_finite(cx, &label, "POSITION", &position_accessor, &positions)?;
     let vertex_count = positions.len();
 
@@ -550,7 +555,7 @@ pub(super) fn read_primitive(
             if accessor.count() != vertex_count {
                 return Err(count_error("NORMAL", &accessor, vertex_count));
             }
-            let normals = read_checked(cx, &label, &accessor, buffers, reader.read_normals())?;
+            let normals = read_checked(cx, &label, &accessor, buffers, || reader.read_normals())?;
             check_finite(cx, &label, "NORMAL", &accessor, &normals)?;
             Some(normals)
         }
@@ -578,7 +583,7 @@ pub(super) fn read_primitive(
             if accessor.count() != vertex_count {
                 return Err(count_error("COLOR_0", &accessor, vertex_count));
             }
-            let iter = reader.read_colors(0).map(|c| c.into_rgba_f32());
+            let iter = || reader.read_colors(0).map(|c| c.into_rgba_f32());
             let colors = read_checked(cx, &label, &accessor, buffers, iter)?;
             check_finite(cx, &label, "COLOR_0", &accessor, &colors)?;
             Some(colors)
@@ -601,7 +606,7 @@ pub(super) fn read_primitive(
             if accessor.count() != vertex_count {
                 return Err(count_error("TEXCOORD_0", &accessor, vertex_count));
             }
-            let iter = reader.read_tex_coords(0).map(|t| t.into_f32());
+            let iter = || reader.read_tex_coords(0).map(|t| t.into_f32());
             let st = read_checked(cx, &label, &accessor, buffers, iter)?;
             check_finite(cx, &label, "TEXCOORD_0", &accessor, &st)?;
             Some(st)
@@ -628,7 +633,7 @@ pub(super) fn read_primitive(
                     "UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT SCALAR",
                 ));
             }
-            let iter = reader.read_indices().map(|i| i.into_u32());
+            let iter = || reader.read_indices().map(|i| i.into_u32());
             let indices = read_checked(cx, &label, &accessor, buffers, iter)?;
             if let Some((element, &value)) = indices
                 .iter()

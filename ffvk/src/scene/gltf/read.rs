@@ -170,7 +170,7 @@ fn split_glb(bytes: &[u8]) -> Result<GlbChunks<'_>, String> {
 pub(super) fn validate(cx: &Context, document: &gltf::Document) -> Result<(), LoadError> {
     use gltf::json::validation::Validate;
     let root = document.as_json();
-    let mut problems = super::values::out_of_float_range(cx.raw);
+    let mut problems = super::values::out_of_range_numbers(cx.raw);
     root.validate(root, gltf::json::Path::new, &mut |path, error| {
         // extensionsRequired was checked before, against what ffvk supports or may ignore
         // (the crate knows only the extensions it parses).

@@ -20,16 +20,71 @@ pub(super) fn check(cx: &Context, document: &gltf::Document) -> Result<(), LoadE
     Ok(())
 }
 
-/// Every number of the file's JSON past float32's range, as `path: value: expectation`. glTF
-/// stores its numbers as float32, so such a number would become an infinity in a transform, a
-/// factor or a texture transform, and fail later without the field that holds it. `extras`
-/// and the objects of extensions ffvk does not read are left alone: they are for other readers.
-pub(super) fn out_of_float_range(raw: &gltf::json::Value) -> Vec<String> {
+/// The members glTF 2.0 types as integers: indices into the file's arrays, byte counts,
+/// counts and GL enums (and, for `nodes`, `children`, `joints`, `attributes` and `targets`,
+/// the integers inside them). The `gltf` crate reads these as `value as u32`, so 2³² + 1
+/// would quietly become 1.
+const INTEGER_MEMBERS: &[&str] = &[
+    "attributes",
+    "buffer",
+    "bufferView",
+    "byteLength",
+    "byteOffset",
+    "byteStride",
+    "camera",
+    "children",
+    "componentType",
+    "count",
+    "index",
+    "indices",
+    "input",
+    "inverseBindMatrices",
+    "joints",
+    "light",
+    "magFilter",
+    "material",
+    "mesh",
+    "minFilter",
+    "mode",
+    "node",
+    "nodes",
+    "output",
+    "sampler",
+    "scene",
+    "skeleton",
+    "skin",
+    "source",
+    "target",
+    "targets",
+    "texCoord",
+    "wrapS",
+    "wrapT",
+];
+
+/// Every number of the file's JSON that its type cannot hold, as `path: value: expectation`:
+/// a float (glTF stores them as float32) past float32's range, which would become an infinity
+/// in a transform, a factor or a texture transform and fail later without the field that
+/// holds it; an integer member ([`INTEGER_MEMBERS`]) that is not one from 0 to 2³² − 1.
+/// `extras` and the objects of extensions ffvk does not read are left alone: they are for
+/// other readers.
+pub(super) fn out_of_range_numbers(raw: &gltf::json::Value) -> Vec<String> {
     use gltf::json::Value;
     let mut problems = Vec::new();
-    let mut stack: Vec<(String, &Value)> = vec![(String::new(), raw)];
-    while let Some((path, value)) = stack.pop() {
+    // (JSON path, value, the member whose value (or part of it) this is)
+    let mut stack: Vec<(String, &Value, &str)> = vec![(String::new(), raw, "")];
+    while let Some((path, value, member)) = stack.pop() {
         match value {
+            // (An integer member in range falls through to the arms below and matches none.)
+            Value::Number(n)
+                if INTEGER_MEMBERS.contains(&member)
+                    && n.as_u64().is_none_or(|i| i > u64::from(u32::MAX)) =>
+            {
+                problems.push(format!(
+                    "{path}: {}: expected an integer from 0 to {}",
+                    crate::scene::shorten(&n.to_string()),
+                    u32::MAX
+                ));
+            }
             Value::Number(n) if n.as_f64().is_some_and(|x| x.abs() > f64::from(f32::MAX)) => {
                 problems.push(format!(
                     "{path}: {}: expected a number float32 holds (magnitude at most {:e})",
@@ -42,24 +97,25 @@ pub(super) fn out_of_float_range(raw: &gltf::json::Value) -> Vec<String> {
                     .iter()
                     .enumerate()
                     .rev()
-                    .map(|(i, item)| (format!("{path}[{i}]"), item)),
+                    .map(|(i, item)| (format!("{path}[{i}]"), item, member)),
             ),
             Value::Object(members) => {
-                let in_extensions = path == "extensions" || path.ends_with(".extensions");
-                let mut children: Vec<(String, &Value)> = members
+                let in_extensions = member == "extensions";
+                // The members of `attributes` (and of each morph target) are accessor indices.
+                let inner =
+                    |key: &'static str| (member == "attributes" || member == "targets").then_some(key);
+                let mut children: Vec<(String, &Value, &str)> = members
                     .iter()
                     .filter(|(key, _)| key.as_str() != "extras")
                     .filter(|(key, _)| !in_extensions || super::SUPPORTED_EXTENSIONS.contains(&key.as_str()))
                     .map(|(key, item)| {
-                        let key = crate::scene::shorten(key);
-                        (
-                            if path.is_empty() {
-                                key
-                            } else {
-                                format!("{path}.{key}")
-                            },
-                            item,
-                        )
+                        let name = crate::scene::shorten(key);
+                        let path = if path.is_empty() {
+                            name
+                        } else {
+                            format!("{path}.{name}")
+                        };
+                        (path, item, inner("attributes").unwrap_or(key.as_str()))
                     })
                     .collect();
                 children.reverse();
