@@ -780,6 +780,11 @@ fn main() -> ExitCode {
     // ends other Unix tools, instead of a panic in println! on EPIPE (Rust ignores SIGPIPE).
     // SAFETY: called first, before any thread exists; SIG_DFL is a valid disposition.
     unsafe { libc::signal(libc::SIGPIPE, libc::SIG_DFL) };
+    // A write past a file-size limit (ulimit -f, prlimit --fsize) fails with EFBIG, which the
+    // writer turns into an error that removes its temporary file, instead of SIGXFSZ killing
+    // the process with the temporary file left behind (worker processes inherit this).
+    // SAFETY: as above; SIG_IGN is a valid disposition.
+    unsafe { libc::signal(libc::SIGXFSZ, libc::SIG_IGN) };
     match run(Cli::parse()) {
         Ok(code) => code,
         Err(e) => {

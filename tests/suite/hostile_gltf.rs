@@ -327,6 +327,10 @@ fn values_past_120_characters_are_shortened_in_errors_and_warnings() {
             base.replacen("\"uri\": \"base.bin\"", &format!("\"uri\": \"../{long}.bin\""), 1),
         ),
         (
+            "missing-file",
+            base.replacen("\"uri\": \"base.bin\"", &format!("\"uri\": \"{long}.bin\""), 1),
+        ),
+        (
             "bad-data-uri",
             base.replacen(
                 "\"uri\": \"base.bin\"",
@@ -400,4 +404,46 @@ fn accessors_and_sparse_substitutions_of_count_0_are_errors_not_panics() {
             "{name}: {e}"
         );
     }
+}
+
+/// glTF allows `extras` of any JSON type; the `gltf` crate reads only objects there and
+/// refused the file ("expected struct Void"). ffvk reads no extras: the file loads.
+#[test]
+fn extras_of_any_json_type_are_allowed() {
+    let dir = scratch("extras");
+    let bin = quad_buffer(&[]);
+    for (name, extras) in [
+        ("number", "1e300"),
+        ("string", "\"hi\""),
+        ("array", "[1, [2], {}]"),
+        ("null", "null"),
+    ] {
+        let buffer = format!(
+            r#"{{"uri": "{name}.bin", "byteLength": {}, "extras": {extras}}}"#,
+            bin.len()
+        );
+        let json = quad_json(
+            &buffer,
+            "",
+            &format!(r#", "extras": {extras}"#),
+            &format!(r#"{{"mesh": 0, "extras": {extras}}}"#),
+        )
+        .replacen("{\"asset\"", &format!("{{\"extras\": {extras}, \"asset\""), 1);
+        let loaded = load(&write_gltf(&dir, name, &json, &bin));
+        assert!(loaded.is_ok(), "{name}: {}", loaded.unwrap_err());
+    }
+    // What else the crate refuses is still reported with its line and column.
+    let json = quad_json(
+        r#"{"uri": "x.bin", "byteLength": "sixty"}"#,
+        "",
+        r#", "extras": 5"#,
+        r#"{"mesh": 0}"#,
+    );
+    let e = load(&write_gltf(&dir, "bad", &json, &bin))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("bad.gltf") && e.contains("line") && e.contains("column"),
+        "{e}"
+    );
 }

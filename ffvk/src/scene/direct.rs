@@ -151,7 +151,7 @@ pub fn from_gltf(
             choices.push(format!(
                 "camera: {}framing the scene's bounds (center {}, radius {}) from the front, right and above",
                 if loaded.cameras.is_empty() && options.camera == CameraChoice::Auto {
-                    "none in the file; "
+                    "no usable one in the file; "
                 } else {
                     ""
                 },
@@ -260,7 +260,7 @@ fn find_camera<'a>(loaded: &'a Loaded, want: &str) -> Result<&'a PlacedCamera, S
                 "{:?} names no camera of the file's scene: expected {}",
                 shorten(want),
                 if have.is_empty() {
-                    "\"frame\" (the file has no cameras)".to_owned()
+                    "\"frame\" (the file has no usable camera)".to_owned()
                 } else {
                     format!("\"frame\" or one of {}", have.join(", "))
                 }

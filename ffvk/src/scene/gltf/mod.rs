@@ -161,7 +161,7 @@ pub enum LoadErrorKind {
     },
 
     /// A buffer's external file could not be read.
-    #[error("buffer {buffer}: cannot read {}: {source}", .file.display())]
+    #[error("buffer {buffer}: cannot read {}: {source}", crate::scene::shorten(&.file.display().to_string()))]
     BufferFile {
         /// The buffer's index in `buffers`.
         buffer: usize,

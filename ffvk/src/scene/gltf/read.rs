@@ -44,14 +44,38 @@ pub(super) fn parse(path: &Path) -> Result<Parsed, LoadError> {
         (&bytes[..], None)
     };
     let raw: Value = gltf::json::deserialize::from_slice(json).map_err(|e| parse_error(e.to_string()))?;
-    let root: gltf::json::Root =
-        gltf::json::deserialize::from_slice(json).map_err(|e| parse_error(e.to_string()))?;
+    let root: gltf::json::Root = match gltf::json::deserialize::from_slice(json) {
+        Ok(root) => root,
+        // glTF allows `extras` of any JSON type; the crate reads only objects there. ffvk reads
+        // no extras, so a file the crate refuses is tried again without them (the first error,
+        // which has a line and column, is the one reported if that fails too).
+        Err(e) => {
+            let mut stripped = raw.clone();
+            remove_extras(&mut stripped);
+            gltf::json::deserialize::from_value(stripped).map_err(|_| parse_error(e.to_string()))?
+        }
+    };
     Ok(Parsed {
         raw,
         document: gltf::Document::from_json_without_validation(root),
         blob,
         warnings,
     })
+}
+
+/// `value` without any `extras` member, at any depth (iterative: the depth is the file's).
+fn remove_extras(value: &mut Value) {
+    let mut stack = vec![value];
+    while let Some(value) = stack.pop() {
+        match value {
+            Value::Object(members) => {
+                members.remove("extras");
+                stack.extend(members.values_mut());
+            }
+            Value::Array(items) => stack.extend(items.iter_mut()),
+            _ => {}
+        }
+    }
 }
 
 /// A GLB file's chunks: the JSON chunk, the binary chunk if there is one, and the index and

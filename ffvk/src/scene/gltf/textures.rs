@@ -229,8 +229,12 @@ fn image_bytes(
                     crate::scene::shorten(uri)
                 )
             })?;
-            crate::files::read_regular(&file, MAX_FILE_BYTES)
-                .map_err(|e| format!("cannot read {}: {e}", file.display()))
+            crate::files::read_regular(&file, MAX_FILE_BYTES).map_err(|e| {
+                format!(
+                    "cannot read {}: {e}",
+                    crate::scene::shorten(&file.display().to_string())
+                )
+            })
         }
     }
 }
