@@ -32,6 +32,12 @@ struct Light {
     float cos_inner;  // cos of a soft edge's inner angle, computed on the host
     uint falloff;     // FALLOFF_* (ffvk's extension; GL's is FALLOFF_GL_K012)
     float range;      // glTF's range, 0 for none
+    // GL's derived state of a directional light (w = 0), computed on the host when the state
+    // changes: the unit vector toward it (VP_pli of every finite vertex) and the unit halfway
+    // vector of that and the infinite viewer's (0, 0, 1) (GLSL 1.20's halfVector). Zero for a
+    // positional light.
+    vec3 VP_hat_inf;
+    vec3 h_hat_inf;
 };
 
 // Values of Light.spot_edge, Light.falloff and specular_model: GL's is 0 in each.
@@ -100,6 +106,9 @@ layout(constant_id = 8) const int SPEC_TEX_ENV = -1;            // TEXTURE_ENV_M
 layout(constant_id = 9) const int SPEC_SPECULAR_MODEL = -1;     // SPECULAR_*
 layout(constant_id = 10) const int SPEC_ANY_SOFT_SPOT = -1;     // some light has a soft edge
 layout(constant_id = 11) const int SPEC_ANY_GLTF_FALLOFF = -1;  // some light has glTF's falloff
+// A promise (1) that every light is directional and every vertex finite (w != 0: an affine
+// modelview), so that VP_pli and the infinite viewer's ĥ_i are each light's derived state.
+layout(constant_id = 12) const int SPEC_FINITE_VERTICES = -1;
 
 // A switch of the uber-shader, read from the uniform block. lavapipe 22.3 compiles a shader
 // variant for every draw whose uniforms changed when an if or a loop bound depends on uniform
@@ -141,6 +150,9 @@ bool may_be_soft_spot() {
 }
 bool may_be_gltf_falloff() {
     return SPEC_ANY_GLTF_FALLOFF != 0;
+}
+bool directional_at_finite_vertices() {
+    return SPEC_FINITE_VERTICES == 1;
 }
 uint specular_model() {
     return SPEC_SPECULAR_MODEL < 0 ? uber_value(state.specular_model) : uint(SPEC_SPECULAR_MODEL);

@@ -28,15 +28,19 @@ vec3 unit(vec3 v) {
     return len > 0.0 ? q : vec3(0.0);  // a select: v may be a light's (see light_term)
 }
 
-// P1P2 with a hat: the unit vector from homogeneous point P1 to P2.
+// P1P2 with a hat: the unit vector from homogeneous point P1 to P2. The four cases choose the
+// vector by selects and normalize once (unit(-x) is exactly -unit(x)): a light's w is
+// uniform, so no branch may test it (see light_term), and a shader that computed all four
+// cases paid four square roots and divisions per light and vertex.
 vec3 unit_from_to(vec4 P1, vec4 P2) {
-    // all() does not short-circuit: no branch tests a light's w alone (see light_term).
     bool far1 = P1.w == 0.0;
     bool far2 = P2.w == 0.0;
-    if (all(bvec2(far2, !far1))) return unit(P2.xyz);
-    if (all(bvec2(far1, !far2))) return -unit(P1.xyz);
-    if (all(bvec2(far1, far2))) return unit(P2.xyz - P1.xyz);
-    return unit(P2.xyz / P2.w - P1.xyz / P1.w);
+    vec3 finite = P2.xyz / P2.w - P1.xyz / P1.w;
+    vec3 both_far = P2.xyz - P1.xyz;
+    // mix() with a bvec3 is an OpSelect; glslang would make a nested ?: of expressions a branch.
+    vec3 to_far = mix(P2.xyz, both_far, bvec3(far1));
+    vec3 to_near = mix(finite, -P1.xyz, bvec3(far1));
+    return unit(mix(to_near, to_far, bvec3(far2)));
 }
 
 // att_i, GL's: 1 / (k0 + k1 d + k2 d^2), d = ||VP_pli||.
@@ -76,9 +80,14 @@ float spot_smoothstep_inner_outer(float cos_angle, float cos_outer, float cos_in
 
 // The specular factor before f_i and the colors, GL's: (n ⊙ ĥ_i)^s_rm, ĥ_i the unit halfway
 // vector of VP_pli and v (VPe for a local viewer, else (0, 0, 1)).
+// The same with ĥ_i given (a directional light's, derived on the host).
+float specular_blinn_unit_halfway(vec3 n, vec3 h_hat, float s_rm) {
+    return pow_gl(odot(n, h_hat), s_rm);
+}
+
 float specular_blinn_halfway(vec3 n, vec3 VP_pli, vec3 v, float s_rm) {
     vec3 h_i = VP_pli + v;
-    return pow_gl(odot(n, unit(h_i)), s_rm);
+    return specular_blinn_unit_halfway(n, unit(h_i), s_rm);
 }
 
 // The specular factor, Phong's (ffvk's extension): (r_i ⊙ v)^s_rm, r_i = 2 (n · VP_pli) n −
@@ -96,7 +105,13 @@ void light_term(uint i, vec4 V, vec3 n, Material m, vec3 VPe, inout vec3 c_pri, 
     // validation rejects (block layout and function layout differ).
 #define L state.lights[i]
 
-    vec3 VP_pli = unit_from_to(V, L.P_pli);
+    // Where the pipeline promises directional lights and finite vertices, VP_pli and (for the
+    // infinite viewer) ĥ_i are the same at every vertex: GL's derived state, computed on the
+    // host (draw.glsl). The test is on constants and folds away. (A test on each vertex's w
+    // would not help: lavapipe runs both sides of a branch that differs between vertices.)
+    bool derived = directional_at_finite_vertices();
+    vec3 VP_pli = derived ? L.VP_hat_inf : unit_from_to(V, L.P_pli);
+    bool derived_h = derived && !local_viewer();
 
     // Branches on the light's own values (w, c_rli, its edge and falloff) are selects, not
     // ifs: lavapipe compiles a shader variant for every draw whose uniforms changed when an
@@ -130,7 +145,8 @@ void light_term(uint i, vec4 V, vec3 n, Material m, vec3 VPe, inout vec3 c_pri, 
     vec3 v = local_viewer() ? VPe : vec3(0.0, 0.0, 1.0);
     float s_factor = specular_model() == SPECULAR_PHONG_REFLECT
         ? specular_phong_reflect(n, VP_pli, v, m.s_rm)
-        : specular_blinn_halfway(n, VP_pli, v, m.s_rm);
+        : derived_h ? specular_blinn_unit_halfway(n, L.h_hat_inf, m.s_rm)
+                   : specular_blinn_halfway(n, VP_pli, v, m.s_rm);
     vec3 specular = f_i * s_factor * m.s_cm.rgb * L.s_cli.rgb;
 
     vec3 ambient = m.a_cm.rgb * L.a_cli.rgb;

@@ -144,7 +144,7 @@ fn the_state_block_matches_the_glsl_in_every_stage() {
         assert_eq!(r.members(block), want, "{stage}: State block offsets");
 
         let light = r.struct_id("Light");
-        let want = rust_offsets!(GpuLight: a_cli, d_cli, s_cli, P_pli, s_dli, s_rli, c_rli, cos_c_rli, k0, k1, k2, spot_edge, cos_inner, falloff, range);
+        let want = rust_offsets!(GpuLight: a_cli, d_cli, s_cli, P_pli, s_dli, s_rli, c_rli, cos_c_rli, k0, k1, k2, spot_edge, cos_inner, falloff, range, VP_hat_inf, h_hat_inf);
         assert_eq!(r.members(light), want, "{stage}: Light offsets");
 
         // The lights array: its stride is the Rust struct's size, and it ends the block.

@@ -246,3 +246,75 @@ fn one_sided_single_color_states_pass_one_color_between_the_stages() {
         "flat_one_color_current_color_textured"
     );
 }
+
+/// `SPEC_FINITE_VERTICES` (VP_pli and ĥ_i taken from the light's derived state) is promised
+/// only where it holds: lit, with lights, every one directional, and a draw whose modelview
+/// is affine (w = 1 at every vertex). The uber-shader's key keeps it unset.
+#[test]
+fn directional_lights_take_their_derived_state_only_at_affine_modelviews() {
+    let finite = |s: &LightingState, mv: Mat4| SpecKey::for_draw(s, mv).get(SpecConstant::FiniteVertices);
+    let affine = Mat4::from_translation(Vec3::new(0.0, 0.0, -2.0));
+    let mut projective = affine;
+    projective.w_axis.w = 2.0;
+    let directional = lit(2, LightingMode::Vertex);
+    assert_eq!(finite(&directional, affine), 1);
+    assert_eq!(finite(&directional, projective), 0);
+    let mut local = directional;
+    local.lights[1].position.w = 1.0;
+    assert_eq!(finite(&local, affine), 0);
+    assert_eq!(finite(&lit(0, LightingMode::Vertex), affine), 0);
+    assert_eq!(finite(&unlit(), affine), 0);
+    assert_eq!(SpecKey::UBER.with_finite_vertices(true), SpecKey::UBER);
+}
+
+/// A modelview that is not affine takes the full P1P2 formula in a pipeline of its own; drawn
+/// as 2·M (w = 2 at every vertex: the same points, and with NORMALIZE the same normals), it
+/// lights as M does, in every mode, within the rounding of the host's derived state.
+#[test]
+fn a_projective_modelview_lights_as_its_affine_equal_in_a_pipeline_of_its_own() {
+    let mut r = renderer_with(Specialize::Always);
+    let sphere = r.upload(&ffvk::mesh::MeshData::uv_sphere(24, 12)).unwrap();
+    let affine = Mat4::from_translation(Vec3::new(0.2, -0.1, -3.0));
+    let projective = affine * 2.0;
+    for mode in LightingMode::ALL {
+        let state = with(dark(), |gl| {
+            for i in 0..3 {
+                gl.enable(Cap::Light(i))?;
+                gl.light(i, LightParam::Position(Vec4::new(i as f32 - 1.0, 1.0, 0.5, 0.0)))?;
+                gl.light(i, LightParam::Diffuse(Vec4::new(0.6, 0.5, 0.4, 1.0)))?;
+                gl.light(i, LightParam::Specular(Vec4::ONE))?;
+            }
+            gl.material(Face::FrontAndBack, MaterialParam::Specular(Vec4::splat(0.8)))?;
+            gl.material(Face::FrontAndBack, MaterialParam::Shininess(20.0))?;
+            gl.enable(Cap::Normalize)?;
+            gl.lighting_mode(mode);
+            Ok(())
+        })
+        .lighting;
+        let image = |r: &mut Renderer, mv: Mat4| {
+            let mut frame = Frame::new(64, 64);
+            frame
+                .draws
+                .push(Draw::new(&sphere, mv, perspective(45.0, 1.0, 0.5, 10.0), state));
+            r.render(&frame).unwrap().into_rgba_image()
+        };
+        let a = image(&mut r, affine);
+        let before = r.pipeline_counts().0;
+        let p = image(&mut r, projective);
+        assert_eq!(
+            r.pipeline_counts().0,
+            before + 1,
+            "{mode:?}: a pipeline of its own"
+        );
+        let worst = a
+            .pixels()
+            .zip(p.pixels())
+            .flat_map(|(x, y)| (0..4).map(move |c| x.0[c].abs_diff(y.0[c])))
+            .max()
+            .unwrap();
+        assert!(worst <= 1, "{mode:?}: {worst}/255 apart");
+        let lit_pixels = a.pixels().filter(|px| px.0[0] > 40).count();
+        assert!(lit_pixels > 400, "{mode:?}: {lit_pixels} lit pixels");
+    }
+    finish(r);
+}

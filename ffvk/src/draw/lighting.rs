@@ -54,7 +54,7 @@
 //! those writes, about 0.1 µs on the host on lavapipe in a run whose draws borrow one
 //! [`LightingState`] and carry their own [`DrawValues`] (0.3-0.5 µs when each draw brings a
 //! state of its own, which is compared with the one before). The rest ([`StateBlock`]: lights,
-//! light model, switches, texture environment and matrix, projection; 2,256 bytes) is checked,
+//! light model, switches, texture environment and matrix, projection; 2,768 bytes) is checked,
 //! packed and written only when it differs from the previous draw's in the same frame slot,
 //! and then bound at a new dynamic offset; the pipeline, too, is looked up only then (about
 //! 0.7 µs more). [`Lighting::draw_run`] is the recording scope: its draws bind only what
@@ -124,8 +124,19 @@ struct LastState {
     slot: u32,
     key: StateKey,
     block: Pushed,
-    /// (mode, raster state, (textured, small)) and the pipeline such a draw of this state uses.
-    pipelines: Vec<(LightingMode, RasterState, (bool, bool), vk::Pipeline)>,
+    /// (mode, raster state, variant) and the pipeline such a draw of this state uses.
+    pipelines: Vec<(LightingMode, RasterState, Variant, vk::Pipeline)>,
+}
+
+/// What besides its state and raster state picks a draw's pipeline.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct Variant {
+    /// It samples a texture.
+    textured: bool,
+    /// A fragment-mode draw of fewer than [`SMALL_DRAW_VERTICES`] vertices.
+    small: bool,
+    /// Its modelview is affine: every vertex at w = 1 (`SpecConstant::FiniteVertices`).
+    affine: bool,
 }
 
 /// How to make a [`Lighting`].
@@ -410,7 +421,13 @@ impl Lighting {
     ) -> Result<()> {
         let textured = textured && state.texture.enabled;
         let small = small && state.mode == LightingMode::Fragment;
-        self.pipeline_for(state, raster, (textured, small)).map(|_| ())
+        // Draws with an affine modelview, as nearly all are.
+        let variant = Variant {
+            textured,
+            small,
+            affine: true,
+        };
+        self.pipeline_for(state, raster, variant).map(|_| ())
     }
 
     /// A descriptor set naming the caller's image `view` and `sampler`, for
@@ -503,7 +520,12 @@ impl Lighting {
         // A small draw of the fragment mode takes its materials as flat varyings; a larger one
         // reads them from its record, bound for its fragment stage.
         let small = mode == LightingMode::Fragment && draw.geometry.fetched() < SMALL_DRAW_VERTICES;
-        let variant = (Self::textured(draw), small);
+        // An affine modelview puts every vertex at w = 1 (SpecConstant::FiniteVertices).
+        let variant = Variant {
+            textured: Self::textured(draw),
+            small,
+            affine: draw.modelview.row(3) == glam::Vec4::W,
+        };
         let found = self.last.as_ref().and_then(|last| {
             last.pipelines
                 .iter()
@@ -668,20 +690,21 @@ impl Lighting {
         }
     }
 
-    /// The pipeline a draw with `state` and `raster`, (textured or not, small or not), uses
-    /// under the [`Specialize`] policy.
+    /// The pipeline a draw with `state` and `raster`, (textured or not, small or not, with an
+    /// affine modelview or not), uses under the [`Specialize`] policy.
     fn pipeline_for(
         &mut self,
         state: &LightingState,
         raster: RasterState,
-        textured: (bool, bool),
+        variant: Variant,
     ) -> Result<vk::Pipeline> {
         let mode = state.mode;
+        let (textured, affine) = ((variant.textured, variant.small), variant.affine);
         let key = match self.specialize {
             Specialize::Never => SpecKey::UBER,
-            Specialize::Always => SpecKey::for_state(state),
+            Specialize::Always => SpecKey::for_state(state).with_finite_vertices(affine),
             Specialize::Auto => {
-                let key = SpecKey::for_state(state);
+                let key = SpecKey::for_state(state).with_finite_vertices(affine);
                 if self.pipelines.contains(mode, key, raster, textured)
                     || self.pipelines.counts().1 < MAX_AUTO_VARIANTS
                 {

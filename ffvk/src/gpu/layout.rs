@@ -22,7 +22,7 @@ pub const VK_FROM_GL_CLIP: Mat4 = Mat4::from_cols_array(&[
     0.0, 0.0, 0.5, 1.0,
 ]);
 
-/// One enabled [`Light`] as the GLSL `Light` struct (std140, 128 bytes), eye space.
+/// One enabled [`Light`] as the GLSL `Light` struct (std140, 160 bytes), eye space.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct GpuLight {
@@ -59,12 +59,46 @@ pub struct GpuLight {
     pub falloff: u32,
     /// glTF's range, > 0; 0 for none.
     pub range: f32,
-    /// Rounds the struct up to std140's 16-byte struct alignment; always zero.
+    /// Fills the 16-byte slot of `range` (std140 starts a `vec3` on 16 bytes); always zero.
     pub _pad: [f32; 3],
+    /// For a directional light (w = 0): the unit vector toward it, VP_pli of every finite
+    /// vertex. GL's derived state, computed here when the state changes (in double precision,
+    /// rounded once) so the vertex stage does not normalize it per vertex; zero for a
+    /// positional light.
+    pub VP_hat_inf: [f32; 3],
+    /// Always zero.
+    pub _pad_VP: f32,
+    /// For a directional light: the unit halfway vector ĥ_i of `VP_hat_inf` and the infinite
+    /// viewer's (0, 0, 1), GLSL 1.20's `gl_LightSource[i].halfVector`; zero for a positional
+    /// light.
+    pub h_hat_inf: [f32; 3],
+    /// Rounds the struct up to std140's 16-byte struct alignment; always zero.
+    pub _pad_h: f32,
+}
+
+/// For a directional light at `position` (w = 0): the unit vector toward it and the unit
+/// halfway vector of it and (0, 0, 1), in double precision and rounded once; zero vectors for
+/// a positional light (or a zero direction).
+fn directional_derived(position: glam::Vec4) -> ([f32; 3], [f32; 3]) {
+    if position.w != 0.0 {
+        return ([0.0; 3], [0.0; 3]);
+    }
+    let unit = |v: glam::DVec3| {
+        let len = v.length();
+        if len > 0.0 {
+            v / len
+        } else {
+            glam::DVec3::ZERO
+        }
+    };
+    let VP = unit(position.truncate().as_dvec3());
+    let h = unit(VP + glam::DVec3::Z);
+    (VP.as_vec3().to_array(), h.as_vec3().to_array())
 }
 
 impl From<&Light> for GpuLight {
     fn from(l: &Light) -> Self {
+        let (VP_hat_inf, h_hat_inf) = directional_derived(l.position);
         GpuLight {
             a_cli: l.ambient.to_array(),
             d_cli: l.diffuse.to_array(),
@@ -89,6 +123,10 @@ impl From<&Light> for GpuLight {
                 _ => 0.0,
             },
             _pad: [0.0; 3],
+            VP_hat_inf,
+            _pad_VP: 0.0,
+            h_hat_inf,
+            _pad_h: 0.0,
         }
     }
 }
@@ -238,10 +276,16 @@ pub enum SpecConstant {
     /// `SPEC_ANY_GLTF_FALLOFF`: 0 promises that every enabled light has GL's attenuation,
     /// so glTF's falloff is compiled out; 1 means some light may have it.
     AnyGltfFalloff = 11,
+    /// `SPEC_FINITE_VERTICES`: 1 promises that every enabled light is directional and every
+    /// vertex lies at a finite point (w ≠ 0: the draw's modelview is affine, its last row
+    /// (0, 0, 0, 1)), so that VP_pli and, for the infinite viewer, ĥ_i are the light's
+    /// derived state ([`GpuLight::VP_hat_inf`], [`GpuLight::h_hat_inf`]) at every vertex;
+    /// 0 promises nothing. Set per draw ([`SpecKey::for_draw`]).
+    FiniteVertices = 12,
 }
 
 /// How many specialization constants there are.
-pub const SPEC_CONSTANT_COUNT: usize = 12;
+pub const SPEC_CONSTANT_COUNT: usize = 13;
 
 impl SpecConstant {
     /// Every constant, in `constant_id` order.
@@ -258,6 +302,7 @@ impl SpecConstant {
         SpecConstant::SpecularModel,
         SpecConstant::AnySoftSpot,
         SpecConstant::AnyGltfFalloff,
+        SpecConstant::FiniteVertices,
     ];
 
     /// The `constant_id` in the GLSL.
@@ -280,6 +325,7 @@ impl SpecConstant {
             SpecConstant::SpecularModel => "SPEC_SPECULAR_MODEL",
             SpecConstant::AnySoftSpot => "SPEC_ANY_SOFT_SPOT",
             SpecConstant::AnyGltfFalloff => "SPEC_ANY_GLTF_FALLOFF",
+            SpecConstant::FiniteVertices => "SPEC_FINITE_VERTICES",
         }
     }
 }
@@ -352,6 +398,25 @@ impl SpecKey {
         }
         values[SpecConstant::LightCount as usize] = lights.len() as i32;
         SpecKey { values }
+    }
+
+    /// [`SpecKey::for_state`] for a draw with `modelview`: [`SpecConstant::FiniteVertices`]
+    /// set where it can act (lit, with lights, every one directional) and the modelview is
+    /// affine, which makes every vertex's w exactly 1. The uber-shader's key stays as it is.
+    pub fn for_draw(state: &LightingState, modelview: Mat4) -> SpecKey {
+        SpecKey::for_state(state).with_finite_vertices(modelview.row(3) == glam::Vec4::W)
+    }
+
+    /// This key with [`SpecConstant::FiniteVertices`] set to `finite` where it can act (see
+    /// [`SpecKey::for_draw`]).
+    pub fn with_finite_vertices(mut self, finite: bool) -> SpecKey {
+        let can_act = self.get(SpecConstant::Lighting) == 1
+            && self.get(SpecConstant::LightCount) > 0
+            && self.get(SpecConstant::AnyLocalLight) == 0;
+        if can_act {
+            self.values[SpecConstant::FiniteVertices as usize] = finite as i32;
+        }
+        self
     }
 }
 
