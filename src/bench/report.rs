@@ -321,6 +321,38 @@ pub fn markdown(report: &BenchReport) -> String {
             gl_name.map(|n| format!(" ({n})")).unwrap_or_default(),
             s.gl_ratios.iter().filter(|r| r.mode == BenchMode::Vertex).count()
         );
+        let vertex: Vec<f64> = s
+            .gl_ratios
+            .iter()
+            .filter(|r| r.mode == BenchMode::Vertex)
+            .map(|r| r.ratio)
+            .collect();
+        let (lo, hi) = vertex
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &r| {
+                (lo.min(r), hi.max(r))
+            });
+        let _ = writeln!(
+            m,
+            "- ffvk vertex mode ÷ GL per scene: {lo:.2} to {hi:.2}; {} of {} scenes above 1.0",
+            vertex.iter().filter(|&&r| r > 1.0).count(),
+            vertex.len()
+        );
+    }
+    // Lighting's own cost per vertex: the lit density fit's slope less the unlit one.
+    let slope = |engine: Engine, mode: BenchMode| {
+        s.costs
+            .iter()
+            .find(|c| c.engine == engine && c.mode == mode)
+            .and_then(|c| c.ns_per_vertex)
+    };
+    let added = |engine| Some(slope(engine, BenchMode::Vertex)? - slope(engine, BenchMode::Unlit)?);
+    if let Some(ffvk) = added(Engine::Ffvk) {
+        let _ = writeln!(
+            m,
+            "- per-vertex lighting's added cost (vertex-mode minus unlit ns per vertex, from the density fits): ffvk {ffvk:.0} ns{}",
+            added(Engine::Gl).map_or(String::new(), |gl| format!(", GL {gl:.0} ns"))
+        );
     }
     m
 }
@@ -904,6 +936,8 @@ Least-squares slopes of the sweeps above, in ns: per vertex drawn (density sweep
 - vertex mode: the uber-shader takes 1.25× the time of specialized pipelines (geometric mean)
 - ffvk's default: Specialize::auto (specialized pipelines)
 - ffvk vertex mode ÷ the GL driver's fixed-function GL (llvmpipe (LLVM 15.0.6, 256 bits)) (host time per frame, geometric mean over 10 scenes): 0.67
+- ffvk vertex mode ÷ GL per scene: 0.67 to 0.67; 0 of 10 scenes above 1.0
+- per-vertex lighting's added cost (vertex-mode minus unlit ns per vertex, from the density fits): ffvk 7900 ns, GL 11850 ns
 "#;
 
     #[test]
