@@ -109,6 +109,9 @@ layout(constant_id = 11) const int SPEC_ANY_GLTF_FALLOFF = -1;  // some light ha
 // A promise (1) that every light is directional and every vertex finite (w != 0: an affine
 // modelview), so that VP_pli and the infinite viewer's ĥ_i are each light's derived state.
 layout(constant_id = 12) const int SPEC_FINITE_VERTICES = -1;
+// 1 in pipelines drawing points (their vertex stage writes the point size), 0 in others; the
+// uber-shader (-1) writes it always.
+layout(constant_id = 13) const int SPEC_POINTS = -1;
 
 // A switch of the uber-shader, read from the uniform block. lavapipe 22.3 compiles a shader
 // variant for every draw whose uniforms changed when an if or a loop bound depends on uniform

@@ -262,6 +262,13 @@ pub enum LightingError {
     /// A textured draw with a vertex layout that has no texture coordinates.
     #[error("the draw is textured, but the vertex layout has no texture coordinates: expected VertexInput::texcoord")]
     NoTexcoord,
+    /// Primitive restart on a list topology (Vulkan allows it only with a feature ffvk does
+    /// not ask for, and GL's lists have nothing to restart).
+    #[error("primitive restart is on for {topology}: expected GL_LINE_STRIP, GL_TRIANGLE_STRIP or GL_TRIANGLE_FAN, or restart off")]
+    RestartOnList {
+        /// GL's name of the draw's mode.
+        topology: &'static str,
+    },
     /// A draw passes a different number of vertex buffers than the layout has bindings.
     #[error(
         "the draw passes {given} vertex buffer(s): expected {expected}, one per binding of the vertex layout"

@@ -101,7 +101,7 @@ pub struct ReadmeDoctests;
 
 pub use draw::lighting::{DrawValues, Lighting, LightingOptions, LitDraw};
 pub use draw::pipeline::{Attribute, Blend, RasterState, Specialize, Target, VertexInput};
-pub use draw::record::Geometry;
+pub use draw::record::{Geometry, Topology};
 pub use draw::texture::TextureBinding;
 pub use error::{Error, LightingError, MeshError, Result, UnknownName};
 pub use renderer::{

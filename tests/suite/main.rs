@@ -25,3 +25,4 @@ mod state;
 mod support;
 mod texture_conformance;
 mod texturing;
+mod topology;

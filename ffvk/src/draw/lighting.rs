@@ -96,7 +96,7 @@ use super::pipeline::{
     PipelineConfig, Pipelines, RasterState, Specialize, Target, VertexInput, MAX_AUTO_VARIANTS,
     SMALL_DRAW_VERTICES,
 };
-use super::record::{record, record_in_run, Bound, Geometry, RunState};
+use super::record::{record, record_in_run, Bound, Geometry, RunState, Topology};
 use super::ring::{Pushed, Ring, RingUse};
 use super::texture::TextureBinding;
 use crate::error::{LightingError, Result};
@@ -137,6 +137,8 @@ struct Variant {
     small: bool,
     /// Its modelview is affine: every vertex at w = 1 (`SpecConstant::FiniteVertices`).
     affine: bool,
+    /// Its topology and primitive restart.
+    assembly: (Topology, bool),
 }
 
 /// How to make a [`Lighting`].
@@ -426,6 +428,7 @@ impl Lighting {
             textured,
             small,
             affine: true,
+            assembly: (Topology::TriangleList, false),
         };
         self.pipeline_for(state, raster, variant).map(|_| ())
     }
@@ -525,6 +528,7 @@ impl Lighting {
             textured: Self::textured(draw),
             small,
             affine: draw.modelview.row(3) == glam::Vec4::W,
+            assembly: draw.geometry.assembly(),
         };
         let found = self.last.as_ref().and_then(|last| {
             last.pipelines
@@ -699,13 +703,17 @@ impl Lighting {
         variant: Variant,
     ) -> Result<vk::Pipeline> {
         let mode = state.mode;
-        let (textured, affine) = ((variant.textured, variant.small), variant.affine);
+        let (textured, affine, assembly) = (
+            (variant.textured, variant.small),
+            variant.affine,
+            variant.assembly,
+        );
         let key = match self.specialize {
             Specialize::Never => SpecKey::UBER,
             Specialize::Always => SpecKey::for_state(state).with_finite_vertices(affine),
             Specialize::Auto => {
                 let key = SpecKey::for_state(state).with_finite_vertices(affine);
-                if self.pipelines.contains(mode, key, raster, textured)
+                if self.pipelines.contains(mode, key, raster, textured, assembly)
                     || self.pipelines.counts().1 < MAX_AUTO_VARIANTS
                 {
                     key
@@ -714,6 +722,6 @@ impl Lighting {
                 }
             }
         };
-        self.pipelines.get(mode, key, raster, textured)
+        self.pipelines.get(mode, key, raster, textured, assembly)
     }
 }

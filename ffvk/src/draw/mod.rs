@@ -3,6 +3,7 @@
 //! [`lighting::Lighting`], which puts them together for
 //! a caller's device and command buffers.
 
+pub mod gl_primitives;
 pub mod lighting;
 pub mod pipeline;
 pub mod record;

@@ -7,6 +7,7 @@ use std::sync::Arc;
 
 use ash::vk;
 
+use crate::draw::record::Topology;
 use crate::error::{Error, LightingError, Result};
 use crate::gl::state::LightingMode;
 use crate::gpu::layout::{
@@ -612,6 +613,10 @@ struct PipelineKey {
     textured: bool,
     /// A small draw of the fragment mode (always false in the other modes).
     small: bool,
+    /// The primitives its vertices make.
+    topology: Topology,
+    /// Primitive restart (strips and fans only).
+    restart: bool,
 }
 
 /// The descriptor layouts, pipeline layout, cache and the pipelines made so far.
@@ -720,6 +725,7 @@ impl Pipelines {
         key: SpecKey,
         raster: RasterState,
         (textured, small): (bool, bool),
+        (topology, restart): (Topology, bool),
     ) -> Result<vk::Pipeline> {
         let k = PipelineKey {
             mode,
@@ -727,6 +733,8 @@ impl Pipelines {
             raster,
             textured,
             small: small && mode == LightingMode::Fragment,
+            topology,
+            restart,
         };
         if let Some(pipeline) = self.pipelines.get(&k) {
             return Ok(pipeline.raw());
@@ -744,6 +752,7 @@ impl Pipelines {
         key: SpecKey,
         raster: RasterState,
         (textured, small): (bool, bool),
+        (topology, restart): (Topology, bool),
     ) -> bool {
         self.pipelines.contains_key(&PipelineKey {
             mode,
@@ -751,6 +760,8 @@ impl Pipelines {
             raster,
             textured,
             small: small && mode == LightingMode::Fragment,
+            topology,
+            restart,
         })
     }
 
@@ -776,6 +787,12 @@ impl Pipelines {
         if k.textured && config.vertex_input.texcoord.is_none() {
             return Err(LightingError::NoTexcoord.into());
         }
+        if k.restart && !k.topology.restartable() {
+            return Err(LightingError::RestartOnList {
+                topology: k.topology.gl_name(),
+            }
+            .into());
+        }
         let name = variant_name(
             k.mode,
             k.spec,
@@ -796,9 +813,12 @@ impl Pipelines {
                 offset: c.id() * 4,
                 size: 4,
             });
+        // The topology's constant is the pipeline's, not the state's.
+        let mut spec = k.spec;
+        spec.values[SpecConstant::Points as usize] = (k.topology == Topology::PointList) as i32;
         let specialization = vk::SpecializationInfo::default()
             .map_entries(&entries)
-            .data(bytemuck::bytes_of(&k.spec));
+            .data(bytemuck::bytes_of(&spec));
         let mut stages = [
             vk::PipelineShaderStageCreateInfo::default()
                 .stage(vk::ShaderStageFlags::VERTEX)
@@ -821,7 +841,8 @@ impl Pipelines {
             .vertex_binding_descriptions(&bindings)
             .vertex_attribute_descriptions(&attributes);
         let input_assembly = vk::PipelineInputAssemblyStateCreateInfo::default()
-            .topology(vk::PrimitiveTopology::TRIANGLE_LIST);
+            .topology(k.topology.vk())
+            .primitive_restart_enable(k.restart);
         let viewport = vk::PipelineViewportStateCreateInfo::default()
             .viewport_count(1)
             .scissor_count(1);

@@ -2,8 +2,70 @@
 
 use ash::vk;
 
-/// Which vertices a draw reads: GL's `glDrawElements` or `glDrawArrays` with
-/// `GL_TRIANGLES`.
+/// How a draw's vertices make primitives: GL's primitive modes that Vulkan draws as they are.
+/// GL's `GL_QUADS`, `GL_QUAD_STRIP`, `GL_POLYGON` and `GL_LINE_LOOP` become these through
+/// [`gl_primitives`](crate::draw::gl_primitives), which keeps GL's provoking vertex.
+///
+/// Flat shading takes GL's provoking vertex (GL 2.1 §2.14.7, table 2.12), the last of each
+/// primitive (pipelines use `VK_EXT_provoking_vertex`'s last-vertex mode): a line's second
+/// vertex, a strip's or a fan's triangle's third (for a fan, vertex i + 2). Points and lines
+/// are lit with the front material and take the front color, two-sided lighting or not:
+/// facing is a polygon's property (Vulkan counts points and lines as front-facing).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[non_exhaustive]
+pub enum Topology {
+    /// `GL_POINTS`: one point per vertex, one pixel wide.
+    PointList,
+    /// `GL_LINES`: a segment per two vertices, one pixel wide.
+    LineList,
+    /// `GL_LINE_STRIP`: a segment from each vertex to the next.
+    LineStrip,
+    /// `GL_TRIANGLES`: a triangle per three vertices.
+    #[default]
+    TriangleList,
+    /// `GL_TRIANGLE_STRIP`.
+    TriangleStrip,
+    /// `GL_TRIANGLE_FAN`.
+    TriangleFan,
+}
+
+impl Topology {
+    /// The Vulkan topology.
+    pub fn vk(self) -> vk::PrimitiveTopology {
+        match self {
+            Topology::PointList => vk::PrimitiveTopology::POINT_LIST,
+            Topology::LineList => vk::PrimitiveTopology::LINE_LIST,
+            Topology::LineStrip => vk::PrimitiveTopology::LINE_STRIP,
+            Topology::TriangleList => vk::PrimitiveTopology::TRIANGLE_LIST,
+            Topology::TriangleStrip => vk::PrimitiveTopology::TRIANGLE_STRIP,
+            Topology::TriangleFan => vk::PrimitiveTopology::TRIANGLE_FAN,
+        }
+    }
+
+    /// GL's name of the mode.
+    pub fn gl_name(self) -> &'static str {
+        match self {
+            Topology::PointList => "GL_POINTS",
+            Topology::LineList => "GL_LINES",
+            Topology::LineStrip => "GL_LINE_STRIP",
+            Topology::TriangleList => "GL_TRIANGLES",
+            Topology::TriangleStrip => "GL_TRIANGLE_STRIP",
+            Topology::TriangleFan => "GL_TRIANGLE_FAN",
+        }
+    }
+
+    /// A strip or a fan: the topologies primitive restart can cut (Vulkan allows it on lists
+    /// only with a feature ffvk does not ask for).
+    pub fn restartable(self) -> bool {
+        matches!(
+            self,
+            Topology::LineStrip | Topology::TriangleStrip | Topology::TriangleFan
+        )
+    }
+}
+
+/// Which vertices a draw reads and how they make primitives: GL's `glDrawElements` or
+/// `glDrawArrays` (`GL_TRIANGLES` unless [`Geometry::with_topology`] says otherwise).
 ///
 /// ```
 /// use ffvk::ash::vk;
@@ -25,7 +87,7 @@ use ash::vk;
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum Geometry {
-    /// Indexed triangles (`vkCmdDrawIndexed`): made by [`Geometry::indexed`].
+    /// Indexed vertices (`vkCmdDrawIndexed`): made by [`Geometry::indexed`].
     #[non_exhaustive]
     Indexed {
         /// The index buffer.
@@ -36,18 +98,25 @@ pub enum Geometry {
         index_type: vk::IndexType,
         /// The first index read.
         first_index: u32,
-        /// How many indices, three per triangle.
+        /// How many indices.
         index_count: u32,
         /// Added to every index before the vertex is fetched.
         vertex_offset: i32,
+        /// How the vertices make primitives.
+        topology: Topology,
+        /// Primitive restart: the index of all ones (0xFFFF, 0xFFFFFFFF) starts a new strip
+        /// or fan (`GL_PRIMITIVE_RESTART` with GL 4.3's fixed index).
+        primitive_restart: bool,
     },
-    /// Consecutive vertices, three per triangle (`vkCmdDraw`): made by [`Geometry::vertices`].
+    /// Consecutive vertices (`vkCmdDraw`): made by [`Geometry::vertices`].
     #[non_exhaustive]
     Vertices {
         /// The first vertex.
         first_vertex: u32,
         /// How many vertices.
         vertex_count: u32,
+        /// How the vertices make primitives.
+        topology: Topology,
     },
 }
 
@@ -63,6 +132,8 @@ impl Geometry {
             first_index: 0,
             index_count,
             vertex_offset: 0,
+            topology: Topology::TriangleList,
+            primitive_restart: false,
         }
     }
 
@@ -72,7 +143,30 @@ impl Geometry {
         Geometry::Vertices {
             first_vertex: 0,
             vertex_count,
+            topology: Topology::TriangleList,
         }
+    }
+
+    /// Makes primitives of `mode` from the vertices (`GL_TRIANGLES` by default).
+    #[must_use]
+    pub fn with_topology(mut self, mode: Topology) -> Self {
+        match &mut self {
+            Geometry::Indexed { topology, .. } | Geometry::Vertices { topology, .. } => *topology = mode,
+        }
+        self
+    }
+
+    /// Indexed strips and fans: the index of all ones starts a new primitive (no effect on
+    /// `vertices`; a list with restart on is refused when drawn).
+    #[must_use]
+    pub fn with_primitive_restart(mut self, on: bool) -> Self {
+        if let Geometry::Indexed {
+            primitive_restart, ..
+        } = &mut self
+        {
+            *primitive_restart = on;
+        }
+        self
     }
 
     /// Starts at index `first` (indexed) or vertex `first` (`glDrawArrays`' `first`).
@@ -111,6 +205,18 @@ impl Geometry {
         match *self {
             Geometry::Indexed { index_count, .. } => index_count,
             Geometry::Vertices { vertex_count, .. } => vertex_count,
+        }
+    }
+
+    /// How the vertices make primitives, and whether primitive restart is on.
+    pub fn assembly(&self) -> (Topology, bool) {
+        match *self {
+            Geometry::Indexed {
+                topology,
+                primitive_restart,
+                ..
+            } => (topology, primitive_restart),
+            Geometry::Vertices { topology, .. } => (topology, false),
         }
     }
 }
@@ -281,6 +387,7 @@ pub(crate) unsafe fn record_in_run(
             first_index,
             index_count,
             vertex_offset,
+            ..
         } => {
             if run.index_buffer != Some((buffer, offset, index_type)) {
                 run.index_buffer = Some((buffer, offset, index_type));
@@ -303,6 +410,7 @@ pub(crate) unsafe fn record_in_run(
         Geometry::Vertices {
             first_vertex,
             vertex_count,
+            ..
         } => {
             // SAFETY: as above.
             unsafe { device.cmd_draw(cmd, vertex_count, instances, first_vertex, first_instance) };

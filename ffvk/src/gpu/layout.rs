@@ -282,10 +282,14 @@ pub enum SpecConstant {
     /// derived state ([`GpuLight::VP_hat_inf`], [`GpuLight::h_hat_inf`]) at every vertex;
     /// 0 promises nothing. Set per draw ([`SpecKey::for_draw`]).
     FiniteVertices = 12,
+    /// `SPEC_POINTS`: 1 for a pipeline drawing points, whose vertex stage writes the point
+    /// size (one pixel, GL's default); 0 for other topologies. Set from the draw's topology
+    /// when the pipeline is made, not by [`SpecKey::for_state`].
+    Points = 13,
 }
 
 /// How many specialization constants there are.
-pub const SPEC_CONSTANT_COUNT: usize = 13;
+pub const SPEC_CONSTANT_COUNT: usize = 14;
 
 impl SpecConstant {
     /// Every constant, in `constant_id` order.
@@ -303,6 +307,7 @@ impl SpecConstant {
         SpecConstant::AnySoftSpot,
         SpecConstant::AnyGltfFalloff,
         SpecConstant::FiniteVertices,
+        SpecConstant::Points,
     ];
 
     /// The `constant_id` in the GLSL.
@@ -326,6 +331,7 @@ impl SpecConstant {
             SpecConstant::AnySoftSpot => "SPEC_ANY_SOFT_SPOT",
             SpecConstant::AnyGltfFalloff => "SPEC_ANY_GLTF_FALLOFF",
             SpecConstant::FiniteVertices => "SPEC_FINITE_VERTICES",
+            SpecConstant::Points => "SPEC_POINTS",
         }
     }
 }

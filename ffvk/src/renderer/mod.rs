@@ -8,6 +8,7 @@ use glam::{Mat4, Vec4};
 use crate::draw::lighting::{Lighting, LightingOptions};
 use crate::draw::pipeline::{RasterState, Target, VertexInput};
 use crate::draw::pipeline::{Specialize, COLOR_FORMAT, DEPTH_FORMAT};
+use crate::draw::record::Topology;
 use crate::draw::texture::sampler_info;
 use crate::error::{vk_error, Error, MeshError, Result};
 use crate::gl::state::{Face, LightingState};
@@ -95,6 +96,9 @@ pub struct Draw<'a> {
     /// `state.texture.enabled` is on and the texture is complete. `None`: GL's texture 0,
     /// which textures nothing.
     pub texture: Option<&'a Texture>,
+    /// How the mesh's indices make primitives: `TriangleList` (GL_TRIANGLES) by default; the
+    /// same indices may be drawn as points, lines, strips or fans (see [`Topology`]).
+    pub topology: Topology,
 }
 
 impl<'a> Draw<'a> {
@@ -107,7 +111,15 @@ impl<'a> Draw<'a> {
             state,
             cull_face: None,
             texture: None,
+            topology: Topology::TriangleList,
         }
+    }
+
+    /// This draw with its mesh's indices read as `topology` (`GL_POINTS`, `GL_LINES`, …).
+    #[must_use]
+    pub fn with_topology(mut self, topology: Topology) -> Self {
+        self.topology = topology;
+        self
     }
 
     /// This draw with `glCullFace(face)` and `GL_CULL_FACE` on (`None`: off).

@@ -278,7 +278,8 @@ pub(super) fn lit_draws<'f>(frame: &'f Frame) -> Vec<LitDraw<'f>> {
         .iter()
         .map(|draw| {
             let mesh = draw.mesh;
-            let geometry = Geometry::indexed(mesh.indices.raw(), vk::IndexType::UINT32, mesh.index_count);
+            let geometry = Geometry::indexed(mesh.indices.raw(), vk::IndexType::UINT32, mesh.index_count)
+                .with_topology(draw.topology);
             let buffers: &[(vk::Buffer, u64)] = std::slice::from_ref(&mesh.vertex_binding);
             LitDraw::new(&draw.state, draw.modelview, draw.projection, buffers, geometry)
                 .with_raster(draw.raster(frame))

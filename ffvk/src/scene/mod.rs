@@ -1307,6 +1307,7 @@ pub fn render_scene(
             state,
             cull_face: scene.cull_face(mesh),
             texture: mesh.texture.as_ref().and_then(texture_of),
+            topology: crate::Topology::TriangleList,
         });
     }
     Ok(renderer.render(&frame)?.into())

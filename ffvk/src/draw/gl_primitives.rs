@@ -1,0 +1,129 @@
+//! GL's primitive modes that Vulkan has no topology for, as index lists of one it has, keeping
+//! GL's winding and GL's provoking vertex (GL 2.1 §2.14.7, table 2.12), so that flat shading
+//! picks the vertex GL picks: draw the result with the [`Topology`](super::record::Topology)
+//! each function names, from pipelines whose provoking vertex is the last (ffvk's).
+//!
+//! Each takes the vertices in GL's order (the indices `glDrawElements` would read, or
+//! `first..first + count` for `glDrawArrays`) and drops what GL drops: an incomplete last
+//! primitive.
+
+/// `GL_QUADS` as `TriangleList`: quad (v0, v1, v2, v3) becomes (v0, v1, v3) and (v1, v2, v3).
+/// GL's provoking vertex of a quad is its fourth, which ends both triangles; both keep the
+/// quad's winding. Trailing vertices that make no quad are dropped.
+pub fn quads(vertices: &[u32]) -> Vec<u32> {
+    vertices
+        .chunks_exact(4)
+        .flat_map(|q| [q[0], q[1], q[3], q[1], q[2], q[3]])
+        .collect()
+}
+
+/// `GL_QUAD_STRIP` as `TriangleList`: quad i is (v2i, v2i+1, v2i+3, v2i+2) in GL's winding,
+/// with v2i+3 its provoking vertex (table 2.12: vertex 2i + 2, counting from 1), which ends
+/// both triangles: (v2i, v2i+1, v2i+3) and (v2i+2, v2i, v2i+3). A last unpaired vertex is
+/// dropped; fewer than four vertices draw nothing.
+pub fn quad_strip(vertices: &[u32]) -> Vec<u32> {
+    let pairs = vertices.len() / 2;
+    (1..pairs)
+        .flat_map(|i| {
+            let (a, b, c, d) = (
+                vertices[2 * i - 2],
+                vertices[2 * i - 1],
+                vertices[2 * i + 1],
+                vertices[2 * i],
+            );
+            [a, b, c, d, a, c]
+        })
+        .collect()
+}
+
+/// `GL_POLYGON` as `TriangleList`: a fan around v0 whose triangles (vi, vi+1, v0) end with v0,
+/// GL's provoking vertex of a polygon (the first); each is a rotation of (v0, vi, vi+1), so the
+/// winding is the polygon's. Fewer than three vertices draw nothing.
+pub fn polygon(vertices: &[u32]) -> Vec<u32> {
+    match vertices.split_first() {
+        Some((&v0, rest)) if rest.len() >= 2 => rest.windows(2).flat_map(|w| [w[0], w[1], v0]).collect(),
+        _ => Vec::new(),
+    }
+}
+
+/// `GL_LINE_LOOP` as `LineList`: each vertex to the next, and the last back to the first; each
+/// segment's second vertex is its provoking one, as in GL's loop. Fewer than two vertices
+/// draw nothing.
+pub fn line_loop(vertices: &[u32]) -> Vec<u32> {
+    if vertices.len() < 2 {
+        return Vec::new();
+    }
+    let next = vertices.iter().skip(1).chain(vertices.first());
+    vertices.iter().zip(next).flat_map(|(&a, &b)| [a, b]).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Twice the signed area of triangle (a, b, c) of `points`: positive counter-clockwise.
+    fn winding(points: &[(f64, f64)], t: &[u32]) -> f64 {
+        let [a, b, c] = [t[0], t[1], t[2]].map(|i| points[i as usize]);
+        (b.0 - a.0) * (c.1 - a.1) - (c.0 - a.0) * (b.1 - a.1)
+    }
+
+    #[test]
+    fn a_quad_is_two_triangles_ending_with_its_fourth_vertex_in_its_winding() {
+        let square = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
+        let t = quads(&[0, 1, 2, 3, 9]);
+        assert_eq!(t, [0, 1, 3, 1, 2, 3], "the trailing vertex 9 makes no quad");
+        for tri in t.chunks(3) {
+            assert_eq!(tri[2], 3, "GL's provoking vertex of a quad is its fourth");
+            assert!(winding(&square, tri) > 0.0);
+        }
+        // The two triangles cover the quad: their areas add up to it.
+        let area: f64 = t.chunks(3).map(|tri| winding(&square, tri) / 2.0).sum();
+        assert_eq!(area, 1.0);
+    }
+
+    #[test]
+    fn a_quad_strips_quads_end_with_vertex_2i_plus_2_counting_from_1() {
+        // Two quads side by side: 0-1 at the bottom, 2-3 above, 4-5 above that.
+        let points = [
+            (0.0, 0.0),
+            (1.0, 0.0),
+            (0.0, 1.0),
+            (1.0, 1.0),
+            (0.0, 2.0),
+            (1.0, 2.0),
+        ];
+        let t = quad_strip(&[0, 1, 2, 3, 4, 5, 6]);
+        assert_eq!(t.len(), 12, "two quads; the unpaired 6 is dropped");
+        for (q, quad) in t.chunks(6).enumerate() {
+            let provoking = 2 * q as u32 + 3;
+            for tri in quad.chunks(3) {
+                assert_eq!(tri[2], provoking);
+                assert!(winding(&points, tri) > 0.0, "{tri:?}");
+            }
+        }
+        assert!(quad_strip(&[0, 1, 2]).is_empty());
+    }
+
+    #[test]
+    fn a_polygon_is_a_fan_ending_with_its_first_vertex() {
+        let pentagon: Vec<(f64, f64)> = (0..5)
+            .map(|k| {
+                let a = k as f64 * std::f64::consts::TAU / 5.0;
+                (a.cos(), a.sin())
+            })
+            .collect();
+        let t = polygon(&[0, 1, 2, 3, 4]);
+        assert_eq!(t, [1, 2, 0, 2, 3, 0, 3, 4, 0]);
+        for tri in t.chunks(3) {
+            assert!(winding(&pentagon, tri) > 0.0);
+        }
+        assert!(polygon(&[0, 1]).is_empty());
+    }
+
+    #[test]
+    fn a_line_loop_closes_back_to_its_first_vertex() {
+        assert_eq!(line_loop(&[4, 5, 6]), [4, 5, 5, 6, 6, 4]);
+        assert_eq!(line_loop(&[4, 5]), [4, 5, 5, 4]);
+        assert!(line_loop(&[4]).is_empty());
+    }
+}

@@ -1,0 +1,235 @@
+//! GL's other primitives through the renderer: points, lines, strips and fans lit as GL lights
+//! them, each pixel checked against the CPU reference's lit vertex. Points and lines take the
+//! front material and the front color even with two-sided lighting (facing is a polygon's
+//! property); flat shading takes GL's provoking vertex (GL 2.1 §2.14.7, table 2.12): the last
+//! of each line and of each strip or fan triangle.
+
+use ffvk::gl::state::*;
+use ffvk::mesh::{MeshData, Vertex};
+use ffvk::{Draw, Frame, Topology};
+use glam::{DVec4, Mat4, Vec3, Vec4};
+
+use crate::support::*;
+
+const SIZE: u32 = 16;
+
+/// The center of pixel (x, y) at z = 0 under identity matrices.
+fn at_pixel(x: f32, y: f32) -> Vec3 {
+    Vec3::new(
+        (x + 0.5) / SIZE as f32 * 2.0 - 1.0,
+        1.0 - (y + 0.5) / SIZE as f32 * 2.0,
+        0.0,
+    )
+}
+
+/// Two-sided lighting with a light from the upper right, a warm front and a blue back
+/// material, so that a wrong face or a wrong vertex shows.
+fn two_sided(mode: LightingMode) -> GlState {
+    with(dark(), |gl| {
+        gl.enable(Cap::Light(0))?;
+        gl.light(0, LightParam::Position(Vec4::new(0.6, 0.5, 1.0, 0.0)))?;
+        gl.light(0, LightParam::Specular(Vec4::new(0.5, 0.5, 0.5, 1.0)))?;
+        gl.light_model(LightModelParam::TwoSide(true))?;
+        gl.material(Face::Front, MaterialParam::Diffuse(Vec4::new(0.9, 0.5, 0.2, 1.0)))?;
+        gl.material(Face::Front, MaterialParam::Ambient(Vec4::new(0.3, 0.1, 0.0, 1.0)))?;
+        gl.material(Face::Back, MaterialParam::Diffuse(Vec4::new(0.1, 0.3, 0.9, 1.0)))?;
+        gl.material(Face::Back, MaterialParam::Ambient(Vec4::new(0.0, 0.1, 0.4, 1.0)))?;
+        gl.material(Face::FrontAndBack, MaterialParam::Specular(Vec4::splat(0.6)))?;
+        gl.material(Face::FrontAndBack, MaterialParam::Shininess(10.0))?;
+        gl.lighting_mode(mode);
+        Ok(())
+    })
+}
+
+/// The reference's lit color of vertex `v` for the front (or back) face, identity matrices.
+fn lit(state: &LightingState, v: &Vertex, back: bool) -> DVec4 {
+    let eye = ffvk::reference::transform(state, Mat4::IDENTITY, Mat4::IDENTITY, v);
+    let (pri, sec) = ffvk::reference::vertex_color(state, &eye, back);
+    ffvk::reference::color_sum(pri, sec)
+}
+
+/// Draws `vertices` and `indices` as `topology` in a black SIZE² frame.
+fn draw(gl: &GlState, vertices: Vec<Vertex>, indices: Vec<u32>, topology: Topology) -> image::RgbaImage {
+    let mut r = renderer();
+    let mesh = r.upload(&MeshData::new(vertices, indices)).unwrap();
+    let mut frame = Frame::new(SIZE, SIZE);
+    frame.clear_color = Vec4::new(0.0, 0.0, 0.0, 1.0);
+    frame
+        .draws
+        .push(Draw::new(&mesh, Mat4::IDENTITY, Mat4::IDENTITY, gl.lighting).with_topology(topology));
+    let image = r.render(&frame).unwrap().into_rgba_image();
+    drop(mesh);
+    finish(r);
+    image
+}
+
+#[test]
+fn points_take_the_front_material_and_color_even_facing_away_with_two_sided_lighting() {
+    for mode in LightingMode::ALL {
+        let gl = two_sided(mode);
+        let normals = [Vec3::Z, Vec3::NEG_Z, Vec3::new(0.6, 0.0, 0.8)];
+        let vertices: Vec<Vertex> = normals
+            .iter()
+            .enumerate()
+            .map(|(k, &n)| Vertex::new(at_pixel(3.0 + 4.0 * k as f32, 5.0), n, Vec4::ONE))
+            .collect();
+        let image = draw(&gl, vertices.clone(), vec![0, 1, 2], Topology::PointList);
+        for (k, v) in vertices.iter().enumerate() {
+            let (front, back) = (lit(&gl.lighting, v, false), lit(&gl.lighting, v, true));
+            assert!(
+                (front - back).abs().max_element() > 0.05,
+                "the faces must differ for the test to tell them apart"
+            );
+            let what = format!("{} point {k}", mode.name());
+            assert_pixel(&image, 3 + 4 * k as u32, 5, front, 1.0, &what);
+        }
+        // One pixel each: the rest of the row stays the clear color.
+        assert_eq!(px(&image, 4, 5), [0, 0, 0, 255], "{}", mode.name());
+    }
+}
+
+#[test]
+fn flat_lines_take_their_second_vertex_and_smooth_lines_their_ends() {
+    // Three horizontal lines, each from a vertex lit from one side to one lit from the other.
+    let mut vertices = Vec::new();
+    for row in 0..3 {
+        let y = 3.0 + 4.0 * row as f32;
+        vertices.push(Vertex::new(
+            at_pixel(1.0, y),
+            Vec3::new(-0.8, 0.0, 0.6),
+            Vec4::ONE,
+        ));
+        vertices.push(Vertex::new(
+            at_pixel(14.0, y),
+            Vec3::new(0.8, 0.3, 0.5).normalize(),
+            Vec4::ONE,
+        ));
+    }
+    let indices: Vec<u32> = (0..6).collect();
+    let flat = two_sided(LightingMode::Flat);
+    let image = draw(&flat, vertices.clone(), indices.clone(), Topology::LineList);
+    for row in 0..3u32 {
+        let second = &vertices[2 * row as usize + 1];
+        let y = 3 + 4 * row;
+        for x in [3, 8, 12] {
+            assert_pixel(
+                &image,
+                x,
+                y,
+                lit(&flat.lighting, second, false),
+                1.0,
+                &format!("flat line {row} at x {x}"),
+            );
+        }
+    }
+    // Smooth: the line's pixels run from its first vertex's color to its second's.
+    let smooth = two_sided(LightingMode::Vertex);
+    let image = draw(&smooth, vertices.clone(), indices, Topology::LineList);
+    let (a, b) = (
+        lit(&smooth.lighting, &vertices[0], false),
+        lit(&smooth.lighting, &vertices[1], false),
+    );
+    let t = |x: f64| (x + 0.5 - 1.5) / 13.0;
+    for x in [2u32, 7, 13] {
+        let want = a.lerp(b, t(x as f64));
+        assert_pixel(&image, x, 3, want, 3.0, &format!("smooth line at x {x}"));
+    }
+}
+
+#[test]
+fn strips_and_fans_in_flat_mode_take_the_last_vertex_of_each_triangle() {
+    // A fan around the center and a strip below it; the normals turn so every vertex lights
+    // differently.
+    let normal = |k: usize| {
+        let a = k as f32 * 0.7;
+        Vec3::new(0.7 * a.cos(), 0.7 * a.sin(), 0.714).normalize()
+    };
+    let center = (8.0, 6.0);
+    let rim: Vec<(f32, f32)> = (0..5)
+        .map(|k| {
+            let a = std::f32::consts::PI * k as f32 / 4.0;
+            (center.0 + 6.5 * a.cos(), center.1 - 5.5 * a.sin())
+        })
+        .collect();
+    let gl = two_sided(LightingMode::Flat);
+    // Fan: vertex 0 the center, 1..=5 the rim from right to left over the top (counter-
+    // clockwise on screen: front faces); triangles (0, i, i + 1), provoking vertex i + 1.
+    let fan: Vec<Vertex> = std::iter::once(center)
+        .chain(rim.iter().copied())
+        .enumerate()
+        .map(|(k, (x, y))| Vertex::new(at_pixel(x, y), normal(k), Vec4::ONE))
+        .collect();
+    let image = draw(&gl, fan.clone(), (0..6).collect(), Topology::TriangleFan);
+    for i in 1..5 {
+        let (x, y) = [center, rim[i - 1], rim[i]]
+            .into_iter()
+            .fold((0.0f32, 0.0f32), |(sx, sy), (x, y)| (sx + x / 3.0, sy + y / 3.0));
+        let want = lit(&gl.lighting, &fan[i + 1], false);
+        assert_pixel(
+            &image,
+            x.round() as u32,
+            y.round() as u32,
+            want,
+            1.0,
+            &format!("fan triangle {i}"),
+        );
+    }
+    // Strip: 0 1 2 3 4 5 zigzagging right along rows 9 and 14, the first triangle counter-
+    // clockwise; triangle i provokes i + 2.
+    let strip: Vec<Vertex> = (0..6)
+        .map(|k| {
+            let (x, y) = (1.0 + 2.8 * k as f32, if k % 2 == 0 { 9.0 } else { 14.0 });
+            Vertex::new(at_pixel(x, y), normal(k + 2), Vec4::ONE)
+        })
+        .collect();
+    let image = draw(&gl, strip.clone(), (0..6).collect(), Topology::TriangleStrip);
+    for i in 0..4 {
+        let row = |k: usize| if k % 2 == 0 { 9.0 } else { 14.0 };
+        let (x, y) = (i..i + 3).fold((0.0f32, 0.0f32), |(sx, sy), k| {
+            (sx + (1.0 + 2.8 * k as f32) / 3.0, sy + row(k) / 3.0)
+        });
+        let want = lit(&gl.lighting, &strip[i + 2], false);
+        assert_pixel(
+            &image,
+            x.round() as u32,
+            y.round() as u32,
+            want,
+            1.0,
+            &format!("strip triangle {i}"),
+        );
+    }
+}
+
+#[test]
+fn the_gl_modes_vulkan_lacks_draw_through_their_helpers_with_gls_provoking_vertex() {
+    use ffvk::draw::gl_primitives;
+    // GL_QUADS: one quad whose four corners light differently; both triangles take the fourth.
+    let gl = two_sided(LightingMode::Flat);
+    let corners = [(2.0, 13.0), (13.0, 13.0), (13.0, 2.0), (2.0, 2.0)];
+    let quad: Vec<Vertex> = corners
+        .iter()
+        .enumerate()
+        .map(|(k, &(x, y))| {
+            let a = k as f32 * 1.3;
+            let n = Vec3::new(0.6 * a.cos(), 0.6 * a.sin(), 0.8);
+            Vertex::new(at_pixel(x, y), n, Vec4::ONE)
+        })
+        .collect();
+    let indices = gl_primitives::quads(&[0, 1, 2, 3]);
+    let image = draw(&gl, quad.clone(), indices, Topology::TriangleList);
+    let want = lit(&gl.lighting, &quad[3], false);
+    for (x, y) in [(4, 11), (11, 4), (7, 7)] {
+        assert_pixel(&image, x, y, want, 1.0, &format!("quad at ({x}, {y})"));
+    }
+    // GL_POLYGON: the same corners as a polygon take the first vertex.
+    let image = draw(
+        &gl,
+        quad.clone(),
+        gl_primitives::polygon(&[0, 1, 2, 3]),
+        Topology::TriangleList,
+    );
+    let want = lit(&gl.lighting, &quad[0], false);
+    for (x, y) in [(4, 11), (11, 4), (7, 7)] {
+        assert_pixel(&image, x, y, want, 1.0, &format!("polygon at ({x}, {y})"));
+    }
+}
