@@ -495,6 +495,22 @@ fn features_the_caller_did_not_enable_are_named_in_the_error() {
     assert!(matches!(e, ffvk::Error::InRun { index: 1, .. }), "{e}");
     assert!(e.to_string().starts_with("draw 1 of the run: "), "{e}");
     assert!(e.to_string().contains("modelview"), "{e}");
+    // Primitive restart on a list is refused naming the mode, before anything is recorded.
+    let restarted = LitDraw::new(
+        &gl.lighting,
+        Mat4::IDENTITY,
+        Mat4::IDENTITY,
+        &buffers,
+        Geometry::indexed(vk::Buffer::null(), vk::IndexType::UINT16, 6)
+            .with_topology(ffvk::Topology::LineList)
+            .with_primitive_restart(true),
+    );
+    // SAFETY: as above: the draw fails its checks before anything is recorded.
+    let e = unsafe { lighting.draw_run(cmd, 0, &[restarted]) }.unwrap_err();
+    assert!(
+        e.to_string().contains("primitive restart is on for GL_LINES"),
+        "{e}"
+    );
     drop(lighting);
     drop(device);
     // SAFETY: the command buffer was never submitted.
