@@ -412,11 +412,7 @@ enum Arrays<'a, 'g> {
 
 /// Every index of `mesh` within its vertices.
 fn check_indices(mesh: &MeshData) -> Result<(), DrawError> {
-    let count = mesh.triangle_count() * 3;
-    match mesh.indices[..count]
-        .iter()
-        .find(|&&i| i as usize >= mesh.vertices.len())
-    {
+    match mesh.indices.iter().find(|&&i| i as usize >= mesh.vertices.len()) {
         Some(&index) => Err(DrawError::IndexOutOfRange {
             index,
             vertices: mesh.vertices.len(),
@@ -554,7 +550,12 @@ fn draw_one(
         return Err(DrawError::TooManyLights { index, max_lights });
     }
     let mesh = draw.mesh;
-    let count = mesh.triangle_count() * 3;
+    // Whole triangles for GL_TRIANGLES (as ffvk draws a mesh); every index for other modes,
+    // whose incomplete last primitives GL drops itself.
+    let count = match draw.mode {
+        super::GlMode::Triangles => mesh.triangle_count() * 3,
+        _ => mesh.indices.len(),
+    };
     if let Arrays::Client = arrays {
         // Buffer objects were checked when they were filled.
         check_indices(mesh)?;
@@ -664,7 +665,7 @@ fn draw_one(
         );
         gl.NormalPointer(gl::FLOAT, stride, field(std::mem::offset_of!(Vertex, normal)));
         gl.ColorPointer(4, gl::FLOAT, stride, field(std::mem::offset_of!(Vertex, color)));
-        gl.DrawElements(gl::TRIANGLES, count, gl::UNSIGNED_INT, index_base);
+        gl.DrawElements(draw.mode.gl(), count, gl::UNSIGNED_INT, index_base);
         gl.DisableClientState(gl::VERTEX_ARRAY);
         gl.DisableClientState(gl::NORMAL_ARRAY);
         gl.DisableClientState(gl::COLOR_ARRAY);

@@ -80,6 +80,44 @@ pub struct GlDraw<'a> {
     /// not mipmap generation); the texture environment and matrix come from
     /// [`LightingState::texture`] and the texture coordinates from the mesh.
     pub texture: Option<(&'a TextureImage, Sampling)>,
+    /// The primitive mode `glDrawElements` draws the mesh's indices with (`GL_TRIANGLES` by
+    /// default; the mesh's indices are then read as that mode's vertices).
+    pub mode: GlMode,
+}
+
+/// GL's primitive modes (`glDrawElements`' first argument), all ten of GL 2.1.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum GlMode {
+    Points,
+    Lines,
+    LineLoop,
+    LineStrip,
+    #[default]
+    Triangles,
+    TriangleStrip,
+    TriangleFan,
+    Quads,
+    QuadStrip,
+    Polygon,
+}
+
+impl GlMode {
+    /// The GL enum.
+    pub(crate) fn gl(self) -> u32 {
+        use bindings as gl;
+        match self {
+            GlMode::Points => gl::POINTS,
+            GlMode::Lines => gl::LINES,
+            GlMode::LineLoop => gl::LINE_LOOP,
+            GlMode::LineStrip => gl::LINE_STRIP,
+            GlMode::Triangles => gl::TRIANGLES,
+            GlMode::TriangleStrip => gl::TRIANGLE_STRIP,
+            GlMode::TriangleFan => gl::TRIANGLE_FAN,
+            GlMode::Quads => gl::QUADS,
+            GlMode::QuadStrip => gl::QUAD_STRIP,
+            GlMode::Polygon => gl::POLYGON,
+        }
+    }
 }
 
 impl<'a> GlDraw<'a> {
@@ -93,6 +131,7 @@ impl<'a> GlDraw<'a> {
             color_array: true,
             calls: Vec::new(),
             texture: None,
+            mode: GlMode::Triangles,
         }
     }
 }

@@ -40,6 +40,7 @@ fn scene<'a>(mesh: &'a MeshData, state: LightingState) -> GlScene<'a> {
             color_array: true,
             calls: Vec::new(),
             texture: None,
+            mode: Default::default(),
         }],
     }
 }

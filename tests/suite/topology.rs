@@ -233,3 +233,145 @@ fn the_gl_modes_vulkan_lacks_draw_through_their_helpers_with_gls_provoking_verte
         assert_pixel(&image, x, y, want, 1.0, &format!("polygon at ({x}, {y})"));
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// Against Mesa's GL: the same vertices drawn in each of GL's ten modes by GL itself and by ffvk
+// (through a Topology or a gl_primitives helper).
+
+use ffvk::draw::gl_primitives;
+use ffvk_cli::gl_reference::{render_gl_with, GlDraw, GlMode, GlScene};
+
+/// GL's side and its size.
+const GL_SIZE: u32 = 48;
+
+/// Nine vertices for `mode`: on a circle, counter-clockwise, for the modes that walk around a
+/// shape; on a ladder (even vertices below, odd above) for the strips; every normal different.
+fn mode_vertices(mode: GlMode) -> Vec<Vertex> {
+    let ladder = matches!(mode, GlMode::QuadStrip | GlMode::TriangleStrip);
+    (0..9)
+        .map(|k| {
+            let p = if ladder {
+                let x = -0.85 + 0.2 * k as f32;
+                Vec3::new(x, if k % 2 == 0 { -0.5 } else { 0.4 }, 0.0)
+            } else {
+                let a = k as f32 * std::f32::consts::TAU / 9.0;
+                Vec3::new(0.8 * a.cos(), 0.8 * a.sin(), 0.0)
+            };
+            let b = k as f32 * 0.9;
+            let n = Vec3::new(0.6 * b.cos(), 0.6 * b.sin(), 0.8);
+            Vertex::new(p, n, Vec4::ONE)
+        })
+        .collect()
+}
+
+/// How ffvk draws GL's `mode` over indices 0..9.
+fn ffvk_form(mode: GlMode) -> (Vec<u32>, Topology) {
+    let all: Vec<u32> = (0..9).collect();
+    match mode {
+        GlMode::Points => (all, Topology::PointList),
+        GlMode::Lines => (all, Topology::LineList),
+        GlMode::LineStrip => (all, Topology::LineStrip),
+        GlMode::LineLoop => (gl_primitives::line_loop(&all), Topology::LineList),
+        GlMode::Triangles => (all, Topology::TriangleList),
+        GlMode::TriangleStrip => (all, Topology::TriangleStrip),
+        GlMode::TriangleFan => (all, Topology::TriangleFan),
+        GlMode::Quads => (gl_primitives::quads(&all), Topology::TriangleList),
+        GlMode::QuadStrip => (gl_primitives::quad_strip(&all), Topology::TriangleList),
+        GlMode::Polygon => (gl_primitives::polygon(&all), Topology::TriangleList),
+    }
+}
+
+#[test]
+fn every_gl_mode_lights_as_mesa_gl_lights_it_smooth_and_flat_two_sided_or_not() {
+    let modes = [
+        GlMode::Points,
+        GlMode::Lines,
+        GlMode::LineStrip,
+        GlMode::LineLoop,
+        GlMode::Triangles,
+        GlMode::TriangleStrip,
+        GlMode::TriangleFan,
+        GlMode::Quads,
+        GlMode::QuadStrip,
+        GlMode::Polygon,
+    ];
+    let mut r = renderer();
+    for mode in modes {
+        let vertices = mode_vertices(mode);
+        let (indices, topology) = ffvk_form(mode);
+        let gl_mesh = MeshData::new(vertices.clone(), (0..9).collect());
+        let mesh = r.upload(&MeshData::new(vertices, indices)).unwrap();
+        for shading in [LightingMode::Vertex, LightingMode::Flat] {
+            for two_side in [true, false] {
+                let mut gl = two_sided(shading);
+                gl.light_model(LightModelParam::TwoSide(two_side)).unwrap();
+                let what = format!("{mode:?} {} two-sided {two_side}", shading.name());
+                let mut frame = Frame::new(GL_SIZE, GL_SIZE);
+                frame.clear_color = Vec4::new(0.0, 0.0, 0.0, 1.0);
+                frame.draws.push(
+                    Draw::new(&mesh, Mat4::IDENTITY, Mat4::IDENTITY, gl.lighting).with_topology(topology),
+                );
+                let ours = r.render(&frame).unwrap().into_rgba_image();
+                let mut draw = GlDraw::new(&gl_mesh, Mat4::IDENTITY, Mat4::IDENTITY, gl.lighting);
+                draw.mode = mode;
+                let theirs = render_gl_with(
+                    &GlScene {
+                        width: GL_SIZE,
+                        height: GL_SIZE,
+                        clear_color: [0.0, 0.0, 0.0, 1.0],
+                        depth_test: false,
+                        draws: vec![draw],
+                    },
+                    &gl_options(),
+                )
+                .unwrap();
+                // Only pixels both cover: GL and Vulkan rasterize lines and points by
+                // different rules (GL's diamond exit, Vulkan's rectangles), and smooth lines
+                // interpolate at the pixels each covers.
+                // Where line segments meet, which one draws the shared pixel differs too (GL's
+                // half-open segments, Vulkan's overlapping ones): pixels next to a vertex are
+                // left out for the line modes.
+                let lines = matches!(mode, GlMode::Lines | GlMode::LineStrip | GlMode::LineLoop);
+                let joint = |x: u32, y: u32| {
+                    lines
+                        && gl_mesh.vertices.iter().any(|v| {
+                            let wx = (v.position[0] + 1.0) / 2.0 * GL_SIZE as f32;
+                            let wy = (1.0 - v.position[1]) / 2.0 * GL_SIZE as f32;
+                            (x as f32 + 0.5 - wx).abs() <= 1.5 && (y as f32 + 0.5 - wy).abs() <= 1.5
+                        })
+                };
+                let lit = |p: &image::Rgba<u8>| p.0[..3] != [0, 0, 0];
+                let (mut both, mut either, mut worst) = (0, 0, 0u8);
+                for ((x, y, a), b) in ours.enumerate_pixels().zip(theirs.pixels()) {
+                    if joint(x, y) {
+                        continue;
+                    }
+                    if lit(a) || lit(b) {
+                        either += 1;
+                    }
+                    if lit(a) && lit(b) {
+                        both += 1;
+                        let d = (0..3).map(|c| a.0[c].abs_diff(b.0[c])).max().unwrap();
+                        worst = worst.max(d);
+                    }
+                }
+                let tolerance = if lines && shading == LightingMode::Vertex {
+                    12
+                } else {
+                    3
+                };
+                if worst > tolerance || both * 10 < either * 7 {
+                    let a = save_for_inspection(&ours, &format!("topology_ffvk_{what}"));
+                    let b = save_for_inspection(&theirs, &format!("topology_gl_{what}"));
+                    panic!(
+                        "{what}: {both} pixels both cover of {either} either covers, worst {worst}/255 \
+                         (tolerance {tolerance}); images {} and {}",
+                        a.display(),
+                        b.display()
+                    );
+                }
+            }
+        }
+    }
+    finish(r);
+}
