@@ -31,6 +31,10 @@ pub fn find_surface(scene: &Scene, x: u32, y: u32) -> Option<Hit> {
             .iter()
             .map(|v| reference::transform(&state, modelview, scene.projection, v).clip)
             .collect();
+        // Points and lines cover no area explain can describe: only triangle lists are hit.
+        if mesh.data.topology != ffvk::Topology::TriangleList {
+            continue;
+        }
         for (ti, t) in mesh.data.indices.chunks_exact(3).enumerate() {
             let idx = [t[0] as usize, t[1] as usize, t[2] as usize];
             let c = idx.map(|i| clip[i]);

@@ -293,11 +293,18 @@ pub enum LightingError {
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 #[non_exhaustive]
 pub enum MeshError {
-    #[error("{count} indices is not a whole number of triangles: expected a multiple of 3")]
-    /// The index count is not a multiple of 3 (meshes are independent triangles).
-    NotTriangles {
-        /// The number of indices given.
+    #[error(
+        "{count} indices is not a whole number of primitives of {topology}: expected a multiple of {per}"
+    )]
+    /// The index count is not a multiple of a list's primitive size (3 for triangles, 2 for
+    /// lines).
+    PartialPrimitive {
+        /// Indices given.
         count: usize,
+        /// GL's name of the mesh's mode.
+        topology: &'static str,
+        /// Indices per primitive.
+        per: usize,
     },
 
     #[error("index {at} is {index}: expected a vertex index below {vertex_count} (the vertex count)")]

@@ -102,6 +102,19 @@ pub enum GlMode {
 }
 
 impl GlMode {
+    /// The mode that draws indices as `topology` does.
+    pub fn of(topology: ffvk::Topology) -> GlMode {
+        use ffvk::Topology;
+        match topology {
+            Topology::PointList => GlMode::Points,
+            Topology::LineList => GlMode::Lines,
+            Topology::LineStrip => GlMode::LineStrip,
+            Topology::TriangleStrip => GlMode::TriangleStrip,
+            Topology::TriangleFan => GlMode::TriangleFan,
+            _ => GlMode::Triangles,
+        }
+    }
+
     /// The GL enum.
     pub(crate) fn gl(self) -> u32 {
         use bindings as gl;
@@ -131,7 +144,7 @@ impl<'a> GlDraw<'a> {
             color_array: true,
             calls: Vec::new(),
             texture: None,
-            mode: GlMode::Triangles,
+            mode: GlMode::of(mesh.topology),
         }
     }
 }

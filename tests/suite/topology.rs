@@ -375,3 +375,136 @@ fn every_gl_mode_lights_as_mesa_gl_lights_it_smooth_and_flat_two_sided_or_not() 
     }
     finish(r);
 }
+
+// ---------------------------------------------------------------------------------------------
+// glTF's seven modes.
+
+/// A glTF file of seven primitives, one per mode, each in a cell of its own; the points and
+/// lines without normals and in a pure color each (red POINTS, green LINES, blue LINE_LOOP,
+/// yellow LINE_STRIP), the triangles grey (flat normals, lit).
+fn seven_modes_gltf(dir: &std::path::Path) -> std::path::PathBuf {
+    let mut positions: Vec<f32> = Vec::new();
+    let mut colors: Vec<f32> = Vec::new();
+    let mut primitives = Vec::new();
+    let pure = [
+        [1.0, 0.0, 0.0, 1.0],
+        [0.0, 1.0, 0.0, 1.0],
+        [0.0, 0.0, 1.0, 1.0],
+        [1.0, 1.0, 0.0, 1.0],
+    ];
+    for mode in 0..7u32 {
+        let (cx, cy) = ((mode % 4) as f32 * 2.5, (mode / 4) as f32 * -2.5);
+        // Six vertices around the cell's center, counter-clockwise.
+        let first = positions.len() / 3;
+        for k in 0..6 {
+            let a = k as f32 * std::f32::consts::TAU / 6.0;
+            positions.extend([cx + a.cos(), cy + a.sin(), 0.0]);
+            colors.extend(if mode < 4 {
+                pure[mode as usize]
+            } else {
+                [0.6, 0.6, 0.6, 1.0]
+            });
+        }
+        // glTF's mode numbers: 0 POINTS, 1 LINES, 2 LINE_LOOP, 3 LINE_STRIP, 4 TRIANGLES,
+        // 5 TRIANGLE_STRIP, 6 TRIANGLE_FAN. Triangles take vertices (0, 1, 2), (0, 2, 3)…
+        let gltf_mode = [0, 1, 2, 3, 4, 5, 6][mode as usize];
+        let indices: Vec<u32> = match gltf_mode {
+            4 => vec![0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5],
+            5 => vec![0, 1, 5, 2, 4, 3],
+            _ => (0..6).collect(),
+        };
+        primitives.push((first, gltf_mode, indices));
+    }
+    let mut bin: Vec<u8> = bytemuck::cast_slice::<f32, u8>(&positions).to_vec();
+    let color_offset = bin.len();
+    bin.extend(bytemuck::cast_slice::<f32, u8>(&colors));
+    let mut views = vec![
+        format!(r#"{{"buffer": 0, "byteOffset": 0, "byteLength": {color_offset}}}"#),
+        format!(
+            r#"{{"buffer": 0, "byteOffset": {color_offset}, "byteLength": {}}}"#,
+            colors.len() * 4
+        ),
+    ];
+    let mut accessors = Vec::new();
+    let mut json_primitives = Vec::new();
+    for (first, mode, indices) in &primitives {
+        let p = accessors.len();
+        accessors.push(format!(
+            r#"{{"bufferView": 0, "byteOffset": {}, "componentType": 5126, "count": 6, "type": "VEC3", "min": [-10, -10, -1], "max": [10, 10, 1]}}"#,
+            first * 12
+        ));
+        accessors.push(format!(
+            r#"{{"bufferView": 1, "byteOffset": {}, "componentType": 5126, "count": 6, "type": "VEC4"}}"#,
+            first * 16
+        ));
+        let index_offset = bin.len();
+        bin.extend(bytemuck::cast_slice::<u32, u8>(indices));
+        views.push(format!(
+            r#"{{"buffer": 0, "byteOffset": {index_offset}, "byteLength": {}}}"#,
+            indices.len() * 4
+        ));
+        accessors.push(format!(
+            r#"{{"bufferView": {}, "componentType": 5125, "count": {}, "type": "SCALAR"}}"#,
+            views.len() - 1,
+            indices.len()
+        ));
+        json_primitives.push(format!(
+            r#"{{"attributes": {{"POSITION": {p}, "COLOR_0": {}}}, "indices": {}, "mode": {mode}}}"#,
+            p + 1,
+            p + 2
+        ));
+    }
+    std::fs::write(dir.join("seven.bin"), &bin).unwrap();
+    let json = format!(
+        r#"{{"asset": {{"version": "2.0"}}, "buffers": [{{"uri": "seven.bin", "byteLength": {}}}],
+  "bufferViews": [{}], "accessors": [{}],
+  "meshes": [{{"primitives": [{}]}}], "nodes": [{{"mesh": 0}}], "scenes": [{{"nodes": [0]}}], "scene": 0}}"#,
+        bin.len(),
+        views.join(", "),
+        accessors.join(", "),
+        json_primitives.join(", ")
+    );
+    let path = dir.join("seven.gltf");
+    std::fs::write(&path, json).unwrap();
+    path
+}
+
+#[test]
+fn a_gltf_file_draws_each_of_its_seven_modes_points_and_lines_unlit_without_normals() {
+    let dir = output_dir().join("topology_gltf");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = seven_modes_gltf(&dir);
+    let made = ffvk::scene::direct::from_gltf(
+        &path,
+        "seven.gltf",
+        &Default::default(),
+        &ffvk::scene::direct::DirectOptions::default().with_size(Some((200, 120))),
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let scene = made.scene;
+    assert_eq!(scene.meshes.len(), 7);
+    let lit: Vec<bool> = scene.meshes.iter().map(|m| m.lit).collect();
+    assert_eq!(lit, [false, false, false, false, true, true, true]);
+    let mut r = renderer();
+    let image = ffvk::scene::render_scene(&mut r, &scene, None).unwrap();
+    save_for_inspection(&image, "topology_gltf_seven_modes");
+    // Unlit points and lines show their vertex colors exactly.
+    for (name, color) in [
+        ("POINTS", [255, 0, 0, 255]),
+        ("LINES", [0, 255, 0, 255]),
+        ("LINE_LOOP", [0, 0, 255, 255]),
+        ("LINE_STRIP", [255, 255, 0, 255]),
+    ] {
+        let n = image.pixels().filter(|p| p.0 == color).count();
+        let least = if name == "POINTS" { 6 } else { 20 };
+        assert!(n >= least, "{name}: {n} pixels of {color:?}");
+    }
+    // The three triangle modes, lit grey, cover their cells.
+    let grey = image
+        .pixels()
+        .filter(|p| p.0[0] == p.0[1] && p.0[1] == p.0[2] && p.0[0] > 60)
+        .count();
+    assert!(grey > 600, "{grey} lit grey pixels");
+    finish(r);
+}

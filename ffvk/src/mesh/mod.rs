@@ -38,23 +38,39 @@ impl Vertex {
     }
 }
 
-/// A triangle list: every three indices make one triangle, counter-clockwise is front.
+/// Vertices and the indices that make its primitives: a triangle list unless `topology` says
+/// otherwise (every three indices a triangle, counter-clockwise front).
 #[derive(Debug, Clone, Default, PartialEq)]
 #[non_exhaustive]
 pub struct MeshData {
     /// The vertices the indices refer to; a vertex may be shared by several triangles.
     pub vertices: Vec<Vertex>,
-    /// A multiple of 3, each below `vertices.len()`; [`Renderer::upload`] rejects anything
-    /// else with a [`MeshError`](crate::error::MeshError).
+    /// Each below `vertices.len()`; a multiple of 3 for a triangle list, of 2 for a line
+    /// list. [`Renderer::upload`] rejects anything else with a
+    /// [`MeshError`](crate::error::MeshError).
     ///
     /// [`Renderer::upload`]: crate::Renderer::upload
     pub indices: Vec<u32>,
+    /// How the indices make primitives (`TriangleList` by default); a draw of the mesh takes
+    /// it ([`Draw::new`](crate::Draw::new)).
+    pub topology: crate::Topology,
 }
 
 impl MeshData {
     /// A triangle list of `vertices` and `indices` (checked when it is uploaded).
     pub fn new(vertices: Vec<Vertex>, indices: Vec<u32>) -> Self {
-        MeshData { vertices, indices }
+        MeshData {
+            vertices,
+            indices,
+            topology: crate::Topology::TriangleList,
+        }
+    }
+
+    /// This mesh with its indices read as `topology`.
+    #[must_use]
+    pub fn with_topology(mut self, topology: crate::Topology) -> Self {
+        self.topology = topology;
+        self
     }
 
     /// The number of triangles.
@@ -93,7 +109,7 @@ impl MeshData {
                 }
             }
         }
-        MeshData { vertices, indices }
+        MeshData::new(vertices, indices)
     }
 }
 

@@ -348,7 +348,7 @@ pub fn teapot(level: u32) -> Result<MeshData, MeshError> {
             }
         }
     }
-    Ok(MeshData { vertices, indices })
+    Ok(MeshData::new(vertices, indices))
 }
 
 #[cfg(test)]

@@ -62,10 +62,16 @@ pub struct Mesh {
     vertex_count: u32,
     /// `vertices` at offset 0, as a draw binds it (kept so draws can borrow it).
     vertex_binding: (vk::Buffer, u64),
+    /// How its indices make primitives.
+    topology: Topology,
 }
 
 impl Mesh {
-    /// Indices uploaded: three per triangle.
+    /// How the mesh's indices make primitives, as uploaded.
+    pub fn topology(&self) -> Topology {
+        self.topology
+    }
+    /// Indices uploaded.
     pub fn index_count(&self) -> u32 {
         self.index_count
     }
@@ -96,8 +102,8 @@ pub struct Draw<'a> {
     /// `state.texture.enabled` is on and the texture is complete. `None`: GL's texture 0,
     /// which textures nothing.
     pub texture: Option<&'a Texture>,
-    /// How the mesh's indices make primitives: `TriangleList` (GL_TRIANGLES) by default; the
-    /// same indices may be drawn as points, lines, strips or fans (see [`Topology`]).
+    /// How the mesh's indices make primitives: the mesh's own ([`MeshData::topology`]) unless
+    /// [`Draw::with_topology`] says otherwise (see [`Topology`]).
     pub topology: Topology,
 }
 
@@ -111,7 +117,7 @@ impl<'a> Draw<'a> {
             state,
             cull_face: None,
             texture: None,
-            topology: Topology::TriangleList,
+            topology: mesh.topology,
         }
     }
 
@@ -421,12 +427,19 @@ impl Renderer {
         }
     }
 
-    /// Uploads a triangle list. Fails when an index is past the vertices or the index count
-    /// is not a multiple of three.
+    /// Uploads a mesh. Fails when an index is past the vertices or the index count is not a
+    /// multiple of three (a triangle list) or two (a line list).
     pub fn upload(&self, mesh: &MeshData) -> Result<Mesh> {
-        if mesh.indices.len() % 3 != 0 {
-            return Err(MeshError::NotTriangles {
+        let whole = match mesh.topology {
+            Topology::TriangleList => 3,
+            Topology::LineList => 2,
+            _ => 1,
+        };
+        if mesh.indices.len() % whole != 0 {
+            return Err(MeshError::PartialPrimitive {
                 count: mesh.indices.len(),
+                topology: mesh.topology.gl_name(),
+                per: whole,
             }
             .into());
         }
@@ -474,6 +487,7 @@ impl Renderer {
             indices,
             index_count: mesh.indices.len() as u32,
             vertex_count: count as u32,
+            topology: mesh.topology,
         })
     }
 

@@ -257,6 +257,9 @@ pub struct SceneMesh {
     /// The texture it is drawn with: the mesh's `texture`, else the scene's `[texture]`, else
     /// (under glTF's meaning) its glTF base color texture; `None` draws it untextured.
     pub texture: Option<MeshTexture>,
+    /// Whether lighting applies: false for glTF points and lines without normals, which are
+    /// drawn unlit (glTF 2.0: lighting needs normals).
+    pub lit: bool,
 }
 
 /// A scene ready to draw: GL state already in eye space, matrices in GL conventions.
@@ -300,6 +303,7 @@ impl Scene {
         if let Some(texture) = &mesh.texture {
             state.texture = texture.unit;
         }
+        state.lighting &= mesh.lit;
         state
     }
 
@@ -401,6 +405,8 @@ struct Placed {
     material: Option<self::gltf::PbrMaterial>,
     /// Whether the primitive has COLOR_0.
     vertex_colors: bool,
+    /// Whether it is lit (see [`SceneMesh::lit`]).
+    lit: bool,
 }
 
 struct Builder<'a> {
@@ -625,6 +631,7 @@ impl Builder<'_> {
                     back,
                     gltf: meaning,
                     texture,
+                    lit: p.lit,
                 });
             }
         }
@@ -1186,6 +1193,7 @@ impl Builder<'_> {
                     model,
                     material: None,
                     vertex_colors: true,
+                    lit: true,
                 }])
             }
             (Some(_), None) if spec.level.is_some() || spec.color.is_some() => {
@@ -1244,13 +1252,14 @@ impl Builder<'_> {
                         model: model * m.transform,
                         material: m.material.or(Some(Default::default())),
                         vertex_colors: m.vertex_colors,
+                        lit: m.lit,
                     });
                 }
                 if placed.is_empty() {
                     let what = match (&spec.mesh, &spec.node) {
                         (Some(m), _) => format!("no mesh named {:?}", shorten(m)),
                         (None, Some(n)) => format!("no node named {:?}", shorten(n)),
-                        _ => "no triangle meshes".to_string(),
+                        _ => "no meshes".to_string(),
                     };
                     return Err(self.field(
                         format!("{field}.gltf"),
@@ -1307,7 +1316,7 @@ pub fn render_scene(
             state,
             cull_face: scene.cull_face(mesh),
             texture: mesh.texture.as_ref().and_then(texture_of),
-            topology: crate::Topology::TriangleList,
+            topology: gpu.topology(),
         });
     }
     Ok(renderer.render(&frame)?.into())

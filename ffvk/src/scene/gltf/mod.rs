@@ -77,6 +77,9 @@ pub struct LoadedMesh {
     pub material: Option<PbrMaterial>,
     /// Whether the primitive has COLOR_0 (else every vertex color is white).
     pub vertex_colors: bool,
+    /// Whether it is lit: false for points and lines without normals, which glTF draws
+    /// unlit (their vertex colors, or the material's base color, as they are).
+    pub lit: bool,
 }
 
 /// What [`load`] found.

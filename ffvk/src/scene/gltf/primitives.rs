@@ -62,21 +62,9 @@ fn type_name(accessor: &gltf::Accessor) -> String {
     format!("{component} {dims}")
 }
 
-/// Whether a primitive of `mode` is made of triangles (the others are skipped).
+/// Whether a primitive of `mode` is made of triangles (the others are points and lines).
 pub(super) fn draws_triangles(mode: Mode) -> bool {
     matches!(mode, Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan)
-}
-
-pub(super) fn mode_name(mode: Mode) -> &'static str {
-    match mode {
-        Mode::Points => "POINTS",
-        Mode::Lines => "LINES",
-        Mode::LineLoop => "LINE_LOOP",
-        Mode::LineStrip => "LINE_STRIP",
-        Mode::Triangles => "TRIANGLES",
-        Mode::TriangleStrip => "TRIANGLE_STRIP",
-        Mode::TriangleFan => "TRIANGLE_FAN",
-    }
 }
 
 /// Which elements of an accessor a bounds problem is about.
@@ -463,8 +451,9 @@ fn check_finite<const N: usize>(
     }
 }
 
-/// Reads one primitive of mesh `mesh` as a triangle list (see [`load`](super::load));
-/// `mirrored` swaps each triangle's first two vertices.
+/// Reads one primitive of mesh `mesh` (see [`load`](super::load)): triangles of every mode as
+/// a triangle list, `mirrored` swapping each triangle's first two vertices; points and lines
+/// as their own topology (GL_LINE_LOOP as a line list), with their vertices as given.
 pub(super) fn read_primitive(
     cx: &Context,
     buffers: &[gltf::buffer::Data],
@@ -476,35 +465,26 @@ pub(super) fn read_primitive(
 ) -> Result<MeshData, LoadError> {
     let label = cx.primitive_label(mesh, primitive.index());
     let mode = primitive.mode();
-    // The caller skips points and lines with a warning; one reaching here is refused by name.
-    if !draws_triangles(mode) {
-        return Err(cx.error(LoadErrorKind::InvalidValue {
-            object: label,
-            field: "mode",
-            value: mode_name(mode).to_owned(),
-            expected: "TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN (ffvk draws triangles)",
-        }));
-    }
-    // What the triangle list will take, charged before anything is read.
+    // What the mesh will take, charged before anything is read.
     let vertex_count = primitive.get(&Semantic::Positions).map_or(0, |a| a.count());
     let sequence_len = primitive.indices().map_or(vertex_count, |a| a.count());
     let triangle_count = match mode {
         Mode::Triangles => sequence_len / 3,
-        _ => sequence_len.saturating_sub(2),
+        Mode::TriangleStrip | Mode::TriangleFan => sequence_len.saturating_sub(2),
+        Mode::Points | Mode::Lines | Mode::LineStrip | Mode::LineLoop => 0,
     };
-    let kept_vertices = if primitive.get(&Semantic::Normals).is_some() {
-        vertex_count
-    } else {
-        triangle_count.saturating_mul(3)
+    let (kept_vertices, kept_indices) = match mode {
+        Mode::Points | Mode::Lines | Mode::LineStrip => (vertex_count, sequence_len),
+        Mode::LineLoop => (vertex_count, sequence_len.saturating_mul(2)),
+        _ if primitive.get(&Semantic::Normals).is_some() => (vertex_count, triangle_count.saturating_mul(3)),
+        _ => (triangle_count.saturating_mul(3), triangle_count.saturating_mul(3)),
     };
-    budget
-        .charge(kept_vertices, triangle_count.saturating_mul(3))
-        .map_err(|source| {
-            cx.error(LoadErrorKind::OverBudget {
-                primitive: label.clone(),
-                source,
-            })
-        })?;
+    budget.charge(kept_vertices, kept_indices).map_err(|source| {
+        cx.error(LoadErrorKind::OverBudget {
+            primitive: label.clone(),
+            source,
+        })
+    })?;
     let alloc_error = |source| {
         cx.error(LoadErrorKind::Alloc {
             primitive: label.clone(),
@@ -652,6 +632,18 @@ pub(super) fn read_primitive(
         }
     };
 
+    if !draws_triangles(mode) {
+        return points_and_lines(cx, &label, mode, &sequence, vertex_count, alloc_error, |i| {
+            let normal = normals
+                .as_ref()
+                .map_or(Vec3::Z, |n| Vec3::from_array(n[i as usize]));
+            let color = colors
+                .as_ref()
+                .map_or(Vec4::ONE, |c| Vec4::from_array(c[i as usize]));
+            Vertex::new(Vec3::from_array(positions[i as usize]), normal, color).with_texcoord(texcoord_of(i))
+        });
+    }
+
     let mut triangles: Vec<[u32; 3]> = try_vec(triangle_count, "mesh triangles").map_err(alloc_error)?;
     match mode {
         Mode::Triangles => {
@@ -679,7 +671,7 @@ pub(super) fn read_primitive(
         })),
         // GL's (0, i+1, i+2), glTF's {i+1, i+2, 0} up to rotation; provoking vertex last.
         Mode::TriangleFan => triangles.extend(sequence.windows(2).skip(1).map(|w| [sequence[0], w[0], w[1]])),
-        // Refused at the top of this function.
+        // Returned above.
         Mode::Points | Mode::Lines | Mode::LineLoop | Mode::LineStrip => {}
     }
 
@@ -719,6 +711,41 @@ pub(super) fn read_primitive(
     data.indices = try_vec(triangles.len() * 3, "mesh indices").map_err(alloc_error)?;
     data.indices.extend(triangles.into_iter().flatten());
     Ok(data)
+}
+
+/// A primitive of points or lines as a mesh of that topology: every vertex as `vertex` makes
+/// it, the indices as given (GL_LINE_LOOP closed into a line list, GL's way). GL_LINES needs
+/// an even count, as glTF says.
+fn points_and_lines(
+    cx: &Context,
+    label: &str,
+    mode: Mode,
+    sequence: &[u32],
+    vertex_count: usize,
+    alloc_error: impl Fn(crate::alloc::AllocError) -> LoadError,
+    vertex: impl Fn(u32) -> Vertex,
+) -> Result<MeshData, LoadError> {
+    use crate::Topology;
+    if mode == Mode::Lines && sequence.len() % 2 != 0 {
+        return Err(cx.error(LoadErrorKind::InvalidValue {
+            object: label.to_owned(),
+            field: "count",
+            value: format!("{} indices or vertices", sequence.len()),
+            expected: "an even number for LINES (two a line)",
+        }));
+    }
+    let (topology, indices) = match mode {
+        Mode::Points => (Topology::PointList, sequence.to_vec()),
+        Mode::Lines => (Topology::LineList, sequence.to_vec()),
+        Mode::LineStrip => (Topology::LineStrip, sequence.to_vec()),
+        _ => (
+            Topology::LineList,
+            crate::draw::gl_primitives::line_loop(sequence),
+        ),
+    };
+    let mut vertices = try_vec(vertex_count, "mesh vertices").map_err(alloc_error)?;
+    vertices.extend((0..vertex_count as u32).map(vertex));
+    Ok(MeshData::new(vertices, indices).with_topology(topology))
 }
 
 #[cfg(test)]
@@ -952,28 +979,49 @@ mod tests {
     }
 
     #[test]
-    fn points_and_lines_are_skipped_by_name_and_the_triangles_beside_them_kept() {
+    fn points_and_lines_load_as_their_own_topology_unlit_without_normals() {
+        use crate::Topology;
         let dir = scratch_dir("modes");
-        for (mode, name) in [(0, "POINTS"), (1, "LINES"), (2, "LINE_LOOP"), (3, "LINE_STRIP")] {
+        // Modes 0-3 over three vertices (a LINES primitive takes two of them, by indices).
+        let cases = [
+            (0, "POINTS", Topology::PointList, vec![0, 1, 2]),
+            (1, "LINES", Topology::LineList, vec![0, 1]),
+            (2, "LINE_LOOP", Topology::LineList, vec![0, 1, 1, 2, 2, 0]),
+            (3, "LINE_STRIP", Topology::LineStrip, vec![0, 1, 2]),
+        ];
+        for (mode, name, topology, indices) in cases {
             let mut a = Asset::default();
             let pos = a.positions(&QUAD[..3]);
+            let idx = if mode == 1 {
+                format!(r#", "indices": {}"#, a.u16s(&[0, 1]))
+            } else {
+                String::new()
+            };
             let body = one_mesh_body(&format!(
-                r#"{{ "attributes": {{ "POSITION": {pos} }}, "mode": {mode} }},
+                r#"{{ "attributes": {{ "POSITION": {pos} }}, "mode": {mode}{idx} }},
                    {{ "attributes": {{ "POSITION": {pos} }} }}"#
             ));
             let loaded = load(&a.write_gltf(&dir, name, &body)).unwrap();
-            assert_eq!(loaded.meshes.len(), 1, "the triangle primitive stays");
-            assert_eq!(loaded.meshes[0].data.indices.len(), 3);
-            let warning = loaded
-                .warnings
-                .iter()
-                .find(|w| w.contains(name))
-                .expect("a warning");
-            assert!(
-                warning.contains("primitive 0") && warning.contains(&format!("mode {name}")),
-                "{warning}"
-            );
+            assert_eq!(loaded.meshes.len(), 2, "{name} and the triangle beside it");
+            let m = &loaded.meshes[0];
+            assert_eq!(m.data.topology, topology, "{name}");
+            assert_eq!(m.data.indices, indices, "{name}");
+            assert_eq!(m.data.vertices.len(), 3, "{name}: the vertices as given");
+            assert!(!m.lit, "{name} without normals is unlit");
+            assert!(loaded.meshes[1].lit);
+            assert_eq!(loaded.meshes[1].data.topology, Topology::TriangleList);
         }
+        // An odd LINES count is an error naming the primitive and what glTF asks.
+        let mut a = Asset::default();
+        let pos = a.positions(&QUAD[..3]);
+        let body = one_mesh_body(&format!(
+            r#"{{ "attributes": {{ "POSITION": {pos} }}, "mode": 1 }}"#
+        ));
+        let e = message(load(&a.write_gltf(&dir, "odd", &body)).unwrap_err());
+        assert!(
+            e.contains("primitive 0") && e.contains("an even number for LINES"),
+            "{e}"
+        );
     }
 
     #[test]

@@ -5,7 +5,7 @@
 use super::cameras::placed_camera;
 use super::lights::punctual_light;
 use super::materials::pbr_material;
-use super::primitives::{draws_triangles, mode_name, read_primitive};
+use super::primitives::{draws_triangles, read_primitive};
 use super::{Context, LoadError, LoadErrorKind, Loaded, LoadedMesh};
 use crate::scene::MeshBudget;
 use glam::Mat4;
@@ -498,14 +498,6 @@ fn visit(
             let mirrored = world.determinant() < 0.0;
             for primitive in mesh.primitives() {
                 let p = primitive.index();
-                if !draws_triangles(primitive.mode()) {
-                    out.warnings.push(format!(
-                        "{}: mode {} is not drawn (ffvk draws triangles): skipped",
-                        cx.primitive_label(m, p),
-                        mode_name(primitive.mode())
-                    ));
-                    continue;
-                }
                 if primitive.morph_targets().len() > 0 {
                     out.warnings
                         .push(format!("{}: morph targets are ignored", cx.primitive_label(m, p)));
@@ -523,6 +515,9 @@ fn visit(
                     node_path: names.clone(),
                     material,
                     vertex_colors: primitive.get(&gltf::Semantic::Colors(0)).is_some(),
+                    // glTF: points and lines without normals are drawn unlit.
+                    lit: draws_triangles(primitive.mode())
+                        || primitive.get(&gltf::Semantic::Normals).is_some(),
                 });
             }
         }

@@ -58,6 +58,12 @@ fn gltf_document(mesh: &MeshData, name: &str) -> io::Result<String> {
              expected at least one triangle"
         )));
     }
+    if mesh.topology != crate::Topology::TriangleList {
+        return Err(invalid(format!(
+            "cannot write a mesh of {} as glTF: the writer writes triangle lists",
+            mesh.topology.gl_name()
+        )));
+    }
     if index_count % 3 != 0 {
         return Err(invalid(format!(
             "cannot write a glTF triangle list of {index_count} indices: expected a multiple of 3"
@@ -278,27 +284,18 @@ mod tests {
         assert!(e.to_string().contains("0 vertices"), "{e}");
 
         let v = Vertex::new(Vec3::ZERO, Vec3::Y, Vec4::ONE);
-        let bad_index = MeshData {
-            vertices: vec![v; 3],
-            indices: vec![0, 1, 3],
-        };
+        let bad_index = MeshData::new(vec![v; 3], vec![0, 1, 3]);
         let e = write_gltf(&bad_index, &dir.join("bad_index.gltf")).unwrap_err();
         assert!(
             e.to_string().contains("index 2 is 3") && e.to_string().contains("< 3"),
             "{e}"
         );
 
-        let partial = MeshData {
-            vertices: vec![v; 3],
-            indices: vec![0, 1],
-        };
+        let partial = MeshData::new(vec![v; 3], vec![0, 1]);
         let e = write_gltf(&partial, &dir.join("partial.gltf")).unwrap_err();
         assert!(e.to_string().contains("multiple of 3"), "{e}");
 
-        let mut nan = MeshData {
-            vertices: vec![v; 3],
-            indices: vec![0, 1, 2],
-        };
+        let mut nan = MeshData::new(vec![v; 3], vec![0, 1, 2]);
         nan.vertices[1].normal[0] = f32::NAN;
         let e = write_gltf(&nan, &dir.join("nan.gltf")).unwrap_err();
         assert!(
