@@ -92,6 +92,9 @@ pub struct EmbedFrame {
     /// and modelview ([`grid_objects`]) under the one shared `state`, as an emulation layer
     /// records a frame of many objects.
     pub grid: u32,
+    /// How the teapot's indices are drawn: its triangles, or (say) one lit line strip through
+    /// them, as `glDrawElements(GL_LINE_STRIP, …)` would.
+    pub topology: ffvk::Topology,
 }
 
 /// The objects of an `n` × `n` frame under `state`: each teapot's modelview and its own values
@@ -131,6 +134,7 @@ pub fn render_modes(
                 state: gl_state(mode).map_err(|e| e.to_string())?.lighting,
                 color_array: true,
                 grid: 0,
+                topology: ffvk::Topology::TriangleList,
             })
         })
         .collect::<Result<Vec<_>, String>>()?;
@@ -191,6 +195,7 @@ fn main() {
                 state: gl.lighting,
                 color_array: true,
                 grid: 8,
+                topology: ffvk::Topology::TriangleList,
             };
             render_frames(device.as_deref(), validation, SIZE, &[frame])
         });
@@ -201,11 +206,33 @@ fn main() {
             std::process::exit(1);
         }
     };
+    // And the teapot's indices drawn as one lit line strip (glDrawElements(GL_LINE_STRIP)).
+    let strip = gl_state(LightingMode::Vertex)
+        .map_err(|e| e.to_string())
+        .and_then(|gl| {
+            let frame = EmbedFrame {
+                state: gl.lighting,
+                color_array: true,
+                grid: 0,
+                topology: ffvk::Topology::LineStrip,
+            };
+            render_frames(device.as_deref(), validation, SIZE, &[frame])
+        });
+    let strip = match strip {
+        Ok(mut images) => images.pop().unwrap_or_default(),
+        Err(e) => {
+            eprintln!("embed: {e}");
+            std::process::exit(1);
+        }
+    };
     let out = std::path::Path::new("out/embed");
     let named = images
         .into_iter()
         .map(|(mode, rgba)| (format!("teapot_{}.png", mode.name()), rgba))
-        .chain([("teapots_8x8.png".to_string(), grid)]);
+        .chain([
+            ("teapots_8x8.png".to_string(), grid),
+            ("teapot_line_strip.png".to_string(), strip),
+        ]);
     for (name, rgba) in named {
         let path = out.join(name);
         let Some(image) = image::RgbaImage::from_raw(SIZE, SIZE, rgba) else {
@@ -606,7 +633,8 @@ impl App {
             };
             lighting.begin_frame(0).map_err(|e| e.to_string())?;
             self.begin(&scene)?;
-            let geometry = Geometry::indexed(scene.index_buffer, vk::IndexType::UINT32, scene.index_count);
+            let geometry = Geometry::indexed(scene.index_buffer, vk::IndexType::UINT32, scene.index_count)
+                .with_topology(frame.topology);
             let buffers = &scene.buffers;
             let draws: Vec<LitDraw> = if frame.grid == 0 {
                 vec![LitDraw::new(&frame.state, view(), projection(), buffers, geometry).with_raster(raster)]

@@ -614,6 +614,7 @@ fn the_current_color_and_its_color_material_write_back_match_mesa_gl() {
                 state: gl.lighting,
                 color_array: false,
                 grid: 0,
+                topology: ffvk::Topology::TriangleList,
             })
             .collect();
         let ours = embed::render_frames(None, true, SIZE, &frames).unwrap();

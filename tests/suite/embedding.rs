@@ -106,6 +106,7 @@ fn a_run_of_draws_sharing_one_state_with_values_of_their_own_draws_what_a_state_
             state,
             color_array: true,
             grid: 6,
+            topology: ffvk::Topology::TriangleList,
         }];
         let embedded = embed::render_frames(None, true, embed::SIZE, &frames)
             .expect("the run renders with validation on");
@@ -160,6 +161,7 @@ fn without_a_color_array_every_vertex_takes_the_current_color() {
             state: *s,
             color_array: false,
             grid: 0,
+            topology: ffvk::Topology::TriangleList,
         })
         .collect();
     let embedded =
@@ -192,6 +194,7 @@ fn the_uniform_block_may_live_in_another_descriptor_set() {
             state: embed::gl_state(mode).unwrap().lighting,
             color_array: true,
             grid: 0,
+            topology: ffvk::Topology::TriangleList,
         })
         .collect();
     let in_set_0 = embed::render_frames_in_set(None, true, 64, 0, &frames).unwrap();
@@ -554,6 +557,7 @@ fn the_lighting_variants_draw_the_same_bytes_through_a_callers_device() {
             state: variant(mode),
             color_array: true,
             grid: 0,
+            topology: ffvk::Topology::TriangleList,
         })
         .collect();
     let embedded =
@@ -569,6 +573,51 @@ fn the_lighting_variants_draw_the_same_bytes_through_a_callers_device() {
             pixels.rgba(),
             "{}: the variants change the image",
             mode.name()
+        );
+    }
+    finish(r);
+}
+
+/// The embedding example's teapot drawn as one lit line strip through its indices
+/// (`glDrawElements(GL_LINE_STRIP, …)`) on a caller's device draws the bytes the Renderer draws
+/// with the same mesh and `Draw::with_topology`, in every mode; and it is lines, not the teapot's
+/// triangles.
+#[test]
+fn a_callers_device_draws_a_lit_line_strip_as_the_renderer_does() {
+    let frames: Vec<embed::EmbedFrame> = LightingMode::ALL
+        .iter()
+        .map(|&mode| embed::EmbedFrame {
+            state: embed::gl_state(mode).unwrap().lighting,
+            color_array: true,
+            grid: 0,
+            topology: ffvk::Topology::LineStrip,
+        })
+        .collect();
+    let embedded = embed::render_frames(None, true, embed::SIZE, &frames).unwrap();
+    let mut r = renderer();
+    let mesh = r.upload(&embed::teapot().unwrap()).unwrap();
+    let clear = embed::CLEAR.map(|c| (c * 255.0).round() as u8);
+    for (frame, bytes) in frames.iter().zip(embedded) {
+        let mut f = Frame::new(embed::SIZE, embed::SIZE);
+        f.clear_color = Vec4::from_array(embed::CLEAR);
+        f.draws.push(
+            Draw::new(&mesh, embed::view(), embed::projection(), frame.state)
+                .with_topology(ffvk::Topology::LineStrip),
+        );
+        let pixels = r.render(&f).unwrap();
+        let what = format!("line strip {}", frame.state.mode.name());
+        assert_same_bytes(&pixels, &bytes, &what);
+        let triangles = renderer_frame(&mut r, &mesh, &frame.state);
+        let lit = pixels.rgba().chunks(4).filter(|px| px[..3] != clear[..3]).count();
+        let differ = pixels
+            .rgba()
+            .chunks(4)
+            .zip(triangles.rgba().chunks(4))
+            .filter(|(a, b)| a != b)
+            .count();
+        assert!(
+            lit > 1000 && differ > 1000,
+            "{what}: {lit} pixels drawn, {differ} unlike the solid teapot's"
         );
     }
     finish(r);

@@ -119,7 +119,7 @@ pub fn from_gltf(
     let (lo, hi) = world_bounds(loaded.meshes.iter().map(|m| (&m.data, m.transform))).ok_or_else(|| {
         field(
             "meshes",
-            "no triangle meshes in the file's scene: expected something to draw".into(),
+            "no meshes in the file's scene: expected something to draw".into(),
         )
     })?;
     let (center, radius) = ((lo + hi) / 2.0, ((hi - lo).length() / 2.0).max(1e-6));
