@@ -508,3 +508,54 @@ fn a_gltf_file_draws_each_of_its_seven_modes_points_and_lines_unlit_without_norm
     assert!(grey > 600, "{grey} lit grey pixels");
     finish(r);
 }
+
+// ---------------------------------------------------------------------------------------------
+// Scene files.
+
+#[test]
+fn a_scene_draws_a_meshs_index_list_in_any_gl_mode_and_refuses_an_unknown_one() {
+    let dir = output_dir().join("topology_scene");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = |primitive: &str| {
+        format!(
+            "[image]\nsize = [64, 64]\n[[lights]]\nindex = 0\nposition = [0.0, 0.0, 1.0, 0.0]\n\
+             [[meshes]]\nbuiltin = \"sphere\"\nlevel = 12\ntranslate = [0.0, 0.0, -3.0]\n{primitive}"
+        )
+    };
+    let mut r = renderer();
+    let mut drawn = Vec::new();
+    for primitive in [
+        "",
+        "primitive = \"points\"",
+        "primitive = \"lines\"",
+        "primitive = \"quads\"",
+    ] {
+        let path = dir.join("s.toml");
+        std::fs::write(&path, scene(primitive)).unwrap();
+        let s = ffvk::scene::Scene::load(&path).unwrap_or_else(|e| panic!("{primitive}: {e}"));
+        let image = ffvk::scene::render_scene(&mut r, &s, None).unwrap();
+        let lit = image.pixels().filter(|p| p.0[..3] != [0, 0, 0]).count();
+        drawn.push((primitive, s.meshes[0].data.topology, lit));
+    }
+    let [solid, points, lines, quads] = [drawn[0], drawn[1], drawn[2], drawn[3]];
+    assert_eq!(
+        [points.1, lines.1, quads.1],
+        [Topology::PointList, Topology::LineList, Topology::TriangleList]
+    );
+    assert!(
+        points.2 > 20 && points.2 < lines.2 && lines.2 < solid.2,
+        "{drawn:?}"
+    );
+    assert!(quads.2 > 0 && quads.2 <= solid.2, "{drawn:?}");
+    let path = dir.join("bad.toml");
+    std::fs::write(&path, scene("primitive = \"tristrip\"")).unwrap();
+    let e = ffvk::scene::Scene::load(&path).unwrap_err().to_string();
+    assert!(
+        e.contains("meshes[0].primitive")
+            && e.contains("\"tristrip\"")
+            && e.contains("expected points, lines"),
+        "{e}"
+    );
+    finish(r);
+}

@@ -186,6 +186,10 @@ pub(super) struct MeshSpec {
     pub(super) back_material: Option<MaterialSpec>,
     /// This mesh's texture (`enabled = false` draws it untextured).
     pub(super) texture: Option<super::texture::TextureSpec>,
+    /// GL's primitive mode its index list is drawn with ("triangles" by default): "points",
+    /// "lines", "line_strip", "line_loop", "triangles", "triangle_strip", "triangle_fan",
+    /// "quads", "quad_strip" or "polygon".
+    pub(super) primitive: Option<String>,
 }
 
 /// A fixed-length array that refuses extra or missing elements (serde's own arrays, read from

@@ -167,6 +167,46 @@ pub struct SceneError {
     pub kind: SceneErrorKind,
 }
 
+/// `data`'s index list drawn as GL's primitive mode `name` (see the scene file's `primitive`):
+/// Vulkan's topologies as they are, GL's others through [`crate::draw::gl_primitives`]; an
+/// incomplete last line is dropped, as GL drops it.
+fn as_primitive(mut data: MeshData, name: &str) -> Result<MeshData, String> {
+    use crate::draw::gl_primitives;
+    use crate::Topology;
+    if data.topology != Topology::TriangleList {
+        return Err(format!(
+            "{:?} for a mesh of {}: expected a triangle mesh to redraw",
+            shorten(name),
+            data.topology.gl_name()
+        ));
+    }
+    let indices = std::mem::take(&mut data.indices);
+    let (topology, indices) = match name {
+        "points" => (Topology::PointList, indices),
+        "lines" => {
+            let whole = indices.len() / 2 * 2;
+            (Topology::LineList, indices[..whole].to_vec())
+        }
+        "line_strip" => (Topology::LineStrip, indices),
+        "line_loop" => (Topology::LineList, gl_primitives::line_loop(&indices)),
+        "triangles" => (Topology::TriangleList, indices),
+        "triangle_strip" => (Topology::TriangleStrip, indices),
+        "triangle_fan" => (Topology::TriangleFan, indices),
+        "quads" => (Topology::TriangleList, gl_primitives::quads(&indices)),
+        "quad_strip" => (Topology::TriangleList, gl_primitives::quad_strip(&indices)),
+        "polygon" => (Topology::TriangleList, gl_primitives::polygon(&indices)),
+        _ => {
+            return Err(format!(
+                "{:?}: expected points, lines, line_strip, line_loop, triangles, triangle_strip, \
+                 triangle_fan, quads, quad_strip or polygon",
+                shorten(name)
+            ))
+        }
+    };
+    data.indices = indices;
+    Ok(data.with_topology(topology))
+}
+
 /// A [`SceneError`]'s message: the path, then the kind's message; a glTF file drawn directly
 /// (the scene's path is the glTF file's) is named once, not as the scene and again as its file.
 fn scene_error_text(error: &SceneError) -> String {
@@ -591,6 +631,10 @@ impl Builder<'_> {
                 };
                 let own_material = spec.material.is_none() && scene_front.is_none();
                 let mut data = p.data;
+                if let Some(name) = &spec.primitive {
+                    data =
+                        as_primitive(data, name).map_err(|m| self.field(format!("{field}.primitive"), m))?;
+                }
                 let meaning = match &pbr {
                     Some(pbr) if gltf_meaning => {
                         let color_material = own_material && p.vertex_colors;
