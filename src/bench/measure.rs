@@ -390,7 +390,11 @@ pub fn summarize(results: &[BenchResult]) -> Summary {
     };
 
     let mut gl_ratios = Vec::new();
-    for g in results.iter().filter(|r| r.point.engine == Engine::Gl) {
+    // The primitives sweep has a table of its own; the summary's ratios stay the triangles'.
+    for g in results
+        .iter()
+        .filter(|r| r.point.engine == Engine::Gl && r.point.group != Group::Primitives)
+    {
         let twin = results.iter().find(|s| {
             s.point
                 == Point {

@@ -373,7 +373,7 @@ fn load_average() -> Option<f64> {
 struct MeshCache {
     stacks: u32,
     data: Option<MeshData>,
-    uploads: HashMap<Variant, Mesh>,
+    uploads: HashMap<(Variant, sweep::Primitive), Mesh>,
 }
 
 /// Runs every point of `config`, drawing `progress` as it goes. `options` chooses the device
@@ -463,14 +463,14 @@ pub fn run_sweep(
                 let renderer = renderers
                     .get_mut(&point.variant)
                     .expect("a renderer per ffvk variant");
-                let mesh = match cache.uploads.entry(point.variant) {
+                let mesh = match cache.uploads.entry((point.variant, point.primitive)) {
                     Entry::Occupied(e) => e.into_mut(),
-                    Entry::Vacant(e) => e.insert(renderer.upload(data)?),
+                    Entry::Vacant(e) => e.insert(renderer.upload(&point.primitive.mesh(data))?),
                 };
                 measure_ffvk(renderer, mesh, point, config)?
             }
             Engine::Gl => match &gl {
-                Some(g) => g.measure(data, point, config)?,
+                Some(g) => g.measure(&point.primitive.mesh(data), point, config)?,
                 None => unreachable!("GL points are removed without the anchor"),
             },
         };

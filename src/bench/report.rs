@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use serde::Serialize;
 
 use super::measure::Spread;
-use super::sweep::{sphere_counts, BenchMode, Engine, Group, LightKind, Point, Variant, GL_MODES};
+use super::sweep::{sphere_counts, BenchMode, Engine, Group, LightKind, Point, Primitive, Variant, GL_MODES};
 use super::{BenchReport, BenchResult, DrawCost};
 use crate::table::{Align, Table};
 use crate::{write_file, Error, Result};
@@ -16,7 +16,7 @@ use crate::{write_file, Error, Result};
 // The files.
 
 /// The CSV columns, in order.
-pub const CSV_COLUMNS: [&str; 37] = [
+pub const CSV_COLUMNS: [&str; 38] = [
     "group",
     "engine",
     "mode",
@@ -31,6 +31,7 @@ pub const CSV_COLUMNS: [&str; 37] = [
     "light_kind",
     "local_viewer",
     "draws",
+    "primitive",
     "warmup",
     "frames",
     "time_ms",
@@ -93,6 +94,7 @@ pub fn csv(report: &BenchReport) -> String {
             p.light_kind.name().into(),
             p.local_viewer.to_string(),
             p.draws.to_string(),
+            serde_name(&p.primitive),
             s.warmup.to_string(),
             s.frames.to_string(),
             num(s.time_ms),
@@ -253,6 +255,15 @@ pub fn markdown(report: &BenchReport) -> String {
                 c.base_size
             ),
             light_kind_table(report, has_gl),
+        ),
+        (
+            format!(
+                "Points and lines ({} vertices, {}², {}; lines: each triangle's three edges)",
+                sphere_counts(c.base_stacks).0,
+                c.base_size,
+                lights_text(c.base_lights)
+            ),
+            primitives_table(report, has_gl),
         ),
     ];
     for (title, table) in sections {
@@ -641,6 +652,44 @@ fn size_table(report: &BenchReport) -> Table {
     t
 }
 
+/// The sphere drawn as triangles, lines and points: ffvk's vertex, flat and unlit times, GL's,
+/// and ffvk's over GL's for the two lit modes.
+fn primitives_table(report: &BenchReport, has_gl: bool) -> Table {
+    let modes = [BenchMode::Vertex, BenchMode::Flat, BenchMode::Unlit];
+    let mut t = Table::new([("drawn as", Align::Left)]);
+    for mode in modes {
+        t.column(mode.name(), Align::Right);
+    }
+    if has_gl {
+        for h in ["GL smooth", "GL flat", "GL unlit", "vertex ÷ GL", "flat ÷ GL"] {
+            t.column(h, Align::Right);
+        }
+    }
+    for primitive in Primitive::ALL {
+        let at = |engine, mode| {
+            find(&report.results, |p| {
+                p.group == Group::Primitives
+                    && p.primitive == primitive
+                    && p.engine == engine
+                    && p.mode == mode
+            })
+        };
+        let mut row = vec![primitive.gl_name().to_string()];
+        row.extend(modes.map(|mode| cell(at(Engine::Ffvk, mode))));
+        if has_gl {
+            row.extend(modes.map(|mode| cell(at(Engine::Gl, mode))));
+            for mode in [BenchMode::Vertex, BenchMode::Flat] {
+                let pair = at(Engine::Ffvk, mode).zip(at(Engine::Gl, mode));
+                row.push(ratio(
+                    pair.map(|(f, g)| f.stats.wall_ms.median / g.stats.wall_ms.median),
+                ));
+            }
+        }
+        t.row(row);
+    }
+    t
+}
+
 /// Time against light count: vertex and fragment mode, specialized and uber, and GL's smooth
 /// shading.
 fn light_count_table(report: &BenchReport, has_gl: bool) -> Table {
@@ -914,6 +963,14 @@ Times are per frame in ms: the median, then the interquartile range; ffvk's from
 | spot_smoothstep | infinite | 1.66 (1.58–1.74) | 2.07 (1.97–2.18) | 2.36 (2.24–2.48) | 2.95 (2.80–3.10) | – | – | 1.20 | 1.20 |
 | spot_smoothstep | local | 1.69 (1.61–1.78) | 2.12 (2.01–2.22) | 2.41 (2.29–2.53) | 3.01 (2.86–3.16) | – | – | 1.20 | 1.20 |
 
+### Points and lines (91 vertices, 24², 1 directional light; lines: each triangle's three edges)
+
+| drawn as | vertex | flat | unlit | GL smooth | GL flat | GL unlit | vertex ÷ GL | flat ÷ GL |
+| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |
+| GL_TRIANGLES | 0.89 (0.85–0.94) | 0.22 (0.21–0.23) | 0.17 (0.17–0.18) | 1.34 (1.27–1.41) | 0.33 (0.31–0.35) | 0.26 (0.25–0.27) | 0.67 | 0.67 |
+| GL_LINES | 0.89 (0.85–0.94) | 0.22 (0.21–0.23) | 0.17 (0.17–0.18) | 1.34 (1.27–1.41) | 0.33 (0.31–0.35) | 0.26 (0.25–0.27) | 0.67 | 0.67 |
+| GL_POINTS | 0.89 (0.85–0.94) | 0.22 (0.21–0.23) | 0.17 (0.17–0.18) | 1.34 (1.27–1.41) | 0.33 (0.31–0.35) | 0.26 (0.25–0.27) | 0.67 | 0.67 |
+
 ### What a vertex, a pixel and a light cost
 
 | engine | mode | ns / vertex | ns / pixel | ns / light | ns / light / evaluation | fixed ms |
@@ -1014,7 +1071,7 @@ Least-squares slopes of the sweeps above, in ns: per vertex drawn (density sweep
         assert!(!m.contains("GL smooth") && !m.contains("÷ GL"), "{m}");
         // Every line of a table has as many cells as its headings.
         let tables: Vec<&str> = m.split("\n\n").filter(|b| b.starts_with('|')).collect();
-        assert_eq!(tables.len(), 6, "{m}");
+        assert_eq!(tables.len(), 7, "{m}");
         for table in tables {
             let cells: Vec<usize> = table.lines().map(|l| l.matches(" |").count()).collect();
             assert!(cells.iter().all(|&n| n == cells[0]), "{table}");

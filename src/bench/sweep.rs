@@ -259,6 +259,55 @@ pub enum Group {
     Lights,
     /// Light kind: directional, point or spot lights, infinite or local viewer.
     Kind,
+    /// Primitives: the sphere as triangles, as the lines of its triangles' edges, as points.
+    Primitives,
+}
+
+/// What the sphere is drawn as.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum Primitive {
+    /// Its triangles (`GL_TRIANGLES`).
+    #[default]
+    Triangles,
+    /// Each triangle's three edges (`GL_LINES`): a wireframe, as CAD viewers draw.
+    Lines,
+    /// Each vertex once (`GL_POINTS`).
+    Points,
+}
+
+impl Primitive {
+    /// Every primitive, in table order.
+    pub const ALL: [Primitive; 3] = [Primitive::Triangles, Primitive::Lines, Primitive::Points];
+
+    /// GL's name of the mode.
+    pub fn gl_name(self) -> &'static str {
+        match self {
+            Primitive::Triangles => "GL_TRIANGLES",
+            Primitive::Lines => "GL_LINES",
+            Primitive::Points => "GL_POINTS",
+        }
+    }
+
+    /// The sphere `triangles` drawn as this primitive.
+    pub fn mesh(self, triangles: &ffvk::mesh::MeshData) -> ffvk::mesh::MeshData {
+        use ffvk::Topology;
+        match self {
+            Primitive::Triangles => triangles.clone(),
+            Primitive::Lines => {
+                let edges = triangles
+                    .indices
+                    .chunks_exact(3)
+                    .flat_map(|t| [t[0], t[1], t[1], t[2], t[2], t[0]])
+                    .collect();
+                ffvk::mesh::MeshData::new(triangles.vertices.clone(), edges).with_topology(Topology::LineList)
+            }
+            Primitive::Points => {
+                let all = (0..triangles.vertices.len() as u32).collect();
+                ffvk::mesh::MeshData::new(triangles.vertices.clone(), all).with_topology(Topology::PointList)
+            }
+        }
+    }
 }
 
 /// Who draws.
@@ -424,12 +473,14 @@ pub struct Point {
     pub local_viewer: bool,
     /// Draws of the sphere per frame ([`SweepConfig::draws`]).
     pub draws: u32,
+    /// What the sphere is drawn as.
+    pub primitive: Primitive,
 }
 
 impl Point {
     pub(super) fn label(&self) -> String {
         format!(
-            "{:?} {} {} {} {}v{} {}x{} {}×{}{}",
+            "{:?} {} {} {} {}v{} {}x{} {}×{}{}{}",
             self.group,
             match self.engine {
                 Engine::Ffvk => "ffvk",
@@ -447,7 +498,11 @@ impl Point {
             self.height,
             self.lights,
             self.light_kind.name(),
-            if self.local_viewer { " local" } else { "" }
+            if self.local_viewer { " local" } else { "" },
+            match self.primitive {
+                Primitive::Triangles => String::new(),
+                p => format!(" {}", p.gl_name()),
+            }
         )
     }
 }
@@ -487,6 +542,7 @@ pub fn points(config: &SweepConfig) -> Vec<Point> {
             light_kind: LightKind::Directional,
             local_viewer: false,
             draws: config.draws,
+            primitive: Primitive::Triangles,
         }
     };
     let some_variants = |everywhere: bool| {
@@ -582,6 +638,27 @@ pub fn points(config: &SweepConfig) -> Vec<Point> {
                     Group::Kind,
                     Engine::Gl,
                     BenchMode::Vertex,
+                    Variant::FixedFunction,
+                )));
+            }
+        }
+    }
+    // The light sweeps' sphere as triangles, lines and points, lit at the vertices (smooth and
+    // flat) and unlit, by ffvk and GL.
+    for primitive in Primitive::ALL {
+        for mode in [BenchMode::Vertex, BenchMode::Flat, BenchMode::Unlit] {
+            let with_primitive = |p: Point| Point { primitive, ..p };
+            out.push(with_primitive(base(
+                Group::Primitives,
+                Engine::Ffvk,
+                mode,
+                Variant::Specialized,
+            )));
+            if config.gl {
+                out.push(with_primitive(base(
+                    Group::Primitives,
+                    Engine::Gl,
+                    mode,
                     Variant::FixedFunction,
                 )));
             }
