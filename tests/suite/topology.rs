@@ -559,3 +559,161 @@ fn a_scene_draws_a_meshs_index_list_in_any_gl_mode_and_refuses_an_unknown_one() 
     );
     finish(r);
 }
+
+// ---------------------------------------------------------------------------------------------
+// A glxgears-like gear: flat-shaded quad strips and quads, drawn by Mesa's GL with GL's own
+// modes and by ffvk through gl_primitives.
+
+/// One part of the gear: its vertices (in GL's order for `mode`) and GL's mode.
+struct Part {
+    vertices: Vec<Vertex>,
+    mode: GlMode,
+}
+
+/// A gear of `teeth` teeth between radius 0.3 and 1.0, 0.3 thick: its front ring (a quad strip),
+/// the front of its teeth (quads) and the outward faces of its teeth (a quad strip whose quads
+/// each take the normal of their face from their provoking vertex, as flat shading reads it).
+fn gear(teeth: usize) -> Vec<Part> {
+    let (inner, root, tip, half) = (0.3f32, 0.75f32, 1.0f32, 0.15f32);
+    let step = std::f32::consts::TAU / teeth as f32 / 4.0;
+    let at = |r: f32, a: f32, z: f32| Vec3::new(r * a.cos(), r * a.sin(), z);
+    let v = |p: Vec3, n: Vec3| Vertex::new(p, n, Vec4::ONE);
+    let mut ring = Vec::new();
+    for k in 0..=teeth * 4 {
+        let a = k as f32 * step;
+        ring.push(v(at(inner, a, half), Vec3::Z));
+        ring.push(v(at(root, a, half), Vec3::Z));
+    }
+    let mut fronts = Vec::new();
+    for t in 0..teeth {
+        let a = t as f32 * 4.0 * step;
+        for (r, k) in [(root, 0.0), (tip, 1.0), (tip, 2.0), (root, 3.0)] {
+            fronts.push(v(at(r, a + k * step, half), Vec3::Z));
+        }
+    }
+    // The outline: root, tip, tip, root for each tooth, back to the start.
+    let outline: Vec<Vec3> = (0..=teeth * 4)
+        .map(|k| {
+            let r = if matches!(k % 4, 1 | 2) { tip } else { root };
+            at(r, k as f32 * step, 0.0)
+        })
+        .collect();
+    let mut sides = Vec::new();
+    for (k, p) in outline.iter().enumerate() {
+        // The normal of the face that ends here (for k = 0, the last face's).
+        let from = if k == 0 {
+            outline[outline.len() - 2]
+        } else {
+            outline[k - 1]
+        };
+        let d = *p - from;
+        let n = Vec3::new(d.y, -d.x, 0.0).normalize_or(Vec3::X);
+        sides.push(v(*p + Vec3::Z * half, n));
+        sides.push(v(*p - Vec3::Z * half, n));
+    }
+    vec![
+        Part {
+            vertices: ring,
+            mode: GlMode::QuadStrip,
+        },
+        Part {
+            vertices: fronts,
+            mode: GlMode::Quads,
+        },
+        Part {
+            vertices: sides,
+            mode: GlMode::QuadStrip,
+        },
+    ]
+}
+
+#[test]
+fn a_flat_shaded_gear_of_quad_strips_and_quads_lights_as_mesa_gl_lights_it() {
+    let parts = gear(12);
+    let gl = with(dark(), |gl| {
+        gl.enable(Cap::Light(0))?;
+        gl.light(0, LightParam::Position(Vec4::new(5.0, 5.0, 10.0, 0.0)))?;
+        gl.material(
+            Face::FrontAndBack,
+            MaterialParam::AmbientAndDiffuse(Vec4::new(0.8, 0.1, 0.0, 1.0)),
+        )?;
+        gl.lighting_mode(LightingMode::Flat);
+        Ok(())
+    });
+    let modelview = Mat4::from_translation(Vec3::new(0.0, 0.0, -4.0))
+        * Mat4::from_rotation_x(-0.6)
+        * Mat4::from_rotation_y(0.5);
+    let projection = Mat4::perspective_rh_gl(0.7, 1.0, 1.0, 10.0);
+    let size = 96;
+    // GL: each part with its own mode.
+    let gl_meshes: Vec<MeshData> = parts
+        .iter()
+        .map(|p| MeshData::new(p.vertices.clone(), (0..p.vertices.len() as u32).collect()))
+        .collect();
+    let draws = parts
+        .iter()
+        .zip(&gl_meshes)
+        .map(|(p, mesh)| {
+            let mut d = GlDraw::new(mesh, modelview, projection, gl.lighting);
+            d.mode = p.mode;
+            d
+        })
+        .collect();
+    let theirs = render_gl_with(
+        &GlScene {
+            width: size,
+            height: size,
+            clear_color: [0.0, 0.0, 0.0, 1.0],
+            depth_test: true,
+            draws,
+        },
+        &gl_options(),
+    )
+    .unwrap();
+    // ffvk: the same parts as triangle lists from gl_primitives.
+    let mut r = renderer();
+    let meshes: Vec<ffvk::Mesh> = parts
+        .iter()
+        .map(|p| {
+            let order: Vec<u32> = (0..p.vertices.len() as u32).collect();
+            let indices = match p.mode {
+                GlMode::QuadStrip => gl_primitives::quad_strip(&order),
+                _ => gl_primitives::quads(&order),
+            };
+            r.upload(&MeshData::new(p.vertices.clone(), indices)).unwrap()
+        })
+        .collect();
+    let mut frame = Frame::new(size, size);
+    frame.clear_color = Vec4::new(0.0, 0.0, 0.0, 1.0);
+    frame.depth_test = true;
+    for mesh in &meshes {
+        frame
+            .draws
+            .push(Draw::new(mesh, modelview, projection, gl.lighting));
+    }
+    let ours = r.render(&frame).unwrap().into_rgba_image();
+    drop(frame);
+    drop(meshes);
+    finish(r);
+    let lit = |p: &image::Rgba<u8>| p.0[..3] != [0, 0, 0];
+    let (mut both, mut either, mut worst, mut off) = (0, 0, 0u8, 0);
+    for (a, b) in ours.pixels().zip(theirs.pixels()) {
+        either += (lit(a) || lit(b)) as u32;
+        if lit(a) && lit(b) {
+            both += 1;
+            let d = (0..3).map(|c| a.0[c].abs_diff(b.0[c])).max().unwrap();
+            worst = worst.max(d);
+            off += (d > 2) as u32;
+        }
+    }
+    let a = save_for_inspection(&ours, "gear_ffvk");
+    let b = save_for_inspection(&theirs, "gear_gl");
+    // Where two faces meet at an edge, which one a pixel on it shows is the rasterizer's
+    // call; a handful of such pixels may differ, no face may.
+    assert!(
+        both > 2000 && both * 100 >= either * 97 && off * 100 <= both,
+        "{both} pixels both cover of {either}, {off} over 2/255 apart (worst {worst}); images {} and {}",
+        a.display(),
+        b.display()
+    );
+}
