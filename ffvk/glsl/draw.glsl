@@ -112,6 +112,8 @@ layout(constant_id = 12) const int SPEC_FINITE_VERTICES = -1;
 // 1 in pipelines drawing points (their vertex stage writes the point size), 0 in others; the
 // uber-shader (-1) writes it always.
 layout(constant_id = 13) const int SPEC_POINTS = -1;
+// The point size (GL's glPointSize), set in every pipeline.
+layout(constant_id = 14) const float SPEC_POINT_SIZE = 1.0;
 
 // A switch of the uber-shader, read from the uniform block. lavapipe 22.3 compiles a shader
 // variant for every draw whose uniforms changed when an if or a loop bound depends on uniform

@@ -39,8 +39,8 @@ layout(location = 4) out vec4 stq;
 #include "record.glsl"
 
 void main() {
-    // GL's default point size; Vulkan leaves a point's size undefined unless it is written.
-    if (SPEC_POINTS != 0) gl_PointSize = 1.0;
+    // GL's point size; Vulkan leaves a point's size undefined unless it is written.
+    if (SPEC_POINTS != 0) gl_PointSize = SPEC_POINT_SIZE;
     vec4 V = in_modelview * vec4(in_position, 1.0);
     gl_Position = state.projection * V;
 #ifdef TEXTURE

@@ -262,6 +262,16 @@ pub enum LightingError {
     /// A textured draw with a vertex layout that has no texture coordinates.
     #[error("the draw is textured, but the vertex layout has no texture coordinates: expected VertexInput::texcoord")]
     NoTexcoord,
+    /// A point size or line width GL would refuse or the device cannot draw.
+    #[error("{what} {size}: expected {expected}")]
+    RasterSize {
+        /// "point size" or "line width".
+        what: &'static str,
+        /// The size asked for, in pixels, as written.
+        size: String,
+        /// What was expected.
+        expected: String,
+    },
     /// Primitive restart on a list topology (Vulkan allows it only with a feature ffvk does
     /// not ask for, and GL's lists have nothing to restart).
     #[error("primitive restart is on for {topology}: expected GL_LINE_STRIP, GL_TRIANGLE_STRIP or GL_TRIANGLE_FAN, or restart off")]

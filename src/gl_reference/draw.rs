@@ -665,6 +665,8 @@ fn draw_one(
         );
         gl.NormalPointer(gl::FLOAT, stride, field(std::mem::offset_of!(Vertex, normal)));
         gl.ColorPointer(4, gl::FLOAT, stride, field(std::mem::offset_of!(Vertex, color)));
+        gl.PointSize(draw.point_size);
+        gl.LineWidth(draw.line_width);
         gl.DrawElements(draw.mode.gl(), count, gl::UNSIGNED_INT, index_base);
         gl.DisableClientState(gl::VERTEX_ARRAY);
         gl.DisableClientState(gl::NORMAL_ARRAY);

@@ -83,6 +83,10 @@ pub struct GlDraw<'a> {
     /// The primitive mode `glDrawElements` draws the mesh's indices with (`GL_TRIANGLES` by
     /// default; the mesh's indices are then read as that mode's vertices).
     pub mode: GlMode,
+    /// `glPointSize` and `glLineWidth` for the draw.
+    pub point_size: f32,
+    /// `glLineWidth`.
+    pub line_width: f32,
 }
 
 /// GL's primitive modes (`glDrawElements`' first argument), all ten of GL 2.1.
@@ -145,6 +149,8 @@ impl<'a> GlDraw<'a> {
             calls: Vec::new(),
             texture: None,
             mode: GlMode::of(mesh.topology),
+            point_size: 1.0,
+            line_width: 1.0,
         }
     }
 }

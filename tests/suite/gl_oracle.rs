@@ -41,6 +41,8 @@ fn scene<'a>(mesh: &'a MeshData, state: LightingState) -> GlScene<'a> {
             calls: Vec::new(),
             texture: None,
             mode: Default::default(),
+            point_size: 1.0,
+            line_width: 1.0,
         }],
     }
 }

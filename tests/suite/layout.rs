@@ -259,10 +259,15 @@ fn specialization_constant_ids_match_the_rust_side() {
                 .find(|c| c.glsl_name() == name)
                 .unwrap_or_else(|| panic!("{stage}: {name} (SpecId {spec_id}) has no SpecConstant"));
             assert_eq!(constant.id(), spec_id, "{stage}: SpecId of {name}");
-            // The default, -1, is the uber-shader's "read the uniform".
+            // The default, -1, is the uber-shader's "read the uniform"; the point size's, a
+            // float, is GL's 1.
+            let default = match constant {
+                SpecConstant::PointSize => 1.0f32.to_bits() as i32,
+                _ => -1,
+            };
             assert_eq!(
                 r.spec_defaults.get(&id).map(|&v| v as i32),
-                Some(-1),
+                Some(default),
                 "{stage}: default of {name}"
             );
             found.push(constant);

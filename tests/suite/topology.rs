@@ -717,3 +717,103 @@ fn a_flat_shaded_gear_of_quad_strips_and_quads_lights_as_mesa_gl_lights_it() {
         b.display()
     );
 }
+
+// ---------------------------------------------------------------------------------------------
+// glPointSize and glLineWidth.
+
+#[test]
+fn wide_points_and_lines_light_as_mesa_gl_lights_them_and_bad_sizes_are_refused() {
+    let mut r = renderer();
+    for (mode, topology, size) in [
+        (GlMode::Points, Topology::PointList, 4.0f32),
+        (GlMode::Lines, Topology::LineList, 3.0),
+    ] {
+        let vertices = mode_vertices(mode);
+        let count = if mode == GlMode::Lines { 8 } else { 9 };
+        let mesh_data = MeshData::new(vertices, (0..count).collect());
+        let mesh = r.upload(&mesh_data.clone().with_topology(topology)).unwrap();
+        for shading in [LightingMode::Vertex, LightingMode::Flat] {
+            let gl = two_sided(shading);
+            let what = format!("{mode:?} of {size} pixels, {}", shading.name());
+            let mut frame = Frame::new(GL_SIZE, GL_SIZE);
+            frame.clear_color = Vec4::new(0.0, 0.0, 0.0, 1.0);
+            let draw = Draw::new(&mesh, Mat4::IDENTITY, Mat4::IDENTITY, gl.lighting);
+            frame.draws.push(if mode == GlMode::Points {
+                draw.with_point_size(size)
+            } else {
+                draw.with_line_width(size)
+            });
+            let ours = r.render(&frame).unwrap().into_rgba_image();
+            let mut d = GlDraw::new(&mesh_data, Mat4::IDENTITY, Mat4::IDENTITY, gl.lighting);
+            d.mode = mode;
+            (d.point_size, d.line_width) = (size, size);
+            let theirs = render_gl_with(
+                &GlScene {
+                    width: GL_SIZE,
+                    height: GL_SIZE,
+                    clear_color: [0.0, 0.0, 0.0, 1.0],
+                    depth_test: false,
+                    draws: vec![d],
+                },
+                &gl_options(),
+            )
+            .unwrap();
+            let lit = |p: &image::Rgba<u8>| p.0[..3] != [0, 0, 0];
+            let (mut both, mut either, mut worst) = (0, 0, 0u8);
+            for (a, b) in ours.pixels().zip(theirs.pixels()) {
+                either += (lit(a) || lit(b)) as u32;
+                if lit(a) && lit(b) {
+                    both += 1;
+                    worst = worst.max((0..3).map(|c| a.0[c].abs_diff(b.0[c])).max().unwrap());
+                }
+            }
+            let tolerance = if mode == GlMode::Lines && shading == LightingMode::Vertex {
+                12
+            } else {
+                3
+            };
+            let thin = ours.pixels().filter(|p| lit(p)).count();
+            let a = save_for_inspection(&ours, &format!("wide_ffvk_{what}"));
+            let b = save_for_inspection(&theirs, &format!("wide_gl_{what}"));
+            assert!(
+                worst <= tolerance && both * 10 >= either * 7,
+                "{what}: {both} pixels both cover of {either}, worst {worst}/255; images {} and {}",
+                a.display(),
+                b.display()
+            );
+            // Wide: nine points of 4 × 4 pixels, four lines of about 13 pixels, three wide.
+            let least = if mode == GlMode::Points {
+                9 * 12
+            } else {
+                4 * 3 * 10
+            };
+            assert!(thin >= least, "{what}: {thin} pixels");
+        }
+    }
+    // A size of 0 is GL's GL_INVALID_VALUE; one past the device's range cannot be drawn.
+    let mesh = r
+        .upload(
+            &MeshData::new(mode_vertices(GlMode::Points), (0..9).collect())
+                .with_topology(Topology::PointList),
+        )
+        .unwrap();
+    for (size, words) in [
+        (0.0, "point size 0: expected a finite size above 0"),
+        (1e6, "point size 1000000: expected"),
+    ] {
+        let mut frame = Frame::new(8, 8);
+        frame.draws.push(
+            Draw::new(
+                &mesh,
+                Mat4::IDENTITY,
+                Mat4::IDENTITY,
+                two_sided(LightingMode::Vertex).lighting,
+            )
+            .with_point_size(size),
+        );
+        let e = r.render(&frame).unwrap_err().to_string();
+        assert!(e.contains(words), "{e}");
+    }
+    drop(mesh);
+    finish(r);
+}

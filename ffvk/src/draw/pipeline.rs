@@ -531,6 +531,31 @@ pub struct RasterState {
     pub depth_compare: vk::CompareOp,
     /// `GL_BLEND`; `None` (disabled) by default.
     pub blend: Option<Blend>,
+    /// `glPointSize`: 1 by default; another size needs the device's `largePoints` and must lie
+    /// in its `pointSizeRange`.
+    pub point_size: Pixels,
+    /// `glLineWidth`: 1 by default; another width needs the device's `wideLines` and must lie
+    /// in its `lineWidthRange`.
+    pub line_width: Pixels,
+}
+
+/// A size in pixels (a point size, a line width), compared and hashed by its bits so that a
+/// raster state can key a pipeline.
+#[derive(Debug, Clone, Copy)]
+pub struct Pixels(pub f32);
+
+impl PartialEq for Pixels {
+    fn eq(&self, other: &Self) -> bool {
+        self.0.to_bits() == other.0.to_bits()
+    }
+}
+
+impl Eq for Pixels {}
+
+impl std::hash::Hash for Pixels {
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        self.0.to_bits().hash(state);
+    }
 }
 
 impl Default for RasterState {
@@ -542,7 +567,25 @@ impl Default for RasterState {
             depth_write: true,
             depth_compare: vk::CompareOp::LESS,
             blend: None,
+            point_size: Pixels(1.0),
+            line_width: Pixels(1.0),
         }
+    }
+}
+
+impl RasterState {
+    /// Sets [`point_size`](RasterState::point_size) (`glPointSize`).
+    #[must_use]
+    pub fn with_point_size(mut self, size: f32) -> Self {
+        self.point_size = Pixels(size);
+        self
+    }
+
+    /// Sets [`line_width`](RasterState::line_width) (`glLineWidth`).
+    #[must_use]
+    pub fn with_line_width(mut self, width: f32) -> Self {
+        self.line_width = Pixels(width);
+        self
     }
 }
 
@@ -787,6 +830,52 @@ impl Pipelines {
         if k.textured && config.vertex_input.texcoord.is_none() {
             return Err(LightingError::NoTexcoord.into());
         }
+        for (what, Pixels(size), enabled, range, feature, flag) in [
+            (
+                "point size",
+                k.raster.point_size,
+                device.info.large_points,
+                device.info.point_size_range,
+                "largePoints",
+                "large_points",
+            ),
+            (
+                "line width",
+                k.raster.line_width,
+                device.info.wide_lines,
+                device.info.line_width_range,
+                "wideLines",
+                "wide_lines",
+            ),
+        ] {
+            if !(size > 0.0 && size.is_finite()) {
+                return Err(LightingError::RasterSize {
+                    what,
+                    size: size.to_string(),
+                    expected: "a finite size above 0 (GL_INVALID_VALUE in GL)".to_owned(),
+                }
+                .into());
+            }
+            if size != 1.0 && !enabled {
+                return Err(Error::NotEnabled {
+                    feature,
+                    flag,
+                    needed_for: if what == "point size" {
+                        "a point size other than 1 needs"
+                    } else {
+                        "a line width other than 1 needs"
+                    },
+                });
+            }
+            if !(range[0]..=range[1]).contains(&size) {
+                return Err(LightingError::RasterSize {
+                    what,
+                    size: size.to_string(),
+                    expected: format!("{} to {}, the device's range", range[0], range[1]),
+                }
+                .into());
+            }
+        }
         if k.restart && !k.topology.restartable() {
             return Err(LightingError::RestartOnList {
                 topology: k.topology.gl_name(),
@@ -813,9 +902,11 @@ impl Pipelines {
                 offset: c.id() * 4,
                 size: 4,
             });
-        // The topology's constant is the pipeline's, not the state's.
+        // The topology's constants are the pipeline's, not the state's; the point size (a
+        // float constant) is passed to every pipeline, the uber-shader's too.
         let mut spec = k.spec;
         spec.values[SpecConstant::Points as usize] = (k.topology == Topology::PointList) as i32;
+        spec.values[SpecConstant::PointSize as usize] = k.raster.point_size.0.to_bits() as i32;
         let specialization = vk::SpecializationInfo::default()
             .map_entries(&entries)
             .data(bytemuck::bytes_of(&spec));
@@ -829,11 +920,9 @@ impl Pipelines {
                 .module(frag.raw())
                 .name(c"main"),
         ];
-        // The uber-shader is the modules as compiled, every constant at its default.
-        if k.spec != SpecKey::UBER {
-            for stage in &mut stages {
-                *stage = stage.specialization_info(&specialization);
-            }
+        // The uber-shader's key leaves every lighting constant at its default (-1).
+        for stage in &mut stages {
+            *stage = stage.specialization_info(&specialization);
         }
         let attributes = config.vertex_input.attributes(k.textured);
         let bindings = config.vertex_input.binding_descriptions();
@@ -856,7 +945,7 @@ impl Pipelines {
             .polygon_mode(vk::PolygonMode::FILL)
             .cull_mode(k.raster.cull_mode)
             .front_face(k.raster.front_face)
-            .line_width(1.0);
+            .line_width(k.raster.line_width.0);
         if k.mode == LightingMode::Flat {
             rasterization = rasterization.push_next(&mut provoking);
         }

@@ -286,10 +286,14 @@ pub enum SpecConstant {
     /// size (one pixel, GL's default); 0 for other topologies. Set from the draw's topology
     /// when the pipeline is made, not by [`SpecKey::for_state`].
     Points = 13,
+    /// `SPEC_POINT_SIZE`: a `float`, the point size a points pipeline writes (GL's
+    /// `glPointSize`, [`RasterState::point_size`](crate::draw::pipeline::RasterState::point_size));
+    /// its bits are the key's entry, set when the pipeline is made.
+    PointSize = 14,
 }
 
 /// How many specialization constants there are.
-pub const SPEC_CONSTANT_COUNT: usize = 14;
+pub const SPEC_CONSTANT_COUNT: usize = 15;
 
 impl SpecConstant {
     /// Every constant, in `constant_id` order.
@@ -308,6 +312,7 @@ impl SpecConstant {
         SpecConstant::AnyGltfFalloff,
         SpecConstant::FiniteVertices,
         SpecConstant::Points,
+        SpecConstant::PointSize,
     ];
 
     /// The `constant_id` in the GLSL.
@@ -332,6 +337,7 @@ impl SpecConstant {
             SpecConstant::AnyGltfFalloff => "SPEC_ANY_GLTF_FALLOFF",
             SpecConstant::FiniteVertices => "SPEC_FINITE_VERTICES",
             SpecConstant::Points => "SPEC_POINTS",
+            SpecConstant::PointSize => "SPEC_POINT_SIZE",
         }
     }
 }

@@ -25,7 +25,7 @@
 //!   set 2 and pass the materials from the vertex stage as flat varyings (locations 5-13), for
 //!   draws of fewer than [`crate::draw::pipeline::SMALL_DRAW_VERTICES`] vertices;
 //! - no push constants;
-//! - the specialization constants of [`layout::SpecConstant`] (`int`, constant_id 0-13, -1 =
+//! - the specialization constants of [`layout::SpecConstant`] (`int`, constant_id 0-14, -1 =
 //!   read the uniform); [`layout::SpecKey::for_state`] gives a state's values;
 //! - the `flat` variants need the last-vertex provoking convention
 //!   (`VK_EXT_provoking_vertex`), as GL's flat shading takes each triangle's last vertex;

@@ -105,6 +105,11 @@ pub struct Draw<'a> {
     /// How the mesh's indices make primitives: the mesh's own ([`MeshData::topology`]) unless
     /// [`Draw::with_topology`] says otherwise (see [`Topology`]).
     pub topology: Topology,
+    /// `glPointSize` and `glLineWidth`, in pixels (1 and 1, GL's defaults; see
+    /// [`RasterState::point_size`]).
+    pub point_size: f32,
+    /// `glLineWidth`, in pixels.
+    pub line_width: f32,
 }
 
 impl<'a> Draw<'a> {
@@ -118,7 +123,23 @@ impl<'a> Draw<'a> {
             cull_face: None,
             texture: None,
             topology: mesh.topology,
+            point_size: 1.0,
+            line_width: 1.0,
         }
+    }
+
+    /// This draw with `glPointSize(size)`.
+    #[must_use]
+    pub fn with_point_size(mut self, size: f32) -> Self {
+        self.point_size = size;
+        self
+    }
+
+    /// This draw with `glLineWidth(width)`.
+    #[must_use]
+    pub fn with_line_width(mut self, width: f32) -> Self {
+        self.line_width = width;
+        self
     }
 
     /// This draw with its mesh's indices read as `topology` (`GL_POINTS`, `GL_LINES`, …).
@@ -160,6 +181,8 @@ impl<'a> Draw<'a> {
             },
             ..RasterState::default()
         }
+        .with_point_size(self.point_size)
+        .with_line_width(self.line_width)
     }
 }
 

@@ -1361,6 +1361,8 @@ pub fn render_scene(
             cull_face: scene.cull_face(mesh),
             texture: mesh.texture.as_ref().and_then(texture_of),
             topology: gpu.topology(),
+            point_size: 1.0,
+            line_width: 1.0,
         });
     }
     Ok(renderer.render(&frame)?.into())

@@ -51,6 +51,14 @@ pub struct DeviceInfo {
     /// `provokingVertexLast` of `VK_EXT_provoking_vertex`, which GL's flat shading needs:
     /// always true, since [`Device::new`] refuses a device without it.
     pub provoking_vertex_last: bool,
+    /// `wideLines`: lines wider than one pixel (`RasterState::line_width`).
+    pub wide_lines: bool,
+    /// `largePoints`: points larger than one pixel (`RasterState::point_size`).
+    pub large_points: bool,
+    /// `lineWidthRange` and `pointSizeRange`, in pixels.
+    pub line_width_range: [f32; 2],
+    /// `pointSizeRange`, in pixels.
+    pub point_size_range: [f32; 2],
     /// Whether the validation layer is active on the instance.
     pub validation: bool,
 }
@@ -99,6 +107,10 @@ pub struct EnabledFeatures {
     /// `provokingVertexLast` of `VK_EXT_provoking_vertex` (with the extension enabled): needed
     /// for the `flat` lighting mode, whose triangles take their last vertex's color as in GL.
     pub provoking_vertex_last: bool,
+    /// `wideLines`: needed for a line width other than 1.
+    pub wide_lines: bool,
+    /// `largePoints`: needed for a point size other than 1.
+    pub large_points: bool,
 }
 
 with_fields!(EnabledFeatures {
@@ -106,6 +118,10 @@ with_fields!(EnabledFeatures {
     with_dynamic_rendering => dynamic_rendering: bool,
     /// Sets [`provoking_vertex_last`](EnabledFeatures::provoking_vertex_last).
     with_provoking_vertex_last => provoking_vertex_last: bool,
+    /// Sets [`wide_lines`](EnabledFeatures::wide_lines).
+    with_wide_lines => wide_lines: bool,
+    /// Sets [`large_points`](EnabledFeatures::large_points).
+    with_large_points => large_points: bool,
 });
 
 fn device_name(props: &vk::PhysicalDeviceProperties) -> String {
@@ -190,7 +206,7 @@ impl Device {
             ));
         }
 
-        let info = describe(
+        let mut info = describe(
             &props,
             &supported,
             timestamp_valid_bits,
@@ -198,6 +214,8 @@ impl Device {
             provoking_vertex_last,
             instance.validation_enabled(),
         );
+        // GL's glLineWidth and glPointSize, where the device has them.
+        (info.wide_lines, info.large_points) = (supported.wide_lines, supported.large_points);
 
         let priorities = [1.0f32];
         let queues = [vk::DeviceQueueCreateInfo::default()
@@ -209,7 +227,10 @@ impl Device {
             .synchronization2(true);
         let mut enable_provoking =
             vk::PhysicalDeviceProvokingVertexFeaturesEXT::default().provoking_vertex_last(true);
-        let base = vk::PhysicalDeviceFeatures::default().pipeline_statistics_query(pipeline_statistics_query);
+        let base = vk::PhysicalDeviceFeatures::default()
+            .pipeline_statistics_query(pipeline_statistics_query)
+            .wide_lines(supported.wide_lines)
+            .large_points(supported.large_points);
         let create = vk::DeviceCreateInfo::default()
             .queue_create_infos(&queues)
             .enabled_extension_names(&extension_names)
@@ -274,7 +295,24 @@ impl Device {
                     .into(),
             ));
         }
-        let info = describe(&props, &supported, 0, false, enabled.provoking_vertex_last, false);
+        for (claimed, has, name) in [
+            (
+                enabled.wide_lines,
+                supported.wide_lines,
+                "wideLines (EnabledFeatures::wide_lines says it is enabled)",
+            ),
+            (
+                enabled.large_points,
+                supported.large_points,
+                "largePoints (EnabledFeatures::large_points says it is enabled)",
+            ),
+        ] {
+            if claimed && !has {
+                return Err(Error::MissingFeature(name.into()));
+            }
+        }
+        let mut info = describe(&props, &supported, 0, false, enabled.provoking_vertex_last, false);
+        (info.wide_lines, info.large_points) = (enabled.wide_lines, enabled.large_points);
         Ok(Device::assemble(device, memory, &props, &supported, info, None))
     }
 
@@ -393,6 +431,8 @@ struct Supported {
     /// The feature bit only; the extension must be listed too.
     provoking_vertex_last: bool,
     pipeline_statistics_query: bool,
+    wide_lines: bool,
+    large_points: bool,
     driver_name: String,
     driver_info: String,
     /// Vulkan 1.1's maxMemoryAllocationSize.
@@ -421,6 +461,8 @@ impl Supported {
             instance.get_physical_device_properties2(physical, &mut props2);
         }
         let pipeline_statistics_query = features.features.pipeline_statistics_query == vk::TRUE;
+        let wide_lines = features.features.wide_lines == vk::TRUE;
+        let large_points = features.features.large_points == vk::TRUE;
         let cstr = |bytes: &[std::ffi::c_char]| {
             // SAFETY: the driver properties hold NUL-terminated strings within their arrays.
             unsafe { CStr::from_ptr(bytes.as_ptr()) }
@@ -432,6 +474,8 @@ impl Supported {
             synchronization2: v13.synchronization2 == vk::TRUE,
             provoking_vertex_last: provoking.provoking_vertex_last == vk::TRUE,
             pipeline_statistics_query,
+            wide_lines,
+            large_points,
             driver_name: cstr(&driver.driver_name),
             driver_info: cstr(&driver.driver_info),
             max_memory_allocation_size: v11.max_memory_allocation_size,
@@ -465,6 +509,10 @@ fn describe(
         timestamps_supported: timestamp_valid_bits > 0,
         pipeline_statistics_query,
         provoking_vertex_last,
+        wide_lines: false,
+        large_points: false,
+        line_width_range: props.limits.line_width_range,
+        point_size_range: props.limits.point_size_range,
         validation,
     }
 }
