@@ -130,37 +130,41 @@ pub fn from_gltf(
         CameraChoice::Auto => loaded.cameras.first(),
         CameraChoice::File(want) => Some(find_camera(&loaded, want).map_err(|m| field("--camera", m))?),
     };
-    let view = match camera {
-        Some(c) => {
-            let view = file_view(c, center, lo, hi, options.size);
-            choices.push(format!(
-                "camera: {:?} (camera {}) from the file{}",
-                shorten(&c.name),
-                c.index,
-                match options.size {
-                    Some(_) => String::new(),
-                    None => format!(
-                        ", the image {} × {} for its aspect ratio",
-                        view.size.0, view.size.1
-                    ),
-                }
-            ));
-            view
-        }
-        None => {
-            choices.push(format!(
+    let view =
+        match camera {
+            Some(c) => {
+                let view = file_view(c, center, lo, hi, options.size);
+                choices.push(format!(
+                    "camera: {:?} (camera {}) from the file{}",
+                    shorten(&c.name),
+                    c.index,
+                    match options.size {
+                        Some(_) => String::new(),
+                        None => format!(
+                            ", the image {} × {} for its aspect ratio",
+                            view.size.0, view.size.1
+                        ),
+                    }
+                ));
+                view
+            }
+            None => {
+                choices.push(format!(
                 "camera: {}framing the scene's bounds (center {}, radius {}) from the front, right and above",
-                if loaded.cameras.is_empty() && options.camera == CameraChoice::Auto {
-                    "no usable one in the file; "
-                } else {
-                    ""
+                match (loaded.cameras.is_empty(), options.camera == CameraChoice::Auto) {
+                    // Cameras left out say so in a warning of their own.
+                    (true, true) if loaded.warnings.iter().any(|w| w.contains("the camera is not used")) => {
+                        "no usable one in the file; "
+                    }
+                    (true, true) => "none in the file; ",
+                    _ => "",
                 },
                 fmt3(center),
                 radius
             ));
-            frame_view(lo, hi, options.size)
-        }
-    };
+                frame_view(lo, hi, options.size)
+            }
+        };
 
     let headlight = match (options.lights, options.gltf_lights) {
         (LightChoice::Headlight, _) => true,
