@@ -185,46 +185,36 @@ fn main() {
             std::process::exit(1);
         }
     };
-    // And a frame of 64 teapots with a material each, under one shared state, in one run.
-    let grid = gl_state(LightingMode::Vertex)
-        .map_err(|e| e.to_string())
-        .and_then(|mut gl| {
-            // The teapots are scaled down: GL_NORMALIZE keeps their normals unit length.
-            gl.enable(Cap::Normalize).map_err(|e| e.to_string())?;
-            let frame = EmbedFrame {
-                state: gl.lighting,
-                color_array: true,
-                grid: 8,
-                topology: ffvk::Topology::TriangleList,
-            };
-            render_frames(device.as_deref(), validation, SIZE, &[frame])
-        });
-    let grid = match grid {
-        Ok(mut images) => images.pop().unwrap_or_default(),
-        Err(e) => {
-            eprintln!("embed: {e}");
-            std::process::exit(1);
+    // One more frame in vertex mode: `normalize` for scaled-down teapots, `grid` and
+    // `topology` as EmbedFrame says. A failure ends the example.
+    let one = |normalize: bool, grid: u32, topology: ffvk::Topology| {
+        let rendered = gl_state(LightingMode::Vertex)
+            .map_err(|e| e.to_string())
+            .and_then(|mut gl| {
+                if normalize {
+                    gl.enable(Cap::Normalize).map_err(|e| e.to_string())?;
+                }
+                let frame = EmbedFrame {
+                    state: gl.lighting,
+                    color_array: true,
+                    grid,
+                    topology,
+                };
+                render_frames(device.as_deref(), validation, SIZE, &[frame])
+            });
+        match rendered {
+            Ok(mut images) => images.pop().unwrap_or_default(),
+            Err(e) => {
+                eprintln!("embed: {e}");
+                std::process::exit(1);
+            }
         }
     };
-    // And the teapot's indices drawn as one lit line strip (glDrawElements(GL_LINE_STRIP)).
-    let strip = gl_state(LightingMode::Vertex)
-        .map_err(|e| e.to_string())
-        .and_then(|gl| {
-            let frame = EmbedFrame {
-                state: gl.lighting,
-                color_array: true,
-                grid: 0,
-                topology: ffvk::Topology::LineStrip,
-            };
-            render_frames(device.as_deref(), validation, SIZE, &[frame])
-        });
-    let strip = match strip {
-        Ok(mut images) => images.pop().unwrap_or_default(),
-        Err(e) => {
-            eprintln!("embed: {e}");
-            std::process::exit(1);
-        }
-    };
+    // A frame of 64 teapots with a material each, under one shared state, in one run (scaled
+    // down: GL_NORMALIZE keeps their normals unit length).
+    let grid = one(true, 8, ffvk::Topology::TriangleList);
+    // The teapot's indices drawn as one lit line strip (glDrawElements(GL_LINE_STRIP)).
+    let strip = one(false, 0, ffvk::Topology::LineStrip);
     let out = std::path::Path::new("out/embed");
     let named = images
         .into_iter()

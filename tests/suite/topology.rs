@@ -281,6 +281,39 @@ fn ffvk_form(mode: GlMode) -> (Vec<u32>, Topology) {
     }
 }
 
+/// Where two images of the same scene on black agree: of the pixels either lights (not black),
+/// leaving out those `skip` names, how many both light, how many either does, the largest
+/// channel difference where both do, and how many of those differ by more than 2/255.
+struct Overlap {
+    both: u32,
+    either: u32,
+    worst: u8,
+    off: u32,
+}
+
+fn overlap(ours: &image::RgbaImage, theirs: &image::RgbaImage, skip: impl Fn(u32, u32) -> bool) -> Overlap {
+    let lit = |p: &image::Rgba<u8>| p.0[..3] != [0, 0, 0];
+    let mut o = Overlap {
+        both: 0,
+        either: 0,
+        worst: 0,
+        off: 0,
+    };
+    for ((x, y, a), b) in ours.enumerate_pixels().zip(theirs.pixels()) {
+        if skip(x, y) {
+            continue;
+        }
+        o.either += (lit(a) || lit(b)) as u32;
+        if lit(a) && lit(b) {
+            o.both += 1;
+            let d = (0..3).map(|c| a.0[c].abs_diff(b.0[c])).max().unwrap();
+            o.worst = o.worst.max(d);
+            o.off += (d > 2) as u32;
+        }
+    }
+    o
+}
+
 #[test]
 fn every_gl_mode_lights_as_mesa_gl_lights_it_smooth_and_flat_two_sided_or_not() {
     let modes = [
@@ -340,21 +373,9 @@ fn every_gl_mode_lights_as_mesa_gl_lights_it_smooth_and_flat_two_sided_or_not() 
                             (x as f32 + 0.5 - wx).abs() <= 1.5 && (y as f32 + 0.5 - wy).abs() <= 1.5
                         })
                 };
-                let lit = |p: &image::Rgba<u8>| p.0[..3] != [0, 0, 0];
-                let (mut both, mut either, mut worst) = (0, 0, 0u8);
-                for ((x, y, a), b) in ours.enumerate_pixels().zip(theirs.pixels()) {
-                    if joint(x, y) {
-                        continue;
-                    }
-                    if lit(a) || lit(b) {
-                        either += 1;
-                    }
-                    if lit(a) && lit(b) {
-                        both += 1;
-                        let d = (0..3).map(|c| a.0[c].abs_diff(b.0[c])).max().unwrap();
-                        worst = worst.max(d);
-                    }
-                }
+                let Overlap {
+                    both, either, worst, ..
+                } = overlap(&ours, &theirs, joint);
                 let tolerance = if lines && shading == LightingMode::Vertex {
                     12
                 } else {
@@ -695,17 +716,12 @@ fn a_flat_shaded_gear_of_quad_strips_and_quads_lights_as_mesa_gl_lights_it() {
     drop(frame);
     drop(meshes);
     finish(r);
-    let lit = |p: &image::Rgba<u8>| p.0[..3] != [0, 0, 0];
-    let (mut both, mut either, mut worst, mut off) = (0, 0, 0u8, 0);
-    for (a, b) in ours.pixels().zip(theirs.pixels()) {
-        either += (lit(a) || lit(b)) as u32;
-        if lit(a) && lit(b) {
-            both += 1;
-            let d = (0..3).map(|c| a.0[c].abs_diff(b.0[c])).max().unwrap();
-            worst = worst.max(d);
-            off += (d > 2) as u32;
-        }
-    }
+    let Overlap {
+        both,
+        either,
+        worst,
+        off,
+    } = overlap(&ours, &theirs, |_, _| false);
     let a = save_for_inspection(&ours, "gear_ffvk");
     let b = save_for_inspection(&theirs, "gear_gl");
     // Where two faces meet at an edge, which one a pixel on it shows is the rasterizer's
@@ -758,21 +774,15 @@ fn wide_points_and_lines_light_as_mesa_gl_lights_them_and_bad_sizes_are_refused(
                 &gl_options(),
             )
             .unwrap();
-            let lit = |p: &image::Rgba<u8>| p.0[..3] != [0, 0, 0];
-            let (mut both, mut either, mut worst) = (0, 0, 0u8);
-            for (a, b) in ours.pixels().zip(theirs.pixels()) {
-                either += (lit(a) || lit(b)) as u32;
-                if lit(a) && lit(b) {
-                    both += 1;
-                    worst = worst.max((0..3).map(|c| a.0[c].abs_diff(b.0[c])).max().unwrap());
-                }
-            }
+            let Overlap {
+                both, either, worst, ..
+            } = overlap(&ours, &theirs, |_, _| false);
             let tolerance = if mode == GlMode::Lines && shading == LightingMode::Vertex {
                 12
             } else {
                 3
             };
-            let thin = ours.pixels().filter(|p| lit(p)).count();
+            let thin = ours.pixels().filter(|p| p.0[..3] != [0, 0, 0]).count();
             let a = save_for_inspection(&ours, &format!("wide_ffvk_{what}"));
             let b = save_for_inspection(&theirs, &format!("wide_gl_{what}"));
             assert!(
