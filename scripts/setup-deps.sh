@@ -17,6 +17,9 @@ if [[ "${1:-}" == "--test" ]]; then
     libgl1-mesa-dri          # Mesa's GL drivers, llvmpipe (swrast_dri.so) among them
     libxml2-utils            # xmllint: the JUnit files checked against the JUnit schemas
     chromium                 # headless Chromium: the HTML report opened, clicked and screenshot
+    # The C API (ffvk-c): its header and C example compiled with the system C and C++ compilers.
+    libvulkan-dev            # <vulkan/vulkan.h> and libvulkan.so for the C example
+    libgl-dev                # <GL/gl.h>: the header test includes it beside ffvk.h
   )
 fi
 

@@ -828,7 +828,8 @@ impl GlState {
         Ok(())
     }
 
-    /// glMaterial on `face`.
+    /// glMaterial on `face`. Parameters that track the current color (`GL_COLOR_MATERIAL`
+    /// enabled, its face and mode naming them) keep that color.
     pub fn material(&mut self, face: Face, param: MaterialParam) -> Result<(), StateError> {
         let apply = |m: &mut Material| -> Result<(), StateError> {
             match param {
@@ -854,6 +855,10 @@ impl GlState {
         if face.includes_back() {
             apply(&mut self.lighting.back)?;
         }
+        // While COLOR_MATERIAL is on, the parameters it names track the current color (2.1,
+        // section 2.14.3), so a glMaterial of one of them leaves it at that color, as in
+        // Mesa's GL.
+        self.track_current_color();
         Ok(())
     }
 

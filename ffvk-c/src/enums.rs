@@ -1,0 +1,80 @@
+//! GL's values for the enums the C API takes and returns (the GL 2.1 specification's tables,
+//! as `<GL/gl.h>` spells them). The header defines each one guarded by `#ifndef`, so it
+//! agrees with a caller's own GL headers included before or after it.
+
+macro_rules! gl_enums {
+    ($($name:ident = $value:expr),* $(,)?) => {
+        $(#[allow(dead_code)] pub(crate) const $name: u32 = $value;)*
+        /// Every GL enum the API uses, by name, for the header's guarded definitions.
+        pub fn gl_enums() -> &'static [(&'static str, u32)] {
+            &[$((stringify!($name), $value)),*]
+        }
+    };
+}
+
+gl_enums! {
+    GL_FALSE = 0,
+    GL_TRUE = 1,
+    GL_NO_ERROR = 0,
+    GL_INVALID_ENUM = 0x0500,
+    GL_INVALID_VALUE = 0x0501,
+    GL_INVALID_OPERATION = 0x0502,
+    GL_OUT_OF_MEMORY = 0x0505,
+    GL_CURRENT_COLOR = 0x0B00,
+    GL_LIGHTING = 0x0B50,
+    GL_LIGHT_MODEL_LOCAL_VIEWER = 0x0B51,
+    GL_LIGHT_MODEL_TWO_SIDE = 0x0B52,
+    GL_LIGHT_MODEL_AMBIENT = 0x0B53,
+    GL_SHADE_MODEL = 0x0B54,
+    GL_COLOR_MATERIAL_FACE = 0x0B55,
+    GL_COLOR_MATERIAL_PARAMETER = 0x0B56,
+    GL_COLOR_MATERIAL = 0x0B57,
+    GL_NORMALIZE = 0x0BA1,
+    GL_MODELVIEW_MATRIX = 0x0BA6,
+    GL_PROJECTION_MATRIX = 0x0BA7,
+    GL_TEXTURE_MATRIX = 0x0BA8,
+    GL_BLEND = 0x0BE2,
+    GL_MAX_LIGHTS = 0x0D31,
+    GL_TEXTURE_2D = 0x0DE1,
+    GL_FRONT = 0x0404,
+    GL_BACK = 0x0405,
+    GL_FRONT_AND_BACK = 0x0408,
+    GL_ADD = 0x0104,
+    GL_AMBIENT = 0x1200,
+    GL_DIFFUSE = 0x1201,
+    GL_SPECULAR = 0x1202,
+    GL_POSITION = 0x1203,
+    GL_SPOT_DIRECTION = 0x1204,
+    GL_SPOT_EXPONENT = 0x1205,
+    GL_SPOT_CUTOFF = 0x1206,
+    GL_CONSTANT_ATTENUATION = 0x1207,
+    GL_LINEAR_ATTENUATION = 0x1208,
+    GL_QUADRATIC_ATTENUATION = 0x1209,
+    GL_EMISSION = 0x1600,
+    GL_SHININESS = 0x1601,
+    GL_AMBIENT_AND_DIFFUSE = 0x1602,
+    GL_COLOR_INDEXES = 0x1603,
+    GL_FLAT = 0x1D00,
+    GL_SMOOTH = 0x1D01,
+    GL_REPLACE = 0x1E01,
+    GL_MODULATE = 0x2100,
+    GL_DECAL = 0x2101,
+    GL_TEXTURE_ENV_MODE = 0x2200,
+    GL_TEXTURE_ENV_COLOR = 0x2201,
+    GL_TEXTURE_ENV = 0x2300,
+    GL_LIGHT0 = 0x4000,
+    GL_RESCALE_NORMAL = 0x803A,
+    GL_LIGHT_MODEL_COLOR_CONTROL = 0x81F8,
+    GL_SINGLE_COLOR = 0x81F9,
+    GL_SEPARATE_SPECULAR_COLOR = 0x81FA,
+    GL_POINTS = 0x0000,
+    GL_LINES = 0x0001,
+    GL_LINE_LOOP = 0x0002,
+    GL_LINE_STRIP = 0x0003,
+    GL_TRIANGLES = 0x0004,
+    GL_TRIANGLE_STRIP = 0x0005,
+    GL_TRIANGLE_FAN = 0x0006,
+    GL_QUADS = 0x0007,
+    GL_QUAD_STRIP = 0x0008,
+    GL_POLYGON = 0x0009,
+}

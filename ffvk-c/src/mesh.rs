@@ -1,0 +1,190 @@
+//! Host helpers: the teapot ffvk's examples draw, and GL's primitive modes that Vulkan lacks
+//! turned into index lists.
+
+use ffvk::draw::gl_primitives;
+use ffvk::mesh::MeshData;
+
+use crate::enums::*;
+use crate::result::{fail, guard, FfvkResult};
+
+/// A host mesh made by ffvk (`ffvkCreateTeapot`): arrays the caller copies into its buffers.
+pub struct FfvkMesh {
+    positions: Vec<[f32; 3]>,
+    normals: Vec<[f32; 3]>,
+    colors: Vec<[f32; 4]>,
+    indices: Vec<u32>,
+}
+
+/// A view of an `FfvkMesh`'s arrays, valid until `ffvkDestroyMesh`.
+#[repr(C)]
+pub struct FfvkMeshArrays {
+    /// How many vertices.
+    pub vertex_count: u32,
+    /// `vertex_count` object-space positions, x y z.
+    pub positions: *const f32,
+    /// `vertex_count` normals, x y z.
+    pub normals: *const f32,
+    /// `vertex_count` colors, r g b a in [0, 1].
+    pub colors: *const f32,
+    /// How many indices.
+    pub index_count: u32,
+    /// `index_count` indices: counter-clockwise triangles (`GL_TRIANGLES`).
+    pub indices: *const u32,
+}
+
+/// Newell's teapot tessellated at `level` (1 ..= 64 steps per patch side), the mesh ffvk's
+/// examples and tests draw. Errors: `FFVK_ERROR_INVALID_ARGUMENT` for another level or a null
+/// `mesh`.
+///
+/// # Safety
+///
+/// `mesh` is null or writable.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkCreateTeapot(level: u32, mesh: *mut *mut FfvkMesh) -> FfvkResult {
+    guard(|| {
+        if mesh.is_null() {
+            return fail(
+                FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                "ffvkCreateTeapot: mesh is a null pointer: expected where to write the mesh",
+            );
+        }
+        // SAFETY: checked non-null; writable by the caller's contract.
+        unsafe { *mesh = std::ptr::null_mut() };
+        let data: MeshData = match ffvk::mesh::teapot::teapot(level) {
+            Ok(d) => d,
+            Err(e) => {
+                return fail(
+                    FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                    format!("ffvkCreateTeapot: {e}"),
+                )
+            }
+        };
+        let made = FfvkMesh {
+            positions: data.vertices.iter().map(|v| v.position).collect(),
+            normals: data.vertices.iter().map(|v| v.normal).collect(),
+            colors: data.vertices.iter().map(|v| v.color).collect(),
+            indices: data.indices,
+        };
+        // SAFETY: checked non-null.
+        unsafe { *mesh = Box::into_raw(Box::new(made)) };
+        FfvkResult::FFVK_SUCCESS
+    })
+}
+
+/// The mesh's arrays. Returns `FFVK_ERROR_INVALID_ARGUMENT` for a null pointer.
+///
+/// # Safety
+///
+/// `mesh` is null or live; `arrays` is null or writable.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkGetMeshArrays(mesh: *const FfvkMesh, arrays: *mut FfvkMeshArrays) -> FfvkResult {
+    guard(|| {
+        // SAFETY: the caller's contract: null or live.
+        let (Some(m), false) = (unsafe { mesh.as_ref() }, arrays.is_null()) else {
+            return fail(
+                FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                "ffvkGetMeshArrays: mesh or arrays is a null pointer",
+            );
+        };
+        let view = FfvkMeshArrays {
+            vertex_count: m.positions.len() as u32,
+            positions: m.positions.as_ptr().cast(),
+            normals: m.normals.as_ptr().cast(),
+            colors: m.colors.as_ptr().cast(),
+            index_count: m.indices.len() as u32,
+            indices: m.indices.as_ptr(),
+        };
+        // SAFETY: checked non-null; writable by the caller's contract.
+        unsafe { arrays.write(view) };
+        FfvkResult::FFVK_SUCCESS
+    })
+}
+
+/// Frees a mesh; null is ignored.
+///
+/// # Safety
+///
+/// `mesh` is null or from `ffvkCreateTeapot`, not yet destroyed.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkDestroyMesh(mesh: *mut FfvkMesh) {
+    if !mesh.is_null() {
+        // SAFETY: the caller's contract: it came from Box::into_raw in ffvkCreateTeapot.
+        let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            drop(unsafe { Box::from_raw(mesh) })
+        }));
+    }
+}
+
+/// GL's modes that Vulkan lacks, as indices of a mode it has, keeping GL's winding and
+/// provoking vertex: `GL_QUADS`, `GL_QUAD_STRIP` and `GL_POLYGON` become `GL_TRIANGLES`,
+/// `GL_LINE_LOOP` becomes `GL_LINES`; the other modes are copied unchanged. `vertices` are
+/// the `count` vertex numbers GL would read (`first + i` for glDrawArrays, the index array for
+/// glDrawElements). Writes at most `capacity` indices to `out` (null to ask the size) and the
+/// needed count to `*written`, and the mode to draw them with to `*draw_mode`. Errors:
+/// `FFVK_ERROR_INVALID_ARGUMENT` for an unknown mode, a null `vertices` (with a count), a null
+/// `written` or `draw_mode`, or a `capacity` below the count (nothing written to `out` then).
+///
+/// # Safety
+///
+/// `vertices` points at `count` values; `out` is null or has room for `capacity`.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkPrimitiveIndices(
+    mode: u32,
+    vertices: *const u32,
+    count: u32,
+    out: *mut u32,
+    capacity: u32,
+    written: *mut u32,
+    draw_mode: *mut u32,
+) -> FfvkResult {
+    const F: &str = "ffvkPrimitiveIndices";
+    guard(|| {
+        if written.is_null() || draw_mode.is_null() || (vertices.is_null() && count > 0) {
+            return fail(
+                FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                format!("{F}: vertices, written or draw_mode is a null pointer"),
+            );
+        }
+        let input: &[u32] = if count == 0 {
+            &[]
+        } else {
+            // SAFETY: the caller's contract: count values at vertices.
+            unsafe { std::slice::from_raw_parts(vertices, count as usize) }
+        };
+        let (indices, as_mode) = match mode {
+            GL_QUADS => (gl_primitives::quads(input), GL_TRIANGLES),
+            GL_QUAD_STRIP => (gl_primitives::quad_strip(input), GL_TRIANGLES),
+            GL_POLYGON => (gl_primitives::polygon(input), GL_TRIANGLES),
+            GL_LINE_LOOP => (gl_primitives::line_loop(input), GL_LINES),
+            GL_POINTS | GL_LINES | GL_LINE_STRIP | GL_TRIANGLES | GL_TRIANGLE_STRIP | GL_TRIANGLE_FAN => {
+                (input.to_vec(), mode)
+            }
+            other => {
+                return fail(
+                    FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                    format!("{F}: mode 0x{other:04X} is not one of GL's ten primitive modes"),
+                )
+            }
+        };
+        // SAFETY: checked non-null; writable by the caller's contract.
+        unsafe {
+            written.write(indices.len() as u32);
+            draw_mode.write(as_mode);
+        }
+        if out.is_null() {
+            return FfvkResult::FFVK_SUCCESS;
+        }
+        if (capacity as usize) < indices.len() {
+            return fail(
+                FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                format!(
+                    "{F}: capacity {capacity} is too small: expected at least {}",
+                    indices.len()
+                ),
+            );
+        }
+        // SAFETY: out has room for capacity >= indices.len() values.
+        unsafe { std::ptr::copy_nonoverlapping(indices.as_ptr(), out, indices.len()) };
+        FfvkResult::FFVK_SUCCESS
+    })
+}

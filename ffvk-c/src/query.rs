@@ -1,0 +1,384 @@
+//! The queries an application makes of the lighting state: glGetLight, glGetMaterial,
+//! glGetTexEnv and glGet{Boolean,Integer,Float}v, with GL 2.1's conversions (section 6.1.2):
+//! booleans as 0 or 1, integers and enums as they are, floats rounded to the nearest integer,
+//! colors mapped by [(2^32 - 1) c - 1] / 2, and anything non-zero as `GL_TRUE`.
+
+use ffvk::gl::state::{Cap, ColorControl, ColorMaterialMode, Face, Light, Material, MAX_LIGHTS};
+use ffvk::gl::texture::TexEnvMode;
+
+use crate::enums::*;
+use crate::gl::{face, invalid_enum, light_index, with_context, FfvkContext, GlResult, LIGHT_PNAMES};
+
+/// A queried value before its conversion to the entry point's type.
+enum Answer {
+    Bool(bool),
+    /// An enum or an integer.
+    Int(i64),
+    /// Floats that convert to integers by rounding.
+    Floats(Vec<f32>),
+    /// Color components, which convert to integers by GL's linear mapping.
+    Color([f32; 4]),
+}
+
+impl Answer {
+    fn floats(&self) -> Vec<f32> {
+        match self {
+            Answer::Bool(b) => vec![*b as u8 as f32],
+            Answer::Int(i) => vec![*i as f32],
+            Answer::Floats(v) => v.clone(),
+            Answer::Color(c) => c.to_vec(),
+        }
+    }
+    fn ints(&self) -> Vec<i32> {
+        let round = |v: f32| {
+            (v as f64)
+                .round_ties_even()
+                .clamp(i32::MIN as f64, i32::MAX as f64) as i32
+        };
+        match self {
+            Answer::Bool(b) => vec![*b as i32],
+            Answer::Int(i) => vec![*i as i32],
+            Answer::Floats(v) => v.iter().map(|&v| round(v)).collect(),
+            Answer::Color(c) => c
+                .iter()
+                .map(|&c| {
+                    ((4_294_967_295.0 * c as f64 - 1.0) / 2.0)
+                        .round_ties_even()
+                        .clamp(i32::MIN as f64, i32::MAX as f64) as i32
+                })
+                .collect(),
+        }
+    }
+    fn bools(&self) -> Vec<u8> {
+        match self {
+            Answer::Bool(b) => vec![*b as u8],
+            Answer::Int(i) => vec![(*i != 0) as u8],
+            other => other.floats().iter().map(|&v| (v != 0.0) as u8).collect(),
+        }
+    }
+}
+
+pub(crate) fn is_enabled(c: &FfvkContext, cap: Cap) -> bool {
+    let l = &c.gl.lighting;
+    match cap {
+        Cap::Lighting => l.lighting,
+        Cap::Light(i) => l.lights[i].enabled,
+        Cap::ColorMaterial => l.color_material.enabled,
+        Cap::Normalize => l.normalize,
+        Cap::RescaleNormal => l.rescale_normal,
+        Cap::Texture2D => l.texture.enabled,
+        _ => false,
+    }
+}
+
+fn light_answer(f: &str, light: &Light, pname: u32) -> GlResult<Answer> {
+    Ok(match pname {
+        GL_AMBIENT => Answer::Color(light.ambient.to_array()),
+        GL_DIFFUSE => Answer::Color(light.diffuse.to_array()),
+        GL_SPECULAR => Answer::Color(light.specular.to_array()),
+        GL_POSITION => Answer::Floats(light.position.to_array().to_vec()),
+        GL_SPOT_DIRECTION => Answer::Floats(light.spot_direction.to_array().to_vec()),
+        GL_SPOT_EXPONENT => Answer::Floats(vec![light.spot_exponent]),
+        GL_SPOT_CUTOFF => Answer::Floats(vec![light.spot_cutoff]),
+        GL_CONSTANT_ATTENUATION => Answer::Floats(vec![light.constant_attenuation]),
+        GL_LINEAR_ATTENUATION => Answer::Floats(vec![light.linear_attenuation]),
+        GL_QUADRATIC_ATTENUATION => Answer::Floats(vec![light.quadratic_attenuation]),
+        _ => return Err(invalid_enum(f, "pname", pname, LIGHT_PNAMES)),
+    })
+}
+
+fn material_answer(f: &str, c: &FfvkContext, face_enum: u32, pname: u32) -> GlResult<Answer> {
+    let (material, side): (&Material, usize) = match face(f, face_enum)? {
+        Face::Front => (&c.gl.lighting.front, 0),
+        Face::Back => (&c.gl.lighting.back, 1),
+        Face::FrontAndBack => {
+            return Err(invalid_enum(
+                f,
+                "face",
+                face_enum,
+                "GL_FRONT or GL_BACK (a query names one face)",
+            ))
+        }
+    };
+    Ok(match pname {
+        GL_AMBIENT => Answer::Color(material.ambient.to_array()),
+        GL_DIFFUSE => Answer::Color(material.diffuse.to_array()),
+        GL_SPECULAR => Answer::Color(material.specular.to_array()),
+        GL_EMISSION => Answer::Color(material.emission.to_array()),
+        GL_SHININESS => Answer::Floats(vec![material.shininess]),
+        GL_COLOR_INDEXES => Answer::Floats(c.color_indexes[side].to_vec()),
+        _ => {
+            return Err(invalid_enum(
+                f,
+                "pname",
+                pname,
+                "GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_EMISSION, GL_SHININESS or GL_COLOR_INDEXES",
+            ))
+        }
+    })
+}
+
+fn tex_env_answer(f: &str, c: &FfvkContext, target: u32, pname: u32) -> GlResult<Answer> {
+    if target != GL_TEXTURE_ENV {
+        return Err(invalid_enum(f, "target", target, "GL_TEXTURE_ENV"));
+    }
+    let unit = &c.gl.lighting.texture;
+    Ok(match pname {
+        GL_TEXTURE_ENV_MODE => Answer::Int(match unit.env_mode {
+            TexEnvMode::Replace => GL_REPLACE,
+            TexEnvMode::Decal => GL_DECAL,
+            TexEnvMode::Blend => GL_BLEND,
+            TexEnvMode::Add => GL_ADD,
+            _ => GL_MODULATE,
+        } as i64),
+        GL_TEXTURE_ENV_COLOR => Answer::Color(unit.env_color.to_array()),
+        _ => {
+            return Err(invalid_enum(
+                f,
+                "pname",
+                pname,
+                "GL_TEXTURE_ENV_MODE or GL_TEXTURE_ENV_COLOR",
+            ))
+        }
+    })
+}
+
+fn face_enum(face: Face) -> u32 {
+    match face {
+        Face::Front => GL_FRONT,
+        Face::Back => GL_BACK,
+        Face::FrontAndBack => GL_FRONT_AND_BACK,
+    }
+}
+
+/// glGet's answer for the lighting state's names.
+fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
+    let l = &c.gl.lighting;
+    let cap = match pname {
+        GL_LIGHTING => Some(Cap::Lighting),
+        GL_COLOR_MATERIAL => Some(Cap::ColorMaterial),
+        GL_NORMALIZE => Some(Cap::Normalize),
+        GL_RESCALE_NORMAL => Some(Cap::RescaleNormal),
+        GL_TEXTURE_2D => Some(Cap::Texture2D),
+        p if p >= GL_LIGHT0 && p < GL_LIGHT0 + MAX_LIGHTS as u32 => light_index(f, p).ok().map(Cap::Light),
+        _ => None,
+    };
+    if let Some(cap) = cap {
+        return Ok(Answer::Bool(is_enabled(c, cap)));
+    }
+    Ok(match pname {
+        GL_LIGHT_MODEL_AMBIENT => Answer::Color(l.model.ambient.to_array()),
+        GL_LIGHT_MODEL_LOCAL_VIEWER => Answer::Bool(l.model.local_viewer),
+        GL_LIGHT_MODEL_TWO_SIDE => Answer::Bool(l.model.two_side),
+        GL_LIGHT_MODEL_COLOR_CONTROL => Answer::Int(match l.model.color_control {
+            ColorControl::SingleColor => GL_SINGLE_COLOR,
+            ColorControl::SeparateSpecularColor => GL_SEPARATE_SPECULAR_COLOR,
+        } as i64),
+        GL_SHADE_MODEL => Answer::Int(c.shade_model as i64),
+        GL_COLOR_MATERIAL_FACE => Answer::Int(face_enum(l.color_material.face) as i64),
+        GL_COLOR_MATERIAL_PARAMETER => Answer::Int(match l.color_material.mode {
+            ColorMaterialMode::Emission => GL_EMISSION,
+            ColorMaterialMode::Ambient => GL_AMBIENT,
+            ColorMaterialMode::Diffuse => GL_DIFFUSE,
+            ColorMaterialMode::Specular => GL_SPECULAR,
+            ColorMaterialMode::AmbientAndDiffuse => GL_AMBIENT_AND_DIFFUSE,
+        } as i64),
+        GL_CURRENT_COLOR => Answer::Color(l.current_color.to_array()),
+        GL_MAX_LIGHTS => Answer::Int(MAX_LIGHTS as i64),
+        GL_MODELVIEW_MATRIX => Answer::Floats(c.gl.modelview.to_cols_array().to_vec()),
+        GL_PROJECTION_MATRIX => Answer::Floats(c.projection.to_cols_array().to_vec()),
+        GL_TEXTURE_MATRIX => Answer::Floats(l.texture.matrix.to_cols_array().to_vec()),
+        _ => {
+            return Err(invalid_enum(
+                f,
+                "pname",
+                pname,
+                "a lighting state name: GL_LIGHTING, GL_LIGHTi, GL_COLOR_MATERIAL(_FACE, _PARAMETER), GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_LIGHT_MODEL_*, GL_SHADE_MODEL, GL_CURRENT_COLOR, GL_MAX_LIGHTS or GL_{MODELVIEW,PROJECTION,TEXTURE}_MATRIX",
+            ))
+        }
+    })
+}
+
+/// Writes `values` to `out`, or GL_INVALID_VALUE for a null `out`.
+///
+/// # Safety
+///
+/// `out` is null or has room for `values.len()` values.
+unsafe fn write<T: Copy>(f: &str, out: *mut T, values: &[T]) -> GlResult {
+    if out.is_null() {
+        return Err(crate::gl::GlError::null_out(f));
+    }
+    // SAFETY: the caller's contract: out has room for as many values as the name has.
+    unsafe { std::ptr::copy_nonoverlapping(values.as_ptr(), out, values.len()) };
+    Ok(())
+}
+
+fn light_query(f: &str, c: &FfvkContext, light: u32, pname: u32) -> GlResult<Answer> {
+    let index = light_index(f, light)?;
+    light_answer(f, &c.gl.lighting.lights[index], pname)
+}
+
+/// glGetLightfv: a light's parameter as stored: positions and spot directions in eye
+/// space. Errors: `GL_INVALID_ENUM` for a light past `GL_MAX_LIGHTS` or an unknown
+/// `pname`; `GL_INVALID_VALUE` for a null `params`.
+///
+/// # Safety
+///
+/// `ctx` is null or a live context used by one thread at a time; `params` is null or has room
+/// for as many values as the name has (16 for a matrix). Nothing is written when an error is
+/// set.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkGetLightfv(ctx: *mut FfvkContext, light: u32, pname: u32, params: *mut f32) {
+    let f = "ffvkGetLightfv";
+    with_context(ctx, f, |c| {
+        let answer = light_query(f, c, light, pname)?;
+        // SAFETY: the caller's contract on params.
+        unsafe { write(f, params, &answer.floats()) }
+    })
+}
+
+/// glGetLightiv: `ffvkGetLightfv` as integers (colors by GL's linear mapping, the rest
+/// rounded).
+///
+/// # Safety
+///
+/// `ctx` is null or a live context used by one thread at a time; `params` is null or has room
+/// for as many values as the name has (16 for a matrix). Nothing is written when an error is
+/// set.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkGetLightiv(ctx: *mut FfvkContext, light: u32, pname: u32, params: *mut i32) {
+    let f = "ffvkGetLightiv";
+    with_context(ctx, f, |c| {
+        let answer = light_query(f, c, light, pname)?;
+        // SAFETY: the caller's contract on params.
+        unsafe { write(f, params, &answer.ints()) }
+    })
+}
+
+/// glGetMaterialfv for `GL_FRONT` or `GL_BACK` (`GL_FRONT_AND_BACK` sets
+/// `GL_INVALID_ENUM`, as in GL). Errors: `GL_INVALID_ENUM` for another face or `pname`
+/// (`GL_AMBIENT_AND_DIFFUSE` is not a query); `GL_INVALID_VALUE` for a null `params`.
+///
+/// # Safety
+///
+/// `ctx` is null or a live context used by one thread at a time; `params` is null or has room
+/// for as many values as the name has (16 for a matrix). Nothing is written when an error is
+/// set.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkGetMaterialfv(ctx: *mut FfvkContext, face: u32, pname: u32, params: *mut f32) {
+    let f = "ffvkGetMaterialfv";
+    with_context(ctx, f, |c| {
+        let answer = material_answer(f, c, face, pname)?;
+        // SAFETY: the caller's contract on params.
+        unsafe { write(f, params, &answer.floats()) }
+    })
+}
+
+/// glGetMaterialiv: `ffvkGetMaterialfv` as integers.
+///
+/// # Safety
+///
+/// `ctx` is null or a live context used by one thread at a time; `params` is null or has room
+/// for as many values as the name has (16 for a matrix). Nothing is written when an error is
+/// set.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkGetMaterialiv(ctx: *mut FfvkContext, face: u32, pname: u32, params: *mut i32) {
+    let f = "ffvkGetMaterialiv";
+    with_context(ctx, f, |c| {
+        let answer = material_answer(f, c, face, pname)?;
+        // SAFETY: the caller's contract on params.
+        unsafe { write(f, params, &answer.ints()) }
+    })
+}
+
+/// glGetTexEnvfv on `GL_TEXTURE_ENV`: `GL_TEXTURE_ENV_MODE` or `GL_TEXTURE_ENV_COLOR`.
+/// Errors: `GL_INVALID_ENUM` for another target or `pname`.
+///
+/// # Safety
+///
+/// `ctx` is null or a live context used by one thread at a time; `params` is null or has room
+/// for as many values as the name has (16 for a matrix). Nothing is written when an error is
+/// set.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkGetTexEnvfv(ctx: *mut FfvkContext, target: u32, pname: u32, params: *mut f32) {
+    let f = "ffvkGetTexEnvfv";
+    with_context(ctx, f, |c| {
+        let answer = tex_env_answer(f, c, target, pname)?;
+        // SAFETY: the caller's contract on params.
+        unsafe { write(f, params, &answer.floats()) }
+    })
+}
+
+/// glGetTexEnviv: `ffvkGetTexEnvfv` as integers.
+///
+/// # Safety
+///
+/// `ctx` is null or a live context used by one thread at a time; `params` is null or has room
+/// for as many values as the name has (16 for a matrix). Nothing is written when an error is
+/// set.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkGetTexEnviv(ctx: *mut FfvkContext, target: u32, pname: u32, params: *mut i32) {
+    let f = "ffvkGetTexEnviv";
+    with_context(ctx, f, |c| {
+        let answer = tex_env_answer(f, c, target, pname)?;
+        // SAFETY: the caller's contract on params.
+        unsafe { write(f, params, &answer.ints()) }
+    })
+}
+
+/// glGetFloatv for the lighting state's names: `GL_LIGHTING`, `GL_LIGHTi`,
+/// `GL_COLOR_MATERIAL`, `GL_COLOR_MATERIAL_FACE`, `GL_COLOR_MATERIAL_PARAMETER`,
+/// `GL_NORMALIZE`, `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_LIGHT_MODEL_AMBIENT`,
+/// `GL_LIGHT_MODEL_LOCAL_VIEWER`, `GL_LIGHT_MODEL_TWO_SIDE`, `GL_LIGHT_MODEL_COLOR_CONTROL`,
+/// `GL_SHADE_MODEL`, `GL_CURRENT_COLOR`, `GL_MAX_LIGHTS` (16) and the modelview,
+/// projection and texture matrices. Errors: `GL_INVALID_ENUM` for any other name (a layer
+/// answers the rest of GL's state itself); `GL_INVALID_VALUE` for a null `params`.
+///
+/// # Safety
+///
+/// `ctx` is null or a live context used by one thread at a time; `params` is null or has room
+/// for as many values as the name has (16 for a matrix). Nothing is written when an error is
+/// set.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkGetFloatv(ctx: *mut FfvkContext, pname: u32, params: *mut f32) {
+    let f = "ffvkGetFloatv";
+    with_context(ctx, f, |c| {
+        let answer = get_answer(f, c, pname)?;
+        // SAFETY: the caller's contract on params.
+        unsafe { write(f, params, &answer.floats()) }
+    })
+}
+
+/// glGetIntegerv: `ffvkGetFloatv`'s names as integers.
+///
+/// # Safety
+///
+/// `ctx` is null or a live context used by one thread at a time; `params` is null or has room
+/// for as many values as the name has (16 for a matrix). Nothing is written when an error is
+/// set.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkGetIntegerv(ctx: *mut FfvkContext, pname: u32, params: *mut i32) {
+    let f = "ffvkGetIntegerv";
+    with_context(ctx, f, |c| {
+        let answer = get_answer(f, c, pname)?;
+        // SAFETY: the caller's contract on params.
+        unsafe { write(f, params, &answer.ints()) }
+    })
+}
+
+/// glGetBooleanv: `ffvkGetFloatv`'s names as `GL_TRUE` (non-zero) or `GL_FALSE`.
+///
+/// # Safety
+///
+/// `ctx` is null or a live context used by one thread at a time; `params` is null or has room
+/// for as many values as the name has (16 for a matrix). Nothing is written when an error is
+/// set.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkGetBooleanv(ctx: *mut FfvkContext, pname: u32, params: *mut u8) {
+    let f = "ffvkGetBooleanv";
+    with_context(ctx, f, |c| {
+        let answer = get_answer(f, c, pname)?;
+        // SAFETY: the caller's contract on params.
+        unsafe { write(f, params, &answer.bools()) }
+    })
+}

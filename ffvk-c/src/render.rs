@@ -1,0 +1,723 @@
+//! The renderer: ffvk's pipelines on the caller's Vulkan device, recording a context's GL state
+//! as draws into the caller's command buffer (`ffvk::Lighting` behind C).
+//!
+//! It loads Vulkan through the caller's `vkGetInstanceProcAddr` (no Vulkan library of its
+//! own), never submits, never waits, and owns only what it creates: the descriptor set
+//! layouts, the pipeline layout, the pipelines, a pipeline cache unless the caller passes one,
+//! and per frame slot host-visible memory for the state blocks and draw records. Dropping it
+//! (`ffvkDestroyRenderer`) frees those; the caller first waits until no submitted command
+//! buffer uses them.
+
+use std::sync::Arc;
+
+use ffvk::ash::{self, vk};
+use ffvk::gl::state::LightingState;
+use ffvk::glam::Mat4;
+use ffvk::vk::EnabledFeatures;
+use ffvk::{
+    Attribute, Blend, Geometry, Lighting, LightingOptions, LitDraw, RasterState, Target, TextureBinding,
+    Topology, VertexInput,
+};
+
+use crate::enums::*;
+use crate::gl::FfvkContext;
+use crate::result::{fail, from_error, guard, FfvkResult};
+use crate::vk_types::*;
+
+/// `dynamicRendering` (Vulkan 1.3): required.
+pub const FFVK_FEATURE_DYNAMIC_RENDERING: u32 = 1;
+/// `VK_EXT_provoking_vertex` with `provokingVertexLast`: needed for `GL_FLAT`.
+pub const FFVK_FEATURE_PROVOKING_VERTEX_LAST: u32 = 2;
+/// `wideLines`: needed for a line width other than 1.
+pub const FFVK_FEATURE_WIDE_LINES: u32 = 4;
+/// `largePoints`: needed for a point size other than 1.
+pub const FFVK_FEATURE_LARGE_POINTS: u32 = 8;
+
+/// Where one vertex attribute lives: a binding of the create info's `bindings`, the byte
+/// offset within one element, the format (any the shaders read as floats, e.g.
+/// `VK_FORMAT_R32G32B32_SFLOAT`, `VK_FORMAT_R8G8B8A8_UNORM`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct FfvkAttribute {
+    /// The vertex buffer binding it is read from.
+    pub binding: u32,
+    /// Byte offset within one element of that binding.
+    pub offset: u32,
+    /// The attribute's format.
+    pub format: VkFormat,
+}
+
+/// What `ffvkCreateRenderer` takes. Set `struct_size` to `sizeof(FfvkRendererCreateInfo)`:
+/// later versions add fields at the end and read only what the caller's size covers.
+#[repr(C)]
+pub struct FfvkRendererCreateInfo {
+    /// `sizeof(FfvkRendererCreateInfo)`.
+    pub struct_size: u32,
+    /// The caller's loader entry point: ffvk loads every Vulkan function through it.
+    pub get_instance_proc_addr: PFN_vkGetInstanceProcAddr,
+    /// The caller's instance, created with `apiVersion` 1.3 or later.
+    pub instance: VkInstance,
+    /// The physical device `device` was made from.
+    pub physical_device: VkPhysicalDevice,
+    /// The caller's device: ffvk creates its objects on it and never destroys it.
+    pub device: VkDevice,
+    /// `FFVK_FEATURE_*` bits: the features the caller enabled on `device` (Vulkan cannot be
+    /// asked). `FFVK_FEATURE_DYNAMIC_RENDERING` is required.
+    pub enabled_features: u32,
+    /// The color attachment's format.
+    pub color_format: VkFormat,
+    /// The depth attachment's format, or `VK_FORMAT_UNDEFINED` for none.
+    pub depth_format: VkFormat,
+    /// Samples per pixel of both attachments (`VK_SAMPLE_COUNT_1_BIT` …).
+    pub samples: VkSampleCountFlagBits,
+    /// The caller's vertex buffer bindings (per-vertex rate), in the order draws pass their
+    /// buffers.
+    pub bindings: *const VkVertexInputBindingDescription,
+    /// How many `bindings`.
+    pub binding_count: u32,
+    /// Object-space position (`glVertexPointer`).
+    pub position: FfvkAttribute,
+    /// Object-space normal (`glNormalPointer`).
+    pub normal: FfvkAttribute,
+    /// Per-vertex color (`glColorPointer`), or null: every vertex takes the context's current
+    /// color (`ffvkColor4f`).
+    pub color: *const FfvkAttribute,
+    /// Texture coordinates (s, t), or null: textured draws are then refused.
+    pub texcoord: *const FfvkAttribute,
+    /// Frame slots, at least 1: how many frames the caller records before it waits for the
+    /// oldest.
+    pub frames_in_flight: u32,
+    /// The descriptor set index of ffvk's state block (ffvk uses it and the next two).
+    pub set_index: u32,
+    /// The caller's pipeline cache, or `VK_NULL_HANDLE` for ffvk's own.
+    pub pipeline_cache: VkPipelineCache,
+}
+
+/// A draw's fixed-function raster state (GL's glCullFace/glFrontFace, depth and blend state,
+/// glPointSize, glLineWidth) in Vulkan's terms. `ffvkRasterDefaults` fills GL's initial
+/// values; a zeroed struct is not GL's defaults (depth writes off, depth compare NEVER, sizes
+/// 0, which draws refuse).
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct FfvkRaster {
+    /// `GL_CULL_FACE` with glCullFace: `VK_CULL_MODE_NONE` (GL's default) or a face.
+    pub cull_mode: VkCullModeFlags,
+    /// glFrontFace: `VK_FRONT_FACE_COUNTER_CLOCKWISE` is GL's `GL_CCW` (the default).
+    pub front_face: VkFrontFace,
+    /// `GL_DEPTH_TEST` (needs a depth format).
+    pub depth_test: u8,
+    /// glDepthMask (GL's default: true; only while the depth test is on).
+    pub depth_write: u8,
+    /// glDepthFunc (GL's default: `VK_COMPARE_OP_LESS`).
+    pub depth_compare: VkCompareOp,
+    /// `GL_BLEND`; the factors and equations below apply when it is non-zero.
+    pub blend: u8,
+    /// Source factor for RGB.
+    pub src_color: VkBlendFactor,
+    /// Destination factor for RGB.
+    pub dst_color: VkBlendFactor,
+    /// Equation for RGB.
+    pub color_op: VkBlendOp,
+    /// Source factor for alpha.
+    pub src_alpha: VkBlendFactor,
+    /// Destination factor for alpha.
+    pub dst_alpha: VkBlendFactor,
+    /// Equation for alpha.
+    pub alpha_op: VkBlendOp,
+    /// glPointSize, in pixels (1 by default; another size needs `FFVK_FEATURE_LARGE_POINTS`).
+    pub point_size: f32,
+    /// glLineWidth, in pixels (1 by default; another width needs `FFVK_FEATURE_WIDE_LINES`).
+    pub line_width: f32,
+}
+
+/// One draw: `glDrawArrays` (no index buffer) or `glDrawElementsBaseVertex`. Set
+/// `struct_size` to `sizeof(FfvkDrawInfo)`.
+#[repr(C)]
+pub struct FfvkDrawInfo {
+    /// `sizeof(FfvkDrawInfo)`.
+    pub struct_size: u32,
+    /// `GL_POINTS`, `GL_LINES`, `GL_LINE_STRIP`, `GL_TRIANGLES`, `GL_TRIANGLE_STRIP` or
+    /// `GL_TRIANGLE_FAN`; `ffvkPrimitiveIndices` turns `GL_LINE_LOOP`, `GL_QUADS`,
+    /// `GL_QUAD_STRIP` and `GL_POLYGON` into lists of these.
+    pub mode: u32,
+    /// The vertex buffers, one per binding of the create info, in its order.
+    pub vertex_buffers: *const VkBuffer,
+    /// Their byte offsets, or null for all 0.
+    pub vertex_offsets: *const VkDeviceSize,
+    /// How many `vertex_buffers`: the create info's `binding_count`.
+    pub vertex_buffer_count: u32,
+    /// The index buffer, or `VK_NULL_HANDLE` to draw `count` consecutive vertices.
+    pub index_buffer: VkBuffer,
+    /// Byte offset of index 0 in `index_buffer`.
+    pub index_offset: VkDeviceSize,
+    /// `VK_INDEX_TYPE_UINT16` or `VK_INDEX_TYPE_UINT32`.
+    pub index_type: VkIndexType,
+    /// The first index (indexed) or vertex (glDrawArrays' `first`).
+    pub first: u32,
+    /// How many indices or vertices.
+    pub count: u32,
+    /// Added to every index before its vertex is fetched (indexed only).
+    pub vertex_offset: i32,
+    /// Indexed strips and fans: the index of all ones starts a new primitive.
+    pub primitive_restart: u8,
+    /// The raster state.
+    pub raster: FfvkRaster,
+    /// The texture sampled while `GL_TEXTURE_2D` is enabled, or null.
+    pub texture: *const FfvkTexture,
+}
+
+/// A descriptor set naming the caller's image view and sampler (`ffvkCreateTexture`).
+pub struct FfvkTexture {
+    binding: TextureBinding,
+}
+
+/// One draw waiting for `ffvkEndDraws`.
+struct Pending {
+    state: usize,
+    modelview: Mat4,
+    projection: Mat4,
+    raster: RasterState,
+    buffers: Vec<(vk::Buffer, u64)>,
+    geometry: Geometry,
+    texture: *const FfvkTexture,
+}
+
+/// What `ffvkBeginDraws` opened.
+struct Recording {
+    cmd: vk::CommandBuffer,
+    slot: u32,
+    states: Vec<LightingState>,
+    draws: Vec<Pending>,
+}
+
+/// ffvk on the caller's device (`ffvkCreateRenderer`).
+pub struct FfvkRenderer {
+    // Fields drop in order: the lighting's objects before the device wrapper.
+    lighting: Lighting,
+    _device: Arc<ffvk::vk::Device>,
+    recording: Option<Recording>,
+    binding_count: u32,
+}
+
+fn invalid(message: impl Into<String>) -> FfvkResult {
+    fail(FfvkResult::FFVK_ERROR_INVALID_ARGUMENT, message)
+}
+
+fn check_size(function: &str, what: &str, given: u32, expected: usize) -> Result<(), FfvkResult> {
+    if (given as usize) < expected {
+        return Err(invalid(format!(
+            "{function}: {what}.struct_size is {given}: expected sizeof({what}) = {expected}"
+        )));
+    }
+    Ok(())
+}
+
+/// Reads `count` values at `ptr` (empty for a count of 0).
+///
+/// # Safety
+///
+/// `ptr` points at `count` values when `count` is not 0 and it is not null.
+unsafe fn slice<'a, T>(function: &str, what: &str, ptr: *const T, count: u32) -> Result<&'a [T], FfvkResult> {
+    if count == 0 {
+        return Ok(&[]);
+    }
+    if ptr.is_null() {
+        return Err(invalid(format!(
+            "{function}: {what} is null with a count of {count}"
+        )));
+    }
+    // SAFETY: the caller's contract: count values at a non-null ptr.
+    Ok(unsafe { std::slice::from_raw_parts(ptr, count as usize) })
+}
+
+fn attribute(a: &FfvkAttribute) -> Attribute {
+    Attribute::new(a.binding, a.offset, a.format)
+}
+
+/// The renderer's options and device wrapper from a create info.
+///
+/// # Safety
+///
+/// The create info's contract (`ffvkCreateRenderer`).
+unsafe fn create(info: &FfvkRendererCreateInfo) -> Result<FfvkRenderer, FfvkResult> {
+    const F: &str = "ffvkCreateRenderer";
+    check_size(
+        F,
+        "FfvkRendererCreateInfo",
+        info.struct_size,
+        std::mem::size_of::<FfvkRendererCreateInfo>(),
+    )?;
+    let Some(get_instance_proc_addr) = info.get_instance_proc_addr else {
+        return Err(invalid(format!(
+            "{F}: get_instance_proc_addr is null: expected the caller's vkGetInstanceProcAddr"
+        )));
+    };
+    for (what, null) in [
+        ("instance", info.instance == vk::Instance::null()),
+        (
+            "physical_device",
+            info.physical_device == vk::PhysicalDevice::null(),
+        ),
+        ("device", info.device == vk::Device::null()),
+    ] {
+        if null {
+            return Err(invalid(format!(
+                "{F}: {what} is VK_NULL_HANDLE: expected the caller's {what}"
+            )));
+        }
+    }
+    if info.frames_in_flight == 0 {
+        return Err(invalid(format!(
+            "{F}: frames_in_flight is 0: expected at least 1"
+        )));
+    }
+    let known = FFVK_FEATURE_DYNAMIC_RENDERING
+        | FFVK_FEATURE_PROVOKING_VERTEX_LAST
+        | FFVK_FEATURE_WIDE_LINES
+        | FFVK_FEATURE_LARGE_POINTS;
+    if info.enabled_features & !known != 0 {
+        return Err(invalid(format!(
+            "{F}: enabled_features 0x{:X} has unknown bits: expected FFVK_FEATURE_* flags (0x{known:X})",
+            info.enabled_features
+        )));
+    }
+    // SAFETY: the caller's contract: binding_count descriptions at bindings.
+    let bindings = unsafe { slice(F, "bindings", info.bindings, info.binding_count) }?.to_vec();
+    let mut vertex_input = VertexInput::new(bindings, attribute(&info.position), attribute(&info.normal));
+    // SAFETY: the caller's contract: color and texcoord are null or point at an attribute.
+    let (color, texcoord) = unsafe { (info.color.as_ref(), info.texcoord.as_ref()) };
+    vertex_input = vertex_input
+        .with_color(color.map(attribute))
+        .with_texcoord(texcoord.map(attribute));
+    let mut target = Target::new(info.color_format, info.depth_format);
+    target.samples = info.samples;
+    let options = LightingOptions::new(target, vertex_input)
+        .with_frames_in_flight(info.frames_in_flight)
+        .with_set_index(info.set_index)
+        .with_pipeline_cache(Some(info.pipeline_cache).filter(|c| *c != vk::PipelineCache::null()));
+
+    let static_fn = ash::StaticFn {
+        get_instance_proc_addr,
+    };
+    // SAFETY: the caller's contract: get_instance_proc_addr is its loader's and instance is
+    // live; ash only loads function pointers here.
+    let instance = unsafe { ash::Instance::load(&static_fn, info.instance) };
+    // SAFETY: as above, for the device of that instance.
+    let device = unsafe { ash::Device::load(instance.fp_v1_0(), info.device) };
+    let has = |bit: u32| info.enabled_features & bit != 0;
+    let features = EnabledFeatures::default()
+        .with_dynamic_rendering(has(FFVK_FEATURE_DYNAMIC_RENDERING))
+        .with_provoking_vertex_last(has(FFVK_FEATURE_PROVOKING_VERTEX_LAST))
+        .with_wide_lines(has(FFVK_FEATURE_WIDE_LINES))
+        .with_large_points(has(FFVK_FEATURE_LARGE_POINTS));
+    // SAFETY: the caller's contract: device was made from physical_device of instance with
+    // these features and outlives the renderer.
+    let ffvk_device =
+        unsafe { ffvk::vk::Device::from_caller(&instance, info.physical_device, device, features) }
+            .map_err(|e| from_error(&e))?;
+    let lighting = Lighting::new(&ffvk_device, &options).map_err(|e| from_error(&e))?;
+    Ok(FfvkRenderer {
+        lighting,
+        _device: ffvk_device,
+        recording: None,
+        binding_count: info.binding_count,
+    })
+}
+
+/// Makes a renderer on the caller's device: checks the device (Vulkan 1.3, dynamic rendering,
+/// the features `enabled_features` claims) and the vertex layout, and makes the pipeline
+/// layout; pipelines are made on the first draw that needs each (about 15 ms on lavapipe).
+/// Returns `FFVK_SUCCESS` with `*renderer` set, or an error code with `*renderer` null:
+/// `FFVK_ERROR_INVALID_ARGUMENT` (a null pointer or handle, a wrong `struct_size`, 0 frames,
+/// unknown feature bits, a bad vertex layout), `FFVK_ERROR_MISSING_FEATURE`,
+/// `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN`. Records nothing.
+///
+/// # Safety
+///
+/// `info` and `renderer` are null or valid; the handles in `info` are live, `device` was
+/// created from `physical_device` of `instance` with the features `enabled_features` names,
+/// and all of them outlive the renderer.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkCreateRenderer(
+    info: *const FfvkRendererCreateInfo,
+    renderer: *mut *mut FfvkRenderer,
+) -> FfvkResult {
+    guard(|| {
+        if renderer.is_null() {
+            return invalid(
+                "ffvkCreateRenderer: renderer is a null pointer: expected where to write the renderer",
+            );
+        }
+        // SAFETY: checked non-null; the caller's contract makes it writable.
+        unsafe { *renderer = std::ptr::null_mut() };
+        // SAFETY: the caller's contract: info is null or valid.
+        let Some(info) = (unsafe { info.as_ref() }) else {
+            return invalid("ffvkCreateRenderer: info is a null pointer: expected an FfvkRendererCreateInfo");
+        };
+        // SAFETY: the caller's contract on the create info.
+        match unsafe { create(info) } {
+            Ok(r) => {
+                // SAFETY: checked non-null above.
+                unsafe { *renderer = Box::into_raw(Box::new(r)) };
+                FfvkResult::FFVK_SUCCESS
+            }
+            Err(code) => code,
+        }
+    })
+}
+
+/// Frees the renderer and everything it created; null is ignored. Records nothing. The
+/// caller first makes sure no submitted command buffer still uses it (waits on its fences).
+///
+/// # Safety
+///
+/// `renderer` is null or a renderer from `ffvkCreateRenderer` not yet destroyed, whose
+/// device is still alive.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkDestroyRenderer(renderer: *mut FfvkRenderer) {
+    if !renderer.is_null() {
+        // SAFETY: the caller's contract: it came from Box::into_raw in ffvkCreateRenderer.
+        let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            drop(unsafe { Box::from_raw(renderer) })
+        }));
+    }
+}
+
+/// Runs `f` on a renderer behind the panic barrier.
+fn with_renderer(
+    renderer: *mut FfvkRenderer,
+    function: &str,
+    f: impl FnOnce(&mut FfvkRenderer) -> FfvkResult,
+) -> FfvkResult {
+    guard(|| {
+        // SAFETY: the caller's contract: null or a live renderer used by one thread at a time.
+        match unsafe { renderer.as_mut() } {
+            Some(r) => f(r),
+            None => invalid(format!("{function}: renderer is a null pointer")),
+        }
+    })
+}
+
+/// Starts a frame slot (0 .. frames_in_flight - 1): its memory will be rewritten by the draws
+/// recorded next. Call it once the fence of the submission that last used this slot has
+/// signalled. Records nothing.
+///
+/// # Safety
+///
+/// `renderer` is null or live and used by one thread at a time.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkBeginFrame(renderer: *mut FfvkRenderer, slot: u32) -> FfvkResult {
+    with_renderer(renderer, "ffvkBeginFrame", |r| {
+        if r.recording.is_some() {
+            return invalid("ffvkBeginFrame: called between ffvkBeginDraws and ffvkEndDraws");
+        }
+        match r.lighting.begin_frame(slot) {
+            Ok(()) => FfvkResult::FFVK_SUCCESS,
+            Err(e) => from_error(&e),
+        }
+    })
+}
+
+/// Opens a recording scope on `cmd` for frame slot `slot` (begun with `ffvkBeginFrame`).
+/// `cmd` is in the recording state inside the caller's `vkCmdBeginRendering` on attachments of
+/// the create info's formats, with viewport and scissor set (both dynamic state). Between this
+/// call and `ffvkEndDraws` the caller records nothing of its own into `cmd`. Records nothing
+/// itself.
+///
+/// # Safety
+///
+/// `renderer` is null or live and used by one thread at a time; `cmd` is a command buffer of
+/// the renderer's device.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkBeginDraws(
+    renderer: *mut FfvkRenderer,
+    cmd: VkCommandBuffer,
+    slot: u32,
+) -> FfvkResult {
+    with_renderer(renderer, "ffvkBeginDraws", |r| {
+        if r.recording.is_some() {
+            return invalid("ffvkBeginDraws: a recording scope is already open: expected ffvkEndDraws first");
+        }
+        if cmd == vk::CommandBuffer::null() {
+            return invalid("ffvkBeginDraws: cmd is VK_NULL_HANDLE: expected the caller's command buffer");
+        }
+        if slot >= r.lighting.frames_in_flight() {
+            return invalid(format!(
+                "ffvkBeginDraws: slot {slot} is out of range: expected 0..{} (frames_in_flight)",
+                r.lighting.frames_in_flight()
+            ));
+        }
+        r.recording = Some(Recording {
+            cmd,
+            slot,
+            states: Vec::new(),
+            draws: Vec::new(),
+        });
+        FfvkResult::FFVK_SUCCESS
+    })
+}
+
+fn topology(mode: u32) -> Result<Topology, FfvkResult> {
+    Ok(match mode {
+        GL_POINTS => Topology::PointList,
+        GL_LINES => Topology::LineList,
+        GL_LINE_STRIP => Topology::LineStrip,
+        GL_TRIANGLES => Topology::TriangleList,
+        GL_TRIANGLE_STRIP => Topology::TriangleStrip,
+        GL_TRIANGLE_FAN => Topology::TriangleFan,
+        GL_LINE_LOOP | GL_QUADS | GL_QUAD_STRIP | GL_POLYGON => {
+            return Err(invalid(format!(
+                "ffvkDraw: mode 0x{mode:04X} is drawn as a list: turn its vertices into indices with ffvkPrimitiveIndices and draw those"
+            )))
+        }
+        other => {
+            return Err(invalid(format!(
+                "ffvkDraw: mode 0x{other:04X} is not a GL primitive: expected GL_POINTS, GL_LINES, GL_LINE_STRIP, GL_TRIANGLES, GL_TRIANGLE_STRIP or GL_TRIANGLE_FAN"
+            )))
+        }
+    })
+}
+
+fn raster(r: &FfvkRaster) -> RasterState {
+    let mut state = RasterState::default()
+        .with_depth_test(r.depth_test != 0)
+        .with_point_size(r.point_size)
+        .with_line_width(r.line_width);
+    state.cull_mode = r.cull_mode;
+    state.front_face = r.front_face;
+    state.depth_write = r.depth_write != 0;
+    state.depth_compare = r.depth_compare;
+    state.blend = (r.blend != 0).then(|| {
+        let mut b = Blend::new(r.src_color, r.dst_color, r.color_op);
+        b.src_alpha = r.src_alpha;
+        b.dst_alpha = r.dst_alpha;
+        b.alpha_op = r.alpha_op;
+        b
+    });
+    state
+}
+
+/// Fills `raster` with GL's initial raster state: no culling, `GL_CCW` front faces, depth
+/// test off with writes on and `GL_LESS`, blending off (factors ONE, ZERO, ADD), point size
+/// and line width 1.
+///
+/// # Safety
+///
+/// `raster` is null (ignored) or writable.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkRasterDefaults(raster: *mut FfvkRaster) {
+    if raster.is_null() {
+        return;
+    }
+    let defaults = FfvkRaster {
+        cull_mode: vk::CullModeFlags::NONE,
+        front_face: vk::FrontFace::COUNTER_CLOCKWISE,
+        depth_test: 0,
+        depth_write: 1,
+        depth_compare: vk::CompareOp::LESS,
+        blend: 0,
+        src_color: vk::BlendFactor::ONE,
+        dst_color: vk::BlendFactor::ZERO,
+        color_op: vk::BlendOp::ADD,
+        src_alpha: vk::BlendFactor::ONE,
+        dst_alpha: vk::BlendFactor::ZERO,
+        alpha_op: vk::BlendOp::ADD,
+        point_size: 1.0,
+        line_width: 1.0,
+    };
+    // SAFETY: checked non-null; the caller's contract makes it writable.
+    unsafe { raster.write(defaults) };
+}
+
+/// Adds a draw to the open scope: the context's state now (lights, materials, switches, its
+/// modelview and projection) is captured, so the caller may change the context right after.
+/// The draw is checked now and recorded by `ffvkEndDraws`. Errors: `FFVK_ERROR_INVALID_ARGUMENT`
+/// (no open scope, a null pointer, a wrong `struct_size`, a mode ffvk does not draw directly,
+/// a buffer count other than the layout's bindings), nothing added.
+///
+/// # Safety
+///
+/// `renderer` and `ctx` are null or live and used by this thread only; `draw` is null or
+/// valid, its buffers are the caller's live buffers of the renderer's device, and its texture
+/// is null or live until `ffvkEndDraws` returns.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkDraw(
+    renderer: *mut FfvkRenderer,
+    ctx: *const FfvkContext,
+    draw: *const FfvkDrawInfo,
+) -> FfvkResult {
+    const F: &str = "ffvkDraw";
+    with_renderer(renderer, F, |r| {
+        let binding_count = r.binding_count;
+        let Some(recording) = r.recording.as_mut() else {
+            return invalid("ffvkDraw: no recording scope is open: expected ffvkBeginDraws first");
+        };
+        // SAFETY: the caller's contract: null or a live context.
+        let Some(ctx) = (unsafe { ctx.as_ref() }) else {
+            return invalid("ffvkDraw: ctx is a null pointer: expected the context whose state is drawn");
+        };
+        // SAFETY: the caller's contract: null or a valid draw info.
+        let Some(draw) = (unsafe { draw.as_ref() }) else {
+            return invalid("ffvkDraw: draw is a null pointer: expected an FfvkDrawInfo");
+        };
+        let result = (|| {
+            check_size(
+                F,
+                "FfvkDrawInfo",
+                draw.struct_size,
+                std::mem::size_of::<FfvkDrawInfo>(),
+            )?;
+            let topology = topology(draw.mode)?;
+            if draw.vertex_buffer_count != binding_count {
+                return Err(invalid(format!(
+                    "{F}: vertex_buffer_count is {}: expected {binding_count}, one buffer per binding of the renderer's layout",
+                    draw.vertex_buffer_count
+                )));
+            }
+            // SAFETY: the caller's contract: vertex_buffer_count buffers (and offsets unless null).
+            let buffers =
+                unsafe { slice(F, "vertex_buffers", draw.vertex_buffers, draw.vertex_buffer_count) }?;
+            let offsets = if draw.vertex_offsets.is_null() {
+                vec![0; buffers.len()]
+            } else {
+                // SAFETY: as above.
+                unsafe { slice(F, "vertex_offsets", draw.vertex_offsets, draw.vertex_buffer_count) }?.to_vec()
+            };
+            let geometry = if draw.index_buffer == vk::Buffer::null() {
+                Geometry::vertices(draw.count).with_first(draw.first)
+            } else {
+                if draw.index_type != vk::IndexType::UINT16 && draw.index_type != vk::IndexType::UINT32 {
+                    return Err(invalid(format!(
+                        "{F}: index_type {} is not accepted: expected VK_INDEX_TYPE_UINT16 or VK_INDEX_TYPE_UINT32",
+                        draw.index_type.as_raw()
+                    )));
+                }
+                Geometry::indexed(draw.index_buffer, draw.index_type, draw.count)
+                    .with_first(draw.first)
+                    .with_buffer_offset(draw.index_offset)
+                    .with_vertex_offset(draw.vertex_offset)
+                    .with_primitive_restart(draw.primitive_restart != 0)
+            }
+            .with_topology(topology);
+            let state = match recording.states.last() {
+                Some(last) if *last == ctx.gl.lighting => recording.states.len() - 1,
+                _ => {
+                    recording.states.push(ctx.gl.lighting);
+                    recording.states.len() - 1
+                }
+            };
+            recording.draws.push(Pending {
+                state,
+                modelview: ctx.gl.modelview,
+                projection: ctx.projection,
+                raster: raster(&draw.raster),
+                buffers: buffers.iter().copied().zip(offsets).collect(),
+                geometry,
+                texture: draw.texture,
+            });
+            Ok(())
+        })();
+        match result {
+            Ok(()) => FfvkResult::FFVK_SUCCESS,
+            Err(code) => code,
+        }
+    })
+}
+
+/// Closes the scope: records every draw added since `ffvkBeginDraws` into its command buffer
+/// as one run (binding only what changes between draws; consecutive draws of one geometry
+/// become instances). Records: bind pipeline, bind ffvk's descriptor sets at their dynamic
+/// offsets, bind the caller's vertex and index buffers and ffvk's record buffer, draw. They
+/// stay bound afterwards. Errors: `FFVK_ERROR_INVALID_ARGUMENT` (no scope open, a draw that
+/// cannot be drawn with this layout), `FFVK_ERROR_STATE` (a context state that cannot be
+/// drawn), `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN`; the scope is closed either way,
+/// and after an error `cmd` may hold part of the run: the caller resets it.
+///
+/// # Safety
+///
+/// `renderer` is null or live and used by one thread at a time; the scope's command buffer is
+/// recording as `ffvkBeginDraws` requires; the draws' buffers and textures are live and stay
+/// so until the command buffer has executed.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkEndDraws(renderer: *mut FfvkRenderer) -> FfvkResult {
+    with_renderer(renderer, "ffvkEndDraws", |r| {
+        let Some(recording) = r.recording.take() else {
+            return invalid("ffvkEndDraws: no recording scope is open: expected ffvkBeginDraws first");
+        };
+        let mut draws = Vec::with_capacity(recording.draws.len());
+        for d in &recording.draws {
+            // SAFETY: the caller's contract: the texture is null or live until this returns.
+            let texture = unsafe { d.texture.as_ref() }.map(|t| &t.binding);
+            draws.push(
+                LitDraw::new(
+                    &recording.states[d.state],
+                    d.modelview,
+                    d.projection,
+                    &d.buffers,
+                    d.geometry,
+                )
+                .with_raster(d.raster)
+                .with_texture(texture),
+            );
+        }
+        // SAFETY: the caller's contract: cmd records inside a rendering pass of the target's
+        // formats with viewport and scissor set; the slot was begun; the buffers live on.
+        match unsafe { r.lighting.draw_run(recording.cmd, recording.slot, &draws) } {
+            Ok(()) => FfvkResult::FFVK_SUCCESS,
+            Err(e) => from_error(&e),
+        }
+    })
+}
+
+/// Makes a texture binding naming the caller's image view (2D, color, sampled as floats, in
+/// `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` whenever a draw that uses it executes) and
+/// sampler. ffvk owns the descriptor set; the view and sampler stay the caller's. Records
+/// nothing.
+///
+/// # Safety
+///
+/// `renderer` is null or live; `view` and `sampler` are live objects of its device and outlive
+/// every command buffer that draws with the texture; `texture` is null or writable.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkCreateTexture(
+    renderer: *mut FfvkRenderer,
+    view: VkImageView,
+    sampler: VkSampler,
+    texture: *mut *mut FfvkTexture,
+) -> FfvkResult {
+    with_renderer(renderer, "ffvkCreateTexture", |r| {
+        if texture.is_null() {
+            return invalid(
+                "ffvkCreateTexture: texture is a null pointer: expected where to write the texture",
+            );
+        }
+        if view == vk::ImageView::null() || sampler == vk::Sampler::null() {
+            return invalid("ffvkCreateTexture: view or sampler is VK_NULL_HANDLE: expected the caller's image view and sampler");
+        }
+        // SAFETY: the caller's contract on view and sampler.
+        match unsafe { r.lighting.bind_texture(view, sampler) } {
+            Ok(binding) => {
+                // SAFETY: checked non-null.
+                unsafe { *texture = Box::into_raw(Box::new(FfvkTexture { binding })) };
+                FfvkResult::FFVK_SUCCESS
+            }
+            Err(e) => from_error(&e),
+        }
+    })
+}
+
+/// Frees a texture binding; null is ignored. The caller first makes sure no submitted command
+/// buffer still uses it.
+///
+/// # Safety
+///
+/// `texture` is null or from `ffvkCreateTexture`, not yet destroyed.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkDestroyTexture(texture: *mut FfvkTexture) {
+    if !texture.is_null() {
+        // SAFETY: the caller's contract: it came from Box::into_raw in ffvkCreateTexture.
+        let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            drop(unsafe { Box::from_raw(texture) })
+        }));
+    }
+}
