@@ -490,10 +490,8 @@ pub extern "C" fn ffvkCreateContext() -> *mut FfvkContext {
 /// thread uses it.
 #[no_mangle]
 pub unsafe extern "C" fn ffvkDestroyContext(ctx: *mut FfvkContext) {
-    if !ctx.is_null() {
-        // SAFETY: the caller's contract: ctx came from Box::into_raw in ffvkCreateContext.
-        let _ = catch_unwind(AssertUnwindSafe(|| drop(unsafe { Box::from_raw(ctx) })));
-    }
+    // SAFETY: the caller's contract: made by this API, destroyed once.
+    unsafe { crate::result::free(ctx) }
 }
 
 /// glGetError: the first error recorded since the last call (GL's first error sticks; later
@@ -577,8 +575,8 @@ fn light_entry<'a>(
 #[no_mangle]
 pub unsafe extern "C" fn ffvkLightfv(ctx: *mut FfvkContext, light: u32, pname: u32, params: *const f32) {
     let f = "ffvkLightfv";
-    // SAFETY: the caller's contract on params.
     light_entry(ctx, f, (light, pname, false), |n| {
+        // SAFETY: the caller\'s contract on params.
         unsafe { read(f, params, n) }.map(Values::F)
     })
 }
@@ -592,8 +590,8 @@ pub unsafe extern "C" fn ffvkLightfv(ctx: *mut FfvkContext, light: u32, pname: u
 #[no_mangle]
 pub unsafe extern "C" fn ffvkLightiv(ctx: *mut FfvkContext, light: u32, pname: u32, params: *const i32) {
     let f = "ffvkLightiv";
-    // SAFETY: the caller's contract on params.
     light_entry(ctx, f, (light, pname, false), |n| {
+        // SAFETY: the caller\'s contract on params.
         unsafe { read(f, params, n) }.map(Values::I)
     })
 }
@@ -652,8 +650,8 @@ fn material_entry<'a>(
 #[no_mangle]
 pub unsafe extern "C" fn ffvkMaterialfv(ctx: *mut FfvkContext, face: u32, pname: u32, params: *const f32) {
     let f = "ffvkMaterialfv";
-    // SAFETY: the caller's contract on params.
     material_entry(ctx, f, (face, pname, false), |n| {
+        // SAFETY: the caller\'s contract on params.
         unsafe { read(f, params, n) }.map(Values::F)
     })
 }
@@ -666,8 +664,8 @@ pub unsafe extern "C" fn ffvkMaterialfv(ctx: *mut FfvkContext, face: u32, pname:
 #[no_mangle]
 pub unsafe extern "C" fn ffvkMaterialiv(ctx: *mut FfvkContext, face: u32, pname: u32, params: *const i32) {
     let f = "ffvkMaterialiv";
-    // SAFETY: the caller's contract on params.
     material_entry(ctx, f, (face, pname, false), |n| {
+        // SAFETY: the caller\'s contract on params.
         unsafe { read(f, params, n) }.map(Values::I)
     })
 }
@@ -724,8 +722,8 @@ fn light_model_entry<'a>(
 #[no_mangle]
 pub unsafe extern "C" fn ffvkLightModelfv(ctx: *mut FfvkContext, pname: u32, params: *const f32) {
     let f = "ffvkLightModelfv";
-    // SAFETY: the caller's contract on params.
     light_model_entry(ctx, f, (pname, false), |n| {
+        // SAFETY: the caller\'s contract on params.
         unsafe { read(f, params, n) }.map(Values::F)
     })
 }
@@ -738,8 +736,8 @@ pub unsafe extern "C" fn ffvkLightModelfv(ctx: *mut FfvkContext, pname: u32, par
 #[no_mangle]
 pub unsafe extern "C" fn ffvkLightModeliv(ctx: *mut FfvkContext, pname: u32, params: *const i32) {
     let f = "ffvkLightModeliv";
-    // SAFETY: the caller's contract on params.
     light_model_entry(ctx, f, (pname, false), |n| {
+        // SAFETY: the caller\'s contract on params.
         unsafe { read(f, params, n) }.map(Values::I)
     })
 }
@@ -792,8 +790,8 @@ fn tex_env_entry<'a>(
 #[no_mangle]
 pub unsafe extern "C" fn ffvkTexEnvfv(ctx: *mut FfvkContext, target: u32, pname: u32, params: *const f32) {
     let f = "ffvkTexEnvfv";
-    // SAFETY: the caller's contract on params.
     tex_env_entry(ctx, f, (target, pname, false), |n| {
+        // SAFETY: the caller\'s contract on params.
         unsafe { read(f, params, n) }.map(Values::F)
     })
 }
@@ -806,8 +804,8 @@ pub unsafe extern "C" fn ffvkTexEnvfv(ctx: *mut FfvkContext, target: u32, pname:
 #[no_mangle]
 pub unsafe extern "C" fn ffvkTexEnviv(ctx: *mut FfvkContext, target: u32, pname: u32, params: *const i32) {
     let f = "ffvkTexEnviv";
-    // SAFETY: the caller's contract on params.
     tex_env_entry(ctx, f, (target, pname, false), |n| {
+        // SAFETY: the caller\'s contract on params.
         unsafe { read(f, params, n) }.map(Values::I)
     })
 }

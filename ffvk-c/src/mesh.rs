@@ -107,12 +107,8 @@ pub unsafe extern "C" fn ffvkGetMeshArrays(mesh: *const FfvkMesh, arrays: *mut F
 /// `mesh` is null or from `ffvkCreateTeapot`, not yet destroyed.
 #[no_mangle]
 pub unsafe extern "C" fn ffvkDestroyMesh(mesh: *mut FfvkMesh) {
-    if !mesh.is_null() {
-        // SAFETY: the caller's contract: it came from Box::into_raw in ffvkCreateTeapot.
-        let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-            drop(unsafe { Box::from_raw(mesh) })
-        }));
-    }
+    // SAFETY: the caller's contract: made by this API, destroyed once.
+    unsafe { crate::result::free(mesh) }
 }
 
 /// GL's modes that Vulkan lacks, as indices of a mode it has, keeping GL's winding and

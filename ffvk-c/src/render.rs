@@ -375,12 +375,8 @@ pub unsafe extern "C" fn ffvkCreateRenderer(
 /// device is still alive.
 #[no_mangle]
 pub unsafe extern "C" fn ffvkDestroyRenderer(renderer: *mut FfvkRenderer) {
-    if !renderer.is_null() {
-        // SAFETY: the caller's contract: it came from Box::into_raw in ffvkCreateRenderer.
-        let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-            drop(unsafe { Box::from_raw(renderer) })
-        }));
-    }
+    // SAFETY: the caller's contract: made by this API, destroyed once.
+    unsafe { crate::result::free(renderer) }
 }
 
 /// Runs `f` on a renderer behind the panic barrier.
@@ -714,10 +710,6 @@ pub unsafe extern "C" fn ffvkCreateTexture(
 /// `texture` is null or from `ffvkCreateTexture`, not yet destroyed.
 #[no_mangle]
 pub unsafe extern "C" fn ffvkDestroyTexture(texture: *mut FfvkTexture) {
-    if !texture.is_null() {
-        // SAFETY: the caller's contract: it came from Box::into_raw in ffvkCreateTexture.
-        let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-            drop(unsafe { Box::from_raw(texture) })
-        }));
-    }
+    // SAFETY: the caller's contract: made by this API, destroyed once.
+    unsafe { crate::result::free(texture) }
 }

@@ -74,6 +74,20 @@ pub(crate) fn guard(f: impl FnOnce() -> FfvkResult) -> FfvkResult {
     }
 }
 
+/// Frees an object the API handed out (null is ignored); a panic while dropping it is caught.
+///
+/// # Safety
+///
+/// `ptr` is null or came from `Box::into_raw` and is not used again.
+pub(crate) unsafe fn free<T>(ptr: *mut T) {
+    if ptr.is_null() {
+        return;
+    }
+    // SAFETY: the caller's contract: a box this API made, freed once.
+    let boxed = unsafe { Box::from_raw(ptr) };
+    let _ = catch_unwind(AssertUnwindSafe(move || drop(boxed)));
+}
+
 /// A caught panic's message.
 pub(crate) fn panic_text(payload: &Box<dyn std::any::Any + Send>) -> String {
     payload

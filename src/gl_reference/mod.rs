@@ -48,6 +48,13 @@ use ffvk::mesh::MeshData;
 
 pub use error::{DrawError, GlError, NoDriver};
 
+/// The generated GL 2.1 compatibility entry points and enums, for tests that compare GL's
+/// state machine itself (errors, queries) with ffvk's ([`with_raw_gl`]).
+pub mod raw {
+    pub use super::bindings::types;
+    pub use super::bindings::*;
+}
+
 /// One frame: a cleared framebuffer and the draws, in order.
 pub struct GlScene<'a> {
     pub width: u32,
@@ -222,6 +229,14 @@ pub fn gl_info_with(options: &GlOptions) -> Result<GlInfo> {
     Ok(egl::with_context(options, 1, 1, |gl, context| {
         draw::info(gl, context)
     })?)
+}
+
+/// Runs `f` with a fresh compatibility context of the default device current on this thread
+/// (a 1x1 framebuffer bound) and its entry points: for comparing GL's state machine, its
+/// errors and queries, with ffvk's. The context is freed when `f` returns.
+pub fn with_raw_gl<T>(f: impl FnOnce(&raw::Gl) -> T) -> Result<T> {
+    let _guard = lock();
+    Ok(egl::with_context(&GlOptions::default(), 1, 1, |gl, _| Ok(f(gl)))?)
 }
 
 /// Renders `scene` with the GL driver's fixed-function OpenGL and returns the color buffer,
