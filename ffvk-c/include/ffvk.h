@@ -165,6 +165,27 @@
 #ifndef GL_LIGHT0
 #define GL_LIGHT0 0x4000
 #endif
+#ifndef GL_LIGHT1
+#define GL_LIGHT1 0x4001
+#endif
+#ifndef GL_LIGHT2
+#define GL_LIGHT2 0x4002
+#endif
+#ifndef GL_LIGHT3
+#define GL_LIGHT3 0x4003
+#endif
+#ifndef GL_LIGHT4
+#define GL_LIGHT4 0x4004
+#endif
+#ifndef GL_LIGHT5
+#define GL_LIGHT5 0x4005
+#endif
+#ifndef GL_LIGHT6
+#define GL_LIGHT6 0x4006
+#endif
+#ifndef GL_LIGHT7
+#define GL_LIGHT7 0x4007
+#endif
 #ifndef GL_RESCALE_NORMAL
 #define GL_RESCALE_NORMAL 0x803A
 #endif
@@ -367,7 +388,12 @@ typedef struct FfvkRendererCreateInfo {
   VkDevice device;
   /*
    `FFVK_FEATURE_*` bits: the features the caller enabled on `device` (Vulkan cannot be
-   asked). `FFVK_FEATURE_DYNAMIC_RENDERING` is required.
+   asked). `FFVK_FEATURE_DYNAMIC_RENDERING` is required: `VkPhysicalDeviceVulkan13Features::
+   dynamicRendering`. `FFVK_FEATURE_PROVOKING_VERTEX_LAST` is the extension
+   `VK_EXT_provoking_vertex` enabled with `VkPhysicalDeviceProvokingVertexFeaturesEXT::
+   provokingVertexLast`; without it `GL_FLAT` draws are refused. `FFVK_FEATURE_WIDE_LINES`
+   and `FFVK_FEATURE_LARGE_POINTS` are `VkPhysicalDeviceFeatures::wideLines` and
+   `largePoints`.
    */
   uint32_t enabled_features;
   /*
@@ -1089,7 +1115,8 @@ void ffvkDestroyRenderer(struct FfvkRenderer *renderer);
 enum FfvkResult ffvkBeginFrame(struct FfvkRenderer *renderer, uint32_t slot);
 
 /*
- Opens a recording scope on `cmd` for frame slot `slot` (begun with `ffvkBeginFrame`).
+ Opens a recording scope on `cmd` for frame slot `slot`, which `ffvkBeginFrame` has begun
+ (several scopes may follow one `ffvkBeginFrame`; their draws share the slot's memory).
  `cmd` is in the recording state inside the caller's `vkCmdBeginRendering` on attachments of
  the create info's formats, with viewport and scissor set (both dynamic state). Between this
  call and `ffvkEndDraws` the caller records nothing of its own into `cmd`. Records nothing

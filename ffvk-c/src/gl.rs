@@ -97,11 +97,14 @@ impl FfvkContext {
         }
     }
 
+    /// GL's rule: the first error since the last `ffvkGetError` is kept, later ones are
+    /// dropped. The thread's message follows the kept error, so that `ffvkResultMessage`
+    /// describes what `ffvkGetError` will return.
     fn record(&mut self, e: GlError) {
         if self.error == GL_NO_ERROR {
             self.error = e.code;
+            fail(FfvkResult::FFVK_SUCCESS, e.message);
         }
-        fail(FfvkResult::FFVK_SUCCESS, e.message);
     }
 
     /// glGetError: the flag, then cleared.

@@ -62,7 +62,12 @@ pub struct FfvkRendererCreateInfo {
     /// The caller's device: ffvk creates its objects on it and never destroys it.
     pub device: VkDevice,
     /// `FFVK_FEATURE_*` bits: the features the caller enabled on `device` (Vulkan cannot be
-    /// asked). `FFVK_FEATURE_DYNAMIC_RENDERING` is required.
+    /// asked). `FFVK_FEATURE_DYNAMIC_RENDERING` is required: `VkPhysicalDeviceVulkan13Features::
+    /// dynamicRendering`. `FFVK_FEATURE_PROVOKING_VERTEX_LAST` is the extension
+    /// `VK_EXT_provoking_vertex` enabled with `VkPhysicalDeviceProvokingVertexFeaturesEXT::
+    /// provokingVertexLast`; without it `GL_FLAT` draws are refused. `FFVK_FEATURE_WIDE_LINES`
+    /// and `FFVK_FEATURE_LARGE_POINTS` are `VkPhysicalDeviceFeatures::wideLines` and
+    /// `largePoints`.
     pub enabled_features: u32,
     /// The color attachment's format.
     pub color_format: VkFormat,
@@ -197,6 +202,8 @@ pub struct FfvkRenderer {
     _device: Arc<ffvk::vk::Device>,
     recording: Option<Recording>,
     binding_count: u32,
+    /// Which frame slots `ffvkBeginFrame` has begun (a scope may only open on one of them).
+    begun: Vec<bool>,
 }
 
 fn invalid(message: impl Into<String>) -> FfvkResult {
@@ -321,6 +328,7 @@ unsafe fn create(info: &FfvkRendererCreateInfo) -> Result<FfvkRenderer, FfvkResu
         _device: ffvk_device,
         recording: None,
         binding_count: info.binding_count,
+        begun: vec![false; info.frames_in_flight as usize],
     })
 }
 
@@ -408,13 +416,17 @@ pub unsafe extern "C" fn ffvkBeginFrame(renderer: *mut FfvkRenderer, slot: u32) 
             return invalid("ffvkBeginFrame: called between ffvkBeginDraws and ffvkEndDraws");
         }
         match r.lighting.begin_frame(slot) {
-            Ok(()) => FfvkResult::FFVK_SUCCESS,
+            Ok(()) => {
+                r.begun[slot as usize] = true;
+                FfvkResult::FFVK_SUCCESS
+            }
             Err(e) => from_error(&e),
         }
     })
 }
 
-/// Opens a recording scope on `cmd` for frame slot `slot` (begun with `ffvkBeginFrame`).
+/// Opens a recording scope on `cmd` for frame slot `slot`, which `ffvkBeginFrame` has begun
+/// (several scopes may follow one `ffvkBeginFrame`; their draws share the slot's memory).
 /// `cmd` is in the recording state inside the caller's `vkCmdBeginRendering` on attachments of
 /// the create info's formats, with viewport and scissor set (both dynamic state). Between this
 /// call and `ffvkEndDraws` the caller records nothing of its own into `cmd`. Records nothing
@@ -441,6 +453,11 @@ pub unsafe extern "C" fn ffvkBeginDraws(
             return invalid(format!(
                 "ffvkBeginDraws: slot {slot} is out of range: expected 0..{} (frames_in_flight)",
                 r.lighting.frames_in_flight()
+            ));
+        }
+        if !r.begun[slot as usize] {
+            return invalid(format!(
+                "ffvkBeginDraws: slot {slot} was not begun: expected ffvkBeginFrame(renderer, {slot}) first"
             ));
         }
         r.recording = Some(Recording {

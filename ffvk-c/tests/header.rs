@@ -86,6 +86,93 @@ int main(void) {
 }
 "#;
 
+/// A C program of the state API alone: GL's error for a cutoff of 91, the position in eye
+/// space after a translated modelview, the first error sticking.
+const STATE_PROGRAM: &str = r#"
+#include <ffvk.h>
+#include <stdio.h>
+int main(void) {
+    static const float translate[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, 2, 3, 1};
+    const float position[4] = {0, 0, 1, 1};
+    float eye[4] = {0, 0, 0, 0};
+    int failures = 0;
+    FfvkContext *ctx = ffvkCreateContext();
+    if (!ctx) return 100;
+    ffvkLightf(ctx, GL_LIGHT0, GL_SPOT_CUTOFF, 91.0f);
+    ffvkEnable(ctx, 0x1234);
+    if (ffvkGetError(ctx) != GL_INVALID_VALUE) { puts("cutoff 91 is not GL_INVALID_VALUE"); failures++; }
+    if (ffvkGetError(ctx) != GL_NO_ERROR) { puts("the second error stuck"); failures++; }
+    ffvkLoadModelview(ctx, translate);
+    ffvkLightfv(ctx, GL_LIGHT0, GL_POSITION, position);
+    ffvkGetLightfv(ctx, GL_LIGHT0, GL_POSITION, eye);
+    if (eye[0] != 1 || eye[1] != 2 || eye[2] != 4 || eye[3] != 1) { puts("position not in eye space"); failures++; }
+    ffvkDestroyContext(ctx);
+    return failures;
+}
+"#;
+
+/// The directory cargo put this test's libffvk_c.so and .a in (target/<profile>).
+fn library_dir() -> PathBuf {
+    let exe = std::env::current_exe().expect("the test's path");
+    // target/<profile>/deps/header-<hash>
+    exe.parent()
+        .and_then(Path::parent)
+        .expect("target/<profile>")
+        .to_path_buf()
+}
+
+#[test]
+fn a_c_program_links_the_static_and_the_shared_library_and_gets_gls_errors_and_eye_space() {
+    let dir = std::env::temp_dir().join(format!("ffvk-link-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let source = dir.join("state.c");
+    std::fs::write(&source, STATE_PROGRAM).unwrap();
+    let lib = library_dir();
+    for (kind, link) in [
+        (
+            "static",
+            vec![
+                lib.join("libffvk_c.a").display().to_string(),
+                "-lm".into(),
+                "-ldl".into(),
+                "-lpthread".into(),
+            ],
+        ),
+        (
+            "shared",
+            vec![
+                format!("-L{}", lib.display()),
+                format!("-Wl,-rpath,{}", lib.display()),
+                "-lffvk_c".into(),
+            ],
+        ),
+    ] {
+        let exe = dir.join(format!("state-{kind}"));
+        let output = Command::new("cc")
+            .args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-o"])
+            .arg(&exe)
+            .arg("-I")
+            .arg(crate_dir().join("include"))
+            .arg(&source)
+            .args(&link)
+            .output()
+            .expect("cc");
+        assert!(
+            output.status.success(),
+            "linking the {kind} library failed:\n{}",
+            String::from_utf8_lossy(&output.stderr)
+        );
+        let run = Command::new(&exe).output().expect("the C program runs");
+        assert!(
+            run.status.success(),
+            "the C program linked with the {kind} library failed ({}):\n{}",
+            run.status,
+            String::from_utf8_lossy(&run.stdout)
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn the_header_compiles_as_c99_and_as_cpp_with_every_warning_an_error() {
     let dir = std::env::temp_dir().join(format!("ffvk-header-{}", std::process::id()));

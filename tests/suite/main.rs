@@ -2,6 +2,7 @@
 
 mod bench;
 mod browser;
+mod c_api_example;
 mod c_api_state;
 mod conformance;
 mod determinism;
