@@ -1143,9 +1143,16 @@ void ffvkRasterDefaults(struct FfvkRaster *raster);
 /*
  Adds a draw to the open scope: the context's state now (lights, materials, switches, its
  modelview and projection) is captured, so the caller may change the context right after.
- The draw is checked now and recorded by `ffvkEndDraws`. Errors: `FFVK_ERROR_INVALID_ARGUMENT`
- (no open scope, a null pointer, a wrong `struct_size`, a mode ffvk does not draw directly,
- a buffer count other than the layout's bindings), nothing added.
+ The draw is checked and its state written into the slot's memory now (its pipeline is made
+ now if it is new: about 15 ms on lavapipe); `ffvkEndDraws` records it. A refused draw is
+ not added and the scope stays open with the draws before it. Errors:
+ `FFVK_ERROR_INVALID_ARGUMENT` (no open scope, a null pointer, a wrong `struct_size`, a mode
+ ffvk does not draw directly, a buffer count other than the layout's bindings, a point size
+ or line width out of the device's range, a textured draw without texture coordinates),
+ `FFVK_ERROR_STATE` (the context's state cannot be drawn: a soft spot cone wider than its
+ cutoff, a modelview that cannot be inverted while lighting), `FFVK_ERROR_MISSING_FEATURE`
+ (`GL_FLAT`, a point size or a line width the create info's `enabled_features` did not
+ declare), `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN` (making the pipeline).
 
  # Safety
 
@@ -1158,14 +1165,12 @@ enum FfvkResult ffvkDraw(struct FfvkRenderer *renderer,
                          const struct FfvkDrawInfo *draw);
 
 /*
- Closes the scope: records every draw added since `ffvkBeginDraws` into its command buffer
- as one run (binding only what changes between draws; consecutive draws of one geometry
- become instances). Records: bind pipeline, bind ffvk's descriptor sets at their dynamic
- offsets, bind the caller's vertex and index buffers and ffvk's record buffer, draw. They
- stay bound afterwards. Errors: `FFVK_ERROR_INVALID_ARGUMENT` (no scope open, a draw that
- cannot be drawn with this layout), `FFVK_ERROR_STATE` (a context state that cannot be
- drawn), `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN`; the scope is closed either way,
- and after an error `cmd` may hold part of the run: the caller resets it.
+ Closes the scope: records every draw `ffvkDraw` added since `ffvkBeginDraws` into its
+ command buffer as one run (binding only what changes between draws; consecutive draws of
+ one geometry become instances). Records: bind pipeline, bind ffvk's descriptor sets at
+ their dynamic offsets, bind the caller's vertex and index buffers and ffvk's record
+ buffer, draw. They stay bound afterwards. A scope without draws records nothing. Errors:
+ `FFVK_ERROR_INVALID_ARGUMENT` when no scope is open; the draws were checked when added.
 
  # Safety
 
@@ -1179,7 +1184,8 @@ enum FfvkResult ffvkEndDraws(struct FfvkRenderer *renderer);
  Makes a texture binding naming the caller's image view (2D, color, sampled as floats, in
  `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` whenever a draw that uses it executes) and
  sampler. ffvk owns the descriptor set; the view and sampler stay the caller's. Records
- nothing.
+ nothing. Returns `FFVK_SUCCESS` with `*texture` set, or an error code with `*texture` null
+ (`FFVK_ERROR_INVALID_ARGUMENT` for a null pointer or handle).
 
  # Safety
 

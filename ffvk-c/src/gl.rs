@@ -15,7 +15,7 @@ use ffvk::gl::texture::TexEnvMode;
 use ffvk::glam::{Mat4, Vec3, Vec4};
 
 use crate::enums::*;
-use crate::result::{fail, panic_text, FfvkResult};
+use crate::result::{fail, misaligned, panic_text, FfvkResult};
 
 /// GL's lighting state, its matrices and its error flag: what an application's GL calls set.
 /// Made by `ffvkCreateContext`, freed by `ffvkDestroyContext`. One thread at a time may call
@@ -41,6 +41,17 @@ pub(crate) struct GlError {
 pub(crate) type GlResult<T = ()> = Result<T, GlError>;
 
 impl GlError {
+    /// GL_INVALID_VALUE for a pointer parameter that is not aligned for its values.
+    pub(crate) fn misaligned<T>(function: &str, name: &str, ptr: *const T) -> GlError {
+        GlError {
+            code: GL_INVALID_VALUE,
+            message: format!(
+                "{function}: {name} {ptr:p} is not aligned to {} bytes: expected a pointer to its values (GL_INVALID_VALUE)",
+                std::mem::align_of::<T>()
+            ),
+        }
+    }
+
     pub(crate) fn null_out(function: &str) -> GlError {
         GlError {
             code: GL_INVALID_VALUE,
@@ -76,11 +87,11 @@ fn state_error(function: &str, e: StateError) -> GlError {
     }
 }
 
-fn null_params(function: &str) -> GlError {
+fn null_params(function: &str, name: &str, len: usize) -> GlError {
     GlError {
         code: GL_INVALID_VALUE,
         message: format!(
-            "{function}: params is a null pointer: expected the parameter's values (GL_INVALID_VALUE)"
+            "{function}: {name} is a null pointer: expected the parameter's {len} value(s) (GL_INVALID_VALUE)"
         ),
     }
 }
@@ -132,6 +143,15 @@ pub(crate) fn with_context<T: Default>(
     function: &str,
     f: impl FnOnce(&mut FfvkContext) -> GlResult<T>,
 ) -> T {
+    if misaligned(ctx) {
+        fail(
+            FfvkResult::FFVK_SUCCESS,
+            format!(
+                "{function}: the context {ctx:p} is not aligned: expected a context from ffvkCreateContext"
+            ),
+        );
+        return T::default();
+    }
     // SAFETY: the caller's contract (ffvk.h): ctx is null or a live context from
     // ffvkCreateContext used by one thread at a time.
     let Some(context) = (unsafe { ctx.as_mut() }) else {
@@ -189,26 +209,66 @@ impl Values<'_> {
     fn vec4(&self) -> Vec4 {
         Vec4::new(self.plain(0), self.plain(1), self.plain(2), self.plain(3))
     }
-    /// The value read as an enum or boolean: a float is truncated to an integer first.
-    fn as_enum(&self) -> u32 {
-        match self {
+    /// The value read as an enum: a float is truncated to an integer first; one that is not
+    /// finite is no enum and sets GL_INVALID_VALUE, as for every other parameter.
+    fn as_enum(&self, function: &str, parameter: &'static str, valid: &'static str) -> GlResult<u32> {
+        self.finite(function, parameter, valid, 1)?;
+        Ok(match self {
             Values::F(v) => v[0] as i32 as u32,
             Values::I(v) => v[0] as u32,
+        })
+    }
+    /// The value read as a boolean (non-zero is true); GL_INVALID_VALUE for a float that is
+    /// not finite (NaN is not "non-zero").
+    fn as_bool(&self, function: &str, parameter: &'static str) -> GlResult<bool> {
+        self.finite(function, parameter, "a finite number (non-zero is GL_TRUE)", 1)?;
+        Ok(self.plain(0) != 0.0)
+    }
+    /// GL_INVALID_VALUE for the first of `len` float values that is not finite, for the
+    /// parameters ffvk's state does not check itself.
+    fn finite(&self, function: &str, parameter: &'static str, valid: &'static str, len: usize) -> GlResult {
+        match self {
+            Values::F(v) => match v[..len].iter().find(|v| !v.is_finite()) {
+                Some(&value) => Err(state_error(
+                    function,
+                    StateError::NotFinite {
+                        parameter,
+                        value,
+                        valid,
+                    },
+                )),
+                None => Ok(()),
+            },
+            Values::I(_) => Ok(()),
         }
     }
 }
 
-/// Reads `len` values of an `fv`/`iv` entry point, or GL_INVALID_VALUE for a null pointer.
+/// Reads `len` values of an `fv`/`iv` entry point, or GL_INVALID_VALUE for a null or
+/// misaligned pointer.
 ///
 /// # Safety
 ///
-/// `params` is null or points at `len` readable values of `T`.
+/// `params` is null, misaligned or points at `len` readable values of `T`.
 unsafe fn read<'a, T>(function: &str, params: *const T, len: usize) -> GlResult<&'a [T]> {
-    if params.is_null() {
-        return Err(null_params(function));
+    // SAFETY: the caller's contract.
+    unsafe { read_named(function, "params", params, len) }
+}
+
+/// `read` for a pointer parameter named `name`.
+///
+/// # Safety
+///
+/// As `read`.
+unsafe fn read_named<'a, T>(function: &str, name: &str, ptr: *const T, len: usize) -> GlResult<&'a [T]> {
+    if ptr.is_null() {
+        return Err(null_params(function, name, len));
     }
-    // SAFETY: the caller's contract: `len` values are readable at a non-null params.
-    Ok(unsafe { std::slice::from_raw_parts(params, len) })
+    if misaligned(ptr) {
+        return Err(GlError::misaligned(function, name, ptr));
+    }
+    // SAFETY: the caller's contract: `len` values are readable at a non-null, aligned ptr.
+    Ok(unsafe { std::slice::from_raw_parts(ptr, len) })
 }
 
 /// How many values a glLight parameter has; `None` for an unknown one.
@@ -322,6 +382,7 @@ fn set_material(ctx: &mut FfvkContext, function: &str, face: Face, pname: u32, v
         GL_AMBIENT_AND_DIFFUSE => MaterialParam::AmbientAndDiffuse(v.color4()),
         GL_SHININESS => MaterialParam::Shininess(v.plain(0)),
         GL_COLOR_INDEXES => {
+            v.finite(function, "GL_COLOR_INDEXES", "finite components", 3)?;
             let indexes = [v.plain(0), v.plain(1), v.plain(2)];
             if face.includes_front() {
                 ctx.color_indexes[0] = indexes;
@@ -355,9 +416,15 @@ fn light_model_len(function: &str, pname: u32, scalar: bool) -> GlResult<usize> 
 fn set_light_model(ctx: &mut FfvkContext, function: &str, pname: u32, v: Values) -> GlResult {
     let param = match pname {
         GL_LIGHT_MODEL_AMBIENT => LightModelParam::Ambient(v.color4()),
-        GL_LIGHT_MODEL_LOCAL_VIEWER => LightModelParam::LocalViewer(v.plain(0) != 0.0),
-        GL_LIGHT_MODEL_TWO_SIDE => LightModelParam::TwoSide(v.plain(0) != 0.0),
-        GL_LIGHT_MODEL_COLOR_CONTROL => match v.as_enum() {
+        GL_LIGHT_MODEL_LOCAL_VIEWER => {
+            LightModelParam::LocalViewer(v.as_bool(function, "GL_LIGHT_MODEL_LOCAL_VIEWER")?)
+        }
+        GL_LIGHT_MODEL_TWO_SIDE => LightModelParam::TwoSide(v.as_bool(function, "GL_LIGHT_MODEL_TWO_SIDE")?),
+        GL_LIGHT_MODEL_COLOR_CONTROL => match v.as_enum(
+            function,
+            "GL_LIGHT_MODEL_COLOR_CONTROL",
+            "GL_SINGLE_COLOR or GL_SEPARATE_SPECULAR_COLOR",
+        )? {
             GL_SINGLE_COLOR => LightModelParam::ColorControl(ColorControl::SingleColor),
             GL_SEPARATE_SPECULAR_COLOR => LightModelParam::ColorControl(ColorControl::SeparateSpecularColor),
             other => {
@@ -397,9 +464,13 @@ fn tex_env_len(function: &str, target: u32, pname: u32, scalar: bool) -> GlResul
 }
 
 fn set_tex_env(ctx: &mut FfvkContext, function: &str, pname: u32, v: Values) -> GlResult {
-    let param =
-        match pname {
-            GL_TEXTURE_ENV_MODE => TexEnvParam::Mode(match v.as_enum() {
+    let param = match pname {
+        GL_TEXTURE_ENV_MODE => TexEnvParam::Mode(
+            match v.as_enum(
+                function,
+                "GL_TEXTURE_ENV_MODE",
+                "GL_MODULATE, GL_REPLACE, GL_DECAL, GL_BLEND or GL_ADD",
+            )? {
                 GL_MODULATE => TexEnvMode::Modulate,
                 GL_REPLACE => TexEnvMode::Replace,
                 GL_DECAL => TexEnvMode::Decal,
@@ -411,9 +482,10 @@ fn set_tex_env(ctx: &mut FfvkContext, function: &str, pname: u32, v: Values) -> 
                     other,
                     "GL_MODULATE, GL_REPLACE, GL_DECAL, GL_BLEND or GL_ADD (GL_COMBINE is not drawn by ffvk)",
                 )),
-            }),
-            _ => TexEnvParam::Color(v.color4()),
-        };
+            },
+        ),
+        _ => TexEnvParam::Color(v.color4()),
+    };
     ctx.gl.tex_env(param).map_err(|e| state_error(function, e))
 }
 
@@ -454,7 +526,7 @@ fn color_material_mode(function: &str, mode: u32) -> GlResult<ColorMaterialMode>
 
 fn load_matrix(function: &str, m: *const f32) -> GlResult<Mat4> {
     // SAFETY: the caller's contract (ffvk.h): m is null or points at 16 floats.
-    let values = unsafe { read(function, m, 16) }?;
+    let values = unsafe { read_named(function, "m", m, 16) }?;
     let mut cols = [0.0f32; 16];
     cols.copy_from_slice(values);
     let matrix = Mat4::from_cols_array(&cols);

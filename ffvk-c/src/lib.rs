@@ -9,8 +9,9 @@
 //!   (loaded through the caller's `vkGetInstanceProcAddr`), recording a context's state as
 //!   draws into the caller's command buffer. It never submits or waits.
 //!
-//! Every entry point catches panics (none unwinds into C), checks its pointers for null, and
-//! either sets GL's error (state entry points, which return nothing in GL) or returns an
+//! Every entry point catches panics (none unwinds into C), checks its pointers for null and
+//! alignment (a misaligned pointer is refused as a null one is), and either sets GL's error
+//! (state entry points, which return nothing in GL) or returns an
 //! [`FfvkResult`](result::FfvkResult) with a message from `ffvkResultMessage`.
 
 pub mod enums;

@@ -5,7 +5,7 @@ use ffvk::draw::gl_primitives;
 use ffvk::mesh::MeshData;
 
 use crate::enums::*;
-use crate::result::{fail, guard, FfvkResult};
+use crate::result::{check_ptr, fail, guard, FfvkResult};
 
 /// A host mesh made by ffvk (`ffvkCreateTeapot`): arrays the caller copies into its buffers.
 pub struct FfvkMesh {
@@ -42,13 +42,10 @@ pub struct FfvkMeshArrays {
 #[no_mangle]
 pub unsafe extern "C" fn ffvkCreateTeapot(level: u32, mesh: *mut *mut FfvkMesh) -> FfvkResult {
     guard(|| {
-        if mesh.is_null() {
-            return fail(
-                FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
-                "ffvkCreateTeapot: mesh is a null pointer: expected where to write the mesh",
-            );
+        if let Err(code) = check_ptr("ffvkCreateTeapot", "mesh", mesh, "where to write the mesh") {
+            return code;
         }
-        // SAFETY: checked non-null; writable by the caller's contract.
+        // SAFETY: checked non-null and aligned; writable by the caller's contract.
         unsafe { *mesh = std::ptr::null_mut() };
         let data: MeshData = match ffvk::mesh::teapot::teapot(level) {
             Ok(d) => d,
@@ -79,13 +76,14 @@ pub unsafe extern "C" fn ffvkCreateTeapot(level: u32, mesh: *mut *mut FfvkMesh) 
 #[no_mangle]
 pub unsafe extern "C" fn ffvkGetMeshArrays(mesh: *const FfvkMesh, arrays: *mut FfvkMeshArrays) -> FfvkResult {
     guard(|| {
-        // SAFETY: the caller's contract: null or live.
-        let (Some(m), false) = (unsafe { mesh.as_ref() }, arrays.is_null()) else {
-            return fail(
-                FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
-                "ffvkGetMeshArrays: mesh or arrays is a null pointer",
-            );
-        };
+        const F: &str = "ffvkGetMeshArrays";
+        let checked = check_ptr(F, "mesh", mesh, "a mesh from ffvkCreateTeapot")
+            .and_then(|()| check_ptr(F, "arrays", arrays, "where to write the mesh's arrays"));
+        if let Err(code) = checked {
+            return code;
+        }
+        // SAFETY: checked non-null and aligned; live by the caller's contract.
+        let m = unsafe { &*mesh };
         let view = FfvkMeshArrays {
             vertex_count: m.positions.len() as u32,
             positions: m.positions.as_ptr().cast(),
@@ -135,11 +133,17 @@ pub unsafe extern "C" fn ffvkPrimitiveIndices(
 ) -> FfvkResult {
     const F: &str = "ffvkPrimitiveIndices";
     guard(|| {
-        if written.is_null() || draw_mode.is_null() || (vertices.is_null() && count > 0) {
-            return fail(
-                FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
-                format!("{F}: vertices, written or draw_mode is a null pointer"),
-            );
+        let mut checked = check_ptr(F, "written", written, "where to write the index count")
+            .and_then(|()| check_ptr(F, "draw_mode", draw_mode, "where to write the mode to draw with"));
+        if count > 0 {
+            let expected = format!("the {count} vertex numbers of count");
+            checked = checked.and_then(|()| check_ptr(F, "vertices", vertices, &expected));
+        }
+        if !out.is_null() {
+            checked = checked.and_then(|()| check_ptr(F, "out", out, "room for capacity indices, or null"));
+        }
+        if let Err(code) = checked {
+            return code;
         }
         let input: &[u32] = if count == 0 {
             &[]
@@ -158,7 +162,7 @@ pub unsafe extern "C" fn ffvkPrimitiveIndices(
             other => {
                 return fail(
                     FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
-                    format!("{F}: mode 0x{other:04X} is not one of GL's ten primitive modes"),
+                    format!("{F}: mode 0x{other:04X} is not one of GL's ten primitive modes: expected GL_POINTS (0x0000) .. GL_POLYGON (0x0009)"),
                 )
             }
         };

@@ -199,14 +199,17 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
     })
 }
 
-/// Writes `values` to `out`, or GL_INVALID_VALUE for a null `out`.
+/// Writes `values` to `out`, or GL_INVALID_VALUE for a null or misaligned `out`.
 ///
 /// # Safety
 ///
-/// `out` is null or has room for `values.len()` values.
+/// `out` is null, misaligned or has room for `values.len()` values.
 unsafe fn write<T: Copy>(f: &str, out: *mut T, values: &[T]) -> GlResult {
     if out.is_null() {
         return Err(crate::gl::GlError::null_out(f));
+    }
+    if crate::result::misaligned(out) {
+        return Err(crate::gl::GlError::misaligned(f, "params", out.cast_const()));
     }
     // SAFETY: the caller's contract: out has room for as many values as the name has.
     unsafe { std::ptr::copy_nonoverlapping(values.as_ptr(), out, values.len()) };

@@ -15,13 +15,13 @@ use ffvk::gl::state::LightingState;
 use ffvk::glam::Mat4;
 use ffvk::vk::EnabledFeatures;
 use ffvk::{
-    Attribute, Blend, Geometry, Lighting, LightingOptions, LitDraw, RasterState, Target, TextureBinding,
-    Topology, VertexInput,
+    Attribute, Blend, Geometry, Lighting, LightingOptions, LitDraw, RasterState, StagedDraw, Target,
+    TextureBinding, Topology, VertexInput,
 };
 
 use crate::enums::*;
 use crate::gl::FfvkContext;
-use crate::result::{fail, from_error, guard, FfvkResult};
+use crate::result::{check_ptr, fail, from_error, guard, misaligned, FfvkResult};
 use crate::vk_types::*;
 
 /// `dynamicRendering` (Vulkan 1.3): required.
@@ -193,6 +193,8 @@ struct Recording {
     slot: u32,
     states: Vec<LightingState>,
     draws: Vec<Pending>,
+    /// Each draw as `ffvkDraw` checked it and wrote it into the slot.
+    staged: Vec<StagedDraw>,
 }
 
 /// ffvk on the caller's device (`ffvkCreateRenderer`).
@@ -211,7 +213,9 @@ fn invalid(message: impl Into<String>) -> FfvkResult {
 }
 
 fn check_size(function: &str, what: &str, given: u32, expected: usize) -> Result<(), FfvkResult> {
-    if (given as usize) < expected {
+    // This is the first version of each struct: only its own size is known. A later version
+    // that adds fields will accept this size too.
+    if given as usize != expected {
         return Err(invalid(format!(
             "{function}: {what}.struct_size is {given}: expected sizeof({what}) = {expected}"
         )));
@@ -231,6 +235,12 @@ unsafe fn slice<'a, T>(function: &str, what: &str, ptr: *const T, count: u32) ->
     if ptr.is_null() {
         return Err(invalid(format!(
             "{function}: {what} is null with a count of {count}"
+        )));
+    }
+    if misaligned(ptr) {
+        return Err(invalid(format!(
+            "{function}: {what} {ptr:p} is not aligned to {} bytes: expected {count} values",
+            std::mem::align_of::<T>()
         )));
     }
     // SAFETY: the caller's contract: count values at a non-null ptr.
@@ -291,6 +301,13 @@ unsafe fn create(info: &FfvkRendererCreateInfo) -> Result<FfvkRenderer, FfvkResu
     // SAFETY: the caller's contract: binding_count descriptions at bindings.
     let bindings = unsafe { slice(F, "bindings", info.bindings, info.binding_count) }?.to_vec();
     let mut vertex_input = VertexInput::new(bindings, attribute(&info.position), attribute(&info.normal));
+    for (what, ptr) in [("color", info.color), ("texcoord", info.texcoord)] {
+        if misaligned(ptr) {
+            return Err(invalid(format!(
+                "{F}: {what} {ptr:p} is not aligned: expected an FfvkAttribute or null"
+            )));
+        }
+    }
     // SAFETY: the caller's contract: color and texcoord are null or point at an attribute.
     let (color, texcoord) = unsafe { (info.color.as_ref(), info.texcoord.as_ref()) };
     vertex_input = vertex_input
@@ -321,8 +338,8 @@ unsafe fn create(info: &FfvkRendererCreateInfo) -> Result<FfvkRenderer, FfvkResu
     // these features and outlives the renderer.
     let ffvk_device =
         unsafe { ffvk::vk::Device::from_caller(&instance, info.physical_device, device, features) }
-            .map_err(|e| from_error(&e))?;
-    let lighting = Lighting::new(&ffvk_device, &options).map_err(|e| from_error(&e))?;
+            .map_err(|e| from_error(F, &e))?;
+    let lighting = Lighting::new(&ffvk_device, &options).map_err(|e| from_error(F, &e))?;
     Ok(FfvkRenderer {
         lighting,
         _device: ffvk_device,
@@ -351,17 +368,17 @@ pub unsafe extern "C" fn ffvkCreateRenderer(
     renderer: *mut *mut FfvkRenderer,
 ) -> FfvkResult {
     guard(|| {
-        if renderer.is_null() {
-            return invalid(
-                "ffvkCreateRenderer: renderer is a null pointer: expected where to write the renderer",
-            );
+        const F: &str = "ffvkCreateRenderer";
+        if let Err(code) = check_ptr(F, "renderer", renderer, "where to write the renderer") {
+            return code;
         }
-        // SAFETY: checked non-null; the caller's contract makes it writable.
+        // SAFETY: checked non-null and aligned; the caller's contract makes it writable.
         unsafe { *renderer = std::ptr::null_mut() };
-        // SAFETY: the caller's contract: info is null or valid.
-        let Some(info) = (unsafe { info.as_ref() }) else {
-            return invalid("ffvkCreateRenderer: info is a null pointer: expected an FfvkRendererCreateInfo");
-        };
+        if let Err(code) = check_ptr(F, "info", info, "an FfvkRendererCreateInfo") {
+            return code;
+        }
+        // SAFETY: checked non-null and aligned; valid by the caller's contract.
+        let info = unsafe { &*info };
         // SAFETY: the caller's contract on the create info.
         match unsafe { create(info) } {
             Ok(r) => {
@@ -394,11 +411,17 @@ fn with_renderer(
     f: impl FnOnce(&mut FfvkRenderer) -> FfvkResult,
 ) -> FfvkResult {
     guard(|| {
-        // SAFETY: the caller's contract: null or a live renderer used by one thread at a time.
-        match unsafe { renderer.as_mut() } {
-            Some(r) => f(r),
-            None => invalid(format!("{function}: renderer is a null pointer")),
+        if let Err(code) = check_ptr(
+            function,
+            "renderer",
+            renderer,
+            "a renderer from ffvkCreateRenderer",
+        ) {
+            return code;
         }
+        // SAFETY: checked non-null and aligned; the caller's contract: a live renderer used by
+        // one thread at a time.
+        f(unsafe { &mut *renderer })
     })
 }
 
@@ -420,7 +443,7 @@ pub unsafe extern "C" fn ffvkBeginFrame(renderer: *mut FfvkRenderer, slot: u32) 
                 r.begun[slot as usize] = true;
                 FfvkResult::FFVK_SUCCESS
             }
-            Err(e) => from_error(&e),
+            Err(e) => from_error("ffvkBeginFrame", &e),
         }
     })
 }
@@ -451,8 +474,8 @@ pub unsafe extern "C" fn ffvkBeginDraws(
         }
         if slot >= r.lighting.frames_in_flight() {
             return invalid(format!(
-                "ffvkBeginDraws: slot {slot} is out of range: expected 0..{} (frames_in_flight)",
-                r.lighting.frames_in_flight()
+                "ffvkBeginDraws: slot {slot} is out of range: expected 0 to {} (frames_in_flight - 1)",
+                r.lighting.frames_in_flight() - 1
             ));
         }
         if !r.begun[slot as usize] {
@@ -465,6 +488,7 @@ pub unsafe extern "C" fn ffvkBeginDraws(
             slot,
             states: Vec::new(),
             draws: Vec::new(),
+            staged: Vec::new(),
         });
         FfvkResult::FFVK_SUCCESS
     })
@@ -519,7 +543,7 @@ fn raster(r: &FfvkRaster) -> RasterState {
 /// `raster` is null (ignored) or writable.
 #[no_mangle]
 pub unsafe extern "C" fn ffvkRasterDefaults(raster: *mut FfvkRaster) {
-    if raster.is_null() {
+    if raster.is_null() || misaligned(raster) {
         return;
     }
     let defaults = FfvkRaster {
@@ -544,9 +568,16 @@ pub unsafe extern "C" fn ffvkRasterDefaults(raster: *mut FfvkRaster) {
 
 /// Adds a draw to the open scope: the context's state now (lights, materials, switches, its
 /// modelview and projection) is captured, so the caller may change the context right after.
-/// The draw is checked now and recorded by `ffvkEndDraws`. Errors: `FFVK_ERROR_INVALID_ARGUMENT`
-/// (no open scope, a null pointer, a wrong `struct_size`, a mode ffvk does not draw directly,
-/// a buffer count other than the layout's bindings), nothing added.
+/// The draw is checked and its state written into the slot's memory now (its pipeline is made
+/// now if it is new: about 15 ms on lavapipe); `ffvkEndDraws` records it. A refused draw is
+/// not added and the scope stays open with the draws before it. Errors:
+/// `FFVK_ERROR_INVALID_ARGUMENT` (no open scope, a null pointer, a wrong `struct_size`, a mode
+/// ffvk does not draw directly, a buffer count other than the layout's bindings, a point size
+/// or line width out of the device's range, a textured draw without texture coordinates),
+/// `FFVK_ERROR_STATE` (the context's state cannot be drawn: a soft spot cone wider than its
+/// cutoff, a modelview that cannot be inverted while lighting), `FFVK_ERROR_MISSING_FEATURE`
+/// (`GL_FLAT`, a point size or a line width the create info's `enabled_features` did not
+/// declare), `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN` (making the pipeline).
 ///
 /// # Safety
 ///
@@ -562,17 +593,19 @@ pub unsafe extern "C" fn ffvkDraw(
     const F: &str = "ffvkDraw";
     with_renderer(renderer, F, |r| {
         let binding_count = r.binding_count;
+        let lighting = &mut r.lighting;
         let Some(recording) = r.recording.as_mut() else {
             return invalid("ffvkDraw: no recording scope is open: expected ffvkBeginDraws first");
         };
-        // SAFETY: the caller's contract: null or a live context.
-        let Some(ctx) = (unsafe { ctx.as_ref() }) else {
-            return invalid("ffvkDraw: ctx is a null pointer: expected the context whose state is drawn");
-        };
-        // SAFETY: the caller's contract: null or a valid draw info.
-        let Some(draw) = (unsafe { draw.as_ref() }) else {
-            return invalid("ffvkDraw: draw is a null pointer: expected an FfvkDrawInfo");
-        };
+        let checked = check_ptr(F, "ctx", ctx, "the context whose state is drawn")
+            .and_then(|()| check_ptr(F, "draw", draw, "an FfvkDrawInfo"));
+        if let Err(code) = checked {
+            return code;
+        }
+        // SAFETY: checked non-null and aligned; the caller's contract: a live context.
+        let ctx = unsafe { &*ctx };
+        // SAFETY: checked non-null and aligned; the caller's contract: a valid draw info.
+        let draw = unsafe { &*draw };
         let result = (|| {
             check_size(
                 F,
@@ -581,6 +614,12 @@ pub unsafe extern "C" fn ffvkDraw(
                 std::mem::size_of::<FfvkDrawInfo>(),
             )?;
             let topology = topology(draw.mode)?;
+            if misaligned(draw.texture) {
+                return Err(invalid(format!(
+                    "{F}: texture {:p} is not aligned: expected a texture from ffvkCreateTexture or null",
+                    draw.texture
+                )));
+            }
             if draw.vertex_buffer_count != binding_count {
                 return Err(invalid(format!(
                     "{F}: vertex_buffer_count is {}: expected {binding_count}, one buffer per binding of the renderer's layout",
@@ -612,6 +651,23 @@ pub unsafe extern "C" fn ffvkDraw(
                     .with_primitive_restart(draw.primitive_restart != 0)
             }
             .with_topology(topology);
+            let buffers: Vec<(vk::Buffer, u64)> = buffers.iter().copied().zip(offsets).collect();
+            let raster = raster(&draw.raster);
+            // SAFETY: checked aligned above; the caller's contract: null or a live texture.
+            let texture = unsafe { draw.texture.as_ref() }.map(|t| &t.binding);
+            let lit = LitDraw::new(
+                &ctx.gl.lighting,
+                ctx.gl.modelview,
+                ctx.projection,
+                &buffers,
+                geometry,
+            )
+            .with_raster(raster)
+            .with_texture(texture);
+            // Checked and written into the slot now, so that a bad draw is refused alone.
+            let staged = lighting
+                .stage_draw(recording.slot, &lit)
+                .map_err(|e| from_error(F, &e))?;
             let state = match recording.states.last() {
                 Some(last) if *last == ctx.gl.lighting => recording.states.len() - 1,
                 _ => {
@@ -623,11 +679,12 @@ pub unsafe extern "C" fn ffvkDraw(
                 state,
                 modelview: ctx.gl.modelview,
                 projection: ctx.projection,
-                raster: raster(&draw.raster),
-                buffers: buffers.iter().copied().zip(offsets).collect(),
+                raster,
+                buffers,
                 geometry,
                 texture: draw.texture,
             });
+            recording.staged.push(staged);
             Ok(())
         })();
         match result {
@@ -637,14 +694,12 @@ pub unsafe extern "C" fn ffvkDraw(
     })
 }
 
-/// Closes the scope: records every draw added since `ffvkBeginDraws` into its command buffer
-/// as one run (binding only what changes between draws; consecutive draws of one geometry
-/// become instances). Records: bind pipeline, bind ffvk's descriptor sets at their dynamic
-/// offsets, bind the caller's vertex and index buffers and ffvk's record buffer, draw. They
-/// stay bound afterwards. Errors: `FFVK_ERROR_INVALID_ARGUMENT` (no scope open, a draw that
-/// cannot be drawn with this layout), `FFVK_ERROR_STATE` (a context state that cannot be
-/// drawn), `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN`; the scope is closed either way,
-/// and after an error `cmd` may hold part of the run: the caller resets it.
+/// Closes the scope: records every draw `ffvkDraw` added since `ffvkBeginDraws` into its
+/// command buffer as one run (binding only what changes between draws; consecutive draws of
+/// one geometry become instances). Records: bind pipeline, bind ffvk's descriptor sets at
+/// their dynamic offsets, bind the caller's vertex and index buffers and ffvk's record
+/// buffer, draw. They stay bound afterwards. A scope without draws records nothing. Errors:
+/// `FFVK_ERROR_INVALID_ARGUMENT` when no scope is open; the draws were checked when added.
 ///
 /// # Safety
 ///
@@ -674,10 +729,11 @@ pub unsafe extern "C" fn ffvkEndDraws(renderer: *mut FfvkRenderer) -> FfvkResult
             );
         }
         // SAFETY: the caller's contract: cmd records inside a rendering pass of the target's
-        // formats with viewport and scissor set; the slot was begun; the buffers live on.
-        match unsafe { r.lighting.draw_run(recording.cmd, recording.slot, &draws) } {
+        // formats with viewport and scissor set; the slot was begun; the buffers live on;
+        // staged[i] was staged by ffvkDraw from draws[i]'s values in this scope's slot.
+        match unsafe { r.lighting.record_run(recording.cmd, &recording.staged, &draws) } {
             Ok(()) => FfvkResult::FFVK_SUCCESS,
-            Err(e) => from_error(&e),
+            Err(e) => from_error("ffvkEndDraws", &e),
         }
     })
 }
@@ -685,7 +741,8 @@ pub unsafe extern "C" fn ffvkEndDraws(renderer: *mut FfvkRenderer) -> FfvkResult
 /// Makes a texture binding naming the caller's image view (2D, color, sampled as floats, in
 /// `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` whenever a draw that uses it executes) and
 /// sampler. ffvk owns the descriptor set; the view and sampler stay the caller's. Records
-/// nothing.
+/// nothing. Returns `FFVK_SUCCESS` with `*texture` set, or an error code with `*texture` null
+/// (`FFVK_ERROR_INVALID_ARGUMENT` for a null pointer or handle).
 ///
 /// # Safety
 ///
@@ -698,11 +755,15 @@ pub unsafe extern "C" fn ffvkCreateTexture(
     sampler: VkSampler,
     texture: *mut *mut FfvkTexture,
 ) -> FfvkResult {
-    with_renderer(renderer, "ffvkCreateTexture", |r| {
-        if texture.is_null() {
-            return invalid(
-                "ffvkCreateTexture: texture is a null pointer: expected where to write the texture",
-            );
+    const F: &str = "ffvkCreateTexture";
+    if !texture.is_null() && !misaligned(texture) {
+        // SAFETY: checked non-null and aligned; the caller's contract makes it writable. Null
+        // until a texture is made, so that a caller's cleanup after an error frees nothing.
+        unsafe { *texture = std::ptr::null_mut() };
+    }
+    with_renderer(renderer, F, |r| {
+        if let Err(code) = check_ptr(F, "texture", texture, "where to write the texture") {
+            return code;
         }
         if view == vk::ImageView::null() || sampler == vk::Sampler::null() {
             return invalid("ffvkCreateTexture: view or sampler is VK_NULL_HANDLE: expected the caller's image view and sampler");
@@ -714,7 +775,7 @@ pub unsafe extern "C" fn ffvkCreateTexture(
                 unsafe { *texture = Box::into_raw(Box::new(FfvkTexture { binding })) };
                 FfvkResult::FFVK_SUCCESS
             }
-            Err(e) => from_error(&e),
+            Err(e) => from_error("ffvkCreateTexture", &e),
         }
     })
 }

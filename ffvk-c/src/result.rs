@@ -43,8 +43,9 @@ pub(crate) fn fail(code: FfvkResult, message: impl Into<String>) -> FfvkResult {
     code
 }
 
-/// The code for one of ffvk's errors, with its message stored.
-pub(crate) fn from_error(e: &ffvk::Error) -> FfvkResult {
+/// The code for one of ffvk's errors, with its message stored: `function`'s name first, and
+/// for a feature the caller did not declare, the `FFVK_FEATURE_*` bit that declares it.
+pub(crate) fn from_error(function: &str, e: &ffvk::Error) -> FfvkResult {
     use ffvk::Error as E;
     let code = match e {
         E::MissingFeature(_) | E::NotEnabled { .. } | E::NoLoader(_) | E::NoDevice { .. } => {
@@ -57,10 +58,18 @@ pub(crate) fn from_error(e: &ffvk::Error) -> FfvkResult {
             FfvkResult::FFVK_ERROR_VULKAN
         }
         E::State(_) => FfvkResult::FFVK_ERROR_STATE,
+        E::InRun { source, .. } if matches!(**source, E::State(_)) => FfvkResult::FFVK_ERROR_STATE,
         E::Internal(_) => FfvkResult::FFVK_ERROR_INTERNAL,
         _ => FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
     };
-    fail(code, e.to_string())
+    let hint = match e {
+        E::NotEnabled { flag, .. } => format!(
+            " (in C: the FFVK_FEATURE_{} bit of FfvkRendererCreateInfo::enabled_features)",
+            flag.to_uppercase()
+        ),
+        _ => String::new(),
+    };
+    fail(code, format!("{function}: {e}{hint}"))
 }
 
 /// Runs `f` behind the panic barrier: a panic becomes `FFVK_ERROR_INTERNAL` with its message.
@@ -72,6 +81,39 @@ pub(crate) fn guard(f: impl FnOnce() -> FfvkResult) -> FfvkResult {
             format!("internal error (a panic inside ffvk): {}", panic_text(&payload)),
         ),
     }
+}
+
+/// Whether `ptr` is neither null nor aligned for `T`: it cannot point at a `T` (C's rule as
+/// Rust's), so an entry point refuses it as it refuses null instead of following it (which
+/// is undefined behaviour, and an abort in a build with debug assertions).
+pub(crate) fn misaligned<T>(ptr: *const T) -> bool {
+    !ptr.is_null() && !ptr.is_aligned()
+}
+
+/// `FFVK_ERROR_INVALID_ARGUMENT` naming `function`'s pointer parameter `name` when it is null
+/// or misaligned, and what was `expected` of it.
+pub(crate) fn check_ptr<T>(
+    function: &str,
+    name: &str,
+    ptr: *const T,
+    expected: &str,
+) -> Result<(), FfvkResult> {
+    if ptr.is_null() {
+        return Err(fail(
+            FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+            format!("{function}: {name} is a null pointer: expected {expected}"),
+        ));
+    }
+    if misaligned(ptr) {
+        return Err(fail(
+            FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+            format!(
+                "{function}: {name} {ptr:p} is not aligned to {} bytes: expected {expected}",
+                std::mem::align_of::<T>()
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// Frees an object the API handed out (null is ignored); a panic while dropping it is caught.

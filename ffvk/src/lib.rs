@@ -99,7 +99,7 @@ pub use image;
 #[doc = include_str!("../../README.md")]
 pub struct ReadmeDoctests;
 
-pub use draw::lighting::{DrawValues, Lighting, LightingOptions, LitDraw};
+pub use draw::lighting::{DrawValues, Lighting, LightingOptions, LitDraw, StagedDraw};
 pub use draw::pipeline::{Attribute, Blend, RasterState, Specialize, Target, VertexInput};
 pub use draw::record::{Geometry, Topology};
 pub use draw::texture::TextureBinding;

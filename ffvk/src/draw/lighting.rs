@@ -117,6 +117,11 @@ pub(crate) struct Staged {
     record_block: Option<(vk::DescriptorSet, u32)>,
 }
 
+/// A draw checked and written into its frame slot by [`Lighting::stage_draw`], waiting for
+/// [`Lighting::record_run`].
+#[derive(Debug, Clone, Copy)]
+pub struct StagedDraw(Staged);
+
 /// The state block the last staged draw used, and the pipelines found for it: the next draw
 /// with an equal [`StateKey`] in the same slot reuses both, so that a draw which changes only
 /// its own values (materials, color, modelview) writes only its record.
@@ -584,6 +589,41 @@ impl Lighting {
             staged.push(self.stage(slot, draw, same).map_err(|e| (i, e))?);
         }
         Ok(staged)
+    }
+
+    /// Checks `draw` and writes its state into slot `slot`'s memory, recording nothing: the
+    /// first half of a run recorded draw by draw ([`Lighting::record_run`] is the second), for
+    /// a caller that learns of its draws one at a time (an emulation layer's `glDrawElements`)
+    /// and wants each bad one refused at once, with the draws before it kept. Fails as
+    /// [`Lighting::draw`] does, leaving the draws staged before it valid.
+    pub fn stage_draw(&mut self, slot: u32, draw: &LitDraw) -> Result<StagedDraw> {
+        self.stage(slot, draw, false).map(StagedDraw)
+    }
+
+    /// Records draws staged with [`Lighting::stage_draw`] into `cmd` as one run, binding only
+    /// what changes between them, as [`Lighting::draw_run`] does. Fails, recording nothing,
+    /// when `staged` and `draws` differ in length.
+    ///
+    /// # Safety
+    ///
+    /// As [`Lighting::draw`], for every draw; `staged[i]` came from `stage_draw` with
+    /// `draws[i]` (the same state, geometry, buffers and texture) in the slot this command
+    /// buffer's frame uses, since the slot was last begun.
+    pub unsafe fn record_run(
+        &self,
+        cmd: vk::CommandBuffer,
+        staged: &[StagedDraw],
+        draws: &[LitDraw],
+    ) -> Result<()> {
+        if staged.len() != draws.len() {
+            return Err(crate::Error::Internal(
+                "record_run: a staged draw for every draw, in the same order",
+            ));
+        }
+        let staged: Vec<Staged> = staged.iter().map(|s| s.0).collect();
+        // SAFETY: the caller's contract above.
+        unsafe { self.record_staged_run(cmd, &staged, draws) };
+        Ok(())
     }
 
     /// Whether `draw` samples its texture: one is bound and `GL_TEXTURE_2D` is on.
