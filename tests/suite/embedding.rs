@@ -334,15 +334,15 @@ fn bad_vertex_layouts_and_draws_are_clear_errors() {
 
 /// A caller's device made with plain ash (lavapipe, one graphics queue, dynamic rendering,
 /// no provoking-vertex extension), destroyed on drop.
-struct PlainDevice {
-    _entry: ash::Entry,
-    instance: ash::Instance,
-    physical: ash::vk::PhysicalDevice,
-    device: ash::Device,
+pub(crate) struct PlainDevice {
+    pub(crate) entry: ash::Entry,
+    pub(crate) instance: ash::Instance,
+    pub(crate) physical: ash::vk::PhysicalDevice,
+    pub(crate) device: ash::Device,
 }
 
 impl PlainDevice {
-    fn new() -> PlainDevice {
+    pub(crate) fn new() -> PlainDevice {
         use ash::vk;
         // SAFETY: loads the system's Vulkan loader; the create infos outlive the calls.
         unsafe {
@@ -372,7 +372,7 @@ impl PlainDevice {
                 .push_next(&mut v13);
             let device = instance.create_device(physical, &info, None).unwrap();
             PlainDevice {
-                _entry: entry,
+                entry,
                 instance,
                 physical,
                 device,

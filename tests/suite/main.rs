@@ -3,6 +3,7 @@
 mod bench;
 mod browser;
 mod c_api_example;
+mod c_api_renderer;
 mod c_api_state;
 mod conformance;
 mod determinism;

@@ -1,0 +1,185 @@
+//! The C API's renderer on a caller's device through its `vkGetInstanceProcAddr`: each
+//! `ffvkDraw` is checked when it is added, a refused draw leaves the scope open with the draws
+//! before it, and the errors name what to fix in C's terms.
+
+use std::ffi::CStr;
+
+use ffvk::ash::vk::{self, Handle};
+use ffvk_c::gl::*;
+use ffvk_c::render::*;
+use ffvk_c::result::{ffvkResultMessage, FfvkResult};
+
+use crate::embedding::PlainDevice;
+
+const GL_LIGHTING: u32 = 0x0B50;
+const GL_LIGHT0: u32 = 0x4000;
+const GL_FLAT: u32 = 0x1D00;
+const GL_SMOOTH: u32 = 0x1D01;
+const GL_LINES: u32 = 0x0001;
+const GL_TRIANGLES: u32 = 0x0004;
+const GL_QUADS: u32 = 0x0007;
+
+fn message() -> String {
+    // SAFETY: ffvkResultMessage never returns null; the string is valid until the next call.
+    unsafe { CStr::from_ptr(ffvkResultMessage()) }
+        .to_string_lossy()
+        .into_owned()
+}
+
+fn attribute(binding: u32, offset: u32, format: vk::Format) -> FfvkAttribute {
+    FfvkAttribute {
+        binding,
+        offset,
+        format,
+    }
+}
+
+/// A renderer on `plain`'s device (dynamic rendering only: no provoking vertex, no wide
+/// lines), positions and normals interleaved in one binding.
+fn renderer(plain: &PlainDevice, bindings: &[vk::VertexInputBindingDescription]) -> *mut FfvkRenderer {
+    let info = FfvkRendererCreateInfo {
+        struct_size: std::mem::size_of::<FfvkRendererCreateInfo>() as u32,
+        get_instance_proc_addr: Some(plain.entry.static_fn().get_instance_proc_addr),
+        instance: plain.instance.handle(),
+        physical_device: plain.physical,
+        device: plain.device.handle(),
+        enabled_features: FFVK_FEATURE_DYNAMIC_RENDERING,
+        color_format: vk::Format::R8G8B8A8_UNORM,
+        depth_format: vk::Format::D32_SFLOAT,
+        samples: vk::SampleCountFlags::TYPE_1,
+        bindings: bindings.as_ptr(),
+        binding_count: bindings.len() as u32,
+        position: attribute(0, 0, vk::Format::R32G32B32_SFLOAT),
+        normal: attribute(0, 12, vk::Format::R32G32B32_SFLOAT),
+        color: std::ptr::null(),
+        texcoord: std::ptr::null(),
+        frames_in_flight: 1,
+        set_index: 0,
+        pipeline_cache: vk::PipelineCache::null(),
+    };
+    let mut renderer = std::ptr::null_mut();
+    // SAFETY: the create info's handles are plain's, alive for the test; out is writable.
+    let result = unsafe { ffvkCreateRenderer(&info, &mut renderer) };
+    assert_eq!(result, FfvkResult::FFVK_SUCCESS, "{}", message());
+    renderer
+}
+
+fn draw_info(mode: u32, buffer: &vk::Buffer, raster: FfvkRaster) -> FfvkDrawInfo {
+    FfvkDrawInfo {
+        struct_size: std::mem::size_of::<FfvkDrawInfo>() as u32,
+        mode,
+        vertex_buffers: buffer,
+        vertex_offsets: std::ptr::null(),
+        vertex_buffer_count: 1,
+        index_buffer: vk::Buffer::null(),
+        index_offset: 0,
+        index_type: vk::IndexType::UINT32,
+        first: 0,
+        count: 6,
+        vertex_offset: 0,
+        primitive_restart: 0,
+        raster,
+        texture: std::ptr::null(),
+    }
+}
+
+#[test]
+fn a_draw_the_device_or_the_state_cannot_take_is_refused_at_ffvk_draw_and_the_scope_stays_open() {
+    let plain = PlainDevice::new();
+    let bindings = [vk::VertexInputBindingDescription {
+        binding: 0,
+        stride: 24,
+        input_rate: vk::VertexInputRate::VERTEX,
+    }];
+    let r = renderer(&plain, &bindings);
+    let ctx = ffvkCreateContext();
+    // A buffer handle that is never dereferenced: nothing here is recorded or submitted
+    // (ffvkDraw only checks and stages; ffvkEndDraws of these scopes records nothing or is
+    // not reached).
+    let buffer = vk::Buffer::null();
+    let mut raster = std::mem::MaybeUninit::<FfvkRaster>::uninit();
+    // SAFETY: writable; ffvkRasterDefaults fills every field.
+    let raster = unsafe {
+        ffvkRasterDefaults(raster.as_mut_ptr());
+        raster.assume_init()
+    };
+    // SAFETY: every pointer is live for its call; the command buffer handle is a placeholder
+    // that ffvk never records into (the scopes end empty or are dropped with the renderer).
+    unsafe {
+        ffvkEnable(ctx, GL_LIGHTING);
+        ffvkEnable(ctx, GL_LIGHT0);
+        assert_eq!(
+            ffvkBeginDraws(r, vk::CommandBuffer::null(), 0),
+            FfvkResult::FFVK_ERROR_INVALID_ARGUMENT
+        );
+        let fake_cmd = vk::CommandBuffer::from_raw(0x1000);
+        assert_eq!(
+            ffvkBeginDraws(r, fake_cmd, 0),
+            FfvkResult::FFVK_ERROR_INVALID_ARGUMENT
+        );
+        assert!(
+            message().contains("expected ffvkBeginFrame(renderer, 0) first"),
+            "{}",
+            message()
+        );
+        assert_eq!(ffvkBeginFrame(r, 1), FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+        assert_eq!(ffvkBeginFrame(r, 0), FfvkResult::FFVK_SUCCESS, "{}", message());
+        assert_eq!(
+            ffvkBeginDraws(r, fake_cmd, 0),
+            FfvkResult::FFVK_SUCCESS,
+            "{}",
+            message()
+        );
+
+        // GL_FLAT without VK_EXT_provoking_vertex.
+        ffvkShadeModel(ctx, GL_FLAT);
+        let flat = ffvkDraw(r, ctx, &draw_info(GL_TRIANGLES, &buffer, raster));
+        assert_eq!(flat, FfvkResult::FFVK_ERROR_MISSING_FEATURE, "{}", message());
+        assert!(message().starts_with("ffvkDraw: "), "{}", message());
+        assert!(
+            message().contains("FFVK_FEATURE_PROVOKING_VERTEX_LAST"),
+            "{}",
+            message()
+        );
+        ffvkShadeModel(ctx, GL_SMOOTH);
+
+        // A line width of 3 without wideLines.
+        let wide = FfvkRaster {
+            line_width: 3.0,
+            ..raster
+        };
+        let lines = ffvkDraw(r, ctx, &draw_info(GL_LINES, &buffer, wide));
+        assert_ne!(lines, FfvkResult::FFVK_SUCCESS);
+        assert!(message().contains("FFVK_FEATURE_WIDE_LINES"), "{}", message());
+
+        // A singular modelview while lighting: GL's normals need its inverse.
+        let flat_plane: [f32; 16] = [1., 0., 0., 0., 0., 0., 0., 0., 0., 0., 1., 0., 0., 0., 0., 1.];
+        ffvkLoadModelview(ctx, flat_plane.as_ptr());
+        let singular = ffvkDraw(r, ctx, &draw_info(GL_TRIANGLES, &buffer, raster));
+        assert_eq!(singular, FfvkResult::FFVK_ERROR_STATE, "{}", message());
+        assert!(message().contains("determinant"), "{}", message());
+
+        // A zeroed raster state (point size 0) and GL_QUADS, refused with what to do.
+        let identity: [f32; 16] = [1., 0., 0., 0., 0., 1., 0., 0., 0., 0., 1., 0., 0., 0., 0., 1.];
+        ffvkLoadModelview(ctx, identity.as_ptr());
+        let zeroed = ffvkDraw(r, ctx, &draw_info(GL_TRIANGLES, &buffer, std::mem::zeroed()));
+        assert_eq!(zeroed, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT, "{}", message());
+        let quads = ffvkDraw(r, ctx, &draw_info(GL_QUADS, &buffer, raster));
+        assert_eq!(quads, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+        assert!(message().contains("ffvkPrimitiveIndices"), "{}", message());
+
+        // Nothing was added: the scope closes recording nothing, and opens again.
+        assert_eq!(ffvkEndDraws(r), FfvkResult::FFVK_SUCCESS, "{}", message());
+        assert_eq!(ffvkEndDraws(r), FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+        assert_eq!(ffvkBeginDraws(r, fake_cmd, 0), FfvkResult::FFVK_SUCCESS);
+        // A draw the device and the state can take is accepted now (staged, not recorded).
+        let good = ffvkDraw(r, ctx, &draw_info(GL_TRIANGLES, &buffer, raster));
+        assert_eq!(good, FfvkResult::FFVK_SUCCESS, "{}", message());
+        // The frame slot cannot be begun again while its scope is open.
+        assert_eq!(ffvkBeginFrame(r, 0), FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+
+        // Destroyed with its scope open: nothing was recorded, everything is freed.
+        ffvkDestroyRenderer(r);
+        ffvkDestroyContext(ctx);
+    }
+}
