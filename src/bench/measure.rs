@@ -75,6 +75,9 @@ pub struct PointStats {
     pub fs_invocations: Option<u64>,
     /// Primitives out of the clipper in the last frame (ffvk only).
     pub clipping_primitives: Option<u64>,
+    /// Pixels the drawing covers (those not left at the clear color), counted in a frame read
+    /// back after the measured ones (ffvk's fragment sweep only).
+    pub covered_pixels: Option<u64>,
 }
 
 /// ffvk against GL on one scene.
@@ -194,6 +197,11 @@ pub(super) fn measure_ffvk(
     let gpu_ms = Spread::of(&gpu);
     let wall_ms = Spread::of(&wall).expect("at least one frame");
     let last = samples.last().and_then(|s| s.pipeline);
+    let covered_pixels = if point.group == Group::Fragment {
+        Some(covered(&renderer.render(&frame)?))
+    } else {
+        None
+    };
     Ok(PointStats {
         warmup: config.warmup,
         frames: config.frames,
@@ -204,7 +212,16 @@ pub(super) fn measure_ffvk(
         vs_invocations: last.map(|p| p.vertex_shader_invocations),
         fs_invocations: last.map(|p| p.fragment_shader_invocations),
         clipping_primitives: last.map(|p| p.clipping_primitives),
+        covered_pixels,
     })
+}
+
+/// The pixels of `image` not at the clear color, read at its top-left corner (the sphere
+/// lies in the middle of the view and never reaches it).
+fn covered(image: &ffvk::Pixels) -> u64 {
+    let rgba = image.rgba();
+    let clear = rgba.get(..4).unwrap_or_default();
+    rgba.chunks_exact(4).filter(|p| *p != clear).count() as u64
 }
 
 /// Fixed-function GL through the GL reference renderer, on the device that runs ffvk.
@@ -279,6 +296,7 @@ impl GlAnchor {
             vs_invocations: None,
             fs_invocations: None,
             clipping_primitives: None,
+            covered_pixels: None,
         })
     }
 }

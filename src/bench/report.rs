@@ -16,7 +16,7 @@ use crate::{write_file, Error, Result};
 // The files.
 
 /// The CSV columns, in order.
-pub const CSV_COLUMNS: [&str; 38] = [
+pub const CSV_COLUMNS: [&str; 39] = [
     "group",
     "engine",
     "mode",
@@ -49,6 +49,7 @@ pub const CSV_COLUMNS: [&str; 38] = [
     "vs_invocations",
     "fs_invocations",
     "clipping_primitives",
+    "covered_pixels",
     "lp_num_threads",
     "device",
     "driver_info",
@@ -106,6 +107,7 @@ pub fn csv(report: &BenchReport) -> String {
             opt(s.vs_invocations),
             opt(s.fs_invocations),
             opt(s.clipping_primitives),
+            opt(s.covered_pixels),
             r.lp_num_threads.clone(),
             r.device.clone(),
             r.driver_info.clone(),
@@ -269,6 +271,16 @@ pub fn markdown(report: &BenchReport) -> String {
     for (title, table) in sections {
         let _ = write!(m, "\n### {title}\n\n{}", table.markdown());
     }
+    if !c.fragment_sizes.is_empty() {
+        let _ = write!(
+            m,
+            "\n### Fragment lighting on a dense mesh ({} vertices, {})\n\n{}\n{}\n",
+            sphere_counts(c.fragment_stacks).0,
+            lights_text(c.fragment_lights),
+            fragment_table(report).markdown(),
+            FRAGMENT_NOTE
+        );
+    }
     if !report.summary.costs.is_empty() {
         let _ = write!(
             m,
@@ -364,6 +376,36 @@ pub fn markdown(report: &BenchReport) -> String {
             "- per-vertex lighting's added cost (vertex-mode minus unlit ns per vertex, from the density fits): ffvk {ffvk:.0} ns{}",
             added(Engine::Gl).map_or(String::new(), |gl| format!(", GL {gl:.0} ns"))
         );
+    }
+    for &size in &report.sweep.fragment_sizes {
+        let at = |mode| {
+            find(&report.results, |p| {
+                p.group == Group::Fragment && p.width == size && p.engine == Engine::Ffvk && p.mode == mode
+            })
+            .map(|r| r.stats.time_ms)
+        };
+        let fragment = find(&report.results, |p| {
+            p.group == Group::Fragment && p.width == size && p.mode == BenchMode::Fragment
+        });
+        let per_pixel = fragment
+            .and_then(|r| r.stats.fs_invocations.zip(r.stats.covered_pixels))
+            .filter(|&(_, covered)| covered > 0)
+            .map(|(n, covered)| n as f64 / covered as f64);
+        if let (Some(f), Some(v), Some(u)) = (
+            at(BenchMode::Fragment),
+            at(BenchMode::Vertex),
+            at(BenchMode::Unlit),
+        ) {
+            let _ = writeln!(
+                m,
+                "- fragment lighting at {size}² ({} vertices, {}): {:.2}× unlit, {:.2}× vertex mode; {} fragment-stage invocations per covered pixel",
+                sphere_counts(report.sweep.fragment_stacks).0,
+                lights_text(report.sweep.fragment_lights),
+                f / u,
+                f / v,
+                per_pixel.map_or("–".into(), |p| format!("{p:.1}"))
+            );
+        }
     }
     m
 }
@@ -652,6 +694,63 @@ fn size_table(report: &BenchReport) -> Table {
     t
 }
 
+/// What the fragment sweep's columns mean.
+const FRAGMENT_NOTE: &str = "Covered pixels: those not at the clear color in a frame read back \
+after the measured ones. FS invocations: the fragment mode's pipeline-statistics count, which \
+lavapipe (llvmpipe) makes per 4×4 block a triangle touches, partly covered blocks included; \
+per covered pixel, that count over the covered pixels: the number of times the equation runs \
+for a pixel the image shows.";
+
+/// Fragment lighting on the dense mesh: the three modes' times, the ratios issue 37 sets goals
+/// for, and the fragment stage's invocations per covered pixel.
+fn fragment_table(report: &BenchReport) -> Table {
+    let mut t = Table::new(
+        [
+            "image",
+            "covered pixels",
+            "vertex",
+            "fragment",
+            "unlit",
+            "fragment ÷ unlit",
+            "fragment ÷ vertex",
+            "FS invocations (fragment)",
+            "per covered pixel",
+        ]
+        .map(|h| (h, Align::Right)),
+    );
+    for &size in &report.sweep.fragment_sizes {
+        let at = |mode| {
+            find(&report.results, |p| {
+                p.group == Group::Fragment && p.width == size && p.engine == Engine::Ffvk && p.mode == mode
+            })
+        };
+        let (vertex, fragment, unlit) = (
+            at(BenchMode::Vertex),
+            at(BenchMode::Fragment),
+            at(BenchMode::Unlit),
+        );
+        let time = |r: Option<&BenchResult>| r.map(|r| r.stats.time_ms);
+        let over = |a: Option<f64>, b: Option<f64>| ratio(a.zip(b).map(|(a, b)| a / b));
+        let covered = fragment.and_then(|r| r.stats.covered_pixels);
+        let invocations = fragment.and_then(|r| r.stats.fs_invocations);
+        t.row([
+            format!("{size}²"),
+            count_or_dash(covered),
+            cell(vertex),
+            cell(fragment),
+            cell(unlit),
+            over(time(fragment), time(unlit)),
+            over(time(fragment), time(vertex)),
+            count_or_dash(invocations),
+            over(
+                invocations.map(|n| n as f64),
+                covered.filter(|&c| c > 0).map(|c| c as f64),
+            ),
+        ]);
+    }
+    t
+}
+
 /// The sphere drawn as triangles, lines and points: ffvk's vertex, flat and unlit times, GL's,
 /// and ffvk's over GL's for the two lit modes.
 fn primitives_table(report: &BenchReport, has_gl: bool) -> Table {
@@ -892,6 +991,7 @@ mod tests {
                         vs_invocations: ffvk.then_some(point.vertices),
                         fs_invocations: ffvk.then_some(point.pixels / 2),
                         clipping_primitives: ffvk.then_some(point.triangles),
+                        covered_pixels: ffvk.then_some(point.pixels / 4),
                     },
                     point,
                     lp_num_threads: env.lp_num_threads.clone(),
@@ -971,6 +1071,15 @@ Times are per frame in ms: the median, then the interquartile range; ffvk's from
 | GL_LINES | 0.89 (0.85–0.94) | 0.22 (0.21–0.23) | 0.17 (0.17–0.18) | 1.34 (1.27–1.41) | 0.33 (0.31–0.35) | 0.26 (0.25–0.27) | 0.67 | 0.67 |
 | GL_POINTS | 0.89 (0.85–0.94) | 0.22 (0.21–0.23) | 0.17 (0.17–0.18) | 1.34 (1.27–1.41) | 0.33 (0.31–0.35) | 0.26 (0.25–0.27) | 0.67 | 0.67 |
 
+### Fragment lighting on a dense mesh (91 vertices, 2 directional lights)
+
+| image | covered pixels | vertex | fragment | unlit | fragment ÷ unlit | fragment ÷ vertex | FS invocations (fragment) | per covered pixel |
+| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |
+| 16² | 64 | 1.19 (1.13–1.25) | 0.83 (0.79–0.87) | 0.11 (0.10–0.12) | 7.50 | 0.69 | 128 | 2.00 |
+| 24² | 144 | 1.26 (1.19–1.32) | 1.79 (1.70–1.88) | 0.17 (0.17–0.18) | 10.25 | 1.42 | 288 | 2.00 |
+
+Covered pixels: those not at the clear color in a frame read back after the measured ones. FS invocations: the fragment mode's pipeline-statistics count, which lavapipe (llvmpipe) makes per 4×4 block a triangle touches, partly covered blocks included; per covered pixel, that count over the covered pixels: the number of times the equation runs for a pixel the image shows.
+
 ### What a vertex, a pixel and a light cost
 
 | engine | mode | ns / vertex | ns / pixel | ns / light | ns / light / evaluation | fixed ms |
@@ -995,6 +1104,8 @@ Least-squares slopes of the sweeps above, in ns: per vertex drawn (density sweep
 - ffvk vertex mode ÷ the GL driver's fixed-function GL (llvmpipe (LLVM 15.0.6, 256 bits)) (host time per frame, geometric mean over 10 scenes): 0.67
 - ffvk vertex mode ÷ GL per scene: 0.67 to 0.67; 0 of 10 scenes above 1.0
 - per-vertex lighting's added cost (vertex-mode minus unlit ns per vertex, from the density fits): ffvk 7900 ns, GL 11850 ns
+- fragment lighting at 16² (91 vertices, 2 directional lights): 7.50× unlit, 0.69× vertex mode; 2.0 fragment-stage invocations per covered pixel
+- fragment lighting at 24² (91 vertices, 2 directional lights): 10.25× unlit, 1.42× vertex mode; 2.0 fragment-stage invocations per covered pixel
 "#;
 
     #[test]
@@ -1071,7 +1182,7 @@ Least-squares slopes of the sweeps above, in ns: per vertex drawn (density sweep
         assert!(!m.contains("GL smooth") && !m.contains("÷ GL"), "{m}");
         // Every line of a table has as many cells as its headings.
         let tables: Vec<&str> = m.split("\n\n").filter(|b| b.starts_with('|')).collect();
-        assert_eq!(tables.len(), 7, "{m}");
+        assert_eq!(tables.len(), 8, "{m}");
         for table in tables {
             let cells: Vec<usize> = table.lines().map(|l| l.matches(" |").count()).collect();
             assert!(cells.iter().all(|&n| n == cells[0]), "{table}");

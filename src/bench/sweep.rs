@@ -64,6 +64,13 @@ pub struct SweepConfig {
     /// Draws per frame of the draws sweep ([`super::draws`]), each with its own material; empty
     /// leaves the sweep out.
     pub draw_counts: Vec<u32>,
+    /// The fragment sweep's mesh (sphere stacks): per-fragment lighting against per-vertex
+    /// lighting and the unlit floor on a dense mesh, issue 37's baseline.
+    pub fragment_stacks: u32,
+    /// Directional lights in the fragment sweep.
+    pub fragment_lights: usize,
+    /// Image sides of the fragment sweep; empty leaves it out.
+    pub fragment_sizes: Vec<u32>,
 }
 
 impl SweepConfig {
@@ -90,6 +97,9 @@ impl SweepConfig {
             draw_counts: DRAW_COUNTS.to_vec(),
             draws: 1,
             batch: false,
+            fragment_stacks: 512,
+            fragment_lights: 8,
+            fragment_sizes: vec![1024],
         }
     }
 
@@ -105,6 +115,7 @@ impl SweepConfig {
             light_counts: vec![1, 2, 4, 8, 16],
             base_stacks: 256,
             size_stacks: 512,
+            fragment_sizes: vec![1024, 2048],
             ..SweepConfig::quick()
         }
     }
@@ -146,6 +157,9 @@ impl SweepConfig {
             draw_counts: vec![1, 16],
             draws: 1,
             batch: false,
+            fragment_stacks: 6,
+            fragment_lights: 2,
+            fragment_sizes: vec![16, 24],
         }
     }
 
@@ -215,7 +229,7 @@ impl SweepConfig {
         if let Some(n) = self
             .light_counts
             .iter()
-            .chain([&self.kind_lights, &self.base_lights])
+            .chain([&self.kind_lights, &self.base_lights, &self.fragment_lights])
             .find(|&&n| n == 0 || n > max_lights)
         {
             return bad(format!("{n} lights: expected 1..={max_lights}"));
@@ -223,6 +237,7 @@ impl SweepConfig {
         if let Some(s) = self
             .sizes
             .iter()
+            .chain(&self.fragment_sizes)
             .chain([&self.base_size])
             .find(|&&s| s == 0 || s > ffvk::scene::MAX_SIZE)
         {
@@ -231,7 +246,7 @@ impl SweepConfig {
         if let Some(s) = self
             .stacks
             .iter()
-            .chain([&self.base_stacks, &self.size_stacks])
+            .chain([&self.base_stacks, &self.size_stacks, &self.fragment_stacks])
             .find(|&&s| !(2..=2048).contains(&s))
         {
             return bad(format!("{s} sphere stacks: expected 2..=2048"));
@@ -261,6 +276,9 @@ pub enum Group {
     Kind,
     /// Primitives: the sphere as triangles, as the lines of its triangles' edges, as points.
     Primitives,
+    /// Fragment lighting's cost on a dense mesh: fragment, vertex and unlit at a few image
+    /// sizes, with the pixels the sphere covers (issue 37's baseline).
+    Fragment,
 }
 
 /// What the sphere is drawn as.
@@ -662,6 +680,20 @@ pub fn points(config: &SweepConfig) -> Vec<Point> {
                     Variant::FixedFunction,
                 )));
             }
+        }
+    }
+    // Fragment lighting's cost on the dense mesh, ffvk's modes only (GL has no fragment mode).
+    let (vertices, triangles) = sphere_counts(config.fragment_stacks);
+    for &size in &config.fragment_sizes {
+        for mode in [BenchMode::Vertex, BenchMode::Fragment, BenchMode::Unlit] {
+            let mut point = base(Group::Fragment, Engine::Ffvk, mode, Variant::Specialized);
+            point.stacks = config.fragment_stacks;
+            (point.vertices, point.triangles) = (vertices, triangles);
+            (point.width, point.height, point.pixels) = (size, size, size as u64 * size as u64);
+            if mode != BenchMode::Unlit {
+                point.lights = config.fragment_lights;
+            }
+            out.push(point);
         }
     }
     out

@@ -5,7 +5,7 @@
 use ffvk::vk::Validation;
 use ffvk::RendererOptions;
 use ffvk_cli::bench::{
-    crossover, points, run_sweep, write_outputs, Engine, Spread, SweepConfig, CSV_COLUMNS,
+    crossover, points, run_sweep, write_outputs, Engine, Group, Spread, SweepConfig, CSV_COLUMNS,
 };
 use indicatif::ProgressBar;
 
@@ -57,6 +57,15 @@ fn a_tiny_sweep_runs_every_point_and_writes_csv_json_and_plots() {
             );
             assert!(s.fs_invocations.is_some_and(|n| n > 0), "{r:?}");
         }
+        // The fragment sweep counts the pixels its sphere covers: some, not all.
+        if r.point.group == Group::Fragment {
+            assert!(
+                s.covered_pixels.is_some_and(|c| c > 0 && c < r.point.pixels),
+                "{r:?}"
+            );
+        } else {
+            assert_eq!(s.covered_pixels, None, "{r:?}");
+        }
         assert_eq!(r.device, report.env.device);
         assert!(!r.lp_num_threads.is_empty() && !r.mesa_version.is_empty());
     }
@@ -74,7 +83,12 @@ fn a_tiny_sweep_runs_every_point_and_writes_csv_json_and_plots() {
         "{d:?}"
     );
     assert!(d.new_key_create_ms.median > 0.0, "{d:?}");
-    assert!(ffvk_cli::bench::markdown(&report).contains("### Recording draws (host)"));
+    let markdown = ffvk_cli::bench::markdown(&report);
+    assert!(markdown.contains("### Recording draws (host)"));
+    assert!(
+        markdown.contains("### Fragment lighting on a dense mesh"),
+        "{markdown}"
+    );
     // The draws sweep: every count of both quad shapes and the spheres' frame, in every mode,
     // ffvk and GL, each frame measured.
     assert_eq!(
