@@ -390,7 +390,7 @@ pub fn markdown(report: &BenchReport) -> String {
         let per_pixel = fragment
             .and_then(|r| r.stats.fs_invocations.zip(r.stats.covered_pixels))
             .filter(|&(_, covered)| covered > 0)
-            .map(|(n, covered)| n as f64 / covered as f64);
+            .map(|(n, covered)| n as f64 / (covered as f64 * f64::from(report.sweep.draws)));
         if let (Some(f), Some(v), Some(u)) = (
             at(BenchMode::Fragment),
             at(BenchMode::Vertex),
@@ -398,7 +398,7 @@ pub fn markdown(report: &BenchReport) -> String {
         ) {
             let _ = writeln!(
                 m,
-                "- fragment lighting at {size}² ({} vertices, {}): {:.2}× unlit, {:.2}× vertex mode; {} fragment-stage invocations per covered pixel",
+                "- fragment lighting at {size}² ({} vertices, {}): {:.2}× unlit, {:.2}× vertex mode; {} fragment-stage invocations per covered pixel and draw",
                 sphere_counts(report.sweep.fragment_stacks).0,
                 lights_text(report.sweep.fragment_lights),
                 f / u,
@@ -696,10 +696,11 @@ fn size_table(report: &BenchReport) -> Table {
 
 /// What the fragment sweep's columns mean.
 const FRAGMENT_NOTE: &str = "Covered pixels: those not at the clear color in a frame read back \
-after the measured ones. FS invocations: the fragment mode's pipeline-statistics count, which \
-lavapipe (llvmpipe) makes per 4×4 block a triangle touches, partly covered blocks included; \
-per covered pixel, that count over the covered pixels: the number of times the equation runs \
-for a pixel the image shows.";
+after the measured ones. FS invocations: the fragment mode's pipeline-statistics count of a \
+frame, which lavapipe (llvmpipe) makes per 4×4 block a triangle touches, partly covered blocks \
+included (a GPU counts about one per pixel and draw); per covered pixel: that count over the \
+covered pixels and the draws of the sphere in a frame, the number of times the equation runs for \
+a pixel the image shows.";
 
 /// Fragment lighting on the dense mesh: the three modes' times, the ratios issue 37 sets goals
 /// for, and the fragment stage's invocations per covered pixel.
@@ -744,7 +745,9 @@ fn fragment_table(report: &BenchReport) -> Table {
             count_or_dash(invocations),
             over(
                 invocations.map(|n| n as f64),
-                covered.filter(|&c| c > 0).map(|c| c as f64),
+                covered
+                    .filter(|&c| c > 0)
+                    .map(|c| c as f64 * f64::from(report.sweep.draws)),
             ),
         ]);
     }
@@ -1078,7 +1081,7 @@ Times are per frame in ms: the median, then the interquartile range; ffvk's from
 | 16² | 64 | 1.19 (1.13–1.25) | 0.83 (0.79–0.87) | 0.11 (0.10–0.12) | 7.50 | 0.69 | 128 | 2.00 |
 | 24² | 144 | 1.26 (1.19–1.32) | 1.79 (1.70–1.88) | 0.17 (0.17–0.18) | 10.25 | 1.42 | 288 | 2.00 |
 
-Covered pixels: those not at the clear color in a frame read back after the measured ones. FS invocations: the fragment mode's pipeline-statistics count, which lavapipe (llvmpipe) makes per 4×4 block a triangle touches, partly covered blocks included; per covered pixel, that count over the covered pixels: the number of times the equation runs for a pixel the image shows.
+Covered pixels: those not at the clear color in a frame read back after the measured ones. FS invocations: the fragment mode's pipeline-statistics count of a frame, which lavapipe (llvmpipe) makes per 4×4 block a triangle touches, partly covered blocks included (a GPU counts about one per pixel and draw); per covered pixel: that count over the covered pixels and the draws of the sphere in a frame, the number of times the equation runs for a pixel the image shows.
 
 ### What a vertex, a pixel and a light cost
 
@@ -1104,8 +1107,8 @@ Least-squares slopes of the sweeps above, in ns: per vertex drawn (density sweep
 - ffvk vertex mode ÷ the GL driver's fixed-function GL (llvmpipe (LLVM 15.0.6, 256 bits)) (host time per frame, geometric mean over 10 scenes): 0.67
 - ffvk vertex mode ÷ GL per scene: 0.67 to 0.67; 0 of 10 scenes above 1.0
 - per-vertex lighting's added cost (vertex-mode minus unlit ns per vertex, from the density fits): ffvk 7900 ns, GL 11850 ns
-- fragment lighting at 16² (91 vertices, 2 directional lights): 7.50× unlit, 0.69× vertex mode; 2.0 fragment-stage invocations per covered pixel
-- fragment lighting at 24² (91 vertices, 2 directional lights): 10.25× unlit, 1.42× vertex mode; 2.0 fragment-stage invocations per covered pixel
+- fragment lighting at 16² (91 vertices, 2 directional lights): 7.50× unlit, 0.69× vertex mode; 2.0 fragment-stage invocations per covered pixel and draw
+- fragment lighting at 24² (91 vertices, 2 directional lights): 10.25× unlit, 1.42× vertex mode; 2.0 fragment-stage invocations per covered pixel and draw
 "#;
 
     #[test]
