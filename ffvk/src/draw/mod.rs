@@ -6,6 +6,8 @@
 pub mod gl_primitives;
 pub mod lighting;
 pub mod pipeline;
+mod raster;
 pub mod record;
 mod ring;
+mod target;
 pub mod texture;

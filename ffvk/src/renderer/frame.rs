@@ -1,0 +1,287 @@
+//! What a frame is made of and gives back: uploaded meshes ([`Mesh`]), draws ([`Draw`]),
+//! frames ([`Frame`]), their measurements ([`FrameStats`], [`PipelineStats`]) and the pixels
+//! read back ([`Pixels`]).
+
+use ash::vk;
+use glam::{Mat4, Vec4};
+
+use super::texture::Texture;
+use crate::draw::pipeline::RasterState;
+use crate::draw::record::Topology;
+use crate::gl::state::{Face, LightingState};
+use crate::vk::Buffer;
+
+#[cfg(doc)]
+use super::Renderer;
+#[cfg(doc)]
+use crate::draw::lighting::Lighting;
+#[cfg(doc)]
+use crate::error::{Error, MeshError};
+#[cfg(doc)]
+use crate::mesh::MeshData;
+
+/// A mesh uploaded to the renderer's device. Drawing it with another renderer is an error.
+pub struct Mesh {
+    pub(super) vertices: Buffer,
+    pub(super) indices: Buffer,
+    pub(super) index_count: u32,
+    pub(super) vertex_count: u32,
+    /// `vertices` at offset 0, as a draw binds it (kept so draws can borrow it).
+    pub(super) vertex_binding: (vk::Buffer, u64),
+    /// How its indices make primitives.
+    pub(super) topology: Topology,
+}
+
+impl Mesh {
+    /// How the mesh's indices make primitives, as uploaded.
+    pub fn topology(&self) -> Topology {
+        self.topology
+    }
+    /// Indices uploaded.
+    pub fn index_count(&self) -> u32 {
+        self.index_count
+    }
+    /// Vertices uploaded.
+    pub fn vertex_count(&self) -> u32 {
+        self.vertex_count
+    }
+}
+
+/// One draw: a mesh, its matrices (GL conventions) and the lighting state it captures.
+#[derive(Clone, Copy)]
+#[non_exhaustive]
+pub struct Draw<'a> {
+    /// Uploaded by the renderer that draws it, else [`MeshError::ForeignMesh`].
+    pub mesh: &'a Mesh,
+    /// Object to eye space. Eye space: viewer at the origin looking down -z, y up.
+    pub modelview: Mat4,
+    /// GL projection (clip z in [-w, w]); ffvk converts it to Vulkan's clip space.
+    pub projection: Mat4,
+    /// The lighting state, checked when the frame is drawn: a value GL would reject, a
+    /// singular modelview with lighting on, or an enabled positional light with all three
+    /// attenuations 0 fails the frame with [`Error::State`].
+    pub state: LightingState,
+    /// `GL_CULL_FACE` with `glCullFace(face)`: `None` (GL's default) draws both faces;
+    /// `Some(Face::Back)` drops the triangles that are clockwise on screen.
+    pub cull_face: Option<Face>,
+    /// The texture bound to `GL_TEXTURE_2D` (uploaded by the same renderer): sampled when
+    /// `state.texture.enabled` is on and the texture is complete. `None`: GL's texture 0,
+    /// which textures nothing.
+    pub texture: Option<&'a Texture>,
+    /// How the mesh's indices make primitives: the mesh's own ([`MeshData::topology`]) unless
+    /// [`Draw::with_topology`] says otherwise (see [`Topology`]).
+    pub topology: Topology,
+    /// `glPointSize` and `glLineWidth`, in pixels (1 and 1, GL's defaults; see
+    /// [`RasterState::point_size`]).
+    pub point_size: f32,
+    /// `glLineWidth`, in pixels.
+    pub line_width: f32,
+}
+
+impl<'a> Draw<'a> {
+    /// A draw of `mesh` with both faces drawn (GL's default: culling off).
+    pub fn new(mesh: &'a Mesh, modelview: Mat4, projection: Mat4, state: LightingState) -> Self {
+        Draw {
+            mesh,
+            modelview,
+            projection,
+            state,
+            cull_face: None,
+            texture: None,
+            topology: mesh.topology,
+            point_size: 1.0,
+            line_width: 1.0,
+        }
+    }
+
+    /// This draw with `glPointSize(size)`.
+    #[must_use]
+    pub fn with_point_size(mut self, size: f32) -> Self {
+        self.point_size = size;
+        self
+    }
+
+    /// This draw with `glLineWidth(width)`.
+    #[must_use]
+    pub fn with_line_width(mut self, width: f32) -> Self {
+        self.line_width = width;
+        self
+    }
+
+    /// This draw with its mesh's indices read as `topology` (`GL_POINTS`, `GL_LINES`, …).
+    #[must_use]
+    pub fn with_topology(mut self, topology: Topology) -> Self {
+        self.topology = topology;
+        self
+    }
+
+    /// This draw with `glCullFace(face)` and `GL_CULL_FACE` on (`None`: off).
+    #[must_use]
+    pub fn with_cull_face(mut self, face: Option<Face>) -> Self {
+        self.cull_face = face;
+        self
+    }
+
+    /// This draw with `texture` bound to `GL_TEXTURE_2D` (`None`: texture object 0).
+    #[must_use]
+    pub fn with_texture(mut self, texture: Option<&'a Texture>) -> Self {
+        self.texture = texture;
+        self
+    }
+
+    /// Whether this draw samples its texture: bound, complete, and `GL_TEXTURE_2D` on.
+    pub fn textured(&self) -> bool {
+        self.state.texture.enabled && self.texture.is_some_and(Texture::is_complete)
+    }
+
+    /// The raster state of this draw in `frame`: GL's defaults, with the frame's depth test
+    /// and the draw's culling.
+    pub(super) fn raster(&self, frame: &Frame) -> RasterState {
+        RasterState {
+            depth_test: frame.depth_test,
+            cull_mode: match self.cull_face {
+                None => vk::CullModeFlags::NONE,
+                Some(Face::Front) => vk::CullModeFlags::FRONT,
+                Some(Face::Back) => vk::CullModeFlags::BACK,
+                Some(Face::FrontAndBack) => vk::CullModeFlags::FRONT_AND_BACK,
+            },
+            ..RasterState::default()
+        }
+        .with_point_size(self.point_size)
+        .with_line_width(self.line_width)
+    }
+}
+
+/// One image: its size, clear color, depth test and draws, in order.
+#[derive(Clone)]
+#[non_exhaustive]
+pub struct Frame<'a> {
+    /// Width in pixels, 1..=the device's `maxImageDimension2D` (else [`Error::InvalidSize`]).
+    pub width: u32,
+    /// Height in pixels, same range as `width`.
+    pub height: u32,
+    /// RGBA the image is cleared to before the draws; stored as 8-bit UNORM, so components
+    /// are clamped to [0, 1]. [`Frame::new`] uses opaque black.
+    pub clear_color: Vec4,
+    /// GL_DEPTH_TEST with LESS against a depth buffer cleared to 1.
+    pub depth_test: bool,
+    /// Recorded in order; with `depth_test` off, later draws cover earlier ones.
+    pub draws: Vec<Draw<'a>>,
+}
+
+impl<'a> Frame<'a> {
+    /// An empty frame of `width` × `height` pixels, cleared to (0, 0, 0, 1), depth test on.
+    /// The size is checked only when the frame is drawn.
+    pub fn new(width: u32, height: u32) -> Self {
+        Frame {
+            width,
+            height,
+            clear_color: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            depth_test: true,
+            draws: Vec::new(),
+        }
+    }
+}
+
+/// What one measured frame cost, from queries around its rendering pass (clears and draws;
+/// not the readback copy).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[non_exhaustive]
+pub struct FrameStats {
+    /// Device time between the timestamp written before the rendering pass and the one
+    /// written after it, in nanoseconds; `None` when the queue has no timestamps.
+    pub gpu_ns: Option<f64>,
+    /// Host time from `vkQueueSubmit` to the fence, in nanoseconds (with the readback copy
+    /// when the frame has one).
+    pub wall_ns: f64,
+    /// The pipeline statistics of the rendering pass; `None` when the device lacks
+    /// `pipelineStatisticsQuery`.
+    pub pipeline: Option<PipelineStats>,
+    /// Host time spent recording the frame's draws ([`Lighting::draw`] for each: state packed
+    /// and written, pipeline found, binds and draw recorded), in nanoseconds. Pipelines are
+    /// made before recording starts, so this is the warm cost.
+    pub record_ns: f64,
+}
+
+/// The counters of one pipeline-statistics query, summed over every draw of the pass.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[non_exhaustive]
+pub struct PipelineStats {
+    /// Vertices the input assembler read (`INPUT_ASSEMBLY_VERTICES`).
+    pub input_assembly_vertices: u64,
+    /// Triangles it assembled (`INPUT_ASSEMBLY_PRIMITIVES`).
+    pub input_assembly_primitives: u64,
+    /// Vertex shader runs (`VERTEX_SHADER_INVOCATIONS`); may be fewer than the vertices read
+    /// where the implementation reuses results for repeated indices.
+    pub vertex_shader_invocations: u64,
+    /// Primitives that reached the clipping stage (`CLIPPING_INVOCATIONS`).
+    pub clipping_invocations: u64,
+    /// Primitives that left it (`CLIPPING_PRIMITIVES`).
+    pub clipping_primitives: u64,
+    /// Fragment shader runs (`FRAGMENT_SHADER_INVOCATIONS`): where per-fragment lighting
+    /// spends its time.
+    pub fragment_shader_invocations: u64,
+}
+
+/// An image read back from the renderer: RGBA8, rows top to bottom, no padding.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct Pixels {
+    // Private: `rgba` holds exactly width × height × 4 bytes (read_image makes it so).
+    pub(super) width: u32,
+    pub(super) height: u32,
+    pub(super) rgba: Vec<u8>,
+}
+
+impl Pixels {
+    /// Width in pixels.
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// Height in pixels.
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    /// `width * height * 4` bytes, R, G, B, A per pixel, row 0 at the top of the view.
+    pub fn rgba(&self) -> &[u8] {
+        &self.rgba
+    }
+
+    /// The bytes of [`rgba`](Pixels::rgba), taken.
+    pub fn into_rgba(self) -> Vec<u8> {
+        self.rgba
+    }
+
+    /// The RGBA value at (x, y), from the top-left corner; `None` outside the image.
+    pub fn pixel(&self, x: u32, y: u32) -> Option<[u8; 4]> {
+        if x >= self.width || y >= self.height {
+            return None;
+        }
+        let at = (y as usize * self.width as usize + x as usize) * 4;
+        self.rgba.get(at..at + 4).map(|p| [p[0], p[1], p[2], p[3]])
+    }
+}
+
+#[cfg(feature = "images")]
+impl Pixels {
+    /// The same pixels as an `image` crate buffer (feature `images`).
+    #[allow(
+        clippy::expect_used,
+        reason = "Pixels' fields are private and read_image makes exactly width * height * 4 bytes"
+    )]
+    pub fn into_rgba_image(self) -> image::RgbaImage {
+        image::RgbaImage::from_raw(self.width, self.height, self.rgba)
+            .expect("Pixels holds width * height * 4 bytes")
+    }
+}
+
+#[cfg(feature = "images")]
+impl From<Pixels> for image::RgbaImage {
+    fn from(p: Pixels) -> Self {
+        p.into_rgba_image()
+    }
+}
