@@ -29,6 +29,7 @@ mod plots;
 mod report;
 mod suite;
 mod sweep;
+mod tables;
 
 use std::collections::hash_map::Entry;
 use std::collections::HashMap;

@@ -7,9 +7,12 @@ use std::path::{Path, PathBuf};
 use serde::Serialize;
 
 use super::measure::Spread;
-use super::sweep::{sphere_counts, BenchMode, Engine, Group, LightKind, Point, Primitive, Variant, GL_MODES};
-use super::{BenchReport, BenchResult, DrawCost};
-use crate::table::{Align, Table};
+use super::sweep::{sphere_counts, BenchMode, Engine, Group, Point};
+use super::tables::{
+    costs_table, density_table, draw_cost_note, draw_cost_table, environment, fragment_table,
+    light_count_table, light_kind_table, primitives_table, size_table, COSTS_NOTE, FRAGMENT_NOTE,
+};
+use super::{BenchReport, BenchResult};
 use crate::{write_file, Error, Result};
 
 // ---------------------------------------------------------------------------------------------
@@ -123,7 +126,7 @@ pub fn csv(report: &BenchReport) -> String {
 }
 
 /// The serde name of a unit enum variant ("density", "ffvk").
-fn serde_name<T: Serialize>(value: &T) -> String {
+pub(super) fn serde_name<T: Serialize>(value: &T) -> String {
     match serde_json::to_value(value) {
         Ok(serde_json::Value::String(s)) => s,
         _ => String::new(),
@@ -163,7 +166,7 @@ pub(super) fn lights_text(n: usize) -> String {
     format!("{n} directional light{}", if n == 1 { "" } else { "s" })
 }
 
-fn ms(v: f64) -> String {
+pub(super) fn ms(v: f64) -> String {
     if v >= 100.0 {
         format!("{v:.0}")
     } else if v >= 10.0 {
@@ -174,7 +177,7 @@ fn ms(v: f64) -> String {
 }
 
 /// "median (p25–p75)" of a result's main time.
-fn cell(r: Option<&BenchResult>) -> String {
+pub(super) fn cell(r: Option<&BenchResult>) -> String {
     match r {
         None => "–".into(),
         Some(r) => {
@@ -184,7 +187,7 @@ fn cell(r: Option<&BenchResult>) -> String {
     }
 }
 
-fn find(results: &[BenchResult], keep: impl Fn(&Point) -> bool) -> Option<&BenchResult> {
+pub(super) fn find(results: &[BenchResult], keep: impl Fn(&Point) -> bool) -> Option<&BenchResult> {
     results.iter().find(|r| keep(&r.point))
 }
 
@@ -199,12 +202,12 @@ pub(super) fn count(n: f64) -> String {
 }
 
 /// "–" for nothing, else the ratio to two decimals.
-fn ratio(r: Option<f64>) -> String {
+pub(super) fn ratio(r: Option<f64>) -> String {
     r.map_or("–".into(), |r| format!("{r:.2}"))
 }
 
 /// "–" for nothing, else the count.
-fn count_or_dash(n: Option<u64>) -> String {
+pub(super) fn count_or_dash(n: Option<u64>) -> String {
     n.map_or("–".into(), |n| count(n as f64))
 }
 
@@ -410,511 +413,10 @@ pub fn markdown(report: &BenchReport) -> String {
     m
 }
 
-const COSTS_NOTE: &str = "Least-squares slopes of the sweeps above, in ns: per vertex drawn \
-(density sweep, vertices × draws per frame), per pixel drawn (size sweep, pixels × draws), per \
-light enabled (light sweep) and per light and evaluation of the equation (that slope over the \
-vertices shaded in vertex and flat mode, the fragments shaded in fragment mode); \"fixed\" is \
-the density fit's intercept, an estimate of a frame without geometry. Straight lines through \
-sweeps whose counts grow geometrically follow the largest points: where time is not linear in \
-the count (lavapipe's small frames), read them as rough. Unlit rows show what the pipeline \
-costs without lighting.";
-
-/// The fitted costs of each engine and mode.
-fn costs_table(report: &BenchReport) -> Table {
-    let mut t = Table::new([
-        ("engine", Align::Left),
-        ("mode", Align::Left),
-        ("ns / vertex", Align::Right),
-        ("ns / pixel", Align::Right),
-        ("ns / light", Align::Right),
-        ("ns / light / evaluation", Align::Right),
-        ("fixed ms", Align::Right),
-    ]);
-    // Three significant digits or so, whatever the scale (rounded first, so that a fit's
-    // 99.9999 reads 100).
-    let ns = |v: Option<f64>| match v.map(|v| (v * 1e3).round() / 1e3) {
-        None => "—".to_string(),
-        Some(v) if v.abs() >= 100.0 => format!("{v:.0}"),
-        Some(v) if v.abs() >= 1.0 => format!("{v:.2}"),
-        Some(v) => format!("{v:.3}"),
-    };
-    for c in &report.summary.costs {
-        t.row([
-            match c.engine {
-                Engine::Ffvk => "ffvk".to_string(),
-                Engine::Gl => "GL".to_string(),
-            },
-            c.mode.name().to_string(),
-            ns(c.ns_per_vertex),
-            ns(c.ns_per_pixel),
-            ns(c.ns_per_light),
-            ns(c.ns_per_light_evaluation),
-            c.fixed_ns.map_or("—".to_string(), |v| format!("{:.3}", v / 1e6)),
-        ]);
-    }
-    t
-}
-
-/// The machine, the drivers, the sweep and the build: one row each, then the notes.
-/// The recording cost: medians with their interquartile range.
-fn draw_cost_table(d: &DrawCost) -> Table {
-    let mut t = Table::new([
-        ("", Align::Left),
-        ("median", Align::Right),
-        ("25–75%", Align::Right),
-    ]);
-    let row = |t: &mut Table, what: String, s: &Spread, digits: usize| {
-        t.row([
-            what,
-            format!("{:.*}", digits, s.median),
-            format!("{:.*}–{:.*}", digits, s.p25, digits, s.p75),
-        ])
-    };
-    row(
-        &mut t,
-        format!(
-            "one warm draw with a state change, µs ({} draws a frame, {} frames)",
-            d.draws, d.frames
-        ),
-        &d.warm_us_per_draw,
-        3,
-    );
-    row(
-        &mut t,
-        "one warm draw that changes only its modelview, µs".into(),
-        &d.modelview_only_us_per_draw,
-        3,
-    );
-    row(
-        &mut t,
-        "packing a whole draw alone, its lights included (DrawBlock::new), µs".into(),
-        &d.pack_us_per_draw,
-        3,
-    );
-    row(
-        &mut t,
-        "Lighting::draw_run on a caller's device, one state shared, a material and modelview per draw, µs"
-            .into(),
-        &d.run_own_values_us_per_draw,
-        3,
-    );
-    row(
-        &mut t,
-        "Lighting::draw_run, one state shared, only the modelview per draw, µs".into(),
-        &d.run_modelview_only_us_per_draw,
-        3,
-    );
-    row(
-        &mut t,
-        "Lighting::draw_run, a whole state per draw, µs".into(),
-        &d.run_state_each_us_per_draw,
-        3,
-    );
-    row(
-        &mut t,
-        "a new specialization key: creating its pipeline, ms".into(),
-        &d.new_key_create_ms,
-        2,
-    );
-    row(
-        &mut t,
-        "a new specialization key: extra time of its first frame, ms".into(),
-        &d.new_key_first_draw_ms,
-        2,
-    );
-    t
-}
-
-/// What dominates the warm draw.
-fn draw_cost_note(d: &DrawCost) -> String {
-    let (all, pack) = (d.warm_us_per_draw.median, d.pack_us_per_draw.median);
-    let share = if all > 0.0 { 100.0 * pack / all } else { 0.0 };
-    format!(
-        "Packing a whole draw alone (normal matrix, clip conversion, sixteen lights checked and \
-         packed) takes {share:.0}% of a warm draw's time. A draw whose state (lights, light \
-         model, switches, projection) equals the draw before's reuses its state block and \
-         pipeline (here every draw: each has its own material under the same lights), so it \
-         checks and writes only its 256-byte record: materials, current color, modelview and \
-         normal matrix. The first two rows go through the Renderer, whose frames hold a whole \
-         state per draw (it compares each with the one before); the draw_run rows are what an \
-         emulation layer pays recording into its own command buffer, each draw a command of its \
-         own (a triangle each, so none merge): with one state borrowed by every draw, the \
-         comparison is skipped.\n"
-    )
-}
-
-fn environment(report: &BenchReport) -> Table {
-    let e = &report.env;
-    let c = &report.sweep;
-    let mut rows = vec![
-        ("device", format!("{} ({})", e.device, e.driver)),
-        (
-            "driver",
-            // Mesa's driver_info already names its version; other drivers' is their own.
-            if e.mesa_version.is_empty() || e.driver_info.contains(&e.mesa_version) {
-                e.driver_info.clone()
-            } else {
-                format!("{} (Mesa {})", e.driver_info, e.mesa_version)
-            },
-        ),
-    ];
-    if let (Some(r), Some(v)) = (&e.gl_renderer, &e.gl_version) {
-        rows.push(("GL anchor", format!("{r}, GL {v} (EGL)")));
-    }
-    let heap = if c.malloc_no_trim {
-        "freed memory kept (--malloc-no-trim: glibc M_TRIM_THRESHOLD = max, M_TOP_PAD = 256 MiB)"
-    } else {
-        "glibc defaults (freed memory trimmed)"
-    };
-    let load = |l: Option<f64>| l.map_or("?".into(), |l| format!("{l:.2}"));
-    let build = if e.optimized_build {
-        "optimized"
-    } else {
-        "debug (numbers not representative)"
-    };
-    if e.uses_lp_threads() {
-        rows.push(("LP_NUM_THREADS", e.lp_num_threads.clone()));
-    }
-    rows.extend([
-        ("heap", heap.into()),
-        ("CPU", format!("{} ({} CPUs)", e.cpu, e.cpus)),
-        (
-            "load average (1 min)",
-            format!("{} before, {} after", load(e.load_before), load(e.load_after)),
-        ),
-        (
-            "sweep",
-            format!(
-                "{} — {} warm-up + {} measured frames per point{}; image {}² but in the size \
-                 sweep; {} vertices in the size sweep, {} in the light sweeps{}",
-                c.name,
-                c.warmup,
-                c.frames,
-                if c.batch { " (in one submission)" } else { "" },
-                c.base_size,
-                sphere_counts(c.size_stacks).0,
-                sphere_counts(c.base_stacks).0,
-                if c.draws > 1 {
-                    format!("; {} draws of the mesh per frame, each lit in full", c.draws)
-                } else {
-                    String::new()
-                }
-            ),
-        ),
-        (
-            "build",
-            format!(
-                "ffvk {}, {build}{}",
-                e.ffvk_version,
-                if e.validation { ", validation layer on" } else { "" }
-            ),
-        ),
-    ]);
-    rows.extend(report.notes.iter().map(|n| ("note", n.clone())));
-
-    let mut t = Table::new([("", Align::Left), ("", Align::Left)]);
-    for (key, value) in rows {
-        t.row([key.to_string(), value]);
-    }
-    t
-}
-
-/// Time against vertex count: ffvk's modes and vertex-shader invocations, then GL's modes and
-/// the ratio of ffvk's vertex mode to GL's.
-fn density_table(report: &BenchReport, has_gl: bool) -> Table {
-    let spec = Variant::Specialized;
-    let mut t = Table::new(
-        ["vertices", "triangles"]
-            .into_iter()
-            .chain(BenchMode::ALL.map(BenchMode::name))
-            .chain(["VS invocations (vertex)"])
-            .map(|h| (h, Align::Right)),
-    );
-    if has_gl {
-        for h in ["GL smooth", "GL flat", "GL unlit", "ffvk vertex ÷ GL"] {
-            t.column(h, Align::Right);
-        }
-    }
-    for &stacks in &report.sweep.stacks {
-        let at = |engine, mode, variant| {
-            find(&report.results, |p| {
-                p.group == Group::Density
-                    && p.stacks == stacks
-                    && p.engine == engine
-                    && p.mode == mode
-                    && p.variant == variant
-            })
-        };
-        let (v, triangles) = sphere_counts(stacks);
-        let mut row = vec![count(v as f64), count(triangles as f64)];
-        row.extend(BenchMode::ALL.map(|mode| cell(at(Engine::Ffvk, mode, spec))));
-        row.push(count_or_dash(
-            at(Engine::Ffvk, BenchMode::Vertex, spec).and_then(|r| r.stats.vs_invocations),
-        ));
-        if has_gl {
-            row.extend(GL_MODES.map(|mode| cell(at(Engine::Gl, mode, Variant::FixedFunction))));
-            let gl = report
-                .summary
-                .gl_ratios
-                .iter()
-                .find(|r| r.group == Group::Density && r.mode == BenchMode::Vertex && r.vertices == v);
-            row.push(ratio(gl.map(|r| r.ratio)));
-        }
-        t.row(row);
-    }
-    t
-}
-
-/// Time against pixel count: ffvk's modes and fragment-shader invocations.
-fn size_table(report: &BenchReport) -> Table {
-    let mut t = Table::new(
-        ["image", "pixels"]
-            .into_iter()
-            .chain(BenchMode::ALL.map(BenchMode::name))
-            .chain(["FS invocations (fragment)"])
-            .map(|h| (h, Align::Right)),
-    );
-    for &size in &report.sweep.sizes {
-        let at = |mode| {
-            find(&report.results, |p| {
-                p.group == Group::Size
-                    && p.width == size
-                    && p.engine == Engine::Ffvk
-                    && p.mode == mode
-                    && p.variant == Variant::Specialized
-            })
-        };
-        let mut row = vec![format!("{size}²"), count(size as f64 * size as f64)];
-        row.extend(BenchMode::ALL.map(|mode| cell(at(mode))));
-        row.push(count_or_dash(
-            at(BenchMode::Fragment).and_then(|r| r.stats.fs_invocations),
-        ));
-        t.row(row);
-    }
-    t
-}
-
-/// What the fragment sweep's columns mean.
-const FRAGMENT_NOTE: &str = "Covered pixels: those not at the clear color in a frame read back \
-after the measured ones. FS invocations: the fragment mode's pipeline-statistics count of a \
-frame, which lavapipe (llvmpipe) makes per 4×4 block a triangle touches, partly covered blocks \
-included (a GPU counts about one per pixel and draw); per covered pixel: that count over the \
-covered pixels and the draws of the sphere in a frame, the number of times the equation runs for \
-a pixel the image shows.";
-
-/// Fragment lighting on the dense mesh: the three modes' times, the ratios issue 37 sets goals
-/// for, and the fragment stage's invocations per covered pixel.
-fn fragment_table(report: &BenchReport) -> Table {
-    let mut t = Table::new(
-        [
-            "image",
-            "covered pixels",
-            "vertex",
-            "fragment",
-            "unlit",
-            "fragment ÷ unlit",
-            "fragment ÷ vertex",
-            "FS invocations (fragment)",
-            "per covered pixel",
-        ]
-        .map(|h| (h, Align::Right)),
-    );
-    for &size in &report.sweep.fragment_sizes {
-        let at = |mode| {
-            find(&report.results, |p| {
-                p.group == Group::Fragment && p.width == size && p.engine == Engine::Ffvk && p.mode == mode
-            })
-        };
-        let (vertex, fragment, unlit) = (
-            at(BenchMode::Vertex),
-            at(BenchMode::Fragment),
-            at(BenchMode::Unlit),
-        );
-        let time = |r: Option<&BenchResult>| r.map(|r| r.stats.time_ms);
-        let over = |a: Option<f64>, b: Option<f64>| ratio(a.zip(b).map(|(a, b)| a / b));
-        let covered = fragment.and_then(|r| r.stats.covered_pixels);
-        let invocations = fragment.and_then(|r| r.stats.fs_invocations);
-        t.row([
-            format!("{size}²"),
-            count_or_dash(covered),
-            cell(vertex),
-            cell(fragment),
-            cell(unlit),
-            over(time(fragment), time(unlit)),
-            over(time(fragment), time(vertex)),
-            count_or_dash(invocations),
-            over(
-                invocations.map(|n| n as f64),
-                covered
-                    .filter(|&c| c > 0)
-                    .map(|c| c as f64 * f64::from(report.sweep.draws)),
-            ),
-        ]);
-    }
-    t
-}
-
-/// The sphere drawn as triangles, lines and points: ffvk's vertex, flat and unlit times, GL's,
-/// and ffvk's over GL's for the two lit modes.
-fn primitives_table(report: &BenchReport, has_gl: bool) -> Table {
-    let modes = [BenchMode::Vertex, BenchMode::Flat, BenchMode::Unlit];
-    let mut t = Table::new([("drawn as", Align::Left)]);
-    for mode in modes {
-        t.column(mode.name(), Align::Right);
-    }
-    if has_gl {
-        for h in ["GL smooth", "GL flat", "GL unlit", "vertex ÷ GL", "flat ÷ GL"] {
-            t.column(h, Align::Right);
-        }
-    }
-    for primitive in Primitive::ALL {
-        let at = |engine, mode| {
-            find(&report.results, |p| {
-                p.group == Group::Primitives
-                    && p.primitive == primitive
-                    && p.engine == engine
-                    && p.mode == mode
-            })
-        };
-        let mut row = vec![primitive.gl_name().to_string()];
-        row.extend(modes.map(|mode| cell(at(Engine::Ffvk, mode))));
-        if has_gl {
-            row.extend(modes.map(|mode| cell(at(Engine::Gl, mode))));
-            for mode in [BenchMode::Vertex, BenchMode::Flat] {
-                let pair = at(Engine::Ffvk, mode).zip(at(Engine::Gl, mode));
-                row.push(ratio(
-                    pair.map(|(f, g)| f.stats.wall_ms.median / g.stats.wall_ms.median),
-                ));
-            }
-        }
-        t.row(row);
-    }
-    t
-}
-
-/// Time against light count: vertex and fragment mode, specialized and uber, and GL's smooth
-/// shading.
-fn light_count_table(report: &BenchReport, has_gl: bool) -> Table {
-    let mut t = Table::new(
-        [
-            "lights",
-            "vertex specialized",
-            "vertex uber",
-            "uber ÷ spec.",
-            "fragment specialized",
-            "fragment uber",
-            "uber ÷ spec.",
-        ]
-        .map(|h| (h, Align::Right)),
-    );
-    if has_gl {
-        for h in ["GL smooth", "ffvk vertex ÷ GL"] {
-            t.column(h, Align::Right);
-        }
-    }
-    for &lights in &report.sweep.light_counts {
-        let at = |engine, mode, variant| {
-            find(&report.results, |p| {
-                p.group == Group::Lights
-                    && p.lights == lights
-                    && p.engine == engine
-                    && p.mode == mode
-                    && p.variant == variant
-            })
-        };
-        let mut row = vec![lights.to_string()];
-        for mode in [BenchMode::Vertex, BenchMode::Fragment] {
-            let s = at(Engine::Ffvk, mode, Variant::Specialized);
-            let u = at(Engine::Ffvk, mode, Variant::Uber);
-            let uber = s.zip(u).map(|(s, u)| u.stats.time_ms / s.stats.time_ms);
-            row.extend([cell(s), cell(u), ratio(uber)]);
-        }
-        if has_gl {
-            let g = at(Engine::Gl, BenchMode::Vertex, Variant::FixedFunction);
-            let gl = report
-                .summary
-                .gl_ratios
-                .iter()
-                .find(|r| r.group == Group::Lights && r.lights == lights);
-            row.extend([cell(g), ratio(gl.map(|r| r.ratio))]);
-        }
-        t.row(row);
-    }
-    t
-}
-
-/// Time against light kind and viewer: vertex and fragment mode, specialized and uber, and
-/// GL's smooth shading.
-fn light_kind_table(report: &BenchReport, has_gl: bool) -> Table {
-    let mut t = Table::new([("lights", Align::Left), ("viewer", Align::Left)]);
-    for h in [
-        "vertex specialized",
-        "vertex uber",
-        "fragment specialized",
-        "fragment uber",
-    ] {
-        t.column(h, Align::Right);
-    }
-    if has_gl {
-        for h in ["GL smooth", "ffvk vertex ÷ GL"] {
-            t.column(h, Align::Right);
-        }
-    }
-    // What a lighting variant costs: its specialized time over its GL form's.
-    for h in ["vertex vs GL form", "fragment vs GL form"] {
-        t.column(h, Align::Right);
-    }
-    for &kind in &report.sweep.kinds {
-        for local in [false, true] {
-            let at = |engine, mode, variant| {
-                find(&report.results, |p| {
-                    p.group == Group::Kind
-                        && p.light_kind == kind
-                        && p.local_viewer == local
-                        && p.engine == engine
-                        && p.mode == mode
-                        && p.variant == variant
-                })
-            };
-            let viewer = if local { "local" } else { "infinite" };
-            let mut row = vec![kind.name().to_string(), viewer.to_string()];
-            for mode in [BenchMode::Vertex, BenchMode::Fragment] {
-                for variant in [Variant::Specialized, Variant::Uber] {
-                    row.push(cell(at(Engine::Ffvk, mode, variant)));
-                }
-            }
-            if has_gl {
-                let g = at(Engine::Gl, BenchMode::Vertex, Variant::FixedFunction);
-                let f = at(Engine::Ffvk, BenchMode::Vertex, Variant::Specialized);
-                let gl = f
-                    .zip(g)
-                    .map(|(f, g)| f.stats.wall_ms.median / g.stats.wall_ms.median);
-                row.extend([cell(g), ratio(gl)]);
-            }
-            for mode in [BenchMode::Vertex, BenchMode::Fragment] {
-                let time = |kind: LightKind| {
-                    find(&report.results, |p| {
-                        p.group == Group::Kind
-                            && p.light_kind == kind
-                            && p.local_viewer == local
-                            && p.engine == Engine::Ffvk
-                            && p.mode == mode
-                            && p.variant == Variant::Specialized
-                    })
-                    .map(|p| p.stats.wall_ms.median)
-                };
-                let cost = kind.gl_form().and_then(|form| Some(time(kind)? / time(form)?));
-                row.push(ratio(cost));
-            }
-            t.row(row);
-        }
-    }
-    t
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::bench::sweep::Variant;
     use crate::bench::{points, summarize, BenchEnv, LightKind, PointStats, SweepConfig};
 
     /// Made-up times that grow with vertices, pixels and lights, the uber-shader and GL slower;
