@@ -38,9 +38,11 @@
 //! # Ok::<(), ffvk::gl::state::StateError>(())
 //! ```
 
-use glam::{Mat3, Mat4, Vec3, Vec4};
+use glam::{Vec3, Vec4};
 
 use super::texture::{TexEnvMode, TextureUnit};
+
+pub use super::machine::GlState;
 
 /// Lights ffvk evaluates per draw (GL_MAX_LIGHTS). GL requires at least 8.
 pub const MAX_LIGHTS: usize = 16;
@@ -702,7 +704,7 @@ pub(crate) fn finite_vec(parameter: &'static str, values: &[f32]) -> Result<(), 
     }
 }
 
-fn in_range(
+pub(super) fn in_range(
     parameter: &'static str,
     value: f32,
     lo: f32,
@@ -726,7 +728,7 @@ fn in_range(
     Ok(())
 }
 
-fn check_light_scalar(p: &LightParam) -> Result<(), StateError> {
+pub(super) fn check_light_scalar(p: &LightParam) -> Result<(), StateError> {
     match *p {
         LightParam::SpotExponent(v) => in_range("GL_SPOT_EXPONENT", v, 0.0, 128.0, "a value in [0, 128]"),
         LightParam::SpotCutoff(v) => {
@@ -755,218 +757,4 @@ fn check_light_scalar(p: &LightParam) -> Result<(), StateError> {
         }
         _ => Ok(()),
     }
-}
-
-/// The fixed-function state machine: the lighting state plus the current modelview matrix,
-/// with GL's entry points. Start from [`GlState::new`] for GL's initial state.
-#[derive(Debug, Clone, PartialEq)]
-#[non_exhaustive]
-pub struct GlState {
-    /// The state a draw captures.
-    pub lighting: LightingState,
-    /// The modelview matrix in force (glLoadMatrix / glMultMatrix).
-    pub modelview: Mat4,
-}
-
-impl Default for GlState {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-
-impl GlState {
-    /// GL's initial state: identity modelview, every default of table 2.10.
-    pub fn new() -> Self {
-        GlState {
-            lighting: LightingState::default(),
-            modelview: Mat4::IDENTITY,
-        }
-    }
-
-    /// glLoadMatrix on the MODELVIEW stack.
-    pub fn load_modelview(&mut self, m: Mat4) -> Result<(), StateError> {
-        finite_vec("modelview matrix", &m.to_cols_array())?;
-        self.modelview = m;
-        Ok(())
-    }
-
-    /// glMultMatrix on the MODELVIEW stack.
-    pub fn mult_modelview(&mut self, m: Mat4) -> Result<(), StateError> {
-        self.load_modelview(self.modelview * m)
-    }
-
-    fn light_mut(&mut self, index: usize) -> Result<&mut Light, StateError> {
-        self.lighting.lights.get_mut(index).ok_or(StateError::LightIndex {
-            index,
-            max: MAX_LIGHTS,
-        })
-    }
-
-    /// glLight: sets one parameter of light `index`. Positions and spot directions are
-    /// transformed by the current modelview and stored in eye space, as GL does.
-    pub fn light(&mut self, index: usize, param: LightParam) -> Result<(), StateError> {
-        check_light_scalar(&param)?;
-        let modelview = self.modelview;
-        let light = self.light_mut(index)?;
-        match param {
-            LightParam::Ambient(c) => light.ambient = finite4("GL_AMBIENT", c)?,
-            LightParam::Diffuse(c) => light.diffuse = finite4("GL_DIFFUSE", c)?,
-            LightParam::Specular(c) => light.specular = finite4("GL_SPECULAR", c)?,
-            LightParam::Position(p) => light.position = modelview * finite4("GL_POSITION", p)?,
-            LightParam::SpotDirection(d) => {
-                finite_vec("GL_SPOT_DIRECTION", &d.to_array())?;
-                light.spot_direction = Mat3::from_mat4(modelview) * d;
-            }
-            LightParam::SpotExponent(v) => light.spot_exponent = v,
-            LightParam::SpotCutoff(v) => light.spot_cutoff = v,
-            LightParam::ConstantAttenuation(v) => light.constant_attenuation = v,
-            LightParam::LinearAttenuation(v) => light.linear_attenuation = v,
-            LightParam::QuadraticAttenuation(v) => light.quadratic_attenuation = v,
-            LightParam::SpotEdge(edge) => light.spot_edge = edge,
-            LightParam::Attenuation(a) => light.attenuation = a,
-        }
-        Ok(())
-    }
-
-    /// glMaterial on `face`. Parameters that track the current color (`GL_COLOR_MATERIAL`
-    /// enabled, its face and mode naming them) keep that color.
-    pub fn material(&mut self, face: Face, param: MaterialParam) -> Result<(), StateError> {
-        let apply = |m: &mut Material| -> Result<(), StateError> {
-            match param {
-                MaterialParam::Ambient(c) => m.ambient = finite4("GL_AMBIENT", c)?,
-                MaterialParam::Diffuse(c) => m.diffuse = finite4("GL_DIFFUSE", c)?,
-                MaterialParam::Specular(c) => m.specular = finite4("GL_SPECULAR", c)?,
-                MaterialParam::Emission(c) => m.emission = finite4("GL_EMISSION", c)?,
-                MaterialParam::AmbientAndDiffuse(c) => {
-                    let c = finite4("GL_AMBIENT_AND_DIFFUSE", c)?;
-                    m.ambient = c;
-                    m.diffuse = c;
-                }
-                MaterialParam::Shininess(s) => {
-                    in_range("GL_SHININESS", s, 0.0, 128.0, "a value in [0, 128]")?;
-                    m.shininess = s;
-                }
-            }
-            Ok(())
-        };
-        if face.includes_front() {
-            apply(&mut self.lighting.front)?;
-        }
-        if face.includes_back() {
-            apply(&mut self.lighting.back)?;
-        }
-        // While COLOR_MATERIAL is on, the parameters it names track the current color (2.1,
-        // section 2.14.3), so a glMaterial of one of them leaves it at that color, as in
-        // Mesa's GL.
-        self.track_current_color();
-        Ok(())
-    }
-
-    /// glLightModel.
-    pub fn light_model(&mut self, param: LightModelParam) -> Result<(), StateError> {
-        let model = &mut self.lighting.model;
-        match param {
-            LightModelParam::Ambient(c) => model.ambient = finite4("GL_LIGHT_MODEL_AMBIENT", c)?,
-            LightModelParam::LocalViewer(b) => model.local_viewer = b,
-            LightModelParam::TwoSide(b) => model.two_side = b,
-            LightModelParam::ColorControl(c) => model.color_control = c,
-            LightModelParam::SpecularModel(m) => model.specular_model = m,
-        }
-        Ok(())
-    }
-
-    /// glColorMaterial.
-    pub fn color_material(&mut self, face: Face, mode: ColorMaterialMode) {
-        self.lighting.color_material.face = face;
-        self.lighting.color_material.mode = mode;
-        self.track_current_color();
-    }
-
-    /// glColor4f: sets the current color, which a draw without a color array gives every
-    /// vertex. With `GL_COLOR_MATERIAL` enabled the color is also written into the tracked
-    /// material parameters (section 2.14.3: they track the current color), where it stays
-    /// after `glDisable(GL_COLOR_MATERIAL)`. Colors are not clamped here (GL clamps after
-    /// lighting); a NaN or infinite component is an error.
-    ///
-    /// GL leaves the current color undefined after a draw that used a color array (2.1,
-    /// section 2.8); this state keeps the last `glColor`, and callers that need Mesa's
-    /// behaviour after such draws set it again.
-    pub fn color(&mut self, color: Vec4) -> Result<(), StateError> {
-        finite_vec("GL_CURRENT_COLOR", color.to_array().as_slice())?;
-        self.lighting.current_color = color;
-        self.track_current_color();
-        Ok(())
-    }
-
-    /// While `GL_COLOR_MATERIAL` is enabled, writes the current color into the material
-    /// parameters it tracks (glColor, glColorMaterial and glEnable do this in GL).
-    fn track_current_color(&mut self) {
-        let l = &mut self.lighting;
-        let color = l.current_color;
-        l.front = l.color_material.apply(&l.front, color, false);
-        l.back = l.color_material.apply(&l.back, color, true);
-    }
-
-    /// glShadeModel: FLAT selects [`LightingMode::Flat`]; SMOOTH selects per-vertex lighting.
-    pub fn shade_model(&mut self, model: ShadeModel) {
-        self.lighting.mode = match model {
-            ShadeModel::Flat => LightingMode::Flat,
-            ShadeModel::Smooth => LightingMode::Vertex,
-        };
-    }
-
-    /// ffvk's extension: where the equation is evaluated.
-    pub fn lighting_mode(&mut self, mode: LightingMode) {
-        self.lighting.mode = mode;
-    }
-
-    /// glEnable / glDisable.
-    pub fn set_enabled(&mut self, cap: Cap, on: bool) -> Result<(), StateError> {
-        match cap {
-            Cap::Lighting => self.lighting.lighting = on,
-            Cap::Light(i) => self.light_mut(i)?.enabled = on,
-            Cap::ColorMaterial => {
-                self.lighting.color_material.enabled = on;
-                self.track_current_color();
-            }
-            Cap::Normalize => self.lighting.normalize = on,
-            Cap::RescaleNormal => self.lighting.rescale_normal = on,
-            Cap::Texture2D => self.lighting.texture.enabled = on,
-        }
-        Ok(())
-    }
-
-    /// glTexEnv on `GL_TEXTURE_ENV`.
-    pub fn tex_env(&mut self, param: TexEnvParam) -> Result<(), StateError> {
-        match param {
-            TexEnvParam::Mode(mode) => self.lighting.texture.env_mode = mode,
-            TexEnvParam::Color(c) => {
-                let c = finite4("GL_TEXTURE_ENV_COLOR", c)?;
-                self.lighting.texture.env_color = c.clamp(Vec4::ZERO, Vec4::ONE);
-            }
-        }
-        Ok(())
-    }
-
-    /// glLoadMatrix on the `GL_TEXTURE` stack.
-    pub fn load_texture_matrix(&mut self, m: Mat4) -> Result<(), StateError> {
-        finite_vec("GL_TEXTURE matrix", &m.to_cols_array())?;
-        self.lighting.texture.matrix = m;
-        Ok(())
-    }
-
-    /// glEnable; fails only for a light index at or past [`MAX_LIGHTS`].
-    pub fn enable(&mut self, cap: Cap) -> Result<(), StateError> {
-        self.set_enabled(cap, true)
-    }
-
-    /// glDisable; fails only for a light index at or past [`MAX_LIGHTS`].
-    pub fn disable(&mut self, cap: Cap) -> Result<(), StateError> {
-        self.set_enabled(cap, false)
-    }
-}
-
-fn finite4(parameter: &'static str, v: Vec4) -> Result<Vec4, StateError> {
-    finite_vec(parameter, &v.to_array())?;
-    Ok(v)
 }
