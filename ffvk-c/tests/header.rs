@@ -111,14 +111,36 @@ int main(void) {
 }
 "#;
 
-/// The directory cargo put this test's libffvk_c.so and .a in (target/<profile>).
-fn library_dir() -> PathBuf {
+/// target/<profile> with the library an embedder gets: `cargo build -p ffvk-c` there. The
+/// workspace's own build of this crate unifies ffvk's features with the command's (images,
+/// scene: C++ objects that need libstdc++), so the test builds the lean library itself (a no-op
+/// when it is fresh).
+fn lean_library_dir() -> PathBuf {
     let exe = std::env::current_exe().expect("the test's path");
     // target/<profile>/deps/header-<hash>
-    exe.parent()
+    let profile = exe
+        .parent()
         .and_then(Path::parent)
         .expect("target/<profile>")
-        .to_path_buf()
+        .to_path_buf();
+    let mut cargo = Command::new(env!("CARGO"));
+    cargo
+        .current_dir(crate_dir())
+        .args(["build", "--quiet", "-p", "ffvk-c", "--target-dir"])
+        .arg(profile.parent().expect("the target directory"));
+    match profile.file_name().and_then(|n| n.to_str()) {
+        Some("debug") | None => {}
+        Some(name) => {
+            cargo.args(["--profile", name]);
+        }
+    }
+    let output = cargo.output().expect("cargo runs");
+    assert!(
+        output.status.success(),
+        "cargo build -p ffvk-c failed:\n{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    profile
 }
 
 #[test]
@@ -127,7 +149,7 @@ fn a_c_program_links_the_static_and_the_shared_library_and_gets_gls_errors_and_e
     std::fs::create_dir_all(&dir).unwrap();
     let source = dir.join("state.c");
     std::fs::write(&source, STATE_PROGRAM).unwrap();
-    let lib = library_dir();
+    let lib = lean_library_dir();
     for (kind, link) in [
         (
             "static",
