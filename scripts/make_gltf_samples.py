@@ -35,6 +35,24 @@ class Builder:
         self.accessors.append(acc)
         return len(self.accessors) - 1
 
+    def ints(self, rows, kind, component, normalized, minmax=False):
+        """An integer vertex attribute (KHR_mesh_quantization): each element padded to 4
+        bytes, as glTF asks of vertex attributes, with the bufferView's byteStride saying so."""
+        fmt, ctype = {"b": ("b", 5120), "B": ("B", 5121), "h": ("h", 5122), "H": ("H", 5123)}[component]
+        size = struct.calcsize("<%d%s" % (len(rows[0]), fmt))
+        stride = (size + 3) // 4 * 4
+        data = b"".join(struct.pack("<%d%s" % (len(r), fmt), *r) + b"\0" * (stride - size) for r in rows)
+        view = self._view(data, 34962)
+        self.views[view]["byteStride"] = stride
+        acc = {"bufferView": view, "componentType": ctype, "count": len(rows), "type": kind}
+        if normalized:
+            acc["normalized"] = True
+        if minmax:
+            acc["min"] = [min(r[k] for r in rows) for k in range(len(rows[0]))]
+            acc["max"] = [max(r[k] for r in rows) for k in range(len(rows[0]))]
+        self.accessors.append(acc)
+        return len(self.accessors) - 1
+
     def indices(self, idx):
         data = struct.pack("<%dH" % len(idx), *idx)
         self.accessors.append({"bufferView": self._view(data, 34963), "componentType": 5123,
@@ -257,6 +275,63 @@ def camera():
     b.write_gltf("camera", body)
 
 
+def quantized():
+    # Like a gltfpack'd model (KHR_mesh_quantization): a ball whose positions are UNSIGNED_SHORT
+    # (not normalized) under a node whose uniform scale and translation map them back to
+    # metres, normals normalized BYTE, texture coordinates normalized UNSIGNED_SHORT; beside it
+    # a box in normalized SHORT positions (its node scales them to its size), normalized SHORT
+    # normals and plain BYTE texture coordinates. quantized_plain.gltf is the same model in
+    # floats, drawn within the default tolerance of it (a test).
+    ball = sphere(0.8)
+    box = cube(0.45)
+    ball_uv = [(0.5 + math.atan2(p[0], p[2]) / (2 * math.pi), 0.5 - p[1] / 1.6) for p in ball[0]]
+    box_uv = [(int(i % 4 in (1, 2)), int(i % 4 in (2, 3))) for i in range(len(box[0]))]
+    box_at = (1.6, 0.1, 0.0)
+    material = [{"name": "teal", "pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.6, 0.55, 1.0],
+                                                          "metallicFactor": 0.0, "roughnessFactor": 0.5}},
+                {"name": "amber", "pbrMetallicRoughness": {"baseColorFactor": [0.85, 0.55, 0.15, 1.0],
+                                                           "metallicFactor": 0.0, "roughnessFactor": 0.45}}]
+
+    # Quantized.
+    b = Builder()
+    lo = [min(p[k] for p in ball[0]) for k in range(3)]
+    step = max(max(p[k] for p in ball[0]) - lo[k] for k in range(3)) / 65535
+    q_pos = [tuple(round((p[k] - lo[k]) / step) for k in range(3)) for p in ball[0]]
+    q_nrm = [tuple(round(c * 127) for c in n) for n in ball[1]]
+    q_uv = [tuple(round(c * 65535) for c in t) for t in ball_uv]
+    ball_prim = {"attributes": {"POSITION": b.ints(q_pos, "VEC3", "H", False, True),
+                                "NORMAL": b.ints(q_nrm, "VEC3", "b", True),
+                                "TEXCOORD_0": b.ints(q_uv, "VEC2", "H", True)},
+                 "indices": b.indices(ball[2]), "material": 0}
+    half = 0.45
+    s_pos = [tuple(round(c / half * 32767) for c in p) for p in box[0]]
+    s_nrm = [tuple(round(c * 32767) for c in n) for n in box[1]]
+    box_prim = {"attributes": {"POSITION": b.ints(s_pos, "VEC3", "h", True, True),
+                               "NORMAL": b.ints(s_nrm, "VEC3", "h", True),
+                               "TEXCOORD_0": b.ints(box_uv, "VEC2", "b", False)},
+                "indices": b.indices(box[2]), "material": 1}
+    body = scene_of([0, 1])
+    body["extensionsUsed"] = ["KHR_mesh_quantization"]
+    body["extensionsRequired"] = ["KHR_mesh_quantization"]
+    body["nodes"] = [{"name": "ball", "mesh": 0, "translation": lo, "scale": [step] * 3},
+                     {"name": "box", "mesh": 1, "translation": list(box_at), "scale": [half] * 3}]
+    body["meshes"] = [{"name": "ball", "primitives": [ball_prim]}, {"name": "box", "primitives": [box_prim]}]
+    body["materials"] = material
+    b.write_gltf("quantized", body)
+
+    # The same in floats.
+    b = Builder()
+    ball_prim = b.primitive(ball, 0)
+    ball_prim["attributes"]["TEXCOORD_0"] = b.floats(ball_uv, "VEC2")
+    box_prim = b.primitive(box, 1)
+    box_prim["attributes"]["TEXCOORD_0"] = b.floats([tuple(float(c) for c in t) for t in box_uv], "VEC2")
+    body = scene_of([0, 1])
+    body["nodes"] = [{"name": "ball", "mesh": 0}, {"name": "box", "mesh": 1, "translation": list(box_at)}]
+    body["meshes"] = [{"name": "ball", "primitives": [ball_prim]}, {"name": "box", "primitives": [box_prim]}]
+    body["materials"] = material
+    b.write_gltf("quantized_plain", body)
+
+
 def double_sided():
     # Like TwoSidedPlane: an open half pipe seen into its hollow, so that its back faces (the
     # inside) show: doubleSided, lit from both sides.
@@ -271,6 +346,6 @@ def double_sided():
 
 if __name__ == "__main__":
     OUT.mkdir(parents=True, exist_ok=True)
-    for make in (scaled_node, vertex_colors, emissive, lamp, camera, double_sided):
+    for make in (scaled_node, vertex_colors, emissive, lamp, camera, double_sided, quantized):
         make()
     print("wrote", ", ".join(sorted(p.name for p in OUT.iterdir())))

@@ -392,3 +392,52 @@ fn gltf_lights_exact_draws_gltfs_own_falloff_and_cone_and_gl_stays_the_default()
     finish(r);
     assert!(a != b);
 }
+
+/// KHR_mesh_quantization (`assets/gltf/quantized.gltf`, from scripts/make_gltf_samples.py):
+/// UNSIGNED_SHORT positions under a dequantizing node, normalized BYTE normals, normalized
+/// UNSIGNED_SHORT texture coordinates, and a box of normalized SHORT positions and normals with
+/// plain BYTE texture coordinates, drawn within the default tolerance of the same model in
+/// floats, in every mode; their vertices agree within the quantization step.
+#[test]
+fn a_quantized_model_draws_within_the_default_tolerance_of_its_plain_version() {
+    use ffvk::images::compare::{compare, Tolerance};
+    let options = DirectOptions::default().with_size(Some((256, 256)));
+    let quantized = direct("quantized.gltf", options.clone());
+    let plain = direct("quantized_plain.gltf", options);
+    assert_eq!(quantized.meshes.len(), plain.meshes.len());
+    for (q, p) in quantized.meshes.iter().zip(&plain.meshes) {
+        assert_eq!(q.data.vertices.len(), p.data.vertices.len(), "{}", q.name);
+        for (a, b) in q.data.vertices.iter().zip(&p.data.vertices) {
+            let world =
+                |m: &ffvk::scene::SceneMesh, v: [f32; 3]| m.model.transform_point3(Vec3::from_array(v));
+            let (wa, wb) = (world(q, a.position), world(p, b.position));
+            assert!(wa.distance(wb) < 1e-4, "{}: position {wa} against {wb}", q.name);
+            let (na, nb) = (Vec3::from_array(a.normal), Vec3::from_array(b.normal));
+            assert!(
+                na.distance(nb) < 1.0 / 100.0,
+                "{}: normal {na} against {nb}",
+                q.name
+            );
+            let (ta, tb) = (
+                glam::Vec2::from_array(a.texcoord),
+                glam::Vec2::from_array(b.texcoord),
+            );
+            assert!(ta.distance(tb) < 1e-4, "{}: texcoord {ta} against {tb}", q.name);
+        }
+    }
+    let mut r = renderer();
+    for mode in LightingMode::ALL {
+        let a = render_scene(&mut r, &quantized, Some(mode)).unwrap();
+        let b = render_scene(&mut r, &plain, Some(mode)).unwrap();
+        let c = compare(&b, &a, &Tolerance::default()).unwrap();
+        let path = save_for_inspection(&a, &format!("gltf_quantized_{}", mode.name()));
+        assert!(
+            c.passes(&Tolerance::default()),
+            "{} ({}): {}",
+            mode.name(),
+            path.display(),
+            c.summary()
+        );
+    }
+    finish(r);
+}

@@ -19,6 +19,7 @@ mod compressed;
 mod lights;
 mod materials;
 mod primitives;
+mod quantized;
 mod read;
 #[cfg(test)]
 mod testing;
@@ -42,6 +43,7 @@ use std::path::{Path, PathBuf};
 pub const SUPPORTED_EXTENSIONS: &[&str] = &[
     "KHR_lights_punctual",
     "KHR_materials_emissive_strength",
+    "KHR_mesh_quantization",
     "KHR_texture_transform",
 ];
 

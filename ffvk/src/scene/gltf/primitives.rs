@@ -1,7 +1,7 @@
 //! Mesh primitives: their accessors checked and read, and turned into counter-clockwise
 //! triangle lists ([`MeshData`]) as documented on [`load`](super::load).
 
-use super::{Context, LoadError, LoadErrorKind};
+use super::{quantized, Context, LoadError, LoadErrorKind};
 use crate::alloc::try_vec;
 use crate::mesh::{MeshData, Vertex};
 use crate::scene::MeshBudget;
@@ -394,7 +394,7 @@ fn check_sparse_indices(
 /// iterator is made (by `iter`) only after the check: the `gltf` crate's iterators compute
 /// `count - 1` when they are made, which overflows (a panic with overflow checks) for a count
 /// of 0.
-fn read_checked<T, I>(
+pub(super) fn read_checked<T, I>(
     cx: &Context,
     primitive: &str,
     accessor: &gltf::Accessor,
@@ -517,25 +517,49 @@ pub(super) fn read_primitive(
             attribute: "POSITION",
         }));
     };
-    if (position_accessor.data_type(), position_accessor.dimensions()) != (DataType::F32, Dimensions::Vec3) {
-        return Err(format_error("POSITION", &position_accessor, "FLOAT VEC3"));
+    // KHR_mesh_quantization widens the types of POSITION, NORMAL and TEXCOORD_0.
+    let quantization = quantized::declared(cx);
+    let accepts = |accessor: &gltf::Accessor, core: quantized::Accepted, extended: quantized::Accepted| {
+        let accepted = if quantization { extended } else { core };
+        accepted.allows(accessor.data_type(), accessor.normalized())
+    };
+    if position_accessor.dimensions() != Dimensions::Vec3
+        || !accepts(&position_accessor, quantized::FLOAT, quantized::POSITION)
+    {
+        return Err(format_error(
+            "POSITION",
+            &position_accessor,
+            if quantization {
+                "FLOAT, BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT (KHR_mesh_quantization) VEC3"
+            } else {
+                "FLOAT VEC3 (integer positions need KHR_mesh_quantization in extensionsUsed)"
+            },
+        ));
     }
-    let positions = read_checked(cx, &label, &position_accessor, buffers, || {
-        reader.read_positions()
-    })?;
+    let positions = quantized::read_vectors::<3>(cx, &label, &position_accessor, buffers)?;
     check_finite(cx, &label, "POSITION", &position_accessor, &positions)?;
     let vertex_count = positions.len();
 
     let normals = match primitive.get(&Semantic::Normals) {
         None => None,
         Some(accessor) => {
-            if (accessor.data_type(), accessor.dimensions()) != (DataType::F32, Dimensions::Vec3) {
-                return Err(format_error("NORMAL", &accessor, "FLOAT VEC3"));
+            if accessor.dimensions() != Dimensions::Vec3
+                || !accepts(&accessor, quantized::FLOAT, quantized::NORMAL)
+            {
+                return Err(format_error(
+                    "NORMAL",
+                    &accessor,
+                    if quantization {
+                        "FLOAT, or normalized BYTE or SHORT (KHR_mesh_quantization), VEC3"
+                    } else {
+                        "FLOAT VEC3 (integer normals need KHR_mesh_quantization in extensionsUsed)"
+                    },
+                ));
             }
             if accessor.count() != vertex_count {
                 return Err(count_error("NORMAL", &accessor, vertex_count));
             }
-            let normals = read_checked(cx, &label, &accessor, buffers, || reader.read_normals())?;
+            let normals = quantized::read_vectors::<3>(cx, &label, &accessor, buffers)?;
             check_finite(cx, &label, "NORMAL", &accessor, &normals)?;
             Some(normals)
         }
@@ -575,19 +599,33 @@ pub(super) fn read_primitive(
     let texcoords = match primitive.get(&Semantic::TexCoords(0)) {
         None => None,
         Some(accessor) => {
-            let supported = matches!(accessor.data_type(), DataType::F32 | DataType::U8 | DataType::U16);
+            // glTF's core: UNSIGNED_BYTE and UNSIGNED_SHORT are read as normalized whatever the
+            // accessor says, as before the extension; with it, its flag decides.
+            let supported = if quantization {
+                accepts(&accessor, quantized::FLOAT, quantized::TEXCOORD)
+            } else {
+                matches!(accessor.data_type(), DataType::F32 | DataType::U8 | DataType::U16)
+            };
             if !supported || accessor.dimensions() != Dimensions::Vec2 {
                 return Err(format_error(
                     "TEXCOORD_0",
                     &accessor,
-                    "FLOAT, normalized UNSIGNED_BYTE or normalized UNSIGNED_SHORT, VEC2",
+                    if quantization {
+                        "FLOAT, BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT (KHR_mesh_quantization), VEC2"
+                    } else {
+                        "FLOAT, normalized UNSIGNED_BYTE or normalized UNSIGNED_SHORT, VEC2"
+                    },
                 ));
             }
             if accessor.count() != vertex_count {
                 return Err(count_error("TEXCOORD_0", &accessor, vertex_count));
             }
-            let iter = || reader.read_tex_coords(0).map(|t| t.into_f32());
-            let st = read_checked(cx, &label, &accessor, buffers, iter)?;
+            let st = if quantization {
+                quantized::read_vectors::<2>(cx, &label, &accessor, buffers)?
+            } else {
+                let iter = || reader.read_tex_coords(0).map(|t| t.into_f32());
+                read_checked(cx, &label, &accessor, buffers, iter)?
+            };
             check_finite(cx, &label, "TEXCOORD_0", &accessor, &st)?;
             Some(st)
         }
