@@ -72,6 +72,27 @@ const VARIANTS: &[Variant] = &[
         defines: &[("VARYING_MATERIALS", "1")],
         doc: "`fragment` for small draws: the materials pass from the vertex stage as flat varyings, so consecutive draws bind nothing of their own.",
     },
+    Variant {
+        name: "fragment_gbuffer",
+        vertex: "fragment.vert",
+        fragment: "fragment.frag",
+        defines: &[("GBUFFER", "1")],
+        doc: "The deferred path's first pass: what `fragment` lights at each fragment, written to the G-buffer instead.",
+    },
+    Variant {
+        name: "deferred",
+        vertex: "deferred.vert",
+        fragment: "deferred.frag",
+        defines: &[],
+        doc: "The deferred path's lighting pass: the equation once per pixel from the G-buffer.",
+    },
+    Variant {
+        name: "deferred_counted",
+        vertex: "deferred.vert",
+        fragment: "deferred.frag",
+        defines: &[("COUNT", "1")],
+        doc: "`deferred` counting the pixels it lights in a storage buffer (measured frames).",
+    },
 ];
 
 /// The second build of every variant, named `<variant>_current_color`: for meshes without a

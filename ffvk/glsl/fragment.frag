@@ -35,7 +35,17 @@ layout(std140, set = 2, binding = 0) uniform Record {
 } record;
 #endif
 
+#ifdef GBUFFER
+// The deferred path's first pass: what the equation needs at this pixel, for the lighting
+// pass (deferred.frag) to evaluate it once per pixel with the same arithmetic.
+layout(location = 14) flat in uint record_index;
+layout(location = 0) out vec4 g_position;  // eye_position
+layout(location = 1) out vec4 g_normal;    // the normal the equation takes; w: +1 front, -1 back
+layout(location = 2) out vec4 g_color;     // the primary color (color material's input)
+layout(location = 3) out uint g_record;    // the draw's record index + 1; 0: nothing drawn
+#else
 layout(location = 0) out vec4 out_color;
+#endif
 
 // A zero the compiler cannot prove zero (fragments lie inside the framebuffer, at x >= 0):
 // the uber-shader's switches pass through it (draw.glsl, uber_value).
@@ -47,6 +57,12 @@ layout(location = 4) in vec4 stq;
 #endif
 
 void main() {
+#ifdef GBUFFER
+    g_position = eye_position;
+    g_normal = vec4(unit(normal_direction) * normal_length, gl_FrontFacing ? 1.0 : -1.0);
+    g_color = color;
+    g_record = record_index + 1u;
+#else
 #ifdef VARYING_MATERIALS
     draw_front = Material(front_a_cm, front_d_cm, front_s_cm, front_e_cm, s_rm.x);
     draw_back = Material(back_a_cm, back_d_cm, back_s_cm, back_e_cm, s_rm.y);
@@ -71,4 +87,5 @@ void main() {
     lit.c_pri = texture_environment(lit.c_pri, texel_at(stq));
 #endif
     out_color = color_sum(lit);
+#endif
 }

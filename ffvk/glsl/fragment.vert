@@ -27,6 +27,12 @@ layout(location = 12) flat out vec4 back_e_cm;
 layout(location = 13) flat out vec2 s_rm;  // front, back
 #endif
 
+#ifdef GBUFFER
+// The draw's record in its chunk (firstInstance picks it): the deferred lighting pass reads
+// the draw's materials there (deferred.frag).
+layout(location = 14) flat out uint record_index;
+#endif
+
 #ifdef TEXTURE
 // Texture coordinates, as in vertex.vert.
 layout(location = 3) in vec2 in_texcoord;
@@ -45,6 +51,9 @@ void main() {
     gl_Position = state.projection * eye_position;
 #ifdef TEXTURE
     stq = state.texture_matrix * vec4(in_texcoord, 0.0, 1.0);
+#endif
+#ifdef GBUFFER
+    record_index = uint(gl_InstanceIndex);
 #endif
 #ifdef VARYING_MATERIALS
     front_a_cm = in_front_a_cm;

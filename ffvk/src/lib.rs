@@ -105,5 +105,6 @@ pub use draw::record::{Geometry, Topology};
 pub use draw::texture::TextureBinding;
 pub use error::{Error, LightingError, MeshError, Result, UnknownName};
 pub use renderer::{
-    Draw, Frame, FrameStats, Mesh, PipelineStats, Pixels, Renderer, RendererOptions, Texture, Upload,
+    Draw, FragmentPath, Frame, FrameStats, Mesh, PipelineStats, Pixels, Renderer, RendererOptions, Texture,
+    Upload,
 };

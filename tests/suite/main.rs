@@ -6,6 +6,7 @@ mod c_api_example;
 mod c_api_renderer;
 mod c_api_state;
 mod conformance;
+mod deferred;
 mod determinism;
 mod embedding;
 mod files;

@@ -117,6 +117,18 @@ pub(crate) struct Staged {
     record_block: Option<(vk::DescriptorSet, u32)>,
 }
 
+impl Staged {
+    /// The state block's descriptor set and dynamic offset.
+    pub(crate) fn state_binding(&self) -> (vk::DescriptorSet, u32) {
+        self.state
+    }
+
+    /// The buffer holding the draw's record.
+    pub(crate) fn record_buffer(&self) -> vk::Buffer {
+        self.record.0
+    }
+}
+
 /// A draw checked and written into its frame slot by [`Lighting::stage_draw`], waiting for
 /// [`Lighting::record_run`].
 #[derive(Debug, Clone, Copy)]
@@ -144,6 +156,8 @@ struct Variant {
     affine: bool,
     /// Its topology and primitive restart.
     assembly: (Topology, bool),
+    /// The deferred path's G-buffer pass ([`Lighting::set_gbuffer`]).
+    gbuffer: bool,
 }
 
 /// How to make a [`Lighting`].
@@ -337,6 +351,8 @@ pub struct Lighting {
     last: Option<LastState>,
     /// The vertex binding of the draw records (the lowest the caller's layout leaves free).
     record_binding: u32,
+    /// Draws are staged for the deferred path's G-buffer pass ([`Lighting::set_gbuffer`]).
+    gbuffer: bool,
     device: Arc<Device>,
 }
 
@@ -379,6 +395,7 @@ impl Lighting {
             specialize: options.specialize,
             last: None,
             record_binding: options.vertex_input.record_binding(),
+            gbuffer: false,
             device: device.clone(),
         })
     }
@@ -434,6 +451,7 @@ impl Lighting {
             small,
             affine: true,
             assembly: (Topology::TriangleList, false),
+            gbuffer: false,
         };
         self.pipeline_for(state, raster, variant).map(|_| ())
     }
@@ -527,13 +545,16 @@ impl Lighting {
         let (mode, raster) = (draw.state.mode, draw.raster);
         // A small draw of the fragment mode takes its materials as flat varyings; a larger one
         // reads them from its record, bound for its fragment stage.
-        let small = mode == LightingMode::Fragment && draw.geometry.fetched() < SMALL_DRAW_VERTICES;
+        // (The G-buffer pass has no small variant: its draws bind their record like large ones.)
+        let small =
+            !self.gbuffer && mode == LightingMode::Fragment && draw.geometry.fetched() < SMALL_DRAW_VERTICES;
         // An affine modelview puts every vertex at w = 1 (SpecConstant::FiniteVertices).
         let variant = Variant {
             textured: Self::textured(draw),
             small,
             affine: draw.modelview.row(3) == glam::Vec4::W,
             assembly: draw.geometry.assembly(),
+            gbuffer: self.gbuffer && mode == LightingMode::Fragment,
         };
         let found = self.last.as_ref().and_then(|last| {
             last.pipelines
@@ -762,6 +783,29 @@ impl Lighting {
                 }
             }
         };
-        self.pipelines.get(mode, key, raster, textured, assembly)
+        self.pipelines
+            .get_for((mode, key, raster), textured, assembly, variant.gbuffer)
+    }
+
+    /// Draws staged from now on write the deferred path's G-buffer (fragment mode; the
+    /// Renderer's deferred frames) instead of lighting.
+    pub(crate) fn set_gbuffer(&mut self, on: bool) {
+        self.gbuffer = on;
+    }
+
+    /// The pipeline cache its pipelines are made through.
+    pub(crate) fn pipeline_cache(&self) -> vk::PipelineCache {
+        self.pipelines.cache()
+    }
+
+    /// Specialized pipelines or the uber-shader.
+    pub(crate) fn specialize(&self) -> Specialize {
+        self.specialize
+    }
+
+    /// The pipeline layout's state block set layout: the deferred lighting pass binds the
+    /// same blocks.
+    pub(crate) fn state_set_layout(&self) -> &crate::vk::objects::DescriptorSetLayout {
+        self.pipelines.set_layout()
     }
 }

@@ -64,7 +64,12 @@ pub fn variant_name(
 }
 
 /// A shader module from embedded SPIR-V bytes, its descriptor set moved to `set`.
-fn shader_module(device: &Arc<Device>, name: &str, bytes: &[u8], set: u32) -> Result<ShaderModule> {
+pub(crate) fn shader_module(
+    device: &Arc<Device>,
+    name: &str,
+    bytes: &[u8],
+    set: u32,
+) -> Result<ShaderModule> {
     let mut words = ash::util::read_spv(&mut std::io::Cursor::new(bytes))
         .map_err(|e| Error::MissingFeature(format!("valid SPIR-V in {name}: {e}")))?;
     set_descriptor_set(&mut words, set);
@@ -202,7 +207,21 @@ struct PipelineKey {
     topology: Topology,
     /// Primitive restart (strips and fans only).
     restart: bool,
+    /// The deferred path's G-buffer pass (fragment mode only): four color attachments
+    /// ([`GBUFFER_FORMATS`]) instead of the target's one.
+    gbuffer: bool,
 }
+
+/// The G-buffer's attachments, in `fragment.frag`'s output order under `GBUFFER`: the
+/// eye-space position, the normal the equation takes with the facing in w, the primary color
+/// (32-bit floats, so that the lighting pass sees the very values the forward path lights),
+/// and the draw's record index + 1. 52 bytes a pixel.
+pub const GBUFFER_FORMATS: [vk::Format; 4] = [
+    vk::Format::R32G32B32A32_SFLOAT,
+    vk::Format::R32G32B32A32_SFLOAT,
+    vk::Format::R32G32B32A32_SFLOAT,
+    vk::Format::R32_UINT,
+];
 
 /// The descriptor layouts, pipeline layout, cache and the pipelines made so far.
 pub struct Pipelines {
@@ -312,14 +331,33 @@ impl Pipelines {
         (textured, small): (bool, bool),
         (topology, restart): (Topology, bool),
     ) -> Result<vk::Pipeline> {
+        self.get_for((mode, key, raster), (textured, small), (topology, restart), false)
+    }
+
+    /// The pipeline cache pipelines are made through.
+    pub(crate) fn cache(&self) -> vk::PipelineCache {
+        self.cache
+    }
+
+    /// [`Pipelines::get`], or (`gbuffer`) the deferred path's G-buffer pipeline of a fragment
+    /// mode draw.
+    pub(crate) fn get_for(
+        &mut self,
+        (mode, key, raster): (LightingMode, SpecKey, RasterState),
+        (textured, small): (bool, bool),
+        (topology, restart): (Topology, bool),
+        gbuffer: bool,
+    ) -> Result<vk::Pipeline> {
+        let gbuffer = gbuffer && mode == LightingMode::Fragment;
         let k = PipelineKey {
             mode,
             spec: key,
             raster,
             textured,
-            small: small && mode == LightingMode::Fragment,
+            small: small && mode == LightingMode::Fragment && !gbuffer,
             topology,
             restart,
+            gbuffer,
         };
         if let Some(pipeline) = self.pipelines.get(&k) {
             return Ok(pipeline.raw());
@@ -347,6 +385,7 @@ impl Pipelines {
             small: small && mode == LightingMode::Fragment,
             topology,
             restart,
+            gbuffer: false,
         })
     }
 
@@ -424,13 +463,22 @@ impl Pipelines {
             }
             .into());
         }
-        let name = variant_name(
-            k.mode,
-            k.spec,
-            config.vertex_input.color.is_some(),
-            k.textured,
-            k.small,
-        );
+        let name = if k.gbuffer {
+            let current = if config.vertex_input.color.is_some() {
+                ""
+            } else {
+                "_current_color"
+            };
+            format!("fragment_gbuffer{current}")
+        } else {
+            variant_name(
+                k.mode,
+                k.spec,
+                config.vertex_input.color.is_some(),
+                k.textured,
+                k.small,
+            )
+        };
         let name = name.as_str();
         let variant = shaders::variant(name)
             .ok_or_else(|| Error::MissingFeature(format!("the embedded shader variant {name}")))?;
@@ -509,11 +557,22 @@ impl Pipelines {
                 .dst_alpha_blend_factor(b.dst_alpha)
                 .alpha_blend_op(b.alpha_op);
         }
-        let blend_attachments = [blend_attachment];
+        // The G-buffer's four attachments take the values as they are.
+        let plain =
+            vk::PipelineColorBlendAttachmentState::default().color_write_mask(vk::ColorComponentFlags::RGBA);
+        let blend_attachments = if k.gbuffer {
+            vec![plain; GBUFFER_FORMATS.len()]
+        } else {
+            vec![blend_attachment]
+        };
         let blend = vk::PipelineColorBlendStateCreateInfo::default().attachments(&blend_attachments);
         let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
         let dynamic = vk::PipelineDynamicStateCreateInfo::default().dynamic_states(&dynamic_states);
-        let color_formats = [config.target.color_format];
+        let color_formats = if k.gbuffer {
+            GBUFFER_FORMATS.to_vec()
+        } else {
+            vec![config.target.color_format]
+        };
         let mut rendering = vk::PipelineRenderingCreateInfo::default()
             .color_attachment_formats(&color_formats)
             .depth_attachment_format(config.target.depth_format);

@@ -181,7 +181,10 @@ impl Chunk {
             RingUse::Uniforms => ("uniform buffer", vk::BufferUsageFlags::UNIFORM_BUFFER),
             RingUse::InstanceData => (
                 "draw record buffer",
-                vk::BufferUsageFlags::VERTEX_BUFFER | vk::BufferUsageFlags::UNIFORM_BUFFER,
+                // Storage too: the deferred lighting pass reads a frame's records by index.
+                vk::BufferUsageFlags::VERTEX_BUFFER
+                    | vk::BufferUsageFlags::UNIFORM_BUFFER
+                    | vk::BufferUsageFlags::STORAGE_BUFFER,
             ),
         };
         let buffer = Buffer::new(device, what, capacity * stride, usage, MemoryUse::Uniforms)?;

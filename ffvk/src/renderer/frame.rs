@@ -167,6 +167,24 @@ pub struct Frame<'a> {
     pub depth_test: bool,
     /// Recorded in order; with `depth_test` off, later draws cover earlier ones.
     pub draws: Vec<Draw<'a>>,
+    /// How the fragment mode's draws are lit: [`FragmentPath::Forward`] (the default) or,
+    /// where the frame allows it, [`FragmentPath::Deferred`].
+    pub fragment_path: FragmentPath,
+}
+
+/// Where the fragment mode evaluates the equation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[non_exhaustive]
+pub enum FragmentPath {
+    /// At every fragment of every draw, as the draw is rasterized: the reference path (the
+    /// golden images are drawn with it).
+    #[default]
+    Forward,
+    /// Once per pixel: a G-buffer pass, then one full-screen lighting pass with the same
+    /// equation (`renderer/deferred.rs`). A frame that cannot take it (a draw in another mode,
+    /// blended or textured, draws under different lighting states or projections) is drawn
+    /// forward; [`FrameStats::deferred`] says which path a frame took.
+    Deferred,
 }
 
 impl<'a> Frame<'a> {
@@ -179,6 +197,7 @@ impl<'a> Frame<'a> {
             clear_color: Vec4::new(0.0, 0.0, 0.0, 1.0),
             depth_test: true,
             draws: Vec::new(),
+            fragment_path: FragmentPath::Forward,
         }
     }
 }
@@ -202,6 +221,13 @@ pub struct FrameStats {
     /// and written, pipeline found, binds and draw recorded), in nanoseconds. Pipelines are
     /// made before recording starts, so this is the warm cost.
     pub record_ns: f64,
+    /// Whether the frame took the deferred path ([`FragmentPath::Deferred`]); its pipeline
+    /// statistics are then the lighting pass's alone, not the G-buffer pass's.
+    pub deferred: bool,
+    /// A deferred frame measured with statistics: how many pixels its lighting pass
+    /// evaluated the equation at, counted by the pass itself (an atomic add per lit pixel;
+    /// lavapipe's statistics count whole 4×4 blocks, background included).
+    pub evaluations: Option<u64>,
 }
 
 /// The counters of one pipeline-statistics query, summed over every draw of the pass.

@@ -18,12 +18,14 @@ use crate::vk::{
     Buffer, Device, DeviceInfo, Image, Instance, MemoryUsage, MemoryUse, Validation, ValidationSink,
 };
 
+mod deferred;
 mod frame;
 mod queries;
 mod record;
 mod texture;
 mod upload;
-pub use frame::{Draw, Frame, FrameStats, Mesh, PipelineStats, Pixels};
+pub use deferred::GBUFFER_BYTES_PER_PIXEL;
+pub use frame::{Draw, FragmentPath, Frame, FrameStats, Mesh, PipelineStats, Pixels};
 use queries::Queries;
 pub use texture::Texture;
 pub use upload::Upload;
@@ -113,6 +115,8 @@ pub struct Renderer {
     // Field order is drop order (after Drop waits for the device): everything that holds the
     // device goes before `device`, the last Arc this renderer keeps.
     targets: Option<Targets>,
+    /// The fragment mode's deferred path, made on its first frame.
+    deferred: Option<deferred::Deferred>,
     /// The lighting pipelines and per-draw state memory (one frame slot: every frame is
     /// waited for before the next).
     lighting: Lighting,
@@ -150,6 +154,7 @@ impl Renderer {
         let uploader = std::sync::Mutex::new(Uploader::new(&device)?);
         let renderer = Renderer {
             targets: None,
+            deferred: None,
             lighting,
             commands,
             fence,
@@ -412,9 +417,32 @@ impl Renderer {
         let lits = record::lit_draws(frame);
         // The Renderer's own errors name the draw where it matters (its meshes and textures);
         // the state's errors stay as they are.
-        let staged = self.lighting.stage_run(0, &lits).map_err(|(_, e)| e)?;
+        let eligible = deferred::eligible(frame, self.lighting.specialize());
+        self.lighting.set_gbuffer(eligible.is_some());
+        let staged = self.lighting.stage_run(0, &lits).map_err(|(_, e)| e);
+        self.lighting.set_gbuffer(false);
+        let mut staged = staged?;
+        // The lighting pass reads the records from one buffer: a frame whose records span two
+        // chunks of the slot (a first frame of many draws, while the slot grows) is drawn
+        // forward, staged again.
+        let deferred_key = eligible.filter(|_| deferred::one_record_buffer(&staged).is_some());
+        if eligible.is_some() && deferred_key.is_none() {
+            self.lighting.begin_frame(0)?;
+            staged = self.lighting.stage_run(0, &lits).map_err(|(_, e)| e)?;
+        }
+        let deferred_pass = match (deferred_key, &self.targets) {
+            (Some(key), Some(targets)) => {
+                let extent = targets.extent;
+                let d = match &mut self.deferred {
+                    Some(d) => d,
+                    None => self.deferred.insert(deferred::Deferred::new(&self.device)?),
+                };
+                Some(d.pass(&self.lighting, extent, key, &staged, pass.statistics)?)
+            }
+            _ => None,
+        };
         let staging_ns = staging.elapsed().as_nanos() as f64;
-        let record_ns = staging_ns + self.record(frame, pass, &lits, &staged)?;
+        let record_ns = staging_ns + self.record(frame, pass, &lits, &staged, deferred_pass.as_ref())?;
         let wall_ns = self.submit_and_wait()? / f64::from(pass.repeat);
         self.check_validation()?;
         let gpu_ns = if pass.timestamps {
@@ -427,12 +455,18 @@ impl Renderer {
         } else {
             None
         };
+        let evaluations = match (&deferred_pass, &self.deferred) {
+            (Some(p), Some(d)) if p.counter.is_some() => d.evaluations(),
+            _ => None,
+        };
         Ok((0..pass.repeat as usize)
             .map(|i| FrameStats {
                 gpu_ns: gpu_ns.as_ref().map(|ns| ns[i]),
                 wall_ns,
                 pipeline,
                 record_ns,
+                deferred: deferred_pass.is_some(),
+                evaluations,
             })
             .collect())
     }

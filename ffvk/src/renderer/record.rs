@@ -3,6 +3,7 @@
 
 use ash::vk;
 
+use super::deferred::{record_deferred, DeferredPass};
 use super::{subresource, Frame, Pass, Renderer, Targets};
 use crate::draw::lighting::{Lighting, LitDraw, Staged};
 use crate::draw::record::Geometry;
@@ -18,6 +19,7 @@ impl Renderer {
         pass: Pass,
         lits: &[LitDraw],
         staged: &[Staged],
+        deferred: Option<&DeferredPass>,
     ) -> Result<f64> {
         let vkd = &self.device.raw;
         // Borrowed as a field (not through self.targets()): the draws below take the lighting
@@ -49,9 +51,18 @@ impl Renderer {
         // The draws' uniforms were written once, before recording; every pass binds them.
         let mut record_ns = 0.0;
         for i in 0..pass.repeat {
-            // SAFETY: the command buffer is recording, outside any pass; every handle belongs
-            // to this device and outlives the submission (the renderer waits for it).
-            let ns = unsafe { record_pass(&self.lighting, frame, (lits, staged), targets, cmd, statistics) }?;
+            let ns = match deferred {
+                // SAFETY: the command buffer is recording, outside any pass; every handle
+                // belongs to this device and outlives the submission (the renderer waits for
+                // it); the deferred pass was made for these targets and staged draws.
+                Some(d) => unsafe {
+                    record_deferred(&self.lighting, frame, (lits, staged), targets, d, cmd, statistics)
+                },
+                // SAFETY: as above.
+                None => unsafe {
+                    record_pass(&self.lighting, frame, (lits, staged), targets, cmd, statistics)
+                },
+            }?;
             if i == 0 {
                 record_ns = ns;
             }

@@ -1,0 +1,649 @@
+//! The fragment mode's deferred path ([`FragmentPath::Deferred`]): a G-buffer pass writes
+//! what the equation needs at each pixel (the draws through the `fragment_gbuffer` shaders),
+//! then one full-screen lighting pass (`deferred.frag`, the same `lighting.glsl`) evaluates
+//! it once per pixel. The forward path evaluates it for every fragment of every triangle,
+//! which on lavapipe means every 4×4 block a triangle touches (BENCHMARKS.md).
+//!
+//! A frame takes this path only where it gives the forward path's image: every draw in the
+//! fragment mode, none blended or textured, all under one lighting state and projection
+//! (one state block for the lighting pass), all with affine modelviews or none, and their
+//! records in one chunk of the frame slot (the lighting pass reads them by index); any other
+//! frame is drawn forward. The G-buffer takes 52 bytes a pixel beside the depth buffer.
+
+use std::collections::HashMap;
+use std::sync::Arc;
+
+use ash::vk;
+
+use super::frame::{FragmentPath, Frame};
+use super::subresource;
+use crate::draw::lighting::{Lighting, Staged};
+use crate::draw::pipeline::{shader_module, Specialize, COLOR_FORMAT, DEPTH_FORMAT, GBUFFER_FORMATS};
+use crate::error::{Error, Result};
+use crate::gl::state::LightingMode;
+use crate::gpu::layout::{SpecConstant, SpecKey, StateKey, SPEC_CONSTANT_COUNT};
+use crate::gpu::shaders;
+use crate::vk::objects::{DescriptorPool, DescriptorSetLayout, Pipeline, PipelineLayout, Sampler};
+use crate::vk::{Buffer, Device, Image, MemoryUse};
+
+/// Bytes of G-buffer per pixel ([`GBUFFER_FORMATS`]).
+pub const GBUFFER_BYTES_PER_PIXEL: u64 = 52;
+
+/// The G-buffer of one size and the descriptor set that names it.
+struct GBuffer {
+    extent: vk::Extent2D,
+    // Field order is drop order: the set's pool before the images it names.
+    descriptors: DescriptorPool,
+    images: Vec<Image>,
+    /// The record buffer the set names now.
+    records: vk::Buffer,
+}
+
+/// The deferred path's objects: made on the first deferred frame, kept with the renderer.
+pub(super) struct Deferred {
+    // Field order is drop order: pipelines and the G-buffer before the layouts they use.
+    /// By specialization key and whether the pass counts its evaluations.
+    pipelines: HashMap<(SpecKey, bool), Pipeline>,
+    gbuffer: Option<GBuffer>,
+    /// The lighting pass's count of the pixels it lit (`deferred_counted`).
+    counter: Buffer,
+    layout: PipelineLayout,
+    set_layout: DescriptorSetLayout,
+    sampler: Sampler,
+    device: Arc<Device>,
+}
+
+/// What a deferred frame's recording needs.
+pub(super) struct DeferredPass {
+    pub(super) images: [vk::Image; 4],
+    pub(super) views: [vk::ImageView; 4],
+    pub(super) pipeline: vk::Pipeline,
+    pub(super) layout: vk::PipelineLayout,
+    pub(super) set: vk::DescriptorSet,
+    /// The state block's set and dynamic offset.
+    pub(super) state: (vk::DescriptorSet, u32),
+    /// The evaluation counter, when the pass counts (it is zeroed before the pass).
+    pub(super) counter: Option<vk::Buffer>,
+}
+
+/// The lighting pass's specialization key, when `frame` can take the deferred path: the one
+/// its draws' forward pipelines would use.
+pub(super) fn eligible(frame: &Frame, specialize: Specialize) -> Option<SpecKey> {
+    // The lighting pass finds the drawn pixels by their depth: frames without a depth test
+    // stay forward.
+    if frame.fragment_path != FragmentPath::Deferred || !frame.depth_test {
+        return None;
+    }
+    let first = frame.draws.first()?;
+    let affine = |m: &glam::Mat4| m.row(3) == glam::Vec4::W;
+    let key = StateKey::new(&first.state, first.projection);
+    let alike = frame.draws.iter().all(|d| {
+        d.state.mode == LightingMode::Fragment
+            && d.raster(frame).blend.is_none()
+            && !d.textured()
+            && affine(&d.modelview) == affine(&first.modelview)
+            && StateKey::new(&d.state, d.projection) == key
+    });
+    alike.then(|| match specialize {
+        Specialize::Never => SpecKey::UBER,
+        _ => SpecKey::for_state(&first.state).with_finite_vertices(affine(&first.modelview)),
+    })
+}
+
+/// Whether the staged draws' records lie in one buffer (the lighting pass binds one).
+pub(super) fn one_record_buffer(staged: &[Staged]) -> Option<vk::Buffer> {
+    let first = staged.first()?.record_buffer();
+    staged.iter().all(|s| s.record_buffer() == first).then_some(first)
+}
+
+impl Deferred {
+    pub(super) fn new(device: &Arc<Device>) -> Result<Self> {
+        let image = |binding| {
+            vk::DescriptorSetLayoutBinding::default()
+                .binding(binding)
+                .descriptor_type(vk::DescriptorType::COMBINED_IMAGE_SAMPLER)
+                .descriptor_count(1)
+                .stage_flags(vk::ShaderStageFlags::FRAGMENT)
+        };
+        let storage = |binding| {
+            vk::DescriptorSetLayoutBinding::default()
+                .binding(binding)
+                .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+                .descriptor_count(1)
+                .stage_flags(vk::ShaderStageFlags::FRAGMENT)
+        };
+        // The G-buffer, the frame's records, the evaluation counter.
+        let bindings = [image(0), image(1), image(2), image(3), storage(4), storage(5)];
+        let set_layout = DescriptorSetLayout::new(device, &bindings)?;
+        // The lighting pass reads texels where they are (texelFetch): no filtering.
+        let sampler = Sampler::new(
+            device,
+            &vk::SamplerCreateInfo::default()
+                .mag_filter(vk::Filter::NEAREST)
+                .min_filter(vk::Filter::NEAREST)
+                .address_mode_u(vk::SamplerAddressMode::CLAMP_TO_EDGE)
+                .address_mode_v(vk::SamplerAddressMode::CLAMP_TO_EDGE)
+                .address_mode_w(vk::SamplerAddressMode::CLAMP_TO_EDGE),
+        )?;
+        // Set 0 stays empty until the first pipeline: its layout is the lighting's state
+        // block layout, which `pass` is given.
+        let empty = DescriptorSetLayout::new(device, &[])?;
+        let layout = PipelineLayout::new(device, &[&empty, &set_layout])?;
+        let counter = Buffer::new(
+            device,
+            "deferred evaluation counter",
+            4,
+            vk::BufferUsageFlags::STORAGE_BUFFER | vk::BufferUsageFlags::TRANSFER_DST,
+            MemoryUse::Readback,
+        )?;
+        Ok(Deferred {
+            pipelines: HashMap::new(),
+            gbuffer: None,
+            counter,
+            layout,
+            set_layout,
+            sampler,
+            device: device.clone(),
+        })
+    }
+
+    /// Makes the pipeline layout on the lighting's state block layout (once).
+    fn ensure_layout(&mut self, lighting: &Lighting) -> Result<()> {
+        if self.pipelines.is_empty() {
+            self.layout =
+                PipelineLayout::new(&self.device, &[lighting.state_set_layout(), &self.set_layout])?;
+        }
+        Ok(())
+    }
+
+    /// The G-buffer for `extent` (made anew when the size changes), checked against the
+    /// device's heap first.
+    fn ensure_gbuffer(&mut self, extent: vk::Extent2D, records: vk::Buffer) -> Result<()> {
+        if self.gbuffer.as_ref().is_none_or(|g| g.extent != extent) {
+            self.gbuffer = None;
+            let needed = extent.width as u64 * extent.height as u64 * GBUFFER_BYTES_PER_PIXEL;
+            // Half the largest device-local heap at most: the targets and meshes need the rest.
+            let memory = &self.device.memory;
+            let heap = memory.memory_heaps[..memory.memory_heap_count as usize]
+                .iter()
+                .filter(|h| h.flags.contains(vk::MemoryHeapFlags::DEVICE_LOCAL))
+                .map(|h| h.size)
+                .max()
+                .unwrap_or(0);
+            if needed > heap / 2 {
+                return Err(Error::TooLarge {
+                    what: "the deferred path's G-buffer",
+                    bytes: needed,
+                    limit: heap / 2,
+                    limit_name: "half the largest device-local memory heap",
+                });
+            }
+            let images = GBUFFER_FORMATS
+                .iter()
+                .map(|&format| {
+                    Image::new(
+                        &self.device,
+                        extent,
+                        format,
+                        vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::SAMPLED,
+                        vk::ImageAspectFlags::COLOR,
+                    )
+                })
+                .collect::<Result<Vec<_>>>()?;
+            let sizes = [
+                vk::DescriptorPoolSize {
+                    ty: vk::DescriptorType::COMBINED_IMAGE_SAMPLER,
+                    descriptor_count: 4,
+                },
+                vk::DescriptorPoolSize {
+                    ty: vk::DescriptorType::STORAGE_BUFFER,
+                    descriptor_count: 2,
+                },
+            ];
+            let descriptors = DescriptorPool::with_one_set(&self.device, &sizes, &self.set_layout)?;
+            let infos: Vec<[vk::DescriptorImageInfo; 1]> = images
+                .iter()
+                .map(|i| {
+                    [vk::DescriptorImageInfo {
+                        sampler: self.sampler.raw(),
+                        image_view: i.view(),
+                        image_layout: vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL,
+                    }]
+                })
+                .collect();
+            let writes: Vec<vk::WriteDescriptorSet> = infos
+                .iter()
+                .enumerate()
+                .map(|(binding, info)| {
+                    vk::WriteDescriptorSet::default()
+                        .dst_set(descriptors.set())
+                        .dst_binding(binding as u32)
+                        .descriptor_type(vk::DescriptorType::COMBINED_IMAGE_SAMPLER)
+                        .image_info(info)
+                })
+                .collect();
+            let counter = [vk::DescriptorBufferInfo {
+                buffer: self.counter.raw(),
+                offset: 0,
+                range: vk::WHOLE_SIZE,
+            }];
+            let mut writes = writes;
+            writes.push(
+                vk::WriteDescriptorSet::default()
+                    .dst_set(descriptors.set())
+                    .dst_binding(5)
+                    .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+                    .buffer_info(&counter),
+            );
+            // SAFETY: the set, views, sampler and counter are this device's and alive; no
+            // submitted work uses the new set.
+            unsafe { self.device.raw.update_descriptor_sets(&writes, &[]) };
+            self.gbuffer = Some(GBuffer {
+                extent,
+                descriptors,
+                images,
+                records: vk::Buffer::null(),
+            });
+        }
+        let gbuffer = self
+            .gbuffer
+            .as_mut()
+            .ok_or(Error::Internal("no G-buffer after it was made"))?;
+        if gbuffer.records != records {
+            let info = [vk::DescriptorBufferInfo {
+                buffer: records,
+                offset: 0,
+                range: vk::WHOLE_SIZE,
+            }];
+            let write = vk::WriteDescriptorSet::default()
+                .dst_set(gbuffer.descriptors.set())
+                .dst_binding(4)
+                .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+                .buffer_info(&info);
+            // SAFETY: the renderer waited for the last submission, the only user of the set;
+            // the buffer is the lighting's and outlives this frame's submission.
+            unsafe { self.device.raw.update_descriptor_sets(&[write], &[]) };
+            gbuffer.records = records;
+        }
+        Ok(())
+    }
+
+    /// The lighting pass's pipeline for `key`.
+    fn pipeline(&mut self, key: SpecKey, counted: bool, cache: vk::PipelineCache) -> Result<vk::Pipeline> {
+        if let Some(p) = self.pipelines.get(&(key, counted)) {
+            return Ok(p.raw());
+        }
+        let name = if counted { "deferred_counted" } else { "deferred" };
+        let variant = shaders::variant(name)
+            .ok_or_else(|| Error::MissingFeature(format!("the embedded shader variant {name}")))?;
+        let vert = shader_module(&self.device, name, variant.vertex, 0)?;
+        let frag = shader_module(&self.device, name, variant.fragment, 0)?;
+        let entries: [vk::SpecializationMapEntry; SPEC_CONSTANT_COUNT] =
+            SpecConstant::ALL.map(|c| vk::SpecializationMapEntry {
+                constant_id: c.id(),
+                offset: c.id() * 4,
+                size: 4,
+            });
+        let mut spec = key;
+        spec.values[SpecConstant::Points as usize] = 0;
+        spec.values[SpecConstant::PointSize as usize] = 1f32.to_bits() as i32;
+        let specialization = vk::SpecializationInfo::default()
+            .map_entries(&entries)
+            .data(bytemuck::bytes_of(&spec));
+        let stages = [
+            vk::PipelineShaderStageCreateInfo::default()
+                .stage(vk::ShaderStageFlags::VERTEX)
+                .module(vert.raw())
+                .name(c"main")
+                .specialization_info(&specialization),
+            vk::PipelineShaderStageCreateInfo::default()
+                .stage(vk::ShaderStageFlags::FRAGMENT)
+                .module(frag.raw())
+                .name(c"main")
+                .specialization_info(&specialization),
+        ];
+        let vertex_input = vk::PipelineVertexInputStateCreateInfo::default();
+        let input_assembly = vk::PipelineInputAssemblyStateCreateInfo::default()
+            .topology(vk::PrimitiveTopology::TRIANGLE_LIST);
+        let viewport = vk::PipelineViewportStateCreateInfo::default()
+            .viewport_count(1)
+            .scissor_count(1);
+        let rasterization = vk::PipelineRasterizationStateCreateInfo::default()
+            .polygon_mode(vk::PolygonMode::FILL)
+            .cull_mode(vk::CullModeFlags::NONE)
+            .line_width(1.0);
+        let multisample = vk::PipelineMultisampleStateCreateInfo::default()
+            .rasterization_samples(vk::SampleCountFlags::TYPE_1);
+        // The triangle lies at depth 1: it passes GREATER where a draw left a nearer depth, so
+        // that blocks of background are culled before the equation runs (and not counted).
+        let depth = vk::PipelineDepthStencilStateCreateInfo::default()
+            .depth_test_enable(true)
+            .depth_write_enable(false)
+            .depth_compare_op(vk::CompareOp::GREATER);
+        let attachments =
+            [vk::PipelineColorBlendAttachmentState::default()
+                .color_write_mask(vk::ColorComponentFlags::RGBA)];
+        let blend = vk::PipelineColorBlendStateCreateInfo::default().attachments(&attachments);
+        let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
+        let dynamic = vk::PipelineDynamicStateCreateInfo::default().dynamic_states(&dynamic_states);
+        let color_formats = [COLOR_FORMAT];
+        let mut rendering = vk::PipelineRenderingCreateInfo::default()
+            .color_attachment_formats(&color_formats)
+            .depth_attachment_format(DEPTH_FORMAT);
+        let info = vk::GraphicsPipelineCreateInfo::default()
+            .stages(&stages)
+            .vertex_input_state(&vertex_input)
+            .input_assembly_state(&input_assembly)
+            .viewport_state(&viewport)
+            .rasterization_state(&rasterization)
+            .multisample_state(&multisample)
+            .depth_stencil_state(&depth)
+            .color_blend_state(&blend)
+            .dynamic_state(&dynamic)
+            .layout(self.layout.raw())
+            .push_next(&mut rendering);
+        let pipeline = Pipeline::graphics(&self.device, cache, &info)?;
+        let raw = pipeline.raw();
+        self.pipelines.insert((key, counted), pipeline);
+        Ok(raw)
+    }
+
+    /// Everything a deferred frame of `extent` records with, its draws staged as `staged`.
+    pub(super) fn pass(
+        &mut self,
+        lighting: &Lighting,
+        extent: vk::Extent2D,
+        key: SpecKey,
+        staged: &[Staged],
+        counted: bool,
+    ) -> Result<DeferredPass> {
+        let records = one_record_buffer(staged)
+            .ok_or(Error::Internal("a deferred frame's records in several buffers"))?;
+        let state = staged
+            .first()
+            .map(Staged::state_binding)
+            .ok_or(Error::Internal("a deferred frame without draws"))?;
+        self.ensure_layout(lighting)?;
+        self.ensure_gbuffer(extent, records)?;
+        let pipeline = self.pipeline(key, counted, lighting.pipeline_cache())?;
+        let gbuffer = self
+            .gbuffer
+            .as_ref()
+            .ok_or(Error::Internal("no G-buffer after it was made"))?;
+        let raw = |i: usize| gbuffer.images[i].raw();
+        let view = |i: usize| gbuffer.images[i].view();
+        Ok(DeferredPass {
+            images: [raw(0), raw(1), raw(2), raw(3)],
+            views: [view(0), view(1), view(2), view(3)],
+            pipeline,
+            layout: self.layout.raw(),
+            set: gbuffer.descriptors.set(),
+            state,
+            counter: counted.then(|| self.counter.raw()),
+        })
+    }
+
+    /// The last counted lighting pass's evaluations (after its fence).
+    pub(super) fn evaluations(&self) -> Option<u64> {
+        let bytes = self.counter.bytes()?;
+        Some(u32::from_le_bytes(bytes.get(..4)?.try_into().ok()?) as u64)
+    }
+}
+
+/// The G-buffer images' barrier from `old` to `new`.
+pub(super) fn gbuffer_barriers(
+    pass: &DeferredPass,
+    (src_stage, src_access, old): (vk::PipelineStageFlags2, vk::AccessFlags2, vk::ImageLayout),
+    (dst_stage, dst_access, new): (vk::PipelineStageFlags2, vk::AccessFlags2, vk::ImageLayout),
+) -> [vk::ImageMemoryBarrier2<'static>; 4] {
+    pass.images.map(|image| {
+        vk::ImageMemoryBarrier2::default()
+            .src_stage_mask(src_stage)
+            .src_access_mask(src_access)
+            .dst_stage_mask(dst_stage)
+            .dst_access_mask(dst_access)
+            .old_layout(old)
+            .new_layout(new)
+            .image(image)
+            .subresource_range(subresource(vk::ImageAspectFlags::COLOR))
+    })
+}
+
+/// Records one deferred frame: the G-buffer pass (the draws, with depth), then the lighting
+/// pass over the whole target, inside the statistics query when there is one (the lighting
+/// pass alone: its fragment invocations are the equation's evaluations). Returns the host
+/// time the draws took to record.
+///
+/// # Safety
+///
+/// As `record::record_pass`; `pass` was made for these targets' extent and these staged draws,
+/// which were staged for the G-buffer pass.
+pub(super) unsafe fn record_deferred(
+    lighting: &Lighting,
+    frame: &Frame,
+    (lits, staged): (&[crate::draw::lighting::LitDraw], &[Staged]),
+    targets: &super::Targets,
+    pass: &DeferredPass,
+    cmd: vk::CommandBuffer,
+    statistics: Option<vk::QueryPool>,
+) -> Result<f64> {
+    let vkd = &lighting.device().raw;
+    let extent = targets.extent;
+    let area = vk::Rect2D {
+        offset: vk::Offset2D { x: 0, y: 0 },
+        extent,
+    };
+    let viewport = vk::Viewport {
+        x: 0.0,
+        y: 0.0,
+        width: extent.width as f32,
+        height: extent.height as f32,
+        min_depth: 0.0,
+        max_depth: 1.0,
+    };
+    let color_stage = vk::PipelineStageFlags2::COLOR_ATTACHMENT_OUTPUT;
+    let color_write = vk::AccessFlags2::COLOR_ATTACHMENT_WRITE;
+    let tests = vk::PipelineStageFlags2::EARLY_FRAGMENT_TESTS | vk::PipelineStageFlags2::LATE_FRAGMENT_TESTS;
+    let sampled = (
+        vk::PipelineStageFlags2::FRAGMENT_SHADER,
+        vk::AccessFlags2::SHADER_SAMPLED_READ,
+    );
+    // The G-buffer after the last frame's lighting pass read it; the depth and the color
+    // image as the forward pass takes them.
+    let mut to_attachments: Vec<vk::ImageMemoryBarrier2> = gbuffer_barriers(
+        pass,
+        (
+            sampled.0 | color_stage,
+            sampled.1 | color_write,
+            vk::ImageLayout::UNDEFINED,
+        ),
+        (
+            color_stage,
+            color_write,
+            vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
+        ),
+    )
+    .to_vec();
+    to_attachments.push(
+        vk::ImageMemoryBarrier2::default()
+            .src_stage_mask(tests)
+            .src_access_mask(vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_WRITE)
+            .dst_stage_mask(tests)
+            .dst_access_mask(
+                vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_READ
+                    | vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_WRITE,
+            )
+            .old_layout(vk::ImageLayout::UNDEFINED)
+            .new_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
+            .image(targets.depth.raw())
+            .subresource_range(subresource(vk::ImageAspectFlags::DEPTH)),
+    );
+    to_attachments.push(
+        vk::ImageMemoryBarrier2::default()
+            .src_stage_mask(vk::PipelineStageFlags2::COPY | color_stage)
+            .src_access_mask(vk::AccessFlags2::TRANSFER_READ | color_write)
+            .dst_stage_mask(color_stage)
+            .dst_access_mask(color_write)
+            .old_layout(vk::ImageLayout::UNDEFINED)
+            .new_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
+            .image(targets.color.raw())
+            .subresource_range(subresource(vk::ImageAspectFlags::COLOR)),
+    );
+    // Nothing drawn: a record index of 0 (the lighting pass leaves such pixels alone).
+    let gbuffer_attachments = pass.views.map(|view| {
+        vk::RenderingAttachmentInfo::default()
+            .image_view(view)
+            .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
+            .load_op(vk::AttachmentLoadOp::CLEAR)
+            .store_op(vk::AttachmentStoreOp::STORE)
+            .clear_value(vk::ClearValue {
+                color: vk::ClearColorValue { uint32: [0; 4] },
+            })
+    });
+    let depth_attachment = vk::RenderingAttachmentInfo::default()
+        .image_view(targets.depth.view())
+        .image_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
+        .load_op(vk::AttachmentLoadOp::CLEAR)
+        .store_op(vk::AttachmentStoreOp::STORE)
+        .clear_value(vk::ClearValue {
+            depth_stencil: vk::ClearDepthStencilValue {
+                depth: 1.0,
+                stencil: 0,
+            },
+        });
+    let gbuffer_pass = vk::RenderingInfo::default()
+        .render_area(area)
+        .layer_count(1)
+        .color_attachments(&gbuffer_attachments)
+        .depth_attachment(&depth_attachment);
+    let mut to_sampled = gbuffer_barriers(
+        pass,
+        (
+            color_stage,
+            color_write,
+            vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
+        ),
+        (sampled.0, sampled.1, vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL),
+    )
+    .to_vec();
+    to_sampled.push(
+        vk::ImageMemoryBarrier2::default()
+            .src_stage_mask(tests)
+            .src_access_mask(vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_WRITE)
+            .dst_stage_mask(tests)
+            .dst_access_mask(vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_READ)
+            .old_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
+            .new_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
+            .image(targets.depth.raw())
+            .subresource_range(subresource(vk::ImageAspectFlags::DEPTH)),
+    );
+    let c = frame.clear_color;
+    let color_attachments = [vk::RenderingAttachmentInfo::default()
+        .image_view(targets.color.view())
+        .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
+        .load_op(vk::AttachmentLoadOp::CLEAR)
+        .store_op(vk::AttachmentStoreOp::STORE)
+        .clear_value(vk::ClearValue {
+            color: vk::ClearColorValue {
+                float32: [c.x, c.y, c.z, c.w],
+            },
+        })];
+    // The G-buffer pass's depth, read by the lighting pass's depth test.
+    let depth_read = vk::RenderingAttachmentInfo::default()
+        .image_view(targets.depth.view())
+        .image_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
+        .load_op(vk::AttachmentLoadOp::LOAD)
+        .store_op(vk::AttachmentStoreOp::DONT_CARE);
+    let lighting_pass = vk::RenderingInfo::default()
+        .render_area(area)
+        .layer_count(1)
+        .color_attachments(&color_attachments)
+        .depth_attachment(&depth_read);
+
+    // SAFETY: the function's contract: cmd records outside any pass; every handle belongs to
+    // this device and outlives the submission. The same holds for each block below.
+    unsafe {
+        vkd.cmd_pipeline_barrier2(
+            cmd,
+            &vk::DependencyInfo::default().image_memory_barriers(&to_attachments),
+        );
+        vkd.cmd_begin_rendering(cmd, &gbuffer_pass);
+        vkd.cmd_set_viewport(cmd, 0, &[viewport]);
+        vkd.cmd_set_scissor(cmd, 0, &[area]);
+    }
+    let draws_start = std::time::Instant::now();
+    // SAFETY: as above, inside the G-buffer pass whose formats the staged G-buffer pipelines
+    // were made for; staged[i] was staged for lits[i] in this frame's slot.
+    unsafe { lighting.record_staged_run(cmd, staged, lits) };
+    let record_ns = draws_start.elapsed().as_nanos() as f64;
+    // SAFETY: as above; the G-buffer becomes the lighting pass's input.
+    unsafe {
+        vkd.cmd_end_rendering(cmd);
+        vkd.cmd_pipeline_barrier2(
+            cmd,
+            &vk::DependencyInfo::default().image_memory_barriers(&to_sampled),
+        );
+    }
+    if let Some(counter) = pass.counter {
+        let to_shader = [vk::BufferMemoryBarrier2::default()
+            .src_stage_mask(vk::PipelineStageFlags2::CLEAR)
+            .src_access_mask(vk::AccessFlags2::TRANSFER_WRITE)
+            .dst_stage_mask(vk::PipelineStageFlags2::FRAGMENT_SHADER)
+            .dst_access_mask(vk::AccessFlags2::SHADER_STORAGE_READ | vk::AccessFlags2::SHADER_STORAGE_WRITE)
+            .buffer(counter)
+            .offset(0)
+            .size(vk::WHOLE_SIZE)];
+        // SAFETY: as above, outside any pass; the counter is the deferred path's, 4 bytes.
+        unsafe {
+            vkd.cmd_fill_buffer(cmd, counter, 0, vk::WHOLE_SIZE, 0);
+            vkd.cmd_pipeline_barrier2(
+                cmd,
+                &vk::DependencyInfo::default().buffer_memory_barriers(&to_shader),
+            );
+        }
+    }
+    if let Some(pool) = statistics {
+        // SAFETY: as above; the query was reset before the pass, outside it.
+        unsafe { vkd.cmd_begin_query(cmd, pool, 0, vk::QueryControlFlags::empty()) };
+    }
+    // SAFETY: as above; the lighting pass's pipeline, layout and sets are the deferred path's,
+    // the state block's set and offset the draws' own.
+    unsafe {
+        vkd.cmd_begin_rendering(cmd, &lighting_pass);
+        vkd.cmd_set_viewport(cmd, 0, &[viewport]);
+        vkd.cmd_set_scissor(cmd, 0, &[area]);
+        vkd.cmd_bind_pipeline(cmd, vk::PipelineBindPoint::GRAPHICS, pass.pipeline);
+        vkd.cmd_bind_descriptor_sets(
+            cmd,
+            vk::PipelineBindPoint::GRAPHICS,
+            pass.layout,
+            0,
+            &[pass.state.0, pass.set],
+            &[pass.state.1],
+        );
+        vkd.cmd_draw(cmd, 3, 1, 0, 0);
+        vkd.cmd_end_rendering(cmd);
+    }
+    if let Some(pool) = statistics {
+        // SAFETY: as above; ends the query begun before the lighting pass.
+        unsafe { vkd.cmd_end_query(cmd, pool, 0) };
+    }
+    if let Some(counter) = pass.counter {
+        let to_host = [vk::BufferMemoryBarrier2::default()
+            .src_stage_mask(vk::PipelineStageFlags2::FRAGMENT_SHADER)
+            .src_access_mask(vk::AccessFlags2::SHADER_STORAGE_WRITE)
+            .dst_stage_mask(vk::PipelineStageFlags2::HOST)
+            .dst_access_mask(vk::AccessFlags2::HOST_READ)
+            .buffer(counter)
+            .offset(0)
+            .size(vk::WHOLE_SIZE)];
+        // SAFETY: as above; the count is read after the fence.
+        unsafe {
+            vkd.cmd_pipeline_barrier2(
+                cmd,
+                &vk::DependencyInfo::default().buffer_memory_barriers(&to_host),
+            )
+        };
+    }
+    Ok(record_ns)
+}
