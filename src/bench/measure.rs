@@ -78,6 +78,9 @@ pub struct PointStats {
     /// Pixels the drawing covers (those not left at the clear color), counted in a frame read
     /// back after the measured ones (ffvk's fragment sweep only).
     pub covered_pixels: Option<u64>,
+    /// The deferred path's own count of the pixels its lighting pass evaluated the equation at
+    /// (deferred points only).
+    pub evaluations: Option<u64>,
 }
 
 /// ffvk against GL on one scene.
@@ -161,6 +164,9 @@ pub(super) fn measure_ffvk(
     let state = point_state(point)?;
     let mut frame = Frame::new(point.width, point.height);
     frame.clear_color = CLEAR;
+    if point.variant == Variant::Deferred {
+        frame.fragment_path = ffvk::FragmentPath::Deferred;
+    }
     frame.draws = modelviews
         .into_iter()
         .map(|modelview| Draw::new(mesh, modelview, projection, state))
@@ -178,6 +184,8 @@ pub(super) fn measure_ffvk(
         let counted = renderer.measure(&frame)?;
         if let Some(last) = samples.last_mut() {
             last.pipeline = counted.pipeline;
+            last.evaluations = counted.evaluations;
+            last.deferred = counted.deferred;
         }
         samples
     } else {
@@ -196,6 +204,13 @@ pub(super) fn measure_ffvk(
     let wall: Vec<f64> = samples.iter().map(|s| s.wall_ns / 1e6).collect();
     let gpu_ms = Spread::of(&gpu);
     let wall_ms = Spread::of(&wall).expect("at least one frame");
+    if point.variant == Variant::Deferred && !samples.last().is_some_and(|s| s.deferred) {
+        return Err(crate::Error::Bench(format!(
+            "{}: the frame was drawn forward, not deferred",
+            point.label()
+        )));
+    }
+    let evaluations = samples.last().and_then(|s| s.evaluations);
     let last = samples.last().and_then(|s| s.pipeline);
     let covered_pixels = if point.group == Group::Fragment {
         Some(covered(&renderer.render(&frame)?))
@@ -213,6 +228,7 @@ pub(super) fn measure_ffvk(
         fs_invocations: last.map(|p| p.fragment_shader_invocations),
         clipping_primitives: last.map(|p| p.clipping_primitives),
         covered_pixels,
+        evaluations,
     })
 }
 
@@ -297,6 +313,7 @@ impl GlAnchor {
             fs_invocations: None,
             clipping_primitives: None,
             covered_pixels: None,
+            evaluations: None,
         })
     }
 }

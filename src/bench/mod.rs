@@ -393,6 +393,7 @@ pub fn run_sweep(
     for (variant, specialize) in [
         (Variant::Specialized, Specialize::Always),
         (Variant::Uber, Specialize::Never),
+        (Variant::Deferred, Specialize::Always),
     ] {
         let mut variant_options = options.clone();
         variant_options.specialize = specialize;

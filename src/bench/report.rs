@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use serde::Serialize;
 
 use super::measure::Spread;
-use super::sweep::{sphere_counts, BenchMode, Engine, Group, Point};
+use super::sweep::{sphere_counts, BenchMode, Engine, Group, Point, Variant};
 use super::tables::{
     costs_table, density_table, draw_cost_note, draw_cost_table, environment, fragment_table,
     light_count_table, light_kind_table, primitives_table, size_table, COSTS_NOTE, FRAGMENT_NOTE,
@@ -19,7 +19,7 @@ use crate::{write_file, Error, Result};
 // The files.
 
 /// The CSV columns, in order.
-pub const CSV_COLUMNS: [&str; 39] = [
+pub const CSV_COLUMNS: [&str; 40] = [
     "group",
     "engine",
     "mode",
@@ -53,6 +53,7 @@ pub const CSV_COLUMNS: [&str; 39] = [
     "fs_invocations",
     "clipping_primitives",
     "covered_pixels",
+    "evaluations",
     "lp_num_threads",
     "device",
     "driver_info",
@@ -111,6 +112,7 @@ pub fn csv(report: &BenchReport) -> String {
             opt(s.fs_invocations),
             opt(s.clipping_primitives),
             opt(s.covered_pixels),
+            opt(s.evaluations),
             r.lp_num_threads.clone(),
             r.device.clone(),
             r.driver_info.clone(),
@@ -381,33 +383,41 @@ pub fn markdown(report: &BenchReport) -> String {
         );
     }
     for &size in &report.sweep.fragment_sizes {
-        let at = |mode| {
+        let at = |mode, variant| {
             find(&report.results, |p| {
-                p.group == Group::Fragment && p.width == size && p.engine == Engine::Ffvk && p.mode == mode
+                p.group == Group::Fragment
+                    && p.width == size
+                    && p.engine == Engine::Ffvk
+                    && p.mode == mode
+                    && p.variant == variant
             })
-            .map(|r| r.stats.time_ms)
         };
-        let fragment = find(&report.results, |p| {
-            p.group == Group::Fragment && p.width == size && p.mode == BenchMode::Fragment
-        });
-        let per_pixel = fragment
-            .and_then(|r| r.stats.fs_invocations.zip(r.stats.covered_pixels))
-            .filter(|&(_, covered)| covered > 0)
-            .map(|(n, covered)| n as f64 / (covered as f64 * f64::from(report.sweep.draws)));
-        if let (Some(f), Some(v), Some(u)) = (
-            at(BenchMode::Fragment),
-            at(BenchMode::Vertex),
-            at(BenchMode::Unlit),
-        ) {
-            let _ = writeln!(
-                m,
-                "- fragment lighting at {size}² ({} vertices, {}): {:.2}× unlit, {:.2}× vertex mode; {} fragment-stage invocations per covered pixel and draw",
-                sphere_counts(report.sweep.fragment_stacks).0,
-                lights_text(report.sweep.fragment_lights),
-                f / u,
-                f / v,
-                per_pixel.map_or("–".into(), |p| format!("{p:.1}"))
-            );
+        let time = |r: Option<&BenchResult>| r.map(|r| r.stats.time_ms);
+        let (v, u) = (
+            time(at(BenchMode::Vertex, Variant::Specialized)),
+            time(at(BenchMode::Unlit, Variant::Specialized)),
+        );
+        for (path, variant) in [("forward", Variant::Specialized), ("deferred", Variant::Deferred)] {
+            let fragment = at(BenchMode::Fragment, variant);
+            let runs = fragment.and_then(|r| match variant {
+                Variant::Deferred => r.stats.evaluations,
+                _ => r.stats.fs_invocations,
+            });
+            let per_pixel = runs
+                .zip(fragment.and_then(|r| r.stats.covered_pixels))
+                .filter(|&(_, covered)| covered > 0)
+                .map(|(n, covered)| n as f64 / covered as f64);
+            if let (Some(f), Some(v), Some(u)) = (time(fragment), v, u) {
+                let _ = writeln!(
+                    m,
+                    "- fragment lighting at {size}², {path} ({} vertices, {}): {:.2}× unlit, {:.2}× vertex mode; the equation runs {} times per covered pixel",
+                    sphere_counts(report.sweep.fragment_stacks).0,
+                    lights_text(report.sweep.fragment_lights),
+                    f / u,
+                    f / v,
+                    per_pixel.map_or("–".into(), |p| format!("{p:.2}"))
+                );
+            }
         }
     }
     m
@@ -416,7 +426,7 @@ pub fn markdown(report: &BenchReport) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bench::sweep::Variant;
+
     use crate::bench::{points, summarize, BenchEnv, LightKind, PointStats, SweepConfig};
 
     /// Made-up times that grow with vertices, pixels and lights, the uber-shader and GL slower;
@@ -447,6 +457,7 @@ mod tests {
             Variant::Specialized => t,
             Variant::Uber => t * 1.25,
             Variant::FixedFunction => t * 1.5,
+            Variant::Deferred => t * 0.8,
         }
     }
 
@@ -497,6 +508,7 @@ mod tests {
                         fs_invocations: ffvk.then_some(point.pixels / 2),
                         clipping_primitives: ffvk.then_some(point.triangles),
                         covered_pixels: ffvk.then_some(point.pixels / 4),
+                        evaluations: (point.variant == Variant::Deferred).then_some(point.pixels / 4),
                     },
                     point,
                     lp_num_threads: env.lp_num_threads.clone(),
@@ -578,12 +590,14 @@ Times are per frame in ms: the median, then the interquartile range; ffvk's from
 
 ### Fragment lighting on a dense mesh (91 vertices, 2 directional lights)
 
-| image | covered pixels | vertex | fragment | unlit | fragment ÷ unlit | fragment ÷ vertex | FS invocations (fragment) | per covered pixel |
-| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |
-| 16² | 64 | 1.19 (1.13–1.25) | 0.83 (0.79–0.87) | 0.11 (0.10–0.12) | 7.50 | 0.69 | 128 | 2.00 |
-| 24² | 144 | 1.26 (1.19–1.32) | 1.79 (1.70–1.88) | 0.17 (0.17–0.18) | 10.25 | 1.42 | 288 | 2.00 |
+| image | path | covered pixels | fragment | vertex | unlit | fragment ÷ unlit | fragment ÷ vertex | equation runs per covered pixel | counted by |
+| ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |
+| 16² | forward | 64 | 0.83 (0.79–0.87) | 1.19 (1.13–1.25) | 0.11 (0.10–0.12) | 7.50 | 0.69 | 2.00 | pipeline statistics |
+| 16² | deferred | 64 | 0.66 (0.63–0.69) | 1.19 (1.13–1.25) | 0.11 (0.10–0.12) | 6.00 | 0.55 | 1.00 | the lighting pass's own count |
+| 24² | forward | 144 | 1.79 (1.70–1.88) | 1.26 (1.19–1.32) | 0.17 (0.17–0.18) | 10.25 | 1.42 | 2.00 | pipeline statistics |
+| 24² | deferred | 144 | 1.43 (1.36–1.50) | 1.26 (1.19–1.32) | 0.17 (0.17–0.18) | 8.20 | 1.14 | 1.00 | the lighting pass's own count |
 
-Covered pixels: those not at the clear color in a frame read back after the measured ones. FS invocations: the fragment mode's pipeline-statistics count of a frame, which lavapipe (llvmpipe) makes per 4×4 block a triangle touches, partly covered blocks included (a GPU counts about one per pixel and draw); per covered pixel: that count over the covered pixels and the draws of the sphere in a frame, the number of times the equation runs for a pixel the image shows.
+Covered pixels: those not at the clear color in a frame read back after the measured ones. Equation runs per covered pixel: over the covered pixels, for the forward path the fragment stage's pipeline-statistics count, which lavapipe (llvmpipe) makes per 4×4 block a triangle touches, partly covered blocks included (a GPU counts about one per pixel), for every draw of the sphere in a frame (the gpu sweep's 16 each pass the depth test); for the deferred path the lighting pass's own count (an atomic add per pixel it lights, once whatever the draws), its G-buffer pass not counted.
 
 ### What a vertex, a pixel and a light cost
 
@@ -609,8 +623,10 @@ Least-squares slopes of the sweeps above, in ns: per vertex drawn (density sweep
 - ffvk vertex mode ÷ the GL driver's fixed-function GL (llvmpipe (LLVM 15.0.6, 256 bits)) (host time per frame, geometric mean over 10 scenes): 0.67
 - ffvk vertex mode ÷ GL per scene: 0.67 to 0.67; 0 of 10 scenes above 1.0
 - per-vertex lighting's added cost (vertex-mode minus unlit ns per vertex, from the density fits): ffvk 7900 ns, GL 11850 ns
-- fragment lighting at 16² (91 vertices, 2 directional lights): 7.50× unlit, 0.69× vertex mode; 2.0 fragment-stage invocations per covered pixel and draw
-- fragment lighting at 24² (91 vertices, 2 directional lights): 10.25× unlit, 1.42× vertex mode; 2.0 fragment-stage invocations per covered pixel and draw
+- fragment lighting at 16², forward (91 vertices, 2 directional lights): 7.50× unlit, 0.69× vertex mode; the equation runs 2.00 times per covered pixel
+- fragment lighting at 16², deferred (91 vertices, 2 directional lights): 6.00× unlit, 0.55× vertex mode; the equation runs 1.00 times per covered pixel
+- fragment lighting at 24², forward (91 vertices, 2 directional lights): 10.25× unlit, 1.42× vertex mode; the equation runs 2.00 times per covered pixel
+- fragment lighting at 24², deferred (91 vertices, 2 directional lights): 8.20× unlit, 1.14× vertex mode; the equation runs 1.00 times per covered pixel
 "#;
 
     #[test]

@@ -390,6 +390,9 @@ pub enum Variant {
     Uber,
     /// GL's own fixed-function pipeline.
     FixedFunction,
+    /// ffvk's specialized pipelines on the fragment mode's deferred path
+    /// ([`FragmentPath::Deferred`](ffvk::FragmentPath::Deferred)).
+    Deferred,
 }
 
 impl Variant {
@@ -399,6 +402,7 @@ impl Variant {
             Variant::Specialized => "specialized",
             Variant::Uber => "uber",
             Variant::FixedFunction => "fixed_function",
+            Variant::Deferred => "deferred",
         }
     }
 }
@@ -685,8 +689,14 @@ pub fn points(config: &SweepConfig) -> Vec<Point> {
     // Fragment lighting's cost on the dense mesh, ffvk's modes only (GL has no fragment mode).
     let (vertices, triangles) = sphere_counts(config.fragment_stacks);
     for &size in &config.fragment_sizes {
-        for mode in [BenchMode::Vertex, BenchMode::Fragment, BenchMode::Unlit] {
-            let mut point = base(Group::Fragment, Engine::Ffvk, mode, Variant::Specialized);
+        let paths = [
+            (BenchMode::Vertex, Variant::Specialized),
+            (BenchMode::Fragment, Variant::Specialized),
+            (BenchMode::Fragment, Variant::Deferred),
+            (BenchMode::Unlit, Variant::Specialized),
+        ];
+        for (mode, variant) in paths {
+            let mut point = base(Group::Fragment, Engine::Ffvk, mode, variant);
             point.stacks = config.fragment_stacks;
             (point.vertices, point.triangles) = (vertices, triangles);
             (point.width, point.height, point.pixels) = (size, size, size as u64 * size as u64);

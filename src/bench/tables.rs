@@ -293,60 +293,69 @@ pub(super) fn size_table(report: &BenchReport) -> Table {
 
 /// What the fragment sweep's columns mean.
 pub(super) const FRAGMENT_NOTE: &str = "Covered pixels: those not at the clear color in a frame read back \
-after the measured ones. FS invocations: the fragment mode's pipeline-statistics count of a \
-frame, which lavapipe (llvmpipe) makes per 4×4 block a triangle touches, partly covered blocks \
-included (a GPU counts about one per pixel and draw); per covered pixel: that count over the \
-covered pixels and the draws of the sphere in a frame, the number of times the equation runs for \
-a pixel the image shows.";
+after the measured ones. Equation runs per covered pixel: over the covered pixels, for the \
+forward path the fragment stage's pipeline-statistics count, which lavapipe (llvmpipe) makes per \
+4×4 block a triangle touches, partly covered blocks included (a GPU counts about one per pixel), \
+for every draw of the sphere in a frame (the gpu sweep's 16 each pass the depth test); for the \
+deferred path the lighting pass's own count (an atomic add per pixel it lights, once whatever \
+the draws), its G-buffer pass not counted.";
 
 /// Fragment lighting on the dense mesh: the three modes' times, the ratios issue 37 sets goals
 /// for, and the fragment stage's invocations per covered pixel.
 pub(super) fn fragment_table(report: &BenchReport) -> Table {
-    let mut t = Table::new(
-        [
-            "image",
-            "covered pixels",
-            "vertex",
-            "fragment",
-            "unlit",
-            "fragment ÷ unlit",
-            "fragment ÷ vertex",
-            "FS invocations (fragment)",
-            "per covered pixel",
-        ]
-        .map(|h| (h, Align::Right)),
-    );
+    let mut t = Table::new([
+        ("image", Align::Right),
+        ("path", Align::Left),
+        ("covered pixels", Align::Right),
+        ("fragment", Align::Right),
+        ("vertex", Align::Right),
+        ("unlit", Align::Right),
+        ("fragment ÷ unlit", Align::Right),
+        ("fragment ÷ vertex", Align::Right),
+        ("equation runs per covered pixel", Align::Right),
+        ("counted by", Align::Left),
+    ]);
     for &size in &report.sweep.fragment_sizes {
-        let at = |mode| {
+        let at = |mode, variant| {
             find(&report.results, |p| {
-                p.group == Group::Fragment && p.width == size && p.engine == Engine::Ffvk && p.mode == mode
+                p.group == Group::Fragment
+                    && p.width == size
+                    && p.engine == Engine::Ffvk
+                    && p.mode == mode
+                    && p.variant == variant
             })
         };
-        let (vertex, fragment, unlit) = (
-            at(BenchMode::Vertex),
-            at(BenchMode::Fragment),
-            at(BenchMode::Unlit),
+        let (vertex, unlit) = (
+            at(BenchMode::Vertex, Variant::Specialized),
+            at(BenchMode::Unlit, Variant::Specialized),
         );
         let time = |r: Option<&BenchResult>| r.map(|r| r.stats.time_ms);
         let over = |a: Option<f64>, b: Option<f64>| ratio(a.zip(b).map(|(a, b)| a / b));
-        let covered = fragment.and_then(|r| r.stats.covered_pixels);
-        let invocations = fragment.and_then(|r| r.stats.fs_invocations);
-        t.row([
-            format!("{size}²"),
-            count_or_dash(covered),
-            cell(vertex),
-            cell(fragment),
-            cell(unlit),
-            over(time(fragment), time(unlit)),
-            over(time(fragment), time(vertex)),
-            count_or_dash(invocations),
-            over(
-                invocations.map(|n| n as f64),
-                covered
-                    .filter(|&c| c > 0)
-                    .map(|c| c as f64 * f64::from(report.sweep.draws)),
-            ),
-        ]);
+        for (path, variant) in [("forward", Variant::Specialized), ("deferred", Variant::Deferred)] {
+            let Some(fragment) = at(BenchMode::Fragment, variant) else {
+                continue;
+            };
+            let covered = fragment.stats.covered_pixels;
+            let (runs, counted_by) = match variant {
+                Variant::Deferred => (fragment.stats.evaluations, "the lighting pass's own count"),
+                _ => (fragment.stats.fs_invocations, "pipeline statistics"),
+            };
+            t.row([
+                format!("{size}²"),
+                path.to_string(),
+                count_or_dash(covered),
+                cell(Some(fragment)),
+                cell(vertex),
+                cell(unlit),
+                over(time(Some(fragment)), time(unlit)),
+                over(time(Some(fragment)), time(vertex)),
+                over(
+                    runs.map(|n| n as f64),
+                    covered.filter(|&c| c > 0).map(|c| c as f64),
+                ),
+                counted_by.to_string(),
+            ]);
+        }
     }
     t
 }

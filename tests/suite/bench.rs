@@ -5,7 +5,7 @@
 use ffvk::vk::Validation;
 use ffvk::RendererOptions;
 use ffvk_cli::bench::{
-    crossover, points, run_sweep, write_outputs, Engine, Group, Spread, SweepConfig, CSV_COLUMNS,
+    crossover, points, run_sweep, write_outputs, Engine, Group, Spread, SweepConfig, Variant, CSV_COLUMNS,
 };
 use indicatif::ProgressBar;
 
@@ -233,7 +233,11 @@ fn a_batched_sweep_draws_every_point_several_times_and_fits_what_a_vertex_pixel_
         assert_eq!(r.point.draws, config.draws);
         // Both engines report GPU time: ffvk's timestamps, llvmpipe's GL_TIME_ELAPSED.
         assert!(s.gpu_ms.is_some_and(|g| g.median > 0.0), "{r:?}");
-        if r.point.engine == Engine::Ffvk {
+        if r.point.variant == Variant::Deferred {
+            // The deferred path's statistics are its lighting pass's; it lights every covered
+            // pixel once, however many draws cover it.
+            assert_eq!(s.evaluations, s.covered_pixels, "{r:?}");
+        } else if r.point.engine == Engine::Ffvk {
             // Every draw lit in full: at least one vertex shader run per triangle corner that
             // the mesh has vertices for, times the draws.
             let vs = s.vs_invocations.expect("counted in a frame of their own");
