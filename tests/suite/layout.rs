@@ -121,10 +121,15 @@ fn stages() -> Vec<(String, &'static [u8])> {
     }
     assert_eq!(
         stages.len(),
-        48,
-        "twenty-four variants (twelve, untextured and textured) of two stages"
+        72,
+        "thirty-six variants (nine, with and without a color array, untextured and textured) of two stages"
     );
     stages
+}
+
+/// The deferred lighting pass's vertex stages: a full-screen triangle, no state, no record.
+fn full_screen(stage: &str) -> bool {
+    stage.starts_with("deferred") && stage.ends_with(".vert")
 }
 
 macro_rules! rust_offsets {
@@ -135,7 +140,7 @@ macro_rules! rust_offsets {
 
 #[test]
 fn the_state_block_matches_the_glsl_in_every_stage() {
-    for (stage, spirv) in stages() {
+    for (stage, spirv) in stages().into_iter().filter(|(s, _)| !full_screen(s)) {
         let r = reflect(spirv);
         let block = r.struct_id("State");
         let want = rust_offsets!(StateBlock: projection, texture_matrix, a_cs, c_c, light_count, lighting,
@@ -170,8 +175,13 @@ fn the_state_block_matches_the_glsl_in_every_stage() {
 #[test]
 fn the_record_block_of_the_fragment_stages_matches_the_draw_record() {
     let mut seen = 0;
+    // The fragment mode's stages for large draws read it as a uniform block; the deferred
+    // lighting pass reads the frame's records as a storage buffer of the same struct.
     for (stage, spirv) in stages().into_iter().filter(|(s, _)| {
-        s.starts_with("fragment") && !s.starts_with("fragment_small") && s.ends_with(".frag")
+        let fragment = s.starts_with("fragment")
+            && !s.starts_with("fragment_small")
+            && !s.starts_with("fragment_gbuffer");
+        (fragment || s.starts_with("deferred")) && s.ends_with(".frag")
     }) {
         let r = reflect(spirv);
         let block = r.struct_id("Record");
@@ -180,8 +190,8 @@ fn the_record_block_of_the_fragment_stages_matches_the_draw_record() {
         seen += 1;
     }
     assert_eq!(
-        seen, 4,
-        "the fragment mode's four fragment stages for large draws"
+        seen, 12,
+        "the fragment mode's four fragment stages for large draws and the lighting pass's eight"
     );
 }
 
@@ -206,7 +216,10 @@ fn the_draw_records_attributes_sit_at_the_locations_the_vertex_stages_read() {
         ("in_current_color", at(offset_of!(DrawRecord, current_color))),
     ];
     assert_eq!(size_of::<DrawRecord>(), 16 * RECORD_LOCATIONS as usize);
-    for (stage, spirv) in stages().into_iter().filter(|(s, _)| s.ends_with(".vert")) {
+    for (stage, spirv) in stages()
+        .into_iter()
+        .filter(|(s, _)| s.ends_with(".vert") && !full_screen(s))
+    {
         let r = reflect(spirv);
         let mut seen = 0;
         for (name, location) in want {
@@ -232,7 +245,7 @@ fn the_draw_records_attributes_sit_at_the_locations_the_vertex_stages_read() {
 }
 
 /// The stages that evaluate the lighting equation, and so read every specialization constant.
-const LIGHTING_STAGES: [&str; 12] = [
+const LIGHTING_STAGES: [&str; 16] = [
     "vertex.vert",
     "vertex_one_color.vert",
     "flat.vert",
@@ -245,6 +258,10 @@ const LIGHTING_STAGES: [&str; 12] = [
     "fragment_current_color.frag",
     "fragment_small.frag",
     "fragment_small_current_color.frag",
+    "deferred.frag",
+    "deferred_current_color.frag",
+    "deferred_counted.frag",
+    "deferred_counted_current_color.frag",
 ];
 
 #[test]
