@@ -70,6 +70,10 @@ enum Command {
         /// Override the image size, as WxH (the vertical field of view is kept).
         #[arg(long, value_parser = parse_size)]
         size: Option<(u32, u32)>,
+        /// Draw the fragment mode forward (at every fragment) or deferred (once per pixel,
+        /// where a frame allows it): overrides the scenes' `[image] fragment_path`.
+        #[arg(long, value_parser = ["forward", "deferred"])]
+        fragment_path: Option<String>,
         /// Check each image against DIR/NAME.png and print a summary table; exit 1 on a
         /// difference past the tolerance or a missing reference.
         #[arg(long, value_name = "DIR")]
@@ -417,6 +421,7 @@ fn run(cli: Cli) -> ffvk_cli::Result<ExitCode> {
             out,
             lighting,
             size,
+            fragment_path,
             check,
             bless,
             jobs,
@@ -434,6 +439,10 @@ fn run(cli: Cli) -> ffvk_cli::Result<ExitCode> {
                 out_dir: out.clone(),
                 modes: lighting.clone(),
                 size: *size,
+                fragment_path: fragment_path.as_deref().map(|p| match p {
+                    "deferred" => ffvk::FragmentPath::Deferred,
+                    _ => ffvk::FragmentPath::Forward,
+                }),
                 references: check.clone(),
                 bless: *bless || regress::bless_from_env(),
                 tolerance: tolerance.tolerance(),
@@ -729,7 +738,12 @@ fn render_one(
     let scene = regress::load_scene(file, job.size, &job.limits, &job.direct, &mut |m| {
         eprintln!("{m}")
     })?;
-    let image = render_scene(&mut renderer, &scene, job.modes.first().copied())?;
+    let image = ffvk::scene::render_scene_with(
+        &mut renderer,
+        &scene,
+        job.modes.first().copied(),
+        job.fragment_path,
+    )?;
     save_png(&image, &path)?;
     println!("{} -> {}", file.display(), path.display());
     Ok(ExitCode::SUCCESS)

@@ -29,7 +29,7 @@ use ffvk::images::compare::heat_map;
 use ffvk::images::compare::{channel_map, compare, heat_map_with_flip, load_image, Comparison, Tolerance};
 use ffvk::images::save_png;
 use ffvk::scene::direct::DirectOptions;
-use ffvk::scene::{render_scene, Limits, Scene};
+use ffvk::scene::{Limits, Scene};
 use ffvk::Renderer;
 
 pub use partition::Partition;
@@ -56,6 +56,9 @@ pub struct Job {
     pub modes: Vec<LightingMode>,
     /// Render at this size (width, height) instead of each scene's own.
     pub size: Option<(u32, u32)>,
+    /// Draw the fragment mode on this path instead of each scene's own
+    /// (`[image] fragment_path`).
+    pub fragment_path: Option<ffvk::FragmentPath>,
     /// A directory of reference images (same names) to check against.
     pub references: Option<PathBuf>,
     /// Write the actual image as the reference when it is missing or differs.
@@ -629,7 +632,7 @@ fn render_image(
     mode: Option<LightingMode>,
     row: &mut Row,
 ) -> Result<()> {
-    let image = render_scene(renderer, scene, mode)?;
+    let image = ffvk::scene::render_scene_with(renderer, scene, mode, job.fragment_path)?;
     // Next to the scene file, an image is named by the file's stem.
     let output = image_path(job, file, &row.name);
     let dir = output.parent().unwrap_or(Path::new(".")).to_path_buf();

@@ -30,13 +30,25 @@ fn golden_tolerance(r: &ffvk::Renderer) -> Tolerance {
 }
 
 fn check_scenes(area: &str, scenes: PathBuf) {
+    check_scenes_on(area, scenes, None)
+}
+
+/// [`check_scenes`] with the fragment mode drawn on `path` (the other modes, and frames the
+/// deferred path cannot draw, stay forward): the same references, the same tolerance.
+fn check_scenes_on(area: &str, scenes: PathBuf, path: Option<ffvk::FragmentPath>) {
     let mut r = renderer();
     let tolerance = golden_tolerance(&r);
+    let out = if path.is_some() {
+        "tests/output/golden_deferred"
+    } else {
+        "tests/output/golden"
+    };
     let job = Job {
         scenes: vec![scenes],
-        out_dir: Some(root().join("tests/output/golden").join(area)),
+        out_dir: Some(root().join(out).join(area)),
         modes: LightingMode::ALL.to_vec(),
         size: Some((128, 128)),
+        fragment_path: path,
         references: Some(root().join("tests/golden").join(area)),
         bless: regress::bless_from_env(),
         tolerance,
@@ -63,6 +75,27 @@ fn golden_asset_scenes_in_every_mode() {
 #[test]
 fn golden_hard_states_in_every_mode() {
     check_scenes("states", root().join("tests/golden/states"));
+}
+
+/// The fragment mode's deferred path draws every golden scene (asset scenes, hard states,
+/// lighting variants) within the golden tolerance of the references the forward path made.
+#[test]
+fn golden_scenes_on_the_deferred_path_match_the_forward_references() {
+    check_scenes_on(
+        "scenes",
+        root().join("assets/scenes"),
+        Some(ffvk::FragmentPath::Deferred),
+    );
+    check_scenes_on(
+        "states",
+        root().join("tests/golden/states"),
+        Some(ffvk::FragmentPath::Deferred),
+    );
+    check_scenes_on(
+        "variants",
+        root().join("tests/golden/variants"),
+        Some(ffvk::FragmentPath::Deferred),
+    );
 }
 
 /// ffvk's lighting variants (Phong's specular, soft spot edges, glTF's falloff): pinned the
@@ -141,6 +174,7 @@ fn references_of_the_drivers_own_family_take_precedence_over_the_shared_ones() {
     let mut r = renderer();
     let family = regress::driver_family(r.device_info());
     let mut job = Job {
+        fragment_path: None,
         scenes: vec![scenes.clone()],
         out_dir: Some(out.clone()),
         modes: Vec::new(),

@@ -64,6 +64,7 @@ pub(super) struct ImageSpec {
     pub(super) clear_color: Option<Vec<f32>>,
     pub(super) lighting_mode: Option<String>,
     pub(super) depth_test: Option<bool>,
+    pub(super) fragment_path: Option<String>,
 }
 
 /// `[camera]`: gluLookAt and gluPerspective parameters, or the matrices themselves.

@@ -318,6 +318,9 @@ pub struct Scene {
     pub clear_color: Vec4,
     /// Whether the depth test is on (GL_DEPTH_TEST with GL_LESS).
     pub depth_test: bool,
+    /// How the fragment mode is drawn (`[image] fragment_path`): forward (the default) or,
+    /// where the frame allows it, deferred.
+    pub fragment_path: crate::FragmentPath,
     /// World to eye.
     pub view: Mat4,
     /// Eye to clip, GL conventions (z in [-w, w]).
@@ -443,6 +446,16 @@ pub fn render_scene(
     scene: &Scene,
     mode: Option<LightingMode>,
 ) -> crate::Result<image::RgbaImage> {
+    render_scene_with(renderer, scene, mode, None)
+}
+
+/// [`render_scene`], `path` overriding the scene's [`Scene::fragment_path`] when given.
+pub fn render_scene_with(
+    renderer: &mut crate::Renderer,
+    scene: &Scene,
+    mode: Option<LightingMode>,
+    path: Option<crate::FragmentPath>,
+) -> crate::Result<image::RgbaImage> {
     let (width, height) = (scene.width, scene.height);
     let uploaded = scene
         .meshes
@@ -469,6 +482,7 @@ pub fn render_scene(
     let mut frame = crate::Frame::new(width, height);
     frame.clear_color = scene.clear_color;
     frame.depth_test = scene.depth_test;
+    frame.fragment_path = path.unwrap_or(scene.fragment_path);
     for (mesh, gpu) in scene.meshes.iter().zip(&uploaded) {
         let mut state = scene.draw_state(mesh);
         if let Some(mode) = mode {

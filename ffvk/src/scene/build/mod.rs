@@ -98,6 +98,16 @@ impl Builder<'_> {
             })?,
             None => LightingMode::Vertex,
         };
+        let fragment_path = match file.image.fragment_path.as_deref() {
+            None | Some("forward") => crate::FragmentPath::Forward,
+            Some("deferred") => crate::FragmentPath::Deferred,
+            Some(other) => {
+                return Err(self.field(
+                    "image.fragment_path",
+                    format!("{:?}: expected \"forward\" or \"deferred\"", shorten(other)),
+                ))
+            }
+        };
         let (view, projection) = self.camera(&file.camera, width as f32 / height as f32)?;
 
         let mut gl = GlState::new();
@@ -295,6 +305,7 @@ impl Builder<'_> {
             height,
             clear_color,
             depth_test: file.image.depth_test.unwrap_or(true),
+            fragment_path,
             view,
             projection,
             state: gl.lighting,
