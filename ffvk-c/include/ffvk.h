@@ -914,7 +914,10 @@ void ffvkLoadTextureMatrix(struct FfvkContext *ctx, const float *m);
 
 /*
  Newell's teapot tessellated at `level` (1 ..= 64 steps per patch side), the mesh ffvk's
- examples and tests draw. Errors: `FFVK_ERROR_INVALID_ARGUMENT` for another level or a null
+ examples and tests draw: y up (the lid), the spout toward +x and the handle toward −x,
+ centred on the origin within x in [−1, 1], y in [−0.483, 0.483], z in [−0.613, 0.613]
+ (Newell's patches closed by their bottom); counter-clockwise front faces, unit normals,
+ colors in [0, 1]. Errors: `FFVK_ERROR_INVALID_ARGUMENT` for another level or a null
  `mesh`.
 
  # Safety
