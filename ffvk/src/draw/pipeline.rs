@@ -63,6 +63,25 @@ pub fn variant_name(
     )
 }
 
+/// The specialization map of every pipeline: each constant is an `int` at offset
+/// 4 × constant_id of the key; a stage that does not use a constant ignores its entry.
+pub(crate) fn spec_entries() -> [vk::SpecializationMapEntry; SPEC_CONSTANT_COUNT] {
+    SpecConstant::ALL.map(|c| vk::SpecializationMapEntry {
+        constant_id: c.id(),
+        offset: c.id() * 4,
+        size: 4,
+    })
+}
+
+/// `key` with the pipeline's own constants set: the topology's (points or not) and the point
+/// size (a float constant, passed to every pipeline, the uber-shader's too).
+pub(crate) fn with_assembly(key: SpecKey, points: bool, point_size: f32) -> SpecKey {
+    let mut spec = key;
+    spec.values[SpecConstant::Points as usize] = points as i32;
+    spec.values[SpecConstant::PointSize as usize] = point_size.to_bits() as i32;
+    spec
+}
+
 /// A shader module from embedded SPIR-V bytes, its descriptor set moved to `set`.
 pub(crate) fn shader_module(
     device: &Arc<Device>,
@@ -484,19 +503,8 @@ impl Pipelines {
             .ok_or_else(|| Error::MissingFeature(format!("the embedded shader variant {name}")))?;
         let vert = shader_module(device, name, variant.vertex, config.set_index)?;
         let frag = shader_module(device, name, variant.fragment, config.set_index)?;
-        // Every constant is an `int` at offset 4 * constant_id of the key; a stage that does
-        // not use a constant ignores its entry.
-        let entries: [vk::SpecializationMapEntry; SPEC_CONSTANT_COUNT] =
-            SpecConstant::ALL.map(|c| vk::SpecializationMapEntry {
-                constant_id: c.id(),
-                offset: c.id() * 4,
-                size: 4,
-            });
-        // The topology's constants are the pipeline's, not the state's; the point size (a
-        // float constant) is passed to every pipeline, the uber-shader's too.
-        let mut spec = k.spec;
-        spec.values[SpecConstant::Points as usize] = (k.topology == Topology::PointList) as i32;
-        spec.values[SpecConstant::PointSize as usize] = k.raster.point_size.0.to_bits() as i32;
+        let entries = spec_entries();
+        let spec = with_assembly(k.spec, k.topology == Topology::PointList, k.raster.point_size.0);
         let specialization = vk::SpecializationInfo::default()
             .map_entries(&entries)
             .data(bytemuck::bytes_of(&spec));

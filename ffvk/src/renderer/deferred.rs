@@ -16,12 +16,15 @@ use std::sync::Arc;
 use ash::vk;
 
 use super::frame::{FragmentPath, Frame};
+use super::record::{area_and_viewport, attachment_barriers, color_attachment, depth_attachment};
 use super::subresource;
 use crate::draw::lighting::{Lighting, Staged};
-use crate::draw::pipeline::{shader_module, Specialize, COLOR_FORMAT, DEPTH_FORMAT, GBUFFER_FORMATS};
+use crate::draw::pipeline::{
+    shader_module, spec_entries, with_assembly, Specialize, COLOR_FORMAT, DEPTH_FORMAT, GBUFFER_FORMATS,
+};
 use crate::error::{Error, Result};
 use crate::gl::state::LightingMode;
-use crate::gpu::layout::{SpecConstant, SpecKey, StateKey, SPEC_CONSTANT_COUNT};
+use crate::gpu::layout::{SpecKey, StateKey};
 use crate::gpu::shaders;
 use crate::vk::objects::{DescriptorPool, DescriptorSetLayout, Pipeline, PipelineLayout, Sampler};
 use crate::vk::{Buffer, Device, Image, MemoryUse};
@@ -278,15 +281,8 @@ impl Deferred {
             .ok_or_else(|| Error::MissingFeature(format!("the embedded shader variant {name}")))?;
         let vert = shader_module(&self.device, name, variant.vertex, 0)?;
         let frag = shader_module(&self.device, name, variant.fragment, 0)?;
-        let entries: [vk::SpecializationMapEntry; SPEC_CONSTANT_COUNT] =
-            SpecConstant::ALL.map(|c| vk::SpecializationMapEntry {
-                constant_id: c.id(),
-                offset: c.id() * 4,
-                size: 4,
-            });
-        let mut spec = key;
-        spec.values[SpecConstant::Points as usize] = 0;
-        spec.values[SpecConstant::PointSize as usize] = 1f32.to_bits() as i32;
+        let entries = spec_entries();
+        let spec = with_assembly(key, false, 1.0);
         let specialization = vk::SpecializationInfo::default()
             .map_entries(&entries)
             .data(bytemuck::bytes_of(&spec));
@@ -348,17 +344,16 @@ impl Deferred {
         Ok(raw)
     }
 
-    /// Everything a deferred frame of `extent` records with, its draws staged as `staged`.
+    /// Everything a deferred frame of `extent` records with: the lighting pass specialized by
+    /// `key`, its draws staged as `staged` with their records in `records` (their one buffer).
     pub(super) fn pass(
         &mut self,
         lighting: &Lighting,
         extent: vk::Extent2D,
-        key: SpecKey,
+        (key, records): (SpecKey, vk::Buffer),
         staged: &[Staged],
         counted: bool,
     ) -> Result<DeferredPass> {
-        let records = one_record_buffer(staged)
-            .ok_or(Error::Internal("a deferred frame's records in several buffers"))?;
         let state = staged
             .first()
             .map(Staged::state_binding)
@@ -428,19 +423,7 @@ pub(super) unsafe fn record_deferred(
     statistics: Option<vk::QueryPool>,
 ) -> Result<f64> {
     let vkd = &lighting.device().raw;
-    let extent = targets.extent;
-    let area = vk::Rect2D {
-        offset: vk::Offset2D { x: 0, y: 0 },
-        extent,
-    };
-    let viewport = vk::Viewport {
-        x: 0.0,
-        y: 0.0,
-        width: extent.width as f32,
-        height: extent.height as f32,
-        min_depth: 0.0,
-        max_depth: 1.0,
-    };
+    let (area, viewport) = area_and_viewport(targets.extent);
     let color_stage = vk::PipelineStageFlags2::COLOR_ATTACHMENT_OUTPUT;
     let color_write = vk::AccessFlags2::COLOR_ATTACHMENT_WRITE;
     let tests = vk::PipelineStageFlags2::EARLY_FRAGMENT_TESTS | vk::PipelineStageFlags2::LATE_FRAGMENT_TESTS;
@@ -464,31 +447,7 @@ pub(super) unsafe fn record_deferred(
         ),
     )
     .to_vec();
-    to_attachments.push(
-        vk::ImageMemoryBarrier2::default()
-            .src_stage_mask(tests)
-            .src_access_mask(vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_WRITE)
-            .dst_stage_mask(tests)
-            .dst_access_mask(
-                vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_READ
-                    | vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_WRITE,
-            )
-            .old_layout(vk::ImageLayout::UNDEFINED)
-            .new_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
-            .image(targets.depth.raw())
-            .subresource_range(subresource(vk::ImageAspectFlags::DEPTH)),
-    );
-    to_attachments.push(
-        vk::ImageMemoryBarrier2::default()
-            .src_stage_mask(vk::PipelineStageFlags2::COPY | color_stage)
-            .src_access_mask(vk::AccessFlags2::TRANSFER_READ | color_write)
-            .dst_stage_mask(color_stage)
-            .dst_access_mask(color_write)
-            .old_layout(vk::ImageLayout::UNDEFINED)
-            .new_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
-            .image(targets.color.raw())
-            .subresource_range(subresource(vk::ImageAspectFlags::COLOR)),
-    );
+    to_attachments.extend(attachment_barriers(targets));
     // Nothing drawn: a record index of 0 (the lighting pass leaves such pixels alone).
     let gbuffer_attachments = pass.views.map(|view| {
         vk::RenderingAttachmentInfo::default()
@@ -500,17 +459,8 @@ pub(super) unsafe fn record_deferred(
                 color: vk::ClearColorValue { uint32: [0; 4] },
             })
     });
-    let depth_attachment = vk::RenderingAttachmentInfo::default()
-        .image_view(targets.depth.view())
-        .image_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
-        .load_op(vk::AttachmentLoadOp::CLEAR)
-        .store_op(vk::AttachmentStoreOp::STORE)
-        .clear_value(vk::ClearValue {
-            depth_stencil: vk::ClearDepthStencilValue {
-                depth: 1.0,
-                stencil: 0,
-            },
-        });
+    // Kept: the lighting pass tests against it.
+    let depth_attachment = depth_attachment(targets, vk::AttachmentStoreOp::STORE);
     let gbuffer_pass = vk::RenderingInfo::default()
         .render_area(area)
         .layer_count(1)
@@ -537,17 +487,7 @@ pub(super) unsafe fn record_deferred(
             .image(targets.depth.raw())
             .subresource_range(subresource(vk::ImageAspectFlags::DEPTH)),
     );
-    let c = frame.clear_color;
-    let color_attachments = [vk::RenderingAttachmentInfo::default()
-        .image_view(targets.color.view())
-        .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
-        .load_op(vk::AttachmentLoadOp::CLEAR)
-        .store_op(vk::AttachmentStoreOp::STORE)
-        .clear_value(vk::ClearValue {
-            color: vk::ClearColorValue {
-                float32: [c.x, c.y, c.z, c.w],
-            },
-        })];
+    let color_attachments = [color_attachment(targets, frame)];
     // The G-buffer pass's depth, read by the lighting pass's depth test.
     let depth_read = vk::RenderingAttachmentInfo::default()
         .image_view(targets.depth.view())

@@ -425,19 +425,19 @@ impl Renderer {
         // The lighting pass reads the records from one buffer: a frame whose records span two
         // chunks of the slot (a first frame of many draws, while the slot grows) is drawn
         // forward, staged again.
-        let deferred_key = eligible.filter(|_| deferred::one_record_buffer(&staged).is_some());
+        let deferred_key = eligible.zip(deferred::one_record_buffer(&staged));
         if eligible.is_some() && deferred_key.is_none() {
             self.lighting.begin_frame(0)?;
             staged = self.lighting.stage_run(0, &lits).map_err(|(_, e)| e)?;
         }
         let deferred_pass = match (deferred_key, &self.targets) {
-            (Some(key), Some(targets)) => {
+            (Some((key, records)), Some(targets)) => {
                 let extent = targets.extent;
                 let d = match &mut self.deferred {
                     Some(d) => d,
                     None => self.deferred.insert(deferred::Deferred::new(&self.device)?),
                 };
-                Some(d.pass(&self.lighting, extent, key, &staged, pass.statistics)?)
+                Some(d.pass(&self.lighting, extent, (key, records), &staged, pass.statistics)?)
             }
             _ => None,
         };

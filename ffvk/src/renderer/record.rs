@@ -102,77 +102,15 @@ unsafe fn record_pass(
 ) -> Result<f64> {
     let vkd = &lighting.device().raw;
     let extent = targets.extent;
-    let color_range = subresource(vk::ImageAspectFlags::COLOR);
-    let depth_range = subresource(vk::ImageAspectFlags::DEPTH);
-    let to_attachment = [
-        vk::ImageMemoryBarrier2::default()
-            // After the last frame's readback copy or its rendering (a measured frame
-            // repeated in one submission).
-            .src_stage_mask(vk::PipelineStageFlags2::COPY | vk::PipelineStageFlags2::COLOR_ATTACHMENT_OUTPUT)
-            .src_access_mask(vk::AccessFlags2::TRANSFER_READ | vk::AccessFlags2::COLOR_ATTACHMENT_WRITE)
-            .dst_stage_mask(vk::PipelineStageFlags2::COLOR_ATTACHMENT_OUTPUT)
-            .dst_access_mask(vk::AccessFlags2::COLOR_ATTACHMENT_WRITE)
-            .old_layout(vk::ImageLayout::UNDEFINED)
-            .new_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
-            .image(targets.color.raw())
-            .subresource_range(color_range),
-        vk::ImageMemoryBarrier2::default()
-            // Early tests write depth too (the clear among them).
-            .src_stage_mask(
-                vk::PipelineStageFlags2::EARLY_FRAGMENT_TESTS | vk::PipelineStageFlags2::LATE_FRAGMENT_TESTS,
-            )
-            .src_access_mask(vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_WRITE)
-            .dst_stage_mask(
-                vk::PipelineStageFlags2::EARLY_FRAGMENT_TESTS | vk::PipelineStageFlags2::LATE_FRAGMENT_TESTS,
-            )
-            .dst_access_mask(
-                vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_READ
-                    | vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_WRITE,
-            )
-            .old_layout(vk::ImageLayout::UNDEFINED)
-            .new_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
-            .image(targets.depth.raw())
-            .subresource_range(depth_range),
-    ];
-    let c = frame.clear_color;
-    let color_attachments = [vk::RenderingAttachmentInfo::default()
-        .image_view(targets.color.view())
-        .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
-        .load_op(vk::AttachmentLoadOp::CLEAR)
-        .store_op(vk::AttachmentStoreOp::STORE)
-        .clear_value(vk::ClearValue {
-            color: vk::ClearColorValue {
-                float32: [c.x, c.y, c.z, c.w],
-            },
-        })];
-    let depth_attachment = vk::RenderingAttachmentInfo::default()
-        .image_view(targets.depth.view())
-        .image_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
-        .load_op(vk::AttachmentLoadOp::CLEAR)
-        .store_op(vk::AttachmentStoreOp::DONT_CARE)
-        .clear_value(vk::ClearValue {
-            depth_stencil: vk::ClearDepthStencilValue {
-                depth: 1.0,
-                stencil: 0,
-            },
-        });
-    let area = vk::Rect2D {
-        offset: vk::Offset2D { x: 0, y: 0 },
-        extent,
-    };
+    let to_attachment = attachment_barriers(targets);
+    let color_attachments = [color_attachment(targets, frame)];
+    let depth_attachment = depth_attachment(targets, vk::AttachmentStoreOp::DONT_CARE);
+    let (area, viewport) = area_and_viewport(extent);
     let rendering = vk::RenderingInfo::default()
         .render_area(area)
         .layer_count(1)
         .color_attachments(&color_attachments)
         .depth_attachment(&depth_attachment);
-    let viewport = vk::Viewport {
-        x: 0.0,
-        y: 0.0,
-        width: extent.width as f32,
-        height: extent.height as f32,
-        min_depth: 0.0,
-        max_depth: 1.0,
-    };
 
     // SAFETY: recording into a command buffer in the recording state; every handle belongs
     // to this device and outlives the submission (render waits for it). The same holds for
@@ -209,6 +147,86 @@ unsafe fn record_pass(
         unsafe { vkd.cmd_end_query(cmd, pool, 0) };
     }
     Ok(record_ns)
+}
+
+/// The color and depth images' barrier into attachment layouts, after the last frame's
+/// readback copy or rendering (a measured frame repeated in one submission).
+pub(super) fn attachment_barriers(targets: &Targets) -> [vk::ImageMemoryBarrier2<'static>; 2] {
+    let tests = vk::PipelineStageFlags2::EARLY_FRAGMENT_TESTS | vk::PipelineStageFlags2::LATE_FRAGMENT_TESTS;
+    [
+        vk::ImageMemoryBarrier2::default()
+            .src_stage_mask(vk::PipelineStageFlags2::COPY | vk::PipelineStageFlags2::COLOR_ATTACHMENT_OUTPUT)
+            .src_access_mask(vk::AccessFlags2::TRANSFER_READ | vk::AccessFlags2::COLOR_ATTACHMENT_WRITE)
+            .dst_stage_mask(vk::PipelineStageFlags2::COLOR_ATTACHMENT_OUTPUT)
+            .dst_access_mask(vk::AccessFlags2::COLOR_ATTACHMENT_WRITE)
+            .old_layout(vk::ImageLayout::UNDEFINED)
+            .new_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
+            .image(targets.color.raw())
+            .subresource_range(subresource(vk::ImageAspectFlags::COLOR)),
+        // Early tests write depth too (the clear among them).
+        vk::ImageMemoryBarrier2::default()
+            .src_stage_mask(tests)
+            .src_access_mask(vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_WRITE)
+            .dst_stage_mask(tests)
+            .dst_access_mask(
+                vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_READ
+                    | vk::AccessFlags2::DEPTH_STENCIL_ATTACHMENT_WRITE,
+            )
+            .old_layout(vk::ImageLayout::UNDEFINED)
+            .new_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
+            .image(targets.depth.raw())
+            .subresource_range(subresource(vk::ImageAspectFlags::DEPTH)),
+    ]
+}
+
+/// The color image as the frame's attachment, cleared to its clear color.
+pub(super) fn color_attachment<'a>(targets: &Targets, frame: &Frame) -> vk::RenderingAttachmentInfo<'a> {
+    let c = frame.clear_color;
+    vk::RenderingAttachmentInfo::default()
+        .image_view(targets.color.view())
+        .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
+        .load_op(vk::AttachmentLoadOp::CLEAR)
+        .store_op(vk::AttachmentStoreOp::STORE)
+        .clear_value(vk::ClearValue {
+            color: vk::ClearColorValue {
+                float32: [c.x, c.y, c.z, c.w],
+            },
+        })
+}
+
+/// The depth image as an attachment cleared to 1, kept after the pass or not.
+pub(super) fn depth_attachment<'a>(
+    targets: &Targets,
+    store: vk::AttachmentStoreOp,
+) -> vk::RenderingAttachmentInfo<'a> {
+    vk::RenderingAttachmentInfo::default()
+        .image_view(targets.depth.view())
+        .image_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
+        .load_op(vk::AttachmentLoadOp::CLEAR)
+        .store_op(store)
+        .clear_value(vk::ClearValue {
+            depth_stencil: vk::ClearDepthStencilValue {
+                depth: 1.0,
+                stencil: 0,
+            },
+        })
+}
+
+/// The whole target as render area and viewport.
+pub(super) fn area_and_viewport(extent: vk::Extent2D) -> (vk::Rect2D, vk::Viewport) {
+    let area = vk::Rect2D {
+        offset: vk::Offset2D { x: 0, y: 0 },
+        extent,
+    };
+    let viewport = vk::Viewport {
+        x: 0.0,
+        y: 0.0,
+        width: extent.width as f32,
+        height: extent.height as f32,
+        min_depth: 0.0,
+        max_depth: 1.0,
+    };
+    (area, viewport)
 }
 
 /// Records the copy of the color image into the readback buffer, visible to the host after

@@ -35,45 +35,22 @@ impl Component for f32 {
     }
 }
 
-impl Component for i8 {
-    fn to_float(self, normalized: bool) -> f32 {
-        if normalized {
-            (self as f32 / 127.0).max(-1.0)
-        } else {
-            self as f32
+/// An integer type whose normalized values divide by `$max` (and, signed, stop at −1).
+macro_rules! integer_component {
+    ($($t:ty => $max:expr),*) => {$(
+        impl Component for $t {
+            fn to_float(self, normalized: bool) -> f32 {
+                if normalized {
+                    (self as f32 / $max).max(-1.0)
+                } else {
+                    self as f32
+                }
+            }
         }
-    }
+    )*};
 }
 
-impl Component for u8 {
-    fn to_float(self, normalized: bool) -> f32 {
-        if normalized {
-            self as f32 / 255.0
-        } else {
-            self as f32
-        }
-    }
-}
-
-impl Component for i16 {
-    fn to_float(self, normalized: bool) -> f32 {
-        if normalized {
-            (self as f32 / 32767.0).max(-1.0)
-        } else {
-            self as f32
-        }
-    }
-}
-
-impl Component for u16 {
-    fn to_float(self, normalized: bool) -> f32 {
-        if normalized {
-            self as f32 / 65535.0
-        } else {
-            self as f32
-        }
-    }
-}
+integer_component!(i8 => 127.0, u8 => 255.0, i16 => 32767.0, u16 => 65535.0);
 
 /// The component types (and normalization) an attribute may have.
 #[derive(Debug, Clone, Copy)]
