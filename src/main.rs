@@ -70,9 +70,11 @@ enum Command {
         /// Override the image size, as WxH (the vertical field of view is kept).
         #[arg(long, value_parser = parse_size)]
         size: Option<(u32, u32)>,
-        /// Draw the fragment mode forward (at every fragment) or deferred (once per pixel,
-        /// where a frame allows it): overrides the scenes' `[image] fragment_path`.
-        #[arg(long, value_parser = ["forward", "deferred"])]
+        /// Draw the fragment mode forward (at every fragment), deferred (once per pixel,
+        /// where a frame allows it) or auto (deferred where ffvk's fixed rule of vertices,
+        /// pixels, lights and device type says it is faster): overrides the scenes'
+        /// `[image] fragment_path`.
+        #[arg(long, value_parser = ["forward", "deferred", "auto"])]
         fragment_path: Option<String>,
         /// Check each image against DIR/NAME.png and print a summary table; exit 1 on a
         /// difference past the tolerance or a missing reference.
@@ -441,6 +443,7 @@ fn run(cli: Cli) -> ffvk_cli::Result<ExitCode> {
                 size: *size,
                 fragment_path: fragment_path.as_deref().map(|p| match p {
                     "deferred" => ffvk::FragmentPath::Deferred,
+                    "auto" => ffvk::FragmentPath::Auto,
                     _ => ffvk::FragmentPath::Forward,
                 }),
                 references: check.clone(),

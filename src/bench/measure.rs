@@ -212,7 +212,7 @@ pub(super) fn measure_ffvk(
     }
     let evaluations = samples.last().and_then(|s| s.evaluations);
     let last = samples.last().and_then(|s| s.pipeline);
-    let covered_pixels = if point.group == Group::Fragment {
+    let covered_pixels = if matches!(point.group, Group::Fragment | Group::Paths) {
         Some(covered(&renderer.render(&frame)?))
     } else {
         None

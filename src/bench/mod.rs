@@ -70,9 +70,12 @@ pub struct BenchArgs {
     /// `full` (more of everything, about 25 minutes), `gpu` (16 draws per frame, frames
     /// timed in batches, images to 4096², up to 16 lights: for GPUs, where a standard frame
     /// is too short to show the lighting) or `auto`: `gpu` on a discrete, integrated or
-    /// virtual GPU, else `standard`. `jobs` is another kind of sweep: regression-suite
-    /// throughput (`ffvk render --check` of generated scenes) with 1, 2, … worker processes.
-    #[arg(long, default_value = "auto", value_parser = ["auto", "quick", "standard", "full", "gpu", "jobs"])]
+    /// virtual GPU, else `standard`. `paths` (about 3 minutes on 2 cores): the fragment
+    /// mode forward and deferred over mesh density, image size and lights, with what
+    /// `FragmentPath::Auto` picks at each point. `jobs` is another kind of sweep:
+    /// regression-suite throughput (`ffvk render --check` of generated scenes) with 1, 2, …
+    /// worker processes.
+    #[arg(long, default_value = "auto", value_parser = ["auto", "quick", "standard", "full", "gpu", "paths", "jobs"])]
     pub sweep: String,
     /// `--sweep jobs`: scenes in the generated suite (128² each).
     #[arg(long, default_value_t = 200, value_parser = clap::value_parser!(u32).range(1..=100_000))]
@@ -149,6 +152,10 @@ pub fn run(args: &BenchArgs, options: &RendererOptions, program: &std::path::Pat
         "full" => SweepConfig::full(),
         "standard" => SweepConfig::standard(),
         "gpu" => SweepConfig::gpu(),
+        "paths" => {
+            let probe = Renderer::new(options)?;
+            SweepConfig::paths(is_gpu(&probe.device_info().device_type))
+        }
         _ => {
             // The device decides: a GPU gets the sweep that keeps it busy.
             let probe = Renderer::new(options)?;
@@ -239,6 +246,8 @@ pub struct BenchEnv {
     pub lp_num_threads: String,
     /// The Vulkan device's name.
     pub device: String,
+    /// `VkPhysicalDeviceType` as ffvk's [`DeviceInfo`](ffvk::DeviceInfo) spells it (`CPU`).
+    pub device_type: String,
     /// The Vulkan driver's name ("llvmpipe").
     pub driver: String,
     /// The Vulkan driver's version text.
@@ -406,6 +415,7 @@ pub fn run_sweep(
     let env = BenchEnv {
         lp_num_threads: lp_num_threads.clone(),
         device: info.name.clone(),
+        device_type: info.device_type.clone(),
         driver: info.driver_name.clone(),
         driver_info: info.driver_info.clone(),
         mesa_version: mesa_version(&info.driver_info).unwrap_or_default(),

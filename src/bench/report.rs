@@ -10,7 +10,8 @@ use super::measure::Spread;
 use super::sweep::{sphere_counts, BenchMode, Engine, Group, Point, Variant};
 use super::tables::{
     costs_table, density_table, draw_cost_note, draw_cost_table, environment, fragment_table,
-    light_count_table, light_kind_table, primitives_table, size_table, COSTS_NOTE, FRAGMENT_NOTE,
+    light_count_table, light_kind_table, paths_table, primitives_table, size_table, COSTS_NOTE,
+    FRAGMENT_NOTE, PATHS_NOTE,
 };
 use super::{BenchReport, BenchResult};
 use crate::{write_file, Error, Result};
@@ -230,6 +231,7 @@ pub fn markdown(report: &BenchReport) -> String {
     });
     let sections = [
         (
+            Group::Density,
             format!(
                 "Time against vertex count ({}² image, {})",
                 c.base_size,
@@ -238,6 +240,7 @@ pub fn markdown(report: &BenchReport) -> String {
             density_table(report, has_gl),
         ),
         (
+            Group::Size,
             format!(
                 "Time against pixel count ({} vertices, {})",
                 sphere_counts(c.size_stacks).0,
@@ -246,6 +249,7 @@ pub fn markdown(report: &BenchReport) -> String {
             size_table(report),
         ),
         (
+            Group::Lights,
             format!(
                 "Light count: specialized pipelines against the uber-shader ({} vertices, {}², \
                  directional lights)",
@@ -255,6 +259,7 @@ pub fn markdown(report: &BenchReport) -> String {
             light_count_table(report, has_gl),
         ),
         (
+            Group::Kind,
             format!(
                 "Light kind ({} lights of one kind, {} vertices, {}²)",
                 c.kind_lights,
@@ -264,6 +269,7 @@ pub fn markdown(report: &BenchReport) -> String {
             light_kind_table(report, has_gl),
         ),
         (
+            Group::Primitives,
             format!(
                 "Points and lines ({} vertices, {}², {}; lines: each triangle's three edges)",
                 sphere_counts(c.base_stacks).0,
@@ -273,8 +279,10 @@ pub fn markdown(report: &BenchReport) -> String {
             primitives_table(report, has_gl),
         ),
     ];
-    for (title, table) in sections {
-        let _ = write!(m, "\n### {title}\n\n{}", table.markdown());
+    for (group, title, table) in sections {
+        if report.results.iter().any(|r| r.point.group == group) {
+            let _ = write!(m, "\n### {title}\n\n{}", table.markdown());
+        }
     }
     if !c.fragment_sizes.is_empty() {
         let _ = write!(
@@ -284,6 +292,16 @@ pub fn markdown(report: &BenchReport) -> String {
             lights_text(c.fragment_lights),
             fragment_table(report).markdown(),
             FRAGMENT_NOTE
+        );
+    }
+    if report.results.iter().any(|r| r.point.group == Group::Paths) {
+        let _ = write!(
+            m,
+            "\n### Which fragment path wins (fragment mode, directional lights, {} draw{} a frame)\n\n{}\n{}\n",
+            c.draws,
+            if c.draws == 1 { "" } else { "s" },
+            paths_table(report).markdown(),
+            PATHS_NOTE
         );
     }
     if !report.summary.costs.is_empty() {
@@ -467,6 +485,7 @@ mod tests {
         let env = BenchEnv {
             lp_num_threads: "2".into(),
             device: "llvmpipe (LLVM 15.0.6, 256 bits)".into(),
+            device_type: "CPU".into(),
             driver: "llvmpipe".into(),
             driver_info: "Mesa 22.3.6 (LLVM 15.0.6)".into(),
             mesa_version: "22.3.6".into(),
@@ -599,6 +618,17 @@ Times are per frame in ms: the median, then the interquartile range; ffvk's from
 
 Covered pixels: those not at the clear color in a frame read back after the measured ones. Equation runs per covered pixel: over the covered pixels, for the forward path the fragment stage's pipeline-statistics count, which lavapipe (llvmpipe) makes per 4×4 block a triangle touches, partly covered blocks included (a GPU counts about one per pixel), for every draw of the sphere in a frame (the gpu sweep's 16 each pass the depth test); for the deferred path the lighting pass's own count (an atomic add per pixel it lights, once whatever the draws), its G-buffer pass not counted.
 
+### Which fragment path wins (fragment mode, directional lights, 1 draw a frame)
+
+| vertices | image | lights | vertices / pixel | forward | deferred | deferred ÷ forward | auto | agrees |
+| ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- |
+| 45 | 16² | 1 | 0.176 | 0.57 (0.54–0.59) | 0.45 (0.43–0.48) | 0.80 | forward | no |
+| 45 | 16² | 2 | 0.176 | 0.82 (0.78–0.86) | 0.66 (0.63–0.69) | 0.80 | forward | no |
+| 153 | 16² | 1 | 0.598 | 0.58 (0.55–0.61) | 0.46 (0.44–0.48) | 0.80 | forward | no |
+| 153 | 16² | 2 | 0.598 | 0.83 (0.79–0.87) | 0.67 (0.63–0.70) | 0.80 | forward | no |
+
+Deferred ÷ forward below 1: the deferred path wins. "auto": what FragmentPath::Auto picks for the frame on this device (its rule, from the frame's vertices, pixels and lights; not from these times); "agrees": whether that is the faster path here, or within 5 % of it.
+
 ### What a vertex, a pixel and a light cost
 
 | engine | mode | ns / vertex | ns / pixel | ns / light | ns / light / evaluation | fixed ms |
@@ -703,7 +733,7 @@ Least-squares slopes of the sweeps above, in ns: per vertex drawn (density sweep
         assert!(!m.contains("GL smooth") && !m.contains("÷ GL"), "{m}");
         // Every line of a table has as many cells as its headings.
         let tables: Vec<&str> = m.split("\n\n").filter(|b| b.starts_with('|')).collect();
-        assert_eq!(tables.len(), 8, "{m}");
+        assert_eq!(tables.len(), 9, "{m}");
         for table in tables {
             let cells: Vec<usize> = table.lines().map(|l| l.matches(" |").count()).collect();
             assert!(cells.iter().all(|&n| n == cells[0]), "{table}");

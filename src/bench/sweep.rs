@@ -71,6 +71,15 @@ pub struct SweepConfig {
     pub fragment_lights: usize,
     /// Image sides of the fragment sweep; empty leaves it out.
     pub fragment_sizes: Vec<u32>,
+    /// The paths sweep ([`Group::Paths`]): the fragment mode forward and deferred on the
+    /// sphere with these stacks, …
+    pub path_stacks: Vec<u32>,
+    /// … at these image sides …
+    pub path_sizes: Vec<u32>,
+    /// … under these directional light counts; any of the three empty leaves it out.
+    pub path_lights: Vec<usize>,
+    /// Whether the primitives group runs.
+    pub primitives: bool,
 }
 
 impl SweepConfig {
@@ -100,6 +109,10 @@ impl SweepConfig {
             fragment_stacks: 512,
             fragment_lights: 8,
             fragment_sizes: vec![1024],
+            path_stacks: Vec::new(),
+            path_sizes: Vec::new(),
+            path_lights: Vec::new(),
+            primitives: true,
         }
     }
 
@@ -130,7 +143,51 @@ impl SweepConfig {
             sizes: vec![64, 96, 128, 192, 256, 384, 512, 768, 1024, 1536, 2048],
             light_counts: vec![1, 2, 3, 4, 6, 8, 12, 16],
             variants_everywhere: true,
+            path_stacks: SweepConfig::PATH_STACKS.to_vec(),
+            path_sizes: SweepConfig::PATH_SIZES.to_vec(),
+            path_lights: SweepConfig::PATH_LIGHTS.to_vec(),
             ..SweepConfig::standard()
+        }
+    }
+
+    const PATH_STACKS: [u32; 5] = [32, 64, 128, 256, 512];
+    const PATH_SIZES: [u32; 4] = [256, 512, 1024, 2048];
+    const PATH_LIGHTS: [usize; 4] = [1, 2, 4, 8];
+
+    /// The paths sweep alone (about 3 minutes on 2 cores): where the fragment mode's
+    /// deferred path beats the forward one, over 2,145 to 525,825 vertices, 256² to 2048²
+    /// and 1, 2, 4 and 8 lights; the constants of [`FragmentPath::Auto`](ffvk::FragmentPath::Auto)
+    /// come from it. On a GPU (`gpu`) the frames draw the sphere 16 times and are timed in
+    /// batches, as in [`SweepConfig::gpu`].
+    pub fn paths(gpu: bool) -> Self {
+        let base = SweepConfig {
+            name: "paths".into(),
+            warmup: 2,
+            frames: 7,
+            stacks: Vec::new(),
+            sizes: Vec::new(),
+            light_counts: Vec::new(),
+            kinds: Vec::new(),
+            gl: false,
+            record_draws: 200,
+            new_keys: 1,
+            draw_counts: Vec::new(),
+            fragment_sizes: Vec::new(),
+            path_stacks: SweepConfig::PATH_STACKS.to_vec(),
+            path_sizes: SweepConfig::PATH_SIZES.to_vec(),
+            path_lights: SweepConfig::PATH_LIGHTS.to_vec(),
+            primitives: false,
+            ..SweepConfig::quick()
+        };
+        match gpu {
+            true => SweepConfig {
+                warmup: 10,
+                frames: 21,
+                draws: 16,
+                batch: true,
+                ..base
+            },
+            false => base,
         }
     }
 
@@ -160,6 +217,10 @@ impl SweepConfig {
             fragment_stacks: 6,
             fragment_lights: 2,
             fragment_sizes: vec![16, 24],
+            path_stacks: vec![4, 8],
+            path_sizes: vec![16],
+            path_lights: vec![1, 2],
+            primitives: true,
         }
     }
 
@@ -230,6 +291,7 @@ impl SweepConfig {
             .light_counts
             .iter()
             .chain([&self.kind_lights, &self.base_lights, &self.fragment_lights])
+            .chain(&self.path_lights)
             .find(|&&n| n == 0 || n > max_lights)
         {
             return bad(format!("{n} lights: expected 1..={max_lights}"));
@@ -238,6 +300,7 @@ impl SweepConfig {
             .sizes
             .iter()
             .chain(&self.fragment_sizes)
+            .chain(&self.path_sizes)
             .chain([&self.base_size])
             .find(|&&s| s == 0 || s > ffvk::scene::MAX_SIZE)
         {
@@ -247,6 +310,7 @@ impl SweepConfig {
             .stacks
             .iter()
             .chain([&self.base_stacks, &self.size_stacks, &self.fragment_stacks])
+            .chain(&self.path_stacks)
             .find(|&&s| !(2..=2048).contains(&s))
         {
             return bad(format!("{s} sphere stacks: expected 2..=2048"));
@@ -279,6 +343,9 @@ pub enum Group {
     /// Fragment lighting's cost on a dense mesh: fragment, vertex and unlit at a few image
     /// sizes, with the pixels the sphere covers (issue 37's baseline).
     Fragment,
+    /// The fragment mode's two paths, forward and deferred, over density, size and lights:
+    /// where each wins, and what [`FragmentPath::Auto`](ffvk::FragmentPath::Auto) picks.
+    Paths,
 }
 
 /// What the sphere is drawn as.
@@ -667,7 +734,7 @@ pub fn points(config: &SweepConfig) -> Vec<Point> {
     }
     // The light sweeps' sphere as triangles, lines and points, lit at the vertices (smooth and
     // flat) and unlit, by ffvk and GL.
-    for primitive in Primitive::ALL {
+    for primitive in Primitive::ALL.into_iter().filter(|_| config.primitives) {
         for mode in [BenchMode::Vertex, BenchMode::Flat, BenchMode::Unlit] {
             let with_primitive = |p: Point| Point { primitive, ..p };
             out.push(with_primitive(base(
@@ -704,6 +771,25 @@ pub fn points(config: &SweepConfig) -> Vec<Point> {
                 point.lights = config.fragment_lights;
             }
             out.push(point);
+        }
+    }
+    for &stacks in &config.path_stacks {
+        let (vertices, triangles) = sphere_counts(stacks);
+        for &size in &config.path_sizes {
+            for &lights in &config.path_lights {
+                for variant in [Variant::Specialized, Variant::Deferred] {
+                    out.push(Point {
+                        stacks,
+                        vertices,
+                        triangles,
+                        width: size,
+                        height: size,
+                        pixels: size as u64 * size as u64,
+                        lights,
+                        ..base(Group::Paths, Engine::Ffvk, BenchMode::Fragment, variant)
+                    });
+                }
+            }
         }
     }
     out

@@ -360,6 +360,67 @@ pub(super) fn fragment_table(report: &BenchReport) -> Table {
     t
 }
 
+pub(super) const PATHS_NOTE: &str = "Deferred ÷ forward below 1: the deferred path wins. \
+\"auto\": what FragmentPath::Auto picks for the frame on this device (its rule, from the \
+frame's vertices, pixels and lights; not from these times); \"agrees\": whether that is the \
+faster path here, or within 5 % of it.";
+
+/// The fragment mode's two paths over density, size and lights, with what
+/// [`FragmentPath::Auto`](ffvk::FragmentPath::Auto) picks.
+pub(super) fn paths_table(report: &BenchReport) -> Table {
+    let mut t = Table::new([
+        ("vertices", Align::Right),
+        ("image", Align::Right),
+        ("lights", Align::Right),
+        ("vertices / pixel", Align::Right),
+        ("forward", Align::Right),
+        ("deferred", Align::Right),
+        ("deferred ÷ forward", Align::Right),
+        ("auto", Align::Left),
+        ("agrees", Align::Left),
+    ]);
+    let cpu = !super::is_gpu(&report.env.device_type);
+    let c = &report.sweep;
+    for &stacks in &c.path_stacks {
+        for &size in &c.path_sizes {
+            for &lights in &c.path_lights {
+                let at = |variant| {
+                    find(&report.results, |p| {
+                        p.group == Group::Paths
+                            && p.stacks == stacks
+                            && p.width == size
+                            && p.lights == lights
+                            && p.variant == variant
+                    })
+                };
+                let (forward, deferred) = (at(Variant::Specialized), at(Variant::Deferred));
+                let vertices = sphere_counts(stacks).0 * u64::from(c.draws);
+                let pixels = u64::from(size) * u64::from(size);
+                let picks = ffvk::FragmentPath::auto_picks_deferred(cpu, vertices, pixels, lights);
+                let times = forward
+                    .zip(deferred)
+                    .map(|(f, d)| (f.stats.time_ms, d.stats.time_ms));
+                let agrees = times.map(|(f, d)| match picks {
+                    true => d <= f * 1.05,
+                    false => f <= d * 1.05,
+                });
+                t.row([
+                    count(vertices as f64),
+                    format!("{size}²"),
+                    lights.to_string(),
+                    format!("{:.3}", vertices as f64 / pixels as f64),
+                    cell(forward),
+                    cell(deferred),
+                    ratio(times.map(|(f, d)| d / f)),
+                    (if picks { "deferred" } else { "forward" }).to_string(),
+                    agrees.map_or("–", |a| if a { "yes" } else { "no" }).to_string(),
+                ]);
+            }
+        }
+    }
+    t
+}
+
 /// The sphere drawn as triangles, lines and points: ffvk's vertex, flat and unlit times, GL's,
 /// and ffvk's over GL's for the two lit modes.
 pub(super) fn primitives_table(report: &BenchReport, has_gl: bool) -> Table {

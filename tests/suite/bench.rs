@@ -57,8 +57,8 @@ fn a_tiny_sweep_runs_every_point_and_writes_csv_json_and_plots() {
             );
             assert!(s.fs_invocations.is_some_and(|n| n > 0), "{r:?}");
         }
-        // The fragment sweep counts the pixels its sphere covers: some, not all.
-        if r.point.group == Group::Fragment {
+        // The fragment and paths sweeps count the pixels their sphere covers: some, not all.
+        if matches!(r.point.group, Group::Fragment | Group::Paths) {
             assert!(
                 s.covered_pixels.is_some_and(|c| c > 0 && c < r.point.pixels),
                 "{r:?}"

@@ -238,3 +238,50 @@ fn frames_the_deferred_path_cannot_draw_are_drawn_forward_with_the_same_image() 
     assert!(one.1.deferred);
     finish(r);
 }
+
+#[test]
+fn auto_draws_deferred_on_a_cpu_only_where_lights_are_many_and_triangles_small() {
+    let mut r = renderer();
+    assert_eq!(r.device_info().device_type, "CPU", "the suite runs on lavapipe");
+    let dense = r.upload(&MeshData::uv_sphere(48, 24)).unwrap();
+    let sparse = r.upload(&MeshData::uv_sphere(8, 4)).unwrap();
+    let three = state(false, false, false, false);
+    let mut eight = three.clone();
+    for i in 3..8 {
+        eight.enable(Cap::Light(i)).unwrap();
+        let d = 0.1 * i as f32;
+        eight
+            .light(i, LightParam::Position(Vec4::new(d - 0.5, 0.5 - d, 1.0, 0.0)))
+            .unwrap();
+    }
+    let pixels = u64::from(SIZE * SIZE);
+    let cases = [
+        ("dense mesh, 8 lights", &dense, &eight, true),
+        ("dense mesh, 3 lights", &dense, &three, false),
+        ("sparse mesh, 8 lights", &sparse, &eight, false),
+    ];
+    for (name, mesh, gl, deferred) in cases {
+        // The rule's own answer for the frame, and the path the renderer took.
+        let vertices = u64::from(mesh.vertex_count());
+        let lights = gl.lighting.enabled_lights().count();
+        assert_eq!(
+            FragmentPath::auto_picks_deferred(true, vertices, pixels, lights),
+            deferred,
+            "{name}: {vertices} vertices over {pixels} pixels, {lights} lights"
+        );
+        assert!(
+            !FragmentPath::auto_picks_deferred(false, vertices, pixels, lights),
+            "{name}: a GPU draws forward"
+        );
+        let meshes = [(mesh, view(Vec3::ZERO), Vec4::new(0.2, 0.5, 0.8, 1.0))];
+        let (forward, _) = render(&mut r, &meshes, gl, FragmentPath::Forward);
+        let (auto, stats) = render(&mut r, &meshes, gl, FragmentPath::Auto);
+        assert_eq!(stats.deferred, deferred, "{name}: the path auto took");
+        let (max, count) = difference(&forward, &auto);
+        assert!(
+            max <= 1,
+            "{name}: auto differs from forward by {max}/255 ({count} bytes)"
+        );
+    }
+    finish(r);
+}

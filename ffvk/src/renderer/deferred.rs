@@ -71,13 +71,25 @@ pub(super) struct DeferredPass {
 
 /// The lighting pass's specialization key, when `frame` can take the deferred path: the one
 /// its draws' forward pipelines would use.
-pub(super) fn eligible(frame: &Frame, specialize: Specialize) -> Option<SpecKey> {
+/// `cpu`: the device is a CPU ([`FragmentPath::Auto`]'s rule).
+pub(super) fn eligible(frame: &Frame, specialize: Specialize, cpu: bool) -> Option<SpecKey> {
     // The lighting pass finds the drawn pixels by their depth: frames without a depth test
     // stay forward.
-    if frame.fragment_path != FragmentPath::Deferred || !frame.depth_test {
+    if frame.fragment_path == FragmentPath::Forward || !frame.depth_test {
         return None;
     }
     let first = frame.draws.first()?;
+    if frame.fragment_path == FragmentPath::Auto {
+        let vertices = frame.draws.iter().map(|d| u64::from(d.mesh.vertex_count)).sum();
+        let pixels = u64::from(frame.width) * u64::from(frame.height);
+        let lights = match first.state.lighting {
+            true => first.state.enabled_lights().count(),
+            false => 0,
+        };
+        if !FragmentPath::auto_picks_deferred(cpu, vertices, pixels, lights) {
+            return None;
+        }
+    }
     let affine = |m: &glam::Mat4| m.row(3) == glam::Vec4::W;
     let key = StateKey::new(&first.state, first.projection);
     let alike = frame.draws.iter().all(|d| {

@@ -185,7 +185,39 @@ pub enum FragmentPath {
     /// blended or textured, draws under different lighting states or projections) is drawn
     /// forward; [`FrameStats::deferred`] says which path a frame took.
     Deferred,
+    /// Deferred where a fixed rule of the frame's vertices, pixels and lights and of the
+    /// device's type says it is the faster path ([`FragmentPath::auto_picks_deferred`]),
+    /// else forward. The rule's constants were measured once (`ffvk bench --sweep paths`) and
+    /// are written in the code, so a frame's path never depends on timing; the two paths give
+    /// the same image where the frame can take the deferred path.
+    Auto,
 }
+
+impl FragmentPath {
+    /// What [`FragmentPath::Auto`] takes for a frame the deferred path can draw: `true` for
+    /// deferred. `cpu`: the device is a CPU (`VK_PHYSICAL_DEVICE_TYPE_CPU`, lavapipe);
+    /// `vertices`: the vertices its draws run (each draw's mesh vertices, summed); `pixels`:
+    /// the frame's width × height; `lights`: the enabled lights.
+    ///
+    /// The constants come from `ffvk bench --sweep paths` on lavapipe (BENCHMARKS.md, "Which
+    /// fragment path wins"). On a CPU the forward path shades every 4×4 block each triangle
+    /// touches, the whole light loop each time, so it loses once triangles are small and
+    /// lights many; the deferred path's G-buffer pass costs about as much as a few lights'
+    /// forward shading, so with fewer lights it loses at every density measured. On GPUs
+    /// the forward path shades about once per pixel and the G-buffer's writes cost more than
+    /// they save: forward always.
+    pub fn auto_picks_deferred(cpu: bool, vertices: u64, pixels: u64, lights: usize) -> bool {
+        cpu && lights >= AUTO_MIN_LIGHTS
+            && vertices.saturating_mul(1000) >= AUTO_MILLI_VERTICES_PER_PIXEL.saturating_mul(pixels)
+    }
+}
+
+/// [`FragmentPath::auto_picks_deferred`]'s fewest lights for the deferred path: it won at 8
+/// lights wherever meshes were dense, tied at 4 and lost at 1 and 2; 6 splits the difference.
+const AUTO_MIN_LIGHTS: usize = 6;
+/// [`FragmentPath::auto_picks_deferred`]'s density, in thousandths of a vertex per pixel:
+/// at 8 lights the deferred path won from 0.03 vertices per pixel and lost at 0.008.
+const AUTO_MILLI_VERTICES_PER_PIXEL: u64 = 16;
 
 impl<'a> Frame<'a> {
     /// An empty frame of `width` × `height` pixels, cleared to (0, 0, 0, 1), depth test on.

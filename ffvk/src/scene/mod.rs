@@ -318,8 +318,8 @@ pub struct Scene {
     pub clear_color: Vec4,
     /// Whether the depth test is on (GL_DEPTH_TEST with GL_LESS).
     pub depth_test: bool,
-    /// How the fragment mode is drawn (`[image] fragment_path`): forward (the default) or,
-    /// where the frame allows it, deferred.
+    /// How the fragment mode is drawn (`[image] fragment_path`): forward (the default),
+    /// deferred where the frame allows it, or auto.
     pub fragment_path: crate::FragmentPath,
     /// World to eye.
     pub view: Mat4,

@@ -101,10 +101,14 @@ impl Builder<'_> {
         let fragment_path = match file.image.fragment_path.as_deref() {
             None | Some("forward") => crate::FragmentPath::Forward,
             Some("deferred") => crate::FragmentPath::Deferred,
+            Some("auto") => crate::FragmentPath::Auto,
             Some(other) => {
                 return Err(self.field(
                     "image.fragment_path",
-                    format!("{:?}: expected \"forward\" or \"deferred\"", shorten(other)),
+                    format!(
+                        "{:?}: expected \"forward\", \"deferred\" or \"auto\"",
+                        shorten(other)
+                    ),
                 ))
             }
         };
