@@ -164,7 +164,8 @@ pub(super) fn measure_ffvk(
     let state = point_state(point)?;
     let mut frame = Frame::new(point.width, point.height);
     frame.clear_color = CLEAR;
-    if point.variant == Variant::Deferred {
+    let deferred = matches!(point.variant, Variant::Deferred | Variant::DeferredUber);
+    if deferred {
         frame.fragment_path = ffvk::FragmentPath::Deferred;
     }
     frame.draws = modelviews
@@ -204,7 +205,7 @@ pub(super) fn measure_ffvk(
     let wall: Vec<f64> = samples.iter().map(|s| s.wall_ns / 1e6).collect();
     let gpu_ms = Spread::of(&gpu);
     let wall_ms = Spread::of(&wall).expect("at least one frame");
-    if point.variant == Variant::Deferred && !samples.last().is_some_and(|s| s.deferred) {
+    if deferred && !samples.last().is_some_and(|s| s.deferred) {
         return Err(crate::Error::Bench(format!(
             "{}: the frame was drawn forward, not deferred",
             point.label()

@@ -403,6 +403,7 @@ pub fn run_sweep(
         (Variant::Specialized, Specialize::Always),
         (Variant::Uber, Specialize::Never),
         (Variant::Deferred, Specialize::Always),
+        (Variant::DeferredUber, Specialize::Never),
     ] {
         let mut variant_options = options.clone();
         variant_options.specialize = specialize;

@@ -11,7 +11,7 @@ use super::sweep::{sphere_counts, BenchMode, Engine, Group, Point, Variant};
 use super::tables::{
     costs_table, density_table, draw_cost_note, draw_cost_table, environment, fragment_table,
     light_count_table, light_kind_table, paths_table, primitives_table, size_table, COSTS_NOTE,
-    FRAGMENT_NOTE, PATHS_NOTE,
+    FRAGMENT_NOTE, FRAGMENT_PATHS, PATHS_NOTE,
 };
 use super::{BenchReport, BenchResult};
 use crate::{write_file, Error, Result};
@@ -415,10 +415,10 @@ pub fn markdown(report: &BenchReport) -> String {
             time(at(BenchMode::Vertex, Variant::Specialized)),
             time(at(BenchMode::Unlit, Variant::Specialized)),
         );
-        for (path, variant) in [("forward", Variant::Specialized), ("deferred", Variant::Deferred)] {
+        for (path, variant) in FRAGMENT_PATHS {
             let fragment = at(BenchMode::Fragment, variant);
             let runs = fragment.and_then(|r| match variant {
-                Variant::Deferred => r.stats.evaluations,
+                Variant::Deferred | Variant::DeferredUber => r.stats.evaluations,
                 _ => r.stats.fs_invocations,
             });
             let per_pixel = runs
@@ -476,6 +476,7 @@ mod tests {
             Variant::Uber => t * 1.25,
             Variant::FixedFunction => t * 1.5,
             Variant::Deferred => t * 0.8,
+            Variant::DeferredUber => t * 0.9,
         }
     }
 
@@ -527,7 +528,8 @@ mod tests {
                         fs_invocations: ffvk.then_some(point.pixels / 2),
                         clipping_primitives: ffvk.then_some(point.triangles),
                         covered_pixels: ffvk.then_some(point.pixels / 4),
-                        evaluations: (point.variant == Variant::Deferred).then_some(point.pixels / 4),
+                        evaluations: matches!(point.variant, Variant::Deferred | Variant::DeferredUber)
+                            .then_some(point.pixels / 4),
                     },
                     point,
                     lp_num_threads: env.lp_num_threads.clone(),
@@ -613,8 +615,10 @@ Times are per frame in ms: the median, then the interquartile range; ffvk's from
 | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |
 | 16² | forward | 64 | 0.83 (0.79–0.87) | 1.19 (1.13–1.25) | 0.11 (0.10–0.12) | 7.50 | 0.69 | 2.00 | pipeline statistics |
 | 16² | deferred | 64 | 0.66 (0.63–0.69) | 1.19 (1.13–1.25) | 0.11 (0.10–0.12) | 6.00 | 0.55 | 1.00 | the lighting pass's own count |
+| 16² | deferred, uber-shader | 64 | 0.74 (0.71–0.78) | 1.19 (1.13–1.25) | 0.11 (0.10–0.12) | 6.75 | 0.62 | 1.00 | the lighting pass's own count |
 | 24² | forward | 144 | 1.79 (1.70–1.88) | 1.26 (1.19–1.32) | 0.17 (0.17–0.18) | 10.25 | 1.42 | 2.00 | pipeline statistics |
 | 24² | deferred | 144 | 1.43 (1.36–1.50) | 1.26 (1.19–1.32) | 0.17 (0.17–0.18) | 8.20 | 1.14 | 1.00 | the lighting pass's own count |
+| 24² | deferred, uber-shader | 144 | 1.61 (1.53–1.69) | 1.26 (1.19–1.32) | 0.17 (0.17–0.18) | 9.23 | 1.28 | 1.00 | the lighting pass's own count |
 
 Covered pixels: those not at the clear color in a frame read back after the measured ones. Equation runs per covered pixel: over the covered pixels, for the forward path the fragment stage's pipeline-statistics count, which lavapipe (llvmpipe) makes per 4×4 block a triangle touches, partly covered blocks included (a GPU counts about one per pixel), for every draw of the sphere in a frame (the gpu sweep's 16 each pass the depth test); for the deferred path the lighting pass's own count (an atomic add per pixel it lights, once whatever the draws), its G-buffer pass not counted.
 
@@ -655,8 +659,10 @@ Least-squares slopes of the sweeps above, in ns: per vertex drawn (density sweep
 - per-vertex lighting's added cost (vertex-mode minus unlit ns per vertex, from the density fits): ffvk 7900 ns, GL 11850 ns
 - fragment lighting at 16², forward (91 vertices, 2 directional lights): 7.50× unlit, 0.69× vertex mode; the equation runs 2.00 times per covered pixel
 - fragment lighting at 16², deferred (91 vertices, 2 directional lights): 6.00× unlit, 0.55× vertex mode; the equation runs 1.00 times per covered pixel
+- fragment lighting at 16², deferred, uber-shader (91 vertices, 2 directional lights): 6.75× unlit, 0.62× vertex mode; the equation runs 1.00 times per covered pixel
 - fragment lighting at 24², forward (91 vertices, 2 directional lights): 10.25× unlit, 1.42× vertex mode; the equation runs 2.00 times per covered pixel
 - fragment lighting at 24², deferred (91 vertices, 2 directional lights): 8.20× unlit, 1.14× vertex mode; the equation runs 1.00 times per covered pixel
+- fragment lighting at 24², deferred, uber-shader (91 vertices, 2 directional lights): 9.23× unlit, 1.28× vertex mode; the equation runs 1.00 times per covered pixel
 "#;
 
     #[test]

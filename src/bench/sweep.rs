@@ -460,6 +460,10 @@ pub enum Variant {
     /// ffvk's specialized pipelines on the fragment mode's deferred path
     /// ([`FragmentPath::Deferred`](ffvk::FragmentPath::Deferred)).
     Deferred,
+    /// The deferred path with the uber-shader's pipelines: its lighting pass reads every
+    /// state value from the state block, as one lighting pass over draws of several lighting
+    /// states would have to.
+    DeferredUber,
 }
 
 impl Variant {
@@ -470,6 +474,7 @@ impl Variant {
             Variant::Uber => "uber",
             Variant::FixedFunction => "fixed_function",
             Variant::Deferred => "deferred",
+            Variant::DeferredUber => "deferred_uber",
         }
     }
 }
@@ -760,6 +765,7 @@ pub fn points(config: &SweepConfig) -> Vec<Point> {
             (BenchMode::Vertex, Variant::Specialized),
             (BenchMode::Fragment, Variant::Specialized),
             (BenchMode::Fragment, Variant::Deferred),
+            (BenchMode::Fragment, Variant::DeferredUber),
             (BenchMode::Unlit, Variant::Specialized),
         ];
         for (mode, variant) in paths {

@@ -300,6 +300,13 @@ for every draw of the sphere in a frame (the gpu sweep's 16 each pass the depth 
 deferred path the lighting pass's own count (an atomic add per pixel it lights, once whatever \
 the draws), its G-buffer pass not counted.";
 
+/// The fragment mode's paths in the fragment sweep, as its rows name them.
+pub(super) const FRAGMENT_PATHS: [(&str, Variant); 3] = [
+    ("forward", Variant::Specialized),
+    ("deferred", Variant::Deferred),
+    ("deferred, uber-shader", Variant::DeferredUber),
+];
+
 /// Fragment lighting on the dense mesh: the three modes' times, the ratios issue 37 sets goals
 /// for, and the fragment stage's invocations per covered pixel.
 pub(super) fn fragment_table(report: &BenchReport) -> Table {
@@ -331,13 +338,15 @@ pub(super) fn fragment_table(report: &BenchReport) -> Table {
         );
         let time = |r: Option<&BenchResult>| r.map(|r| r.stats.time_ms);
         let over = |a: Option<f64>, b: Option<f64>| ratio(a.zip(b).map(|(a, b)| a / b));
-        for (path, variant) in [("forward", Variant::Specialized), ("deferred", Variant::Deferred)] {
+        for (path, variant) in FRAGMENT_PATHS {
             let Some(fragment) = at(BenchMode::Fragment, variant) else {
                 continue;
             };
             let covered = fragment.stats.covered_pixels;
             let (runs, counted_by) = match variant {
-                Variant::Deferred => (fragment.stats.evaluations, "the lighting pass's own count"),
+                Variant::Deferred | Variant::DeferredUber => {
+                    (fragment.stats.evaluations, "the lighting pass's own count")
+                }
                 _ => (fragment.stats.fs_invocations, "pipeline statistics"),
             };
             t.row([

@@ -233,7 +233,7 @@ fn a_batched_sweep_draws_every_point_several_times_and_fits_what_a_vertex_pixel_
         assert_eq!(r.point.draws, config.draws);
         // Both engines report GPU time: ffvk's timestamps, llvmpipe's GL_TIME_ELAPSED.
         assert!(s.gpu_ms.is_some_and(|g| g.median > 0.0), "{r:?}");
-        if r.point.variant == Variant::Deferred {
+        if matches!(r.point.variant, Variant::Deferred | Variant::DeferredUber) {
             // The deferred path's statistics are its lighting pass's; it lights every covered
             // pixel once, however many draws cover it.
             assert_eq!(s.evaluations, s.covered_pixels, "{r:?}");
