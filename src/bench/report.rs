@@ -327,27 +327,34 @@ pub fn markdown(report: &BenchReport) -> String {
     let s = &report.summary;
     let gl_name = report.env.gl_renderer.as_deref();
     let _ = writeln!(m, "\n### Summary\n");
-    let _ = writeln!(
-        m,
-        "- vertex and fragment mode cost the same at about {} ({}² image)",
-        s.crossover_vertices
-            .map_or("— (no crossing in this sweep)".into(), |v| format!(
-                "{} vertices",
-                count(v)
-            )),
-        c.base_size
-    );
-    let _ = writeln!(
-        m,
-        "- with {} vertices they cost the same at about {}",
-        sphere_counts(c.size_stacks).0,
-        s.crossover_pixels
-            .map_or("— (no crossing in this sweep)".into(), |p| format!(
-                "{} pixels ({:.0}²)",
-                count(p),
-                p.sqrt()
-            ))
-    );
+    // The crossings come from the density and size sweeps; sweeps without them (paths) say
+    // nothing of them.
+    let has = |g: Group| report.results.iter().any(|r| r.point.group == g);
+    let _ = has(Group::Density).then(|| {
+        writeln!(
+            m,
+            "- vertex and fragment mode cost the same at about {} ({}² image)",
+            s.crossover_vertices
+                .map_or("— (no crossing in this sweep)".into(), |v| format!(
+                    "{} vertices",
+                    count(v)
+                )),
+            c.base_size
+        )
+    });
+    let _ = has(Group::Size).then(|| {
+        writeln!(
+            m,
+            "- with {} vertices they cost the same at about {}",
+            sphere_counts(c.size_stacks).0,
+            s.crossover_pixels
+                .map_or("— (no crossing in this sweep)".into(), |p| format!(
+                    "{} pixels ({:.0}²)",
+                    count(p),
+                    p.sqrt()
+                ))
+        )
+    });
     for (mode, g) in &s.specialization_speedup {
         let _ = writeln!(
             m,
