@@ -1,20 +1,18 @@
-//! Compressed geometry ffvk cannot decode (KHR_draco_mesh_compression, EXT_meshopt_compression
-//! and KHR_meshopt_compression): found in the raw JSON before anything is read, so that a file
-//! whose triangles exist only compressed is refused with the extension's name rather than with
-//! what its missing data looks like to the validator ("bufferView: Missing data").
+//! Draco-compressed geometry (KHR_draco_mesh_compression), which ffvk cannot decode: found in
+//! the raw JSON before anything is read, so that a file whose triangles exist only compressed
+//! is refused with the extension's name rather than with what its missing data looks like to
+//! the validator ("bufferView: Missing data").
 //!
-//! Neither extension has a maintained pure-Rust decoder: Draco's is C++ (draco-rs binds it and
-//! builds it from source), meshoptimizer's likewise (the `meshopt` crate compiles it with `cc`),
-//! so reading them would cost every clean build minutes. A file that also carries uncompressed
-//! data (both extensions allow that fallback) loads from that data, with a warning.
+//! Draco's decoder is C++ with no maintained pure-Rust port (draco-rs binds it and builds it
+//! from source, minutes of every clean build). A file that also carries uncompressed data
+//! (the extension allows that fallback) loads from that data, with a warning. Meshopt
+//! compression is decoded (`meshopt.rs`).
 
 use super::{Context, LoadError, LoadErrorKind};
 use gltf::json::Value;
 
 /// The Draco extension's name.
 const DRACO: &str = "KHR_draco_mesh_compression";
-/// The meshopt extensions' names (the EXT one and its KHR successor).
-const MESHOPT: [&str; 2] = ["EXT_meshopt_compression", "KHR_meshopt_compression"];
 
 /// Refuses a file whose drawn geometry exists only in a compressed form.
 pub(super) fn check(cx: &Context) -> Result<(), LoadError> {
@@ -25,21 +23,7 @@ pub(super) fn check(cx: &Context) -> Result<(), LoadError> {
             .map(Vec::as_slice)
             .unwrap_or(&[])
     };
-    let (accessors, views, buffers) = (array("accessors"), array("bufferViews"), array("buffers"));
-    // A bufferView reads from a meshopt fallback buffer: one with no data of its own.
-    let fallback_view = |view: u64| -> Option<&'static str> {
-        let view = views.get(usize::try_from(view).ok()?)?;
-        let buffer = buffers.get(usize::try_from(view.get("buffer")?.as_u64()?).ok()?)?;
-        MESHOPT.into_iter().find(|name| {
-            view.get("extensions").and_then(|e| e.get(*name)).is_some()
-                && buffer
-                    .get("extensions")
-                    .and_then(|e| e.get(*name))
-                    .and_then(|e| e.get("fallback"))
-                    .and_then(Value::as_bool)
-                    == Some(true)
-        })
-    };
+    let accessors = array("accessors");
     let meshes = array("meshes");
     for (m, mesh) in meshes.iter().enumerate() {
         let primitives = mesh.get("primitives").and_then(Value::as_array);
@@ -59,18 +43,10 @@ pub(super) fn check(cx: &Context) -> Result<(), LoadError> {
                 let Some(a) = usize::try_from(accessor).ok().and_then(|a| accessors.get(a)) else {
                     continue; // the validator names it
                 };
-                let view = a.get("bufferView").and_then(Value::as_u64);
-                let (extension, detail) = match view {
-                    None if draco => (DRACO, "has no bufferView: its data exists only Draco-compressed"),
-                    Some(v) => match fallback_view(v) {
-                        Some(name) => (
-                            name,
-                            "reads a fallback buffer, which holds no data: it exists only compressed",
-                        ),
-                        None => continue,
-                    },
-                    None => continue,
-                };
+                if !draco || a.get("bufferView").is_some() {
+                    continue;
+                }
+                let (extension, detail) = (DRACO, "has no bufferView: its data exists only Draco-compressed");
                 return Err(cx.error(LoadErrorKind::Compressed {
                     primitive: cx.primitive_label(m, p),
                     attribute: what,
@@ -126,28 +102,5 @@ mod tests {
             .warnings
             .iter()
             .any(|w| w.contains("KHR_draco_mesh_compression")));
-
-        // meshopt: the indices read a fallback buffer, which has no data.
-        let path = dir.join("meshopt.gltf");
-        std::fs::write(
-            &path,
-            r#"{ "asset": { "version": "2.0" }, "extensionsUsed": ["EXT_meshopt_compression"],
-                 "scene": 0, "scenes": [ { "nodes": [0] } ], "nodes": [ { "mesh": 0 } ],
-                 "meshes": [ { "name": "packed", "primitives": [ { "attributes": { "POSITION": 0 }, "indices": 1 } ] } ],
-                 "accessors": [ { "bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0,0,0], "max": [1,1,0] },
-                                { "bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR" } ],
-                 "bufferViews": [ { "buffer": 0, "byteLength": 36 },
-                                  { "buffer": 1, "byteLength": 6, "extensions": { "EXT_meshopt_compression":
-                                    { "buffer": 0, "byteLength": 4, "byteStride": 2, "count": 3, "mode": "TRIANGLES" } } } ],
-                 "buffers": [ { "byteLength": 40, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAACAPwAAgD8AAAAAAAAAAAAAAAA=" },
-                              { "byteLength": 6, "extensions": { "EXT_meshopt_compression": { "fallback": true } } } ] }"#,
-        )
-        .unwrap();
-        let text = message(load(&path).unwrap_err());
-        assert!(
-            text.contains("mesh 0 (\"packed\") primitive 0: indices (accessor 1) reads a fallback buffer")
-                && text.contains("cannot decode EXT_meshopt_compression"),
-            "{text}"
-        );
     }
 }

@@ -18,6 +18,7 @@ mod cameras;
 mod compressed;
 mod lights;
 mod materials;
+mod meshopt;
 mod primitives;
 mod quantized;
 mod read;
@@ -45,6 +46,8 @@ pub const SUPPORTED_EXTENSIONS: &[&str] = &[
     "KHR_materials_emissive_strength",
     "KHR_mesh_quantization",
     "KHR_texture_transform",
+    "EXT_meshopt_compression",
+    "KHR_meshopt_compression",
 ];
 
 /// Extensions that change only how textures are read. ffvk samples PNG and JPEG base color
@@ -234,11 +237,22 @@ pub enum LoadErrorKind {
         attribute: String,
         /// The index of the accessor it names.
         accessor: u64,
-        /// The extension its data is compressed with: `KHR_draco_mesh_compression` or a
-        /// meshopt one.
+        /// The extension its data is compressed with: `KHR_draco_mesh_compression`.
         extension: &'static str,
-        /// Why the accessor holds no data: no bufferView, or a meshopt fallback buffer.
+        /// Why the accessor holds no data (it has no bufferView).
         detail: &'static str,
+    },
+
+    /// A meshopt-compressed bufferView (EXT_meshopt_compression or KHR_meshopt_compression)
+    /// whose extension object is wrong or whose bytes do not decode.
+    #[error("bufferViews[{view}].extensions.{extension}: {problem}")]
+    Meshopt {
+        /// The bufferView's index.
+        view: usize,
+        /// The extension's name.
+        extension: &'static str,
+        /// The field, its value and what was expected, or why the bytes did not decode.
+        problem: String,
     },
 
     /// A primitive without an attribute ffvk needs (POSITION).
@@ -501,7 +515,8 @@ pub fn load_with(
     compressed::check(&cx)?;
     read::validate(&cx, &document)?;
     values::check(&cx, &document)?;
-    let buffers = read::read_buffers(&cx, &document, blob, &limits.asset_roots)?;
+    let mut buffers = read::read_buffers(&cx, &document, blob, &limits.asset_roots)?;
+    meshopt::decode(&cx, &mut buffers)?;
 
     let mut out = Loaded {
         warnings,
@@ -578,12 +593,12 @@ mod tests {
 
         // Every unsupported required extension is named, not only the first.
         let body = format!(
-            r#""extensionsUsed": ["KHR_draco_mesh_compression", "EXT_meshopt_compression"],
-               "extensionsRequired": ["KHR_draco_mesh_compression", "EXT_meshopt_compression"], {mesh}"#
+            r#""extensionsUsed": ["KHR_draco_mesh_compression", "EXT_mesh_gpu_instancing"],
+               "extensionsRequired": ["KHR_draco_mesh_compression", "EXT_mesh_gpu_instancing"], {mesh}"#
         );
         let text = message(load(&a.write_gltf(&dir, "two", &body)).unwrap_err());
         assert!(
-            text.contains("names KHR_draco_mesh_compression, EXT_meshopt_compression, which"),
+            text.contains("names KHR_draco_mesh_compression, EXT_mesh_gpu_instancing, which"),
             "{text}"
         );
 

@@ -269,6 +269,18 @@ pub(super) fn read_buffers(
             buffer: index,
             message,
         };
+        if let Some(len) = super::meshopt::fallback_len(cx, index) {
+            // Zeros, which the compressed views are decoded into (meshopt::decode).
+            let len = usize::try_from(len).unwrap_or(usize::MAX);
+            if len as u64 > super::MAX_FILE_BYTES {
+                return Err(cx.error(message(format!(
+                    "a meshopt fallback buffer of {len} bytes: expected at most {}",
+                    super::MAX_FILE_BYTES
+                ))));
+            }
+            buffers.push(gltf::buffer::Data(vec![0; len]));
+            continue;
+        }
         if let gltf::buffer::Source::Uri(uri) = buffer.source() {
             if !uri.starts_with("data:") {
                 if percent_decode(uri).is_none() {
