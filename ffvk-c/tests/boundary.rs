@@ -2115,7 +2115,7 @@ fn a_level_1_teapot_has_triangles_whose_indices_are_all_in_range() {
     let n = a.vertex_count as usize;
     let indices = a.index_count as usize;
     assert!(
-        n > 0 && indices > 0 && indices % 3 == 0,
+        n > 0 && indices > 0 && indices.is_multiple_of(3),
         "{n} vertices, {indices} indices"
     );
     // SAFETY: the arrays' documented lengths, valid until ffvkDestroyMesh.

@@ -152,7 +152,7 @@ fn scene_text(i: usize, size: u32) -> String {
     let _ = writeln!(
         t,
         "[light_model]\nambient = [0.1, 0.1, 0.1]\nlocal_viewer = {}",
-        i % 2 == 0
+        i.is_multiple_of(2)
     );
     for _ in 0..1 + i % 3 {
         let kind = (next() * 3.0) as u32;

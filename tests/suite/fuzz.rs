@@ -381,7 +381,7 @@ fn generated_scene_files_load_or_fail_with_an_error_and_render_without_panicking
 fn glb(json: &[u8], bin: Option<&[u8]>) -> Vec<u8> {
     let pad = |bytes: &[u8], with: u8| {
         let mut v = bytes.to_vec();
-        while v.len() % 4 != 0 {
+        while !v.len().is_multiple_of(4) {
             v.push(with);
         }
         v

@@ -184,7 +184,7 @@ fn strips_and_fans_in_flat_mode_take_the_last_vertex_of_each_triangle() {
         .collect();
     let image = draw(&gl, strip.clone(), (0..6).collect(), Topology::TriangleStrip);
     for i in 0..4 {
-        let row = |k: usize| if k % 2 == 0 { 9.0 } else { 14.0 };
+        let row = |k: usize| if k.is_multiple_of(2) { 9.0 } else { 14.0 };
         let (x, y) = (i..i + 3).fold((0.0f32, 0.0f32), |(sx, sy), k| {
             (sx + (1.0 + 2.8 * k as f32) / 3.0, sy + row(k) / 3.0)
         });

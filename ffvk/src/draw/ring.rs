@@ -88,7 +88,7 @@ impl Ring {
             RingUse::Uniforms => size.div_ceil(align) * align,
             // The instance stride is the element's size; Vulkan caps the alignment at 256,
             // which a record's size is a multiple of.
-            RingUse::InstanceData if size % align == 0 => size,
+            RingUse::InstanceData if size.is_multiple_of(align) => size,
             RingUse::InstanceData => {
                 return Err(Error::Internal(
                     "an instance element whose size is not a multiple of the uniform offset alignment",

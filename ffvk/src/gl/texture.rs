@@ -468,7 +468,11 @@ impl TextureImage {
         let mut rgba = Vec::with_capacity(size as usize * size as usize * 4);
         for j in 0..size {
             for i in 0..size {
-                rgba.extend_from_slice(if (i / cell + j / cell) % 2 == 0 { &a } else { &b });
+                rgba.extend_from_slice(if (i / cell + j / cell).is_multiple_of(2) {
+                    &a
+                } else {
+                    &b
+                });
             }
         }
         TextureImage::new(size, size, rgba)

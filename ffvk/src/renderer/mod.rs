@@ -198,7 +198,7 @@ impl Renderer {
             Topology::LineList => 2,
             _ => 1,
         };
-        if mesh.indices.len() % whole != 0 {
+        if !mesh.indices.len().is_multiple_of(whole) {
             return Err(MeshError::PartialPrimitive {
                 count: mesh.indices.len(),
                 topology: mesh.topology.gl_name(),

@@ -15,7 +15,7 @@ use gltf::json::Value;
 pub(super) const EXTENSIONS: [&str; 2] = ["EXT_meshopt_compression", "KHR_meshopt_compression"];
 
 /// The extension object named `name` in `object`'s `extensions`, with its name.
-fn extension<'v>(object: &'v Value) -> Option<(&'static str, &'v Value)> {
+fn extension(object: &Value) -> Option<(&'static str, &Value)> {
     let extensions = object.get("extensions")?;
     EXTENSIONS
         .into_iter()
@@ -163,10 +163,12 @@ fn parse(ext: &Value, buffers: &[gltf::buffer::Data]) -> Result<Compressed, Stri
         "QUATERNION" => Filter::Quaternion,
         "EXPONENTIAL" => Filter::Exponential,
         "COLOR" => Filter::Color,
-        other => return Err(format!(
+        other => {
+            return Err(format!(
             "filter: {:?}: expected \"NONE\", \"OCTAHEDRAL\", \"QUATERNION\", \"EXPONENTIAL\" or \"COLOR\"",
             crate::scene::shorten(other)
-        )),
+        ))
+        }
     };
     // The strides each mode and filter allow (the extensions' specifications).
     let stride_ok = match (mode, filter) {
@@ -275,7 +277,7 @@ mod tests {
         /// `ext` is more members of the extension object (with a leading comma), `view` more
         /// of the view's own.
         fn view(&mut self, encoded: &[u8], count: usize, stride: usize, ext: &str, view: &str) -> usize {
-            while self.bin.len() % 4 != 0 {
+            while !self.bin.len().is_multiple_of(4) {
                 self.bin.push(0);
             }
             let len = count * stride;

@@ -685,7 +685,7 @@ pub(super) fn read_primitive(
     let mut triangles: Vec<[u32; 3]> = try_vec(triangle_count, "mesh triangles").map_err(alloc_error)?;
     match mode {
         Mode::Triangles => {
-            if sequence.len() % 3 != 0 {
+            if !sequence.len().is_multiple_of(3) {
                 return Err(cx.error(LoadErrorKind::PartialTriangle {
                     primitive: label,
                     what: if primitive.indices().is_some() {
@@ -764,7 +764,7 @@ fn points_and_lines(
     vertex: impl Fn(u32) -> Vertex,
 ) -> Result<MeshData, LoadError> {
     use crate::Topology;
-    if mode == Mode::Lines && sequence.len() % 2 != 0 {
+    if mode == Mode::Lines && !sequence.len().is_multiple_of(2) {
         return Err(cx.error(LoadErrorKind::InvalidValue {
             object: label.to_owned(),
             field: "count",

@@ -24,7 +24,7 @@ pub(super) struct Asset {
 
 impl Asset {
     fn view(&mut self, bytes: &[u8]) -> usize {
-        while self.bin.len() % 4 != 0 {
+        while !self.bin.len().is_multiple_of(4) {
             self.bin.push(0);
         }
         self.views.push(format!(
@@ -111,11 +111,11 @@ impl Asset {
     /// `NAME.glb`: a JSON chunk and a BIN chunk.
     pub(super) fn write_glb(&self, dir: &Path, name: &str, body: &str) -> PathBuf {
         let mut json = self.json(body, None).into_bytes();
-        while json.len() % 4 != 0 {
+        while !json.len().is_multiple_of(4) {
             json.push(b' ');
         }
         let mut bin = self.bin.clone();
-        while bin.len() % 4 != 0 {
+        while !bin.len().is_multiple_of(4) {
             bin.push(0);
         }
         let total = 12 + 8 + json.len() + 8 + bin.len();

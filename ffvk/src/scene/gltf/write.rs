@@ -64,7 +64,7 @@ fn gltf_document(mesh: &MeshData, name: &str) -> io::Result<String> {
             mesh.topology.gl_name()
         )));
     }
-    if index_count % 3 != 0 {
+    if !index_count.is_multiple_of(3) {
         return Err(invalid(format!(
             "cannot write a glTF triangle list of {index_count} indices: expected a multiple of 3"
         )));
