@@ -441,3 +441,53 @@ fn a_quantized_model_draws_within_the_default_tolerance_of_its_plain_version() {
     }
     finish(r);
 }
+
+/// EXT_meshopt_compression (`assets/gltf/meshopt.glb`, from examples/make_meshopt_sample.rs):
+/// the plain model with every view compressed (ATTRIBUTES, TRIANGLES and INDICES modes; 16-bit
+/// OCTAHEDRAL and EXPONENTIAL filters on the normals), drawn within the default tolerance of
+/// the plain model in every mode; positions, texture coordinates and indices decode exactly,
+/// normals within the filters' precision.
+#[test]
+fn a_meshopt_compressed_model_draws_within_the_default_tolerance_of_its_plain_version() {
+    use ffvk::images::compare::{compare, Tolerance};
+    let options = DirectOptions::default().with_size(Some((256, 256)));
+    let quantized = direct("meshopt.glb", options.clone());
+    let plain = direct("quantized_plain.gltf", options);
+    assert_eq!(quantized.meshes.len(), plain.meshes.len());
+    for (q, p) in quantized.meshes.iter().zip(&plain.meshes) {
+        assert_eq!(q.data.vertices.len(), p.data.vertices.len(), "{}", q.name);
+        assert_eq!(q.data.indices, p.data.indices, "{}", q.name);
+        for (a, b) in q.data.vertices.iter().zip(&p.data.vertices) {
+            let world =
+                |m: &ffvk::scene::SceneMesh, v: [f32; 3]| m.model.transform_point3(Vec3::from_array(v));
+            let (wa, wb) = (world(q, a.position), world(p, b.position));
+            assert_eq!(a.position, b.position, "{}: position {wa} against {wb}", q.name);
+            let (na, nb) = (Vec3::from_array(a.normal), Vec3::from_array(b.normal));
+            assert!(
+                na.distance(nb) < 1.0 / 100.0,
+                "{}: normal {na} against {nb}",
+                q.name
+            );
+            let (ta, tb) = (
+                glam::Vec2::from_array(a.texcoord),
+                glam::Vec2::from_array(b.texcoord),
+            );
+            assert_eq!(ta, tb, "{}: texcoord", q.name);
+        }
+    }
+    let mut r = renderer();
+    for mode in LightingMode::ALL {
+        let a = render_scene(&mut r, &quantized, Some(mode)).unwrap();
+        let b = render_scene(&mut r, &plain, Some(mode)).unwrap();
+        let c = compare(&b, &a, &Tolerance::default()).unwrap();
+        let path = save_for_inspection(&a, &format!("gltf_meshopt_{}", mode.name()));
+        assert!(
+            c.passes(&Tolerance::default()),
+            "{} ({}): {}",
+            mode.name(),
+            path.display(),
+            c.summary()
+        );
+    }
+    finish(r);
+}
