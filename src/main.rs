@@ -58,10 +58,13 @@ enum Command {
     /// optionally check each image against references.
     Render {
         /// Scene files (.toml), glTF files (.gltf, .glb: drawn with the scene `ffvk scene`
-        /// prints) or directories whose *.toml files are rendered in name order.
+        /// prints) or directories: their *.toml files below them, in path order, or where
+        /// there is none their *.gltf and *.glb files (a folder of models is a suite too).
         #[arg(required = true)]
         scenes: Vec<PathBuf>,
-        /// Output PNG when rendering one scene in one mode; otherwise a directory (NAME.png each).
+        /// Output PNG when rendering one scene or glTF file in one mode; otherwise a folder
+        /// (NAME.png each; a name ending in .png is refused). Without -o each image lands
+        /// beside its scene or glTF file, as NAME.png.
         #[arg(short, long)]
         out: Option<PathBuf>,
         /// Override the scenes' lighting mode; a comma list renders each (NAME_MODE.png).
@@ -148,12 +151,17 @@ enum Command {
     },
     /// Print every term of the lighting equation at one pixel (CPU reference).
     Explain {
+        /// A scene file (.toml) or a glTF file (.gltf, .glb), as `render` takes it.
         scene: PathBuf,
         /// The pixel, as X,Y from the top-left corner.
         #[arg(long, value_parser = parse_pixel)]
         pixel: (u32, u32),
+        /// Explain the pixel as this lighting mode draws it (vertex, fragment or flat)
+        /// instead of the scene's own mode.
         #[arg(long)]
         lighting: Option<LightingMode>,
+        /// The image size, as WxH, as `render --size` sets it (the vertical field of view is
+        /// kept): the pixel is in that image.
         #[arg(long, value_parser = parse_size)]
         size: Option<(u32, u32)>,
         #[command(flatten)]
@@ -219,8 +227,9 @@ struct GltfArgs {
     /// or "off" (left out); "true" and "false" are "gl" and "off".
     #[arg(long, value_name = "off|gl|exact", value_parser = parse_gltf_lights)]
     gltf_lights: Option<GltfLights>,
-    /// glTF files only: GL light color per lux or candela, or "auto" (the default: the lights
-    /// together light the scene's center with illuminance 1).
+    /// glTF files only: GL light color per lux or candela, or "auto" (the default: the scale
+    /// at which the file's lights together light the center of the scene's bounds with
+    /// illuminance 0.75, where 1 is a white light falling head-on; the scale is printed).
     #[arg(long, value_parser = parse_exposure)]
     exposure: Option<Exposure>,
 }
@@ -435,7 +444,9 @@ fn run(cli: Cli) -> ffvk_cli::Result<ExitCode> {
             tolerance,
             gltf,
         } => {
-            gltf.check(scenes)?;
+            let files = regress::scene_files(scenes)?;
+            let paths: Vec<PathBuf> = files.iter().map(|f| f.path.clone()).collect();
+            gltf.check(&paths)?;
             let job = regress::Job {
                 scenes: scenes.clone(),
                 out_dir: out.clone(),
@@ -459,10 +470,32 @@ fn run(cli: Cli) -> ffvk_cli::Result<ExitCode> {
                 regress::pool::worker_main(&options(&cli), job)?;
                 return Ok(ExitCode::SUCCESS);
             }
-            let files = regress::scene_files(scenes)?;
+            for dir in scenes.iter().filter(|p| p.is_dir()) {
+                let meshes = regress::folder_scenes(dir)?.meshes;
+                if !meshes.is_empty() {
+                    eprintln!(
+                        "ffvk: note: {}: its .toml files are the scenes; its {} .gltf/.glb file(s) are \
+                         left to them as meshes (give a glTF file by name to draw it directly)",
+                        dir.display(),
+                        meshes.len()
+                    );
+                }
+            }
             let results_asked = check.is_some() || junit.is_some() || json.is_some() || partition.is_some();
-            if files.len() == 1 && lighting.len() <= 1 && !results_asked {
+            if files.len() == 1 && lighting.len() <= 1 && !results_asked && !scenes[0].is_dir() {
                 return render_one(&cli, &files[0].path, out.as_ref(), &job);
+            }
+            // Several images (or a folder's): -o is their folder, never a file name.
+            if let Some(out) = out
+                .as_ref()
+                .filter(|o| o.extension().is_some_and(|e| e.eq_ignore_ascii_case("png")))
+            {
+                return Err(ffvk_cli::Error::Path {
+                    path: out.clone(),
+                    problem:
+                        "names a .png file, but this run writes a folder's images (several scenes, several \
+                              lighting modes, results files or a folder given): expected a folder for -o",
+                });
             }
             // Results files: not over a scene file, one of the run's images, each other, or
             // into the references.

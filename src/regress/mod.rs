@@ -45,7 +45,7 @@ pub fn bless_from_env() -> bool {
 /// What to render and how to check it.
 #[derive(Debug, Clone, Default)]
 pub struct Job {
-    /// Scene files, or directories of them (*.toml below them, in path order).
+    /// Scene files (.toml), glTF files, or directories of them ([`folder_scenes`]).
     pub scenes: Vec<PathBuf>,
     /// The output directory; `None` writes next to each scene file. An image's name mirrors
     /// its scene's path relative to the directory given (`a/s.toml` → `a/s.png`); a scene
@@ -262,24 +262,24 @@ pub struct SceneFile {
     pub index: usize,
     /// The scene file.
     pub path: PathBuf,
-    /// Its path relative to the folder given, without `.toml` (`a/s` for `DIR/a/s.toml`), or
-    /// the file's stem for a file given by itself.
+    /// Its path relative to the folder given, without its extension (`a/s` for
+    /// `DIR/a/s.toml` or `DIR/a/s.glb`), or the file's stem for a file given by itself.
     pub name: String,
 }
 
-/// Expands folders into their *.toml files (below them, in path order) and names every
-/// scene; two scenes that would write the same image are an error.
+/// Expands folders into their scenes (below them, in path order) and names every scene; two
+/// scenes that would write the same image are an error. A folder's scenes are its *.toml
+/// files, or, in a folder without any, its *.gltf and *.glb files, each drawn directly
+/// (where a folder has both, the glTF files are the scene files' meshes: [`folder_scenes`]).
 pub fn scene_files(inputs: &[PathBuf]) -> Result<Vec<SceneFile>> {
     let mut files = Vec::new();
     for input in inputs {
         if input.is_dir() {
-            let mut found = Vec::new();
-            collect_toml(input, &mut found)?;
-            found.sort();
+            let found = folder_scenes(input)?.scenes;
             if found.is_empty() {
                 return Err(Error::Path {
                     path: input.clone(),
-                    problem: "no .toml scene files in this directory",
+                    problem: "no .toml scene files and no .gltf or .glb files in this directory",
                 });
             }
             for path in found {
@@ -331,8 +331,37 @@ pub fn scene_files(inputs: &[PathBuf]) -> Result<Vec<SceneFile>> {
     Ok(files)
 }
 
-/// Every *.toml file below `dir`.
-fn collect_toml(dir: &Path, found: &mut Vec<PathBuf>) -> Result<()> {
+/// What a folder given as a suite holds.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct FolderScenes {
+    /// Its scenes, in path order: every *.toml file below it, or every *.gltf and *.glb file
+    /// where there is no *.toml file.
+    pub scenes: Vec<PathBuf>,
+    /// The *.gltf and *.glb files below it that are not scenes because scene files are
+    /// (the meshes those files name, or files to give by name).
+    pub meshes: Vec<PathBuf>,
+}
+
+/// The scenes of folder `dir` (see [`FolderScenes`]).
+pub fn folder_scenes(dir: &Path) -> Result<FolderScenes> {
+    let (mut toml, mut gltf) = (Vec::new(), Vec::new());
+    collect(dir, &mut toml, &mut gltf)?;
+    toml.sort();
+    gltf.sort();
+    Ok(match toml.is_empty() {
+        true => FolderScenes {
+            scenes: gltf,
+            meshes: Vec::new(),
+        },
+        false => FolderScenes {
+            scenes: toml,
+            meshes: gltf,
+        },
+    })
+}
+
+/// Every *.toml file and every .gltf or .glb file below `dir`.
+fn collect(dir: &Path, toml: &mut Vec<PathBuf>, gltf: &mut Vec<PathBuf>) -> Result<()> {
     let entries = std::fs::read_dir(dir).map_err(|source| Error::Read {
         path: dir.to_path_buf(),
         source,
@@ -345,9 +374,11 @@ fn collect_toml(dir: &Path, found: &mut Vec<PathBuf>) -> Result<()> {
             })?
             .path();
         if path.is_dir() {
-            collect_toml(&path, found)?;
+            collect(&path, toml, gltf)?;
         } else if path.extension().is_some_and(|x| x == "toml") {
-            found.push(path);
+            toml.push(path);
+        } else if ffvk::scene::direct::is_gltf(&path) {
+            gltf.push(path);
         }
     }
     Ok(())

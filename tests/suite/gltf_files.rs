@@ -491,3 +491,83 @@ fn a_meshopt_compressed_model_draws_within_the_default_tolerance_of_its_plain_ve
     }
     finish(r);
 }
+
+#[test]
+fn a_folder_of_gltf_files_is_a_suite_with_references_junit_and_a_report() {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/output/gltf_suite");
+    let _ = std::fs::remove_dir_all(&dir);
+    let models = dir.join("models");
+    std::fs::create_dir_all(models.join("lamps")).unwrap();
+    for (from, to) in [
+        ("vertex_colors.gltf", "vertex_colors.gltf"),
+        ("meshopt.glb", "meshopt.glb"),
+        ("lamp.glb", "lamps/lamp.glb"),
+    ] {
+        std::fs::copy(assets().join(from), models.join(to)).unwrap();
+    }
+    // Bless references, then check against them with every results file.
+    let refs = dir.join("refs");
+    let (code, _, err) = run(&[&"render", &models, &"--size", &"64x48", &"-o", &refs]);
+    assert_eq!(code, 0, "{err}");
+    for name in ["vertex_colors.png", "meshopt.png", "lamps/lamp.png"] {
+        assert!(refs.join(name).is_file(), "{name}: {err}");
+    }
+    let (junit, report) = (dir.join("junit.xml"), dir.join("report"));
+    let (code, out, err) = run(&[
+        &"render",
+        &models,
+        &"--size",
+        &"64x48",
+        &"-o",
+        &dir.join("out"),
+        &"--check",
+        &refs,
+        &"--junit",
+        &junit,
+        &"--report",
+        &report,
+    ]);
+    assert_eq!(code, 0, "{out}\n{err}");
+    assert!(out.contains("3 image(s): 3 passed"), "{out}");
+    let xml = std::fs::read_to_string(&junit).unwrap();
+    assert!(xml.contains("lamps/lamp") && xml.contains("meshopt"), "{xml}");
+    assert!(report.join("index.html").is_file());
+
+    // One model in a folder is still a folder's suite: -o is a folder, and a .png name is
+    // refused rather than made a folder of.
+    let one = dir.join("one");
+    std::fs::create_dir_all(&one).unwrap();
+    std::fs::copy(assets().join("lamp.glb"), one.join("lamp.glb")).unwrap();
+    let (code, _, err) = run(&[&"render", &one, &"--size", &"32x24", &"-o", &dir.join("one_out")]);
+    assert_eq!(code, 0, "{err}");
+    assert!(dir.join("one_out/lamp.png").is_file());
+    let png = dir.join("two_modes.png");
+    let (code, _, err) = run(&[
+        &"render",
+        &one.join("lamp.glb"),
+        &"--lighting",
+        &"vertex,fragment",
+        &"-o",
+        &png,
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("two_modes.png") && err.contains("expected a folder for -o"),
+        "{err}"
+    );
+    assert!(!png.exists());
+
+    // Beside scene files, glTF files are their meshes, and a note says so.
+    std::fs::write(
+        one.join("scene.toml"),
+        "[image]\nsize = [32, 24]\n[[meshes]]\nbuiltin = \"sphere\"\n",
+    )
+    .unwrap();
+    let (code, _, err) = run(&[&"render", &one, &"-o", &dir.join("mixed_out")]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        err.contains("1 .gltf/.glb file(s) are left to them as meshes"),
+        "{err}"
+    );
+    assert!(dir.join("mixed_out/scene.png").is_file() && !dir.join("mixed_out/lamp.png").exists());
+}
