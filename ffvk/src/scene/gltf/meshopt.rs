@@ -22,13 +22,25 @@ fn extension(object: &Value) -> Option<(&'static str, &Value)> {
         .find_map(|name| Some((name, extensions.get(name)?)))
 }
 
-/// Buffer `index`'s byteLength when it is a meshopt fallback buffer without a URI: its bytes
-/// exist only once the views that write into it are decoded, so the reader allocates zeros.
+/// Buffer `index`'s byteLength when it is a meshopt fallback buffer that only compressed
+/// views read: its bytes are whatever those views decode to, so the reader allocates zeros
+/// and reads nothing, not even the file its URI names (gltfpack's `-cf` writes one for
+/// loaders without the extension; it need not be there).
 pub(super) fn fallback_len(cx: &Context, index: usize) -> Option<u64> {
     let buffer = cx.raw.get("buffers")?.get(index)?;
     let (_, ext) = extension(buffer)?;
-    let fallback = ext.get("fallback").and_then(Value::as_bool) == Some(true);
-    (fallback && buffer.get("uri").is_none()).then(|| buffer.get("byteLength")?.as_u64())?
+    if ext.get("fallback").and_then(Value::as_bool) != Some(true) {
+        return None;
+    }
+    let views = cx.raw.get("bufferViews").and_then(Value::as_array);
+    let plain_reader = views.into_iter().flatten().any(|view| {
+        view.get("buffer").and_then(Value::as_u64) == Some(index as u64) && extension(view).is_none()
+    });
+    match plain_reader {
+        // A view reads the buffer as it is: its data must be loaded.
+        true => None,
+        false => buffer.get("byteLength")?.as_u64(),
+    }
 }
 
 /// How a view's bytes were encoded.
@@ -263,7 +275,9 @@ mod tests {
     use crate::scene::gltf::testing::{message, scratch_dir, QUAD};
     use std::path::PathBuf;
 
-    /// Compressed bytes laid out in buffer 0, their views decoding into fallback buffer 1.
+    /// Compressed bytes laid out in buffer 0, their views decoding into fallback buffer 1,
+    /// whose URI names a file that is never written (as gltfpack's `-cf` files are often
+    /// shipped without theirs): loaders that decode do not read it.
     #[derive(Default)]
     struct Packed {
         bin: Vec<u8>,
@@ -307,7 +321,8 @@ mod tests {
                      "accessors": [ {accessors} ],
                      "bufferViews": [ {} ],
                      "buffers": [ {{ "byteLength": {}, "uri": "{name}.bin" }},
-                                  {{ "byteLength": {}, "extensions": {{ "EXT_meshopt_compression": {{ "fallback": true }} }} }} ] }}"#,
+                                  {{ "byteLength": {}, "uri": "{name}.fallback.bin",
+                                     "extensions": {{ "EXT_meshopt_compression": {{ "fallback": true }} }} }} ] }}"#,
                 self.views.join(", "),
                 self.bin.len(),
                 self.fallback.max(4)
