@@ -8,6 +8,7 @@ pub mod bench;
 pub mod demo;
 pub mod explain;
 pub mod gl_reference;
+pub mod gltf_args;
 pub mod regress;
 pub mod sheet;
 pub mod table;
@@ -121,6 +122,11 @@ pub enum Error {
     /// A path argument that names the wrong kind of thing.
     #[error("{}: {problem}", .path.display())]
     Path { path: PathBuf, problem: &'static str },
+
+    /// A command-line option's value that is wrong only with the others (clap checks each
+    /// alone): the option, its value and what was expected.
+    #[error("{0}")]
+    Argument(String),
 
     /// The embedded label font could not be used (a build defect).
     #[error("cannot draw labels: {message}")]

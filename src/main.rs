@@ -7,11 +7,11 @@ use clap::{Parser, Subcommand};
 use ffvk::gl::state::LightingMode;
 use ffvk::images::compare::{self, Tolerance};
 use ffvk::images::save_png;
-use ffvk::scene::direct::{is_gltf, CameraChoice, DirectOptions, LightChoice};
-use ffvk::scene::gltf::GltfLights;
+use ffvk::scene::direct::is_gltf;
 use ffvk::scene::render_scene;
 use ffvk::vk::Validation;
 use ffvk::{Renderer, RendererOptions};
+use ffvk_cli::gltf_args::GltfArgs;
 use ffvk_cli::regress;
 
 #[derive(Parser)]
@@ -208,91 +208,6 @@ fn parse_seconds(s: &str) -> Result<f64, String> {
         _ => Err(format!(
             "{s:?}: expected a number of seconds, > 0 and at most 1000000"
         )),
-    }
-}
-
-/// How a glTF file given without a scene file is drawn.
-#[derive(clap::Args, Debug, Clone, Default)]
-struct GltfArgs {
-    /// glTF files only: the file's camera NAME or INDEX, or "frame" for one framing the
-    /// scene's bounds (default: the file's first camera, else "frame").
-    #[arg(long, value_name = "NAME|INDEX|frame")]
-    camera: Option<String>,
-    /// glTF files only: "file" (its KHR_lights_punctual lights), "headlight" (one white light
-    /// from the camera) or "auto" (the file's, else the headlight; the default).
-    #[arg(long, value_parser = ["auto", "file", "headlight"])]
-    lights: Option<String>,
-    /// glTF files only: how the file's lights are drawn: "gl" (GL's light for each, the
-    /// default), "exact" (glTF's inverse-square falloff with its range, and its smooth cone)
-    /// or "off" (left out); "true" and "false" are "gl" and "off".
-    #[arg(long, value_name = "off|gl|exact", value_parser = parse_gltf_lights)]
-    gltf_lights: Option<GltfLights>,
-    /// glTF files only: GL light color per lux or candela, or "auto" (the default: the scale
-    /// at which the file's lights together light the center of the scene's bounds with
-    /// illuminance 0.75, where 1 is a white light falling head-on; the scale is printed).
-    #[arg(long, value_parser = parse_exposure)]
-    exposure: Option<Exposure>,
-}
-
-#[derive(Debug, Clone, Copy)]
-enum Exposure {
-    Auto,
-    Scale(f32),
-}
-
-fn parse_gltf_lights(s: &str) -> Result<GltfLights, String> {
-    s.parse::<GltfLights>()
-        .map_err(|_| format!("{s:?}: expected \"off\", \"gl\" or \"exact\" (or true/false)"))
-}
-
-fn parse_exposure(s: &str) -> Result<Exposure, String> {
-    if s == "auto" {
-        return Ok(Exposure::Auto);
-    }
-    match s.parse::<f32>() {
-        Ok(x) if x > 0.0 && x.is_finite() => Ok(Exposure::Scale(x)),
-        _ => Err(format!("{s:?}: expected \"auto\" or a number > 0")),
-    }
-}
-
-impl GltfArgs {
-    fn given(&self) -> bool {
-        self.camera.is_some()
-            || self.lights.is_some()
-            || self.gltf_lights.is_some()
-            || self.exposure.is_some()
-    }
-
-    fn options(&self) -> DirectOptions {
-        let mut options = DirectOptions::default();
-        options.camera = match self.camera.as_deref() {
-            None => CameraChoice::Auto,
-            Some("frame") => CameraChoice::Frame,
-            Some(name) => CameraChoice::File(name.to_owned()),
-        };
-        options.lights = match self.lights.as_deref() {
-            Some("file") => LightChoice::File,
-            Some("headlight") => LightChoice::Headlight,
-            _ => LightChoice::Auto,
-        };
-        options.gltf_lights = self.gltf_lights.unwrap_or_default();
-        options.exposure = match self.exposure {
-            Some(Exposure::Scale(x)) => Some(x),
-            _ => None,
-        };
-        options
-    }
-
-    /// Refuses the flags for inputs none of which is a glTF file: a scene file sets its own.
-    fn check(&self, inputs: &[PathBuf]) -> ffvk_cli::Result<()> {
-        if self.given() && !inputs.iter().any(|p| is_gltf(p)) {
-            return Err(ffvk_cli::Error::Path {
-                path: inputs[0].clone(),
-                problem: "--camera, --lights, --gltf-lights and --exposure apply to .gltf and .glb inputs: expected \
-                          one, or the camera, lights, gltf_lights and gltf_exposure set in the scene file",
-            });
-        }
-        Ok(())
     }
 }
 
@@ -729,6 +644,7 @@ fn write_scene(
             problem: "expected a .gltf or .glb file",
         });
     }
+    choices.check(&[gltf.to_path_buf()])?;
     let mut options = choices.options();
     options.size = size;
     let reference = ffvk::scene::direct::relative_ref(gltf, out);

@@ -247,8 +247,11 @@ fn punctual_lights_are_scaled_by_the_documented_auto_exposure() {
 }
 
 #[test]
-fn the_files_camera_is_used_with_its_aspect_ratio_unless_framing_is_asked_for() {
-    let scene = direct("camera.gltf", DirectOptions::default());
+fn a_files_camera_is_used_with_its_aspect_ratio_when_asked_for_and_framing_is_the_default() {
+    let scene = direct(
+        "camera.gltf",
+        DirectOptions::default().with_camera(CameraChoice::FirstInFile),
+    );
     assert_eq!((scene.width, scene.height), (768, 512), "aspectRatio 1.5");
     // The camera node at (3, 2, 4): the view takes it to the origin.
     let eye = scene.view.inverse().transform_point3(Vec3::ZERO);
@@ -256,8 +259,18 @@ fn the_files_camera_is_used_with_its_aspect_ratio_unless_framing_is_asked_for() 
     // GL's projection for yfov 0.6 rad: y scale 1 / tan(0.3).
     assert!((scene.projection.y_axis.y - 1.0 / 0.3f32.tan()).abs() < 1e-4);
 
-    let framed = direct("camera.gltf", small().with_camera(CameraChoice::Frame));
+    let framed = direct("camera.gltf", DirectOptions::default());
     assert_ne!(framed.view, scene.view);
+    assert_eq!(
+        (framed.width, framed.height),
+        (512, 512),
+        "the framing camera's square"
+    );
+    let named = direct(
+        "camera.gltf",
+        DirectOptions::default().with_camera(CameraChoice::File("side view".into())),
+    );
+    assert_eq!(named.view, scene.view);
     let e = from_gltf(
         &assets().join("camera.gltf"),
         "camera.gltf",
@@ -570,4 +583,67 @@ fn a_folder_of_gltf_files_is_a_suite_with_references_junit_and_a_report() {
         "{err}"
     );
     assert!(dir.join("mixed_out/scene.png").is_file() && !dir.join("mixed_out/lamp.png").exists());
+}
+
+#[test]
+fn the_framing_camera_turns_rises_and_zooms_as_asked_and_the_background_is_the_clear_color() {
+    use ffvk::scene::direct::Orbit;
+    let eye = |s: &Scene| s.view.inverse().transform_point3(Vec3::ZERO);
+    let center = Vec3::new(2.3, 0.0, -2.2); // camera.gltf's bounds
+    let at = |orbit: Orbit| direct("camera.gltf", small().with_orbit(orbit));
+    let default = at(Orbit::default());
+    let d0 = eye(&default) - center;
+    // Azimuth 90: on the +X side, level with the center at elevation 0.
+    let side = at(Orbit::default()
+        .with_azimuth(Some(90.0))
+        .with_elevation(Some(0.0)));
+    let d = (eye(&side) - center).normalize();
+    assert!(d.abs_diff_eq(Vec3::X, 1e-4), "{d}");
+    // Straight above, looking down, still a proper view.
+    let above = at(Orbit::default().with_elevation(Some(90.0)));
+    let d = (eye(&above) - center).normalize();
+    assert!(d.abs_diff_eq(Vec3::Y, 1e-4) && above.view.is_finite(), "{d}");
+    // Zoom 2: the same direction at half the distance.
+    let near = at(Orbit::default().with_zoom(Some(2.0)));
+    let d1 = eye(&near) - center;
+    assert!(d1.normalize().abs_diff_eq(d0.normalize(), 1e-5));
+    assert!(
+        (d1.length() * 2.0 - d0.length()).abs() < 1e-3 * d0.length(),
+        "{d1} {d0}"
+    );
+    // The angles the default stands for give the default view (within rounding).
+    let (a, e) = Orbit::default().degrees();
+    let same = at(Orbit::default().with_azimuth(Some(a)).with_elevation(Some(e)));
+    assert!(eye(&same).abs_diff_eq(eye(&default), 1e-3));
+
+    let colored = direct("camera.gltf", small().with_background(Some([0.2, 0.6, 0.8, 1.0])));
+    assert_eq!(colored.clear_color, ffvk::glam::Vec4::new(0.2, 0.6, 0.8, 1.0));
+    let mut r = renderer();
+    let image = render_scene(&mut r, &colored, None).unwrap();
+    finish(r);
+    assert_eq!(image.get_pixel(0, 0).0, [51, 153, 204, 255]);
+
+    // Out of range, and framing moves with a file's camera, are refused by name.
+    let e = from_gltf(
+        &assets().join("camera.gltf"),
+        "camera.gltf",
+        &Default::default(),
+        &small().with_orbit(Orbit::default().with_elevation(Some(95.0))),
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("elevation 95: expected degrees from -90 to 90"), "{e}");
+    let (code, _, err) = run(&[
+        &"render",
+        &assets().join("camera.gltf"),
+        &"--camera",
+        &"file",
+        &"--zoom",
+        &"2",
+    ]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("move the framing camera: expected --camera frame"),
+        "{err}"
+    );
 }

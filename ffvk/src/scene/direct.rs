@@ -1,6 +1,7 @@
-//! A glTF file drawn without a scene file: the scene ffvk makes for it (its first camera or
-//! one framing its bounds, its punctual lights or a headlight, glTF's meaning), written as
-//! scene TOML so that `ffvk scene FILE` prints exactly what `ffvk render FILE` draws.
+//! A glTF file drawn without a scene file: the scene ffvk makes for it (a camera framing its
+//! bounds from a chosen direction, or one of the file's cameras; its punctual lights or a
+//! headlight; glTF's meaning; a background color), written as scene TOML so that `ffvk scene
+//! FILE` prints exactly what `ffvk render FILE` draws.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -15,11 +16,12 @@ use super::{shorten, Limits, MeshBudget, Scene, SceneError, SceneErrorKind, MAX_
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 #[non_exhaustive]
 pub enum CameraChoice {
-    /// The file's first camera (in node order), else [`CameraChoice::Frame`].
+    /// A camera framing the scene's bounds ([`DirectOptions::orbit`]), whatever the file
+    /// holds: what glTF viewers show first (the file's cameras are offered on request).
     #[default]
-    Auto,
-    /// A camera framing the scene's bounds, whatever the file holds.
     Frame,
+    /// The file's first camera (in node order), else [`CameraChoice::Frame`].
+    FirstInFile,
     /// The file's camera with this name, or this index in `cameras`.
     File(String),
 }
@@ -54,6 +56,75 @@ pub struct DirectOptions {
     pub exposure: Option<f32>,
     /// The image size; `None`: 512 × 512, or 512 high with the camera's aspect ratio.
     pub size: Option<(u32, u32)>,
+    /// Where the framing camera looks from and how near it comes.
+    pub orbit: Orbit,
+    /// The background (the clear color), RGBA; `None`: 0.2 grey, opaque.
+    pub background: Option<[f32; 4]>,
+}
+
+/// The framing camera's place: a direction from the bounds' center and a zoom.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[non_exhaustive]
+pub struct Orbit {
+    /// Degrees about +Y from glTF's front (+Z), positive toward +X (the model turns to show
+    /// its left side); `None`: the default direction's, front, right and above (about 24.2°,
+    /// with an elevation of about 17.7°).
+    pub azimuth: Option<f32>,
+    /// Degrees above the horizontal plane, from −90 (below) to 90 (above).
+    pub elevation: Option<f32>,
+    /// How much nearer than the fit (all eight corners of the bounds inside 90 % of the
+    /// image) the camera comes: 2 halves the distance; `None` is 1.
+    pub zoom: Option<f32>,
+}
+
+with_fields!(Orbit {
+    /// Sets [`azimuth`](Orbit::azimuth).
+    with_azimuth => azimuth: Option<f32>,
+    /// Sets [`elevation`](Orbit::elevation).
+    with_elevation => elevation: Option<f32>,
+    /// Sets [`zoom`](Orbit::zoom).
+    with_zoom => zoom: Option<f32>,
+});
+
+impl Orbit {
+    /// Whether anything differs from the default framing.
+    pub fn is_default(&self) -> bool {
+        *self == Orbit::default()
+    }
+
+    /// Azimuth and elevation in degrees, the defaults' where not given.
+    pub fn degrees(&self) -> (f32, f32) {
+        let default = FRAME_FROM.normalize();
+        (
+            self.azimuth.unwrap_or(default.x.atan2(default.z).to_degrees()),
+            self.elevation.unwrap_or(default.y.asin().to_degrees()),
+        )
+    }
+
+    /// The unit direction from the bounds' center to the camera.
+    fn direction(&self) -> Vec3 {
+        if self.azimuth.is_none() && self.elevation.is_none() {
+            // Exactly the direction references were drawn from before the angles existed.
+            return FRAME_FROM.normalize();
+        }
+        let (a, e) = self.degrees();
+        let (a, e) = (a.to_radians(), e.to_radians());
+        Vec3::new(e.cos() * a.sin(), e.sin(), e.cos() * a.cos())
+    }
+
+    /// Checks the values: a problem names the option, its value and what was expected.
+    pub fn check(&self) -> Result<(), String> {
+        if let Some(a) = self.azimuth.filter(|a| !a.is_finite()) {
+            return Err(format!("azimuth {a}: expected a finite number of degrees"));
+        }
+        if let Some(e) = self.elevation.filter(|e| !(-90.0..=90.0).contains(e)) {
+            return Err(format!("elevation {e}: expected degrees from -90 to 90"));
+        }
+        if let Some(z) = self.zoom.filter(|z| !(z.is_finite() && *z > 0.0)) {
+            return Err(format!("zoom {z}: expected a number > 0"));
+        }
+        Ok(())
+    }
 }
 
 with_fields!(DirectOptions {
@@ -67,6 +138,10 @@ with_fields!(DirectOptions {
     with_exposure => exposure: Option<f32>,
     /// Sets [`size`](DirectOptions::size).
     with_size => size: Option<(u32, u32)>,
+    /// Sets [`orbit`](DirectOptions::orbit).
+    with_orbit => orbit: Orbit,
+    /// Sets [`background`](DirectOptions::background).
+    with_background => background: Option<[f32; 4]>,
 });
 
 /// The scene made for a glTF file, the TOML that makes it, and what was chosen.
@@ -124,47 +199,86 @@ pub fn from_gltf(
     })?;
     let (center, radius) = ((lo + hi) / 2.0, ((hi - lo).length() / 2.0).max(1e-6));
 
+    options.orbit.check().map_err(|m| field("--camera", m))?;
+    if let Some(c) = options
+        .background
+        .filter(|c| !c.iter().all(|x| (0.0..=1.0).contains(x)))
+    {
+        return Err(field(
+            "--background",
+            format!("{c:?}: expected red, green, blue and alpha from 0 to 1"),
+        ));
+    }
     let mut choices = Vec::new();
     let camera = match &options.camera {
         CameraChoice::Frame => None,
-        CameraChoice::Auto => loaded.cameras.first(),
+        CameraChoice::FirstInFile => loaded.cameras.first(),
         CameraChoice::File(want) => Some(find_camera(&loaded, want).map_err(|m| field("--camera", m))?),
     };
-    let view =
-        match camera {
-            Some(c) => {
-                let view = file_view(c, center, lo, hi, options.size);
-                choices.push(format!(
-                    "camera: {:?} (camera {}) from the file{}",
-                    shorten(&c.name),
-                    c.index,
-                    match options.size {
-                        Some(_) => String::new(),
-                        None => format!(
-                            ", the image {} × {} for its aspect ratio",
-                            view.size.0, view.size.1
-                        ),
-                    }
-                ));
-                view
-            }
-            None => {
-                choices.push(format!(
-                "camera: {}framing the scene's bounds (center {}, radius {}) from the front, right and above",
-                match (loaded.cameras.is_empty(), options.camera == CameraChoice::Auto) {
+    let view = match camera {
+        Some(c) => {
+            let view = file_view(c, center, lo, hi, options.size);
+            choices.push(format!(
+                "camera: {:?} (camera {}) from the file{}",
+                shorten(&c.name),
+                c.index,
+                match options.size {
+                    Some(_) => String::new(),
+                    None => format!(
+                        ", the image {} × {} for its aspect ratio",
+                        view.size.0, view.size.1
+                    ),
+                }
+            ));
+            view
+        }
+        None => {
+            let from = match options.orbit.is_default() {
+                true => "from the front, right and above".to_owned(),
+                false => {
+                    let (a, e) = options.orbit.degrees();
+                    format!(
+                        "from azimuth {a:.1}°, elevation {e:.1}°{}",
+                        options
+                            .orbit
+                            .zoom
+                            .map_or(String::new(), |z| format!(", zoom {z}"))
+                    )
+                }
+            };
+            let offered = match loaded.cameras.len() {
+                0 => String::new(),
+                n => format!(
+                    "; the file has {n} camera{} (--camera file, or a name or index: {})",
+                    if n == 1 { "" } else { "s" },
+                    loaded
+                        .cameras
+                        .iter()
+                        .map(|c| format!("{} {:?}", c.index, shorten(&c.name)))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ),
+            };
+            choices.push(format!(
+                "camera: {}framing the scene's bounds (center {}, radius {}) {from}{offered}",
+                match loaded.cameras.is_empty() {
                     // Cameras left out say so in a warning of their own.
-                    (true, true) if loaded.warnings.iter().any(|w| w.contains("the camera is not used")) => {
+                    true if loaded
+                        .warnings
+                        .iter()
+                        .any(|w| w.contains("the camera is not used")) =>
+                    {
                         "no usable one in the file; "
                     }
-                    (true, true) => "none in the file; ",
-                    _ => "",
+                    true => "none in the file; ",
+                    false => "",
                 },
                 fmt3(center),
                 radius
             ));
-                frame_view(lo, hi, options.size)
-            }
-        };
+            frame_view(lo, hi, options.size, &options.orbit)
+        }
+    };
 
     let headlight = match (options.lights, options.gltf_lights) {
         (LightChoice::Headlight, _) => true,
@@ -206,7 +320,17 @@ pub fn from_gltf(
     });
     choices.push("glTF's meaning (gltf_defaults = true): see the README's \"glTF files\"".to_owned());
 
-    let toml = |gltf_ref: &str| scene_toml(path, gltf_ref, &view, headlight, mapping, &exposure, &choices);
+    let background = options.background.unwrap_or([0.2, 0.2, 0.2, 1.0]);
+    let toml = |gltf_ref: &str| {
+        scene_toml(
+            path,
+            gltf_ref,
+            &view,
+            background,
+            (headlight, mapping, &exposure),
+            &choices,
+        )
+    };
     let base = path.parent().unwrap_or(Path::new("."));
     let name = path
         .file_name()
@@ -360,13 +484,20 @@ fn corners(lo: Vec3, hi: Vec3) -> [Vec3; 8] {
     })
 }
 
-/// A camera on [`FRAME_FROM`] from the bounds' center, as near as it can be with all eight
-/// corners of the bounds inside 90 % of the image's height and width.
-fn frame_view(lo: Vec3, hi: Vec3, size: Option<(u32, u32)>) -> View {
+/// A camera in `orbit`'s direction from the bounds' center, as near as it can be with all
+/// eight corners of the bounds inside 90 % of the image's height and width, then `zoom`
+/// times nearer.
+fn frame_view(lo: Vec3, hi: Vec3, size: Option<(u32, u32)>, orbit: &Orbit) -> View {
     let size = size.unwrap_or((SIDE, SIDE));
     let center = (lo + hi) / 2.0;
-    let back = FRAME_FROM.normalize();
-    let right = Vec3::Y.cross(back).normalize();
+    let back = orbit.direction();
+    // Straight above or below, "up" on screen is toward the front (−Z seen from above).
+    let view_up = if back.y.abs() > 0.9999 {
+        Vec3::new(0.0, 0.0, -back.y.signum())
+    } else {
+        Vec3::Y
+    };
+    let right = view_up.cross(back).normalize();
     let up = back.cross(right);
     let tan_y = (FRAME_FOVY.to_radians() / 2.0).tan() * 0.9;
     let tan_x = tan_y * size.0 as f32 / size.1 as f32;
@@ -382,6 +513,9 @@ fn frame_view(lo: Vec3, hi: Vec3, size: Option<(u32, u32)>) -> View {
     }
     let radius = ((hi - lo).length() / 2.0).max(1e-6);
     distance = distance.max(radius * 1e-3);
+    if let Some(zoom) = orbit.zoom {
+        distance /= zoom;
+    }
     for p in relative {
         let depth = distance - p.dot(back);
         nearest = nearest.min(depth);
@@ -390,11 +524,14 @@ fn frame_view(lo: Vec3, hi: Vec3, size: Option<(u32, u32)>) -> View {
     View {
         eye: center + back * distance,
         target: center,
-        up: Vec3::Y,
+        up: view_up,
         size,
         projection: ViewProjection::Perspective {
             fovy: FRAME_FOVY,
-            near: (nearest * 0.5).max(distance * 1e-4),
+            // Zoomed in, the camera may stand inside the bounds: the near plane stays in front.
+            near: (nearest * 0.5)
+                .max(distance * 1e-4)
+                .max(distance * 1e-2 * f32::from(nearest <= 0.0)),
             far: farthest * 2.0,
         },
     }
@@ -409,9 +546,8 @@ fn scene_toml(
     path: &Path,
     gltf_ref: &str,
     view: &View,
-    headlight: bool,
-    mapping: GltfLights,
-    exposure: &str,
+    background: [f32; 4],
+    (headlight, mapping, exposure): (bool, GltfLights, &str),
     choices: &[String],
 ) -> String {
     let mut t = String::new();
@@ -434,8 +570,8 @@ fn scene_toml(
     );
     let _ = writeln!(
         t,
-        "\n[image]\nsize = [{}, {}]\nclear_color = [0.2, 0.2, 0.2, 1.0]",
-        view.size.0, view.size.1
+        "\n[image]\nsize = [{}, {}]\nclear_color = [{:?}, {:?}, {:?}, {:?}]",
+        view.size.0, view.size.1, background[0], background[1], background[2], background[3]
     );
     let _ = writeln!(
         t,
