@@ -315,7 +315,7 @@ fn run(cli: Cli) -> ffvk_cli::Result<ExitCode> {
             );
             println!("pipeline statistics:     {}", i.pipeline_statistics_query);
             println!("provoking vertex last:   {}", i.provoking_vertex_last);
-            for (usage, chosen) in renderer.device().memory_choices() {
+            for (usage, chosen) in renderer.memory_choices() {
                 let what = match chosen {
                     Some(c) => format!(
                         "type {} ({:?}), heap of {} MiB",

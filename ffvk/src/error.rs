@@ -80,21 +80,27 @@ pub enum Error {
         limit_name: &'static str,
     },
 
-    /// The driver refused device memory ffvk asked for (`vkAllocateMemory` or
-    /// `vkMapMemory`), usually because the memory is exhausted: smaller images or meshes may
-    /// fit.
-    #[error("cannot allocate {bytes} bytes of device memory (memory type {memory_type}, {flags}) for the {what}: {result}")]
+    /// gpu-allocator refused device memory ffvk asked for, usually because the memory is
+    /// exhausted: smaller images or meshes may fit.
+    #[error("cannot allocate {bytes} bytes of device memory ({location:?}) for the {what}: {source}")]
     DeviceMemory {
         /// What the memory was for, e.g. `"vertex buffer"`.
         what: &'static str,
-        /// The size asked of the driver: the resource's, or that of the block it would share.
+        /// The resource's size.
         bytes: u64,
-        /// The memory type's index.
-        memory_type: u32,
-        /// The memory type's property flags.
-        flags: String,
-        /// What the driver returned.
-        result: vk::Result,
+        /// The location its use asked for ([`MemoryUse::location`](crate::vk::MemoryUse::location)).
+        location: gpu_allocator::MemoryLocation,
+        /// gpu-allocator's error.
+        source: gpu_allocator::AllocationError,
+    },
+
+    /// gpu-allocator could not be set up for the device.
+    #[error("cannot set up {what}: {source}")]
+    Allocator {
+        /// What was being set up.
+        what: &'static str,
+        /// gpu-allocator's error.
+        source: gpu_allocator::AllocationError,
     },
 
     /// [`Buffer::write`](crate::vk::Buffer::write) or a read of a buffer whose memory the host

@@ -88,6 +88,9 @@ pub use ash;
 /// [`Vec4`](glam::Vec4), the reference's `DVec`s) are `glam` types in ffvk's API, so a caller's
 /// must come from this very version. Use `ffvk::glam` (or pin the same version) to be sure.
 pub use glam;
+/// gpu-allocator, the version ffvk allocates its device memory with: an embedder that shares
+/// its allocator (feature `shared-allocator`) makes it with this one, so the versions match.
+pub use gpu_allocator;
 /// The `image` ffvk is built with (feature `images`): [`images::save_png`] and the
 /// comparisons take its `RgbaImage`, so a caller holding raw RGBA bytes builds one from this
 /// very version (`ffvk::image::RgbaImage::from_raw`).

@@ -622,3 +622,97 @@ fn a_callers_device_draws_a_lit_line_strip_as_the_renderer_does() {
     }
     finish(r);
 }
+
+/// An embedder's own gpu-allocator `Allocator` serves ffvk's buffers beside the embedder's
+/// (feature `shared-allocator`): ffvk's allocations are named `ffvk: …` in its report while
+/// ffvk holds them, and none is left once ffvk's objects are dropped; the embedder's stays.
+#[test]
+fn an_embedders_allocator_serves_ffvks_buffers_and_gets_every_one_back() {
+    use ffvk::gpu_allocator::vulkan::{
+        AllocationCreateDesc, AllocationScheme, Allocator, AllocatorCreateDesc,
+    };
+    use ffvk::gpu_allocator::{AllocatorDebugSettings, MemoryLocation};
+    use ffvk::vk::{Device, EnabledFeatures};
+    use ffvk::{Lighting, LightingOptions, RasterState, Target, VertexInput};
+    use std::sync::{Arc, Mutex};
+    let plain = PlainDevice::new();
+    let allocator = Allocator::new(&AllocatorCreateDesc {
+        instance: plain.instance.clone(),
+        device: plain.device.clone(),
+        physical_device: plain.physical,
+        debug_settings: AllocatorDebugSettings::default(),
+        buffer_device_address: false,
+        allocation_sizes: Default::default(),
+    })
+    .unwrap();
+    let allocator = Arc::new(Mutex::new(allocator));
+    let names = |a: &Arc<Mutex<Allocator>>| -> Vec<String> {
+        let report = a.lock().unwrap().generate_report();
+        report.allocations.iter().map(|r| r.name.clone()).collect()
+    };
+    let own = allocator
+        .lock()
+        .unwrap()
+        .allocate(&AllocationCreateDesc {
+            name: "embedder's vertices",
+            requirements: ffvk::ash::vk::MemoryRequirements {
+                size: 4096,
+                alignment: 256,
+                memory_type_bits: !0,
+            },
+            location: MemoryLocation::CpuToGpu,
+            linear: true,
+            allocation_scheme: AllocationScheme::GpuAllocatorManaged,
+        })
+        .unwrap();
+
+    let features = EnabledFeatures::default().with_dynamic_rendering(true);
+    // SAFETY: the device comes from this physical device and outlives every ffvk object here;
+    // the allocator was made for it.
+    let device = unsafe {
+        Device::from_caller_with_allocator(
+            &plain.instance,
+            plain.physical,
+            plain.device.clone(),
+            features,
+            allocator.clone(),
+        )
+    }
+    .unwrap();
+    let mut lighting = Lighting::new(
+        &device,
+        &LightingOptions::new(Target::OFFSCREEN, VertexInput::interleaved()),
+    )
+    .unwrap();
+    let gl = lit_state();
+    lighting
+        .prepare(&gl.lighting, RasterState::default(), false)
+        .unwrap();
+    lighting.begin_frame(0).unwrap();
+    // Staging a draw writes its state block and record into ffvk's uniform memory.
+    let buffers = [(ffvk::ash::vk::Buffer::null(), 0)];
+    let draw = ffvk::LitDraw::new(
+        &gl.lighting,
+        Mat4::IDENTITY,
+        Mat4::IDENTITY,
+        &buffers,
+        ffvk::Geometry::vertices(3),
+    );
+    lighting.stage_draw(0, &draw).unwrap();
+    let held = names(&allocator);
+    assert!(held.iter().any(|n| n == "embedder's vertices"), "{held:?}");
+    let ffvk_held: Vec<&String> = held.iter().filter(|n| n.starts_with("ffvk: ")).collect();
+    assert!(
+        !ffvk_held.is_empty(),
+        "ffvk took nothing from the allocator: {held:?}"
+    );
+    assert_eq!(device.memory_usage().live, ffvk_held.len(), "{held:?}");
+
+    drop(lighting);
+    assert_eq!(device.memory_usage().live, 0);
+    drop(device);
+    assert_eq!(names(&allocator), vec!["embedder's vertices".to_owned()]);
+    allocator.lock().unwrap().free(own).unwrap();
+    // The allocator goes before the device it allocates from.
+    drop(allocator);
+}

@@ -523,6 +523,12 @@ impl Renderer {
         self.device.memory_usage()
     }
 
+    /// For each use, the memory type gpu-allocator gives it on this device (a probe
+    /// allocation): what `ffvk info` prints.
+    pub fn memory_choices(&self) -> Vec<(MemoryUse, Option<crate::vk::MemoryChoice>)> {
+        self.device.memory_choices()
+    }
+
     /// How many pipelines this renderer has created, and how many of them are specialized.
     pub fn pipeline_counts(&self) -> (usize, usize) {
         self.lighting.pipeline_counts()

@@ -1,12 +1,12 @@
 //! Physical device choice (lavapipe by default) and the logical device with one graphics queue.
 
 use std::ffi::CStr;
-use std::sync::{Arc, Mutex};
+use std::sync::Arc;
 
 use ash::{ext, vk};
 
 use super::instance::Instance;
-use super::memory::{choose_memory_type, Allocator, MemoryUsage, MemoryUse};
+use super::memory::{Books, DeviceAllocator, MemoryUsage, MemoryUse};
 use crate::error::{vk_error, Error, Result};
 
 /// What `ffvk info` prints and benchmarks record.
@@ -71,7 +71,11 @@ pub struct Device {
     pub(crate) memory: vk::PhysicalDeviceMemoryProperties,
     pub(crate) limits: vk::PhysicalDeviceLimits,
     /// Where every buffer and image of this device gets its memory.
-    allocator: Mutex<Allocator>,
+    allocator: DeviceAllocator,
+    /// ffvk's own allocations in it.
+    books: Books,
+    /// Vulkan 1.1's maxMemoryAllocationSize (0: unknown).
+    pub(crate) max_memory_allocation_size: u64,
     pub(crate) info: DeviceInfo,
     /// What only ffvk's own device has; `None` for a caller's device.
     pub(crate) own: Option<OwnDevice>,
@@ -243,12 +247,13 @@ impl Device {
         // SAFETY: the queue family and index 0 were requested above.
         let queue = unsafe { raw.get_device_queue(queue_family, 0) };
 
+        let allocator = DeviceAllocator::own(vki, &raw, physical);
         let own = OwnDevice {
             instance,
             queue,
             queue_family,
         };
-        Ok(Device::assemble(raw, memory, &props, &supported, info, Some(own)))
+        Device::assemble(raw, memory, &props, &supported, info, Some(own), allocator)
     }
 
     /// Wraps a device the caller created and keeps: ffvk creates its objects on it and frees
@@ -268,6 +273,42 @@ impl Device {
         physical_device: vk::PhysicalDevice,
         device: ash::Device,
         enabled: EnabledFeatures,
+    ) -> Result<Arc<Self>> {
+        // SAFETY: the caller's contract, passed on.
+        unsafe { Device::wrap(instance, physical_device, device, enabled, None) }
+    }
+
+    /// [`Device::from_caller`] with the embedder's own gpu-allocator `Allocator` (made for the
+    /// same device), which every ffvk buffer and image then takes its memory from: ffvk's
+    /// allocations are named `ffvk: <what>` in its reports and all freed when their owners
+    /// drop. Use [`crate::gpu_allocator`], the version ffvk was built with.
+    ///
+    /// # Safety
+    ///
+    /// As [`Device::from_caller`]; `allocator` was made for `device`.
+    #[cfg(feature = "shared-allocator")]
+    pub unsafe fn from_caller_with_allocator(
+        instance: &ash::Instance,
+        physical_device: vk::PhysicalDevice,
+        device: ash::Device,
+        enabled: EnabledFeatures,
+        allocator: Arc<std::sync::Mutex<gpu_allocator::vulkan::Allocator>>,
+    ) -> Result<Arc<Self>> {
+        // SAFETY: the caller's contract, passed on.
+        unsafe { Device::wrap(instance, physical_device, device, enabled, Some(allocator)) }
+    }
+
+    /// Both caller constructors.
+    ///
+    /// # Safety
+    ///
+    /// As [`Device::from_caller`].
+    unsafe fn wrap(
+        instance: &ash::Instance,
+        physical_device: vk::PhysicalDevice,
+        device: ash::Device,
+        enabled: EnabledFeatures,
+        shared: Option<Arc<std::sync::Mutex<gpu_allocator::vulkan::Allocator>>>,
     ) -> Result<Arc<Self>> {
         // SAFETY: the caller's contract: physical_device belongs to instance.
         let (props, memory) = unsafe {
@@ -313,10 +354,16 @@ impl Device {
         }
         let mut info = describe(&props, &supported, 0, false, enabled.provoking_vertex_last, false);
         (info.wide_lines, info.large_points) = (enabled.wide_lines, enabled.large_points);
-        Ok(Device::assemble(device, memory, &props, &supported, info, None))
+        let allocator = match shared {
+            #[cfg(feature = "shared-allocator")]
+            Some(shared) => Ok(DeviceAllocator::Shared(shared)),
+            _ => DeviceAllocator::own(instance, &device, physical_device),
+        };
+        Device::assemble(device, memory, &props, &supported, info, None, allocator)
     }
 
-    /// The device value of either constructor, with its allocator.
+    /// The device value of either constructor, with its allocator. A failed allocator
+    /// destroys ffvk's own device again.
     fn assemble(
         raw: ash::Device,
         memory: vk::PhysicalDeviceMemoryProperties,
@@ -324,20 +371,28 @@ impl Device {
         supported: &Supported,
         info: DeviceInfo,
         own: Option<OwnDevice>,
-    ) -> Arc<Self> {
-        let allocator = Allocator::new(
-            memory,
-            props.limits.buffer_image_granularity,
-            supported.max_memory_allocation_size,
-        );
-        Arc::new(Device {
+        allocator: Result<DeviceAllocator>,
+    ) -> Result<Arc<Self>> {
+        let allocator = match allocator {
+            Ok(a) => a,
+            Err(e) => {
+                if own.is_some() {
+                    // SAFETY: the device was just created by ffvk and has no children.
+                    unsafe { raw.destroy_device(None) };
+                }
+                return Err(e);
+            }
+        };
+        Ok(Arc::new(Device {
             raw,
             memory,
             limits: props.limits,
-            allocator: Mutex::new(allocator),
+            allocator,
+            books: Books::default(),
+            max_memory_allocation_size: supported.max_memory_allocation_size,
             info,
             own,
-        })
+        }))
     }
 
     /// The instance and queue of ffvk's own device. Only the renderer submits, and it
@@ -354,41 +409,47 @@ impl Device {
     }
 
     /// The allocator every buffer and image of this device takes its memory from.
-    pub(crate) fn allocator(&self) -> std::sync::MutexGuard<'_, Allocator> {
-        // A panic while the lock was held leaves the allocator's books as they were before
-        // the call that panicked (it changes them only after the driver succeeded).
-        self.allocator
-            .lock()
-            .unwrap_or_else(|poisoned| poisoned.into_inner())
+    pub(crate) fn allocator(&self) -> &DeviceAllocator {
+        &self.allocator
     }
 
-    /// For each use, the memory type a resource that allows every type would get (`None`
-    /// where no type is acceptable). What `ffvk info` prints.
-    pub fn memory_choices(&self) -> Vec<(MemoryUse, Option<MemoryChoice>)> {
-        [
-            MemoryUse::Gpu,
-            MemoryUse::Uniforms,
-            MemoryUse::Staging,
-            MemoryUse::Readback,
-        ]
-        .into_iter()
-        .map(|usage| {
-            let chosen = choose_memory_type(&self.memory, !0, usage).map(|index| {
-                let t = self.memory.memory_types[index as usize];
-                MemoryChoice {
-                    index,
-                    flags: t.property_flags,
-                    heap_bytes: self.memory.memory_heaps[t.heap_index as usize].size,
-                }
-            });
-            (usage, chosen)
-        })
-        .collect()
+    /// ffvk's books of its allocations on this device.
+    pub(crate) fn books(&self) -> &Books {
+        &self.books
+    }
+
+    /// For each use, the memory type gpu-allocator gives a small buffer of it (a probe
+    /// allocation, freed at once; `None` where it gave none). What `ffvk info` prints.
+    pub fn memory_choices(self: &Arc<Self>) -> Vec<(MemoryUse, Option<MemoryChoice>)> {
+        MemoryUse::ALL
+            .into_iter()
+            .map(|usage| {
+                let usages = vk::BufferUsageFlags::TRANSFER_SRC
+                    | vk::BufferUsageFlags::TRANSFER_DST
+                    | vk::BufferUsageFlags::VERTEX_BUFFER
+                    | vk::BufferUsageFlags::UNIFORM_BUFFER;
+                let probe = super::Buffer::new(self, "memory probe", 256, usages, usage).ok();
+                let chosen = probe.map(|b| {
+                    let flags = b.memory_flags();
+                    let count = self.memory.memory_type_count.min(vk::MAX_MEMORY_TYPES as u32);
+                    let index = (0..count)
+                        .find(|&i| self.memory.memory_types[i as usize].property_flags == flags)
+                        .unwrap_or(0);
+                    let heap = self.memory.memory_types[index as usize].heap_index as usize;
+                    MemoryChoice {
+                        index,
+                        flags,
+                        heap_bytes: self.memory.memory_heaps[heap].size,
+                    }
+                });
+                (usage, chosen)
+            })
+            .collect()
     }
 
     /// How much device memory ffvk holds on this device, and how much of it is in use.
     pub fn memory_usage(&self) -> MemoryUsage {
-        self.allocator().usage()
+        super::memory::usage(self)
     }
 
     /// Waits until the device is idle.
@@ -409,11 +470,7 @@ impl Drop for Device {
         // Every allocation holds the device, so none is left, and their owners kept the GPU
         // off them before dropping them (on a caller's device, the caller's contract): the
         // blocks go back first, on the caller's device too.
-        let allocator = self
-            .allocator
-            .get_mut()
-            .unwrap_or_else(|poisoned| poisoned.into_inner());
-        allocator.free_all(&self.raw);
+        self.allocator.release();
         if self.own.is_none() {
             // The caller's device: the caller destroys it.
             return;

@@ -36,7 +36,13 @@ impl Buffer {
         let raw = RawBuffer::new(device, &info)?;
         // SAFETY: raw is a live buffer of this device.
         let req = unsafe { device.raw.get_buffer_memory_requirements(raw.raw()) };
-        let memory = memory::allocate(device, what, &req, memory_use)?;
+        let memory = memory::allocate(
+            device,
+            what,
+            memory::Resource::Buffer(raw.raw()),
+            &req,
+            memory_use,
+        )?;
         // SAFETY: the allocation is of a type the requirements allow, at an offset aligned as
         // they ask, as large as they ask; the buffer is unbound.
         unsafe {
@@ -61,6 +67,11 @@ impl Buffer {
     /// The device that owns this buffer.
     pub(crate) fn device(&self) -> &Arc<Device> {
         self.memory.device()
+    }
+
+    /// The property flags of the memory type gpu-allocator placed it in.
+    pub fn memory_flags(&self) -> vk::MemoryPropertyFlags {
+        self.memory.flags()
     }
 
     /// Whether the host sees the buffer's memory ([`Buffer::write`] and [`Buffer::bytes`]
@@ -156,7 +167,13 @@ impl Image {
         } else {
             "color image"
         };
-        let memory = memory::allocate(device, what, &req, MemoryUse::Gpu)?;
+        let memory = memory::allocate(
+            device,
+            what,
+            memory::Resource::Image(raw.raw()),
+            &req,
+            MemoryUse::Gpu,
+        )?;
         // SAFETY: memory of an allowed type, aligned and as large as required; image unbound.
         unsafe {
             device
