@@ -4,7 +4,8 @@
 
 use ash::vk;
 
-use crate::gl::state::StateError;
+use crate::gl::errors::StateError;
+pub use crate::gl::errors::UnknownName;
 
 /// Everything that can go wrong in ffvk.
 #[derive(Debug, thiserror::Error)]
@@ -376,36 +377,3 @@ pub(crate) fn vk_error(call: &'static str) -> impl Fn(vk::Result) -> Error {
     }
 }
 
-/// A name that [`FromStr`](std::str::FromStr) does not know: `"phong"` for a
-/// [`LightingMode`](crate::gl::state::LightingMode), say. Its message names what was being
-/// read, the value and the names that exist.
-///
-/// ```
-/// use ffvk::gl::state::LightingMode;
-///
-/// assert_eq!("flat".parse::<LightingMode>(), Ok(LightingMode::Flat));
-/// let err = "phong".parse::<LightingMode>().unwrap_err();
-/// assert_eq!(err.to_string(), r#"unknown lighting mode "phong": expected vertex, fragment or flat"#);
-/// ```
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("unknown {what} {value:?}: expected {expected}")]
-#[non_exhaustive]
-pub struct UnknownName {
-    /// What the name was for, e.g. `"lighting mode"`.
-    pub what: &'static str,
-    /// The text given.
-    pub value: String,
-    /// The names that exist, e.g. `"vertex, fragment or flat"`.
-    pub expected: &'static str,
-}
-
-impl UnknownName {
-    /// `value` is not one of the names of `what`, which are `expected`.
-    pub fn new(what: &'static str, value: &str, expected: &'static str) -> Self {
-        UnknownName {
-            what,
-            value: value.to_owned(),
-            expected,
-        }
-    }
-}

@@ -2,7 +2,7 @@
 //! the classic named materials ([`presets`]); the texture unit, texture images and sampling
 //! ([`texture`]). Nothing here touches Vulkan.
 
-mod machine;
+pub mod errors;
 pub mod presets;
 pub mod state;
 pub mod texture;

@@ -8,7 +8,7 @@
 
 use glam::{Mat4, Vec4};
 
-use super::state::StateError;
+use super::errors::StateError;
 
 /// `GL_TEXTURE_ENV_MODE` (table 3.22): how the texel C_s, A_s combines with the incoming
 /// fragment color C_f, A_f (the lit primary color).
@@ -57,14 +57,14 @@ impl TexEnvMode {
 }
 
 impl std::str::FromStr for TexEnvMode {
-    type Err = crate::error::UnknownName;
+    type Err = super::errors::UnknownName;
     fn from_str(s: &str) -> Result<Self, Self::Err> {
         TexEnvMode::ALL
             .iter()
             .copied()
             .find(|m| m.name() == s)
             .ok_or_else(|| {
-                crate::error::UnknownName::new(
+                super::errors::UnknownName::new(
                     "texture environment",
                     s,
                     "modulate, replace, decal, blend or add",

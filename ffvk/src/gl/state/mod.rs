@@ -42,60 +42,13 @@ use glam::{Vec3, Vec4};
 
 use super::texture::{TexEnvMode, TextureUnit};
 
-pub use super::machine::GlState;
+mod machine;
+pub use machine::GlState;
 
 /// Lights ffvk evaluates per draw (GL_MAX_LIGHTS). GL requires at least 8.
 pub const MAX_LIGHTS: usize = 16;
 
-/// A value GL would reject. A [`GlState`] entry point that returns it changes nothing.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[non_exhaustive]
-pub enum StateError {
-    /// GL's `INVALID_VALUE`: a finite value outside the parameter's range. Also used for a
-    /// state that is in range but cannot be drawn (see [`DrawBlock::new`]).
-    ///
-    /// [`DrawBlock::new`]: crate::gpu::layout::DrawBlock::new
-    #[error("{parameter} = {value} is out of range: expected {valid}")]
-    OutOfRange {
-        /// The GL name of the parameter, e.g. `"GL_SPOT_CUTOFF"`.
-        parameter: &'static str,
-        /// The rejected value.
-        value: f32,
-        /// The valid range, in words, e.g. `"a value in [0, 90] or exactly 180"`.
-        valid: &'static str,
-    },
-    /// A NaN or infinite component. GL leaves their effect unspecified; ffvk refuses them so
-    /// they cannot spread NaN through the lighting.
-    #[error("{parameter} = {value} is not a finite number: expected {valid}")]
-    NotFinite {
-        /// The GL name of the parameter (or `"modelview matrix"`).
-        parameter: &'static str,
-        /// The first non-finite component found.
-        value: f32,
-        /// What would have been accepted, in words.
-        valid: &'static str,
-    },
-    /// A soft spot edge whose inner cone is wider than its outer cone (`GL_SPOT_CUTOFF`):
-    /// ffvk's extension, checked when the light is drawn, since GL's order of calls lets
-    /// either angle be set first.
-    #[error("light {light}: the spot edge's inner angle {inner}° is wider than its outer angle (GL_SPOT_CUTOFF) {outer}°: expected inner <= outer")]
-    SpotCone {
-        /// The light's index (`GL_LIGHTi`).
-        light: usize,
-        /// The inner cone's half-angle, degrees.
-        inner: f32,
-        /// The outer cone's half-angle (`GL_SPOT_CUTOFF`), degrees.
-        outer: f32,
-    },
-    /// A light index at or past [`MAX_LIGHTS`] (GL's `INVALID_ENUM` for `GL_LIGHTi`).
-    #[error("light index {index} is out of range: expected 0..{max} (GL_MAX_LIGHTS = {max})")]
-    LightIndex {
-        /// The index given.
-        index: usize,
-        /// [`MAX_LIGHTS`]; valid indices are below it.
-        max: usize,
-    },
-}
+pub use super::errors::StateError;
 
 /// One light source's state, in eye coordinates as GL stores it.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -456,13 +409,13 @@ impl LightingMode {
 }
 
 impl std::str::FromStr for LightingMode {
-    type Err = crate::error::UnknownName;
+    type Err = super::errors::UnknownName;
     fn from_str(s: &str) -> Result<Self, Self::Err> {
         match s {
             "vertex" => Ok(LightingMode::Vertex),
             "fragment" => Ok(LightingMode::Fragment),
             "flat" => Ok(LightingMode::Flat),
-            other => Err(crate::error::UnknownName::new(
+            other => Err(super::errors::UnknownName::new(
                 "lighting mode",
                 other,
                 "vertex, fragment or flat",

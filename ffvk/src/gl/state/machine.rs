@@ -1,11 +1,11 @@
 //! [`GlState`]: GL's entry points over the lighting state (`glLight`, `glMaterial`,
 //! `glLightModel`, `glColorMaterial`, `glColor`, `glShadeModel`, `glEnable`, `glTexEnv`, the
 //! matrices), each checked as GL checks it before anything changes; the state and its types
-//! are in [`state`](super::state).
+//! are in [`state`](super).
 
 use glam::{Mat3, Mat4, Vec4};
 
-use super::state::{
+use super::{
     check_light_scalar, finite_vec, in_range, Cap, ColorMaterialMode, Face, Light, LightModelParam,
     LightParam, LightingMode, LightingState, Material, MaterialParam, ShadeModel, StateError, TexEnvParam,
     MAX_LIGHTS,
