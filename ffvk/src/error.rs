@@ -376,4 +376,3 @@ pub(crate) fn vk_error(call: &'static str) -> impl Fn(vk::Result) -> Error {
         result => Error::Vulkan { call, result },
     }
 }
-

@@ -449,7 +449,7 @@ impl Device {
 
     /// How much device memory ffvk holds on this device, and how much of it is in use.
     pub fn memory_usage(&self) -> MemoryUsage {
-        super::memory::usage(self)
+        self.allocator.usage(&self.books)
     }
 
     /// Waits until the device is idle.

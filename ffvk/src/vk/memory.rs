@@ -5,7 +5,7 @@
 //!
 //! A device's allocator is ffvk's own, or with the `shared-allocator` feature the embedder's
 //! (an `Arc<Mutex<gpu_allocator::vulkan::Allocator>>` of the same device, see
-//! [`Device::from_caller_with_allocator`](super::Device::from_caller_with_allocator)); ffvk's
+//! `Device::from_caller_with_allocator`); ffvk's
 //! allocations in it are named `ffvk: <what>` and all returned when their resources drop.
 
 use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
@@ -18,7 +18,6 @@ use gpu_allocator::vulkan::{
 };
 use gpu_allocator::{AllocationSizes, AllocatorDebugSettings, MemoryLocation};
 
-use super::device::Device;
 use crate::error::{Error, Result};
 
 /// What a resource's memory is for; decides the gpu-allocator location it asks for
@@ -160,12 +159,12 @@ impl DeviceAllocator {
     }
 
     /// The allocator, locked.
-    fn lock(&self) -> Result<Locked<'_>> {
+    fn lock(&self) -> Locked<'_> {
         // A panic while the lock was held leaves gpu-allocator's books as they were before
         // the call that panicked, or with one allocation more: never inconsistent.
         match self {
-            DeviceAllocator::Own(m) => Ok(Locked::Own(m.lock().unwrap_or_else(|p| p.into_inner()))),
-            DeviceAllocator::Shared(m) => Ok(Locked::Shared(m.lock().unwrap_or_else(|p| p.into_inner()))),
+            DeviceAllocator::Own(m) => Locked::Own(m.lock().unwrap_or_else(|p| p.into_inner())),
+            DeviceAllocator::Shared(m) => Locked::Shared(m.lock().unwrap_or_else(|p| p.into_inner())),
         }
     }
 
@@ -193,72 +192,6 @@ impl Locked<'_> {
     }
 }
 
-/// A piece of device memory: the memory object, the offset to bind at and, for host-visible
-/// coherent memory, where it is mapped. Returned to the device's allocator when dropped.
-pub struct Allocation {
-    device: Arc<Device>,
-    /// `None` only while being dropped.
-    inner: Option<GpuAllocation>,
-    mapped: Option<MappedPtr>,
-}
-
-impl Allocation {
-    fn inner(&self) -> &GpuAllocation {
-        // Set from creation until Drop takes it.
-        self.inner
-            .as_ref()
-            .unwrap_or_else(|| unreachable!("an allocation used after its drop"))
-    }
-    /// The memory object to bind.
-    pub fn memory(&self) -> vk::DeviceMemory {
-        // SAFETY: the memory object is alive while the allocation is, and is bound only to
-        // this allocation's resource at its offset.
-        unsafe { self.inner().memory() }
-    }
-    /// The offset to bind at.
-    pub fn offset(&self) -> u64 {
-        self.inner().offset()
-    }
-    /// The bytes it spans.
-    pub fn size(&self) -> u64 {
-        self.inner().size()
-    }
-    /// Its memory type's property flags.
-    pub fn flags(&self) -> vk::MemoryPropertyFlags {
-        self.inner().memory_properties()
-    }
-    /// Where the host sees its first byte, when the memory is host-visible and coherent.
-    pub(crate) fn mapped(&self) -> Option<MappedPtr> {
-        self.mapped
-    }
-    /// The device it belongs to.
-    pub(crate) fn device(&self) -> &Arc<Device> {
-        &self.device
-    }
-}
-
-impl Drop for Allocation {
-    fn drop(&mut self) {
-        let Some(inner) = self.inner.take() else {
-            return;
-        };
-        let books = self.device.books();
-        books.live.fetch_sub(1, Ordering::Relaxed);
-        books.used.fetch_sub(inner.size(), Ordering::Relaxed);
-        if inner.is_dedicated() {
-            books.dedicated.fetch_sub(1, Ordering::Relaxed);
-            books.dedicated_bytes.fetch_sub(inner.size(), Ordering::Relaxed);
-        }
-        if let Ok(mut locked) = self.device.allocator().lock() {
-            if let Some(allocator) = locked.get() {
-                // gpu-allocator fails a free only for an allocation it does not know, which
-                // ffvk never hands it; nothing can be reported from a Drop.
-                let _ = allocator.free(inner);
-            }
-        }
-    }
-}
-
 /// What a resource is, for gpu-allocator: a buffer (linear) or an optimally tiled image.
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum Resource {
@@ -266,70 +199,133 @@ pub(crate) enum Resource {
     Image(vk::Image),
 }
 
-/// Memory of the location `usage` asks for, for `resource` of `requirements`; `what` names
-/// the resource in errors.
-pub(crate) fn allocate(
-    device: &Arc<Device>,
-    what: &'static str,
-    resource: Resource,
-    requirements: &vk::MemoryRequirements,
-    usage: MemoryUse,
-) -> Result<Allocation> {
-    check_size(device, what, requirements)?;
-    let dedicated = requirements.size >= DEDICATED_BYTES;
-    let name = format!("ffvk: {what}");
-    let desc = AllocationCreateDesc {
-        name: &name,
-        requirements: *requirements,
-        location: usage.location(),
-        linear: matches!(resource, Resource::Buffer(_)),
-        allocation_scheme: match (dedicated, resource) {
-            (false, _) => AllocationScheme::GpuAllocatorManaged,
-            (true, Resource::Buffer(b)) => AllocationScheme::DedicatedBuffer(b),
-            (true, Resource::Image(i)) => AllocationScheme::DedicatedImage(i),
-        },
-    };
-    let mut locked = device.allocator().lock()?;
-    let allocator = locked
-        .get()
-        .ok_or(Error::Internal("an allocation on a device being dropped"))?;
-    let inner = allocator.allocate(&desc).map_err(|source| Error::DeviceMemory {
-        what,
-        bytes: requirements.size,
-        location: usage.location(),
-        source,
-    })?;
-    drop(locked);
-    let coherent = vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT;
-    let mapped = inner
-        .mapped_ptr()
-        .filter(|_| inner.memory_properties().contains(coherent))
-        .map(|p| MappedPtr(p.as_ptr().cast()));
-    let books = device.books();
-    books.live.fetch_add(1, Ordering::Relaxed);
-    books.used.fetch_add(inner.size(), Ordering::Relaxed);
-    if inner.is_dedicated() {
-        books.dedicated.fetch_add(1, Ordering::Relaxed);
-        books.dedicated_bytes.fetch_add(inner.size(), Ordering::Relaxed);
+/// One of ffvk's allocations, as the device's allocator gave it.
+pub(crate) struct Placed {
+    pub(crate) inner: GpuAllocation,
+    /// Where the host sees its first byte, when the memory is host-visible and coherent.
+    pub(crate) mapped: Option<MappedPtr>,
+}
+
+/// What the device knows that an allocation is checked against: its memory table and
+/// `maxMemoryAllocationSize` (0: unknown).
+pub(crate) struct Limits<'a> {
+    pub(crate) memory: &'a vk::PhysicalDeviceMemoryProperties,
+    pub(crate) max_allocation: u64,
+}
+
+impl DeviceAllocator {
+    /// Memory of the location `usage` asks for, for `resource` of `requirements`; `what`
+    /// names the resource in errors.
+    pub(crate) fn allocate(
+        &self,
+        books: &Books,
+        limits: &Limits,
+        what: &'static str,
+        resource: Resource,
+        requirements: &vk::MemoryRequirements,
+        usage: MemoryUse,
+    ) -> Result<Placed> {
+        check_size(limits, what, requirements)?;
+        let dedicated = requirements.size >= DEDICATED_BYTES;
+        let name = format!("ffvk: {what}");
+        let desc = AllocationCreateDesc {
+            name: &name,
+            requirements: *requirements,
+            location: usage.location(),
+            linear: matches!(resource, Resource::Buffer(_)),
+            allocation_scheme: match (dedicated, resource) {
+                (false, _) => AllocationScheme::GpuAllocatorManaged,
+                (true, Resource::Buffer(b)) => AllocationScheme::DedicatedBuffer(b),
+                (true, Resource::Image(i)) => AllocationScheme::DedicatedImage(i),
+            },
+        };
+        let inner = {
+            let mut locked = self.lock();
+            let allocator = locked
+                .get()
+                .ok_or(Error::Internal("an allocation on a device being dropped"))?;
+            allocator.allocate(&desc).map_err(|source| Error::DeviceMemory {
+                what,
+                bytes: requirements.size,
+                location: usage.location(),
+                source,
+            })?
+        };
+        let coherent = vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT;
+        let mapped = inner
+            .mapped_ptr()
+            .filter(|_| inner.memory_properties().contains(coherent))
+            .map(|p| MappedPtr(p.as_ptr().cast()));
+        books.add(&inner, 1);
+        let placed = Placed { inner, mapped };
+        if usage.mapped() && placed.mapped.is_none() {
+            let flags = placed.inner.memory_properties();
+            self.free(books, placed.inner);
+            return Err(Error::MissingFeature(format!(
+                "host-visible, coherent memory for the {what} ({usage:?} use): gpu-allocator gave {flags:?}"
+            )));
+        }
+        Ok(placed)
     }
-    let allocation = Allocation {
-        device: device.clone(),
-        inner: Some(inner),
-        mapped,
-    };
-    if usage.mapped() && allocation.mapped.is_none() {
-        return Err(Error::MissingFeature(format!(
-            "host-visible, coherent memory for the {what} ({usage:?} use): gpu-allocator gave {:?}",
-            allocation.flags()
-        )));
+
+    /// Returns an allocation.
+    pub(crate) fn free(&self, books: &Books, inner: GpuAllocation) {
+        books.add(&inner, -1);
+        if let Some(allocator) = self.lock().get() {
+            // gpu-allocator fails a free only for an allocation it does not know, which ffvk
+            // never hands it; nothing can be reported from a Drop.
+            let _ = allocator.free(inner);
+        }
     }
-    Ok(allocation)
+
+    /// The device's usage (see [`MemoryUsage`]).
+    pub(crate) fn usage(&self, books: &Books) -> MemoryUsage {
+        let (blocks, block_bytes) = match self.lock().get() {
+            Some(a) => {
+                let report = a.generate_report();
+                (report.blocks.len(), report.total_capacity_bytes)
+            }
+            None => (0, 0),
+        };
+        MemoryUsage {
+            blocks,
+            block_bytes,
+            dedicated: books.dedicated.load(Ordering::Relaxed),
+            dedicated_bytes: books.dedicated_bytes.load(Ordering::Relaxed),
+            live: books.live.load(Ordering::Relaxed),
+            used_bytes: books.used.load(Ordering::Relaxed),
+        }
+    }
+}
+
+impl Books {
+    /// Counts `inner` in (`sign` 1) or out (-1).
+    fn add(&self, inner: &GpuAllocation, sign: i8) {
+        let (one, bytes) = (1usize, inner.size());
+        let (live, used, dedicated, dedicated_bytes) =
+            (&self.live, &self.used, &self.dedicated, &self.dedicated_bytes);
+        if sign > 0 {
+            live.fetch_add(one, Ordering::Relaxed);
+            used.fetch_add(bytes, Ordering::Relaxed);
+            if inner.is_dedicated() {
+                dedicated.fetch_add(one, Ordering::Relaxed);
+                dedicated_bytes.fetch_add(bytes, Ordering::Relaxed);
+            }
+        } else {
+            live.fetch_sub(one, Ordering::Relaxed);
+            used.fetch_sub(bytes, Ordering::Relaxed);
+            if inner.is_dedicated() {
+                dedicated.fetch_sub(one, Ordering::Relaxed);
+                dedicated_bytes.fetch_sub(bytes, Ordering::Relaxed);
+            }
+        }
+    }
 }
 
 /// Refuses a size no heap the resource may use can hold, or past `maxMemoryAllocationSize`,
 /// before asking: the error names the resource and the limit.
-fn check_size(device: &Device, what: &'static str, requirements: &vk::MemoryRequirements) -> Result<()> {
-    let memory = &device.memory;
+fn check_size(limits: &Limits, what: &'static str, requirements: &vk::MemoryRequirements) -> Result<()> {
+    let memory = limits.memory;
     let count = memory.memory_type_count.min(vk::MAX_MEMORY_TYPES as u32) as usize;
     let largest_heap = (0..count)
         .filter(|&i| requirements.memory_type_bits & (1 << i) != 0)
@@ -345,34 +341,10 @@ fn check_size(device: &Device, what: &'static str, requirements: &vk::MemoryRequ
     if requirements.size > largest_heap {
         return Err(too_large(largest_heap, "memory heap"));
     }
-    let max = device.max_memory_allocation_size;
-    if max != 0 && requirements.size > max {
-        return Err(too_large(max, "maxMemoryAllocationSize"));
+    if limits.max_allocation != 0 && requirements.size > limits.max_allocation {
+        return Err(too_large(limits.max_allocation, "maxMemoryAllocationSize"));
     }
     Ok(())
-}
-
-/// The device's usage (see [`MemoryUsage`]).
-pub(crate) fn usage(device: &Device) -> MemoryUsage {
-    let books = device.books();
-    let (blocks, block_bytes) = match device.allocator().lock() {
-        Ok(mut locked) => match locked.get() {
-            Some(a) => {
-                let report = a.generate_report();
-                (report.blocks.len(), report.total_capacity_bytes)
-            }
-            None => (0, 0),
-        },
-        Err(_) => (0, 0),
-    };
-    MemoryUsage {
-        blocks,
-        block_bytes,
-        dedicated: books.dedicated.load(Ordering::Relaxed),
-        dedicated_bytes: books.dedicated_bytes.load(Ordering::Relaxed),
-        live: books.live.load(Ordering::Relaxed),
-        used_bytes: books.used.load(Ordering::Relaxed),
-    }
 }
 
 #[cfg(test)]

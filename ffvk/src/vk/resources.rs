@@ -5,9 +5,73 @@ use std::sync::Arc;
 use ash::vk;
 
 use super::device::Device;
-use super::memory::{self, Allocation, MemoryUse};
+use super::memory::{Limits, MappedPtr, MemoryUse, Placed, Resource};
 use super::objects::{ImageView, RawBuffer, RawImage};
 use crate::error::{vk_error, Error, Result};
+
+/// A piece of device memory: the memory object, the offset to bind at and, for host-visible
+/// coherent memory, where it is mapped. Returned to the device's allocator when dropped.
+struct Allocation {
+    device: Arc<Device>,
+    /// `None` only while being dropped.
+    placed: Option<Placed>,
+}
+
+impl Allocation {
+    fn new(
+        device: &Arc<Device>,
+        what: &'static str,
+        resource: Resource,
+        requirements: &vk::MemoryRequirements,
+        usage: MemoryUse,
+    ) -> Result<Self> {
+        let limits = Limits {
+            memory: &device.memory,
+            max_allocation: device.max_memory_allocation_size,
+        };
+        let placed =
+            device
+                .allocator()
+                .allocate(device.books(), &limits, what, resource, requirements, usage)?;
+        Ok(Allocation {
+            device: device.clone(),
+            placed: Some(placed),
+        })
+    }
+
+    fn placed(&self) -> &Placed {
+        // Set from creation until Drop takes it.
+        self.placed
+            .as_ref()
+            .unwrap_or_else(|| unreachable!("an allocation used after its drop"))
+    }
+    /// The memory object to bind.
+    fn memory(&self) -> vk::DeviceMemory {
+        // SAFETY: the memory object is alive while the allocation is, and is bound only to
+        // this allocation's resource at its offset.
+        unsafe { self.placed().inner.memory() }
+    }
+    /// The offset to bind at.
+    fn offset(&self) -> u64 {
+        self.placed().inner.offset()
+    }
+    /// Its memory type's property flags.
+    fn flags(&self) -> vk::MemoryPropertyFlags {
+        self.placed().inner.memory_properties()
+    }
+    /// Where the host sees its first byte, when the memory is host-visible and coherent.
+    fn mapped(&self) -> Option<MappedPtr> {
+        self.placed().mapped
+    }
+}
+
+impl Drop for Allocation {
+    fn drop(&mut self) {
+        if let Some(placed) = self.placed.take() {
+            self.device.allocator().free(self.device.books(), placed.inner);
+        }
+    }
+}
 
 /// A buffer and its memory, placed by the device's allocator for its [`MemoryUse`]; mapped
 /// for its whole life when that memory is host-visible.
@@ -36,13 +100,7 @@ impl Buffer {
         let raw = RawBuffer::new(device, &info)?;
         // SAFETY: raw is a live buffer of this device.
         let req = unsafe { device.raw.get_buffer_memory_requirements(raw.raw()) };
-        let memory = memory::allocate(
-            device,
-            what,
-            memory::Resource::Buffer(raw.raw()),
-            &req,
-            memory_use,
-        )?;
+        let memory = Allocation::new(device, what, Resource::Buffer(raw.raw()), &req, memory_use)?;
         // SAFETY: the allocation is of a type the requirements allow, at an offset aligned as
         // they ask, as large as they ask; the buffer is unbound.
         unsafe {
@@ -66,7 +124,7 @@ impl Buffer {
 
     /// The device that owns this buffer.
     pub(crate) fn device(&self) -> &Arc<Device> {
-        self.memory.device()
+        &self.memory.device
     }
 
     /// The property flags of the memory type gpu-allocator placed it in.
@@ -167,13 +225,7 @@ impl Image {
         } else {
             "color image"
         };
-        let memory = memory::allocate(
-            device,
-            what,
-            memory::Resource::Image(raw.raw()),
-            &req,
-            MemoryUse::Gpu,
-        )?;
+        let memory = Allocation::new(device, what, Resource::Image(raw.raw()), &req, MemoryUse::Gpu)?;
         // SAFETY: memory of an allowed type, aligned and as large as required; image unbound.
         unsafe {
             device
