@@ -15,8 +15,8 @@ use std::sync::Arc;
 
 use ash::vk;
 
+use super::attachments::{area_and_viewport, attachment_barriers, color_attachment, depth_attachment};
 use super::frame::{FragmentPath, Frame};
-use super::record::{area_and_viewport, attachment_barriers, color_attachment, depth_attachment};
 use super::subresource;
 use crate::draw::lighting::{Lighting, Staged};
 use crate::draw::pipeline::{

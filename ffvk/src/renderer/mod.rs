@@ -18,6 +18,7 @@ use crate::vk::{
     Buffer, Device, DeviceInfo, Image, Instance, MemoryUsage, MemoryUse, Validation, ValidationSink,
 };
 
+mod attachments;
 mod deferred;
 mod frame;
 mod queries;

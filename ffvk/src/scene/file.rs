@@ -23,7 +23,7 @@ pub(super) struct SceneFile {
     pub(super) back_material: Option<MaterialSpec>,
     pub(super) color_material: Option<ColorMaterialSpec>,
     /// GL_TEXTURE_2D with a texture, for every mesh without its own.
-    pub(super) texture: Option<super::texture::TextureSpec>,
+    pub(super) texture: Option<TextureSpec>,
     /// GL_NORMALIZE; off (GL's default), or on under `gltf_defaults`.
     pub(super) normalize: Option<bool>,
     #[serde(default)]
@@ -186,7 +186,7 @@ pub(super) struct MeshSpec {
     pub(super) material: Option<MaterialSpec>,
     pub(super) back_material: Option<MaterialSpec>,
     /// This mesh's texture (`enabled = false` draws it untextured).
-    pub(super) texture: Option<super::texture::TextureSpec>,
+    pub(super) texture: Option<TextureSpec>,
     /// GL's primitive mode its index list is drawn with ("triangles" by default): "points",
     /// "lines", "line_strip", "line_loop", "triangles", "triangle_strip", "triangle_fan",
     /// "quads", "quad_strip" or "polygon".
@@ -211,4 +211,35 @@ where
     let mut out = [T::default(); N];
     out.copy_from_slice(&values);
     Ok(Some(out))
+}
+
+/// A `texture` table as serde reads it.
+#[derive(Debug, Default, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct TextureSpec {
+    /// GL_TEXTURE_2D; on when the table is present unless this says otherwise.
+    pub(super) enabled: Option<bool>,
+    /// A PNG or JPEG file, relative to the scene file.
+    pub(super) image: Option<std::path::PathBuf>,
+    /// A built-in image: "checker".
+    pub(super) builtin: Option<String>,
+    pub(super) env: Option<String>,
+    pub(super) env_color: Option<Vec<f32>>,
+    pub(super) min_filter: Option<String>,
+    pub(super) mag_filter: Option<String>,
+    pub(super) wrap_s: Option<String>,
+    pub(super) wrap_t: Option<String>,
+    /// GL_GENERATE_MIPMAP; off, as in GL.
+    pub(super) generate_mipmap: Option<bool>,
+    /// GL_SRGB8_ALPHA8 instead of GL_RGBA8.
+    pub(super) srgb: Option<bool>,
+    /// The GL_TEXTURE matrix, column-major; or scale, rotate (degrees about r) and translate
+    /// of (s, t), applied in that order.
+    #[serde(default, deserialize_with = "exact")]
+    pub(super) matrix: Option<[f32; 16]>,
+    #[serde(default, deserialize_with = "exact")]
+    pub(super) scale: Option<[f32; 2]>,
+    pub(super) rotate: Option<f32>,
+    #[serde(default, deserialize_with = "exact")]
+    pub(super) translate: Option<[f32; 2]>,
 }

@@ -6,8 +6,8 @@ use std::path::Path;
 use std::sync::Arc;
 
 use glam::{Mat4, Quat, Vec3, Vec4};
-use serde::Deserialize;
 
+use super::file::TextureSpec;
 use super::{shorten, Builder, SceneError};
 use crate::gl::texture::{
     MagFilter, MinFilter, Sampling, TexEnvMode, TextureImage, TextureUnit, Wrap, MAX_TEXTURE_SIZE,
@@ -15,37 +15,6 @@ use crate::gl::texture::{
 
 /// The largest image file read for a texture, in bytes.
 const MAX_IMAGE_BYTES: u64 = 256 << 20;
-
-/// A `texture` table as serde reads it.
-#[derive(Debug, Default, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct TextureSpec {
-    /// GL_TEXTURE_2D; on when the table is present unless this says otherwise.
-    pub(super) enabled: Option<bool>,
-    /// A PNG or JPEG file, relative to the scene file.
-    pub(super) image: Option<std::path::PathBuf>,
-    /// A built-in image: "checker".
-    pub(super) builtin: Option<String>,
-    pub(super) env: Option<String>,
-    pub(super) env_color: Option<Vec<f32>>,
-    pub(super) min_filter: Option<String>,
-    pub(super) mag_filter: Option<String>,
-    pub(super) wrap_s: Option<String>,
-    pub(super) wrap_t: Option<String>,
-    /// GL_GENERATE_MIPMAP; off, as in GL.
-    pub(super) generate_mipmap: Option<bool>,
-    /// GL_SRGB8_ALPHA8 instead of GL_RGBA8.
-    pub(super) srgb: Option<bool>,
-    /// The GL_TEXTURE matrix, column-major; or scale, rotate (degrees about r) and translate
-    /// of (s, t), applied in that order.
-    #[serde(default, deserialize_with = "super::file::exact")]
-    pub(super) matrix: Option<[f32; 16]>,
-    #[serde(default, deserialize_with = "super::file::exact")]
-    pub(super) scale: Option<[f32; 2]>,
-    pub(super) rotate: Option<f32>,
-    #[serde(default, deserialize_with = "super::file::exact")]
-    pub(super) translate: Option<[f32; 2]>,
-}
 
 /// A texture a mesh is drawn with: the image (shared between the meshes that name the same
 /// one), GL's texture parameters and the texture unit's state.

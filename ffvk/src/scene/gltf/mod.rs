@@ -25,6 +25,7 @@ mod read;
 #[cfg(test)]
 mod testing;
 mod textures;
+mod uris;
 mod values;
 pub mod write;
 

@@ -223,7 +223,7 @@ fn image_bytes(
         }
         gltf::image::Source::Uri { uri, .. } => {
             let base = cx.path.parent().unwrap_or(Path::new(""));
-            let file = super::read::asset_file(base, uri, roots).ok_or_else(|| {
+            let file = super::uris::asset_file(base, uri, roots).ok_or_else(|| {
                 format!(
                     "the URI {:?} leaves the asset's folder (ffvk --allow-root DIR widens that)",
                     crate::scene::shorten(uri)
