@@ -11,15 +11,13 @@ use indicatif::ProgressBar;
 use serde::Serialize;
 
 use super::measure::{GlAnchor, Spread};
+pub use super::sweep::MAX_DRAW_COUNT;
 use super::sweep::{BenchMode, Engine, SweepConfig, CLEAR};
 use crate::gl_reference::{time_frames_with, GlDraw, GlScene};
 use crate::Result;
 use ffvk::gl::state::{Cap, Face, GlState, LightParam, LightingState, MaterialParam};
 use ffvk::mesh::{MeshData, Vertex};
 use ffvk::{Draw, Frame, Renderer};
-
-/// The most draws a frame of the sweep may have.
-pub const MAX_DRAW_COUNT: u32 = 100_000;
 
 /// The image side of the sweep's frames (the emulation frame of the issue that asked for it).
 const SIZE: u32 = 512;

@@ -24,6 +24,7 @@
 
 mod draw_cost;
 pub mod draws;
+mod format;
 mod measure;
 mod plots;
 mod report;

@@ -8,8 +8,8 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+use super::format::{count, lights_text};
 use super::measure::{is, series};
-use super::report::{count, lights_text};
 use super::sweep::{sphere_counts, BenchMode, Engine, Group, Point, Variant, GL_MODES};
 use super::{BenchReport, BenchResult};
 use crate::{Error, Result};

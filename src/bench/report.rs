@@ -6,8 +6,9 @@ use std::path::{Path, PathBuf};
 
 use serde::Serialize;
 
+use super::format::{count, find, lights_text};
 use super::measure::Spread;
-use super::sweep::{sphere_counts, BenchMode, Engine, Group, Point, Variant};
+use super::sweep::{sphere_counts, BenchMode, Engine, Group, Variant};
 use super::tables::{
     costs_table, density_table, draw_cost_note, draw_cost_table, environment, fragment_table,
     light_count_table, light_kind_table, paths_table, primitives_table, size_table, COSTS_NOTE,
@@ -163,56 +164,6 @@ pub fn write_outputs(report: &BenchReport, dir: &Path) -> Result<Vec<PathBuf>> {
 
 // ---------------------------------------------------------------------------------------------
 // summary.md: the environment and one table per sweep, from rows of data.
-
-/// "1 directional light", "4 directional lights".
-pub(super) fn lights_text(n: usize) -> String {
-    format!("{n} directional light{}", if n == 1 { "" } else { "s" })
-}
-
-pub(super) fn ms(v: f64) -> String {
-    if v >= 100.0 {
-        format!("{v:.0}")
-    } else if v >= 10.0 {
-        format!("{v:.1}")
-    } else {
-        format!("{v:.2}")
-    }
-}
-
-/// "median (p25–p75)" of a result's main time.
-pub(super) fn cell(r: Option<&BenchResult>) -> String {
-    match r {
-        None => "–".into(),
-        Some(r) => {
-            let s = r.stats.gpu_ms.unwrap_or(r.stats.wall_ms);
-            format!("{} ({}–{})", ms(r.stats.time_ms), ms(s.p25), ms(s.p75))
-        }
-    }
-}
-
-pub(super) fn find(results: &[BenchResult], keep: impl Fn(&Point) -> bool) -> Option<&BenchResult> {
-    results.iter().find(|r| keep(&r.point))
-}
-
-pub(super) fn count(n: f64) -> String {
-    if n >= 1e6 {
-        format!("{:.2} M", n / 1e6)
-    } else if n >= 1e3 {
-        format!("{:.1} k", n / 1e3)
-    } else {
-        format!("{n:.0}")
-    }
-}
-
-/// "–" for nothing, else the ratio to two decimals.
-pub(super) fn ratio(r: Option<f64>) -> String {
-    r.map_or("–".into(), |r| format!("{r:.2}"))
-}
-
-/// "–" for nothing, else the count.
-pub(super) fn count_or_dash(n: Option<u64>) -> String {
-    n.map_or("–".into(), |n| count(n as f64))
-}
 
 /// The tables of a run, as Markdown (written to summary.md and quoted in BENCHMARKS.md).
 pub fn markdown(report: &BenchReport) -> String {
@@ -452,7 +403,7 @@ pub fn markdown(report: &BenchReport) -> String {
 mod tests {
     use super::*;
 
-    use crate::bench::{points, summarize, BenchEnv, LightKind, PointStats, SweepConfig};
+    use crate::bench::{points, summarize, BenchEnv, LightKind, Point, PointStats, SweepConfig};
 
     /// Made-up times that grow with vertices, pixels and lights, the uber-shader and GL slower;
     /// vertex and fragment mode cross in the density and the size sweep.

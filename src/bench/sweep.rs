@@ -273,11 +273,11 @@ impl SweepConfig {
         if let Some(n) = self
             .draw_counts
             .iter()
-            .find(|&&n| !(1..=super::draws::MAX_DRAW_COUNT).contains(&n))
+            .find(|&&n| !(1..=MAX_DRAW_COUNT).contains(&n))
         {
             return bad(format!(
                 "{n} draws in the draws sweep: expected 1..={}",
-                super::draws::MAX_DRAW_COUNT
+                MAX_DRAW_COUNT
             ));
         }
         if self.warmup == 0 || self.frames == 0 {
@@ -322,6 +322,9 @@ impl SweepConfig {
 /// The draw counts of the draws sweep in every sweep but the tiny ones: an emulation layer's
 /// frames, from one object to ten thousand.
 pub const DRAW_COUNTS: [u32; 5] = [1, 10, 100, 1_000, 10_000];
+
+/// The most draws a frame of the sweep may have.
+pub const MAX_DRAW_COUNT: u32 = 100_000;
 
 /// The most draws per frame a sweep may ask for.
 pub const MAX_DRAWS: u32 = 256;

@@ -1,8 +1,8 @@
 //! The tables of a bench run's summary: the environment, each sweep's table and the fitted
 //! costs, built from the results as [`Table`]s (`report.rs` puts them together).
 
+use super::format::{cell, count, count_or_dash, find, ratio};
 use super::measure::Spread;
-use super::report::{cell, count, count_or_dash, find, ratio};
 use super::sweep::{sphere_counts, BenchMode, Engine, Group, LightKind, Primitive, Variant, GL_MODES};
 use super::{BenchReport, BenchResult, DrawCost};
 use crate::table::{Align, Table};
