@@ -11,8 +11,9 @@ use indicatif::ProgressBar;
 use serde::Serialize;
 
 use super::measure::{GlAnchor, Spread};
+use super::points::CLEAR;
 pub use super::sweep::MAX_DRAW_COUNT;
-use super::sweep::{BenchMode, Engine, SweepConfig, CLEAR};
+use super::sweep::{BenchMode, Engine, SweepConfig};
 use crate::gl_reference::{time_frames_with, GlDraw, GlScene};
 use crate::Result;
 use ffvk::gl::state::{Cap, Face, GlState, LightParam, LightingState, MaterialParam};

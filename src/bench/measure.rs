@@ -6,7 +6,8 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use super::sweep::{matrices, point_state, BenchMode, Engine, Group, Point, SweepConfig, Variant, CLEAR};
+use super::points::{matrices, point_state, CLEAR};
+use super::sweep::{BenchMode, Engine, Group, Point, SweepConfig, Variant};
 use super::BenchResult;
 use crate::gl_reference::{gl_info_with, time_frames_with, GlDraw, GlOptions, GlScene};
 use crate::Result;

@@ -27,6 +27,7 @@ pub mod draws;
 mod format;
 mod measure;
 mod plots;
+mod points;
 mod report;
 mod suite;
 mod sweep;
@@ -47,11 +48,10 @@ use ffvk::renderer::{Mesh, Renderer, RendererOptions};
 
 pub use draw_cost::{measure_draw_cost, DrawCost, DRAWS};
 pub use measure::{crossover, fit_line, summarize, Costs, GlRatio, PointStats, Spread, Summary};
+pub use points::{point_state, points};
 pub use report::{csv, markdown, write_outputs, CSV_COLUMNS};
 pub use suite::{generate_scenes, jobs_markdown, run_jobs_sweep, JobsPoint, SuiteConfig, SuiteReport};
-pub use sweep::{
-    point_state, points, BenchMode, Engine, Group, LightKind, Point, SweepConfig, Variant, MAX_DRAWS,
-};
+pub use sweep::{BenchMode, Engine, Group, LightKind, Point, SweepConfig, Variant, MAX_DRAWS};
 
 use measure::{measure_ffvk, GlAnchor};
 

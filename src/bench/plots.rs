@@ -10,7 +10,8 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::format::{count, lights_text};
 use super::measure::{is, series};
-use super::sweep::{sphere_counts, BenchMode, Engine, Group, Point, Variant, GL_MODES};
+use super::points::{sphere_counts, GL_MODES};
+use super::sweep::{BenchMode, Engine, Group, Point, Variant};
 use super::{BenchReport, BenchResult};
 use crate::{Error, Result};
 

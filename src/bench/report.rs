@@ -8,7 +8,8 @@ use serde::Serialize;
 
 use super::format::{count, find, lights_text};
 use super::measure::Spread;
-use super::sweep::{sphere_counts, BenchMode, Engine, Group, Variant};
+use super::points::sphere_counts;
+use super::sweep::{BenchMode, Engine, Group, Variant};
 use super::tables::{
     costs_table, density_table, draw_cost_note, draw_cost_table, environment, fragment_table,
     light_count_table, light_kind_table, paths_table, primitives_table, size_table, COSTS_NOTE,

@@ -3,7 +3,8 @@
 
 use super::format::{cell, count, count_or_dash, find, ratio};
 use super::measure::Spread;
-use super::sweep::{sphere_counts, BenchMode, Engine, Group, LightKind, Primitive, Variant, GL_MODES};
+use super::points::{sphere_counts, GL_MODES};
+use super::sweep::{BenchMode, Engine, Group, LightKind, Primitive, Variant};
 use super::{BenchReport, BenchResult, DrawCost};
 use crate::table::{Align, Table};
 
