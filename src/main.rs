@@ -598,9 +598,13 @@ fn run(cli: Cli) -> ffvk_cli::Result<ExitCode> {
             gltf,
         } => {
             gltf.check(std::slice::from_ref(scene))?;
-            let scene = regress::load_scene(scene, *size, &limits(&cli), &gltf.options(), &mut |m| {
-                eprintln!("{m}")
-            })?;
+            let scene = ffvk::scene::open(
+                scene,
+                *size,
+                &limits(&cli),
+                &gltf.options(),
+                &mut print_note(scene),
+            )?;
             let (x, y) = *pixel;
             if x >= scene.width || y >= scene.height {
                 return Err(ffvk_cli::Error::PixelOutside {
@@ -687,9 +691,7 @@ fn render_one(
     let mut renderer_options = options(cli);
     renderer_options.specialize = ffvk::Specialize::Always;
     let mut renderer = Renderer::new(&renderer_options)?;
-    let scene = regress::load_scene(file, job.size, &job.limits, &job.direct, &mut |m| {
-        eprintln!("{m}")
-    })?;
+    let scene = ffvk::scene::open(file, job.size, &job.limits, &job.direct, &mut print_note(file))?;
     let image = ffvk::scene::render_scene_with(
         &mut renderer,
         &scene,
@@ -739,6 +741,15 @@ fn finish_results(
     let rows = results.rows();
     println!("{}", regress::summary(&rows, checked));
     Ok(ExitCode::from(results.counts().exit_code()))
+}
+
+/// Prints what opening the scene at `path` noted, as a suite's log does: a choice after the
+/// file's path, a warning as it is.
+fn print_note(path: &std::path::Path) -> impl FnMut(ffvk::scene::OpenNote) + '_ {
+    move |note| match note {
+        ffvk::scene::OpenNote::Chose { .. } => eprintln!("{}: {note}", path.display()),
+        _ => eprintln!("{note}"),
+    }
 }
 
 fn main() -> ExitCode {

@@ -29,6 +29,7 @@ use ffvk::images::compare::heat_map;
 use ffvk::images::compare::{channel_map, compare, heat_map_with_flip, load_image, Comparison, Tolerance};
 use ffvk::images::save_png;
 use ffvk::scene::direct::DirectOptions;
+use ffvk::scene::OpenNote;
 use ffvk::scene::{Limits, Scene};
 use ffvk::Renderer;
 
@@ -542,8 +543,7 @@ pub enum Message<'a> {
 impl std::fmt::Display for Message<'_> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            Message::Warning { text, times: 1 } => write!(f, "warning: {text}"),
-            Message::Warning { text, times } => write!(f, "warning: {text} (×{times})"),
+            Message::Warning { text, times } => write!(f, "{}", OpenNote::Warning { text, times: *times }),
             Message::Chose { scene, text } => write!(f, "{}: {text}", scene.display()),
             Message::Wrote { scene, image } => write!(f, "{} -> {}", scene.display(), image.display()),
             Message::Output { text } => write!(f, "{text}"),
@@ -551,8 +551,7 @@ impl std::fmt::Display for Message<'_> {
     }
 }
 
-/// Loads a scene, resized when asked: a scene file, or a `.gltf`/`.glb` file drawn as
-/// `direct` says (its choices go to `log` first); warnings go to `log`, each distinct one once.
+/// [`ffvk::scene::open`], its notes as this module's [`Message`]s.
 pub fn load_scene(
     path: &Path,
     size: Option<(u32, u32)>,
@@ -560,31 +559,11 @@ pub fn load_scene(
     direct: &DirectOptions,
     log: &mut dyn FnMut(Message),
 ) -> Result<Scene> {
-    let (mut scene, size) = if ffvk::scene::direct::is_gltf(path) {
-        let mut options = direct.clone();
-        options.size = size;
-        let made = ffvk::scene::direct::from_gltf(path, &path.to_string_lossy(), limits, &options)?;
-        for text in &made.choices {
-            log(Message::Chose { scene: path, text });
-        }
-        // The camera was made for the size.
-        (made.scene, None)
-    } else {
-        (Scene::load_with(path, limits)?, size)
-    };
-    let mut seen: Vec<(&str, usize)> = Vec::new();
-    for w in &scene.warnings {
-        match seen.iter_mut().find(|(text, _)| *text == w.as_str()) {
-            Some((_, times)) => *times += 1,
-            None => seen.push((w, 1)),
-        }
-    }
-    for (text, times) in seen {
-        log(Message::Warning { text, times });
-    }
-    if let Some((w, h)) = size {
-        scene.set_size(w, h);
-    }
+    let scene = ffvk::scene::open(path, size, limits, direct, &mut |n| match n {
+        OpenNote::Chose { text } => log(Message::Chose { scene: path, text }),
+        OpenNote::Warning { text, times } => log(Message::Warning { text, times }),
+        _ => {}
+    })?;
     Ok(scene)
 }
 

@@ -10,7 +10,10 @@ pub mod direct;
 mod file;
 pub mod gltf;
 mod meaning;
+mod open;
 mod texture;
+
+pub use open::{open, OpenNote};
 
 use std::path::{Path, PathBuf};
 
