@@ -114,16 +114,8 @@ pub fn unit_from_to(p1: DVec4, p2: DVec4) -> DVec3 {
     }
 }
 
-/// cos(c_rli), exact at 90° (where the f64 cosine is 6e-17, not 0): with the spec's
-/// `P_pliV ⊙ ŝ_dli ≥ cos(c_rli)` a 90° cone then holds every direction, and points behind the
-/// light get (0)^s_rli, which is 1 for s_rli = 0, as the formula says.
-pub fn cos_cutoff(cutoff_degrees: f32) -> f64 {
-    if cutoff_degrees == 90.0 {
-        0.0
-    } else {
-        (cutoff_degrees as f64).to_radians().cos()
-    }
-}
+/// cos(c_rli), exact at 90°: GL state's own [`cos_cutoff`](crate::gl::state::cos_cutoff).
+pub use crate::gl::state::cos_cutoff;
 
 /// Lights eye-space point `v` with eye-space normal `n` and material `m` under `state`'s
 /// enabled lights and light model.

@@ -397,12 +397,13 @@ impl Lighting {
             }
             .into());
         }
-        let record = match &draw.values {
-            Some(v) => {
-                DrawRecord::with_values(draw.state, (&v.front, &v.back, v.current_color), draw.modelview)?
-            }
-            None => DrawRecord::new(draw.state, draw.modelview)?,
+        // The draw's own values, checked for every draw; the state, below, when it changed.
+        let values = match &draw.values {
+            Some(v) => (&v.front, &v.back, v.current_color),
+            None => (&draw.state.front, &draw.state.back, draw.state.current_color),
         };
+        draw.state.check_draw(values, draw.modelview)?;
+        let record = DrawRecord::with_values(draw.state, values, draw.modelview);
         // The key is made once: to compare with the last state's, and kept when it differs.
         let in_slot = self.last.as_ref().filter(|last| last.slot == slot);
         let key = match in_slot {
@@ -415,7 +416,8 @@ impl Lighting {
             (None, _) => true,
         };
         if let (true, Some(key)) = (changed, key) {
-            let block = StateBlock::new(draw.state, draw.projection)?;
+            draw.state.check_drawable()?;
+            let block = StateBlock::new(draw.state, draw.projection);
             let block = self
                 .states
                 .push(slot, bytemuck::bytes_of(&block), self.pipelines.set_layout())?;

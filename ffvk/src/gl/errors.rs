@@ -43,6 +43,26 @@ pub enum StateError {
         /// The outer cone's half-angle (`GL_SPOT_CUTOFF`), degrees.
         outer: f32,
     },
+    /// An enabled positional light with GL's attenuation and all three attenuations 0,
+    /// drawn with lighting on: att_i = 1 / (k0 + k1 d + k2 d²) would be 1/0.
+    #[error(
+        "light {light}: GL_CONSTANT_ATTENUATION + GL_LINEAR_ATTENUATION + GL_QUADRATIC_ATTENUATION = 0: \
+         expected a sum > 0 for an enabled positional light (else att_i = 1/0)"
+    )]
+    ZeroAttenuation {
+        /// The light's index (`GL_LIGHTi`).
+        light: usize,
+    },
+    /// A draw's modelview whose upper 3×3 has no inverse, drawn with lighting on: GL's normal
+    /// matrix (M⁻¹)ᵀ would be undefined and the normals NaN.
+    #[error(
+        "determinant of the modelview's upper 3x3 = {determinant}: expected a finite non-zero value \
+         (an invertible modelview, for the normal matrix)"
+    )]
+    SingularModelview {
+        /// The determinant found.
+        determinant: f32,
+    },
     /// A light index at or past [`MAX_LIGHTS`](super::state::MAX_LIGHTS) (GL's `INVALID_ENUM` for `GL_LIGHTi`).
     #[error("light index {index} is out of range: expected 0..{max} (GL_MAX_LIGHTS = {max})")]
     LightIndex {

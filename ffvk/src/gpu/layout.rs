@@ -40,7 +40,7 @@ pub struct GpuLight {
     pub s_rli: f32,
     /// `GL_SPOT_CUTOFF` in degrees; exactly 180 means no spot cone.
     pub c_rli: f32,
-    /// cos(c_rli) from [`crate::reference::cos_cutoff`] (double precision, exactly 0 at
+    /// cos(c_rli) from [`crate::gl::state::cos_cutoff`] (double precision, exactly 0 at
     /// 90°), so the GPU tests the cone against the same threshold as the CPU reference.
     pub cos_c_rli: f32,
     /// `GL_CONSTANT_ATTENUATION`.
@@ -108,7 +108,7 @@ impl From<&Light> for GpuLight {
             s_rli: l.spot_exponent,
             c_rli: l.spot_cutoff,
             // The same cosine as the CPU reference: double precision, exactly 0 at 90°.
-            cos_c_rli: crate::reference::cos_cutoff(l.spot_cutoff) as f32,
+            cos_c_rli: crate::gl::state::cos_cutoff(l.spot_cutoff) as f32,
             k0: l.constant_attenuation,
             k1: l.linear_attenuation,
             k2: l.quadratic_attenuation,
@@ -116,7 +116,7 @@ impl From<&Light> for GpuLight {
             cos_inner: l
                 .spot_edge
                 .inner_degrees()
-                .map_or(1.0, |inner| crate::reference::cos_cutoff(inner) as f32),
+                .map_or(1.0, |inner| crate::gl::state::cos_cutoff(inner) as f32),
             falloff: falloff_code(l.attenuation),
             range: match l.attenuation {
                 Attenuation::GltfInverseSquare { range: Some(r) } => r,
@@ -443,35 +443,15 @@ pub fn rescale_factor(modelview: Mat4) -> f32 {
     1.0 / inv.row(2).length()
 }
 
-/// att_i = 1 / (k0 + k1 d + k2 d²) is infinite when all three are 0: refused for an enabled
-/// positional light with GL's attenuation (drawn with lighting on).
-fn check_attenuation_sums(lights: &[Light; MAX_LIGHTS]) -> Result<(), StateError> {
-    for l in lights
-        .iter()
-        .filter(|l| l.enabled && l.position.w != 0.0 && l.attenuation == Attenuation::GlK012)
-    {
-        let sum = l.constant_attenuation + l.linear_attenuation + l.quadratic_attenuation;
-        if sum == 0.0 {
-            return Err(StateError::OutOfRange {
-                parameter: "GL_CONSTANT_ATTENUATION + GL_LINEAR_ATTENUATION + GL_QUADRATIC_ATTENUATION",
-                value: sum,
-                valid: "> 0 for an enabled positional light (else att_i = 1/0)",
-            });
-        }
-    }
-    Ok(())
-}
-
-/// Checks `lights` and packs the enabled ones in index order; returns them and their count.
-fn pack_lights(lights: &[Light; MAX_LIGHTS]) -> Result<([GpuLight; MAX_LIGHTS], u32), StateError> {
-    crate::gl::state::validate_lights(lights)?;
+/// Packs the enabled lights in index order; returns them and their count.
+fn pack_lights(lights: &[Light; MAX_LIGHTS]) -> ([GpuLight; MAX_LIGHTS], u32) {
     let mut packed = [GpuLight::zeroed(); MAX_LIGHTS];
     let mut count = 0;
     for (slot, light) in packed.iter_mut().zip(lights.iter().filter(|l| l.enabled)) {
         *slot = GpuLight::from(light);
         count += 1;
     }
-    Ok((packed, count))
+    (packed, count)
 }
 
 /// What of a draw its [`StateBlock`] is made from: its [`LightingState`] but the materials,
@@ -507,18 +487,10 @@ impl StateBlock {
     /// Checks and packs the state part of a draw of `state` under GL's `projection` (the
     /// Vulkan clip conversion is applied here): the light model, the lights (and, lighting,
     /// that no enabled positional light has all-zero attenuation), the texture unit.
-    pub fn new(state: &LightingState, projection: Mat4) -> Result<Self, StateError> {
-        crate::gl::state::finite_vec(
-            "GL_LIGHT_MODEL_AMBIENT",
-            state.model.ambient.to_array().as_slice(),
-        )?;
-        state.texture.validate()?;
-        let (lights, light_count) = pack_lights(&state.lights)?;
-        if state.lighting {
-            check_attenuation_sums(&state.lights)?;
-        }
+    pub fn new(state: &LightingState, projection: Mat4) -> Self {
+        let (lights, light_count) = pack_lights(&state.lights);
         let cm = &state.color_material;
-        Ok(StateBlock {
+        StateBlock {
             projection: (VK_FROM_GL_CLIP * projection).to_cols_array(),
             texture_matrix: state.texture.matrix.to_cols_array(),
             a_cs: state.model.ambient.to_array(),
@@ -542,14 +514,14 @@ impl StateBlock {
             specular_model: specular_code(state.model.specular_model),
             tex_env_mode: state.texture.env_mode.code(),
             lights,
-        })
+        }
     }
 }
 
 impl DrawRecord {
     /// Checks and packs a draw's own values: the materials and current color of `state` and
     /// the `modelview` (invertible, while lighting: normals need (M⁻¹)ᵀ).
-    pub fn new(state: &LightingState, modelview: Mat4) -> Result<Self, StateError> {
+    pub fn new(state: &LightingState, modelview: Mat4) -> Self {
         Self::with_values(state, (&state.front, &state.back, state.current_color), modelview)
     }
 
@@ -559,21 +531,7 @@ impl DrawRecord {
         state: &LightingState,
         (front, back, current_color): (&Material, &Material, glam::Vec4),
         modelview: Mat4,
-    ) -> Result<Self, StateError> {
-        front.validate()?;
-        back.validate()?;
-        crate::gl::state::finite_vec("GL_CURRENT_COLOR", current_color.to_array().as_slice())?;
-        if state.lighting {
-            // A singular modelview would light with NaN normals.
-            let det = Mat3::from_mat4(modelview).determinant();
-            if det == 0.0 || !det.is_finite() {
-                return Err(StateError::OutOfRange {
-                    parameter: "determinant of the modelview's upper 3x3",
-                    value: det,
-                    valid: "a finite non-zero value (an invertible modelview, for the normal matrix)",
-                });
-            }
-        }
+    ) -> Self {
         let n = normal_matrix(modelview);
         let rescale = if state.rescale_normal {
             rescale_factor(modelview)
@@ -589,7 +547,7 @@ impl DrawRecord {
                 m.emission.to_array(),
             ]
         };
-        Ok(DrawRecord {
+        DrawRecord {
             modelview: modelview.to_cols_array(),
             normal_matrix: [
                 with_w(n.x_axis, front.shininess),
@@ -599,18 +557,20 @@ impl DrawRecord {
             front: face(front),
             back: face(back),
             current_color: current_color.to_array(),
-        })
+        }
     }
 }
 
 impl DrawBlock {
-    /// Checks and packs one draw: its [`DrawRecord`] and [`StateBlock`]. `projection` is GL's;
-    /// the Vulkan clip conversion is applied here.
+    /// Checks one draw as drawing does ([`LightingState::check_drawable`] and
+    /// [`LightingState::check_draw`]) and packs it: its [`DrawRecord`] and [`StateBlock`].
+    /// `projection` is GL's; the Vulkan clip conversion is applied here.
     pub fn new(state: &LightingState, modelview: Mat4, projection: Mat4) -> Result<Self, StateError> {
-        let record = DrawRecord::new(state, modelview)?;
+        state.check_drawable()?;
+        state.check_draw((&state.front, &state.back, state.current_color), modelview)?;
         Ok(DrawBlock {
-            state: StateBlock::new(state, projection)?,
-            record,
+            state: StateBlock::new(state, projection),
+            record: DrawRecord::new(state, modelview),
         })
     }
 }
@@ -650,7 +610,7 @@ mod tests {
         gl.material(Face::Front, MaterialParam::Shininess(5.0)).unwrap();
         gl.material(Face::Back, MaterialParam::Shininess(9.0)).unwrap();
         let mv = Mat4::from_scale(Vec3::splat(2.0));
-        let r = DrawRecord::new(&gl.lighting, mv).unwrap();
+        let r = DrawRecord::new(&gl.lighting, mv);
         assert_eq!([r.normal_matrix[0][3], r.normal_matrix[1][3]], [5.0, 9.0]);
         // (M⁻¹)ᵀ of 2I is I/2, and RESCALE_NORMAL's factor brings its normals back to length 1.
         assert_eq!(r.normal_matrix[0][0], 0.5);

@@ -582,29 +582,84 @@ impl LightingState {
     /// Checks every value against GL's ranges; for state built field by field rather than
     /// through [`GlState`]'s setters.
     pub fn validate(&self) -> Result<(), StateError> {
-        self.validate_all_but_lights()?;
-        validate_lights(&self.lights)
+        check_values((&self.front, &self.back, self.current_color))?;
+        self.validate_shared()
     }
 
-    /// [`LightingState::validate`] but for the lights, which [`validate_lights`] checks (draws
-    /// under unchanged lights skip that part).
-    pub(crate) fn validate_all_but_lights(&self) -> Result<(), StateError> {
-        self.front.validate()?;
-        self.back.validate()?;
+    /// The values of the state every draw under it shares: the light model's ambient, the
+    /// texture unit, every light's values and the cones of the enabled ones.
+    fn validate_shared(&self) -> Result<(), StateError> {
         finite_vec("GL_LIGHT_MODEL_AMBIENT", self.model.ambient.to_array().as_slice())?;
-        finite_vec("GL_CURRENT_COLOR", self.current_color.to_array().as_slice())?;
-        self.texture.validate()
+        self.texture.validate()?;
+        validate_lights(&self.lights)
     }
 
     /// The enabled lights, in index order.
     pub fn enabled_lights(&self) -> impl Iterator<Item = &Light> {
         self.lights.iter().filter(|l| l.enabled)
     }
+
+    /// What makes the state (all but the draw's own values) drawable, GL's rules and ffvk's:
+    /// the light model's ambient finite, the texture unit's values, every light's values and
+    /// the cones of the enabled ones, and, lighting, no enabled positional light with all
+    /// three attenuations 0 (att_i would be 1/0). The one definition: the renderer and the
+    /// embedding API check it whenever a draw's state differs from the last draw's, the
+    /// scene builder to name a scene's field.
+    pub fn check_drawable(&self) -> Result<(), StateError> {
+        self.validate_shared()?;
+        if self.lighting {
+            for (index, l) in self.lights.iter().enumerate() {
+                let gl_falloff = l.attenuation == Attenuation::GlK012;
+                let sum = l.constant_attenuation + l.linear_attenuation + l.quadratic_attenuation;
+                if l.enabled && l.position.w != 0.0 && gl_falloff && sum == 0.0 {
+                    return Err(StateError::ZeroAttenuation { light: index });
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// What a draw's own values must be under this state: its materials and current color
+    /// in range and finite, and, lighting, its `modelview` invertible (normals need
+    /// (M⁻¹)ᵀ). The one per-draw check.
+    pub fn check_draw(
+        &self,
+        (front, back, current_color): (&Material, &Material, Vec4),
+        modelview: glam::Mat4,
+    ) -> Result<(), StateError> {
+        check_values((front, back, current_color))?;
+        if self.lighting {
+            let det = glam::Mat3::from_mat4(modelview).determinant();
+            if det == 0.0 || !det.is_finite() {
+                return Err(StateError::SingularModelview { determinant: det });
+            }
+        }
+        Ok(())
+    }
+}
+
+/// A draw's own values in range and finite: the two materials and the current color.
+fn check_values((front, back, current_color): (&Material, &Material, Vec4)) -> Result<(), StateError> {
+    front.validate()?;
+    back.validate()?;
+    finite_vec("GL_CURRENT_COLOR", current_color.to_array().as_slice())
+}
+
+/// cos(c_rli), exact at 90° (where the f64 cosine is 6e-17, not 0): with the spec's
+/// `P_pliV ⊙ ŝ_dli ≥ cos(c_rli)` a 90° cone then holds every direction, and points behind the
+/// light get (0)^s_rli, which is 1 for s_rli = 0, as the formula says. The one definition:
+/// the CPU reference evaluates it, the GPU packer stores it.
+pub fn cos_cutoff(cutoff_degrees: f32) -> f64 {
+    if cutoff_degrees == 90.0 {
+        0.0
+    } else {
+        (cutoff_degrees as f64).to_radians().cos()
+    }
 }
 
 /// The lights' part of [`LightingState::validate`]: every light's values, and the cones of the
 /// enabled ones (a disabled light may be half set up: its cones count once it is enabled).
-pub(crate) fn validate_lights(lights: &[Light; MAX_LIGHTS]) -> Result<(), StateError> {
+fn validate_lights(lights: &[Light; MAX_LIGHTS]) -> Result<(), StateError> {
     for (index, light) in lights.iter().enumerate() {
         validate_light(light)?;
         if light.enabled {

@@ -299,7 +299,7 @@ impl Builder<'_> {
         if meshes.is_empty() {
             return Err(self.field("meshes", "no meshes: expected at least one [[meshes]] table"));
         }
-        self.check_drawable(&gl.lighting, &light_of_index, view, projection, &meshes)?;
+        self.check_drawable(&gl.lighting, &light_of_index, view, &meshes)?;
         gl.load_modelview(Mat4::IDENTITY)
             .map_err(self.state("camera.view"))?;
 
@@ -394,31 +394,24 @@ impl Builder<'_> {
         scale
     }
 
-    /// What drawing would refuse (see [`DrawBlock::new`]), found here so that the error names
-    /// the scene's field rather than surfacing at render time without it: a positional light
-    /// with all three attenuations 0, and a mesh whose modelview has no inverse (its normals
-    /// would be NaN).
-    ///
-    /// [`DrawBlock::new`]: crate::gpu::layout::DrawBlock::new
+    /// What drawing would refuse, by the GL state's own rules
+    /// ([`LightingState::check_drawable`], [`LightingState::check_draw`]), found here so that
+    /// the error names the scene's field rather than surfacing at render time without it: a
+    /// positional light with all three attenuations 0, a mesh whose modelview has no inverse
+    /// (its normals would be NaN).
     pub(super) fn check_drawable(
         &self,
         state: &LightingState,
         light_of_index: &[(usize, usize)],
         view: Mat4,
-        projection: Mat4,
         meshes: &[SceneMesh],
     ) -> Result<(), SceneError> {
-        if !state.lighting {
-            return Ok(());
-        }
-        for (index, light) in state.lights.iter().enumerate() {
-            let sum = light.constant_attenuation + light.linear_attenuation + light.quadratic_attenuation;
-            // glTF's falloff does not read k0, k1, k2.
-            let gl_falloff = light.attenuation == Attenuation::GlK012;
-            if light.enabled && light.position.w != 0.0 && gl_falloff && sum == 0.0 {
-                let field = match light_of_index.iter().find(|(gl_index, _)| *gl_index == index) {
+        match state.check_drawable() {
+            Ok(()) => {}
+            Err(StateError::ZeroAttenuation { light }) => {
+                let field = match light_of_index.iter().find(|(gl_index, _)| *gl_index == light) {
                     Some((_, i)) => format!("lights[{i}]"),
-                    None => format!("GL_LIGHT{index}"),
+                    None => format!("GL_LIGHT{light}"),
                 };
                 return Err(self.field(
                     field,
@@ -426,31 +419,31 @@ impl Builder<'_> {
                      positional light: expected a sum > 0 (GL's att_i would be 1/0)",
                 ));
             }
+            Err(e) => return Err(self.state("lights".to_owned())(e)),
         }
         for mesh in meshes {
-            let det = glam::Mat3::from_mat4(view * mesh.model).determinant();
-            if det == 0.0 || !det.is_finite() {
-                let model_det = glam::Mat3::from_mat4(mesh.model).determinant();
-                let field = if model_det == 0.0 || !model_det.is_finite() {
-                    format!("meshes (mesh {:?})", shorten(&mesh.name))
-                } else {
-                    "camera.view".to_owned()
-                };
-                return Err(self.field(
-                    field,
-                    format!(
-                        "the modelview's upper 3x3 has determinant {det} for mesh {:?}: expected an \
-                         invertible matrix (a scale of 0 flattens the mesh and leaves GL's normal \
-                         matrix undefined)",
-                        shorten(&mesh.name)
-                    ),
-                ));
+            let modelview = view * mesh.model;
+            match state.check_draw((&mesh.front, &mesh.back, state.current_color), modelview) {
+                Ok(()) => {}
+                Err(StateError::SingularModelview { determinant }) => {
+                    let model_det = glam::Mat3::from_mat4(mesh.model).determinant();
+                    let field = if model_det == 0.0 || !model_det.is_finite() {
+                        format!("meshes (mesh {:?})", shorten(&mesh.name))
+                    } else {
+                        "camera.view".to_owned()
+                    };
+                    return Err(self.field(
+                        field,
+                        format!(
+                            "the modelview's upper 3x3 has determinant {determinant} for mesh {:?}: expected \
+                             an invertible matrix (a scale of 0 flattens the mesh and leaves GL's normal \
+                             matrix undefined)",
+                            shorten(&mesh.name)
+                        ),
+                    ));
+                }
+                Err(e) => return Err(self.state(format!("meshes (mesh {:?})", shorten(&mesh.name)))(e)),
             }
-            let mut draw = *state;
-            draw.front = mesh.front;
-            draw.back = mesh.back;
-            crate::gpu::layout::DrawBlock::new(&draw, view * mesh.model, projection)
-                .map_err(self.state(format!("meshes (mesh {:?})", shorten(&mesh.name))))?;
         }
         Ok(())
     }
