@@ -23,6 +23,7 @@ mod reference;
 mod regression;
 mod render_path;
 mod report;
+mod rooms;
 mod scene;
 mod specialization;
 mod state;

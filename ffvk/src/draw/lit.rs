@@ -10,7 +10,7 @@ use super::texture::TextureBinding;
 use crate::gl::state::{LightingState, Material};
 
 #[cfg(doc)]
-use super::{lighting::Lighting, pipeline::VertexInput};
+use super::pipeline::VertexInput;
 
 /// A draw's own values, the GL state programs change between draws without touching lights or
 /// switches: the two materials (`glMaterial`, or `COLOR_MATERIAL`'s tracking) and the current
@@ -79,7 +79,7 @@ pub struct LitDraw<'a> {
     pub vertex_buffers: &'a [(vk::Buffer, u64)],
     /// Which vertices to draw.
     pub geometry: Geometry,
-    /// The texture bound to `GL_TEXTURE_2D` ([`Lighting::bind_texture`]); it is sampled when
+    /// The texture bound to `GL_TEXTURE_2D` ([`Lighting::bind_texture`](crate::Lighting::bind_texture)); it is sampled when
     /// [`TextureUnit::enabled`](crate::gl::texture::TextureUnit::enabled) is on too. `None` is
     /// GL's texture object 0, which textures nothing. Whether the texture is complete for its
     /// sampler (mipmaps where the min filter reads them) is the caller's to ensure, as GL's

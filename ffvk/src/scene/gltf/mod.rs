@@ -14,6 +14,7 @@
 //! a warning where the file uses them). Geometry that exists only compressed (Draco, meshopt)
 //! is refused with the extension's name.
 
+mod accessors;
 mod cameras;
 mod compressed;
 mod lights;
@@ -29,10 +30,10 @@ mod uris;
 mod values;
 pub mod write;
 
+pub use accessors::{AccessorPart, AccessorProblem};
 pub use cameras::{CameraProjection, PlacedCamera};
 pub use lights::{exact_light, gl_light, spot_exponent, GltfLights, LightKind, PunctualLight};
 pub use materials::{gl_material, PbrMaterial};
-pub use primitives::{AccessorPart, AccessorProblem};
 pub use textures::{SampledTexture, TextureMean, Textures};
 
 use crate::mesh::MeshData;

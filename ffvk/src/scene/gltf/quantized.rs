@@ -9,7 +9,7 @@
 
 use gltf::accessor::{DataType, Item, Iter};
 
-use super::primitives::read_checked;
+use super::accessors::read_checked;
 use super::{Context, LoadError};
 
 /// The extension's name, as `extensionsUsed` lists it.
