@@ -114,7 +114,7 @@ pub fn unit_from_to(p1: DVec4, p2: DVec4) -> DVec3 {
     }
 }
 
-/// cos(c_rli), exact at 90°: GL state's own [`cos_cutoff`](crate::gl::state::cos_cutoff).
+/// cos(c_rli), exact at 90°: the GL state's own function, re-exported.
 pub use crate::gl::state::cos_cutoff;
 
 /// Lights eye-space point `v` with eye-space normal `n` and material `m` under `state`'s

@@ -3,7 +3,7 @@
 //! ([`UnknownName`], also at `ffvk::UnknownName`). A leaf: the GL state, the texture unit and
 //! the crate's error type all use it, and it uses none of them.
 
-/// A value GL would reject. A [`GlState`] entry point that returns it changes nothing.
+/// A value GL would reject. A [`GlState`](super::state::GlState) entry point that returns it changes nothing.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum StateError {
