@@ -389,7 +389,8 @@ pub(super) fn paths_table(report: &BenchReport) -> Table {
         ("auto", Align::Left),
         ("agrees", Align::Left),
     ]);
-    let cpu = !super::is_gpu(&report.env.device_type);
+    // As DeviceInfo::is_cpu decides it for the renderer.
+    let cpu = report.env.device_type == "CPU";
     let c = &report.sweep;
     for &stacks in &c.path_stacks {
         for &size in &c.path_sizes {

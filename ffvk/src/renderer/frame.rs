@@ -196,7 +196,8 @@ pub enum FragmentPath {
 impl FragmentPath {
     /// What [`FragmentPath::Auto`] takes for a frame the deferred path can draw: `true` for
     /// deferred. `cpu`: the device is a CPU (`VK_PHYSICAL_DEVICE_TYPE_CPU`, lavapipe);
-    /// `vertices`: the vertices its draws run (each draw's mesh vertices, summed); `pixels`:
+    /// `vertices`: each draw's mesh vertex count (vertices uploaded, not index count), summed
+    /// over the draws; `pixels`:
     /// the frame's width × height; `lights`: the enabled lights.
     ///
     /// The constants come from `ffvk bench --sweep paths` on lavapipe (BENCHMARKS.md, "Which

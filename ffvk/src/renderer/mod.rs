@@ -418,7 +418,7 @@ impl Renderer {
         let lits = record::lit_draws(frame);
         // The Renderer's own errors name the draw where it matters (its meshes and textures);
         // the state's errors stay as they are.
-        let cpu = self.device.info().device_type == format!("{:?}", vk::PhysicalDeviceType::CPU);
+        let cpu = self.device.info().is_cpu();
         let eligible = deferred::eligible(frame, self.lighting.specialize(), cpu);
         self.lighting.set_gbuffer(eligible.is_some());
         let staged = self.lighting.stage_run(0, &lits).map_err(|(_, e)| e);

@@ -373,11 +373,12 @@ enum ViewProjection {
 }
 
 fn find_camera<'a>(loaded: &'a Loaded, want: &str) -> Result<&'a PlacedCamera, String> {
+    // An index first, so that a camera named "1" cannot shadow camera 1; then a name.
     let by_index = want.parse::<usize>().ok();
-    loaded
-        .cameras
-        .iter()
-        .find(|c| Some(c.index) == by_index || c.name == want)
+    let cameras = &loaded.cameras;
+    by_index
+        .and_then(|i| cameras.iter().find(|c| c.index == i))
+        .or_else(|| cameras.iter().find(|c| c.name == want))
         .ok_or_else(|| {
             let have: Vec<String> = loaded
                 .cameras

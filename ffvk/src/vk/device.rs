@@ -135,6 +135,14 @@ fn device_name(props: &vk::PhysicalDeviceProperties) -> String {
         .unwrap_or_default()
 }
 
+impl DeviceInfo {
+    /// Whether the device is a CPU (`VK_PHYSICAL_DEVICE_TYPE_CPU`: lavapipe, SwiftShader):
+    /// what [`FragmentPath::Auto`](crate::FragmentPath::Auto)'s rule asks.
+    pub fn is_cpu(&self) -> bool {
+        self.device_type == format!("{:?}", vk::PhysicalDeviceType::CPU)
+    }
+}
+
 impl Device {
     /// Opens the device whose name contains `requested` (case-insensitive), or lavapipe
     /// ("llvmpipe") by default, or else the first device.

@@ -226,6 +226,18 @@ impl DeviceAllocator {
         usage: MemoryUse,
     ) -> Result<Placed> {
         check_size(limits, what, requirements)?;
+        // gpu-allocator picks among the types the requirements allow: those no ffvk resource
+        // may use are taken out of them first.
+        let requirements = &vk::MemoryRequirements {
+            memory_type_bits: usable_types(limits.memory, requirements.memory_type_bits),
+            ..*requirements
+        };
+        if requirements.memory_type_bits == 0 {
+            return Err(Error::MissingFeature(format!(
+                "a memory type for the {what} that is not protected, lazily allocated or AMD \
+                 device-coherent"
+            )));
+        }
         let dedicated = requirements.size >= DEDICATED_BYTES;
         let name = format!("ffvk: {what}");
         let desc = AllocationCreateDesc {
@@ -322,6 +334,25 @@ impl Books {
     }
 }
 
+/// Flags of memory types no ffvk resource may use: protected memory, lazily allocated
+/// (transient attachments only) and AMD's device-coherent or uncached types (slow, meant for
+/// debugging, and needing a feature ffvk does not enable).
+const NEVER: vk::MemoryPropertyFlags = vk::MemoryPropertyFlags::from_raw(
+    vk::MemoryPropertyFlags::PROTECTED.as_raw()
+        | vk::MemoryPropertyFlags::LAZILY_ALLOCATED.as_raw()
+        | vk::MemoryPropertyFlags::DEVICE_COHERENT_AMD.as_raw()
+        | vk::MemoryPropertyFlags::DEVICE_UNCACHED_AMD.as_raw(),
+);
+
+/// `type_bits` without the memory types of [`NEVER`]'s flags.
+fn usable_types(memory: &vk::PhysicalDeviceMemoryProperties, type_bits: u32) -> u32 {
+    let count = memory.memory_type_count.min(vk::MAX_MEMORY_TYPES as u32);
+    (0..count)
+        .filter(|&i| !memory.memory_types[i as usize].property_flags.intersects(NEVER))
+        .fold(0, |bits, i| bits | (1 << i))
+        & type_bits
+}
+
 /// Refuses a size no heap the resource may use can hold, or past `maxMemoryAllocationSize`,
 /// before asking: the error names the resource and the limit.
 fn check_size(limits: &Limits, what: &'static str, requirements: &vk::MemoryRequirements) -> Result<()> {
@@ -361,6 +392,29 @@ mod tests {
         assert!(MemoryUse::ALL
             .iter()
             .all(|u| u.mapped() == (*u != MemoryUse::Gpu)));
+    }
+
+    #[test]
+    fn protected_lazy_and_amd_device_coherent_types_are_never_offered_to_gpu_allocator() {
+        type F = vk::MemoryPropertyFlags;
+        let mut memory = vk::PhysicalDeviceMemoryProperties {
+            memory_type_count: 5,
+            ..Default::default()
+        };
+        for (i, flags) in [
+            F::DEVICE_LOCAL | F::PROTECTED,
+            F::DEVICE_LOCAL | F::LAZILY_ALLOCATED,
+            F::DEVICE_LOCAL | F::HOST_VISIBLE | F::HOST_COHERENT | F::DEVICE_COHERENT_AMD,
+            F::HOST_VISIBLE | F::HOST_COHERENT | F::DEVICE_UNCACHED_AMD,
+            F::DEVICE_LOCAL,
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            memory.memory_types[i].property_flags = flags;
+        }
+        assert_eq!(usable_types(&memory, !0), 1 << 4);
+        assert_eq!(usable_types(&memory, 0b01111), 0);
     }
 
     #[test]

@@ -486,4 +486,27 @@ mod tests {
             );
         }
     }
+
+    #[test]
+    fn fallback_buffers_are_bounded_together_as_one_file_would_be() {
+        // Two fallback buffers of 600 MB each, declared in a few bytes of JSON: no file backs
+        // them, so their sum is what is refused.
+        let path = scratch_dir("meshopt").join("huge_fallbacks.gltf");
+        let buffer = r#"{ "byteLength": 600000000, "extensions": { "EXT_meshopt_compression": { "fallback": true } } }"#;
+        std::fs::write(
+            &path,
+            format!(
+                r#"{{ "asset": {{ "version": "2.0" }}, "extensionsUsed": ["EXT_meshopt_compression"],
+                     "buffers": [ {buffer}, {buffer} ] }}"#
+            ),
+        )
+        .unwrap();
+        let text = message(load(&path).unwrap_err());
+        assert!(
+            text.contains("buffer 1")
+                && text.contains("1200000000 bytes in all")
+                && text.contains("together"),
+            "{text}"
+        );
+    }
 }

@@ -263,6 +263,7 @@ pub(super) fn read_buffers(
 ) -> Result<Vec<gltf::buffer::Data>, LoadError> {
     let base = cx.path.parent().unwrap_or(Path::new(""));
     let mut buffers = Vec::new();
+    let mut fallback_bytes = 0u64;
     for buffer in document.buffers() {
         let index = buffer.index();
         let message = |message: String| LoadErrorKind::Buffer {
@@ -270,11 +271,14 @@ pub(super) fn read_buffers(
             message,
         };
         if let Some(len) = super::meshopt::fallback_len(cx, index) {
-            // Zeros, which the compressed views are decoded into (meshopt::decode).
+            // Zeros, which the compressed views are decoded into (meshopt::decode); no file
+            // bounds them, so all of a file's together are bounded as one file would be.
             let len = usize::try_from(len).unwrap_or(usize::MAX);
-            if len as u64 > super::MAX_FILE_BYTES {
+            fallback_bytes = fallback_bytes.saturating_add(len as u64);
+            if fallback_bytes > super::MAX_FILE_BYTES {
                 return Err(cx.error(message(format!(
-                    "a meshopt fallback buffer of {len} bytes: expected at most {}",
+                    "meshopt fallback buffers of {fallback_bytes} bytes in all (this one {len}): expected \
+                     at most {} together",
                     super::MAX_FILE_BYTES
                 ))));
             }
