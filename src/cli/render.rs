@@ -129,6 +129,9 @@ pub(crate) fn run(global: &Global, args: &RenderArgs) -> ffvk_cli::Result<ExitCo
         }
     }
     let results_asked = check.is_some() || junit.is_some() || json.is_some() || partition.is_some();
+    if out.is_none() {
+        regress::refuse_overwriting_inputs(&job, &files)?;
+    }
     if files.len() == 1 && lighting.len() <= 1 && !results_asked && !scenes[0].is_dir() {
         return render_one(global, &files[0].path, out.as_ref(), &job);
     }

@@ -400,6 +400,46 @@ pub fn image_paths(job: &Job, files: &[SceneFile]) -> Vec<PathBuf> {
         .collect()
 }
 
+/// Refuses a run that would write an image over a file its own scene reads: without `--out`
+/// an image lands beside its scene or glTF file as `NAME.png`, which may be the texture the
+/// file names (a model `lamp.gltf` with a texture `lamp.png`). Found by the file's name,
+/// quoted, in the scene's text (a glTF file's JSON, a GLB's JSON chunk, a scene file); only
+/// where that PNG already exists.
+pub fn refuse_overwriting_inputs(job: &Job, files: &[SceneFile]) -> Result<()> {
+    if job.out_dir.is_some() {
+        return Ok(());
+    }
+    let modes = requested_modes(job);
+    for file in files {
+        for &mode in &modes {
+            let image = image_path(job, file, &image_name(file, mode, modes.len()));
+            if !image.is_file() {
+                continue;
+            }
+            let Some(name) = image.file_name().map(|n| n.to_string_lossy().into_owned()) else {
+                continue;
+            };
+            // The JSON and TOML ffvk reads are at the file's start (a GLB's JSON chunk
+            // first); 64 MiB of it is more than any real document.
+            let mut text = Vec::new();
+            let read = std::fs::File::open(&file.path)
+                .and_then(|f| std::io::Read::read_to_end(&mut std::io::Read::take(f, 64 << 20), &mut text));
+            if read.is_err() {
+                continue; // the scene's own read reports it
+            }
+            let quoted = format!("\"{name}\"");
+            if text.windows(quoted.len()).any(|w| w == quoted.as_bytes()) {
+                return Err(Error::Path {
+                    path: image,
+                    problem: "is a file the scene reads (its name is in the scene's text), where the image would \
+                              land without --out: expected --out DIR (or -o FILE.png) to write the image elsewhere",
+                });
+            }
+        }
+    }
+    Ok(())
+}
+
 /// Where the image named `name` of `file` goes: `--out`'s folder and the name, or beside the
 /// scene file under its stem.
 fn image_path(job: &Job, file: &SceneFile, name: &str) -> PathBuf {

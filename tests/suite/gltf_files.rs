@@ -647,3 +647,33 @@ fn the_framing_camera_turns_rises_and_zooms_as_asked_and_the_background_is_the_c
         "{err}"
     );
 }
+
+#[test]
+fn an_image_never_lands_on_a_texture_its_model_reads() {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/output/gltf_own_texture");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    // A model whose JSON names an image `vc.png` beside it: where `ffvk render vc.gltf` would
+    // write its image without -o.
+    let text = std::fs::read_to_string(assets().join("vertex_colors.gltf")).unwrap();
+    let text = text.replacen('{', r#"{ "images": [ { "uri": "vc.png" } ], "#, 1);
+    let model = dir.join("vc.gltf");
+    std::fs::write(&model, text).unwrap();
+    let texture = dir.join("vc.png");
+    std::fs::write(&texture, b"the model's texture").unwrap();
+    for args in [vec![], vec!["--lighting", "vertex"]] {
+        let mut all: Vec<&dyn AsRef<std::ffi::OsStr>> = vec![&"render", &model];
+        all.extend(args.iter().map(|a| a as &dyn AsRef<std::ffi::OsStr>));
+        let (code, _, err) = run(&all);
+        assert_eq!(code, 2, "{err}");
+        assert!(
+            err.contains("vc.png") && err.contains("is a file the scene reads"),
+            "{err}"
+        );
+        assert_eq!(std::fs::read(&texture).unwrap(), b"the model's texture");
+    }
+    // Elsewhere, it is drawn.
+    let (code, _, err) = run(&[&"render", &model, &"-o", &dir.join("drawn.png")]);
+    assert_eq!(code, 0, "{err}");
+    assert!(dir.join("drawn.png").is_file());
+}
