@@ -6,14 +6,14 @@ use std::path::{Path, PathBuf};
 
 use serde::Serialize;
 
-use super::format::{count, find, lights_text};
+use super::format::{count, lights_text};
 use super::measure::Spread;
 use super::points::sphere_counts;
 use super::sweep::{BenchMode, Engine, Group, Variant};
 use super::tables::{
-    costs_table, density_table, draw_cost_note, draw_cost_table, environment, fragment_table,
-    light_count_table, light_kind_table, paths_table, primitives_table, size_table, COSTS_NOTE,
-    FRAGMENT_NOTE, FRAGMENT_PATHS, PATHS_NOTE,
+    costs_table, density_table, draw_cost_note, draw_cost_table, environment, equation_runs, fragment_point,
+    fragment_table, light_count_table, light_kind_table, paths_table, primitives_table, size_table,
+    COSTS_NOTE, FRAGMENT_NOTE, FRAGMENT_PATHS, PATHS_NOTE,
 };
 use super::{BenchReport, BenchResult};
 use crate::{write_file, Error, Result};
@@ -360,15 +360,7 @@ pub fn markdown(report: &BenchReport) -> String {
         );
     }
     for &size in &report.sweep.fragment_sizes {
-        let at = |mode, variant| {
-            find(&report.results, |p| {
-                p.group == Group::Fragment
-                    && p.width == size
-                    && p.engine == Engine::Ffvk
-                    && p.mode == mode
-                    && p.variant == variant
-            })
-        };
+        let at = |mode, variant| fragment_point(report, size, mode, variant);
         let time = |r: Option<&BenchResult>| r.map(|r| r.stats.time_ms);
         let (v, u) = (
             time(at(BenchMode::Vertex, Variant::Specialized)),
@@ -376,10 +368,7 @@ pub fn markdown(report: &BenchReport) -> String {
         );
         for (path, variant) in FRAGMENT_PATHS {
             let fragment = at(BenchMode::Fragment, variant);
-            let runs = fragment.and_then(|r| match variant {
-                Variant::Deferred | Variant::DeferredUber => r.stats.evaluations,
-                _ => r.stats.fs_invocations,
-            });
+            let runs = fragment.and_then(|r| equation_runs(r).0);
             let per_pixel = runs
                 .zip(fragment.and_then(|r| r.stats.covered_pixels))
                 .filter(|&(_, covered)| covered > 0)

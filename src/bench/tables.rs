@@ -308,6 +308,31 @@ pub(super) const FRAGMENT_PATHS: [(&str, Variant); 3] = [
     ("deferred, uber-shader", Variant::DeferredUber),
 ];
 
+/// The fragment sweep's ffvk result at image side `size` in `mode` drawn by `variant`.
+pub(super) fn fragment_point(
+    report: &BenchReport,
+    size: u32,
+    mode: BenchMode,
+    variant: Variant,
+) -> Option<&BenchResult> {
+    find(&report.results, |p| {
+        p.group == Group::Fragment
+            && p.width == size
+            && p.engine == Engine::Ffvk
+            && p.mode == mode
+            && p.variant == variant
+    })
+}
+
+/// How many times a fragment point evaluated the equation, and who counted: the deferred
+/// paths' lighting pass itself, or the forward path's fragment-stage statistics.
+pub(super) fn equation_runs(r: &BenchResult) -> (Option<u64>, &'static str) {
+    match r.point.variant {
+        Variant::Deferred | Variant::DeferredUber => (r.stats.evaluations, "the lighting pass's own count"),
+        _ => (r.stats.fs_invocations, "pipeline statistics"),
+    }
+}
+
 /// Fragment lighting on the dense mesh: the three modes' times, the ratios issue 37 sets goals
 /// for, and the fragment stage's invocations per covered pixel.
 pub(super) fn fragment_table(report: &BenchReport) -> Table {
@@ -324,15 +349,7 @@ pub(super) fn fragment_table(report: &BenchReport) -> Table {
         ("counted by", Align::Left),
     ]);
     for &size in &report.sweep.fragment_sizes {
-        let at = |mode, variant| {
-            find(&report.results, |p| {
-                p.group == Group::Fragment
-                    && p.width == size
-                    && p.engine == Engine::Ffvk
-                    && p.mode == mode
-                    && p.variant == variant
-            })
-        };
+        let at = |mode, variant| fragment_point(report, size, mode, variant);
         let (vertex, unlit) = (
             at(BenchMode::Vertex, Variant::Specialized),
             at(BenchMode::Unlit, Variant::Specialized),
@@ -344,12 +361,7 @@ pub(super) fn fragment_table(report: &BenchReport) -> Table {
                 continue;
             };
             let covered = fragment.stats.covered_pixels;
-            let (runs, counted_by) = match variant {
-                Variant::Deferred | Variant::DeferredUber => {
-                    (fragment.stats.evaluations, "the lighting pass's own count")
-                }
-                _ => (fragment.stats.fs_invocations, "pipeline statistics"),
-            };
+            let (runs, counted_by) = equation_runs(fragment);
             t.row([
                 format!("{size}²"),
                 path.to_string(),

@@ -139,7 +139,8 @@ impl DeviceInfo {
     /// Whether the device is a CPU (`VK_PHYSICAL_DEVICE_TYPE_CPU`: lavapipe, SwiftShader):
     /// what [`FragmentPath::Auto`](crate::FragmentPath::Auto)'s rule asks.
     pub fn is_cpu(&self) -> bool {
-        self.device_type == format!("{:?}", vk::PhysicalDeviceType::CPU)
+        // `device_type` is ash's Debug spelling of the type (see `describe`).
+        self.device_type == "CPU"
     }
 }
 
@@ -600,4 +601,16 @@ pub(crate) fn version_string(v: u32) -> String {
         vk::api_version_minor(v),
         vk::api_version_patch(v)
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use ash::vk;
+
+    /// `DeviceInfo::is_cpu` compares with the text `describe` writes: ash's Debug spelling.
+    #[test]
+    fn the_cpu_device_type_is_spelled_as_is_cpu_expects() {
+        assert_eq!(format!("{:?}", vk::PhysicalDeviceType::CPU), "CPU");
+        assert_ne!(format!("{:?}", vk::PhysicalDeviceType::DISCRETE_GPU), "CPU");
+    }
 }
