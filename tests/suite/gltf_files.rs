@@ -406,6 +406,27 @@ fn gltf_lights_exact_draws_gltfs_own_falloff_and_cone_and_gl_stays_the_default()
     assert!(a != b);
 }
 
+/// `twin` drawn in every mode is within the default tolerance of `plain`; the images are
+/// saved as `gltf_NAME_MODE`.
+fn draws_within_the_default_tolerance(twin: &Scene, plain: &Scene, name: &str) {
+    use ffvk::images::compare::{compare, Tolerance};
+    let mut r = renderer();
+    for mode in LightingMode::ALL {
+        let a = render_scene(&mut r, twin, Some(mode)).unwrap();
+        let b = render_scene(&mut r, plain, Some(mode)).unwrap();
+        let c = compare(&b, &a, &Tolerance::default()).unwrap();
+        let path = save_for_inspection(&a, &format!("gltf_{name}_{}", mode.name()));
+        assert!(
+            c.passes(&Tolerance::default()),
+            "{} ({}): {}",
+            mode.name(),
+            path.display(),
+            c.summary()
+        );
+    }
+    finish(r);
+}
+
 /// KHR_mesh_quantization (`assets/gltf/quantized.gltf`, from scripts/make_gltf_samples.py):
 /// UNSIGNED_SHORT positions under a dequantizing node, normalized BYTE normals, normalized
 /// UNSIGNED_SHORT texture coordinates, and a box of normalized SHORT positions and normals with
@@ -413,7 +434,6 @@ fn gltf_lights_exact_draws_gltfs_own_falloff_and_cone_and_gl_stays_the_default()
 /// floats, in every mode; their vertices agree within the quantization step.
 #[test]
 fn a_quantized_model_draws_within_the_default_tolerance_of_its_plain_version() {
-    use ffvk::images::compare::{compare, Tolerance};
     let options = DirectOptions::default().with_size(Some((256, 256)));
     let quantized = direct("quantized.gltf", options.clone());
     let plain = direct("quantized_plain.gltf", options);
@@ -438,21 +458,7 @@ fn a_quantized_model_draws_within_the_default_tolerance_of_its_plain_version() {
             assert!(ta.distance(tb) < 1e-4, "{}: texcoord {ta} against {tb}", q.name);
         }
     }
-    let mut r = renderer();
-    for mode in LightingMode::ALL {
-        let a = render_scene(&mut r, &quantized, Some(mode)).unwrap();
-        let b = render_scene(&mut r, &plain, Some(mode)).unwrap();
-        let c = compare(&b, &a, &Tolerance::default()).unwrap();
-        let path = save_for_inspection(&a, &format!("gltf_quantized_{}", mode.name()));
-        assert!(
-            c.passes(&Tolerance::default()),
-            "{} ({}): {}",
-            mode.name(),
-            path.display(),
-            c.summary()
-        );
-    }
-    finish(r);
+    draws_within_the_default_tolerance(&quantized, &plain, "quantized");
 }
 
 /// EXT_meshopt_compression (`assets/gltf/meshopt.glb`, from examples/make_meshopt_sample.rs):
@@ -462,7 +468,6 @@ fn a_quantized_model_draws_within_the_default_tolerance_of_its_plain_version() {
 /// normals within the filters' precision.
 #[test]
 fn a_meshopt_compressed_model_draws_within_the_default_tolerance_of_its_plain_version() {
-    use ffvk::images::compare::{compare, Tolerance};
     let options = DirectOptions::default().with_size(Some((256, 256)));
     let quantized = direct("meshopt.glb", options.clone());
     let plain = direct("quantized_plain.gltf", options);
@@ -488,21 +493,7 @@ fn a_meshopt_compressed_model_draws_within_the_default_tolerance_of_its_plain_ve
             assert_eq!(ta, tb, "{}: texcoord", q.name);
         }
     }
-    let mut r = renderer();
-    for mode in LightingMode::ALL {
-        let a = render_scene(&mut r, &quantized, Some(mode)).unwrap();
-        let b = render_scene(&mut r, &plain, Some(mode)).unwrap();
-        let c = compare(&b, &a, &Tolerance::default()).unwrap();
-        let path = save_for_inspection(&a, &format!("gltf_meshopt_{}", mode.name()));
-        assert!(
-            c.passes(&Tolerance::default()),
-            "{} ({}): {}",
-            mode.name(),
-            path.display(),
-            c.summary()
-        );
-    }
-    finish(r);
+    draws_within_the_default_tolerance(&quantized, &plain, "meshopt");
 }
 
 #[test]
