@@ -251,6 +251,16 @@
 #define FFVK_FEATURE_LARGE_POINTS 8
 
 /*
+ The most `frames_in_flight` a renderer takes (`ffvk::MAX_FRAMES_IN_FLIGHT`).
+ */
+#define FFVK_MAX_FRAMES_IN_FLIGHT 64
+
+/*
+ The most vertex `bindings` a renderer takes (`ffvk::MAX_VERTEX_BINDINGS`).
+ */
+#define FFVK_MAX_VERTEX_BINDINGS 32
+
+/*
  What an `FfvkResult`-returning entry point reports. Every code but `FFVK_SUCCESS` comes
  with a message, `ffvkResultMessage()`, naming what failed and what was expected.
  */
@@ -344,7 +354,9 @@ typedef struct FfvkMeshArrays {
 /*
  Where one vertex attribute lives: a binding of the create info's `bindings`, the byte
  offset within one element, the format (any the shaders read as floats, e.g.
- `VK_FORMAT_R32G32B32_SFLOAT`, `VK_FORMAT_R8G8B8A8_UNORM`).
+ `VK_FORMAT_R32G32B32_SFLOAT`, `VK_FORMAT_R8G8B8A8_UNORM`, that the device reads from
+ vertex buffers). The attribute lies within one element: offset + the format's size <= the
+ binding's stride.
  */
 typedef struct FfvkAttribute {
   /*
@@ -397,15 +409,20 @@ typedef struct FfvkRendererCreateInfo {
    */
   uint32_t enabled_features;
   /*
-   The color attachment's format.
+   The color attachment's format: an uncompressed core format the shaders write as floats
+   (UNORM, SNORM, SRGB or FLOAT; not UNDEFINED, a depth or an integer format) that the
+   device supports as `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`.
    */
   VkFormat color_format;
   /*
-   The depth attachment's format, or `VK_FORMAT_UNDEFINED` for none.
+   The depth attachment's format, or `VK_FORMAT_UNDEFINED` for none: one of the six `D*`
+   formats, supported by the device as `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`.
    */
   VkFormat depth_format;
   /*
-   Samples per pixel of both attachments (`VK_SAMPLE_COUNT_1_BIT` …).
+   Samples per pixel of both attachments: one `VK_SAMPLE_COUNT_*_BIT`, among the device's
+   `framebufferColorSampleCounts` (and `framebufferDepthSampleCounts` with a depth format,
+   `framebufferStencilSampleCounts` with a stencil one).
    */
   VkSampleCountFlagBits samples;
   /*
@@ -414,7 +431,7 @@ typedef struct FfvkRendererCreateInfo {
    */
   const VkVertexInputBindingDescription *bindings;
   /*
-   How many `bindings`.
+   How many `bindings`, at most `FFVK_MAX_VERTEX_BINDINGS`.
    */
   uint32_t binding_count;
   /*
@@ -435,8 +452,8 @@ typedef struct FfvkRendererCreateInfo {
    */
   const struct FfvkAttribute *texcoord;
   /*
-   Frame slots, at least 1: how many frames the caller records before it waits for the
-   oldest.
+   Frame slots, 1 to `FFVK_MAX_FRAMES_IN_FLIGHT`: how many frames the caller records
+   before it waits for the oldest.
    */
   uint32_t frames_in_flight;
   /*
@@ -453,7 +470,11 @@ typedef struct FfvkRendererCreateInfo {
  A draw's fixed-function raster state (GL's glCullFace/glFrontFace, depth and blend state,
  glPointSize, glLineWidth) in Vulkan's terms. `ffvkRasterDefaults` fills GL's initial
  values; a zeroed struct is not GL's defaults (depth writes off, depth compare NEVER, sizes
- 0, which draws refuse).
+ 0, which draws refuse). `ffvkDraw` refuses (`FFVK_ERROR_INVALID_ARGUMENT`, naming the field
+ and value) any other value than these: `cull_mode` bits of `VK_CULL_MODE_FRONT_AND_BACK`,
+ `front_face` 0 or 1, `depth_compare` `VK_COMPARE_OP_NEVER` .. `ALWAYS` (0 .. 7), and while
+ blending, factors `VK_BLEND_FACTOR_ZERO` .. `SRC_ALPHA_SATURATE` (0 .. 14; no dual-source
+ factors) and equations `VK_BLEND_OP_ADD` .. `MAX` (0 .. 4).
  */
 typedef struct FfvkRaster {
   /*
@@ -950,13 +971,17 @@ void ffvkDestroyMesh(struct FfvkMesh *mesh);
  `GL_LINE_LOOP` becomes `GL_LINES`; the other modes are copied unchanged. `vertices` are
  the `count` vertex numbers GL would read (`first + i` for glDrawArrays, the index array for
  glDrawElements). Writes at most `capacity` indices to `out` (null to ask the size) and the
- needed count to `*written`, and the mode to draw them with to `*draw_mode`. Errors:
- `FFVK_ERROR_INVALID_ARGUMENT` for an unknown mode, a null `vertices` (with a count), a null
- `written` or `draw_mode`, or a `capacity` below the count (nothing written to `out` then).
+ needed count to `*written`, and the mode to draw them with to `*draw_mode`. A size query
+ (null `out`) reads nothing from `vertices`; nothing is allocated, whatever the count.
+ Errors: `FFVK_ERROR_INVALID_ARGUMENT` for an unknown mode, a null `vertices` (with a
+ count), a null `written` or `draw_mode`, a count whose indices would number more than a
+ `uint32_t` holds (e.g. `GL_POLYGON` of more than 1431655767 vertices; nothing written
+ then), or a `capacity` below the needed count (nothing written to `out` then).
 
  # Safety
 
- `vertices` points at `count` values; `out` is null or has room for `capacity`.
+ `vertices` points at `count` values (unless `out` is null); `out` is null or has room for
+ `capacity`.
  */
 enum FfvkResult ffvkPrimitiveIndices(uint32_t mode,
                                      const uint32_t *vertices,
@@ -1078,13 +1103,17 @@ void ffvkGetIntegerv(struct FfvkContext *ctx, uint32_t pname, int32_t *params);
 void ffvkGetBooleanv(struct FfvkContext *ctx, uint32_t pname, uint8_t *params);
 
 /*
- Makes a renderer on the caller's device: checks the device (Vulkan 1.3, dynamic rendering,
- the features `enabled_features` claims) and the vertex layout, and makes the pipeline
+ Makes a renderer on the caller's device: checks every value of `info` before Vulkan is
+ touched, then the device (Vulkan 1.3, dynamic rendering, the features `enabled_features`
+ claims, the formats' features and sample counts, vertex limits), and makes the pipeline
  layout; pipelines are made on the first draw that needs each (about 15 ms on lavapipe).
  Returns `FFVK_SUCCESS` with `*renderer` set, or an error code with `*renderer` null:
- `FFVK_ERROR_INVALID_ARGUMENT` (a null pointer or handle, a wrong `struct_size`, 0 frames,
- unknown feature bits, a bad vertex layout), `FFVK_ERROR_MISSING_FEATURE`,
- `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN`. Records nothing.
+ `FFVK_ERROR_INVALID_ARGUMENT` (a null pointer or handle, a wrong `struct_size`, 0 or more
+ than `FFVK_MAX_FRAMES_IN_FLIGHT` frames, more than `FFVK_MAX_VERTEX_BINDINGS` bindings,
+ unknown feature bits, a format, sample count or vertex layout that is invalid or that the
+ device does not support; the message names the field, its value and what was expected),
+ `FFVK_ERROR_MISSING_FEATURE`, `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN`. Records
+ nothing.
 
  # Safety
 
@@ -1133,25 +1162,16 @@ enum FfvkResult ffvkBeginFrame(struct FfvkRenderer *renderer, uint32_t slot);
 enum FfvkResult ffvkBeginDraws(struct FfvkRenderer *renderer, VkCommandBuffer cmd, uint32_t slot);
 
 /*
- Fills `raster` with GL's initial raster state: no culling, `GL_CCW` front faces, depth
- test off with writes on and `GL_LESS`, blending off (factors ONE, ZERO, ADD), point size
- and line width 1.
-
- # Safety
-
- `raster` is null (ignored) or writable.
- */
-void ffvkRasterDefaults(struct FfvkRaster *raster);
-
-/*
  Adds a draw to the open scope: the context's state now (lights, materials, switches, its
  modelview and projection) is captured, so the caller may change the context right after.
  The draw is checked and its state written into the slot's memory now (its pipeline is made
  now if it is new: about 15 ms on lavapipe); `ffvkEndDraws` records it. A refused draw is
  not added and the scope stays open with the draws before it. Errors:
  `FFVK_ERROR_INVALID_ARGUMENT` (no open scope, a null pointer, a wrong `struct_size`, a mode
- ffvk does not draw directly, a buffer count other than the layout's bindings, a point size
- or line width out of the device's range, a textured draw without texture coordinates),
+ ffvk does not draw directly, a buffer count other than the layout's bindings, a raster
+ enum that is not one ffvk passes to Vulkan (see `FfvkRaster`), blending into a color
+ format the device cannot blend, a point size or line width out of the device's range, a
+ textured draw without texture coordinates),
  `FFVK_ERROR_STATE` (the context's state cannot be drawn: a soft spot cone wider than its
  cutoff, a modelview that cannot be inverted while lighting), `FFVK_ERROR_MISSING_FEATURE`
  (`GL_FLAT`, a point size or a line width the create info's `enabled_features` did not
@@ -1209,6 +1229,17 @@ enum FfvkResult ffvkCreateTexture(struct FfvkRenderer *renderer,
  `texture` is null or from `ffvkCreateTexture`, not yet destroyed.
  */
 void ffvkDestroyTexture(struct FfvkTexture *texture);
+
+/*
+ Fills `raster` with GL's initial raster state: no culling, `GL_CCW` front faces, depth
+ test off with writes on and `GL_LESS`, blending off (factors ONE, ZERO, ADD), point size
+ and line width 1.
+
+ # Safety
+
+ `raster` is null (ignored) or writable.
+ */
+void ffvkRasterDefaults(struct FfvkRaster *raster);
 
 /*
  The message of the last call on this thread that returned an error code (or set a GL error

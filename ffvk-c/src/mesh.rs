@@ -117,13 +117,17 @@ pub unsafe extern "C" fn ffvkDestroyMesh(mesh: *mut FfvkMesh) {
 /// `GL_LINE_LOOP` becomes `GL_LINES`; the other modes are copied unchanged. `vertices` are
 /// the `count` vertex numbers GL would read (`first + i` for glDrawArrays, the index array for
 /// glDrawElements). Writes at most `capacity` indices to `out` (null to ask the size) and the
-/// needed count to `*written`, and the mode to draw them with to `*draw_mode`. Errors:
-/// `FFVK_ERROR_INVALID_ARGUMENT` for an unknown mode, a null `vertices` (with a count), a null
-/// `written` or `draw_mode`, or a `capacity` below the count (nothing written to `out` then).
+/// needed count to `*written`, and the mode to draw them with to `*draw_mode`. A size query
+/// (null `out`) reads nothing from `vertices`; nothing is allocated, whatever the count.
+/// Errors: `FFVK_ERROR_INVALID_ARGUMENT` for an unknown mode, a null `vertices` (with a
+/// count), a null `written` or `draw_mode`, a count whose indices would number more than a
+/// `uint32_t` holds (e.g. `GL_POLYGON` of more than 1431655767 vertices; nothing written
+/// then), or a `capacity` below the needed count (nothing written to `out` then).
 ///
 /// # Safety
 ///
-/// `vertices` points at `count` values; `out` is null or has room for `capacity`.
+/// `vertices` points at `count` values (unless `out` is null); `out` is null or has room for
+/// `capacity`.
 #[no_mangle]
 pub unsafe extern "C" fn ffvkPrimitiveIndices(
     mode: u32,
@@ -148,20 +152,14 @@ pub unsafe extern "C" fn ffvkPrimitiveIndices(
         if let Err(code) = checked {
             return code;
         }
-        let input: &[u32] = if count == 0 {
-            &[]
-        } else {
-            // SAFETY: the caller's contract: count values at vertices.
-            unsafe { std::slice::from_raw_parts(vertices, count as usize) }
-        };
-        let (indices, as_mode) = match mode {
-            GL_QUADS => (gl_primitives::quads(input), GL_TRIANGLES),
-            GL_QUAD_STRIP => (gl_primitives::quad_strip(input), GL_TRIANGLES),
-            GL_POLYGON => (gl_primitives::polygon(input), GL_TRIANGLES),
-            GL_LINE_LOOP => (gl_primitives::line_loop(input), GL_LINES),
-            GL_POINTS | GL_LINES | GL_LINE_STRIP | GL_TRIANGLES | GL_TRIANGLE_STRIP | GL_TRIANGLE_FAN => {
-                (input.to_vec(), mode)
-            }
+        // The size first, from the count alone: nothing is read or allocated for a query.
+        let n = u64::from(count);
+        let (needed, as_mode) = match mode {
+            GL_QUADS => (gl_primitives::quads_count(n), GL_TRIANGLES),
+            GL_QUAD_STRIP => (gl_primitives::quad_strip_count(n), GL_TRIANGLES),
+            GL_POLYGON => (gl_primitives::polygon_count(n), GL_TRIANGLES),
+            GL_LINE_LOOP => (gl_primitives::line_loop_count(n), GL_LINES),
+            GL_POINTS | GL_LINES | GL_LINE_STRIP | GL_TRIANGLES | GL_TRIANGLE_STRIP | GL_TRIANGLE_FAN => (n, mode),
             other => {
                 return fail(
                     FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
@@ -169,25 +167,59 @@ pub unsafe extern "C" fn ffvkPrimitiveIndices(
                 )
             }
         };
+        let Ok(needed) = u32::try_from(needed) else {
+            return fail(
+                FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                format!(
+                    "{F}: count {count} of mode 0x{mode:04X} makes {needed} indices, more than written (a uint32_t) holds: expected a count whose indices number at most {}",
+                    u32::MAX
+                ),
+            );
+        };
         // SAFETY: checked non-null; writable by the caller's contract.
         unsafe {
-            written.write(indices.len() as u32);
+            written.write(needed);
             draw_mode.write(as_mode);
         }
         if out.is_null() {
             return FfvkResult::FFVK_SUCCESS;
         }
-        if (capacity as usize) < indices.len() {
+        if capacity < needed {
             return fail(
                 FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
-                format!(
-                    "{F}: capacity {capacity} is too small: expected at least {}",
-                    indices.len()
-                ),
+                format!("{F}: capacity {capacity} is too small: expected at least {needed}"),
             );
         }
-        // SAFETY: out has room for capacity >= indices.len() values.
-        unsafe { std::ptr::copy_nonoverlapping(indices.as_ptr(), out, indices.len()) };
+        let input: &[u32] = if count == 0 {
+            &[]
+        } else {
+            // SAFETY: the caller's contract: count values at vertices (checked non-null and
+            // aligned above).
+            unsafe { std::slice::from_raw_parts(vertices, count as usize) }
+        };
+        // Written straight into the caller's room, which holds capacity >= needed values.
+        // SAFETY: out has room for `needed` values; each iterator yields exactly `needed`.
+        unsafe {
+            match mode {
+                GL_QUADS => fill(out, gl_primitives::quads_iter(input)),
+                GL_QUAD_STRIP => fill(out, gl_primitives::quad_strip_iter(input)),
+                GL_POLYGON => fill(out, gl_primitives::polygon_iter(input)),
+                GL_LINE_LOOP => fill(out, gl_primitives::line_loop_iter(input)),
+                _ => std::ptr::copy_nonoverlapping(input.as_ptr(), out, input.len()),
+            }
+        }
         FfvkResult::FFVK_SUCCESS
     })
+}
+
+/// Writes each index of `indices` to `out`, one after another.
+///
+/// # Safety
+///
+/// `out` has room for as many values as `indices` yields.
+unsafe fn fill(out: *mut u32, indices: impl Iterator<Item = u32>) {
+    for (i, index) in indices.enumerate() {
+        // SAFETY: the caller's contract: room for every value yielded.
+        unsafe { out.add(i).write(index) };
+    }
 }

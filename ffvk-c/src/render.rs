@@ -15,9 +15,14 @@ use ffvk::gl::state::LightingState;
 use ffvk::glam::Mat4;
 use ffvk::vk::EnabledFeatures;
 use ffvk::{
-    Attribute, Blend, Geometry, Lighting, LightingOptions, LitDraw, RasterState, StagedDraw, Target,
+    Attribute, Geometry, Lighting, LightingOptions, LitDraw, RasterState, StagedDraw, Target,
     TextureBinding, Topology, VertexInput,
 };
+
+mod raster;
+
+pub use raster::{ffvkRasterDefaults, FfvkRaster};
+use raster::raster;
 
 use crate::enums::*;
 use crate::gl::FfvkContext;
@@ -33,9 +38,18 @@ pub const FFVK_FEATURE_WIDE_LINES: u32 = 4;
 /// `largePoints`: needed for a point size other than 1.
 pub const FFVK_FEATURE_LARGE_POINTS: u32 = 8;
 
+/// The most `frames_in_flight` a renderer takes (`ffvk::MAX_FRAMES_IN_FLIGHT`).
+pub const FFVK_MAX_FRAMES_IN_FLIGHT: u32 = 64;
+/// The most vertex `bindings` a renderer takes (`ffvk::MAX_VERTEX_BINDINGS`).
+pub const FFVK_MAX_VERTEX_BINDINGS: u32 = 32;
+const _: () = assert!(FFVK_MAX_FRAMES_IN_FLIGHT == ffvk::MAX_FRAMES_IN_FLIGHT);
+const _: () = assert!(FFVK_MAX_VERTEX_BINDINGS == ffvk::MAX_VERTEX_BINDINGS);
+
 /// Where one vertex attribute lives: a binding of the create info's `bindings`, the byte
 /// offset within one element, the format (any the shaders read as floats, e.g.
-/// `VK_FORMAT_R32G32B32_SFLOAT`, `VK_FORMAT_R8G8B8A8_UNORM`).
+/// `VK_FORMAT_R32G32B32_SFLOAT`, `VK_FORMAT_R8G8B8A8_UNORM`, that the device reads from
+/// vertex buffers). The attribute lies within one element: offset + the format's size <= the
+/// binding's stride.
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct FfvkAttribute {
@@ -69,16 +83,21 @@ pub struct FfvkRendererCreateInfo {
     /// and `FFVK_FEATURE_LARGE_POINTS` are `VkPhysicalDeviceFeatures::wideLines` and
     /// `largePoints`.
     pub enabled_features: u32,
-    /// The color attachment's format.
+    /// The color attachment's format: an uncompressed core format the shaders write as floats
+    /// (UNORM, SNORM, SRGB or FLOAT; not UNDEFINED, a depth or an integer format) that the
+    /// device supports as `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`.
     pub color_format: VkFormat,
-    /// The depth attachment's format, or `VK_FORMAT_UNDEFINED` for none.
+    /// The depth attachment's format, or `VK_FORMAT_UNDEFINED` for none: one of the six `D*`
+    /// formats, supported by the device as `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`.
     pub depth_format: VkFormat,
-    /// Samples per pixel of both attachments (`VK_SAMPLE_COUNT_1_BIT` …).
+    /// Samples per pixel of both attachments: one `VK_SAMPLE_COUNT_*_BIT`, among the device's
+    /// `framebufferColorSampleCounts` (and `framebufferDepthSampleCounts` with a depth format,
+    /// `framebufferStencilSampleCounts` with a stencil one).
     pub samples: VkSampleCountFlagBits,
     /// The caller's vertex buffer bindings (per-vertex rate), in the order draws pass their
     /// buffers.
     pub bindings: *const VkVertexInputBindingDescription,
-    /// How many `bindings`.
+    /// How many `bindings`, at most `FFVK_MAX_VERTEX_BINDINGS`.
     pub binding_count: u32,
     /// Object-space position (`glVertexPointer`).
     pub position: FfvkAttribute,
@@ -89,50 +108,13 @@ pub struct FfvkRendererCreateInfo {
     pub color: *const FfvkAttribute,
     /// Texture coordinates (s, t), or null: textured draws are then refused.
     pub texcoord: *const FfvkAttribute,
-    /// Frame slots, at least 1: how many frames the caller records before it waits for the
-    /// oldest.
+    /// Frame slots, 1 to `FFVK_MAX_FRAMES_IN_FLIGHT`: how many frames the caller records
+    /// before it waits for the oldest.
     pub frames_in_flight: u32,
     /// The descriptor set index of ffvk's state block (ffvk uses it and the next two).
     pub set_index: u32,
     /// The caller's pipeline cache, or `VK_NULL_HANDLE` for ffvk's own.
     pub pipeline_cache: VkPipelineCache,
-}
-
-/// A draw's fixed-function raster state (GL's glCullFace/glFrontFace, depth and blend state,
-/// glPointSize, glLineWidth) in Vulkan's terms. `ffvkRasterDefaults` fills GL's initial
-/// values; a zeroed struct is not GL's defaults (depth writes off, depth compare NEVER, sizes
-/// 0, which draws refuse).
-#[repr(C)]
-#[derive(Debug, Clone, Copy)]
-pub struct FfvkRaster {
-    /// `GL_CULL_FACE` with glCullFace: `VK_CULL_MODE_NONE` (GL's default) or a face.
-    pub cull_mode: VkCullModeFlags,
-    /// glFrontFace: `VK_FRONT_FACE_COUNTER_CLOCKWISE` is GL's `GL_CCW` (the default).
-    pub front_face: VkFrontFace,
-    /// `GL_DEPTH_TEST` (needs a depth format).
-    pub depth_test: u8,
-    /// glDepthMask (GL's default: true; only while the depth test is on).
-    pub depth_write: u8,
-    /// glDepthFunc (GL's default: `VK_COMPARE_OP_LESS`).
-    pub depth_compare: VkCompareOp,
-    /// `GL_BLEND`; the factors and equations below apply when it is non-zero.
-    pub blend: u8,
-    /// Source factor for RGB.
-    pub src_color: VkBlendFactor,
-    /// Destination factor for RGB.
-    pub dst_color: VkBlendFactor,
-    /// Equation for RGB.
-    pub color_op: VkBlendOp,
-    /// Source factor for alpha.
-    pub src_alpha: VkBlendFactor,
-    /// Destination factor for alpha.
-    pub dst_alpha: VkBlendFactor,
-    /// Equation for alpha.
-    pub alpha_op: VkBlendOp,
-    /// glPointSize, in pixels (1 by default; another size needs `FFVK_FEATURE_LARGE_POINTS`).
-    pub point_size: f32,
-    /// glLineWidth, in pixels (1 by default; another width needs `FFVK_FEATURE_WIDE_LINES`).
-    pub line_width: f32,
 }
 
 /// One draw: `glDrawArrays` (no index buffer) or `glDrawElementsBaseVertex`. Set
@@ -283,11 +265,6 @@ unsafe fn create(info: &FfvkRendererCreateInfo) -> Result<FfvkRenderer, FfvkResu
             )));
         }
     }
-    if info.frames_in_flight == 0 {
-        return Err(invalid(format!(
-            "{F}: frames_in_flight is 0: expected at least 1"
-        )));
-    }
     let known = FFVK_FEATURE_DYNAMIC_RENDERING
         | FFVK_FEATURE_PROVOKING_VERTEX_LAST
         | FFVK_FEATURE_WIDE_LINES
@@ -298,7 +275,13 @@ unsafe fn create(info: &FfvkRendererCreateInfo) -> Result<FfvkRenderer, FfvkResu
             info.enabled_features
         )));
     }
-    // SAFETY: the caller's contract: binding_count descriptions at bindings.
+    if info.binding_count > FFVK_MAX_VERTEX_BINDINGS {
+        return Err(invalid(format!(
+            "{F}: binding_count is {}: expected at most {FFVK_MAX_VERTEX_BINDINGS} (FFVK_MAX_VERTEX_BINDINGS)",
+            info.binding_count
+        )));
+    }
+    // SAFETY: the caller's contract: binding_count descriptions at bindings (checked bounded).
     let bindings = unsafe { slice(F, "bindings", info.bindings, info.binding_count) }?.to_vec();
     let mut vertex_input = VertexInput::new(bindings, attribute(&info.position), attribute(&info.normal));
     for (what, ptr) in [("color", info.color), ("texcoord", info.texcoord)] {
@@ -319,6 +302,9 @@ unsafe fn create(info: &FfvkRendererCreateInfo) -> Result<FfvkRenderer, FfvkResu
         .with_frames_in_flight(info.frames_in_flight)
         .with_set_index(info.set_index)
         .with_pipeline_cache(Some(info.pipeline_cache).filter(|c| *c != vk::PipelineCache::null()));
+    // Every value that needs no device is checked before Vulkan is touched; Lighting::new
+    // checks them again (the one check the Rust API has too), then the device.
+    options.validate().map_err(|e| from_error(F, &e))?;
 
     let static_fn = ash::StaticFn {
         get_instance_proc_addr,
@@ -349,13 +335,17 @@ unsafe fn create(info: &FfvkRendererCreateInfo) -> Result<FfvkRenderer, FfvkResu
     })
 }
 
-/// Makes a renderer on the caller's device: checks the device (Vulkan 1.3, dynamic rendering,
-/// the features `enabled_features` claims) and the vertex layout, and makes the pipeline
+/// Makes a renderer on the caller's device: checks every value of `info` before Vulkan is
+/// touched, then the device (Vulkan 1.3, dynamic rendering, the features `enabled_features`
+/// claims, the formats' features and sample counts, vertex limits), and makes the pipeline
 /// layout; pipelines are made on the first draw that needs each (about 15 ms on lavapipe).
 /// Returns `FFVK_SUCCESS` with `*renderer` set, or an error code with `*renderer` null:
-/// `FFVK_ERROR_INVALID_ARGUMENT` (a null pointer or handle, a wrong `struct_size`, 0 frames,
-/// unknown feature bits, a bad vertex layout), `FFVK_ERROR_MISSING_FEATURE`,
-/// `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN`. Records nothing.
+/// `FFVK_ERROR_INVALID_ARGUMENT` (a null pointer or handle, a wrong `struct_size`, 0 or more
+/// than `FFVK_MAX_FRAMES_IN_FLIGHT` frames, more than `FFVK_MAX_VERTEX_BINDINGS` bindings,
+/// unknown feature bits, a format, sample count or vertex layout that is invalid or that the
+/// device does not support; the message names the field, its value and what was expected),
+/// `FFVK_ERROR_MISSING_FEATURE`, `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN`. Records
+/// nothing.
 ///
 /// # Safety
 ///
@@ -515,65 +505,16 @@ fn topology(mode: u32) -> Result<Topology, FfvkResult> {
     })
 }
 
-fn raster(r: &FfvkRaster) -> RasterState {
-    let mut state = RasterState::default()
-        .with_depth_test(r.depth_test != 0)
-        .with_point_size(r.point_size)
-        .with_line_width(r.line_width);
-    state.cull_mode = r.cull_mode;
-    state.front_face = r.front_face;
-    state.depth_write = r.depth_write != 0;
-    state.depth_compare = r.depth_compare;
-    state.blend = (r.blend != 0).then(|| {
-        let mut b = Blend::new(r.src_color, r.dst_color, r.color_op);
-        b.src_alpha = r.src_alpha;
-        b.dst_alpha = r.dst_alpha;
-        b.alpha_op = r.alpha_op;
-        b
-    });
-    state
-}
-
-/// Fills `raster` with GL's initial raster state: no culling, `GL_CCW` front faces, depth
-/// test off with writes on and `GL_LESS`, blending off (factors ONE, ZERO, ADD), point size
-/// and line width 1.
-///
-/// # Safety
-///
-/// `raster` is null (ignored) or writable.
-#[no_mangle]
-pub unsafe extern "C" fn ffvkRasterDefaults(raster: *mut FfvkRaster) {
-    if raster.is_null() || misaligned(raster) {
-        return;
-    }
-    let defaults = FfvkRaster {
-        cull_mode: vk::CullModeFlags::NONE,
-        front_face: vk::FrontFace::COUNTER_CLOCKWISE,
-        depth_test: 0,
-        depth_write: 1,
-        depth_compare: vk::CompareOp::LESS,
-        blend: 0,
-        src_color: vk::BlendFactor::ONE,
-        dst_color: vk::BlendFactor::ZERO,
-        color_op: vk::BlendOp::ADD,
-        src_alpha: vk::BlendFactor::ONE,
-        dst_alpha: vk::BlendFactor::ZERO,
-        alpha_op: vk::BlendOp::ADD,
-        point_size: 1.0,
-        line_width: 1.0,
-    };
-    // SAFETY: checked non-null; the caller's contract makes it writable.
-    unsafe { raster.write(defaults) };
-}
-
 /// Adds a draw to the open scope: the context's state now (lights, materials, switches, its
 /// modelview and projection) is captured, so the caller may change the context right after.
 /// The draw is checked and its state written into the slot's memory now (its pipeline is made
 /// now if it is new: about 15 ms on lavapipe); `ffvkEndDraws` records it. A refused draw is
 /// not added and the scope stays open with the draws before it. Errors:
 /// `FFVK_ERROR_INVALID_ARGUMENT` (no open scope, a null pointer, a wrong `struct_size`, a mode
-/// ffvk does not draw directly, a buffer count other than the layout's bindings, a point size
-/// or line width out of the device's range, a textured draw without texture coordinates),
+/// ffvk does not draw directly, a buffer count other than the layout's bindings, a raster
+/// enum that is not one ffvk passes to Vulkan (see `FfvkRaster`), blending into a color
+/// format the device cannot blend, a point size or line width out of the device's range, a
+/// textured draw without texture coordinates),
 /// `FFVK_ERROR_STATE` (the context's state cannot be drawn: a soft spot cone wider than its
 /// cutoff, a modelview that cannot be inverted while lighting), `FFVK_ERROR_MISSING_FEATURE`
 /// (`GL_FLAT`, a point size or a line width the create info's `enabled_features` did not

@@ -1718,6 +1718,93 @@ fn create_renderer_with_null_or_misaligned_bindings_is_invalid_argument() {
 }
 
 #[test]
+fn create_renderer_refuses_frames_in_flight_past_the_limit_before_allocating_anything() {
+    // Issue 46: a billion frame slots were allocated infallibly and aborted the host.
+    for frames in [FFVK_MAX_FRAMES_IN_FLIGHT + 1, 1_000_000_000, u32::MAX] {
+        let mut info = create_info();
+        info.frames_in_flight = frames;
+        let given = format!("frames_in_flight is {frames}");
+        let expected = format!("expected 1..={FFVK_MAX_FRAMES_IN_FLIGHT}");
+        assert_create_refused(&info, &[&given, &expected]);
+    }
+}
+
+#[test]
+fn create_renderer_refuses_a_binding_count_past_the_limit_before_reading_the_bindings() {
+    // Only one binding lies at `bindings`: the count must be refused, never read or copied.
+    for count in [FFVK_MAX_VERTEX_BINDINGS + 1, 1 << 30, u32::MAX] {
+        let mut info = create_info();
+        info.binding_count = count;
+        let given = format!("binding_count is {count}");
+        let expected = format!("expected at most {FFVK_MAX_VERTEX_BINDINGS}");
+        assert_create_refused(&info, &[&given, &expected]);
+    }
+}
+
+#[test]
+fn create_renderer_refuses_a_color_format_that_is_not_a_float_color_format_naming_it() {
+    for (raw, name) in [
+        (0, "UNDEFINED"),
+        (126, "D32_SFLOAT"),
+        (130, "D32_SFLOAT_S8_UINT"),
+        (41, "R8G8B8A8_UINT"),
+        (107, "R32G32B32A32_UINT"),
+        (131, "BC1_RGB_UNORM_BLOCK"),
+        (99_999, "99999"),
+        (-1, "-1"),
+    ] {
+        let mut info = create_info();
+        info.color_format = vk::Format::from_raw(raw);
+        let given = format!("color_format {name} ({raw}) is not a color format");
+        assert_create_refused(&info, &[&given, "expected an uncompressed color format"]);
+    }
+}
+
+#[test]
+fn create_renderer_refuses_a_depth_format_without_depth_naming_it() {
+    for (raw, name) in [
+        (37, "R8G8B8A8_UNORM"),
+        (127, "S8_UINT"),
+        (100, "R32_SFLOAT"),
+        (99_999, "99999"),
+    ] {
+        let mut info = create_info();
+        info.depth_format = vk::Format::from_raw(raw);
+        let given = format!("depth_format {name} ({raw}) is not a depth format");
+        assert_create_refused(&info, &[&given, "expected UNDEFINED (no depth attachment)"]);
+    }
+}
+
+#[test]
+fn create_renderer_refuses_samples_that_are_not_one_sample_count_bit() {
+    for raw in [0u32, 3, 5, 6, 12, 128, 0x41, u32::MAX] {
+        let mut info = create_info();
+        info.samples = vk::SampleCountFlags::from_raw(raw);
+        let given = format!("samples {raw} (0x{raw:X}) is not one VkSampleCountFlagBits bit");
+        assert_create_refused(&info, &[&given, "expected 1, 2, 4, 8, 16, 32 or 64"]);
+    }
+}
+
+#[test]
+fn create_renderer_refuses_an_attribute_that_ends_past_its_bindings_stride() {
+    // BINDINGS' stride is 24: a 12-byte normal at 13 ends at 25; u32::MAX overflows.
+    for offset in [13u32, 24, 4096, u32::MAX] {
+        let mut info = create_info();
+        info.normal.offset = offset;
+        let given = format!("the normal attribute at offset {offset} (12 bytes of R32G32B32_SFLOAT)");
+        assert_create_refused(&info, &[&given, "past the stride 24 of binding 0"]);
+    }
+    let mut info = create_info();
+    let color = FfvkAttribute {
+        binding: 0,
+        offset: 21,
+        format: vk::Format::R8G8B8A8_UNORM,
+    };
+    info.color = &color;
+    assert_create_refused(&info, &["the color attribute at offset 21 (4 bytes", "expected offset + 4 <= stride"]);
+}
+
+#[test]
 fn create_renderer_with_a_misaligned_info_or_attribute_is_invalid_argument() {
     // A create info one byte into a buffer: reading through it would be undefined.
     let mut bytes = vec![0u8; size_of::<FfvkRendererCreateInfo>() + 16];
@@ -2066,6 +2153,57 @@ fn primitive_indices_refuses_null_and_misaligned_pointers_naming_each() {
     assert_eq!(out, [0; 16]);
     assert_eq!((w, m), (0, 0));
     assert_eq!(bytes, [0; 4], "written through a misaligned pointer");
+}
+
+#[test]
+fn a_size_query_of_any_count_reads_and_allocates_nothing() {
+    // Issue 46: asking the size for 3e9 vertex numbers (12 GB) or 0xFFFFFFFF of them copied or
+    // expanded them first, which aborted the host. The query needs the count alone: the one
+    // vertex here is never read.
+    let one = [7u32];
+    for (mode, count, needed) in [
+        (TRIANGLES, u32::MAX, u32::MAX),
+        (POINTS, 3_000_000_000, 3_000_000_000),
+        (QUADS, 2_000_000_000, 3_000_000_000),
+        (QUAD_STRIP, 1_000_000_000, 2_999_999_994),
+        (POLYGON, 1_431_655_767, u32::MAX),
+        (LINE_LOOP, 2_000_000_000, 4_000_000_000),
+    ] {
+        let (mut written, mut draw_mode) = (0u32, u32::MAX);
+        // SAFETY: a size query (out null) reads nothing from vertices, as the header says.
+        let r = unsafe { ffvkPrimitiveIndices(mode, one.as_ptr(), count, null_mut(), 0, &mut written, &mut draw_mode) };
+        assert_eq!(r, FfvkResult::FFVK_SUCCESS, "mode {mode}, count {count}: {}", message());
+        assert_eq!(written, needed, "mode {mode}, count {count}");
+    }
+}
+
+#[test]
+fn primitive_indices_refuses_a_count_whose_indices_a_uint32_count_cannot_hold() {
+    let one = [7u32];
+    for (mode, count, needed) in [
+        (QUADS, 3_000_000_000u32, 4_500_000_000u64),
+        (QUADS, u32::MAX, 6_442_450_938),
+        (QUAD_STRIP, u32::MAX, 12_884_901_876),
+        (POLYGON, 1_431_655_768, 4_294_967_298),
+        (POLYGON, u32::MAX, 12_884_901_879),
+        (LINE_LOOP, u32::MAX, 8_589_934_590),
+    ] {
+        let mut out = [u32::MAX; 4];
+        let (mut written, mut draw_mode) = (5u32, 5u32);
+        for o in [null_mut(), out.as_mut_ptr()] {
+            // SAFETY: refused from the count alone: neither vertices nor out is touched.
+            let r = unsafe { ffvkPrimitiveIndices(mode, one.as_ptr(), count, o, 4, &mut written, &mut draw_mode) };
+            assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT, "mode {mode}, count {count}");
+            let words = [
+                &format!("ffvkPrimitiveIndices: count {count} of mode {}", hex(mode)),
+                &format!("makes {needed} indices"),
+                "expected a count whose indices number at most 4294967295",
+            ];
+            assert_names(&message(), &words);
+        }
+        assert_eq!((written, draw_mode), (5, 5), "written on a refusal");
+        assert_eq!(out, [u32::MAX; 4]);
+    }
 }
 
 // ---------------------------------------------------------------------------------------

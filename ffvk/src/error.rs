@@ -296,6 +296,106 @@ pub enum LightingError {
         /// Bindings in the layout.
         expected: usize,
     },
+    /// More frame slots than ffvk keeps ([`MAX_FRAMES_IN_FLIGHT`](crate::draw::lighting::MAX_FRAMES_IN_FLIGHT)).
+    #[error("frames_in_flight is {count}: expected 1..={max} frame slots")]
+    TooManyFrameSlots {
+        /// The count given.
+        count: u32,
+        /// The most ffvk keeps.
+        max: u32,
+    },
+    /// More vertex bindings than ffvk takes ([`MAX_VERTEX_BINDINGS`](crate::draw::pipeline::MAX_VERTEX_BINDINGS)).
+    #[error("the vertex layout has {count} bindings: expected at most {max}")]
+    TooManyBindings {
+        /// The bindings given.
+        count: usize,
+        /// The most ffvk takes.
+        max: u32,
+    },
+    /// An attribute that does not lie within one element of its binding.
+    #[error("the {attribute} attribute at offset {offset} ({size} bytes of {format:?}) ends past the stride {stride} of binding {binding}: expected offset + {size} <= stride")]
+    AttributeOffset {
+        /// `position`, `normal`, `color` or `texcoord`.
+        attribute: &'static str,
+        /// Its offset.
+        offset: u32,
+        /// Its format.
+        format: ash::vk::Format,
+        /// The format's size in bytes.
+        size: u32,
+        /// Its binding.
+        binding: u32,
+        /// The binding's stride.
+        stride: u32,
+    },
+    /// The target's color format is not one ffvk renders to.
+    #[error("color_format {format:?} ({raw}) is not a color format ffvk renders to: expected an uncompressed color format the shaders write as floats (UNORM, SNORM, SRGB or FLOAT, e.g. R8G8B8A8_UNORM), not UNDEFINED, a depth, integer or compressed format", raw = format.as_raw())]
+    ColorFormat {
+        /// The format given.
+        format: ash::vk::Format,
+    },
+    /// The target's depth format is not a depth format.
+    #[error("depth_format {format:?} ({raw}) is not a depth format: expected UNDEFINED (no depth attachment), D16_UNORM, X8_D24_UNORM_PACK32, D32_SFLOAT, D16_UNORM_S8_UINT, D24_UNORM_S8_UINT or D32_SFLOAT_S8_UINT", raw = format.as_raw())]
+    DepthFormat {
+        /// The format given.
+        format: ash::vk::Format,
+    },
+    /// The target's samples are not one `VkSampleCountFlagBits` bit.
+    #[error("samples {raw} (0x{raw:X}) is not one VkSampleCountFlagBits bit: expected 1, 2, 4, 8, 16, 32 or 64", raw = samples.as_raw())]
+    Samples {
+        /// The flags given.
+        samples: ash::vk::SampleCountFlags,
+    },
+    /// The device cannot use a format as ffvk would.
+    #[error("{field} {format:?} is not supported by the device as {feature}: expected a format whose features (vkGetPhysicalDeviceFormatProperties) include {feature}")]
+    FormatUnsupported {
+        /// What has the format: `color_format`, `depth_format` or an attribute's.
+        field: &'static str,
+        /// The format.
+        format: ash::vk::Format,
+        /// The `VkFormatFeatureFlags` bit it lacks.
+        feature: &'static str,
+    },
+    /// The device cannot render the target's samples into one of its attachments.
+    #[error("samples {samples} is not supported by the device for the {attachment}: expected one of {supported} (its {limit})")]
+    SamplesUnsupported {
+        /// The samples given.
+        samples: u32,
+        /// `color attachment`, `depth attachment` or `stencil of the depth attachment`.
+        attachment: &'static str,
+        /// The sample counts the device supports, e.g. `1, 4`.
+        supported: String,
+        /// The limit's name, e.g. `framebufferColorSampleCounts`.
+        limit: &'static str,
+    },
+    /// A vertex layout value past a device limit.
+    #[error("{what} is {value}: expected at most {max} (the device's {limit})")]
+    VertexLimit {
+        /// What, e.g. `the stride of binding 0`.
+        what: String,
+        /// Its value.
+        value: u32,
+        /// The limit's name.
+        limit: &'static str,
+        /// The device's limit.
+        max: u32,
+    },
+    /// A raster state field that is not a value ffvk passes to Vulkan.
+    #[error("{field} {value} is not accepted: expected {expected}")]
+    RasterEnum {
+        /// The field: `cull_mode`, `front_face`, `depth_compare`, `src_color`, ….
+        field: &'static str,
+        /// Its value as given.
+        value: String,
+        /// What was expected.
+        expected: &'static str,
+    },
+    /// Blending into a color format the device cannot blend into.
+    #[error("the draw blends, but the device cannot blend into color_format {format:?} (no COLOR_ATTACHMENT_BLEND): expected blending off, or a target whose color format blends")]
+    BlendUnsupported {
+        /// The target's color format.
+        format: ash::vk::Format,
+    },
     /// So many draws in one frame slot that a dynamic offset would pass 4 GiB.
     #[error(
         "{draws} draws in one frame slot put a uniform offset past 4 GiB: expected fewer draws per frame"

@@ -24,7 +24,7 @@ use proptest::test_runner::{Config, FileFailurePersistence, TestCaseError, TestR
 use crate::support::{ffvk_command, finish, output_dir, renderer};
 
 /// The case count `base` scaled by `FFVK_FUZZ_SCALE` (default 1).
-fn cases(base: u32) -> u32 {
+pub(crate) fn cases(base: u32) -> u32 {
     let scale = std::env::var("FFVK_FUZZ_SCALE")
         .ok()
         .and_then(|s| s.parse::<u32>().ok())
@@ -33,7 +33,7 @@ fn cases(base: u32) -> u32 {
     base.saturating_mul(scale)
 }
 
-fn runner(base: u32) -> TestRunner {
+pub(crate) fn runner(base: u32) -> TestRunner {
     TestRunner::new(Config {
         cases: cases(base),
         // Shrinking a slow input can take long; a short bound keeps CI's time predictable.

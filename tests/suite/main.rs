@@ -2,7 +2,9 @@
 
 mod bench;
 mod browser;
+mod c_api_boundary;
 mod c_api_example;
+mod c_api_fuzz;
 mod c_api_renderer;
 mod c_api_state;
 mod conformance;

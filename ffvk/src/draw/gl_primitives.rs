@@ -11,10 +11,19 @@
 /// GL's provoking vertex of a quad is its fourth, which ends both triangles; both keep the
 /// quad's winding. Trailing vertices that make no quad are dropped.
 pub fn quads(vertices: &[u32]) -> Vec<u32> {
+    quads_iter(vertices).collect()
+}
+
+/// [`quads`] one index at a time, allocating nothing.
+pub fn quads_iter(vertices: &[u32]) -> impl Iterator<Item = u32> + '_ {
     vertices
         .chunks_exact(4)
         .flat_map(|q| [q[0], q[1], q[3], q[1], q[2], q[3]])
-        .collect()
+}
+
+/// How many indices [`quads`] makes of `vertices` vertices.
+pub fn quads_count(vertices: u64) -> u64 {
+    vertices / 4 * 6
 }
 
 /// `GL_QUAD_STRIP` as `TriangleList`: quad i is (v2i, v2i+1, v2i+3, v2i+2) in GL's winding,
@@ -22,39 +31,70 @@ pub fn quads(vertices: &[u32]) -> Vec<u32> {
 /// both triangles: (v2i, v2i+1, v2i+3) and (v2i+2, v2i, v2i+3). A last unpaired vertex is
 /// dropped; fewer than four vertices draw nothing.
 pub fn quad_strip(vertices: &[u32]) -> Vec<u32> {
+    quad_strip_iter(vertices).collect()
+}
+
+/// [`quad_strip`] one index at a time, allocating nothing.
+pub fn quad_strip_iter(vertices: &[u32]) -> impl Iterator<Item = u32> + '_ {
     let pairs = vertices.len() / 2;
-    (1..pairs)
-        .flat_map(|i| {
-            let (a, b, c, d) = (
-                vertices[2 * i - 2],
-                vertices[2 * i - 1],
-                vertices[2 * i + 1],
-                vertices[2 * i],
-            );
-            [a, b, c, d, a, c]
-        })
-        .collect()
+    (1..pairs).flat_map(move |i| {
+        let (a, b, c, d) = (
+            vertices[2 * i - 2],
+            vertices[2 * i - 1],
+            vertices[2 * i + 1],
+            vertices[2 * i],
+        );
+        [a, b, c, d, a, c]
+    })
+}
+
+/// How many indices [`quad_strip`] makes of `vertices` vertices.
+pub fn quad_strip_count(vertices: u64) -> u64 {
+    (vertices / 2).saturating_sub(1) * 6
 }
 
 /// `GL_POLYGON` as `TriangleList`: a fan around v0 whose triangles (vi, vi+1, v0) end with v0,
 /// GL's provoking vertex of a polygon (the first); each is a rotation of (v0, vi, vi+1), so the
 /// winding is the polygon's. Fewer than three vertices draw nothing.
 pub fn polygon(vertices: &[u32]) -> Vec<u32> {
-    match vertices.split_first() {
-        Some((&v0, rest)) if rest.len() >= 2 => rest.windows(2).flat_map(|w| [w[0], w[1], v0]).collect(),
-        _ => Vec::new(),
-    }
+    polygon_iter(vertices).collect()
+}
+
+/// [`polygon`] one index at a time, allocating nothing.
+pub fn polygon_iter(vertices: &[u32]) -> impl Iterator<Item = u32> + '_ {
+    let (v0, rest) = match vertices.split_first() {
+        Some((&v0, rest)) => (v0, rest),
+        None => (0, vertices),
+    };
+    // Fewer than two after v0 make no window, so no triangle.
+    rest.windows(2).flat_map(move |w| [w[0], w[1], v0])
+}
+
+/// How many indices [`polygon`] makes of `vertices` vertices.
+pub fn polygon_count(vertices: u64) -> u64 {
+    vertices.saturating_sub(2) * 3
 }
 
 /// `GL_LINE_LOOP` as `LineList`: each vertex to the next, and the last back to the first; each
 /// segment's second vertex is its provoking one, as in GL's loop. Fewer than two vertices
 /// draw nothing.
 pub fn line_loop(vertices: &[u32]) -> Vec<u32> {
-    if vertices.len() < 2 {
-        return Vec::new();
+    line_loop_iter(vertices).collect()
+}
+
+/// [`line_loop`] one index at a time, allocating nothing.
+pub fn line_loop_iter(vertices: &[u32]) -> impl Iterator<Item = u32> + '_ {
+    let n = if vertices.len() < 2 { 0 } else { vertices.len() };
+    (0..n).flat_map(move |i| [vertices[i], vertices[(i + 1) % n]])
+}
+
+/// How many indices [`line_loop`] makes of `vertices` vertices.
+pub fn line_loop_count(vertices: u64) -> u64 {
+    if vertices < 2 {
+        0
+    } else {
+        vertices * 2
     }
-    let next = vertices.iter().skip(1).chain(vertices.first());
-    vertices.iter().zip(next).flat_map(|(&a, &b)| [a, b]).collect()
 }
 
 #[cfg(test)]
@@ -125,5 +165,19 @@ mod tests {
         assert_eq!(line_loop(&[4, 5, 6]), [4, 5, 5, 6, 6, 4]);
         assert_eq!(line_loop(&[4, 5]), [4, 5, 5, 4]);
         assert!(line_loop(&[4]).is_empty());
+    }
+
+    #[test]
+    fn each_count_is_the_length_of_the_list_it_counts() {
+        let v: Vec<u32> = (100..120).collect();
+        for n in 0..v.len() {
+            let part = &v[..n];
+            let n = n as u64;
+            assert_eq!(quads(part).len() as u64, quads_count(n), "quads of {n}");
+            assert_eq!(quad_strip(part).len() as u64, quad_strip_count(n), "strip of {n}");
+            assert_eq!(polygon(part).len() as u64, polygon_count(n), "polygon of {n}");
+            assert_eq!(line_loop(part).len() as u64, line_loop_count(n), "loop of {n}");
+        }
+        assert_eq!(polygon_count(u64::from(u32::MAX)), 3 * (u64::from(u32::MAX) - 2));
     }
 }

@@ -168,6 +168,11 @@ struct Variant {
     gbuffer: bool,
 }
 
+/// The most frame slots a [`Lighting`] keeps ([`LightingOptions::frames_in_flight`]): a
+/// caller waits for a frame long before this many are in flight, and a count past it is
+/// refused before anything is allocated for it.
+pub const MAX_FRAMES_IN_FLIGHT: u32 = 64;
+
 /// How to make a [`Lighting`].
 #[derive(Debug, Clone)]
 #[non_exhaustive]
@@ -201,6 +206,27 @@ impl LightingOptions {
             pipeline_cache: None,
             specialize: Specialize::Auto,
         }
+    }
+}
+
+impl LightingOptions {
+    /// Checks what needs no device: 1 ..= [`MAX_FRAMES_IN_FLIGHT`] frame slots, the target's
+    /// formats and samples ([`Target::validate`]) and the vertex layout
+    /// ([`VertexInput::validate`]). [`Lighting::new`] checks this first, then the device.
+    pub fn validate(&self) -> Result<()> {
+        match self.frames_in_flight {
+            0 => return Err(LightingError::NoFrameSlots.into()),
+            count if count > MAX_FRAMES_IN_FLIGHT => {
+                return Err(LightingError::TooManyFrameSlots {
+                    count,
+                    max: MAX_FRAMES_IN_FLIGHT,
+                }
+                .into())
+            }
+            _ => {}
+        }
+        self.target.validate()?;
+        self.vertex_input.validate()
     }
 }
 
@@ -243,9 +269,13 @@ pub struct Lighting {
 impl Lighting {
     /// Creates the layouts, the cache (unless the options pass one) and empty frame slots
     /// on `device`, which may be ffvk's own or a caller's
-    /// ([`Device::from_caller`](crate::vk::Device::from_caller)). Fails on an invalid vertex
-    /// layout, zero frame slots, or a set index the device cannot bind.
+    /// ([`Device::from_caller`](crate::vk::Device::from_caller)). Fails on what
+    /// [`LightingOptions::validate`] refuses, on a target or vertex layout the device cannot
+    /// take (formats without the features ffvk uses them with, sample counts outside its
+    /// framebuffer sample counts, strides and offsets past its limits), or on a set index it
+    /// cannot bind.
     pub fn new(device: &Arc<Device>, options: &LightingOptions) -> Result<Self> {
+        options.validate()?;
         // The texture's set goes right after the block's, the records' after it.
         let max_sets = device.limits.max_bound_descriptor_sets;
         if options.set_index.checked_add(2).is_none_or(|top| top >= max_sets) {
@@ -397,6 +427,7 @@ impl Lighting {
             }
             .into());
         }
+        draw.raster.validate()?;
         // The draw's own values, checked for every draw; the state, below, when it changed.
         let values = match &draw.values {
             Some(v) => (&v.front, &v.back, v.current_color),

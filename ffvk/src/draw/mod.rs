@@ -5,6 +5,7 @@
 
 pub mod gl_primitives;
 pub mod lighting;
+mod formats;
 mod lit;
 pub mod pipeline;
 mod raster;

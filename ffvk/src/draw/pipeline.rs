@@ -16,7 +16,7 @@ use crate::vk::objects::{DescriptorSetLayout, Pipeline, PipelineCache, PipelineL
 use crate::vk::Device;
 
 pub use super::raster::{Blend, Pixels, RasterState};
-pub use super::target::{Attribute, Target, VertexInput, COLOR_FORMAT, DEPTH_FORMAT};
+pub use super::target::{Attribute, Target, VertexInput, COLOR_FORMAT, DEPTH_FORMAT, MAX_VERTEX_BINDINGS};
 
 /// Whether a pipeline specialized by `key` needs only the front primary color between the
 /// per-vertex stages: unlit, or one-sided with a single color (the back colors then equal the
@@ -260,13 +260,17 @@ pub struct Pipelines {
     /// Empty layouts for the sets below `set_index`.
     _lower_sets: Vec<DescriptorSetLayout>,
     config: PipelineConfig,
+    /// The device blends into the target's color format (`COLOR_ATTACHMENT_BLEND`).
+    blendable: bool,
     device: Arc<Device>,
 }
 
 impl Pipelines {
     /// The layouts and a cache; pipelines are created by [`Pipelines::get`].
     pub fn new(device: &Arc<Device>, config: PipelineConfig) -> Result<Self> {
+        config.target.validate()?;
         config.vertex_input.validate()?;
+        let blendable = config.target.check_device(device)?;
         config.vertex_input.check_limits(device)?;
         let bindings = [vk::DescriptorSetLayoutBinding::default()
             .binding(0)
@@ -306,6 +310,7 @@ impl Pipelines {
             record_set_layout,
             _lower_sets: lower_sets,
             config,
+            blendable,
             device: device.clone(),
         })
     }
@@ -423,6 +428,13 @@ impl Pipelines {
                 flag: "provoking_vertex_last",
                 needed_for: "the flat mode needs (each triangle takes its last vertex's color, as in GL)",
             });
+        }
+        k.raster.validate()?;
+        if k.raster.blend.is_some() && !k.gbuffer && !self.blendable {
+            return Err(LightingError::BlendUnsupported {
+                format: config.target.color_format,
+            }
+            .into());
         }
         if k.raster.depth_test && config.target.depth_format == vk::Format::UNDEFINED {
             return Err(LightingError::NoDepthAttachment.into());

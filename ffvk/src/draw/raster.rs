@@ -3,6 +3,8 @@
 
 use ash::vk;
 
+use crate::error::LightingError;
+
 #[cfg(doc)]
 use super::target::Target;
 
@@ -151,6 +153,77 @@ impl RasterState {
     pub fn with_line_width(mut self, width: f32) -> Self {
         self.line_width = Pixels(width);
         self
+    }
+}
+
+/// Blend factors ffvk passes to Vulkan: `ZERO` (0) .. `SRC_ALPHA_SATURATE` (14), GL 2.1's
+/// and `glBlendColor`'s (constant 0, GL's default). The dual-source `SRC1_*` factors (15 ..
+/// 18) need a second shader output and a device feature, neither of which ffvk has.
+const BLEND_FACTORS: std::ops::RangeInclusive<i32> = 0..=14;
+/// Blend equations: `ADD`, `SUBTRACT`, `REVERSE_SUBTRACT`, `MIN`, `MAX` (GL's five).
+const BLEND_OPS: std::ops::RangeInclusive<i32> = 0..=4;
+
+impl RasterState {
+    /// Checks that every Vulkan enum of the state is one ffvk passes on: `cull_mode` only
+    /// `FRONT` and `BACK` bits, `front_face` `COUNTER_CLOCKWISE` or `CLOCKWISE`,
+    /// `depth_compare` `NEVER` .. `ALWAYS`, and, when blending, factors `ZERO` ..
+    /// `SRC_ALPHA_SATURATE` and equations `ADD` .. `MAX`. Errors name the field and the value.
+    /// (Sizes are checked against the device when the draw's pipeline is made.)
+    pub fn validate(&self) -> Result<(), LightingError> {
+        let refuse = |field, value: String, expected| {
+            Err(LightingError::RasterEnum {
+                field,
+                value,
+                expected,
+            })
+        };
+        let cull = self.cull_mode.as_raw();
+        if cull & !vk::CullModeFlags::FRONT_AND_BACK.as_raw() != 0 {
+            return refuse(
+                "cull_mode",
+                format!("0x{cull:X}"),
+                "VK_CULL_MODE_NONE, FRONT_BIT, BACK_BIT or FRONT_AND_BACK (bits 0x3)",
+            );
+        }
+        if !(0..=1).contains(&self.front_face.as_raw()) {
+            return refuse(
+                "front_face",
+                self.front_face.as_raw().to_string(),
+                "VK_FRONT_FACE_COUNTER_CLOCKWISE (0) or VK_FRONT_FACE_CLOCKWISE (1)",
+            );
+        }
+        if !(0..=7).contains(&self.depth_compare.as_raw()) {
+            return refuse(
+                "depth_compare",
+                self.depth_compare.as_raw().to_string(),
+                "a VkCompareOp, VK_COMPARE_OP_NEVER (0) .. VK_COMPARE_OP_ALWAYS (7)",
+            );
+        }
+        let Some(b) = self.blend else { return Ok(()) };
+        for (field, factor) in [
+            ("src_color", b.src_color),
+            ("dst_color", b.dst_color),
+            ("src_alpha", b.src_alpha),
+            ("dst_alpha", b.dst_alpha),
+        ] {
+            if !BLEND_FACTORS.contains(&factor.as_raw()) {
+                return refuse(
+                    field,
+                    factor.as_raw().to_string(),
+                    "a VkBlendFactor, VK_BLEND_FACTOR_ZERO (0) .. VK_BLEND_FACTOR_SRC_ALPHA_SATURATE (14); the dual-source SRC1 factors are not supported",
+                );
+            }
+        }
+        for (field, op) in [("color_op", b.color_op), ("alpha_op", b.alpha_op)] {
+            if !BLEND_OPS.contains(&op.as_raw()) {
+                return refuse(
+                    field,
+                    op.as_raw().to_string(),
+                    "VK_BLEND_OP_ADD (0), SUBTRACT, REVERSE_SUBTRACT, MIN or VK_BLEND_OP_MAX (4)",
+                );
+            }
+        }
+        Ok(())
     }
 }
 

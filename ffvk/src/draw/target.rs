@@ -3,6 +3,7 @@
 
 use ash::vk;
 
+use super::formats;
 use crate::error::{LightingError, Result};
 use crate::gpu::layout::{DrawRecord, RECORD_FIRST_LOCATION, RECORD_LOCATIONS};
 use crate::mesh::Vertex;
@@ -96,19 +97,109 @@ pub struct VertexInput {
     pub texcoord: Option<Attribute>,
 }
 
-/// Formats whose components a shader reads as floats: what the attributes may use.
-const FLOAT_FORMATS: &[vk::Format] = &[
-    vk::Format::R32G32_SFLOAT,
-    vk::Format::R32G32B32_SFLOAT,
-    vk::Format::R32G32B32A32_SFLOAT,
-    vk::Format::R16G16B16A16_SFLOAT,
-    vk::Format::R16G16B16A16_SNORM,
-    vk::Format::R16G16B16A16_UNORM,
-    vk::Format::R8G8B8A8_SNORM,
-    vk::Format::R8G8B8A8_UNORM,
-    vk::Format::B8G8R8A8_UNORM,
-    vk::Format::A2B10G10R10_SNORM_PACK32,
+/// Formats whose components a shader reads as floats: what the attributes may use, with
+/// their sizes in bytes.
+const FLOAT_FORMATS: &[(vk::Format, u32)] = &[
+    (vk::Format::R32G32_SFLOAT, 8),
+    (vk::Format::R32G32B32_SFLOAT, 12),
+    (vk::Format::R32G32B32A32_SFLOAT, 16),
+    (vk::Format::R16G16B16A16_SFLOAT, 8),
+    (vk::Format::R16G16B16A16_SNORM, 8),
+    (vk::Format::R16G16B16A16_UNORM, 8),
+    (vk::Format::R8G8B8A8_SNORM, 4),
+    (vk::Format::R8G8B8A8_UNORM, 4),
+    (vk::Format::B8G8R8A8_UNORM, 4),
+    (vk::Format::A2B10G10R10_SNORM_PACK32, 4),
 ];
+
+/// The most vertex bindings a layout may have (Vulkan's devices allow 16 to 32, and ffvk's
+/// per-draw record takes one more): a caller's count past it is refused before it is read.
+pub const MAX_VERTEX_BINDINGS: u32 = 32;
+
+impl Target {
+    /// Checks the values themselves, before any device is asked: the color format is one the
+    /// shaders write as floats, the depth format is `UNDEFINED` or a depth format, and the
+    /// samples are one `VkSampleCountFlagBits` bit. Errors name the field and its value.
+    pub fn validate(&self) -> std::result::Result<(), LightingError> {
+        if !formats::is_float_color(self.color_format) {
+            return Err(LightingError::ColorFormat {
+                format: self.color_format,
+            });
+        }
+        if self.depth_format != vk::Format::UNDEFINED && !formats::is_depth(self.depth_format) {
+            return Err(LightingError::DepthFormat {
+                format: self.depth_format,
+            });
+        }
+        if !formats::is_sample_count(self.samples) {
+            return Err(LightingError::Samples {
+                samples: self.samples,
+            });
+        }
+        Ok(())
+    }
+
+    /// Checks that `device` can render into the target: the color format has
+    /// `COLOR_ATTACHMENT`, the depth format `DEPTH_STENCIL_ATTACHMENT`, and the samples are
+    /// among the device's framebuffer sample counts for each attachment. Returns whether the
+    /// color format can be blended into (`COLOR_ATTACHMENT_BLEND`). Call after
+    /// [`Target::validate`]: only known formats are asked about.
+    pub(super) fn check_device(&self, device: &Device) -> Result<bool> {
+        let features = |format| {
+            let p = device.format_properties(format);
+            p.optimal_tiling_features | p.linear_tiling_features
+        };
+        let color = features(self.color_format);
+        if !color.contains(vk::FormatFeatureFlags::COLOR_ATTACHMENT) {
+            return Err(LightingError::FormatUnsupported {
+                field: "color_format",
+                format: self.color_format,
+                feature: "COLOR_ATTACHMENT",
+            }
+            .into());
+        }
+        let limits = &device.limits;
+        let mut counts = vec![(
+            "color attachment",
+            limits.framebuffer_color_sample_counts,
+            "framebufferColorSampleCounts",
+        )];
+        if self.depth_format != vk::Format::UNDEFINED {
+            if !features(self.depth_format).contains(vk::FormatFeatureFlags::DEPTH_STENCIL_ATTACHMENT) {
+                return Err(LightingError::FormatUnsupported {
+                    field: "depth_format",
+                    format: self.depth_format,
+                    feature: "DEPTH_STENCIL_ATTACHMENT",
+                }
+                .into());
+            }
+            counts.push((
+                "depth attachment",
+                limits.framebuffer_depth_sample_counts,
+                "framebufferDepthSampleCounts",
+            ));
+            if formats::has_stencil(self.depth_format) {
+                counts.push((
+                    "stencil of the depth attachment",
+                    limits.framebuffer_stencil_sample_counts,
+                    "framebufferStencilSampleCounts",
+                ));
+            }
+        }
+        for (attachment, supported, limit) in counts {
+            if !supported.contains(self.samples) {
+                return Err(LightingError::SamplesUnsupported {
+                    samples: self.samples.as_raw(),
+                    attachment,
+                    supported: formats::sample_counts(supported),
+                    limit,
+                }
+                .into());
+            }
+        }
+        Ok(color.contains(vk::FormatFeatureFlags::COLOR_ATTACHMENT_BLEND))
+    }
+}
 
 impl Attribute {
     /// The attribute at byte `offset` of each element of vertex binding `binding`, in
@@ -186,8 +277,18 @@ impl VertexInput {
         }
     }
 
-    /// Checks bindings and attributes; errors name the attribute and the value.
+    /// Checks bindings and attributes; errors name the attribute and the value: at most
+    /// [`MAX_VERTEX_BINDINGS`] bindings, each once and per vertex; each attribute on one of
+    /// them, in a format the shaders read as floats, within one element (offset + size <=
+    /// stride).
     pub fn validate(&self) -> Result<()> {
+        if self.bindings.len() > MAX_VERTEX_BINDINGS as usize {
+            return Err(LightingError::TooManyBindings {
+                count: self.bindings.len(),
+                max: MAX_VERTEX_BINDINGS,
+            }
+            .into());
+        }
         for (i, b) in self.bindings.iter().enumerate() {
             if self.bindings[..i].iter().any(|o| o.binding == b.binding) {
                 return Err(LightingError::DuplicateBinding { binding: b.binding }.into());
@@ -200,31 +301,46 @@ impl VertexInput {
                 .into());
             }
         }
-        let named = [
-            ("position", Some(self.position)),
-            ("normal", Some(self.normal)),
-            ("color", self.color),
-            ("texcoord", self.texcoord),
-        ];
-        for (name, attribute) in named {
+        for (name, _, attribute) in self.named() {
             let Some(a) = attribute else { continue };
-            if !self.bindings.iter().any(|b| b.binding == a.binding) {
+            let Some(binding) = self.bindings.iter().find(|b| b.binding == a.binding) else {
                 return Err(LightingError::UnknownBinding {
                     attribute: name,
                     binding: a.binding,
                     available: self.bindings.iter().map(|b| b.binding).collect(),
                 }
                 .into());
-            }
-            if !FLOAT_FORMATS.contains(&a.format) {
+            };
+            let Some(&(_, size)) = FLOAT_FORMATS.iter().find(|(f, _)| *f == a.format) else {
                 return Err(LightingError::AttributeFormat {
                     attribute: name,
                     format: a.format,
                 }
                 .into());
+            };
+            if a.offset.checked_add(size).is_none_or(|end| end > binding.stride) {
+                return Err(LightingError::AttributeOffset {
+                    attribute: name,
+                    offset: a.offset,
+                    format: a.format,
+                    size,
+                    binding: a.binding,
+                    stride: binding.stride,
+                }
+                .into());
             }
         }
         Ok(())
+    }
+
+    /// The attributes the layout has, by GL's name, with the name of their format field.
+    fn named(&self) -> [(&'static str, &'static str, Option<Attribute>); 4] {
+        [
+            ("position", "position.format", Some(self.position)),
+            ("normal", "normal.format", Some(self.normal)),
+            ("color", "color.format", self.color),
+            ("texcoord", "texcoord.format", self.texcoord),
+        ]
     }
 
     /// The binding ffvk reads its per-draw records from: the lowest binding number the
@@ -260,6 +376,38 @@ impl VertexInput {
                 max: limits.max_vertex_input_bindings,
             }
             .into());
+        }
+        for b in &self.bindings {
+            if b.stride > limits.max_vertex_input_binding_stride {
+                return Err(LightingError::VertexLimit {
+                    what: format!("the stride of binding {}", b.binding),
+                    value: b.stride,
+                    limit: "maxVertexInputBindingStride",
+                    max: limits.max_vertex_input_binding_stride,
+                }
+                .into());
+            }
+        }
+        for (name, field, attribute) in self.named() {
+            let Some(a) = attribute else { continue };
+            if a.offset > limits.max_vertex_input_attribute_offset {
+                return Err(LightingError::VertexLimit {
+                    what: format!("the offset of the {name} attribute"),
+                    value: a.offset,
+                    limit: "maxVertexInputAttributeOffset",
+                    max: limits.max_vertex_input_attribute_offset,
+                }
+                .into());
+            }
+            let buffer = device.format_properties(a.format).buffer_features;
+            if !buffer.contains(vk::FormatFeatureFlags::VERTEX_BUFFER) {
+                return Err(LightingError::FormatUnsupported {
+                    field,
+                    format: a.format,
+                    feature: "VERTEX_BUFFER",
+                }
+                .into());
+            }
         }
         let locations = RECORD_FIRST_LOCATION + RECORD_LOCATIONS;
         if locations > limits.max_vertex_input_attributes {

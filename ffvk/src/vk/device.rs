@@ -79,6 +79,25 @@ pub struct Device {
     pub(crate) info: DeviceInfo,
     /// What only ffvk's own device has; `None` for a caller's device.
     pub(crate) own: Option<OwnDevice>,
+    /// How to ask which features a format has on this device.
+    formats: FormatQuery,
+}
+
+/// `vkGetPhysicalDeviceFormatProperties` of the device's instance, and its physical device:
+/// what a [`Target`](crate::Target) and a vertex layout are checked against.
+#[derive(Clone, Copy)]
+pub(crate) struct FormatQuery {
+    physical: vk::PhysicalDevice,
+    get: vk::PFN_vkGetPhysicalDeviceFormatProperties,
+}
+
+impl FormatQuery {
+    fn new(instance: &ash::Instance, physical: vk::PhysicalDevice) -> Self {
+        FormatQuery {
+            physical,
+            get: instance.fp_v1_0().get_physical_device_format_properties,
+        }
+    }
 }
 
 /// The instance and queue of a device ffvk opened itself.
@@ -257,12 +276,13 @@ impl Device {
         let queue = unsafe { raw.get_device_queue(queue_family, 0) };
 
         let allocator = DeviceAllocator::own(vki, &raw, physical);
+        let formats = FormatQuery::new(vki, physical);
         let own = OwnDevice {
             instance,
             queue,
             queue_family,
         };
-        Device::assemble(raw, memory, &props, &supported, info, Some(own), allocator)
+        Device::assemble(raw, memory, &props, &supported, info, (Some(own), formats), allocator)
     }
 
     /// Wraps a device the caller created and keeps: ffvk creates its objects on it and frees
@@ -368,7 +388,8 @@ impl Device {
             Some(shared) => Ok(DeviceAllocator::Shared(shared)),
             _ => DeviceAllocator::own(instance, &device, physical_device),
         };
-        Device::assemble(device, memory, &props, &supported, info, None, allocator)
+        let formats = FormatQuery::new(instance, physical_device);
+        Device::assemble(device, memory, &props, &supported, info, (None, formats), allocator)
     }
 
     /// The device value of either constructor, with its allocator. A failed allocator
@@ -379,7 +400,7 @@ impl Device {
         props: &vk::PhysicalDeviceProperties,
         supported: &Supported,
         info: DeviceInfo,
-        own: Option<OwnDevice>,
+        (own, formats): (Option<OwnDevice>, FormatQuery),
         allocator: Result<DeviceAllocator>,
     ) -> Result<Arc<Self>> {
         let allocator = match allocator {
@@ -401,7 +422,21 @@ impl Device {
             max_memory_allocation_size: supported.max_memory_allocation_size,
             info,
             own,
+            formats,
         }))
+    }
+
+    /// The features `format` has on this device (`vkGetPhysicalDeviceFormatProperties`).
+    /// Callers pass only formats they have checked are core Vulkan formats, so that no unknown
+    /// value reaches Vulkan.
+    pub(crate) fn format_properties(&self, format: vk::Format) -> vk::FormatProperties {
+        let mut properties = vk::FormatProperties::default();
+        let FormatQuery { physical, get } = self.formats;
+        // SAFETY: `get` was loaded from the instance `physical` belongs to, which outlives this
+        // device (ffvk's own keeps it in `own`; a caller's by from_caller's contract), and
+        // `properties` is writable.
+        unsafe { get(physical, format, &mut properties) };
+        properties
     }
 
     /// The instance and queue of ffvk's own device. Only the renderer submits, and it

@@ -1,0 +1,101 @@
+//! A draw's raster state as C passes it ([`FfvkRaster`]), GL's defaults for it, and its
+//! conversion to ffvk's [`RasterState`] (which checks each value when the draw is staged:
+//! [`RasterState::validate`]).
+
+use ffvk::ash::vk;
+use ffvk::{Blend, RasterState};
+
+use crate::result::misaligned;
+use crate::vk_types::*;
+
+/// A draw's fixed-function raster state (GL's glCullFace/glFrontFace, depth and blend state,
+/// glPointSize, glLineWidth) in Vulkan's terms. `ffvkRasterDefaults` fills GL's initial
+/// values; a zeroed struct is not GL's defaults (depth writes off, depth compare NEVER, sizes
+/// 0, which draws refuse). `ffvkDraw` refuses (`FFVK_ERROR_INVALID_ARGUMENT`, naming the field
+/// and value) any other value than these: `cull_mode` bits of `VK_CULL_MODE_FRONT_AND_BACK`,
+/// `front_face` 0 or 1, `depth_compare` `VK_COMPARE_OP_NEVER` .. `ALWAYS` (0 .. 7), and while
+/// blending, factors `VK_BLEND_FACTOR_ZERO` .. `SRC_ALPHA_SATURATE` (0 .. 14; no dual-source
+/// factors) and equations `VK_BLEND_OP_ADD` .. `MAX` (0 .. 4).
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct FfvkRaster {
+    /// `GL_CULL_FACE` with glCullFace: `VK_CULL_MODE_NONE` (GL's default) or a face.
+    pub cull_mode: VkCullModeFlags,
+    /// glFrontFace: `VK_FRONT_FACE_COUNTER_CLOCKWISE` is GL's `GL_CCW` (the default).
+    pub front_face: VkFrontFace,
+    /// `GL_DEPTH_TEST` (needs a depth format).
+    pub depth_test: u8,
+    /// glDepthMask (GL's default: true; only while the depth test is on).
+    pub depth_write: u8,
+    /// glDepthFunc (GL's default: `VK_COMPARE_OP_LESS`).
+    pub depth_compare: VkCompareOp,
+    /// `GL_BLEND`; the factors and equations below apply when it is non-zero.
+    pub blend: u8,
+    /// Source factor for RGB.
+    pub src_color: VkBlendFactor,
+    /// Destination factor for RGB.
+    pub dst_color: VkBlendFactor,
+    /// Equation for RGB.
+    pub color_op: VkBlendOp,
+    /// Source factor for alpha.
+    pub src_alpha: VkBlendFactor,
+    /// Destination factor for alpha.
+    pub dst_alpha: VkBlendFactor,
+    /// Equation for alpha.
+    pub alpha_op: VkBlendOp,
+    /// glPointSize, in pixels (1 by default; another size needs `FFVK_FEATURE_LARGE_POINTS`).
+    pub point_size: f32,
+    /// glLineWidth, in pixels (1 by default; another width needs `FFVK_FEATURE_WIDE_LINES`).
+    pub line_width: f32,
+}
+
+pub(crate) fn raster(r: &FfvkRaster) -> RasterState {
+    let mut state = RasterState::default()
+        .with_depth_test(r.depth_test != 0)
+        .with_point_size(r.point_size)
+        .with_line_width(r.line_width);
+    state.cull_mode = r.cull_mode;
+    state.front_face = r.front_face;
+    state.depth_write = r.depth_write != 0;
+    state.depth_compare = r.depth_compare;
+    state.blend = (r.blend != 0).then(|| {
+        let mut b = Blend::new(r.src_color, r.dst_color, r.color_op);
+        b.src_alpha = r.src_alpha;
+        b.dst_alpha = r.dst_alpha;
+        b.alpha_op = r.alpha_op;
+        b
+    });
+    state
+}
+
+/// Fills `raster` with GL's initial raster state: no culling, `GL_CCW` front faces, depth
+/// test off with writes on and `GL_LESS`, blending off (factors ONE, ZERO, ADD), point size
+/// and line width 1.
+///
+/// # Safety
+///
+/// `raster` is null (ignored) or writable.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkRasterDefaults(raster: *mut FfvkRaster) {
+    if raster.is_null() || misaligned(raster) {
+        return;
+    }
+    let defaults = FfvkRaster {
+        cull_mode: vk::CullModeFlags::NONE,
+        front_face: vk::FrontFace::COUNTER_CLOCKWISE,
+        depth_test: 0,
+        depth_write: 1,
+        depth_compare: vk::CompareOp::LESS,
+        blend: 0,
+        src_color: vk::BlendFactor::ONE,
+        dst_color: vk::BlendFactor::ZERO,
+        color_op: vk::BlendOp::ADD,
+        src_alpha: vk::BlendFactor::ONE,
+        dst_alpha: vk::BlendFactor::ZERO,
+        alpha_op: vk::BlendOp::ADD,
+        point_size: 1.0,
+        line_width: 1.0,
+    };
+    // SAFETY: checked non-null; the caller's contract makes it writable.
+    unsafe { raster.write(defaults) };
+}

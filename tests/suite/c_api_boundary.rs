@@ -1,0 +1,360 @@
+//! The C boundary's checks that need a device (issue 46): formats and sample counts the
+//! device cannot render, counts that used to be allocated infallibly, and raster enums that
+//! used to reach Vulkan unchecked. Each value is refused with `FFVK_ERROR_INVALID_ARGUMENT`
+//! and a message naming the function, the field, the value and what was expected; the Rust
+//! API refuses the same values through the same checks.
+
+use std::ffi::CStr;
+
+use ffvk::ash::vk::{self, Handle};
+use ffvk_c::gl::*;
+use ffvk_c::render::*;
+use ffvk_c::result::{ffvkResultMessage, FfvkResult};
+
+use crate::embedding::PlainDevice;
+
+const GL_TRIANGLES: u32 = 0x0004;
+
+pub(crate) fn message() -> String {
+    // SAFETY: ffvkResultMessage never returns null; the string is valid until the next call.
+    unsafe { CStr::from_ptr(ffvkResultMessage()) }
+        .to_string_lossy()
+        .into_owned()
+}
+
+/// Positions and normals interleaved in one binding of 24 bytes.
+pub(crate) const BINDINGS: [vk::VertexInputBindingDescription; 1] = [vk::VertexInputBindingDescription {
+    binding: 0,
+    stride: 24,
+    input_rate: vk::VertexInputRate::VERTEX,
+}];
+
+/// A valid create info on `plain`'s device (dynamic rendering only), over [`BINDINGS`].
+pub(crate) fn create_info(plain: &PlainDevice) -> FfvkRendererCreateInfo {
+    let attribute = |offset| FfvkAttribute {
+        binding: 0,
+        offset,
+        format: vk::Format::R32G32B32_SFLOAT,
+    };
+    FfvkRendererCreateInfo {
+        struct_size: std::mem::size_of::<FfvkRendererCreateInfo>() as u32,
+        get_instance_proc_addr: Some(plain.entry.static_fn().get_instance_proc_addr),
+        instance: plain.instance.handle(),
+        physical_device: plain.physical,
+        device: plain.device.handle(),
+        enabled_features: FFVK_FEATURE_DYNAMIC_RENDERING,
+        color_format: vk::Format::R8G8B8A8_UNORM,
+        depth_format: vk::Format::D32_SFLOAT,
+        samples: vk::SampleCountFlags::TYPE_1,
+        bindings: BINDINGS.as_ptr(),
+        binding_count: 1,
+        position: attribute(0),
+        normal: attribute(12),
+        color: std::ptr::null(),
+        texcoord: std::ptr::null(),
+        frames_in_flight: 1,
+        set_index: 0,
+        pipeline_cache: vk::PipelineCache::null(),
+    }
+}
+
+/// Creates a renderer from `info`: the result, the message, and the renderer destroyed again
+/// when one was made.
+pub(crate) fn create(info: &FfvkRendererCreateInfo) -> (FfvkResult, String) {
+    let mut renderer = std::ptr::null_mut();
+    // SAFETY: the create info's handles are a live PlainDevice's; out is writable.
+    let result = unsafe { ffvkCreateRenderer(info, &mut renderer) };
+    let text = message();
+    assert_eq!(
+        renderer.is_null(),
+        result != FfvkResult::FFVK_SUCCESS,
+        "the out pointer and the result disagree: {result:?} {text}"
+    );
+    // SAFETY: null or a renderer just made, whose device is alive.
+    unsafe { ffvkDestroyRenderer(renderer) };
+    (result, text)
+}
+
+#[track_caller]
+fn assert_refused(info: &FfvkRendererCreateInfo, words: &[&str]) {
+    let (result, text) = create(info);
+    assert_eq!(result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT, "{text}");
+    assert!(text.starts_with("ffvkCreateRenderer: "), "{text}");
+    for word in words {
+        assert!(text.contains(word), "{text:?} does not name {word:?}");
+    }
+}
+
+#[test]
+fn a_renderer_asked_for_a_billion_frames_in_flight_is_refused_not_an_abort() {
+    let plain = PlainDevice::new();
+    for frames in [1_000_000_000, FFVK_MAX_FRAMES_IN_FLIGHT + 1] {
+        let info = FfvkRendererCreateInfo {
+            frames_in_flight: frames,
+            ..create_info(&plain)
+        };
+        assert_refused(&info, &[&format!("frames_in_flight is {frames}"), "expected 1..=64"]);
+    }
+    let most = FfvkRendererCreateInfo {
+        frames_in_flight: FFVK_MAX_FRAMES_IN_FLIGHT,
+        ..create_info(&plain)
+    };
+    let (result, text) = create(&most);
+    assert_eq!(result, FfvkResult::FFVK_SUCCESS, "{text}");
+}
+
+#[test]
+fn samples_the_device_cannot_render_are_refused_at_creation_naming_its_sample_counts() {
+    let plain = PlainDevice::new();
+    // SAFETY: the physical device is live.
+    let limits = unsafe { plain.instance.get_physical_device_properties(plain.physical) }.limits;
+    let supported = limits.framebuffer_color_sample_counts & limits.framebuffer_depth_sample_counts;
+    let mut refused = 0;
+    for bit in (0..7).map(|b| vk::SampleCountFlags::from_raw(1 << b)) {
+        let info = FfvkRendererCreateInfo {
+            samples: bit,
+            ..create_info(&plain)
+        };
+        if supported.contains(bit) {
+            let (result, text) = create(&info);
+            assert_eq!(result, FfvkResult::FFVK_SUCCESS, "{} samples: {text}", bit.as_raw());
+        } else {
+            let given = format!("samples {} is not supported by the device", bit.as_raw());
+            assert_refused(&info, &[&given, "expected one of 1", "SampleCounts)"]);
+            refused += 1;
+        }
+    }
+    assert!(refused > 0, "the device renders every sample count: 64 is not tested");
+}
+
+/// The features the device has for `format`, tilings together.
+fn features(plain: &PlainDevice, format: vk::Format) -> vk::FormatFeatureFlags {
+    // SAFETY: the physical device is live; format is a core format.
+    let p = unsafe {
+        plain
+            .instance
+            .get_physical_device_format_properties(plain.physical, format)
+    };
+    p.optimal_tiling_features | p.linear_tiling_features
+}
+
+#[test]
+fn color_formats_the_device_cannot_render_into_are_refused_naming_the_feature() {
+    let plain = PlainDevice::new();
+    // Float color formats (valid values) that devices commonly cannot render into.
+    let candidates = [
+        vk::Format::R8G8B8_UNORM,
+        vk::Format::R16G16B16_UNORM,
+        vk::Format::R64_SFLOAT,
+        vk::Format::R8_USCALED,
+        vk::Format::E5B9G9R9_UFLOAT_PACK32,
+    ];
+    let unsupported: Vec<vk::Format> = candidates
+        .into_iter()
+        .filter(|&f| !features(&plain, f).contains(vk::FormatFeatureFlags::COLOR_ATTACHMENT))
+        .collect();
+    assert!(!unsupported.is_empty(), "the device renders into each of {candidates:?}");
+    for format in unsupported {
+        let info = FfvkRendererCreateInfo {
+            color_format: format,
+            ..create_info(&plain)
+        };
+        let given = format!("color_format {format:?} is not supported by the device as COLOR_ATTACHMENT");
+        assert_refused(&info, &[&given]);
+    }
+    let depth_less = ffvk::ash::vk::Format::R8G8B8A8_UNORM;
+    assert!(!features(&plain, depth_less).contains(vk::FormatFeatureFlags::DEPTH_STENCIL_ATTACHMENT));
+}
+
+/// A default raster state (`ffvkRasterDefaults`).
+fn defaults() -> FfvkRaster {
+    let mut raster = std::mem::MaybeUninit::<FfvkRaster>::uninit();
+    // SAFETY: writable; ffvkRasterDefaults fills every field.
+    unsafe {
+        ffvkRasterDefaults(raster.as_mut_ptr());
+        raster.assume_init()
+    }
+}
+
+/// Raster states with one value Vulkan does not define (or ffvk does not pass on), each with
+/// the field and value its refusal names.
+pub(crate) fn bad_rasters() -> Vec<(FfvkRaster, &'static str, &'static str)> {
+    let d = defaults();
+    let blend = FfvkRaster { blend: 1, ..d };
+    vec![
+        (
+            FfvkRaster {
+                depth_compare: vk::CompareOp::from_raw(99),
+                ..d
+            },
+            "depth_compare 99",
+            "VK_COMPARE_OP_NEVER (0) .. VK_COMPARE_OP_ALWAYS (7)",
+        ),
+        (
+            FfvkRaster {
+                cull_mode: vk::CullModeFlags::from_raw(0x77),
+                ..d
+            },
+            "cull_mode 0x77",
+            "bits 0x3",
+        ),
+        (
+            FfvkRaster {
+                front_face: vk::FrontFace::from_raw(5),
+                ..d
+            },
+            "front_face 5",
+            "VK_FRONT_FACE_CLOCKWISE (1)",
+        ),
+        (
+            FfvkRaster {
+                src_color: vk::BlendFactor::from_raw(999),
+                ..blend
+            },
+            "src_color 999",
+            "VK_BLEND_FACTOR_SRC_ALPHA_SATURATE (14)",
+        ),
+        (
+            FfvkRaster {
+                dst_alpha: vk::BlendFactor::SRC1_COLOR,
+                ..blend
+            },
+            "dst_alpha 15",
+            "dual-source",
+        ),
+        (
+            FfvkRaster {
+                color_op: vk::BlendOp::from_raw(5),
+                ..blend
+            },
+            "color_op 5",
+            "VK_BLEND_OP_MAX (4)",
+        ),
+        (
+            FfvkRaster {
+                alpha_op: vk::BlendOp::MULTIPLY_EXT,
+                ..blend
+            },
+            "alpha_op 1000148012",
+            "VK_BLEND_OP_ADD (0)",
+        ),
+    ]
+}
+
+#[test]
+fn raster_enums_vulkan_does_not_define_are_refused_at_ffvk_draw_naming_field_and_value() {
+    let plain = PlainDevice::new();
+    let mut r = std::ptr::null_mut();
+    // SAFETY: a valid create info on a live device; out is writable.
+    let made = unsafe { ffvkCreateRenderer(&create_info(&plain), &mut r) };
+    assert_eq!(made, FfvkResult::FFVK_SUCCESS, "{}", message());
+    let ctx = ffvkCreateContext();
+    // A buffer handle that is never dereferenced: ffvkDraw only checks and stages.
+    let buffer = vk::Buffer::null();
+    let draw = |raster| FfvkDrawInfo {
+        struct_size: std::mem::size_of::<FfvkDrawInfo>() as u32,
+        mode: GL_TRIANGLES,
+        vertex_buffers: &buffer,
+        vertex_offsets: std::ptr::null(),
+        vertex_buffer_count: 1,
+        index_buffer: vk::Buffer::null(),
+        index_offset: 0,
+        index_type: vk::IndexType::UINT32,
+        first: 0,
+        count: 3,
+        vertex_offset: 0,
+        primitive_restart: 0,
+        raster,
+        texture: std::ptr::null(),
+    };
+    // SAFETY: live renderer and context; the command buffer is a placeholder ffvk never
+    // records into (the scope ends with nothing recorded: every draw but the last is
+    // refused, and the renderer is destroyed with its scope open).
+    unsafe {
+        assert_eq!(ffvkBeginFrame(r, 0), FfvkResult::FFVK_SUCCESS);
+        assert_eq!(
+            ffvkBeginDraws(r, vk::CommandBuffer::from_raw(0x1000), 0),
+            FfvkResult::FFVK_SUCCESS
+        );
+        for (raster, given, expected) in bad_rasters() {
+            let result = ffvkDraw(r, ctx, &draw(raster));
+            let text = message();
+            assert_eq!(result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT, "{given}: {text}");
+            assert!(text.starts_with("ffvkDraw: "), "{text}");
+            assert!(text.contains(given) && text.contains(expected), "{text:?} lacks {given:?} or {expected:?}");
+        }
+        // Blending off: the factors are not used, whatever they hold.
+        let unused = FfvkRaster {
+            src_color: vk::BlendFactor::from_raw(999),
+            ..defaults()
+        };
+        assert_eq!(ffvkDraw(r, ctx, &draw(unused)), FfvkResult::FFVK_SUCCESS, "{}", message());
+        ffvkDestroyRenderer(r);
+        ffvkDestroyContext(ctx);
+    }
+}
+
+#[test]
+fn the_rust_api_refuses_the_same_targets_layouts_and_raster_states_as_the_c_api() {
+    use ffvk::vk::{Device, EnabledFeatures};
+    use ffvk::{Attribute, Blend, Lighting, LightingError, LightingOptions, RasterState, Target, VertexInput};
+    let plain = PlainDevice::new();
+    // SAFETY: the device comes from this physical device and outlives every ffvk object here.
+    let device = unsafe {
+        Device::from_caller(
+            &plain.instance,
+            plain.physical,
+            plain.device.clone(),
+            EnabledFeatures::default().with_dynamic_rendering(true),
+        )
+    }
+    .unwrap();
+    let input = || {
+        VertexInput::new(
+            BINDINGS.to_vec(),
+            Attribute::new(0, 0, vk::Format::R32G32B32_SFLOAT),
+            Attribute::new(0, 12, vk::Format::R32G32B32_SFLOAT),
+        )
+    };
+    let lighting = |target: Target, input: VertexInput, frames: u32| {
+        Lighting::new(&device, &LightingOptions::new(target, input).with_frames_in_flight(frames))
+            .err()
+            .map(|e| e.to_string())
+    };
+    let color = Target::new(vk::Format::D32_SFLOAT, vk::Format::UNDEFINED);
+    let e = lighting(color, input(), 1).expect("a depth format as color");
+    assert!(e.contains("color_format D32_SFLOAT (126) is not a color format"), "{e}");
+    let depth = Target::new(vk::Format::R8G8B8A8_UNORM, vk::Format::R8G8B8A8_UNORM);
+    let e = lighting(depth, input(), 1).expect("a color format as depth");
+    assert!(e.contains("depth_format R8G8B8A8_UNORM (37) is not a depth format"), "{e}");
+    let mut samples = Target::OFFSCREEN;
+    samples.samples = vk::SampleCountFlags::TYPE_64;
+    let e = lighting(samples, input(), 1).expect("64 samples on lavapipe");
+    assert!(e.contains("samples 64 is not supported by the device"), "{e}");
+    samples.samples = vk::SampleCountFlags::from_raw(3);
+    assert_eq!(
+        samples.validate(),
+        Err(LightingError::Samples {
+            samples: vk::SampleCountFlags::from_raw(3)
+        })
+    );
+    let mut past = input();
+    past.normal.offset = 13;
+    let e = lighting(Target::OFFSCREEN, past, 1).expect("a normal past the stride");
+    assert!(e.contains("the normal attribute at offset 13"), "{e}");
+    let e = lighting(Target::OFFSCREEN, input(), 1_000_000_000).expect("a billion frames");
+    assert!(e.contains("frames_in_flight is 1000000000: expected 1..=64"), "{e}");
+    assert!(lighting(Target::OFFSCREEN, input(), 2).is_none());
+
+    let raster = RasterState::default().with_depth_compare(vk::CompareOp::from_raw(99));
+    let e = raster.validate().unwrap_err().to_string();
+    assert!(e.contains("depth_compare 99 is not accepted"), "{e}");
+    let blend = Blend::new(vk::BlendFactor::ONE, vk::BlendFactor::from_raw(999), vk::BlendOp::ADD);
+    let e = RasterState::default()
+        .with_blend(Some(blend))
+        .validate()
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("dst_color 999"), "{e}");
+    assert_eq!(RasterState::default().validate(), Ok(()));
+}
