@@ -15,14 +15,14 @@ use ffvk::gl::state::LightingState;
 use ffvk::glam::Mat4;
 use ffvk::vk::EnabledFeatures;
 use ffvk::{
-    Attribute, Geometry, Lighting, LightingOptions, LitDraw, RasterState, StagedDraw, Target,
-    TextureBinding, Topology, VertexInput,
+    Attribute, Geometry, Lighting, LightingOptions, LitDraw, RasterState, StagedDraw, Target, TextureBinding,
+    Topology, VertexInput,
 };
 
 mod raster;
 
-pub use raster::{ffvkRasterDefaults, FfvkRaster};
 use raster::raster;
+pub use raster::{ffvkRasterDefaults, FfvkRaster};
 
 use crate::enums::*;
 use crate::gl::FfvkContext;

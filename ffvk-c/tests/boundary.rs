@@ -1801,7 +1801,13 @@ fn create_renderer_refuses_an_attribute_that_ends_past_its_bindings_stride() {
         format: vk::Format::R8G8B8A8_UNORM,
     };
     info.color = &color;
-    assert_create_refused(&info, &["the color attribute at offset 21 (4 bytes", "expected offset + 4 <= stride"]);
+    assert_create_refused(
+        &info,
+        &[
+            "the color attribute at offset 21 (4 bytes",
+            "expected offset + 4 <= stride",
+        ],
+    );
 }
 
 #[test]
@@ -2171,8 +2177,23 @@ fn a_size_query_of_any_count_reads_and_allocates_nothing() {
     ] {
         let (mut written, mut draw_mode) = (0u32, u32::MAX);
         // SAFETY: a size query (out null) reads nothing from vertices, as the header says.
-        let r = unsafe { ffvkPrimitiveIndices(mode, one.as_ptr(), count, null_mut(), 0, &mut written, &mut draw_mode) };
-        assert_eq!(r, FfvkResult::FFVK_SUCCESS, "mode {mode}, count {count}: {}", message());
+        let r = unsafe {
+            ffvkPrimitiveIndices(
+                mode,
+                one.as_ptr(),
+                count,
+                null_mut(),
+                0,
+                &mut written,
+                &mut draw_mode,
+            )
+        };
+        assert_eq!(
+            r,
+            FfvkResult::FFVK_SUCCESS,
+            "mode {mode}, count {count}: {}",
+            message()
+        );
         assert_eq!(written, needed, "mode {mode}, count {count}");
     }
 }
@@ -2192,8 +2213,14 @@ fn primitive_indices_refuses_a_count_whose_indices_a_uint32_count_cannot_hold() 
         let (mut written, mut draw_mode) = (5u32, 5u32);
         for o in [null_mut(), out.as_mut_ptr()] {
             // SAFETY: refused from the count alone: neither vertices nor out is touched.
-            let r = unsafe { ffvkPrimitiveIndices(mode, one.as_ptr(), count, o, 4, &mut written, &mut draw_mode) };
-            assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT, "mode {mode}, count {count}");
+            let r = unsafe {
+                ffvkPrimitiveIndices(mode, one.as_ptr(), count, o, 4, &mut written, &mut draw_mode)
+            };
+            assert_eq!(
+                r,
+                FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                "mode {mode}, count {count}"
+            );
             let words = [
                 &format!("ffvkPrimitiveIndices: count {count} of mode {}", hex(mode)),
                 &format!("makes {needed} indices"),

@@ -103,7 +103,9 @@ pub use image;
 pub struct ReadmeDoctests;
 
 pub use draw::lighting::{DrawValues, Lighting, LightingOptions, LitDraw, StagedDraw, MAX_FRAMES_IN_FLIGHT};
-pub use draw::pipeline::{Attribute, Blend, RasterState, Specialize, Target, VertexInput, MAX_VERTEX_BINDINGS};
+pub use draw::pipeline::{
+    Attribute, Blend, RasterState, Specialize, Target, VertexInput, MAX_VERTEX_BINDINGS,
+};
 pub use draw::record::{Geometry, Topology};
 pub use draw::texture::TextureBinding;
 pub use error::{Error, LightingError, MeshError, Result, UnknownName};

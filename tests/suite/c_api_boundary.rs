@@ -93,7 +93,10 @@ fn a_renderer_asked_for_a_billion_frames_in_flight_is_refused_not_an_abort() {
             frames_in_flight: frames,
             ..create_info(&plain)
         };
-        assert_refused(&info, &[&format!("frames_in_flight is {frames}"), "expected 1..=64"]);
+        assert_refused(
+            &info,
+            &[&format!("frames_in_flight is {frames}"), "expected 1..=64"],
+        );
     }
     let most = FfvkRendererCreateInfo {
         frames_in_flight: FFVK_MAX_FRAMES_IN_FLIGHT,
@@ -117,14 +120,22 @@ fn samples_the_device_cannot_render_are_refused_at_creation_naming_its_sample_co
         };
         if supported.contains(bit) {
             let (result, text) = create(&info);
-            assert_eq!(result, FfvkResult::FFVK_SUCCESS, "{} samples: {text}", bit.as_raw());
+            assert_eq!(
+                result,
+                FfvkResult::FFVK_SUCCESS,
+                "{} samples: {text}",
+                bit.as_raw()
+            );
         } else {
             let given = format!("samples {} is not supported by the device", bit.as_raw());
             assert_refused(&info, &[&given, "expected one of 1", "SampleCounts)"]);
             refused += 1;
         }
     }
-    assert!(refused > 0, "the device renders every sample count: 64 is not tested");
+    assert!(
+        refused > 0,
+        "the device renders every sample count: 64 is not tested"
+    );
 }
 
 /// The features the device has for `format`, tilings together.
@@ -153,7 +164,10 @@ fn color_formats_the_device_cannot_render_into_are_refused_naming_the_feature() 
         .into_iter()
         .filter(|&f| !features(&plain, f).contains(vk::FormatFeatureFlags::COLOR_ATTACHMENT))
         .collect();
-    assert!(!unsupported.is_empty(), "the device renders into each of {candidates:?}");
+    assert!(
+        !unsupported.is_empty(),
+        "the device renders into each of {candidates:?}"
+    );
     for format in unsupported {
         let info = FfvkRendererCreateInfo {
             color_format: format,
@@ -281,14 +295,22 @@ fn raster_enums_vulkan_does_not_define_are_refused_at_ffvk_draw_naming_field_and
             let text = message();
             assert_eq!(result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT, "{given}: {text}");
             assert!(text.starts_with("ffvkDraw: "), "{text}");
-            assert!(text.contains(given) && text.contains(expected), "{text:?} lacks {given:?} or {expected:?}");
+            assert!(
+                text.contains(given) && text.contains(expected),
+                "{text:?} lacks {given:?} or {expected:?}"
+            );
         }
         // Blending off: the factors are not used, whatever they hold.
         let unused = FfvkRaster {
             src_color: vk::BlendFactor::from_raw(999),
             ..defaults()
         };
-        assert_eq!(ffvkDraw(r, ctx, &draw(unused)), FfvkResult::FFVK_SUCCESS, "{}", message());
+        assert_eq!(
+            ffvkDraw(r, ctx, &draw(unused)),
+            FfvkResult::FFVK_SUCCESS,
+            "{}",
+            message()
+        );
         ffvkDestroyRenderer(r);
         ffvkDestroyContext(ctx);
     }
@@ -297,7 +319,9 @@ fn raster_enums_vulkan_does_not_define_are_refused_at_ffvk_draw_naming_field_and
 #[test]
 fn the_rust_api_refuses_the_same_targets_layouts_and_raster_states_as_the_c_api() {
     use ffvk::vk::{Device, EnabledFeatures};
-    use ffvk::{Attribute, Blend, Lighting, LightingError, LightingOptions, RasterState, Target, VertexInput};
+    use ffvk::{
+        Attribute, Blend, Lighting, LightingError, LightingOptions, RasterState, Target, VertexInput,
+    };
     let plain = PlainDevice::new();
     // SAFETY: the device comes from this physical device and outlives every ffvk object here.
     let device = unsafe {
@@ -317,16 +341,25 @@ fn the_rust_api_refuses_the_same_targets_layouts_and_raster_states_as_the_c_api(
         )
     };
     let lighting = |target: Target, input: VertexInput, frames: u32| {
-        Lighting::new(&device, &LightingOptions::new(target, input).with_frames_in_flight(frames))
-            .err()
-            .map(|e| e.to_string())
+        Lighting::new(
+            &device,
+            &LightingOptions::new(target, input).with_frames_in_flight(frames),
+        )
+        .err()
+        .map(|e| e.to_string())
     };
     let color = Target::new(vk::Format::D32_SFLOAT, vk::Format::UNDEFINED);
     let e = lighting(color, input(), 1).expect("a depth format as color");
-    assert!(e.contains("color_format D32_SFLOAT (126) is not a color format"), "{e}");
+    assert!(
+        e.contains("color_format D32_SFLOAT (126) is not a color format"),
+        "{e}"
+    );
     let depth = Target::new(vk::Format::R8G8B8A8_UNORM, vk::Format::R8G8B8A8_UNORM);
     let e = lighting(depth, input(), 1).expect("a color format as depth");
-    assert!(e.contains("depth_format R8G8B8A8_UNORM (37) is not a depth format"), "{e}");
+    assert!(
+        e.contains("depth_format R8G8B8A8_UNORM (37) is not a depth format"),
+        "{e}"
+    );
     let mut samples = Target::OFFSCREEN;
     samples.samples = vk::SampleCountFlags::TYPE_64;
     let e = lighting(samples, input(), 1).expect("64 samples on lavapipe");
@@ -343,13 +376,20 @@ fn the_rust_api_refuses_the_same_targets_layouts_and_raster_states_as_the_c_api(
     let e = lighting(Target::OFFSCREEN, past, 1).expect("a normal past the stride");
     assert!(e.contains("the normal attribute at offset 13"), "{e}");
     let e = lighting(Target::OFFSCREEN, input(), 1_000_000_000).expect("a billion frames");
-    assert!(e.contains("frames_in_flight is 1000000000: expected 1..=64"), "{e}");
+    assert!(
+        e.contains("frames_in_flight is 1000000000: expected 1..=64"),
+        "{e}"
+    );
     assert!(lighting(Target::OFFSCREEN, input(), 2).is_none());
 
     let raster = RasterState::default().with_depth_compare(vk::CompareOp::from_raw(99));
     let e = raster.validate().unwrap_err().to_string();
     assert!(e.contains("depth_compare 99 is not accepted"), "{e}");
-    let blend = Blend::new(vk::BlendFactor::ONE, vk::BlendFactor::from_raw(999), vk::BlendOp::ADD);
+    let blend = Blend::new(
+        vk::BlendFactor::ONE,
+        vk::BlendFactor::from_raw(999),
+        vk::BlendOp::ADD,
+    );
     let e = RasterState::default()
         .with_blend(Some(blend))
         .validate()

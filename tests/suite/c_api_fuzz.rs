@@ -59,7 +59,12 @@ fn valid(plain: &PlainDevice, info: &FfvkRendererCreateInfo) -> bool {
             counts &= limits.framebuffer_stencil_sample_counts;
         }
         (
-            is_depth && has(plain, info.depth_format, vk::FormatFeatureFlags::DEPTH_STENCIL_ATTACHMENT),
+            is_depth
+                && has(
+                    plain,
+                    info.depth_format,
+                    vk::FormatFeatureFlags::DEPTH_STENCIL_ATTACHMENT,
+                ),
             counts,
         )
     };
@@ -99,18 +104,37 @@ fn generated_create_infos_make_a_renderer_exactly_when_every_value_is_valid() {
             let expected = valid(&plain, &info);
             if expected {
                 accepted.set(accepted.get() + 1);
-                prop_assert_eq!(result, FfvkResult::FFVK_SUCCESS, "refused a valid create info: {}", text);
+                prop_assert_eq!(
+                    result,
+                    FfvkResult::FFVK_SUCCESS,
+                    "refused a valid create info: {}",
+                    text
+                );
             } else {
-                prop_assert_eq!(result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT, "accepted: {}", text);
-                let named = ["color_format", "depth_format", "samples", "normal attribute", "frames_in_flight"]
-                    .iter()
-                    .any(|field| text.contains(field));
+                prop_assert_eq!(
+                    result,
+                    FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                    "accepted: {}",
+                    text
+                );
+                let named = [
+                    "color_format",
+                    "depth_format",
+                    "samples",
+                    "normal attribute",
+                    "frames_in_flight",
+                ]
+                .iter()
+                .any(|field| text.contains(field));
                 prop_assert!(text.starts_with("ffvkCreateRenderer: ") && named, "{}", text);
             }
             Ok(())
         })
         .unwrap_or_else(|e| panic!("{e}"));
-    assert!(accepted.get() > 0, "no generated create info was valid: the oracle or the generator is off");
+    assert!(
+        accepted.get() > 0,
+        "no generated create info was valid: the oracle or the generator is off"
+    );
     assert_eq!(BINDINGS[0].stride, 24, "the oracle's element size");
 }
 
@@ -121,7 +145,9 @@ fn valid_raster(r: &FfvkRaster) -> bool {
         || [r.src_color, r.dst_color, r.src_alpha, r.dst_alpha]
             .iter()
             .all(|f| (0..=14).contains(&f.as_raw()))
-            && [r.color_op, r.alpha_op].iter().all(|op| (0..=4).contains(&op.as_raw()));
+            && [r.color_op, r.alpha_op]
+                .iter()
+                .all(|op| (0..=4).contains(&op.as_raw()));
     r.cull_mode.as_raw() <= 3
         && (0..=1).contains(&r.front_face.as_raw())
         && (0..=7).contains(&r.depth_compare.as_raw())
@@ -149,56 +175,73 @@ fn generated_raster_states_are_drawn_exactly_when_every_enum_is_one_vulkan_defin
     let factor = || raw_i32(-1..20);
     let op = || raw_i32(-1..7);
     let values = (
-        (prop_oneof![4 => 0..6u32, 1 => any::<u32>()], raw_i32(-1..3), raw_i32(-1..10), any::<bool>()),
+        (
+            prop_oneof![4 => 0..6u32, 1 => any::<u32>()],
+            raw_i32(-1..3),
+            raw_i32(-1..10),
+            any::<bool>(),
+        ),
         (factor(), factor(), op(), factor(), factor(), op()),
     );
     let (drawn, refused) = (std::cell::Cell::new(0u32), std::cell::Cell::new(0u32));
-    let outcome = runner(96).run(&values, |((cull, front, compare, blend), (sc, dc, co, sa, da, ao))| {
-        let raster = FfvkRaster {
-            cull_mode: vk::CullModeFlags::from_raw(cull),
-            front_face: vk::FrontFace::from_raw(front),
-            depth_test: 1,
-            depth_write: 1,
-            depth_compare: vk::CompareOp::from_raw(compare),
-            blend: blend as u8,
-            src_color: vk::BlendFactor::from_raw(sc),
-            dst_color: vk::BlendFactor::from_raw(dc),
-            color_op: vk::BlendOp::from_raw(co),
-            src_alpha: vk::BlendFactor::from_raw(sa),
-            dst_alpha: vk::BlendFactor::from_raw(da),
-            alpha_op: vk::BlendOp::from_raw(ao),
-            point_size: 1.0,
-            line_width: 1.0,
-        };
-        let draw = FfvkDrawInfo {
-            struct_size: std::mem::size_of::<FfvkDrawInfo>() as u32,
-            mode: 0x0004,
-            vertex_buffers: &buffer,
-            vertex_offsets: std::ptr::null(),
-            vertex_buffer_count: 1,
-            index_buffer: vk::Buffer::null(),
-            index_offset: 0,
-            index_type: vk::IndexType::UINT32,
-            first: 0,
-            count: 3,
-            vertex_offset: 0,
-            primitive_restart: 0,
-            raster,
-            texture: std::ptr::null(),
-        };
-        // SAFETY: live renderer and context, an open scope; the draw is only staged.
-        let result = unsafe { ffvkDraw(r, ctx, &draw) };
-        let text = message();
-        if valid_raster(&raster) {
-            drawn.set(drawn.get() + 1);
-            prop_assert_eq!(result, FfvkResult::FFVK_SUCCESS, "refused {:?}: {}", raster, text);
-        } else {
-            refused.set(refused.get() + 1);
-            prop_assert_eq!(result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT, "drew {:?}", raster);
-            prop_assert!(text.starts_with("ffvkDraw: ") && text.contains("is not accepted: expected"), "{}", text);
-        }
-        Ok::<(), TestCaseError>(())
-    });
+    let outcome = runner(96).run(
+        &values,
+        |((cull, front, compare, blend), (sc, dc, co, sa, da, ao))| {
+            let raster = FfvkRaster {
+                cull_mode: vk::CullModeFlags::from_raw(cull),
+                front_face: vk::FrontFace::from_raw(front),
+                depth_test: 1,
+                depth_write: 1,
+                depth_compare: vk::CompareOp::from_raw(compare),
+                blend: blend as u8,
+                src_color: vk::BlendFactor::from_raw(sc),
+                dst_color: vk::BlendFactor::from_raw(dc),
+                color_op: vk::BlendOp::from_raw(co),
+                src_alpha: vk::BlendFactor::from_raw(sa),
+                dst_alpha: vk::BlendFactor::from_raw(da),
+                alpha_op: vk::BlendOp::from_raw(ao),
+                point_size: 1.0,
+                line_width: 1.0,
+            };
+            let draw = FfvkDrawInfo {
+                struct_size: std::mem::size_of::<FfvkDrawInfo>() as u32,
+                mode: 0x0004,
+                vertex_buffers: &buffer,
+                vertex_offsets: std::ptr::null(),
+                vertex_buffer_count: 1,
+                index_buffer: vk::Buffer::null(),
+                index_offset: 0,
+                index_type: vk::IndexType::UINT32,
+                first: 0,
+                count: 3,
+                vertex_offset: 0,
+                primitive_restart: 0,
+                raster,
+                texture: std::ptr::null(),
+            };
+            // SAFETY: live renderer and context, an open scope; the draw is only staged.
+            let result = unsafe { ffvkDraw(r, ctx, &draw) };
+            let text = message();
+            if valid_raster(&raster) {
+                drawn.set(drawn.get() + 1);
+                prop_assert_eq!(result, FfvkResult::FFVK_SUCCESS, "refused {:?}: {}", raster, text);
+            } else {
+                refused.set(refused.get() + 1);
+                prop_assert_eq!(
+                    result,
+                    FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                    "drew {:?}",
+                    raster
+                );
+                prop_assert!(
+                    text.starts_with("ffvkDraw: ") && text.contains("is not accepted: expected"),
+                    "{}",
+                    text
+                );
+            }
+            Ok::<(), TestCaseError>(())
+        },
+    );
     // SAFETY: the renderer and context are live and not used after this.
     unsafe {
         ffvkDestroyRenderer(r);
@@ -206,5 +249,8 @@ fn generated_raster_states_are_drawn_exactly_when_every_enum_is_one_vulkan_defin
     }
     outcome.unwrap_or_else(|e| panic!("{e}"));
     let (drawn, refused) = (drawn.get(), refused.get());
-    assert!(drawn > 0 && refused > 0, "{drawn} drawn, {refused} refused: the generator is off");
+    assert!(
+        drawn > 0 && refused > 0,
+        "{drawn} drawn, {refused} refused: the generator is off"
+    );
 }

@@ -3,9 +3,9 @@
 //! [`lighting::Lighting`], which puts them together for
 //! a caller's device and command buffers.
 
+mod formats;
 pub mod gl_primitives;
 pub mod lighting;
-mod formats;
 mod lit;
 pub mod pipeline;
 mod raster;

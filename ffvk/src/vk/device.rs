@@ -282,7 +282,15 @@ impl Device {
             queue,
             queue_family,
         };
-        Device::assemble(raw, memory, &props, &supported, info, (Some(own), formats), allocator)
+        Device::assemble(
+            raw,
+            memory,
+            &props,
+            &supported,
+            info,
+            (Some(own), formats),
+            allocator,
+        )
     }
 
     /// Wraps a device the caller created and keeps: ffvk creates its objects on it and frees
@@ -389,7 +397,15 @@ impl Device {
             _ => DeviceAllocator::own(instance, &device, physical_device),
         };
         let formats = FormatQuery::new(instance, physical_device);
-        Device::assemble(device, memory, &props, &supported, info, (None, formats), allocator)
+        Device::assemble(
+            device,
+            memory,
+            &props,
+            &supported,
+            info,
+            (None, formats),
+            allocator,
+        )
     }
 
     /// The device value of either constructor, with its allocator. A failed allocator
