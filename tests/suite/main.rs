@@ -5,6 +5,7 @@ mod browser;
 mod c_api_example;
 mod c_api_renderer;
 mod c_api_state;
+mod cli;
 mod conformance;
 mod deferred;
 mod determinism;
