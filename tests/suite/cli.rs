@@ -218,3 +218,209 @@ fn results_merge_refuses_rows_that_are_not_the_suites_scenes() {
         "an index in two shards",
     );
 }
+
+// ---------------------------------------------------------------------------------------------
+// stdout
+
+#[test]
+fn a_full_stdout_is_an_error_naming_stdout_not_a_panic() {
+    let dir = scratch("full-stdout");
+    let image = dir.join("a.png");
+    image::RgbaImage::new(4, 4).save(&image).unwrap();
+    let results = results_file(&dir, "whole.json", None, 6, 6, six_rows());
+    let scenes = dir.join("scenes");
+    let scene = ffvk_cli::bench::generate_scenes(&scenes, 2, 16)
+        .unwrap()
+        .remove(0);
+    let teapot = dir.join("t.gltf");
+    let gltf = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/teapot.gltf");
+    let one = dir.join("one.png");
+    let many = dir.join("many");
+    let cases: [Vec<&dyn AsRef<std::ffi::OsStr>>; 7] = [
+        vec![&"info"],
+        vec![&"teapot", &"--level", &"1", &"-o", &teapot],
+        vec![&"compare", &image, &image],
+        vec![&"results", &"merge", &results],
+        vec![&"scene", &gltf],
+        vec![&"render", &scene, &"-o", &one],
+        vec![&"render", &scenes, &"--out", &many, &"--jobs", &"1"],
+    ];
+    for args in cases {
+        let what = args
+            .iter()
+            .map(|a| a.as_ref().to_string_lossy().into_owned())
+            .collect::<Vec<_>>()
+            .join(" ");
+        let full = std::fs::OpenOptions::new().write(true).open("/dev/full").unwrap();
+        let child = ffvk_command(&args)
+            .stdout(Stdio::from(full))
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        let (_, out) = finish_within(child, 120, &what);
+        assert_refused(&out, &["stdout", "No space left on device"], &what);
+    }
+}
+
+#[test]
+fn a_closed_stdout_pipe_ends_ffvk_with_a_failure_status_and_no_panic() {
+    for args in [vec!["info"], vec!["scene", "assets/teapot.gltf"]] {
+        let mut child = ffvk_command(&args.iter().map(|a| a as _).collect::<Vec<_>>())
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        // The read end closed before ffvk writes its first line.
+        drop(child.stdout.take());
+        let (status, out) = finish_within(child, 60, &args.join(" "));
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
+        assert!(!status.success(), "{args:?}: a failure status, not success");
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Output names
+
+#[test]
+fn an_output_named_for_another_kind_of_file_is_refused_and_not_written() {
+    let dir = scratch("kinds");
+    let scenes = dir.join("scenes");
+    let scene = ffvk_cli::bench::generate_scenes(&scenes, 1, 16)
+        .unwrap()
+        .remove(0);
+    let gltf = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/teapot.gltf");
+    let image = dir.join("a.png");
+    image::RgbaImage::new(4, 4).save(&image).unwrap();
+    let results = results_file(&dir, "whole.json", None, 6, 6, six_rows());
+    let out_dir = dir.join("out");
+    let t_png = dir.join("t.png");
+    let t_glb = dir.join("t.glb");
+    let s_png = dir.join("s.png");
+    let r_jpg = dir.join("r.jpg");
+    let j_xml = dir.join("j.xml");
+    let x_json = dir.join("x.json");
+    let m_txt = dir.join("m.txt");
+    let d_txt = dir.join("d.txt");
+    let cases: [(Vec<&dyn AsRef<std::ffi::OsStr>>, &Path, &str); 9] = [
+        (vec![&"teapot", &"-o", &t_png], &t_png, ".gltf"),
+        (vec![&"teapot", &"-o", &t_glb], &t_glb, ".gltf"),
+        (vec![&"scene", &gltf, &"-o", &s_png], &s_png, ".toml"),
+        (vec![&"render", &scene, &"-o", &r_jpg], &r_jpg, ".png"),
+        (
+            vec![&"render", &scenes, &"--out", &out_dir, &"--json", &j_xml],
+            &j_xml,
+            ".json",
+        ),
+        (
+            vec![&"render", &scenes, &"--out", &out_dir, &"--junit", &x_json],
+            &x_json,
+            ".xml",
+        ),
+        (
+            vec![&"results", &"merge", &results, &"--json", &m_txt],
+            &m_txt,
+            ".json",
+        ),
+        (
+            vec![&"results", &"merge", &results, &"--junit", &m_txt],
+            &m_txt,
+            ".xml",
+        ),
+        (
+            vec![&"compare", &image, &image, &"--diff", &d_txt],
+            &d_txt,
+            ".png",
+        ),
+    ];
+    for (args, written, expected) in cases {
+        let what = args
+            .iter()
+            .map(|a| a.as_ref().to_string_lossy().into_owned())
+            .collect::<Vec<_>>()
+            .join(" ");
+        let out = run(&args, 120);
+        let name = written.file_name().unwrap().to_string_lossy();
+        assert_refused(&out, &[&name, expected], &what);
+        assert!(!written.exists(), "{what}: {} was written", written.display());
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Numbers
+
+#[test]
+fn a_negative_value_reaches_its_options_own_check() {
+    let gltf = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/teapot.gltf");
+    let dir = scratch("negative");
+    let image = dir.join("a.png");
+    image::RgbaImage::new(4, 4).save(&image).unwrap();
+    let out = dir.join("out");
+    // (command line, the option, the value), each refused before anything is drawn.
+    let render = |option: &'static str, value: &'static str| {
+        let args: Vec<&dyn AsRef<std::ffi::OsStr>> =
+            vec![&"render", &gltf, &"--out", &out, &"--lighting", &"vertex,flat"];
+        (args, option, value)
+    };
+    let mut cases = vec![
+        render("--zoom", "-1"),
+        render("--exposure", "-1"),
+        render("--elevation", "-91"),
+        render("--jobs", "-1"),
+        render("--timeout", "-1"),
+        render("--size", "-1x5"),
+        render("--threshold", "-1"),
+        render("--max-share", "-1"),
+        render("--max-flip", "-1"),
+        render("--max-mesh-mib", "-1"),
+        render("--background", "-1,0,0"),
+        render("--partition", "-1/2"),
+    ];
+    let explain: Vec<&dyn AsRef<std::ffi::OsStr>> = vec![&"explain", &gltf];
+    cases.push((explain.clone(), "--pixel", "-1,0"));
+    cases.push((vec![&"teapot", &"-o", &"unused.gltf"], "--level", "-1"));
+    cases.push((vec![&"compare", &image, &image], "--max-share", "-0.5"));
+    for option in [
+        "--draws",
+        "--warmup",
+        "--frames",
+        "--lp-threads",
+        "--scenes",
+        "--jobs",
+    ] {
+        cases.push((vec![&"bench", &"--out", &out], option, "-1"));
+    }
+    for (mut args, option, value) in cases {
+        args.push(&option);
+        args.push(&value);
+        let what = format!("{} {option} {value}", args[0].as_ref().to_string_lossy());
+        let result = run(&args, 60);
+        assert!(
+            !text(&result).contains("unexpected argument"),
+            "{what}: {}",
+            text(&result)
+        );
+        assert_refused(&result, &[option, value], &what);
+    }
+    assert!(!out.exists(), "nothing was written");
+}
+
+// ---------------------------------------------------------------------------------------------
+// bench
+
+#[test]
+fn bench_refuses_an_output_folder_that_is_a_file_before_it_measures() {
+    let dir = scratch("bench-out");
+    let file = dir.join("results.txt");
+    std::fs::write(&file, "kept").unwrap();
+    for sweep in ["quick", "jobs"] {
+        // The quick sweep takes over a minute here: a refusal comes in seconds.
+        let out = run(
+            &[&"bench", &"--sweep", &sweep, &"--no-progress", &"-o", &file],
+            20,
+        );
+        assert_refused(&out, &["results.txt", "folder"], sweep);
+        assert_eq!(std::fs::read_to_string(&file).unwrap(), "kept");
+    }
+}
