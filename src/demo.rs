@@ -351,12 +351,12 @@ pub fn run(options: &RendererOptions, out: &Path) -> Result<()> {
     let sheet = contact_sheet(&labelled, 5)?;
     let path = out.join("contact_sheet.png");
     save_png(&sheet, &path)?;
-    println!(
+    crate::outln!(
         "wrote {} and {} panels in {}",
         path.display(),
         labelled.len(),
         out.display()
-    );
+    )?;
     let textured = texture_panels(&mut renderer, 256)?;
     for (name, image) in &textured {
         let file = name.replace(", separate specular", "_separate");
@@ -365,7 +365,7 @@ pub fn run(options: &RendererOptions, out: &Path) -> Result<()> {
     let sheet = contact_sheet(&textured, 5)?;
     let path = out.join("texture_sheet.png");
     save_png(&sheet, &path)?;
-    println!("wrote {} (the texture environment modes)", path.display());
+    crate::outln!("wrote {} (the texture environment modes)", path.display())?;
     let models = model_panels(&mut renderer, 256)?;
     for p in &models {
         save_png(&p.image, &out.join("models").join(format!("{}.png", p.name)))?;
@@ -374,10 +374,10 @@ pub fn run(options: &RendererOptions, out: &Path) -> Result<()> {
     let sheet = contact_sheet(&labelled, 4)?;
     let path = out.join("models_sheet.png");
     save_png(&sheet, &path)?;
-    println!(
+    crate::outln!(
         "wrote {} (Blinn against Phong, hard against soft spot edges)",
         path.display()
-    );
+    )?;
     let gltf = gltf_panels(
         &mut renderer,
         &Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/gltf"),
@@ -389,11 +389,11 @@ pub fn run(options: &RendererOptions, out: &Path) -> Result<()> {
     let sheet = contact_sheet(&gltf, 3)?;
     let path = out.join("gltf_sheet.png");
     save_png(&sheet, &path)?;
-    println!(
+    crate::outln!(
         "wrote {} ({} glTF files drawn directly)",
         path.display(),
         gltf.len()
-    );
+    )?;
     Ok(())
 }
 

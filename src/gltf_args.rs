@@ -26,11 +26,11 @@ pub struct GltfArgs {
     pub elevation: Option<f32>,
     /// glTF files only: how much nearer than the fit (the bounds inside 90 % of the image)
     /// the framing camera comes: 2 is twice as near, 0.5 twice as far; default 1.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub zoom: Option<f32>,
     /// glTF files only: the background, as R,G,B or R,G,B,A from 0 to 1, or #RRGGBB;
     /// default: 0.2 grey.
-    #[arg(long, value_name = "COLOR", value_parser = parse_color)]
+    #[arg(long, value_name = "COLOR", value_parser = parse_color, allow_hyphen_values = true)]
     pub background: Option<[f32; 4]>,
     /// glTF files only: "file" (its KHR_lights_punctual lights), "headlight" (one white light
     /// from the camera) or "auto" (the file's, else the headlight; the default).
@@ -44,7 +44,7 @@ pub struct GltfArgs {
     /// glTF files only: GL light color per lux or candela, or "auto" (the default: the scale
     /// at which the file's lights together light the center of the scene's bounds with
     /// illuminance 0.75, where 1 is a white light falling head-on; the scale is printed).
-    #[arg(long, value_parser = parse_exposure)]
+    #[arg(long, value_parser = parse_exposure, allow_negative_numbers = true)]
     pub exposure: Option<Exposure>,
 }
 

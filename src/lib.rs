@@ -5,6 +5,7 @@
 //! does none of that. A library target of its own so that the test suite can reach them.
 
 pub mod bench;
+pub mod console;
 pub mod demo;
 pub mod explain;
 pub mod gl_reference;
@@ -41,6 +42,11 @@ pub enum Error {
     /// A file that could not be written.
     #[error("cannot write {}: {source}", .path.display())]
     Write { path: PathBuf, source: std::io::Error },
+
+    /// Standard output that could not take what was printed (a full disk, a closed
+    /// descriptor): see [`console`].
+    #[error("stdout: {0}")]
+    Stdout(std::io::Error),
 
     /// A benchmark report that could not be serialized.
     #[error("cannot write {}: {source}", .path.display())]

@@ -50,7 +50,7 @@ enum Command {
         /// Write the scene here (its glTF path made relative to it) instead of to stdout.
         #[arg(short, long)]
         out: Option<PathBuf>,
-        #[arg(long, value_parser = cli::common::parse_size)]
+        #[arg(long, value_parser = cli::common::parse_size, allow_hyphen_values = true)]
         size: Option<(u32, u32)>,
         #[command(flatten)]
         choices: ffvk_cli::gltf_args::GltfArgs,
@@ -60,7 +60,8 @@ enum Command {
     /// Write the Utah teapot (Newell's patches) as a glTF file.
     Teapot {
         /// Tessellation level: each patch becomes LEVEL×LEVEL quads.
-        #[arg(long, default_value_t = 8)]
+        #[arg(long, default_value_t = 8, allow_negative_numbers = true,
+              value_parser = clap::value_parser!(u32).range(1..=i64::from(ffvk::mesh::teapot::MAX_LEVEL)))]
         level: u32,
         #[arg(short, long, default_value = "assets/teapot.gltf")]
         out: PathBuf,
@@ -110,7 +111,7 @@ fn main() -> ExitCode {
     match run(Cli::parse()) {
         Ok(code) => code,
         Err(e) => {
-            eprintln!("ffvk: error: {e}");
+            ffvk_cli::errln!("ffvk: error: {e}");
             // 2, not 1: 1 means a comparison ran and found a difference.
             ExitCode::from(2)
         }

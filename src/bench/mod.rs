@@ -61,6 +61,9 @@ pub fn default_lp_threads() -> usize {
     std::thread::available_parallelism().map_or(1, |n| n.get())
 }
 
+/// The most warm-up or measured frames per point `--warmup` and `--frames` take.
+const MAX_FRAMES: i64 = 100_000;
+
 /// `ffvk bench`'s options.
 #[derive(Debug, Clone, clap::Args)]
 pub struct BenchArgs {
@@ -79,11 +82,13 @@ pub struct BenchArgs {
     #[arg(long, default_value = "auto", value_parser = ["auto", "quick", "standard", "full", "gpu", "paths", "jobs"])]
     pub sweep: String,
     /// `--sweep jobs`: scenes in the generated suite (128² each).
-    #[arg(long, default_value_t = 200, value_parser = clap::value_parser!(u32).range(1..=100_000))]
+    #[arg(long, default_value_t = 200, value_parser = clap::value_parser!(u32).range(1..=100_000),
+          allow_negative_numbers = true)]
     pub scenes: u32,
     /// `--sweep jobs`: the numbers of workers to time, comma-separated (default: 1, 2, the
     /// powers of two below the CPU count and the CPU count).
-    #[arg(long, value_delimiter = ',', value_parser = clap::value_parser!(u32).range(1..=1024))]
+    #[arg(long, value_delimiter = ',', value_parser = clap::value_parser!(u32).range(1..=1024),
+          allow_negative_numbers = true)]
     pub jobs: Vec<u32>,
     /// Same as `--sweep quick`.
     #[arg(long, conflicts_with_all = ["full", "sweep"])]
@@ -92,18 +97,22 @@ pub struct BenchArgs {
     #[arg(long, conflicts_with = "sweep")]
     pub full: bool,
     /// Draws of the mesh per frame (default: the sweep's; 1 but in the gpu sweep).
-    #[arg(long)]
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_DRAWS)),
+          allow_negative_numbers = true)]
     pub draws: Option<u32>,
     /// Warm-up frames per point (default: the sweep's).
-    #[arg(long)]
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_FRAMES),
+          allow_negative_numbers = true)]
     pub warmup: Option<u32>,
-    /// Measured frames per point (default: the sweep's).
-    #[arg(long)]
+    /// Measured frames per point (default: the sweep's); in the jobs sweep, runs per number
+    /// of workers.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_FRAMES),
+          allow_negative_numbers = true)]
     pub frames: Option<u32>,
     /// Rasterizer threads for lavapipe and llvmpipe's GL (sets LP_NUM_THREADS before the
     /// Vulkan instance exists). Default: LP_NUM_THREADS if set, else the number of CPUs.
-    #[arg(long)]
-    pub lp_threads: Option<usize>,
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024), allow_negative_numbers = true)]
+    pub lp_threads: Option<u32>,
     /// Leave out the OpenGL anchor.
     #[arg(long)]
     pub no_gl: bool,
@@ -124,6 +133,7 @@ pub struct BenchArgs {
 /// it first thing); library users and tests call [`run_sweep`] and [`write_outputs`].
 /// `program` is ffvk's own executable: the jobs sweep starts its workers from it.
 pub fn run(args: &BenchArgs, options: &RendererOptions, program: &std::path::Path) -> Result<()> {
+    claim_out_dir(&args.out)?;
     if args.sweep == "jobs" {
         // Before LP_NUM_THREADS is pinned for this process: each number of workers gets its
         // own default unless --lp-threads fixes one for all.
@@ -188,9 +198,9 @@ pub fn run(args: &BenchArgs, options: &RendererOptions, program: &std::path::Pat
     let report = run_sweep(&config, options, &progress)?;
     progress.finish_and_clear();
     let written = write_outputs(&report, &args.out)?;
-    print!("{}", markdown(&report));
-    println!();
-    println!(
+    crate::out!("{}", markdown(&report))?;
+    crate::outln!()?;
+    crate::outln!(
         "{} points in {:.0} s; wrote {}",
         report.results.len(),
         started.elapsed().as_secs_f64(),
@@ -199,8 +209,24 @@ pub fn run(args: &BenchArgs, options: &RendererOptions, program: &std::path::Pat
             .map(|p| p.display().to_string())
             .collect::<Vec<_>>()
             .join(", ")
-    );
+    )?;
     Ok(())
+}
+
+/// Makes `dir`, the folder a sweep's outputs go to, before anything is measured: a file there,
+/// or a folder that cannot be made, is refused at once rather than after minutes of sweep.
+fn claim_out_dir(dir: &std::path::Path) -> Result<()> {
+    if dir.exists() && !dir.is_dir() {
+        return Err(Error::Path {
+            path: dir.to_path_buf(),
+            problem: "is a file, but bench writes its results (CSV, JSON, Markdown, plots) into a \
+                      folder: expected a folder for -o",
+        });
+    }
+    std::fs::create_dir_all(dir).map_err(|source| Error::Write {
+        path: dir.to_path_buf(),
+        source,
+    })
 }
 
 /// `ffvk bench --sweep jobs`: writes the suite under `--out`, prints and writes the table.
@@ -218,16 +244,16 @@ fn run_jobs(args: &BenchArgs, options: &RendererOptions, program: &std::path::Pa
     let started = Instant::now();
     let report = run_jobs_sweep(&config, options, program, &dir, &mut |step| {
         if !args.no_progress {
-            eprintln!("{step}");
+            crate::errln!("{step}");
         }
     })?;
-    println!("{}", jobs_markdown(&report));
-    println!(
+    crate::outln!("{}", jobs_markdown(&report))?;
+    crate::outln!(
         "{:.0} s; wrote {} and {}",
         started.elapsed().as_secs_f64(),
         dir.join("jobs.md").display(),
         dir.join("jobs.json").display()
-    );
+    )?;
     Ok(())
 }
 

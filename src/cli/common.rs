@@ -18,7 +18,7 @@ pub(crate) struct Global {
     pub(crate) validate: bool,
     /// The host memory a scene's meshes may take, in MiB (the device holds as much again).
     #[arg(long, global = true, value_name = "MIB", default_value_t = ffvk::scene::DEFAULT_MESH_BYTES >> 20,
-          value_parser = clap::value_parser!(u64).range(1..=1 << 24))]
+          value_parser = parse_mib, allow_negative_numbers = true)]
     pub(crate) max_mesh_mib: u64,
     /// Let glTF buffer URIs reach files inside DIR too (by default only the glTF file's own
     /// folder); may be given more than once.
@@ -44,7 +44,7 @@ impl Global {
         if (self.validate || env_validate)
             && !ffvk::vk::instance::validation_layer_installed().unwrap_or(true)
         {
-            eprintln!(
+            ffvk_cli::errln!(
                 "warning: {}; running without validation",
                 ffvk::Error::NoValidationLayer
             );
@@ -57,6 +57,52 @@ impl Global {
             Validation::Off
         };
         options
+    }
+}
+
+/// `--max-mesh-mib`: a whole number of MiB, 1 to 2^24 (16 TiB).
+fn parse_mib(s: &str) -> Result<u64, String> {
+    const MAX: u64 = 1 << 24;
+    match s.trim().parse::<u64>() {
+        Ok(n) if (1..=MAX).contains(&n) => Ok(n),
+        _ => Err(format!("{s:?}: expected a whole number of MiB in 1..={MAX}")),
+    }
+}
+
+/// A share or a mean error: a number from 0 to 1.
+fn parse_unit(s: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(x) if (0.0..=1.0).contains(&x) => Ok(x),
+        _ => Err(format!("{s:?}: expected a number from 0 to 1")),
+    }
+}
+
+fn parse_share(s: &str) -> Result<f64, String> {
+    parse_unit(s)
+}
+
+fn parse_flip(s: &str) -> Result<f32, String> {
+    parse_unit(s).map(|x| x as f32)
+}
+
+/// Refuses an output path whose name does not end in `.EXTENSION` (in any case), so that a
+/// file's name says what it holds: `problem` says what the command writes and what it
+/// expected, e.g. "ffvk teapot writes glTF: expected a .gltf path".
+pub(crate) fn expect_extension(
+    path: &std::path::Path,
+    extension: &str,
+    problem: &'static str,
+) -> ffvk_cli::Result<()> {
+    if path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case(extension))
+    {
+        Ok(())
+    } else {
+        Err(ffvk_cli::Error::Path {
+            path: path.to_path_buf(),
+            problem,
+        })
     }
 }
 
@@ -99,13 +145,13 @@ pub(crate) fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
 #[derive(clap::Args, Debug, Clone)]
 pub(crate) struct ToleranceArgs {
     /// Per-channel difference (of 255) a pixel may have without counting as different.
-    #[arg(long, default_value_t = 2)]
+    #[arg(long, default_value_t = 2, allow_negative_numbers = true)]
     pub(crate) threshold: u8,
     /// Largest share of pixels (0..1) allowed over the threshold.
-    #[arg(long, default_value_t = 0.001)]
+    #[arg(long, default_value_t = 0.001, value_parser = parse_share, allow_negative_numbers = true)]
     pub(crate) max_share: f64,
     /// Largest mean FLIP error (0..1), counted at the pixels over the threshold.
-    #[arg(long, default_value_t = 0.005)]
+    #[arg(long, default_value_t = 0.005, value_parser = parse_flip, allow_negative_numbers = true)]
     pub(crate) max_flip: f32,
     /// Count FLIP at every pixel, so that a shift within the threshold can fail an image.
     #[arg(long)]
@@ -127,7 +173,7 @@ impl ToleranceArgs {
 /// file's path, a warning as it is.
 pub(crate) fn print_note(path: &std::path::Path) -> impl FnMut(ffvk::scene::OpenNote) + '_ {
     move |note| match note {
-        ffvk::scene::OpenNote::Chose { .. } => eprintln!("{}: {note}", path.display()),
-        _ => eprintln!("{note}"),
+        ffvk::scene::OpenNote::Chose { .. } => ffvk_cli::errln!("{}: {note}", path.display()),
+        _ => ffvk_cli::errln!("{note}"),
     }
 }

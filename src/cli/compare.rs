@@ -31,6 +31,7 @@ pub(crate) fn run(args: &CompareArgs) -> ffvk_cli::Result<ExitCode> {
     let tolerance = tolerance.tolerance();
     tolerance.validate()?;
     if let Some(path) = diff {
+        super::common::expect_extension(path, "png", "--diff writes a PNG heat map: expected a .png path")?;
         if ffvk::files::same_file(path, expected) || ffvk::files::same_file(path, actual) {
             return Err(ffvk_cli::Error::OverwritesInput { path: path.clone() });
         }
@@ -42,22 +43,26 @@ pub(crate) fn run(args: &CompareArgs) -> ffvk_cli::Result<ExitCode> {
         actual: actual.clone(),
         source,
     })?;
-    println!("{}", c.summary());
+    ffvk_cli::outln!("{}", c.summary())?;
     if let Some(path) = diff {
         save_png(&compare::heat_map(&e, &a, tolerance.threshold)?, path)?;
-        println!("diff heat map: {}", path.display());
+        ffvk_cli::outln!("diff heat map: {}", path.display())?;
     }
     if c.passes(&tolerance) {
-        println!(
+        ffvk_cli::outln!(
             "PASS (threshold {}/255, max share {}, max FLIP {})",
-            tolerance.threshold, tolerance.max_share, tolerance.max_flip
-        );
+            tolerance.threshold,
+            tolerance.max_share,
+            tolerance.max_flip
+        )?;
         Ok(ExitCode::SUCCESS)
     } else {
-        println!(
+        ffvk_cli::outln!(
             "FAIL (threshold {}/255, max share {}, max FLIP {})",
-            tolerance.threshold, tolerance.max_share, tolerance.max_flip
-        );
+            tolerance.threshold,
+            tolerance.max_share,
+            tolerance.max_flip
+        )?;
         Ok(ExitCode::FAILURE)
     }
 }

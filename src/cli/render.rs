@@ -10,7 +10,7 @@ use ffvk::Renderer;
 use ffvk_cli::gltf_args::GltfArgs;
 use ffvk_cli::regress;
 
-use super::common::{parse_seconds, parse_size, print_note, Global, ToleranceArgs};
+use super::common::{expect_extension, parse_seconds, parse_size, print_note, Global, ToleranceArgs};
 
 /// `ffvk render`'s options.
 #[derive(clap::Args, Debug, Clone)]
@@ -29,7 +29,7 @@ pub(crate) struct RenderArgs {
     #[arg(long, value_delimiter = ',')]
     pub(crate) lighting: Vec<LightingMode>,
     /// Override the image size, as WxH (the vertical field of view is kept).
-    #[arg(long, value_parser = parse_size)]
+    #[arg(long, value_parser = parse_size, allow_hyphen_values = true)]
     pub(crate) size: Option<(u32, u32)>,
     /// Draw the fragment mode forward (at every fragment), deferred (once per pixel,
     /// where a frame allows it) or auto (deferred where ffvk's fixed rule of vertices,
@@ -46,11 +46,12 @@ pub(crate) struct RenderArgs {
     pub(crate) bless: bool,
     /// Worker processes to render in (default: one per CPU). A worker that crashes costs
     /// only the scene it was rendering, which becomes an error row.
-    #[arg(short, long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024))]
+    #[arg(short, long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024),
+          allow_negative_numbers = true)]
     pub(crate) jobs: Option<u32>,
     /// Render only shard K of N: the scenes whose name (path below the folder given)
     /// hashes to K; the N shards together are the whole suite (see `ffvk results merge`).
-    #[arg(long, value_name = "K/N")]
+    #[arg(long, value_name = "K/N", allow_hyphen_values = true)]
     pub(crate) partition: Option<regress::Partition>,
     /// Write the results as JUnit XML (one test case per scene and mode).
     #[arg(long, value_name = "FILE")]
@@ -64,7 +65,8 @@ pub(crate) struct RenderArgs {
     pub(crate) report: Option<PathBuf>,
     /// Seconds one scene (all its modes) may take before its worker is killed and the
     /// scene reported as an error.
-    #[arg(long, value_name = "SECONDS", default_value_t = 600.0, value_parser = parse_seconds)]
+    #[arg(long, value_name = "SECONDS", default_value_t = 600.0, value_parser = parse_seconds,
+          allow_negative_numbers = true)]
     pub(crate) timeout: f64,
     #[command(flatten)]
     pub(crate) tolerance: ToleranceArgs,
@@ -120,7 +122,7 @@ pub(crate) fn run(global: &Global, args: &RenderArgs) -> ffvk_cli::Result<ExitCo
     for dir in scenes.iter().filter(|p| p.is_dir()) {
         let meshes = regress::folder_scenes(dir)?.meshes;
         if !meshes.is_empty() {
-            eprintln!(
+            ffvk_cli::errln!(
                 "ffvk: note: {}: its .toml files are the scenes; its {} .gltf/.glb file(s) are \
                  left to them as meshes (give a glTF file by name to draw it directly)",
                 dir.display(),
@@ -165,6 +167,7 @@ pub(crate) fn run(global: &Global, args: &RenderArgs) -> ffvk_cli::Result<ExitCo
         &regress::image_paths(&job, &files),
         &references,
     )?;
+    expect_results_names(json.as_deref(), junit.as_deref())?;
     if let (Some(dir), Some(refs)) = (report, check) {
         // Refused now rather than after the run.
         regress::report::claim(dir, &[refs.as_path()])?;
@@ -178,6 +181,7 @@ pub(crate) fn run(global: &Global, args: &RenderArgs) -> ffvk_cli::Result<ExitCo
             .chain(std::env::args_os().skip(1))
             .collect(),
     };
+    let mut stdout_failed = None;
     let results = regress::pool::run_suite(
         &job,
         &worker,
@@ -187,12 +191,20 @@ pub(crate) fn run(global: &Global, args: &RenderArgs) -> ffvk_cli::Result<ExitCo
             timeout: std::time::Duration::from_secs_f64(*timeout),
         },
         &mut |m| match m {
-            regress::Message::Wrote { .. } => println!("{m}"),
-            _ => eprintln!("{m}"),
+            // The first failed write ends the run once the suite is done.
+            regress::Message::Wrote { .. } => {
+                if stdout_failed.is_none() {
+                    stdout_failed = ffvk_cli::outln!("{m}").err();
+                }
+            }
+            _ => ffvk_cli::errln!("{m}"),
         },
     )?;
+    if let Some(e) = stdout_failed {
+        return Err(e);
+    }
     let run = &results.runs[0].info;
-    eprintln!(
+    ffvk_cli::errln!(
         "ffvk: {} scene(s){} in {} worker process(es), LP_NUM_THREADS={} each, {:.1} s",
         run.scenes,
         run.partition
@@ -217,6 +229,14 @@ fn render_one(
     out: Option<&PathBuf>,
     job: &regress::Job,
 ) -> ffvk_cli::Result<ExitCode> {
+    if let Some(out) = out {
+        expect_extension(
+            out,
+            "png",
+            "ffvk render writes one scene's image in one mode here: expected a .png path (a folder \
+             only for several images, modes or results files)",
+        )?;
+    }
     let path = out.cloned().unwrap_or_else(|| file.with_extension("png"));
     if ffvk::files::same_file(&path, file) {
         return Err(ffvk_cli::Error::OverwritesInput { path });
@@ -233,8 +253,26 @@ fn render_one(
         job.fragment_path,
     )?;
     save_png(&image, &path)?;
-    println!("{} -> {}", file.display(), path.display());
+    ffvk_cli::outln!("{} -> {}", file.display(), path.display())?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// Refuses a `--json` path not named `.json` and a `--junit` path not named `.xml`.
+pub(crate) fn expect_results_names(
+    json: Option<&std::path::Path>,
+    junit: Option<&std::path::Path>,
+) -> ffvk_cli::Result<()> {
+    if let Some(path) = json {
+        expect_extension(
+            path,
+            "json",
+            "--json writes the results as JSON: expected a .json path",
+        )?;
+    }
+    if let Some(path) = junit {
+        expect_extension(path, "xml", "--junit writes JUnit XML: expected a .xml path")?;
+    }
+    Ok(())
 }
 
 /// The files a run's results are written to.
@@ -255,24 +293,24 @@ pub(crate) fn finish_results(
 ) -> ffvk_cli::Result<ExitCode> {
     if let Some(path) = outputs.json {
         results.write_json(path)?;
-        eprintln!("wrote {}", path.display());
+        ffvk_cli::errln!("wrote {}", path.display());
     }
     if let Some(path) = outputs.junit {
         regress::junit::write(results, path)?;
-        eprintln!("wrote {}", path.display());
+        ffvk_cli::errln!("wrote {}", path.display());
     }
     if let Some(dir) = outputs.report {
         let written = regress::report::write(results, dir)?;
         for problem in &written.unreadable {
-            eprintln!("ffvk: report: {problem}");
+            ffvk_cli::errln!("ffvk: report: {problem}");
         }
-        eprintln!(
+        ffvk_cli::errln!(
             "wrote {} ({} image(s) to look at)",
             written.page.display(),
             written.entries
         );
     }
     let rows = results.rows();
-    println!("{}", regress::summary(&rows, checked));
+    ffvk_cli::outln!("{}", regress::summary(&rows, checked))?;
     Ok(ExitCode::from(results.counts().exit_code()))
 }

@@ -85,6 +85,7 @@ pub(crate) fn run(action: &ResultsAction) -> ffvk_cli::Result<ExitCode> {
         .collect();
     let references: Vec<&std::path::Path> = references.iter().map(PathBuf::as_path).collect();
     regress::refuse_overlaps(&written, &inputs, &[], &references)?;
+    super::render::expect_results_names(outputs.json, outputs.junit)?;
     let merged = regress::results::Results::merge(parts)?;
     let checked = merged.runs.iter().any(|r| r.info.references.is_some());
     if let Some(dir) = outputs.report {

@@ -229,13 +229,23 @@ impl Results {
             }
             .into());
         }
-        serde_json::from_str(&text).map_err(|e| {
-            MergeError::Parse {
-                path: path.to_path_buf(),
-                message: e.to_string(),
-            }
-            .into()
-        })
+        let results: Results = serde_json::from_str(&text).map_err(|e| MergeError::Parse {
+            path: path.to_path_buf(),
+            message: e.to_string(),
+        })?;
+        results.check(path)?;
+        Ok(results)
+    }
+
+    /// Refuses what no run of ffvk writes, naming the file (`path`) and the JSON field: a
+    /// partition outside 1..=count, more scenes than the suite, a row at an index past the
+    /// suite's scenes or of a scene of another shard (by [`Partition::contains`]), rows that
+    /// do not cover the run's scenes once in each mode, two rows of one scene in one mode.
+    pub fn check(&self, path: &Path) -> Result<(), MergeError> {
+        for (at, run) in self.runs.iter().enumerate() {
+            check_run(path, at, run)?;
+        }
+        Ok(())
     }
 
     /// Joins the results of the shards of one suite, checking that together they are every
@@ -243,6 +253,7 @@ impl Results {
     pub fn merge(parts: Vec<(PathBuf, Results)>) -> Result<Results> {
         let mut runs: Vec<(PathBuf, Run)> = Vec::new();
         for (path, results) in parts {
+            results.check(&path)?;
             runs.extend(results.runs.into_iter().map(|r| (path.clone(), r)));
         }
         let Some((first_path, first)) = runs.first() else {
@@ -283,18 +294,26 @@ impl Results {
         if !missing.is_empty() {
             return Err(MergeError::MissingShards { missing, count }.into());
         }
-        for (path, run) in &runs {
-            let mut indices: Vec<usize> = run.rows.iter().map(|r| r.index).collect();
-            indices.sort_unstable();
-            indices.dedup();
-            if indices.len() != run.info.scenes {
-                return Err(MergeError::Rows {
-                    path: path.clone(),
-                    scenes: run.info.scenes,
-                    found: indices.len(),
-                }
-                .into());
+        // Each scene of the suite in one shard: no index in two.
+        let mut indices: Vec<(usize, &Path, &str)> = runs
+            .iter()
+            .flat_map(|(path, r)| {
+                r.rows
+                    .iter()
+                    .map(move |row| (row.index, path.as_path(), row.scene.as_str()))
+            })
+            .collect();
+        indices.sort_by_key(|&(index, ..)| index);
+        indices.dedup_by(|a, b| a.0 == b.0 && a.1 == b.1);
+        if let Some(w) = indices.windows(2).find(|w| w[0].0 == w[1].0) {
+            return Err(MergeError::SameIndex {
+                index: w[0].0,
+                first: w[0].1.to_path_buf(),
+                first_scene: w[0].2.to_owned(),
+                second: w[1].1.to_path_buf(),
+                second_scene: w[1].2.to_owned(),
             }
+            .into());
         }
         let scenes: usize = runs.iter().map(|(_, r)| r.info.scenes).sum();
         if scenes != suite {
@@ -319,6 +338,115 @@ impl Results {
             runs: runs.into_iter().map(|(_, r)| r).collect(),
         })
     }
+}
+
+/// The checks of [`Results::check`] on run `at` of the file at `path`.
+fn check_run(path: &Path, at: usize, run: &Run) -> Result<(), MergeError> {
+    let info = &run.info;
+    let field = |field: String, value: String, expected: String| MergeError::Field {
+        path: path.to_path_buf(),
+        field: format!("runs[{at}].{field}"),
+        value,
+        expected,
+    };
+    if let Some(p) = info.partition {
+        if p.count == 0 {
+            return Err(field(
+                "info.partition.count".into(),
+                "0".into(),
+                "1 or more shards".into(),
+            ));
+        }
+        if !(1..=p.count).contains(&p.index) {
+            return Err(field(
+                "info.partition.index".into(),
+                p.index.to_string(),
+                format!("a shard in 1..={} (partition.count)", p.count),
+            ));
+        }
+    }
+    let suite = info.suite_scenes;
+    if info.scenes > suite {
+        return Err(field(
+            "info.scenes".into(),
+            info.scenes.to_string(),
+            format!("at most the suite's {suite} (info.suite_scenes)"),
+        ));
+    }
+    for (k, row) in run.rows.iter().enumerate() {
+        if row.index >= suite {
+            return Err(field(
+                format!("rows[{k}].index"),
+                row.index.to_string(),
+                format!("a scene's place in the suite of {suite}, 0..{suite} (info.suite_scenes)"),
+            ));
+        }
+        if let Some(p) = info.partition.filter(|p| !p.contains(&row.scene)) {
+            return Err(field(
+                format!("rows[{k}].scene"),
+                format!("{:?}", row.scene),
+                format!("a scene of shard {p}: this name hashes to another shard (--partition)"),
+            ));
+        }
+        if !info.modes.is_empty() && !row.mode.as_ref().is_some_and(|m| info.modes.contains(m)) {
+            return Err(field(
+                format!("rows[{k}].mode"),
+                format!("{:?}", row.mode),
+                format!("one of the run's modes {:?} (info.modes)", info.modes),
+            ));
+        }
+    }
+    let mut indices: Vec<usize> = run.rows.iter().map(|r| r.index).collect();
+    indices.sort_unstable();
+    indices.dedup();
+    if indices.len() != info.scenes {
+        return Err(MergeError::Rows {
+            path: path.to_path_buf(),
+            scenes: info.scenes,
+            found: indices.len(),
+        });
+    }
+    let modes = info.modes.len().max(1);
+    if run.rows.len() != info.scenes * modes {
+        return Err(field(
+            "rows".into(),
+            format!("{} rows", run.rows.len()),
+            format!(
+                "one row per scene and mode: {} scene(s) (info.scenes) x {modes} mode(s) = {}",
+                info.scenes,
+                info.scenes * modes
+            ),
+        ));
+    }
+    let mut keys: Vec<(usize, Option<&str>, usize)> = run
+        .rows
+        .iter()
+        .enumerate()
+        .map(|(k, r)| (r.index, r.mode.as_deref(), k))
+        .collect();
+    keys.sort_unstable();
+    if let Some(w) = keys.windows(2).find(|w| (w[0].0, w[0].1) == (w[1].0, w[1].1)) {
+        return Err(field(
+            format!("rows[{}]", w[1].2),
+            format!("a second row at index {} in mode {:?}", w[1].0, w[1].1),
+            format!("one row per scene and mode (the first is rows[{}])", w[0].2),
+        ));
+    }
+    let mut scenes: Vec<(usize, &str, usize)> = run
+        .rows
+        .iter()
+        .enumerate()
+        .map(|(k, r)| (r.index, r.scene.as_str(), k))
+        .collect();
+    scenes.sort_unstable();
+    if let Some(w) = scenes.windows(2).find(|w| w[0].0 == w[1].0 && w[0].1 != w[1].1) {
+        return Err(field(
+            format!("rows[{}].scene", w[1].2),
+            format!("{:?} at index {}", w[1].1, w[1].0),
+            format!("one scene at each index: rows[{}] has {:?} there", w[0].2, w[0].1),
+        ));
+    }
+    Ok(())
 }
 
 /// Results files that cannot be read or merged.
@@ -363,6 +491,23 @@ pub enum MergeError {
         path: PathBuf,
         scenes: usize,
         found: usize,
+    },
+    /// A field of a results file that no run of ffvk writes.
+    #[error("{}: {field} is {value}: expected {expected}", .path.display())]
+    Field {
+        path: PathBuf,
+        field: String,
+        value: String,
+        expected: String,
+    },
+    /// One scene index in two shards.
+    #[error("{} and {} both have rows at index {index} (scenes {first_scene:?} and {second_scene:?}): expected each scene of the suite in one shard", .first.display(), .second.display())]
+    SameIndex {
+        index: usize,
+        first: PathBuf,
+        first_scene: String,
+        second: PathBuf,
+        second_scene: String,
     },
     /// One image in two shards.
     #[error("{} and {} both have the image {name}: expected each image in one shard", .first.display(), .second.display())]
