@@ -117,9 +117,15 @@ pub enum Error {
         path: PathBuf,
     },
 
-    /// An output would replace one of the command's own inputs.
-    #[error("{}: the output would overwrite an input of the same command: expected another path", .path.display())]
-    OverwritesInput { path: PathBuf },
+    /// An output would replace one of the command's own inputs (the same file after links,
+    /// however either is spelled). Nothing was written.
+    #[error("{}: is {}, a file this run reads: refused, nothing written; expected an output path that is not one of the run's inputs", .path.display(), .input.display())]
+    OverwritesInput {
+        /// The output as given.
+        path: PathBuf,
+        /// The input it would replace, as read.
+        input: PathBuf,
+    },
 
     /// A tolerance out of its range.
     #[error(transparent)]

@@ -108,6 +108,10 @@ fn main() -> ExitCode {
     // the process with the temporary file left behind (worker processes inherit this).
     // SAFETY: as above; SIG_IGN is a valid disposition.
     unsafe { libc::signal(libc::SIGXFSZ, libc::SIG_IGN) };
+    // Nothing ffvk writes lands on a file it read (a scene's texture, a glTF buffer, a
+    // reference), however the output is spelled; an interrupted write leaves no temporary file.
+    ffvk::files::protect_inputs(true);
+    ffvk::files::remove_temporaries_on_signals();
     match run(Cli::parse()) {
         Ok(code) => code,
         Err(e) => {

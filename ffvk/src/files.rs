@@ -3,6 +3,13 @@
 //! An error or an interruption leaves the old file (or none) and a stray temporary file at
 //! worst, never a partial or empty destination; every error, the final flush's included,
 //! reaches the caller.
+//!
+//! A program can also ask that nothing it writes land on a file it read ([`protect_inputs`]):
+//! from then on every file read through [`read_regular`] (or named to [`note_input`]) is an
+//! input, known by its identity (device and inode) rather than its name, and
+//! [`write_atomically`] refuses a destination that is one, however it is spelled (`./x`,
+//! `a/../x`, a symbolic or hard link). The `ffvk` command turns this on; a library caller
+//! that does not is not affected.
 
 use std::fs::{self, File, OpenOptions};
 use std::io::{self, BufWriter, Write};
@@ -12,6 +19,208 @@ use std::sync::atomic::{AtomicU64, Ordering};
 /// Temporary files of this process get distinct names.
 static NEXT_TEMPORARY: AtomicU64 = AtomicU64::new(0);
 
+/// The files this process has read, once [`protect_inputs`] turned the guard on: each file's
+/// identity and the path it was read by.
+static INPUTS: std::sync::Mutex<Option<Vec<(FileId, PathBuf)>>> = std::sync::Mutex::new(None);
+
+/// A file's identity: its device and inode (unchanged by links and by spelling).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct FileId {
+    device: u64,
+    inode: u64,
+}
+
+impl FileId {
+    /// The identity of what `path` names after symbolic links, when it exists.
+    fn of(path: &Path) -> Option<FileId> {
+        fs::metadata(path).ok().map(|m| FileId::from_metadata(&m))
+    }
+
+    #[cfg(unix)]
+    fn from_metadata(meta: &fs::Metadata) -> FileId {
+        use std::os::unix::fs::MetadataExt;
+        FileId {
+            device: meta.dev(),
+            inode: meta.ino(),
+        }
+    }
+
+    #[cfg(not(unix))]
+    fn from_metadata(_: &fs::Metadata) -> FileId {
+        // Without inodes the canonical path stands in (see `input_named`).
+        FileId { device: 0, inode: 0 }
+    }
+}
+
+/// The temporary files being written now, for the signal handler of
+/// [`remove_temporaries_on_signals`]: each slot null or a path (NUL-terminated) that is never
+/// freed, so that the handler can read it at any moment.
+static TEMPORARIES: [std::sync::atomic::AtomicPtr<std::ffi::c_char>; 64] =
+    [const { std::sync::atomic::AtomicPtr::new(std::ptr::null_mut()) }; 64];
+
+/// Whether [`remove_temporaries_on_signals`] installed its handler.
+static SIGNALS_HANDLED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// A temporary file's place in [`TEMPORARIES`] while it is written: cleared on drop.
+struct Temporary(Option<usize>);
+
+impl Temporary {
+    #[cfg(not(unix))]
+    fn record(_: &Path) -> Temporary {
+        Temporary(None)
+    }
+
+    /// Records `path` for the handler, when one is installed and a slot is free.
+    #[cfg(unix)]
+    fn record(path: &Path) -> Temporary {
+        if !SIGNALS_HANDLED.load(Ordering::Acquire) {
+            return Temporary(None);
+        }
+        use std::os::unix::ffi::OsStrExt;
+        let Ok(c) = std::ffi::CString::new(path.as_os_str().as_bytes()) else {
+            return Temporary(None);
+        };
+        let raw = c.into_raw();
+        for (i, slot) in TEMPORARIES.iter().enumerate() {
+            if slot
+                .compare_exchange(std::ptr::null_mut(), raw, Ordering::AcqRel, Ordering::Relaxed)
+                .is_ok()
+            {
+                return Temporary(Some(i));
+            }
+        }
+        // Every slot busy: this one is simply not removed by a signal. The string is freed.
+        // SAFETY: `raw` came from `CString::into_raw` just above and was published nowhere.
+        drop(unsafe { std::ffi::CString::from_raw(raw) });
+        Temporary(None)
+    }
+}
+
+impl Drop for Temporary {
+    fn drop(&mut self) {
+        if let Some(i) = self.0 {
+            // The path stays allocated (leaked): a handler running now on another thread may
+            // still be reading it.
+            TEMPORARIES[i].store(std::ptr::null_mut(), Ordering::Release);
+        }
+    }
+}
+
+/// Removes the temporary files being written when SIGINT, SIGTERM or SIGHUP arrives, then
+/// lets the signal end the process as it would have. For programs (the `ffvk` command); a
+/// library caller keeps its own signal handling unless it calls this. Each temporary path is
+/// kept for the process's life once written (a few hundred bytes per file written).
+#[cfg(unix)]
+pub fn remove_temporaries_on_signals() {
+    extern "C" fn handler(signal: libc::c_int) {
+        for slot in &TEMPORARIES {
+            let path = slot.load(Ordering::Acquire);
+            if !path.is_null() {
+                // SAFETY: a non-null slot holds a NUL-terminated path that is never freed;
+                // unlink is async-signal-safe.
+                unsafe { libc::unlink(path) };
+            }
+        }
+        // SAFETY: restoring the default action and raising the signal again are
+        // async-signal-safe; the process then ends as the signal asks.
+        unsafe {
+            libc::signal(signal, libc::SIG_DFL);
+            libc::raise(signal);
+        }
+    }
+    if SIGNALS_HANDLED.swap(true, Ordering::AcqRel) {
+        return;
+    }
+    for signal in [libc::SIGINT, libc::SIGTERM, libc::SIGHUP] {
+        // SAFETY: installs a handler that only does async-signal-safe work (above).
+        unsafe {
+            libc::signal(
+                signal,
+                handler as extern "C" fn(libc::c_int) as libc::sighandler_t,
+            )
+        };
+    }
+}
+
+/// Removes the temporary files of `name` in `dir` that earlier processes left when they died
+/// mid-write (their process no longer runs). Errors are ignored: a sweep is a courtesy.
+fn sweep_stale_temporaries(dir: &Path, name: &str) {
+    let Ok(entries) = fs::read_dir(dir) else {
+        return;
+    };
+    let prefix = format!(".{name}.");
+    for entry in entries.flatten() {
+        let file = entry.file_name();
+        let Some(rest) = file.to_str().and_then(|f| f.strip_prefix(&prefix)) else {
+            continue;
+        };
+        let Some((pid, count)) = rest.strip_suffix(".tmp").and_then(|r| r.split_once('-')) else {
+            continue;
+        };
+        let (Ok(pid), Ok(_)) = (pid.parse::<u32>(), count.parse::<u64>()) else {
+            continue;
+        };
+        if pid != std::process::id() && !process_runs(pid) {
+            let _ = fs::remove_file(entry.path());
+        }
+    }
+}
+
+/// Whether a process `pid` runs now (or may: when unsure, yes).
+fn process_runs(pid: u32) -> bool {
+    #[cfg(target_os = "linux")]
+    {
+        Path::new("/proc").join(pid.to_string()).exists() || !Path::new("/proc/self").exists()
+    }
+    #[cfg(not(target_os = "linux"))]
+    {
+        let _ = pid;
+        true
+    }
+}
+
+/// Turns on (or off) the guard that keeps this process's outputs off its inputs: while on,
+/// every file read through [`read_regular`] or named to [`note_input`] is remembered, and
+/// [`write_atomically`] refuses to write onto one. Off by default.
+pub fn protect_inputs(on: bool) {
+    let mut inputs = INPUTS.lock().unwrap_or_else(|e| e.into_inner());
+    match (on, inputs.is_some()) {
+        (true, false) => *inputs = Some(Vec::new()),
+        (false, _) => *inputs = None,
+        _ => {}
+    }
+}
+
+/// Remembers `path` as an input of this process when the guard is on ([`protect_inputs`]):
+/// for files read other than through [`read_regular`], or named before they are read.
+pub fn note_input(path: &Path) {
+    let mut inputs = INPUTS.lock().unwrap_or_else(|e| e.into_inner());
+    let Some(list) = inputs.as_mut() else {
+        return;
+    };
+    if let Some(id) = FileId::of(path) {
+        let named = fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf());
+        if !list.iter().any(|(known, p)| *known == id && *p == named) {
+            list.push((id, named));
+        }
+    }
+}
+
+/// The input (as it was read) that `path` names, after links, when the guard is on.
+pub fn input_named(path: &Path) -> Option<PathBuf> {
+    let inputs = INPUTS.lock().unwrap_or_else(|e| e.into_inner());
+    let list = inputs.as_ref()?;
+    if cfg!(unix) {
+        let id = FileId::of(path)?;
+        list.iter()
+            .find(|(known, _)| *known == id)
+            .map(|(_, p)| p.clone())
+    } else {
+        let real = fs::canonicalize(path).ok()?;
+        list.iter().find(|(_, p)| *p == real).map(|(_, p)| p.clone())
+    }
+}
+
 /// Why a destination path is refused before anything is written.
 fn refuse(path: &Path, problem: &str) -> io::Error {
     io::Error::new(
@@ -20,10 +229,31 @@ fn refuse(path: &Path, problem: &str) -> io::Error {
     )
 }
 
+/// Refuses `path` as an output when it names (after links) a file this process read, with
+/// the guard on ([`protect_inputs`]): the error names the output and the input.
+pub fn refuse_input(path: &Path) -> io::Result<()> {
+    let Some(input) = input_named(path) else {
+        return Ok(());
+    };
+    let how = if fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_symlink()) {
+        "is a symbolic link to"
+    } else {
+        "is"
+    };
+    Err(refuse(
+        path,
+        &format!(
+            "{how} {}, which this run reads: refused, nothing written; expected an output path that is not one of the run's inputs",
+            input.display()
+        ),
+    ))
+}
+
 /// Where the bytes for `path` really go: the path itself, or the regular file a symlink
 /// points at (so that the link survives). Anything else that exists there (a folder, a
 /// device such as /dev/full, a pipe) is refused: it cannot be replaced atomically.
 fn destination(path: &Path) -> io::Result<PathBuf> {
+    refuse_input(path)?;
     match fs::metadata(path) {
         Ok(meta) if meta.is_file() => fs::canonicalize(path),
         Ok(_) => Err(refuse(
@@ -61,11 +291,13 @@ pub fn write_atomically(
         .file_name()
         .ok_or_else(|| refuse(path, "has no file name: expected a file path"))?
         .to_string_lossy();
+    sweep_stale_temporaries(&dir, &name);
     let temporary = dir.join(format!(
         ".{name}.{}-{}.tmp",
         std::process::id(),
         NEXT_TEMPORARY.fetch_add(1, Ordering::Relaxed)
     ));
+    let _recorded = Temporary::record(&temporary);
     let result = (|| {
         let file = OpenOptions::new().write(true).create_new(true).open(&temporary)?;
         let mut writer = BufWriter::new(file);
@@ -108,6 +340,7 @@ pub fn read_regular(path: &Path, max: u64) -> io::Result<Vec<u8>> {
             &format!("is {} bytes: expected at most {max} bytes", meta.len()),
         ));
     }
+    note_input(path);
     let mut bytes = Vec::new();
     bytes
         .try_reserve_exact(meta.len() as usize)

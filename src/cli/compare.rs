@@ -30,10 +30,17 @@ pub(crate) fn run(args: &CompareArgs) -> ffvk_cli::Result<ExitCode> {
     } = args;
     let tolerance = tolerance.tolerance();
     tolerance.validate()?;
+    ffvk::files::note_input(expected);
+    ffvk::files::note_input(actual);
     if let Some(path) = diff {
         super::common::expect_extension(path, "png", "--diff writes a PNG heat map: expected a .png path")?;
-        if ffvk::files::same_file(path, expected) || ffvk::files::same_file(path, actual) {
-            return Err(ffvk_cli::Error::OverwritesInput { path: path.clone() });
+        for input in [expected, actual] {
+            if ffvk::files::same_file(path, input) {
+                return Err(ffvk_cli::Error::OverwritesInput {
+                    path: path.clone(),
+                    input: input.clone(),
+                });
+            }
         }
     }
     let e = compare::load_image(expected)?;

@@ -131,10 +131,9 @@ pub(crate) fn run(global: &Global, args: &RenderArgs) -> ffvk_cli::Result<ExitCo
         }
     }
     let results_asked = check.is_some() || junit.is_some() || json.is_some() || partition.is_some();
-    if out.is_none() {
-        regress::refuse_overwriting_inputs(&job, &files)?;
-    }
     if files.len() == 1 && lighting.len() <= 1 && !results_asked && !scenes[0].is_dir() {
+        let image = out.clone().unwrap_or_else(|| files[0].path.with_extension("png"));
+        regress::refuse_writing_inputs(&job, &files, &[image.as_path()], false)?;
         return render_one(global, &files[0].path, out.as_ref(), &job);
     }
     // Several images (or a folder's): -o is their folder, never a file name.
@@ -161,6 +160,8 @@ pub(crate) fn run(global: &Global, args: &RenderArgs) -> ffvk_cli::Result<ExitCo
         .chain(files.iter().map(|f| f.path.as_path()))
         .collect();
     let references: Vec<&std::path::Path> = check.iter().map(PathBuf::as_path).collect();
+    let named: Vec<&std::path::Path> = outputs.iter().map(|(_, p)| *p).collect();
+    regress::refuse_writing_inputs(&job, &files, &named, true)?;
     regress::refuse_overlaps(
         &outputs,
         &inputs,
@@ -238,9 +239,6 @@ fn render_one(
         )?;
     }
     let path = out.cloned().unwrap_or_else(|| file.with_extension("png"));
-    if ffvk::files::same_file(&path, file) {
-        return Err(ffvk_cli::Error::OverwritesInput { path });
-    }
     // As a worker of a suite renders it (pool::worker_main).
     let mut renderer_options = global.options();
     renderer_options.specialize = ffvk::Specialize::Always;

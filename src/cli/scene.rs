@@ -129,10 +129,13 @@ pub(crate) fn write_scene(
     match out {
         None => ffvk_cli::out!("{}", made.toml)?,
         Some(path) => {
-            if ffvk::files::same_file(path, gltf) {
-                return Err(ffvk_cli::Error::OverwritesInput {
-                    path: path.to_path_buf(),
-                });
+            for input in ffvk::scene::inputs(gltf, &global.limits()) {
+                if ffvk::files::same_file(path, &input) {
+                    return Err(ffvk_cli::Error::OverwritesInput {
+                        path: path.to_path_buf(),
+                        input,
+                    });
+                }
             }
             ffvk::files::write_bytes(path, made.toml.as_bytes()).map_err(|source| {
                 ffvk_cli::Error::Write {

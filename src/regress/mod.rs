@@ -273,41 +273,35 @@ pub fn image_paths(job: &Job, files: &[SceneFile]) -> Vec<PathBuf> {
         .collect()
 }
 
-/// Refuses a run that would write an image over a file its own scene reads: without `--out`
-/// an image lands beside its scene or glTF file as `NAME.png`, which may be the texture the
-/// file names (a model `lamp.gltf` with a texture `lamp.png`). Found by the file's name,
-/// quoted, in the scene's text (a glTF file's JSON, a GLB's JSON chunk, a scene file); only
-/// where that PNG already exists.
-pub fn refuse_overwriting_inputs(job: &Job, files: &[SceneFile]) -> Result<()> {
-    if job.out_dir.is_some() {
-        return Ok(());
-    }
-    let modes = requested_modes(job);
+/// Refuses a run that would write onto a file it reads, before anything is written: every
+/// file each scene reads ([`ffvk::scene::inputs`]: the scene, its textures, glTF files,
+/// buffers and images) is noted as an input ([`ffvk::files::note_input`]), then each image the
+/// run writes, each reference it may bless and each of `outputs` (`-o`, `--json`, …) is
+/// checked against them by file identity, after links. Each later write checks again.
+/// `images`: whether the run writes its images where [`image_paths`] says (not a single
+/// image at a path of its own, given among `outputs`).
+pub fn refuse_writing_inputs(job: &Job, files: &[SceneFile], outputs: &[&Path], images: bool) -> Result<()> {
     for file in files {
-        for &mode in &modes {
-            let image = image_path(job, file, &image_name(file, mode, modes.len()));
-            if !image.is_file() {
-                continue;
+        for input in ffvk::scene::inputs(&file.path, &job.limits) {
+            ffvk::files::note_input(&input);
+        }
+    }
+    let mut written: Vec<PathBuf> = outputs.iter().map(|p| p.to_path_buf()).collect();
+    if images {
+        written.extend(image_paths(job, files));
+    }
+    if let (Some(refs), true) = (&job.references, job.bless) {
+        let modes = requested_modes(job);
+        for file in files {
+            for &mode in &modes {
+                let name = image_name(file, mode, modes.len());
+                written.push(reference_path(refs, job.driver_family.as_deref(), &name));
             }
-            let Some(name) = image.file_name().map(|n| n.to_string_lossy().into_owned()) else {
-                continue;
-            };
-            // The JSON and TOML ffvk reads are at the file's start (a GLB's JSON chunk
-            // first); 64 MiB of it is more than any real document.
-            let mut text = Vec::new();
-            let read = std::fs::File::open(&file.path)
-                .and_then(|f| std::io::Read::read_to_end(&mut std::io::Read::take(f, 64 << 20), &mut text));
-            if read.is_err() {
-                continue; // the scene's own read reports it
-            }
-            let quoted = format!("\"{name}\"");
-            if text.windows(quoted.len()).any(|w| w == quoted.as_bytes()) {
-                return Err(Error::Path {
-                    path: image,
-                    problem: "is a file the scene reads (its name is in the scene's text), where the image would \
-                              land without --out: expected --out DIR (or -o FILE.png) to write the image elsewhere",
-                });
-            }
+        }
+    }
+    for path in written {
+        if let Some(input) = ffvk::files::input_named(&path) {
+            return Err(Error::OverwritesInput { path, input });
         }
     }
     Ok(())
@@ -354,9 +348,10 @@ pub fn refuse_overlaps(
                 path: path.to_path_buf(),
             });
         }
-        if inputs.contains(at) {
+        if let Some(j) = inputs.iter().position(|input| input == at) {
             return Err(Error::OverwritesInput {
                 path: path.to_path_buf(),
+                input: inputs[j].clone(),
             });
         }
         if images.contains(at) {
@@ -365,6 +360,16 @@ pub fn refuse_overlaps(
                 second: "the run's images",
                 path: path.to_path_buf(),
             });
+        }
+        // The report's own files: a results file there would be replaced by the page.
+        if let Some(&(report, dir)) = outputs.iter().find(|&&(flag, _)| flag == "--report") {
+            if first != report && is_report_file(at, &resolved(dir)) {
+                return Err(Error::SameOutput {
+                    first,
+                    second: "--report",
+                    path: path.to_path_buf(),
+                });
+            }
         }
         if let Some(refs) = references.iter().find(|refs| ffvk::files::is_within(path, refs)) {
             return Err(Error::FileInReferences {
@@ -375,6 +380,15 @@ pub fn refuse_overlaps(
         }
     }
     Ok(())
+}
+
+/// Whether `file` (resolved) is one of the files or folders a report writes in `dir` (resolved).
+fn is_report_file(file: &Path, dir: &Path) -> bool {
+    file.strip_prefix(dir).is_ok_and(|rest| {
+        rest.components()
+            .next()
+            .is_some_and(|first| report::OWN_NAMES.iter().any(|n| first.as_os_str() == *n))
+    })
 }
 
 /// Refuses a job that would write into its references or over its own inputs: references
@@ -563,7 +577,10 @@ fn render_image(
         .file_stem()
         .map_or_else(|| row.name.clone(), |s| s.to_string_lossy().into_owned());
     if ffvk::files::same_file(&output, &file.path) {
-        return Err(Error::OverwritesInput { path: output });
+        return Err(Error::OverwritesInput {
+            path: output,
+            input: file.path.clone(),
+        });
     }
     save_png(&image, &output)?;
     row.output = Some(output.clone());

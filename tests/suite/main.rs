@@ -22,6 +22,7 @@ mod hostile_gltf;
 mod layout;
 mod lighting;
 mod memory;
+mod outputs;
 mod reference;
 mod regression;
 mod render_path;

@@ -518,3 +518,75 @@ fn explain_names_each_variant_and_its_terms_and_agrees_with_the_gpu() {
     );
     assert_explain_agrees_with_the_gpu(&stdout);
 }
+
+/// A matrix replaces what it is made from (`view` eye/target/up, `projection` fovy/near/far):
+/// both given, one would be silently ignored, so the scene is refused naming both.
+#[test]
+fn a_camera_matrix_given_with_what_it_replaces_is_refused_naming_both() {
+    let identity = "[1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]";
+    let mesh = "\n[[meshes]]\nbuiltin = \"sphere\"\n";
+    let e = load_err(
+        "view-eye",
+        &format!("[camera]\nview = {identity}\neye = [0, 0, 5]\n{mesh}"),
+    );
+    contains_all(&e, &["camera.view", "camera.eye", "replaces"]);
+    let e = load_err(
+        "projection-fovy",
+        &format!("[camera]\nprojection = {identity}\nfovy = 30\nfar = 9\n{mesh}"),
+    );
+    contains_all(&e, &["camera.projection", "camera.fovy, camera.far", "replaces"]);
+    // Each alone is fine.
+    let dir = scratch("camera-alone");
+    let path = write(
+        &dir,
+        "s.toml",
+        &format!("[camera]\nview = {identity}\nfovy = 30\n{mesh}"),
+    );
+    Scene::load(&path).unwrap();
+}
+
+/// A zero light direction, or a zero spot direction on a spotlight, is legal GL that lights
+/// nothing: warned, not refused.
+#[test]
+fn zero_light_and_spot_directions_are_warned_not_refused() {
+    let dir = scratch("zero-directions");
+    let path = write(
+        &dir,
+        "s.toml",
+        "[[lights]]\nposition = [0, 0, 0, 0]\n\n[[lights]]\nposition = [0, 2, 0, 1]\nspot_direction = [0, 0, 0]\nspot_cutoff = 30\n\n\
+         [[lights]]\nposition = [0, 2, 0, 1]\nspot_direction = [0, 0, 0]\n\n[[meshes]]\nbuiltin = \"sphere\"\n",
+    );
+    let scene = Scene::load(&path).unwrap();
+    let w = scene.warnings.join("\n");
+    contains_all(
+        &w,
+        &["lights[0].position", "lights[1].spot_direction", "lights nothing"],
+    );
+    assert!(
+        !w.contains("lights[2]"),
+        "a zero spot direction with cutoff 180 (no spotlight) is not warned: {w}"
+    );
+}
+
+/// Arrays nested 100,000 deep once overflowed a 128 KiB stack in the TOML parser; the depth is
+/// counted first and refused past 32, naming the file and the depth, on any stack.
+#[test]
+fn a_scene_nested_past_32_levels_is_refused_before_it_is_parsed() {
+    let dir = scratch("nesting");
+    let deep = format!("x = {}{}\n", "[".repeat(100_000), "]".repeat(100_000));
+    let path = write(&dir, "deep.toml", &deep);
+    let e = std::thread::Builder::new()
+        .stack_size(128 << 10)
+        .spawn(move || Scene::load(&path).unwrap_err().to_string())
+        .unwrap()
+        .join()
+        .expect("no stack overflow");
+    contains_all(&e, &["deep.toml", "100000 deep", "at most 32"]);
+    // Brackets inside strings and comments are text, not nesting.
+    let text = format!(
+        "# {}\n[[meshes]]\nbuiltin = \"sphere\"\n[meshes.texture]\nbuiltin = \"checker\"\nenv = \"modulate\"\n# \"[[[[\n",
+        "[".repeat(50)
+    );
+    let path = write(&dir, "text.toml", &text);
+    Scene::load(&path).unwrap();
+}

@@ -9,10 +9,12 @@ mod builtin;
 pub mod direct;
 mod file;
 pub mod gltf;
+mod inputs;
 mod meaning;
 mod open;
 mod texture;
 
+pub use inputs::inputs;
 pub use open::{open, OpenNote};
 
 use std::path::{Path, PathBuf};
@@ -39,6 +41,56 @@ pub const MAX_SIZE: u32 = 16384;
 /// The largest scene file read, in bytes (16 MiB): a scene is a short TOML file; anything
 /// larger is refused before it is read.
 pub const MAX_SCENE_BYTES: u64 = 16 << 20;
+
+/// The deepest nesting of arrays and inline tables a scene file may have. Checked before the
+/// TOML parser runs, whose recursion would otherwise take stack in proportion to the depth.
+pub const MAX_SCENE_NESTING: usize = 32;
+
+/// How deep arrays and inline tables nest in TOML `text`: brackets and braces counted outside
+/// strings and comments (a table header `[[meshes]]` counts 2).
+pub(crate) fn nesting_depth(text: &str) -> usize {
+    let bytes = text.as_bytes();
+    let (mut depth, mut deepest, mut i) = (0usize, 0usize, 0usize);
+    while i < bytes.len() {
+        match bytes[i] {
+            b'#' => {
+                while i < bytes.len() && bytes[i] != b'\n' {
+                    i += 1;
+                }
+            }
+            quote @ (b'"' | b'\'') => {
+                let triple = bytes[i..].starts_with(if quote == b'"' { b"\"\"\"" } else { b"'''" });
+                i += if triple { 3 } else { 1 };
+                while i < bytes.len() {
+                    if quote == b'"' && bytes[i] == b'\\' {
+                        i += 2;
+                        continue;
+                    }
+                    if bytes[i] == quote && (!triple || bytes[i..].starts_with(&[quote; 3])) {
+                        // A closing run of more than three quotes keeps the first ones as text.
+                        while triple && bytes.get(i + 3) == Some(&quote) {
+                            i += 1;
+                        }
+                        i += if triple { 2 } else { 0 };
+                        break;
+                    }
+                    if !triple && bytes[i] == b'\n' {
+                        break;
+                    }
+                    i += 1;
+                }
+            }
+            b'[' | b'{' => {
+                depth += 1;
+                deepest = deepest.max(depth);
+            }
+            b']' | b'}' => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+        i += 1;
+    }
+    deepest
+}
 
 /// The host memory a scene's meshes may take by default: 1 GiB, about 22 million vertices
 /// (48 bytes each, shared between triangles) or 6.9 million triangles with vertices of their
@@ -429,6 +481,18 @@ impl Scene {
         budget: MeshBudget,
         preloaded: Option<(PathBuf, self::gltf::Loaded)>,
     ) -> Result<Scene, SceneError> {
+        let depth = nesting_depth(text);
+        if depth > MAX_SCENE_NESTING {
+            return Err(SceneError {
+                path: path.to_path_buf(),
+                kind: SceneErrorKind::Field {
+                    field: "the file".into(),
+                    message: format!(
+                        "arrays and inline tables nest {depth} deep: expected at most {MAX_SCENE_NESTING} (a scene file's values nest 2 deep at most)"
+                    ),
+                },
+            });
+        }
         let file: SceneFile = toml::from_str(text).map_err(|source| SceneError {
             path: path.to_path_buf(),
             kind: SceneErrorKind::Toml { source },

@@ -153,7 +153,12 @@ pub fn write(results: &Results, dir: &Path) -> Result<Written> {
     let (entries, unreadable) = staged?;
     let passes: Vec<&Row> = rows.iter().filter(|r| !needs_attention(r)).collect();
     let html = page::page(results, &entries, &passes);
-    crate::write_file(&dir.join("report.css"), page::CSS.as_bytes())?;
+    let css = own_file(dir, "report.css").inspect_err(|_| {
+        let _ = remove_folder(&images);
+    })?;
+    crate::write_file(&css, page::CSS.as_bytes()).inspect_err(|_| {
+        let _ = remove_folder(&images);
+    })?;
     let old = dir.join(".images.old");
     remove_folder(&old)?;
     let moved = |from: &Path, to: &Path| {
@@ -175,7 +180,7 @@ pub fn write(results: &Results, dir: &Path) -> Result<Written> {
         }
     };
     moved(&images, &final_images).inspect_err(|_| restore())?;
-    let index = dir.join("index.html");
+    let index = own_file(dir, "index.html").inspect_err(|_| restore())?;
     crate::write_file(&index, html.as_bytes()).inspect_err(|_| restore())?;
     remove_folder(&old)?;
     Ok(Written {
@@ -362,9 +367,37 @@ pub fn claim(dir: &Path, references: &[&Path]) -> Result<()> {
         source,
     })?;
     crate::write_file(
-        &dir.join(MARKER),
+        &own_file(dir, MARKER)?,
         b"An ffvk regression report: each report written here replaces images/ and index.html.\n",
     )
+}
+
+/// The names a report writes in its folder: no other output of a run may take them.
+pub const OWN_NAMES: [&str; 6] = [
+    "index.html",
+    "report.css",
+    MARKER,
+    "images",
+    ".images.new",
+    ".images.old",
+];
+
+/// `dir/name`, one of the report's own files, made safe to write: a symbolic link there
+/// (which would carry the page or the style sheet to wherever it points, a scene file
+/// perhaps) is removed, so the report writes a file of its own in its place.
+fn own_file(dir: &Path, name: &str) -> Result<PathBuf> {
+    let path = dir.join(name);
+    if std::fs::symlink_metadata(&path).is_ok_and(|m| m.file_type().is_symlink()) {
+        std::fs::remove_file(&path).map_err(|source| Error::Write {
+            path: path.clone(),
+            source,
+        })?;
+        eprintln!(
+            "ffvk: note: {}: was a symbolic link; replaced by the report's own file (the file it pointed at is untouched)",
+            path.display()
+        );
+    }
+    Ok(path)
 }
 
 /// Removes a folder of the report's own making, if it is there.

@@ -145,6 +145,7 @@ impl Builder<'_> {
         // glLoadMatrix(view).
         gl.load_modelview(view).map_err(self.state("camera.view"))?;
         let mut light_of_index: Vec<(usize, usize)> = Vec::new();
+        let mut warnings = Vec::new();
         for (i, spec) in file.lights.iter().enumerate() {
             let index = match spec.index {
                 None => i,
@@ -169,7 +170,7 @@ impl Builder<'_> {
                 ));
             }
             light_of_index.push((index, i));
-            self.light(&mut gl, &format!("lights[{i}]"), index, spec)?;
+            self.light(&mut gl, &format!("lights[{i}]"), index, spec, &mut warnings)?;
         }
 
         let scene_front = match &file.material {
@@ -183,7 +184,6 @@ impl Builder<'_> {
 
         let exposure_spec = self.exposure_spec(&file, gltf_meaning)?;
         let mut meshes = Vec::new();
-        let mut warnings = Vec::new();
         let scene_texture = match &file.texture {
             Some(t) => self.texture("texture", t, &mut warnings)?,
             None => None,
@@ -449,6 +449,33 @@ impl Builder<'_> {
     }
 
     pub(super) fn camera(&self, c: &CameraSpec, aspect: f32) -> Result<(Mat4, Mat4), SceneError> {
+        // A matrix replaces the values it is made from: both given, one would be ignored.
+        let look_at = [
+            ("eye", c.eye.is_some()),
+            ("target", c.target.is_some()),
+            ("up", c.up.is_some()),
+        ];
+        let perspective = [
+            ("fovy", c.fovy.is_some()),
+            ("near", c.near.is_some()),
+            ("far", c.far.is_some()),
+        ];
+        for (matrix, given, parts) in [
+            ("view", c.view.is_some(), look_at),
+            ("projection", c.projection.is_some(), perspective),
+        ] {
+            let named: Vec<&str> = parts.iter().filter(|(_, g)| *g).map(|(n, _)| *n).collect();
+            if given && !named.is_empty() {
+                return Err(self.field(
+                    format!("camera.{matrix}"),
+                    format!(
+                        "is given with camera.{}, which it replaces: expected either the matrix or {}",
+                        named.join(", camera."),
+                        parts.iter().map(|(n, _)| *n).collect::<Vec<_>>().join("/")
+                    ),
+                ));
+            }
+        }
         let view = match c.view {
             Some(m) => {
                 self.finite("camera.view", &m)?;

@@ -170,6 +170,7 @@ impl Builder<'_> {
         field: &str,
         index: usize,
         l: &LightSpec,
+        warnings: &mut Vec<String>,
     ) -> Result<(), SceneError> {
         let f = |name: &str| format!("{field}.{name}");
         let idx_field = f("index");
@@ -191,10 +192,22 @@ impl Builder<'_> {
             }
         }
         if let Some(p) = l.position {
+            if p[3] == 0.0 && p[..3] == [0.0; 3] {
+                warnings.push(format!(
+                    "{}: (0, 0, 0, 0) is a directional light with no direction: legal GL, but its diffuse and specular terms light nothing (expected a nonzero x, y or z)",
+                    f("position")
+                ));
+            }
             gl.light(index, LightParam::Position(Vec4::from(p)))
                 .map_err(self.state(f("position")))?;
         }
         if let Some(d) = l.spot_direction {
+            if d == [0.0; 3] && l.spot_cutoff.is_some_and(|c| c != 180.0) {
+                warnings.push(format!(
+                    "{}: (0, 0, 0) with a spot cutoff below 180: legal GL, but a spotlight with no direction lights nothing (expected a nonzero direction)",
+                    f("spot_direction")
+                ));
+            }
             gl.light(index, LightParam::SpotDirection(Vec3::from(d)))
                 .map_err(self.state(f("spot_direction")))?;
         }

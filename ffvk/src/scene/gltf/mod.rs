@@ -17,6 +17,7 @@
 mod accessors;
 mod cameras;
 mod compressed;
+mod external;
 mod lights;
 mod materials;
 mod meshopt;
@@ -32,6 +33,7 @@ pub mod write;
 
 pub use accessors::{AccessorPart, AccessorProblem};
 pub use cameras::{CameraProjection, PlacedCamera};
+pub use external::external_files;
 pub use lights::{exact_light, gl_light, spot_exponent, GltfLights, LightKind, PunctualLight};
 pub use materials::{gl_material, PbrMaterial};
 pub use textures::{SampledTexture, TextureMean, Textures};
