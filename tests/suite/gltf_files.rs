@@ -658,7 +658,7 @@ fn an_image_never_lands_on_a_texture_its_model_reads() {
         let (code, _, err) = run(&all);
         assert_eq!(code, 2, "{err}");
         assert!(
-            err.contains("vc.png") && err.contains("is a file the scene reads"),
+            err.contains("vc.png") && err.contains("a file this run reads"),
             "{err}"
         );
         assert_eq!(std::fs::read(&texture).unwrap(), b"the model's texture");

@@ -278,7 +278,9 @@ fn a_scene_output_may_not_replace_the_gltf_it_was_made_from_or_its_buffer() {
     texture(&dir.join("tex.png"));
     textured_gltf(&dir, "m.gltf", "tex.png");
     let bin = std::fs::read(dir.join("tri.bin")).unwrap();
-    let o = run(&dir, &[&"scene", &"m.gltf", &"-o", &"tri.bin"]);
+    // A TOML name (what `scene -o` writes) that links to the buffer.
+    std::os::unix::fs::symlink("tri.bin", dir.join("out.toml")).unwrap();
+    let o = run(&dir, &[&"scene", &"m.gltf", &"-o", &"out.toml"]);
     refused(&o, "tri.bin", &dir.join("tri.bin"), &bin);
 }
 

@@ -605,7 +605,7 @@ fn results_files_and_images_never_land_on_references_scenes_or_each_other() {
         (
             "--junit over a scene file",
             vec![&"--junit", &scene],
-            "would overwrite an input",
+            "a file this run reads",
         ),
         (
             "--json over the run's image",
