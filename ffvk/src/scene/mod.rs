@@ -45,6 +45,20 @@ pub const MAX_SCENE_BYTES: u64 = 16 << 20;
 /// own. [`Limits::mesh_bytes`] (`ffvk --max-mesh-mib`) raises it.
 pub const DEFAULT_MESH_BYTES: u64 = 1 << 30;
 
+/// The decoded textures a scene may take on the host by default: 1 GiB, twelve 4096²
+/// textures (each 64 MiB as RGBA8, 85 MiB with its mipmaps) or about 190 of 1024².
+/// [`Limits::texture_bytes`] (`ffvk --max-texture-mib`) raises it.
+pub const DEFAULT_TEXTURE_BYTES: u64 = 1 << 30;
+
+/// The bytes a glTF file's buffers may take together on the host by default: 1 GiB, what one
+/// buffer file may hold ([`gltf::MAX_FILE_BYTES`]). [`Limits::buffer_bytes`]
+/// (`ffvk --max-buffer-mib`) raises it.
+pub const DEFAULT_BUFFER_BYTES: u64 = 1 << 30;
+
+/// The mesh placements (one glTF primitive placed by one node) a scene may hold by default:
+/// 1,048,576. [`Limits::placements`] (`ffvk --max-placements`) raises it.
+pub const DEFAULT_PLACEMENTS: u64 = 1 << 20;
+
 /// What a scene file may make ffvk allocate and read.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
@@ -57,6 +71,17 @@ pub struct Limits {
     /// before it is read and once per node that places it. The device holds the same
     /// amount.
     pub mesh_bytes: u64,
+    /// The bytes all the scene's decoded textures may take on the host: RGBA8 with its
+    /// mipmaps (a 4096² image takes 85 MiB), each image charged from its header's size
+    /// before it is decoded, once however many glTF images name the same file or bytes.
+    pub texture_bytes: u64,
+    /// The bytes one glTF file's buffers may take together on the host: external files,
+    /// data URIs, the GLB binary chunk and meshopt fallback buffers, each charged before it
+    /// is read or allocated.
+    pub buffer_bytes: u64,
+    /// The mesh placements (one glTF primitive placed by one node) all the scene's glTF files
+    /// may make together.
+    pub placements: u64,
 }
 
 impl Default for Limits {
@@ -64,6 +89,9 @@ impl Default for Limits {
         Limits {
             asset_roots: Vec::new(),
             mesh_bytes: DEFAULT_MESH_BYTES,
+            texture_bytes: DEFAULT_TEXTURE_BYTES,
+            buffer_bytes: DEFAULT_BUFFER_BYTES,
+            placements: DEFAULT_PLACEMENTS,
         }
     }
 }
@@ -73,19 +101,74 @@ with_fields!(Limits {
     with_asset_roots => asset_roots: Vec<PathBuf>,
     /// Sets [`mesh_bytes`](Limits::mesh_bytes).
     with_mesh_bytes => mesh_bytes: u64,
+    /// Sets [`texture_bytes`](Limits::texture_bytes).
+    with_texture_bytes => texture_bytes: u64,
+    /// Sets [`buffer_bytes`](Limits::buffer_bytes).
+    with_buffer_bytes => buffer_bytes: u64,
+    /// Sets [`placements`](Limits::placements).
+    with_placements => placements: u64,
 });
 
-/// The mesh memory left to a scene as it loads.
+/// The mesh memory left to a scene as it loads, and what its glTF files took of the other
+/// per-scene limits ([`Limits::texture_bytes`], [`Limits::placements`]), whose values the
+/// loader is given with the [`Limits`].
 #[derive(Debug, Clone)]
 pub struct MeshBudget {
     limit: u64,
     used: u64,
+    texture_used: u64,
+    placements: u64,
 }
 
 impl MeshBudget {
     /// A budget of `limit` bytes, none used.
     pub fn new(limit: u64) -> Self {
-        MeshBudget { limit, used: 0 }
+        MeshBudget {
+            limit,
+            used: 0,
+            texture_used: 0,
+            placements: 0,
+        }
+    }
+
+    /// Takes `bytes` of host memory that a scene's meshes hold besides their vertices and
+    /// indices (`what`, e.g. the names of the nodes above a placed glTF mesh), or says why
+    /// they do not fit.
+    pub fn charge_bytes(&mut self, bytes: u64, what: impl Into<String>) -> Result<(), OverBudget> {
+        let total = self.used.saturating_add(bytes);
+        if total > self.limit {
+            return Err(OverBudget {
+                vertices: 0,
+                indices: 0,
+                what: what.into(),
+                bytes,
+                used: self.used,
+                limit: self.limit,
+            });
+        }
+        self.used = total;
+        Ok(())
+    }
+
+    /// Takes `bytes` of decoded texture memory within `limit` ([`Limits::texture_bytes`]);
+    /// on `Err`, the bytes the textures before took.
+    pub(crate) fn charge_texture(&mut self, bytes: u64, limit: u64) -> Result<(), u64> {
+        let total = self.texture_used.saturating_add(bytes);
+        if total > limit {
+            return Err(self.texture_used);
+        }
+        self.texture_used = total;
+        Ok(())
+    }
+
+    /// Takes one mesh placement within `limit` ([`Limits::placements`]); on `Err`, the
+    /// placements made before.
+    pub(crate) fn charge_placement(&mut self, limit: u64) -> Result<(), u64> {
+        if self.placements >= limit {
+            return Err(self.placements);
+        }
+        self.placements += 1;
+        Ok(())
     }
 
     /// Takes the memory of a mesh of `vertices` vertices and `indices` indices, or says why
@@ -100,6 +183,7 @@ impl MeshBudget {
             return Err(OverBudget {
                 vertices,
                 indices,
+                what: format!("{vertices} vertices and {indices} indices"),
                 bytes,
                 used: self.used,
                 limit: self.limit,
@@ -113,16 +197,18 @@ impl MeshBudget {
 /// A mesh that would take the scene past its mesh memory limit ([`Limits::mesh_bytes`]).
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 #[error(
-    "{vertices} vertices and {indices} indices take {bytes} bytes, which with the {used} bytes of \
-     the meshes before them passes the scene's mesh memory limit of {limit} bytes: expected \
-     smaller meshes, or a higher limit (ffvk --max-mesh-mib)"
+    "{what} take {bytes} bytes, which with the {used} bytes of the meshes before them passes \
+     the scene's mesh memory limit of {limit} bytes: expected smaller meshes, or a higher limit \
+     (ffvk --max-mesh-mib)"
 )]
 #[non_exhaustive]
 pub struct OverBudget {
-    /// Vertices of the mesh refused.
+    /// Vertices of the mesh refused (0 for other memory).
     pub vertices: usize,
-    /// Indices of the mesh refused.
+    /// Indices of the mesh refused (0 for other memory).
     pub indices: usize,
+    /// What was refused: `N vertices and M indices`, or what else a mesh holds.
+    pub what: String,
     /// What it would take.
     pub bytes: u64,
     /// What the meshes before it took.
@@ -408,18 +494,24 @@ impl Scene {
         Scene::parse_into(text, path, limits, MeshBudget::new(limits.mesh_bytes), None)
     }
 
-    /// [`Scene::parse_with`] with the glTF file at `gltf_path` already loaded (its meshes
-    /// charged to `budget`): a `[[meshes]]` table naming that file takes `loaded` instead of
-    /// reading it again.
-    pub(crate) fn parse_preloaded(
-        text: &str,
+    /// The scene of the TOML values `table` (a scene file's tables as values, not text), with
+    /// the glTF file at `gltf_path` already loaded (its meshes charged to `budget`): a
+    /// `[[meshes]]` table naming that file takes `loaded` instead of reading it again.
+    pub(crate) fn from_table_preloaded(
+        table: toml::Table,
         path: &Path,
         limits: &Limits,
         budget: MeshBudget,
         gltf_path: PathBuf,
         loaded: self::gltf::Loaded,
     ) -> Result<Scene, SceneError> {
-        Scene::parse_into(text, path, limits, budget, Some((gltf_path, loaded)))
+        let file: SceneFile = toml::Value::Table(table)
+            .try_into()
+            .map_err(|source| SceneError {
+                path: path.to_path_buf(),
+                kind: SceneErrorKind::Toml { source },
+            })?;
+        Scene::build(file, path, limits, budget, Some((gltf_path, loaded)))
     }
 
     fn parse_into(
@@ -433,6 +525,16 @@ impl Scene {
             path: path.to_path_buf(),
             kind: SceneErrorKind::Toml { source },
         })?;
+        Scene::build(file, path, limits, budget, preloaded)
+    }
+
+    fn build(
+        file: SceneFile,
+        path: &Path,
+        limits: &Limits,
+        budget: MeshBudget,
+        preloaded: Option<(PathBuf, self::gltf::Loaded)>,
+    ) -> Result<Scene, SceneError> {
         Builder {
             path,
             limits,

@@ -224,7 +224,11 @@ fn parse(ext: &Value, buffers: &[gltf::buffer::Data]) -> Result<Compressed, Stri
 /// Decodes `encoded` into `bytes` bytes (rounded up to whole words, which the filters read).
 fn run(c: &Compressed, encoded: &[u8], bytes: usize) -> Result<Vec<u32>, String> {
     // u32 words: the filters read 16- and 32-bit components, so the bytes are word-aligned.
-    let mut out = vec![0u32; bytes.div_ceil(4)];
+    // (At most the view's byteLength, inside a buffer charged to the file's buffer limit; the
+    // copy is allocated fallibly.)
+    let words = bytes.div_ceil(4);
+    let mut out = crate::alloc::try_vec::<u32>(words, "meshopt decoded data").map_err(|e| e.to_string())?;
+    out.resize(words, 0);
     let dest = out.as_mut_ptr().cast::<std::ffi::c_void>();
     let (count, stride) = (c.count, c.stride);
     // SAFETY: `out` holds at least count × stride bytes, all the decoders write; `encoded` is
