@@ -866,44 +866,56 @@ fn gltf_json(buffer: String, tail_at: usize) -> BoxedStrategy<String> {
     // Matrices mostly affine (a last row of 0, 0, 0, 1), rotations mostly unit quaternions:
     // glTF 2.0 refuses the others, and the rest of the node should be reached.
     let affine = (array(12, -2.0, 2.0), prop::bool::weighted(0.9))
-        .prop_map(|(m, affine)| match m.strip_prefix('[').and_then(|m| m.strip_suffix(']')) {
-            Some(inner) if affine && inner.split(", ").count() == 12 => {
-                let v: Vec<&str> = inner.split(", ").collect();
-                format!(
-                    "[{}, 0, {}, 0, {}, 0, {}, 1]",
-                    v[0..3].join(", "),
-                    v[3..6].join(", "),
-                    v[6..9].join(", "),
-                    v[9..12].join(", ")
-                )
-            }
-            _ => m,
-        })
+        .prop_map(
+            |(m, affine)| match m.strip_prefix('[').and_then(|m| m.strip_suffix(']')) {
+                Some(inner) if affine && inner.split(", ").count() == 12 => {
+                    let v: Vec<&str> = inner.split(", ").collect();
+                    format!(
+                        "[{}, 0, {}, 0, {}, 0, {}, 1]",
+                        v[0..3].join(", "),
+                        v[3..6].join(", "),
+                        v[6..9].join(", "),
+                        v[9..12].join(", ")
+                    )
+                }
+                _ => m,
+            },
+        )
         .boxed();
     let unit = prop::collection::vec(-1.0f64..1.0, 4)
         .prop_map(|q| {
             let length = q.iter().map(|c| c * c).sum::<f64>().sqrt().max(1e-3);
-            format!("[{}]", q.iter().map(|c| format!("{:?}", c / length)).collect::<Vec<_>>().join(", "))
+            format!(
+                "[{}]",
+                q.iter()
+                    .map(|c| format!("{:?}", c / length))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )
         })
         .boxed();
     let node = weighted_members(vec![
-            ("mesh", 0.4, index()),
-            ("children", 0.4, indices()),
-            ("matrix", 0.15, affine),
-            ("translation", 0.4, array(3, -2.0, 2.0)),
-            ("rotation", 0.4, prop_oneof![6 => unit, 1 => array(4, -1.0, 1.0)].boxed()),
-            ("scale", 0.4, array(3, -2.0, 2.0)),
-            (
-                "extensions",
-                0.4,
-                prop_oneof![
-                    3 => light_of_node().prop_map(|l| format!("{{{l}}}")),
-                    1 => (light_of_node(), unknown_value())
-                        .prop_map(|(l, v)| format!("{{{l}, \"X_foo\": {v}}}")),
-                    1 => unknown_extensions(),
-                ]
-                .boxed(),
-            ),
+        ("mesh", 0.4, index()),
+        ("children", 0.4, indices()),
+        ("matrix", 0.15, affine),
+        ("translation", 0.4, array(3, -2.0, 2.0)),
+        (
+            "rotation",
+            0.4,
+            prop_oneof![6 => unit, 1 => array(4, -1.0, 1.0)].boxed(),
+        ),
+        ("scale", 0.4, array(3, -2.0, 2.0)),
+        (
+            "extensions",
+            0.4,
+            prop_oneof![
+                3 => light_of_node().prop_map(|l| format!("{{{l}}}")),
+                1 => (light_of_node(), unknown_value())
+                    .prop_map(|(l, v)| format!("{{{l}, \"X_foo\": {v}}}")),
+                1 => unknown_extensions(),
+            ]
+            .boxed(),
+        ),
     ]);
     let factor = || mostly((0.0f64..1.0).prop_map(|x| format!("{x:?}")).boxed(), number());
     let material = weighted_members(vec![
@@ -1292,8 +1304,16 @@ fn breaks_node_or_accessor_rules(root: &serde_json::Value) -> Option<String> {
         }
     }
     for mesh in elements(root, "meshes") {
-        for p in mesh.get("primitives").and_then(Value::as_array).into_iter().flatten() {
-            let indices = p.get("indices").and_then(Value::as_u64).and_then(|i| accessors.get(i as usize));
+        for p in mesh
+            .get("primitives")
+            .and_then(Value::as_array)
+            .into_iter()
+            .flatten()
+        {
+            let indices = p
+                .get("indices")
+                .and_then(Value::as_u64)
+                .and_then(|i| accessors.get(i as usize));
             if indices.is_some_and(|a| a.get("normalized") == Some(&Value::Bool(true))) {
                 return Some(format!("the indices of {p} are normalized"));
             }
@@ -1321,7 +1341,12 @@ fn breaks_node_or_accessor_rules(root: &serde_json::Value) -> Option<String> {
                 return Some(format!("nodes[{i}].rotation has length {length}"));
             }
         }
-        for c in node.get("children").and_then(Value::as_array).into_iter().flatten() {
+        for c in node
+            .get("children")
+            .and_then(Value::as_array)
+            .into_iter()
+            .flatten()
+        {
             if let Some(c) = c.as_u64().map(|c| c as usize).filter(|&c| c < nodes.len()) {
                 if parent[c].replace(i).is_some() {
                     return Some(format!("node {c} is listed as a child twice"));
@@ -1352,7 +1377,10 @@ fn breaks_node_or_accessor_rules(root: &serde_json::Value) -> Option<String> {
             }
         }
     }
-    let used: Vec<&str> = elements(root, "extensionsUsed").iter().filter_map(Value::as_str).collect();
+    let used: Vec<&str> = elements(root, "extensionsUsed")
+        .iter()
+        .filter_map(Value::as_str)
+        .collect();
     let mut stack = vec![root];
     while let Some(value) = stack.pop() {
         match value {
@@ -1531,7 +1559,11 @@ fn graph() -> BoxedStrategy<Graph> {
         prop::collection::vec((0u8..4, any::<prop::sample::Index>()), 24),
         prop::collection::vec(prop::bool::weighted(0.6), 24),
         prop::collection::vec(prop::collection::vec(0usize..24, 0..3), 24),
-        (0u8..10, any::<prop::sample::Index>(), any::<prop::sample::Index>()),
+        (
+            0u8..10,
+            any::<prop::sample::Index>(),
+            any::<prop::sample::Index>(),
+        ),
         1usize..4,
         prop::collection::vec(0usize..4, 0..30),
         prop::collection::vec(
@@ -1542,37 +1574,46 @@ fn graph() -> BoxedStrategy<Graph> {
             0..12,
         ),
     )
-        .prop_map(|(n, parents, meshes, random, (change, a, b), primitives, images, materials)| {
-            let mut children = vec![Vec::new(); n];
-            let mut has_parent = vec![false; n];
-            for i in 1..n {
-                // One in four nodes is a root; the others hang below an earlier node.
-                let (root, parent) = parents[i];
-                if root != 0 {
-                    children[parent.index(i)].push(i);
-                    has_parent[i] = true;
+        .prop_map(
+            |(n, parents, meshes, random, (change, a, b), primitives, images, materials)| {
+                let mut children = vec![Vec::new(); n];
+                let mut has_parent = vec![false; n];
+                for i in 1..n {
+                    // One in four nodes is a root; the others hang below an earlier node.
+                    let (root, parent) = parents[i];
+                    if root != 0 {
+                        children[parent.index(i)].push(i);
+                        has_parent[i] = true;
+                    }
                 }
-            }
-            let mut roots: Vec<usize> = (0..n).filter(|&i| !has_parent[i]).collect();
-            match change {
-                // An edge from any node to any: a second parent, a child twice, a cycle, a
-                // root made a child (or, by chance, an edge that keeps a forest).
-                0 | 1 => children[a.index(n)].push(b.index(n)),
-                2 => roots.push(a.index(n)),
-                3 => children = random.into_iter().take(n).map(|c| c.into_iter().filter(|&i| i < n).collect()).collect(),
-                _ => {}
-            }
-            let textures = images.len();
-            let pick = |i: Option<prop::sample::Index>| i.filter(|_| textures > 0).map(|i| i.index(textures));
-            Graph {
-                children,
-                meshes: meshes[..n].to_vec(),
-                roots,
-                primitives,
-                images,
-                materials: materials.into_iter().map(|(b, e)| (pick(b), pick(e))).collect(),
-            }
-        })
+                let mut roots: Vec<usize> = (0..n).filter(|&i| !has_parent[i]).collect();
+                match change {
+                    // An edge from any node to any: a second parent, a child twice, a cycle, a
+                    // root made a child (or, by chance, an edge that keeps a forest).
+                    0 | 1 => children[a.index(n)].push(b.index(n)),
+                    2 => roots.push(a.index(n)),
+                    3 => {
+                        children = random
+                            .into_iter()
+                            .take(n)
+                            .map(|c| c.into_iter().filter(|&i| i < n).collect())
+                            .collect()
+                    }
+                    _ => {}
+                }
+                let textures = images.len();
+                let pick =
+                    |i: Option<prop::sample::Index>| i.filter(|_| textures > 0).map(|i| i.index(textures));
+                Graph {
+                    children,
+                    meshes: meshes[..n].to_vec(),
+                    roots,
+                    primitives,
+                    images,
+                    materials: materials.into_iter().map(|(b, e)| (pick(b), pick(e))).collect(),
+                }
+            },
+        )
         .boxed()
 }
 
@@ -1584,14 +1625,17 @@ impl Graph {
             .zip(&self.meshes)
             .map(|(children, &mesh)| {
                 let children: Vec<String> = children.iter().map(usize::to_string).collect();
-                let mesh = if mesh { r#""mesh": 0, "#} else { "" };
+                let mesh = if mesh { r#""mesh": 0, "# } else { "" };
                 format!(r#"{{{mesh}"children": [{}]}}"#, children.join(", "))
             })
             .collect();
         let primitives: Vec<String> = (0..self.primitives)
             .map(|p| match self.materials.len() {
                 0 => r#"{"attributes": {"POSITION": 0}, "indices": 1}"#.to_owned(),
-                m => format!(r#"{{"attributes": {{"POSITION": 0}}, "indices": 1, "material": {}}}"#, p % m),
+                m => format!(
+                    r#"{{"attributes": {{"POSITION": 0}}, "indices": 1, "material": {}}}"#,
+                    p % m
+                ),
             })
             .collect();
         let info = |t: Option<usize>| t.map(|t| format!(r#"{{"index": {t}}}"#));
@@ -1615,8 +1659,14 @@ impl Graph {
             r#""uri": "b.png""#.to_owned(),
             format!(r#""uri": "data:image/png;base64,{}""#, base64(png())),
         ];
-        let images: Vec<String> = self.images.iter().map(|&s| format!("{{{}}}", sources[s])).collect();
-        let textures: Vec<String> = (0..self.images.len()).map(|i| format!(r#"{{"source": {i}}}"#)).collect();
+        let images: Vec<String> = self
+            .images
+            .iter()
+            .map(|&s| format!("{{{}}}", sources[s]))
+            .collect();
+        let textures: Vec<String> = (0..self.images.len())
+            .map(|i| format!(r#"{{"source": {i}}}"#))
+            .collect();
         let roots: Vec<String> = self.roots.iter().map(usize::to_string).collect();
         format!(
             r#"{{"asset": {{"version": "2.0"}},
@@ -1667,15 +1717,17 @@ impl Graph {
     }
 
     /// The placements of a forest: the primitives of each node below a root that places
-    /// the mesh.
-    fn placements(&self) -> usize {
-        let mut stack = self.roots.clone();
-        let mut count = 0;
-        while let Some(node) = stack.pop() {
-            count += usize::from(self.meshes[node]) * self.primitives;
-            stack.extend(&self.children[node]);
+    /// the mesh, and what they count against the limit (each the nodes on its path).
+    fn placements(&self) -> (usize, usize) {
+        let mut stack: Vec<(usize, usize)> = self.roots.iter().map(|&r| (r, 1)).collect();
+        let (mut count, mut weight) = (0, 0);
+        while let Some((node, depth)) = stack.pop() {
+            let placed = usize::from(self.meshes[node]) * self.primitives;
+            count += placed;
+            weight += placed * depth;
+            stack.extend(self.children[node].iter().map(|&c| (c, depth + 1)));
         }
-        count
+        (count, weight)
     }
 
     /// The images decoded: the distinct files or data the materials' textures show.
@@ -1712,8 +1764,9 @@ fn generated_node_graphs_and_texture_counts_load_or_are_refused_within_their_lim
     std::fs::write(dir.join("quad.bin"), bin).unwrap();
     std::fs::write(dir.join("a.png"), png()).unwrap();
     std::fs::write(dir.join("b.png"), png()).unwrap();
-    // A 2×2 image takes 20 bytes with its mipmaps: two fit, a third does not.
-    const PLACEMENTS: usize = 30;
+    // Placements count the nodes on their paths. A 2×2 image takes 20 bytes with its
+    // mipmaps: two fit, a third does not.
+    const PLACEMENTS: usize = 60;
     let limits = Limits::default()
         .with_placements(PLACEMENTS as u64)
         .with_texture_bytes(40);
@@ -1730,7 +1783,7 @@ fn generated_node_graphs_and_texture_counts_load_or_are_refused_within_their_lim
         })?;
         let (expected, slot) = if !graph.is_forest() {
             ("a forest", 0)
-        } else if graph.placements() > PLACEMENTS {
+        } else if graph.placements().1 > PLACEMENTS {
             ("--max-placements", 1)
         } else if graph.decoded() > 2 {
             ("--max-texture-mib", 2)
@@ -1739,14 +1792,20 @@ fn generated_node_graphs_and_texture_counts_load_or_are_refused_within_their_lim
         };
         counts.borrow_mut()[slot] += 1;
         match (&outcome, expected) {
-            (Ok(meshes), "") => prop_assert_eq!(*meshes, graph.placements()),
+            (Ok(meshes), "") => prop_assert_eq!(*meshes, graph.placements().0),
             (Err(e), "a forest") => prop_assert!(
                 e.contains("g.gltf") && (e.contains("disjoint trees") || e.contains("scenes[0].nodes[")),
                 "{}",
                 e
             ),
-            (Err(e), words) if !words.is_empty() => prop_assert!(e.contains(words), "expected {}: {}", words, e),
-            _ => return Err(TestCaseError::fail(format!("expected {expected:?}, got {outcome:?}"))),
+            (Err(e), words) if !words.is_empty() => {
+                prop_assert!(e.contains(words), "expected {}: {}", words, e)
+            }
+            _ => {
+                return Err(TestCaseError::fail(format!(
+                    "expected {expected:?}, got {outcome:?}"
+                )))
+            }
         }
         Ok(())
     });

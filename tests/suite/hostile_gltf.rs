@@ -479,7 +479,9 @@ fn load_within(
     let (tx, rx) = std::sync::mpsc::channel();
     std::thread::spawn(move || {
         let mut budget = ffvk::scene::MeshBudget::new(limits.mesh_bytes);
-        let _ = tx.send(ffvk::scene::gltf::load_with(&path, &limits, &mut budget, textures).map_err(|e| e.to_string()));
+        let _ = tx.send(
+            ffvk::scene::gltf::load_with(&path, &limits, &mut budget, textures).map_err(|e| e.to_string()),
+        );
     });
     rx.recv_timeout(std::time::Duration::from_secs(seconds))
         .unwrap_or_else(|_| panic!("the load took more than {seconds} s (or panicked)"))
@@ -517,7 +519,7 @@ fn node_graphs_that_are_not_trees_are_refused_naming_the_nodes() {
             "unreached-cycle",
             r#"{"mesh": 0}, {"children": [2]}, {"children": [1], "mesh": 0}"#,
             "[0]",
-            "nodes 2 → 1 → 2: each is the next one's parent, so node 2 is its own ancestor",
+            "nodes 1 → 2 → 1: each is the next one's parent, so node 1 is its own ancestor",
         ),
         (
             "self-parent",
@@ -552,8 +554,8 @@ fn node_graphs_that_are_not_trees_are_refused_naming_the_nodes() {
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
-/// Each placement (a primitive placed by a node) counts against `Limits::placements`; the
-/// one past it is refused naming the node and the flag that raises it.
+/// Each placement (a primitive placed by a node) counts against `Limits::placements` by the
+/// nodes on its path; the one past it is refused naming the node and the flag that raises it.
 #[test]
 fn mesh_placements_past_the_limit_are_refused_naming_the_node_and_the_flag() {
     let dir = scratch("placements");
@@ -567,22 +569,32 @@ fn mesh_placements_past_the_limit_are_refused_naming_the_node_and_the_flag() {
         &quad_buffer(&[]),
     );
     let limits = ffvk::scene::Limits::default();
-    assert_eq!(limits.placements, 1 << 20);
-    let loaded = load_within(20, path.clone(), limits.clone().with_placements(201), Default::default());
+    assert_eq!(limits.placements, 1 << 22);
+    // 201 placements two nodes deep count 402.
+    let loaded = load_within(
+        20,
+        path.clone(),
+        limits.clone().with_placements(402),
+        Default::default(),
+    );
     assert_eq!(loaded.map(|l| l.meshes.len()), Ok(201));
-    let e = load_within(20, path, limits.with_placements(200), Default::default()).unwrap_err();
+    let e = load_within(20, path, limits.with_placements(401), Default::default()).unwrap_err();
     assert!(
-        e.contains("many.gltf: nodes[201] places mesh 0 primitive 0, one more than the 200 placements")
+        e.contains(
+            "many.gltf: nodes[201] places mesh 0 primitive 0 2 node(s) deep, which with the 400 \
+             placements before it"
+        ) && e.contains("limit of 401")
             && e.contains("ffvk --max-placements"),
         "{e}"
     );
 }
 
-/// Each placed mesh keeps the names of the nodes above it (`node_path`): on a chain of nodes
-/// that each place a mesh those copies grow as the square of the depth (2000 deep: 2 million
-/// names, 60 MB, for 300 KB of meshes). They count against the mesh budget.
+/// Each placed mesh keeps the names of the nodes on its path (`node_path`): on a chain of
+/// nodes that each place a mesh those copies grow as the square of the depth (2000 deep: two
+/// million names, 60 MB, for 300 KB of meshes, taken without a bound). A placement counts
+/// the nodes on its path against the placement limit.
 #[test]
-fn node_paths_kept_by_placements_on_a_deep_chain_count_against_the_mesh_budget() {
+fn placements_on_a_deep_chain_count_the_nodes_on_their_paths() {
     let dir = scratch("deep-paths");
     let depth = 2000;
     let nodes: Vec<String> = (0..depth)
@@ -591,15 +603,23 @@ fn node_paths_kept_by_placements_on_a_deep_chain_count_against_the_mesh_budget()
             false => r#"{"mesh": 0}"#.to_owned(),
         })
         .collect();
-    let path = write_gltf(&dir, "chain", &graph_json("chain", "", &nodes.join(", "), "[0]"), &quad_buffer(&[]));
-    let limits = ffvk::scene::Limits::default().with_mesh_bytes(4 << 20);
-    let e = load_within(30, path, limits, Default::default())
+    let path = write_gltf(
+        &dir,
+        "chain",
+        &graph_json("chain", "", &nodes.join(", "), "[0]"),
+        &quad_buffer(&[]),
+    );
+    // 1 + 2 + … + 2000 = 2001000 fits the default; a million does not: node 1413 (1414 deep)
+    // is the first past it, after 1413 · 1414 / 2 = 998991.
+    let loaded = load_within(60, path.clone(), Default::default(), Default::default());
+    assert_eq!(loaded.map(|l| l.meshes.len()), Ok(2000));
+    let limits = ffvk::scene::Limits::default().with_placements(1_000_000);
+    let e = load_within(60, path, limits, Default::default())
         .map(|l| l.meshes.len())
         .unwrap_err();
     assert!(
-        e.contains("chain.gltf: mesh 0 primitive 0: the names of the")
-            && e.contains("nodes above it take")
-            && e.contains("ffvk --max-mesh-mib"),
+        e.contains("chain.gltf: nodes[1413] places mesh 0 primitive 0 1414 node(s) deep, which with the 998991 placements before it")
+            && e.contains("ffvk --max-placements"),
         "{e}"
     );
 }
@@ -610,7 +630,11 @@ fn crc32(bytes: &[u8]) -> u32 {
     for &b in bytes {
         crc ^= u32::from(b);
         for _ in 0..8 {
-            crc = if crc & 1 != 0 { (crc >> 1) ^ 0xEDB8_8320 } else { crc >> 1 };
+            crc = if crc & 1 != 0 {
+                (crc >> 1) ^ 0xEDB8_8320
+            } else {
+                crc >> 1
+            };
         }
     }
     !crc
@@ -670,7 +694,13 @@ fn images_naming_one_file_are_decoded_once() {
         .save(dir.join("t.png"))
         .unwrap();
     let uris: Vec<String> = (0..60)
-        .map(|i| if i % 2 == 0 { "t.png".to_owned() } else { "./t.png".to_owned() })
+        .map(|i| {
+            if i % 2 == 0 {
+                "t.png".to_owned()
+            } else {
+                "./t.png".to_owned()
+            }
+        })
         .collect();
     let path = write_gltf(&dir, "shared", &textured_json("shared", &uris), &quad_buffer(&[]));
     let loaded = load_within(60, path, Default::default(), ffvk::scene::gltf::Textures::Means).unwrap();
@@ -679,7 +709,12 @@ fn images_naming_one_file_are_decoded_once() {
         .iter()
         .map(|m| {
             let material = m.material.as_ref().expect("a material");
-            material.base_color_sampled.as_ref().expect("sampled").image.clone()
+            material
+                .base_color_sampled
+                .as_ref()
+                .expect("sampled")
+                .image
+                .clone()
         })
         .collect();
     assert_eq!(images.len(), 60);
@@ -707,9 +742,14 @@ fn decoded_textures_past_the_texture_limit_are_refused_from_their_headers_naming
         })
         .collect();
     let path = write_gltf(&dir, "big", &textured_json("big", &uris), &quad_buffer(&[]));
-    let e = load_within(60, path.clone(), Default::default(), ffvk::scene::gltf::Textures::Means)
-        .map(|l| l.warnings)
-        .unwrap_err();
+    let e = load_within(
+        60,
+        path.clone(),
+        Default::default(),
+        ffvk::scene::gltf::Textures::Means,
+    )
+    .map(|l| l.warnings)
+    .unwrap_err();
     assert!(
         e.contains(
             "big.gltf: images[12]: 4096x4096 texels take 89478484 bytes decoded (RGBA8 with \
@@ -719,9 +759,18 @@ fn decoded_textures_past_the_texture_limit_are_refused_from_their_headers_naming
         "{e}"
     );
     // Twelve fit; textures that are not read are not charged.
-    let twelve = write_gltf(&dir, "twelve", &textured_json("twelve", &uris[..12]), &quad_buffer(&[]));
+    let twelve = write_gltf(
+        &dir,
+        "twelve",
+        &textured_json("twelve", &uris[..12]),
+        &quad_buffer(&[]),
+    );
     let loaded = load_within(60, twelve, Default::default(), ffvk::scene::gltf::Textures::Means).unwrap();
-    assert!(loaded.warnings.iter().all(|w| w.contains("cannot decode")), "{:?}", loaded.warnings);
+    assert!(
+        loaded.warnings.iter().all(|w| w.contains("cannot decode")),
+        "{:?}",
+        loaded.warnings
+    );
     load_within(60, path, Default::default(), ffvk::scene::gltf::Textures::Ignore).unwrap();
 }
 
@@ -732,13 +781,19 @@ fn decoded_textures_past_the_texture_limit_are_refused_from_their_headers_naming
 #[test]
 fn buffers_past_the_buffer_limit_are_refused_before_they_are_allocated() {
     let dir = scratch("fallback");
-    let fallback = r#"{"byteLength": 1073741824, "extensions": {"EXT_meshopt_compression": {"fallback": true}}}"#;
-    let json = graph_json("fallback", r#""extensionsUsed": ["EXT_meshopt_compression"],"#, r#"{"mesh": 0}"#, "[0]")
-        .replacen(
-            r#""byteLength": 60}]"#,
-            &format!(r#""byteLength": 60}}, {fallback}]"#),
-            1,
-        );
+    let fallback =
+        r#"{"byteLength": 1073741824, "extensions": {"EXT_meshopt_compression": {"fallback": true}}}"#;
+    let json = graph_json(
+        "fallback",
+        r#""extensionsUsed": ["EXT_meshopt_compression"],"#,
+        r#"{"mesh": 0}"#,
+        "[0]",
+    )
+    .replacen(
+        r#""byteLength": 60}]"#,
+        &format!(r#""byteLength": 60}}, {fallback}]"#),
+        1,
+    );
     let path = write_gltf(&dir, "fallback", &json, &quad_buffer(&[]));
     let e = load_within(20, path, Default::default(), Default::default())
         .map(|l| l.meshes.len())
@@ -751,9 +806,16 @@ fn buffers_past_the_buffer_limit_are_refused_before_they_are_allocated() {
         "{e}"
     );
     // A buffer file counts at its size, before it is read.
-    let path = write_gltf(&dir, "file", &graph_json("file", "", r#"{"mesh": 0}"#, "[0]"), &quad_buffer(&[]));
+    let path = write_gltf(
+        &dir,
+        "file",
+        &graph_json("file", "", r#"{"mesh": 0}"#, "[0]"),
+        &quad_buffer(&[]),
+    );
     let limits = ffvk::scene::Limits::default().with_buffer_bytes(59);
-    let e = load_within(20, path, limits, Default::default()).map(|l| l.meshes.len()).unwrap_err();
+    let e = load_within(20, path, limits, Default::default())
+        .map(|l| l.meshes.len())
+        .unwrap_err();
     assert!(
         e.contains("buffers[0]: its file of 60 bytes, with the 0 bytes of the buffers before it, passes the limit of 59 bytes"),
         "{e}"
@@ -775,7 +837,7 @@ fn specification_violations_in_accessors_nodes_and_extensions_are_refused_naming
         ("matrix-and-trs", "", r#"{"mesh": 0, "matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1], "translation": [1, 0, 0]}"#, "",
          "nodes[0].matrix: given with translation: expected either a matrix or translation, rotation and scale"),
         ("rotation-length-2", "", r#"{"mesh": 0, "rotation": [0, 0, 0, 2]}"#, "",
-         "nodes[0].rotation: [0, 0, 0, 2] has length 2: expected a unit quaternion (length 1 within 0.01)"),
+         "nodes[0].rotation: [0, 0, 0, 2]: expected a unit quaternion (length 1 within 0.01; its length is 2)"),
         ("projective", "", r#"{"mesh": 0, "matrix": [1,0,0,0.5, 0,1,0,0, 0,0,1,0, 0,0,0,1]}"#, "",
          "nodes[0].matrix: its last row (elements 3, 7, 11, 15) is [0.5, 0.0, 0.0, 1.0]: expected [0.0, 0.0, 0.0, 1.0]"),
         ("unlisted-light", "", r#"{"mesh": 0, "extensions": {"KHR_lights_punctual": {"light": 0}}}"#,
@@ -792,7 +854,11 @@ fn specification_violations_in_accessors_nodes_and_extensions_are_refused_naming
             }
             _ => "",
         };
-        let json = quad_json(&buffer(name), views, accessor_extra, node).replacen("{\"asset\"", &format!("{{{top} \"asset\""), 1);
+        let json = quad_json(&buffer(name), views, accessor_extra, node).replacen(
+            "{\"asset\"",
+            &format!("{{{top} \"asset\""),
+            1,
+        );
         match load(&write_gltf(&dir, name, &json, &bin)).map(|l| l.meshes.len()) {
             Err(e) if e.to_string().contains(&format!("{name}.gltf")) && e.to_string().contains(words) => {}
             outcome => failures.push(format!("{name}: {:?}", outcome.map_err(|e| e.to_string()))),
@@ -813,16 +879,30 @@ fn specification_violations_in_accessors_nodes_and_extensions_are_refused_naming
     }
     // A rotation rounded to two decimals is within the tolerance, and drawn as the unit
     // quaternion it stands for: no scale (it scaled by its squared length, 1.0025 here).
-    let json = quad_json(&buffer("rounded"), "", "", r#"{"mesh": 0, "rotation": [0.1, 0.3, 0, 0.95]}"#);
+    let json = quad_json(
+        &buffer("rounded"),
+        "",
+        "",
+        r#"{"mesh": 0, "rotation": [0.1, 0.3, 0, 0.95]}"#,
+    );
     let loaded = load(&write_gltf(&dir, "rounded", &json, &bin)).unwrap();
     let det = loaded.meshes[0].transform.determinant();
     if (det - 1.0).abs() >= 1e-6 {
         failures.push(format!("rounded: determinant {det}"));
     }
     // An extension ffvk does not read, left out of extensionsUsed, is a warning.
-    let json = quad_json(&buffer("unlisted-other"), "", "", r#"{"mesh": 0, "extensions": {"X_other": {}}}"#);
+    let json = quad_json(
+        &buffer("unlisted-other"),
+        "",
+        "",
+        r#"{"mesh": 0, "extensions": {"X_other": {}}}"#,
+    );
     let loaded = load(&write_gltf(&dir, "unlisted-other", &json, &bin)).unwrap();
-    if !loaded.warnings.iter().any(|w| w.contains("X_other") && w.contains("extensionsUsed")) {
+    if !loaded
+        .warnings
+        .iter()
+        .any(|w| w.contains("X_other") && w.contains("extensionsUsed"))
+    {
         failures.push(format!("unlisted-other: {:?}", loaded.warnings));
     }
     assert!(failures.is_empty(), "{failures:#?}");
@@ -836,19 +916,38 @@ fn json_errors_name_the_json_path_of_the_value() {
     let bin = quad_buffer(&[]);
     let base = quad_json(r#"{"uri": "x.bin", "byteLength": 60}"#, "", "", r#"{"mesh": 0}"#);
     let cases = [
-        ("count", base.replacen(r#""count": 4"#, r#""count": -4"#, 1), "accessors[0].count: invalid value: integer `-4`"),
+        (
+            "count",
+            base.replacen(r#""count": 4"#, r#""count": -4"#, 1),
+            "accessors[0].count: invalid value: integer `-4`",
+        ),
         (
             "mode",
             base.replacen(r#""indices": 1}"#, r#""indices": 1, "mode": -1}"#, 1),
             "meshes[0].primitives[0].mode: ",
         ),
-        ("version", base.replacen(r#""version": "2.0""#, r#""version": 2"#, 1), "asset.version: invalid type: integer `2`, expected a string"),
-        ("huge", base.replacen(r#"{"mesh": 0}"#, r#"{"mesh": 0, "translation": [1e400, 0, 0]}"#, 1), "nodes[0].translation[0]: number out of range"),
+        (
+            "version",
+            base.replacen(r#""version": "2.0""#, r#""version": 2"#, 1),
+            "asset.version: invalid type: integer `2`, expected a string",
+        ),
+        (
+            "huge",
+            base.replacen(
+                r#"{"mesh": 0}"#,
+                r#"{"mesh": 0, "translation": [1e400, 0, 0]}"#,
+                1,
+            ),
+            "nodes[0].translation[0]: number out of range",
+        ),
     ];
     let mut failures = Vec::new();
     for (name, json, words) in cases {
         match load(&write_gltf(&dir, name, &json, &bin)).map(|l| l.meshes.len()) {
-            Err(e) if [&format!("{name}.gltf"), words, "line"].iter().all(|w| e.to_string().contains(*w)) => {}
+            Err(e)
+                if [&format!("{name}.gltf"), words, "line"]
+                    .iter()
+                    .all(|w| e.to_string().contains(*w)) => {}
             outcome => failures.push(format!("{name}: {:?}", outcome.map_err(|e| e.to_string()))),
         }
     }
@@ -863,7 +962,17 @@ fn json_errors_name_the_json_path_of_the_value() {
 fn a_far_out_or_far_zoomed_gltf_frames_or_fails_naming_the_values_never_through_toml_text() {
     use ffvk::scene::direct::{from_gltf, DirectOptions, Orbit};
     let dir = scratch("framing");
-    let path = write_gltf(&dir, "quad", &quad_json(r#"{"uri": "quad.bin", "byteLength": 60}"#, "", "", r#"{"mesh": 0}"#), &quad_buffer(&[]));
+    let path = write_gltf(
+        &dir,
+        "quad",
+        &quad_json(
+            r#"{"uri": "quad.bin", "byteLength": 60}"#,
+            "",
+            "",
+            r#"{"mesh": 0}"#,
+        ),
+        &quad_buffer(&[]),
+    );
     // Zoomed out 1e16 times the camera stands 3e16 away: framed, and the TOML (which writes
     // those numbers with their exponents) reads back as the same camera. At 1e-30 float32 cannot invert
     // its matrices: refused, naming the zoom and the camera's values.
@@ -878,7 +987,9 @@ fn a_far_out_or_far_zoomed_gltf_frames_or_fails_naming_the_values_never_through_
         .unwrap_err()
         .to_string();
     assert!(
-        !e.contains("TOML") && e.contains("quad.gltf: camera: ") && e.contains("at zoom 1e-30 put the camera's eye at ["),
+        !e.contains("TOML")
+            && e.contains("quad.gltf: camera: ")
+            && e.contains("at zoom 1e-30 put the camera's eye at ["),
         "{e}"
     );
 
@@ -892,10 +1003,32 @@ fn a_far_out_or_far_zoomed_gltf_frames_or_fails_naming_the_values_never_through_
             .collect();
         let mut bin = bytemuck::cast_slice::<f32, u8>(&corners).to_vec();
         bin.extend(bytemuck::cast_slice::<u16, u8>(&[0, 1, 2, 0, 2, 3]));
-        let json = quad_json(&format!(r#"{{"uri": "{name}.bin", "byteLength": 60}}"#), "", "", r#"{"mesh": 0}"#)
-            .replace(r#""min": [-1, -1, 0], "max": [1, 1, 1]"#, &format!(r#""min": [{}, {}, 0], "max": [{}, {}, 0]"#, -scale + shift, -scale, scale + shift, scale));
+        let json = quad_json(
+            &format!(r#"{{"uri": "{name}.bin", "byteLength": 60}}"#),
+            "",
+            "",
+            r#"{"mesh": 0}"#,
+        )
+        .replace(
+            r#""min": [-1, -1, 0], "max": [1, 1, 1]"#,
+            &format!(
+                r#""min": [{}, {}, 0], "max": [{}, {}, 0]"#,
+                -scale + shift,
+                -scale,
+                scale + shift,
+                scale
+            ),
+        );
         let path = write_gltf(&dir, name, &json, &bin);
-        match (from_gltf(&path, &format!("{name}.gltf"), &Default::default(), &DirectOptions::default()), ok) {
+        match (
+            from_gltf(
+                &path,
+                &format!("{name}.gltf"),
+                &Default::default(),
+                &DirectOptions::default(),
+            ),
+            ok,
+        ) {
             (Ok(made), true) => {
                 let again = ffvk::scene::Scene::parse(&made.toml, &path).unwrap();
                 assert_eq!(again.view, made.scene.view, "{name}");
@@ -903,7 +1036,10 @@ fn a_far_out_or_far_zoomed_gltf_frames_or_fails_naming_the_values_never_through_
             (Err(e), false) => {
                 let e = e.to_string();
                 assert!(
-                    !e.contains("TOML") && e.contains("camera") && e.contains("1e38") && e.contains("expected bounds"),
+                    !e.contains("TOML")
+                        && e.contains("camera")
+                        && e.contains("1e38")
+                        && e.contains("expected bounds"),
                     "{name}: {e}"
                 );
             }

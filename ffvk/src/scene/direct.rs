@@ -320,7 +320,8 @@ pub fn from_gltf(
     });
     choices.push("glTF's meaning (gltf_defaults = true): see the README's \"glTF files\"".to_owned());
 
-    check_view(&view, lo, hi, options.orbit.zoom.filter(|_| camera.is_none())).map_err(|m| field("camera", m))?;
+    check_view(&view, lo, hi, options.orbit.zoom.filter(|_| camera.is_none()))
+        .map_err(|m| field("camera", m))?;
     let background = options.background.unwrap_or([0.2, 0.2, 0.2, 1.0]);
     let lights = (headlight, mapping, options.exposure);
     let toml = |gltf_ref: &str| {
@@ -606,7 +607,11 @@ fn scene_table(
     ];
     match &view.projection {
         ViewProjection::Perspective { fovy, near, far } => {
-            camera.extend([("fovy", float(*fovy)), ("near", float(*near)), ("far", float(*far))]);
+            camera.extend([
+                ("fovy", float(*fovy)),
+                ("near", float(*near)),
+                ("far", float(*far)),
+            ]);
         }
         ViewProjection::Matrix(m) => camera.push(("projection", floats(&m.to_cols_array()))),
     }

@@ -55,9 +55,10 @@ pub const DEFAULT_TEXTURE_BYTES: u64 = 1 << 30;
 /// (`ffvk --max-buffer-mib`) raises it.
 pub const DEFAULT_BUFFER_BYTES: u64 = 1 << 30;
 
-/// The mesh placements (one glTF primitive placed by one node) a scene may hold by default:
-/// 1,048,576. [`Limits::placements`] (`ffvk --max-placements`) raises it.
-pub const DEFAULT_PLACEMENTS: u64 = 1 << 20;
+/// The mesh placements (one glTF primitive placed by one node, counted by the nodes on its
+/// path) a scene may hold by default: 4,194,304, e.g. a million primitives placed three nodes
+/// deep. [`Limits::placements`] (`ffvk --max-placements`) raises it.
+pub const DEFAULT_PLACEMENTS: u64 = 1 << 22;
 
 /// What a scene file may make ffvk allocate and read.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -80,7 +81,9 @@ pub struct Limits {
     /// is read or allocated.
     pub buffer_bytes: u64,
     /// The mesh placements (one glTF primitive placed by one node) all the scene's glTF files
-    /// may make together.
+    /// may make together, each counted by the nodes on its path (1 for a root node's, 10 for a
+    /// node 10 deep), whose names it keeps: so that a deep chain of nodes that each place a
+    /// mesh, whose paths grow as the square of its depth, is bounded too.
     pub placements: u64,
 }
 
@@ -131,25 +134,6 @@ impl MeshBudget {
         }
     }
 
-    /// Takes `bytes` of host memory that a scene's meshes hold besides their vertices and
-    /// indices (`what`, e.g. the names of the nodes above a placed glTF mesh), or says why
-    /// they do not fit.
-    pub fn charge_bytes(&mut self, bytes: u64, what: impl Into<String>) -> Result<(), OverBudget> {
-        let total = self.used.saturating_add(bytes);
-        if total > self.limit {
-            return Err(OverBudget {
-                vertices: 0,
-                indices: 0,
-                what: what.into(),
-                bytes,
-                used: self.used,
-                limit: self.limit,
-            });
-        }
-        self.used = total;
-        Ok(())
-    }
-
     /// Takes `bytes` of decoded texture memory within `limit` ([`Limits::texture_bytes`]);
     /// on `Err`, the bytes the textures before took.
     pub(crate) fn charge_texture(&mut self, bytes: u64, limit: u64) -> Result<(), u64> {
@@ -161,13 +145,14 @@ impl MeshBudget {
         Ok(())
     }
 
-    /// Takes one mesh placement within `limit` ([`Limits::placements`]); on `Err`, the
-    /// placements made before.
-    pub(crate) fn charge_placement(&mut self, limit: u64) -> Result<(), u64> {
-        if self.placements >= limit {
+    /// Takes one mesh placement `depth` nodes deep within `limit` ([`Limits::placements`]);
+    /// on `Err`, what the placements before counted.
+    pub(crate) fn charge_placement(&mut self, depth: u64, limit: u64) -> Result<(), u64> {
+        let total = self.placements.saturating_add(depth);
+        if total > limit {
             return Err(self.placements);
         }
-        self.placements += 1;
+        self.placements = total;
         Ok(())
     }
 
@@ -183,7 +168,6 @@ impl MeshBudget {
             return Err(OverBudget {
                 vertices,
                 indices,
-                what: format!("{vertices} vertices and {indices} indices"),
                 bytes,
                 used: self.used,
                 limit: self.limit,
@@ -197,18 +181,16 @@ impl MeshBudget {
 /// A mesh that would take the scene past its mesh memory limit ([`Limits::mesh_bytes`]).
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 #[error(
-    "{what} take {bytes} bytes, which with the {used} bytes of the meshes before them passes \
-     the scene's mesh memory limit of {limit} bytes: expected smaller meshes, or a higher limit \
-     (ffvk --max-mesh-mib)"
+    "{vertices} vertices and {indices} indices take {bytes} bytes, which with the {used} bytes of \
+     the meshes before them passes the scene's mesh memory limit of {limit} bytes: expected \
+     smaller meshes, or a higher limit (ffvk --max-mesh-mib)"
 )]
 #[non_exhaustive]
 pub struct OverBudget {
-    /// Vertices of the mesh refused (0 for other memory).
+    /// Vertices of the mesh refused.
     pub vertices: usize,
-    /// Indices of the mesh refused (0 for other memory).
+    /// Indices of the mesh refused.
     pub indices: usize,
-    /// What was refused: `N vertices and M indices`, or what else a mesh holds.
-    pub what: String,
     /// What it would take.
     pub bytes: u64,
     /// What the meshes before it took.

@@ -389,10 +389,12 @@ pub enum LoadErrorKind {
         source: crate::alloc::AllocError,
     },
 
-    /// A placement past the scene's limit on mesh placements ([`Limits::placements`]).
+    /// A placement past the scene's limit on mesh placements ([`Limits::placements`]), each
+    /// counted by the nodes on its path.
     #[error(
-        "nodes[{node}] places {primitive}, one more than the {made} placements the scene has \
-         made, which is its limit of {limit}: expected fewer nodes placing meshes, or a higher \
+        "nodes[{node}] places {primitive} {depth} node(s) deep, which with the {made} placements \
+         before it (each counted by the nodes on its path, whose names it keeps) passes the \
+         scene's placement limit of {limit}: expected fewer or shallower placements, or a higher \
          limit (ffvk --max-placements)"
     )]
     Placements {
@@ -400,7 +402,9 @@ pub enum LoadErrorKind {
         node: usize,
         /// `mesh M ("name") primitive P`.
         primitive: String,
-        /// The placements made before it, in this file and the scene's earlier ones.
+        /// The nodes on its path, root to `node`: what it counts.
+        depth: u64,
+        /// What the placements before it counted, in this file and the scene's earlier ones.
         made: u64,
         /// The limit.
         limit: u64,

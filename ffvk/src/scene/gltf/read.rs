@@ -332,13 +332,15 @@ fn node_transform_problem(index: usize, node: &gltf::json::Node) -> Option<Strin
     if let Some(rotation) = &node.rotation {
         let q = rotation.0;
         let length = q.iter().map(|c| c * c).sum::<f32>().sqrt();
-        if !((length - 1.0).abs() <= ROTATION_TOLERANCE) {
-            return Some(format!(
-                "nodes[{index}].rotation: [{}, {}, {}, {}] has length {length}: expected a unit \
-                 quaternion (length 1 within {ROTATION_TOLERANCE})",
-                q[0], q[1], q[2], q[3]
-            ));
+        // (NaN is off by more than any tolerance.)
+        if (length - 1.0).abs() <= ROTATION_TOLERANCE {
+            return None;
         }
+        return Some(format!(
+            "nodes[{index}].rotation: [{}, {}, {}, {}]: expected a unit quaternion (length 1 \
+             within {ROTATION_TOLERANCE}; its length is {length})",
+            q[0], q[1], q[2], q[3]
+        ));
     }
     None
 }
@@ -520,6 +522,9 @@ fn hierarchy_problems(root: &gltf::json::Root) -> Vec<String> {
             let from = chain.iter().position(|&n| n == node).unwrap_or(0);
             let mut cycle: Vec<usize> = chain[from..].to_vec();
             cycle.reverse();
+            // Named from its lowest node, whichever node the search came in by.
+            let lowest = (0..cycle.len()).min_by_key(|&k| cycle[k]).unwrap_or(0);
+            cycle.rotate_left(lowest);
             let mut names: Vec<String> = cycle.iter().take(SHOWN).map(usize::to_string).collect();
             if cycle.len() > SHOWN {
                 names.push(format!("… ({} nodes in all)", cycle.len()));
@@ -722,11 +727,6 @@ pub(super) fn walk(
     Ok(())
 }
 
-/// The bytes a copy of a node's name takes in a node path: the string and its heap text.
-fn name_cost(name: &str) -> u64 {
-    (std::mem::size_of::<String>() + name.len()) as u64
-}
-
 /// The nodes from the walk's root down to the current one: marked in `on_path` (by index),
 /// named in `names` (root first).
 struct NodePath {
@@ -755,14 +755,10 @@ fn visit(
 ) -> Result<(), LoadError> {
     let NodePath { on_path, names } = path;
     let mut stack = vec![Step::Enter(root, Mat4::IDENTITY)];
-    // What a copy of `names` takes (each placed mesh keeps one as its node_path).
-    let mut names_bytes = 0u64;
     while let Some(step) = stack.pop() {
         let (node, parent) = match step {
             Step::Leave(index) => {
-                if let Some(name) = names.pop() {
-                    names_bytes = names_bytes.saturating_sub(name_cost(&name));
-                }
+                names.pop();
                 on_path[index] = false;
                 continue;
             }
@@ -773,9 +769,7 @@ fn visit(
             return Err(cx.error(LoadErrorKind::NodeCycle { node: index }));
         }
         on_path[index] = true;
-        let name = cx.name("nodes", index).unwrap_or_else(|| format!("node {index}"));
-        names_bytes = names_bytes.saturating_add(name_cost(&name));
-        names.push(name);
+        names.push(cx.name("nodes", index).unwrap_or_else(|| format!("node {index}")));
         let world = parent * node_matrix(&node);
         if !world.is_finite() {
             // Each number is within float32's range (validated); their product is not.
@@ -797,25 +791,18 @@ fn visit(
             let mirrored = world.determinant() < 0.0;
             for primitive in mesh.primitives() {
                 let p = primitive.index();
-                budget.charge_placement(limits.placements).map_err(|made| {
-                    cx.error(LoadErrorKind::Placements {
-                        node: index,
-                        primitive: cx.primitive_label(m, p),
-                        made,
-                        limit: limits.placements,
-                    })
-                })?;
-                // The node path this placement keeps: on a deep chain of nodes that each place
-                // a mesh, these copies grow as the square of the depth.
+                // Counted by the nodes on its path, whose names it keeps: on a deep chain of
+                // nodes that each place a mesh, those copies grow as the square of the depth.
+                let depth = names.len() as u64;
                 budget
-                    .charge_bytes(
-                        names_bytes,
-                        format!("the names of the {} nodes above it", names.len()),
-                    )
-                    .map_err(|source| {
-                        cx.error(LoadErrorKind::OverBudget {
+                    .charge_placement(depth, limits.placements)
+                    .map_err(|made| {
+                        cx.error(LoadErrorKind::Placements {
+                            node: index,
                             primitive: cx.primitive_label(m, p),
-                            source,
+                            depth,
+                            made,
+                            limit: limits.placements,
                         })
                     })?;
                 if primitive.morph_targets().len() > 0 {

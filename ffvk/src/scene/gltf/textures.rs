@@ -4,9 +4,9 @@
 //! drawn as if the texture were white.
 
 use super::{Context, LoadError, LoadErrorKind, MAX_FILE_BYTES};
-use std::collections::HashMap;
 use crate::gl::texture::{MagFilter, MinFilter, Sampling, TextureImage, Wrap, MAX_TEXTURE_SIZE};
 use glam::{Mat4, Vec4};
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -68,7 +68,10 @@ pub(super) struct MaterialTextures {
 
 /// What one image decoded to: its linear mean and the texture with its mipmaps, or why it
 /// could not be read (a warning).
-type Decoded = Result<(Vec4, Arc<TextureImage>), String>;
+type Decoded = Result<Texture, String>;
+
+/// A decoded image's linear mean and its texture with mipmaps.
+type Texture = (Vec4, Arc<TextureImage>);
 
 /// One entry per material of the file. Each image is decoded at most once, and so is each
 /// file or range of bytes however many images name it; each is charged to the scene's
@@ -83,9 +86,9 @@ pub(super) fn material_textures(
     warnings: &mut Vec<String>,
 ) -> Result<Vec<MaterialTextures>, LoadError> {
     let roots = &limits.asset_roots[..];
-    let mut by_image: Vec<Option<Option<(Vec4, Arc<TextureImage>)>>> = vec![None; document.images().len()];
+    let mut by_image: Vec<Option<Option<Texture>>> = vec![None; document.images().len()];
     let mut by_source: HashMap<ImageSource, Decoded> = HashMap::new();
-    let mut decode = |texture: &gltf::Texture| -> Result<Option<(Vec4, Arc<TextureImage>)>, LoadError> {
+    let mut decode = |texture: &gltf::Texture| -> Result<Option<Texture>, LoadError> {
         if textures == Textures::Ignore {
             return Ok(None);
         }
@@ -136,7 +139,7 @@ pub(super) fn material_textures(
         }
         Ok(kept)
     };
-    let mean_of = |decoded: &Option<(Vec4, Arc<TextureImage>)>| match decoded {
+    let mean_of = |decoded: &Option<Texture>| match decoded {
         Some((mean, _)) => TextureMean::Mean(*mean),
         None => TextureMean::Unread,
     };
@@ -261,7 +264,9 @@ fn image_source(cx: &Context, image: &gltf::Image, roots: &[PathBuf]) -> Result<
             start: view.offset(),
             end: view.offset().saturating_add(view.length()),
         }),
-        gltf::image::Source::Uri { uri, .. } if uri.starts_with("data:") => Ok(ImageSource::Data(uri.to_owned())),
+        gltf::image::Source::Uri { uri, .. } if uri.starts_with("data:") => {
+            Ok(ImageSource::Data(uri.to_owned()))
+        }
         gltf::image::Source::Uri { uri, .. } => {
             let base = cx.path.parent().unwrap_or(Path::new(""));
             let file = super::uris::asset_file(base, uri, roots).ok_or_else(|| {
