@@ -821,7 +821,7 @@ fn gltf_json(buffer: String, tail_at: usize) -> BoxedStrategy<String> {
         ),
         (
             "normalized",
-            0.8,
+            0.3,
             any::<bool>().prop_map(|b| b.to_string()).boxed(),
         ),
         ("min!", 1.0, array(3, -2.0, 0.0)),
@@ -863,27 +863,60 @@ fn gltf_json(buffer: String, tail_at: usize) -> BoxedStrategy<String> {
         .prop_map(|p| format!("\"primitives\": {p}"))
         .boxed();
     let light_of_node = || index().prop_map(|i| format!("\"KHR_lights_punctual\": {{\"light\": {i}}}"));
-    let node = members(
-        vec![
-            ("mesh", index()),
-            ("children", indices()),
-            ("matrix", array(16, -2.0, 2.0)),
-            ("translation", array(3, -2.0, 2.0)),
-            ("rotation", array(4, -1.0, 1.0)),
-            ("scale", array(3, -2.0, 2.0)),
-            (
-                "extensions",
-                prop_oneof![
-                    3 => light_of_node().prop_map(|l| format!("{{{l}}}")),
-                    1 => (light_of_node(), unknown_value())
-                        .prop_map(|(l, v)| format!("{{{l}, \"X_foo\": {v}}}")),
-                    1 => unknown_extensions(),
-                ]
-                .boxed(),
-            ),
-        ],
-        0.4,
-    );
+    // Matrices mostly affine (a last row of 0, 0, 0, 1), rotations mostly unit quaternions:
+    // glTF 2.0 refuses the others, and the rest of the node should be reached.
+    let affine = (array(12, -2.0, 2.0), prop::bool::weighted(0.9))
+        .prop_map(
+            |(m, affine)| match m.strip_prefix('[').and_then(|m| m.strip_suffix(']')) {
+                Some(inner) if affine && inner.split(", ").count() == 12 => {
+                    let v: Vec<&str> = inner.split(", ").collect();
+                    format!(
+                        "[{}, 0, {}, 0, {}, 0, {}, 1]",
+                        v[0..3].join(", "),
+                        v[3..6].join(", "),
+                        v[6..9].join(", "),
+                        v[9..12].join(", ")
+                    )
+                }
+                _ => m,
+            },
+        )
+        .boxed();
+    let unit = prop::collection::vec(-1.0f64..1.0, 4)
+        .prop_map(|q| {
+            let length = q.iter().map(|c| c * c).sum::<f64>().sqrt().max(1e-3);
+            format!(
+                "[{}]",
+                q.iter()
+                    .map(|c| format!("{:?}", c / length))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )
+        })
+        .boxed();
+    let node = weighted_members(vec![
+        ("mesh", 0.4, index()),
+        ("children", 0.4, indices()),
+        ("matrix", 0.15, affine),
+        ("translation", 0.4, array(3, -2.0, 2.0)),
+        (
+            "rotation",
+            0.4,
+            prop_oneof![6 => unit, 1 => array(4, -1.0, 1.0)].boxed(),
+        ),
+        ("scale", 0.4, array(3, -2.0, 2.0)),
+        (
+            "extensions",
+            0.4,
+            prop_oneof![
+                3 => light_of_node().prop_map(|l| format!("{{{l}}}")),
+                1 => (light_of_node(), unknown_value())
+                    .prop_map(|(l, v)| format!("{{{l}, \"X_foo\": {v}}}")),
+                1 => unknown_extensions(),
+            ]
+            .boxed(),
+        ),
+    ]);
     let factor = || mostly((0.0f64..1.0).prop_map(|x| format!("{x:?}")).boxed(), number());
     let material = weighted_members(vec![
         (
@@ -1241,6 +1274,9 @@ fn must_refuse(json: &str) -> Option<String> {
             }
         }
     }
+    if let Some(why) = breaks_node_or_accessor_rules(&root) {
+        return Some(why);
+    }
     use ffvk::scene::gltf::{SUPPORTED_EXTENSIONS, TEXTURE_EXTENSIONS};
     for name in elements(&root, "extensionsRequired")
         .iter()
@@ -1248,6 +1284,126 @@ fn must_refuse(json: &str) -> Option<String> {
     {
         if !SUPPORTED_EXTENSIONS.contains(&name) && !TEXTURE_EXTENSIONS.contains(&name) {
             return Some(format!("extensionsRequired names {name}"));
+        }
+    }
+    None
+}
+
+/// What glTF 2.0 asks of nodes, accessors and extensions that the document breaks, if
+/// anything: `normalized` on FLOAT or UNSIGNED_INT data or on indices; a node's matrix with
+/// TRS, one whose last row is not (0, 0, 0, 1), a rotation of length off 1 by more than 0.01;
+/// a node listed as a child twice in all, a node its own ancestor, a scene root that is a
+/// child; an extension ffvk reads that `extensionsUsed` leaves out.
+fn breaks_node_or_accessor_rules(root: &serde_json::Value) -> Option<String> {
+    use serde_json::Value;
+    let accessors = elements(root, "accessors");
+    for (i, a) in accessors.iter().enumerate() {
+        let kind = a.get("componentType").and_then(Value::as_u64);
+        if a.get("normalized") == Some(&Value::Bool(true)) && matches!(kind, Some(5125 | 5126)) {
+            return Some(format!("accessors[{i}] is normalized {kind:?} data"));
+        }
+    }
+    for mesh in elements(root, "meshes") {
+        for p in mesh
+            .get("primitives")
+            .and_then(Value::as_array)
+            .into_iter()
+            .flatten()
+        {
+            let indices = p
+                .get("indices")
+                .and_then(Value::as_u64)
+                .and_then(|i| accessors.get(i as usize));
+            if indices.is_some_and(|a| a.get("normalized") == Some(&Value::Bool(true))) {
+                return Some(format!("the indices of {p} are normalized"));
+            }
+        }
+    }
+    let numbers = |v: Option<&Value>, len: usize| {
+        let v: Vec<f64> = v?.as_array()?.iter().filter_map(Value::as_f64).collect();
+        (v.len() == len).then_some(v)
+    };
+    let nodes = elements(root, "nodes");
+    let mut parent: Vec<Option<usize>> = vec![None; nodes.len()];
+    for (i, node) in nodes.iter().enumerate() {
+        let given = |key: &str| node.get(key).is_some_and(|v| !v.is_null());
+        if given("matrix") && (given("translation") || given("rotation") || given("scale")) {
+            return Some(format!("nodes[{i}] has a matrix and TRS"));
+        }
+        if let Some(m) = numbers(node.get("matrix"), 16) {
+            if [m[3], m[7], m[11], m[15]] != [0.0, 0.0, 0.0, 1.0] {
+                return Some(format!("nodes[{i}].matrix is projective"));
+            }
+        }
+        if let Some(q) = numbers(node.get("rotation"), 4) {
+            let length = q.iter().map(|c| (*c as f32).powi(2)).sum::<f32>().sqrt();
+            if (length - 1.0).abs() > 0.0101 {
+                return Some(format!("nodes[{i}].rotation has length {length}"));
+            }
+        }
+        for c in node
+            .get("children")
+            .and_then(Value::as_array)
+            .into_iter()
+            .flatten()
+        {
+            if let Some(c) = c.as_u64().map(|c| c as usize).filter(|&c| c < nodes.len()) {
+                if parent[c].replace(i).is_some() {
+                    return Some(format!("node {c} is listed as a child twice"));
+                }
+            }
+        }
+    }
+    for start in 0..nodes.len() {
+        let (mut at, mut steps) = (parent[start], 0);
+        while let Some(p) = at {
+            if p == start || steps > nodes.len() {
+                return Some(format!("node {start} is its own ancestor"));
+            }
+            (at, steps) = (parent[p], steps + 1);
+        }
+    }
+    for scene in elements(root, "scenes") {
+        let roots: Vec<u64> = scene
+            .get("nodes")
+            .and_then(Value::as_array)
+            .into_iter()
+            .flatten()
+            .filter_map(Value::as_u64)
+            .collect();
+        for (k, &r) in roots.iter().enumerate() {
+            if parent.get(r as usize).copied().flatten().is_some() || roots[..k].contains(&r) {
+                return Some(format!("scene root {r} is a child or listed twice"));
+            }
+        }
+    }
+    let used: Vec<&str> = elements(root, "extensionsUsed")
+        .iter()
+        .filter_map(Value::as_str)
+        .collect();
+    let mut stack = vec![root];
+    while let Some(value) = stack.pop() {
+        match value {
+            Value::Array(items) => stack.extend(items),
+            Value::Object(members) => {
+                for (key, item) in members {
+                    match (key.as_str(), item) {
+                        ("extras", _) => {}
+                        ("extensions", Value::Object(extensions)) => {
+                            for (name, object) in extensions {
+                                if ffvk::scene::gltf::SUPPORTED_EXTENSIONS.contains(&name.as_str())
+                                    && !used.contains(&name.as_str())
+                                {
+                                    return Some(format!("{name} is used and not listed in extensionsUsed"));
+                                }
+                                stack.push(object);
+                            }
+                        }
+                        _ => stack.push(item),
+                    }
+                }
+            }
+            _ => {}
         }
     }
     None
@@ -1369,6 +1525,297 @@ fn generated_gltf_and_glb_files_load_or_fail_with_an_error() {
         assert!(r.loaded > 0, "no file with {name} loaded ({} generated)", r.cases);
     }
     assert!(decoded > 0, "no load read a texture's image");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Node graphs and texture counts
+
+/// A generated node graph and the textures its materials name: what a file can make the loader
+/// walk and decode.
+#[derive(Debug, Clone)]
+struct Graph {
+    /// Each node's children, as written (duplicates and indices of any node allowed).
+    children: Vec<Vec<usize>>,
+    /// Which nodes place the mesh.
+    meshes: Vec<bool>,
+    /// Scene 0's nodes.
+    roots: Vec<usize>,
+    /// The mesh's primitives (each one placement per node that places the mesh).
+    primitives: usize,
+    /// Each image's source: 0 `a.png`, 1 `./a.png` (the same file), 2 `b.png` (a copy), 3 a
+    /// data URI of the same PNG.
+    images: Vec<usize>,
+    /// Each material's base color and emissive texture (texture i shows image i).
+    materials: Vec<(Option<usize>, Option<usize>)>,
+}
+
+/// Forests (each node given a parent before it or none, the parentless ones the roots), some
+/// then broken: an edge added (a second parent, a child listed twice, a cycle, a root made a
+/// child), a root listed again or one that is a child, or children drawn at random.
+fn graph() -> BoxedStrategy<Graph> {
+    let nodes = 1usize..24;
+    (
+        nodes,
+        prop::collection::vec((0u8..4, any::<prop::sample::Index>()), 24),
+        prop::collection::vec(prop::bool::weighted(0.6), 24),
+        prop::collection::vec(prop::collection::vec(0usize..24, 0..3), 24),
+        (
+            0u8..10,
+            any::<prop::sample::Index>(),
+            any::<prop::sample::Index>(),
+        ),
+        1usize..4,
+        prop::collection::vec(0usize..4, 0..30),
+        prop::collection::vec(
+            (
+                prop::option::weighted(0.7, any::<prop::sample::Index>()),
+                prop::option::weighted(0.3, any::<prop::sample::Index>()),
+            ),
+            0..12,
+        ),
+    )
+        .prop_map(
+            |(n, parents, meshes, random, (change, a, b), primitives, images, materials)| {
+                let mut children = vec![Vec::new(); n];
+                let mut has_parent = vec![false; n];
+                for i in 1..n {
+                    // One in four nodes is a root; the others hang below an earlier node.
+                    let (root, parent) = parents[i];
+                    if root != 0 {
+                        children[parent.index(i)].push(i);
+                        has_parent[i] = true;
+                    }
+                }
+                let mut roots: Vec<usize> = (0..n).filter(|&i| !has_parent[i]).collect();
+                match change {
+                    // An edge from any node to any: a second parent, a child twice, a cycle, a
+                    // root made a child (or, by chance, an edge that keeps a forest).
+                    0 | 1 => children[a.index(n)].push(b.index(n)),
+                    2 => roots.push(a.index(n)),
+                    3 => {
+                        children = random
+                            .into_iter()
+                            .take(n)
+                            .map(|c| c.into_iter().filter(|&i| i < n).collect())
+                            .collect()
+                    }
+                    _ => {}
+                }
+                let textures = images.len();
+                let pick =
+                    |i: Option<prop::sample::Index>| i.filter(|_| textures > 0).map(|i| i.index(textures));
+                Graph {
+                    children,
+                    meshes: meshes[..n].to_vec(),
+                    roots,
+                    primitives,
+                    images,
+                    materials: materials.into_iter().map(|(b, e)| (pick(b), pick(e))).collect(),
+                }
+            },
+        )
+        .boxed()
+}
+
+impl Graph {
+    fn json(&self) -> String {
+        let nodes: Vec<String> = self
+            .children
+            .iter()
+            .zip(&self.meshes)
+            .map(|(children, &mesh)| {
+                let children: Vec<String> = children.iter().map(usize::to_string).collect();
+                let mesh = if mesh { r#""mesh": 0, "# } else { "" };
+                format!(r#"{{{mesh}"children": [{}]}}"#, children.join(", "))
+            })
+            .collect();
+        let primitives: Vec<String> = (0..self.primitives)
+            .map(|p| match self.materials.len() {
+                0 => r#"{"attributes": {"POSITION": 0}, "indices": 1}"#.to_owned(),
+                m => format!(
+                    r#"{{"attributes": {{"POSITION": 0}}, "indices": 1, "material": {}}}"#,
+                    p % m
+                ),
+            })
+            .collect();
+        let info = |t: Option<usize>| t.map(|t| format!(r#"{{"index": {t}}}"#));
+        let materials: Vec<String> = self
+            .materials
+            .iter()
+            .map(|&(base, emissive)| {
+                let mut members = Vec::new();
+                if let Some(b) = info(base) {
+                    members.push(format!(r#""pbrMetallicRoughness": {{"baseColorTexture": {b}}}"#));
+                }
+                if let Some(e) = info(emissive) {
+                    members.push(format!(r#""emissiveTexture": {e}"#));
+                }
+                format!("{{{}}}", members.join(", "))
+            })
+            .collect();
+        let sources = [
+            r#""uri": "a.png""#.to_owned(),
+            r#""uri": "./a.png""#.to_owned(),
+            r#""uri": "b.png""#.to_owned(),
+            format!(r#""uri": "data:image/png;base64,{}""#, base64(png())),
+        ];
+        let images: Vec<String> = self
+            .images
+            .iter()
+            .map(|&s| format!("{{{}}}", sources[s]))
+            .collect();
+        let textures: Vec<String> = (0..self.images.len())
+            .map(|i| format!(r#"{{"source": {i}}}"#))
+            .collect();
+        let roots: Vec<String> = self.roots.iter().map(usize::to_string).collect();
+        format!(
+            r#"{{"asset": {{"version": "2.0"}},
+  "buffers": [{{"uri": "quad.bin", "byteLength": 60}}],
+  "bufferViews": [{{"buffer": 0, "byteLength": 48}}, {{"buffer": 0, "byteOffset": 48, "byteLength": 12}}],
+  "accessors": [
+    {{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, -1, 0], "max": [1, 1, 0]}},
+    {{"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}}],
+  "meshes": [{{"primitives": [{}]}}], "materials": [{}], "textures": [{}], "images": [{}],
+  "nodes": [{}], "scenes": [{{"nodes": [{}]}}], "scene": 0}}"#,
+            primitives.join(", "),
+            materials.join(", "),
+            textures.join(", "),
+            images.join(", "),
+            nodes.join(", "),
+            roots.join(", ")
+        )
+    }
+
+    /// Whether the hierarchy is what glTF 2.0 asks: every node listed as a child at most
+    /// once in all, no node its own ancestor, scene roots parentless and listed once.
+    fn is_forest(&self) -> bool {
+        let n = self.children.len();
+        let mut parent = vec![None; n];
+        for (p, children) in self.children.iter().enumerate() {
+            for &c in children {
+                if parent[c].replace(p).is_some() {
+                    return false;
+                }
+            }
+        }
+        let acyclic = (0..n).all(|start| {
+            let (mut at, mut steps) = (parent[start], 0);
+            while let Some(p) = at {
+                if p == start || steps > n {
+                    return false;
+                }
+                (at, steps) = (parent[p], steps + 1);
+            }
+            true
+        });
+        let roots_ok = self
+            .roots
+            .iter()
+            .enumerate()
+            .all(|(k, &r)| parent[r].is_none() && !self.roots[..k].contains(&r));
+        acyclic && roots_ok
+    }
+
+    /// The placements of a forest: the primitives of each node below a root that places
+    /// the mesh, and what they count against the limit (each the nodes on its path).
+    fn placements(&self) -> (usize, usize) {
+        let mut stack: Vec<(usize, usize)> = self.roots.iter().map(|&r| (r, 1)).collect();
+        let (mut count, mut weight) = (0, 0);
+        while let Some((node, depth)) = stack.pop() {
+            let placed = usize::from(self.meshes[node]) * self.primitives;
+            count += placed;
+            weight += placed * depth;
+            stack.extend(self.children[node].iter().map(|&c| (c, depth + 1)));
+        }
+        (count, weight)
+    }
+
+    /// The images decoded: the distinct files or data the materials' textures show.
+    fn decoded(&self) -> usize {
+        let mut sources: Vec<usize> = self
+            .materials
+            .iter()
+            .flat_map(|&(b, e)| [b, e])
+            .flatten()
+            .map(|t| match self.images[t] {
+                1 => 0,
+                s => s,
+            })
+            .collect();
+        sources.sort_unstable();
+        sources.dedup();
+        sources.len()
+    }
+}
+
+/// Generated node graphs (forests, and graphs with shared children, children listed twice,
+/// cycles reached or not, roots that are children) and texture counts (up to 30 images over
+/// three files and a data URI), loaded with small limits: a graph that is not a forest is
+/// refused naming nodes, a forest past the placement limit names --max-placements, textures
+/// past the texture limit (an image decoded once however many images name it) name
+/// --max-texture-mib, and anything else loads; never a panic, a hang or an unbounded walk.
+#[test]
+fn generated_node_graphs_and_texture_counts_load_or_are_refused_within_their_limits() {
+    use ffvk::scene::gltf::{load_with, Textures};
+    let dir = sandbox("graphs");
+    let corners: [f32; 12] = [-1., -1., 0., 1., -1., 0., 1., 1., 0., -1., 1., 0.];
+    let mut bin = bytemuck::cast_slice::<f32, u8>(&corners).to_vec();
+    bin.extend(bytemuck::cast_slice::<u16, u8>(&[0, 1, 2, 0, 2, 3]));
+    std::fs::write(dir.join("quad.bin"), bin).unwrap();
+    std::fs::write(dir.join("a.png"), png()).unwrap();
+    std::fs::write(dir.join("b.png"), png()).unwrap();
+    // Placements count the nodes on their paths. A 2×2 image takes 20 bytes with its
+    // mipmaps: two fit, a third does not.
+    const PLACEMENTS: usize = 60;
+    let limits = Limits::default()
+        .with_placements(PLACEMENTS as u64)
+        .with_texture_bytes(40);
+    let counts = RefCell::new([0u32; 4]);
+    let result = runner(300).run(&graph(), |graph| {
+        let path = dir.join("g.gltf");
+        std::fs::write(&path, graph.json()).unwrap();
+        let limits = limits.clone();
+        let outcome = within(Duration::from_secs(20), "gltf::load_with", move || {
+            let mut budget = ffvk::scene::MeshBudget::new(limits.mesh_bytes);
+            load_with(&path, &limits, &mut budget, Textures::Means)
+                .map(|l| l.meshes.len())
+                .map_err(|e| e.to_string())
+        })?;
+        let (expected, slot) = if !graph.is_forest() {
+            ("a forest", 0)
+        } else if graph.placements().1 > PLACEMENTS {
+            ("--max-placements", 1)
+        } else if graph.decoded() > 2 {
+            ("--max-texture-mib", 2)
+        } else {
+            ("", 3)
+        };
+        counts.borrow_mut()[slot] += 1;
+        match (&outcome, expected) {
+            (Ok(meshes), "") => prop_assert_eq!(*meshes, graph.placements().0),
+            (Err(e), "a forest") => prop_assert!(
+                e.contains("g.gltf") && (e.contains("disjoint trees") || e.contains("scenes[0].nodes[")),
+                "{}",
+                e
+            ),
+            (Err(e), words) if !words.is_empty() => {
+                prop_assert!(e.contains(words), "expected {}: {}", words, e)
+            }
+            _ => {
+                return Err(TestCaseError::fail(format!(
+                    "expected {expected:?}, got {outcome:?}"
+                )))
+            }
+        }
+        Ok(())
+    });
+    let counts = counts.into_inner();
+    eprintln!(
+        "node graphs: {} not forests, {} past the placements, {} past the textures, {} loaded",
+        counts[0], counts[1], counts[2], counts[3]
+    );
+    result.unwrap();
+    assert!(counts.iter().all(|&c| c > 0), "every outcome reached: {counts:?}");
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -292,7 +292,7 @@ pub fn from_gltf(
         (false, m) => m,
     };
     let exposure = match options.exposure {
-        Some(x) => format!("{x}"),
+        Some(x) => format!("{x:?}"),
         None => "\"auto\"".to_owned(),
     };
     choices.push(if headlight {
@@ -320,7 +320,10 @@ pub fn from_gltf(
     });
     choices.push("glTF's meaning (gltf_defaults = true): see the README's \"glTF files\"".to_owned());
 
+    check_view(&view, lo, hi, options.orbit.zoom.filter(|_| camera.is_none()))
+        .map_err(|m| field("camera", m))?;
     let background = options.background.unwrap_or([0.2, 0.2, 0.2, 1.0]);
+    let lights = (headlight, mapping, options.exposure);
     let toml = |gltf_ref: &str| {
         scene_toml(
             path,
@@ -336,7 +339,11 @@ pub fn from_gltf(
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
         .ok_or_else(|| field("gltf", format!("{}: expected a file name", path.display())))?;
-    let mut scene = Scene::parse_preloaded(&toml(&name), path, limits, budget, base.join(&name), loaded)?;
+    // The scene is built from the values themselves: the text is for the user to read (and
+    // reads back as the same scene), never parsed here, so that no value depends on how it is
+    // printed.
+    let table = scene_table(&name, &view, background, lights);
+    let mut scene = Scene::from_table_preloaded(table, path, limits, budget, base.join(&name), loaded)?;
     let mut notes = choices.clone();
     notes.append(&mut scene.notes);
     scene.notes = notes;
@@ -538,8 +545,115 @@ fn frame_view(lo: Vec3, hi: Vec3, size: Option<(u32, u32)>, orbit: &Orbit) -> Vi
     }
 }
 
+/// A vector as TOML writes it: each number with Rust's `{:?}`, which keeps the exponent of
+/// very large and very small numbers (`1e38`, not 39 digits TOML reads as an integer).
 fn fmt3(v: Vec3) -> String {
-    format!("[{}, {}, {}]", v.x, v.y, v.z)
+    format!("[{:?}, {:?}, {:?}]", v.x, v.y, v.z)
+}
+
+/// Checks that float32 can hold the camera: its numbers, its view and projection matrices and
+/// their inverses finite, and the eye apart from the target; bounds near float32's range (or
+/// far from the origin for their size), or a zoom that puts the camera that far, do not allow
+/// it. The error names the bounds, the camera's values and the zoom.
+fn check_view(view: &View, lo: Vec3, hi: Vec3, zoom: Option<f32>) -> Result<(), String> {
+    let aspect = view.size.0 as f32 / view.size.1.max(1) as f32;
+    let projection = match &view.projection {
+        ViewProjection::Perspective { fovy, near, far } => {
+            Mat4::perspective_rh_gl(fovy.to_radians(), aspect, *near, *far)
+        }
+        ViewProjection::Matrix(m) => *m,
+    };
+    let matrices = [Mat4::look_at_rh(view.eye, view.target, view.up), projection];
+    let finite = [view.eye, view.target, view.up].iter().all(|v| v.is_finite())
+        && matrices.iter().all(|m| m.is_finite() && m.inverse().is_finite());
+    if finite && view.eye != view.target {
+        return Ok(());
+    }
+    Err(format!(
+        "the scene's bounds {} to {}{} put the camera's eye at {} looking at {}{}: float32 cannot \
+         hold that camera's matrices: expected bounds whose size and distance from the origin are \
+         well below {:e}{}, or one of the file's cameras (--camera)",
+        fmt3(lo),
+        fmt3(hi),
+        zoom.map_or(String::new(), |z| format!(" at zoom {z:?}")),
+        fmt3(view.eye),
+        fmt3(view.target),
+        match &view.projection {
+            ViewProjection::Perspective { near, far, .. } => format!(", near {near:?} and far {far:?}"),
+            ViewProjection::Matrix(_) => String::new(),
+        },
+        f32::MAX,
+        if zoom.is_some() { ", a zoom nearer 1" } else { "" },
+    ))
+}
+
+/// The scene [`scene_toml`] writes, as TOML values: what the scene is built from.
+fn scene_table(
+    gltf_ref: &str,
+    view: &View,
+    background: [f32; 4],
+    (headlight, mapping, exposure): (bool, GltfLights, Option<f32>),
+) -> toml::Table {
+    use toml::Value;
+    let float = |x: f32| Value::Float(f64::from(x));
+    let floats = |xs: &[f32]| Value::Array(xs.iter().copied().map(float).collect());
+    let table = |entries: Vec<(&str, Value)>| {
+        Value::Table(entries.into_iter().map(|(k, v)| (k.to_owned(), v)).collect())
+    };
+    let mut camera = vec![
+        ("eye", floats(&view.eye.to_array())),
+        ("target", floats(&view.target.to_array())),
+        ("up", floats(&view.up.to_array())),
+    ];
+    match &view.projection {
+        ViewProjection::Perspective { fovy, near, far } => {
+            camera.extend([
+                ("fovy", float(*fovy)),
+                ("near", float(*near)),
+                ("far", float(*far)),
+            ]);
+        }
+        ViewProjection::Matrix(m) => camera.push(("projection", floats(&m.to_cols_array()))),
+    }
+    let mut scene = vec![
+        ("gltf_defaults", Value::Boolean(true)),
+        ("gltf_lights", Value::String(mapping.name().to_owned())),
+        (
+            "gltf_exposure",
+            exposure.map_or(Value::String("auto".to_owned()), float),
+        ),
+        (
+            "image",
+            table(vec![
+                (
+                    "size",
+                    Value::Array(vec![
+                        Value::Integer(i64::from(view.size.0)),
+                        Value::Integer(i64::from(view.size.1)),
+                    ]),
+                ),
+                ("clear_color", floats(&background)),
+            ]),
+        ),
+        ("camera", table(camera)),
+        (
+            "meshes",
+            Value::Array(vec![table(vec![("gltf", Value::String(gltf_ref.to_owned()))])]),
+        ),
+    ];
+    if headlight {
+        let toward = (view.eye - view.target).normalize_or(Vec3::Z);
+        let k = super::meaning::KEY_LIGHT;
+        scene.push((
+            "lights",
+            Value::Array(vec![table(vec![
+                ("position", floats(&[toward.x, toward.y, toward.z, 0.0])),
+                ("diffuse", floats(&[k, k, k])),
+                ("specular", floats(&[k, k, k])),
+            ])]),
+        ));
+    }
+    scene.into_iter().map(|(k, v)| (k.to_owned(), v)).collect()
 }
 
 /// The scene TOML for `view` and the lights chosen.
@@ -583,10 +697,10 @@ fn scene_toml(
     );
     match &view.projection {
         ViewProjection::Perspective { fovy, near, far } => {
-            let _ = writeln!(t, "fovy = {fovy}\nnear = {near}\nfar = {far}");
+            let _ = writeln!(t, "fovy = {fovy:?}\nnear = {near:?}\nfar = {far:?}");
         }
         ViewProjection::Matrix(m) => {
-            let cols: Vec<String> = m.to_cols_array().iter().map(|x| x.to_string()).collect();
+            let cols: Vec<String> = m.to_cols_array().iter().map(|x| format!("{x:?}")).collect();
             let _ = writeln!(t, "projection = [{}]", cols.join(", "));
         }
     }
@@ -594,7 +708,7 @@ fn scene_toml(
         let toward = (view.eye - view.target).normalize_or(Vec3::Z);
         let _ = writeln!(
             t,
-            "\n[[lights]]   # the headlight\nposition = [{}, {}, {}, 0.0]\ndiffuse = [{k}, {k}, {k}]\nspecular = [{k}, {k}, {k}]",
+            "\n[[lights]]   # the headlight\nposition = [{:?}, {:?}, {:?}, 0.0]\ndiffuse = [{k:?}, {k:?}, {k:?}]\nspecular = [{k:?}, {k:?}, {k:?}]",
             toward.x,
             toward.y,
             toward.z,

@@ -97,6 +97,21 @@ pub(crate) fn nesting_depth(text: &str) -> usize {
 /// own. [`Limits::mesh_bytes`] (`ffvk --max-mesh-mib`) raises it.
 pub const DEFAULT_MESH_BYTES: u64 = 1 << 30;
 
+/// The decoded textures a scene may take on the host by default: 1 GiB, twelve 4096²
+/// textures (each 64 MiB as RGBA8, 85 MiB with its mipmaps) or about 190 of 1024².
+/// [`Limits::texture_bytes`] (`ffvk --max-texture-mib`) raises it.
+pub const DEFAULT_TEXTURE_BYTES: u64 = 1 << 30;
+
+/// The bytes a glTF file's buffers may take together on the host by default: 1 GiB, what one
+/// buffer file may hold ([`gltf::MAX_FILE_BYTES`]). [`Limits::buffer_bytes`]
+/// (`ffvk --max-buffer-mib`) raises it.
+pub const DEFAULT_BUFFER_BYTES: u64 = 1 << 30;
+
+/// The mesh placements (one glTF primitive placed by one node, counted by the nodes on its
+/// path) a scene may hold by default: 4,194,304, e.g. a million primitives placed three nodes
+/// deep. [`Limits::placements`] (`ffvk --max-placements`) raises it.
+pub const DEFAULT_PLACEMENTS: u64 = 1 << 22;
+
 /// What a scene file may make ffvk allocate and read.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
@@ -109,6 +124,19 @@ pub struct Limits {
     /// before it is read and once per node that places it. The device holds the same
     /// amount.
     pub mesh_bytes: u64,
+    /// The bytes all the scene's decoded textures may take on the host: RGBA8 with its
+    /// mipmaps (a 4096² image takes 85 MiB), each image charged from its header's size
+    /// before it is decoded, once however many glTF images name the same file or bytes.
+    pub texture_bytes: u64,
+    /// The bytes one glTF file's buffers may take together on the host: external files,
+    /// data URIs, the GLB binary chunk and meshopt fallback buffers, each charged before it
+    /// is read or allocated.
+    pub buffer_bytes: u64,
+    /// The mesh placements (one glTF primitive placed by one node) all the scene's glTF files
+    /// may make together, each counted by the nodes on its path (1 for a root node's, 10 for a
+    /// node 10 deep), whose names it keeps: so that a deep chain of nodes that each place a
+    /// mesh, whose paths grow as the square of its depth, is bounded too.
+    pub placements: u64,
 }
 
 impl Default for Limits {
@@ -116,6 +144,9 @@ impl Default for Limits {
         Limits {
             asset_roots: Vec::new(),
             mesh_bytes: DEFAULT_MESH_BYTES,
+            texture_bytes: DEFAULT_TEXTURE_BYTES,
+            buffer_bytes: DEFAULT_BUFFER_BYTES,
+            placements: DEFAULT_PLACEMENTS,
         }
     }
 }
@@ -125,19 +156,56 @@ with_fields!(Limits {
     with_asset_roots => asset_roots: Vec<PathBuf>,
     /// Sets [`mesh_bytes`](Limits::mesh_bytes).
     with_mesh_bytes => mesh_bytes: u64,
+    /// Sets [`texture_bytes`](Limits::texture_bytes).
+    with_texture_bytes => texture_bytes: u64,
+    /// Sets [`buffer_bytes`](Limits::buffer_bytes).
+    with_buffer_bytes => buffer_bytes: u64,
+    /// Sets [`placements`](Limits::placements).
+    with_placements => placements: u64,
 });
 
-/// The mesh memory left to a scene as it loads.
+/// The mesh memory left to a scene as it loads, and what its glTF files took of the other
+/// per-scene limits ([`Limits::texture_bytes`], [`Limits::placements`]), whose values the
+/// loader is given with the [`Limits`].
 #[derive(Debug, Clone)]
 pub struct MeshBudget {
     limit: u64,
     used: u64,
+    texture_used: u64,
+    placements: u64,
 }
 
 impl MeshBudget {
     /// A budget of `limit` bytes, none used.
     pub fn new(limit: u64) -> Self {
-        MeshBudget { limit, used: 0 }
+        MeshBudget {
+            limit,
+            used: 0,
+            texture_used: 0,
+            placements: 0,
+        }
+    }
+
+    /// Takes `bytes` of decoded texture memory within `limit` ([`Limits::texture_bytes`]);
+    /// on `Err`, the bytes the textures before took.
+    pub(crate) fn charge_texture(&mut self, bytes: u64, limit: u64) -> Result<(), u64> {
+        let total = self.texture_used.saturating_add(bytes);
+        if total > limit {
+            return Err(self.texture_used);
+        }
+        self.texture_used = total;
+        Ok(())
+    }
+
+    /// Takes one mesh placement `depth` nodes deep within `limit` ([`Limits::placements`]);
+    /// on `Err`, what the placements before counted.
+    pub(crate) fn charge_placement(&mut self, depth: u64, limit: u64) -> Result<(), u64> {
+        let total = self.placements.saturating_add(depth);
+        if total > limit {
+            return Err(self.placements);
+        }
+        self.placements = total;
+        Ok(())
     }
 
     /// Takes the memory of a mesh of `vertices` vertices and `indices` indices, or says why
@@ -460,18 +528,24 @@ impl Scene {
         Scene::parse_into(text, path, limits, MeshBudget::new(limits.mesh_bytes), None)
     }
 
-    /// [`Scene::parse_with`] with the glTF file at `gltf_path` already loaded (its meshes
-    /// charged to `budget`): a `[[meshes]]` table naming that file takes `loaded` instead of
-    /// reading it again.
-    pub(crate) fn parse_preloaded(
-        text: &str,
+    /// The scene of the TOML values `table` (a scene file's tables as values, not text), with
+    /// the glTF file at `gltf_path` already loaded (its meshes charged to `budget`): a
+    /// `[[meshes]]` table naming that file takes `loaded` instead of reading it again.
+    pub(crate) fn from_table_preloaded(
+        table: toml::Table,
         path: &Path,
         limits: &Limits,
         budget: MeshBudget,
         gltf_path: PathBuf,
         loaded: self::gltf::Loaded,
     ) -> Result<Scene, SceneError> {
-        Scene::parse_into(text, path, limits, budget, Some((gltf_path, loaded)))
+        let file: SceneFile = toml::Value::Table(table)
+            .try_into()
+            .map_err(|source| SceneError {
+                path: path.to_path_buf(),
+                kind: SceneErrorKind::Toml { source },
+            })?;
+        Scene::build(file, path, limits, budget, Some((gltf_path, loaded)))
     }
 
     fn parse_into(
@@ -497,6 +571,16 @@ impl Scene {
             path: path.to_path_buf(),
             kind: SceneErrorKind::Toml { source },
         })?;
+        Scene::build(file, path, limits, budget, preloaded)
+    }
+
+    fn build(
+        file: SceneFile,
+        path: &Path,
+        limits: &Limits,
+        budget: MeshBudget,
+        preloaded: Option<(PathBuf, self::gltf::Loaded)>,
+    ) -> Result<Scene, SceneError> {
         Builder {
             path,
             limits,

@@ -27,7 +27,7 @@ pub(super) struct Builder<'a> {
     /// What the meshes built so far took.
     pub(super) budget: std::cell::RefCell<MeshBudget>,
     /// A glTF file loaded before the scene was built, and its path (see
-    /// [`Scene::parse_preloaded`]).
+    /// [`Scene::from_table_preloaded`]).
     pub(super) preloaded: std::cell::RefCell<Option<(PathBuf, super::gltf::Loaded)>>,
 }
 

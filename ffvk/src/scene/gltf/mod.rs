@@ -391,6 +391,79 @@ pub enum LoadErrorKind {
         source: crate::alloc::AllocError,
     },
 
+    /// A placement past the scene's limit on mesh placements ([`Limits::placements`]), each
+    /// counted by the nodes on its path.
+    #[error(
+        "nodes[{node}] places {primitive} {depth} node(s) deep, which with the {made} placements \
+         before it (each counted by the nodes on its path, whose names it keeps) passes the \
+         scene's placement limit of {limit}: expected fewer or shallower placements, or a higher \
+         limit (ffvk --max-placements)"
+    )]
+    Placements {
+        /// The node placing the primitive.
+        node: usize,
+        /// `mesh M ("name") primitive P`.
+        primitive: String,
+        /// The nodes on its path, root to `node`: what it counts.
+        depth: u64,
+        /// What the placements before it counted, in this file and the scene's earlier ones.
+        made: u64,
+        /// The limit.
+        limit: u64,
+    },
+
+    /// An image whose decoded texels would pass the scene's texture memory limit
+    /// ([`Limits::texture_bytes`]), judged from its header before it is decoded.
+    #[error(
+        "images[{image}]: {width}x{height} texels take {bytes} bytes decoded (RGBA8 with \
+         mipmaps), which with the {used} bytes of the textures before it passes the scene's \
+         texture memory limit of {limit} bytes: expected fewer or smaller textures, or a higher \
+         limit (ffvk --max-texture-mib)"
+    )]
+    TextureBudget {
+        /// The image's index in `images`.
+        image: usize,
+        /// Its width, from its header.
+        width: u32,
+        /// Its height, from its header.
+        height: u32,
+        /// What it would take decoded.
+        bytes: u64,
+        /// What the textures decoded before it took.
+        used: u64,
+        /// The limit.
+        limit: u64,
+    },
+
+    /// A buffer that would take the file's buffers past [`Limits::buffer_bytes`], or whose
+    /// memory could not be allocated; judged before it is read or allocated.
+    #[error(
+        "buffers[{buffer}]: {what} of {bytes} bytes, with the {used} bytes of the buffers before \
+         it, passes the limit of {limit} bytes on a file's buffers: expected smaller buffers, or \
+         a higher limit (ffvk --max-buffer-mib)"
+    )]
+    BufferBudget {
+        /// The buffer's index in `buffers`.
+        buffer: usize,
+        /// What it is: `its file`, `its data URI`, `the GLB binary chunk`, `a meshopt fallback buffer`.
+        what: &'static str,
+        /// Its size.
+        bytes: u64,
+        /// What the buffers before it took.
+        used: u64,
+        /// The limit.
+        limit: u64,
+    },
+
+    /// A host allocation for a buffer's data failed.
+    #[error("buffers[{buffer}]: {source}")]
+    BufferAlloc {
+        /// The buffer's index in `buffers`.
+        buffer: usize,
+        /// What was being allocated, and how many bytes.
+        source: crate::alloc::AllocError,
+    },
+
     /// A node hierarchy with a cycle through node `node`.
     #[error("node {node} is its own ancestor: expected the node hierarchy to be a forest")]
     NodeCycle {
@@ -517,26 +590,26 @@ pub fn load_with(
 
     primitives::check_positions(&cx)?;
     compressed::check(&cx)?;
-    read::validate(&cx, &document)?;
+    read::validate(&cx, &document, &mut warnings)?;
     values::check(&cx, &document)?;
-    let mut buffers = read::read_buffers(&cx, &document, blob, &limits.asset_roots)?;
+    let mut buffers = read::read_buffers(&cx, &document, blob, limits)?;
     meshopt::decode(&cx, &mut buffers)?;
 
     let mut out = Loaded {
         warnings,
         ..Loaded::default()
     };
-    read::walk(&cx, &document, &buffers, budget, &mut out)?;
+    read::walk(&cx, &document, &buffers, limits, budget, &mut out)?;
     out.warnings
         .extend(materials::texture_warnings(&cx, &document, textures));
     let table = textures::material_textures(
         &cx,
         &document,
         &buffers,
-        &limits.asset_roots,
+        (limits, budget),
         textures,
         &mut out.warnings,
-    );
+    )?;
     for material in out.meshes.iter_mut().filter_map(|m| m.material.as_mut()) {
         if let Some(t) = material.index.and_then(|i| table.get(i)) {
             material.base_color_texture = t.base_color;

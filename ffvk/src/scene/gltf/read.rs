@@ -7,7 +7,7 @@ use super::lights::punctual_light;
 use super::materials::pbr_material;
 use super::primitives::{draws_triangles, read_primitive};
 use super::{Context, LoadError, LoadErrorKind, Loaded, LoadedMesh};
-use crate::scene::MeshBudget;
+use crate::scene::{Limits, MeshBudget};
 use glam::Mat4;
 use gltf::json::Value;
 use std::path::Path;
@@ -43,8 +43,8 @@ pub(super) fn parse(path: &Path) -> Result<Parsed, LoadError> {
     } else {
         (&bytes[..], None)
     };
-    let raw: Value = gltf::json::deserialize::from_slice(json).map_err(|e| parse_error(e.to_string()))?;
-    let root: gltf::json::Root = match gltf::json::deserialize::from_slice(json) {
+    let raw: Value = from_json(json).map_err(parse_error)?;
+    let root: gltf::json::Root = match from_json(json) {
         Ok(root) => root,
         // glTF allows `extras` of any JSON type; the crate reads only objects there. ffvk reads
         // no extras, so a file the crate refuses is tried again without them (the first error,
@@ -52,7 +52,7 @@ pub(super) fn parse(path: &Path) -> Result<Parsed, LoadError> {
         Err(e) => {
             let mut stripped = raw.clone();
             remove_extras(&mut stripped);
-            gltf::json::deserialize::from_value(stripped).map_err(|_| parse_error(e.to_string()))?
+            gltf::json::deserialize::from_value(stripped).map_err(|_| parse_error(e))?
         }
     };
     Ok(Parsed {
@@ -61,6 +61,24 @@ pub(super) fn parse(path: &Path) -> Result<Parsed, LoadError> {
         blob,
         warnings,
     })
+}
+
+/// `json` read as a `T`, or the error with the JSON path of the value refused before the
+/// parser's message (`accessors[0].count: invalid value: integer `-4`, expected u32 at line 5
+/// column 20`).
+fn from_json<T: serde::de::DeserializeOwned>(json: &[u8]) -> Result<T, String> {
+    let mut parser = serde_json::Deserializer::from_slice(json);
+    let value: T = serde_path_to_error::deserialize(&mut parser).map_err(|e| {
+        let path = e.path().to_string();
+        let message = e.inner().to_string();
+        match path.as_str() {
+            "." | "" => message,
+            _ => format!("{}: {message}", crate::scene::shorten(&path)),
+        }
+    })?;
+    // Nothing but white space after the document.
+    parser.end().map_err(|e| e.to_string())?;
+    Ok(value)
 }
 
 /// `value` without any `extras` member, at any depth (iterative: the depth is the file's).
@@ -190,8 +208,14 @@ fn split_glb(bytes: &[u8]) -> Result<GlbChunks<'_>, String> {
     Ok(chunks)
 }
 
-/// Runs the `gltf` crate's validator; what it finds makes the error.
-pub(super) fn validate(cx: &Context, document: &gltf::Document) -> Result<(), LoadError> {
+/// Runs the `gltf` crate's validator, then checks what it lets through and glTF 2.0 forbids
+/// (see below); what they find makes the error. Extensions used but not listed, which ffvk
+/// does not read, are a warning.
+pub(super) fn validate(
+    cx: &Context,
+    document: &gltf::Document,
+    warnings: &mut Vec<String>,
+) -> Result<(), LoadError> {
     use gltf::json::validation::Validate;
     let root = document.as_json();
     let mut problems = super::values::out_of_range_numbers(cx.raw);
@@ -237,16 +261,31 @@ pub(super) fn validate(cx: &Context, document: &gltf::Document) -> Result<(), Lo
         }
     }
     for (index, node) in root.nodes.iter().enumerate() {
-        if let Some(rotation) = &node.rotation {
-            let q = rotation.0;
-            let length = q.iter().map(|c| c * c).sum::<f32>().sqrt();
-            if !length.is_finite() || length < 1e-6 {
-                problems.push(format!(
-                    "nodes[{index}].rotation: [{}, {}, {}, {}]: expected a unit quaternion",
-                    q[0], q[1], q[2], q[3]
-                ));
-            }
-        }
+        problems.extend(node_transform_problem(index, node));
+    }
+    problems.extend(accessor_problems(root));
+    let (unlisted, others) = unlisted_extensions(cx.raw);
+    problems.extend(unlisted);
+    if !others.is_empty() {
+        let names: Vec<String> = others.iter().take(8).map(|n| crate::scene::shorten(n)).collect();
+        warnings.push(format!(
+            "the file uses extension{} {}{} without listing {} in extensionsUsed, as glTF 2.0 \
+             asks: ffvk does not read {}, so {} ignored",
+            if others.len() == 1 { "" } else { "s" },
+            names.join(", "),
+            if others.len() > 8 {
+                format!(" and {} more", others.len() - 8)
+            } else {
+                String::new()
+            },
+            if others.len() == 1 { "it" } else { "them" },
+            if others.len() == 1 { "it" } else { "them" },
+            if others.len() == 1 { "it is" } else { "they are" },
+        ));
+    }
+    if problems.is_empty() {
+        // Only a hierarchy whose indices are all valid can be judged a forest.
+        problems.extend(hierarchy_problems(root));
     }
     if problems.is_empty() {
         return Ok(());
@@ -254,16 +293,303 @@ pub(super) fn validate(cx: &Context, document: &gltf::Document) -> Result<(), Lo
     Err(cx.error(LoadErrorKind::Invalid { problems }))
 }
 
-/// Loads every buffer (at least its byteLength), external files relative to the glTF file.
+/// How far a node's rotation may be from unit length: |‖q‖ − 1| ≤ 0.01, what a writer that
+/// rounds each component to two decimals can leave (each off by at most 0.005, and the
+/// components' magnitudes summing to at most 2). A quaternion of length ℓ scales what it turns
+/// by ℓ²; within this tolerance ffvk normalizes it ([`node_matrix`]), so that it only turns;
+/// beyond it the file is refused.
+pub(super) const ROTATION_TOLERANCE: f32 = 0.01;
+
+/// What glTF 2.0 (3.5.3, "Transformations") asks of a node's transform and its validator does
+/// not check: `matrix` or TRS, not both; a unit quaternion; a matrix decomposable to TRS, so
+/// its last row (elements 3, 7, 11 and 15, column-major) is (0, 0, 0, 1).
+fn node_transform_problem(index: usize, node: &gltf::json::Node) -> Option<String> {
+    if let Some(matrix) = &node.matrix {
+        let trs: Vec<&str> = [
+            ("translation", node.translation.is_some()),
+            ("rotation", node.rotation.is_some()),
+            ("scale", node.scale.is_some()),
+        ]
+        .into_iter()
+        .filter_map(|(name, given)| given.then_some(name))
+        .collect();
+        if !trs.is_empty() {
+            return Some(format!(
+                "nodes[{index}].matrix: given with {}: expected either a matrix or translation, \
+                 rotation and scale, not both",
+                trs.join(", ")
+            ));
+        }
+        let row = [matrix[3], matrix[7], matrix[11], matrix[15]];
+        if row != [0.0, 0.0, 0.0, 1.0] {
+            return Some(format!(
+                "nodes[{index}].matrix: its last row (elements 3, 7, 11, 15) is {row:?}: expected \
+                 [0.0, 0.0, 0.0, 1.0] (a matrix decomposable to translation, rotation and scale, \
+                 not a projection)"
+            ));
+        }
+    }
+    if let Some(rotation) = &node.rotation {
+        let q = rotation.0;
+        let length = q.iter().map(|c| c * c).sum::<f32>().sqrt();
+        // (NaN is off by more than any tolerance.)
+        if (length - 1.0).abs() <= ROTATION_TOLERANCE {
+            return None;
+        }
+        return Some(format!(
+            "nodes[{index}].rotation: [{}, {}, {}, {}]: expected a unit quaternion (length 1 \
+             within {ROTATION_TOLERANCE}; its length is {length})",
+            q[0], q[1], q[2], q[3]
+        ));
+    }
+    None
+}
+
+/// A node's local matrix: its `matrix`, or translation × rotation × scale with the rotation
+/// normalized (it is unit within [`ROTATION_TOLERANCE`]; unnormalized, it would scale).
+pub(super) fn node_matrix(node: &gltf::Node) -> Mat4 {
+    match node.transform() {
+        gltf::scene::Transform::Matrix { matrix } => Mat4::from_cols_array_2d(&matrix),
+        gltf::scene::Transform::Decomposed {
+            translation,
+            rotation,
+            scale,
+        } => Mat4::from_scale_rotation_translation(
+            scale.into(),
+            glam::Quat::from_array(rotation).normalize(),
+            translation.into(),
+        ),
+    }
+}
+
+/// glTF 2.0 (3.6.2.4, "Accessor Data Types" and 3.7.2.1): `normalized` is only for integer
+/// vertex attributes; it "MUST NOT be set to true" for FLOAT or UNSIGNED_INT accessors, nor
+/// for the indices of a primitive.
+fn accessor_problems(root: &gltf::json::Root) -> Vec<String> {
+    use gltf::json::accessor::ComponentType;
+    use gltf::json::validation::Checked;
+    let mut problems = Vec::new();
+    for (index, accessor) in root.accessors.iter().enumerate() {
+        if !accessor.normalized {
+            continue;
+        }
+        let component = match &accessor.component_type {
+            Checked::Valid(t) => t.0,
+            Checked::Invalid => continue,
+        };
+        let name = match component {
+            ComponentType::F32 => "FLOAT (5126)",
+            ComponentType::U32 => "UNSIGNED_INT (5125)",
+            _ => continue,
+        };
+        problems.push(format!(
+            "accessors[{index}].normalized: true with componentType {name}: expected false or \
+             absent (only BYTE, UNSIGNED_BYTE, SHORT and UNSIGNED_SHORT data is normalized)"
+        ));
+    }
+    for (m, mesh) in root.meshes.iter().enumerate() {
+        for (p, primitive) in mesh.primitives.iter().enumerate() {
+            let Some(index) = primitive.indices.map(|i| i.value()) else {
+                continue;
+            };
+            let Some(accessor) = root.accessors.get(index) else {
+                continue;
+            };
+            let integer = !matches!(
+                accessor.component_type,
+                Checked::Valid(gltf::json::accessor::GenericComponentType(
+                    ComponentType::F32 | ComponentType::U32
+                ))
+            );
+            if accessor.normalized && integer {
+                problems.push(format!(
+                    "accessors[{index}].normalized: true for the indices of \
+                     meshes[{m}].primitives[{p}]: expected false or absent (indices are not \
+                     normalized)"
+                ));
+            }
+        }
+    }
+    problems
+}
+
+/// The extension objects of the file ("extensions" members at any depth, outside `extras`)
+/// whose names `extensionsUsed` leaves out, split in two: those ffvk reads (an error each: glTF
+/// 2.0 says "All glTF extensions used in an asset MUST be listed in extensionsUsed", and a
+/// reader that honoured the list would draw the file otherwise), and the names of the others
+/// (which ffvk ignores either way: a warning).
+pub(super) fn unlisted_extensions(raw: &Value) -> (Vec<String>, Vec<String>) {
+    let used: Vec<&str> = raw
+        .get("extensionsUsed")
+        .and_then(Value::as_array)
+        .into_iter()
+        .flatten()
+        .filter_map(Value::as_str)
+        .collect();
+    let (mut errors, mut others) = (Vec::new(), Vec::new());
+    let mut stack: Vec<(String, &Value)> = vec![(String::new(), raw)];
+    while let Some((path, value)) = stack.pop() {
+        match value {
+            Value::Array(items) => stack.extend(
+                items
+                    .iter()
+                    .enumerate()
+                    .rev()
+                    .map(|(i, item)| (format!("{path}[{i}]"), item)),
+            ),
+            Value::Object(members) => {
+                let mut children = Vec::new();
+                for (key, item) in members {
+                    let at = match path.is_empty() {
+                        true => crate::scene::shorten(key),
+                        false => format!("{path}.{}", crate::scene::shorten(key)),
+                    };
+                    match (key.as_str(), item) {
+                        ("extras", _) => {}
+                        ("extensions", Value::Object(extensions)) => {
+                            for (name, object) in extensions {
+                                let at = format!("{at}.{}", crate::scene::shorten(name));
+                                if !used.contains(&name.as_str()) {
+                                    if super::SUPPORTED_EXTENSIONS.contains(&name.as_str()) {
+                                        errors.push(format!(
+                                            "{at}: {name} is not listed in extensionsUsed: \
+                                             expected every extension the file uses listed there"
+                                        ));
+                                    } else if !others.contains(name) {
+                                        others.push(name.clone());
+                                    }
+                                }
+                                children.push((at, object));
+                            }
+                        }
+                        _ => children.push((at, item)),
+                    }
+                }
+                children.reverse();
+                stack.extend(children);
+            }
+            _ => {}
+        }
+    }
+    (errors, others)
+}
+
+/// glTF 2.0 (3.5.2, "Nodes and Hierarchy"): "the node hierarchy MUST be a set of disjoint
+/// strict trees": no node is a child twice (of one node or of two), none is its own ancestor,
+/// and a scene's nodes are roots, each listed once. Each problem names the nodes. Run only on
+/// a file whose node indices are valid; linear in the nodes and children.
+fn hierarchy_problems(root: &gltf::json::Root) -> Vec<String> {
+    const SHOWN: usize = 8;
+    let mut problems = Vec::new();
+    let mut parent: Vec<Option<usize>> = vec![None; root.nodes.len()];
+    for (index, node) in root.nodes.iter().enumerate() {
+        for (k, child) in node.children.iter().flatten().enumerate() {
+            let child = child.value();
+            match parent.get(child).copied().flatten() {
+                Some(first) if first == index => problems.push(format!(
+                    "nodes[{index}].children[{k}]: node {child} is listed twice: expected each \
+                     child once (glTF 2.0: the node hierarchy is a set of disjoint trees)"
+                )),
+                Some(first) => problems.push(format!(
+                    "nodes[{index}].children[{k}]: node {child} is already a child of node \
+                     {first}: expected one parent per node (glTF 2.0: the node hierarchy is a set \
+                     of disjoint trees)"
+                )),
+                None => {
+                    if let Some(slot) = parent.get_mut(child) {
+                        *slot = Some(index);
+                    }
+                }
+            }
+            if problems.len() >= SHOWN {
+                return problems;
+            }
+        }
+    }
+    // With one parent each, a node is its own ancestor when following parents from it comes
+    // back: mark each chain as it is followed (1: on the chain being followed, 2: done).
+    let mut state = vec![0u8; root.nodes.len()];
+    for start in 0..root.nodes.len() {
+        let mut chain = Vec::new();
+        let mut at = Some(start);
+        while let Some(node) = at.filter(|&n| state[n] == 0) {
+            state[node] = 1;
+            chain.push(node);
+            at = parent[node];
+        }
+        if let Some(node) = at.filter(|&n| state[n] == 1) {
+            // `node` is on the chain: the cycle runs from it, parent to child, back to it.
+            let from = chain.iter().position(|&n| n == node).unwrap_or(0);
+            let mut cycle: Vec<usize> = chain[from..].to_vec();
+            cycle.reverse();
+            // Named from its lowest node, whichever node the search came in by.
+            let lowest = (0..cycle.len()).min_by_key(|&k| cycle[k]).unwrap_or(0);
+            cycle.rotate_left(lowest);
+            let mut names: Vec<String> = cycle.iter().take(SHOWN).map(usize::to_string).collect();
+            if cycle.len() > SHOWN {
+                names.push(format!("… ({} nodes in all)", cycle.len()));
+            }
+            names.push(cycle[0].to_string());
+            problems.push(format!(
+                "nodes {}: each is the next one's parent, so node {} is its own ancestor: \
+                 expected the node hierarchy to be a set of disjoint trees",
+                names.join(" → "),
+                cycle[0]
+            ));
+        }
+        for node in chain {
+            state[node] = 2;
+        }
+    }
+    for (s, scene) in root.scenes.iter().enumerate() {
+        let mut listed = vec![false; root.nodes.len()];
+        for (k, node) in scene.nodes.iter().enumerate() {
+            let node = node.value();
+            if let Some(p) = parent.get(node).copied().flatten() {
+                problems.push(format!(
+                    "scenes[{s}].nodes[{k}]: node {node} is a child of node {p}: expected the \
+                     scene's root nodes only"
+                ));
+            } else if listed.get(node).copied().unwrap_or(false) {
+                problems.push(format!(
+                    "scenes[{s}].nodes[{k}]: node {node} is listed twice: expected each root once"
+                ));
+            }
+            if let Some(slot) = listed.get_mut(node) {
+                *slot = true;
+            }
+        }
+    }
+    problems
+}
+
+/// Loads every buffer (at least its byteLength), external files relative to the glTF file
+/// (or inside `limits.asset_roots`), all of them together within `limits.buffer_bytes`.
 pub(super) fn read_buffers(
     cx: &Context,
     document: &gltf::Document,
     mut blob: Option<Vec<u8>>,
-    roots: &[std::path::PathBuf],
+    limits: &Limits,
 ) -> Result<Vec<gltf::buffer::Data>, LoadError> {
+    let roots = &limits.asset_roots[..];
     let base = cx.path.parent().unwrap_or(Path::new(""));
     let mut buffers = Vec::new();
-    let mut fallback_bytes = 0u64;
+    let mut used = 0u64;
+    // Takes `bytes` for buffer `index` within the limit, or says why not.
+    let mut charge = |index: usize, what: &'static str, bytes: u64| {
+        let total = used.saturating_add(bytes);
+        if total > limits.buffer_bytes {
+            return Err(cx.error(LoadErrorKind::BufferBudget {
+                buffer: index,
+                what,
+                bytes,
+                used,
+                limit: limits.buffer_bytes,
+            }));
+        }
+        used = total;
+        Ok(())
+    };
     for buffer in document.buffers() {
         let index = buffer.index();
         let message = |message: String| LoadErrorKind::Buffer {
@@ -272,17 +598,18 @@ pub(super) fn read_buffers(
         };
         if let Some(len) = super::meshopt::fallback_len(cx, index) {
             // Zeros, which the compressed views are decoded into (meshopt::decode); no file
-            // bounds them, so all of a file's together are bounded as one file would be.
+            // bounds them, so they are charged before they are allocated, and allocated
+            // fallibly.
+            charge(index, "a meshopt fallback buffer", len)?;
             let len = usize::try_from(len).unwrap_or(usize::MAX);
-            fallback_bytes = fallback_bytes.saturating_add(len as u64);
-            if fallback_bytes > super::MAX_FILE_BYTES {
-                return Err(cx.error(message(format!(
-                    "meshopt fallback buffers of {fallback_bytes} bytes in all (this one {len}): expected \
-                     at most {} together",
-                    super::MAX_FILE_BYTES
-                ))));
-            }
-            buffers.push(gltf::buffer::Data(vec![0; len]));
+            let mut zeros = crate::alloc::try_vec(len, "a meshopt fallback buffer").map_err(|source| {
+                cx.error(LoadErrorKind::BufferAlloc {
+                    buffer: index,
+                    source,
+                })
+            })?;
+            zeros.resize(len, 0);
+            buffers.push(gltf::buffer::Data(zeros));
             continue;
         }
         if let gltf::buffer::Source::Uri(uri) = buffer.source() {
@@ -301,6 +628,11 @@ pub(super) fn read_buffers(
                         folder: base.to_path_buf(),
                     })
                 })?;
+                // Charged at the size the file has before it is read (one whose size cannot
+                // be had fails to be read, below, with the reason).
+                if let Ok(meta) = std::fs::metadata(&file) {
+                    charge(index, "its file", meta.len().next_multiple_of(4))?;
+                }
                 let mut bytes =
                     crate::files::read_regular(&file, super::MAX_FILE_BYTES).map_err(|source| {
                         cx.error(LoadErrorKind::BufferFile {
@@ -344,6 +676,13 @@ pub(super) fn read_buffers(
                     (gltf::buffer::Source::Bin, e) => message(e.to_string()),
                 })
             })?;
+        // Already in memory (a data URI is part of the JSON, the chunk part of the GLB), and
+        // counted with the rest.
+        let what = match buffer.source() {
+            gltf::buffer::Source::Bin => "the GLB binary chunk",
+            gltf::buffer::Source::Uri(_) => "its data URI",
+        };
+        charge(index, what, data.len() as u64)?;
         if data.len() < buffer.length() {
             return Err(cx.error(LoadErrorKind::BufferLength {
                 buffer: index,
@@ -362,6 +701,7 @@ pub(super) fn walk(
     cx: &Context,
     document: &gltf::Document,
     buffers: &[gltf::buffer::Data],
+    limits: &Limits,
     budget: &mut MeshBudget,
     out: &mut Loaded,
 ) -> Result<(), LoadError> {
@@ -377,12 +717,21 @@ pub(super) fn walk(
         out.warnings
             .push("the file has no scene: loaded every root node".to_owned());
     }
-    let mut on_path = vec![false; document.nodes().len()];
-    let mut names = Vec::new();
+    let mut path = NodePath {
+        on_path: vec![false; document.nodes().len()],
+        names: Vec::new(),
+    };
     for root in roots {
-        visit(cx, buffers, root, &mut on_path, &mut names, budget, out)?;
+        visit(cx, buffers, root, &mut path, limits, budget, out)?;
     }
     Ok(())
+}
+
+/// The nodes from the walk's root down to the current one: marked in `on_path` (by index),
+/// named in `names` (root first).
+struct NodePath {
+    on_path: Vec<bool>,
+    names: Vec<String>,
 }
 
 /// One step of the walk: enter a node under its parent's world transform, or leave one.
@@ -399,11 +748,12 @@ fn visit(
     cx: &Context,
     buffers: &[gltf::buffer::Data],
     root: gltf::Node,
-    on_path: &mut [bool],
-    names: &mut Vec<String>,
+    path: &mut NodePath,
+    limits: &Limits,
     budget: &mut MeshBudget,
     out: &mut Loaded,
 ) -> Result<(), LoadError> {
+    let NodePath { on_path, names } = path;
     let mut stack = vec![Step::Enter(root, Mat4::IDENTITY)];
     while let Some(step) = stack.pop() {
         let (node, parent) = match step {
@@ -420,7 +770,7 @@ fn visit(
         }
         on_path[index] = true;
         names.push(cx.name("nodes", index).unwrap_or_else(|| format!("node {index}")));
-        let world = parent * Mat4::from_cols_array_2d(&node.transform().matrix());
+        let world = parent * node_matrix(&node);
         if !world.is_finite() {
             // Each number is within float32's range (validated); their product is not.
             return Err(cx.error(LoadErrorKind::Invalid {
@@ -441,6 +791,20 @@ fn visit(
             let mirrored = world.determinant() < 0.0;
             for primitive in mesh.primitives() {
                 let p = primitive.index();
+                // Counted by the nodes on its path, whose names it keeps: on a deep chain of
+                // nodes that each place a mesh, those copies grow as the square of the depth.
+                let depth = names.len() as u64;
+                budget
+                    .charge_placement(depth, limits.placements)
+                    .map_err(|made| {
+                        cx.error(LoadErrorKind::Placements {
+                            node: index,
+                            primitive: cx.primitive_label(m, p),
+                            depth,
+                            made,
+                            limit: limits.placements,
+                        })
+                    })?;
                 if primitive.morph_targets().len() > 0 {
                     out.warnings
                         .push(format!("{}: morph targets are ignored", cx.primitive_label(m, p)));

@@ -3,9 +3,10 @@
 //! so that a textured material's factor is scaled by what its texture averages to rather than
 //! drawn as if the texture were white.
 
-use super::{Context, MAX_FILE_BYTES};
+use super::{Context, LoadError, LoadErrorKind, MAX_FILE_BYTES};
 use crate::gl::texture::{MagFilter, MinFilter, Sampling, TextureImage, Wrap, MAX_TEXTURE_SIZE};
 use glam::{Mat4, Vec4};
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -65,93 +66,141 @@ pub(super) struct MaterialTextures {
     pub(super) base_color_sampled: Option<SampledTexture>,
 }
 
-/// One entry per material of the file; each image decoded at most once. Images that cannot be
-/// read or decoded become warnings.
+/// What one image decoded to: its linear mean and the texture with its mipmaps, or why it
+/// could not be read (a warning).
+type Decoded = Result<Texture, String>;
+
+/// A decoded image's linear mean and its texture with mipmaps.
+type Texture = (Vec4, Arc<TextureImage>);
+
+/// One entry per material of the file. Each image is decoded at most once, and so is each
+/// file or range of bytes however many images name it; each is charged to the scene's
+/// texture limit (`budget`) from its header's size before it is decoded, and one past the
+/// limit is an error. Images that cannot be read or decoded become warnings.
 pub(super) fn material_textures(
     cx: &Context,
     document: &gltf::Document,
     buffers: &[gltf::buffer::Data],
-    roots: &[PathBuf],
+    (limits, budget): (&crate::scene::Limits, &mut crate::scene::MeshBudget),
     textures: Textures,
     warnings: &mut Vec<String>,
-) -> Vec<MaterialTextures> {
-    type Decoded = Option<(Vec4, Arc<TextureImage>)>;
-    let mut cache: Vec<Option<Decoded>> = vec![None; document.images().len()];
-    let mut decode = |texture: &gltf::Texture| -> Decoded {
+) -> Result<Vec<MaterialTextures>, LoadError> {
+    let roots = &limits.asset_roots[..];
+    let mut by_image: Vec<Option<Option<Texture>>> = vec![None; document.images().len()];
+    let mut by_source: HashMap<ImageSource, Decoded> = HashMap::new();
+    let mut decode = |texture: &gltf::Texture| -> Result<Option<Texture>, LoadError> {
         if textures == Textures::Ignore {
-            return None;
+            return Ok(None);
         }
         let image = texture.source();
         let i = image.index();
-        cache[i]
-            .get_or_insert_with(|| {
-                let texture = decode_image(cx, &image, buffers, roots).and_then(|decoded| {
-                    let mean = mean_linear(&decoded);
-                    let (w, h) = decoded.dimensions();
-                    TextureImage::new(w, h, decoded.into_raw())
-                        .map(|texture| (mean, texture))
-                        .map_err(|e| e.to_string())
-                });
-                match texture {
-                    Ok((mean, texture)) => Some((mean, Arc::new(texture.with_mipmaps()))),
-                    Err(why) => {
-                        warnings.push(format!(
-                            "image {i}{}: {why}; the materials using it take their factors alone",
-                            cx.name("images", i)
-                                .map(|n| format!(" ({:?})", crate::scene::shorten(&n)))
-                                .unwrap_or_default()
-                        ));
-                        None
-                    }
+        if let Some(done) = by_image.get(i).cloned().flatten() {
+            return Ok(done);
+        }
+        let decoded = match image_source(cx, &image, roots) {
+            Err(why) => Err(why),
+            Ok(source) => match by_source.get(&source) {
+                Some(decoded) => decoded.clone(),
+                None => {
+                    let decoded = decode_source(&source, buffers, &mut |width, height| {
+                        let bytes = mipmapped_bytes(width, height);
+                        budget
+                            .charge_texture(bytes, limits.texture_bytes)
+                            .map_err(|used| {
+                                cx.error(LoadErrorKind::TextureBudget {
+                                    image: i,
+                                    width,
+                                    height,
+                                    bytes,
+                                    used,
+                                    limit: limits.texture_bytes,
+                                })
+                            })
+                    })?;
+                    by_source.insert(source, decoded.clone());
+                    decoded
                 }
-            })
-            .clone()
+            },
+        };
+        let kept = match decoded {
+            Ok(done) => Some(done),
+            Err(why) => {
+                warnings.push(format!(
+                    "image {i}{}: {why}; the materials using it take their factors alone",
+                    cx.name("images", i)
+                        .map(|n| format!(" ({:?})", crate::scene::shorten(&n)))
+                        .unwrap_or_default()
+                ));
+                None
+            }
+        };
+        if let Some(slot) = by_image.get_mut(i) {
+            *slot = Some(kept.clone());
+        }
+        Ok(kept)
     };
-    let mean_of = |decoded: &Decoded| match decoded {
+    let mean_of = |decoded: &Option<Texture>| match decoded {
         Some((mean, _)) => TextureMean::Mean(*mean),
         None => TextureMean::Unread,
     };
     let mut other_coords = Vec::new();
-    let out = document
-        .materials()
-        .map(|m| {
-            let info = m.pbr_metallic_roughness().base_color_texture();
-            let base_decoded = info.as_ref().map(|t| decode(&t.texture()));
-            let base_color = base_decoded.as_ref().map(mean_of);
-            let emissive = m.emissive_texture().map(|t| mean_of(&decode(&t.texture())));
-            let base_color_sampled = info.and_then(|info| {
-                let transform = info.texture_transform();
-                let coords = transform
-                    .as_ref()
-                    .and_then(|t| t.tex_coord())
-                    .unwrap_or(info.tex_coord());
-                if coords != 0 {
-                    other_coords.push(m.index().unwrap_or_default());
-                    return None;
-                }
-                let (_, image) = base_decoded.flatten()?;
-                Some(SampledTexture {
-                    image,
-                    sampling: sampling(&info.texture().sampler()),
-                    matrix: transform.map_or(Mat4::IDENTITY, |t| {
-                        transform_matrix(t.offset(), t.rotation(), t.scale())
-                    }),
-                    image_index: info.texture().source().index(),
-                })
-            });
-            MaterialTextures {
-                base_color,
-                emissive,
-                base_color_sampled,
+    let mut out = Vec::new();
+    for m in document.materials() {
+        let info = m.pbr_metallic_roughness().base_color_texture();
+        let base_decoded = match &info {
+            Some(t) => Some(decode(&t.texture())?),
+            None => None,
+        };
+        let base_color = base_decoded.as_ref().map(mean_of);
+        let emissive = match m.emissive_texture() {
+            Some(t) => Some(mean_of(&decode(&t.texture())?)),
+            None => None,
+        };
+        let base_color_sampled = info.and_then(|info| {
+            let transform = info.texture_transform();
+            let coords = transform
+                .as_ref()
+                .and_then(|t| t.tex_coord())
+                .unwrap_or(info.tex_coord());
+            if coords != 0 {
+                other_coords.push(m.index().unwrap_or_default());
+                return None;
             }
-        })
-        .collect();
+            let (_, image) = base_decoded.flatten()?;
+            Some(SampledTexture {
+                image,
+                sampling: sampling(&info.texture().sampler()),
+                matrix: transform.map_or(Mat4::IDENTITY, |t| {
+                    transform_matrix(t.offset(), t.rotation(), t.scale())
+                }),
+                image_index: info.texture().source().index(),
+            })
+        });
+        out.push(MaterialTextures {
+            base_color,
+            emissive,
+            base_color_sampled,
+        });
+    }
     if !other_coords.is_empty() {
         warnings.push(format!(
             "materials {other_coords:?}: the base color texture reads TEXCOORD_1 or later; ffvk reads TEXCOORD_0 only, so these take the texture's mean texel instead"
         ));
     }
-    out
+    Ok(out)
+}
+
+/// The bytes an image of `width` × `height` takes as [`TextureImage`] stores it: RGBA8, with
+/// every mipmap level down to 1 × 1 (about 4/3 of the base level).
+pub(super) fn mipmapped_bytes(width: u32, height: u32) -> u64 {
+    let (mut w, mut h, mut bytes) = (u64::from(width.max(1)), u64::from(height.max(1)), 0u64);
+    loop {
+        bytes = bytes.saturating_add(w * h * 4);
+        if w == 1 && h == 1 {
+            return bytes;
+        }
+        (w, h) = ((w / 2).max(1), (h / 2).max(1));
+    }
 }
 
 /// glTF's sampler as GL's texture parameters (glTF uses GL's enums). Without a filter glTF
@@ -198,28 +247,25 @@ pub fn transform_matrix(offset: [f32; 2], rotation: f32, scale: [f32; 2]) -> Mat
         * Mat4::from_scale(glam::Vec3::new(scale[0], scale[1], 1.0))
 }
 
-/// The image's encoded bytes: from a bufferView, a data: URI or a file beside the glTF file.
-fn image_bytes(
-    cx: &Context,
-    image: &gltf::Image,
-    buffers: &[gltf::buffer::Data],
-    roots: &[PathBuf],
-) -> Result<Vec<u8>, String> {
+/// Where an image's encoded bytes are, as far as telling two images that name the same bytes
+/// apart needs: a buffer's range, a data: URI, or a file (its path with every link resolved).
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+enum ImageSource {
+    View { buffer: usize, start: usize, end: usize },
+    Data(String),
+    File(PathBuf),
+}
+
+/// Where `image`'s bytes are: a bufferView, a data: URI or a file beside the glTF file.
+fn image_source(cx: &Context, image: &gltf::Image, roots: &[PathBuf]) -> Result<ImageSource, String> {
     match image.source() {
-        gltf::image::Source::View { view, .. } => {
-            let data = buffers
-                .get(view.buffer().index())
-                .ok_or_else(|| format!("bufferView {} names a missing buffer", view.index()))?;
-            let range = view.offset()..view.offset().saturating_add(view.length());
-            data.0
-                .get(range)
-                .map(<[u8]>::to_vec)
-                .ok_or_else(|| format!("bufferView {} lies outside its buffer", view.index()))
-        }
+        gltf::image::Source::View { view, .. } => Ok(ImageSource::View {
+            buffer: view.buffer().index(),
+            start: view.offset(),
+            end: view.offset().saturating_add(view.length()),
+        }),
         gltf::image::Source::Uri { uri, .. } if uri.starts_with("data:") => {
-            gltf::buffer::Data::from_source(gltf::buffer::Source::Uri(uri), None)
-                .map(|d| d.0)
-                .map_err(|e| format!("bad data URI: {e}"))
+            Ok(ImageSource::Data(uri.to_owned()))
         }
         gltf::image::Source::Uri { uri, .. } => {
             let base = cx.path.parent().unwrap_or(Path::new(""));
@@ -229,41 +275,80 @@ fn image_bytes(
                     crate::scene::shorten(uri)
                 )
             })?;
-            crate::files::read_regular(&file, MAX_FILE_BYTES).map_err(|e| {
-                format!(
-                    "cannot read {}: {e}",
-                    crate::scene::shorten(&file.display().to_string())
-                )
-            })
+            Ok(ImageSource::File(std::fs::canonicalize(&file).unwrap_or(file)))
         }
     }
 }
 
-/// `image` decoded to RGBA8 as stored, no larger than a texture may be.
-fn decode_image(
-    cx: &Context,
-    image: &gltf::Image,
+/// The encoded bytes at `source`.
+fn image_bytes(source: &ImageSource, buffers: &[gltf::buffer::Data]) -> Result<Vec<u8>, String> {
+    match source {
+        ImageSource::View { buffer, start, end } => {
+            let data = buffers
+                .get(*buffer)
+                .ok_or_else(|| format!("its bufferView names buffer {buffer}, which is missing"))?;
+            data.0
+                .get(*start..*end)
+                .map(<[u8]>::to_vec)
+                .ok_or_else(|| format!("its bufferView (bytes {start}..{end}) lies outside buffer {buffer}"))
+        }
+        ImageSource::Data(uri) => gltf::buffer::Data::from_source(gltf::buffer::Source::Uri(uri), None)
+            .map(|d| d.0)
+            .map_err(|e| format!("bad data URI: {e}")),
+        ImageSource::File(file) => crate::files::read_regular(file, MAX_FILE_BYTES).map_err(|e| {
+            format!(
+                "cannot read {}: {e}",
+                crate::scene::shorten(&file.display().to_string())
+            )
+        }),
+    }
+}
+
+/// The image at `source` decoded to RGBA8 as stored, with its linear mean and mipmaps, no
+/// larger than a texture may be; `charge` is given its size from its header before it is
+/// decoded, and its error ends the load. `Ok(Err)` is why the image could not be read (a
+/// warning).
+fn decode_source(
+    source: &ImageSource,
     buffers: &[gltf::buffer::Data],
-    roots: &[PathBuf],
-) -> Result<image::RgbaImage, String> {
-    let bytes = image_bytes(cx, image, buffers, roots)?;
+    charge: &mut dyn FnMut(u32, u32) -> Result<(), LoadError>,
+) -> Result<Decoded, LoadError> {
+    let bytes = match image_bytes(source, buffers) {
+        Ok(bytes) => bytes,
+        Err(why) => return Ok(Err(why)),
+    };
     let reader = || {
         image::ImageReader::new(std::io::Cursor::new(&bytes[..]))
             .with_guessed_format()
             .map_err(|e| format!("cannot read: {e}"))
     };
-    let (w, h) = reader()?
-        .into_dimensions()
-        .map_err(|e| format!("cannot decode (ffvk reads PNG and JPEG): {e}"))?;
+    let dimensions = reader().and_then(|r| {
+        r.into_dimensions()
+            .map_err(|e| format!("cannot decode (ffvk reads PNG and JPEG): {e}"))
+    });
+    let (w, h) = match dimensions {
+        Ok(size) => size,
+        Err(why) => return Ok(Err(why)),
+    };
     if w == 0 || h == 0 || w > MAX_TEXTURE_SIZE || h > MAX_TEXTURE_SIZE {
-        return Err(format!(
+        return Ok(Err(format!(
             "{w}x{h} texels: expected each side in 1..={MAX_TEXTURE_SIZE}"
-        ));
+        )));
     }
-    Ok(reader()?
-        .decode()
-        .map_err(|e| format!("cannot decode (ffvk reads PNG and JPEG): {e}"))?
-        .into_rgba8())
+    charge(w, h)?;
+    let decoded = reader().and_then(|r| {
+        r.decode()
+            .map_err(|e| format!("cannot decode (ffvk reads PNG and JPEG): {e}"))
+    });
+    let decoded = match decoded {
+        Ok(image) => image.into_rgba8(),
+        Err(why) => return Ok(Err(why)),
+    };
+    let mean = mean_linear(&decoded);
+    let (w, h) = decoded.dimensions();
+    Ok(TextureImage::new(w, h, decoded.into_raw())
+        .map(|texture| (mean, Arc::new(texture.with_mipmaps())))
+        .map_err(|e| e.to_string()))
 }
 
 /// The mean of `image`'s texels with RGB decoded from sRGB (alpha is linear already).

@@ -372,9 +372,10 @@ mod tests {
         assert_names(&t, &["metallicFactor", "1.5"]);
         let t = with_material("emissive", r#"{ "emissiveFactor": [0, 0, 3] }"#);
         assert_names(&t, &["emissiveFactor", "3.0"]);
-        let t = with_material(
+        let t = error_with(
             "strength",
-            r#"{ "extensions": { "KHR_materials_emissive_strength": { "emissiveStrength": -2 } } }"#,
+            r#""extensionsUsed": ["KHR_materials_emissive_strength"],
+               "materials": [ { "extensions": { "KHR_materials_emissive_strength": { "emissiveStrength": -2 } } } ],"#,
         );
         assert_names(&t, &["emissiveStrength", "-2", ">= 0"]);
     }
