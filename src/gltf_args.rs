@@ -13,7 +13,7 @@ pub struct GltfArgs {
     /// glTF files only: "frame" (the default: a camera framing the scene's bounds, as glTF
     /// viewers open a file), "file" (the file's first camera, else framing), or one of the
     /// file's cameras by NAME or INDEX.
-    #[arg(long, value_name = "frame|file|NAME|INDEX")]
+    #[arg(long, value_name = "frame|file|NAME|INDEX", allow_hyphen_values = true)]
     pub camera: Option<String>,
     /// glTF files only: the framing camera's direction about the vertical axis, in degrees
     /// from the model's front (glTF's +Z), positive toward its left side (+X); default: about

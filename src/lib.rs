@@ -127,6 +127,15 @@ pub enum Error {
         input: PathBuf,
     },
 
+    /// A folder a command replaces whole (a report's `images/`) holds one of its inputs.
+    #[error("{}: holds {}, a file this run reads, and the report replaces this folder whole: refused, nothing written; expected a report folder apart from the run's inputs", .folder.display(), .input.display())]
+    FolderHoldsInput {
+        /// The folder.
+        folder: PathBuf,
+        /// The input inside it.
+        input: PathBuf,
+    },
+
     /// A tolerance out of its range.
     #[error(transparent)]
     Tolerance(#[from] ffvk::images::compare::ToleranceError),

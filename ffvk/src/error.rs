@@ -286,6 +286,18 @@ pub enum LightingError {
         /// GL's name of the draw's mode.
         topology: &'static str,
     },
+    /// A draw's geometry that Vulkan would not draw as given: an index buffer offset not a
+    /// multiple of the index size, an index type other than UINT16 or UINT32, or a range of
+    /// indices or vertices past 2^32.
+    #[error("the draw's {field} is {value}: expected {expected}")]
+    Geometry {
+        /// The geometry's field (`index offset`, `first + count`, `index type`).
+        field: String,
+        /// Its value, as given.
+        value: String,
+        /// What was expected.
+        expected: &'static str,
+    },
     /// A draw passes a different number of vertex buffers than the layout has bindings.
     #[error(
         "the draw passes {given} vertex buffer(s): expected {expected}, one per binding of the vertex layout"

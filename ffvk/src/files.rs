@@ -160,7 +160,8 @@ fn sweep_stale_temporaries(dir: &Path, name: &str) {
         let (Ok(pid), Ok(_)) = (pid.parse::<u32>(), count.parse::<u64>()) else {
             continue;
         };
-        if pid != std::process::id() && !process_runs(pid) {
+        // Never a file this run reads, whatever its name.
+        if pid != std::process::id() && !process_runs(pid) && input_named(&entry.path()).is_none() {
             let _ = fs::remove_file(entry.path());
         }
     }
@@ -211,7 +212,8 @@ pub fn input_named(path: &Path) -> Option<PathBuf> {
     let inputs = INPUTS.lock().unwrap_or_else(|e| e.into_inner());
     let list = inputs.as_ref()?;
     if cfg!(unix) {
-        let id = FileId::of(path)?;
+        // A path through a folder not made yet (`new/../x`) names what it will name.
+        let id = FileId::of(path).or_else(|| FileId::of(&resolved(path)))?;
         list.iter()
             .find(|(known, _)| *known == id)
             .map(|(_, p)| p.clone())
@@ -227,6 +229,18 @@ fn refuse(path: &Path, problem: &str) -> io::Error {
         io::ErrorKind::InvalidInput,
         format!("{}: {problem}", path.display()),
     )
+}
+
+/// An input of this process (as it was read) that lies inside the folder `dir`, after links,
+/// when the guard is on: what a command that replaces the folder's contents would delete.
+pub fn input_within(dir: &Path) -> Option<PathBuf> {
+    let dir = resolved(dir);
+    let inputs = INPUTS.lock().unwrap_or_else(|e| e.into_inner());
+    inputs
+        .as_ref()?
+        .iter()
+        .find(|(_, p)| p.starts_with(&dir))
+        .map(|(_, p)| p.clone())
 }
 
 /// Refuses `path` as an output when it names (after links) a file this process read, with
@@ -287,6 +301,8 @@ pub fn write_atomically(
         _ => PathBuf::from("."),
     };
     fs::create_dir_all(&dir)?;
+    // With its folders made, the path may name a file it could not name before.
+    refuse_input(&target)?;
     let name = target
         .file_name()
         .ok_or_else(|| refuse(path, "has no file name: expected a file path"))?
@@ -365,25 +381,35 @@ pub fn same_file(a: &Path, b: &Path) -> bool {
 /// `path` made absolute with symbolic links resolved as far as it exists, so that a folder
 /// that does not exist yet can still be compared with one that does.
 pub fn resolved(path: &Path) -> PathBuf {
+    use std::path::Component;
     let absolute = if path.is_absolute() {
         path.to_path_buf()
     } else {
         std::env::current_dir().unwrap_or_default().join(path)
     };
-    let mut existing = absolute.clone();
-    let mut rest = Vec::new();
-    while !existing.exists() {
-        match (existing.parent(), existing.file_name()) {
-            (Some(parent), Some(name)) => {
-                rest.push(name.to_os_string());
-                existing = parent.to_path_buf();
+    // Component by component: links resolved while the path exists; past the first part
+    // that does not, nothing can be a link, so `..` is taken lexically (`new/../x` is `x`,
+    // as it will be once `new` is made).
+    let mut out = PathBuf::new();
+    let mut exists = true;
+    for component in absolute.components() {
+        match component {
+            Component::Prefix(_) | Component::RootDir => out.push(component),
+            Component::CurDir => {}
+            // `out` has no links left in it, so its parent is the lexical one.
+            Component::ParentDir => {
+                out.pop();
             }
-            _ => return absolute,
+            Component::Normal(name) => {
+                out.push(name);
+                if exists {
+                    match fs::canonicalize(&out) {
+                        Ok(real) => out = real,
+                        Err(_) => exists = false,
+                    }
+                }
+            }
         }
-    }
-    let mut out = fs::canonicalize(&existing).unwrap_or(existing);
-    for name in rest.into_iter().rev() {
-        out.push(name);
     }
     out
 }
@@ -501,5 +527,18 @@ mod tests {
         assert!(is_within(&dir.join("refs/new/sub"), &dir.join("refs")));
         assert!(is_within(&dir.join("refs"), &dir.join("refs/.")));
         assert!(!is_within(&dir.join("refs2"), &dir.join("refs")));
+    }
+
+    #[test]
+    fn a_path_through_folders_not_made_yet_resolves_to_what_it_will_name() {
+        let dir = scratch("not-yet");
+        fs::write(dir.join("x"), b"x").unwrap();
+        let x = fs::canonicalize(dir.join("x")).unwrap();
+        assert_eq!(resolved(&dir.join("new/../x")), x);
+        assert_eq!(resolved(&dir.join("new/a/./../../x")), x);
+        assert_eq!(
+            resolved(&dir.join("new/y")),
+            fs::canonicalize(&dir).unwrap().join("new/y")
+        );
     }
 }

@@ -20,6 +20,20 @@ pub(crate) struct Global {
     #[arg(long, global = true, value_name = "MIB", default_value_t = ffvk::scene::DEFAULT_MESH_BYTES >> 20,
           value_parser = parse_mib, allow_negative_numbers = true)]
     pub(crate) max_mesh_mib: u64,
+    /// The host memory a scene's decoded textures may take, in MiB (RGBA8 with mipmaps,
+    /// counted from each image's header before it is decoded).
+    #[arg(long, global = true, value_name = "MIB", default_value_t = ffvk::scene::DEFAULT_TEXTURE_BYTES >> 20,
+          value_parser = parse_mib, allow_negative_numbers = true)]
+    pub(crate) max_texture_mib: u64,
+    /// The host memory one glTF file's buffers may take, in MiB (files, data URIs, the GLB
+    /// chunk and meshopt fallback buffers together).
+    #[arg(long, global = true, value_name = "MIB", default_value_t = ffvk::scene::DEFAULT_BUFFER_BYTES >> 20,
+          value_parser = parse_mib, allow_negative_numbers = true)]
+    pub(crate) max_buffer_mib: u64,
+    /// The mesh placements a scene may have, each counted by the nodes on its path.
+    #[arg(long, global = true, value_name = "N", default_value_t = ffvk::scene::DEFAULT_PLACEMENTS,
+          value_parser = parse_count, allow_negative_numbers = true)]
+    pub(crate) max_placements: u64,
     /// Let glTF buffer URIs reach files inside DIR too (by default only the glTF file's own
     /// folder); may be given more than once.
     #[arg(long, global = true, value_name = "DIR")]
@@ -35,6 +49,9 @@ impl Global {
         let mut limits = ffvk::scene::Limits::default();
         limits.asset_roots = self.allow_root.clone();
         limits.mesh_bytes = self.max_mesh_mib << 20;
+        limits.texture_bytes = self.max_texture_mib << 20;
+        limits.buffer_bytes = self.max_buffer_mib << 20;
+        limits.placements = self.max_placements;
         limits
     }
 
@@ -60,12 +77,21 @@ impl Global {
     }
 }
 
-/// `--max-mesh-mib`: a whole number of MiB, 1 to 2^24 (16 TiB).
+/// `--max-mesh-mib`, `--max-texture-mib`, `--max-buffer-mib`: a whole number of MiB, 1 to 2^24 (16 TiB).
 fn parse_mib(s: &str) -> Result<u64, String> {
     const MAX: u64 = 1 << 24;
     match s.trim().parse::<u64>() {
         Ok(n) if (1..=MAX).contains(&n) => Ok(n),
         _ => Err(format!("{s:?}: expected a whole number of MiB in 1..={MAX}")),
+    }
+}
+
+/// `--max-placements`: a whole number, 1 to 2^40.
+fn parse_count(s: &str) -> Result<u64, String> {
+    const MAX: u64 = 1 << 40;
+    match s.trim().parse::<u64>() {
+        Ok(n) if (1..=MAX).contains(&n) => Ok(n),
+        _ => Err(format!("{s:?}: expected a whole number in 1..={MAX}")),
     }
 }
 
@@ -174,6 +200,13 @@ impl ToleranceArgs {
 pub(crate) fn print_note(path: &std::path::Path) -> impl FnMut(ffvk::scene::OpenNote) + '_ {
     move |note| match note {
         ffvk::scene::OpenNote::Chose { .. } => ffvk_cli::errln!("{}: {note}", path.display()),
+        ffvk::scene::OpenNote::Warning { text, times } => ffvk_cli::errln!(
+            "{}",
+            ffvk::scene::OpenNote::Warning {
+                text: &format!("{}: {text}", path.display()),
+                times
+            }
+        ),
         _ => ffvk_cli::errln!("{note}"),
     }
 }

@@ -131,6 +131,18 @@ pub(crate) fn run(global: &Global, args: &RenderArgs) -> ffvk_cli::Result<ExitCo
         }
     }
     let results_asked = check.is_some() || junit.is_some() || json.is_some() || partition.is_some();
+    if let Some((i, mode)) = lighting
+        .iter()
+        .enumerate()
+        .find(|(i, m)| lighting[..*i].contains(m))
+    {
+        return Err(ffvk_cli::Error::Argument(format!(
+            "--lighting names {} twice (at {} and {}): expected each mode once, as each writes its own image",
+            mode.name(),
+            lighting.iter().position(|m| m == mode).unwrap_or(0) + 1,
+            i + 1
+        )));
+    }
     if files.len() == 1 && lighting.len() <= 1 && !results_asked && !scenes[0].is_dir() {
         let image = out.clone().unwrap_or_else(|| files[0].path.with_extension("png"));
         regress::refuse_writing_inputs(&job, &files, &[image.as_path()], false)?;

@@ -79,12 +79,36 @@ pub(crate) fn run(action: &ResultsAction) -> ffvk_cli::Result<ExitCode> {
     .filter_map(|(flag, path)| path.map(|p| (flag, p)))
     .collect();
     let inputs: Vec<&std::path::Path> = files.iter().map(PathBuf::as_path).collect();
+    // What the runs read and wrote (scene files, images, references, maps) is this command's
+    // input too: no results file or report may replace one, by any spelling.
+    for (_, results) in &parts {
+        for row in results.runs.iter().flat_map(|run| &run.rows) {
+            let named = [
+                &row.output,
+                &row.diff,
+                &row.channels,
+                &row.replaced,
+                &row.reference,
+            ];
+            for path in std::iter::once(&row.file).chain(named.into_iter().flatten()) {
+                ffvk::files::note_input(path);
+            }
+        }
+    }
     let references: Vec<PathBuf> = parts
         .iter()
         .flat_map(|(_, r)| r.runs.iter().filter_map(|run| run.info.references.clone()))
         .collect();
     let references: Vec<&std::path::Path> = references.iter().map(PathBuf::as_path).collect();
     regress::refuse_overlaps(&written, &inputs, &[], &references)?;
+    for (_, path) in &written {
+        if let Some(input) = ffvk::files::input_named(path) {
+            return Err(ffvk_cli::Error::OverwritesInput {
+                path: path.to_path_buf(),
+                input,
+            });
+        }
+    }
     super::render::expect_results_names(outputs.json, outputs.junit)?;
     let merged = regress::results::Results::merge(parts)?;
     let checked = merged.runs.iter().any(|r| r.info.references.is_some());

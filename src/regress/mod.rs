@@ -488,7 +488,11 @@ pub fn load_scene(
 ) -> Result<Scene> {
     let scene = ffvk::scene::open(path, size, limits, direct, &mut |n| match n {
         OpenNote::Chose { text } => log(Message::Chose { scene: path, text }),
-        OpenNote::Warning { text, times } => log(Message::Warning { text, times }),
+        // Named by its scene: in a folder run, warnings of many scenes interleave.
+        OpenNote::Warning { text, times } => log(Message::Warning {
+            text: &format!("{}: {text}", path.display()),
+            times,
+        }),
         _ => {}
     })?;
     Ok(scene)

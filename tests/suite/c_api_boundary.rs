@@ -264,7 +264,7 @@ fn raster_enums_vulkan_does_not_define_are_refused_at_ffvk_draw_naming_field_and
     assert_eq!(made, FfvkResult::FFVK_SUCCESS, "{}", message());
     let ctx = ffvkCreateContext();
     // A buffer handle that is never dereferenced: ffvkDraw only checks and stages.
-    let buffer = vk::Buffer::null();
+    let buffer = vk::Buffer::from_raw(0x2000);
     let draw = |raster| FfvkDrawInfo {
         struct_size: std::mem::size_of::<FfvkDrawInfo>() as u32,
         mode: GL_TRIANGLES,
@@ -397,4 +397,104 @@ fn the_rust_api_refuses_the_same_targets_layouts_and_raster_states_as_the_c_api(
         .to_string();
     assert!(e.contains("dst_color 999"), "{e}");
     assert_eq!(RasterState::default().validate(), Ok(()));
+}
+
+/// What Vulkan would not draw as given is refused at `ffvkDraw`, naming the field and value:
+/// an index offset that is not a multiple of the index size (VUID-vkCmdBindIndexBuffer-
+/// offset-00432 once recorded), a first index or vertex plus the count past 2^32. The Rust API checks the same (`Geometry::validate`, in `Lighting`'s staging).
+#[test]
+fn geometry_vulkan_would_not_draw_is_refused_at_ffvk_draw_naming_field_and_value() {
+    let plain = PlainDevice::new();
+    let mut r = std::ptr::null_mut();
+    // SAFETY: a valid create info on a live device; out is writable.
+    let made = unsafe { ffvkCreateRenderer(&create_info(&plain), &mut r) };
+    assert_eq!(made, FfvkResult::FFVK_SUCCESS, "{}", message());
+    let ctx = ffvkCreateContext();
+    // Handles never dereferenced: ffvkDraw only checks and stages.
+    let buffer = vk::Buffer::from_raw(0x2000);
+    let null = vk::Buffer::null();
+    let good = FfvkDrawInfo {
+        struct_size: std::mem::size_of::<FfvkDrawInfo>() as u32,
+        mode: GL_TRIANGLES,
+        vertex_buffers: &buffer,
+        vertex_offsets: std::ptr::null(),
+        vertex_buffer_count: 1,
+        index_buffer: vk::Buffer::from_raw(0x3000),
+        index_offset: 0,
+        index_type: vk::IndexType::UINT32,
+        first: 0,
+        count: 3,
+        vertex_offset: 0,
+        primitive_restart: 0,
+        raster: defaults(),
+        texture: std::ptr::null(),
+    };
+    let cases = [
+        (
+            FfvkDrawInfo {
+                index_offset: 3,
+                ..good
+            },
+            "index offset is 3",
+            "a multiple of the index size",
+        ),
+        (
+            FfvkDrawInfo {
+                index_offset: 2,
+                index_type: vk::IndexType::UINT32,
+                ..good
+            },
+            "index offset is 2",
+            "4 for UINT32",
+        ),
+        (
+            FfvkDrawInfo {
+                first: u32::MAX,
+                count: 3,
+                ..good
+            },
+            "first + count is 4294967295 + 3",
+            "at most 4294967295",
+        ),
+        (
+            FfvkDrawInfo {
+                index_buffer: null,
+                first: 10,
+                count: u32::MAX - 5,
+                ..good
+            },
+            "first + count is 10 + 4294967290",
+            "at most 4294967295",
+        ),
+    ];
+    // SAFETY: live renderer and context; the command buffer is a placeholder ffvk never
+    // records into (the renderer is destroyed with its scope open).
+    unsafe {
+        assert_eq!(ffvkBeginFrame(r, 0), FfvkResult::FFVK_SUCCESS);
+        assert_eq!(
+            ffvkBeginDraws(r, vk::CommandBuffer::from_raw(0x1000), 0),
+            FfvkResult::FFVK_SUCCESS
+        );
+        for (draw, given, expected) in &cases {
+            let result = ffvkDraw(r, ctx, draw);
+            let text = message();
+            assert_eq!(result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT, "{given}: {text}");
+            assert!(text.starts_with("ffvkDraw: "), "{text}");
+            assert!(
+                text.contains(given) && text.contains(expected),
+                "{text:?} lacks {given:?} or {expected:?}"
+            );
+        }
+        // An offset of 4 with UINT32, 2 with UINT16: drawn.
+        for (offset, index_type) in [(4, vk::IndexType::UINT32), (2, vk::IndexType::UINT16)] {
+            let draw = FfvkDrawInfo {
+                index_offset: offset,
+                index_type,
+                ..good
+            };
+            assert_eq!(ffvkDraw(r, ctx, &draw), FfvkResult::FFVK_SUCCESS, "{}", message());
+        }
+        ffvkDestroyRenderer(r);
+        ffvkDestroyContext(ctx);
+    }
 }

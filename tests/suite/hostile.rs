@@ -474,7 +474,10 @@ fn deeply_nested_toml_and_json_are_errors_not_stack_overflows() {
             .expect("no stack overflow");
         // Brackets and braces are counted before the TOML parser runs (32 levels); JSON stops
         // at its parser's recursion limit.
-        assert!(e.contains("recursion limit") || e.contains("expected at most 32"), "{name}: {e}");
+        assert!(
+            e.contains("recursion limit") || e.contains("expected at most 32"),
+            "{name}: {e}"
+        );
         assert!(e.len() < 2000, "{name}: a {} byte message", e.len());
     }
 }

@@ -101,7 +101,14 @@ fn render_o_onto_the_scenes_texture_is_refused_however_it_is_spelled() {
     std::fs::create_dir_all(dir.join("sub")).unwrap();
     std::os::unix::fs::symlink("t.png", dir.join("link.png")).unwrap();
     textured_scene(&dir, "s.toml", "t.png");
-    for out in ["t.png", "./sub/../t.png", "link.png"] {
+    // `nodir/../t.png`: through a folder that does not exist yet, which the write would make.
+    for out in [
+        "t.png",
+        "./sub/../t.png",
+        "link.png",
+        "nodir/../t.png",
+        "nodir/deeper/../../t.png",
+    ] {
         let o = run(&dir, &[&"render", &"s.toml", &"-o", &out]);
         refused(&o, "t.png", &dir.join("t.png"), &bytes);
     }
@@ -360,4 +367,86 @@ fn stale_temporary_files_of_dead_processes_are_swept_by_the_next_write() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(!stale.exists(), "the dead process's temporary file is swept");
     assert!(alive.exists(), "a live process's is left alone");
+}
+
+/// `results merge` reads the runs' results, and through them names the scenes, images and
+/// references those runs used: its `--json` and `--junit` may replace none of them, through a
+/// link or a folder not made yet (`zz/../p.json`).
+#[test]
+fn results_merge_never_writes_onto_its_inputs_or_the_files_its_results_name() {
+    let dir = scratch("merge");
+    textured_scene(&dir, "s.toml", "t.png");
+    texture(&dir.join("t.png"));
+    let o = run(
+        &dir,
+        &[&"render", &"s.toml", &"--out", &"out", &"--json", &"r.json"],
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let results = std::fs::read(dir.join("r.json")).unwrap();
+    let scene = std::fs::read(dir.join("s.toml")).unwrap();
+    let image = std::fs::read(dir.join("out/s.png")).unwrap();
+    std::os::unix::fs::symlink("s.toml", dir.join("s.json")).unwrap();
+    std::os::unix::fs::symlink("out/s.png", dir.join("o.xml")).unwrap();
+    for (flag, path, input, file, bytes) in [
+        ("--json", "zz/../r.json", "r.json", "r.json", &results),
+        ("--json", "s.json", "s.toml", "s.toml", &scene),
+        ("--junit", "o.xml", "s.png", "out/s.png", &image),
+    ] {
+        let o = run(&dir, &[&"results", &"merge", &"r.json", &flag, &path]);
+        refused(&o, input, &dir.join(file), bytes);
+    }
+}
+
+/// A report replaces its `images/` folder whole: a run that reads a file inside it (a scene or
+/// texture kept there) is refused before anything is drawn, and the file stays.
+#[test]
+fn a_report_folder_whose_images_hold_an_input_is_refused_before_anything_is_written() {
+    let dir = scratch("report-images");
+    std::fs::create_dir_all(dir.join("rep/images")).unwrap();
+    std::fs::create_dir_all(dir.join("refs")).unwrap();
+    std::fs::write(dir.join("rep/.ffvk-report"), b"").unwrap();
+    let scene = textured_scene(&dir.join("rep/images"), "s.toml", "t.png");
+    let bytes = texture(&dir.join("rep/images/t.png"));
+    let o = run(
+        &dir,
+        &[
+            &"render",
+            &scene,
+            &"--out",
+            &"out",
+            &"--check",
+            &"refs",
+            &"--report",
+            &"rep",
+        ],
+    );
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("replaces this folder whole"), "{stderr}");
+    assert_eq!(std::fs::read(dir.join("rep/images/t.png")).unwrap(), bytes);
+    assert!(scene.is_file());
+    assert!(!dir.join("out").exists(), "nothing drawn");
+}
+
+/// The sweep of stale temporary files never removes a file the run reads, whatever its name.
+#[test]
+fn the_sweep_of_stale_temporary_files_spares_the_runs_inputs() {
+    let dir = scratch("sweep-input");
+    let dead = std::fs::read_to_string("/proc/sys/kernel/pid_max")
+        .unwrap()
+        .trim()
+        .parse::<u64>()
+        .unwrap()
+        + 1;
+    let name = format!(".out.png.{dead}-0.tmp");
+    let bytes = texture(&dir.join("t.png"));
+    std::fs::rename(dir.join("t.png"), dir.join(&name)).unwrap();
+    textured_scene(&dir, "s.toml", &name);
+    let o = run(&dir, &[&"render", &"s.toml", &"-o", &"out.png"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(
+        std::fs::read(dir.join(&name)).unwrap(),
+        bytes,
+        "the texture is still there"
+    );
 }

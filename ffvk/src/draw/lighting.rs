@@ -428,6 +428,7 @@ impl Lighting {
             .into());
         }
         draw.raster.validate()?;
+        draw.geometry.validate()?;
         // The draw's own values, checked for every draw; the state, below, when it changed.
         let values = match &draw.values {
             Some(v) => (&v.front, &v.back, v.current_color),

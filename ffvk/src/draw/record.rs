@@ -188,6 +188,63 @@ impl Geometry {
         self
     }
 
+    /// Refuses what Vulkan would not draw as given (the draw checks it before anything is
+    /// recorded): an index type other than `UINT16` or `UINT32`, an index buffer offset that
+    /// is not a multiple of the index size, and a first index or vertex
+    /// plus the count past 2^32.
+    pub fn validate(&self) -> crate::error::Result<()> {
+        let error = |field: &str, value: String, expected| {
+            crate::error::LightingError::Geometry {
+                field: field.to_owned(),
+                value,
+                expected,
+            }
+            .into()
+        };
+        let (first, count) = match *self {
+            Geometry::Indexed {
+                offset,
+                index_type,
+                first_index,
+                index_count,
+                ..
+            } => {
+                let size = match index_type {
+                    vk::IndexType::UINT16 => 2,
+                    vk::IndexType::UINT32 => 4,
+                    other => {
+                        return Err(error(
+                            "index type",
+                            other.as_raw().to_string(),
+                            "VK_INDEX_TYPE_UINT16 or VK_INDEX_TYPE_UINT32",
+                        ))
+                    }
+                };
+                if offset % size != 0 {
+                    return Err(error(
+                        "index offset",
+                        offset.to_string(),
+                        "a multiple of the index size (2 bytes for UINT16, 4 for UINT32)",
+                    ));
+                }
+                (first_index, index_count)
+            }
+            Geometry::Vertices {
+                first_vertex,
+                vertex_count,
+                ..
+            } => (first_vertex, vertex_count),
+        };
+        if first.checked_add(count).is_none() {
+            return Err(error(
+                "first + count",
+                format!("{first} + {count}"),
+                "at most 4294967295 (2^32 - 1)",
+            ));
+        }
+        Ok(())
+    }
+
     /// Indexed: `base` is added to every index before its vertex is fetched
     /// (`glDrawElementsBaseVertex`; no effect on `vertices`).
     #[must_use]

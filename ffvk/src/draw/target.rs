@@ -320,7 +320,11 @@ impl VertexInput {
             };
             // Stride 0 reads one element for every vertex (a constant attribute, as GL's
             // current values are): the offset then only has to leave room for it.
-            let limit = if binding.stride == 0 { u32::MAX } else { binding.stride };
+            let limit = if binding.stride == 0 {
+                u32::MAX
+            } else {
+                binding.stride
+            };
             if a.offset.checked_add(size).is_none_or(|end| end > limit) {
                 return Err(LightingError::AttributeOffset {
                     attribute: name,

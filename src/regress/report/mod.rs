@@ -343,6 +343,15 @@ pub fn claim(dir: &Path, references: &[&Path]) -> Result<()> {
             });
         }
     }
+    // The folders a report replaces whole: nothing the run reads may be in them.
+    for own in ["images", ".images.new", ".images.old"] {
+        if let Some(input) = ffvk::files::input_within(&dir.join(own)) {
+            return Err(Error::FolderHoldsInput {
+                folder: dir.join(own),
+                input,
+            });
+        }
+    }
     if dir.exists() {
         if !dir.is_dir() {
             return Err(Error::Path {

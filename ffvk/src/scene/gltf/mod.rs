@@ -24,6 +24,7 @@ mod meshopt;
 mod primitives;
 mod quantized;
 mod read;
+mod rules;
 #[cfg(test)]
 mod testing;
 mod textures;
