@@ -18,7 +18,7 @@ pub struct GltfArgs {
     /// glTF files only: the framing camera's direction about the vertical axis, in degrees
     /// from the model's front (glTF's +Z), positive toward its left side (+X); default: about
     /// 24.
-    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true)]
+    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true, value_parser = parse_azimuth)]
     pub azimuth: Option<f32>,
     /// glTF files only: the framing camera's height, in degrees above the horizontal from
     /// -90 (below) to 90 (above); default: about 18.
@@ -26,7 +26,7 @@ pub struct GltfArgs {
     pub elevation: Option<f32>,
     /// glTF files only: how much nearer than the fit (the bounds inside 90 % of the image)
     /// the framing camera comes: 2 is twice as near, 0.5 twice as far; default 1.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = parse_zoom)]
     pub zoom: Option<f32>,
     /// glTF files only: the background, as R,G,B or R,G,B,A from 0 to 1, or #RRGGBB;
     /// default: 0.2 grey.
@@ -165,5 +165,26 @@ impl GltfArgs {
             return Err(crate::Error::Argument(format!("--{problem}")));
         }
         Ok(())
+    }
+}
+
+/// `--azimuth`: degrees, a finite number from -360 to 360 (past that a float32 angle loses the
+/// precision the framing needs, and every direction is already reached).
+fn parse_azimuth(s: &str) -> Result<f32, String> {
+    match s.trim().parse::<f64>() {
+        Ok(x) if (-360.0..=360.0).contains(&x) => Ok(x as f32),
+        _ => Err(format!("{s:?}: expected degrees from -360 to 360")),
+    }
+}
+
+/// `--zoom`: a number > 0 that a float32 holds as such (1e-300 would become 0).
+fn parse_zoom(s: &str) -> Result<f32, String> {
+    match s.trim().parse::<f64>() {
+        Ok(x) if x > 0.0 && (x as f32).is_normal() => Ok(x as f32),
+        _ => Err(format!(
+            "{s:?}: expected a number > 0 within float32's range ({:e} to {:e})",
+            f32::MIN_POSITIVE,
+            f32::MAX
+        )),
     }
 }

@@ -365,6 +365,10 @@ fn a_negative_value_reaches_its_options_own_check() {
     };
     let mut cases = vec![
         render("--zoom", "-1"),
+        // 1e-300 is 0 as a float32: refused as given, not as "--zoom 0".
+        render("--zoom", "1e-300"),
+        render("--azimuth", "-1e30"),
+        render("--camera", "-1"),
         render("--exposure", "-1"),
         render("--elevation", "-91"),
         render("--jobs", "-1"),
@@ -422,5 +426,57 @@ fn bench_refuses_an_output_folder_that_is_a_file_before_it_measures() {
         );
         assert_refused(&out, &["results.txt", "folder"], sweep);
         assert_eq!(std::fs::read_to_string(&file).unwrap(), "kept");
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Modes and warnings
+
+/// A mode named twice would draw one image twice over the same file and give the results two
+/// rows for it (which `results merge` then refuses): refused before anything is drawn.
+#[test]
+fn a_lighting_mode_named_twice_is_refused() {
+    let gltf = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/teapot.gltf");
+    let dir = scratch("lighting-twice");
+    let out = dir.join("out");
+    let result = run(
+        &[
+            &"render",
+            &gltf,
+            &"--out",
+            &out,
+            &"--lighting",
+            &"vertex,flat,vertex",
+        ],
+        60,
+    );
+    assert_refused(&result, &["--lighting", "vertex twice"], "vertex,flat,vertex");
+    assert!(!out.exists(), "nothing was written");
+}
+
+/// In a folder run the warnings of many scenes interleave: each names its scene file.
+#[test]
+fn warnings_name_their_scene_file() {
+    let dir = scratch("warnings");
+    let scene = dir.join("zero.toml");
+    std::fs::write(
+        &scene,
+        "[image]\nsize = [8, 8]\n\n[[lights]]\nposition = [0, 0, 0, 0]\n\n[[meshes]]\nbuiltin = \"sphere\"\n",
+    )
+    .unwrap();
+    let image = dir.join("zero_out.png");
+    let folder = dir.join("out");
+    let one: Vec<&dyn AsRef<std::ffi::OsStr>> = vec![&"-o", &image];
+    let two: Vec<&dyn AsRef<std::ffi::OsStr>> = vec![&"--out", &folder, &"--lighting", &"vertex,flat"];
+    for args in [one, two] {
+        let mut all: Vec<&dyn AsRef<std::ffi::OsStr>> = vec![&"render", &scene];
+        all.extend(args);
+        let out = run(&all, 60);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(out.status.success(), "{}", text(&out));
+        assert!(
+            stderr.contains(&format!("warning: {}: lights[0].position", scene.display())),
+            "{stderr}"
+        );
     }
 }
