@@ -112,7 +112,11 @@ fn main() -> ExitCode {
     // reference), however the output is spelled; an interrupted write leaves no temporary file.
     ffvk::files::protect_inputs(true);
     ffvk::files::remove_temporaries_on_signals();
-    match run(Cli::parse()) {
+    let cli = Cli::parse();
+    // Stale temporary files are swept where every input of the run is known: here, or in the
+    // parent of a suite's workers (which know only their own scenes').
+    ffvk::files::sweep_on_write(!cli.global.render_worker);
+    match run(cli) {
         Ok(code) => code,
         Err(e) => {
             ffvk_cli::errln!("ffvk: error: {e}");

@@ -142,9 +142,22 @@ pub fn remove_temporaries_on_signals() {
     }
 }
 
+/// Whether each write sweeps the stale temporary files of its destination
+/// ([`sweep_on_write`]).
+static SWEEP_ON_WRITE: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Turns on (or off) the sweep of stale temporary files by each write of the same file. Only a
+/// process that knows every input of its run may turn it on (the sweep spares the inputs it
+/// knows, [`note_input`]); a worker that knows only its own scenes' leaves it to the process
+/// that knows them all ([`sweep_stale_temporaries`]).
+pub fn sweep_on_write(on: bool) {
+    SWEEP_ON_WRITE.store(on, Ordering::Release);
+}
+
 /// Removes the temporary files of `name` in `dir` that earlier processes left when they died
-/// mid-write (their process no longer runs). Errors are ignored: a sweep is a courtesy.
-fn sweep_stale_temporaries(dir: &Path, name: &str) {
+/// mid-write (their process no longer runs), except inputs of this run ([`note_input`]).
+/// Errors are ignored: a sweep is a courtesy.
+pub fn sweep_stale_temporaries(dir: &Path, name: &str) {
     let Ok(entries) = fs::read_dir(dir) else {
         return;
     };
@@ -307,7 +320,9 @@ pub fn write_atomically(
         .file_name()
         .ok_or_else(|| refuse(path, "has no file name: expected a file path"))?
         .to_string_lossy();
-    sweep_stale_temporaries(&dir, &name);
+    if SWEEP_ON_WRITE.load(Ordering::Acquire) {
+        sweep_stale_temporaries(&dir, &name);
+    }
     let temporary = dir.join(format!(
         ".{name}.{}-{}.tmp",
         std::process::id(),
@@ -387,26 +402,29 @@ pub fn resolved(path: &Path) -> PathBuf {
     } else {
         std::env::current_dir().unwrap_or_default().join(path)
     };
-    // Component by component: links resolved while the path exists; past the first part
-    // that does not, nothing can be a link, so `..` is taken lexically (`new/../x` is `x`,
-    // as it will be once `new` is made).
+    // Component by component: `out` is an existing folder with every link resolved, then
+    // `missing` names that do not exist (so cannot be links). `..` drops a missing name, or
+    // goes to the real parent; once every missing name is dropped (`new/../link/x`), links
+    // are resolved again.
     let mut out = PathBuf::new();
-    let mut exists = true;
+    let mut missing = 0usize;
     for component in absolute.components() {
         match component {
             Component::Prefix(_) | Component::RootDir => out.push(component),
             Component::CurDir => {}
-            // `out` has no links left in it, so its parent is the lexical one.
             Component::ParentDir => {
                 out.pop();
+                missing = missing.saturating_sub(1);
             }
             Component::Normal(name) => {
                 out.push(name);
-                if exists {
+                if missing == 0 {
                     match fs::canonicalize(&out) {
                         Ok(real) => out = real,
-                        Err(_) => exists = false,
+                        Err(_) => missing = 1,
                     }
+                } else {
+                    missing += 1;
                 }
             }
         }
@@ -540,5 +558,15 @@ mod tests {
             resolved(&dir.join("new/y")),
             fs::canonicalize(&dir).unwrap().join("new/y")
         );
+        // Back out of the missing folder, links count again: `new/../link/..` is the
+        // link's target's parent, not `dir`.
+        #[cfg(unix)]
+        {
+            fs::create_dir_all(dir.join("far/sub")).unwrap();
+            std::os::unix::fs::symlink(dir.join("far/sub"), dir.join("link")).unwrap();
+            let far = fs::canonicalize(dir.join("far")).unwrap();
+            assert_eq!(resolved(&dir.join("new/../link/..")), far);
+            assert_eq!(resolved(&dir.join("new/a/../../link/x")), far.join("sub/x"));
+        }
     }
 }

@@ -86,9 +86,10 @@ fn parse_mib(s: &str) -> Result<u64, String> {
     }
 }
 
-/// `--max-placements`: a whole number, 1 to 2^40.
+/// `--max-placements`: a whole number, 1 to 2^24 (each counted placement keeps a node's name,
+/// about 60 bytes: 2^24 of them are about 1 GiB).
 fn parse_count(s: &str) -> Result<u64, String> {
-    const MAX: u64 = 1 << 40;
+    const MAX: u64 = 1 << 24;
     match s.trim().parse::<u64>() {
         Ok(n) if (1..=MAX).contains(&n) => Ok(n),
         _ => Err(format!("{s:?}: expected a whole number in 1..={MAX}")),
@@ -203,10 +204,20 @@ pub(crate) fn print_note(path: &std::path::Path) -> impl FnMut(ffvk::scene::Open
         ffvk::scene::OpenNote::Warning { text, times } => ffvk_cli::errln!(
             "{}",
             ffvk::scene::OpenNote::Warning {
-                text: &format!("{}: {text}", path.display()),
+                text: &named_by(path, text),
                 times
             }
         ),
         _ => ffvk_cli::errln!("{note}"),
+    }
+}
+
+/// `text` named by the file it is about: `PATH: text`, unless it names the file already.
+pub(crate) fn named_by(path: &std::path::Path, text: &str) -> String {
+    let name = path.display().to_string();
+    if text.starts_with(&name) {
+        text.to_owned()
+    } else {
+        format!("{name}: {text}")
     }
 }

@@ -34,13 +34,12 @@ pub(crate) fn run(args: &CompareArgs) -> ffvk_cli::Result<ExitCode> {
     ffvk::files::note_input(actual);
     if let Some(path) = diff {
         super::common::expect_extension(path, "png", "--diff writes a PNG heat map: expected a .png path")?;
-        for input in [expected, actual] {
-            if ffvk::files::same_file(path, input) {
-                return Err(ffvk_cli::Error::OverwritesInput {
-                    path: path.clone(),
-                    input: input.clone(),
-                });
-            }
+        // By identity, before anything is compared: `x/../a.png` names `a.png`.
+        if let Some(input) = ffvk::files::input_named(path) {
+            return Err(ffvk_cli::Error::OverwritesInput {
+                path: path.clone(),
+                input,
+            });
         }
     }
     let e = compare::load_image(expected)?;

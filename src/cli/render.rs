@@ -174,6 +174,17 @@ pub(crate) fn run(global: &Global, args: &RenderArgs) -> ffvk_cli::Result<ExitCo
     let references: Vec<&std::path::Path> = check.iter().map(PathBuf::as_path).collect();
     let named: Vec<&std::path::Path> = outputs.iter().map(|(_, p)| *p).collect();
     regress::refuse_writing_inputs(&job, &files, &named, true)?;
+    // The workers write the images without sweeping: this process knows every input.
+    for image in regress::image_paths(&job, &files) {
+        if let (Some(dir), Some(name)) = (image.parent(), image.file_name()) {
+            let dir = if dir.as_os_str().is_empty() {
+                std::path::Path::new(".")
+            } else {
+                dir
+            };
+            ffvk::files::sweep_stale_temporaries(dir, &name.to_string_lossy());
+        }
+    }
     regress::refuse_overlaps(
         &outputs,
         &inputs,

@@ -90,8 +90,22 @@ pub(crate) fn run(action: &ResultsAction) -> ffvk_cli::Result<ExitCode> {
                 &row.replaced,
                 &row.reference,
             ];
-            for path in std::iter::once(&row.file).chain(named.into_iter().flatten()) {
+            for path in named.into_iter().flatten() {
                 ffvk::files::note_input(path);
+            }
+        }
+        // Each scene once, with what it reads (textures, glTF files, buffers, images).
+        let mut scenes: Vec<&std::path::Path> = results
+            .runs
+            .iter()
+            .flat_map(|run| &run.rows)
+            .map(|r| r.file.as_path())
+            .collect();
+        scenes.sort();
+        scenes.dedup();
+        for scene in scenes {
+            for input in ffvk::scene::inputs(scene, &ffvk::scene::Limits::default()) {
+                ffvk::files::note_input(&input);
             }
         }
     }

@@ -432,6 +432,15 @@ fn geometry_vulkan_would_not_draw_is_refused_at_ffvk_draw_naming_field_and_value
     let cases = [
         (
             FfvkDrawInfo {
+                index_offset: 0xFFFF_FFFF_FFFF_FFF0,
+                first: 8,
+                ..good
+            },
+            "index offset + (first + count) × index size is 18446744073709551600 + (8 + 3) × 4",
+            "at most 2^64 - 1 bytes",
+        ),
+        (
+            FfvkDrawInfo {
                 index_offset: 3,
                 ..good
             },

@@ -450,3 +450,124 @@ fn the_sweep_of_stale_temporary_files_spares_the_runs_inputs() {
         "the texture is still there"
     );
 }
+
+/// A report path through a folder not made yet names the folder it will name: a folder no
+/// report wrote is refused as such, whatever the spelling, and its files stay.
+#[test]
+fn a_report_spelled_through_a_missing_folder_is_judged_by_the_folder_it_names() {
+    let dir = scratch("report-missing");
+    textured_scene(&dir, "s.toml", "t.png");
+    texture(&dir.join("t.png"));
+    std::fs::create_dir_all(dir.join("rep/images")).unwrap();
+    std::fs::create_dir_all(dir.join("refs")).unwrap();
+    std::fs::write(dir.join("rep/images/precious.txt"), b"precious").unwrap();
+    for report in ["rep", "nodir/../rep", "a/b/../../rep"] {
+        let o = run(
+            &dir,
+            &[
+                &"render",
+                &"s.toml",
+                &"--out",
+                &"out",
+                &"--check",
+                &"refs",
+                &"--report",
+                &report,
+            ],
+        );
+        let stderr = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{report}: {stderr}");
+        assert!(
+            stderr.contains("holds no earlier ffvk report"),
+            "{report}: {stderr}"
+        );
+        assert_eq!(
+            std::fs::read(dir.join("rep/images/precious.txt")).unwrap(),
+            b"precious"
+        );
+        assert!(!dir.join("rep/.ffvk-report").exists(), "{report}: not claimed");
+    }
+}
+
+/// `--out` spelled through a missing folder and then a link (`nodir/../lnk/..`) names where
+/// the link leads: into the reference folder, refused, and no reference is replaced.
+#[test]
+fn an_output_folder_spelled_through_a_missing_folder_and_a_link_is_judged_by_where_it_leads() {
+    let dir = scratch("out-missing-link");
+    textured_scene(&dir, "s.toml", "t.png");
+    texture(&dir.join("t.png"));
+    std::fs::create_dir_all(dir.join("refs/sub")).unwrap();
+    std::fs::create_dir_all(dir.join("w")).unwrap();
+    std::os::unix::fs::symlink(dir.join("refs/sub"), dir.join("w/lnk")).unwrap();
+    let other = image::RgbaImage::from_pixel(16, 16, image::Rgba([0, 0, 255, 255]));
+    ffvk::images::save_png(&other, &dir.join("refs/s_vertex.png")).unwrap();
+    let reference = std::fs::read(dir.join("refs/s_vertex.png")).unwrap();
+    let o = run(
+        &dir.join("w"),
+        &[
+            &"render",
+            &"../s.toml",
+            &"--check",
+            &"../refs",
+            &"--lighting",
+            &"vertex,fragment",
+            &"--out",
+            &"nodir/../lnk/..",
+        ],
+    );
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("reference folder"), "{stderr}");
+    assert_eq!(std::fs::read(dir.join("refs/s_vertex.png")).unwrap(), reference);
+}
+
+/// In a folder run the workers write the images but know only their own scenes' inputs: the
+/// stale-temporary sweep is the parent's, which knows every scene's, so a later scene's
+/// texture named like a dead writer's temporary file stays.
+#[test]
+fn the_sweep_in_a_folder_run_spares_every_scenes_inputs() {
+    let dir = scratch("sweep-folder");
+    let suite = dir.join("suite");
+    std::fs::create_dir_all(&suite).unwrap();
+    let dead = std::fs::read_to_string("/proc/sys/kernel/pid_max")
+        .unwrap()
+        .trim()
+        .parse::<u64>()
+        .unwrap()
+        + 1;
+    let name = format!(".a.png.{dead}-0.tmp");
+    let bytes = texture(&suite.join("t.png"));
+    std::fs::copy(suite.join("t.png"), suite.join(&name)).unwrap();
+    textured_scene(&suite, "a.toml", "t.png");
+    textured_scene(&suite, "b.toml", &name);
+    let o = run(&dir, &[&"render", &"suite"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(
+        std::fs::read(suite.join(&name)).unwrap(),
+        bytes,
+        "b's texture is still there"
+    );
+    // A dead writer's temporary file that nothing reads is swept.
+    let stale = suite.join(format!(".b.png.{dead}-1.tmp"));
+    std::fs::write(&stale, b"left by a dead writer").unwrap();
+    let o = run(&dir, &[&"render", &"suite"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(!stale.exists());
+}
+
+/// `results merge` protects what the scenes its rows name read, too: a `--json` that links
+/// to a scene's texture is refused.
+#[test]
+fn results_merge_never_writes_onto_what_the_runs_scenes_read() {
+    let dir = scratch("merge-texture");
+    textured_scene(&dir, "s.toml", "t.png");
+    let bytes = texture(&dir.join("t.png"));
+    let o = run(
+        &dir,
+        &[&"render", &"s.toml", &"--out", &"out", &"--json", &"r.json"],
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    std::os::unix::fs::symlink("t.png", dir.join("l.json")).unwrap();
+    let o = run(&dir, &[&"results", &"merge", &"r.json", &"--json", &"l.json"]);
+    refused(&o, "t.png", &dir.join("t.png"), &bytes);
+}

@@ -227,6 +227,17 @@ impl Geometry {
                         "a multiple of the index size (2 bytes for UINT16, 4 for UINT32)",
                     ));
                 }
+                // Where the last index lies, in bytes: past 2^64 it wraps.
+                let end = (u64::from(first_index) + u64::from(index_count))
+                    .checked_mul(size)
+                    .and_then(|bytes| bytes.checked_add(offset));
+                if end.is_none() {
+                    return Err(error(
+                        "index offset + (first + count) × index size",
+                        format!("{offset} + ({first_index} + {index_count}) × {size}"),
+                        "at most 2^64 - 1 bytes",
+                    ));
+                }
                 (first_index, index_count)
             }
             Geometry::Vertices {

@@ -334,11 +334,14 @@ fn show(
 /// rendering, so that a folder it would refuse is refused at once): refuses a folder inside a
 /// reference folder or holding one, and a non-empty folder that no report wrote; creates the
 /// folder and its marker. Nothing in it is removed.
-pub fn claim(dir: &Path, references: &[&Path]) -> Result<()> {
+pub fn claim(given: &Path, references: &[&Path]) -> Result<()> {
+    // The folder the path will name (`new/../rep` is `rep`, `link/..` the link's target's
+    // parent), so that what is in it is judged, not what the spelling suggests.
+    let dir = &ffvk::files::resolved(given);
     for refs in references {
         if ffvk::files::is_within(dir, refs) || ffvk::files::is_within(refs, dir) {
             return Err(Error::ReportInReferences {
-                report: dir.to_path_buf(),
+                report: given.to_path_buf(),
                 references: refs.to_path_buf(),
             });
         }
@@ -347,7 +350,7 @@ pub fn claim(dir: &Path, references: &[&Path]) -> Result<()> {
     for own in ["images", ".images.new", ".images.old"] {
         if let Some(input) = ffvk::files::input_within(&dir.join(own)) {
             return Err(Error::FolderHoldsInput {
-                folder: dir.join(own),
+                folder: given.join(own),
                 input,
             });
         }
@@ -355,24 +358,24 @@ pub fn claim(dir: &Path, references: &[&Path]) -> Result<()> {
     if dir.exists() {
         if !dir.is_dir() {
             return Err(Error::Path {
-                path: dir.to_path_buf(),
+                path: given.to_path_buf(),
                 problem: "is not a folder: expected a folder to write the report into",
             });
         }
         let read = |source| Error::Read {
-            path: dir.to_path_buf(),
+            path: given.to_path_buf(),
             source,
         };
         let empty = std::fs::read_dir(dir).map_err(read)?.next().is_none();
         if !empty && !dir.join(MARKER).is_file() {
             return Err(Error::Path {
-                path: dir.to_path_buf(),
+                path: given.to_path_buf(),
                 problem: "is not empty and holds no earlier ffvk report: expected a new or empty folder, or one a report wrote (its images are replaced)",
             });
         }
     }
     std::fs::create_dir_all(dir).map_err(|source| Error::Write {
-        path: dir.to_path_buf(),
+        path: given.to_path_buf(),
         source,
     })?;
     crate::write_file(
