@@ -112,7 +112,22 @@ fn main() -> ExitCode {
     // reference), however the output is spelled; an interrupted write leaves no temporary file.
     ffvk::files::protect_inputs(true);
     ffvk::files::remove_temporaries_on_signals();
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        // --help, --version and usage errors, as clap prints them; a failed write of them (a
+        // full stdout) is an error too, not a silent success.
+        Err(e) => {
+            use std::io::Write;
+            let printed = e.print().and_then(|()| std::io::stdout().flush());
+            return match printed {
+                Ok(()) => ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2)),
+                Err(io) => {
+                    ffvk_cli::errln!("ffvk: error: stdout: {io}");
+                    ExitCode::from(2)
+                }
+            };
+        }
+    };
     // Stale temporary files are swept where every input of the run is known: here, or in the
     // parent of a suite's workers (which know only their own scenes').
     ffvk::files::sweep_on_write(!cli.global.render_worker);

@@ -236,8 +236,12 @@ fn a_full_stdout_is_an_error_naming_stdout_not_a_panic() {
     let gltf = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/teapot.gltf");
     let one = dir.join("one.png");
     let many = dir.join("many");
-    let cases: [Vec<&dyn AsRef<std::ffi::OsStr>>; 7] = [
+    let cases: [Vec<&dyn AsRef<std::ffi::OsStr>>; 10] = [
         vec![&"info"],
+        // What clap prints itself.
+        vec![&"--help"],
+        vec![&"--version"],
+        vec![&"render", &"--help"],
         vec![&"teapot", &"--level", &"1", &"-o", &teapot],
         vec![&"compare", &image, &image],
         vec![&"results", &"merge", &results],
