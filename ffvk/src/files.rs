@@ -313,9 +313,21 @@ pub fn write_atomically(
         Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
         _ => PathBuf::from("."),
     };
+    // The folders this write makes, deepest first: removed again if it is refused.
+    let made: Vec<PathBuf> = dir
+        .ancestors()
+        .take_while(|d| !d.as_os_str().is_empty() && fs::symlink_metadata(d).is_err())
+        .map(Path::to_path_buf)
+        .collect();
     fs::create_dir_all(&dir)?;
     // With its folders made, the path may name a file it could not name before.
-    refuse_input(&target)?;
+    if let Err(e) = refuse_input(&target) {
+        for folder in &made {
+            // Only while empty: nothing of anyone else's is removed.
+            let _ = fs::remove_dir(folder);
+        }
+        return Err(e);
+    }
     let name = target
         .file_name()
         .ok_or_else(|| refuse(path, "has no file name: expected a file path"))?
