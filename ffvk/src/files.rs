@@ -328,37 +328,177 @@ pub fn write_atomically(
         }
         return Err(e);
     }
-    let name = target
+    let file_name = target
         .file_name()
-        .ok_or_else(|| refuse(path, "has no file name: expected a file path"))?
-        .to_string_lossy();
+        .ok_or_else(|| refuse(path, "has no file name: expected a file path"))?;
+    let name = file_name.to_string_lossy();
     if SWEEP_ON_WRITE.load(Ordering::Acquire) {
         sweep_stale_temporaries(&dir, &name);
     }
-    let temporary = dir.join(format!(
+    let temporary_name = format!(
         ".{name}.{}-{}.tmp",
         std::process::id(),
         NEXT_TEMPORARY.fetch_add(1, Ordering::Relaxed)
-    ));
+    );
+    let temporary = dir.join(&temporary_name);
     let _recorded = Temporary::record(&temporary);
+    // From here on the folder is held open and named by its descriptor: a folder swapped for
+    // a link after the checks above cannot redirect the write, and the destination's identity
+    // is checked in the folder the file really lands in.
+    let folder = Folder::open(&dir)?;
+    if let Some(input) = folder.identity(file_name).and_then(input_with_id) {
+        return Err(refuse(
+            path,
+            &format!(
+                "is {}, which this run reads (its folder changed while ffvk ran): refused, nothing written; expected an output path that is not one of the run's inputs",
+                input.display()
+            ),
+        ));
+    }
     let result = (|| {
-        let file = OpenOptions::new().write(true).create_new(true).open(&temporary)?;
+        let file = folder.create_new(temporary_name.as_ref())?;
         let mut writer = BufWriter::new(file);
         write(&mut writer)?;
         // into_inner flushes; its error is the write error a drop would have lost.
         let file = writer.into_inner().map_err(|e| e.into_error())?;
         file.sync_all()?;
-        fs::rename(&temporary, &target)
+        folder.rename(temporary_name.as_ref(), file_name)
     })();
     if result.is_err() {
-        let _ = fs::remove_file(&temporary);
+        folder.remove(temporary_name.as_ref());
     }
     result?;
     // The rename is durable once the folder is synced; a failure here loses nothing written.
-    if let Ok(d) = File::open(&dir) {
-        let _ = d.sync_all();
-    }
+    folder.sync();
     Ok(())
+}
+
+/// The input of this process whose identity is `id`, when the guard is on.
+fn input_with_id(id: FileId) -> Option<PathBuf> {
+    let inputs = INPUTS.lock().unwrap_or_else(|e| e.into_inner());
+    inputs
+        .as_ref()?
+        .iter()
+        .find(|(known, _)| *known == id)
+        .map(|(_, p)| p.clone())
+}
+
+/// A folder held open: files in it are named relative to its descriptor (`openat`,
+/// `renameat`, `fstatat`), so that what its path names can change without moving the write.
+#[cfg(unix)]
+struct Folder(File);
+
+#[cfg(unix)]
+impl Folder {
+    fn open(dir: &Path) -> io::Result<Folder> {
+        use std::os::unix::fs::OpenOptionsExt;
+        let file = OpenOptions::new()
+            .read(true)
+            .custom_flags(libc::O_DIRECTORY)
+            .open(dir)?;
+        Ok(Folder(file))
+    }
+
+    fn fd(&self) -> std::os::fd::RawFd {
+        use std::os::fd::AsRawFd;
+        self.0.as_raw_fd()
+    }
+
+    fn c_name(name: &std::ffi::OsStr) -> io::Result<std::ffi::CString> {
+        use std::os::unix::ffi::OsStrExt;
+        std::ffi::CString::new(name.as_bytes())
+            .map_err(|_| io::Error::new(io::ErrorKind::InvalidInput, "a file name with a NUL byte"))
+    }
+
+    /// The identity of what `name` in this folder is (after a link there), if it exists.
+    fn identity(&self, name: &std::ffi::OsStr) -> Option<FileId> {
+        let c = Folder::c_name(name).ok()?;
+        let mut stat = std::mem::MaybeUninit::<libc::stat>::uninit();
+        // SAFETY: a live folder descriptor, a NUL-terminated name and a writable stat buffer.
+        let r = unsafe { libc::fstatat(self.fd(), c.as_ptr(), stat.as_mut_ptr(), 0) };
+        if r != 0 {
+            return None;
+        }
+        // SAFETY: fstatat returned 0, so it filled the buffer.
+        let stat = unsafe { stat.assume_init() };
+        Some(FileId {
+            device: stat.st_dev,
+            inode: stat.st_ino,
+        })
+    }
+
+    /// A new file `name` in this folder, opened for writing; an existing one is an error.
+    fn create_new(&self, name: &std::ffi::OsStr) -> io::Result<File> {
+        use std::os::fd::FromRawFd;
+        let c = Folder::c_name(name)?;
+        let flags = libc::O_WRONLY | libc::O_CREAT | libc::O_EXCL | libc::O_CLOEXEC;
+        // SAFETY: a live folder descriptor and a NUL-terminated name; the mode is an integer.
+        let fd = unsafe { libc::openat(self.fd(), c.as_ptr(), flags, 0o666 as libc::c_uint) };
+        if fd < 0 {
+            return Err(io::Error::last_os_error());
+        }
+        // SAFETY: `fd` was just opened and is owned by nothing else.
+        Ok(unsafe { File::from_raw_fd(fd) })
+    }
+
+    /// Renames `from` over `to`, both in this folder.
+    fn rename(&self, from: &std::ffi::OsStr, to: &std::ffi::OsStr) -> io::Result<()> {
+        let (from, to) = (Folder::c_name(from)?, Folder::c_name(to)?);
+        // SAFETY: a live folder descriptor (both sides) and NUL-terminated names.
+        let r = unsafe { libc::renameat(self.fd(), from.as_ptr(), self.fd(), to.as_ptr()) };
+        if r != 0 {
+            return Err(io::Error::last_os_error());
+        }
+        Ok(())
+    }
+
+    /// Removes `name` from this folder, if it can.
+    fn remove(&self, name: &std::ffi::OsStr) {
+        if let Ok(c) = Folder::c_name(name) {
+            // SAFETY: a live folder descriptor and a NUL-terminated name.
+            unsafe { libc::unlinkat(self.fd(), c.as_ptr(), 0) };
+        }
+    }
+
+    fn sync(&self) {
+        let _ = self.0.sync_all();
+    }
+}
+
+/// Without descriptors for folders: the same steps by path.
+#[cfg(not(unix))]
+struct Folder(PathBuf);
+
+#[cfg(not(unix))]
+impl Folder {
+    fn open(dir: &Path) -> io::Result<Folder> {
+        Ok(Folder(dir.to_path_buf()))
+    }
+
+    fn identity(&self, name: &std::ffi::OsStr) -> Option<FileId> {
+        FileId::of(&self.0.join(name))
+    }
+
+    fn create_new(&self, name: &std::ffi::OsStr) -> io::Result<File> {
+        OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(self.0.join(name))
+    }
+
+    fn rename(&self, from: &std::ffi::OsStr, to: &std::ffi::OsStr) -> io::Result<()> {
+        fs::rename(self.0.join(from), self.0.join(to))
+    }
+
+    fn remove(&self, name: &std::ffi::OsStr) {
+        let _ = fs::remove_file(self.0.join(name));
+    }
+
+    fn sync(&self) {
+        if let Ok(d) = File::open(&self.0) {
+            let _ = d.sync_all();
+        }
+    }
 }
 
 /// [`write_atomically`] of a byte slice.

@@ -116,6 +116,7 @@ pub(crate) fn run(global: &Global, args: &RenderArgs) -> ffvk_cli::Result<ExitCo
         partition: *partition,
     };
     if global.render_worker {
+        regress::note_inputs(&job, &files);
         regress::pool::worker_main(&global.options(), job)?;
         return Ok(ExitCode::SUCCESS);
     }

@@ -273,6 +273,18 @@ pub fn image_paths(job: &Job, files: &[SceneFile]) -> Vec<PathBuf> {
         .collect()
 }
 
+/// Notes every file each of `files` reads ([`ffvk::scene::inputs`]) as an input of this
+/// process ([`ffvk::files::note_input`]): the parent before it checks its outputs, and each
+/// worker before it draws, so that a worker's writes are checked against every scene's inputs,
+/// not only those of the scenes it has read so far.
+pub fn note_inputs(job: &Job, files: &[SceneFile]) {
+    for file in files {
+        for input in ffvk::scene::inputs(&file.path, &job.limits) {
+            ffvk::files::note_input(&input);
+        }
+    }
+}
+
 /// Refuses a run that would write onto a file it reads, before anything is written: every
 /// file each scene reads ([`ffvk::scene::inputs`]: the scene, its textures, glTF files,
 /// buffers and images) is noted as an input ([`ffvk::files::note_input`]), then each image the
@@ -281,11 +293,7 @@ pub fn image_paths(job: &Job, files: &[SceneFile]) -> Vec<PathBuf> {
 /// `images`: whether the run writes its images where [`image_paths`] says (not a single
 /// image at a path of its own, given among `outputs`).
 pub fn refuse_writing_inputs(job: &Job, files: &[SceneFile], outputs: &[&Path], images: bool) -> Result<()> {
-    for file in files {
-        for input in ffvk::scene::inputs(&file.path, &job.limits) {
-            ffvk::files::note_input(&input);
-        }
-    }
+    note_inputs(job, files);
     let mut written: Vec<PathBuf> = outputs.iter().map(|p| p.to_path_buf()).collect();
     if images {
         written.extend(image_paths(job, files));
@@ -568,6 +576,22 @@ pub fn render_file(
     rows
 }
 
+/// Saves a run's image, map or replaced reference at `path`, checked at the moment of writing
+/// against the reference folder (the check before the run cannot see a folder swapped for a
+/// link while it runs): only blessing writes there, and only the references themselves.
+fn save_outside_references(job: &Job, image: &image::RgbaImage, path: &Path) -> Result<()> {
+    if let Some(refs) = &job.references {
+        if ffvk::files::is_within(path, refs) {
+            return Err(Error::FileInReferences {
+                output: path.to_path_buf(),
+                references: refs.clone(),
+                what: "the run's images",
+            });
+        }
+    }
+    Ok(save_png(image, path)?)
+}
+
 /// Renders `scene` in `mode` into `row`'s image, then checks it against (or blesses) its
 /// reference. The row keeps what happened before an error.
 fn render_image(
@@ -591,7 +615,7 @@ fn render_image(
             input: file.path.clone(),
         });
     }
-    save_png(&image, &output)?;
+    save_outside_references(job, &image, &output)?;
     row.output = Some(output.clone());
     let Some(refs) = &job.references else {
         return Ok(());
@@ -639,10 +663,10 @@ fn render_image(
                     // still give the figure the summary and the report show.
                     c.flip_mean.get_or_insert(flip);
                     let diff = dir.join(format!("{local}.diff.png"));
-                    save_png(&map, &diff)?;
+                    save_outside_references(job, &map, &diff)?;
                     row.diff = Some(diff);
                     let channels = dir.join(format!("{local}.channels.png"));
-                    save_png(&channel_map(&expected, &image)?, &channels)?;
+                    save_outside_references(job, &channel_map(&expected, &image)?, &channels)?;
                     row.channels = Some(channels);
                 }
                 row.comparison = Some(c);
@@ -650,7 +674,7 @@ fn render_image(
         }
         if row.status == Status::Blessed {
             let replaced = dir.join(format!("{local}.replaced.png"));
-            save_png(&expected, &replaced)?;
+            save_outside_references(job, &expected, &replaced)?;
             row.replaced = Some(replaced);
         }
     }

@@ -571,3 +571,131 @@ fn results_merge_never_writes_onto_what_the_runs_scenes_read() {
     let o = run(&dir, &[&"results", &"merge", &"r.json", &"--json", &"l.json"]);
     refused(&o, "t.png", &dir.join("t.png"), &bytes);
 }
+
+/// A folder swapped for a link while a suite runs (after every check before the run) cannot
+/// carry an image onto another scene's texture: each worker knows every scene's inputs, and
+/// each write is checked in the folder it really lands in. Whatever the timing, the texture
+/// stays as it was.
+#[test]
+fn a_folder_swapped_for_a_link_during_a_suite_never_receives_an_input() {
+    let dir = scratch("swapped-folder");
+    let scenes = dir.join("scenes");
+    std::fs::create_dir_all(&scenes).unwrap();
+    std::fs::create_dir_all(dir.join("out")).unwrap();
+    let bytes = texture(&dir.join("tex/a.png"));
+    // `a` takes long enough to draw for the swap to come first; `b` reads `tex/a.png`, where
+    // `a`'s image lands once `out` is a link to `tex`.
+    std::fs::write(
+        scenes.join("a.toml"),
+        "[image]\nsize = [2048, 2048]\n\n[[meshes]]\nbuiltin = \"teapot\"\nlevel = 32\n",
+    )
+    .unwrap();
+    textured_scene(&scenes, "b.toml", "../tex/a.png");
+    let mut child = ffvk_command(&[&"render", &"scenes", &"--out", &"out", &"--jobs", &"1"])
+        .current_dir(&dir)
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    // Once the worker runs, the parent's checks are done.
+    let start = std::time::Instant::now();
+    loop {
+        if has_children(child.id()) || child.try_wait().unwrap().is_some() {
+            break;
+        }
+        assert!(start.elapsed().as_secs() < 60, "no worker started");
+        std::thread::sleep(std::time::Duration::from_millis(1));
+    }
+    std::fs::rename(dir.join("out"), dir.join("out.real")).unwrap();
+    std::os::unix::fs::symlink("tex", dir.join("out")).unwrap();
+    child.wait().unwrap();
+    assert_eq!(
+        std::fs::read(dir.join("tex/a.png")).unwrap(),
+        bytes,
+        "the texture is untouched"
+    );
+}
+
+/// The same swap aimed at the reference folder: a run without `--bless` never writes there,
+/// checked as each image, map and replaced reference is written, so a forged reference is
+/// never overwritten into a pass.
+#[test]
+fn an_output_folder_swapped_for_a_link_to_the_references_never_writes_a_reference() {
+    let dir = scratch("swapped-refs");
+    let scenes = dir.join("scenes");
+    std::fs::create_dir_all(&scenes).unwrap();
+    std::fs::create_dir_all(dir.join("out")).unwrap();
+    std::fs::create_dir_all(dir.join("refs")).unwrap();
+    std::fs::write(
+        scenes.join("a.toml"),
+        "[image]\nsize = [2048, 2048]\n\n[[meshes]]\nbuiltin = \"teapot\"\nlevel = 32\n",
+    )
+    .unwrap();
+    std::fs::write(
+        scenes.join("b.toml"),
+        "[image]\nsize = [16, 16]\n\n[[meshes]]\nbuiltin = \"sphere\"\n",
+    )
+    .unwrap();
+    // Forged references: what the scenes do not draw.
+    let forged = image::RgbaImage::from_pixel(16, 16, image::Rgba([255, 0, 255, 255]));
+    for name in ["a", "b"] {
+        ffvk::images::save_png(&forged, &dir.join(format!("refs/{name}.png"))).unwrap();
+    }
+    let before = |name: &str| std::fs::read(dir.join(format!("refs/{name}.png"))).unwrap();
+    let (a, b) = (before("a"), before("b"));
+    let mut child = ffvk_command(&[
+        &"render", &"scenes", &"--out", &"out", &"--check", &"refs", &"--jobs", &"1",
+    ])
+    .current_dir(&dir)
+    .stdout(std::process::Stdio::null())
+    .stderr(std::process::Stdio::null())
+    .spawn()
+    .unwrap();
+    let start = std::time::Instant::now();
+    while !has_children(child.id()) && child.try_wait().unwrap().is_none() {
+        assert!(start.elapsed().as_secs() < 60, "no worker started");
+        std::thread::sleep(std::time::Duration::from_millis(1));
+    }
+    std::fs::rename(dir.join("out"), dir.join("out.real")).unwrap();
+    std::os::unix::fs::symlink("refs", dir.join("out")).unwrap();
+    let status = child.wait().unwrap();
+    assert!(!status.success(), "the forged references never pass");
+    assert_eq!(before("a"), a, "refs/a.png untouched");
+    assert_eq!(before("b"), b, "refs/b.png untouched");
+}
+
+/// A marker that is a link proves no earlier report: the folder is refused, its files kept.
+#[test]
+fn a_linked_report_marker_does_not_make_a_folder_a_report() {
+    let dir = scratch("linked-marker");
+    textured_scene(&dir, "s.toml", "t.png");
+    texture(&dir.join("t.png"));
+    let o = run(
+        &dir,
+        &[&"render", &"s.toml", &"--out", &"out", &"--json", &"r.json"],
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    std::fs::create_dir_all(dir.join("victim/images")).unwrap();
+    std::fs::write(dir.join("victim/images/keep.txt"), b"precious").unwrap();
+    std::os::unix::fs::symlink("../s.toml", dir.join("victim/.ffvk-report")).unwrap();
+    let o = run(&dir, &[&"results", &"report", &"r.json", &"--out", &"victim"]);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("holds no earlier ffvk report"), "{stderr}");
+    assert_eq!(
+        std::fs::read(dir.join("victim/images/keep.txt")).unwrap(),
+        b"precious"
+    );
+}
+
+/// Whether process `pid` has a child now (from /proc: each process's stat names its parent).
+fn has_children(pid: u32) -> bool {
+    std::fs::read_dir("/proc").unwrap().flatten().any(|entry| {
+        std::fs::read_to_string(entry.path().join("stat")).is_ok_and(|stat| {
+            // "PID (COMM) STATE PPID ...": the command may hold spaces and parentheses.
+            stat.rsplit_once(')')
+                .and_then(|(_, rest)| rest.split_whitespace().nth(1).map(|ppid| ppid == pid.to_string()))
+                .unwrap_or(false)
+        })
+    })
+}

@@ -367,7 +367,9 @@ pub fn claim(given: &Path, references: &[&Path]) -> Result<()> {
             source,
         };
         let empty = std::fs::read_dir(dir).map_err(read)?.next().is_none();
-        if !empty && !dir.join(MARKER).is_file() {
+        // The marker itself, not what a link there points at: a link proves no report.
+        let marked = std::fs::symlink_metadata(dir.join(MARKER)).is_ok_and(|m| m.file_type().is_file());
+        if !empty && !marked {
             return Err(Error::Path {
                 path: given.to_path_buf(),
                 problem: "is not empty and holds no earlier ffvk report: expected a new or empty folder, or one a report wrote (its images are replaced)",
