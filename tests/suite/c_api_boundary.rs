@@ -255,20 +255,15 @@ pub(crate) fn bad_rasters() -> Vec<(FfvkRaster, &'static str, &'static str)> {
     ]
 }
 
-#[test]
-fn raster_enums_vulkan_does_not_define_are_refused_at_ffvk_draw_naming_field_and_value() {
-    let plain = PlainDevice::new();
-    let mut r = std::ptr::null_mut();
-    // SAFETY: a valid create info on a live device; out is writable.
-    let made = unsafe { ffvkCreateRenderer(&create_info(&plain), &mut r) };
-    assert_eq!(made, FfvkResult::FFVK_SUCCESS, "{}", message());
-    let ctx = ffvkCreateContext();
-    // A buffer handle that is never dereferenced: ffvkDraw only checks and stages.
-    let buffer = vk::Buffer::from_raw(0x2000);
-    let draw = |raster| FfvkDrawInfo {
+/// A buffer handle ffvkDraw never dereferences (it only checks and stages).
+const PLACEHOLDER: u64 = 0x2000;
+
+/// A non-indexed draw of 3 vertices from `buffer` with `raster`.
+pub(crate) fn draw_info(buffer: &vk::Buffer, raster: FfvkRaster) -> FfvkDrawInfo {
+    FfvkDrawInfo {
         struct_size: std::mem::size_of::<FfvkDrawInfo>() as u32,
         mode: GL_TRIANGLES,
-        vertex_buffers: &buffer,
+        vertex_buffers: buffer,
         vertex_offsets: std::ptr::null(),
         vertex_buffer_count: 1,
         index_buffer: vk::Buffer::null(),
@@ -280,123 +275,77 @@ fn raster_enums_vulkan_does_not_define_are_refused_at_ffvk_draw_naming_field_and
         primitive_restart: 0,
         raster,
         texture: std::ptr::null(),
-    };
-    // SAFETY: live renderer and context; the command buffer is a placeholder ffvk never
-    // records into (the scope ends with nothing recorded: every draw but the last is
-    // refused, and the renderer is destroyed with its scope open).
+    }
+}
+
+/// Calls `f` with a renderer on lavapipe and a context, inside an open recording scope whose
+/// command buffer is a placeholder: ffvkDraw only checks and stages, and the renderer is
+/// destroyed with its scope open, so nothing is ever recorded.
+fn in_draw_scope(f: impl FnOnce(*mut FfvkRenderer, *mut FfvkContext)) {
+    let plain = PlainDevice::new();
+    let mut r = std::ptr::null_mut();
+    // SAFETY: a valid create info on a live device; out is writable.
+    let made = unsafe { ffvkCreateRenderer(&create_info(&plain), &mut r) };
+    assert_eq!(made, FfvkResult::FFVK_SUCCESS, "{}", message());
+    let ctx = ffvkCreateContext();
+    // SAFETY: a live renderer; the command buffer is never recorded into (above).
     unsafe {
         assert_eq!(ffvkBeginFrame(r, 0), FfvkResult::FFVK_SUCCESS);
         assert_eq!(
             ffvkBeginDraws(r, vk::CommandBuffer::from_raw(0x1000), 0),
             FfvkResult::FFVK_SUCCESS
         );
+    }
+    f(r, ctx);
+    // SAFETY: both live, used by this thread only, destroyed once.
+    unsafe {
+        ffvkDestroyRenderer(r);
+        ffvkDestroyContext(ctx);
+    }
+}
+
+/// `draw` is refused at ffvkDraw with a message naming `given` and `expected`.
+#[track_caller]
+fn assert_draw_refused(
+    r: *mut FfvkRenderer,
+    ctx: *mut FfvkContext,
+    draw: &FfvkDrawInfo,
+    given: &str,
+    expected: &str,
+) {
+    // SAFETY: a live renderer in an open scope and a live context (in_draw_scope).
+    let result = unsafe { ffvkDraw(r, ctx, draw) };
+    let text = message();
+    assert_eq!(result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT, "{given}: {text}");
+    assert!(text.starts_with("ffvkDraw: "), "{text}");
+    assert!(
+        text.contains(given) && text.contains(expected),
+        "{text:?} lacks {given:?} or {expected:?}"
+    );
+}
+
+/// `draw` is staged at ffvkDraw.
+#[track_caller]
+fn assert_drawn(r: *mut FfvkRenderer, ctx: *mut FfvkContext, draw: &FfvkDrawInfo) {
+    // SAFETY: as in assert_draw_refused.
+    let result = unsafe { ffvkDraw(r, ctx, draw) };
+    assert_eq!(result, FfvkResult::FFVK_SUCCESS, "{}", message());
+}
+
+#[test]
+fn raster_enums_vulkan_does_not_define_are_refused_at_ffvk_draw_naming_field_and_value() {
+    let buffer = vk::Buffer::from_raw(PLACEHOLDER);
+    in_draw_scope(|r, ctx| {
         for (raster, given, expected) in bad_rasters() {
-            let result = ffvkDraw(r, ctx, &draw(raster));
-            let text = message();
-            assert_eq!(result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT, "{given}: {text}");
-            assert!(text.starts_with("ffvkDraw: "), "{text}");
-            assert!(
-                text.contains(given) && text.contains(expected),
-                "{text:?} lacks {given:?} or {expected:?}"
-            );
+            assert_draw_refused(r, ctx, &draw_info(&buffer, raster), given, expected);
         }
         // Blending off: the factors are not used, whatever they hold.
         let unused = FfvkRaster {
             src_color: vk::BlendFactor::from_raw(999),
             ..defaults()
         };
-        assert_eq!(
-            ffvkDraw(r, ctx, &draw(unused)),
-            FfvkResult::FFVK_SUCCESS,
-            "{}",
-            message()
-        );
-        ffvkDestroyRenderer(r);
-        ffvkDestroyContext(ctx);
-    }
-}
-
-#[test]
-fn the_rust_api_refuses_the_same_targets_layouts_and_raster_states_as_the_c_api() {
-    use ffvk::vk::{Device, EnabledFeatures};
-    use ffvk::{
-        Attribute, Blend, Lighting, LightingError, LightingOptions, RasterState, Target, VertexInput,
-    };
-    let plain = PlainDevice::new();
-    // SAFETY: the device comes from this physical device and outlives every ffvk object here.
-    let device = unsafe {
-        Device::from_caller(
-            &plain.instance,
-            plain.physical,
-            plain.device.clone(),
-            EnabledFeatures::default().with_dynamic_rendering(true),
-        )
-    }
-    .unwrap();
-    let input = || {
-        VertexInput::new(
-            BINDINGS.to_vec(),
-            Attribute::new(0, 0, vk::Format::R32G32B32_SFLOAT),
-            Attribute::new(0, 12, vk::Format::R32G32B32_SFLOAT),
-        )
-    };
-    let lighting = |target: Target, input: VertexInput, frames: u32| {
-        Lighting::new(
-            &device,
-            &LightingOptions::new(target, input).with_frames_in_flight(frames),
-        )
-        .err()
-        .map(|e| e.to_string())
-    };
-    let color = Target::new(vk::Format::D32_SFLOAT, vk::Format::UNDEFINED);
-    let e = lighting(color, input(), 1).expect("a depth format as color");
-    assert!(
-        e.contains("color_format D32_SFLOAT (126) is not a color format"),
-        "{e}"
-    );
-    let depth = Target::new(vk::Format::R8G8B8A8_UNORM, vk::Format::R8G8B8A8_UNORM);
-    let e = lighting(depth, input(), 1).expect("a color format as depth");
-    assert!(
-        e.contains("depth_format R8G8B8A8_UNORM (37) is not a depth format"),
-        "{e}"
-    );
-    let mut samples = Target::OFFSCREEN;
-    samples.samples = vk::SampleCountFlags::TYPE_64;
-    let e = lighting(samples, input(), 1).expect("64 samples on lavapipe");
-    assert!(e.contains("samples 64 is not supported by the device"), "{e}");
-    samples.samples = vk::SampleCountFlags::from_raw(3);
-    assert_eq!(
-        samples.validate(),
-        Err(LightingError::Samples {
-            samples: vk::SampleCountFlags::from_raw(3)
-        })
-    );
-    let mut past = input();
-    past.normal.offset = 13;
-    let e = lighting(Target::OFFSCREEN, past, 1).expect("a normal past the stride");
-    assert!(e.contains("the normal attribute at offset 13"), "{e}");
-    let e = lighting(Target::OFFSCREEN, input(), 1_000_000_000).expect("a billion frames");
-    assert!(
-        e.contains("frames_in_flight is 1000000000: expected 1..=64"),
-        "{e}"
-    );
-    assert!(lighting(Target::OFFSCREEN, input(), 2).is_none());
-
-    let raster = RasterState::default().with_depth_compare(vk::CompareOp::from_raw(99));
-    let e = raster.validate().unwrap_err().to_string();
-    assert!(e.contains("depth_compare 99 is not accepted"), "{e}");
-    let blend = Blend::new(
-        vk::BlendFactor::ONE,
-        vk::BlendFactor::from_raw(999),
-        vk::BlendOp::ADD,
-    );
-    let e = RasterState::default()
-        .with_blend(Some(blend))
-        .validate()
-        .unwrap_err()
-        .to_string();
-    assert!(e.contains("dst_color 999"), "{e}");
-    assert_eq!(RasterState::default().validate(), Ok(()));
+        assert_drawn(r, ctx, &draw_info(&buffer, unused));
+    });
 }
 
 /// What Vulkan would not draw as given is refused at `ffvkDraw`, naming the field and value:
@@ -404,30 +353,11 @@ fn the_rust_api_refuses_the_same_targets_layouts_and_raster_states_as_the_c_api(
 /// offset-00432 once recorded), a first index or vertex plus the count past 2^32. The Rust API checks the same (`Geometry::validate`, in `Lighting`'s staging).
 #[test]
 fn geometry_vulkan_would_not_draw_is_refused_at_ffvk_draw_naming_field_and_value() {
-    let plain = PlainDevice::new();
-    let mut r = std::ptr::null_mut();
-    // SAFETY: a valid create info on a live device; out is writable.
-    let made = unsafe { ffvkCreateRenderer(&create_info(&plain), &mut r) };
-    assert_eq!(made, FfvkResult::FFVK_SUCCESS, "{}", message());
-    let ctx = ffvkCreateContext();
-    // Handles never dereferenced: ffvkDraw only checks and stages.
-    let buffer = vk::Buffer::from_raw(0x2000);
+    let buffer = vk::Buffer::from_raw(PLACEHOLDER);
     let null = vk::Buffer::null();
     let good = FfvkDrawInfo {
-        struct_size: std::mem::size_of::<FfvkDrawInfo>() as u32,
-        mode: GL_TRIANGLES,
-        vertex_buffers: &buffer,
-        vertex_offsets: std::ptr::null(),
-        vertex_buffer_count: 1,
         index_buffer: vk::Buffer::from_raw(0x3000),
-        index_offset: 0,
-        index_type: vk::IndexType::UINT32,
-        first: 0,
-        count: 3,
-        vertex_offset: 0,
-        primitive_restart: 0,
-        raster: defaults(),
-        texture: std::ptr::null(),
+        ..draw_info(&buffer, defaults())
     };
     let cases = [
         (
@@ -476,23 +406,9 @@ fn geometry_vulkan_would_not_draw_is_refused_at_ffvk_draw_naming_field_and_value
             "at most 4294967295",
         ),
     ];
-    // SAFETY: live renderer and context; the command buffer is a placeholder ffvk never
-    // records into (the renderer is destroyed with its scope open).
-    unsafe {
-        assert_eq!(ffvkBeginFrame(r, 0), FfvkResult::FFVK_SUCCESS);
-        assert_eq!(
-            ffvkBeginDraws(r, vk::CommandBuffer::from_raw(0x1000), 0),
-            FfvkResult::FFVK_SUCCESS
-        );
+    in_draw_scope(|r, ctx| {
         for (draw, given, expected) in &cases {
-            let result = ffvkDraw(r, ctx, draw);
-            let text = message();
-            assert_eq!(result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT, "{given}: {text}");
-            assert!(text.starts_with("ffvkDraw: "), "{text}");
-            assert!(
-                text.contains(given) && text.contains(expected),
-                "{text:?} lacks {given:?} or {expected:?}"
-            );
+            assert_draw_refused(r, ctx, draw, given, expected);
         }
         // An offset of 4 with UINT32, 2 with UINT16: drawn.
         for (offset, index_type) in [(4, vk::IndexType::UINT32), (2, vk::IndexType::UINT16)] {
@@ -501,9 +417,7 @@ fn geometry_vulkan_would_not_draw_is_refused_at_ffvk_draw_naming_field_and_value
                 index_type,
                 ..good
             };
-            assert_eq!(ffvkDraw(r, ctx, &draw), FfvkResult::FFVK_SUCCESS, "{}", message());
+            assert_drawn(r, ctx, &draw);
         }
-        ffvkDestroyRenderer(r);
-        ffvkDestroyContext(ctx);
-    }
+    });
 }

@@ -203,22 +203,7 @@ fn generated_raster_states_are_drawn_exactly_when_every_enum_is_one_vulkan_defin
                 point_size: 1.0,
                 line_width: 1.0,
             };
-            let draw = FfvkDrawInfo {
-                struct_size: std::mem::size_of::<FfvkDrawInfo>() as u32,
-                mode: 0x0004,
-                vertex_buffers: &buffer,
-                vertex_offsets: std::ptr::null(),
-                vertex_buffer_count: 1,
-                index_buffer: vk::Buffer::null(),
-                index_offset: 0,
-                index_type: vk::IndexType::UINT32,
-                first: 0,
-                count: 3,
-                vertex_offset: 0,
-                primitive_restart: 0,
-                raster,
-                texture: std::ptr::null(),
-            };
+            let draw = crate::c_api_boundary::draw_info(&buffer, raster);
             // SAFETY: live renderer and context, an open scope; the draw is only staged.
             let result = unsafe { ffvkDraw(r, ctx, &draw) };
             let text = message();

@@ -26,6 +26,20 @@ fn texture(path: &Path) -> Vec<u8> {
     std::fs::read(path).unwrap()
 }
 
+/// A process id that no process has: one past the kernel's pid_max.
+fn dead_pid() -> u64 {
+    let max = std::fs::read_to_string("/proc/sys/kernel/pid_max").unwrap();
+    max.trim().parse::<u64>().unwrap() + 1
+}
+
+/// A scratch folder `name` holding the scene `s.toml`, whose texture is `t.png` beside it.
+fn textured_dir(name: &str) -> PathBuf {
+    let dir = scratch(name);
+    textured_scene(&dir, "s.toml", "t.png");
+    texture(&dir.join("t.png"));
+    dir
+}
+
 /// A scene of one textured plane, its texture at `image` (as the scene file spells it).
 fn textured_scene(dir: &Path, name: &str, image: &str) -> PathBuf {
     let path = dir.join(name);
@@ -74,6 +88,15 @@ fn textured_gltf(dir: &Path, name: &str, uri: &str) -> PathBuf {
 
 fn run(dir: &Path, args: &[&dyn AsRef<std::ffi::OsStr>]) -> Output {
     ffvk_command(args).current_dir(dir).output().unwrap()
+}
+
+/// `render s.toml --out out --check refs` and `extra`, run in `dir`: the exit code and stderr.
+fn render_checked(dir: &Path, extra: &[&str]) -> (Option<i32>, String) {
+    let mut args: Vec<&dyn AsRef<std::ffi::OsStr>> =
+        vec![&"render", &"s.toml", &"--out", &"out", &"--check", &"refs"];
+    args.extend(extra.iter().map(|a| a as &dyn AsRef<std::ffi::OsStr>));
+    let o = run(dir, &args);
+    (o.status.code(), String::from_utf8_lossy(&o.stderr).into_owned())
 }
 
 /// The run was refused before writing, naming `input`, and `file` still holds `bytes`.
@@ -221,9 +244,7 @@ fn a_diff_map_link_to_a_texture_receives_nothing() {
 
 #[test]
 fn a_report_replaces_links_in_its_folder_instead_of_writing_through_them() {
-    let dir = scratch("report-link");
-    textured_scene(&dir, "s.toml", "t.png");
-    texture(&dir.join("t.png"));
+    let dir = textured_dir("report-link");
     let o = run(
         &dir,
         &[&"render", &"s.toml", &"--out", &"out", &"--json", &"r.json"],
@@ -253,28 +274,11 @@ fn a_report_replaces_links_in_its_folder_instead_of_writing_through_them() {
 
 #[test]
 fn a_results_file_may_not_take_a_name_the_report_writes() {
-    let dir = scratch("report-json");
-    textured_scene(&dir, "s.toml", "t.png");
-    texture(&dir.join("t.png"));
+    let dir = textured_dir("report-json");
     std::fs::create_dir_all(dir.join("refs")).unwrap();
     for json in ["rep/index.html", "rep/report.css", "rep/images/x.json"] {
-        let o = run(
-            &dir,
-            &[
-                &"render",
-                &"s.toml",
-                &"--out",
-                &"out",
-                &"--check",
-                &"refs",
-                &"--report",
-                &"rep",
-                &"--json",
-                &json,
-            ],
-        );
-        let stderr = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "{json}: {stderr}");
+        let (code, stderr) = render_checked(&dir, &["--report", "rep", "--json", json]);
+        assert_eq!(code, Some(2), "{json}: {stderr}");
         assert!(stderr.contains("--report"), "{stderr}");
     }
 }
@@ -349,16 +353,9 @@ fn an_interrupted_write_leaves_no_temporary_file() {
 /// next write of the same file; a live process's are not.
 #[test]
 fn stale_temporary_files_of_dead_processes_are_swept_by_the_next_write() {
-    let dir = scratch("stale");
-    textured_scene(&dir, "s.toml", "t.png");
-    texture(&dir.join("t.png"));
-    // A process id that no process has: above the kernel's pid_max.
-    let dead = std::fs::read_to_string("/proc/sys/kernel/pid_max")
-        .unwrap()
-        .trim()
-        .parse::<u64>()
-        .unwrap()
-        + 1;
+    let dir = textured_dir("stale");
+
+    let dead = dead_pid();
     let stale = dir.join(format!(".s.png.{dead}-0.tmp"));
     let alive = dir.join(format!(".s.png.{}-0.tmp", std::process::id()));
     std::fs::write(&stale, b"left by a dead writer").unwrap();
@@ -374,9 +371,7 @@ fn stale_temporary_files_of_dead_processes_are_swept_by_the_next_write() {
 /// link or a folder not made yet (`zz/../p.json`).
 #[test]
 fn results_merge_never_writes_onto_its_inputs_or_the_files_its_results_name() {
-    let dir = scratch("merge");
-    textured_scene(&dir, "s.toml", "t.png");
-    texture(&dir.join("t.png"));
+    let dir = textured_dir("merge");
     let o = run(
         &dir,
         &[&"render", &"s.toml", &"--out", &"out", &"--json", &"r.json"],
@@ -432,12 +427,7 @@ fn a_report_folder_whose_images_hold_an_input_is_refused_before_anything_is_writ
 #[test]
 fn the_sweep_of_stale_temporary_files_spares_the_runs_inputs() {
     let dir = scratch("sweep-input");
-    let dead = std::fs::read_to_string("/proc/sys/kernel/pid_max")
-        .unwrap()
-        .trim()
-        .parse::<u64>()
-        .unwrap()
-        + 1;
+    let dead = dead_pid();
     let name = format!(".out.png.{dead}-0.tmp");
     let bytes = texture(&dir.join("t.png"));
     std::fs::rename(dir.join("t.png"), dir.join(&name)).unwrap();
@@ -455,28 +445,13 @@ fn the_sweep_of_stale_temporary_files_spares_the_runs_inputs() {
 /// report wrote is refused as such, whatever the spelling, and its files stay.
 #[test]
 fn a_report_spelled_through_a_missing_folder_is_judged_by_the_folder_it_names() {
-    let dir = scratch("report-missing");
-    textured_scene(&dir, "s.toml", "t.png");
-    texture(&dir.join("t.png"));
+    let dir = textured_dir("report-missing");
     std::fs::create_dir_all(dir.join("rep/images")).unwrap();
     std::fs::create_dir_all(dir.join("refs")).unwrap();
     std::fs::write(dir.join("rep/images/precious.txt"), b"precious").unwrap();
     for report in ["rep", "nodir/../rep", "a/b/../../rep"] {
-        let o = run(
-            &dir,
-            &[
-                &"render",
-                &"s.toml",
-                &"--out",
-                &"out",
-                &"--check",
-                &"refs",
-                &"--report",
-                &report,
-            ],
-        );
-        let stderr = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "{report}: {stderr}");
+        let (code, stderr) = render_checked(&dir, &["--report", report]);
+        assert_eq!(code, Some(2), "{report}: {stderr}");
         assert!(
             stderr.contains("holds no earlier ffvk report"),
             "{report}: {stderr}"
@@ -493,9 +468,7 @@ fn a_report_spelled_through_a_missing_folder_is_judged_by_the_folder_it_names() 
 /// the link leads: into the reference folder, refused, and no reference is replaced.
 #[test]
 fn an_output_folder_spelled_through_a_missing_folder_and_a_link_is_judged_by_where_it_leads() {
-    let dir = scratch("out-missing-link");
-    textured_scene(&dir, "s.toml", "t.png");
-    texture(&dir.join("t.png"));
+    let dir = textured_dir("out-missing-link");
     std::fs::create_dir_all(dir.join("refs/sub")).unwrap();
     std::fs::create_dir_all(dir.join("w")).unwrap();
     std::os::unix::fs::symlink(dir.join("refs/sub"), dir.join("w/lnk")).unwrap();
@@ -529,12 +502,7 @@ fn the_sweep_in_a_folder_run_spares_every_scenes_inputs() {
     let dir = scratch("sweep-folder");
     let suite = dir.join("suite");
     std::fs::create_dir_all(&suite).unwrap();
-    let dead = std::fs::read_to_string("/proc/sys/kernel/pid_max")
-        .unwrap()
-        .trim()
-        .parse::<u64>()
-        .unwrap()
-        + 1;
+    let dead = dead_pid();
     let name = format!(".a.png.{dead}-0.tmp");
     let bytes = texture(&suite.join("t.png"));
     std::fs::copy(suite.join("t.png"), suite.join(&name)).unwrap();
@@ -585,30 +553,9 @@ fn a_folder_swapped_for_a_link_during_a_suite_never_receives_an_input() {
     let bytes = texture(&dir.join("tex/a.png"));
     // `a` takes long enough to draw for the swap to come first; `b` reads `tex/a.png`, where
     // `a`'s image lands once `out` is a link to `tex`.
-    std::fs::write(
-        scenes.join("a.toml"),
-        "[image]\nsize = [2048, 2048]\n\n[[meshes]]\nbuiltin = \"teapot\"\nlevel = 32\n",
-    )
-    .unwrap();
+    slow_scene(&scenes);
     textured_scene(&scenes, "b.toml", "../tex/a.png");
-    let mut child = ffvk_command(&[&"render", &"scenes", &"--out", &"out", &"--jobs", &"1"])
-        .current_dir(&dir)
-        .stdout(std::process::Stdio::null())
-        .stderr(std::process::Stdio::null())
-        .spawn()
-        .unwrap();
-    // Once the worker runs, the parent's checks are done.
-    let start = std::time::Instant::now();
-    loop {
-        if has_children(child.id()) || child.try_wait().unwrap().is_some() {
-            break;
-        }
-        assert!(start.elapsed().as_secs() < 60, "no worker started");
-        std::thread::sleep(std::time::Duration::from_millis(1));
-    }
-    std::fs::rename(dir.join("out"), dir.join("out.real")).unwrap();
-    std::os::unix::fs::symlink("tex", dir.join("out")).unwrap();
-    child.wait().unwrap();
+    render_swapping_out(&dir, "tex", &[]);
     assert_eq!(
         std::fs::read(dir.join("tex/a.png")).unwrap(),
         bytes,
@@ -626,11 +573,7 @@ fn an_output_folder_swapped_for_a_link_to_the_references_never_writes_a_referenc
     std::fs::create_dir_all(&scenes).unwrap();
     std::fs::create_dir_all(dir.join("out")).unwrap();
     std::fs::create_dir_all(dir.join("refs")).unwrap();
-    std::fs::write(
-        scenes.join("a.toml"),
-        "[image]\nsize = [2048, 2048]\n\n[[meshes]]\nbuiltin = \"teapot\"\nlevel = 32\n",
-    )
-    .unwrap();
+    slow_scene(&scenes);
     std::fs::write(
         scenes.join("b.toml"),
         "[image]\nsize = [16, 16]\n\n[[meshes]]\nbuiltin = \"sphere\"\n",
@@ -643,22 +586,7 @@ fn an_output_folder_swapped_for_a_link_to_the_references_never_writes_a_referenc
     }
     let before = |name: &str| std::fs::read(dir.join(format!("refs/{name}.png"))).unwrap();
     let (a, b) = (before("a"), before("b"));
-    let mut child = ffvk_command(&[
-        &"render", &"scenes", &"--out", &"out", &"--check", &"refs", &"--jobs", &"1",
-    ])
-    .current_dir(&dir)
-    .stdout(std::process::Stdio::null())
-    .stderr(std::process::Stdio::null())
-    .spawn()
-    .unwrap();
-    let start = std::time::Instant::now();
-    while !has_children(child.id()) && child.try_wait().unwrap().is_none() {
-        assert!(start.elapsed().as_secs() < 60, "no worker started");
-        std::thread::sleep(std::time::Duration::from_millis(1));
-    }
-    std::fs::rename(dir.join("out"), dir.join("out.real")).unwrap();
-    std::os::unix::fs::symlink("refs", dir.join("out")).unwrap();
-    let status = child.wait().unwrap();
+    let status = render_swapping_out(&dir, "refs", &["--check", "refs"]);
     assert!(!status.success(), "the forged references never pass");
     assert_eq!(before("a"), a, "refs/a.png untouched");
     assert_eq!(before("b"), b, "refs/b.png untouched");
@@ -667,9 +595,7 @@ fn an_output_folder_swapped_for_a_link_to_the_references_never_writes_a_referenc
 /// A marker that is a link proves no earlier report: the folder is refused, its files kept.
 #[test]
 fn a_linked_report_marker_does_not_make_a_folder_a_report() {
-    let dir = scratch("linked-marker");
-    textured_scene(&dir, "s.toml", "t.png");
-    texture(&dir.join("t.png"));
+    let dir = textured_dir("linked-marker");
     let o = run(
         &dir,
         &[&"render", &"s.toml", &"--out", &"out", &"--json", &"r.json"],
@@ -686,6 +612,39 @@ fn a_linked_report_marker_does_not_make_a_folder_a_report() {
         std::fs::read(dir.join("victim/images/keep.txt")).unwrap(),
         b"precious"
     );
+}
+
+/// `scenes/a.toml`: a scene that takes long enough to draw for a swap to come before its
+/// image is written.
+fn slow_scene(scenes: &Path) {
+    std::fs::write(
+        scenes.join("a.toml"),
+        "[image]\nsize = [2048, 2048]\n\n[[meshes]]\nbuiltin = \"teapot\"\nlevel = 32\n",
+    )
+    .unwrap();
+}
+
+/// Runs `render scenes --out out --jobs 1` and `extra` in `dir` and, as soon as its worker
+/// runs (every check before the run done), swaps the folder `out` for a link to `target`;
+/// the run's exit status.
+fn render_swapping_out(dir: &Path, target: &str, extra: &[&str]) -> std::process::ExitStatus {
+    let mut args: Vec<&dyn AsRef<std::ffi::OsStr>> =
+        vec![&"render", &"scenes", &"--out", &"out", &"--jobs", &"1"];
+    args.extend(extra.iter().map(|a| a as &dyn AsRef<std::ffi::OsStr>));
+    let mut child = ffvk_command(&args)
+        .current_dir(dir)
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let start = std::time::Instant::now();
+    while !has_children(child.id()) && child.try_wait().unwrap().is_none() {
+        assert!(start.elapsed().as_secs() < 60, "no worker started");
+        std::thread::sleep(std::time::Duration::from_millis(1));
+    }
+    std::fs::rename(dir.join("out"), dir.join("out.real")).unwrap();
+    std::os::unix::fs::symlink(target, dir.join("out")).unwrap();
+    child.wait().unwrap()
 }
 
 /// Whether process `pid` has a child now (from /proc: each process's stat names its parent).
