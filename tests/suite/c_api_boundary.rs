@@ -348,6 +348,89 @@ fn raster_enums_vulkan_does_not_define_are_refused_at_ffvk_draw_naming_field_and
     });
 }
 
+#[test]
+fn the_rust_api_refuses_the_same_targets_layouts_and_raster_states_as_the_c_api() {
+    use ffvk::vk::{Device, EnabledFeatures};
+    use ffvk::{
+        Attribute, Blend, Lighting, LightingError, LightingOptions, RasterState, Target, VertexInput,
+    };
+    let plain = PlainDevice::new();
+    // SAFETY: the device comes from this physical device and outlives every ffvk object here.
+    let device = unsafe {
+        Device::from_caller(
+            &plain.instance,
+            plain.physical,
+            plain.device.clone(),
+            EnabledFeatures::default().with_dynamic_rendering(true),
+        )
+    }
+    .unwrap();
+    let input = || {
+        VertexInput::new(
+            BINDINGS.to_vec(),
+            Attribute::new(0, 0, vk::Format::R32G32B32_SFLOAT),
+            Attribute::new(0, 12, vk::Format::R32G32B32_SFLOAT),
+        )
+    };
+    let lighting = |target: Target, input: VertexInput, frames: u32| {
+        Lighting::new(
+            &device,
+            &LightingOptions::new(target, input).with_frames_in_flight(frames),
+        )
+        .err()
+        .map(|e| e.to_string())
+    };
+    let color = Target::new(vk::Format::D32_SFLOAT, vk::Format::UNDEFINED);
+    let e = lighting(color, input(), 1).expect("a depth format as color");
+    assert!(
+        e.contains("color_format D32_SFLOAT (126) is not a color format"),
+        "{e}"
+    );
+    let depth = Target::new(vk::Format::R8G8B8A8_UNORM, vk::Format::R8G8B8A8_UNORM);
+    let e = lighting(depth, input(), 1).expect("a color format as depth");
+    assert!(
+        e.contains("depth_format R8G8B8A8_UNORM (37) is not a depth format"),
+        "{e}"
+    );
+    let mut samples = Target::OFFSCREEN;
+    samples.samples = vk::SampleCountFlags::TYPE_64;
+    let e = lighting(samples, input(), 1).expect("64 samples on lavapipe");
+    assert!(e.contains("samples 64 is not supported by the device"), "{e}");
+    samples.samples = vk::SampleCountFlags::from_raw(3);
+    assert_eq!(
+        samples.validate(),
+        Err(LightingError::Samples {
+            samples: vk::SampleCountFlags::from_raw(3)
+        })
+    );
+    let mut past = input();
+    past.normal.offset = 13;
+    let e = lighting(Target::OFFSCREEN, past, 1).expect("a normal past the stride");
+    assert!(e.contains("the normal attribute at offset 13"), "{e}");
+    let e = lighting(Target::OFFSCREEN, input(), 1_000_000_000).expect("a billion frames");
+    assert!(
+        e.contains("frames_in_flight is 1000000000: expected 1..=64"),
+        "{e}"
+    );
+    assert!(lighting(Target::OFFSCREEN, input(), 2).is_none());
+
+    let raster = RasterState::default().with_depth_compare(vk::CompareOp::from_raw(99));
+    let e = raster.validate().unwrap_err().to_string();
+    assert!(e.contains("depth_compare 99 is not accepted"), "{e}");
+    let blend = Blend::new(
+        vk::BlendFactor::ONE,
+        vk::BlendFactor::from_raw(999),
+        vk::BlendOp::ADD,
+    );
+    let e = RasterState::default()
+        .with_blend(Some(blend))
+        .validate()
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("dst_color 999"), "{e}");
+    assert_eq!(RasterState::default().validate(), Ok(()));
+}
+
 /// What Vulkan would not draw as given is refused at `ffvkDraw`, naming the field and value:
 /// an index offset that is not a multiple of the index size (VUID-vkCmdBindIndexBuffer-
 /// offset-00432 once recorded), a first index or vertex plus the count past 2^32. The Rust API checks the same (`Geometry::validate`, in `Lighting`'s staging).
