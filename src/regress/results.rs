@@ -340,6 +340,62 @@ impl Results {
     }
 }
 
+/// What no run writes in a row, if the row has it: a mode that is not a lighting mode, a name
+/// that leaves the suite's folder (`..`, an absolute path), a comparison of an image no run
+/// draws (a side of 0 or past 16384) or whose pixels lie outside it. The field (below
+/// `rows[k].`), the value and what was expected.
+fn row_problem(row: &crate::regress::Row) -> Option<(String, String, String)> {
+    if let Some(mode) = &row.mode {
+        if !["vertex", "fragment", "flat"].contains(&mode.as_str()) {
+            return Some((
+                "mode".into(),
+                format!("{mode:?}"),
+                "\"vertex\", \"fragment\" or \"flat\"".into(),
+            ));
+        }
+    }
+    let name = Path::new(&row.name);
+    if name.is_absolute()
+        || name
+            .components()
+            .any(|c| matches!(c, std::path::Component::ParentDir))
+    {
+        return Some((
+            "name".into(),
+            format!("{:?}", row.name),
+            "a scene's path below the suite's folder, without \"..\"".into(),
+        ));
+    }
+    let c = row.comparison.as_ref()?;
+    if !(1..=16384).contains(&c.width) || !(1..=16384).contains(&c.height) {
+        return Some((
+            "comparison".into(),
+            format!("{}x{}", c.width, c.height),
+            "an image of 1 to 16384 pixels a side".into(),
+        ));
+    }
+    if c.over as u64 > u64::from(c.width) * u64::from(c.height) {
+        return Some((
+            "comparison.over".into(),
+            c.over.to_string(),
+            format!(
+                "at most the image's {} pixels",
+                u64::from(c.width) * u64::from(c.height)
+            ),
+        ));
+    }
+    for (what, pixel) in [("worst", &c.worst), ("first_over", &c.first_over)] {
+        if let Some(p) = pixel.as_ref().filter(|p| p.x >= c.width || p.y >= c.height) {
+            return Some((
+                format!("comparison.{what}"),
+                format!("({}, {})", p.x, p.y),
+                format!("a pixel of the {}x{} image", c.width, c.height),
+            ));
+        }
+    }
+    None
+}
+
 /// The checks of [`Results::check`] on run `at` of the file at `path`.
 fn check_run(path: &Path, at: usize, run: &Run) -> Result<(), MergeError> {
     let info = &run.info;
@@ -387,6 +443,10 @@ fn check_run(path: &Path, at: usize, run: &Run) -> Result<(), MergeError> {
                 format!("{:?}", row.scene),
                 format!("a scene of shard {p}: this name hashes to another shard (--partition)"),
             ));
+        }
+        if let Some(problem) = row_problem(row) {
+            let (name, value, expected) = problem;
+            return Err(field(format!("rows[{k}].{name}"), value, expected));
         }
         if !info.modes.is_empty() && !row.mode.as_ref().is_some_and(|m| info.modes.contains(m)) {
             return Err(field(

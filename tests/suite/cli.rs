@@ -122,6 +122,60 @@ fn merge(files: &[&PathBuf]) -> Output {
     run(&args, 60)
 }
 
+/// What no run writes in a row is refused naming the row's field: a mode that is not a
+/// lighting mode, a name leaving the suite's folder, a comparison of an image no run draws or
+/// whose worst pixel lies outside it.
+#[test]
+fn results_rows_no_run_writes_are_refused_naming_the_field() {
+    let dir = scratch("merge-row-content");
+    let comparison = |width: u32, x: u32| {
+        json!({"width": width, "height": 32, "max_diff": [9, 0, 0, 0], "over": 1, "share_over": 0.001,
+               "flip_mean": null, "flip_all_pixels": false, "threshold": 2,
+               "worst": {"x": x, "y": 0, "expected": [0, 0, 0, 255], "actual": [9, 0, 0, 255]},
+               "first_over": null})
+    };
+    let cases: [(&str, Value, &[&str]); 4] = [
+        (
+            "mode",
+            json!({"mode": "bogus"}),
+            &["rows[2].mode", "bogus", "\"vertex\""],
+        ),
+        (
+            "name",
+            json!({"name": "../../x"}),
+            &["rows[2].name", "../../x", "below the suite's folder"],
+        ),
+        (
+            "size",
+            json!({"comparison": comparison(u32::MAX, 0)}),
+            &["rows[2].comparison", "4294967295x32"],
+        ),
+        (
+            "pixel",
+            json!({"comparison": comparison(32, 99_999)}),
+            &["rows[2].comparison.worst", "(99999, 0)", "32x32"],
+        ),
+    ];
+    for (what, change, words) in cases {
+        let mut rows = six_rows();
+        for (key, value) in change.as_object().unwrap() {
+            rows[2][key] = value.clone();
+        }
+        let file = results_file(&dir, &format!("{what}.json"), None, 6, 6, rows);
+        let out = merge(&[&file]);
+        let name = format!("{what}.json");
+        let mut all = words.to_vec();
+        all.push(&name);
+        assert_refused(&out, &all, what);
+    }
+    // The same comparison within its image merges: the checks are about what no run writes.
+    let mut rows = six_rows();
+    rows[2]["comparison"] = comparison(32, 31);
+    let file = results_file(&dir, "fine.json", None, 6, 6, rows);
+    let out = merge(&[&file]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+}
+
 #[test]
 fn results_merge_refuses_a_shard_outside_its_partition_count_naming_the_file_and_field() {
     let dir = scratch("merge-partition");
