@@ -198,5 +198,16 @@ pub(crate) fn write_file(path: &std::path::Path, bytes: &[u8]) -> Result<()> {
     })
 }
 
+/// `text` named by the file it is about, as a warning of one scene among many is printed:
+/// `PATH: text`, unless it names the file already.
+pub fn named_by(path: &std::path::Path, text: &str) -> String {
+    let name = path.display().to_string();
+    if text.starts_with(&name) {
+        text.to_owned()
+    } else {
+        format!("{name}: {text}")
+    }
+}
+
 /// Result with the tools' [`Error`].
 pub type Result<T, E = Error> = std::result::Result<T, E>;

@@ -154,20 +154,26 @@ pub fn sweep_on_write(on: bool) {
     SWEEP_ON_WRITE.store(on, Ordering::Release);
 }
 
-/// Removes the temporary files of `name` in `dir` that earlier processes left when they died
+/// Removes the temporary files of `names` in `dir` that earlier processes left when they died
 /// mid-write (their process no longer runs), except inputs of this run ([`note_input`]).
 /// Errors are ignored: a sweep is a courtesy.
-pub fn sweep_stale_temporaries(dir: &Path, name: &str) {
+pub fn sweep_stale_temporaries(dir: &Path, names: &[&str]) {
     let Ok(entries) = fs::read_dir(dir) else {
         return;
     };
-    let prefix = format!(".{name}.");
     for entry in entries.flatten() {
         let file = entry.file_name();
-        let Some(rest) = file.to_str().and_then(|f| f.strip_prefix(&prefix)) else {
+        // `.NAME.PID-N.tmp`, NAME one of `names`.
+        let Some((name, rest)) = file
+            .to_str()
+            .and_then(|f| f.strip_prefix('.')?.strip_suffix(".tmp")?.rsplit_once('.'))
+        else {
             continue;
         };
-        let Some((pid, count)) = rest.strip_suffix(".tmp").and_then(|r| r.split_once('-')) else {
+        if !names.contains(&name) {
+            continue;
+        }
+        let Some((pid, count)) = rest.split_once('-') else {
             continue;
         };
         let (Ok(pid), Ok(_)) = (pid.parse::<u32>(), count.parse::<u64>()) else {
@@ -226,10 +232,8 @@ pub fn input_named(path: &Path) -> Option<PathBuf> {
     let list = inputs.as_ref()?;
     if cfg!(unix) {
         // A path through a folder not made yet (`new/../x`) names what it will name.
-        let id = FileId::of(path).or_else(|| FileId::of(&resolved(path)))?;
-        list.iter()
-            .find(|(known, _)| *known == id)
-            .map(|(_, p)| p.clone())
+        drop(inputs);
+        input_with_id(FileId::of(path).or_else(|| FileId::of(&resolved(path)))?)
     } else {
         let real = fs::canonicalize(path).ok()?;
         list.iter().find(|(_, p)| *p == real).map(|(_, p)| p.clone())
@@ -259,21 +263,26 @@ pub fn input_within(dir: &Path) -> Option<PathBuf> {
 /// Refuses `path` as an output when it names (after links) a file this process read, with
 /// the guard on ([`protect_inputs`]): the error names the output and the input.
 pub fn refuse_input(path: &Path) -> io::Result<()> {
-    let Some(input) = input_named(path) else {
-        return Ok(());
-    };
+    match input_named(path) {
+        Some(input) => Err(refused_input(path, &input)),
+        None => Ok(()),
+    }
+}
+
+/// The error of an output `path` that names `input`, a file this process read.
+fn refused_input(path: &Path, input: &Path) -> io::Error {
     let how = if fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_symlink()) {
         "is a symbolic link to"
     } else {
         "is"
     };
-    Err(refuse(
+    refuse(
         path,
         &format!(
             "{how} {}, which this run reads: refused, nothing written; expected an output path that is not one of the run's inputs",
             input.display()
         ),
-    ))
+    )
 }
 
 /// Where the bytes for `path` really go: the path itself, or the regular file a symlink
@@ -319,21 +328,24 @@ pub fn write_atomically(
         .take_while(|d| !d.as_os_str().is_empty() && fs::symlink_metadata(d).is_err())
         .map(Path::to_path_buf)
         .collect();
-    fs::create_dir_all(&dir)?;
-    // With its folders made, the path may name a file it could not name before.
-    if let Err(e) = refuse_input(&target) {
-        for folder in &made {
-            // Only while empty: nothing of anyone else's is removed.
-            let _ = fs::remove_dir(folder);
-        }
-        return Err(e);
-    }
     let file_name = target
         .file_name()
         .ok_or_else(|| refuse(path, "has no file name: expected a file path"))?;
+    fs::create_dir_all(&dir)?;
+    // From here on the folder is held open and named by its descriptor, and the destination's
+    // identity is checked in the folder the file really lands in: with its folders made, or
+    // the folder swapped for a link since the check above, the path may name an input now.
+    let folder = Folder::open(&dir)?;
+    if let Some(input) = folder.identity(file_name).and_then(input_with_id) {
+        for made in &made {
+            // Only while empty: nothing of anyone else's is removed.
+            let _ = fs::remove_dir(made);
+        }
+        return Err(refused_input(path, &input));
+    }
     let name = file_name.to_string_lossy();
     if SWEEP_ON_WRITE.load(Ordering::Acquire) {
-        sweep_stale_temporaries(&dir, &name);
+        sweep_stale_temporaries(&dir, &[&name]);
     }
     let temporary_name = format!(
         ".{name}.{}-{}.tmp",
@@ -342,19 +354,6 @@ pub fn write_atomically(
     );
     let temporary = dir.join(&temporary_name);
     let _recorded = Temporary::record(&temporary);
-    // From here on the folder is held open and named by its descriptor: a folder swapped for
-    // a link after the checks above cannot redirect the write, and the destination's identity
-    // is checked in the folder the file really lands in.
-    let folder = Folder::open(&dir)?;
-    if let Some(input) = folder.identity(file_name).and_then(input_with_id) {
-        return Err(refuse(
-            path,
-            &format!(
-                "is {}, which this run reads (its folder changed while ffvk ran): refused, nothing written; expected an output path that is not one of the run's inputs",
-                input.display()
-            ),
-        ));
-    }
     let result = (|| {
         let file = folder.create_new(temporary_name.as_ref())?;
         let mut writer = BufWriter::new(file);

@@ -204,20 +204,10 @@ pub(crate) fn print_note(path: &std::path::Path) -> impl FnMut(ffvk::scene::Open
         ffvk::scene::OpenNote::Warning { text, times } => ffvk_cli::errln!(
             "{}",
             ffvk::scene::OpenNote::Warning {
-                text: &named_by(path, text),
+                text: &ffvk_cli::named_by(path, text),
                 times
             }
         ),
         _ => ffvk_cli::errln!("{note}"),
-    }
-}
-
-/// `text` named by the file it is about: `PATH: text`, unless it names the file already.
-pub(crate) fn named_by(path: &std::path::Path, text: &str) -> String {
-    let name = path.display().to_string();
-    if text.starts_with(&name) {
-        text.to_owned()
-    } else {
-        format!("{name}: {text}")
     }
 }

@@ -176,6 +176,8 @@ pub(crate) fn run(global: &Global, args: &RenderArgs) -> ffvk_cli::Result<ExitCo
     let named: Vec<&std::path::Path> = outputs.iter().map(|(_, p)| *p).collect();
     regress::refuse_writing_inputs(&job, &files, &named, true)?;
     // The workers write the images without sweeping: this process knows every input.
+    // One pass over each folder, however many images it gets.
+    let mut folders: std::collections::BTreeMap<PathBuf, Vec<String>> = Default::default();
     for image in regress::image_paths(&job, &files) {
         if let (Some(dir), Some(name)) = (image.parent(), image.file_name()) {
             let dir = if dir.as_os_str().is_empty() {
@@ -183,8 +185,15 @@ pub(crate) fn run(global: &Global, args: &RenderArgs) -> ffvk_cli::Result<ExitCo
             } else {
                 dir
             };
-            ffvk::files::sweep_stale_temporaries(dir, &name.to_string_lossy());
+            folders
+                .entry(dir.to_path_buf())
+                .or_default()
+                .push(name.to_string_lossy().into_owned());
         }
+    }
+    for (dir, names) in &folders {
+        let names: Vec<&str> = names.iter().map(String::as_str).collect();
+        ffvk::files::sweep_stale_temporaries(dir, &names);
     }
     regress::refuse_overlaps(
         &outputs,

@@ -497,15 +497,10 @@ pub fn load_scene(
     let scene = ffvk::scene::open(path, size, limits, direct, &mut |n| match n {
         OpenNote::Chose { text } => log(Message::Chose { scene: path, text }),
         // Named by its scene: in a folder run, warnings of many scenes interleave.
-        OpenNote::Warning { text, times } => {
-            let name = path.display().to_string();
-            let text = if text.starts_with(&name) {
-                text.to_owned()
-            } else {
-                format!("{name}: {text}")
-            };
-            log(Message::Warning { text: &text, times })
-        }
+        OpenNote::Warning { text, times } => log(Message::Warning {
+            text: &crate::named_by(path, text),
+            times,
+        }),
         _ => {}
     })?;
     Ok(scene)
