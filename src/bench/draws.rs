@@ -8,7 +8,7 @@ use std::time::Instant;
 
 use glam::{Mat4, Vec3, Vec4};
 use indicatif::ProgressBar;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::measure::{GlAnchor, Spread};
 use super::points::CLEAR;
@@ -27,7 +27,7 @@ const SIZE: u32 = 512;
 pub const DRAW_MODES: [BenchMode; 3] = [BenchMode::Vertex, BenchMode::Fragment, BenchMode::Flat];
 
 /// What the sweep's draws draw.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum DrawShape {
     /// Every draw the same quad mesh: ffvk may draw consecutive draws as instances of one
@@ -88,7 +88,7 @@ impl DrawShape {
 pub const SPHERES: u32 = 1_024;
 
 /// One point of the draws sweep.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct DrawsResult {
     /// Who drew it.
     pub engine: Engine,
@@ -270,7 +270,39 @@ fn run_point(
         rss_kib_per_frame: grown,
     });
 
-    let Some(gl) = gl else { return Ok(out) };
+    if let Some(gl) = gl {
+        out.push(gl_point(gl, Engine::Gl, config, (shape, mesh), draws, mode)?);
+    }
+    Ok(out)
+}
+
+/// The GL side of the draws sweep alone, every point in the order [`run_draws`] draws them,
+/// labelled `engine`: what the zink anchor's process times ([`super::zink`]).
+pub(super) fn gl_draws(config: &SweepConfig, gl: &GlAnchor, engine: Engine) -> Result<Vec<DrawsResult>> {
+    let mut out = Vec::new();
+    for shape in DrawShape::ALL {
+        let mesh = shape.mesh();
+        for draws in shape.counts(&config.draw_counts) {
+            for mode in DRAW_MODES {
+                out.push(gl_point(gl, engine, config, (shape, &mesh), draws, mode)?);
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// One point of the sweep drawn by the GL anchor `gl` (reported as `engine`): the calls an
+/// application issues for the frame ([`crate::gl_reference::time_frames`]), each draw from
+/// its own buffer objects.
+fn gl_point(
+    gl: &GlAnchor,
+    engine: Engine,
+    config: &SweepConfig,
+    (shape, mesh): (DrawShape, &MeshData),
+    draws: u32,
+    mode: BenchMode,
+) -> Result<DrawsResult> {
+    let (objects, projection) = scene(mode, draws, shape.fit())?;
     let scene = GlScene {
         width: SIZE,
         height: SIZE,
@@ -287,8 +319,8 @@ fn run_point(
     // over all its frames, warm-up included.
     let grown = grown_per_frame(before, config.warmup + config.frames);
     let wall: Vec<f64> = timing.frame_ns.iter().map(|ns| ns / 1e6).collect();
-    out.push(DrawsResult {
-        engine: Engine::Gl,
+    Ok(DrawsResult {
+        engine,
         shape,
         mode,
         draws,
@@ -298,40 +330,50 @@ fn run_point(
         record_us_per_draw: None,
         device_us_per_draw: None,
         rss_kib_per_frame: grown,
-    });
-    Ok(out)
+    })
 }
 
-/// The draws sweep as a Markdown table: per draw count and mode, ffvk against GL.
+/// The draws sweep as a Markdown table: per draw count and mode, ffvk against GL and zink.
 pub fn draws_markdown(results: &[DrawsResult]) -> String {
     if results.is_empty() {
         return String::new();
     }
     let mut md = String::from(
         "### Many draws, each with its own material\n\n\
-         Frames of quads (or 1,024 spheres of 240 triangles) in a grid at 512², each draw after \
-         its own glMaterial and modelview, a directional and a point light; host time per frame, \
-         medians: ffvk from the frame handed to the renderer (checking the draws, recording, \
-         submission) to the fence, GL from its first call to glFinish's return. With one mesh \
-         ffvk draws consecutive draws as instances of one draw command; with a mesh each, every \
-         draw is a command of its own. GL draws each from its own buffer objects.\n\n\
-         | meshes | draws | mode | ffvk ms | GL ms | ffvk ÷ GL | ffvk record µs/draw | ffvk device µs/draw | ffvk RSS KiB/frame |\n\
-         | --- | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: |\n",
+         Frames of quads (or 1,024 spheres of 240 triangles) in a grid at 512², each draw with its \
+         own diffuse color, shininess and modelview, under a directional light and a point light \
+         with linear attenuation, both with specular; host time per frame, medians: ffvk from \
+         the frame handed to the renderer (checking the draws, recording, submission) to the \
+         fence, GL and zink from their first call to glFinish's return. The GL programs issue \
+         what an application issues: the lights, light model and switches once per frame, then \
+         per draw only what changed (a glMaterial per changed parameter, glLoadMatrix) and \
+         glDrawElements, binding a draw's buffer objects when they differ from the draw \
+         before's. GL is Mesa's llvmpipe in this process; zink is Mesa's GL on the same Vulkan \
+         driver, in a process of its own. With one mesh ffvk draws consecutive draws as \
+         instances of one draw command; with a mesh each, every draw is a command of its \
+         own.\n\n\
+         | meshes | draws | mode | ffvk ms | GL ms | zink ms | ffvk ÷ GL | ffvk ÷ zink | ffvk record µs/draw | ffvk device µs/draw | ffvk RSS KiB/frame |\n\
+         | --- | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n",
     );
     let fmt = |v: Option<f64>, digits: usize| v.map_or("—".into(), |v| format!("{v:.digits$}"));
     for r in results.iter().filter(|r| r.engine == Engine::Ffvk) {
-        let gl = results
-            .iter()
-            .find(|g| g.engine == Engine::Gl && g.shape == r.shape && g.mode == r.mode && g.draws == r.draws)
-            .map(|g| g.frame_ms.median);
+        let anchor = |engine: Engine| {
+            results
+                .iter()
+                .find(|g| g.engine == engine && g.shape == r.shape && g.mode == r.mode && g.draws == r.draws)
+                .map(|g| g.frame_ms.median)
+        };
+        let (gl, zink) = (anchor(Engine::Gl), anchor(Engine::Zink));
         md.push_str(&format!(
-            "| {} | {} | {} | {:.2} | {} | {} | {} | {} | {:.0} |\n",
+            "| {} | {} | {} | {:.2} | {} | {} | {} | {} | {} | {} | {:.0} |\n",
             r.shape.name(),
             r.draws,
             r.mode.name(),
             r.frame_ms.median,
             fmt(gl, 2),
+            fmt(zink, 2),
             fmt(gl.map(|g| r.frame_ms.median / g), 2),
+            fmt(zink.map(|z| r.frame_ms.median / z), 2),
             fmt(r.record_us_per_draw, 2),
             fmt(r.device_us_per_draw, 2),
             r.rss_kib_per_frame,

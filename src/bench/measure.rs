@@ -4,7 +4,7 @@
 use std::collections::BTreeMap;
 use std::time::Instant;
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::points::{matrices, point_state, CLEAR};
 use super::sweep::{BenchMode, Engine, Group, Point, SweepConfig, Variant};
@@ -16,7 +16,7 @@ use ffvk::mesh::MeshData;
 use ffvk::renderer::{Draw, Frame, FrameStats, Mesh, Renderer};
 
 /// Median, quartiles and extremes of a point's frames.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, Default)]
 pub struct Spread {
     /// The median (the figure a point reports).
     pub median: f64,
@@ -55,7 +55,7 @@ impl Spread {
 }
 
 /// What a point measured.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct PointStats {
     /// Unmeasured frames before the measured ones.
     pub warmup: u32,

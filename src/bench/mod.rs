@@ -32,6 +32,7 @@ mod report;
 mod suite;
 mod sweep;
 mod tables;
+pub mod zink;
 
 use std::collections::hash_map::Entry;
 use std::collections::HashMap;
@@ -76,10 +77,11 @@ pub struct BenchArgs {
     /// is too short to show the lighting) or `auto`: `gpu` on a discrete, integrated or
     /// virtual GPU, else `standard`. `paths` (about 3 minutes on 2 cores): the fragment
     /// mode forward and deferred over mesh density, image size and lights, with what
-    /// `FragmentPath::Auto` picks at each point. `jobs` is another kind of sweep:
+    /// `FragmentPath::Auto` picks at each point. `draws` (about 2 minutes on 2 cores): the
+    /// many-draws frames alone, with their anchors. `jobs` is another kind of sweep:
     /// regression-suite throughput (`ffvk render --check` of generated scenes) with 1, 2, …
     /// worker processes.
-    #[arg(long, default_value = "auto", value_parser = ["auto", "quick", "standard", "full", "gpu", "paths", "jobs"])]
+    #[arg(long, default_value = "auto", value_parser = ["auto", "quick", "standard", "full", "gpu", "paths", "draws", "jobs"])]
     pub sweep: String,
     /// `--sweep jobs`: scenes in the generated suite (128² each).
     #[arg(long, default_value_t = 200, value_parser = clap::value_parser!(u32).range(1..=100_000),
@@ -116,6 +118,14 @@ pub struct BenchArgs {
     /// Leave out the OpenGL anchor.
     #[arg(long)]
     pub no_gl: bool,
+    /// Leave out the zink anchor (Mesa's GL on the same Vulkan driver, in a process of its
+    /// own).
+    #[arg(long)]
+    pub no_zink: bool,
+    /// Draw the zink anchor's points for a parent `ffvk bench` (a request on stdin, the
+    /// answer on stdout): ffvk runs itself this way.
+    #[arg(long, hide = true)]
+    pub anchor_worker: bool,
     /// No progress bar.
     #[arg(long)]
     pub no_progress: bool,
@@ -133,6 +143,10 @@ pub struct BenchArgs {
 /// it first thing); library users and tests call [`run_sweep`] and [`write_outputs`].
 /// `program` is ffvk's own executable: the jobs sweep starts its workers from it.
 pub fn run(args: &BenchArgs, options: &RendererOptions, program: &std::path::Path) -> Result<()> {
+    if args.anchor_worker {
+        // LP_NUM_THREADS and the GL driver's environment come from the parent.
+        return zink::answer_request();
+    }
     claim_out_dir(&args.out)?;
     if args.sweep == "jobs" {
         // Before LP_NUM_THREADS is pinned for this process: each number of workers gets its
@@ -163,6 +177,7 @@ pub fn run(args: &BenchArgs, options: &RendererOptions, program: &std::path::Pat
         "full" => SweepConfig::full(),
         "standard" => SweepConfig::standard(),
         "gpu" => SweepConfig::gpu(),
+        "draws" => SweepConfig::draws_only(),
         "paths" => {
             let probe = Renderer::new(options)?;
             SweepConfig::paths(is_gpu(&probe.device_info().device_type))
@@ -187,6 +202,9 @@ pub fn run(args: &BenchArgs, options: &RendererOptions, program: &std::path::Pat
         config.frames = f;
     }
     config.gl &= !args.no_gl;
+    // Not where the sweep has no GL points and no draws sweep (the paths sweep).
+    config.zink =
+        (!args.no_zink && (config.gl || !config.draw_counts.is_empty())).then(|| program.to_path_buf());
     config.malloc_no_trim = args.malloc_no_trim;
 
     let progress = if args.no_progress {
@@ -287,6 +305,10 @@ pub struct BenchEnv {
     pub gl_renderer: Option<String>,
     /// GL_VERSION of the GL anchor, when it ran.
     pub gl_version: Option<String>,
+    /// GL_RENDERER of the zink anchor, when it ran.
+    pub zink_renderer: Option<String>,
+    /// GL_VERSION of the zink anchor, when it ran.
+    pub zink_version: Option<String>,
     /// The CPU's model name (/proc/cpuinfo).
     pub cpu: String,
     /// The CPUs this process may use.
@@ -346,7 +368,7 @@ pub struct BenchReport {
 /// its queue thread, whose arena glibc trims with madvise after every frame, so the next
 /// frame faults its pages in again), and a large top pad. Returns whether glibc accepted.
 #[cfg(all(target_os = "linux", target_env = "gnu"))]
-fn keep_freed_memory() -> bool {
+pub(crate) fn keep_freed_memory() -> bool {
     use std::os::raw::c_int;
     extern "C" {
         fn mallopt(param: c_int, value: c_int) -> c_int;
@@ -359,7 +381,7 @@ fn keep_freed_memory() -> bool {
 }
 
 #[cfg(not(all(target_os = "linux", target_env = "gnu")))]
-fn keep_freed_memory() -> bool {
+pub(crate) fn keep_freed_memory() -> bool {
     false
 }
 
@@ -450,6 +472,8 @@ pub fn run_sweep(
         vulkan_api: info.api_version.clone(),
         gl_renderer: gl.as_ref().map(|g| g.renderer.clone()),
         gl_version: gl.as_ref().map(|g| g.version.clone()),
+        zink_renderer: None,
+        zink_version: None,
         cpu: cpu_model(),
         cpus: default_lp_threads(),
         ffvk_version: env!("CARGO_PKG_VERSION").to_string(),
@@ -513,6 +537,7 @@ pub fn run_sweep(
                 Some(g) => g.measure(&point.primitive.mesh(data), point, config)?,
                 None => unreachable!("GL points are removed without the anchor"),
             },
+            Engine::Zink => unreachable!("points() makes no zink points: its process draws them"),
         };
         stats[i] = Some(measured);
         progress.inc(1);
@@ -532,22 +557,26 @@ pub fn run_sweep(
         })
         .collect();
     let summary = summarize(&results);
-    // A renderer of its own, so that the sweep's pipelines do not count as new keys.
-    progress.set_message(format!(
-        "recording cost ({} draws per frame)",
-        config.record_draws
-    ));
-    let mut recorder_options = options.clone();
-    recorder_options.specialize = Specialize::Always;
-    let mut recorder = Renderer::new(&recorder_options)?;
-    let draw_cost = Some(measure_draw_cost(
-        &mut recorder,
-        options.device.as_deref(),
-        config.record_draws,
-        config.frames.clamp(1, 21),
-        config.new_keys,
-    )?);
-    drop(recorder);
+    // A renderer of its own, so that the sweep's pipelines do not count as new keys (none
+    // in a sweep that records no draws for it).
+    let draw_cost = if config.record_draws > 0 {
+        progress.set_message(format!(
+            "recording cost ({} draws per frame)",
+            config.record_draws
+        ));
+        let mut recorder_options = options.clone();
+        recorder_options.specialize = Specialize::Always;
+        let mut recorder = Renderer::new(&recorder_options)?;
+        Some(measure_draw_cost(
+            &mut recorder,
+            options.device.as_deref(),
+            config.record_draws,
+            config.frames.clamp(1, 21),
+            config.new_keys,
+        )?)
+    } else {
+        None
+    };
     // The draws sweep on a renderer of its own too: its thousands of states stay out of the
     // other measurements' pipelines and memory.
     let mut draws_renderer = Renderer::new(options)?;
@@ -560,8 +589,27 @@ pub fn run_sweep(
                     .sum::<u64>()
                 * (1 + u64::from(gl.is_some())),
     );
-    let draws = draws::run_draws(config, &mut draws_renderer, gl.as_ref(), progress)?;
+    let mut draws = draws::run_draws(config, &mut draws_renderer, gl.as_ref(), progress)?;
     drop(draws_renderer);
+    let mut results = results;
+    let mut env = env;
+    if let Some(program) = &config.zink {
+        progress.set_message("zink anchor (a process of its own)");
+        let device = (info.name.as_str(), info.device_type.as_str());
+        if let Some(zink) = zink::run_zink(program, config, device, &mut notes) {
+            results.extend(zink.points.into_iter().map(|(point, stats)| BenchResult {
+                point,
+                stats,
+                lp_num_threads: lp_num_threads.clone(),
+                device: env.device.clone(),
+                driver_info: env.driver_info.clone(),
+                mesa_version: env.mesa_version.clone(),
+            }));
+            draws.extend(zink.draws);
+            env.zink_renderer = Some(zink.renderer);
+            env.zink_version = Some(zink.version);
+        }
+    }
     Ok(BenchReport {
         env: BenchEnv {
             load_after: load_average(),

@@ -440,6 +440,8 @@ mod tests {
             mesa_version: "22.3.6".into(),
             vulkan_api: "1.3.230".into(),
             gl_renderer: Some("llvmpipe (LLVM 15.0.6, 256 bits)".into()),
+            zink_renderer: None,
+            zink_version: None,
             gl_version: Some("2.1 Mesa 22.3.6".into()),
             cpu: "Some CPU".into(),
             cpus: 2,

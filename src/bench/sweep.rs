@@ -2,13 +2,13 @@
 //! sizes, light counts and kinds, pipeline variants); the points themselves and the scene
 //! of each are in `points.rs`.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::{Error, Result};
 use ffvk::gl::state::LightingMode;
 
 /// A sweep: which points, how many frames each.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SweepConfig {
     /// The sweep's name ("quick", "standard", "full", "tiny").
     pub name: String,
@@ -77,6 +77,10 @@ pub struct SweepConfig {
     pub path_lights: Vec<usize>,
     /// Whether the primitives group runs.
     pub primitives: bool,
+    /// ffvk's own executable, which times the zink anchor in a process of its own
+    /// ([`super::zink`]); `None` leaves zink out.
+    #[serde(skip)]
+    pub zink: Option<std::path::PathBuf>,
 }
 
 impl SweepConfig {
@@ -110,6 +114,7 @@ impl SweepConfig {
             path_sizes: Vec::new(),
             path_lights: Vec::new(),
             primitives: true,
+            zink: None,
         }
     }
 
@@ -188,6 +193,22 @@ impl SweepConfig {
         }
     }
 
+    /// The draws sweep alone (about 2 minutes on 2 cores): the many-draws frames of
+    /// [`super::draws`] with their anchors, at the standard sweep's frames, and nothing else.
+    pub fn draws_only() -> Self {
+        SweepConfig {
+            name: "draws".into(),
+            stacks: Vec::new(),
+            sizes: Vec::new(),
+            light_counts: Vec::new(),
+            kinds: Vec::new(),
+            record_draws: 0,
+            fragment_sizes: Vec::new(),
+            primitives: false,
+            ..SweepConfig::standard()
+        }
+    }
+
     /// A few tiny points, one or two frames each: proves the harness works (tests).
     pub fn tiny() -> Self {
         SweepConfig {
@@ -218,6 +239,7 @@ impl SweepConfig {
             path_sizes: vec![16],
             path_lights: vec![1, 2],
             primitives: true,
+            zink: None,
         }
     }
 
@@ -396,17 +418,31 @@ impl Primitive {
 }
 
 /// Who draws.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Engine {
     /// ffvk on Vulkan.
     Ffvk,
     /// Fixed-function OpenGL through EGL (the GL reference renderer).
     Gl,
+    /// Mesa's GL on Vulkan (zink) on the same Vulkan driver, in a process of its own: the
+    /// peer that draws fixed-function GL on Vulkan by another road.
+    Zink,
+}
+
+impl Engine {
+    /// How tables and labels name it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Engine::Ffvk => "ffvk",
+            Engine::Gl => "GL",
+            Engine::Zink => "zink",
+        }
+    }
 }
 
 /// Where the equation is evaluated, or nowhere.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum BenchMode {
     /// Lit at each vertex, colors interpolated (GL's SMOOTH).
@@ -481,7 +517,7 @@ impl Variant {
 
 /// The kind of every light of a point: GL's three, and ffvk's lighting variants on them
 /// (what each variant costs is its time against its GL form's).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum LightKind {
     /// w = 0.
@@ -576,10 +612,7 @@ impl Point {
         format!(
             "{:?} {} {} {} {}v{} {}x{} {}×{}{}{}",
             self.group,
-            match self.engine {
-                Engine::Ffvk => "ffvk",
-                Engine::Gl => "GL",
-            },
+            self.engine.name(),
             self.mode.name(),
             self.variant.name(),
             self.vertices,

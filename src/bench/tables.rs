@@ -38,10 +38,7 @@ pub(super) fn costs_table(report: &BenchReport) -> Table {
     };
     for c in &report.summary.costs {
         t.row([
-            match c.engine {
-                Engine::Ffvk => "ffvk".to_string(),
-                Engine::Gl => "GL".to_string(),
-            },
+            c.engine.name().to_string(),
             c.mode.name().to_string(),
             ns(c.ns_per_vertex),
             ns(c.ns_per_pixel),
@@ -158,6 +155,9 @@ pub(super) fn environment(report: &BenchReport) -> Table {
     ];
     if let (Some(r), Some(v)) = (&e.gl_renderer, &e.gl_version) {
         rows.push(("GL anchor", format!("{r}, GL {v} (EGL)")));
+    }
+    if let (Some(r), Some(v)) = (&e.zink_renderer, &e.zink_version) {
+        rows.push(("zink anchor", format!("{r}, GL {v} (EGL, a process of its own)")));
     }
     let heap = if c.malloc_no_trim {
         "freed memory kept (--malloc-no-trim: glibc M_TRIM_THRESHOLD = max, M_TOP_PAD = 256 MiB)"

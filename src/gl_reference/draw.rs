@@ -5,7 +5,9 @@
 use std::ffi::c_void;
 use std::time::Instant;
 
-use ffvk::gl::state::{Cap, ColorControl, ColorMaterialMode, Face, Light, LightingMode, Material};
+use ffvk::gl::state::{
+    Cap, ColorControl, ColorMaterialMode, Face, Light, LightingMode, LightingState, Material,
+};
 use ffvk::gl::texture::{MagFilter, MinFilter, Sampling, TexEnvMode, TextureImage, TextureUnit, Wrap};
 use ffvk::mesh::{MeshData, Vertex};
 
@@ -67,7 +69,7 @@ pub(super) fn render(gl: &Gl, scene: &GlScene) -> Result<image::RgbaImage, GlErr
             .map(|(image, sampling)| GlTexture::upload(gl, image, &sampling))
             .transpose()
             .map_err(|problem| GlError::Draw { index, problem })?;
-        draw_one(gl, draw, max_lights, Arrays::Client, texture.as_ref())
+        draw_one(gl, draw, max_lights, texture.as_ref())
             .map_err(|problem| GlError::Draw { index, problem })?;
         drop(texture);
         check(gl, || format!("after draw {index}"))?;
@@ -141,10 +143,7 @@ pub(super) fn time(gl: &Gl, scene: &GlScene, warmup: u32, frames: u32) -> Result
             unsafe { gl.BeginQuery(gl::TIME_ELAPSED, t.name) };
         }
         begin_frame(gl, scene);
-        for (index, ((draw, b), t)) in scene.draws.iter().zip(&buffers).zip(&textures).enumerate() {
-            draw_one(gl, draw, max_lights, Arrays::Buffers(b), t.as_ref())
-                .map_err(|problem| GlError::Draw { index, problem })?;
-        }
+        issue_frame(gl, scene, max_lights, &buffers, &textures)?;
         if timer.is_some() {
             // SAFETY: a context is current; ends the query begun above.
             unsafe { gl.EndQuery(gl::TIME_ELAPSED) };
@@ -401,15 +400,6 @@ fn set_texture_unit(gl: &Gl, unit: &TextureUnit, texture: Option<&GlTexture>) {
     set_enabled(gl, gl::TEXTURE_2D, unit.enabled);
 }
 
-/// Where a draw's vertex and index arrays are.
-#[derive(Clone, Copy)]
-enum Arrays<'a, 'g> {
-    /// In the mesh's own memory (client arrays).
-    Client,
-    /// In buffer objects of the current context.
-    Buffers(&'a MeshBuffers<'g>),
-}
-
 /// Every index of `mesh` within its vertices.
 fn check_indices(mesh: &MeshData) -> Result<(), DrawError> {
     match mesh.indices.iter().find(|&&i| i as usize >= mesh.vertices.len()) {
@@ -533,35 +523,252 @@ fn set_material(gl: &Gl, face: GLenum, m: &Material) {
     }
 }
 
-fn draw_one(
+/// A timed frame's calls as an application issues them: the first draw sets every state (the
+/// projection, the lights after the view matrix, here the identity since their positions are
+/// in eye space, the light model, the switches and the materials); every later draw issues only
+/// what differs from the draw before it ([`issue_changes`]): a `glMaterial` per changed
+/// parameter, `glColor`, the lights that changed, then its `glLoadMatrix`, its arrays when its
+/// buffers differ, and `glDrawElements`.
+fn issue_frame(
     gl: &Gl,
-    draw: &GlDraw,
+    scene: &GlScene,
     max_lights: usize,
-    arrays: Arrays,
-    texture: Option<&GlTexture>,
-) -> Result<(), DrawError> {
-    let state = &draw.state;
-    if let Some((index, _)) = state
+    buffers: &[MeshBuffers],
+    textures: &[Option<GlTexture>],
+) -> Result<(), GlError> {
+    let mut before: Option<(&GlDraw, &MeshBuffers)> = None;
+    for (index, ((draw, b), t)) in scene.draws.iter().zip(buffers).zip(textures).enumerate() {
+        let at = |problem| GlError::Draw { index, problem };
+        check_lights(&draw.state, max_lights).map_err(at)?;
+        let count = index_count(draw).map_err(at)?;
+        match before {
+            Some((prev, _)) if issue_changes(gl, prev, draw, max_lights) => {}
+            _ => set_state(gl, draw, max_lights, t.as_ref()).map_err(at)?,
+        }
+        if before.is_none_or(|(_, prev)| prev.names != b.names) {
+            let colors = draw.color_array;
+            // SAFETY: a context is current on this thread; both names are buffers it made.
+            unsafe {
+                gl.BindBuffer(gl::ARRAY_BUFFER, b.names[0]);
+                gl.BindBuffer(gl::ELEMENT_ARRAY_BUFFER, b.names[1]);
+            }
+            set_arrays(gl, std::ptr::null(), colors, t.is_some());
+        }
+        before = Some((draw, b));
+        if count > 0 {
+            // SAFETY: a context is current; the modelview is 16 floats, column-major; the bound
+            // buffers hold the mesh, whose indices were checked when they were uploaded.
+            unsafe {
+                gl.LoadMatrixf(draw.modelview.to_cols_array().as_ptr());
+                gl.DrawElements(draw.mode.gl(), count, gl::UNSIGNED_INT, std::ptr::null());
+            }
+        }
+    }
+    end_arrays(gl);
+    Ok(())
+}
+
+/// Issues the calls that take `prev`'s state to `draw`'s when only what an application changes
+/// between objects differs (materials, the current color, lights; with `GL_COLOR_MATERIAL` off,
+/// no replayed calls and the same texture, projection and everything else), leaving the matrix
+/// mode at `GL_MODELVIEW`; `false`, issuing nothing, when something else differs.
+fn issue_changes(gl: &Gl, prev: &GlDraw, draw: &GlDraw, max_lights: usize) -> bool {
+    let (a, b) = (&prev.state, &draw.state);
+    let rest = |s: &LightingState| {
+        let mut rest = *s;
+        rest.lights = LightingState::default().lights;
+        (rest.front, rest.back) = (Material::default(), Material::default());
+        rest.current_color = glam::Vec4::ONE;
+        rest
+    };
+    let same_rest = rest(a) == rest(b)
+        && prev.projection == draw.projection
+        && prev.calls.is_empty()
+        && draw.calls.is_empty()
+        && prev.texture.is_none()
+        && draw.texture.is_none()
+        && (prev.color_array, prev.point_size, prev.line_width)
+            == (draw.color_array, draw.point_size, draw.line_width);
+    if !same_rest || a.color_material.enabled || b.color_material.enabled {
+        return false;
+    }
+    let changed: Vec<usize> = (0..max_lights.min(a.lights.len()))
+        .filter(|&i| a.lights[i] != b.lights[i])
+        .collect();
+    if !changed.is_empty() {
+        // SAFETY: a context is current on this thread.
+        unsafe { gl.LoadIdentity() };
+        for i in changed {
+            set_light(gl, i, &b.lights[i]);
+        }
+    }
+    set_material_changes(gl, (&a.front, &a.back), (&b.front, &b.back));
+    if a.current_color != b.current_color {
+        // SAFETY: a context is current on this thread; the color has four components.
+        unsafe { gl.Color4fv(b.current_color.to_array().as_ptr()) };
+    }
+    true
+}
+
+/// `glMaterial` for each parameter of either face that changed: one `GL_FRONT_AND_BACK` call
+/// where both faces change to the same value, as an application sets a one-sided material.
+fn set_material_changes(
+    gl: &Gl,
+    (front_a, back_a): (&Material, &Material),
+    (front_b, back_b): (&Material, &Material),
+) {
+    let vectors = |m: &Material| [m.ambient, m.diffuse, m.specular, m.emission];
+    let names = [gl::AMBIENT, gl::DIFFUSE, gl::SPECULAR, gl::EMISSION];
+    let faces = |front: bool, back: bool, same: bool| match (front, back) {
+        (true, true) if same => vec![gl::FRONT_AND_BACK],
+        (true, true) => vec![gl::FRONT, gl::BACK],
+        (true, false) => vec![gl::FRONT],
+        (false, true) => vec![gl::BACK],
+        (false, false) => vec![],
+    };
+    for (i, name) in names.into_iter().enumerate() {
+        let (fa, ba, fb, bb) = (
+            vectors(front_a)[i],
+            vectors(back_a)[i],
+            vectors(front_b)[i],
+            vectors(back_b)[i],
+        );
+        for face in faces(fa != fb, ba != bb, fb == bb) {
+            let value = if face == gl::BACK { bb } else { fb };
+            // SAFETY: a context is current on this thread; the value has four components.
+            unsafe { gl.Materialfv(face, name, value.to_array().as_ptr()) };
+        }
+    }
+    let (sa, sb) = (
+        (front_a.shininess, back_a.shininess),
+        (front_b.shininess, back_b.shininess),
+    );
+    for face in faces(sa.0 != sb.0, sa.1 != sb.1, sb.0 == sb.1) {
+        let value = if face == gl::BACK { sb.1 } else { sb.0 };
+        // SAFETY: a context is current on this thread.
+        unsafe { gl.Materialf(face, gl::SHININESS, value) };
+    }
+}
+
+/// An enabled light past `GL_MAX_LIGHTS` is an error.
+fn check_lights(state: &LightingState, max_lights: usize) -> Result<(), DrawError> {
+    match state
         .lights
         .iter()
         .enumerate()
         .find(|(i, l)| *i >= max_lights && l.enabled)
     {
-        return Err(DrawError::TooManyLights { index, max_lights });
+        Some((index, _)) => Err(DrawError::TooManyLights { index, max_lights }),
+        None => Ok(()),
     }
-    let mesh = draw.mesh;
-    // Whole triangles for GL_TRIANGLES (as ffvk draws a mesh); every index for other modes,
-    // whose incomplete last primitives GL drops itself.
-    let count = match draw.mode {
-        super::GlMode::Triangles => mesh.triangle_count() * 3,
-        _ => mesh.indices.len(),
-    };
-    if let Arrays::Client = arrays {
-        // Buffer objects were checked when they were filled.
-        check_indices(mesh)?;
-    }
-    let count = GLsizei::try_from(count).map_err(|_| DrawError::TooManyIndices(count))?;
+}
 
+/// The indices `glDrawElements` draws: whole triangles for `GL_TRIANGLES` (as ffvk draws a
+/// mesh); every index for other modes, whose incomplete last primitives GL drops itself.
+fn index_count(draw: &GlDraw) -> Result<GLsizei, DrawError> {
+    let count = match draw.mode {
+        super::GlMode::Triangles => draw.mesh.triangle_count() * 3,
+        _ => draw.mesh.indices.len(),
+    };
+    GLsizei::try_from(count).map_err(|_| DrawError::TooManyIndices(count))
+}
+
+/// Points the vertex, normal, color and texture coordinate arrays at the [`Vertex`] fields from
+/// `base` (a client address, or null for the bound buffer object) and enables those the draw
+/// reads: colors with a color array, texture coordinates with a texture bound (as in ffvk,
+/// each vertex's (s, t, 0, 1) then goes through the texture matrix).
+fn set_arrays(gl: &Gl, base: *const u8, colors: bool, texcoords: bool) {
+    let stride = std::mem::size_of::<Vertex>() as GLsizei;
+    let field = |offset: usize| base.wrapping_add(offset).cast::<c_void>();
+    // SAFETY: a context is current on this thread; the pointers are read by later draws only,
+    // which the callers make while the arrays (client memory or the bound buffer) live.
+    unsafe {
+        gl.EnableClientState(gl::VERTEX_ARRAY);
+        gl.EnableClientState(gl::NORMAL_ARRAY);
+        if colors {
+            gl.EnableClientState(gl::COLOR_ARRAY);
+        } else {
+            gl.DisableClientState(gl::COLOR_ARRAY);
+        }
+        if texcoords {
+            gl.EnableClientState(gl::TEXTURE_COORD_ARRAY);
+        } else {
+            gl.DisableClientState(gl::TEXTURE_COORD_ARRAY);
+        }
+        gl.TexCoordPointer(
+            2,
+            gl::FLOAT,
+            stride,
+            field(std::mem::offset_of!(Vertex, texcoord)),
+        );
+        gl.VertexPointer(
+            3,
+            gl::FLOAT,
+            stride,
+            field(std::mem::offset_of!(Vertex, position)),
+        );
+        gl.NormalPointer(gl::FLOAT, stride, field(std::mem::offset_of!(Vertex, normal)));
+        gl.ColorPointer(4, gl::FLOAT, stride, field(std::mem::offset_of!(Vertex, color)));
+    }
+}
+
+/// Disables the arrays and unbinds the buffers.
+fn end_arrays(gl: &Gl) {
+    // SAFETY: a context is current on this thread.
+    unsafe {
+        gl.DisableClientState(gl::VERTEX_ARRAY);
+        gl.DisableClientState(gl::NORMAL_ARRAY);
+        gl.DisableClientState(gl::COLOR_ARRAY);
+        gl.DisableClientState(gl::TEXTURE_COORD_ARRAY);
+        gl.BindBuffer(gl::ARRAY_BUFFER, 0);
+        gl.BindBuffer(gl::ELEMENT_ARRAY_BUFFER, 0);
+    }
+}
+
+/// One draw from client arrays with every state set first: the conformance reference's form.
+fn draw_one(gl: &Gl, draw: &GlDraw, max_lights: usize, texture: Option<&GlTexture>) -> Result<(), DrawError> {
+    check_lights(&draw.state, max_lights)?;
+    let mesh = draw.mesh;
+    check_indices(mesh)?;
+    let count = index_count(draw)?;
+    set_state(gl, draw, max_lights, texture)?;
+    if count == 0 {
+        return Ok(());
+    }
+    set_arrays(
+        gl,
+        mesh.vertices.as_ptr().cast(),
+        draw.color_array,
+        texture.is_some(),
+    );
+    // SAFETY: a context is current on this thread. The arrays point into `mesh.vertices`
+    // (repr(C) f32 fields) and glDrawElements reads them and the indices before it returns.
+    // Every index was checked against the vertex count, and the arrays are disabled after the
+    // draw.
+    unsafe {
+        gl.MatrixMode(gl::MODELVIEW);
+        gl.LoadMatrixf(draw.modelview.to_cols_array().as_ptr());
+        gl.DrawElements(
+            draw.mode.gl(),
+            count,
+            gl::UNSIGNED_INT,
+            mesh.indices.as_ptr().cast(),
+        );
+    }
+    end_arrays(gl);
+    Ok(())
+}
+
+/// Every state of `draw` but its modelview and arrays: the projection, the lights (with the
+/// modelview at identity), the materials, the light model, the switches, the texture unit and
+/// the replayed calls. Leaves the matrix mode at `GL_MODELVIEW`.
+fn set_state(
+    gl: &Gl,
+    draw: &GlDraw,
+    max_lights: usize,
+    texture: Option<&GlTexture>,
+) -> Result<(), DrawError> {
+    let state = &draw.state;
     // SAFETY: a context is current on this thread; matrices are 16 floats, column-major as
     // both glam and GL store them.
     unsafe {
@@ -614,66 +821,5 @@ fn draw_one(
     for call in &draw.calls {
         replay(gl, *call);
     }
-    check_draw(gl, "from the replayed calls")?;
-
-    if count == 0 {
-        return Ok(());
-    }
-    let stride = std::mem::size_of::<Vertex>() as GLsizei;
-    // Client arrays are addresses in the mesh; with buffer objects bound, GL reads the same
-    // arguments as offsets into them (from a null base).
-    let (vertex_base, index_base): (*const u8, *const c_void) = match arrays {
-        Arrays::Client => (mesh.vertices.as_ptr().cast(), mesh.indices.as_ptr().cast()),
-        Arrays::Buffers(b) => {
-            // SAFETY: a context is current on this thread; both names are buffers it made.
-            unsafe {
-                gl.BindBuffer(gl::ARRAY_BUFFER, b.names[0]);
-                gl.BindBuffer(gl::ELEMENT_ARRAY_BUFFER, b.names[1]);
-            }
-            (std::ptr::null(), std::ptr::null())
-        }
-    };
-    let field = |offset: usize| vertex_base.wrapping_add(offset).cast::<c_void>();
-    // SAFETY: a context is current on this thread. Client arrays point into `mesh.vertices`
-    // (repr(C) f32 fields, `stride` bytes apart) and glDrawElements reads them before it
-    // returns; buffer objects hold the same bytes. Every index was checked against the vertex
-    // count, and the arrays are disabled (and buffers unbound) after the draw.
-    unsafe {
-        gl.MatrixMode(gl::MODELVIEW);
-        gl.LoadMatrixf(draw.modelview.to_cols_array().as_ptr());
-        gl.EnableClientState(gl::VERTEX_ARRAY);
-        gl.EnableClientState(gl::NORMAL_ARRAY);
-        if draw.color_array {
-            gl.EnableClientState(gl::COLOR_ARRAY);
-        }
-        // Texture coordinates matter only with a texture bound (as in ffvk, each vertex's
-        // (s, t, 0, 1) then goes through the texture matrix).
-        if texture.is_some() {
-            gl.EnableClientState(gl::TEXTURE_COORD_ARRAY);
-        }
-        gl.TexCoordPointer(
-            2,
-            gl::FLOAT,
-            stride,
-            field(std::mem::offset_of!(Vertex, texcoord)),
-        );
-        gl.VertexPointer(
-            3,
-            gl::FLOAT,
-            stride,
-            field(std::mem::offset_of!(Vertex, position)),
-        );
-        gl.NormalPointer(gl::FLOAT, stride, field(std::mem::offset_of!(Vertex, normal)));
-        gl.ColorPointer(4, gl::FLOAT, stride, field(std::mem::offset_of!(Vertex, color)));
-        gl.PointSize(draw.point_size);
-        gl.LineWidth(draw.line_width);
-        gl.DrawElements(draw.mode.gl(), count, gl::UNSIGNED_INT, index_base);
-        gl.DisableClientState(gl::VERTEX_ARRAY);
-        gl.DisableClientState(gl::NORMAL_ARRAY);
-        gl.DisableClientState(gl::COLOR_ARRAY);
-        gl.DisableClientState(gl::TEXTURE_COORD_ARRAY);
-        gl.BindBuffer(gl::ARRAY_BUFFER, 0);
-        gl.BindBuffer(gl::ELEMENT_ARRAY_BUFFER, 0);
-    }
-    Ok(())
+    check_draw(gl, "from the replayed calls")
 }
