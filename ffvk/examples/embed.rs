@@ -154,6 +154,27 @@ pub fn render_frames(
     render_frames_in_set(device_name, validation, size, 0, frames)
 }
 
+/// [`render_frames`] recorded as a GL program issues its draws: one `Lighting::draw` per draw,
+/// with commands of the caller's own between them (the scissor set again before every draw;
+/// before every other draw, the caller's own vertex and index buffers bound over ffvk's, then
+/// `Lighting::forget_bindings`), so that ffvk binds only what its draw needs anew.
+pub fn render_frames_draw_by_draw(
+    device_name: Option<&str>,
+    validation: bool,
+    size: u32,
+    frames: &[EmbedFrame],
+) -> Result<Vec<Vec<u8>>, String> {
+    let mut app = App::new(device_name, validation, size)?;
+    let result = app.render(frames, 0, true);
+    let messages = app.messages();
+    drop(app);
+    let images = result?;
+    if !messages.is_empty() {
+        return Err(format!("validation messages:\n{}", messages.join("\n")));
+    }
+    Ok(images)
+}
+
 /// [`render_frames`] with ffvk's uniform block at descriptor set `set_index`, as a renderer
 /// whose own shaders use the lower sets would ask.
 pub fn render_frames_in_set(
@@ -164,7 +185,7 @@ pub fn render_frames_in_set(
     frames: &[EmbedFrame],
 ) -> Result<Vec<Vec<u8>>, String> {
     let mut app = App::new(device_name, validation, size)?;
-    let result = app.render(frames, set_index);
+    let result = app.render(frames, set_index, false);
     let messages = app.messages();
     drop(app);
     let images = result?;
@@ -608,7 +629,7 @@ impl App {
         Ok((ffvk_device, with_color_array, with_current_color))
     }
 
-    fn render(&mut self, frames: &[EmbedFrame], set_index: u32) -> Result<Vec<Vec<u8>>, String> {
+    fn render(&mut self, frames: &[EmbedFrame], set_index: u32, by_draw: bool) -> Result<Vec<Vec<u8>>, String> {
         let scene = self.scene()?;
         let (ffvk_device, mut with_color_array, mut with_current_color) = self.lightings(set_index)?;
         let mut raster = RasterState::default();
@@ -640,18 +661,54 @@ impl App {
                     })
                     .collect()
             };
-            // One run: an emulation layer passes all the draws it records back to back, and
-            // ffvk binds only what changes between them (draws of one mesh become instances).
-            // SAFETY: cmd is recording inside the rendering pass `begin` started on
-            // attachments of the target's formats, viewport and scissor set; the buffers live
-            // until after the fence wait below; slot 0 is free (the last frame was waited for).
-            unsafe { lighting.draw_run(self.cmd, 0, &draws) }.map_err(|e| e.to_string())?;
+            if by_draw {
+                self.draw_by_draw(lighting, &scene, &draws)?;
+            } else {
+                // One run: an emulation layer passes all the draws it records back to back,
+                // and ffvk binds only what changes between them (draws of one mesh become
+                // instances).
+                // SAFETY: cmd is recording inside the rendering pass `begin` started on
+                // attachments of the target's formats, viewport and scissor set; the buffers
+                // live until after the fence wait below; slot 0 is free (the last frame was
+                // waited for).
+                unsafe { lighting.draw_run(self.cmd, 0, &draws) }.map_err(|e| e.to_string())?;
+            }
             images.push(self.finish(&scene)?);
         }
         drop(with_color_array);
         drop(with_current_color);
         drop(ffvk_device);
         Ok(images)
+    }
+
+    /// Records `draws` one `Lighting::draw` each, with the caller's own commands between them
+    /// (see [`render_frames_draw_by_draw`]).
+    fn draw_by_draw(&self, lighting: &mut Lighting, scene: &Scene, draws: &[LitDraw]) -> Result<(), String> {
+        let d = &self.device;
+        let area = vk::Rect2D {
+            offset: vk::Offset2D::default(),
+            extent: vk::Extent2D {
+                width: self.size,
+                height: self.size,
+            },
+        };
+        for (i, draw) in draws.iter().enumerate() {
+            // SAFETY: cmd is recording inside the rendering pass `begin` started; the buffers
+            // are the scene's, alive until after the fence wait.
+            unsafe {
+                d.cmd_set_scissor(self.cmd, 0, &[area]);
+                if i % 2 == 1 {
+                    // Buffers of the caller's own at ffvk's bindings (as its own draws would
+                    // bind them): ffvk must bind its own again.
+                    d.cmd_bind_vertex_buffers(self.cmd, 0, &[scene.buffers[1].0], &[0]);
+                    d.cmd_bind_index_buffer(self.cmd, scene.index_buffer, 12, vk::IndexType::UINT32);
+                    lighting.forget_bindings();
+                }
+            }
+            // SAFETY: as in `render`; what the caller bound is forgotten above.
+            unsafe { lighting.draw(self.cmd, 0, draw) }.map_err(|e| format!("draw {i}: {e}"))?;
+        }
+        Ok(())
     }
 
     /// Host time to record runs of `objects` draws (see [`record_times`]), `frames` of each kind.

@@ -139,6 +139,44 @@ fn a_run_of_draws_sharing_one_state_with_values_of_their_own_draws_what_a_state_
     finish(r);
 }
 
+/// The binding model: a GL program's frame recorded one `Lighting::draw` per draw, with the
+/// caller's own commands between them (a scissor before each draw; before every other draw, its
+/// own vertex and index buffers bound over ffvk's and `forget_bindings`), draws the same bytes as
+/// the same draws in one run, in every mode.
+#[test]
+fn draws_recorded_one_by_one_between_the_callers_own_commands_draw_what_one_run_draws() {
+    for mode in LightingMode::ALL {
+        let state = embed::gl_state(mode).unwrap().lighting;
+        let frames = [embed::EmbedFrame {
+            state,
+            color_array: true,
+            grid: 4,
+            topology: ffvk::Topology::TriangleList,
+        }];
+        let run = embed::render_frames(None, true, embed::SIZE, &frames).expect("the run renders");
+        let by_draw = embed::render_frames_draw_by_draw(None, true, embed::SIZE, &frames)
+            .expect("the draws render one by one with validation on");
+        if let Some(i) = run[0].chunks(4).zip(by_draw[0].chunks(4)).position(|(a, b)| a != b) {
+            let save = |bytes: &[u8], name: &str| {
+                let image = image::RgbaImage::from_raw(embed::SIZE, embed::SIZE, bytes.to_vec()).unwrap();
+                save_for_inspection(&image, &format!("{}_{name}", mode.name())).display().to_string()
+            };
+            panic!(
+                "{}: pixel {i} is {:?} in the run but {:?} drawn one by one; images {} and {}",
+                mode.name(),
+                &run[0][i * 4..i * 4 + 4],
+                &by_draw[0][i * 4..i * 4 + 4],
+                save(&run[0], "run"),
+                save(&by_draw[0], "draw_by_draw")
+            );
+        }
+        assert_eq!(run[0].len(), by_draw[0].len());
+        // Sixteen teapots, not a blank image.
+        let colors: std::collections::HashSet<&[u8]> = run[0].chunks(4).collect();
+        assert!(colors.len() > 50, "{}: {} colors", mode.name(), colors.len());
+    }
+}
+
 /// Without a color array every vertex takes GL's current color: the same bytes as a color
 /// array holding that color at every vertex, lit through COLOR_MATERIAL in each mode, and
 /// unlit.

@@ -35,8 +35,26 @@
 //! caller's vertex and index buffers and ffvk's per-frame memory, and write the caller's color
 //! attachment (and depth attachment when the draw's [`RasterState`] tests depth), with
 //! blending as that state says. They need the viewport and scissor the caller sets (both are
-//! dynamic state). The bindings stay bound after the call: the caller rebinds whatever it
-//! needs next.
+//! dynamic state). The bindings stay bound after the call.
+//!
+//! # Bindings
+//!
+//! ffvk remembers what it bound, and in which command buffer: its next draw into the same
+//! command buffer ([`Lighting::draw`], [`Lighting::draw_run`] or [`Lighting::record_run`])
+//! binds only what differs, so a caller that records one `draw` per GL draw pays no rebinding
+//! of the pipeline, the state block, the record buffer or unchanged vertex and index buffers.
+//! The caller may record its own commands between ffvk's draws: viewports, scissors, clears,
+//! barriers, dynamic state, the end of one rendering pass and the start of another need nothing
+//! more; after binding anything of its own (a pipeline, descriptor sets, vertex or index
+//! buffers), or resetting a command buffer ffvk drew into, it calls
+//! [`Lighting::forget_bindings`] and ffvk binds everything at its next draw.
+//! [`Lighting::begin_frame`] forgets too. Viewport and scissor are the caller's to set (dynamic
+//! state in every ffvk pipeline); every other raster state is the draw's [`RasterState`], part
+//! of its pipeline.
+//!
+//! What one `draw` per draw still costs against a run is the instancing a run gives: a run
+//! draws consecutive draws of one geometry as instances of one draw command, single draws are
+//! a command each (`ffvk bench`'s draws sweep measures both, BENCHMARKS.md "Many draws").
 //!
 //! # Frame slots
 //!
@@ -104,7 +122,7 @@ use super::pipeline::{
     PipelineConfig, Pipelines, RasterState, Specialize, Target, VertexInput, MAX_AUTO_VARIANTS,
     SMALL_DRAW_VERTICES,
 };
-use super::record::{record, record_in_run, Bound, RunState, Topology};
+use super::record::{record_in_run, Bound, RunState, Topology};
 use super::ring::{Pushed, Ring, RingUse};
 use super::texture::TextureBinding;
 use crate::error::{LightingError, Result};
@@ -263,6 +281,10 @@ pub struct Lighting {
     record_binding: u32,
     /// Draws are staged for the deferred path's G-buffer pass ([`Lighting::set_gbuffer`]).
     gbuffer: bool,
+    /// What the public recording calls last bound, and into which command buffer (module
+    /// docs, "Bindings"): the next such call into the same command buffer binds only what
+    /// differs. Cleared by [`Lighting::begin_frame`] and [`Lighting::forget_bindings`].
+    remembered: std::sync::Mutex<Option<(vk::CommandBuffer, RunState)>>,
     device: Arc<Device>,
 }
 
@@ -310,6 +332,7 @@ impl Lighting {
             last: None,
             record_binding: options.vertex_input.record_binding(),
             gbuffer: false,
+            remembered: std::sync::Mutex::new(None),
             device: device.clone(),
         })
     }
@@ -325,10 +348,33 @@ impl Lighting {
     pub fn begin_frame(&mut self, slot: u32) -> Result<()> {
         self.states.reset(slot)?;
         self.records.reset(slot)?;
+        self.forget_bindings();
         if self.last.as_ref().is_some_and(|last| last.slot == slot) {
             self.last = None;
         }
         Ok(())
+    }
+
+    /// Forgets what ffvk bound: call it after recording commands of your own that bind a
+    /// pipeline, descriptor sets, vertex buffers or an index buffer into a command buffer ffvk
+    /// draws into, and after resetting or beginning anew a command buffer ffvk drew into, before
+    /// ffvk's next draw there ([`Lighting::begin_frame`] forgets too). ffvk then binds everything
+    /// its next draw needs. Viewports, scissors, clears, barriers, dynamic state and rendering
+    /// passes of your own need no call: they bind nothing.
+    pub fn forget_bindings(&self) {
+        *self.remembered.lock().unwrap_or_else(|poisoned| poisoned.into_inner()) = None;
+    }
+
+    /// Runs `record` with what ffvk remembers having bound in `cmd` (nothing, for another
+    /// command buffer than the last), and remembers what it leaves bound.
+    fn with_remembered(&self, cmd: vk::CommandBuffer, record: impl FnOnce(&mut RunState)) {
+        let mut remembered = self.remembered.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+        let mut run = match remembered.take() {
+            Some((last, run)) if last == cmd => run,
+            _ => RunState::default(),
+        };
+        record(&mut run);
+        *remembered = Some((cmd, run));
     }
 
     /// How many frame slots there are.
@@ -394,7 +440,8 @@ impl Lighting {
 
     /// Records one lit draw into `cmd` for frame slot `slot`: binds its pipeline (created now
     /// if it is new), writes its state into the slot's memory and binds it, binds the
-    /// caller's buffers and draws. Fails, recording nothing, when the state is invalid (a
+    /// caller's buffers and draws, binding only what differs from what ffvk remembers having
+    /// bound in `cmd` (module docs, "Bindings"). Fails, recording nothing, when the state is invalid (a
     /// NaN, or a singular modelview while lighting), when the buffers do not match the
     /// vertex layout, or when the pipeline cannot be made.
     ///
@@ -404,11 +451,16 @@ impl Lighting {
     /// rendering pass whose attachments have the [`Target`]'s formats and samples, with
     /// viewport and scissor set; the buffers belong to this device, hold what the geometry
     /// reads, and live until the command buffer has finished executing; the slot was begun
-    /// with [`Lighting::begin_frame`] after its previous use finished.
+    /// with [`Lighting::begin_frame`] after its previous use finished; since ffvk last drew into
+    /// `cmd`, the caller bound nothing of its own there and did not reset it, or called
+    /// [`Lighting::forget_bindings`] after doing so (module docs, "Bindings").
     pub unsafe fn draw(&mut self, cmd: vk::CommandBuffer, slot: u32, draw: &LitDraw) -> Result<()> {
         let staged = self.stage(slot, draw, false)?;
-        // SAFETY: the caller's contract above.
-        unsafe { self.record_staged(cmd, &staged, draw) };
+        let bound = self.bound(&staged, draw);
+        // SAFETY: the caller's contract above: what ffvk remembers as bound in `cmd` is bound.
+        self.with_remembered(cmd, |run| unsafe {
+            record_in_run(&self.device.raw, cmd, &bound, &draw.geometry, run)
+        });
         Ok(())
     }
 
@@ -560,8 +612,8 @@ impl Lighting {
             ));
         }
         let staged: Vec<Staged> = staged.iter().map(|s| s.0).collect();
-        // SAFETY: the caller's contract above.
-        unsafe { self.record_staged_run(cmd, &staged, draws) };
+        // SAFETY: the caller's contract above: what ffvk remembers as bound in `cmd` is bound.
+        self.with_remembered(cmd, |run| unsafe { self.record_staged_run_from(cmd, &staged, draws, run) });
         Ok(())
     }
 
@@ -574,8 +626,10 @@ impl Lighting {
     /// [`Lighting::draw`] records each, but binding only what changes from one draw to the
     /// next: the pipeline when the state's key or the raster state changes, the vertex and
     /// index buffers when they do, the texture's set when it does (each draw's block is bound
-    /// at its own offset). This is the recording scope of a run of draws: no command of the
-    /// caller's comes between them, which is what lets ffvk skip the binds. Every draw is
+    /// at its own offset), starting from what ffvk remembers having bound in `cmd` (module
+    /// docs, "Bindings"). This is the recording scope of a run of draws: no command of the
+    /// caller's comes between them, which lets ffvk draw consecutive draws of one geometry as
+    /// instances of one draw command. Every draw is
     /// checked (and its block written) before anything is recorded, so a bad draw fails the
     /// run with nothing recorded, with [`Error::InRun`](crate::Error::InRun) naming the draw.
     ///
@@ -589,8 +643,9 @@ impl Lighting {
                 index,
                 source: Box::new(e),
             })?;
-        // SAFETY: the caller's contract above; each staged entry was staged for its draw.
-        unsafe { self.record_staged_run(cmd, &staged, draws) };
+        // SAFETY: the caller's contract above; each staged entry was staged for its draw; what
+        // ffvk remembers as bound in `cmd` is bound.
+        self.with_remembered(cmd, |run| unsafe { self.record_staged_run_from(cmd, &staged, draws, run) });
         Ok(())
     }
 
@@ -606,7 +661,22 @@ impl Lighting {
         staged: &[Staged],
         draws: &[LitDraw],
     ) {
-        let mut run = RunState::default();
+        // SAFETY: the caller's contract above; nothing is taken as bound.
+        unsafe { self.record_staged_run_from(cmd, staged, draws, &mut RunState::default()) }
+    }
+
+    /// [`Lighting::record_staged_run`] with `run` bound in `cmd` already.
+    ///
+    /// # Safety
+    ///
+    /// As [`Lighting::record_staged_run`]; what `run` records as bound is bound in `cmd`.
+    unsafe fn record_staged_run_from(
+        &self,
+        cmd: vk::CommandBuffer,
+        staged: &[Staged],
+        draws: &[LitDraw],
+        run: &mut RunState,
+    ) {
         let mut at = 0;
         while let (Some(first), Some(draw)) = (staged.get(at), draws.get(at)) {
             // Consecutive draws of the same geometry with everything bound alike and their
@@ -628,7 +698,7 @@ impl Lighting {
             // SAFETY: the caller's contract above; `run` holds what this loop bound in `cmd`,
             // and nothing else is recorded between its draws; the merged draws' records are
             // consecutive in one buffer.
-            unsafe { record_in_run(&self.device.raw, cmd, &bound, &draw.geometry, &mut run) };
+            unsafe { record_in_run(&self.device.raw, cmd, &bound, &draw.geometry, run) };
             at += count;
         }
     }
@@ -638,19 +708,6 @@ impl Lighting {
         draw.texture
             .filter(|_| Self::textured(draw))
             .map(TextureBinding::set)
-    }
-
-    /// The second half of [`Lighting::draw`]: binds what `staged` found and draws.
-    ///
-    /// # Safety
-    ///
-    /// As [`Lighting::draw`]; `staged` came from [`Lighting::stage`] with the same draw and a
-    /// slot whose frame this command buffer belongs to.
-    pub(crate) unsafe fn record_staged(&self, cmd: vk::CommandBuffer, staged: &Staged, draw: &LitDraw) {
-        let bound = self.bound(staged, draw);
-        // SAFETY: the caller's contract above; the pipeline, layout and set are this
-        // Lighting's and live as long as it does.
-        unsafe { record(&self.device.raw, cmd, &bound, &draw.geometry) };
     }
 
     /// What `draw` binds, with what staging it found.

@@ -364,21 +364,6 @@ unsafe fn bind_set(
     };
 }
 
-/// Binds `bound` into `cmd` and draws `geometry`: [`record_in_run`] with nothing bound before.
-///
-/// # Safety
-///
-/// As [`record_in_run`].
-pub(crate) unsafe fn record(
-    device: &ash::Device,
-    cmd: vk::CommandBuffer,
-    bound: &Bound,
-    geometry: &Geometry,
-) {
-    // SAFETY: the caller's contract, which is record_in_run's.
-    unsafe { record_in_run(device, cmd, bound, geometry, &mut RunState::default()) }
-}
-
 /// Binds what of `bound` differs from what `run` says is bound and draws `geometry`, once
 /// per draw of `bound` (as instances, each reading its own record).
 ///
