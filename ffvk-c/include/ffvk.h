@@ -1151,8 +1151,10 @@ enum FfvkResult ffvkBeginFrame(struct FfvkRenderer *renderer, uint32_t slot);
  (several scopes may follow one `ffvkBeginFrame`; their draws share the slot's memory).
  `cmd` is in the recording state inside the caller's `vkCmdBeginRendering` on attachments of
  the create info's formats, with viewport and scissor set (both dynamic state). Between this
- call and `ffvkEndDraws` the caller records nothing of its own into `cmd`. Records nothing
- itself.
+ call and `ffvkEndDraws` the caller records nothing of its own into `cmd`; between scopes it
+ may (viewports, scissors, clears, barriers, rendering passes), and after binding anything of
+ its own (a pipeline, descriptor sets, vertex or index buffers) or resetting `cmd` it calls
+ `ffvkForgetBindings` before the next scope. Records nothing itself.
 
  # Safety
 
@@ -1192,7 +1194,10 @@ enum FfvkResult ffvkDraw(struct FfvkRenderer *renderer,
  command buffer as one run (binding only what changes between draws; consecutive draws of
  one geometry become instances). Records: bind pipeline, bind ffvk's descriptor sets at
  their dynamic offsets, bind the caller's vertex and index buffers and ffvk's record
- buffer, draw. They stay bound afterwards. A scope without draws records nothing. Errors:
+ buffer, draw, each bind only where it differs from what ffvk last bound in the same command
+ buffer (since `ffvkBeginFrame` or `ffvkForgetBindings`): a scope per draw, as a GL layer
+ records `glDrawElements` by `glDrawElements`, rebinds nothing that did not change. They
+ stay bound afterwards. A scope without draws records nothing. Errors:
  `FFVK_ERROR_INVALID_ARGUMENT` when no scope is open; the draws were checked when added.
 
  # Safety
@@ -1202,6 +1207,19 @@ enum FfvkResult ffvkDraw(struct FfvkRenderer *renderer,
  so until the command buffer has executed.
  */
 enum FfvkResult ffvkEndDraws(struct FfvkRenderer *renderer);
+
+/*
+ Forgets what ffvk bound: the next scope binds everything its draws need. Call it after
+ recording commands of your own that bind a pipeline, descriptor sets, vertex buffers or an
+ index buffer into a command buffer ffvk draws into, or after resetting such a command
+ buffer (`ffvkBeginFrame` forgets too). Records nothing. Errors:
+ `FFVK_ERROR_INVALID_ARGUMENT` for a null renderer or while a scope is open.
+
+ # Safety
+
+ `renderer` is null or live and used by one thread at a time.
+ */
+enum FfvkResult ffvkForgetBindings(struct FfvkRenderer *renderer);
 
 /*
  Makes a texture binding naming the caller's image view (2D, color, sampled as floats, in

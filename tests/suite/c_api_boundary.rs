@@ -504,3 +504,25 @@ fn geometry_vulkan_would_not_draw_is_refused_at_ffvk_draw_naming_field_and_value
         }
     });
 }
+
+/// ffvkForgetBindings belongs between scopes: inside one it is refused, naming the call to make
+/// first, and the scope stays open; a null renderer is refused too.
+#[test]
+fn forgetting_bindings_inside_an_open_scope_is_refused_naming_ffvk_end_draws() {
+    in_draw_scope(|r, _| {
+        // SAFETY: a live renderer in an open scope (in_draw_scope).
+        let result = unsafe { ffvkForgetBindings(r) };
+        let text = message();
+        assert_eq!(result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT, "{text}");
+        assert!(
+            text.starts_with("ffvkForgetBindings: ") && text.contains("ffvkEndDraws"),
+            "{text}"
+        );
+        // SAFETY: as above; the scope is still open, so a second one is refused.
+        let again = unsafe { ffvkBeginDraws(r, vk::CommandBuffer::from_raw(0x1000), 0) };
+        assert_eq!(again, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+    });
+    // SAFETY: null is allowed and refused.
+    let null = unsafe { ffvkForgetBindings(std::ptr::null_mut()) };
+    assert_eq!(null, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+}
