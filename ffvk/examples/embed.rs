@@ -629,7 +629,12 @@ impl App {
         Ok((ffvk_device, with_color_array, with_current_color))
     }
 
-    fn render(&mut self, frames: &[EmbedFrame], set_index: u32, by_draw: bool) -> Result<Vec<Vec<u8>>, String> {
+    fn render(
+        &mut self,
+        frames: &[EmbedFrame],
+        set_index: u32,
+        by_draw: bool,
+    ) -> Result<Vec<Vec<u8>>, String> {
         let scene = self.scene()?;
         let (ffvk_device, mut with_color_array, mut with_current_color) = self.lightings(set_index)?;
         let mut raster = RasterState::default();

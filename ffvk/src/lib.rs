@@ -110,6 +110,6 @@ pub use draw::record::{Geometry, Topology};
 pub use draw::texture::TextureBinding;
 pub use error::{Error, LightingError, MeshError, Result, UnknownName};
 pub use renderer::{
-    Draw, FragmentPath, Frame, FrameStats, Mesh, PipelineStats, Pixels, Renderer, RendererOptions, Texture,
-    Upload,
+    Draw, FragmentPath, Frame, FrameStats, Mesh, PipelineStats, Pixels, Recording, Renderer, RendererOptions,
+    Texture, Upload,
 };

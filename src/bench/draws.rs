@@ -18,7 +18,7 @@ use crate::gl_reference::{time_frames_with, GlDraw, GlScene};
 use crate::Result;
 use ffvk::gl::state::{Cap, Face, GlState, LightParam, LightingState, MaterialParam};
 use ffvk::mesh::{MeshData, Vertex};
-use ffvk::{Draw, Frame, Renderer};
+use ffvk::{Draw, Frame, Recording, Renderer};
 
 /// The image side of the sweep's frames (the emulation frame of the issue that asked for it).
 const SIZE: u32 = 512;
@@ -104,6 +104,9 @@ pub struct DrawsResult {
     /// ffvk the whole `Renderer::measure` call (checking the draws, recording, submission, wait),
     /// for GL its calls and `glFinish`.
     pub frame_ms: Spread,
+    /// ffvk: the same frame recorded one `Lighting::draw` per draw ([`Recording::DrawByDraw`]),
+    /// host time per frame as `frame_ms`; `None` for GL and zink.
+    pub draw_by_draw_ms: Option<Spread>,
     /// ffvk: each measured frame's time from submission to fence alone; `None` for GL.
     pub submit_ms: Option<Spread>,
     /// ffvk: the median host time to record one draw (checking its state, writing its block,
@@ -253,6 +256,17 @@ fn run_point(
         wall.push(start.elapsed().as_secs_f64() * 1e3);
     }
     let grown = grown_per_frame(before, config.frames);
+    // The same frame recorded as one `Lighting::draw` per draw records it.
+    frame.recording = Recording::DrawByDraw;
+    for _ in 0..config.warmup {
+        renderer.measure(&frame)?;
+    }
+    let mut by_draw = Vec::new();
+    for _ in 0..config.frames {
+        let start = Instant::now();
+        renderer.measure(&frame)?;
+        by_draw.push(start.elapsed().as_secs_f64() * 1e3);
+    }
     let per_draw = |ns: &[f64]| median(ns).map(|m| m / 1e3 / f64::from(draws));
     let submit: Vec<f64> = samples.iter().map(|s| s.wall_ns / 1e6).collect();
     let record: Vec<f64> = samples.iter().map(|s| s.record_ns).collect();
@@ -264,6 +278,7 @@ fn run_point(
         draws,
         first_frame_ms,
         frame_ms: Spread::of(&wall).unwrap_or_default(),
+        draw_by_draw_ms: Spread::of(&by_draw),
         submit_ms: Spread::of(&submit),
         record_us_per_draw: per_draw(&record),
         device_us_per_draw: per_draw(&device),
@@ -326,6 +341,7 @@ fn gl_point(
         draws,
         first_frame_ms: timing.first_frame_ns / 1e6,
         frame_ms: Spread::of(&wall).unwrap_or_default(),
+        draw_by_draw_ms: None,
         submit_ms: None,
         record_us_per_draw: None,
         device_us_per_draw: None,
@@ -349,11 +365,12 @@ pub fn draws_markdown(results: &[DrawsResult]) -> String {
          per draw only what changed (a glMaterial per changed parameter, glLoadMatrix) and \
          glDrawElements, binding a draw's buffer objects when they differ from the draw \
          before's. GL is Mesa's llvmpipe in this process; zink is Mesa's GL on the same Vulkan \
-         driver, in a process of its own. With one mesh ffvk draws consecutive draws as \
-         instances of one draw command; with a mesh each, every draw is a command of its \
-         own.\n\n\
-         | meshes | draws | mode | ffvk ms | GL ms | zink ms | ffvk ÷ GL | ffvk ÷ zink | ffvk record µs/draw | ffvk device µs/draw | ffvk RSS KiB/frame |\n\
-         | --- | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n",
+         driver, in a process of its own. ffvk records the frame as one run \
+         (`Lighting::draw_run`: with one mesh, consecutive draws become instances of one draw \
+         command; with a mesh each, every draw is a command of its own), and again one \
+         `Lighting::draw` per draw (\"by draw\": a command each, binding only what changed).\n\n\
+         | meshes | draws | mode | ffvk ms | ffvk by draw ms | by draw ÷ run | GL ms | zink ms | ffvk ÷ GL | ffvk ÷ zink | ffvk record µs/draw | ffvk device µs/draw | ffvk RSS KiB/frame |\n\
+         | --- | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n",
     );
     let fmt = |v: Option<f64>, digits: usize| v.map_or("—".into(), |v| format!("{v:.digits$}"));
     for r in results.iter().filter(|r| r.engine == Engine::Ffvk) {
@@ -365,11 +382,13 @@ pub fn draws_markdown(results: &[DrawsResult]) -> String {
         };
         let (gl, zink) = (anchor(Engine::Gl), anchor(Engine::Zink));
         md.push_str(&format!(
-            "| {} | {} | {} | {:.2} | {} | {} | {} | {} | {} | {} | {:.0} |\n",
+            "| {} | {} | {} | {:.2} | {} | {} | {} | {} | {} | {} | {} | {} | {:.0} |\n",
             r.shape.name(),
             r.draws,
             r.mode.name(),
             r.frame_ms.median,
+            fmt(r.draw_by_draw_ms.map(|s| s.median), 2),
+            fmt(r.draw_by_draw_ms.map(|s| s.median / r.frame_ms.median), 2),
             fmt(gl, 2),
             fmt(zink, 2),
             fmt(gl.map(|g| r.frame_ms.median / g), 2),

@@ -156,10 +156,16 @@ fn draws_recorded_one_by_one_between_the_callers_own_commands_draw_what_one_run_
         let run = embed::render_frames(None, true, embed::SIZE, &frames).expect("the run renders");
         let by_draw = embed::render_frames_draw_by_draw(None, true, embed::SIZE, &frames)
             .expect("the draws render one by one with validation on");
-        if let Some(i) = run[0].chunks(4).zip(by_draw[0].chunks(4)).position(|(a, b)| a != b) {
+        if let Some(i) = run[0]
+            .chunks(4)
+            .zip(by_draw[0].chunks(4))
+            .position(|(a, b)| a != b)
+        {
             let save = |bytes: &[u8], name: &str| {
                 let image = image::RgbaImage::from_raw(embed::SIZE, embed::SIZE, bytes.to_vec()).unwrap();
-                save_for_inspection(&image, &format!("{}_{name}", mode.name())).display().to_string()
+                save_for_inspection(&image, &format!("{}_{name}", mode.name()))
+                    .display()
+                    .to_string()
             };
             panic!(
                 "{}: pixel {i} is {:?} in the run but {:?} drawn one by one; images {} and {}",

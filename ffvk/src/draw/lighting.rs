@@ -362,13 +362,19 @@ impl Lighting {
     /// its next draw needs. Viewports, scissors, clears, barriers, dynamic state and rendering
     /// passes of your own need no call: they bind nothing.
     pub fn forget_bindings(&self) {
-        *self.remembered.lock().unwrap_or_else(|poisoned| poisoned.into_inner()) = None;
+        *self
+            .remembered
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner()) = None;
     }
 
     /// Runs `record` with what ffvk remembers having bound in `cmd` (nothing, for another
     /// command buffer than the last), and remembers what it leaves bound.
     fn with_remembered(&self, cmd: vk::CommandBuffer, record: impl FnOnce(&mut RunState)) {
-        let mut remembered = self.remembered.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+        let mut remembered = self
+            .remembered
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner());
         let mut run = match remembered.take() {
             Some((last, run)) if last == cmd => run,
             _ => RunState::default(),
@@ -613,7 +619,9 @@ impl Lighting {
         }
         let staged: Vec<Staged> = staged.iter().map(|s| s.0).collect();
         // SAFETY: the caller's contract above: what ffvk remembers as bound in `cmd` is bound.
-        self.with_remembered(cmd, |run| unsafe { self.record_staged_run_from(cmd, &staged, draws, run) });
+        self.with_remembered(cmd, |run| unsafe {
+            self.record_staged_run_from(cmd, &staged, draws, run)
+        });
         Ok(())
     }
 
@@ -645,7 +653,9 @@ impl Lighting {
             })?;
         // SAFETY: the caller's contract above; each staged entry was staged for its draw; what
         // ffvk remembers as bound in `cmd` is bound.
-        self.with_remembered(cmd, |run| unsafe { self.record_staged_run_from(cmd, &staged, draws, run) });
+        self.with_remembered(cmd, |run| unsafe {
+            self.record_staged_run_from(cmd, &staged, draws, run)
+        });
         Ok(())
     }
 
@@ -663,6 +673,26 @@ impl Lighting {
     ) {
         // SAFETY: the caller's contract above; nothing is taken as bound.
         unsafe { self.record_staged_run_from(cmd, staged, draws, &mut RunState::default()) }
+    }
+
+    /// Records `staged` one draw command each, as [`Lighting::draw`] per draw records them:
+    /// each binds what differs from the draw before it.
+    ///
+    /// # Safety
+    ///
+    /// As [`Lighting::record_staged_run`].
+    pub(crate) unsafe fn record_staged_draw_by_draw(
+        &self,
+        cmd: vk::CommandBuffer,
+        staged: &[Staged],
+        draws: &[LitDraw],
+    ) {
+        let mut run = RunState::default();
+        for (staged, draw) in staged.iter().zip(draws) {
+            let bound = self.bound(staged, draw);
+            // SAFETY: the caller's contract above; `run` holds what the draws before bound.
+            unsafe { record_in_run(&self.device.raw, cmd, &bound, &draw.geometry, &mut run) };
+        }
     }
 
     /// [`Lighting::record_staged_run`] with `run` bound in `cmd` already.

@@ -170,6 +170,25 @@ pub struct Frame<'a> {
     /// How the fragment mode's draws are lit: [`FragmentPath::Forward`] (the default) or,
     /// where the frame allows it, [`FragmentPath::Deferred`].
     pub fragment_path: FragmentPath,
+    /// How the draws are recorded: as one run (the default), or one draw at a time as an
+    /// embedder recording each GL draw as it comes would ([`Recording`]).
+    pub recording: Recording,
+}
+
+/// How a [`Frame`]'s draws are recorded into the command buffer. Both draw the same image; the
+/// draw-by-draw form is there to measure what a caller of [`Lighting::draw`](crate::Lighting::draw)
+/// pays (`ffvk bench`'s draws sweep).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[non_exhaustive]
+pub enum Recording {
+    /// [`Lighting::draw_run`](crate::Lighting::draw_run): the frame's draws staged together,
+    /// consecutive draws of one geometry drawn as instances of one command.
+    #[default]
+    Run,
+    /// [`Lighting::draw`](crate::Lighting::draw) per draw: each staged on its own (its state
+    /// compared with the draw before's) and recorded as a command of its own, binding only
+    /// what differs from what the draw before bound.
+    DrawByDraw,
 }
 
 /// Where the fragment mode evaluates the equation.
@@ -231,6 +250,7 @@ impl<'a> Frame<'a> {
             depth_test: true,
             draws: Vec::new(),
             fragment_path: FragmentPath::Forward,
+            recording: Recording::Run,
         }
     }
 }

@@ -26,7 +26,7 @@ mod record;
 mod texture;
 mod upload;
 pub use deferred::GBUFFER_BYTES_PER_PIXEL;
-pub use frame::{Draw, FragmentPath, Frame, FrameStats, Mesh, PipelineStats, Pixels};
+pub use frame::{Draw, FragmentPath, Frame, FrameStats, Mesh, PipelineStats, Pixels, Recording};
 use queries::Queries;
 pub use texture::Texture;
 pub use upload::Upload;
@@ -421,7 +421,10 @@ impl Renderer {
         let cpu = self.device.info().is_cpu();
         let eligible = deferred::eligible(frame, self.lighting.specialize(), cpu);
         self.lighting.set_gbuffer(eligible.is_some());
-        let staged = self.lighting.stage_run(0, &lits).map_err(|(_, e)| e);
+        let staged = match frame.recording {
+            Recording::Run => self.lighting.stage_run(0, &lits).map_err(|(_, e)| e),
+            Recording::DrawByDraw => lits.iter().map(|d| self.lighting.stage(0, d, false)).collect(),
+        };
         self.lighting.set_gbuffer(false);
         let mut staged = staged?;
         // The lighting pass reads the records from one buffer: a frame whose records span two

@@ -5,7 +5,7 @@ use ash::vk;
 
 use super::attachments::{area_and_viewport, attachment_barriers, color_attachment, depth_attachment};
 use super::deferred::{record_deferred, DeferredPass};
-use super::{subresource, Frame, Pass, Renderer, Targets};
+use super::{subresource, Frame, Pass, Recording, Renderer, Targets};
 use crate::draw::lighting::{Lighting, LitDraw, Staged};
 use crate::draw::record::Geometry;
 use crate::error::{vk_error, Error, Result};
@@ -139,7 +139,12 @@ unsafe fn record_pass(
     // outlive the submission; slot 0 was begun after the last frame's fence. The draws are one
     // run: nothing else is recorded between them.
     // SAFETY: as above; staged[i] was staged for lits[i] in this frame's slot.
-    unsafe { lighting.record_staged_run(cmd, staged, lits) };
+    unsafe {
+        match frame.recording {
+            Recording::Run => lighting.record_staged_run(cmd, staged, lits),
+            Recording::DrawByDraw => lighting.record_staged_draw_by_draw(cmd, staged, lits),
+        }
+    };
     let record_ns = draws_start.elapsed().as_nanos() as f64;
     // SAFETY: as above; the pass begun above ends here.
     unsafe { vkd.cmd_end_rendering(cmd) };
