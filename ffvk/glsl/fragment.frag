@@ -4,8 +4,7 @@
 // the interpolated direction renormalized, times the interpolated length, so that an
 // unnormalized normal (scaled modelview, no NORMALIZE) still shows as in GL.
 layout(location = 0) in vec4 eye_position;
-layout(location = 1) in vec3 normal_direction;
-layout(location = 2) in float normal_length;
+layout(location = 1) in vec4 normal;  // xyz: the direction; w: the length
 layout(location = 3) in vec4 color;
 #ifdef VARYING_MATERIALS
 // The draw's materials (fragment.vert), for small draws: flat inputs cost lavapipe a setup
@@ -59,7 +58,7 @@ layout(location = 4) in vec4 stq;
 void main() {
 #ifdef GBUFFER
     g_position = eye_position;
-    g_normal = vec4(unit(normal_direction) * normal_length, gl_FrontFacing ? 1.0 : -1.0);
+    g_normal = vec4(unit(normal.xyz) * normal.w, gl_FrontFacing ? 1.0 : -1.0);
     g_color = color;
     g_record = record_index + 1u;
 #else
@@ -77,7 +76,7 @@ void main() {
         lit.c_pri = color;
         lit.c_sec = vec4(0.0, 0.0, 0.0, 1.0);
     } else {
-        vec3 n = unit(normal_direction) * normal_length;
+        vec3 n = unit(normal.xyz) * normal.w;
         bool back_face = two_side() && !gl_FrontFacing;
         lit = back_face ? light_equation(eye_position, -n, face_material(true, color))
                         : light_equation(eye_position, n, face_material(false, color));

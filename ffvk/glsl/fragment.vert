@@ -11,8 +11,9 @@ layout(location = 2) in vec4 in_color;
 #endif
 
 layout(location = 0) out vec4 eye_position;
-layout(location = 1) out vec3 normal_direction;
-layout(location = 2) out float normal_length;
+// The normal's direction (xyz) and length (w) in one varying: lavapipe's triangle setup costs
+// per varying slot, and a float alone takes a slot.
+layout(location = 1) out vec4 normal;
 layout(location = 3) out vec4 color;
 #ifdef VARYING_MATERIALS
 // The draw's materials, the same for every vertex of it (fragment.frag).
@@ -67,8 +68,8 @@ void main() {
     s_rm = vec2(in_normal_matrix_0.w, in_normal_matrix_1.w);
 #endif
     vec3 n = eye_normal(in_normal);
-    normal_length = length(n);
-    normal_direction = normal_length > 0.0 ? n / normal_length : vec3(0.0);
+    float normal_length = length(n);
+    normal = vec4(normal_length > 0.0 ? n / normal_length : vec3(0.0), normal_length);
     // Lighting off: the clamped current color (section 2.14.6); lighting on: unclamped, as
     // COLOR_MATERIAL takes it.
     color = lighting_enabled() ? in_color : clamp(in_color, 0.0, 1.0);
