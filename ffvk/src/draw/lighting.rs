@@ -21,7 +21,7 @@
 //! still uses it (wait for its fences or the device).
 //!
 //! The pipelines read the caller's vertex bindings per vertex and ffvk's draw records per
-//! instance, at the lowest binding number the caller's [`VertexInput`] leaves free, as
+//! instance, at the lowest binding number the caller's [`VertexInput`](super::pipeline::VertexInput) leaves free, as
 //! attribute locations 4-19 ([`DrawRecord`]); the device needs `maxVertexInputAttributes` ≥ 20
 //! ([`LightingError::VertexInputLimit`] otherwise). Instancing and `firstInstance` are ffvk's.
 //!
@@ -118,9 +118,9 @@ use std::sync::Arc;
 use ash::vk;
 
 pub use super::lit::{DrawValues, LitDraw};
+pub use super::options::{LightingOptions, MAX_FRAMES_IN_FLIGHT};
 use super::pipeline::{
-    PipelineConfig, Pipelines, RasterState, Specialize, Target, VertexInput, MAX_AUTO_VARIANTS,
-    SMALL_DRAW_VERTICES,
+    PipelineConfig, Pipelines, RasterState, Specialize, MAX_AUTO_VARIANTS, SMALL_DRAW_VERTICES,
 };
 use super::record::{record_in_run, Bound, RunState, Topology};
 use super::ring::{Pushed, Ring, RingUse};
@@ -185,79 +185,6 @@ struct Variant {
     /// The deferred path's G-buffer pass ([`Lighting::set_gbuffer`]).
     gbuffer: bool,
 }
-
-/// The most frame slots a [`Lighting`] keeps ([`LightingOptions::frames_in_flight`]): a
-/// caller waits for a frame long before this many are in flight, and a count past it is
-/// refused before anything is allocated for it.
-pub const MAX_FRAMES_IN_FLIGHT: u32 = 64;
-
-/// How to make a [`Lighting`].
-#[derive(Debug, Clone)]
-#[non_exhaustive]
-pub struct LightingOptions {
-    /// The caller's attachments.
-    pub target: Target,
-    /// The caller's vertex layout.
-    pub vertex_input: VertexInput,
-    /// Frame slots: how many frames the caller records before it waits for the oldest.
-    pub frames_in_flight: u32,
-    /// The descriptor set index of ffvk's state block in the pipeline layout (0 unless the
-    /// caller's shaders share the layout's lower sets). ffvk uses sets `set_index` (the state
-    /// block), `set_index + 1` (the texture) and `set_index + 2` (the draw records, read by
-    /// the fragment mode), so `set_index + 2` must be below `maxBoundDescriptorSets`.
-    pub set_index: u32,
-    /// The caller's pipeline cache; `None` makes ffvk's own.
-    pub pipeline_cache: Option<vk::PipelineCache>,
-    /// Specialized pipelines per lighting state, or the uber-shader.
-    pub specialize: Specialize,
-}
-
-impl LightingOptions {
-    /// Options for `target` and `vertex_input`: one frame slot, set 0, ffvk's own cache,
-    /// [`Specialize::Auto`].
-    pub fn new(target: Target, vertex_input: VertexInput) -> Self {
-        LightingOptions {
-            target,
-            vertex_input,
-            frames_in_flight: 1,
-            set_index: 0,
-            pipeline_cache: None,
-            specialize: Specialize::Auto,
-        }
-    }
-}
-
-impl LightingOptions {
-    /// Checks what needs no device: 1 ..= [`MAX_FRAMES_IN_FLIGHT`] frame slots, the target's
-    /// formats and samples ([`Target::validate`]) and the vertex layout
-    /// ([`VertexInput::validate`]). [`Lighting::new`] checks this first, then the device.
-    pub fn validate(&self) -> Result<()> {
-        match self.frames_in_flight {
-            0 => return Err(LightingError::NoFrameSlots.into()),
-            count if count > MAX_FRAMES_IN_FLIGHT => {
-                return Err(LightingError::TooManyFrameSlots {
-                    count,
-                    max: MAX_FRAMES_IN_FLIGHT,
-                }
-                .into())
-            }
-            _ => {}
-        }
-        self.target.validate()?;
-        self.vertex_input.validate()
-    }
-}
-
-with_fields!(LightingOptions {
-    /// Sets [`frames_in_flight`](LightingOptions::frames_in_flight).
-    with_frames_in_flight => frames_in_flight: u32,
-    /// Sets [`set_index`](LightingOptions::set_index).
-    with_set_index => set_index: u32,
-    /// Sets [`pipeline_cache`](LightingOptions::pipeline_cache).
-    with_pipeline_cache => pipeline_cache: Option<vk::PipelineCache>,
-    /// Sets [`specialize`](LightingOptions::specialize).
-    with_specialize => specialize: Specialize,
-});
 
 // Recording takes &mut self; the type itself may move between and be shared by threads.
 const _: () = {
@@ -454,7 +381,7 @@ impl Lighting {
     /// # Safety
     ///
     /// `cmd` is a command buffer of this device in the recording state, inside a dynamic
-    /// rendering pass whose attachments have the [`Target`]'s formats and samples, with
+    /// rendering pass whose attachments have the [`Target`](super::pipeline::Target)'s formats and samples, with
     /// viewport and scissor set; the buffers belong to this device, hold what the geometry
     /// reads, and live until the command buffer has finished executing; the slot was begun
     /// with [`Lighting::begin_frame`] after its previous use finished; since ffvk last drew into

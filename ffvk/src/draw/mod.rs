@@ -7,6 +7,7 @@ mod formats;
 pub mod gl_primitives;
 pub mod lighting;
 mod lit;
+mod options;
 pub mod pipeline;
 mod raster;
 pub mod record;
