@@ -111,6 +111,36 @@ fn a_tiny_sweep_runs_every_point_and_writes_csv_json_and_plots() {
         }
     }
     assert!(ffvk_cli::bench::markdown(&report).contains("### Many draws, each with its own material"));
+    // The floor: each frame class through every path that draws it (lavapipe has
+    // VK_EXT_multi_draw), each frame measured, in the summary against GL.
+    let classes = ffvk_cli::bench::floor::frame_classes(&config.draw_counts);
+    let paths = |shape| {
+        ffvk_cli::bench::floor::FloorPath::ALL
+            .into_iter()
+            .filter(move |p| p.draws_shape(shape))
+    };
+    let expected: Vec<_> = classes
+        .iter()
+        .flat_map(|&(shape, draws)| paths(shape).map(move |p| (p, shape, draws)))
+        .collect();
+    let floor: Vec<_> = report.floor.iter().map(|r| (r.path, r.shape, r.draws)).collect();
+    assert_eq!(floor, expected, "notes: {:?}", report.notes);
+    for r in &report.floor {
+        assert!(r.frame_ms.min > 0.0 && r.frame_ms.min <= r.frame_ms.max, "{r:?}");
+    }
+    let markdown = ffvk_cli::bench::markdown(&report);
+    let table = markdown
+        .split("### Floor: the same frames in plain Vulkan")
+        .nth(1)
+        .expect("the floor's table");
+    assert!(
+        table.contains("| path | frame | draws | ms | ÷ GL | ÷ zink |"),
+        "{table}"
+    );
+    assert!(
+        table.contains("| push_constants | spheres, one mesh | 1024 |"),
+        "{table}"
+    );
     assert!(report.env.mesa_version.starts_with(|c: char| c.is_ascii_digit()));
 
     let dir = output_dir().join("bench");
@@ -166,6 +196,11 @@ fn a_tiny_sweep_runs_every_point_and_writes_csv_json_and_plots() {
     }
     assert!(json["env"]["lp_num_threads"].is_string());
     assert!(json["summary"]["specialization_speedup"].is_object());
+    let floor = json["floor"].as_array().unwrap();
+    assert_eq!(floor.len(), report.floor.len());
+    assert!(floor
+        .iter()
+        .all(|r| r["path"].is_string() && r["frame_ms"]["median"].is_number()));
 
     // Plots: PNGs of the plotters size with more than a background.
     for name in ["time_vs_vertices.png", "time_vs_pixels.png", "time_vs_lights.png"] {
