@@ -21,7 +21,7 @@ use ffvk::mesh::{MeshData, Vertex};
 use ffvk::{Draw, Frame, Recording, Renderer};
 
 /// The image side of the sweep's frames (the emulation frame of the issue that asked for it).
-const SIZE: u32 = 512;
+pub const SIZE: u32 = 512;
 
 /// The modes the sweep draws.
 pub const DRAW_MODES: [BenchMode; 3] = [BenchMode::Vertex, BenchMode::Fragment, BenchMode::Flat];
@@ -68,7 +68,7 @@ impl DrawShape {
     }
 
     /// The mesh each draw draws.
-    fn mesh(self) -> MeshData {
+    pub fn mesh(self) -> MeshData {
         match self {
             DrawShape::Spheres => MeshData::uv_sphere(12, 11),
             _ => quad(),
@@ -76,7 +76,7 @@ impl DrawShape {
     }
 
     /// The scale that fits the mesh in a grid cell of side 1.
-    fn fit(self) -> f32 {
+    pub(crate) fn fit(self) -> f32 {
         match self {
             DrawShape::Spheres => 0.45,
             _ => 0.9,
@@ -132,7 +132,7 @@ fn quad() -> MeshData {
 /// The frame of `draws` quads: a grid filling the view, draw `i` with its own diffuse color and
 /// shininess; a directional and a point light (the point light's attenuation is a per-light
 /// term the shaders must evaluate for every draw).
-fn scene(mode: BenchMode, draws: u32, fit: f32) -> Result<(Vec<(Mat4, LightingState)>, Mat4)> {
+pub(crate) fn scene(mode: BenchMode, draws: u32, fit: f32) -> Result<(Vec<(Mat4, LightingState)>, Mat4)> {
     let mut gl = GlState::new();
     gl.lighting_mode(mode.lighting_mode());
     for cap in [Cap::Lighting, Cap::Light(0), Cap::Light(1)] {
@@ -222,6 +222,27 @@ pub(super) fn run_draws(
     Ok(out)
 }
 
+/// The sweep's frame of `draws` draws of `shape` in `mode` at `size`², drawing `meshes` in
+/// turn (uploads of [`DrawShape::mesh`]; one, or one per draw): what ffvk draws at a point,
+/// and what the floor ([`super::floor`]) is checked against at any size.
+pub fn draws_frame(
+    shape: DrawShape,
+    draws: u32,
+    mode: BenchMode,
+    size: u32,
+    meshes: &[ffvk::Mesh],
+) -> Result<Frame<'_>> {
+    let (objects, projection) = scene(mode, draws, shape.fit())?;
+    let mut frame = Frame::new(size, size);
+    frame.clear_color = CLEAR;
+    frame.draws = objects
+        .iter()
+        .zip(meshes.iter().cycle())
+        .map(|((modelview, state), mesh)| Draw::new(mesh, *modelview, projection, *state))
+        .collect();
+    Ok(frame)
+}
+
 /// One point of the sweep: ffvk's frame of `draws` draws of `shape` in `mode` (drawing `meshes`
 /// in turn, the uploads of `mesh`) and GL's of the same calls.
 fn run_point(
@@ -233,14 +254,7 @@ fn run_point(
     mode: BenchMode,
 ) -> Result<Vec<DrawsResult>> {
     let mut out = Vec::new();
-    let (objects, projection) = scene(mode, draws, shape.fit())?;
-    let mut frame = Frame::new(SIZE, SIZE);
-    frame.clear_color = CLEAR;
-    frame.draws = objects
-        .iter()
-        .zip(meshes.iter().cycle())
-        .map(|((modelview, state), mesh)| Draw::new(mesh, *modelview, projection, *state))
-        .collect();
+    let frame = draws_frame(shape, draws, mode, SIZE, meshes)?;
     let start = Instant::now();
     renderer.measure(&frame)?;
     let first_frame_ms = start.elapsed().as_secs_f64() * 1e3;

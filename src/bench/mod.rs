@@ -24,6 +24,7 @@
 
 mod draw_cost;
 pub mod draws;
+pub mod floor;
 mod format;
 mod measure;
 mod plots;
@@ -359,6 +360,8 @@ pub struct BenchReport {
     pub draw_cost: Option<DrawCost>,
     /// The draws sweep: frames of many draws, each with its own material.
     pub draws: Vec<draws::DrawsResult>,
+    /// The floor: the draws sweep's frames drawn by a plain Vulkan program, without ffvk.
+    pub floor: Vec<floor::FloorResult>,
     /// What was left out and why (the GL anchor without a GL driver or a matching device, GL
     /// points over GL_MAX_LIGHTS).
     pub notes: Vec<String>,
@@ -591,6 +594,8 @@ pub fn run_sweep(
     );
     let mut draws = draws::run_draws(config, &mut draws_renderer, gl.as_ref(), progress)?;
     drop(draws_renderer);
+    // The floor on a device of its own, after the draws sweep.
+    let floor = floor::run_floor(config, options, progress, &mut notes)?;
     let mut results = results;
     let mut env = env;
     if let Some(program) = &config.zink {
@@ -620,6 +625,7 @@ pub fn run_sweep(
         summary,
         draw_cost,
         draws,
+        floor,
         notes,
     })
 }

@@ -274,6 +274,10 @@ pub fn markdown(report: &BenchReport) -> String {
     }
     if !report.draws.is_empty() {
         let _ = write!(m, "\n{}", super::draws::draws_markdown(&report.draws));
+        let floor = super::floor::floor_markdown(&report.floor, &report.draws);
+        if !floor.is_empty() {
+            let _ = write!(m, "\n{floor}");
+        }
     }
 
     let s = &report.summary;
@@ -497,6 +501,7 @@ mod tests {
             summary,
             draw_cost: None,
             draws: Vec::new(),
+            floor: Vec::new(),
             notes: vec!["a note".into()],
         }
     }

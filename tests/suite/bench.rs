@@ -111,6 +111,36 @@ fn a_tiny_sweep_runs_every_point_and_writes_csv_json_and_plots() {
         }
     }
     assert!(ffvk_cli::bench::markdown(&report).contains("### Many draws, each with its own material"));
+    // The floor: each frame class through every path that draws it (lavapipe has
+    // VK_EXT_multi_draw), each frame measured, in the summary against GL.
+    let classes = ffvk_cli::bench::floor::frame_classes(&config.draw_counts);
+    let paths = |shape| {
+        ffvk_cli::bench::floor::FloorPath::ALL
+            .into_iter()
+            .filter(move |p| p.draws_shape(shape))
+    };
+    let expected: Vec<_> = classes
+        .iter()
+        .flat_map(|&(shape, draws)| paths(shape).map(move |p| (p, shape, draws)))
+        .collect();
+    let floor: Vec<_> = report.floor.iter().map(|r| (r.path, r.shape, r.draws)).collect();
+    assert_eq!(floor, expected, "notes: {:?}", report.notes);
+    for r in &report.floor {
+        assert!(r.frame_ms.min > 0.0 && r.frame_ms.min <= r.frame_ms.max, "{r:?}");
+    }
+    let markdown = ffvk_cli::bench::markdown(&report);
+    let table = markdown
+        .split("### Floor: the same frames in plain Vulkan")
+        .nth(1)
+        .expect("the floor's table");
+    assert!(
+        table.contains("| path | frame | draws | ms | ÷ GL | ÷ zink |"),
+        "{table}"
+    );
+    assert!(
+        table.contains("| push_constants | spheres, one mesh | 1024 |"),
+        "{table}"
+    );
     assert!(report.env.mesa_version.starts_with(|c: char| c.is_ascii_digit()));
 
     let dir = output_dir().join("bench");
@@ -166,6 +196,11 @@ fn a_tiny_sweep_runs_every_point_and_writes_csv_json_and_plots() {
     }
     assert!(json["env"]["lp_num_threads"].is_string());
     assert!(json["summary"]["specialization_speedup"].is_object());
+    let floor = json["floor"].as_array().unwrap();
+    assert_eq!(floor.len(), report.floor.len());
+    assert!(floor
+        .iter()
+        .all(|r| r["path"].is_string() && r["frame_ms"]["median"].is_number()));
 
     // Plots: PNGs of the plotters size with more than a background.
     for name in ["time_vs_vertices.png", "time_vs_pixels.png", "time_vs_lights.png"] {
@@ -314,4 +349,84 @@ fn the_jobs_sweep_times_every_number_of_workers_on_a_suite_that_passes() {
     let json: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("jobs.json")).unwrap()).unwrap();
     assert_eq!(json["points"].as_array().unwrap().len(), 2);
+}
+
+/// The floor (a plain Vulkan program, no ffvk pipelines) draws the draws sweep's frame as ffvk
+/// draws it, through every data path: each path's image equals ffvk's within 1/255 per channel
+/// (both evaluate GL's equation in single precision in the same order, and on lavapipe agree to
+/// the bit, but another driver may round a channel apart), and the paths agree with each other
+/// exactly (the same shader but for where the record comes from).
+#[test]
+fn the_floor_draws_the_draws_sweeps_frames_as_ffvk_does_through_every_path() {
+    use ffvk_cli::bench::draws::draws_frame;
+    use ffvk_cli::bench::floor::{floor_images, FloorPath};
+    use ffvk_cli::bench::BenchMode;
+
+    let options = RendererOptions::default()
+        .with_device(None)
+        .with_validation(Validation::Required);
+    let mut renderer = crate::support::renderer_from(options.clone());
+    for (shape, draws, side) in [
+        (DrawShape::Spheres, 16, 96),
+        (DrawShape::OneQuadMesh, 16, 96),
+        (DrawShape::QuadMeshEach, 9, 96),
+        // More draws than lavapipe's maxMultiDrawCount (2,048): the multi-draw in batches.
+        (DrawShape::QuadMeshEach, 2_100, 256),
+    ] {
+        let mesh = shape.mesh();
+        let uploads = if shape == DrawShape::QuadMeshEach {
+            draws
+        } else {
+            1
+        };
+        let meshes: Vec<_> = (0..uploads).map(|_| renderer.upload(&mesh).unwrap()).collect();
+        let frame = draws_frame(shape, draws, BenchMode::Vertex, side, &meshes).unwrap();
+        let ffvk = renderer.render(&frame).unwrap();
+        let images = floor_images(&options, shape, draws, side).unwrap();
+
+        // Lavapipe has VK_EXT_multi_draw: every path that draws the shape ran.
+        let expected: Vec<FloorPath> = FloorPath::ALL
+            .into_iter()
+            .filter(|p| p.draws_shape(shape))
+            .collect();
+        let ran: Vec<FloorPath> = images.iter().map(|(p, _)| *p).collect();
+        assert_eq!(ran, expected, "{shape:?}");
+
+        // The clear color as stored: an empty frame's pixel.
+        let mut empty = ffvk::Frame::new(side, side);
+        empty.clear_color = frame.clear_color;
+        let clear = renderer.render(&empty).unwrap().pixel(0, 0).unwrap();
+        let drawn = ffvk.rgba().chunks(4).filter(|p| *p != clear).count();
+        assert!(
+            drawn > (side * side / 4) as usize,
+            "{shape:?}: ffvk drew {drawn} pixels"
+        );
+        for (path, image) in &images {
+            assert_eq!(image.len(), ffvk.rgba().len(), "{shape:?} {path:?}");
+            let worst = image
+                .iter()
+                .zip(ffvk.rgba())
+                .map(|(a, b)| a.abs_diff(*b))
+                .max()
+                .unwrap_or(0);
+            let apart = image
+                .chunks(4)
+                .zip(ffvk.rgba().chunks(4))
+                .filter(|(a, b)| a != b)
+                .count();
+            assert!(
+                worst <= 1,
+                "{shape:?} through {}: {apart} pixels differ from ffvk's, by up to {worst}/255",
+                path.name()
+            );
+            assert_eq!(
+                image,
+                &images[0].1,
+                "{shape:?}: {} and {} differ",
+                path.name(),
+                images[0].0.name()
+            );
+        }
+    }
+    crate::support::finish(renderer);
 }
