@@ -254,7 +254,7 @@ fn run_point(
     mode: BenchMode,
 ) -> Result<Vec<DrawsResult>> {
     let mut out = Vec::new();
-    let frame = draws_frame(shape, draws, mode, SIZE, meshes)?;
+    let mut frame = draws_frame(shape, draws, mode, SIZE, meshes)?;
     let start = Instant::now();
     renderer.measure(&frame)?;
     let first_frame_ms = start.elapsed().as_secs_f64() * 1e3;

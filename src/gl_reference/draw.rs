@@ -170,7 +170,11 @@ impl<'g> GlTexture<'g> {
     /// = levels − 1; any other image keeps GL's default of 1000, so that GL, like ffvk
     /// ([`ffvk::gl::texture::texturing_applies`]), finds it incomplete under a mipmap filter
     /// rather than complete at its levels. Leaves the texture bound to `GL_TEXTURE_2D`.
-    pub(super) fn upload(gl: &'g Gl, image: &TextureImage, sampling: &Sampling) -> Result<GlTexture<'g>, DrawError> {
+    pub(super) fn upload(
+        gl: &'g Gl,
+        image: &TextureImage,
+        sampling: &Sampling,
+    ) -> Result<GlTexture<'g>, DrawError> {
         for (level, l) in image.levels().iter().enumerate() {
             let fits = GLsizei::try_from(l.width()).is_ok() && GLsizei::try_from(l.height()).is_ok();
             if !fits || Some(l.rgba().len()) != (l.width() as usize).checked_mul(l.height() as usize * 4) {

@@ -6,8 +6,8 @@ use std::time::Instant;
 
 use glam::Vec4;
 
-use super::bindings::{self as gl, Gl};
 use super::bindings::types::GLuint;
+use super::bindings::{self as gl, Gl};
 use super::draw::{
     begin_frame, check, check_lights, end_arrays, index_count, max_lights, set_arrays, set_light, set_state,
     GlTexture, MeshBuffers,
