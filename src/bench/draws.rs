@@ -186,6 +186,17 @@ fn median(values: &[f64]) -> Option<f64> {
     Spread::of(values).map(|s| s.median)
 }
 
+/// One frame timed as an application draws it: timestamps around the pass, no pipeline
+/// statistics query (lavapipe counts its statistics in every draw and every fragment shader
+/// invocation while one is active, which no application frame pays).
+fn frame_stats(renderer: &mut Renderer, frame: &Frame) -> Result<ffvk::FrameStats> {
+    renderer
+        .measure_frames(frame, 1)?
+        .into_iter()
+        .next()
+        .ok_or_else(|| crate::Error::Bench("a timed frame returned no stats".into()))
+}
+
 /// Runs the draws sweep of `config` with `renderer` (and the GL anchor, when there is one).
 pub(super) fn run_draws(
     config: &SweepConfig,
@@ -256,29 +267,29 @@ fn run_point(
     let mut out = Vec::new();
     let mut frame = draws_frame(shape, draws, mode, SIZE, meshes)?;
     let start = Instant::now();
-    renderer.measure(&frame)?;
+    frame_stats(renderer, &frame)?;
     let first_frame_ms = start.elapsed().as_secs_f64() * 1e3;
     for _ in 1..config.warmup {
-        renderer.measure(&frame)?;
+        frame_stats(renderer, &frame)?;
     }
     let before = resident_kib();
     let mut wall = Vec::new();
     let mut samples = Vec::new();
     for _ in 0..config.frames {
         let start = Instant::now();
-        samples.push(renderer.measure(&frame)?);
+        samples.push(frame_stats(renderer, &frame)?);
         wall.push(start.elapsed().as_secs_f64() * 1e3);
     }
     let grown = grown_per_frame(before, config.frames);
     // The same frame recorded as one `Lighting::draw` per draw records it.
     frame.recording = Recording::DrawByDraw;
     for _ in 0..config.warmup {
-        renderer.measure(&frame)?;
+        frame_stats(renderer, &frame)?;
     }
     let mut by_draw = Vec::new();
     for _ in 0..config.frames {
         let start = Instant::now();
-        renderer.measure(&frame)?;
+        frame_stats(renderer, &frame)?;
         by_draw.push(start.elapsed().as_secs_f64() * 1e3);
     }
     let per_draw = |ns: &[f64]| median(ns).map(|m| m / 1e3 / f64::from(draws));

@@ -421,18 +421,16 @@ impl Lighting {
         };
         draw.state.check_draw(values, draw.modelview)?;
         let record = DrawRecord::with_values(draw.state, values, draw.modelview);
-        // The key is made once: to compare with the last state's, and kept when it differs.
+        // The state is compared in place with the last one's key; a key is made only for a
+        // state that differs, and kept.
         let in_slot = self.last.as_ref().filter(|last| last.slot == slot);
-        let key = match in_slot {
-            Some(_) if same_state => None,
-            _ => Some(StateKey::new(draw.state, draw.projection)),
+        let changed = match in_slot {
+            Some(_) if same_state => false,
+            Some(last) => !last.key.matches(draw.state, draw.projection),
+            None => true,
         };
-        let changed = match (in_slot, key) {
-            (Some(last), Some(key)) => last.key != key,
-            (Some(_), None) => false,
-            (None, _) => true,
-        };
-        if let (true, Some(key)) = (changed, key) {
+        if changed {
+            let key = StateKey::new(draw.state, draw.projection);
             draw.state.check_drawable()?;
             let block = StateBlock::new(draw.state, draw.projection);
             let block = self

@@ -456,8 +456,10 @@ fn pack_lights(lights: &[Light; MAX_LIGHTS]) -> ([GpuLight; MAX_LIGHTS], u32) {
 
 /// What of a draw its [`StateBlock`] is made from: its [`LightingState`] but the materials,
 /// the current color, `GL_RESCALE_NORMAL` and the mode, and its projection. Two draws with
-/// equal keys share a block (and a pipeline, for equal raster states and texturing).
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// equal keys share a block (and a pipeline, for equal raster states and texturing). The block
+/// packs the enabled lights only, so keys are equal when every light's enable is and the
+/// enabled lights' values are: a disabled light's values never split a block.
+#[derive(Debug, Clone, Copy)]
 pub(crate) struct StateKey {
     lighting: bool,
     normalize: bool,
@@ -481,6 +483,59 @@ impl StateKey {
             lights: state.lights,
         }
     }
+
+    /// Whether a draw of `state` under `projection` has this key: compared in place, without
+    /// copying the lights into a key of its own (a draw's check when it shares the state of the
+    /// draw before, the common case).
+    pub(crate) fn matches(&self, state: &LightingState, projection: Mat4) -> bool {
+        self.lighting == state.lighting
+            && self.normalize == state.normalize
+            && self.model == state.model
+            && self.color_material == state.color_material
+            && self.texture == state.texture
+            && self.projection == projection
+            && same_lights(&self.lights, &state.lights)
+    }
+}
+
+impl PartialEq for StateKey {
+    fn eq(&self, other: &StateKey) -> bool {
+        let StateKey {
+            lighting,
+            normalize,
+            model,
+            color_material,
+            texture,
+            projection,
+            lights,
+        } = self;
+        // Every field by name: a field added to the key must be compared here too.
+        *lighting == other.lighting
+            && *normalize == other.normalize
+            && *model == other.model
+            && *color_material == other.color_material
+            && *texture == other.texture
+            && *projection == other.projection
+            && same_lights(lights, &other.lights)
+    }
+}
+
+/// Whether `a` and `b` make the same block under one projection (their [`StateKey`] parts are
+/// equal), compared in place.
+pub(crate) fn same_block_state(a: &LightingState, b: &LightingState) -> bool {
+    a.lighting == b.lighting
+        && a.normalize == b.normalize
+        && a.model == b.model
+        && a.color_material == b.color_material
+        && a.texture == b.texture
+        && same_lights(&a.lights, &b.lights)
+}
+
+/// Lights that pack into the same block: the same enables, and equal values where enabled.
+fn same_lights(a: &[Light; MAX_LIGHTS], b: &[Light; MAX_LIGHTS]) -> bool {
+    a.iter()
+        .zip(b)
+        .all(|(a, b)| a.enabled == b.enabled && (!a.enabled || a == b))
 }
 
 impl StateBlock {
@@ -585,7 +640,7 @@ mod tests {
     use crate::gl::state::{Cap, Face, GlState, LightParam, MaterialParam};
 
     #[test]
-    fn the_state_key_ignores_what_the_record_carries_and_sees_the_rest() {
+    fn the_state_key_ignores_what_the_record_carries_and_disabled_lights_and_sees_the_rest() {
         let mut gl = GlState::new();
         gl.enable(Cap::Lighting).unwrap();
         let key = StateKey::new(&gl.lighting, Mat4::IDENTITY);
@@ -594,12 +649,26 @@ mod tests {
         gl.enable(Cap::RescaleNormal).unwrap();
         assert_eq!(StateKey::new(&gl.lighting, Mat4::IDENTITY), key);
         assert_ne!(StateKey::new(&gl.lighting, Mat4::from_translation(Vec3::X)), key);
+        // The block packs the enabled lights only: a disabled light's values do not split it,
+        // its enable and an enabled light's values do.
         gl.light(3, LightParam::Diffuse(Vec4::ONE)).unwrap();
-        assert_ne!(
+        assert_eq!(
             StateKey::new(&gl.lighting, Mat4::IDENTITY),
             key,
             "a disabled light's values"
         );
+        assert!(key.matches(&gl.lighting, Mat4::IDENTITY));
+        gl.enable(Cap::Light(3)).unwrap();
+        let with_light = StateKey::new(&gl.lighting, Mat4::IDENTITY);
+        assert_ne!(with_light, key, "a light's enable");
+        assert!(!key.matches(&gl.lighting, Mat4::IDENTITY));
+        gl.light(3, LightParam::Diffuse(Vec4::splat(0.5))).unwrap();
+        assert_ne!(
+            StateKey::new(&gl.lighting, Mat4::IDENTITY),
+            with_light,
+            "an enabled light's values"
+        );
+        assert!(!with_light.matches(&gl.lighting, Mat4::IDENTITY));
     }
 
     #[test]

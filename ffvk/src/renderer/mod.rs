@@ -4,7 +4,7 @@ use std::sync::Arc;
 
 use ash::vk;
 
-use crate::draw::lighting::{Lighting, LightingOptions};
+use crate::draw::lighting::{Lighting, LightingOptions, LitDraw};
 use crate::draw::pipeline::{RasterState, Target, VertexInput};
 use crate::draw::pipeline::{Specialize, COLOR_FORMAT, DEPTH_FORMAT};
 use crate::draw::record::Topology;
@@ -397,12 +397,27 @@ impl Renderer {
             }
         }
         self.ensure_targets(frame.width, frame.height)?;
+        // The lit draws first (their time counts as recording, below): consecutive draws under
+        // one state borrow it.
+        let lits_start = std::time::Instant::now();
+        let lits = record::lit_draws(frame);
+        let lits_ns = lits_start.elapsed().as_nanos() as f64;
         // Every pipeline is made before recording starts, so that pipeline creation never
-        // lands inside a measured frame.
-        for d in &frame.draws {
+        // lands inside a measured frame. A draw that borrows the state of the draw before it
+        // and needs the same raster state, texturing and size class is looked up once: a frame
+        // of many objects under one lighting state looks up one pipeline.
+        let mut before: Option<(&LitDraw, bool)> = None;
+        for (d, lit) in frame.draws.iter().zip(&lits) {
             let small = d.mesh.index_count < crate::draw::pipeline::SMALL_DRAW_VERTICES;
-            self.lighting
-                .prepare_sized(&d.state, d.raster(frame), d.textured(), small)?;
+            let same = before.is_some_and(|(b, s)| {
+                std::ptr::eq(b.state, lit.state)
+                    && (b.raster, b.texture.is_some(), s) == (lit.raster, lit.texture.is_some(), small)
+            });
+            if !same {
+                self.lighting
+                    .prepare_sized(lit.state, lit.raster, d.textured(), small)?;
+            }
+            before = Some((lit, small));
         }
         debug_assert!(
             !pass.statistics || pass.repeat == 1,
@@ -415,7 +430,6 @@ impl Renderer {
         // Every draw is checked and its block written before recording starts, so that a bad
         // draw records nothing; the time counts as recording, as it does in Lighting::draw.
         let staging = std::time::Instant::now();
-        let lits = record::lit_draws(frame);
         // The Renderer's own errors name the draw where it matters (its meshes and textures);
         // the state's errors stay as they are.
         let cpu = self.device.info().is_cpu();
@@ -446,7 +460,7 @@ impl Renderer {
             }
             _ => None,
         };
-        let staging_ns = staging.elapsed().as_nanos() as f64;
+        let staging_ns = lits_ns + staging.elapsed().as_nanos() as f64;
         let record_ns = staging_ns + self.record(frame, pass, &lits, &staged, deferred_pass.as_ref())?;
         let wall_ns = self.submit_and_wait()? / f64::from(pass.repeat);
         self.check_validation()?;

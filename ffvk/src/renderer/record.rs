@@ -6,9 +6,11 @@ use ash::vk;
 use super::attachments::{area_and_viewport, attachment_barriers, color_attachment, depth_attachment};
 use super::deferred::{record_deferred, DeferredPass};
 use super::{subresource, Frame, Pass, Recording, Renderer, Targets};
-use crate::draw::lighting::{Lighting, LitDraw, Staged};
+use crate::draw::lighting::{DrawValues, Lighting, LitDraw, Staged};
 use crate::draw::record::Geometry;
 use crate::error::{vk_error, Error, Result};
+use crate::gl::state::LightingState;
+use crate::gpu::layout::same_block_state;
 use crate::vk::objects::QueryPool;
 
 impl Renderer {
@@ -226,17 +228,33 @@ unsafe fn record_readback(vkd: &ash::Device, targets: &Targets, cmd: vk::Command
 }
 
 /// The lit draws of `frame`: each mesh's vertices and indices, the frame's raster state with
-/// the draw's culling, its texture when it samples one.
+/// the draw's culling, its texture when it samples one. A draw whose state differs from the
+/// draw before's only in its own values (materials, current color) borrows that draw's state
+/// and carries its values, as an embedder's run does: its state is compared here once, and
+/// staging and pipeline lookup take it as the same.
 pub(super) fn lit_draws<'f>(frame: &'f Frame) -> Vec<LitDraw<'f>> {
+    let mut shared: Option<&'f LightingState> = None;
     frame
         .draws
         .iter()
         .map(|draw| {
+            let own = &draw.state;
+            let state = match shared {
+                Some(s)
+                    if (s.mode, s.rescale_normal) == (own.mode, own.rescale_normal)
+                        && same_block_state(s, own) =>
+                {
+                    s
+                }
+                _ => own,
+            };
+            shared = Some(state);
             let mesh = draw.mesh;
             let geometry = Geometry::indexed(mesh.indices.raw(), vk::IndexType::UINT32, mesh.index_count)
                 .with_topology(draw.topology);
             let buffers: &[(vk::Buffer, u64)] = std::slice::from_ref(&mesh.vertex_binding);
-            LitDraw::new(&draw.state, draw.modelview, draw.projection, buffers, geometry)
+            LitDraw::new(state, draw.modelview, draw.projection, buffers, geometry)
+                .with_values(Some(DrawValues::of(own)))
                 .with_raster(draw.raster(frame))
                 .with_texture(draw.texture.filter(|_| draw.textured()).map(|t| &t.binding))
         })
