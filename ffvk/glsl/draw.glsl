@@ -106,14 +106,19 @@ layout(constant_id = 8) const int SPEC_TEX_ENV = -1;            // TEXTURE_ENV_M
 layout(constant_id = 9) const int SPEC_SPECULAR_MODEL = -1;     // SPECULAR_*
 layout(constant_id = 10) const int SPEC_ANY_SOFT_SPOT = -1;     // some light has a soft edge
 layout(constant_id = 11) const int SPEC_ANY_GLTF_FALLOFF = -1;  // some light has glTF's falloff
-// A promise (1) that every light is directional and every vertex finite (w != 0: an affine
-// modelview), so that VP_pli and the infinite viewer's ĥ_i are each light's derived state.
+// A promise (1) that every vertex is finite (w != 0: an affine modelview), so that VP_pli and
+// the infinite viewer's ĥ_i are the derived state of each directional light.
 layout(constant_id = 12) const int SPEC_FINITE_VERTICES = -1;
 // 1 in pipelines drawing points (their vertex stage writes the point size), 0 in others; the
 // uber-shader (-1) writes it always.
 layout(constant_id = 13) const int SPEC_POINTS = -1;
 // The point size (GL's glPointSize), set in every pipeline.
 layout(constant_id = 14) const float SPEC_POINT_SIZE = 1.0;
+// Each enabled light's own kind, a bit per light in packed order (as Mesa's fixed-function key
+// has it): directional (w = 0) and spot (cutoff != 180). -1: unknown (the uber-shader), every
+// light may be either.
+layout(constant_id = 15) const int SPEC_DIRECTIONAL_LIGHTS = -1;
+layout(constant_id = 16) const int SPEC_SPOT_LIGHTS = -1;
 
 // A switch of the uber-shader, read from the uniform block. lavapipe 22.3 compiles a shader
 // variant for every draw whose uniforms changed when an if or a loop bound depends on uniform
@@ -143,12 +148,14 @@ bool separate_specular() {
 bool color_material_enabled() {
     return SPEC_COLOR_MATERIAL < 0 ? uber_value(state.color_material) != 0u : SPEC_COLOR_MATERIAL != 0;
 }
-// Whether light i may be positional or a spot: only the promise 0 answers "no" for all lights.
-bool may_be_local() {
-    return SPEC_ANY_LOCAL_LIGHT != 0;
+// Whether light i may be positional or a spot: its own bit where the pipeline is specialized
+// (i is a constant once the driver unrolls the light loop), else only the promise 0 answers
+// "no" for all lights.
+bool may_be_local(uint i) {
+    return SPEC_DIRECTIONAL_LIGHTS >= 0 ? ((uint(SPEC_DIRECTIONAL_LIGHTS) >> i) & 1u) == 0u : SPEC_ANY_LOCAL_LIGHT != 0;
 }
-bool may_be_spot() {
-    return SPEC_ANY_SPOT_LIGHT != 0;
+bool may_be_spot(uint i) {
+    return SPEC_SPOT_LIGHTS >= 0 ? ((uint(SPEC_SPOT_LIGHTS) >> i) & 1u) != 0u : SPEC_ANY_SPOT_LIGHT != 0;
 }
 bool may_be_soft_spot() {
     return SPEC_ANY_SOFT_SPOT != 0;
@@ -156,8 +163,9 @@ bool may_be_soft_spot() {
 bool may_be_gltf_falloff() {
     return SPEC_ANY_GLTF_FALLOFF != 0;
 }
-bool directional_at_finite_vertices() {
-    return SPEC_FINITE_VERTICES == 1;
+// Light i is known directional and every vertex finite: VP_pli and ĥ_i are its derived state.
+bool directional_at_finite_vertices(uint i) {
+    return SPEC_FINITE_VERTICES == 1 && !may_be_local(i);
 }
 uint specular_model() {
     return SPEC_SPECULAR_MODEL < 0 ? uber_value(state.specular_model) : uint(SPEC_SPECULAR_MODEL);

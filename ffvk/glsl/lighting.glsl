@@ -109,7 +109,7 @@ void light_term(uint i, vec4 V, vec3 n, Material m, vec3 VPe, inout vec3 c_pri, 
     // infinite viewer) ĥ_i are the same at every vertex: GL's derived state, computed on the
     // host (draw.glsl). The test is on constants and folds away. (A test on each vertex's w
     // would not help: lavapipe runs both sides of a branch that differs between vertices.)
-    bool derived = directional_at_finite_vertices();
+    bool derived = directional_at_finite_vertices(i);
     vec3 VP_pli = derived ? L.VP_hat_inf : unit_from_to(V, L.P_pli);
     bool derived_h = derived && !local_viewer();
 
@@ -118,7 +118,7 @@ void light_term(uint i, vec4 V, vec3 n, Material m, vec3 VPe, inout vec3 c_pri, 
     // "if" tests uniform values alone (BENCHMARKS.md, "Many draws"). The terms are computed
     // for every light the pipeline's promises allow and the select keeps GL's value.
     float att_i = 1.0;
-    if (may_be_local()) {
+    if (may_be_local(i)) {
         float d = length(L.P_pli.xyz / L.P_pli.w - V.xyz / V.w);  // ||VP_pli||
         float att_gl = attenuation_gl_k012(d, L.k0, L.k1, L.k2);
         float att_gltf = may_be_gltf_falloff() ? attenuation_gltf_inverse_square(d, L.range) : att_gl;
@@ -127,7 +127,7 @@ void light_term(uint i, vec4 V, vec3 n, Material m, vec3 VPe, inout vec3 c_pri, 
     }
 
     float spot_i = 1.0;
-    if (may_be_spot()) {
+    if (may_be_spot(i)) {
         float cos_angle = odot(unit_from_to(L.P_pli, V), unit(L.s_dli));  // P_pliV ⊙ ŝ_dli
         float spot = spot_gl_exponent(cos_angle, L.cos_c_rli, L.s_rli);
         if (may_be_soft_spot()) {

@@ -247,9 +247,12 @@ fn one_sided_single_color_states_pass_one_color_between_the_stages() {
     );
 }
 
-/// `SPEC_FINITE_VERTICES` (VP_pli and ĥ_i taken from the light's derived state) is promised
-/// only where it holds: lit, with lights, every one directional, and a draw whose modelview
-/// is affine (w = 1 at every vertex). The uber-shader's key keeps it unset.
+/// `SPEC_FINITE_VERTICES` (VP_pli and ĥ_i taken from a directional light's derived state) is
+/// promised only where it holds: lit, with at least one directional light, and a draw whose
+/// modelview is affine (w = 1 at every vertex); `SPEC_DIRECTIONAL_LIGHTS` and
+/// `SPEC_SPOT_LIGHTS` name each enabled light's kind, in packed order, so that a positional
+/// light beside directional ones is evaluated in full and the directional ones are not. The
+/// uber-shader's key keeps them unset.
 #[test]
 fn directional_lights_take_their_derived_state_only_at_affine_modelviews() {
     let finite = |s: &LightingState, mv: Mat4| SpecKey::for_draw(s, mv).get(SpecConstant::FiniteVertices);
@@ -259,9 +262,22 @@ fn directional_lights_take_their_derived_state_only_at_affine_modelviews() {
     let directional = lit(2, LightingMode::Vertex);
     assert_eq!(finite(&directional, affine), 1);
     assert_eq!(finite(&directional, projective), 0);
-    let mut local = directional;
-    local.lights[1].position.w = 1.0;
-    assert_eq!(finite(&local, affine), 0);
+    let mut mixed = directional;
+    mixed.lights[1].position.w = 1.0;
+    assert_eq!(finite(&mixed, affine), 1, "light 0 is still directional");
+    let kinds = |s: &LightingState| {
+        let key = SpecKey::for_draw(s, affine);
+        (key.get(SpecConstant::DirectionalLights), key.get(SpecConstant::SpotLights))
+    };
+    assert_eq!(kinds(&directional), (0b11, 0));
+    assert_eq!(kinds(&mixed), (0b01, 0));
+    mixed.lights[1].spot_cutoff = 30.0;
+    assert_eq!(kinds(&mixed), (0b01, 0b10));
+    // Packed order: with light 0 disabled, light 1 is the first packed light.
+    mixed.lights[0].enabled = false;
+    assert_eq!(kinds(&mixed), (0b00, 0b01));
+    assert_eq!(finite(&mixed, affine), 0, "no directional light left");
+    assert_eq!(SpecKey::UBER.get(SpecConstant::DirectionalLights), -1);
     assert_eq!(finite(&lit(0, LightingMode::Vertex), affine), 0);
     assert_eq!(finite(&unlit(), affine), 0);
     assert_eq!(SpecKey::UBER.with_finite_vertices(true), SpecKey::UBER);

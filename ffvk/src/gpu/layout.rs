@@ -276,11 +276,11 @@ pub enum SpecConstant {
     /// `SPEC_ANY_GLTF_FALLOFF`: 0 promises that every enabled light has GL's attenuation,
     /// so glTF's falloff is compiled out; 1 means some light may have it.
     AnyGltfFalloff = 11,
-    /// `SPEC_FINITE_VERTICES`: 1 promises that every enabled light is directional and every
-    /// vertex lies at a finite point (w ≠ 0: the draw's modelview is affine, its last row
-    /// (0, 0, 0, 1)), so that VP_pli and, for the infinite viewer, ĥ_i are the light's
-    /// derived state ([`GpuLight::VP_hat_inf`], [`GpuLight::h_hat_inf`]) at every vertex;
-    /// 0 promises nothing. Set per draw ([`SpecKey::for_draw`]).
+    /// `SPEC_FINITE_VERTICES`: 1 promises that every vertex lies at a finite point (w ≠ 0: the
+    /// draw's modelview is affine, its last row (0, 0, 0, 1)), so that for every light
+    /// [`SpecConstant::DirectionalLights`] names, VP_pli and, for the infinite viewer, ĥ_i are
+    /// the light's derived state ([`GpuLight::VP_hat_inf`], [`GpuLight::h_hat_inf`]) at every
+    /// vertex; 0 promises nothing. Set per draw ([`SpecKey::for_draw`]).
     FiniteVertices = 12,
     /// `SPEC_POINTS`: 1 for a pipeline drawing points, whose vertex stage writes the point
     /// size (one pixel, GL's default); 0 for other topologies. Set from the draw's topology
@@ -290,10 +290,19 @@ pub enum SpecConstant {
     /// `glPointSize`, [`RasterState::point_size`](crate::draw::pipeline::RasterState::point_size));
     /// its bits are the key's entry, set when the pipeline is made.
     PointSize = 14,
+    /// `SPEC_DIRECTIONAL_LIGHTS`: a bit per enabled light in packed order, set where the light
+    /// is directional (w = 0): its attenuation is compiled out, and at finite vertices its
+    /// VP_pli and ĥ_i are its derived state; a clear bit is a positional light. Each light is
+    /// specialized for its own kind, as Mesa's fixed-function key does, rather than every
+    /// light for the kinds of all.
+    DirectionalLights = 15,
+    /// `SPEC_SPOT_LIGHTS`: a bit per enabled light in packed order, set where the light is a
+    /// spot (cutoff ≠ 180): the cone is compiled in for those lights only.
+    SpotLights = 16,
 }
 
 /// How many specialization constants there are.
-pub const SPEC_CONSTANT_COUNT: usize = 15;
+pub const SPEC_CONSTANT_COUNT: usize = 17;
 
 impl SpecConstant {
     /// Every constant, in `constant_id` order.
@@ -313,6 +322,8 @@ impl SpecConstant {
         SpecConstant::FiniteVertices,
         SpecConstant::Points,
         SpecConstant::PointSize,
+        SpecConstant::DirectionalLights,
+        SpecConstant::SpotLights,
     ];
 
     /// The `constant_id` in the GLSL.
@@ -336,6 +347,8 @@ impl SpecConstant {
             SpecConstant::AnySoftSpot => "SPEC_ANY_SOFT_SPOT",
             SpecConstant::AnyGltfFalloff => "SPEC_ANY_GLTF_FALLOFF",
             SpecConstant::FiniteVertices => "SPEC_FINITE_VERTICES",
+            SpecConstant::DirectionalLights => "SPEC_DIRECTIONAL_LIGHTS",
+            SpecConstant::SpotLights => "SPEC_SPOT_LIGHTS",
             SpecConstant::Points => "SPEC_POINTS",
             SpecConstant::PointSize => "SPEC_POINT_SIZE",
         }
@@ -408,6 +421,15 @@ impl SpecKey {
             );
             values[SpecConstant::SpecularModel as usize] = specular_code(state.model.specular_model) as i32;
         }
+        let mask = |kind: fn(&Light) -> bool| {
+            lights
+                .iter()
+                .enumerate()
+                .filter(|(_, l)| kind(l))
+                .fold(0, |mask, (i, _)| mask | 1 << i)
+        };
+        values[SpecConstant::DirectionalLights as usize] = mask(|l| l.position.w == 0.0);
+        values[SpecConstant::SpotLights as usize] = mask(|l| l.spot_cutoff != 180.0);
         values[SpecConstant::LightCount as usize] = lights.len() as i32;
         SpecKey { values }
     }
@@ -424,7 +446,7 @@ impl SpecKey {
     pub fn with_finite_vertices(mut self, finite: bool) -> SpecKey {
         let can_act = self.get(SpecConstant::Lighting) == 1
             && self.get(SpecConstant::LightCount) > 0
-            && self.get(SpecConstant::AnyLocalLight) == 0;
+            && self.get(SpecConstant::DirectionalLights) > 0;
         if can_act {
             self.values[SpecConstant::FiniteVertices as usize] = finite as i32;
         }
