@@ -85,14 +85,19 @@ fn mode_lines(res: &[BenchResult], group: Group, x: fn(&Point) -> f64) -> Vec<Li
         let ser = series(res, is(group, Engine::Ffvk, mode, Variant::Specialized), x);
         lines.extend(line(format!("ffvk {}", mode.name()), color(mode), false, &ser));
     }
-    for mode in GL_MODES {
-        let ser = series(res, is(group, Engine::Gl, mode, Variant::FixedFunction), x);
-        let name = if mode == BenchMode::Vertex {
-            "smooth"
-        } else {
-            mode.name()
-        };
-        lines.extend(line(format!("GL {name}"), color(mode), true, &ser));
+    // GL's lines dashed in the modes' colors, zink's dashed in darker ones.
+    for (engine, shade) in [(Engine::Gl, 1), (Engine::Zink, 2)] {
+        for mode in GL_MODES {
+            let ser = series(res, is(group, engine, mode, Variant::FixedFunction), x);
+            let name = if mode == BenchMode::Vertex {
+                "smooth"
+            } else {
+                mode.name()
+            };
+            let RGBColor(r, g, b) = color(mode);
+            let c = RGBColor(r / shade, g / shade, b / shade);
+            lines.extend(line(format!("{} {name}", engine.name()), c, true, &ser));
+        }
     }
     lines
 }
@@ -334,17 +339,17 @@ pub(super) fn write_all(report: &BenchReport, dir: &Path) -> Result<Vec<PathBuf>
             ));
         }
     }
-    let ser = series(
-        res,
-        is(
-            Group::Lights,
-            Engine::Gl,
-            BenchMode::Vertex,
-            Variant::FixedFunction,
-        ),
-        |p| p.lights as f64,
-    );
-    lines.extend(line("GL smooth".into(), RGBColor(0, 0, 0), true, &ser));
+    for (engine, c) in [
+        (Engine::Gl, RGBColor(0, 0, 0)),
+        (Engine::Zink, RGBColor(127, 127, 127)),
+    ] {
+        let ser = series(
+            res,
+            is(Group::Lights, engine, BenchMode::Vertex, Variant::FixedFunction),
+            |p| p.lights as f64,
+        );
+        lines.extend(line(format!("{} smooth", engine.name()), c, true, &ser));
+    }
     if !lines.is_empty() {
         let path = dir.join("time_vs_lights.png");
         chart(

@@ -233,6 +233,12 @@ pub(super) fn density_table(report: &BenchReport, has_gl: bool) -> Table {
             t.column(h, Align::Right);
         }
     }
+    let has_zink = report.results.iter().any(|r| r.point.engine == Engine::Zink);
+    if has_zink {
+        for h in ["zink smooth", "ffvk vertex ÷ zink"] {
+            t.column(h, Align::Right);
+        }
+    }
     for &stacks in &report.sweep.stacks {
         let at = |engine, mode, variant| {
             find(&report.results, |p| {
@@ -257,6 +263,15 @@ pub(super) fn density_table(report: &BenchReport, has_gl: bool) -> Table {
                 .iter()
                 .find(|r| r.group == Group::Density && r.mode == BenchMode::Vertex && r.vertices == v);
             row.push(ratio(gl.map(|r| r.ratio)));
+        }
+        if has_zink {
+            let zink = at(Engine::Zink, BenchMode::Vertex, Variant::FixedFunction);
+            row.push(cell(zink));
+            let ffvk = at(Engine::Ffvk, BenchMode::Vertex, spec);
+            row.push(ratio(
+                ffvk.zip(zink)
+                    .map(|(f, z)| f.stats.wall_ms.median / z.stats.wall_ms.median),
+            ));
         }
         t.row(row);
     }

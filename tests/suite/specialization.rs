@@ -267,7 +267,10 @@ fn directional_lights_take_their_derived_state_only_at_affine_modelviews() {
     assert_eq!(finite(&mixed, affine), 1, "light 0 is still directional");
     let kinds = |s: &LightingState| {
         let key = SpecKey::for_draw(s, affine);
-        (key.get(SpecConstant::DirectionalLights), key.get(SpecConstant::SpotLights))
+        (
+            key.get(SpecConstant::DirectionalLights),
+            key.get(SpecConstant::SpotLights),
+        )
     };
     assert_eq!(kinds(&directional), (0b11, 0));
     assert_eq!(kinds(&mixed), (0b01, 0));

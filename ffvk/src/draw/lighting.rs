@@ -374,7 +374,15 @@ impl Lighting {
     /// Records one lit draw into `cmd` for frame slot `slot`: binds its pipeline (created now
     /// if it is new), writes its state into the slot's memory and binds it, binds the
     /// caller's buffers and draws, binding only what differs from what ffvk remembers having
-    /// bound in `cmd` (module docs, "Bindings"). Fails, recording nothing, when the state is invalid (a
+    /// bound in `cmd` (module docs, "Bindings").
+    ///
+    /// What it costs against [`Lighting::draw_run`]: the same checks and binds, but each draw
+    /// is a draw command of its own, where a run draws consecutive draws of one geometry as
+    /// instances of one command. On lavapipe (`ffvk bench`'s draws sweep, BENCHMARKS.md "Many
+    /// draws") a frame recorded draw by draw takes within 1.25× of the run's time where draws
+    /// have meshes of their own or few share one, and 1.3-1.8× for 10,000 quads sharing one
+    /// mesh. A caller that can collect the draws between two commands of its own should pass
+    /// them as a run. Fails, recording nothing, when the state is invalid (a
     /// NaN, or a singular modelview while lighting), when the buffers do not match the
     /// vertex layout, or when the pipeline cannot be made.
     ///
