@@ -51,7 +51,7 @@ impl LightingOptions {
 impl LightingOptions {
     /// Checks what needs no device: 1 ..= [`MAX_FRAMES_IN_FLIGHT`] frame slots, the target's
     /// formats and samples ([`Target::validate`]) and the vertex layout
-    /// ([`VertexInput::validate`]). [`Lighting::new`] checks this first, then the device.
+    /// ([`VertexInput::validate`]). [`Lighting::new`](super::lighting::Lighting::new) checks this first, then the device.
     pub fn validate(&self) -> Result<()> {
         match self.frames_in_flight {
             0 => return Err(LightingError::NoFrameSlots.into()),
