@@ -175,6 +175,28 @@ pub fn render_frames_draw_by_draw(
     Ok(images)
 }
 
+/// An `n` × `n` grid under `state` drawn one `Lighting::draw` at a time into one command
+/// buffer, alternating between two `Lighting`s of one device (the layout with the color array,
+/// and the one without), as a layer with a `Lighting` per vertex layout records; with
+/// `forget_each`, `forget_bindings` before every draw (everything bound anew each time).
+pub fn render_alternating(
+    device_name: Option<&str>,
+    validation: bool,
+    state: &ffvk::gl::state::LightingState,
+    n: u32,
+    forget_each: bool,
+) -> Result<Vec<u8>, String> {
+    let mut app = App::new(device_name, validation, SIZE)?;
+    let result = app.render_alternating(state, n, forget_each);
+    let messages = app.messages();
+    drop(app);
+    let image = result?;
+    if !messages.is_empty() {
+        return Err(format!("validation messages:\n{}", messages.join("\n")));
+    }
+    Ok(image)
+}
+
 /// [`render_frames`] with ffvk's uniform block at descriptor set `set_index`, as a renderer
 /// whose own shaders use the lower sets would ask.
 pub fn render_frames_in_set(
@@ -684,6 +706,42 @@ impl App {
         drop(with_current_color);
         drop(ffvk_device);
         Ok(images)
+    }
+
+    fn render_alternating(
+        &mut self,
+        state: &ffvk::gl::state::LightingState,
+        n: u32,
+        forget_each: bool,
+    ) -> Result<Vec<u8>, String> {
+        let scene = self.scene()?;
+        let (ffvk_device, mut with_colors, mut without_colors) = self.lightings(0)?;
+        let mut raster = RasterState::default();
+        raster.depth_test = true;
+        with_colors.begin_frame(0).map_err(|e| e.to_string())?;
+        without_colors.begin_frame(0).map_err(|e| e.to_string())?;
+        self.begin(&scene)?;
+        let geometry = Geometry::indexed(scene.index_buffer, vk::IndexType::UINT32, scene.index_count);
+        for (i, (modelview, values)) in grid_objects(state, n).into_iter().enumerate() {
+            let lighting = if i % 2 == 0 {
+                &mut with_colors
+            } else {
+                &mut without_colors
+            };
+            if forget_each {
+                lighting.forget_bindings();
+            }
+            let draw = LitDraw::new(state, modelview, projection(), &scene.buffers, geometry)
+                .with_raster(raster)
+                .with_values(Some(values));
+            // SAFETY: as in `render`; both lightings are of this device and its slot 0 is free.
+            unsafe { lighting.draw(self.cmd, 0, &draw) }.map_err(|e| format!("draw {i}: {e}"))?;
+        }
+        let image = self.finish(&scene)?;
+        drop(with_colors);
+        drop(without_colors);
+        drop(ffvk_device);
+        Ok(image)
     }
 
     /// Records `draws` one `Lighting::draw` each, with the caller's own commands between them

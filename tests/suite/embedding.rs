@@ -183,6 +183,28 @@ fn draws_recorded_one_by_one_between_the_callers_own_commands_draw_what_one_run_
     }
 }
 
+/// Two `Lighting`s of one device (a layer's two vertex layouts) drawing alternately into one
+/// command buffer, one draw at a time, draw what they draw when everything is bound anew before
+/// every draw: each one forgets what it bound when the other has recorded since.
+#[test]
+fn two_lightings_alternating_in_one_command_buffer_rebind_after_each_other() {
+    for mode in LightingMode::ALL {
+        let mut gl = embed::gl_state(mode).unwrap();
+        gl.enable(Cap::ColorMaterial).unwrap();
+        let state = gl.lighting;
+        let remembered = embed::render_alternating(None, true, &state, 4, false)
+            .expect("alternating draws render with validation on");
+        let fresh = embed::render_alternating(None, true, &state, 4, true).expect("fresh binds render");
+        assert!(
+            remembered == fresh,
+            "{}: the alternating draws differ from the same draws bound anew",
+            mode.name()
+        );
+        let colors: std::collections::HashSet<&[u8]> = fresh.chunks(4).collect();
+        assert!(colors.len() > 50, "{}: {} colors", mode.name(), colors.len());
+    }
+}
+
 /// Without a color array every vertex takes GL's current color: the same bytes as a color
 /// array holding that color at every vertex, lit through COLOR_MATERIAL in each mode, and
 /// unlit.

@@ -48,7 +48,8 @@
 //! more; after binding anything of its own (a pipeline, descriptor sets, vertex or index
 //! buffers), or resetting a command buffer ffvk drew into, it calls
 //! [`Lighting::forget_bindings`] and ffvk binds everything at its next draw.
-//! [`Lighting::begin_frame`] forgets too. Viewport and scissor are the caller's to set (dynamic
+//! [`Lighting::begin_frame`] forgets too, and so does a `Lighting` when another one on the same
+//! device has recorded since its last draw (two layouts' `Lighting`s in one command buffer). Viewport and scissor are the caller's to set (dynamic
 //! state in every ffvk pipeline); every other raster state is the draw's [`RasterState`], part
 //! of its pipeline.
 //!
@@ -171,6 +172,14 @@ struct LastState {
     pipelines: Vec<(LightingMode, RasterState, Variant, vk::Pipeline)>,
 }
 
+/// What a [`Lighting`] last bound: the command buffer, the device's recording count just after
+/// that recording ([`Device::recordings`](crate::vk::Device)), and the bindings.
+struct Remembered {
+    cmd: vk::CommandBuffer,
+    recording: u64,
+    run: RunState,
+}
+
 /// What besides its state and raster state picks a draw's pipeline.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 struct Variant {
@@ -211,7 +220,7 @@ pub struct Lighting {
     /// What the public recording calls last bound, and into which command buffer (module
     /// docs, "Bindings"): the next such call into the same command buffer binds only what
     /// differs. Cleared by [`Lighting::begin_frame`] and [`Lighting::forget_bindings`].
-    remembered: std::sync::Mutex<Option<(vk::CommandBuffer, RunState)>>,
+    remembered: std::sync::Mutex<Option<Remembered>>,
     device: Arc<Device>,
 }
 
@@ -296,18 +305,27 @@ impl Lighting {
     }
 
     /// Runs `record` with what ffvk remembers having bound in `cmd` (nothing, for another
-    /// command buffer than the last), and remembers what it leaves bound.
+    /// command buffer than the last, or when another `Lighting` on this device recorded since:
+    /// its binds may have replaced these), and remembers what it leaves bound.
     fn with_remembered(&self, cmd: vk::CommandBuffer, record: impl FnOnce(&mut RunState)) {
         let mut remembered = self
             .remembered
             .lock()
             .unwrap_or_else(|poisoned| poisoned.into_inner());
+        let before = self
+            .device
+            .recordings
+            .fetch_add(1, std::sync::atomic::Ordering::SeqCst);
         let mut run = match remembered.take() {
-            Some((last, run)) if last == cmd => run,
+            Some(last) if last.cmd == cmd && last.recording == before => last.run,
             _ => RunState::default(),
         };
         record(&mut run);
-        *remembered = Some((cmd, run));
+        *remembered = Some(Remembered {
+            cmd,
+            recording: before.wrapping_add(1),
+            run,
+        });
     }
 
     /// How many frame slots there are.

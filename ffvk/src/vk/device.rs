@@ -81,6 +81,10 @@ pub struct Device {
     pub(crate) own: Option<OwnDevice>,
     /// How to ask which features a format has on this device.
     formats: FormatQuery,
+    /// Counts the recordings of every [`Lighting`](crate::Lighting) on this device: a
+    /// `Lighting` trusts what it remembers having bound only if no other one recorded since
+    /// (two `Lighting`s drawing into one command buffer bind over each other).
+    pub(crate) recordings: std::sync::atomic::AtomicU64,
 }
 
 /// `vkGetPhysicalDeviceFormatProperties` of the device's instance, and its physical device:
@@ -439,6 +443,7 @@ impl Device {
             info,
             own,
             formats,
+            recordings: std::sync::atomic::AtomicU64::new(0),
         }))
     }
 
