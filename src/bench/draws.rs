@@ -39,14 +39,18 @@ pub enum DrawShape {
     /// 1,024 spheres of 240 triangles sharing one mesh: the emulation frame whose cost is
     /// also its lit vertices.
     Spheres,
+    /// One sphere of 131,841 vertices (the light sweeps' mesh) under the same two lights:
+    /// dense vertex lighting, where the cost is the lit vertices alone.
+    DenseSphere,
 }
 
 impl DrawShape {
     /// Every shape, in the order the sweep runs them.
-    pub const ALL: [DrawShape; 3] = [
+    pub const ALL: [DrawShape; 4] = [
         DrawShape::OneQuadMesh,
         DrawShape::QuadMeshEach,
         DrawShape::Spheres,
+        DrawShape::DenseSphere,
     ];
 
     /// How the report names it.
@@ -55,14 +59,16 @@ impl DrawShape {
             DrawShape::OneQuadMesh => "quads, one mesh",
             DrawShape::QuadMeshEach => "quads, a mesh each",
             DrawShape::Spheres => "spheres, one mesh",
+            DrawShape::DenseSphere => "one dense sphere",
         }
     }
 
     /// The draw counts of this shape in a sweep whose quad counts are `counts`: the spheres'
-    /// frame has 1,024 draws.
+    /// frame has 1,024 draws, the dense sphere's one.
     pub fn counts(self, counts: &[u32]) -> Vec<u32> {
         match self {
             DrawShape::Spheres => vec![SPHERES],
+            DrawShape::DenseSphere => vec![1],
             _ => counts.to_vec(),
         }
     }
@@ -71,6 +77,7 @@ impl DrawShape {
     pub fn mesh(self) -> MeshData {
         match self {
             DrawShape::Spheres => MeshData::uv_sphere(12, 11),
+            DrawShape::DenseSphere => MeshData::uv_sphere(512, 256),
             _ => quad(),
         }
     }

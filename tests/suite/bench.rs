@@ -89,11 +89,11 @@ fn a_tiny_sweep_runs_every_point_and_writes_csv_json_and_plots() {
         markdown.contains("### Fragment lighting on a dense mesh"),
         "{markdown}"
     );
-    // The draws sweep: every count of both quad shapes and the spheres' frame, in every mode,
-    // ffvk and GL, each frame measured.
+    // The draws sweep: every count of both quad shapes, the spheres' frame and the dense
+    // sphere, in every mode, ffvk and GL, each frame measured.
     assert_eq!(
         report.draws.len(),
-        (2 * config.draw_counts.len() + 1) * 3 * 2,
+        (2 * config.draw_counts.len() + 2) * 3 * 2,
         "{:?}",
         report.draws
     );

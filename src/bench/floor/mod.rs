@@ -121,6 +121,7 @@ pub fn frame_classes(draw_counts: &[u32]) -> Vec<(DrawShape, u32)> {
         (DrawShape::Spheres, SPHERES),
         (DrawShape::OneQuadMesh, most),
         (DrawShape::QuadMeshEach, most),
+        (DrawShape::DenseSphere, 1),
     ]
 }
 
