@@ -323,14 +323,16 @@ fn a_full_stdout_is_an_error_naming_stdout_not_a_panic() {
 #[test]
 fn a_closed_stdout_pipe_ends_ffvk_with_a_failure_status_and_no_panic() {
     for args in [vec!["info"], vec!["scene", "assets/teapot.gltf"]] {
-        let mut child = ffvk_command(&args.iter().map(|a| a as _).collect::<Vec<_>>())
+        // The read end is closed before ffvk starts, so its first write fails whatever the
+        // scheduling (closing it after the spawn raced ffvk's output into the pipe's buffer).
+        let (reader, writer) = std::io::pipe().unwrap();
+        drop(reader);
+        let child = ffvk_command(&args.iter().map(|a| a as _).collect::<Vec<_>>())
             .current_dir(env!("CARGO_MANIFEST_DIR"))
-            .stdout(Stdio::piped())
+            .stdout(Stdio::from(writer))
             .stderr(Stdio::piped())
             .spawn()
             .unwrap();
-        // The read end closed before ffvk writes its first line.
-        drop(child.stdout.take());
         let (status, out) = finish_within(child, 60, &args.join(" "));
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
