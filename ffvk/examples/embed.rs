@@ -142,6 +142,25 @@ pub fn render_modes(
     Ok(LightingMode::ALL.into_iter().zip(images).collect())
 }
 
+/// Runs `work` on a fresh [`App`] at `size` and fails with the validation layer's messages,
+/// if it reported any, after the app (and so every Vulkan object) is gone.
+fn with_app<T>(
+    device_name: Option<&str>,
+    validation: bool,
+    size: u32,
+    work: impl FnOnce(&mut App) -> Result<T, String>,
+) -> Result<T, String> {
+    let mut app = App::new(device_name, validation, size)?;
+    let result = work(&mut app);
+    let messages = app.messages();
+    drop(app);
+    let value = result?;
+    if !messages.is_empty() {
+        return Err(format!("validation messages:\n{}", messages.join("\n")));
+    }
+    Ok(value)
+}
+
 /// Renders `frames` at `size`×`size` on the device whose name contains `device_name`
 /// (lavapipe by default); returns RGBA8 rows, top row first, one image per frame. With
 /// `validation`, the Khronos validation layer is on and any message it reports is an error.
@@ -164,15 +183,7 @@ pub fn render_frames_draw_by_draw(
     size: u32,
     frames: &[EmbedFrame],
 ) -> Result<Vec<Vec<u8>>, String> {
-    let mut app = App::new(device_name, validation, size)?;
-    let result = app.render(frames, 0, true);
-    let messages = app.messages();
-    drop(app);
-    let images = result?;
-    if !messages.is_empty() {
-        return Err(format!("validation messages:\n{}", messages.join("\n")));
-    }
-    Ok(images)
+    with_app(device_name, validation, size, |app| app.render(frames, 0, true))
 }
 
 /// An `n` × `n` grid under `state` drawn one `Lighting::draw` at a time into one command
@@ -186,15 +197,9 @@ pub fn render_alternating(
     n: u32,
     forget_each: bool,
 ) -> Result<Vec<u8>, String> {
-    let mut app = App::new(device_name, validation, SIZE)?;
-    let result = app.render_alternating(state, n, forget_each);
-    let messages = app.messages();
-    drop(app);
-    let image = result?;
-    if !messages.is_empty() {
-        return Err(format!("validation messages:\n{}", messages.join("\n")));
-    }
-    Ok(image)
+    with_app(device_name, validation, SIZE, |app| {
+        app.render_alternating(state, n, forget_each)
+    })
 }
 
 /// [`render_frames`] with ffvk's uniform block at descriptor set `set_index`, as a renderer
@@ -206,15 +211,9 @@ pub fn render_frames_in_set(
     set_index: u32,
     frames: &[EmbedFrame],
 ) -> Result<Vec<Vec<u8>>, String> {
-    let mut app = App::new(device_name, validation, size)?;
-    let result = app.render(frames, set_index, false);
-    let messages = app.messages();
-    drop(app);
-    let images = result?;
-    if !messages.is_empty() {
-        return Err(format!("validation messages:\n{}", messages.join("\n")));
-    }
-    Ok(images)
+    with_app(device_name, validation, size, |app| {
+        app.render(frames, set_index, false)
+    })
 }
 
 #[allow(dead_code)] // the test suite includes this file for render_modes
