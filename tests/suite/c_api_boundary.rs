@@ -404,7 +404,7 @@ fn the_rust_api_refuses_the_same_targets_layouts_and_raster_states_as_the_c_api(
         })
     );
     let mut past = input();
-    past.normal.offset = 13;
+    past.normal = past.normal.map(|n| Attribute::new(n.binding, 13, n.format));
     let e = lighting(Target::OFFSCREEN, past, 1).expect("a normal past the stride");
     assert!(e.contains("the normal attribute at offset 13"), "{e}");
     let e = lighting(Target::OFFSCREEN, input(), 1_000_000_000).expect("a billion frames");
