@@ -364,3 +364,218 @@ fn one_lighting_draws_three_vertex_layouts_in_one_frame_as_mesa_draws_the_same_c
     );
     assert_matches_gl(&ffvk, &mesa, "three_layouts");
 }
+
+/// Colors as GL's arrays give them and positions with a w: signed bytes (GL 2.1 table 2.9:
+/// (2c + 1)/255, so byte 0 is 1/255, not 0), unsigned bytes with three components (alpha 1),
+/// and positions (x, y, 0, 2) that GL divides by w, each in a viewport of its own, unlit,
+/// against Mesa's GL drawing the same vertices with glColor4b, glColor3ub and glVertex4f.
+/// Mesa 22.3 converts glColorPointer(GL_BYTE) arrays as Vulkan's SNORM does (max(c/127, −1)),
+/// off the spec: ffvk follows the spec, and this test pins Mesa's deviation.
+#[test]
+fn byte_colors_and_positions_with_w_draw_as_gl_2_1_converts_them() {
+    let mut canvas = Canvas::new(SIZE);
+    let device = canvas.ffvk();
+    let gl = GlState::new();
+    let signed: [i8; 4] = [0, 32, 100, 127];
+    let unsigned: [u8; 3] = [10, 128, 250];
+    // x y z, then the signed color: 16 bytes; x y z, then the unsigned color padded: 16 bytes.
+    let mut signed_vertices = Vec::new();
+    let mut unsigned_vertices = Vec::new();
+    for p in QUAD {
+        signed_vertices.extend_from_slice(&bytes_of(&p));
+        signed_vertices.extend_from_slice(&bytes_of(&signed));
+        unsigned_vertices.extend_from_slice(&bytes_of(&p));
+        unsigned_vertices.extend_from_slice(&unsigned);
+        unsigned_vertices.push(0);
+    }
+    let half_with_w: Vec<f32> = QUAD.iter().flat_map(|p| [p[0], p[1], 0.0, 2.0]).collect();
+    let buffers = [
+        [(canvas.buffer(&signed_vertices), 0)],
+        [(canvas.buffer(&unsigned_vertices), 0)],
+        [(canvas.buffer(&bytes_of(&half_with_w)), 0)],
+    ];
+    let position = Attribute::new(0, 0, vk::Format::R32G32B32_SFLOAT);
+    let layout = |color: Option<Attribute>| {
+        VertexInput::new(vec![binding(16)], position, position)
+            .with_normal(None)
+            .with_color(color)
+    };
+    let options = LightingOptions::new(
+        Target::new(vk::Format::R8G8B8A8_UNORM, vk::Format::UNDEFINED),
+        layout(Some(Attribute::new(0, 12, vk::Format::R8G8B8A8_SNORM))),
+    );
+    let mut lighting = Lighting::new(&device, &options).unwrap();
+    let unsigned_layout = lighting
+        .vertex_layout(layout(Some(Attribute::new(0, 12, vk::Format::R8G8B8_UNORM))))
+        .unwrap();
+    let with_w = lighting
+        .vertex_layout(
+            VertexInput::new(
+                vec![binding(16)],
+                Attribute::new(0, 0, vk::Format::R32G32B32A32_SFLOAT),
+                position,
+            )
+            .with_normal(None),
+        )
+        .unwrap();
+    let strip = Geometry::vertices(4).with_topology(Topology::TriangleStrip);
+    let draw = |i: usize| LitDraw::new(&gl.lighting, Mat4::IDENTITY, Mat4::IDENTITY, &buffers[i], strip);
+    let draws = [
+        draw(0),
+        draw(1).with_layout(Some(unsigned_layout)),
+        draw(2).with_layout(Some(with_w)),
+    ];
+    let third = SIZE / 3;
+    lighting.begin_frame(0).unwrap();
+    let mut results = Vec::new();
+    let ffvk = canvas
+        .frame(|device, cmd| {
+            for (i, draw) in draws.iter().enumerate() {
+                let viewport = vk::Viewport {
+                    x: (i as u32 * third) as f32,
+                    y: 0.0,
+                    width: third as f32,
+                    height: SIZE as f32,
+                    min_depth: 0.0,
+                    max_depth: 1.0,
+                };
+                // SAFETY: the canvas's pass is open; the buffers live as long as the canvas.
+                unsafe { device.cmd_set_viewport(cmd, 0, &[viewport]) };
+                // SAFETY: as above.
+                results.push(unsafe { lighting.draw(cmd, 0, draw) });
+            }
+        })
+        .unwrap();
+    for r in results {
+        r.unwrap();
+    }
+    drop(lighting);
+    drop(device);
+
+    let quads = |g: &raw::Gl, color: &dyn Fn(&raw::Gl)| {
+        // SAFETY: a context is current.
+        unsafe {
+            g.Viewport(0, 0, third as i32, SIZE as i32);
+            g.Begin(raw::TRIANGLE_STRIP);
+            for p in QUAD {
+                color(g);
+                g.Vertex3f(p[0], p[1], p[2]);
+            }
+            g.End();
+            g.Viewport(third as i32, 0, third as i32, SIZE as i32);
+            g.Begin(raw::TRIANGLE_STRIP);
+            for p in QUAD {
+                g.Color3ub(unsigned[0], unsigned[1], unsigned[2]);
+                g.Vertex3f(p[0], p[1], p[2]);
+            }
+            g.End();
+            g.Viewport(2 * third as i32, 0, third as i32, SIZE as i32);
+            g.Color4f(1.0, 1.0, 1.0, 1.0);
+            g.Begin(raw::TRIANGLE_STRIP);
+            for p in QUAD {
+                g.Vertex4f(p[0], p[1], 0.0, 2.0);
+            }
+            g.End();
+        }
+    };
+    let mesa = render_raw_gl(SIZE, SIZE, |g| {
+        // SAFETY: a context is current.
+        quads(g, &|g| unsafe {
+            g.Color4b(signed[0], signed[1], signed[2], signed[3])
+        })
+    })
+    .expect("Mesa's GL renders");
+    let centre = |i: u32| ffvk.get_pixel(i * third + third / 2, SIZE / 2).0;
+    assert_eq!(
+        centre(0),
+        [1, 65, 201, 255],
+        "GL_BYTE (0, 32, 100, 127) as (2c + 1)/255"
+    );
+    assert_eq!(
+        centre(1),
+        [10, 128, 250, 255],
+        "GL_UNSIGNED_BYTE (10, 128, 250), alpha 1"
+    );
+    // w = 2 halves the quad: its corner pixels stay clear, its middle is white.
+    assert_eq!(centre(2), [255; 4]);
+    assert_eq!(
+        ffvk.get_pixel(2 * third + 1, 1).0,
+        [0; 4],
+        "the w = 2 quad covers half its viewport"
+    );
+    assert_matches_gl(&ffvk, &mesa, "byte_colors_and_w");
+
+    // Mesa's deviation: the same bytes through glColorPointer(GL_BYTE) and glDrawArrays (its
+    // immediate mode, glArrayElement included, converts as the spec says).
+    let mesa_array = render_raw_gl(SIZE, SIZE, |g| {
+        let colors: Vec<i8> = (0..4).flat_map(|_| signed).collect();
+        // SAFETY: a context is current; the arrays outlive the draw, which reads 4 vertices.
+        unsafe {
+            g.Viewport(0, 0, third as i32, SIZE as i32);
+            g.EnableClientState(raw::VERTEX_ARRAY);
+            g.EnableClientState(raw::COLOR_ARRAY);
+            g.VertexPointer(3, raw::FLOAT, 0, QUAD.as_ptr().cast());
+            g.ColorPointer(4, raw::BYTE, 0, colors.as_ptr().cast());
+            g.DrawArrays(raw::TRIANGLE_STRIP, 0, 4);
+            g.DisableClientState(raw::COLOR_ARRAY);
+            g.DisableClientState(raw::VERTEX_ARRAY);
+        }
+    })
+    .expect("Mesa's GL renders");
+    let mesa_bytes = mesa_array.get_pixel(third / 2, SIZE / 2).0;
+    assert_eq!(
+        mesa_bytes,
+        [0, 64, 201, 255],
+        "Mesa 22.3 converts glColorPointer(GL_BYTE) as max(c/127, -1), not as GL 2.1's (2c + 1)/255"
+    );
+}
+
+/// A layout with a material array drawn in the fragment mode (whose materials are the
+/// draw's), and a layout handle of another `Lighting`, are refused by name, recording nothing.
+#[test]
+fn material_arrays_in_the_fragment_mode_and_another_lightings_layout_are_refused_by_name() {
+    let mut canvas = Canvas::new(8);
+    let device = canvas.ffvk();
+    let buffer = canvas.buffer(&bytes_of(&[0f32; 4 * 8]));
+    let position = Attribute::new(0, 0, vk::Format::R32G32B32_SFLOAT);
+    let plain = VertexInput::new(vec![binding(32)], position, position);
+    let with_material = plain.clone().with_material(
+        Face::Back,
+        MaterialArray::Specular,
+        Some(Attribute::new(0, 12, vk::Format::R32G32B32A32_SFLOAT)),
+    );
+    let target = Target::new(vk::Format::R8G8B8A8_UNORM, vk::Format::UNDEFINED);
+    let mut lighting = Lighting::new(&device, &LightingOptions::new(target, plain.clone())).unwrap();
+    let mut other = Lighting::new(&device, &LightingOptions::new(target, plain)).unwrap();
+    let materials = lighting.vertex_layout(with_material).unwrap();
+    let foreign = other.vertex_layout(VertexInput::interleaved()).unwrap();
+    let mut gl = GlState::new();
+    gl.enable(Cap::Lighting).unwrap();
+    gl.lighting.mode = LightingMode::Fragment;
+    let buffers = [(buffer, 0)];
+    let draw = LitDraw::new(
+        &gl.lighting,
+        Mat4::IDENTITY,
+        Mat4::IDENTITY,
+        &buffers,
+        Geometry::vertices(3),
+    );
+    lighting.begin_frame(0).unwrap();
+    let mut errors = Vec::new();
+    canvas
+        .frame(|_, cmd| {
+            for layout in [materials, foreign] {
+                // SAFETY: the canvas's pass is open; the buffer lives as long as the canvas.
+                let e = unsafe { lighting.draw(cmd, 0, &draw.with_layout(Some(layout))) };
+                errors.push(e.expect_err("refused").to_string());
+            }
+        })
+        .unwrap();
+    assert!(
+        errors[0].contains("back GL_SPECULAR material per vertex") && errors[0].contains("fragment mode"),
+        "{}",
+        errors[0]
+    );
+    assert!(errors[1].contains("made by another Lighting"), "{}", errors[1]);
+    drop((lighting, other));
+}
