@@ -21,9 +21,11 @@
 //! still uses it (wait for its fences or the device).
 //!
 //! The pipelines read the caller's vertex bindings per vertex and ffvk's draw records per
-//! instance, at the lowest binding number the caller's [`VertexInput`](super::pipeline::VertexInput) leaves free, as
-//! attribute locations 4-19 ([`DrawRecord`]); the device needs `maxVertexInputAttributes` ≥ 20
+//! instance, at the lowest binding number the caller's [`VertexInput`] leaves free, as
+//! attribute locations 4-20 ([`DrawRecord`]), and GL's current values from the record where a
+//! layout has no array for them; the device needs `maxVertexInputAttributes` ≥ 21
 //! ([`LightingError::VertexInputLimit`] otherwise). Instancing and `firstInstance` are ffvk's.
+//! One `Lighting` draws with any number of vertex layouts ([`Lighting::vertex_layout`]).
 //!
 //! [`Lighting::draw`] records, into the caller's command buffer inside the caller's dynamic
 //! rendering pass (`vkCmdBeginRendering`; render passes are not supported): bind pipeline,
@@ -69,7 +71,7 @@
 //!
 //! A draw's GL state is staged in GL's rhythm. Its own values, the ones GL programs change
 //! between draws (modelview, materials, current color), are checked and written as its
-//! [`DrawRecord`] (256 bytes, with the normal matrix): that is all a draw that changes only
+//! [`DrawRecord`] (288 bytes, with the normal matrix): that is all a draw that changes only
 //! those writes, about 0.1 µs on the host on lavapipe in a run whose draws borrow one
 //! [`LightingState`] and carry their own [`DrawValues`] (0.3-0.5 µs when each draw brings a
 //! state of its own, which is compared with the one before). The rest ([`StateBlock`]: lights,

@@ -675,8 +675,9 @@ impl VertexInput {
         out
     }
 
-    /// The attribute descriptions a pipeline of this layout uses, the record's at
-    /// `record_binding()` ([`VertexInput::sources`]).
+    /// The attribute descriptions ffvk's pipelines of this layout use (`textured`: with
+    /// location 3): the caller's arrays, and at [`VertexInput::record_binding`] the draw
+    /// record's fields, GL's current values among them for the arrays the layout lacks.
     pub fn attributes(&self, textured: bool) -> Vec<vk::VertexInputAttributeDescription> {
         let record = self.record_binding();
         self.sources(textured)
