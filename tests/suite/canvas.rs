@@ -50,6 +50,10 @@ pub(crate) struct Canvas {
     fence: vk::Fence,
     color: (vk::Image, vk::ImageView, vk::DeviceMemory),
     readback: (vk::Buffer, vk::DeviceMemory),
+    /// Textures: image, view, memory, sampler; laid out for sampling by the next frame.
+    textures: Vec<(vk::Image, vk::ImageView, vk::DeviceMemory, vk::Sampler)>,
+    /// Textures made since the last frame, which that frame lays out for sampling first.
+    fresh: Vec<vk::Image>,
     buffers: Vec<(vk::Buffer, vk::DeviceMemory)>,
     pub(crate) size: u32,
 }
@@ -143,6 +147,8 @@ impl Canvas {
                 fence,
                 color: Default::default(),
                 readback: Default::default(),
+                textures: Vec::new(),
+                fresh: Vec::new(),
                 buffers: Vec::new(),
                 size,
             };
@@ -255,6 +261,75 @@ impl Canvas {
         }
     }
 
+    /// A `width` × `height` RGBA8 texture of `rgba` (rows from GL's first, t = 0), linear
+    /// tiling in host-visible memory, with a sampler made from `info`: its view and sampler,
+    /// in `SHADER_READ_ONLY_OPTIMAL` from the next frame on.
+    pub(crate) fn texture(
+        &mut self,
+        rgba: &[u8],
+        (width, height): (u32, u32),
+        info: &vk::SamplerCreateInfo,
+    ) -> (vk::ImageView, vk::Sampler) {
+        // SAFETY: the device is alive; the image's memory is bound once and written while
+        // preinitialized, before any command uses it.
+        unsafe {
+            let image_info = vk::ImageCreateInfo::default()
+                .image_type(vk::ImageType::TYPE_2D)
+                .format(vk::Format::R8G8B8A8_UNORM)
+                .extent(vk::Extent3D {
+                    width,
+                    height,
+                    depth: 1,
+                })
+                .mip_levels(1)
+                .array_layers(1)
+                .samples(vk::SampleCountFlags::TYPE_1)
+                .tiling(vk::ImageTiling::LINEAR)
+                .initial_layout(vk::ImageLayout::PREINITIALIZED)
+                .usage(vk::ImageUsageFlags::SAMPLED);
+            let image = self.device.create_image(&image_info, None).expect("a texture");
+            let memory = self.memory(
+                self.device.get_image_memory_requirements(image),
+                vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT,
+            );
+            self.device.bind_image_memory(image, memory, 0).expect("bound");
+            let layout = self.device.get_image_subresource_layout(
+                image,
+                vk::ImageSubresource {
+                    aspect_mask: vk::ImageAspectFlags::COLOR,
+                    mip_level: 0,
+                    array_layer: 0,
+                },
+            );
+            let at = self
+                .device
+                .map_memory(memory, 0, vk::WHOLE_SIZE, vk::MemoryMapFlags::empty())
+                .expect("mapped")
+                .cast::<u8>();
+            let row = (width * 4) as usize;
+            for (y, texels) in rgba.chunks_exact(row).enumerate() {
+                let to = at.add(layout.offset as usize + y * layout.row_pitch as usize);
+                std::ptr::copy_nonoverlapping(texels.as_ptr(), to, row);
+            }
+            self.device.unmap_memory(memory);
+            let view = self
+                .device
+                .create_image_view(
+                    &vk::ImageViewCreateInfo::default()
+                        .image(image)
+                        .view_type(vk::ImageViewType::TYPE_2D)
+                        .format(vk::Format::R8G8B8A8_UNORM)
+                        .subresource_range(color_range()),
+                    None,
+                )
+                .expect("a view");
+            let sampler = self.device.create_sampler(info, None).expect("a sampler");
+            self.textures.push((image, view, memory, sampler));
+            self.fresh.push(image);
+            (view, sampler)
+        }
+    }
+
     /// The whole image as a viewport (depth 0..1).
     pub(crate) fn full_viewport(&self) -> vk::Viewport {
         vk::Viewport {
@@ -290,6 +365,30 @@ impl Canvas {
             device
                 .begin_command_buffer(cmd, &vk::CommandBufferBeginInfo::default())
                 .map_err(|e| e.to_string())?;
+            let to_sampled: Vec<vk::ImageMemoryBarrier> = self
+                .fresh
+                .drain(..)
+                .map(|image| {
+                    vk::ImageMemoryBarrier::default()
+                        .old_layout(vk::ImageLayout::PREINITIALIZED)
+                        .new_layout(vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL)
+                        .src_access_mask(vk::AccessFlags::HOST_WRITE)
+                        .dst_access_mask(vk::AccessFlags::SHADER_READ)
+                        .image(image)
+                        .subresource_range(color_range())
+                })
+                .collect();
+            if !to_sampled.is_empty() {
+                device.cmd_pipeline_barrier(
+                    cmd,
+                    vk::PipelineStageFlags::HOST,
+                    vk::PipelineStageFlags::FRAGMENT_SHADER,
+                    vk::DependencyFlags::empty(),
+                    &[],
+                    &[],
+                    &to_sampled,
+                );
+            }
             let to_attachment = vk::ImageMemoryBarrier::default()
                 .old_layout(vk::ImageLayout::UNDEFINED)
                 .new_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
@@ -421,6 +520,12 @@ impl Drop for Canvas {
         unsafe {
             let d = &self.device;
             let _ = d.device_wait_idle();
+            for (image, view, memory, sampler) in self.textures.drain(..) {
+                d.destroy_sampler(sampler, None);
+                d.destroy_image_view(view, None);
+                d.destroy_image(image, None);
+                d.free_memory(memory, None);
+            }
             for (buffer, memory) in self.buffers.drain(..).chain([self.readback]) {
                 d.destroy_buffer(buffer, None);
                 d.free_memory(memory, None);

@@ -579,3 +579,123 @@ fn material_arrays_in_the_fragment_mode_and_another_lightings_layout_are_refused
     assert!(errors[1].contains("made by another Lighting"), "{}", errors[1]);
     drop((lighting, other));
 }
+
+/// A textured draw whose layout has no texture coordinate array takes GL's current texture
+/// coordinates (glTexCoord2f before the vertices: every fragment samples one texel), and
+/// four-component texture coordinates divide by q as GL's do (glTexCoord4f with q = 2), each
+/// in half the image, against Mesa's GL; a 2×2 texture, nearest, `GL_REPLACE`.
+#[test]
+fn current_and_projective_texture_coordinates_sample_as_mesa_samples_them() {
+    use ffvk::draw::texture::sampler_info;
+    use ffvk::gl::texture::{Sampling, TexEnvMode};
+    let texels: [u8; 16] = [255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255];
+    let mut canvas = Canvas::new(SIZE);
+    let device = canvas.ffvk();
+    let (view, sampler) = canvas.texture(&texels, (2, 2), &sampler_info(&Sampling::NEAREST, 1));
+    let mut gl = GlState::new();
+    gl.lighting.texture.enabled = true;
+    gl.lighting.texture.env_mode = TexEnvMode::Replace;
+    gl.tex_coord(Vec4::new(0.75, 0.25, 0.0, 1.0)).unwrap();
+    // x y z, then s t r q with q = 2: 28 bytes.
+    let corners = [[0.0f32, 0.0], [1.0, 0.0], [0.0, 1.0], [1.0, 1.0]];
+    let mut projective = Vec::new();
+    for (p, st) in QUAD.iter().zip(corners) {
+        projective.extend_from_slice(p);
+        projective.extend_from_slice(&[2.0 * st[0], 2.0 * st[1], 0.0, 2.0]);
+    }
+    let buffers = [
+        [(canvas.buffer(&bytes_of(&QUAD)), 0)],
+        [(canvas.buffer(&bytes_of(&projective)), 0)],
+    ];
+    let position = Attribute::new(0, 0, vk::Format::R32G32B32_SFLOAT);
+    let bare = VertexInput::new(vec![binding(12)], position, position).with_normal(None);
+    let with_stq = VertexInput::new(vec![binding(28)], position, position)
+        .with_normal(None)
+        .with_texcoord(Some(Attribute::new(0, 12, vk::Format::R32G32B32A32_SFLOAT)));
+    let target = Target::new(vk::Format::R8G8B8A8_UNORM, vk::Format::UNDEFINED);
+    let mut lighting = Lighting::new(&device, &LightingOptions::new(target, bare)).unwrap();
+    let stq = lighting.vertex_layout(with_stq).unwrap();
+    // SAFETY: the view and sampler are the canvas's, alive until it drops, after `lighting`.
+    let texture = unsafe { lighting.bind_texture(view, sampler) }.unwrap();
+    let strip = Geometry::vertices(4).with_topology(Topology::TriangleStrip);
+    let draws = [
+        LitDraw::new(&gl.lighting, Mat4::IDENTITY, Mat4::IDENTITY, &buffers[0], strip)
+            .with_texture(Some(&texture)),
+        LitDraw::new(&gl.lighting, Mat4::IDENTITY, Mat4::IDENTITY, &buffers[1], strip)
+            .with_texture(Some(&texture))
+            .with_layout(Some(stq)),
+    ];
+    let half = SIZE / 2;
+    lighting.begin_frame(0).unwrap();
+    let mut results = Vec::new();
+    let ffvk = canvas
+        .frame(|device, cmd| {
+            for (i, draw) in draws.iter().enumerate() {
+                let viewport = vk::Viewport {
+                    x: (i as u32 * half) as f32,
+                    y: 0.0,
+                    width: half as f32,
+                    height: SIZE as f32,
+                    min_depth: 0.0,
+                    max_depth: 1.0,
+                };
+                // SAFETY: the canvas's pass is open; buffers and texture outlive the frame.
+                unsafe { device.cmd_set_viewport(cmd, 0, &[viewport]) };
+                // SAFETY: as above.
+                results.push(unsafe { lighting.draw(cmd, 0, draw) });
+            }
+        })
+        .unwrap();
+    for r in results {
+        r.unwrap();
+    }
+    drop(texture);
+    drop(lighting);
+    drop(device);
+
+    let mesa = render_raw_gl(SIZE, SIZE, |g| {
+        // SAFETY: a context is current; the texels outlive glTexImage2D.
+        unsafe {
+            let mut name = 0;
+            g.GenTextures(1, &mut name);
+            g.BindTexture(raw::TEXTURE_2D, name);
+            g.TexImage2D(
+                raw::TEXTURE_2D,
+                0,
+                raw::RGBA as i32,
+                2,
+                2,
+                0,
+                raw::RGBA,
+                raw::UNSIGNED_BYTE,
+                texels.as_ptr().cast(),
+            );
+            g.TexParameteri(raw::TEXTURE_2D, raw::TEXTURE_MIN_FILTER, raw::NEAREST as i32);
+            g.TexParameteri(raw::TEXTURE_2D, raw::TEXTURE_MAG_FILTER, raw::NEAREST as i32);
+            g.TexEnvi(raw::TEXTURE_ENV, raw::TEXTURE_ENV_MODE, raw::REPLACE as i32);
+            g.Enable(raw::TEXTURE_2D);
+            g.Viewport(0, 0, half as i32, SIZE as i32);
+            g.TexCoord2f(0.75, 0.25);
+            g.Begin(raw::TRIANGLE_STRIP);
+            for p in QUAD {
+                g.Vertex3f(p[0], p[1], p[2]);
+            }
+            g.End();
+            g.Viewport(half as i32, 0, half as i32, SIZE as i32);
+            g.Begin(raw::TRIANGLE_STRIP);
+            for (p, st) in QUAD.iter().zip(corners) {
+                g.TexCoord4f(2.0 * st[0], 2.0 * st[1], 0.0, 2.0);
+                g.Vertex3f(p[0], p[1], p[2]);
+            }
+            g.End();
+            g.DeleteTextures(1, &name);
+        }
+    })
+    .expect("Mesa's GL renders");
+    // The current coordinates (0.75, 0.25) pick texel (1, 0): green, everywhere in the left half.
+    assert_eq!(ffvk.get_pixel(2, 2).0, [0, 255, 0, 255]);
+    assert_eq!(ffvk.get_pixel(half - 3, SIZE - 3).0, [0, 255, 0, 255]);
+    // With q = 2 the right half shows the whole texture: its top-left quarter is t = 1, s = 0.
+    assert_eq!(ffvk.get_pixel(half + 3, 3).0, [0, 0, 255, 255]);
+    assert_matches_gl(&ffvk, &mesa, "current_and_projective_texcoords");
+}
