@@ -2,11 +2,20 @@
  *
  * GL's lighting state on a context (GL's entry points, enums and errors), and ffvk's
  * pipelines on the caller's Vulkan device recording draws into the caller's command buffers.
- * Link with -lffvk_c (libffvk_c.so or libffvk_c.a; the static library also needs
- * -lm -ldl -lpthread). GL enums: plain uint32_t values as <GL/gl.h> spells them; this header
- * defines those it uses unless already defined. Threads: a context, a renderer, a texture and
- * a mesh are each used by one thread at a time; different objects are independent. No call
- * submits to a queue or waits on the device. */
+ * Build with `pkg-config --cflags --libs ffvk` (after `make install-c`), or link with -lffvk_c
+ * (libffvk_c.so.0, or libffvk_c.a, which also needs -lm -ldl -lpthread). GL enums: plain
+ * uint32_t values as <GL/gl.h> spells them; this header defines those it uses unless already
+ * defined. Threads: a context, a renderer, a texture and a mesh are each used by one thread at
+ * a time; different objects are independent. No call submits to a queue or waits on the
+ * device.
+ *
+ * Growing without breaking: a struct that starts with `struct_size` (set it to the struct's
+ * sizeof) only grows at its end, each new field documented with its default; the library
+ * accepts the size of every published version, reads only what struct_size covers and gives
+ * the fields beyond it their defaults, so a program built against an older ffvk.h runs with a
+ * newer library. Any other size is FFVK_ERROR_INVALID_ARGUMENT. Structs without struct_size
+ * never change, and no function's signature changes: the API grows by new fields and new
+ * functions. */
 
 #ifndef FFVK_H
 #define FFVK_H
@@ -322,7 +331,8 @@ typedef struct FfvkRenderer FfvkRenderer;
 typedef struct FfvkTexture FfvkTexture;
 
 /*
- A view of an `FfvkMesh`'s arrays, valid until `ffvkDestroyMesh`.
+ A view of an `FfvkMesh`'s arrays, valid until `ffvkDestroyMesh`. It never changes (it has
+ no `struct_size`).
  */
 typedef struct FfvkMeshArrays {
   /*
@@ -357,6 +367,8 @@ typedef struct FfvkMeshArrays {
  `VK_FORMAT_R32G32B32_SFLOAT`, `VK_FORMAT_R8G8B8A8_UNORM`, that the device reads from
  vertex buffers). The attribute lies within one element: offset + the format's size <= the
  binding's stride.
+
+ It never changes (it has no `struct_size`).
  */
 typedef struct FfvkAttribute {
   /*
@@ -374,8 +386,15 @@ typedef struct FfvkAttribute {
 } FfvkAttribute;
 
 /*
- What `ffvkCreateRenderer` takes. Set `struct_size` to `sizeof(FfvkRendererCreateInfo)`:
- later versions add fields at the end and read only what the caller's size covers.
+ What `ffvkCreateRenderer` takes. Set `struct_size` to `sizeof(FfvkRendererCreateInfo)`.
+
+ How it grows (the rule of every struct with a `struct_size`): a later `ffvk.h` only appends
+ fields, each documented with its default. The library accepts the `sizeof` of every
+ published version of the struct (this header's is version 1), reads only the bytes
+ `struct_size` covers and gives the fields beyond them their defaults, so a program built
+ against an older header runs unchanged with a newer library. Any other size (0, between
+ two versions, or a newer header's than the library knows) is refused with
+ `FFVK_ERROR_INVALID_ARGUMENT`, the message naming the size given and the sizes accepted.
  */
 typedef struct FfvkRendererCreateInfo {
   /*
@@ -475,6 +494,9 @@ typedef struct FfvkRendererCreateInfo {
  `front_face` 0 or 1, `depth_compare` `VK_COMPARE_OP_NEVER` .. `ALWAYS` (0 .. 7), and while
  blending, factors `VK_BLEND_FACTOR_ZERO` .. `SRC_ALPHA_SATURATE` (0 .. 14; no dual-source
  factors) and equations `VK_BLEND_OP_ADD` .. `MAX` (0 .. 4).
+
+ It never changes size (`ffvkRasterDefaults` writes it whole, and it lies inside
+ `FfvkDrawInfo`): raster state added later becomes new fields at the end of `FfvkDrawInfo`.
  */
 typedef struct FfvkRaster {
   /*
@@ -538,6 +560,12 @@ typedef struct FfvkRaster {
 /*
  One draw: `glDrawArrays` (no index buffer) or `glDrawElementsBaseVertex`. Set
  `struct_size` to `sizeof(FfvkDrawInfo)`.
+
+ It grows as `FfvkRendererCreateInfo` does: later headers append fields (each with its
+ default), the library accepts every published version's size (this header's is version 1)
+ and reads only what `struct_size` covers. `raster` never grows (`FfvkRaster` keeps its
+ size): raster state added later is appended to `FfvkDrawInfo` itself, GL's initial value
+ its default.
  */
 typedef struct FfvkDrawInfo {
   /*
@@ -1108,17 +1136,19 @@ void ffvkGetBooleanv(struct FfvkContext *ctx, uint32_t pname, uint8_t *params);
  claims, the formats' features and sample counts, vertex limits), and makes the pipeline
  layout; pipelines are made on the first draw that needs each (about 15 ms on lavapipe).
  Returns `FFVK_SUCCESS` with `*renderer` set, or an error code with `*renderer` null:
- `FFVK_ERROR_INVALID_ARGUMENT` (a null pointer or handle, a wrong `struct_size`, 0 or more
- than `FFVK_MAX_FRAMES_IN_FLIGHT` frames, more than `FFVK_MAX_VERTEX_BINDINGS` bindings,
- unknown feature bits, a format, sample count or vertex layout that is invalid or that the
- device does not support; the message names the field, its value and what was expected),
+ `FFVK_ERROR_INVALID_ARGUMENT` (a null pointer or handle, a `struct_size` that is not a
+ published version's, 0 or more than `FFVK_MAX_FRAMES_IN_FLIGHT` frames, more than
+ `FFVK_MAX_VERTEX_BINDINGS` bindings, unknown feature bits, a format, sample count or
+ vertex layout that is invalid or that the device does not support; the message names the
+ field, its value and what was expected),
  `FFVK_ERROR_MISSING_FEATURE`, `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN`. Records
  nothing.
 
  # Safety
 
- `info` and `renderer` are null or valid; the handles in `info` are live, `device` was
- created from `physical_device` of `instance` with the features `enabled_features` names,
+ `renderer` is null or writable; `info` is null or points at the `struct_size` bytes of a
+ create info as the caller's header declares it; the handles in `info` are live, `device`
+ was created from `physical_device` of `instance` with the features `enabled_features` names,
  and all of them outlive the renderer.
  */
 enum FfvkResult ffvkCreateRenderer(const struct FfvkRendererCreateInfo *info,
@@ -1169,9 +1199,10 @@ enum FfvkResult ffvkBeginDraws(struct FfvkRenderer *renderer, VkCommandBuffer cm
  The draw is checked and its state written into the slot's memory now (its pipeline is made
  now if it is new: about 15 ms on lavapipe); `ffvkEndDraws` records it. A refused draw is
  not added and the scope stays open with the draws before it. Errors:
- `FFVK_ERROR_INVALID_ARGUMENT` (no open scope, a null pointer, a wrong `struct_size`, a mode
- ffvk does not draw directly, a buffer count other than the layout's bindings, a raster
- enum that is not one ffvk passes to Vulkan (see `FfvkRaster`), blending into a color
+ `FFVK_ERROR_INVALID_ARGUMENT` (no open scope, a null pointer, a `struct_size` that is not a
+ published version's, a mode ffvk does not draw directly, a buffer count other than the
+ layout's bindings, a raster enum that is not one ffvk passes to Vulkan (see `FfvkRaster`),
+ blending into a color
  format the device cannot blend, a point size or line width out of the device's range, a
  textured draw without texture coordinates),
  `FFVK_ERROR_STATE` (the context's state cannot be drawn: a soft spot cone wider than its
@@ -1182,8 +1213,9 @@ enum FfvkResult ffvkBeginDraws(struct FfvkRenderer *renderer, VkCommandBuffer cm
  # Safety
 
  `renderer` and `ctx` are null or live and used by this thread only; `draw` is null or
- valid, its buffers are the caller's live buffers of the renderer's device, and its texture
- is null or live until `ffvkEndDraws` returns.
+ points at the `struct_size` bytes of a draw info as the caller's header declares it; its
+ buffers are the caller's live buffers of the renderer's device, and its texture is null or
+ live until `ffvkEndDraws` returns.
  */
 enum FfvkResult ffvkDraw(struct FfvkRenderer *renderer,
                          const struct FfvkContext *ctx,

@@ -14,6 +14,7 @@
 //! (state entry points, which return nothing in GL) or returns an
 //! [`FfvkResult`](result::FfvkResult) with a message from `ffvkResultMessage`.
 
+pub mod abi;
 pub mod enums;
 pub mod gl;
 pub mod mesh;

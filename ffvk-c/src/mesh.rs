@@ -15,7 +15,8 @@ pub struct FfvkMesh {
     indices: Vec<u32>,
 }
 
-/// A view of an `FfvkMesh`'s arrays, valid until `ffvkDestroyMesh`.
+/// A view of an `FfvkMesh`'s arrays, valid until `ffvkDestroyMesh`. It never changes (it has
+/// no `struct_size`).
 #[repr(C)]
 pub struct FfvkMeshArrays {
     /// How many vertices.

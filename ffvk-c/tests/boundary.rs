@@ -1644,14 +1644,27 @@ fn create_renderer_with_a_null_info_is_invalid_argument_and_nulls_the_out_pointe
 }
 
 #[test]
-fn create_renderer_with_a_struct_size_below_the_structs_is_invalid_argument() {
-    let full = size_of::<FfvkRendererCreateInfo>();
-    for size in [0u32, 4, 8, full as u32 - 1] {
+fn create_renderer_refuses_a_struct_size_that_no_published_header_declares_naming_the_sizes_accepted() {
+    let v1 = size_of::<FfvkRendererCreateInfo>() as u32;
+    let accepted = format!(
+        "expected sizeof(FfvkRendererCreateInfo) as a published ffvk.h declares it, {v1} (version 1)"
+    );
+    for (size, why) in [
+        (0u32, "smaller than version 1"),
+        (4, "smaller than version 1"),
+        (v1 - 8, "smaller than version 1"),
+        (v1 - 1, "smaller than version 1"),
+        (
+            v1 + 1,
+            "larger than any version this library (ffvk-c 0.1.0) knows",
+        ),
+        (v1 + 8, "a newer ffvk.h than the library it runs with"),
+        (u32::MAX, "larger than any version"),
+    ] {
         let mut info = create_info();
         info.struct_size = size;
-        let given = format!("FfvkRendererCreateInfo.struct_size is {size}");
-        let expected = format!("expected sizeof(FfvkRendererCreateInfo) = {full}");
-        assert_create_refused(&info, &[&given, &expected]);
+        let given = format!("FfvkRendererCreateInfo.struct_size is {size}: ");
+        assert_create_refused(&info, &[&given, why, &accepted]);
     }
 }
 
