@@ -1298,6 +1298,62 @@ void ffvkRasterDefaults(struct FfvkRaster *raster);
  */
 const char *ffvkResultMessage(void);
 
+/*
+ Writes to `*viewport` the `VkViewport` that puts ffvk's draws where GL's
+ `glViewport(x, y, width, height)` and `glDepthRange(near_val, far_val)` put them, in a
+ color attachment `target_height` pixels high. Set it with `vkCmdSetViewport` between
+ scopes, as GL's state changes. GL counts window rows from the bottom and Vulkan from the
+ top: the result is `x`, `target_height - y - height`, `width`, `height` (positive: ffvk's
+ shaders turn GL's clip space into Vulkan's themselves, so there is no negative-height flip)
+ and depths `near_val`, `far_val`, clamped to [0, 1] as GL clamps them (near may exceed
+ far, as in GL). A layer clamps `width` and `height` to the device's
+ `maxViewportDimensions` first, as GL clamps them to `GL_MAX_VIEWPORT_DIMS`.
+
+ Errors (`FFVK_ERROR_INVALID_ARGUMENT`, `*viewport` unchanged): a null or misaligned
+ `viewport`; a negative `width` or `height` (GL's `GL_INVALID_VALUE`, which keeps the old
+ viewport); a `width` or `height` of 0 (GL draws nothing through an empty viewport, but a
+ `VkViewport` cannot be empty: skip the draws instead); a NaN depth; a `target_height` past
+ `INT32_MAX`.
+
+ # Safety
+
+ `viewport` is null or writable.
+ */
+enum FfvkResult ffvkViewport(int32_t x,
+                             int32_t y,
+                             int32_t width,
+                             int32_t height,
+                             uint32_t target_height,
+                             double near_val,
+                             double far_val,
+                             VkViewport *viewport);
+
+/*
+ Writes to `*scissor` the `VkRect2D` that keeps the pixels GL's
+ `glScissor(x, y, width, height)` keeps, in a color attachment of `target_width` x
+ `target_height` pixels: GL's rows `y` .. `y + height` from the bottom are rows
+ `target_height - y - height` .. `target_height - y` from the top. The box is clipped to the
+ target as GL's window clips it, so the result is always a rectangle Vulkan accepts
+ (offsets from 0, no overflow); a box outside the target or of width or height 0 is an empty
+ rectangle, which draws nothing, as in GL. While `GL_SCISSOR_TEST` is off, GL's box is the
+ whole target: pass 0, 0, `target_width`, `target_height`.
+
+ Errors (`FFVK_ERROR_INVALID_ARGUMENT`, `*scissor` unchanged): a null or misaligned
+ `scissor`; a negative `width` or `height` (GL's `GL_INVALID_VALUE`); a target side past
+ `INT32_MAX`.
+
+ # Safety
+
+ `scissor` is null or writable.
+ */
+enum FfvkResult ffvkScissor(int32_t x,
+                            int32_t y,
+                            int32_t width,
+                            int32_t height,
+                            uint32_t target_width,
+                            uint32_t target_height,
+                            VkRect2D *scissor);
+
 #ifdef __cplusplus
 }  // extern "C"
 #endif  // __cplusplus

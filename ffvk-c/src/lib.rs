@@ -21,6 +21,7 @@ pub mod mesh;
 pub mod query;
 pub mod render;
 pub mod result;
+pub mod viewport;
 
 /// Aliases that spell Vulkan's C types for the header. cbindgen does not emit them (the
 /// header takes them from `<vulkan/vulkan.h>`); each is ABI-identical to the C type: ash's
@@ -62,6 +63,10 @@ pub mod vk_types {
     pub type VkIndexType = vk::IndexType;
     /// `VkDeviceSize`.
     pub type VkDeviceSize = vk::DeviceSize;
+    /// `VkViewport`.
+    pub type VkViewport = vk::Viewport;
+    /// `VkRect2D`.
+    pub type VkRect2D = vk::Rect2D;
     /// `VkVertexInputBindingDescription`.
     pub type VkVertexInputBindingDescription = vk::VertexInputBindingDescription;
     /// `PFN_vkGetInstanceProcAddr` (nullable here, so a null one is refused, not called).

@@ -14,3 +14,4 @@ pub mod record;
 mod ring;
 mod target;
 pub mod texture;
+pub mod viewport;
