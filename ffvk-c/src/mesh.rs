@@ -164,7 +164,7 @@ pub unsafe extern "C" fn ffvkPrimitiveIndices(
             other => {
                 return fail(
                     FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
-                    format!("{F}: mode 0x{other:04X} is not one of GL's ten primitive modes: expected GL_POINTS (0x0000) .. GL_POLYGON (0x0009)"),
+                    format!("{F}: mode {} is not one of GL's ten primitive modes: expected GL_POINTS (0x0000) .. GL_POLYGON (0x0009)", enum_name(other)),
                 )
             }
         };
@@ -172,7 +172,8 @@ pub unsafe extern "C" fn ffvkPrimitiveIndices(
             return fail(
                 FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
                 format!(
-                    "{F}: count {count} of mode 0x{mode:04X} makes {needed} indices, more than written (a uint32_t) holds: expected a count whose indices number at most {}",
+                    "{F}: count {count} of mode {} makes {needed} indices, more than written (a uint32_t) holds: expected a count whose indices number at most {}",
+                    mode_name(mode),
                     u32::MAX
                 ),
             );

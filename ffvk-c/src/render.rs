@@ -501,12 +501,14 @@ fn topology(mode: u32) -> Result<Topology, FfvkResult> {
         GL_TRIANGLE_FAN => Topology::TriangleFan,
         GL_LINE_LOOP | GL_QUADS | GL_QUAD_STRIP | GL_POLYGON => {
             return Err(invalid(format!(
-                "ffvkDraw: mode 0x{mode:04X} is drawn as a list: turn its vertices into indices with ffvkPrimitiveIndices and draw those"
+                "ffvkDraw: mode {} is drawn as a list: turn its vertices into indices with ffvkPrimitiveIndices (or ffvkPrimitiveIndicesRange) and draw those",
+                mode_name(mode)
             )))
         }
         other => {
             return Err(invalid(format!(
-                "ffvkDraw: mode 0x{other:04X} is not a GL primitive: expected GL_POINTS, GL_LINES, GL_LINE_STRIP, GL_TRIANGLES, GL_TRIANGLE_STRIP or GL_TRIANGLE_FAN"
+                "ffvkDraw: mode {} is not a GL primitive: expected GL_POINTS, GL_LINES, GL_LINE_STRIP, GL_TRIANGLES, GL_TRIANGLE_STRIP or GL_TRIANGLE_FAN",
+                enum_name(other)
             )))
         }
     })

@@ -109,9 +109,26 @@ fn assert_names(text: &str, words: &[&str]) {
     }
 }
 
-/// `0x1234`: how messages show an enum.
+/// `0x1234`: how messages show a value GL has no name for (and the value after a name).
 fn hex(value: u32) -> String {
     format!("0x{value:04X}")
+}
+
+/// `GL_QUADS (0x0007)`: how messages show a primitive mode.
+fn mode_named(mode: u32) -> String {
+    let names = [
+        "GL_POINTS",
+        "GL_LINES",
+        "GL_LINE_LOOP",
+        "GL_LINE_STRIP",
+        "GL_TRIANGLES",
+        "GL_TRIANGLE_STRIP",
+        "GL_TRIANGLE_FAN",
+        "GL_QUADS",
+        "GL_QUAD_STRIP",
+        "GL_POLYGON",
+    ];
+    format!("{} ({})", names[mode as usize], hex(mode))
 }
 
 /// Makes each call as C writes it, then asserts on the context `$c` that it was refused with
@@ -1405,19 +1422,19 @@ fn messages_name_the_function_the_parameter_the_value_and_what_was_expected() {
         ]);
         ffvkMaterialf(x, FRONT, AMBIENT, 1.0);
         expect(&[
-            "ffvkMaterialf: pname 0x1200",
+            "ffvkMaterialf: pname GL_AMBIENT (0x1200)",
             "expected GL_SHININESS",
             "GL_INVALID_ENUM",
         ]);
         ffvkTexEnvi(x, TEXTURE_ENV, TEXTURE_ENV_MODE, COMBINE as i32);
         expect(&[
-            "ffvkTexEnvi: GL_TEXTURE_ENV_MODE value 0x8570",
+            "ffvkTexEnvi: GL_TEXTURE_ENV_MODE value GL_COMBINE (0x8570)",
             "expected GL_MODULATE",
             "GL_COMBINE",
         ]);
         ffvkColorMaterial(x, FRONT, SHININESS);
         expect(&[
-            "ffvkColorMaterial: mode 0x1601",
+            "ffvkColorMaterial: mode GL_SHININESS (0x1601)",
             "expected GL_EMISSION",
             "GL_AMBIENT_AND_DIFFUSE",
         ]);
@@ -1433,7 +1450,7 @@ fn messages_name_the_function_the_parameter_the_value_and_what_was_expected() {
         ]);
         ffvkGetMaterialfv(x, FRONT_AND_BACK, AMBIENT, [0.0f32; 16].as_mut_ptr());
         expect(&[
-            "ffvkGetMaterialfv: face 0x0408",
+            "ffvkGetMaterialfv: face GL_FRONT_AND_BACK (0x0408)",
             "expected GL_FRONT or GL_BACK",
             "GL_INVALID_ENUM",
         ]);
@@ -1443,6 +1460,61 @@ fn messages_name_the_function_the_parameter_the_value_and_what_was_expected() {
             "inf is not a finite number",
             "expected 16 finite floats",
         ]);
+    }
+}
+
+#[test]
+fn messages_name_a_gl_enum_by_its_gl_name_and_a_value_gl_has_no_name_for_in_hex() {
+    const DEPTH_TEST: u32 = 0x0B71;
+    const VERTEX_ARRAY: u32 = 0x8074;
+    let c = Ctx::new();
+    let x = c.0;
+    let expect = |words: &[&str]| {
+        let text = message();
+        assert_eq!(c.error(), INVALID_ENUM, "{text}");
+        assert_names(&text, words);
+    };
+    // SAFETY: a live context; params point at 4 values.
+    unsafe {
+        // Names the API refuses, as a layer forwarding every glEnable passes them.
+        ffvkEnable(x, DEPTH_TEST);
+        expect(&["ffvkEnable: cap GL_DEPTH_TEST (0x0B71) is not accepted"]);
+        ffvkDisable(x, VERTEX_ARRAY);
+        expect(&["ffvkDisable: cap GL_VERTEX_ARRAY (0x8074) is not accepted"]);
+        ffvkTexEnvi(x, TEXTURE_ENV, TEXTURE_ENV_MODE, COMBINE as i32);
+        expect(&["GL_TEXTURE_ENV_MODE value GL_COMBINE (0x8570) is not accepted"]);
+        // Names the API takes, where they do not belong.
+        ffvkLightfv(x, LIGHT0, SHININESS, [0.0f32; 4].as_ptr());
+        expect(&["ffvkLightfv: pname GL_SHININESS (0x1601) is not accepted"]);
+        ffvkGetMaterialfv(x, FRONT_AND_BACK, AMBIENT, [0.0f32; 16].as_mut_ptr());
+        expect(&["ffvkGetMaterialfv: face GL_FRONT_AND_BACK (0x0408) is not accepted"]);
+        // Values GL has no name for, and values below 0x0100 (booleans and primitive modes
+        // share them), stay hex.
+        ffvkEnable(x, LIGHT0 + 16);
+        expect(&["ffvkEnable: cap 0x4010 is not accepted"]);
+        ffvkShadeModel(x, TRIANGLES);
+        expect(&["ffvkShadeModel: mode 0x0004 is not accepted"]);
+    }
+}
+
+#[test]
+fn every_gl_name_a_message_prints_has_the_value_gl_h_gives_it() {
+    let mut headers = String::new();
+    for path in ["/usr/include/GL/gl.h", "/usr/include/GL/glext.h"] {
+        headers += &std::fs::read_to_string(path)
+            .unwrap_or_else(|e| panic!("{path}: {e} (install the Debian package libgl-dev)"));
+    }
+    for (name, value) in ffvk_c::enums::message_names() {
+        let defined = headers.lines().find_map(|line| {
+            let mut words = line.split_whitespace();
+            (words.next() == Some("#define") && words.next() == Some(name))
+                .then(|| words.next())
+                .flatten()
+        });
+        let defined = defined.unwrap_or_else(|| panic!("<GL/gl.h> does not define {name}"));
+        let parsed = u32::from_str_radix(defined.trim_start_matches("0x"), 16)
+            .unwrap_or_else(|e| panic!("{name} is {defined} in <GL/gl.h>: {e}"));
+        assert_eq!(parsed, value, "{name}: <GL/gl.h> says {defined}");
     }
 }
 
@@ -2073,7 +2145,11 @@ fn no_vertices_make_no_indices_in_every_mode() {
 #[test]
 fn primitive_indices_refuses_an_unknown_mode_and_writes_nothing() {
     let v = [0u32, 1, 2, 3];
-    for mode in [POLYGON + 1, LIGHTING, u32::MAX] {
+    for (mode, shown) in [
+        (POLYGON + 1, "0x000A"),
+        (LIGHTING, "GL_LIGHTING (0x0B50)"),
+        (u32::MAX, "0xFFFFFFFF"),
+    ] {
         let mut out = [u32::MAX; 16];
         let (mut written, mut draw_mode) = (7u32, 7u32);
         // SAFETY: 4 vertices; out has room for 16.
@@ -2090,7 +2166,7 @@ fn primitive_indices_refuses_an_unknown_mode_and_writes_nothing() {
         };
         assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
         let words = [
-            &format!("ffvkPrimitiveIndices: mode {}", hex(mode)),
+            &format!("ffvkPrimitiveIndices: mode {shown} is not one of GL's ten primitive modes"),
             "expected GL_POINTS",
         ];
         assert_names(&message(), &words);
@@ -2235,7 +2311,7 @@ fn primitive_indices_refuses_a_count_whose_indices_a_uint32_count_cannot_hold() 
                 "mode {mode}, count {count}"
             );
             let words = [
-                &format!("ffvkPrimitiveIndices: count {count} of mode {}", hex(mode)),
+                &format!("ffvkPrimitiveIndices: count {count} of mode {}", mode_named(mode)),
                 &format!("makes {needed} indices"),
                 "expected a count whose indices number at most 4294967295",
             ];
