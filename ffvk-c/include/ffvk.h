@@ -997,14 +997,15 @@ void ffvkDestroyMesh(struct FfvkMesh *mesh);
  GL's modes that Vulkan lacks, as indices of a mode it has, keeping GL's winding and
  provoking vertex: `GL_QUADS`, `GL_QUAD_STRIP` and `GL_POLYGON` become `GL_TRIANGLES`,
  `GL_LINE_LOOP` becomes `GL_LINES`; the other modes are copied unchanged. `vertices` are
- the `count` vertex numbers GL would read (`first + i` for glDrawArrays, the index array for
- glDrawElements). Writes at most `capacity` indices to `out` (null to ask the size) and the
- needed count to `*written`, and the mode to draw them with to `*draw_mode`. A size query
- (null `out`) reads nothing from `vertices`; nothing is allocated, whatever the count.
- Errors: `FFVK_ERROR_INVALID_ARGUMENT` for an unknown mode, a null `vertices` (with a
- count), a null `written` or `draw_mode`, a count whose indices would number more than a
- `uint32_t` holds (e.g. `GL_POLYGON` of more than 1431655767 vertices; nothing written
- then), or a `capacity` below the needed count (nothing written to `out` then).
+ the `count` vertex numbers GL would read (the index array of glDrawElements; for
+ glDrawArrays' `first + i`, `ffvkPrimitiveIndicesRange` needs no array). Writes at most
+ `capacity` indices to `out` (null to ask the size) and the needed count to `*written`, and
+ the mode to draw them with to `*draw_mode`. A size query (null `out`) reads nothing from
+ `vertices`; nothing is allocated, whatever the count. Errors:
+ `FFVK_ERROR_INVALID_ARGUMENT` for an unknown mode, a null `vertices` (with a count), a
+ null `written` or `draw_mode`, a count whose indices would number more than a `uint32_t`
+ holds (e.g. `GL_POLYGON` of more than 1431655767 vertices; nothing written then), or a
+ `capacity` below the needed count (nothing written to `out` then).
 
  # Safety
 
@@ -1018,6 +1019,27 @@ enum FfvkResult ffvkPrimitiveIndices(uint32_t mode,
                                      uint32_t capacity,
                                      uint32_t *written,
                                      uint32_t *draw_mode);
+
+/*
+ `ffvkPrimitiveIndices` for `glDrawArrays(mode, first, count)`: the vertex numbers are
+ `first`, `first + 1`, … `first + count - 1`, so no array is passed. The outputs, the size
+ query and the errors are `ffvkPrimitiveIndices`'s, and: `FFVK_ERROR_INVALID_ARGUMENT` when
+ `first + count` passes 2^32 (the last vertex number would not fit a `uint32_t`);
+ `FFVK_ERROR_OUT_OF_MEMORY` when the host cannot hold the `count` vertex numbers ffvk makes
+ while it writes `GL_QUADS`, `GL_QUAD_STRIP`, `GL_POLYGON` or `GL_LINE_LOOP` indices (4 bytes
+ each, freed before it returns; the other modes and a size query allocate nothing).
+
+ # Safety
+
+ `out` is null or has room for `capacity`.
+ */
+enum FfvkResult ffvkPrimitiveIndicesRange(uint32_t mode,
+                                          uint32_t first,
+                                          uint32_t count,
+                                          uint32_t *out,
+                                          uint32_t capacity,
+                                          uint32_t *written,
+                                          uint32_t *draw_mode);
 
 /*
  glGetLightfv: a light's parameter as stored: positions and spot directions in eye

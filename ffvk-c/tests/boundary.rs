@@ -2322,6 +2322,128 @@ fn primitive_indices_refuses_a_count_whose_indices_a_uint32_count_cannot_hold() 
     }
 }
 
+/// `ffvkPrimitiveIndicesRange(mode, first, count)`: the size query, then the indices into
+/// room for exactly that many (and two more, which must stay untouched).
+fn primitive_indices_range(mode: u32, first: u32, count: u32) -> (Vec<u32>, u32) {
+    let (mut written, mut draw_mode) = (u32::MAX, u32::MAX);
+    // SAFETY: out is null (asking the size).
+    let r =
+        unsafe { ffvkPrimitiveIndicesRange(mode, first, count, null_mut(), 0, &mut written, &mut draw_mode) };
+    assert_eq!(r, FfvkResult::FFVK_SUCCESS, "{}", message());
+    let mut out = vec![u32::MAX; written as usize + 2];
+    let (mut written2, mut draw_mode2) = (u32::MAX, u32::MAX);
+    // SAFETY: out has room for `written` values.
+    let r = unsafe {
+        ffvkPrimitiveIndicesRange(
+            mode,
+            first,
+            count,
+            out.as_mut_ptr(),
+            written,
+            &mut written2,
+            &mut draw_mode2,
+        )
+    };
+    assert_eq!(r, FfvkResult::FFVK_SUCCESS, "{}", message());
+    assert_eq!((written2, draw_mode2), (written, draw_mode));
+    assert_eq!(out[written as usize..], [u32::MAX; 2], "written past the count");
+    out.truncate(written as usize);
+    (out, draw_mode)
+}
+
+#[test]
+fn the_range_form_makes_the_indices_of_the_consecutive_vertices_first_to_first_plus_count() {
+    for mode in POINTS..=POLYGON {
+        for (first, count) in [
+            (0u32, 0u32),
+            (0, 1),
+            (0, 12),
+            (5, 11),
+            (1000, 9),
+            (u32::MAX - 7, 8),
+        ] {
+            let listed: Vec<u32> = (0..count).map(|i| first + i).collect();
+            assert_eq!(
+                primitive_indices_range(mode, first, count),
+                primitive_indices(mode, &listed),
+                "{} of vertices {first} .. {first} + {count}",
+                mode_named(mode)
+            );
+        }
+    }
+}
+
+#[test]
+fn the_range_form_refuses_a_last_vertex_past_the_uint32_range_naming_first_and_count() {
+    let mut out = [u32::MAX; 8];
+    let (mut written, mut draw_mode) = (5u32, 5u32);
+    for (first, count) in [(u32::MAX, 2u32), (2, u32::MAX), (u32::MAX, u32::MAX)] {
+        for o in [null_mut(), out.as_mut_ptr()] {
+            // SAFETY: out is null or has room for 8; refused before it is looked at.
+            let r = unsafe {
+                ffvkPrimitiveIndicesRange(TRIANGLES, first, count, o, 8, &mut written, &mut draw_mode)
+            };
+            assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+            let words = [
+                &format!("ffvkPrimitiveIndicesRange: first {first} + count {count} passes 2^32"),
+                "expected first + count <= 4294967296",
+            ];
+            assert_names(&message(), &words);
+        }
+    }
+    assert_eq!((written, draw_mode), (5, 5), "written on a refusal");
+    assert_eq!(out, [u32::MAX; 8]);
+    // The last vertex number may be 0xFFFFFFFF itself.
+    let (indices, _) = primitive_indices_range(LINE_LOOP, u32::MAX - 1, 2);
+    assert_eq!(indices, [u32::MAX - 1, u32::MAX, u32::MAX, u32::MAX - 1]);
+}
+
+#[test]
+fn the_range_forms_size_query_and_refusals_are_those_of_the_listed_form() {
+    let (mut written, mut draw_mode) = (0u32, u32::MAX);
+    // SAFETY: a size query writes the count and mode only.
+    let r = unsafe {
+        ffvkPrimitiveIndicesRange(
+            QUADS,
+            0,
+            2_000_000_000,
+            null_mut(),
+            0,
+            &mut written,
+            &mut draw_mode,
+        )
+    };
+    assert_eq!(r, FfvkResult::FFVK_SUCCESS, "{}", message());
+    assert_eq!((written, draw_mode), (3_000_000_000, TRIANGLES));
+    let mut out = [u32::MAX; 16];
+    let (o, w_, m_) = (out.as_mut_ptr(), &raw mut written, &raw mut draw_mode);
+    // SAFETY: each call is refused before out (room for 16) is written.
+    unsafe {
+        assert_each_invalid_argument!(
+            ["count 3000000000 of mode GL_QUADS (0x0007) makes 4500000000 indices"],
+            {
+                ffvkPrimitiveIndicesRange(QUADS, 0, 3_000_000_000, o, 16, w_, m_);
+            }
+        );
+        assert_each_invalid_argument!(
+            ["mode GL_LIGHTING (0x0B50) is not one of GL's ten primitive modes"],
+            {
+                ffvkPrimitiveIndicesRange(LIGHTING, 0, 4, o, 16, w_, m_);
+            }
+        );
+        assert_each_invalid_argument!(["capacity 11 is too small", "expected at least 12"], {
+            ffvkPrimitiveIndicesRange(QUADS, 0, 8, o, 11, w_, m_);
+        });
+        assert_each_invalid_argument!(["written is a null pointer"], {
+            ffvkPrimitiveIndicesRange(QUADS, 0, 4, o, 16, null_mut(), m_);
+        });
+        assert_each_invalid_argument!(["draw_mode is a null pointer"], {
+            ffvkPrimitiveIndicesRange(QUADS, 0, 4, o, 16, w_, null_mut());
+        });
+    }
+    assert_eq!(out, [u32::MAX; 16]);
+}
+
 // ---------------------------------------------------------------------------------------
 // The teapot.
 
