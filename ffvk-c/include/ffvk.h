@@ -270,6 +270,12 @@
 #define FFVK_MAX_VERTEX_BINDINGS 32
 
 /*
+ The most extension names `ffvkDeviceRequirements` ever lists, in this version and later
+ ones: room for this many is always enough.
+ */
+#define FFVK_MAX_DEVICE_EXTENSIONS 4
+
+/*
  What an `FfvkResult`-returning entry point reports. Every code but `FFVK_SUCCESS` comes
  with a message, `ffvkResultMessage()`, naming what failed and what was expected.
  */
@@ -1319,6 +1325,55 @@ void ffvkRasterDefaults(struct FfvkRaster *raster);
  failure. The string is ffvk's, valid until the next ffvk call on this thread.
  */
 const char *ffvkResultMessage(void);
+
+/*
+ Tells the caller what to enable on the device it is about to create for ffvk, and fills it
+ in: call it after choosing `physical_device` and before `vkCreateDevice`, with the
+ `VkPhysicalDeviceFeatures2` (sType `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2`) whose
+ chain the caller then passes as `VkDeviceCreateInfo::pNext` (with `pEnabledFeatures` null),
+ and its own features already set in it. ffvk only sets features to `VK_TRUE`, never clears
+ one:
+
+ - `dynamicRendering` (required) in the chain's `VkPhysicalDeviceVulkan13Features` (or
+   `VkPhysicalDeviceDynamicRenderingFeatures`): the chain must hold one of them;
+ - `provokingVertexLast` in a `VkPhysicalDeviceProvokingVertexFeaturesEXT` of the chain, when
+   the device supports it (`GL_FLAT` needs it), with `VK_EXT_provoking_vertex` listed. Chain
+   one whatever the device: where the device lacks the extension or the feature, ffvk takes
+   the struct out of the chain (Vulkan forbids the struct of an extension not enabled);
+ - `wideLines` and `largePoints` in `features->features`, where supported (line widths and
+   point sizes other than 1).
+
+ `extension_names` receives the extensions to enable (static strings, valid for the life of
+ the program), to be appended to the caller's own: `*extension_count` is, on the way in, the
+ room at `extension_names`, and on the way out how many names ffvk needs (never more than
+ `FFVK_MAX_DEVICE_EXTENSIONS`). With `extension_names` null, only the counts and
+ `*enabled_features` are written (nothing else changes). `*enabled_features` receives the
+ `FFVK_FEATURE_*` bits the created device will have: what `FfvkRendererCreateInfo::
+ enabled_features` then says. On success, `ffvkResultMessage()` says which optional features
+ are missing, why, and what ffvk refuses without them (`""` when none is).
+
+ Errors: `FFVK_ERROR_INVALID_ARGUMENT` (a null or misaligned pointer or handle, `features`
+ not a `VkPhysicalDeviceFeatures2`, a chain without a struct for `dynamicRendering`, a chain
+ of more than 64 structs, room for fewer names than needed: `*extension_count` then says how
+ many, and nothing else changes); `FFVK_ERROR_MISSING_FEATURE` (a device older than Vulkan
+ 1.3 or without `dynamicRendering`: nothing changes); `FFVK_ERROR_VULKAN` (listing the
+ device's extensions failed).
+
+ # Safety
+
+ `get_instance_proc_addr` is the caller's loader entry point, `instance` a live instance
+ created with `apiVersion` 1.3 or later and `physical_device` one of its devices; `features`
+ is null or a valid, writable `VkPhysicalDeviceFeatures2` whose `pNext` chain holds valid,
+ writable Vulkan structs; `extension_count` and `enabled_features` are null or writable;
+ `extension_names` is null or has room for `*extension_count` pointers.
+ */
+enum FfvkResult ffvkDeviceRequirements(PFN_vkGetInstanceProcAddr get_instance_proc_addr,
+                                       VkInstance instance,
+                                       VkPhysicalDevice physical_device,
+                                       VkPhysicalDeviceFeatures2 *features,
+                                       uint32_t *extension_count,
+                                       const char **extension_names,
+                                       uint32_t *enabled_features);
 
 /*
  Writes to `*viewport` the `VkViewport` that puts ffvk's draws where GL's

@@ -21,6 +21,7 @@ pub mod mesh;
 pub mod query;
 pub mod render;
 pub mod result;
+pub mod setup;
 pub mod viewport;
 
 /// Aliases that spell Vulkan's C types for the header. cbindgen does not emit them (the
@@ -63,6 +64,8 @@ pub mod vk_types {
     pub type VkIndexType = vk::IndexType;
     /// `VkDeviceSize`.
     pub type VkDeviceSize = vk::DeviceSize;
+    /// `VkPhysicalDeviceFeatures2`.
+    pub type VkPhysicalDeviceFeatures2 = vk::PhysicalDeviceFeatures2<'static>;
     /// `VkViewport`.
     pub type VkViewport = vk::Viewport;
     /// `VkRect2D`.
