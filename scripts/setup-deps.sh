@@ -20,6 +20,7 @@ if [[ "${1:-}" == "--test" ]]; then
     # The C API (ffvk-c): its header and C example compiled with the system C and C++ compilers.
     libvulkan-dev            # <vulkan/vulkan.h> and libvulkan.so for the C example
     libgl-dev                # <GL/gl.h>: the header test includes it beside ffvk.h
+    pkg-config               # the installed library's ffvk.pc, read as a C program's build reads it
   )
 fi
 

@@ -225,6 +225,7 @@ typedef struct {
     VkCommandPool pool;
     VkCommandBuffer cmd;
     VkFence fence;
+    uint32_t ffvk_features; /* FFVK_FEATURE_* bits the device was created with */
 
     /* Positions (binding 0); normals with 8-bit colors (binding 1). */
     Buffer positions, normal_colors, indices, readback;
@@ -331,27 +332,40 @@ static void create_device(App *app) {
         .queueCount = 1,
         .pQueuePriorities = &priority,
     };
-    /* What ffvk uses, enabled here and named again in FfvkRendererCreateInfo's
-     * enabled_features (Vulkan cannot tell ffvk what a device was created with):
-     * dynamic rendering (required), and the last vertex as the provoking one, GL's rule,
-     * for GL_FLAT. synchronization2 is this program's own (vkCmdPipelineBarrier2). */
+    /* This program's own feature: synchronization2 (vkCmdPipelineBarrier2). ffvk adds what it
+     * uses to the same chain: dynamicRendering (required) in the Vulkan 1.3 struct,
+     * provokingVertexLast (GL's rule for GL_FLAT: the last vertex) in the provoking-vertex
+     * struct, and wideLines and largePoints, each where the device has it, with the extension
+     * names to enable. It says which FFVK_FEATURE_* bits the device will then have: what
+     * FfvkRendererCreateInfo::enabled_features says (Vulkan cannot tell ffvk what a device
+     * was created with). */
     VkPhysicalDeviceProvokingVertexFeaturesEXT provoking = {
         .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROVOKING_VERTEX_FEATURES_EXT,
-        .provokingVertexLast = VK_TRUE,
     };
     VkPhysicalDeviceVulkan13Features v13 = {
         .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
         .pNext = &provoking,
         .synchronization2 = VK_TRUE,
-        .dynamicRendering = VK_TRUE,
     };
-    const char *extensions[] = {VK_EXT_PROVOKING_VERTEX_EXTENSION_NAME};
+    VkPhysicalDeviceFeatures2 features = {
+        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
+        .pNext = &v13,
+    };
+    /* This program enables no extension of its own: all the room is ffvk's. */
+    const char *extensions[FFVK_MAX_DEVICE_EXTENSIONS];
+    uint32_t extension_count = FFVK_MAX_DEVICE_EXTENSIONS;
+    FFVK_CHECK(ffvkDeviceRequirements(vkGetInstanceProcAddr, app->instance, app->physical,
+                                      &features, &extension_count, extensions,
+                                      &app->ffvk_features));
+    /* What the device lacks (GL_FLAT below needs FFVK_FEATURE_PROVOKING_VERTEX_LAST). */
+    if (ffvkResultMessage()[0] != '\0')
+        fprintf(stderr, "teapot: %s\n", ffvkResultMessage());
     VkDeviceCreateInfo info = {
         .sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
-        .pNext = &v13,
+        .pNext = &features,
         .queueCreateInfoCount = 1,
         .pQueueCreateInfos = &queue,
-        .enabledExtensionCount = 1,
+        .enabledExtensionCount = extension_count,
         .ppEnabledExtensionNames = extensions,
     };
     VK_CHECK(vkCreateDevice(app->physical, &info, NULL, &app->device));
@@ -533,7 +547,7 @@ static FfvkRenderer *create_renderer(App *app) {
         .instance = app->instance,
         .physical_device = app->physical,
         .device = app->device,
-        .enabled_features = FFVK_FEATURE_DYNAMIC_RENDERING | FFVK_FEATURE_PROVOKING_VERTEX_LAST,
+        .enabled_features = app->ffvk_features, /* from ffvkDeviceRequirements */
         .color_format = COLOR_FORMAT,
         .depth_format = DEPTH_FORMAT,
         .samples = VK_SAMPLE_COUNT_1_BIT,

@@ -2,11 +2,20 @@
  *
  * GL's lighting state on a context (GL's entry points, enums and errors), and ffvk's
  * pipelines on the caller's Vulkan device recording draws into the caller's command buffers.
- * Link with -lffvk_c (libffvk_c.so or libffvk_c.a; the static library also needs
- * -lm -ldl -lpthread). GL enums: plain uint32_t values as <GL/gl.h> spells them; this header
- * defines those it uses unless already defined. Threads: a context, a renderer, a texture and
- * a mesh are each used by one thread at a time; different objects are independent. No call
- * submits to a queue or waits on the device. */
+ * Build with `pkg-config --cflags --libs ffvk` (after `make install-c`), or link with -lffvk_c
+ * (libffvk_c.so.0, or libffvk_c.a, which also needs -lm -ldl -lpthread). GL enums: plain
+ * uint32_t values as <GL/gl.h> spells them; this header defines those it uses unless already
+ * defined. Threads: a context, a renderer, a texture and a mesh are each used by one thread at
+ * a time; different objects are independent. No call submits to a queue or waits on the
+ * device.
+ *
+ * Growing without breaking: a struct that starts with `struct_size` (set it to the struct's
+ * sizeof) only grows at its end, each new field documented with its default; the library
+ * accepts the size of every published version, reads only what struct_size covers and gives
+ * the fields beyond it their defaults, so a program built against an older ffvk.h runs with a
+ * newer library. Any other size is FFVK_ERROR_INVALID_ARGUMENT. Structs without struct_size
+ * never change, and no function's signature changes: the API grows by new fields and new
+ * functions. */
 
 #ifndef FFVK_H
 #define FFVK_H
@@ -261,6 +270,12 @@
 #define FFVK_MAX_VERTEX_BINDINGS 32
 
 /*
+ The most extension names `ffvkDeviceRequirements` ever lists, in this version and later
+ ones: room for this many is always enough.
+ */
+#define FFVK_MAX_DEVICE_EXTENSIONS 4
+
+/*
  What an `FfvkResult`-returning entry point reports. Every code but `FFVK_SUCCESS` comes
  with a message, `ffvkResultMessage()`, naming what failed and what was expected.
  */
@@ -322,7 +337,8 @@ typedef struct FfvkRenderer FfvkRenderer;
 typedef struct FfvkTexture FfvkTexture;
 
 /*
- A view of an `FfvkMesh`'s arrays, valid until `ffvkDestroyMesh`.
+ A view of an `FfvkMesh`'s arrays, valid until `ffvkDestroyMesh`. It never changes (it has
+ no `struct_size`).
  */
 typedef struct FfvkMeshArrays {
   /*
@@ -357,6 +373,8 @@ typedef struct FfvkMeshArrays {
  `VK_FORMAT_R32G32B32_SFLOAT`, `VK_FORMAT_R8G8B8A8_UNORM`, that the device reads from
  vertex buffers). The attribute lies within one element: offset + the format's size <= the
  binding's stride.
+
+ It never changes (it has no `struct_size`).
  */
 typedef struct FfvkAttribute {
   /*
@@ -374,8 +392,15 @@ typedef struct FfvkAttribute {
 } FfvkAttribute;
 
 /*
- What `ffvkCreateRenderer` takes. Set `struct_size` to `sizeof(FfvkRendererCreateInfo)`:
- later versions add fields at the end and read only what the caller's size covers.
+ What `ffvkCreateRenderer` takes. Set `struct_size` to `sizeof(FfvkRendererCreateInfo)`.
+
+ How it grows (the rule of every struct with a `struct_size`): a later `ffvk.h` only appends
+ fields, each documented with its default. The library accepts the `sizeof` of every
+ published version of the struct (this header's is version 1), reads only the bytes
+ `struct_size` covers and gives the fields beyond them their defaults, so a program built
+ against an older header runs unchanged with a newer library. Any other size (0, between
+ two versions, or a newer header's than the library knows) is refused with
+ `FFVK_ERROR_INVALID_ARGUMENT`, the message naming the size given and the sizes accepted.
  */
 typedef struct FfvkRendererCreateInfo {
   /*
@@ -475,6 +500,9 @@ typedef struct FfvkRendererCreateInfo {
  `front_face` 0 or 1, `depth_compare` `VK_COMPARE_OP_NEVER` .. `ALWAYS` (0 .. 7), and while
  blending, factors `VK_BLEND_FACTOR_ZERO` .. `SRC_ALPHA_SATURATE` (0 .. 14; no dual-source
  factors) and equations `VK_BLEND_OP_ADD` .. `MAX` (0 .. 4).
+
+ It never changes size (`ffvkRasterDefaults` writes it whole, and it lies inside
+ `FfvkDrawInfo`): raster state added later becomes new fields at the end of `FfvkDrawInfo`.
  */
 typedef struct FfvkRaster {
   /*
@@ -538,6 +566,12 @@ typedef struct FfvkRaster {
 /*
  One draw: `glDrawArrays` (no index buffer) or `glDrawElementsBaseVertex`. Set
  `struct_size` to `sizeof(FfvkDrawInfo)`.
+
+ It grows as `FfvkRendererCreateInfo` does: later headers append fields (each with its
+ default), the library accepts every published version's size (this header's is version 1)
+ and reads only what `struct_size` covers. `raster` never grows (`FfvkRaster` keeps its
+ size): raster state added later is appended to `FfvkDrawInfo` itself, GL's initial value
+ its default.
  */
 typedef struct FfvkDrawInfo {
   /*
@@ -969,14 +1003,15 @@ void ffvkDestroyMesh(struct FfvkMesh *mesh);
  GL's modes that Vulkan lacks, as indices of a mode it has, keeping GL's winding and
  provoking vertex: `GL_QUADS`, `GL_QUAD_STRIP` and `GL_POLYGON` become `GL_TRIANGLES`,
  `GL_LINE_LOOP` becomes `GL_LINES`; the other modes are copied unchanged. `vertices` are
- the `count` vertex numbers GL would read (`first + i` for glDrawArrays, the index array for
- glDrawElements). Writes at most `capacity` indices to `out` (null to ask the size) and the
- needed count to `*written`, and the mode to draw them with to `*draw_mode`. A size query
- (null `out`) reads nothing from `vertices`; nothing is allocated, whatever the count.
- Errors: `FFVK_ERROR_INVALID_ARGUMENT` for an unknown mode, a null `vertices` (with a
- count), a null `written` or `draw_mode`, a count whose indices would number more than a
- `uint32_t` holds (e.g. `GL_POLYGON` of more than 1431655767 vertices; nothing written
- then), or a `capacity` below the needed count (nothing written to `out` then).
+ the `count` vertex numbers GL would read (the index array of glDrawElements; for
+ glDrawArrays' `first + i`, `ffvkPrimitiveIndicesRange` needs no array). Writes at most
+ `capacity` indices to `out` (null to ask the size) and the needed count to `*written`, and
+ the mode to draw them with to `*draw_mode`. A size query (null `out`) reads nothing from
+ `vertices`; nothing is allocated, whatever the count. Errors:
+ `FFVK_ERROR_INVALID_ARGUMENT` for an unknown mode, a null `vertices` (with a count), a
+ null `written` or `draw_mode`, a count whose indices would number more than a `uint32_t`
+ holds (e.g. `GL_POLYGON` of more than 1431655767 vertices; nothing written then), or a
+ `capacity` below the needed count (nothing written to `out` then).
 
  # Safety
 
@@ -990,6 +1025,27 @@ enum FfvkResult ffvkPrimitiveIndices(uint32_t mode,
                                      uint32_t capacity,
                                      uint32_t *written,
                                      uint32_t *draw_mode);
+
+/*
+ `ffvkPrimitiveIndices` for `glDrawArrays(mode, first, count)`: the vertex numbers are
+ `first`, `first + 1`, … `first + count - 1`, so no array is passed. The outputs, the size
+ query and the errors are `ffvkPrimitiveIndices`'s, and: `FFVK_ERROR_INVALID_ARGUMENT` when
+ `first + count` passes 2^32 (the last vertex number would not fit a `uint32_t`);
+ `FFVK_ERROR_OUT_OF_MEMORY` when the host cannot hold the `count` vertex numbers ffvk makes
+ while it writes `GL_QUADS`, `GL_QUAD_STRIP`, `GL_POLYGON` or `GL_LINE_LOOP` indices (4 bytes
+ each, freed before it returns; the other modes and a size query allocate nothing).
+
+ # Safety
+
+ `out` is null or has room for `capacity`.
+ */
+enum FfvkResult ffvkPrimitiveIndicesRange(uint32_t mode,
+                                          uint32_t first,
+                                          uint32_t count,
+                                          uint32_t *out,
+                                          uint32_t capacity,
+                                          uint32_t *written,
+                                          uint32_t *draw_mode);
 
 /*
  glGetLightfv: a light's parameter as stored: positions and spot directions in eye
@@ -1108,17 +1164,19 @@ void ffvkGetBooleanv(struct FfvkContext *ctx, uint32_t pname, uint8_t *params);
  claims, the formats' features and sample counts, vertex limits), and makes the pipeline
  layout; pipelines are made on the first draw that needs each (about 15 ms on lavapipe).
  Returns `FFVK_SUCCESS` with `*renderer` set, or an error code with `*renderer` null:
- `FFVK_ERROR_INVALID_ARGUMENT` (a null pointer or handle, a wrong `struct_size`, 0 or more
- than `FFVK_MAX_FRAMES_IN_FLIGHT` frames, more than `FFVK_MAX_VERTEX_BINDINGS` bindings,
- unknown feature bits, a format, sample count or vertex layout that is invalid or that the
- device does not support; the message names the field, its value and what was expected),
+ `FFVK_ERROR_INVALID_ARGUMENT` (a null pointer or handle, a `struct_size` that is not a
+ published version's, 0 or more than `FFVK_MAX_FRAMES_IN_FLIGHT` frames, more than
+ `FFVK_MAX_VERTEX_BINDINGS` bindings, unknown feature bits, a format, sample count or
+ vertex layout that is invalid or that the device does not support; the message names the
+ field, its value and what was expected),
  `FFVK_ERROR_MISSING_FEATURE`, `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN`. Records
  nothing.
 
  # Safety
 
- `info` and `renderer` are null or valid; the handles in `info` are live, `device` was
- created from `physical_device` of `instance` with the features `enabled_features` names,
+ `renderer` is null or writable; `info` is null or points at the `struct_size` bytes of a
+ create info as the caller's header declares it; the handles in `info` are live, `device`
+ was created from `physical_device` of `instance` with the features `enabled_features` names,
  and all of them outlive the renderer.
  */
 enum FfvkResult ffvkCreateRenderer(const struct FfvkRendererCreateInfo *info,
@@ -1169,9 +1227,10 @@ enum FfvkResult ffvkBeginDraws(struct FfvkRenderer *renderer, VkCommandBuffer cm
  The draw is checked and its state written into the slot's memory now (its pipeline is made
  now if it is new: about 15 ms on lavapipe); `ffvkEndDraws` records it. A refused draw is
  not added and the scope stays open with the draws before it. Errors:
- `FFVK_ERROR_INVALID_ARGUMENT` (no open scope, a null pointer, a wrong `struct_size`, a mode
- ffvk does not draw directly, a buffer count other than the layout's bindings, a raster
- enum that is not one ffvk passes to Vulkan (see `FfvkRaster`), blending into a color
+ `FFVK_ERROR_INVALID_ARGUMENT` (no open scope, a null pointer, a `struct_size` that is not a
+ published version's, a mode ffvk does not draw directly, a buffer count other than the
+ layout's bindings, a raster enum that is not one ffvk passes to Vulkan (see `FfvkRaster`),
+ blending into a color
  format the device cannot blend, a point size or line width out of the device's range, a
  textured draw without texture coordinates),
  `FFVK_ERROR_STATE` (the context's state cannot be drawn: a soft spot cone wider than its
@@ -1182,8 +1241,9 @@ enum FfvkResult ffvkBeginDraws(struct FfvkRenderer *renderer, VkCommandBuffer cm
  # Safety
 
  `renderer` and `ctx` are null or live and used by this thread only; `draw` is null or
- valid, its buffers are the caller's live buffers of the renderer's device, and its texture
- is null or live until `ffvkEndDraws` returns.
+ points at the `struct_size` bytes of a draw info as the caller's header declares it; its
+ buffers are the caller's live buffers of the renderer's device, and its texture is null or
+ live until `ffvkEndDraws` returns.
  */
 enum FfvkResult ffvkDraw(struct FfvkRenderer *renderer,
                          const struct FfvkContext *ctx,
@@ -1265,6 +1325,111 @@ void ffvkRasterDefaults(struct FfvkRaster *raster);
  failure. The string is ffvk's, valid until the next ffvk call on this thread.
  */
 const char *ffvkResultMessage(void);
+
+/*
+ Tells the caller what to enable on the device it is about to create for ffvk, and fills it
+ in: call it after choosing `physical_device` and before `vkCreateDevice`, with the
+ `VkPhysicalDeviceFeatures2` (sType `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2`) whose
+ chain the caller then passes as `VkDeviceCreateInfo::pNext` (with `pEnabledFeatures` null),
+ and its own features already set in it. ffvk only sets features to `VK_TRUE`, never clears
+ one:
+
+ - `dynamicRendering` (required) in the chain's `VkPhysicalDeviceVulkan13Features` (or
+   `VkPhysicalDeviceDynamicRenderingFeatures`): the chain must hold one of them;
+ - `provokingVertexLast` in a `VkPhysicalDeviceProvokingVertexFeaturesEXT` of the chain, when
+   the device supports it (`GL_FLAT` needs it), with `VK_EXT_provoking_vertex` listed. Chain
+   one whatever the device: where the device lacks the extension or the feature, ffvk takes
+   the struct out of the chain (Vulkan forbids the struct of an extension not enabled);
+ - `wideLines` and `largePoints` in `features->features`, where supported (line widths and
+   point sizes other than 1).
+
+ `extension_names` receives the extensions to enable (static strings, valid for the life of
+ the program), to be appended to the caller's own: `*extension_count` is, on the way in, the
+ room at `extension_names`, and on the way out how many names ffvk needs (never more than
+ `FFVK_MAX_DEVICE_EXTENSIONS`). With `extension_names` null, only the counts and
+ `*enabled_features` are written (nothing else changes). `*enabled_features` receives the
+ `FFVK_FEATURE_*` bits the created device will have: what `FfvkRendererCreateInfo::
+ enabled_features` then says. On success, `ffvkResultMessage()` says which optional features
+ are missing, why, and what ffvk refuses without them (`""` when none is).
+
+ Errors: `FFVK_ERROR_INVALID_ARGUMENT` (a null or misaligned pointer or handle, `features`
+ not a `VkPhysicalDeviceFeatures2`, a chain without a struct for `dynamicRendering`, a chain
+ of more than 64 structs, room for fewer names than needed: `*extension_count` then says how
+ many, and nothing else changes); `FFVK_ERROR_MISSING_FEATURE` (a device older than Vulkan
+ 1.3 or without `dynamicRendering`: nothing changes); `FFVK_ERROR_VULKAN` (listing the
+ device's extensions failed).
+
+ # Safety
+
+ `get_instance_proc_addr` is the caller's loader entry point, `instance` a live instance
+ created with `apiVersion` 1.3 or later and `physical_device` one of its devices; `features`
+ is null or a valid, writable `VkPhysicalDeviceFeatures2` whose `pNext` chain holds valid,
+ writable Vulkan structs; `extension_count` and `enabled_features` are null or writable;
+ `extension_names` is null or has room for `*extension_count` pointers.
+ */
+enum FfvkResult ffvkDeviceRequirements(PFN_vkGetInstanceProcAddr get_instance_proc_addr,
+                                       VkInstance instance,
+                                       VkPhysicalDevice physical_device,
+                                       VkPhysicalDeviceFeatures2 *features,
+                                       uint32_t *extension_count,
+                                       const char **extension_names,
+                                       uint32_t *enabled_features);
+
+/*
+ Writes to `*viewport` the `VkViewport` that puts ffvk's draws where GL's
+ `glViewport(x, y, width, height)` and `glDepthRange(near_val, far_val)` put them, in a
+ color attachment `target_height` pixels high. Set it with `vkCmdSetViewport` between
+ scopes, as GL's state changes. GL counts window rows from the bottom and Vulkan from the
+ top: the result is `x`, `target_height - y - height`, `width`, `height` (positive: ffvk's
+ shaders turn GL's clip space into Vulkan's themselves, so there is no negative-height flip)
+ and depths `near_val`, `far_val`, clamped to [0, 1] as GL clamps them (near may exceed
+ far, as in GL). A layer clamps `width` and `height` to the device's
+ `maxViewportDimensions` first, as GL clamps them to `GL_MAX_VIEWPORT_DIMS`.
+
+ Errors (`FFVK_ERROR_INVALID_ARGUMENT`, `*viewport` unchanged): a null or misaligned
+ `viewport`; a negative `width` or `height` (GL's `GL_INVALID_VALUE`, which keeps the old
+ viewport); a `width` or `height` of 0 (GL draws nothing through an empty viewport, but a
+ `VkViewport` cannot be empty: skip the draws instead); a NaN depth; a `target_height` past
+ `INT32_MAX`.
+
+ # Safety
+
+ `viewport` is null or writable.
+ */
+enum FfvkResult ffvkViewport(int32_t x,
+                             int32_t y,
+                             int32_t width,
+                             int32_t height,
+                             uint32_t target_height,
+                             double near_val,
+                             double far_val,
+                             VkViewport *viewport);
+
+/*
+ Writes to `*scissor` the `VkRect2D` that keeps the pixels GL's
+ `glScissor(x, y, width, height)` keeps, in a color attachment of `target_width` x
+ `target_height` pixels: GL's rows `y` .. `y + height` from the bottom are rows
+ `target_height - y - height` .. `target_height - y` from the top. The box is clipped to the
+ target as GL's window clips it, so the result is always a rectangle Vulkan accepts
+ (offsets from 0, no overflow); a box outside the target or of width or height 0 is an empty
+ rectangle, which draws nothing, as in GL. While `GL_SCISSOR_TEST` is off, GL's box is the
+ whole target: pass 0, 0, `target_width`, `target_height`.
+
+ Errors (`FFVK_ERROR_INVALID_ARGUMENT`, `*scissor` unchanged): a null or misaligned
+ `scissor`; a negative `width` or `height` (GL's `GL_INVALID_VALUE`); a target side past
+ `INT32_MAX`.
+
+ # Safety
+
+ `scissor` is null or writable.
+ */
+enum FfvkResult ffvkScissor(int32_t x,
+                            int32_t y,
+                            int32_t width,
+                            int32_t height,
+                            uint32_t target_width,
+                            uint32_t target_height,
+                            VkRect2D *scissor);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -85,3 +85,90 @@ gl_enums! {
     GL_QUAD_STRIP = 0x0008,
     GL_POLYGON = 0x0009,
 }
+
+/// GL's names for values the API refuses but an application may well pass on (a layer
+/// forwarding every `glEnable`, a `glTexEnv` of `GL_COMBINE`), as `<GL/gl.h>` spells them:
+/// messages name them. The header does not define them.
+const MESSAGE_NAMES: &[(&str, u32)] = &[
+    ("GL_INVALID_OPERATION", 0x0502),
+    ("GL_STACK_OVERFLOW", 0x0503),
+    ("GL_CURRENT_NORMAL", 0x0B02),
+    ("GL_CURRENT_TEXTURE_COORDS", 0x0B03),
+    ("GL_POINT_SMOOTH", 0x0B10),
+    ("GL_LINE_SMOOTH", 0x0B20),
+    ("GL_LINE_STIPPLE", 0x0B24),
+    ("GL_POLYGON_SMOOTH", 0x0B41),
+    ("GL_POLYGON_STIPPLE", 0x0B42),
+    ("GL_CULL_FACE", 0x0B44),
+    ("GL_FOG", 0x0B60),
+    ("GL_DEPTH_RANGE", 0x0B70),
+    ("GL_DEPTH_TEST", 0x0B71),
+    ("GL_STENCIL_TEST", 0x0B90),
+    ("GL_MATRIX_MODE", 0x0BA0),
+    ("GL_VIEWPORT", 0x0BA2),
+    ("GL_ALPHA_TEST", 0x0BC0),
+    ("GL_DITHER", 0x0BD0),
+    ("GL_COLOR_LOGIC_OP", 0x0BF2),
+    ("GL_SCISSOR_TEST", 0x0C11),
+    ("GL_TEXTURE_GEN_S", 0x0C60),
+    ("GL_TEXTURE_GEN_T", 0x0C61),
+    ("GL_AUTO_NORMAL", 0x0D80),
+    ("GL_TEXTURE_1D", 0x0DE0),
+    ("GL_MODELVIEW", 0x1700),
+    ("GL_PROJECTION", 0x1701),
+    ("GL_TEXTURE", 0x1702),
+    ("GL_CLIP_PLANE0", 0x3000),
+    ("GL_POLYGON_OFFSET_FILL", 0x8037),
+    ("GL_TEXTURE_3D", 0x806F),
+    ("GL_VERTEX_ARRAY", 0x8074),
+    ("GL_NORMAL_ARRAY", 0x8075),
+    ("GL_COLOR_ARRAY", 0x8076),
+    ("GL_TEXTURE_COORD_ARRAY", 0x8078),
+    ("GL_MULTISAMPLE", 0x809D),
+    ("GL_COLOR_SUM", 0x8458),
+    ("GL_TEXTURE_CUBE_MAP", 0x8513),
+    ("GL_COMBINE", 0x8570),
+];
+
+/// Every GL name a message may print with its value: the API's enums and the names of values
+/// it refuses ([`MESSAGE_NAMES`]). The tests check each against `<GL/gl.h>`.
+pub fn message_names() -> impl Iterator<Item = (&'static str, u32)> {
+    gl_enums().iter().chain(MESSAGE_NAMES).copied()
+}
+
+/// GL's primitive modes in value order: `GL_POINTS` (0) .. `GL_POLYGON` (9).
+const MODES: [&str; 10] = [
+    "GL_POINTS",
+    "GL_LINES",
+    "GL_LINE_LOOP",
+    "GL_LINE_STRIP",
+    "GL_TRIANGLES",
+    "GL_TRIANGLE_STRIP",
+    "GL_TRIANGLE_FAN",
+    "GL_QUADS",
+    "GL_QUAD_STRIP",
+    "GL_POLYGON",
+];
+
+/// A GL enum as a message shows it: its name with its value, `GL_DEPTH_TEST (0x0B71)`, or the
+/// value alone, `0x4010`, when GL has no name for it here. Values below 0x0100 (which GL's
+/// booleans, primitive modes and blend factors share) are never named: a primitive mode is
+/// shown by [`mode_name`].
+pub(crate) fn enum_name(value: u32) -> String {
+    let name = (value >= 0x0100)
+        .then(|| message_names().find(|&(_, v)| v == value))
+        .flatten();
+    match name {
+        Some((name, _)) => format!("{name} (0x{value:04X})"),
+        None => format!("0x{value:04X}"),
+    }
+}
+
+/// A primitive mode as a message shows it: `GL_QUAD_STRIP (0x0008)`, or `0x0042` for a value
+/// that is none of GL's ten.
+pub(crate) fn mode_name(mode: u32) -> String {
+    match MODES.get(mode as usize) {
+        Some(name) => format!("{name} (0x{mode:04X})"),
+        None => format!("0x{mode:04X}"),
+    }
+}

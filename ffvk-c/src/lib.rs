@@ -14,12 +14,15 @@
 //! (state entry points, which return nothing in GL) or returns an
 //! [`FfvkResult`](result::FfvkResult) with a message from `ffvkResultMessage`.
 
+pub mod abi;
 pub mod enums;
 pub mod gl;
 pub mod mesh;
 pub mod query;
 pub mod render;
 pub mod result;
+pub mod setup;
+pub mod viewport;
 
 /// Aliases that spell Vulkan's C types for the header. cbindgen does not emit them (the
 /// header takes them from `<vulkan/vulkan.h>`); each is ABI-identical to the C type: ash's
@@ -61,6 +64,12 @@ pub mod vk_types {
     pub type VkIndexType = vk::IndexType;
     /// `VkDeviceSize`.
     pub type VkDeviceSize = vk::DeviceSize;
+    /// `VkPhysicalDeviceFeatures2`.
+    pub type VkPhysicalDeviceFeatures2 = vk::PhysicalDeviceFeatures2<'static>;
+    /// `VkViewport`.
+    pub type VkViewport = vk::Viewport;
+    /// `VkRect2D`.
+    pub type VkRect2D = vk::Rect2D;
     /// `VkVertexInputBindingDescription`.
     pub type VkVertexInputBindingDescription = vk::VertexInputBindingDescription;
     /// `PFN_vkGetInstanceProcAddr` (nullable here, so a null one is refused, not called).

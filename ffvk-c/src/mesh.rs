@@ -15,7 +15,8 @@ pub struct FfvkMesh {
     indices: Vec<u32>,
 }
 
-/// A view of an `FfvkMesh`'s arrays, valid until `ffvkDestroyMesh`.
+/// A view of an `FfvkMesh`'s arrays, valid until `ffvkDestroyMesh`. It never changes (it has
+/// no `struct_size`).
 #[repr(C)]
 pub struct FfvkMeshArrays {
     /// How many vertices.
@@ -115,14 +116,15 @@ pub unsafe extern "C" fn ffvkDestroyMesh(mesh: *mut FfvkMesh) {
 /// GL's modes that Vulkan lacks, as indices of a mode it has, keeping GL's winding and
 /// provoking vertex: `GL_QUADS`, `GL_QUAD_STRIP` and `GL_POLYGON` become `GL_TRIANGLES`,
 /// `GL_LINE_LOOP` becomes `GL_LINES`; the other modes are copied unchanged. `vertices` are
-/// the `count` vertex numbers GL would read (`first + i` for glDrawArrays, the index array for
-/// glDrawElements). Writes at most `capacity` indices to `out` (null to ask the size) and the
-/// needed count to `*written`, and the mode to draw them with to `*draw_mode`. A size query
-/// (null `out`) reads nothing from `vertices`; nothing is allocated, whatever the count.
-/// Errors: `FFVK_ERROR_INVALID_ARGUMENT` for an unknown mode, a null `vertices` (with a
-/// count), a null `written` or `draw_mode`, a count whose indices would number more than a
-/// `uint32_t` holds (e.g. `GL_POLYGON` of more than 1431655767 vertices; nothing written
-/// then), or a `capacity` below the needed count (nothing written to `out` then).
+/// the `count` vertex numbers GL would read (the index array of glDrawElements; for
+/// glDrawArrays' `first + i`, `ffvkPrimitiveIndicesRange` needs no array). Writes at most
+/// `capacity` indices to `out` (null to ask the size) and the needed count to `*written`, and
+/// the mode to draw them with to `*draw_mode`. A size query (null `out`) reads nothing from
+/// `vertices`; nothing is allocated, whatever the count. Errors:
+/// `FFVK_ERROR_INVALID_ARGUMENT` for an unknown mode, a null `vertices` (with a count), a
+/// null `written` or `draw_mode`, a count whose indices would number more than a `uint32_t`
+/// holds (e.g. `GL_POLYGON` of more than 1431655767 vertices; nothing written then), or a
+/// `capacity` below the needed count (nothing written to `out` then).
 ///
 /// # Safety
 ///
@@ -138,16 +140,105 @@ pub unsafe extern "C" fn ffvkPrimitiveIndices(
     written: *mut u32,
     draw_mode: *mut u32,
 ) -> FfvkResult {
-    const F: &str = "ffvkPrimitiveIndices";
+    let request = Request {
+        function: "ffvkPrimitiveIndices",
+        mode,
+        vertices: Vertices::Listed(vertices),
+        count,
+    };
+    // SAFETY: the caller's contract, passed on.
+    unsafe { primitive_indices(&request, out, capacity, written, draw_mode) }
+}
+
+/// `ffvkPrimitiveIndices` for `glDrawArrays(mode, first, count)`: the vertex numbers are
+/// `first`, `first + 1`, … `first + count - 1`, so no array is passed. The outputs, the size
+/// query and the errors are `ffvkPrimitiveIndices`'s, and: `FFVK_ERROR_INVALID_ARGUMENT` when
+/// `first + count` passes 2^32 (the last vertex number would not fit a `uint32_t`);
+/// `FFVK_ERROR_OUT_OF_MEMORY` when the host cannot hold the `count` vertex numbers ffvk makes
+/// while it writes `GL_QUADS`, `GL_QUAD_STRIP`, `GL_POLYGON` or `GL_LINE_LOOP` indices (4 bytes
+/// each, freed before it returns; the other modes and a size query allocate nothing).
+///
+/// # Safety
+///
+/// `out` is null or has room for `capacity`.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkPrimitiveIndicesRange(
+    mode: u32,
+    first: u32,
+    count: u32,
+    out: *mut u32,
+    capacity: u32,
+    written: *mut u32,
+    draw_mode: *mut u32,
+) -> FfvkResult {
+    let request = Request {
+        function: "ffvkPrimitiveIndicesRange",
+        mode,
+        vertices: Vertices::Consecutive(first),
+        count,
+    };
+    // SAFETY: the caller's contract, passed on.
+    unsafe { primitive_indices(&request, out, capacity, written, draw_mode) }
+}
+
+/// Where the `count` vertex numbers of a primitive list come from.
+#[derive(Clone, Copy)]
+enum Vertices {
+    /// The caller's array (glDrawElements' indices).
+    Listed(*const u32),
+    /// `first`, `first + 1`, … (glDrawArrays).
+    Consecutive(u32),
+}
+
+/// What `ffvkPrimitiveIndices` or `ffvkPrimitiveIndicesRange` was asked.
+struct Request {
+    function: &'static str,
+    mode: u32,
+    vertices: Vertices,
+    count: u32,
+}
+
+/// The two entry points' work: every check from the count alone, then the indices.
+///
+/// # Safety
+///
+/// A listed `vertices` points at `count` values (unless `out` is null); `out` is null or has
+/// room for `capacity`; `written` and `draw_mode` are null or writable.
+unsafe fn primitive_indices(
+    request: &Request,
+    out: *mut u32,
+    capacity: u32,
+    written: *mut u32,
+    draw_mode: *mut u32,
+) -> FfvkResult {
+    let &Request {
+        function: f,
+        mode,
+        vertices,
+        count,
+    } = request;
     guard(|| {
-        let mut checked = check_ptr(F, "written", written, "where to write the index count")
-            .and_then(|()| check_ptr(F, "draw_mode", draw_mode, "where to write the mode to draw with"));
-        if count > 0 {
-            let expected = format!("the {count} vertex numbers of count");
-            checked = checked.and_then(|()| check_ptr(F, "vertices", vertices, &expected));
+        let mut checked = check_ptr(f, "written", written, "where to write the index count")
+            .and_then(|()| check_ptr(f, "draw_mode", draw_mode, "where to write the mode to draw with"));
+        match vertices {
+            Vertices::Listed(vertices) if count > 0 => {
+                let expected = format!("the {count} vertex numbers of count");
+                checked = checked.and_then(|()| check_ptr(f, "vertices", vertices, &expected));
+            }
+            Vertices::Listed(_) => {}
+            Vertices::Consecutive(first) => {
+                if u64::from(first) + u64::from(count) > 1 << 32 {
+                    return fail(
+                        FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                        format!(
+                            "{f}: first {first} + count {count} passes 2^32: expected first + count <= 4294967296 (the last vertex number, first + count - 1, a uint32_t)"
+                        ),
+                    );
+                }
+            }
         }
         if !out.is_null() {
-            checked = checked.and_then(|()| check_ptr(F, "out", out, "room for capacity indices, or null"));
+            checked = checked.and_then(|()| check_ptr(f, "out", out, "room for capacity indices, or null"));
         }
         if let Err(code) = checked {
             return code;
@@ -163,7 +254,7 @@ pub unsafe extern "C" fn ffvkPrimitiveIndices(
             other => {
                 return fail(
                     FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
-                    format!("{F}: mode 0x{other:04X} is not one of GL's ten primitive modes: expected GL_POINTS (0x0000) .. GL_POLYGON (0x0009)"),
+                    format!("{f}: mode {} is not one of GL's ten primitive modes: expected GL_POINTS (0x0000) .. GL_POLYGON (0x0009)", enum_name(other)),
                 )
             }
         };
@@ -171,7 +262,8 @@ pub unsafe extern "C" fn ffvkPrimitiveIndices(
             return fail(
                 FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
                 format!(
-                    "{F}: count {count} of mode 0x{mode:04X} makes {needed} indices, more than written (a uint32_t) holds: expected a count whose indices number at most {}",
+                    "{f}: count {count} of mode {} makes {needed} indices, more than written (a uint32_t) holds: expected a count whose indices number at most {}",
+                    mode_name(mode),
                     u32::MAX
                 ),
             );
@@ -187,15 +279,37 @@ pub unsafe extern "C" fn ffvkPrimitiveIndices(
         if capacity < needed {
             return fail(
                 FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
-                format!("{F}: capacity {capacity} is too small: expected at least {needed}"),
+                format!("{f}: capacity {capacity} is too small: expected at least {needed}"),
             );
         }
-        let input: &[u32] = if count == 0 {
-            &[]
-        } else {
+        let consecutive;
+        let input: &[u32] = match vertices {
+            Vertices::Listed(_) if count == 0 => &[],
             // SAFETY: the caller's contract: count values at vertices (checked non-null and
             // aligned above).
-            unsafe { std::slice::from_raw_parts(vertices, count as usize) }
+            Vertices::Listed(vertices) => unsafe { std::slice::from_raw_parts(vertices, count as usize) },
+            Vertices::Consecutive(first) => {
+                let numbers = (0..count).map(|i| first + i);
+                if as_mode == mode {
+                    // Copied unchanged: written straight into the caller's room (capacity >=
+                    // needed = count).
+                    // SAFETY: out has room for `count` values; the iterator yields `count`.
+                    unsafe { fill(out, numbers) };
+                    return FfvkResult::FFVK_SUCCESS;
+                }
+                let mut held = Vec::new();
+                if held.try_reserve_exact(count as usize).is_err() {
+                    return fail(
+                        FfvkResult::FFVK_ERROR_OUT_OF_MEMORY,
+                        format!(
+                            "{f}: no host memory for the {count} vertex numbers first .. first + count - 1"
+                        ),
+                    );
+                }
+                held.extend(numbers);
+                consecutive = held;
+                &consecutive
+            }
         };
         // Written straight into the caller's room, which holds capacity >= needed values.
         // SAFETY: out has room for `needed` values; each iterator yields exactly `needed`.

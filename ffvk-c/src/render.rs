@@ -22,6 +22,7 @@ use ffvk::{
 mod raster;
 
 use raster::raster;
+pub(crate) use raster::raster_defaults;
 pub use raster::{ffvkRasterDefaults, FfvkRaster};
 
 use crate::enums::*;
@@ -50,6 +51,8 @@ const _: () = assert!(FFVK_MAX_VERTEX_BINDINGS == ffvk::MAX_VERTEX_BINDINGS);
 /// `VK_FORMAT_R32G32B32_SFLOAT`, `VK_FORMAT_R8G8B8A8_UNORM`, that the device reads from
 /// vertex buffers). The attribute lies within one element: offset + the format's size <= the
 /// binding's stride.
+///
+/// It never changes (it has no `struct_size`).
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct FfvkAttribute {
@@ -61,8 +64,15 @@ pub struct FfvkAttribute {
     pub format: VkFormat,
 }
 
-/// What `ffvkCreateRenderer` takes. Set `struct_size` to `sizeof(FfvkRendererCreateInfo)`:
-/// later versions add fields at the end and read only what the caller's size covers.
+/// What `ffvkCreateRenderer` takes. Set `struct_size` to `sizeof(FfvkRendererCreateInfo)`.
+///
+/// How it grows (the rule of every struct with a `struct_size`): a later `ffvk.h` only appends
+/// fields, each documented with its default. The library accepts the `sizeof` of every
+/// published version of the struct (this header's is version 1), reads only the bytes
+/// `struct_size` covers and gives the fields beyond them their defaults, so a program built
+/// against an older header runs unchanged with a newer library. Any other size (0, between
+/// two versions, or a newer header's than the library knows) is refused with
+/// `FFVK_ERROR_INVALID_ARGUMENT`, the message naming the size given and the sizes accepted.
 #[repr(C)]
 pub struct FfvkRendererCreateInfo {
     /// `sizeof(FfvkRendererCreateInfo)`.
@@ -119,6 +129,12 @@ pub struct FfvkRendererCreateInfo {
 
 /// One draw: `glDrawArrays` (no index buffer) or `glDrawElementsBaseVertex`. Set
 /// `struct_size` to `sizeof(FfvkDrawInfo)`.
+///
+/// It grows as `FfvkRendererCreateInfo` does: later headers append fields (each with its
+/// default), the library accepts every published version's size (this header's is version 1)
+/// and reads only what `struct_size` covers. `raster` never grows (`FfvkRaster` keeps its
+/// size): raster state added later is appended to `FfvkDrawInfo` itself, GL's initial value
+/// its default.
 #[repr(C)]
 pub struct FfvkDrawInfo {
     /// `sizeof(FfvkDrawInfo)`.
@@ -194,17 +210,6 @@ fn invalid(message: impl Into<String>) -> FfvkResult {
     fail(FfvkResult::FFVK_ERROR_INVALID_ARGUMENT, message)
 }
 
-fn check_size(function: &str, what: &str, given: u32, expected: usize) -> Result<(), FfvkResult> {
-    // This is the first version of each struct: only its own size is known. A later version
-    // that adds fields will accept this size too.
-    if given as usize != expected {
-        return Err(invalid(format!(
-            "{function}: {what}.struct_size is {given}: expected sizeof({what}) = {expected}"
-        )));
-    }
-    Ok(())
-}
-
 /// Reads `count` values at `ptr` (empty for a count of 0).
 ///
 /// # Safety
@@ -240,12 +245,6 @@ fn attribute(a: &FfvkAttribute) -> Attribute {
 /// The create info's contract (`ffvkCreateRenderer`).
 unsafe fn create(info: &FfvkRendererCreateInfo) -> Result<FfvkRenderer, FfvkResult> {
     const F: &str = "ffvkCreateRenderer";
-    check_size(
-        F,
-        "FfvkRendererCreateInfo",
-        info.struct_size,
-        std::mem::size_of::<FfvkRendererCreateInfo>(),
-    )?;
     let Some(get_instance_proc_addr) = info.get_instance_proc_addr else {
         return Err(invalid(format!(
             "{F}: get_instance_proc_addr is null: expected the caller's vkGetInstanceProcAddr"
@@ -340,17 +339,19 @@ unsafe fn create(info: &FfvkRendererCreateInfo) -> Result<FfvkRenderer, FfvkResu
 /// claims, the formats' features and sample counts, vertex limits), and makes the pipeline
 /// layout; pipelines are made on the first draw that needs each (about 15 ms on lavapipe).
 /// Returns `FFVK_SUCCESS` with `*renderer` set, or an error code with `*renderer` null:
-/// `FFVK_ERROR_INVALID_ARGUMENT` (a null pointer or handle, a wrong `struct_size`, 0 or more
-/// than `FFVK_MAX_FRAMES_IN_FLIGHT` frames, more than `FFVK_MAX_VERTEX_BINDINGS` bindings,
-/// unknown feature bits, a format, sample count or vertex layout that is invalid or that the
-/// device does not support; the message names the field, its value and what was expected),
+/// `FFVK_ERROR_INVALID_ARGUMENT` (a null pointer or handle, a `struct_size` that is not a
+/// published version's, 0 or more than `FFVK_MAX_FRAMES_IN_FLIGHT` frames, more than
+/// `FFVK_MAX_VERTEX_BINDINGS` bindings, unknown feature bits, a format, sample count or
+/// vertex layout that is invalid or that the device does not support; the message names the
+/// field, its value and what was expected),
 /// `FFVK_ERROR_MISSING_FEATURE`, `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN`. Records
 /// nothing.
 ///
 /// # Safety
 ///
-/// `info` and `renderer` are null or valid; the handles in `info` are live, `device` was
-/// created from `physical_device` of `instance` with the features `enabled_features` names,
+/// `renderer` is null or writable; `info` is null or points at the `struct_size` bytes of a
+/// create info as the caller's header declares it; the handles in `info` are live, `device`
+/// was created from `physical_device` of `instance` with the features `enabled_features` names,
 /// and all of them outlive the renderer.
 #[no_mangle]
 pub unsafe extern "C" fn ffvkCreateRenderer(
@@ -367,10 +368,14 @@ pub unsafe extern "C" fn ffvkCreateRenderer(
         if let Err(code) = check_ptr(F, "info", info, "an FfvkRendererCreateInfo") {
             return code;
         }
-        // SAFETY: checked non-null and aligned; valid by the caller's contract.
-        let info = unsafe { &*info };
+        // SAFETY: checked non-null and aligned; the caller's contract: struct_size bytes of a
+        // create info.
+        let info = match unsafe { crate::abi::read(F, info) } {
+            Ok(info) => info,
+            Err(code) => return code,
+        };
         // SAFETY: the caller's contract on the create info.
-        match unsafe { create(info) } {
+        match unsafe { create(&info) } {
             Ok(r) => {
                 // SAFETY: checked non-null above.
                 unsafe { *renderer = Box::into_raw(Box::new(r)) };
@@ -496,12 +501,14 @@ fn topology(mode: u32) -> Result<Topology, FfvkResult> {
         GL_TRIANGLE_FAN => Topology::TriangleFan,
         GL_LINE_LOOP | GL_QUADS | GL_QUAD_STRIP | GL_POLYGON => {
             return Err(invalid(format!(
-                "ffvkDraw: mode 0x{mode:04X} is drawn as a list: turn its vertices into indices with ffvkPrimitiveIndices and draw those"
+                "ffvkDraw: mode {} is drawn as a list: turn its vertices into indices with ffvkPrimitiveIndices (or ffvkPrimitiveIndicesRange) and draw those",
+                mode_name(mode)
             )))
         }
         other => {
             return Err(invalid(format!(
-                "ffvkDraw: mode 0x{other:04X} is not a GL primitive: expected GL_POINTS, GL_LINES, GL_LINE_STRIP, GL_TRIANGLES, GL_TRIANGLE_STRIP or GL_TRIANGLE_FAN"
+                "ffvkDraw: mode {} is not a GL primitive: expected GL_POINTS, GL_LINES, GL_LINE_STRIP, GL_TRIANGLES, GL_TRIANGLE_STRIP or GL_TRIANGLE_FAN",
+                enum_name(other)
             )))
         }
     })
@@ -512,9 +519,10 @@ fn topology(mode: u32) -> Result<Topology, FfvkResult> {
 /// The draw is checked and its state written into the slot's memory now (its pipeline is made
 /// now if it is new: about 15 ms on lavapipe); `ffvkEndDraws` records it. A refused draw is
 /// not added and the scope stays open with the draws before it. Errors:
-/// `FFVK_ERROR_INVALID_ARGUMENT` (no open scope, a null pointer, a wrong `struct_size`, a mode
-/// ffvk does not draw directly, a buffer count other than the layout's bindings, a raster
-/// enum that is not one ffvk passes to Vulkan (see `FfvkRaster`), blending into a color
+/// `FFVK_ERROR_INVALID_ARGUMENT` (no open scope, a null pointer, a `struct_size` that is not a
+/// published version's, a mode ffvk does not draw directly, a buffer count other than the
+/// layout's bindings, a raster enum that is not one ffvk passes to Vulkan (see `FfvkRaster`),
+/// blending into a color
 /// format the device cannot blend, a point size or line width out of the device's range, a
 /// textured draw without texture coordinates),
 /// `FFVK_ERROR_STATE` (the context's state cannot be drawn: a soft spot cone wider than its
@@ -525,8 +533,9 @@ fn topology(mode: u32) -> Result<Topology, FfvkResult> {
 /// # Safety
 ///
 /// `renderer` and `ctx` are null or live and used by this thread only; `draw` is null or
-/// valid, its buffers are the caller's live buffers of the renderer's device, and its texture
-/// is null or live until `ffvkEndDraws` returns.
+/// points at the `struct_size` bytes of a draw info as the caller's header declares it; its
+/// buffers are the caller's live buffers of the renderer's device, and its texture is null or
+/// live until `ffvkEndDraws` returns.
 #[no_mangle]
 pub unsafe extern "C" fn ffvkDraw(
     renderer: *mut FfvkRenderer,
@@ -547,15 +556,10 @@ pub unsafe extern "C" fn ffvkDraw(
         }
         // SAFETY: checked non-null and aligned; the caller's contract: a live context.
         let ctx = unsafe { &*ctx };
-        // SAFETY: checked non-null and aligned; the caller's contract: a valid draw info.
-        let draw = unsafe { &*draw };
         let result = (|| {
-            check_size(
-                F,
-                "FfvkDrawInfo",
-                draw.struct_size,
-                std::mem::size_of::<FfvkDrawInfo>(),
-            )?;
+            // SAFETY: checked non-null and aligned; the caller's contract: struct_size bytes of
+            // a draw info.
+            let draw = unsafe { crate::abi::read(F, draw) }?;
             let topology = topology(draw.mode)?;
             if misaligned(draw.texture) {
                 return Err(invalid(format!(

@@ -109,9 +109,26 @@ fn assert_names(text: &str, words: &[&str]) {
     }
 }
 
-/// `0x1234`: how messages show an enum.
+/// `0x1234`: how messages show a value GL has no name for (and the value after a name).
 fn hex(value: u32) -> String {
     format!("0x{value:04X}")
+}
+
+/// `GL_QUADS (0x0007)`: how messages show a primitive mode.
+fn mode_named(mode: u32) -> String {
+    let names = [
+        "GL_POINTS",
+        "GL_LINES",
+        "GL_LINE_LOOP",
+        "GL_LINE_STRIP",
+        "GL_TRIANGLES",
+        "GL_TRIANGLE_STRIP",
+        "GL_TRIANGLE_FAN",
+        "GL_QUADS",
+        "GL_QUAD_STRIP",
+        "GL_POLYGON",
+    ];
+    format!("{} ({})", names[mode as usize], hex(mode))
 }
 
 /// Makes each call as C writes it, then asserts on the context `$c` that it was refused with
@@ -1405,19 +1422,19 @@ fn messages_name_the_function_the_parameter_the_value_and_what_was_expected() {
         ]);
         ffvkMaterialf(x, FRONT, AMBIENT, 1.0);
         expect(&[
-            "ffvkMaterialf: pname 0x1200",
+            "ffvkMaterialf: pname GL_AMBIENT (0x1200)",
             "expected GL_SHININESS",
             "GL_INVALID_ENUM",
         ]);
         ffvkTexEnvi(x, TEXTURE_ENV, TEXTURE_ENV_MODE, COMBINE as i32);
         expect(&[
-            "ffvkTexEnvi: GL_TEXTURE_ENV_MODE value 0x8570",
+            "ffvkTexEnvi: GL_TEXTURE_ENV_MODE value GL_COMBINE (0x8570)",
             "expected GL_MODULATE",
             "GL_COMBINE",
         ]);
         ffvkColorMaterial(x, FRONT, SHININESS);
         expect(&[
-            "ffvkColorMaterial: mode 0x1601",
+            "ffvkColorMaterial: mode GL_SHININESS (0x1601)",
             "expected GL_EMISSION",
             "GL_AMBIENT_AND_DIFFUSE",
         ]);
@@ -1433,7 +1450,7 @@ fn messages_name_the_function_the_parameter_the_value_and_what_was_expected() {
         ]);
         ffvkGetMaterialfv(x, FRONT_AND_BACK, AMBIENT, [0.0f32; 16].as_mut_ptr());
         expect(&[
-            "ffvkGetMaterialfv: face 0x0408",
+            "ffvkGetMaterialfv: face GL_FRONT_AND_BACK (0x0408)",
             "expected GL_FRONT or GL_BACK",
             "GL_INVALID_ENUM",
         ]);
@@ -1443,6 +1460,61 @@ fn messages_name_the_function_the_parameter_the_value_and_what_was_expected() {
             "inf is not a finite number",
             "expected 16 finite floats",
         ]);
+    }
+}
+
+#[test]
+fn messages_name_a_gl_enum_by_its_gl_name_and_a_value_gl_has_no_name_for_in_hex() {
+    const DEPTH_TEST: u32 = 0x0B71;
+    const VERTEX_ARRAY: u32 = 0x8074;
+    let c = Ctx::new();
+    let x = c.0;
+    let expect = |words: &[&str]| {
+        let text = message();
+        assert_eq!(c.error(), INVALID_ENUM, "{text}");
+        assert_names(&text, words);
+    };
+    // SAFETY: a live context; params point at 4 values.
+    unsafe {
+        // Names the API refuses, as a layer forwarding every glEnable passes them.
+        ffvkEnable(x, DEPTH_TEST);
+        expect(&["ffvkEnable: cap GL_DEPTH_TEST (0x0B71) is not accepted"]);
+        ffvkDisable(x, VERTEX_ARRAY);
+        expect(&["ffvkDisable: cap GL_VERTEX_ARRAY (0x8074) is not accepted"]);
+        ffvkTexEnvi(x, TEXTURE_ENV, TEXTURE_ENV_MODE, COMBINE as i32);
+        expect(&["GL_TEXTURE_ENV_MODE value GL_COMBINE (0x8570) is not accepted"]);
+        // Names the API takes, where they do not belong.
+        ffvkLightfv(x, LIGHT0, SHININESS, [0.0f32; 4].as_ptr());
+        expect(&["ffvkLightfv: pname GL_SHININESS (0x1601) is not accepted"]);
+        ffvkGetMaterialfv(x, FRONT_AND_BACK, AMBIENT, [0.0f32; 16].as_mut_ptr());
+        expect(&["ffvkGetMaterialfv: face GL_FRONT_AND_BACK (0x0408) is not accepted"]);
+        // Values GL has no name for, and values below 0x0100 (booleans and primitive modes
+        // share them), stay hex.
+        ffvkEnable(x, LIGHT0 + 16);
+        expect(&["ffvkEnable: cap 0x4010 is not accepted"]);
+        ffvkShadeModel(x, TRIANGLES);
+        expect(&["ffvkShadeModel: mode 0x0004 is not accepted"]);
+    }
+}
+
+#[test]
+fn every_gl_name_a_message_prints_has_the_value_gl_h_gives_it() {
+    let mut headers = String::new();
+    for path in ["/usr/include/GL/gl.h", "/usr/include/GL/glext.h"] {
+        headers += &std::fs::read_to_string(path)
+            .unwrap_or_else(|e| panic!("{path}: {e} (install the Debian package libgl-dev)"));
+    }
+    for (name, value) in ffvk_c::enums::message_names() {
+        let defined = headers.lines().find_map(|line| {
+            let mut words = line.split_whitespace();
+            (words.next() == Some("#define") && words.next() == Some(name))
+                .then(|| words.next())
+                .flatten()
+        });
+        let defined = defined.unwrap_or_else(|| panic!("<GL/gl.h> does not define {name}"));
+        let parsed = u32::from_str_radix(defined.trim_start_matches("0x"), 16)
+            .unwrap_or_else(|e| panic!("{name} is {defined} in <GL/gl.h>: {e}"));
+        assert_eq!(parsed, value, "{name}: <GL/gl.h> says {defined}");
     }
 }
 
@@ -1644,14 +1716,27 @@ fn create_renderer_with_a_null_info_is_invalid_argument_and_nulls_the_out_pointe
 }
 
 #[test]
-fn create_renderer_with_a_struct_size_below_the_structs_is_invalid_argument() {
-    let full = size_of::<FfvkRendererCreateInfo>();
-    for size in [0u32, 4, 8, full as u32 - 1] {
+fn create_renderer_refuses_a_struct_size_that_no_published_header_declares_naming_the_sizes_accepted() {
+    let v1 = size_of::<FfvkRendererCreateInfo>() as u32;
+    let accepted = format!(
+        "expected sizeof(FfvkRendererCreateInfo) as a published ffvk.h declares it, {v1} (version 1)"
+    );
+    for (size, why) in [
+        (0u32, "smaller than version 1"),
+        (4, "smaller than version 1"),
+        (v1 - 8, "smaller than version 1"),
+        (v1 - 1, "smaller than version 1"),
+        (
+            v1 + 1,
+            "larger than any version this library (ffvk-c 0.1.0) knows",
+        ),
+        (v1 + 8, "a newer ffvk.h than the library it runs with"),
+        (u32::MAX, "larger than any version"),
+    ] {
         let mut info = create_info();
         info.struct_size = size;
-        let given = format!("FfvkRendererCreateInfo.struct_size is {size}");
-        let expected = format!("expected sizeof(FfvkRendererCreateInfo) = {full}");
-        assert_create_refused(&info, &[&given, &expected]);
+        let given = format!("FfvkRendererCreateInfo.struct_size is {size}: ");
+        assert_create_refused(&info, &[&given, why, &accepted]);
     }
 }
 
@@ -2060,7 +2145,11 @@ fn no_vertices_make_no_indices_in_every_mode() {
 #[test]
 fn primitive_indices_refuses_an_unknown_mode_and_writes_nothing() {
     let v = [0u32, 1, 2, 3];
-    for mode in [POLYGON + 1, LIGHTING, u32::MAX] {
+    for (mode, shown) in [
+        (POLYGON + 1, "0x000A"),
+        (LIGHTING, "GL_LIGHTING (0x0B50)"),
+        (u32::MAX, "0xFFFFFFFF"),
+    ] {
         let mut out = [u32::MAX; 16];
         let (mut written, mut draw_mode) = (7u32, 7u32);
         // SAFETY: 4 vertices; out has room for 16.
@@ -2077,7 +2166,7 @@ fn primitive_indices_refuses_an_unknown_mode_and_writes_nothing() {
         };
         assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
         let words = [
-            &format!("ffvkPrimitiveIndices: mode {}", hex(mode)),
+            &format!("ffvkPrimitiveIndices: mode {shown} is not one of GL's ten primitive modes"),
             "expected GL_POINTS",
         ];
         assert_names(&message(), &words);
@@ -2222,7 +2311,7 @@ fn primitive_indices_refuses_a_count_whose_indices_a_uint32_count_cannot_hold() 
                 "mode {mode}, count {count}"
             );
             let words = [
-                &format!("ffvkPrimitiveIndices: count {count} of mode {}", hex(mode)),
+                &format!("ffvkPrimitiveIndices: count {count} of mode {}", mode_named(mode)),
                 &format!("makes {needed} indices"),
                 "expected a count whose indices number at most 4294967295",
             ];
@@ -2231,6 +2320,128 @@ fn primitive_indices_refuses_a_count_whose_indices_a_uint32_count_cannot_hold() 
         assert_eq!((written, draw_mode), (5, 5), "written on a refusal");
         assert_eq!(out, [u32::MAX; 4]);
     }
+}
+
+/// `ffvkPrimitiveIndicesRange(mode, first, count)`: the size query, then the indices into
+/// room for exactly that many (and two more, which must stay untouched).
+fn primitive_indices_range(mode: u32, first: u32, count: u32) -> (Vec<u32>, u32) {
+    let (mut written, mut draw_mode) = (u32::MAX, u32::MAX);
+    // SAFETY: out is null (asking the size).
+    let r =
+        unsafe { ffvkPrimitiveIndicesRange(mode, first, count, null_mut(), 0, &mut written, &mut draw_mode) };
+    assert_eq!(r, FfvkResult::FFVK_SUCCESS, "{}", message());
+    let mut out = vec![u32::MAX; written as usize + 2];
+    let (mut written2, mut draw_mode2) = (u32::MAX, u32::MAX);
+    // SAFETY: out has room for `written` values.
+    let r = unsafe {
+        ffvkPrimitiveIndicesRange(
+            mode,
+            first,
+            count,
+            out.as_mut_ptr(),
+            written,
+            &mut written2,
+            &mut draw_mode2,
+        )
+    };
+    assert_eq!(r, FfvkResult::FFVK_SUCCESS, "{}", message());
+    assert_eq!((written2, draw_mode2), (written, draw_mode));
+    assert_eq!(out[written as usize..], [u32::MAX; 2], "written past the count");
+    out.truncate(written as usize);
+    (out, draw_mode)
+}
+
+#[test]
+fn the_range_form_makes_the_indices_of_the_consecutive_vertices_first_to_first_plus_count() {
+    for mode in POINTS..=POLYGON {
+        for (first, count) in [
+            (0u32, 0u32),
+            (0, 1),
+            (0, 12),
+            (5, 11),
+            (1000, 9),
+            (u32::MAX - 7, 8),
+        ] {
+            let listed: Vec<u32> = (0..count).map(|i| first + i).collect();
+            assert_eq!(
+                primitive_indices_range(mode, first, count),
+                primitive_indices(mode, &listed),
+                "{} of vertices {first} .. {first} + {count}",
+                mode_named(mode)
+            );
+        }
+    }
+}
+
+#[test]
+fn the_range_form_refuses_a_last_vertex_past_the_uint32_range_naming_first_and_count() {
+    let mut out = [u32::MAX; 8];
+    let (mut written, mut draw_mode) = (5u32, 5u32);
+    for (first, count) in [(u32::MAX, 2u32), (2, u32::MAX), (u32::MAX, u32::MAX)] {
+        for o in [null_mut(), out.as_mut_ptr()] {
+            // SAFETY: out is null or has room for 8; refused before it is looked at.
+            let r = unsafe {
+                ffvkPrimitiveIndicesRange(TRIANGLES, first, count, o, 8, &mut written, &mut draw_mode)
+            };
+            assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+            let words = [
+                &format!("ffvkPrimitiveIndicesRange: first {first} + count {count} passes 2^32"),
+                "expected first + count <= 4294967296",
+            ];
+            assert_names(&message(), &words);
+        }
+    }
+    assert_eq!((written, draw_mode), (5, 5), "written on a refusal");
+    assert_eq!(out, [u32::MAX; 8]);
+    // The last vertex number may be 0xFFFFFFFF itself.
+    let (indices, _) = primitive_indices_range(LINE_LOOP, u32::MAX - 1, 2);
+    assert_eq!(indices, [u32::MAX - 1, u32::MAX, u32::MAX, u32::MAX - 1]);
+}
+
+#[test]
+fn the_range_forms_size_query_and_refusals_are_those_of_the_listed_form() {
+    let (mut written, mut draw_mode) = (0u32, u32::MAX);
+    // SAFETY: a size query writes the count and mode only.
+    let r = unsafe {
+        ffvkPrimitiveIndicesRange(
+            QUADS,
+            0,
+            2_000_000_000,
+            null_mut(),
+            0,
+            &mut written,
+            &mut draw_mode,
+        )
+    };
+    assert_eq!(r, FfvkResult::FFVK_SUCCESS, "{}", message());
+    assert_eq!((written, draw_mode), (3_000_000_000, TRIANGLES));
+    let mut out = [u32::MAX; 16];
+    let (o, w_, m_) = (out.as_mut_ptr(), &raw mut written, &raw mut draw_mode);
+    // SAFETY: each call is refused before out (room for 16) is written.
+    unsafe {
+        assert_each_invalid_argument!(
+            ["count 3000000000 of mode GL_QUADS (0x0007) makes 4500000000 indices"],
+            {
+                ffvkPrimitiveIndicesRange(QUADS, 0, 3_000_000_000, o, 16, w_, m_);
+            }
+        );
+        assert_each_invalid_argument!(
+            ["mode GL_LIGHTING (0x0B50) is not one of GL's ten primitive modes"],
+            {
+                ffvkPrimitiveIndicesRange(LIGHTING, 0, 4, o, 16, w_, m_);
+            }
+        );
+        assert_each_invalid_argument!(["capacity 11 is too small", "expected at least 12"], {
+            ffvkPrimitiveIndicesRange(QUADS, 0, 8, o, 11, w_, m_);
+        });
+        assert_each_invalid_argument!(["written is a null pointer"], {
+            ffvkPrimitiveIndicesRange(QUADS, 0, 4, o, 16, null_mut(), m_);
+        });
+        assert_each_invalid_argument!(["draw_mode is a null pointer"], {
+            ffvkPrimitiveIndicesRange(QUADS, 0, 4, o, 16, w_, null_mut());
+        });
+    }
+    assert_eq!(out, [u32::MAX; 16]);
 }
 
 // ---------------------------------------------------------------------------------------

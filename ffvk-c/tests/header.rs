@@ -75,6 +75,8 @@ int main(void) {
         (fn)&ffvkEnable, (fn)&ffvkLightfv, (fn)&ffvkGetMaterialfv, (fn)&ffvkGetBooleanv,
         (fn)&ffvkCreateRenderer, (fn)&ffvkDraw, (fn)&ffvkEndDraws, (fn)&ffvkCreateTexture,
         (fn)&ffvkResultMessage, (fn)&ffvkPrimitiveIndices, (fn)&ffvkCreateTeapot,
+        (fn)&ffvkPrimitiveIndicesRange, (fn)&ffvkViewport, (fn)&ffvkScissor,
+        (fn)&ffvkDeviceRequirements,
     };
     FfvkRendererCreateInfo info;
     FfvkDrawInfo draw;
@@ -150,6 +152,13 @@ fn a_c_program_links_the_static_and_the_shared_library_and_gets_gls_errors_and_e
     let source = dir.join("state.c");
     std::fs::write(&source, STATE_PROGRAM).unwrap();
     let lib = lean_library_dir();
+    // The shared library's SONAME is libffvk_c.so.<major>, the name an installed copy has
+    // (`make install-c`): the program finds it here, a link to cargo's libffvk_c.so.
+    let runtime = dir.join("runtime");
+    std::fs::create_dir_all(&runtime).unwrap();
+    let soname = format!("libffvk_c.so.{}", env!("CARGO_PKG_VERSION_MAJOR"));
+    let _ = std::fs::remove_file(runtime.join(&soname));
+    std::os::unix::fs::symlink(lib.join("libffvk_c.so"), runtime.join(&soname)).unwrap();
     for (kind, link) in [
         (
             "static",
@@ -164,7 +173,7 @@ fn a_c_program_links_the_static_and_the_shared_library_and_gets_gls_errors_and_e
             "shared",
             vec![
                 format!("-L{}", lib.display()),
-                format!("-Wl,-rpath,{}", lib.display()),
+                format!("-Wl,-rpath,{}", runtime.display()),
                 "-lffvk_c".into(),
             ],
         ),
@@ -184,7 +193,10 @@ fn a_c_program_links_the_static_and_the_shared_library_and_gets_gls_errors_and_e
             "linking the {kind} library failed:\n{}",
             String::from_utf8_lossy(&output.stderr)
         );
-        let run = Command::new(&exe).output().expect("the C program runs");
+        let run = Command::new(&exe)
+            .env_remove("LD_LIBRARY_PATH")
+            .output()
+            .expect("the C program runs");
         assert!(
             run.status.success(),
             "the C program linked with the {kind} library failed ({}):\n{}",

@@ -111,6 +111,7 @@ pub use draw::pipeline::{
 };
 pub use draw::record::{Geometry, Topology};
 pub use draw::texture::TextureBinding;
+pub use draw::viewport::{gl_scissor, gl_viewport, ViewportError};
 pub use error::{Error, LightingError, MeshError, Result, UnknownName};
 pub use renderer::{
     Draw, FragmentPath, Frame, FrameStats, Mesh, PipelineStats, Pixels, Recording, Renderer, RendererOptions,

@@ -8,14 +8,14 @@ use std::process::{Command, Output};
 use crate::embedding::embed;
 use crate::support::{output_dir, save_for_inspection};
 
-const LAVAPIPE_ICD: &str = "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json";
+pub(crate) const LAVAPIPE_ICD: &str = "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json";
 
-fn workspace() -> PathBuf {
+pub(crate) fn workspace() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
 /// What a failed command printed, for the panic message.
-fn printed(output: &Output) -> String {
+pub(crate) fn printed(output: &Output) -> String {
     format!(
         "{}\n--- stdout ---\n{}\n--- stderr ---\n{}",
         output.status,
@@ -25,7 +25,7 @@ fn printed(output: &Output) -> String {
 }
 
 /// target/<profile>, where cargo puts libffvk_c.so: this binary is target/<profile>/deps/suite-….
-fn profile_dir() -> PathBuf {
+pub(crate) fn profile_dir() -> PathBuf {
     let exe = std::env::current_exe().expect("the test binary's path");
     let deps = exe.parent().expect("the test binary's directory");
     assert!(
@@ -40,7 +40,7 @@ fn profile_dir() -> PathBuf {
 /// ffvk-cli` builds ffvk-c only as a dependency, whose library stays in deps/ and is not
 /// copied up to target/<profile>: without this, the example could link a stale one. A no-op
 /// when fresh.
-fn build_library(profile: &Path) {
+pub(crate) fn build_library(profile: &Path) {
     let mut cargo = Command::new(env!("CARGO"));
     cargo
         .current_dir(workspace())

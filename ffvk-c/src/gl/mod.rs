@@ -72,7 +72,8 @@ pub(crate) fn invalid_enum(function: &str, what: &str, value: u32, expected: &st
     GlError {
         code: GL_INVALID_ENUM,
         message: format!(
-            "{function}: {what} 0x{value:04X} is not accepted: expected {expected} (GL_INVALID_ENUM)"
+            "{function}: {what} {} is not accepted: expected {expected} (GL_INVALID_ENUM)",
+            enum_name(value)
         ),
     }
 }

@@ -16,6 +16,9 @@ use crate::vk_types::*;
 /// `front_face` 0 or 1, `depth_compare` `VK_COMPARE_OP_NEVER` .. `ALWAYS` (0 .. 7), and while
 /// blending, factors `VK_BLEND_FACTOR_ZERO` .. `SRC_ALPHA_SATURATE` (0 .. 14; no dual-source
 /// factors) and equations `VK_BLEND_OP_ADD` .. `MAX` (0 .. 4).
+///
+/// It never changes size (`ffvkRasterDefaults` writes it whole, and it lies inside
+/// `FfvkDrawInfo`): raster state added later becomes new fields at the end of `FfvkDrawInfo`.
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct FfvkRaster {
@@ -80,7 +83,13 @@ pub unsafe extern "C" fn ffvkRasterDefaults(raster: *mut FfvkRaster) {
     if raster.is_null() || misaligned(raster) {
         return;
     }
-    let defaults = FfvkRaster {
+    // SAFETY: checked non-null; the caller's contract makes it writable.
+    unsafe { raster.write(raster_defaults()) };
+}
+
+/// GL's initial raster state (`ffvkRasterDefaults`): also the default of a draw's raster state.
+pub(crate) fn raster_defaults() -> FfvkRaster {
+    FfvkRaster {
         cull_mode: vk::CullModeFlags::NONE,
         front_face: vk::FrontFace::COUNTER_CLOCKWISE,
         depth_test: 0,
@@ -95,7 +104,5 @@ pub unsafe extern "C" fn ffvkRasterDefaults(raster: *mut FfvkRaster) {
         alpha_op: vk::BlendOp::ADD,
         point_size: 1.0,
         line_width: 1.0,
-    };
-    // SAFETY: checked non-null; the caller's contract makes it writable.
-    unsafe { raster.write(defaults) };
+    }
 }

@@ -15,3 +15,4 @@ mod ring;
 mod target;
 pub mod texture;
 mod vertex_input;
+pub mod viewport;

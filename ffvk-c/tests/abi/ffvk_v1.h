@@ -1,0 +1,1273 @@
+/* ffvk.h: ffvk's C API, generated from ffvk-c/src by cbindgen (tests/header.rs); do not edit.
+ *
+ * GL's lighting state on a context (GL's entry points, enums and errors), and ffvk's
+ * pipelines on the caller's Vulkan device recording draws into the caller's command buffers.
+ * Link with -lffvk_c (libffvk_c.so or libffvk_c.a; the static library also needs
+ * -lm -ldl -lpthread). GL enums: plain uint32_t values as <GL/gl.h> spells them; this header
+ * defines those it uses unless already defined. Threads: a context, a renderer, a texture and
+ * a mesh are each used by one thread at a time; different objects are independent. No call
+ * submits to a queue or waits on the device. */
+
+#ifndef FFVK_H
+#define FFVK_H
+
+#include <stdint.h>
+#include <vulkan/vulkan.h>
+
+/* GL's values for the enums this API takes and returns. */
+#ifndef GL_FALSE
+#define GL_FALSE 0x0000
+#endif
+#ifndef GL_TRUE
+#define GL_TRUE 0x0001
+#endif
+#ifndef GL_NO_ERROR
+#define GL_NO_ERROR 0x0000
+#endif
+#ifndef GL_INVALID_ENUM
+#define GL_INVALID_ENUM 0x0500
+#endif
+#ifndef GL_INVALID_VALUE
+#define GL_INVALID_VALUE 0x0501
+#endif
+#ifndef GL_INVALID_OPERATION
+#define GL_INVALID_OPERATION 0x0502
+#endif
+#ifndef GL_OUT_OF_MEMORY
+#define GL_OUT_OF_MEMORY 0x0505
+#endif
+#ifndef GL_CURRENT_COLOR
+#define GL_CURRENT_COLOR 0x0B00
+#endif
+#ifndef GL_LIGHTING
+#define GL_LIGHTING 0x0B50
+#endif
+#ifndef GL_LIGHT_MODEL_LOCAL_VIEWER
+#define GL_LIGHT_MODEL_LOCAL_VIEWER 0x0B51
+#endif
+#ifndef GL_LIGHT_MODEL_TWO_SIDE
+#define GL_LIGHT_MODEL_TWO_SIDE 0x0B52
+#endif
+#ifndef GL_LIGHT_MODEL_AMBIENT
+#define GL_LIGHT_MODEL_AMBIENT 0x0B53
+#endif
+#ifndef GL_SHADE_MODEL
+#define GL_SHADE_MODEL 0x0B54
+#endif
+#ifndef GL_COLOR_MATERIAL_FACE
+#define GL_COLOR_MATERIAL_FACE 0x0B55
+#endif
+#ifndef GL_COLOR_MATERIAL_PARAMETER
+#define GL_COLOR_MATERIAL_PARAMETER 0x0B56
+#endif
+#ifndef GL_COLOR_MATERIAL
+#define GL_COLOR_MATERIAL 0x0B57
+#endif
+#ifndef GL_NORMALIZE
+#define GL_NORMALIZE 0x0BA1
+#endif
+#ifndef GL_MODELVIEW_MATRIX
+#define GL_MODELVIEW_MATRIX 0x0BA6
+#endif
+#ifndef GL_PROJECTION_MATRIX
+#define GL_PROJECTION_MATRIX 0x0BA7
+#endif
+#ifndef GL_TEXTURE_MATRIX
+#define GL_TEXTURE_MATRIX 0x0BA8
+#endif
+#ifndef GL_BLEND
+#define GL_BLEND 0x0BE2
+#endif
+#ifndef GL_MAX_LIGHTS
+#define GL_MAX_LIGHTS 0x0D31
+#endif
+#ifndef GL_TEXTURE_2D
+#define GL_TEXTURE_2D 0x0DE1
+#endif
+#ifndef GL_FRONT
+#define GL_FRONT 0x0404
+#endif
+#ifndef GL_BACK
+#define GL_BACK 0x0405
+#endif
+#ifndef GL_FRONT_AND_BACK
+#define GL_FRONT_AND_BACK 0x0408
+#endif
+#ifndef GL_ADD
+#define GL_ADD 0x0104
+#endif
+#ifndef GL_AMBIENT
+#define GL_AMBIENT 0x1200
+#endif
+#ifndef GL_DIFFUSE
+#define GL_DIFFUSE 0x1201
+#endif
+#ifndef GL_SPECULAR
+#define GL_SPECULAR 0x1202
+#endif
+#ifndef GL_POSITION
+#define GL_POSITION 0x1203
+#endif
+#ifndef GL_SPOT_DIRECTION
+#define GL_SPOT_DIRECTION 0x1204
+#endif
+#ifndef GL_SPOT_EXPONENT
+#define GL_SPOT_EXPONENT 0x1205
+#endif
+#ifndef GL_SPOT_CUTOFF
+#define GL_SPOT_CUTOFF 0x1206
+#endif
+#ifndef GL_CONSTANT_ATTENUATION
+#define GL_CONSTANT_ATTENUATION 0x1207
+#endif
+#ifndef GL_LINEAR_ATTENUATION
+#define GL_LINEAR_ATTENUATION 0x1208
+#endif
+#ifndef GL_QUADRATIC_ATTENUATION
+#define GL_QUADRATIC_ATTENUATION 0x1209
+#endif
+#ifndef GL_EMISSION
+#define GL_EMISSION 0x1600
+#endif
+#ifndef GL_SHININESS
+#define GL_SHININESS 0x1601
+#endif
+#ifndef GL_AMBIENT_AND_DIFFUSE
+#define GL_AMBIENT_AND_DIFFUSE 0x1602
+#endif
+#ifndef GL_COLOR_INDEXES
+#define GL_COLOR_INDEXES 0x1603
+#endif
+#ifndef GL_FLAT
+#define GL_FLAT 0x1D00
+#endif
+#ifndef GL_SMOOTH
+#define GL_SMOOTH 0x1D01
+#endif
+#ifndef GL_REPLACE
+#define GL_REPLACE 0x1E01
+#endif
+#ifndef GL_MODULATE
+#define GL_MODULATE 0x2100
+#endif
+#ifndef GL_DECAL
+#define GL_DECAL 0x2101
+#endif
+#ifndef GL_TEXTURE_ENV_MODE
+#define GL_TEXTURE_ENV_MODE 0x2200
+#endif
+#ifndef GL_TEXTURE_ENV_COLOR
+#define GL_TEXTURE_ENV_COLOR 0x2201
+#endif
+#ifndef GL_TEXTURE_ENV
+#define GL_TEXTURE_ENV 0x2300
+#endif
+#ifndef GL_LIGHT0
+#define GL_LIGHT0 0x4000
+#endif
+#ifndef GL_LIGHT1
+#define GL_LIGHT1 0x4001
+#endif
+#ifndef GL_LIGHT2
+#define GL_LIGHT2 0x4002
+#endif
+#ifndef GL_LIGHT3
+#define GL_LIGHT3 0x4003
+#endif
+#ifndef GL_LIGHT4
+#define GL_LIGHT4 0x4004
+#endif
+#ifndef GL_LIGHT5
+#define GL_LIGHT5 0x4005
+#endif
+#ifndef GL_LIGHT6
+#define GL_LIGHT6 0x4006
+#endif
+#ifndef GL_LIGHT7
+#define GL_LIGHT7 0x4007
+#endif
+#ifndef GL_RESCALE_NORMAL
+#define GL_RESCALE_NORMAL 0x803A
+#endif
+#ifndef GL_LIGHT_MODEL_COLOR_CONTROL
+#define GL_LIGHT_MODEL_COLOR_CONTROL 0x81F8
+#endif
+#ifndef GL_SINGLE_COLOR
+#define GL_SINGLE_COLOR 0x81F9
+#endif
+#ifndef GL_SEPARATE_SPECULAR_COLOR
+#define GL_SEPARATE_SPECULAR_COLOR 0x81FA
+#endif
+#ifndef GL_POINTS
+#define GL_POINTS 0x0000
+#endif
+#ifndef GL_LINES
+#define GL_LINES 0x0001
+#endif
+#ifndef GL_LINE_LOOP
+#define GL_LINE_LOOP 0x0002
+#endif
+#ifndef GL_LINE_STRIP
+#define GL_LINE_STRIP 0x0003
+#endif
+#ifndef GL_TRIANGLES
+#define GL_TRIANGLES 0x0004
+#endif
+#ifndef GL_TRIANGLE_STRIP
+#define GL_TRIANGLE_STRIP 0x0005
+#endif
+#ifndef GL_TRIANGLE_FAN
+#define GL_TRIANGLE_FAN 0x0006
+#endif
+#ifndef GL_QUADS
+#define GL_QUADS 0x0007
+#endif
+#ifndef GL_QUAD_STRIP
+#define GL_QUAD_STRIP 0x0008
+#endif
+#ifndef GL_POLYGON
+#define GL_POLYGON 0x0009
+#endif
+
+
+/*
+ `dynamicRendering` (Vulkan 1.3): required.
+ */
+#define FFVK_FEATURE_DYNAMIC_RENDERING 1
+
+/*
+ `VK_EXT_provoking_vertex` with `provokingVertexLast`: needed for `GL_FLAT`.
+ */
+#define FFVK_FEATURE_PROVOKING_VERTEX_LAST 2
+
+/*
+ `wideLines`: needed for a line width other than 1.
+ */
+#define FFVK_FEATURE_WIDE_LINES 4
+
+/*
+ `largePoints`: needed for a point size other than 1.
+ */
+#define FFVK_FEATURE_LARGE_POINTS 8
+
+/*
+ The most `frames_in_flight` a renderer takes (`ffvk::MAX_FRAMES_IN_FLIGHT`).
+ */
+#define FFVK_MAX_FRAMES_IN_FLIGHT 64
+
+/*
+ The most vertex `bindings` a renderer takes (`ffvk::MAX_VERTEX_BINDINGS`).
+ */
+#define FFVK_MAX_VERTEX_BINDINGS 32
+
+/*
+ What an `FfvkResult`-returning entry point reports. Every code but `FFVK_SUCCESS` comes
+ with a message, `ffvkResultMessage()`, naming what failed and what was expected.
+ */
+typedef enum FfvkResult {
+  /*
+   It worked.
+   */
+  FFVK_SUCCESS = 0,
+  /*
+   A null pointer, a wrong `struct_size`, a value out of range or a call out of order
+   (e.g. `ffvkDraw` outside `ffvkBeginDraws` … `ffvkEndDraws`). Nothing changed.
+   */
+  FFVK_ERROR_INVALID_ARGUMENT = -1,
+  /*
+   The device lacks something ffvk needs (Vulkan 1.3, dynamic rendering, a feature the
+   caller said it enabled), or the caller did not enable it.
+   */
+  FFVK_ERROR_MISSING_FEATURE = -2,
+  /*
+   Host or device memory ran out.
+   */
+  FFVK_ERROR_OUT_OF_MEMORY = -3,
+  /*
+   A Vulkan call failed (the message names it and its `VkResult`), or the device was lost.
+   */
+  FFVK_ERROR_VULKAN = -4,
+  /*
+   The context's GL state cannot be drawn (e.g. a soft spot edge wider than its cutoff, a
+   modelview that cannot be inverted): the message names the parameter and value.
+   */
+  FFVK_ERROR_STATE = -5,
+  /*
+   An internal error (a panic inside ffvk, caught at the boundary). The object it
+   happened on should be destroyed.
+   */
+  FFVK_ERROR_INTERNAL = -6,
+} FfvkResult;
+
+/*
+ GL's lighting state, its matrices and its error flag: what an application's GL calls set.
+ Made by `ffvkCreateContext`, freed by `ffvkDestroyContext`. One thread at a time may call
+ into a context (GL's rule for a current context); different contexts are independent.
+ */
+typedef struct FfvkContext FfvkContext;
+
+/*
+ A host mesh made by ffvk (`ffvkCreateTeapot`): arrays the caller copies into its buffers.
+ */
+typedef struct FfvkMesh FfvkMesh;
+
+/*
+ ffvk on the caller's device (`ffvkCreateRenderer`).
+ */
+typedef struct FfvkRenderer FfvkRenderer;
+
+/*
+ A descriptor set naming the caller's image view and sampler (`ffvkCreateTexture`).
+ */
+typedef struct FfvkTexture FfvkTexture;
+
+/*
+ A view of an `FfvkMesh`'s arrays, valid until `ffvkDestroyMesh`.
+ */
+typedef struct FfvkMeshArrays {
+  /*
+   How many vertices.
+   */
+  uint32_t vertex_count;
+  /*
+   `vertex_count` object-space positions, x y z.
+   */
+  const float *positions;
+  /*
+   `vertex_count` normals, x y z.
+   */
+  const float *normals;
+  /*
+   `vertex_count` colors, r g b a in [0, 1].
+   */
+  const float *colors;
+  /*
+   How many indices.
+   */
+  uint32_t index_count;
+  /*
+   `index_count` indices: counter-clockwise triangles (`GL_TRIANGLES`).
+   */
+  const uint32_t *indices;
+} FfvkMeshArrays;
+
+/*
+ Where one vertex attribute lives: a binding of the create info's `bindings`, the byte
+ offset within one element, the format (any the shaders read as floats, e.g.
+ `VK_FORMAT_R32G32B32_SFLOAT`, `VK_FORMAT_R8G8B8A8_UNORM`, that the device reads from
+ vertex buffers). The attribute lies within one element: offset + the format's size <= the
+ binding's stride.
+ */
+typedef struct FfvkAttribute {
+  /*
+   The vertex buffer binding it is read from.
+   */
+  uint32_t binding;
+  /*
+   Byte offset within one element of that binding.
+   */
+  uint32_t offset;
+  /*
+   The attribute's format.
+   */
+  VkFormat format;
+} FfvkAttribute;
+
+/*
+ What `ffvkCreateRenderer` takes. Set `struct_size` to `sizeof(FfvkRendererCreateInfo)`:
+ later versions add fields at the end and read only what the caller's size covers.
+ */
+typedef struct FfvkRendererCreateInfo {
+  /*
+   `sizeof(FfvkRendererCreateInfo)`.
+   */
+  uint32_t struct_size;
+  /*
+   The caller's loader entry point: ffvk loads every Vulkan function through it.
+   */
+  PFN_vkGetInstanceProcAddr get_instance_proc_addr;
+  /*
+   The caller's instance, created with `apiVersion` 1.3 or later.
+   */
+  VkInstance instance;
+  /*
+   The physical device `device` was made from.
+   */
+  VkPhysicalDevice physical_device;
+  /*
+   The caller's device: ffvk creates its objects on it and never destroys it.
+   */
+  VkDevice device;
+  /*
+   `FFVK_FEATURE_*` bits: the features the caller enabled on `device` (Vulkan cannot be
+   asked). `FFVK_FEATURE_DYNAMIC_RENDERING` is required: `VkPhysicalDeviceVulkan13Features::
+   dynamicRendering`. `FFVK_FEATURE_PROVOKING_VERTEX_LAST` is the extension
+   `VK_EXT_provoking_vertex` enabled with `VkPhysicalDeviceProvokingVertexFeaturesEXT::
+   provokingVertexLast`; without it `GL_FLAT` draws are refused. `FFVK_FEATURE_WIDE_LINES`
+   and `FFVK_FEATURE_LARGE_POINTS` are `VkPhysicalDeviceFeatures::wideLines` and
+   `largePoints`.
+   */
+  uint32_t enabled_features;
+  /*
+   The color attachment's format: an uncompressed core format the shaders write as floats
+   (UNORM, SNORM, SRGB or FLOAT; not UNDEFINED, a depth or an integer format) that the
+   device supports as `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`.
+   */
+  VkFormat color_format;
+  /*
+   The depth attachment's format, or `VK_FORMAT_UNDEFINED` for none: one of the six `D*`
+   formats, supported by the device as `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`.
+   */
+  VkFormat depth_format;
+  /*
+   Samples per pixel of both attachments: one `VK_SAMPLE_COUNT_*_BIT`, among the device's
+   `framebufferColorSampleCounts` (and `framebufferDepthSampleCounts` with a depth format,
+   `framebufferStencilSampleCounts` with a stencil one).
+   */
+  VkSampleCountFlagBits samples;
+  /*
+   The caller's vertex buffer bindings (per-vertex rate), in the order draws pass their
+   buffers.
+   */
+  const VkVertexInputBindingDescription *bindings;
+  /*
+   How many `bindings`, at most `FFVK_MAX_VERTEX_BINDINGS`.
+   */
+  uint32_t binding_count;
+  /*
+   Object-space position (`glVertexPointer`).
+   */
+  struct FfvkAttribute position;
+  /*
+   Object-space normal (`glNormalPointer`).
+   */
+  struct FfvkAttribute normal;
+  /*
+   Per-vertex color (`glColorPointer`), or null: every vertex takes the context's current
+   color (`ffvkColor4f`).
+   */
+  const struct FfvkAttribute *color;
+  /*
+   Texture coordinates (s, t), or null: textured draws are then refused.
+   */
+  const struct FfvkAttribute *texcoord;
+  /*
+   Frame slots, 1 to `FFVK_MAX_FRAMES_IN_FLIGHT`: how many frames the caller records
+   before it waits for the oldest.
+   */
+  uint32_t frames_in_flight;
+  /*
+   The descriptor set index of ffvk's state block (ffvk uses it and the next two).
+   */
+  uint32_t set_index;
+  /*
+   The caller's pipeline cache, or `VK_NULL_HANDLE` for ffvk's own.
+   */
+  VkPipelineCache pipeline_cache;
+} FfvkRendererCreateInfo;
+
+/*
+ A draw's fixed-function raster state (GL's glCullFace/glFrontFace, depth and blend state,
+ glPointSize, glLineWidth) in Vulkan's terms. `ffvkRasterDefaults` fills GL's initial
+ values; a zeroed struct is not GL's defaults (depth writes off, depth compare NEVER, sizes
+ 0, which draws refuse). `ffvkDraw` refuses (`FFVK_ERROR_INVALID_ARGUMENT`, naming the field
+ and value) any other value than these: `cull_mode` bits of `VK_CULL_MODE_FRONT_AND_BACK`,
+ `front_face` 0 or 1, `depth_compare` `VK_COMPARE_OP_NEVER` .. `ALWAYS` (0 .. 7), and while
+ blending, factors `VK_BLEND_FACTOR_ZERO` .. `SRC_ALPHA_SATURATE` (0 .. 14; no dual-source
+ factors) and equations `VK_BLEND_OP_ADD` .. `MAX` (0 .. 4).
+ */
+typedef struct FfvkRaster {
+  /*
+   `GL_CULL_FACE` with glCullFace: `VK_CULL_MODE_NONE` (GL's default) or a face.
+   */
+  VkCullModeFlags cull_mode;
+  /*
+   glFrontFace: `VK_FRONT_FACE_COUNTER_CLOCKWISE` is GL's `GL_CCW` (the default).
+   */
+  VkFrontFace front_face;
+  /*
+   `GL_DEPTH_TEST` (needs a depth format).
+   */
+  uint8_t depth_test;
+  /*
+   glDepthMask (GL's default: true; only while the depth test is on).
+   */
+  uint8_t depth_write;
+  /*
+   glDepthFunc (GL's default: `VK_COMPARE_OP_LESS`).
+   */
+  VkCompareOp depth_compare;
+  /*
+   `GL_BLEND`; the factors and equations below apply when it is non-zero.
+   */
+  uint8_t blend;
+  /*
+   Source factor for RGB.
+   */
+  VkBlendFactor src_color;
+  /*
+   Destination factor for RGB.
+   */
+  VkBlendFactor dst_color;
+  /*
+   Equation for RGB.
+   */
+  VkBlendOp color_op;
+  /*
+   Source factor for alpha.
+   */
+  VkBlendFactor src_alpha;
+  /*
+   Destination factor for alpha.
+   */
+  VkBlendFactor dst_alpha;
+  /*
+   Equation for alpha.
+   */
+  VkBlendOp alpha_op;
+  /*
+   glPointSize, in pixels (1 by default; another size needs `FFVK_FEATURE_LARGE_POINTS`).
+   */
+  float point_size;
+  /*
+   glLineWidth, in pixels (1 by default; another width needs `FFVK_FEATURE_WIDE_LINES`).
+   */
+  float line_width;
+} FfvkRaster;
+
+/*
+ One draw: `glDrawArrays` (no index buffer) or `glDrawElementsBaseVertex`. Set
+ `struct_size` to `sizeof(FfvkDrawInfo)`.
+ */
+typedef struct FfvkDrawInfo {
+  /*
+   `sizeof(FfvkDrawInfo)`.
+   */
+  uint32_t struct_size;
+  /*
+   `GL_POINTS`, `GL_LINES`, `GL_LINE_STRIP`, `GL_TRIANGLES`, `GL_TRIANGLE_STRIP` or
+   `GL_TRIANGLE_FAN`; `ffvkPrimitiveIndices` turns `GL_LINE_LOOP`, `GL_QUADS`,
+   `GL_QUAD_STRIP` and `GL_POLYGON` into lists of these.
+   */
+  uint32_t mode;
+  /*
+   The vertex buffers, one per binding of the create info, in its order.
+   */
+  const VkBuffer *vertex_buffers;
+  /*
+   Their byte offsets, or null for all 0.
+   */
+  const VkDeviceSize *vertex_offsets;
+  /*
+   How many `vertex_buffers`: the create info's `binding_count`.
+   */
+  uint32_t vertex_buffer_count;
+  /*
+   The index buffer, or `VK_NULL_HANDLE` to draw `count` consecutive vertices.
+   */
+  VkBuffer index_buffer;
+  /*
+   Byte offset of index 0 in `index_buffer`.
+   */
+  VkDeviceSize index_offset;
+  /*
+   `VK_INDEX_TYPE_UINT16` or `VK_INDEX_TYPE_UINT32`.
+   */
+  VkIndexType index_type;
+  /*
+   The first index (indexed) or vertex (glDrawArrays' `first`).
+   */
+  uint32_t first;
+  /*
+   How many indices or vertices.
+   */
+  uint32_t count;
+  /*
+   Added to every index before its vertex is fetched (indexed only).
+   */
+  int32_t vertex_offset;
+  /*
+   Indexed strips and fans: the index of all ones starts a new primitive.
+   */
+  uint8_t primitive_restart;
+  /*
+   The raster state.
+   */
+  struct FfvkRaster raster;
+  /*
+   The texture sampled while `GL_TEXTURE_2D` is enabled, or null.
+   */
+  const struct FfvkTexture *texture;
+} FfvkDrawInfo;
+
+#ifdef __cplusplus
+extern "C" {
+#endif // __cplusplus
+
+/*
+ Creates a context in GL's initial state (table 2.10 and friends): lighting off, every
+ light at its default, identity matrices, `GL_SMOOTH`, no error. Returns null only when
+ memory runs out (see `ffvkResultMessage`). Free it with `ffvkDestroyContext`.
+ */
+struct FfvkContext *ffvkCreateContext(void);
+
+/*
+ Frees a context from `ffvkCreateContext`; null is ignored. A renderer that recorded draws
+ from it no longer needs it once `ffvkEndDraws` returned.
+
+ # Safety
+
+ `ctx` is null or a context from `ffvkCreateContext` not yet destroyed, and no other
+ thread uses it.
+ */
+void ffvkDestroyContext(struct FfvkContext *ctx);
+
+/*
+ glGetError: the first error recorded since the last call (GL's first error sticks; later
+ ones are dropped), then `GL_NO_ERROR` until the next. A null context gives `GL_NO_ERROR`.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+uint32_t ffvkGetError(struct FfvkContext *ctx);
+
+/*
+ glEnable for `GL_LIGHTING`, `GL_LIGHTi` (i < 16), `GL_COLOR_MATERIAL`, `GL_NORMALIZE`,
+ `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`. Sets `GL_INVALID_ENUM` for any other cap (a layer
+ keeps the rest of GL's capabilities itself). Enabling `GL_COLOR_MATERIAL` writes the
+ current color into the tracked material parameters, as GL does.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkEnable(struct FfvkContext *ctx, uint32_t cap_enum);
+
+/*
+ glDisable for the caps of `ffvkEnable`; `GL_INVALID_ENUM` for any other.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkDisable(struct FfvkContext *ctx, uint32_t cap_enum);
+
+/*
+ glIsEnabled for the caps of `ffvkEnable`: `GL_TRUE` or `GL_FALSE`; `GL_INVALID_ENUM`
+ (and `GL_FALSE`) for any other.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+uint8_t ffvkIsEnabled(struct FfvkContext *ctx, uint32_t cap_enum);
+
+/*
+ glLightfv: one parameter of `GL_LIGHTi`. `GL_POSITION` is transformed by the context's
+ modelview (`ffvkLoadModelview`) and `GL_SPOT_DIRECTION` by its upper 3x3 at this call,
+ and stored in eye space, as GL does. Errors: `GL_INVALID_ENUM` for a light past
+ `GL_MAX_LIGHTS` (16) or an unknown `pname`; `GL_INVALID_VALUE` for a spot exponent
+ outside [0, 128], a cutoff outside [0, 90] and not 180, a negative attenuation, a value
+ that is not finite (ffvk's choice where GL leaves it unspecified) or a null `params`.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `params` is null or points
+ at as many values as `pname` has (4, 3 for `GL_SPOT_DIRECTION`, 1).
+ */
+void ffvkLightfv(struct FfvkContext *ctx, uint32_t light, uint32_t pname, const float *params);
+
+/*
+ glLightiv: `ffvkLightfv` with integers; colors map [-2^31, 2^31 - 1] onto [-1, 1]
+ (GL 2.1 table 2.9), other values convert directly.
+
+ # Safety
+
+ As `ffvkLightfv`.
+ */
+void ffvkLightiv(struct FfvkContext *ctx, uint32_t light, uint32_t pname, const int32_t *params);
+
+/*
+ glLightf: the single-valued parameters only (`GL_SPOT_EXPONENT`, `GL_SPOT_CUTOFF`,
+ `GL_*_ATTENUATION`); any other `pname` sets `GL_INVALID_ENUM`. Errors as `ffvkLightfv`.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkLightf(struct FfvkContext *ctx, uint32_t light, uint32_t pname, float param);
+
+/*
+ glLighti: `ffvkLightf` with an integer.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkLighti(struct FfvkContext *ctx, uint32_t light, uint32_t pname, int32_t param);
+
+/*
+ glMaterialfv on `GL_FRONT`, `GL_BACK` or `GL_FRONT_AND_BACK`. While `GL_COLOR_MATERIAL`
+ is enabled the parameters it makes track the current color keep tracking it (GL 2.1
+ section 2.14.3): the call leaves them at the current color and sets the rest.
+ `GL_COLOR_INDEXES` is stored for queries only (color-index lighting is not drawn).
+ Errors: `GL_INVALID_ENUM` for another face or `pname`; `GL_INVALID_VALUE` for a shininess
+ outside [0, 128], a value that is not finite or a null `params`.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `params` is null or points
+ at as many values as `pname` has (4, 3 for `GL_COLOR_INDEXES`, 1 for `GL_SHININESS`).
+ */
+void ffvkMaterialfv(struct FfvkContext *ctx, uint32_t face, uint32_t pname, const float *params);
+
+/*
+ glMaterialiv: `ffvkMaterialfv` with integers (colors as GL 2.1 table 2.9 maps them).
+
+ # Safety
+
+ As `ffvkMaterialfv`.
+ */
+void ffvkMaterialiv(struct FfvkContext *ctx, uint32_t face, uint32_t pname, const int32_t *params);
+
+/*
+ glMaterialf: `GL_SHININESS` only; any other `pname` sets `GL_INVALID_ENUM`.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkMaterialf(struct FfvkContext *ctx, uint32_t face, uint32_t pname, float param);
+
+/*
+ glMateriali: `ffvkMaterialf` with an integer.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkMateriali(struct FfvkContext *ctx, uint32_t face, uint32_t pname, int32_t param);
+
+/*
+ glLightModelfv: `GL_LIGHT_MODEL_AMBIENT` (4 values), `GL_LIGHT_MODEL_LOCAL_VIEWER` and
+ `GL_LIGHT_MODEL_TWO_SIDE` (non-zero is true), `GL_LIGHT_MODEL_COLOR_CONTROL`
+ (`GL_SINGLE_COLOR` or `GL_SEPARATE_SPECULAR_COLOR`). Errors: `GL_INVALID_ENUM` for another
+ `pname` or color control; `GL_INVALID_VALUE` for a value that is not finite or a null
+ `params`.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `params` is null or points
+ at as many values as `pname` has.
+ */
+void ffvkLightModelfv(struct FfvkContext *ctx, uint32_t pname, const float *params);
+
+/*
+ glLightModeliv: `ffvkLightModelfv` with integers.
+
+ # Safety
+
+ As `ffvkLightModelfv`.
+ */
+void ffvkLightModeliv(struct FfvkContext *ctx, uint32_t pname, const int32_t *params);
+
+/*
+ glLightModelf: the single-valued parameters (not `GL_LIGHT_MODEL_AMBIENT`, which sets
+ `GL_INVALID_ENUM` here).
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkLightModelf(struct FfvkContext *ctx, uint32_t pname, float param);
+
+/*
+ glLightModeli: `ffvkLightModelf` with an integer.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkLightModeli(struct FfvkContext *ctx, uint32_t pname, int32_t param);
+
+/*
+ glTexEnvfv on `GL_TEXTURE_ENV`: `GL_TEXTURE_ENV_MODE` (`GL_MODULATE`, `GL_REPLACE`,
+ `GL_DECAL`, `GL_BLEND`, `GL_ADD`) or `GL_TEXTURE_ENV_COLOR` (4 values, clamped to [0, 1]).
+ Errors: `GL_INVALID_ENUM` for another target, `pname` or mode (`GL_COMBINE` included: ffvk
+ does not draw it); `GL_INVALID_VALUE` for a value that is not finite or a null `params`.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `params` is null or points
+ at as many values as `pname` has.
+ */
+void ffvkTexEnvfv(struct FfvkContext *ctx, uint32_t target, uint32_t pname, const float *params);
+
+/*
+ glTexEnviv: `ffvkTexEnvfv` with integers.
+
+ # Safety
+
+ As `ffvkTexEnvfv`.
+ */
+void ffvkTexEnviv(struct FfvkContext *ctx, uint32_t target, uint32_t pname, const int32_t *params);
+
+/*
+ glTexEnvf: `GL_TEXTURE_ENV_MODE` only (`GL_TEXTURE_ENV_COLOR` sets `GL_INVALID_ENUM`).
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkTexEnvf(struct FfvkContext *ctx, uint32_t target, uint32_t pname, float param);
+
+/*
+ glTexEnvi: `ffvkTexEnvf` with an integer.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkTexEnvi(struct FfvkContext *ctx, uint32_t target, uint32_t pname, int32_t param);
+
+/*
+ glColorMaterial: which face(s) and parameter(s) track the current color while
+ `GL_COLOR_MATERIAL` is enabled (and, enabled, writes the current color into them now).
+ Errors: `GL_INVALID_ENUM` for another face or mode.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkColorMaterial(struct FfvkContext *ctx, uint32_t face_enum, uint32_t mode);
+
+/*
+ glColor4f: the current color, the color of every vertex of a draw without a color array,
+ and (with `GL_COLOR_MATERIAL`) of the tracked material parameters. Unclamped, as in GL;
+ `GL_INVALID_VALUE` for a component that is not finite (ffvk's choice).
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkColor4f(struct FfvkContext *ctx, float r, float g, float b, float a);
+
+/*
+ glColor3f: `ffvkColor4f` with alpha 1.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkColor3f(struct FfvkContext *ctx, float r, float g, float b);
+
+/*
+ glColor4ub: each component c becomes c / 255.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkColor4ub(struct FfvkContext *ctx, uint8_t r, uint8_t g, uint8_t b, uint8_t a);
+
+/*
+ glColor3ub: `ffvkColor4ub` with alpha 255.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkColor3ub(struct FfvkContext *ctx, uint8_t r, uint8_t g, uint8_t b);
+
+/*
+ glShadeModel: `GL_FLAT` draws in ffvk's flat mode (each primitive its provoking vertex's
+ color), `GL_SMOOTH` per vertex, or per fragment after `ffvkPerFragmentLighting`. Errors:
+ `GL_INVALID_ENUM` for another mode.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkShadeModel(struct FfvkContext *ctx, uint32_t mode);
+
+/*
+ ffvk's extension: with `GL_SMOOTH`, evaluate the equation per fragment (Phong's
+ interpolation) instead of per vertex. `GL_FLAT` still draws flat. Off initially.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkPerFragmentLighting(struct FfvkContext *ctx, uint8_t enabled);
+
+/*
+ The current modelview matrix (16 floats, column-major, as glLoadMatrixf): the layer sets
+ it whenever its modelview changes. Light positions and spot directions given later are
+ transformed by it, and draws use it. `GL_INVALID_VALUE` (matrix kept) for a null pointer
+ or a component that is not finite.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `m` is null or points at 16
+ floats.
+ */
+void ffvkLoadModelview(struct FfvkContext *ctx, const float *m);
+
+/*
+ The current projection matrix (16 floats, column-major, GL's clip space with z in
+ [-w, w]): draws use it. Errors as `ffvkLoadModelview`.
+
+ # Safety
+
+ As `ffvkLoadModelview`.
+ */
+void ffvkLoadProjection(struct FfvkContext *ctx, const float *m);
+
+/*
+ The current texture matrix (the `GL_TEXTURE` stack's top). Errors as `ffvkLoadModelview`.
+
+ # Safety
+
+ As `ffvkLoadModelview`.
+ */
+void ffvkLoadTextureMatrix(struct FfvkContext *ctx, const float *m);
+
+/*
+ Newell's teapot tessellated at `level` (1 ..= 64 steps per patch side), the mesh ffvk's
+ examples and tests draw: y up (the lid), the spout toward +x and the handle toward −x,
+ centred on the origin within x in [−1, 1], y in [−0.483, 0.483], z in [−0.613, 0.613]
+ (Newell's patches closed by their bottom); counter-clockwise front faces, unit normals,
+ colors in [0, 1]. Errors: `FFVK_ERROR_INVALID_ARGUMENT` for another level or a null
+ `mesh`.
+
+ # Safety
+
+ `mesh` is null or writable.
+ */
+enum FfvkResult ffvkCreateTeapot(uint32_t level, struct FfvkMesh **mesh);
+
+/*
+ The mesh's arrays. Returns `FFVK_ERROR_INVALID_ARGUMENT` for a null pointer.
+
+ # Safety
+
+ `mesh` is null or live; `arrays` is null or writable.
+ */
+enum FfvkResult ffvkGetMeshArrays(const struct FfvkMesh *mesh, struct FfvkMeshArrays *arrays);
+
+/*
+ Frees a mesh; null is ignored.
+
+ # Safety
+
+ `mesh` is null or from `ffvkCreateTeapot`, not yet destroyed.
+ */
+void ffvkDestroyMesh(struct FfvkMesh *mesh);
+
+/*
+ GL's modes that Vulkan lacks, as indices of a mode it has, keeping GL's winding and
+ provoking vertex: `GL_QUADS`, `GL_QUAD_STRIP` and `GL_POLYGON` become `GL_TRIANGLES`,
+ `GL_LINE_LOOP` becomes `GL_LINES`; the other modes are copied unchanged. `vertices` are
+ the `count` vertex numbers GL would read (`first + i` for glDrawArrays, the index array for
+ glDrawElements). Writes at most `capacity` indices to `out` (null to ask the size) and the
+ needed count to `*written`, and the mode to draw them with to `*draw_mode`. A size query
+ (null `out`) reads nothing from `vertices`; nothing is allocated, whatever the count.
+ Errors: `FFVK_ERROR_INVALID_ARGUMENT` for an unknown mode, a null `vertices` (with a
+ count), a null `written` or `draw_mode`, a count whose indices would number more than a
+ `uint32_t` holds (e.g. `GL_POLYGON` of more than 1431655767 vertices; nothing written
+ then), or a `capacity` below the needed count (nothing written to `out` then).
+
+ # Safety
+
+ `vertices` points at `count` values (unless `out` is null); `out` is null or has room for
+ `capacity`.
+ */
+enum FfvkResult ffvkPrimitiveIndices(uint32_t mode,
+                                     const uint32_t *vertices,
+                                     uint32_t count,
+                                     uint32_t *out,
+                                     uint32_t capacity,
+                                     uint32_t *written,
+                                     uint32_t *draw_mode);
+
+/*
+ glGetLightfv: a light's parameter as stored: positions and spot directions in eye
+ space. Errors: `GL_INVALID_ENUM` for a light past `GL_MAX_LIGHTS` or an unknown
+ `pname`; `GL_INVALID_VALUE` for a null `params`.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `params` is null or has room
+ for as many values as the name has (16 for a matrix). Nothing is written when an error is
+ set.
+ */
+void ffvkGetLightfv(struct FfvkContext *ctx, uint32_t light, uint32_t pname, float *params);
+
+/*
+ glGetLightiv: `ffvkGetLightfv` as integers (colors by GL's linear mapping, the rest
+ rounded).
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `params` is null or has room
+ for as many values as the name has (16 for a matrix). Nothing is written when an error is
+ set.
+ */
+void ffvkGetLightiv(struct FfvkContext *ctx, uint32_t light, uint32_t pname, int32_t *params);
+
+/*
+ glGetMaterialfv for `GL_FRONT` or `GL_BACK` (`GL_FRONT_AND_BACK` sets
+ `GL_INVALID_ENUM`, as in GL). Errors: `GL_INVALID_ENUM` for another face or `pname`
+ (`GL_AMBIENT_AND_DIFFUSE` is not a query); `GL_INVALID_VALUE` for a null `params`.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `params` is null or has room
+ for as many values as the name has (16 for a matrix). Nothing is written when an error is
+ set.
+ */
+void ffvkGetMaterialfv(struct FfvkContext *ctx, uint32_t face, uint32_t pname, float *params);
+
+/*
+ glGetMaterialiv: `ffvkGetMaterialfv` as integers.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `params` is null or has room
+ for as many values as the name has (16 for a matrix). Nothing is written when an error is
+ set.
+ */
+void ffvkGetMaterialiv(struct FfvkContext *ctx, uint32_t face, uint32_t pname, int32_t *params);
+
+/*
+ glGetTexEnvfv on `GL_TEXTURE_ENV`: `GL_TEXTURE_ENV_MODE` or `GL_TEXTURE_ENV_COLOR`.
+ Errors: `GL_INVALID_ENUM` for another target or `pname`.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `params` is null or has room
+ for as many values as the name has (16 for a matrix). Nothing is written when an error is
+ set.
+ */
+void ffvkGetTexEnvfv(struct FfvkContext *ctx, uint32_t target, uint32_t pname, float *params);
+
+/*
+ glGetTexEnviv: `ffvkGetTexEnvfv` as integers.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `params` is null or has room
+ for as many values as the name has (16 for a matrix). Nothing is written when an error is
+ set.
+ */
+void ffvkGetTexEnviv(struct FfvkContext *ctx, uint32_t target, uint32_t pname, int32_t *params);
+
+/*
+ glGetFloatv for the lighting state's names: `GL_LIGHTING`, `GL_LIGHTi`,
+ `GL_COLOR_MATERIAL`, `GL_COLOR_MATERIAL_FACE`, `GL_COLOR_MATERIAL_PARAMETER`,
+ `GL_NORMALIZE`, `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_LIGHT_MODEL_AMBIENT`,
+ `GL_LIGHT_MODEL_LOCAL_VIEWER`, `GL_LIGHT_MODEL_TWO_SIDE`, `GL_LIGHT_MODEL_COLOR_CONTROL`,
+ `GL_SHADE_MODEL`, `GL_CURRENT_COLOR`, `GL_MAX_LIGHTS` (16) and the modelview,
+ projection and texture matrices. Errors: `GL_INVALID_ENUM` for any other name (a layer
+ answers the rest of GL's state itself); `GL_INVALID_VALUE` for a null `params`.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `params` is null or has room
+ for as many values as the name has (16 for a matrix). Nothing is written when an error is
+ set.
+ */
+void ffvkGetFloatv(struct FfvkContext *ctx, uint32_t pname, float *params);
+
+/*
+ glGetIntegerv: `ffvkGetFloatv`'s names as integers.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `params` is null or has room
+ for as many values as the name has (16 for a matrix). Nothing is written when an error is
+ set.
+ */
+void ffvkGetIntegerv(struct FfvkContext *ctx, uint32_t pname, int32_t *params);
+
+/*
+ glGetBooleanv: `ffvkGetFloatv`'s names as `GL_TRUE` (non-zero) or `GL_FALSE`.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `params` is null or has room
+ for as many values as the name has (16 for a matrix). Nothing is written when an error is
+ set.
+ */
+void ffvkGetBooleanv(struct FfvkContext *ctx, uint32_t pname, uint8_t *params);
+
+/*
+ Makes a renderer on the caller's device: checks every value of `info` before Vulkan is
+ touched, then the device (Vulkan 1.3, dynamic rendering, the features `enabled_features`
+ claims, the formats' features and sample counts, vertex limits), and makes the pipeline
+ layout; pipelines are made on the first draw that needs each (about 15 ms on lavapipe).
+ Returns `FFVK_SUCCESS` with `*renderer` set, or an error code with `*renderer` null:
+ `FFVK_ERROR_INVALID_ARGUMENT` (a null pointer or handle, a wrong `struct_size`, 0 or more
+ than `FFVK_MAX_FRAMES_IN_FLIGHT` frames, more than `FFVK_MAX_VERTEX_BINDINGS` bindings,
+ unknown feature bits, a format, sample count or vertex layout that is invalid or that the
+ device does not support; the message names the field, its value and what was expected),
+ `FFVK_ERROR_MISSING_FEATURE`, `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN`. Records
+ nothing.
+
+ # Safety
+
+ `info` and `renderer` are null or valid; the handles in `info` are live, `device` was
+ created from `physical_device` of `instance` with the features `enabled_features` names,
+ and all of them outlive the renderer.
+ */
+enum FfvkResult ffvkCreateRenderer(const struct FfvkRendererCreateInfo *info,
+                                   struct FfvkRenderer **renderer);
+
+/*
+ Frees the renderer and everything it created; null is ignored. Records nothing. The
+ caller first makes sure no submitted command buffer still uses it (waits on its fences).
+
+ # Safety
+
+ `renderer` is null or a renderer from `ffvkCreateRenderer` not yet destroyed, whose
+ device is still alive.
+ */
+void ffvkDestroyRenderer(struct FfvkRenderer *renderer);
+
+/*
+ Starts a frame slot (0 .. frames_in_flight - 1): its memory will be rewritten by the draws
+ recorded next. Call it once the fence of the submission that last used this slot has
+ signalled. Records nothing.
+
+ # Safety
+
+ `renderer` is null or live and used by one thread at a time.
+ */
+enum FfvkResult ffvkBeginFrame(struct FfvkRenderer *renderer, uint32_t slot);
+
+/*
+ Opens a recording scope on `cmd` for frame slot `slot`, which `ffvkBeginFrame` has begun
+ (several scopes may follow one `ffvkBeginFrame`; their draws share the slot's memory).
+ `cmd` is in the recording state inside the caller's `vkCmdBeginRendering` on attachments of
+ the create info's formats, with viewport and scissor set (both dynamic state). Between this
+ call and `ffvkEndDraws` the caller records nothing of its own into `cmd`; between scopes it
+ may (viewports, scissors, clears, barriers, rendering passes), and after binding anything of
+ its own (a pipeline, descriptor sets, vertex or index buffers) or resetting `cmd` it calls
+ `ffvkForgetBindings` before the next scope. Records nothing itself.
+
+ # Safety
+
+ `renderer` is null or live and used by one thread at a time; `cmd` is a command buffer of
+ the renderer's device.
+ */
+enum FfvkResult ffvkBeginDraws(struct FfvkRenderer *renderer, VkCommandBuffer cmd, uint32_t slot);
+
+/*
+ Adds a draw to the open scope: the context's state now (lights, materials, switches, its
+ modelview and projection) is captured, so the caller may change the context right after.
+ The draw is checked and its state written into the slot's memory now (its pipeline is made
+ now if it is new: about 15 ms on lavapipe); `ffvkEndDraws` records it. A refused draw is
+ not added and the scope stays open with the draws before it. Errors:
+ `FFVK_ERROR_INVALID_ARGUMENT` (no open scope, a null pointer, a wrong `struct_size`, a mode
+ ffvk does not draw directly, a buffer count other than the layout's bindings, a raster
+ enum that is not one ffvk passes to Vulkan (see `FfvkRaster`), blending into a color
+ format the device cannot blend, a point size or line width out of the device's range, a
+ textured draw without texture coordinates),
+ `FFVK_ERROR_STATE` (the context's state cannot be drawn: a soft spot cone wider than its
+ cutoff, a modelview that cannot be inverted while lighting), `FFVK_ERROR_MISSING_FEATURE`
+ (`GL_FLAT`, a point size or a line width the create info's `enabled_features` did not
+ declare), `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN` (making the pipeline).
+
+ # Safety
+
+ `renderer` and `ctx` are null or live and used by this thread only; `draw` is null or
+ valid, its buffers are the caller's live buffers of the renderer's device, and its texture
+ is null or live until `ffvkEndDraws` returns.
+ */
+enum FfvkResult ffvkDraw(struct FfvkRenderer *renderer,
+                         const struct FfvkContext *ctx,
+                         const struct FfvkDrawInfo *draw);
+
+/*
+ Closes the scope: records every draw `ffvkDraw` added since `ffvkBeginDraws` into its
+ command buffer as one run (binding only what changes between draws; consecutive draws of
+ one geometry become instances). Records: bind pipeline, bind ffvk's descriptor sets at
+ their dynamic offsets, bind the caller's vertex and index buffers and ffvk's record
+ buffer, draw, each bind only where it differs from what ffvk last bound in the same command
+ buffer (since `ffvkBeginFrame` or `ffvkForgetBindings`): a scope per draw, as a GL layer
+ records `glDrawElements` by `glDrawElements`, rebinds nothing that did not change. They
+ stay bound afterwards. A scope without draws records nothing. Errors:
+ `FFVK_ERROR_INVALID_ARGUMENT` when no scope is open; the draws were checked when added.
+
+ # Safety
+
+ `renderer` is null or live and used by one thread at a time; the scope's command buffer is
+ recording as `ffvkBeginDraws` requires; the draws' buffers and textures are live and stay
+ so until the command buffer has executed.
+ */
+enum FfvkResult ffvkEndDraws(struct FfvkRenderer *renderer);
+
+/*
+ Forgets what ffvk bound: the next scope binds everything its draws need. Call it after
+ recording commands of your own that bind a pipeline, descriptor sets, vertex buffers or an
+ index buffer into a command buffer ffvk draws into, or after resetting such a command
+ buffer (`ffvkBeginFrame` forgets too). Records nothing. Errors:
+ `FFVK_ERROR_INVALID_ARGUMENT` for a null renderer or while a scope is open.
+
+ # Safety
+
+ `renderer` is null or live and used by one thread at a time.
+ */
+enum FfvkResult ffvkForgetBindings(struct FfvkRenderer *renderer);
+
+/*
+ Makes a texture binding naming the caller's image view (2D, color, sampled as floats, in
+ `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` whenever a draw that uses it executes) and
+ sampler. ffvk owns the descriptor set; the view and sampler stay the caller's. Records
+ nothing. Returns `FFVK_SUCCESS` with `*texture` set, or an error code with `*texture` null
+ (`FFVK_ERROR_INVALID_ARGUMENT` for a null pointer or handle).
+
+ # Safety
+
+ `renderer` is null or live; `view` and `sampler` are live objects of its device and outlive
+ every command buffer that draws with the texture; `texture` is null or writable.
+ */
+enum FfvkResult ffvkCreateTexture(struct FfvkRenderer *renderer,
+                                  VkImageView view,
+                                  VkSampler sampler,
+                                  struct FfvkTexture **texture);
+
+/*
+ Frees a texture binding; null is ignored. The caller first makes sure no submitted command
+ buffer still uses it.
+
+ # Safety
+
+ `texture` is null or from `ffvkCreateTexture`, not yet destroyed.
+ */
+void ffvkDestroyTexture(struct FfvkTexture *texture);
+
+/*
+ Fills `raster` with GL's initial raster state: no culling, `GL_CCW` front faces, depth
+ test off with writes on and `GL_LESS`, blending off (factors ONE, ZERO, ADD), point size
+ and line width 1.
+
+ # Safety
+
+ `raster` is null (ignored) or writable.
+ */
+void ffvkRasterDefaults(struct FfvkRaster *raster);
+
+/*
+ The message of the last call on this thread that returned an error code (or set a GL error
+ through a context): what failed, the value, what was expected. Never null; "" before any
+ failure. The string is ffvk's, valid until the next ffvk call on this thread.
+ */
+const char *ffvkResultMessage(void);
+
+#ifdef __cplusplus
+}  // extern "C"
+#endif  // __cplusplus
+
+#endif  /* FFVK_H */
