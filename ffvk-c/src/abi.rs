@@ -4,7 +4,8 @@
 //!
 //! - A struct the API reads from the caller and that may grow starts with `uint32_t
 //!   struct_size`, which the caller sets to `sizeof` of the struct as its `ffvk.h` declared it.
-//!   Today these are `FfvkRendererCreateInfo` and `FfvkDrawInfo`.
+//!   Today these are `FfvkRendererCreateInfo`, `FfvkDrawInfo` (version 2 added `layout`) and
+//!   `FfvkVertexLayoutInfo`.
 //! - Such a struct grows only at its end: a new version of the header appends fields and never
 //!   removes, reorders or retypes one. Each published header that changed a struct's size is a
 //!   version of that struct, numbered from 1 (the first header: every struct is at version 1).
@@ -33,6 +34,7 @@ use std::mem::{offset_of, size_of, MaybeUninit};
 
 use ffvk::ash::vk;
 
+use crate::layout::FfvkVertexLayoutInfo;
 use crate::render::{FfvkAttribute, FfvkDrawInfo, FfvkRaster, FfvkRendererCreateInfo, FfvkTexture};
 use crate::result::{fail, FfvkResult};
 use crate::vk_types::*;
@@ -202,10 +204,17 @@ impl Versioned for FfvkRendererCreateInfo {
 
 impl Versioned for FfvkDrawInfo {
     const NAME: &'static str = "FfvkDrawInfo";
-    const VERSIONS: &'static [Version] = &[Version {
-        size: size_of::<DrawInfoV1>(),
-        first_field: 0,
-    }];
+    const VERSIONS: &'static [Version] = &[
+        Version {
+            size: size_of::<DrawInfoV1>(),
+            first_field: 0,
+        },
+        // Version 2: the draw's vertex layout.
+        Version {
+            size: size_of::<FfvkDrawInfo>(),
+            first_field: offset_of!(FfvkDrawInfo, layout),
+        },
+    ];
     fn defaults() -> Self {
         FfvkDrawInfo {
             struct_size: size_of::<FfvkDrawInfo>() as u32,
@@ -222,6 +231,33 @@ impl Versioned for FfvkDrawInfo {
             primitive_restart: 0,
             raster: crate::render::raster_defaults(),
             texture: std::ptr::null(),
+            layout: std::ptr::null(),
+        }
+    }
+}
+
+impl Versioned for FfvkVertexLayoutInfo {
+    const NAME: &'static str = "FfvkVertexLayoutInfo";
+    const VERSIONS: &'static [Version] = &[Version {
+        size: size_of::<FfvkVertexLayoutInfo>(),
+        first_field: 0,
+    }];
+    fn defaults() -> Self {
+        let none = FfvkAttribute {
+            binding: 0,
+            offset: 0,
+            format: vk::Format::UNDEFINED,
+        };
+        FfvkVertexLayoutInfo {
+            struct_size: size_of::<FfvkVertexLayoutInfo>() as u32,
+            bindings: std::ptr::null(),
+            binding_count: 0,
+            position: none,
+            normal: std::ptr::null(),
+            color: std::ptr::null(),
+            texcoord: std::ptr::null(),
+            materials: std::ptr::null(),
+            material_count: 0,
         }
     }
 }
@@ -229,8 +265,10 @@ impl Versioned for FfvkDrawInfo {
 const _: () = {
     assert!(offset_of!(FfvkRendererCreateInfo, struct_size) == 0);
     assert!(offset_of!(FfvkDrawInfo, struct_size) == 0);
+    assert!(offset_of!(FfvkVertexLayoutInfo, struct_size) == 0);
     check_versions::<FfvkRendererCreateInfo>();
     check_versions::<FfvkDrawInfo>();
+    check_versions::<FfvkVertexLayoutInfo>();
 };
 
 /// The published versions of the struct named `name` (`"FfvkRendererCreateInfo"`,
@@ -240,6 +278,7 @@ pub fn versions(name: &str) -> Option<&'static [Version]> {
     match name {
         FfvkRendererCreateInfo::NAME => Some(FfvkRendererCreateInfo::VERSIONS),
         FfvkDrawInfo::NAME => Some(FfvkDrawInfo::VERSIONS),
+        FfvkVertexLayoutInfo::NAME => Some(FfvkVertexLayoutInfo::VERSIONS),
         _ => None,
     }
 }
@@ -307,14 +346,31 @@ mod tests {
     use super::*;
 
     #[test]
-    fn every_struct_with_a_struct_size_is_at_version_1_with_its_size_today() {
+    fn every_struct_with_a_struct_size_has_its_published_versions_the_last_its_size_today() {
         for (name, size) in [
             ("FfvkRendererCreateInfo", size_of::<FfvkRendererCreateInfo>()),
-            ("FfvkDrawInfo", size_of::<FfvkDrawInfo>()),
+            ("FfvkVertexLayoutInfo", size_of::<FfvkVertexLayoutInfo>()),
         ] {
             let versions = versions(name).expect("a versioned struct");
             assert_eq!(versions, [Version { size, first_field: 0 }], "{name}");
         }
+        // FfvkDrawInfo: version 1 (ffvk-c 0.1's first header) and version 2, which appended
+        // the layout.
+        let draw = versions("FfvkDrawInfo").expect("a versioned struct");
+        assert_eq!(
+            draw,
+            [
+                Version {
+                    size: size_of::<DrawInfoV1>(),
+                    first_field: 0
+                },
+                Version {
+                    size: size_of::<FfvkDrawInfo>(),
+                    first_field: offset_of!(FfvkDrawInfo, layout)
+                }
+            ]
+        );
+        assert_eq!(offset_of!(FfvkDrawInfo, layout), size_of::<DrawInfoV1>());
         assert_eq!(versions("FfvkRaster"), None);
     }
 

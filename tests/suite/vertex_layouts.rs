@@ -42,7 +42,10 @@ fn assert_matches_gl(ffvk: &image::RgbaImage, gl: &image::RgbaImage, name: &str)
     // Kept for a look (tests/output), passing or not.
     save_for_inspection(ffvk, &format!("{name}_ffvk"));
     save_for_inspection(gl, &format!("{name}_mesa"));
-    assert!(d <= 1, "{name}: ffvk and Mesa's GL differ by {d}/255 (images in tests/output)");
+    assert!(
+        d <= 1,
+        "{name}: ffvk and Mesa's GL differ by {d}/255 (images in tests/output)"
+    );
 }
 
 /// Lighting with one white light (GL_LIGHT0's defaults: directional, toward +z), every
