@@ -275,6 +275,7 @@ pub(crate) fn draw_info(buffer: &vk::Buffer, raster: FfvkRaster) -> FfvkDrawInfo
         primitive_restart: 0,
         raster,
         texture: std::ptr::null(),
+        layout: std::ptr::null(),
     }
 }
 
