@@ -557,7 +557,8 @@ typedef struct FfvkRendererCreateInfo {
    */
   const struct FfvkAttribute *color;
   /*
-   Texture coordinates (s, t), or null: textured draws are then refused.
+   Texture coordinates (`glTexCoordPointer`), or null: every vertex of a textured draw takes
+   the context's current texture coordinates (`ffvkTexCoord4f`).
    */
   const struct FfvkAttribute *texcoord;
   /*

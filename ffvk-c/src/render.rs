@@ -117,7 +117,8 @@ pub struct FfvkRendererCreateInfo {
     /// Per-vertex color (`glColorPointer`), or null: every vertex takes the context's current
     /// color (`ffvkColor4f`).
     pub color: *const FfvkAttribute,
-    /// Texture coordinates (s, t), or null: textured draws are then refused.
+    /// Texture coordinates (`glTexCoordPointer`), or null: every vertex of a textured draw takes
+    /// the context's current texture coordinates (`ffvkTexCoord4f`).
     pub texcoord: *const FfvkAttribute,
     /// Frame slots, 1 to `FFVK_MAX_FRAMES_IN_FLIGHT`: how many frames the caller records
     /// before it waits for the oldest.

@@ -68,7 +68,7 @@ pub(crate) fn build_library(profile: &Path) {
 
 /// `make -C ffvk-c/examples` against the library in `profile`; returns the program. The
 /// binary goes next to the library, not into the source tree.
-fn build_example(profile: &Path) -> PathBuf {
+pub(crate) fn build_example(profile: &Path) -> PathBuf {
     let build_dir = profile.join("ffvk-c-examples");
     let output = Command::new("make")
         .arg("-C")
@@ -86,7 +86,7 @@ fn build_example(profile: &Path) -> PathBuf {
 }
 
 /// The RGB bytes of a binary PPM of `size`² pixels.
-fn read_ppm(path: &Path, size: u32) -> Vec<u8> {
+pub(crate) fn read_ppm(path: &Path, size: u32) -> Vec<u8> {
     let bytes = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let header = format!("P6\n{size} {size}\n255\n");
     assert!(
