@@ -526,3 +526,70 @@ fn forgetting_bindings_inside_an_open_scope_is_refused_naming_ffvk_end_draws() {
     let null = unsafe { ffvkForgetBindings(std::ptr::null_mut()) };
     assert_eq!(null, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
 }
+
+#[test]
+fn ffvk_draw_refuses_a_struct_size_between_versions_or_past_the_newest_naming_the_sizes_accepted() {
+    in_draw_scope(|r, ctx| {
+        let buffer = vk::Buffer::from_raw(PLACEHOLDER);
+        let v1 = std::mem::size_of::<FfvkDrawInfo>() as u32;
+        let accepted =
+            format!("expected sizeof(FfvkDrawInfo) as a published ffvk.h declares it, {v1} (version 1)");
+        for (size, why) in [
+            (0, "smaller than version 1"),
+            (v1 - 8, "smaller than version 1"),
+            (
+                v1 + 4,
+                "larger than any version this library (ffvk-c 0.1.0) knows",
+            ),
+            (v1 + 64, "larger than any version this library (ffvk-c 0.1.0) knows, so the program was built against a newer ffvk.h"),
+        ] {
+            let mut draw = draw_info(&buffer, defaults());
+            draw.struct_size = size;
+            let given = format!("FfvkDrawInfo.struct_size is {size}: {why}");
+            assert_draw_refused(r, ctx, &draw, &given, &accepted);
+        }
+        // Version 1's size is drawn.
+        assert_drawn(r, ctx, &draw_info(&buffer, defaults()));
+    });
+}
+
+#[test]
+fn ffvk_draw_names_a_gl_mode_it_does_not_draw_directly_by_its_gl_name() {
+    in_draw_scope(|r, ctx| {
+        let buffer = vk::Buffer::from_raw(PLACEHOLDER);
+        for (mode, name) in [
+            (0x0002, "GL_LINE_LOOP"),
+            (0x0008, "GL_QUAD_STRIP"),
+            (0x0009, "GL_POLYGON"),
+        ] {
+            let draw = FfvkDrawInfo {
+                mode,
+                ..draw_info(&buffer, defaults())
+            };
+            let given = format!("mode {name} (0x{mode:04X}) is drawn as a list");
+            assert_draw_refused(r, ctx, &draw, &given, "ffvkPrimitiveIndicesRange");
+        }
+        let draw = FfvkDrawInfo {
+            mode: 0x0B71,
+            ..draw_info(&buffer, defaults())
+        };
+        assert_draw_refused(
+            r,
+            ctx,
+            &draw,
+            "mode GL_DEPTH_TEST (0x0B71) is not a GL primitive",
+            "expected GL_POINTS",
+        );
+        let draw = FfvkDrawInfo {
+            mode: 0x000A,
+            ..draw_info(&buffer, defaults())
+        };
+        assert_draw_refused(
+            r,
+            ctx,
+            &draw,
+            "mode 0x000A is not a GL primitive",
+            "expected GL_POINTS",
+        );
+    });
+}
