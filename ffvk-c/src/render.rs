@@ -20,6 +20,7 @@ use ffvk::{
 };
 
 mod raster;
+mod versions;
 
 use raster::raster;
 pub(crate) use raster::raster_defaults;

@@ -15,6 +15,8 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use ffvk_c::abi::Versioned;
+use ffvk_c::render::{FfvkDrawInfo, FfvkRendererCreateInfo};
 use ffvk_cli::gl_reference::{raw, with_raw_gl};
 
 use crate::c_api_example::{build_library, printed, profile_dir, workspace, LAVAPIPE_ICD};
@@ -446,8 +448,14 @@ fn a_program_built_against_version_1_of_the_header_draws_through_todays_library_
     let (printed_sizes, rgb) = run_program(&program, &scene, "abi_v1");
     assert_gl_pixels(&scene, &gl, &rgb, "abi_v1");
     // The sizes the old header declares are version 1's in the library's table.
-    for name in ["FfvkRendererCreateInfo", "FfvkDrawInfo"] {
-        let v1 = ffvk_c::abi::versions(name).expect("a versioned struct")[0].size;
+    for (name, versions) in [
+        (
+            "FfvkRendererCreateInfo",
+            <FfvkRendererCreateInfo as Versioned>::VERSIONS,
+        ),
+        ("FfvkDrawInfo", <FfvkDrawInfo as Versioned>::VERSIONS),
+    ] {
+        let v1 = versions[0].size;
         let line = format!("sizeof({name}) {v1}");
         assert!(
             printed_sizes.lines().any(|l| l == line),
