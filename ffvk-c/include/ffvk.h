@@ -1322,7 +1322,8 @@ void ffvkRasterDefaults(struct FfvkRaster *raster);
 /*
  The message of the last call on this thread that returned an error code (or set a GL error
  through a context): what failed, the value, what was expected. Never null; "" before any
- failure. The string is ffvk's, valid until the next ffvk call on this thread.
+ failure. `ffvkDeviceRequirements` sets it when it succeeds too: what the device lacks, or
+ "". The string is ffvk's, valid until the next ffvk call on this thread.
  */
 const char *ffvkResultMessage(void);
 
