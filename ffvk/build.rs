@@ -28,7 +28,8 @@ struct Variant {
 
 /// `INTERP`: the interpolation qualifier of the per-vertex colors. `ONE_COLOR`: only the front
 /// primary color passes between the stages (specialized one-sided, single-color states).
-/// Each is also compiled with `CURRENT_COLOR` (see [`CURRENT_COLOR`]).
+/// A layout without a color (normal, texture coordinate) array needs no variant of its own: the
+/// pipeline's vertex input reads GL's current value from the draw record at that location.
 const VARIANTS: &[Variant] = &[
     Variant {
         name: "vertex",
@@ -95,11 +96,6 @@ const VARIANTS: &[Variant] = &[
     },
 ];
 
-/// The second build of every variant, named `<variant>_current_color`: for meshes without a
-/// color array, it reads GL's current color from the draw record (location 19) instead of
-/// location 2.
-const CURRENT_COLOR: (&str, &str) = ("CURRENT_COLOR", "1");
-
 /// The textured build of each of those, named `<…>_textured`: texture coordinates at
 /// location 3, the texture environment before the color sum (`glsl/texture.glsl`).
 /// Untextured draws keep the variants without it, unchanged.
@@ -120,30 +116,20 @@ fn main() {
     let mut table = String::new();
     let mut errors = Vec::new();
     let builds = VARIANTS.iter().flat_map(|v| {
-        let mut with_current = v.defines.to_vec();
-        with_current.push(CURRENT_COLOR);
+        let mut textured = v.defines.to_vec();
+        textured.push(TEXTURE);
         [
-            (v.name.to_string(), v.doc.to_string(), v.defines.to_vec()),
+            (v, v.name.to_string(), v.doc.to_string(), v.defines.to_vec()),
             (
-                format!("{}_current_color", v.name),
-                format!("{} No color array: GL's current color.", v.doc),
-                with_current,
+                v,
+                format!("{}_textured", v.name),
+                format!(
+                    "{} Textured: the texture environment before the color sum.",
+                    v.doc
+                ),
+                textured,
             ),
         ]
-        .into_iter()
-        .flat_map(|(name, doc, defines)| {
-            let mut textured = defines.clone();
-            textured.push(TEXTURE);
-            [
-                (name.clone(), doc.clone(), defines),
-                (
-                    format!("{name}_textured"),
-                    format!("{doc} Textured: the texture environment before the color sum."),
-                    textured,
-                ),
-            ]
-        })
-        .map(move |(name, doc, defines)| (v, name, doc, defines))
     });
     for (variant, name, doc, defines) in builds {
         let mut stages = Vec::new();

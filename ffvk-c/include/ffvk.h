@@ -48,6 +48,12 @@
 #ifndef GL_CURRENT_COLOR
 #define GL_CURRENT_COLOR 0x0B00
 #endif
+#ifndef GL_CURRENT_NORMAL
+#define GL_CURRENT_NORMAL 0x0B02
+#endif
+#ifndef GL_CURRENT_TEXTURE_COORDS
+#define GL_CURRENT_TEXTURE_COORDS 0x0B03
+#endif
 #ifndef GL_LIGHTING
 #define GL_LIGHTING 0x0B50
 #endif
@@ -337,6 +343,108 @@ typedef struct FfvkRenderer FfvkRenderer;
 typedef struct FfvkTexture FfvkTexture;
 
 /*
+ A vertex layout of one renderer (`ffvkCreateVertexLayout`), named by `FfvkDrawInfo::layout`.
+ */
+typedef struct FfvkVertexLayout FfvkVertexLayout;
+
+/*
+ Where one vertex attribute lives: a binding of the create info's `bindings`, the byte
+ offset within one element, the format (any the shaders read as floats, e.g.
+ `VK_FORMAT_R32G32B32_SFLOAT`, `VK_FORMAT_R8G8B8A8_UNORM`, that the device reads from
+ vertex buffers). The attribute lies within one element: offset + the format's size <= the
+ binding's stride.
+
+ It never changes (it has no `struct_size`).
+ */
+typedef struct FfvkAttribute {
+  /*
+   The vertex buffer binding it is read from.
+   */
+  uint32_t binding;
+  /*
+   Byte offset within one element of that binding.
+   */
+  uint32_t offset;
+  /*
+   The attribute's format.
+   */
+  VkFormat format;
+} FfvkAttribute;
+
+/*
+ One material parameter given per vertex (Mesa's material attributes: `glMaterial` between
+ `glBegin` and `glEnd`): `face` `GL_FRONT`, `GL_BACK` or `GL_FRONT_AND_BACK`; `pname`
+ `GL_AMBIENT`, `GL_DIFFUSE`, `GL_SPECULAR`, `GL_EMISSION` (RGBA,
+ `VK_FORMAT_R32G32B32A32_SFLOAT`) or `GL_SHININESS` (`VK_FORMAT_R32_SFLOAT`).
+ */
+typedef struct FfvkMaterialAttribute {
+  /*
+   `GL_FRONT`, `GL_BACK` or `GL_FRONT_AND_BACK`.
+   */
+  uint32_t face;
+  /*
+   `GL_AMBIENT`, `GL_DIFFUSE`, `GL_SPECULAR`, `GL_EMISSION` or `GL_SHININESS`.
+   */
+  uint32_t pname;
+  /*
+   Where it lives in the layout's bindings.
+   */
+  struct FfvkAttribute attribute;
+} FfvkMaterialAttribute;
+
+/*
+ What `ffvkCreateVertexLayout` takes: a layout of GL's arrays. Set `struct_size` to
+ `sizeof(FfvkVertexLayoutInfo)` (the struct grows as `FfvkDrawInfo` does: later versions
+ append fields and read only what the caller's size covers). Formats are GL's: positions 2
+ to 4 floats or `GL_SHORT`s (`R16G16_SSCALED`..), normals 3 floats or `GL_BYTE`s or
+ `GL_SHORT`s (`R8G8B8_SNORM`, `R16G16B16_SNORM`, or their four-component forms with padding),
+ colors 3 or 4 floats, signed or unsigned bytes or shorts, or `B8G8R8A8_UNORM`
+ (`GL_BGRA`), texture coordinates 1 to 4 floats or shorts. Signed normalized normals and
+ colors convert as GL 2.1 says, (2c + 1)/(2^b − 1), not as Vulkan's SNORM.
+ */
+typedef struct FfvkVertexLayoutInfo {
+  /*
+   `sizeof(FfvkVertexLayoutInfo)`.
+   */
+  uint32_t struct_size;
+  /*
+   The vertex buffer bindings (per-vertex rate), in the order draws pass their buffers.
+   */
+  const VkVertexInputBindingDescription *bindings;
+  /*
+   How many `bindings`, at most `FFVK_MAX_VERTEX_BINDINGS`.
+   */
+  uint32_t binding_count;
+  /*
+   Object-space position (`glVertexPointer`).
+   */
+  struct FfvkAttribute position;
+  /*
+   Normals (`glNormalPointer`), or null: every vertex takes the context's current normal
+   (`ffvkNormal3f`).
+   */
+  const struct FfvkAttribute *normal;
+  /*
+   Colors (`glColorPointer`), or null: the context's current color (`ffvkColor4f`).
+   */
+  const struct FfvkAttribute *color;
+  /*
+   Texture coordinates (`glTexCoordPointer`), or null: the context's current ones
+   (`ffvkTexCoord4f`).
+   */
+  const struct FfvkAttribute *texcoord;
+  /*
+   Material parameters given per vertex, or null with `material_count` 0. Drawn in the
+   vertex and flat modes; a draw lit per fragment with such a layout is refused.
+   */
+  const struct FfvkMaterialAttribute *materials;
+  /*
+   How many `materials` (at most 10: five parameters, two faces).
+   */
+  uint32_t material_count;
+} FfvkVertexLayoutInfo;
+
+/*
  A view of an `FfvkMesh`'s arrays, valid until `ffvkDestroyMesh`. It never changes (it has
  no `struct_size`).
  */
@@ -366,30 +474,6 @@ typedef struct FfvkMeshArrays {
    */
   const uint32_t *indices;
 } FfvkMeshArrays;
-
-/*
- Where one vertex attribute lives: a binding of the create info's `bindings`, the byte
- offset within one element, the format (any the shaders read as floats, e.g.
- `VK_FORMAT_R32G32B32_SFLOAT`, `VK_FORMAT_R8G8B8A8_UNORM`, that the device reads from
- vertex buffers). The attribute lies within one element: offset + the format's size <= the
- binding's stride.
-
- It never changes (it has no `struct_size`).
- */
-typedef struct FfvkAttribute {
-  /*
-   The vertex buffer binding it is read from.
-   */
-  uint32_t binding;
-  /*
-   Byte offset within one element of that binding.
-   */
-  uint32_t offset;
-  /*
-   The attribute's format.
-   */
-  VkFormat format;
-} FfvkAttribute;
 
 /*
  What `ffvkCreateRenderer` takes. Set `struct_size` to `sizeof(FfvkRendererCreateInfo)`.
@@ -568,8 +652,8 @@ typedef struct FfvkRaster {
  `struct_size` to `sizeof(FfvkDrawInfo)`.
 
  It grows as `FfvkRendererCreateInfo` does: later headers append fields (each with its
- default), the library accepts every published version's size (this header's is version 1)
- and reads only what `struct_size` covers. `raster` never grows (`FfvkRaster` keeps its
+ default), the library accepts every published version's size (this header's is version 2,
+ which appended `layout`) and reads only what `struct_size` covers. `raster` never grows (`FfvkRaster` keeps its
  size): raster state added later is appended to `FfvkDrawInfo` itself, GL's initial value
  its default.
  */
@@ -632,6 +716,11 @@ typedef struct FfvkDrawInfo {
    The texture sampled while `GL_TEXTURE_2D` is enabled, or null.
    */
   const struct FfvkTexture *texture;
+  /*
+   Version 2: the vertex layout the buffers follow (`ffvkCreateVertexLayout`), or null
+   (the default, and what a version 1 caller gets): the create info's.
+   */
+  const struct FfvkVertexLayout *layout;
 } FfvkDrawInfo;
 
 #ifdef __cplusplus
@@ -877,6 +966,47 @@ void ffvkTexEnvi(struct FfvkContext *ctx, uint32_t target, uint32_t pname, int32
 void ffvkColorMaterial(struct FfvkContext *ctx, uint32_t face_enum, uint32_t mode);
 
 /*
+ glNormal3f: the current normal, every vertex's normal in a draw whose layout has no normal
+ array. Not normalized (GL normalizes only under `GL_NORMALIZE`); `GL_INVALID_VALUE` for a
+ component that is not finite (ffvk's choice).
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkNormal3f(struct FfvkContext *ctx, float x, float y, float z);
+
+/*
+ glNormal3b: `ffvkNormal3f` with each byte c converted as GL 2.1 converts signed bytes,
+ (2c + 1)/255.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkNormal3b(struct FfvkContext *ctx, int8_t x, int8_t y, int8_t z);
+
+/*
+ glTexCoord4f: the current texture coordinates, every vertex's in a textured draw whose
+ layout has no texture coordinate array; `GL_INVALID_VALUE` for a component that is not
+ finite (ffvk's choice).
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkTexCoord4f(struct FfvkContext *ctx, float s, float t, float r, float q);
+
+/*
+ glTexCoord2f: `ffvkTexCoord4f` with r = 0 and q = 1.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkTexCoord2f(struct FfvkContext *ctx, float s, float t);
+
+/*
  glColor4f: the current color, the color of every vertex of a draw without a color array,
  and (with `GL_COLOR_MATERIAL`) of the tracked material parameters. Unclamped, as in GL;
  `GL_INVALID_VALUE` for a component that is not finite (ffvk's choice).
@@ -966,6 +1096,37 @@ void ffvkLoadProjection(struct FfvkContext *ctx, const float *m);
  As `ffvkLoadModelview`.
  */
 void ffvkLoadTextureMatrix(struct FfvkContext *ctx, const float *m);
+
+/*
+ Adds a vertex layout to `renderer` and writes its handle to `*layout`: draws name it in
+ `FfvkDrawInfo::layout` (null there: the create info's layout) and pass one buffer per
+ binding of it. Checked as the create info's layout is (formats each array takes, offsets
+ within strides, the device's limits and vertex formats); pipelines for it are made on the
+ first draw that needs them. An equal layout made before shares its pipelines. Free the
+ handle with `ffvkDestroyVertexLayout` (the renderer keeps the layout's pipelines until it is
+ destroyed). Errors: `FFVK_ERROR_INVALID_ARGUMENT` naming the field, value and what was
+ expected (nothing written to `*layout` then), or a Vulkan error.
+
+ # Safety
+
+ `renderer` is null or live and used by one thread at a time; `info` is null or points at
+ `info->struct_size` bytes of an `FfvkVertexLayoutInfo` whose pointers are null or point at
+ what their counts say; `layout` is null or points at room for one pointer.
+ */
+enum FfvkResult ffvkCreateVertexLayout(struct FfvkRenderer *renderer,
+                                       const struct FfvkVertexLayoutInfo *info,
+                                       struct FfvkVertexLayout **layout);
+
+/*
+ Frees a layout handle from `ffvkCreateVertexLayout`; null does nothing. Draws recorded with
+ it stay valid (the renderer keeps the layout's pipelines).
+
+ # Safety
+
+ `layout` is null or from `ffvkCreateVertexLayout`, not yet destroyed, and named by no draw
+ of an open scope.
+ */
+void ffvkDestroyVertexLayout(struct FfvkVertexLayout *layout);
 
 /*
  Newell's teapot tessellated at `level` (1 ..= 64 steps per patch side), the mesh ffvk's

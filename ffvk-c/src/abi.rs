@@ -4,7 +4,8 @@
 //!
 //! - A struct the API reads from the caller and that may grow starts with `uint32_t
 //!   struct_size`, which the caller sets to `sizeof` of the struct as its `ffvk.h` declared it.
-//!   Today these are `FfvkRendererCreateInfo` and `FfvkDrawInfo`.
+//!   Today these are `FfvkRendererCreateInfo`, `FfvkDrawInfo` (version 2 added `layout`) and
+//!   `FfvkVertexLayoutInfo`.
 //! - Such a struct grows only at its end: a new version of the header appends fields and never
 //!   removes, reorders or retypes one. Each published header that changed a struct's size is a
 //!   version of that struct, numbered from 1 (the first header: every struct is at version 1).
@@ -43,8 +44,8 @@ pub struct Version {
     pub first_field: usize,
 }
 
-/// A struct the caller passes with a `struct_size`: `FfvkRendererCreateInfo` and
-/// `FfvkDrawInfo` (their versions are in `render/versions.rs`).
+/// A struct the caller passes with a `struct_size`: `FfvkRendererCreateInfo`, `FfvkDrawInfo`
+/// and `FfvkVertexLayoutInfo` (their versions are in `render/versions.rs`).
 ///
 /// # Safety
 ///

@@ -17,6 +17,7 @@
 pub mod abi;
 pub mod enums;
 pub mod gl;
+pub mod layout;
 pub mod mesh;
 pub mod query;
 pub mod render;

@@ -16,8 +16,8 @@ enum Answer {
     Int(i64),
     /// Floats that convert to integers by rounding.
     Floats(Vec<f32>),
-    /// Color components, which convert to integers by GL's linear mapping.
-    Color([f32; 4]),
+    /// Color or normal components, which convert to integers by GL's linear mapping.
+    Color(Vec<f32>),
 }
 
 impl Answer {
@@ -26,7 +26,7 @@ impl Answer {
             Answer::Bool(b) => vec![*b as u8 as f32],
             Answer::Int(i) => vec![*i as f32],
             Answer::Floats(v) => v.clone(),
-            Answer::Color(c) => c.to_vec(),
+            Answer::Color(c) => c.clone(),
         }
     }
     fn ints(&self) -> Vec<i32> {
@@ -73,9 +73,9 @@ pub(crate) fn is_enabled(c: &FfvkContext, cap: Cap) -> bool {
 
 fn light_answer(f: &str, light: &Light, pname: u32) -> GlResult<Answer> {
     Ok(match pname {
-        GL_AMBIENT => Answer::Color(light.ambient.to_array()),
-        GL_DIFFUSE => Answer::Color(light.diffuse.to_array()),
-        GL_SPECULAR => Answer::Color(light.specular.to_array()),
+        GL_AMBIENT => Answer::Color(light.ambient.to_array().to_vec()),
+        GL_DIFFUSE => Answer::Color(light.diffuse.to_array().to_vec()),
+        GL_SPECULAR => Answer::Color(light.specular.to_array().to_vec()),
         GL_POSITION => Answer::Floats(light.position.to_array().to_vec()),
         GL_SPOT_DIRECTION => Answer::Floats(light.spot_direction.to_array().to_vec()),
         GL_SPOT_EXPONENT => Answer::Floats(vec![light.spot_exponent]),
@@ -101,10 +101,10 @@ fn material_answer(f: &str, c: &FfvkContext, face_enum: u32, pname: u32) -> GlRe
         }
     };
     Ok(match pname {
-        GL_AMBIENT => Answer::Color(material.ambient.to_array()),
-        GL_DIFFUSE => Answer::Color(material.diffuse.to_array()),
-        GL_SPECULAR => Answer::Color(material.specular.to_array()),
-        GL_EMISSION => Answer::Color(material.emission.to_array()),
+        GL_AMBIENT => Answer::Color(material.ambient.to_array().to_vec()),
+        GL_DIFFUSE => Answer::Color(material.diffuse.to_array().to_vec()),
+        GL_SPECULAR => Answer::Color(material.specular.to_array().to_vec()),
+        GL_EMISSION => Answer::Color(material.emission.to_array().to_vec()),
         GL_SHININESS => Answer::Floats(vec![material.shininess]),
         GL_COLOR_INDEXES => Answer::Floats(c.color_indexes[side].to_vec()),
         _ => {
@@ -131,7 +131,7 @@ fn tex_env_answer(f: &str, c: &FfvkContext, target: u32, pname: u32) -> GlResult
             TexEnvMode::Add => GL_ADD,
             _ => GL_MODULATE,
         } as i64),
-        GL_TEXTURE_ENV_COLOR => Answer::Color(unit.env_color.to_array()),
+        GL_TEXTURE_ENV_COLOR => Answer::Color(unit.env_color.to_array().to_vec()),
         _ => {
             return Err(invalid_enum(
                 f,
@@ -167,7 +167,7 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
         return Ok(Answer::Bool(is_enabled(c, cap)));
     }
     Ok(match pname {
-        GL_LIGHT_MODEL_AMBIENT => Answer::Color(l.model.ambient.to_array()),
+        GL_LIGHT_MODEL_AMBIENT => Answer::Color(l.model.ambient.to_array().to_vec()),
         GL_LIGHT_MODEL_LOCAL_VIEWER => Answer::Bool(l.model.local_viewer),
         GL_LIGHT_MODEL_TWO_SIDE => Answer::Bool(l.model.two_side),
         GL_LIGHT_MODEL_COLOR_CONTROL => Answer::Int(match l.model.color_control {
@@ -183,7 +183,9 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
             ColorMaterialMode::Specular => GL_SPECULAR,
             ColorMaterialMode::AmbientAndDiffuse => GL_AMBIENT_AND_DIFFUSE,
         } as i64),
-        GL_CURRENT_COLOR => Answer::Color(l.current_color.to_array()),
+        GL_CURRENT_COLOR => Answer::Color(l.current_color.to_array().to_vec()),
+        GL_CURRENT_NORMAL => Answer::Color(l.current_normal.to_array().to_vec()),
+        GL_CURRENT_TEXTURE_COORDS => Answer::Floats(l.current_texcoord.to_array().to_vec()),
         GL_MAX_LIGHTS => Answer::Int(MAX_LIGHTS as i64),
         GL_MODELVIEW_MATRIX => Answer::Floats(c.gl.modelview.to_cols_array().to_vec()),
         GL_PROJECTION_MATRIX => Answer::Floats(c.projection.to_cols_array().to_vec()),
@@ -193,7 +195,7 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
                 f,
                 "pname",
                 pname,
-                "a lighting state name: GL_LIGHTING, GL_LIGHTi, GL_COLOR_MATERIAL(_FACE, _PARAMETER), GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_LIGHT_MODEL_*, GL_SHADE_MODEL, GL_CURRENT_COLOR, GL_MAX_LIGHTS or GL_{MODELVIEW,PROJECTION,TEXTURE}_MATRIX",
+                "a lighting state name: GL_LIGHTING, GL_LIGHTi, GL_COLOR_MATERIAL(_FACE, _PARAMETER), GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_LIGHT_MODEL_*, GL_SHADE_MODEL, GL_CURRENT_COLOR, GL_CURRENT_NORMAL, GL_CURRENT_TEXTURE_COORDS, GL_MAX_LIGHTS or GL_{MODELVIEW,PROJECTION,TEXTURE}_MATRIX",
             ))
         }
     })

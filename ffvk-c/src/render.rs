@@ -28,6 +28,7 @@ pub use raster::{ffvkRasterDefaults, FfvkRaster};
 
 use crate::enums::*;
 use crate::gl::FfvkContext;
+use crate::layout::FfvkVertexLayout;
 use crate::result::{check_ptr, fail, from_error, guard, misaligned, FfvkResult};
 use crate::vk_types::*;
 
@@ -132,8 +133,8 @@ pub struct FfvkRendererCreateInfo {
 /// `struct_size` to `sizeof(FfvkDrawInfo)`.
 ///
 /// It grows as `FfvkRendererCreateInfo` does: later headers append fields (each with its
-/// default), the library accepts every published version's size (this header's is version 1)
-/// and reads only what `struct_size` covers. `raster` never grows (`FfvkRaster` keeps its
+/// default), the library accepts every published version's size (this header's is version 2,
+/// which appended `layout`) and reads only what `struct_size` covers. `raster` never grows (`FfvkRaster` keeps its
 /// size): raster state added later is appended to `FfvkDrawInfo` itself, GL's initial value
 /// its default.
 #[repr(C)]
@@ -168,6 +169,9 @@ pub struct FfvkDrawInfo {
     pub raster: FfvkRaster,
     /// The texture sampled while `GL_TEXTURE_2D` is enabled, or null.
     pub texture: *const FfvkTexture,
+    /// Version 2: the vertex layout the buffers follow (`ffvkCreateVertexLayout`), or null
+    /// (the default, and what a version 1 caller gets): the create info's.
+    pub layout: *const FfvkVertexLayout,
 }
 
 /// A descriptor set naming the caller's image view and sampler (`ffvkCreateTexture`).
@@ -178,6 +182,7 @@ pub struct FfvkTexture {
 /// One draw waiting for `ffvkEndDraws`.
 struct Pending {
     state: usize,
+    layout: Option<ffvk::VertexLayout>,
     modelview: Mat4,
     projection: Mat4,
     raster: RasterState,
@@ -187,7 +192,7 @@ struct Pending {
 }
 
 /// What `ffvkBeginDraws` opened.
-struct Recording {
+pub(crate) struct Recording {
     cmd: vk::CommandBuffer,
     slot: u32,
     states: Vec<LightingState>,
@@ -199,15 +204,15 @@ struct Recording {
 /// ffvk on the caller's device (`ffvkCreateRenderer`).
 pub struct FfvkRenderer {
     // Fields drop in order: the lighting's objects before the device wrapper.
-    lighting: Lighting,
+    pub(crate) lighting: Lighting,
     _device: Arc<ffvk::vk::Device>,
-    recording: Option<Recording>,
+    pub(crate) recording: Option<Recording>,
     binding_count: u32,
     /// Which frame slots `ffvkBeginFrame` has begun (a scope may only open on one of them).
     begun: Vec<bool>,
 }
 
-fn invalid(message: impl Into<String>) -> FfvkResult {
+pub(crate) fn invalid(message: impl Into<String>) -> FfvkResult {
     fail(FfvkResult::FFVK_ERROR_INVALID_ARGUMENT, message)
 }
 
@@ -216,7 +221,12 @@ fn invalid(message: impl Into<String>) -> FfvkResult {
 /// # Safety
 ///
 /// `ptr` points at `count` values when `count` is not 0 and it is not null.
-unsafe fn slice<'a, T>(function: &str, what: &str, ptr: *const T, count: u32) -> Result<&'a [T], FfvkResult> {
+pub(crate) unsafe fn slice<'a, T>(
+    function: &str,
+    what: &str,
+    ptr: *const T,
+    count: u32,
+) -> Result<&'a [T], FfvkResult> {
     if count == 0 {
         return Ok(&[]);
     }
@@ -235,7 +245,7 @@ unsafe fn slice<'a, T>(function: &str, what: &str, ptr: *const T, count: u32) ->
     Ok(unsafe { std::slice::from_raw_parts(ptr, count as usize) })
 }
 
-fn attribute(a: &FfvkAttribute) -> Attribute {
+pub(crate) fn attribute(a: &FfvkAttribute) -> Attribute {
     Attribute::new(a.binding, a.offset, a.format)
 }
 
@@ -401,7 +411,7 @@ pub unsafe extern "C" fn ffvkDestroyRenderer(renderer: *mut FfvkRenderer) {
 }
 
 /// Runs `f` on a renderer behind the panic barrier.
-fn with_renderer(
+pub(crate) fn with_renderer(
     renderer: *mut FfvkRenderer,
     function: &str,
     f: impl FnOnce(&mut FfvkRenderer) -> FfvkResult,
@@ -568,9 +578,16 @@ pub unsafe extern "C" fn ffvkDraw(
                     draw.texture
                 )));
             }
+            // SAFETY: the caller's contract: the layout is null or live.
+            let (layout, binding_count) = unsafe { crate::layout::of_draw(F, draw.layout, binding_count) }?;
             if draw.vertex_buffer_count != binding_count {
+                let whose = if layout.is_some() {
+                    "the draw's layout"
+                } else {
+                    "the renderer's layout"
+                };
                 return Err(invalid(format!(
-                    "{F}: vertex_buffer_count is {}: expected {binding_count}, one buffer per binding of the renderer's layout",
+                    "{F}: vertex_buffer_count is {}: expected {binding_count}, one buffer per binding of {whose}",
                     draw.vertex_buffer_count
                 )));
             }
@@ -611,7 +628,8 @@ pub unsafe extern "C" fn ffvkDraw(
                 geometry,
             )
             .with_raster(raster)
-            .with_texture(texture);
+            .with_texture(texture)
+            .with_layout(layout);
             // Checked and written into the slot now, so that a bad draw is refused alone.
             let staged = lighting
                 .stage_draw(recording.slot, &lit)
@@ -625,6 +643,7 @@ pub unsafe extern "C" fn ffvkDraw(
             };
             recording.draws.push(Pending {
                 state,
+                layout,
                 modelview: ctx.gl.modelview,
                 projection: ctx.projection,
                 raster,
@@ -676,7 +695,8 @@ pub unsafe extern "C" fn ffvkEndDraws(renderer: *mut FfvkRenderer) -> FfvkResult
                     d.geometry,
                 )
                 .with_raster(d.raster)
-                .with_texture(texture),
+                .with_texture(texture)
+                .with_layout(d.layout),
             );
         }
         // SAFETY: the caller's contract: cmd records inside a rendering pass of the target's

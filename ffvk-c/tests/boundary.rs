@@ -62,6 +62,8 @@ const SMOOTH: u32 = 0x1D01;
 const COLOR_MATERIAL_FACE: u32 = 0x0B55;
 const COLOR_MATERIAL_PARAMETER: u32 = 0x0B56;
 const CURRENT_COLOR: u32 = 0x0B00;
+const CURRENT_NORMAL: u32 = 0x0B02;
+const CURRENT_TEXTURE_COORDS: u32 = 0x0B03;
 const MAX_LIGHTS: u32 = 0x0D31;
 const MODELVIEW_MATRIX: u32 = 0x0BA6;
 const PROJECTION_MATRIX: u32 = 0x0BA7;
@@ -183,7 +185,9 @@ impl Drop for Ctx {
 }
 
 /// The names `ffvkGetFloatv` answers (GL_LIGHTi added by [`Ctx::snapshot`]).
-const GET_NAMES: [u32; 17] = [
+const GET_NAMES: [u32; 19] = [
+    CURRENT_NORMAL,
+    CURRENT_TEXTURE_COORDS,
     LIGHTING,
     COLOR_MATERIAL,
     NORMALIZE,
@@ -425,6 +429,10 @@ fn context_calls() -> Vec<(&'static str, ContextCall)> {
             e("ffvkColor3f", |c| ffvkColor3f(c, 0.1, 0.2, 0.3)),
             e("ffvkColor4ub", |c| ffvkColor4ub(c, 1, 2, 3, 4)),
             e("ffvkColor3ub", |c| ffvkColor3ub(c, 1, 2, 3)),
+            e("ffvkNormal3f", |c| ffvkNormal3f(c, 0.0, 1.0, 0.0)),
+            e("ffvkNormal3b", |c| ffvkNormal3b(c, 0, 127, 0)),
+            e("ffvkTexCoord4f", |c| ffvkTexCoord4f(c, 0.5, 0.5, 0.0, 1.0)),
+            e("ffvkTexCoord2f", |c| ffvkTexCoord2f(c, 0.5, 0.5)),
             e("ffvkShadeModel", |c| ffvkShadeModel(c, FLAT)),
             e("ffvkPerFragmentLighting", |c| ffvkPerFragmentLighting(c, 1)),
             e("ffvkLoadModelview", |c| ffvkLoadModelview(c, M.as_ptr())),
@@ -1215,6 +1223,43 @@ fn a_non_finite_texture_environment_value_sets_invalid_value_and_changes_nothing
 }
 
 #[test]
+fn a_non_finite_normal_or_texture_coordinate_sets_invalid_value_and_keeps_the_current_ones() {
+    let c = Ctx::busy();
+    let x = c.0;
+    let before = c.snapshot();
+    for bad in NON_FINITE {
+        let shown = bad.to_string();
+        for at in 0..4 {
+            let v = with_bad(at, bad);
+            // SAFETY: a live context.
+            unsafe {
+                if at < 3 {
+                    assert_each_refused!(c, before, INVALID_VALUE, ["GL_CURRENT_NORMAL", &shown], {
+                        ffvkNormal3f(x, v[0], v[1], v[2]);
+                    });
+                }
+                assert_each_refused!(c, before, INVALID_VALUE, ["GL_CURRENT_TEXTURE_COORDS", &shown], {
+                    ffvkTexCoord4f(x, v[0], v[1], v[2], v[3]);
+                });
+                if at < 2 {
+                    assert_each_refused!(c, before, INVALID_VALUE, ["GL_CURRENT_TEXTURE_COORDS", &shown], {
+                        ffvkTexCoord2f(x, v[0], v[1]);
+                    });
+                }
+            }
+        }
+    }
+    // The byte form converts as GL 2.1 does: (2c + 1)/255.
+    // SAFETY: a live context; room for the 4 values asked.
+    unsafe {
+        ffvkNormal3b(x, -128, 0, 127);
+        let mut n = [0.0f32; 4];
+        ffvkGetFloatv(x, CURRENT_NORMAL, n.as_mut_ptr());
+        assert_eq!(&n[..3], &[-1.0, 1.0 / 255.0, 1.0]);
+    }
+}
+
+#[test]
 fn a_non_finite_color_sets_invalid_value_and_keeps_the_current_color_and_the_materials() {
     let c = Ctx::busy();
     let x = c.0;
@@ -1505,7 +1550,14 @@ fn every_gl_name_a_message_prints_has_the_value_gl_h_gives_it() {
         headers += &std::fs::read_to_string(path)
             .unwrap_or_else(|e| panic!("{path}: {e} (install the Debian package libgl-dev)"));
     }
-    for (name, value) in ffvk_c::enums::message_names() {
+    let names: Vec<(&str, u32)> = ffvk_c::enums::message_names().collect();
+    for (i, (name, _)) in names.iter().enumerate() {
+        assert!(
+            !names[..i].iter().any(|(n, _)| n == name),
+            "{name} is listed twice"
+        );
+    }
+    for (name, value) in names {
         let defined = headers.lines().find_map(|line| {
             let mut words = line.split_whitespace();
             (words.next() == Some("#define") && words.next() == Some(name))

@@ -8,16 +8,12 @@ layout(set = 1, binding = 1) uniform sampler2D g_normal;
 layout(set = 1, binding = 2) uniform sampler2D g_color;
 layout(set = 1, binding = 3) uniform usampler2D g_record;
 // The frame's draw records (src/gpu/layout.rs, DrawRecord), read at the index the G-buffer
-// holds. Members are read one by one: SPIRV-Tools rejects glslang's struct copies (README).
-struct Record {
-    mat4 modelview;
-    vec4 normal_matrix[3];  // w: front SHININESS, back SHININESS, RESCALE_NORMAL's factor
-    vec4 front[4];          // AMBIENT, DIFFUSE, SPECULAR, EMISSION
-    vec4 back[4];
-    vec4 current_color;
-};
+// holds, as vec4s: a record takes SPEC_RECORD_VEC4S of them (its size rounded up to the
+// device's uniform offset alignment, the ring's stride), so the array's stride is the
+// device's, not one fixed here. Offsets in vec4s: normal_matrix 4-6 (w: front and back
+// SHININESS), front 7-10, back 11-14 (AMBIENT, DIFFUSE, SPECULAR, EMISSION).
 layout(std430, set = 1, binding = 4) readonly buffer Records {
-    Record records[];
+    vec4 record_vec4s[];
 };
 
 #ifdef COUNT
@@ -43,11 +39,11 @@ void main() {
 #ifdef COUNT
     atomicAdd(evaluations, 1u);
 #endif
-    uint i = record - 1u;
-    draw_front = Material(records[i].front[0], records[i].front[1], records[i].front[2],
-                          records[i].front[3], records[i].normal_matrix[0].w);
-    draw_back = Material(records[i].back[0], records[i].back[1], records[i].back[2],
-                         records[i].back[3], records[i].normal_matrix[1].w);
+    uint r = (record - 1u) * uint(SPEC_RECORD_VEC4S);
+    draw_front = Material(record_vec4s[r + 7u], record_vec4s[r + 8u], record_vec4s[r + 9u],
+                          record_vec4s[r + 10u], record_vec4s[r + 4u].w);
+    draw_back = Material(record_vec4s[r + 11u], record_vec4s[r + 12u], record_vec4s[r + 13u],
+                         record_vec4s[r + 14u], record_vec4s[r + 5u].w);
     vec4 eye_position = texelFetch(g_position, at, 0);
     vec4 normal = texelFetch(g_normal, at, 0);
     vec4 color = texelFetch(g_color, at, 0);

@@ -119,6 +119,12 @@ layout(constant_id = 14) const float SPEC_POINT_SIZE = 1.0;
 // light may be either.
 layout(constant_id = 15) const int SPEC_DIRECTIONAL_LIGHTS = -1;
 layout(constant_id = 16) const int SPEC_SPOT_LIGHTS = -1;
+// The vertex layout's GL conversions (record.glsl, gl_signed_normalized): a byte per attribute,
+// the normal's in bits 0-7, the color's in bits 8-15; 0: none. Set in every pipeline.
+layout(constant_id = 17) const int SPEC_GL_SNORM = 0;
+// vec4s from one draw record to the next in the record buffer (deferred.frag): the ring's
+// stride, set in every pipeline.
+layout(constant_id = 18) const int SPEC_RECORD_VEC4S = 18;
 
 // A switch of the uber-shader, read from the uniform block. lavapipe 22.3 compiles a shader
 // variant for every draw whose uniforms changed when an if or a loop bound depends on uniform

@@ -31,6 +31,8 @@ layout(std140, set = 2, binding = 0) uniform Record {
     vec4 front[4];          // AMBIENT, DIFFUSE, SPECULAR, EMISSION
     vec4 back[4];
     vec4 current_color;
+    vec4 current_normal;
+    vec4 current_texcoord;
 } record;
 #endif
 

@@ -1,14 +1,10 @@
 #version 450
 // Vertex stage of the `fragment` mode: passes the eye-space position, the normal's
 // direction and length, and the current color.
-layout(location = 0) in vec3 in_position;
+// (x, y, z, w): a layout with fewer components gets z = 0 and w = 1 from Vulkan, as from GL.
+layout(location = 0) in vec4 in_position;
 layout(location = 1) in vec3 in_normal;
-#ifdef CURRENT_COLOR
-// No color array: GL's current color (glColor), the same for every vertex of the draw.
-#define in_color in_current_color
-#else
 layout(location = 2) in vec4 in_color;
-#endif
 
 layout(location = 0) out vec4 eye_position;
 // The normal's direction (xyz) and length (w) in one varying: lavapipe's triangle setup costs
@@ -36,7 +32,8 @@ layout(location = 14) flat out uint record_index;
 
 #ifdef TEXTURE
 // Texture coordinates, as in vertex.vert.
-layout(location = 3) in vec2 in_texcoord;
+// (s, t, r, q): r = 0 and q = 1 where the layout gives fewer, as in GL.
+layout(location = 3) in vec4 in_texcoord;
 layout(location = 4) out vec4 stq;
 #endif
 
@@ -48,10 +45,10 @@ layout(location = 4) out vec4 stq;
 void main() {
     // GL's point size; Vulkan leaves a point's size undefined unless it is written.
     if (SPEC_POINTS != 0) gl_PointSize = SPEC_POINT_SIZE;
-    eye_position = in_modelview * vec4(in_position, 1.0);
+    eye_position = in_modelview * in_position;
     gl_Position = state.projection * eye_position;
 #ifdef TEXTURE
-    stq = state.texture_matrix * vec4(in_texcoord, 0.0, 1.0);
+    stq = state.texture_matrix * in_texcoord;
 #endif
 #ifdef GBUFFER
     record_index = uint(gl_InstanceIndex);
@@ -65,12 +62,13 @@ void main() {
     back_d_cm = in_back_d_cm;
     back_s_cm = in_back_s_cm;
     back_e_cm = in_back_e_cm;
-    s_rm = vec2(in_normal_matrix_0.w, in_normal_matrix_1.w);
+    s_rm = vec2(in_front_s_rm, in_back_s_rm);
 #endif
-    vec3 n = eye_normal(in_normal);
+    vec3 n = eye_normal(vertex_normal(in_normal));
     float normal_length = length(n);
     normal = vec4(normal_length > 0.0 ? n / normal_length : vec3(0.0), normal_length);
     // Lighting off: the clamped current color (section 2.14.6); lighting on: unclamped, as
     // COLOR_MATERIAL takes it.
-    color = lighting_enabled() ? in_color : clamp(in_color, 0.0, 1.0);
+    vec4 c = vertex_color(in_color);
+    color = lighting_enabled() ? c : clamp(c, 0.0, 1.0);
 }

@@ -1,6 +1,9 @@
 // The draw's own values in the vertex stages: its DrawRecord (src/gpu/layout.rs), read as
 // per-instance vertex attributes from ffvk's record buffer, the draw's firstInstance naming its
-// record. Locations 0-3 are the caller's vertex attributes.
+// record. Locations 0-3 are the vertex's position, normal, color and texture coordinates: the
+// caller's arrays, or where a layout has none, the record's current values (the pipeline's
+// vertex input says which; the shaders read them alike). A layout may also take any material
+// input below (11-20) from an array of its own, per vertex: glMaterial between glBegin and glEnd.
 #ifndef FFVK_RECORD_GLSL
 #define FFVK_RECORD_GLSL
 
@@ -18,12 +21,30 @@ layout(location = 15) in vec4 in_back_a_cm;       // back AMBIENT
 layout(location = 16) in vec4 in_back_d_cm;       // back DIFFUSE
 layout(location = 17) in vec4 in_back_s_cm;       // back SPECULAR
 layout(location = 18) in vec4 in_back_e_cm;       // back EMISSION
-layout(location = 19) in vec4 in_current_color;   // CURRENT_COLOR (glColor)
+layout(location = 19) in float in_front_s_rm;    // front SHININESS (in_normal_matrix_0.w)
+layout(location = 20) in float in_back_s_rm;     // back SHININESS (in_normal_matrix_1.w)
 
-// Sets draw_front and draw_back from the record.
+// Sets draw_front and draw_back from the record (or the layout's per-vertex materials).
 void load_record() {
-    draw_front = Material(in_front_a_cm, in_front_d_cm, in_front_s_cm, in_front_e_cm, in_normal_matrix_0.w);
-    draw_back = Material(in_back_a_cm, in_back_d_cm, in_back_s_cm, in_back_e_cm, in_normal_matrix_1.w);
+    draw_front = Material(in_front_a_cm, in_front_d_cm, in_front_s_cm, in_front_e_cm, in_front_s_rm);
+    draw_back = Material(in_back_a_cm, in_back_d_cm, in_back_s_cm, in_back_e_cm, in_back_s_rm);
+}
+
+// GL 2.1's conversion of a signed normalized integer c of b bits (table 2.9): (2c + 1) / (2^b - 1),
+// where Vulkan's SNORM takes max(c / (2^(b-1) - 1), -1). A layout's SNORM normals and colors are
+// fetched as SSCALED (the integer c, as a float) and converted here; `code` is the attribute's
+// byte of SPEC_GL_SNORM: b in bits 0-4 (0: not converted), bit 7 set when w is one of the
+// array's components (else Vulkan's 1 stands in for it and stays).
+vec4 signed_normalized(vec4 c, int code) {
+    if (code == 0) return c;
+    vec4 f = (2.0 * c + 1.0) / (exp2(float(code & 31)) - 1.0);
+    return (code & 128) != 0 ? f : vec4(f.xyz, c.w);
+}
+vec3 vertex_normal(vec3 n) {
+    return signed_normalized(vec4(n, 0.0), SPEC_GL_SNORM & 255).xyz;
+}
+vec4 vertex_color(vec4 c) {
+    return signed_normalized(c, (SPEC_GL_SNORM >> 8) & 255);
 }
 
 // Section 2.11.3: n = (M^-1)^T n_object, then RESCALE_NORMAL, then NORMALIZE.

@@ -5,14 +5,10 @@
 // *_one_color variants, ONE_COLOR (see vertex.frag): then only the front primary color
 // leaves the stage; the others are computed as always and dropped, since they cannot differ
 // from what the fragment stage assumes in the states such a pipeline draws.
-layout(location = 0) in vec3 in_position;
+// (x, y, z, w): a layout with fewer components gets z = 0 and w = 1 from Vulkan, as from GL.
+layout(location = 0) in vec4 in_position;
 layout(location = 1) in vec3 in_normal;
-#ifdef CURRENT_COLOR
-// No color array: GL's current color (glColor), the same for every vertex of the draw.
-#define in_color in_current_color
-#else
 layout(location = 2) in vec4 in_color;
-#endif
 
 layout(location = 0) INTERP out vec4 front_pri;
 #ifdef ONE_COLOR
@@ -28,7 +24,8 @@ layout(location = 3) INTERP out vec4 back_sec;
 #ifdef TEXTURE
 // Texture coordinates (s, t) in, (s, t, r, q) after the texture matrix out: always
 // interpolated, whatever the shade model (GL's flat shading is about colors only).
-layout(location = 3) in vec2 in_texcoord;
+// (s, t, r, q): r = 0 and q = 1 where the layout gives fewer, as in GL.
+layout(location = 3) in vec4 in_texcoord;
 layout(location = 4) out vec4 stq;
 #endif
 
@@ -41,28 +38,29 @@ layout(location = 4) out vec4 stq;
 void main() {
     // GL's point size; Vulkan leaves a point's size undefined unless it is written.
     if (SPEC_POINTS != 0) gl_PointSize = SPEC_POINT_SIZE;
-    vec4 V = in_modelview * vec4(in_position, 1.0);
+    vec4 V = in_modelview * in_position;
     gl_Position = state.projection * V;
 #ifdef TEXTURE
-    stq = state.texture_matrix * vec4(in_texcoord, 0.0, 1.0);
+    stq = state.texture_matrix * in_texcoord;
 #endif
 
+    vec4 c = vertex_color(in_color);
     if (!lighting_enabled()) {
         // Section 2.14.6: colors are clamped after lighting, whether enabled or not.
-        front_pri = clamp(in_color, 0.0, 1.0);
+        front_pri = clamp(c, 0.0, 1.0);
         back_pri = front_pri;
         front_sec = vec4(0.0, 0.0, 0.0, 1.0);
         back_sec = front_sec;
         return;
     }
     load_record();
-    vec3 n = eye_normal(in_normal);
-    LitColor front = light_equation(V, n, face_material(false, in_color));
+    vec3 n = eye_normal(vertex_normal(in_normal));
+    LitColor front = light_equation(V, n, face_material(false, c));
     front_pri = front.c_pri;
     front_sec = front.c_sec;
     if (two_side()) {
         // Two-sided: the back color uses the back material and -n.
-        LitColor back = light_equation(V, -n, face_material(true, in_color));
+        LitColor back = light_equation(V, -n, face_material(true, c));
         back_pri = back.c_pri;
         back_sec = back.c_sec;
     } else {

@@ -214,20 +214,44 @@ pub enum LightingError {
     /// An attribute reads a binding the layout does not have.
     #[error("the {attribute} attribute reads binding {binding}: expected one of the bindings {available:?}")]
     UnknownBinding {
-        /// `position`, `normal`, `color` or `texcoord`.
-        attribute: &'static str,
+        /// `position`, `normal`, `color`, `texcoord` or a material array.
+        attribute: String,
         /// The binding it names.
         binding: u32,
         /// The bindings the layout has.
         available: Vec<u32>,
     },
-    /// An attribute's format is not one the shaders read as floats.
-    #[error("the {attribute} attribute has format {format:?}: expected a format the shader reads as floats (SFLOAT, UNORM or SNORM, as listed in VertexInput::validate)")]
+    /// An attribute's format is not one that attribute takes (GL's arrays of that kind).
+    #[error("the {attribute} attribute has format VK_FORMAT_{format:?} ({raw}): expected one of {expected}", raw = format.as_raw())]
     AttributeFormat {
-        /// `position`, `normal`, `color` or `texcoord`.
-        attribute: &'static str,
+        /// `position`, `normal`, `color`, `texcoord` or a material array.
+        attribute: String,
         /// The format given.
         format: ash::vk::Format,
+        /// The formats it takes, by Vulkan's C names.
+        expected: String,
+    },
+    /// The device cannot read an attribute's format from vertex buffers.
+    #[error("the {attribute} attribute has format VK_FORMAT_{format:?}, which ffvk fetches as VK_FORMAT_{fetched:?}, but the device does not support that format for vertex buffers (VK_FORMAT_FEATURE_VERTEX_BUFFER_BIT): expected another format, e.g. a four-component one with padding for a three-component array of bytes or shorts")]
+    VertexFormatUnsupported {
+        /// The attribute.
+        attribute: String,
+        /// The format given.
+        format: ash::vk::Format,
+        /// The format ffvk fetches for it (the SSCALED twin of a signed normalized one).
+        fetched: ash::vk::Format,
+    },
+    /// A fragment-mode draw whose layout gives materials per vertex.
+    #[error("the vertex layout gives the {attribute} per vertex, but the draw is lit in the fragment mode, whose materials are the draw's: expected the vertex or flat mode (GL's), or a layout without material arrays")]
+    MaterialArraysInFragmentMode {
+        /// The first material array of the layout.
+        attribute: String,
+    },
+    /// A draw names a vertex layout another `Lighting` made.
+    #[error("the draw's vertex layout {layout} was made by another Lighting: expected one this Lighting made (Lighting::vertex_layout)")]
+    ForeignLayout {
+        /// The layout's number.
+        layout: u32,
     },
     /// A draw tests depth but the target has no depth attachment.
     #[error("the draw tests depth, but the target has no depth format: expected RasterState::depth_test false or a Target::depth_format")]
@@ -266,9 +290,6 @@ pub enum LightingError {
         /// The device's limit.
         max: u32,
     },
-    /// A textured draw with a vertex layout that has no texture coordinates.
-    #[error("the draw is textured, but the vertex layout has no texture coordinates: expected VertexInput::texcoord")]
-    NoTexcoord,
     /// A point size or line width GL would refuse or the device cannot draw.
     #[error("{what} {size}: expected {expected}")]
     RasterSize {
@@ -327,8 +348,8 @@ pub enum LightingError {
     /// An attribute that does not lie within one element of its binding.
     #[error("the {attribute} attribute at offset {offset} ({size} bytes of {format:?}) ends past the stride {stride} of binding {binding}: expected offset + {size} <= stride")]
     AttributeOffset {
-        /// `position`, `normal`, `color` or `texcoord`.
-        attribute: &'static str,
+        /// `position`, `normal`, `color`, `texcoord` or a material array.
+        attribute: String,
         /// Its offset.
         offset: u32,
         /// Its format.

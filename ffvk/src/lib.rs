@@ -102,9 +102,12 @@ pub use image;
 #[doc = include_str!("../../README.md")]
 pub struct ReadmeDoctests;
 
-pub use draw::lighting::{DrawValues, Lighting, LightingOptions, LitDraw, StagedDraw, MAX_FRAMES_IN_FLIGHT};
+pub use draw::lighting::{
+    DrawValues, Lighting, LightingOptions, LitDraw, StagedDraw, VertexLayout, MAX_FRAMES_IN_FLIGHT,
+};
 pub use draw::pipeline::{
-    Attribute, Blend, RasterState, Specialize, Target, VertexInput, MAX_VERTEX_BINDINGS,
+    Attribute, Blend, FaceArrays, MaterialArray, RasterState, Specialize, Target, VertexInput,
+    MAX_VERTEX_BINDINGS,
 };
 pub use draw::record::{Geometry, Topology};
 pub use draw::texture::TextureBinding;

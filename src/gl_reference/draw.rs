@@ -74,6 +74,11 @@ pub(super) fn render(gl: &Gl, scene: &GlScene) -> Result<image::RgbaImage, GlErr
         check(gl, || format!("after draw {index}"))?;
     }
 
+    read_back(gl, width, height)
+}
+
+/// The current framebuffer's `width` × `height` pixels, row 0 at the top.
+pub(super) fn read_back(gl: &Gl, width: u32, height: u32) -> Result<image::RgbaImage, GlError> {
     // The framebuffer object was made at this size, so it fits in memory's terms already;
     // the product is checked anyway rather than trusted.
     let row = width as usize * 4;

@@ -240,6 +240,29 @@ pub fn with_raw_gl<T>(f: impl FnOnce(&raw::Gl) -> T) -> Result<T> {
     Ok(egl::with_context(&GlOptions::default(), 1, 1, |gl, _| Ok(f(gl)))?)
 }
 
+/// Runs `f` with a fresh compatibility context of the default device current on this thread,
+/// a `width` × `height` RGBA8 framebuffer (with depth) bound and cleared to black, then reads
+/// the framebuffer back, row 0 at the top: for tests that issue GL's calls themselves (an
+/// immediate-mode sequence, a display list) and compare ffvk's image with GL's.
+pub fn render_raw_gl(width: u32, height: u32, f: impl FnOnce(&raw::Gl)) -> Result<image::RgbaImage> {
+    let _guard = lock();
+    Ok(egl::with_context(
+        &GlOptions::default(),
+        width,
+        height,
+        |gl, _| {
+            // SAFETY: the context is current on this thread.
+            unsafe {
+                gl.Viewport(0, 0, width as i32, height as i32);
+                gl.ClearColor(0.0, 0.0, 0.0, 0.0);
+                gl.Clear(raw::COLOR_BUFFER_BIT | raw::DEPTH_BUFFER_BIT);
+            }
+            f(gl);
+            draw::read_back(gl, width, height)
+        },
+    )?)
+}
+
 /// Renders `scene` with the GL driver's fixed-function OpenGL and returns the color buffer,
 /// row 0 at the top of the view.
 pub fn render_gl(scene: &GlScene) -> Result<image::RgbaImage> {

@@ -7,6 +7,7 @@
 use std::ffi::CStr;
 
 use ffvk::ash::vk::{self, Handle};
+use ffvk_c::abi::Versioned;
 use ffvk_c::gl::*;
 use ffvk_c::render::*;
 use ffvk_c::result::{ffvkResultMessage, FfvkResult};
@@ -275,6 +276,7 @@ pub(crate) fn draw_info(buffer: &vk::Buffer, raster: FfvkRaster) -> FfvkDrawInfo
         primitive_restart: 0,
         raster,
         texture: std::ptr::null(),
+        layout: std::ptr::null(),
     }
 }
 
@@ -404,7 +406,7 @@ fn the_rust_api_refuses_the_same_targets_layouts_and_raster_states_as_the_c_api(
         })
     );
     let mut past = input();
-    past.normal.offset = 13;
+    past.normal = past.normal.map(|n| Attribute::new(n.binding, 13, n.format));
     let e = lighting(Target::OFFSCREEN, past, 1).expect("a normal past the stride");
     assert!(e.contains("the normal attribute at offset 13"), "{e}");
     let e = lighting(Target::OFFSCREEN, input(), 1_000_000_000).expect("a billion frames");
@@ -528,28 +530,40 @@ fn forgetting_bindings_inside_an_open_scope_is_refused_naming_ffvk_end_draws() {
 }
 
 #[test]
-fn ffvk_draw_refuses_a_struct_size_between_versions_or_past_the_newest_naming_the_sizes_accepted() {
+fn ffvk_draw_takes_every_published_versions_size_and_refuses_any_other_naming_the_sizes_accepted() {
+    let versions = <FfvkDrawInfo as Versioned>::VERSIONS;
+    let sizes: Vec<u32> = versions.iter().map(|v| v.size as u32).collect();
+    let accepted = sizes
+        .iter()
+        .enumerate()
+        .map(|(i, size)| format!("{size} (version {})", i + 1))
+        .collect::<Vec<_>>()
+        .join(" or ");
+    let expected = format!("expected sizeof(FfvkDrawInfo) as a published ffvk.h declares it, {accepted}");
+    let newest = *sizes.last().expect("version 1 at least");
+    let mut refused = vec![
+        (0, "smaller than version 1"),
+        (sizes[0] - 8, "smaller than version 1"),
+        (newest + 8, "larger than any version this library (ffvk-c 0.1.0) knows, so the program was built against a newer ffvk.h"),
+        (newest + 64, "larger than any version this library (ffvk-c 0.1.0) knows"),
+    ];
+    for pair in sizes.windows(2) {
+        refused.push((pair[0] + 4, "between versions"));
+    }
     in_draw_scope(|r, ctx| {
         let buffer = vk::Buffer::from_raw(PLACEHOLDER);
-        let v1 = std::mem::size_of::<FfvkDrawInfo>() as u32;
-        let accepted =
-            format!("expected sizeof(FfvkDrawInfo) as a published ffvk.h declares it, {v1} (version 1)");
-        for (size, why) in [
-            (0, "smaller than version 1"),
-            (v1 - 8, "smaller than version 1"),
-            (
-                v1 + 4,
-                "larger than any version this library (ffvk-c 0.1.0) knows",
-            ),
-            (v1 + 64, "larger than any version this library (ffvk-c 0.1.0) knows, so the program was built against a newer ffvk.h"),
-        ] {
+        for (size, why) in refused {
             let mut draw = draw_info(&buffer, defaults());
             draw.struct_size = size;
             let given = format!("FfvkDrawInfo.struct_size is {size}: {why}");
-            assert_draw_refused(r, ctx, &draw, &given, &accepted);
+            assert_draw_refused(r, ctx, &draw, &given, &expected);
         }
-        // Version 1's size is drawn.
-        assert_drawn(r, ctx, &draw_info(&buffer, defaults()));
+        // Each version's size is drawn, whatever lies past it.
+        for size in sizes {
+            let mut draw = draw_info(&buffer, defaults());
+            draw.struct_size = size;
+            assert_drawn(r, ctx, &draw);
+        }
     });
 }
 

@@ -80,6 +80,7 @@ fn draw_info(mode: u32, buffer: &vk::Buffer, raster: FfvkRaster) -> FfvkDrawInfo
         primitive_restart: 0,
         raster,
         texture: std::ptr::null(),
+        layout: std::ptr::null(),
     }
 }
 

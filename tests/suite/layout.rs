@@ -121,8 +121,8 @@ fn stages() -> Vec<(String, &'static [u8])> {
     }
     assert_eq!(
         stages.len(),
-        72,
-        "thirty-six variants (nine, with and without a color array, untextured and textured) of two stages"
+        36,
+        "eighteen variants (nine, untextured and textured) of two stages"
     );
     stages
 }
@@ -175,24 +175,38 @@ fn the_state_block_matches_the_glsl_in_every_stage() {
 #[test]
 fn the_record_block_of_the_fragment_stages_matches_the_draw_record() {
     let mut seen = 0;
-    // The fragment mode's stages for large draws read it as a uniform block; the deferred
-    // lighting pass reads the frame's records as a storage buffer of the same struct.
+    // The fragment mode's stages for large draws read it as a uniform block.
     for (stage, spirv) in stages().into_iter().filter(|(s, _)| {
-        let fragment = s.starts_with("fragment")
+        s.starts_with("fragment")
             && !s.starts_with("fragment_small")
-            && !s.starts_with("fragment_gbuffer");
-        (fragment || s.starts_with("deferred")) && s.ends_with(".frag")
+            && !s.starts_with("fragment_gbuffer")
+            && s.ends_with(".frag")
     }) {
         let r = reflect(spirv);
         let block = r.struct_id("Record");
-        let want = rust_offsets!(DrawRecord: modelview, normal_matrix, front, back, current_color);
+        let want = rust_offsets!(
+            DrawRecord: modelview,
+            normal_matrix,
+            front,
+            back,
+            current_color,
+            current_normal,
+            current_texcoord
+        );
         assert_eq!(r.members(block), want, "{stage}: Record block offsets");
         seen += 1;
     }
     assert_eq!(
-        seen, 12,
-        "the fragment mode's four fragment stages for large draws and the lighting pass's eight"
+        seen, 2,
+        "the fragment mode's fragment stages for large draws, textured or not"
     );
+    // The deferred lighting pass reads the frame's records as vec4s, at these indices of a
+    // record's (deferred.frag): the normal matrix's columns (w: the shininesses) at 4 and 5,
+    // the front material at 7-10, the back's at 11-14.
+    assert_eq!(offset_of!(DrawRecord, normal_matrix) / 16, 4);
+    assert_eq!(offset_of!(DrawRecord, front) / 16, 7);
+    assert_eq!(offset_of!(DrawRecord, back) / 16, 11);
+    assert_eq!(size_of::<DrawRecord>() % 16, 0, "a record is whole vec4s");
 }
 
 #[test]
@@ -213,9 +227,12 @@ fn the_draw_records_attributes_sit_at_the_locations_the_vertex_stages_read() {
         ("in_back_d_cm", at(back + 16)),
         ("in_back_s_cm", at(back + 32)),
         ("in_back_e_cm", at(back + 48)),
-        ("in_current_color", at(offset_of!(DrawRecord, current_color))),
+        // The shininesses have locations of their own after the record's vec4s (a layout may
+        // give them per vertex), read from the normal matrix's first two columns' w.
+        ("in_front_s_rm", RECORD_FIRST_LOCATION + 15),
+        ("in_back_s_rm", RECORD_FIRST_LOCATION + 16),
     ];
-    assert_eq!(size_of::<DrawRecord>(), 16 * RECORD_LOCATIONS as usize);
+    assert_eq!(RECORD_LOCATIONS, 17, "15 vec4s and two shininesses");
     for (stage, spirv) in stages()
         .into_iter()
         .filter(|(s, _)| s.ends_with(".vert") && !full_screen(s))
@@ -229,8 +246,8 @@ fn the_draw_records_attributes_sit_at_the_locations_the_vertex_stages_read() {
                 .filter(|(_, n)| n.as_str() == name)
                 .filter_map(|(id, _)| r.locations.get(id).copied())
                 .collect();
-            // glslang keeps only the inputs a stage reads (the current color is read by the
-            // *_current_color variants alone); each one it keeps is where the record puts it.
+            // glslang keeps only the inputs a stage reads; each one it keeps is where the
+            // record's attribute descriptions put it (their offsets: vertex_input.rs's tests).
             assert!(
                 found.iter().all(|&l| l == location),
                 "{stage}: {name} at {found:?}, expected {location}"
@@ -245,23 +262,15 @@ fn the_draw_records_attributes_sit_at_the_locations_the_vertex_stages_read() {
 }
 
 /// The stages that evaluate the lighting equation, and so read every specialization constant.
-const LIGHTING_STAGES: [&str; 16] = [
+const LIGHTING_STAGES: [&str; 8] = [
     "vertex.vert",
     "vertex_one_color.vert",
     "flat.vert",
     "flat_one_color.vert",
     "fragment.frag",
-    "vertex_current_color.vert",
-    "vertex_one_color_current_color.vert",
-    "flat_current_color.vert",
-    "flat_one_color_current_color.vert",
-    "fragment_current_color.frag",
     "fragment_small.frag",
-    "fragment_small_current_color.frag",
     "deferred.frag",
-    "deferred_current_color.frag",
     "deferred_counted.frag",
-    "deferred_counted_current_color.frag",
 ];
 
 #[test]
@@ -280,6 +289,10 @@ fn specialization_constant_ids_match_the_rust_side() {
             // float, is GL's 1.
             let default = match constant {
                 SpecConstant::PointSize => 1.0f32.to_bits() as i32,
+                // The layout's constants, set in every pipeline: no conversion, and the
+                // record's 18 vec4s.
+                SpecConstant::GlSnorm => 0,
+                SpecConstant::RecordVec4s => 18,
                 _ => -1,
             };
             assert_eq!(

@@ -195,55 +195,46 @@ fn one_sided_single_color_states_pass_one_color_between_the_stages() {
     separate.model.color_control = ColorControl::SeparateSpecularColor;
     let flat = lit(2, LightingMode::Flat);
     assert_eq!(
-        variant_name(LightingMode::Vertex, key(&one_sided), true, false, false),
+        variant_name(LightingMode::Vertex, key(&one_sided), false, false),
         "vertex_one_color"
     );
     assert_eq!(
-        variant_name(LightingMode::Flat, key(&flat), true, false, false),
+        variant_name(LightingMode::Flat, key(&flat), false, false),
         "flat_one_color"
     );
     assert_eq!(
-        variant_name(LightingMode::Vertex, key(&unlit()), true, false, false),
+        variant_name(LightingMode::Vertex, key(&unlit()), false, false),
         "vertex_one_color"
     );
     for s in [two_sided, separate] {
         assert_eq!(
-            variant_name(LightingMode::Vertex, key(&s), true, false, false),
+            variant_name(LightingMode::Vertex, key(&s), false, false),
             "vertex"
         );
     }
     // The uber-shader passes every color; fragment mode has one pair of stages.
     assert_eq!(
-        variant_name(LightingMode::Vertex, SpecKey::UBER, true, false, false),
+        variant_name(LightingMode::Vertex, SpecKey::UBER, false, false),
         "vertex"
     );
     assert_eq!(
-        variant_name(LightingMode::Fragment, key(&one_sided), true, false, false),
+        variant_name(LightingMode::Fragment, key(&one_sided), false, false),
         "fragment"
-    );
-    // Without a color array, the same variants read GL's current color.
-    assert_eq!(
-        variant_name(LightingMode::Vertex, key(&one_sided), false, false, false),
-        "vertex_one_color_current_color"
-    );
-    assert_eq!(
-        variant_name(LightingMode::Fragment, key(&one_sided), false, false, false),
-        "fragment_current_color"
     );
     // A small draw of the fragment mode passes its materials as flat varyings; the other
     // modes have no such variant.
     assert_eq!(
-        variant_name(LightingMode::Fragment, key(&one_sided), false, true, true),
-        "fragment_small_current_color_textured"
+        variant_name(LightingMode::Fragment, key(&one_sided), true, true),
+        "fragment_small_textured"
     );
     assert_eq!(
-        variant_name(LightingMode::Vertex, key(&two_sided), true, false, true),
+        variant_name(LightingMode::Vertex, key(&two_sided), false, true),
         "vertex"
     );
     // A textured draw takes the textured build of the same variant.
     assert_eq!(
-        variant_name(LightingMode::Flat, key(&flat), false, true, false),
-        "flat_one_color_current_color_textured"
+        variant_name(LightingMode::Flat, key(&flat), true, false),
+        "flat_one_color_textured"
     );
 }
 

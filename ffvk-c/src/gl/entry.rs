@@ -3,7 +3,7 @@
 use std::panic::catch_unwind;
 
 use ffvk::gl::state::ShadeModel;
-use ffvk::glam::Vec4;
+use ffvk::glam::{Vec3, Vec4};
 
 use super::params::*;
 use super::{invalid_enum, read, state_error, with_context, FfvkContext, GlResult, Values};
@@ -397,6 +397,67 @@ pub unsafe extern "C" fn ffvkColorMaterial(ctx: *mut FfvkContext, face_enum: u32
         let mode = color_material_mode(f, mode)?;
         c.gl.color_material(face, mode);
         Ok(())
+    })
+}
+
+/// glNormal3f: the current normal, every vertex's normal in a draw whose layout has no normal
+/// array. Not normalized (GL normalizes only under `GL_NORMALIZE`); `GL_INVALID_VALUE` for a
+/// component that is not finite (ffvk's choice).
+///
+/// # Safety
+///
+/// `ctx` is null or a live context used by one thread at a time.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkNormal3f(ctx: *mut FfvkContext, x: f32, y: f32, z: f32) {
+    const F: &str = "ffvkNormal3f";
+    with_context(ctx, F, |c| {
+        c.gl.normal(Vec3::new(x, y, z)).map_err(|e| state_error(F, e))
+    })
+}
+
+/// glNormal3b: `ffvkNormal3f` with each byte c converted as GL 2.1 converts signed bytes,
+/// (2c + 1)/255.
+///
+/// # Safety
+///
+/// `ctx` is null or a live context used by one thread at a time.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkNormal3b(ctx: *mut FfvkContext, x: i8, y: i8, z: i8) {
+    const F: &str = "ffvkNormal3b";
+    let convert = |c: i8| (2.0 * f32::from(c) + 1.0) / 255.0;
+    with_context(ctx, F, |c| {
+        c.gl.normal(Vec3::new(convert(x), convert(y), convert(z)))
+            .map_err(|e| state_error(F, e))
+    })
+}
+
+/// glTexCoord4f: the current texture coordinates, every vertex's in a textured draw whose
+/// layout has no texture coordinate array; `GL_INVALID_VALUE` for a component that is not
+/// finite (ffvk's choice).
+///
+/// # Safety
+///
+/// `ctx` is null or a live context used by one thread at a time.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkTexCoord4f(ctx: *mut FfvkContext, s: f32, t: f32, r: f32, q: f32) {
+    const F: &str = "ffvkTexCoord4f";
+    with_context(ctx, F, |c| {
+        c.gl.tex_coord(Vec4::new(s, t, r, q))
+            .map_err(|e| state_error(F, e))
+    })
+}
+
+/// glTexCoord2f: `ffvkTexCoord4f` with r = 0 and q = 1.
+///
+/// # Safety
+///
+/// `ctx` is null or a live context used by one thread at a time.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkTexCoord2f(ctx: *mut FfvkContext, s: f32, t: f32) {
+    const F: &str = "ffvkTexCoord2f";
+    with_context(ctx, F, |c| {
+        c.gl.tex_coord(Vec4::new(s, t, 0.0, 1.0))
+            .map_err(|e| state_error(F, e))
     })
 }
 

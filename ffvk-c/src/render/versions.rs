@@ -1,7 +1,7 @@
-//! The published versions of the structs that grow, `FfvkRendererCreateInfo` and
-//! `FfvkDrawInfo` ([`crate::abi`] states the rule and reads them): a frozen copy of each
-//! published version, the table of their sizes, and the defaults of the fields a caller's
-//! older version lacks.
+//! The published versions of the structs that grow, `FfvkRendererCreateInfo`, `FfvkDrawInfo`
+//! and `FfvkVertexLayoutInfo` ([`crate::abi`] states the rule and reads them): a frozen copy
+//! of each published version but the newest, the table of their sizes, and the defaults of the
+//! fields a caller's older version lacks.
 
 use std::mem::{offset_of, size_of};
 
@@ -9,6 +9,7 @@ use ffvk::ash::vk;
 
 use super::{raster_defaults, FfvkAttribute, FfvkDrawInfo, FfvkRaster, FfvkRendererCreateInfo, FfvkTexture};
 use crate::abi::{check_versions, frozen_version, Version, Versioned};
+use crate::layout::FfvkVertexLayoutInfo;
 use crate::vk_types::*;
 
 frozen_version! {
@@ -98,10 +99,17 @@ unsafe impl Versioned for FfvkRendererCreateInfo {
 // SAFETY: as above; `raster` is all integers, floats and Vulkan enums.
 unsafe impl Versioned for FfvkDrawInfo {
     const NAME: &'static str = "FfvkDrawInfo";
-    const VERSIONS: &'static [Version] = &[Version {
-        size: size_of::<DrawInfoV1>(),
-        first_field: 0,
-    }];
+    const VERSIONS: &'static [Version] = &[
+        Version {
+            size: size_of::<DrawInfoV1>(),
+            first_field: 0,
+        },
+        // Version 2: the draw's vertex layout.
+        Version {
+            size: size_of::<FfvkDrawInfo>(),
+            first_field: offset_of!(FfvkDrawInfo, layout),
+        },
+    ];
     fn defaults() -> Self {
         FfvkDrawInfo {
             struct_size: size_of::<FfvkDrawInfo>() as u32,
@@ -118,6 +126,34 @@ unsafe impl Versioned for FfvkDrawInfo {
             primitive_restart: 0,
             raster: raster_defaults(),
             texture: std::ptr::null(),
+            layout: std::ptr::null(),
+        }
+    }
+}
+
+// SAFETY: as above: integers, raw pointers and Vulkan's formats.
+unsafe impl Versioned for FfvkVertexLayoutInfo {
+    const NAME: &'static str = "FfvkVertexLayoutInfo";
+    const VERSIONS: &'static [Version] = &[Version {
+        size: size_of::<FfvkVertexLayoutInfo>(),
+        first_field: 0,
+    }];
+    fn defaults() -> Self {
+        let none = FfvkAttribute {
+            binding: 0,
+            offset: 0,
+            format: vk::Format::UNDEFINED,
+        };
+        FfvkVertexLayoutInfo {
+            struct_size: size_of::<FfvkVertexLayoutInfo>() as u32,
+            bindings: std::ptr::null(),
+            binding_count: 0,
+            position: none,
+            normal: std::ptr::null(),
+            color: std::ptr::null(),
+            texcoord: std::ptr::null(),
+            materials: std::ptr::null(),
+            material_count: 0,
         }
     }
 }
@@ -127,6 +163,8 @@ const _: () = {
     assert!(offset_of!(FfvkDrawInfo, struct_size) == 0);
     check_versions::<FfvkRendererCreateInfo>();
     check_versions::<FfvkDrawInfo>();
+    assert!(offset_of!(FfvkVertexLayoutInfo, struct_size) == 0);
+    check_versions::<FfvkVertexLayoutInfo>();
 };
 
 #[cfg(test)]
@@ -134,27 +172,54 @@ mod tests {
     use super::*;
 
     #[test]
-    fn every_struct_with_a_struct_size_is_at_version_1_with_its_size_today() {
+    fn every_struct_with_a_struct_size_has_its_published_versions_the_last_its_size_today() {
         for (name, versions, size) in [
             (
                 "FfvkRendererCreateInfo",
                 FfvkRendererCreateInfo::VERSIONS,
                 size_of::<FfvkRendererCreateInfo>(),
             ),
-            ("FfvkDrawInfo", FfvkDrawInfo::VERSIONS, size_of::<FfvkDrawInfo>()),
+            (
+                "FfvkVertexLayoutInfo",
+                FfvkVertexLayoutInfo::VERSIONS,
+                size_of::<FfvkVertexLayoutInfo>(),
+            ),
         ] {
             assert_eq!(versions, [Version { size, first_field: 0 }], "{name}");
         }
+        // FfvkDrawInfo: version 1 (ffvk-c 0.1's first header) and version 2, which appended
+        // the layout right after version 1's end.
+        assert_eq!(
+            FfvkDrawInfo::VERSIONS,
+            [
+                Version {
+                    size: size_of::<DrawInfoV1>(),
+                    first_field: 0
+                },
+                Version {
+                    size: size_of::<FfvkDrawInfo>(),
+                    first_field: offset_of!(FfvkDrawInfo, layout)
+                }
+            ]
+        );
+        assert_eq!(offset_of!(FfvkDrawInfo, layout), size_of::<DrawInfoV1>());
     }
 
     #[test]
-    fn a_version_1_draw_info_reads_every_field_the_caller_wrote() {
+    fn a_version_1_draw_info_reads_every_field_the_caller_wrote_and_the_layout_as_null() {
         let mut info = FfvkDrawInfo::defaults();
+        info.struct_size = size_of::<DrawInfoV1>() as u32;
         info.mode = 4;
         info.count = 36;
         info.raster.line_width = 2.0;
-        // SAFETY: a whole current struct, aligned, its struct_size its own size.
+        // Where a version 1 caller's memory ends: not read.
+        info.layout = std::ptr::dangling();
+        // SAFETY: a whole current struct, aligned; struct_size covers less of it.
         let read = unsafe { crate::abi::read("test", &info) }.expect("version 1's size is accepted");
         assert_eq!((read.mode, read.count, read.raster.line_width), (4, 36, 2.0));
+        assert!(
+            read.layout.is_null(),
+            "a version 1 draw's layout is the default, null"
+        );
     }
 }

@@ -21,9 +21,11 @@
 //! still uses it (wait for its fences or the device).
 //!
 //! The pipelines read the caller's vertex bindings per vertex and ffvk's draw records per
-//! instance, at the lowest binding number the caller's [`VertexInput`](super::pipeline::VertexInput) leaves free, as
-//! attribute locations 4-19 ([`DrawRecord`]); the device needs `maxVertexInputAttributes` ≥ 20
+//! instance, at the lowest binding number the caller's [`VertexInput`] leaves free, as
+//! attribute locations 4-20 ([`DrawRecord`]), and GL's current values from the record where a
+//! layout has no array for them; the device needs `maxVertexInputAttributes` ≥ 21
 //! ([`LightingError::VertexInputLimit`] otherwise). Instancing and `firstInstance` are ffvk's.
+//! One `Lighting` draws with any number of vertex layouts ([`Lighting::vertex_layout`]).
 //!
 //! [`Lighting::draw`] records, into the caller's command buffer inside the caller's dynamic
 //! rendering pass (`vkCmdBeginRendering`; render passes are not supported): bind pipeline,
@@ -69,7 +71,7 @@
 //!
 //! A draw's GL state is staged in GL's rhythm. Its own values, the ones GL programs change
 //! between draws (modelview, materials, current color), are checked and written as its
-//! [`DrawRecord`] (256 bytes, with the normal matrix): that is all a draw that changes only
+//! [`DrawRecord`] (288 bytes, with the normal matrix): that is all a draw that changes only
 //! those writes, about 0.1 µs on the host on lavapipe in a run whose draws borrow one
 //! [`LightingState`] and carry their own [`DrawValues`] (0.3-0.5 µs when each draw brings a
 //! state of its own, which is compared with the one before). The rest ([`StateBlock`]: lights,
@@ -118,10 +120,13 @@ use std::sync::Arc;
 
 use ash::vk;
 
-pub use super::lit::{DrawValues, LitDraw};
+mod bindings;
+use bindings::Remembered;
+
+pub use super::lit::{DrawValues, LitDraw, VertexLayout};
 pub use super::options::{LightingOptions, MAX_FRAMES_IN_FLIGHT};
 use super::pipeline::{
-    PipelineConfig, Pipelines, RasterState, Specialize, MAX_AUTO_VARIANTS, SMALL_DRAW_VERTICES,
+    PipelineConfig, Pipelines, RasterState, Specialize, VertexInput, MAX_AUTO_VARIANTS, SMALL_DRAW_VERTICES,
 };
 use super::record::{record_in_run, Bound, RunState, Topology};
 use super::ring::{Pushed, Ring, RingUse};
@@ -135,6 +140,8 @@ use crate::vk::Device;
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Staged {
     pipeline: vk::Pipeline,
+    /// The vertex layout's number.
+    layout: u32,
     /// The state block's set and dynamic offset.
     state: (vk::DescriptorSet, u32),
     /// The record's buffer and index.
@@ -172,28 +179,26 @@ struct LastState {
     pipelines: Vec<(LightingMode, RasterState, Variant, vk::Pipeline)>,
 }
 
-/// What a [`Lighting`] last bound: the command buffer, the device's recording count just after
-/// that recording ([`Device::recordings`](crate::vk::Device)), and the bindings.
-struct Remembered {
-    cmd: vk::CommandBuffer,
-    recording: u64,
-    run: RunState,
-}
-
 /// What besides its state and raster state picks a draw's pipeline.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 struct Variant {
+    /// The vertex layout's number.
+    layout: u32,
     /// It samples a texture.
     textured: bool,
     /// A fragment-mode draw of fewer than [`SMALL_DRAW_VERTICES`] vertices.
     small: bool,
-    /// Its modelview is affine: every vertex at w = 1 (`SpecConstant::FiniteVertices`).
+    /// Every vertex at w = 1 after the modelview (`SpecConstant::FiniteVertices`): an affine
+    /// modelview and a layout whose positions have no w.
     affine: bool,
     /// Its topology and primitive restart.
     assembly: (Topology, bool),
     /// The deferred path's G-buffer pass ([`Lighting::set_gbuffer`]).
     gbuffer: bool,
 }
+
+/// The next [`Lighting`]'s number (its layouts name it, so another's are refused).
+static NEXT_LIGHTING: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
 
 // Recording takes &mut self; the type itself may move between and be shared by threads.
 const _: () = {
@@ -213,8 +218,8 @@ pub struct Lighting {
     pipelines: Pipelines,
     specialize: Specialize,
     last: Option<LastState>,
-    /// The vertex binding of the draw records (the lowest the caller's layout leaves free).
-    record_binding: u32,
+    /// This `Lighting`'s number among all, which its [`VertexLayout`]s carry.
+    id: u64,
     /// Draws are staged for the deferred path's G-buffer pass ([`Lighting::set_gbuffer`]).
     gbuffer: bool,
     /// What the public recording calls last bound, and into which command buffer (module
@@ -266,7 +271,7 @@ impl Lighting {
             pipelines,
             specialize: options.specialize,
             last: None,
-            record_binding: options.vertex_input.record_binding(),
+            id: NEXT_LIGHTING.fetch_add(1, std::sync::atomic::Ordering::Relaxed),
             gbuffer: false,
             remembered: std::sync::Mutex::new(None),
             device: device.clone(),
@@ -276,6 +281,36 @@ impl Lighting {
     /// The device the pipelines live on.
     pub fn device(&self) -> &Arc<Device> {
         &self.device
+    }
+
+    /// Adds a vertex layout draws may name ([`LitDraw::with_layout`]), checked as
+    /// [`Lighting::new`] checks the options' (formats it takes, offsets within strides, the
+    /// device's limits and vertex formats), and returns its handle; a layout equal to one added
+    /// before (or to the options') gets that one's handle. Pipelines are made per layout, on
+    /// the first draw that needs one; the texture bindings, frame slots and state blocks serve
+    /// every layout.
+    pub fn vertex_layout(&mut self, input: VertexInput) -> Result<VertexLayout> {
+        let index = self.pipelines.add_layout(input)?;
+        Ok(VertexLayout {
+            index,
+            owner: self.id,
+        })
+    }
+
+    /// The number of `draw`'s layout, refusing another `Lighting`'s.
+    fn layout_of(&self, draw: &LitDraw) -> Result<u32> {
+        match draw.layout {
+            None => Ok(0),
+            Some(l) if l.owner == self.id => Ok(l.index),
+            Some(l) => Err(LightingError::ForeignLayout { layout: l.index }.into()),
+        }
+    }
+
+    /// The layout numbered `layout`.
+    fn input(&self, layout: u32) -> Result<&VertexInput> {
+        self.pipelines
+            .vertex_layout(layout)
+            .ok_or(crate::Error::Internal("a vertex layout number past those added"))
     }
 
     /// Starts recording the draws of frame slot `slot`: its earlier draws' state memory is
@@ -289,43 +324,6 @@ impl Lighting {
             self.last = None;
         }
         Ok(())
-    }
-
-    /// Forgets what ffvk bound: call it after recording commands of your own that bind a
-    /// pipeline, descriptor sets, vertex buffers or an index buffer into a command buffer ffvk
-    /// draws into, and after resetting or beginning anew a command buffer ffvk drew into, before
-    /// ffvk's next draw there ([`Lighting::begin_frame`] forgets too). ffvk then binds everything
-    /// its next draw needs. Viewports, scissors, clears, barriers, dynamic state and rendering
-    /// passes of your own need no call: they bind nothing.
-    pub fn forget_bindings(&self) {
-        *self
-            .remembered
-            .lock()
-            .unwrap_or_else(|poisoned| poisoned.into_inner()) = None;
-    }
-
-    /// Runs `record` with what ffvk remembers having bound in `cmd` (nothing, for another
-    /// command buffer than the last, or when another `Lighting` on this device recorded since:
-    /// its binds may have replaced these), and remembers what it leaves bound.
-    fn with_remembered(&self, cmd: vk::CommandBuffer, record: impl FnOnce(&mut RunState)) {
-        let mut remembered = self
-            .remembered
-            .lock()
-            .unwrap_or_else(|poisoned| poisoned.into_inner());
-        let before = self
-            .device
-            .recordings
-            .fetch_add(1, std::sync::atomic::Ordering::SeqCst);
-        let mut run = match remembered.take() {
-            Some(last) if last.cmd == cmd && last.recording == before => last.run,
-            _ => RunState::default(),
-        };
-        record(&mut run);
-        *remembered = Some(Remembered {
-            cmd,
-            recording: before.wrapping_add(1),
-            run,
-        });
     }
 
     /// How many frame slots there are.
@@ -358,9 +356,10 @@ impl Lighting {
         let small = small && state.mode == LightingMode::Fragment;
         // Draws with an affine modelview, as nearly all are.
         let variant = Variant {
+            layout: 0,
             textured,
             small,
-            affine: true,
+            affine: !self.input(0)?.positions_have_w(),
             assembly: (Topology::TriangleList, false),
             gbuffer: false,
         };
@@ -430,7 +429,10 @@ impl Lighting {
     /// projection are those of the draw staged just before in this slot (the same borrowed
     /// state in one run, which cannot have changed in between): its block is reused unchecked.
     pub(crate) fn stage(&mut self, slot: u32, draw: &LitDraw, same_state: bool) -> Result<Staged> {
-        let bindings = &self.pipelines.config().vertex_input.bindings;
+        let layout = self.layout_of(draw)?;
+        let input = self.input(layout)?;
+        let positions_have_w = input.positions_have_w();
+        let bindings = &input.bindings;
         if draw.vertex_buffers.len() != bindings.len() {
             return Err(LightingError::VertexBuffers {
                 given: draw.vertex_buffers.len(),
@@ -442,11 +444,11 @@ impl Lighting {
         draw.geometry.validate()?;
         // The draw's own values, checked for every draw; the state, below, when it changed.
         let values = match &draw.values {
-            Some(v) => (&v.front, &v.back, v.current_color),
-            None => (&draw.state.front, &draw.state.back, draw.state.current_color),
+            Some(v) => *v,
+            None => DrawValues::of(draw.state),
         };
-        draw.state.check_draw(values, draw.modelview)?;
-        let record = DrawRecord::with_values(draw.state, values, draw.modelview);
+        draw.state.check_draw(&values, draw.modelview)?;
+        let record = DrawRecord::with_values(draw.state, &values, draw.modelview);
         // The state is compared in place with the last one's key; a key is made only for a
         // state that differs, and kept.
         let in_slot = self.last.as_ref().filter(|last| last.slot == slot);
@@ -475,11 +477,13 @@ impl Lighting {
         // (The G-buffer pass has no small variant: its draws bind their record like large ones.)
         let small =
             !self.gbuffer && mode == LightingMode::Fragment && draw.geometry.fetched() < SMALL_DRAW_VERTICES;
-        // An affine modelview puts every vertex at w = 1 (SpecConstant::FiniteVertices).
+        // An affine modelview puts every vertex without a w at w = 1
+        // (SpecConstant::FiniteVertices).
         let variant = Variant {
+            layout,
             textured: Self::textured(draw),
             small,
-            affine: draw.modelview.row(3) == glam::Vec4::W,
+            affine: draw.modelview.row(3) == glam::Vec4::W && !positions_have_w,
             assembly: draw.geometry.assembly(),
             gbuffer: self.gbuffer && mode == LightingMode::Fragment,
         };
@@ -511,6 +515,7 @@ impl Lighting {
         )?;
         Ok(Staged {
             pipeline,
+            layout,
             state: (block.set, block.offset),
             record: (record.buffer, record.index),
             record_block: (mode == LightingMode::Fragment && !small).then_some((record.set, record.offset)),
@@ -694,6 +699,11 @@ impl Lighting {
     /// What `draw` binds, with what staging it found.
     fn bound<'a>(&'a self, staged: &Staged, draw: &LitDraw<'a>) -> Bound<'a> {
         let config = self.pipelines.config();
+        // Staging found the layout: it exists.
+        let input = self
+            .pipelines
+            .vertex_layout(staged.layout)
+            .unwrap_or(&config.vertex_input);
         Bound {
             pipeline: staged.pipeline,
             layout: self.pipelines.layout(),
@@ -701,9 +711,9 @@ impl Lighting {
             set: staged.state.0,
             uniform_offset: staged.state.1,
             texture_set: self.texture_set(draw),
-            bindings: &config.vertex_input.bindings,
+            bindings: &input.bindings,
             vertex_buffers: draw.vertex_buffers,
-            record_binding: self.record_binding,
+            record_binding: input.record_binding(),
             record_buffer: staged.record.0,
             first_record: staged.record.1,
             draws: 1,
@@ -730,7 +740,9 @@ impl Lighting {
             Specialize::Always => SpecKey::for_state(state).with_finite_vertices(affine),
             Specialize::Auto => {
                 let key = SpecKey::for_state(state).with_finite_vertices(affine);
-                if self.pipelines.contains(mode, key, raster, textured, assembly)
+                if self
+                    .pipelines
+                    .contains(variant.layout, mode, key, raster, textured, assembly)
                     || self.pipelines.counts().1 < MAX_AUTO_VARIANTS
                 {
                     key
@@ -739,8 +751,13 @@ impl Lighting {
                 }
             }
         };
-        self.pipelines
-            .get_for((mode, key, raster), textured, assembly, variant.gbuffer)
+        self.pipelines.get_for(
+            variant.layout,
+            (mode, key, raster),
+            textured,
+            assembly,
+            variant.gbuffer,
+        )
     }
 
     /// Draws staged from now on write the deferred path's G-buffer (fragment mode; the

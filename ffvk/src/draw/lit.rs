@@ -2,66 +2,16 @@
 //! its own ([`DrawValues`]), as [`Lighting`](super::lighting::Lighting) records them.
 
 use ash::vk;
-use glam::{Mat4, Vec4};
+use glam::Mat4;
 
 use super::pipeline::RasterState;
 use super::record::Geometry;
 use super::texture::TextureBinding;
-use crate::gl::state::{LightingState, Material};
+pub use crate::gl::state::DrawValues;
+use crate::gl::state::LightingState;
 
 #[cfg(doc)]
 use super::pipeline::VertexInput;
-
-/// A draw's own values, the GL state programs change between draws without touching lights or
-/// switches: the two materials (`glMaterial`, or `COLOR_MATERIAL`'s tracking) and the current
-/// color (`glColor`). A [`LitDraw`] with its own values ([`LitDraw::with_values`]) takes them
-/// instead of its state's, so that draws which differ only in these can share one
-/// [`LightingState`]: an emulation layer keeps a state per change of lights or switches and
-/// these per draw (176 bytes instead of a 2.5 KB state).
-///
-/// ```
-/// use ffvk::gl::state::{Face, GlState, MaterialParam};
-/// use ffvk::glam::Vec4;
-/// use ffvk::DrawValues;
-///
-/// let mut gl = GlState::new();
-/// gl.material(Face::Front, MaterialParam::Diffuse(Vec4::new(1.0, 0.0, 0.0, 1.0))).unwrap();
-/// let red = DrawValues::of(&gl.lighting);
-/// assert_eq!(red.front.diffuse, Vec4::new(1.0, 0.0, 0.0, 1.0));
-/// assert_eq!(red.current_color, Vec4::ONE);
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
-pub struct DrawValues {
-    /// The front material (also the back's, unless two-sided lighting is on).
-    pub front: Material,
-    /// The back material.
-    pub back: Material,
-    /// GL's current color: every vertex's color when the mesh has no color array.
-    pub current_color: Vec4,
-}
-
-impl DrawValues {
-    /// The values `state` holds now: after a program's `glMaterial`, `glColor` and
-    /// `glColorMaterial` calls on a [`GlState`](crate::gl::state::GlState), its materials
-    /// already carry what color-material tracking wrote into them.
-    pub fn of(state: &LightingState) -> Self {
-        DrawValues {
-            front: state.front,
-            back: state.back,
-            current_color: state.current_color,
-        }
-    }
-
-    /// These materials and current color.
-    pub fn new(front: Material, back: Material, current_color: Vec4) -> Self {
-        DrawValues {
-            front,
-            back,
-            current_color,
-        }
-    }
-}
 
 /// One lit draw: GL's state for it, its matrices, its raster state and the caller's buffers.
 #[derive(Debug, Clone, Copy)]
@@ -75,7 +25,8 @@ pub struct LitDraw<'a> {
     pub projection: Mat4,
     /// Culling, winding, depth and blending.
     pub raster: RasterState,
-    /// One (buffer, byte offset) per entry of [`VertexInput::bindings`], in that order.
+    /// One (buffer, byte offset) per entry of its layout's [`VertexInput::bindings`], in that
+    /// order.
     pub vertex_buffers: &'a [(vk::Buffer, u64)],
     /// Which vertices to draw.
     pub geometry: Geometry,
@@ -85,9 +36,29 @@ pub struct LitDraw<'a> {
     /// sampler (mipmaps where the min filter reads them) is the caller's to ensure, as GL's
     /// completeness rule is about the caller's image.
     pub texture: Option<&'a TextureBinding>,
-    /// The draw's own materials and current color, in place of `state`'s; `None` takes
+    /// The draw's own materials and current values, in place of `state`'s; `None` takes
     /// `state`'s.
     pub values: Option<DrawValues>,
+    /// The vertex layout its buffers follow ([`Lighting::vertex_layout`](crate::Lighting::vertex_layout));
+    /// `None`: the one [`LightingOptions::vertex_input`](crate::LightingOptions) gave.
+    pub layout: Option<VertexLayout>,
+}
+
+/// A vertex layout a [`Lighting`](crate::Lighting) draws with, by number
+/// ([`Lighting::vertex_layout`](crate::Lighting::vertex_layout)): a cheap handle a draw names.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct VertexLayout {
+    /// The layout's number in its `Lighting` (0: the options' layout).
+    pub(crate) index: u32,
+    /// Which `Lighting` made it.
+    pub(crate) owner: u64,
+}
+
+impl VertexLayout {
+    /// The layout's number in the `Lighting` that made it (0 is the one its options gave).
+    pub fn index(self) -> u32 {
+        self.index
+    }
 }
 
 impl<'a> LitDraw<'a> {
@@ -111,6 +82,7 @@ impl<'a> LitDraw<'a> {
             geometry,
             texture: None,
             values: None,
+            layout: None,
         }
     }
 
@@ -128,10 +100,17 @@ impl<'a> LitDraw<'a> {
         self
     }
 
-    /// This draw with its own materials and current color (`None`: its state's).
+    /// This draw with its own materials and current values (`None`: its state's).
     #[must_use]
     pub fn with_values(mut self, values: Option<DrawValues>) -> Self {
         self.values = values;
+        self
+    }
+
+    /// This draw with its buffers following vertex layout `layout` (`None`: the options').
+    #[must_use]
+    pub fn with_layout(mut self, layout: Option<VertexLayout>) -> Self {
+        self.layout = layout;
         self
     }
 }

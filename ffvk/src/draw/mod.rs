@@ -14,4 +14,5 @@ pub mod record;
 mod ring;
 mod target;
 pub mod texture;
+mod vertex_input;
 pub mod viewport;

@@ -16,7 +16,8 @@ use crate::vk::objects::{DescriptorSetLayout, Pipeline, PipelineCache, PipelineL
 use crate::vk::Device;
 
 pub use super::raster::{Blend, Pixels, RasterState};
-pub use super::target::{Attribute, Target, VertexInput, COLOR_FORMAT, DEPTH_FORMAT, MAX_VERTEX_BINDINGS};
+pub use super::target::{Target, COLOR_FORMAT, DEPTH_FORMAT};
+pub use super::vertex_input::{Attribute, FaceArrays, MaterialArray, VertexInput, MAX_VERTEX_BINDINGS};
 
 /// Whether a pipeline specialized by `key` needs only the front primary color between the
 /// per-vertex stages: unlit, or one-sided with a single color (the back colors then equal the
@@ -38,19 +39,13 @@ pub const SMALL_DRAW_VERTICES: u32 = 256;
 
 /// The name of the shader variant a mode's pipeline specialized by `key` uses: the mode's
 /// name, with `_small` for a small draw of the fragment mode ([`SMALL_DRAW_VERTICES`]), with
-/// `_one_color` when [`one_color`] holds for a per-vertex mode, with `_current_color` when the
-/// mesh has no color array (`color_array` false), and with `_textured` when the draw samples
-/// a texture.
-pub fn variant_name(
-    mode: LightingMode,
-    key: SpecKey,
-    color_array: bool,
-    textured: bool,
-    small: bool,
-) -> String {
+/// `_one_color` when [`one_color`] holds for a per-vertex mode, and with `_textured` when the
+/// draw samples a texture. (Layouts without a color, normal or texture coordinate array share
+/// the variants: the pipeline's vertex input reads GL's current value from the draw record.)
+pub fn variant_name(mode: LightingMode, key: SpecKey, textured: bool, small: bool) -> String {
     let one = one_color(key) && mode != LightingMode::Fragment;
     format!(
-        "{}{}{}{}{}",
+        "{}{}{}{}",
         mode.name(),
         if small && mode == LightingMode::Fragment {
             "_small"
@@ -58,7 +53,6 @@ pub fn variant_name(
             ""
         },
         if one { "_one_color" } else { "" },
-        if color_array { "" } else { "_current_color" },
         if textured { "_textured" } else { "" },
     )
 }
@@ -80,6 +74,20 @@ pub(crate) fn with_assembly(key: SpecKey, points: bool, point_size: f32) -> Spec
     spec.values[SpecConstant::Points as usize] = points as i32;
     spec.values[SpecConstant::PointSize as usize] = point_size.to_bits() as i32;
     spec
+}
+
+/// `key` with the vertex layout's constants set: its GL conversions (`SPEC_GL_SNORM`) and the
+/// record stride on `device` (`SPEC_RECORD_VEC4S`), in every pipeline.
+pub(crate) fn with_layout(key: SpecKey, gl_snorm: i32, device: &Device) -> SpecKey {
+    let mut spec = key;
+    spec.values[SpecConstant::GlSnorm as usize] = gl_snorm;
+    spec.values[SpecConstant::RecordVec4s as usize] = (record_stride_on(device) / 16) as i32;
+    spec
+}
+
+/// Bytes between draw records in ffvk's record buffers on `device`.
+pub(crate) fn record_stride_on(device: &Device) -> u32 {
+    crate::gpu::layout::record_stride(device.limits.min_uniform_buffer_offset_alignment) as u32
 }
 
 /// A shader module from embedded SPIR-V bytes, its descriptor set moved to `set`.
@@ -216,6 +224,8 @@ impl PipelineConfig {
 /// What a pipeline is found by.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 struct PipelineKey {
+    /// The vertex layout's number ([`Pipelines::add_layout`]).
+    layout: u32,
     mode: LightingMode,
     spec: SpecKey,
     raster: RasterState,
@@ -260,6 +270,8 @@ pub struct Pipelines {
     /// Empty layouts for the sets below `set_index`.
     _lower_sets: Vec<DescriptorSetLayout>,
     config: PipelineConfig,
+    /// The vertex layouts, by number: `config.vertex_input` first.
+    layouts: Vec<VertexInput>,
     /// The device blends into the target's color format (`COLOR_ATTACHMENT_BLEND`).
     blendable: bool,
     device: Arc<Device>,
@@ -272,6 +284,7 @@ impl Pipelines {
         config.vertex_input.validate()?;
         let blendable = config.target.check_device(device)?;
         config.vertex_input.check_limits(device)?;
+        let layouts = vec![config.vertex_input.clone()];
         let bindings = [vk::DescriptorSetLayoutBinding::default()
             .binding(0)
             .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC)
@@ -310,6 +323,7 @@ impl Pipelines {
             record_set_layout,
             _lower_sets: lower_sets,
             config,
+            layouts,
             blendable,
             device: device.clone(),
         })
@@ -344,6 +358,24 @@ impl Pipelines {
         &self.config
     }
 
+    /// Adds a vertex layout pipelines can be made for, checked as [`Pipelines::new`] checks
+    /// the first, and returns its number (0 is the config's); a layout equal to one added
+    /// before gets that one's number.
+    pub fn add_layout(&mut self, input: VertexInput) -> Result<u32> {
+        if let Some(at) = self.layouts.iter().position(|l| *l == input) {
+            return Ok(at as u32);
+        }
+        input.validate()?;
+        input.check_limits(&self.device)?;
+        self.layouts.push(input);
+        Ok(self.layouts.len() as u32 - 1)
+    }
+
+    /// Vertex layout number `layout` (0: the config's).
+    pub fn vertex_layout(&self, layout: u32) -> Option<&VertexInput> {
+        self.layouts.get(layout as usize)
+    }
+
     /// The pipeline of `mode` specialized by `key` ([`SpecKey::UBER`]: the uber-shader) with
     /// `raster`, textured or not, for small draws or not ([`SMALL_DRAW_VERTICES`]; only the
     /// fragment mode tells them apart), created on first use.
@@ -355,7 +387,13 @@ impl Pipelines {
         (textured, small): (bool, bool),
         (topology, restart): (Topology, bool),
     ) -> Result<vk::Pipeline> {
-        self.get_for((mode, key, raster), (textured, small), (topology, restart), false)
+        self.get_for(
+            0,
+            (mode, key, raster),
+            (textured, small),
+            (topology, restart),
+            false,
+        )
     }
 
     /// The pipeline cache pipelines are made through.
@@ -367,6 +405,7 @@ impl Pipelines {
     /// mode draw.
     pub(crate) fn get_for(
         &mut self,
+        layout: u32,
         (mode, key, raster): (LightingMode, SpecKey, RasterState),
         (textured, small): (bool, bool),
         (topology, restart): (Topology, bool),
@@ -374,6 +413,7 @@ impl Pipelines {
     ) -> Result<vk::Pipeline> {
         let gbuffer = gbuffer && mode == LightingMode::Fragment;
         let k = PipelineKey {
+            layout,
             mode,
             spec: key,
             raster,
@@ -392,9 +432,11 @@ impl Pipelines {
         Ok(raw)
     }
 
-    /// Whether the pipeline [`Pipelines::get`] would return for these exists already.
+    /// Whether the pipeline [`Pipelines::get`] would return for these (and vertex layout
+    /// `layout`) exists already.
     pub fn contains(
         &self,
+        layout: u32,
         mode: LightingMode,
         key: SpecKey,
         raster: RasterState,
@@ -402,6 +444,7 @@ impl Pipelines {
         (topology, restart): (Topology, bool),
     ) -> bool {
         self.pipelines.contains_key(&PipelineKey {
+            layout,
             mode,
             spec: key,
             raster,
@@ -422,6 +465,9 @@ impl Pipelines {
     fn create(&self, k: PipelineKey) -> Result<Pipeline> {
         let device = &self.device;
         let config = &self.config;
+        let input = self.layouts.get(k.layout as usize).ok_or(Error::Internal(
+            "a pipeline key names a vertex layout that was never added",
+        ))?;
         if k.mode == LightingMode::Flat && !device.info.provoking_vertex_last {
             return Err(Error::NotEnabled {
                 feature: "provokingVertexLast of VK_EXT_provoking_vertex",
@@ -439,8 +485,15 @@ impl Pipelines {
         if k.raster.depth_test && config.target.depth_format == vk::Format::UNDEFINED {
             return Err(LightingError::NoDepthAttachment.into());
         }
-        if k.textured && config.vertex_input.texcoord.is_none() {
-            return Err(LightingError::NoTexcoord.into());
+        if k.mode == LightingMode::Fragment && input.has_material_arrays() {
+            let arrays = input.front_materials.iter().map(|a| ("front", a));
+            let arrays = arrays.chain(input.back_materials.iter().map(|a| ("back", a)));
+            let first = arrays
+                .zip(MaterialArray::ALL.iter().cycle())
+                .find(|((_, a), _)| a.is_some())
+                .map(|((face, _), which)| format!("{face} {} material", which.gl_name()))
+                .unwrap_or_default();
+            return Err(LightingError::MaterialArraysInFragmentMode { attribute: first }.into());
         }
         for (what, Pixels(size), enabled, range, feature, flag) in [
             (
@@ -495,20 +548,9 @@ impl Pipelines {
             .into());
         }
         let name = if k.gbuffer {
-            let current = if config.vertex_input.color.is_some() {
-                ""
-            } else {
-                "_current_color"
-            };
-            format!("fragment_gbuffer{current}")
+            "fragment_gbuffer".to_owned()
         } else {
-            variant_name(
-                k.mode,
-                k.spec,
-                config.vertex_input.color.is_some(),
-                k.textured,
-                k.small,
-            )
+            variant_name(k.mode, k.spec, k.textured, k.small)
         };
         let name = name.as_str();
         let variant = shaders::variant(name)
@@ -517,6 +559,7 @@ impl Pipelines {
         let frag = shader_module(device, name, variant.fragment, config.set_index)?;
         let entries = spec_entries();
         let spec = with_assembly(k.spec, k.topology == Topology::PointList, k.raster.point_size.0);
+        let spec = with_layout(spec, input.gl_snorm_code(), device);
         let specialization = vk::SpecializationInfo::default()
             .map_entries(&entries)
             .data(bytemuck::bytes_of(&spec));
@@ -534,8 +577,8 @@ impl Pipelines {
         for stage in &mut stages {
             *stage = stage.specialization_info(&specialization);
         }
-        let attributes = config.vertex_input.attributes(k.textured);
-        let bindings = config.vertex_input.binding_descriptions();
+        let attributes = input.attributes(k.textured);
+        let bindings = input.binding_descriptions(record_stride_on(device));
         let vertex_input = vk::PipelineVertexInputStateCreateInfo::default()
             .vertex_binding_descriptions(&bindings)
             .vertex_attribute_descriptions(&attributes);

@@ -83,18 +83,14 @@ impl Ring {
             return Err(LightingError::NoFrameSlots.into());
         }
         let size = size as u64;
+        // Uniform blocks and instance elements alike lie the uniform offset alignment apart
+        // (the fragment mode binds an instance element as a uniform block too); an instance
+        // binding's stride is then this stride (`record_stride`).
         let align = device.limits.min_uniform_buffer_offset_alignment.max(16);
-        let stride = match use_ {
-            RingUse::Uniforms => size.div_ceil(align) * align,
-            // The instance stride is the element's size; Vulkan caps the alignment at 256,
-            // which a record's size is a multiple of.
-            RingUse::InstanceData if size.is_multiple_of(align) => size,
-            RingUse::InstanceData => {
-                return Err(Error::Internal(
-                    "an instance element whose size is not a multiple of the uniform offset alignment",
-                ))
-            }
-        };
+        let stride = size.div_ceil(align) * align;
+        if use_ == RingUse::InstanceData && stride != crate::gpu::layout::record_stride(align) {
+            return Err(Error::Internal("an instance element that is not a draw record"));
+        }
         Ok(Ring {
             slots: (0..slots).map(|_| Slot::default()).collect(),
             use_,

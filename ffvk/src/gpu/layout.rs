@@ -8,8 +8,8 @@
 use glam::{Mat3, Mat4};
 
 use crate::gl::state::{
-    Attenuation, ColorControl, ColorMaterialMode, Light, LightingState, Material, SpecularModel, SpotEdge,
-    StateError, MAX_LIGHTS,
+    Attenuation, ColorControl, ColorMaterialMode, DrawValues, Light, LightingState, Material, SpecularModel,
+    SpotEdge, StateError, MAX_LIGHTS,
 };
 
 /// GL clip space (z in [-w, w], y up) to Vulkan clip space (z in [0, w], y down), applied
@@ -203,8 +203,10 @@ pub struct StateBlock {
 }
 
 /// One draw's own values, as the vertex stages read them: per-instance vertex attributes at
-/// locations 4-19 (`glsl/record.glsl`), one record per draw in ffvk's record buffer, the draw's
-/// `firstInstance` naming its record. 256 bytes, sixteen `vec4`s.
+/// locations 4-20 (`glsl/record.glsl`), one record per draw in ffvk's record buffer, the draw's
+/// `firstInstance` naming its record, and the current values a layout without an array for them
+/// reads at locations 1-3 instead. 288 bytes, eighteen `vec4`s; in the buffer, records lie the
+/// device's uniform offset alignment apart ([`record_stride`]).
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct DrawRecord {
@@ -218,15 +220,30 @@ pub struct DrawRecord {
     pub front: [[f32; 4]; 4],
     /// The back material's, as `front` (locations 15-18; read only when `t_bs` is 1).
     pub back: [[f32; 4]; 4],
-    /// GL's current color (`glColor`), RGBA: the vertex color of the variants compiled for
-    /// meshes without a color array (location 19).
+    /// GL's current color (`glColor`), RGBA: every vertex's color (location 2) where the
+    /// layout has no color array.
     pub current_color: [f32; 4],
+    /// GL's current normal (`glNormal`), x y z (w unused, 0): every vertex's normal (location
+    /// 1) where the layout has no normal array.
+    pub current_normal: [f32; 4],
+    /// GL's current texture coordinates (`glTexCoord`), s t r q: every vertex's (location 3)
+    /// where a textured draw's layout has no texture coordinate array.
+    pub current_texcoord: [f32; 4],
 }
 
 /// The first vertex-attribute location of a [`DrawRecord`].
 pub const RECORD_FIRST_LOCATION: u32 = 4;
-/// How many vertex-attribute locations a [`DrawRecord`] takes (one `vec4` each).
-pub const RECORD_LOCATIONS: u32 = (std::mem::size_of::<DrawRecord>() / 16) as u32;
+/// How many vertex-attribute locations the record's per-draw values take: the modelview,
+/// normal matrix and materials (4-18, a `vec4` each) and the two shininesses (19, 20).
+pub const RECORD_LOCATIONS: u32 = 17;
+
+/// Bytes from one [`DrawRecord`] to the next in ffvk's record buffer on a device whose
+/// `minUniformBufferOffsetAlignment` is `alignment`: the record's size rounded up to it (the
+/// fragment mode binds a record as a uniform block at its own dynamic offset).
+pub fn record_stride(alignment: u64) -> u64 {
+    let align = alignment.max(16);
+    (std::mem::size_of::<DrawRecord>() as u64).div_ceil(align) * align
+}
 
 /// One draw packed: its GL state's block and its own record. [`DrawBlock::new`] checks
 /// everything a draw is checked for.
@@ -299,10 +316,18 @@ pub enum SpecConstant {
     /// `SPEC_SPOT_LIGHTS`: a bit per enabled light in packed order, set where the light is a
     /// spot (cutoff ≠ 180): the cone is compiled in for those lights only.
     SpotLights = 16,
+    /// `SPEC_GL_SNORM`: the vertex layout's signed normalized arrays, converted as GL 2.1 does
+    /// ((2c + 1) / (2^b − 1)): a byte per attribute (the normal's, then the color's), holding
+    /// b (0: none) and bit 7 when the array has a fourth component. Set from the layout when
+    /// the pipeline is made, in every pipeline.
+    GlSnorm = 17,
+    /// `SPEC_RECORD_VEC4S`: `vec4`s from one draw record to the next in the record buffer
+    /// ([`record_stride`] / 16), for the deferred lighting pass; set in every pipeline.
+    RecordVec4s = 18,
 }
 
 /// How many specialization constants there are.
-pub const SPEC_CONSTANT_COUNT: usize = 17;
+pub const SPEC_CONSTANT_COUNT: usize = 19;
 
 impl SpecConstant {
     /// Every constant, in `constant_id` order.
@@ -324,6 +349,8 @@ impl SpecConstant {
         SpecConstant::PointSize,
         SpecConstant::DirectionalLights,
         SpecConstant::SpotLights,
+        SpecConstant::GlSnorm,
+        SpecConstant::RecordVec4s,
     ];
 
     /// The `constant_id` in the GLSL.
@@ -351,6 +378,8 @@ impl SpecConstant {
             SpecConstant::SpotLights => "SPEC_SPOT_LIGHTS",
             SpecConstant::Points => "SPEC_POINTS",
             SpecConstant::PointSize => "SPEC_POINT_SIZE",
+            SpecConstant::GlSnorm => "SPEC_GL_SNORM",
+            SpecConstant::RecordVec4s => "SPEC_RECORD_VEC4S",
         }
     }
 }
@@ -599,16 +628,13 @@ impl DrawRecord {
     /// Checks and packs a draw's own values: the materials and current color of `state` and
     /// the `modelview` (invertible, while lighting: normals need (M⁻¹)ᵀ).
     pub fn new(state: &LightingState, modelview: Mat4) -> Self {
-        Self::with_values(state, (&state.front, &state.back, state.current_color), modelview)
+        Self::with_values(state, &DrawValues::of(state), modelview)
     }
 
-    /// [`DrawRecord::new`] with the front and back materials and the current color given apart
+    /// [`DrawRecord::new`] with the draw's own materials and current values given apart
     /// from `state`, whose switches (`GL_LIGHTING`, `GL_RESCALE_NORMAL`) still apply.
-    pub fn with_values(
-        state: &LightingState,
-        (front, back, current_color): (&Material, &Material, glam::Vec4),
-        modelview: Mat4,
-    ) -> Self {
+    pub fn with_values(state: &LightingState, values: &DrawValues, modelview: Mat4) -> Self {
+        let (front, back) = (&values.front, &values.back);
         let n = normal_matrix(modelview);
         let rescale = if state.rescale_normal {
             rescale_factor(modelview)
@@ -633,7 +659,9 @@ impl DrawRecord {
             ],
             front: face(front),
             back: face(back),
-            current_color: current_color.to_array(),
+            current_color: values.current_color.to_array(),
+            current_normal: values.current_normal.extend(0.0).to_array(),
+            current_texcoord: values.current_texcoord.to_array(),
         }
     }
 }
@@ -644,7 +672,7 @@ impl DrawBlock {
     /// `projection` is GL's; the Vulkan clip conversion is applied here.
     pub fn new(state: &LightingState, modelview: Mat4, projection: Mat4) -> Result<Self, StateError> {
         state.check_drawable()?;
-        state.check_draw((&state.front, &state.back, state.current_color), modelview)?;
+        state.check_draw(&DrawValues::of(state), modelview)?;
         Ok(DrawBlock {
             state: StateBlock::new(state, projection),
             record: DrawRecord::new(state, modelview),
@@ -706,6 +734,6 @@ mod tests {
         // (M⁻¹)ᵀ of 2I is I/2, and RESCALE_NORMAL's factor brings its normals back to length 1.
         assert_eq!(r.normal_matrix[0][0], 0.5);
         assert_eq!(r.normal_matrix[2][3], 2.0);
-        assert_eq!(RECORD_LOCATIONS, 16);
+        assert_eq!(RECORD_LOCATIONS, 17);
     }
 }

@@ -8,17 +8,18 @@
 //!
 //! The interface of every variant in [`shaders::VARIANTS`]:
 //! - entry point `main` in both stages;
-//! - vertex inputs: location 0 position (`vec3`), 1 normal (`vec3`), 2 color (`vec4`; absent
-//!   in the `*_current_color` variants, which read [`layout::DrawRecord::current_color`]), in
-//!   the `*_textured` variants 3 texture coordinates (`vec2`), and locations 4-19 the draw's
-//!   [`layout::DrawRecord`], sixteen `vec4`s (`R32G32B32A32_SFLOAT` at 16-byte steps) read per
-//!   instance: ffvk binds one buffer of records and names a draw's by its `firstInstance`;
+//! - vertex inputs: location 0 position (`vec4`), 1 normal (`vec3`), 2 color (`vec4`), in the
+//!   `*_textured` variants 3 texture coordinates (`vec4`), each the caller's array or the
+//!   record's current value ([`crate::VertexInput::attributes`] says which); locations 4-18 the
+//!   draw's [`layout::DrawRecord`] matrices and materials (`vec4`s) and 19-20 its shininesses
+//!   (`float`s), read per instance: ffvk binds one buffer of records
+//!   ([`layout::record_stride`] apart) and names a draw's by its `firstInstance`;
 //! - one uniform block, [`layout::StateBlock`], at descriptor set 0, binding 0, read by both
 //!   stages ([`crate::draw::pipeline::set_descriptor_set`] rewrites the set of a module);
 //!   ffvk binds it as `UNIFORM_BUFFER_DYNAMIC`, a plain `UNIFORM_BUFFER` works the same;
 //! - in the `*_textured` variants, a `sampler2D` (combined image sampler) at set 1, binding 0,
 //!   read by the fragment stage (moved with the block: set_descriptor_set adds its offset);
-//! - in the `fragment` variants (and their `_current_color` and `_textured` builds), the
+//! - in the `fragment` variants (and their `_textured` builds), the
 //!   draw's [`layout::DrawRecord`] again, as a std140 uniform block `Record` at set 2, binding
 //!   0, read by the fragment stage (its materials; ffvk binds the record buffer there as
 //!   `UNIFORM_BUFFER_DYNAMIC` at the record's offset); the `fragment_small` variants have no

@@ -20,7 +20,8 @@ use super::frame::{FragmentPath, Frame};
 use super::subresource;
 use crate::draw::lighting::{Lighting, Staged};
 use crate::draw::pipeline::{
-    shader_module, spec_entries, with_assembly, Specialize, COLOR_FORMAT, DEPTH_FORMAT, GBUFFER_FORMATS,
+    shader_module, spec_entries, with_assembly, with_layout, Specialize, COLOR_FORMAT, DEPTH_FORMAT,
+    GBUFFER_FORMATS,
 };
 use crate::error::{Error, Result};
 use crate::gl::state::LightingMode;
@@ -294,7 +295,7 @@ impl Deferred {
         let vert = shader_module(&self.device, name, variant.vertex, 0)?;
         let frag = shader_module(&self.device, name, variant.fragment, 0)?;
         let entries = spec_entries();
-        let spec = with_assembly(key, false, 1.0);
+        let spec = with_layout(with_assembly(key, false, 1.0), 0, &self.device);
         let specialization = vk::SpecializationInfo::default()
             .map_entries(&entries)
             .data(bytemuck::bytes_of(&spec));

@@ -30,8 +30,8 @@ pub use self::meaning::{auto_exposure, GltfMeaning};
 pub use self::texture::MeshTexture;
 use crate::gl::presets;
 use crate::gl::state::{
-    Attenuation, Cap, ColorControl, ColorMaterialMode, Face, GlState, LightModelParam, LightParam,
-    LightingMode, LightingState, Material, SpecularModel, SpotEdge, StateError, MAX_LIGHTS,
+    Attenuation, Cap, ColorControl, ColorMaterialMode, DrawValues, Face, GlState, LightModelParam,
+    LightParam, LightingMode, LightingState, Material, SpecularModel, SpotEdge, StateError, MAX_LIGHTS,
 };
 use crate::mesh::MeshData;
 

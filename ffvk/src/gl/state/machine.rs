@@ -3,7 +3,7 @@
 //! matrices), each checked as GL checks it before anything changes; the state and its types
 //! are in [`state`](super).
 
-use glam::{Mat3, Mat4, Vec4};
+use glam::{Mat3, Mat4, Vec3, Vec4};
 
 use super::{
     check_light_scalar, finite_vec, in_range, Cap, ColorMaterialMode, Face, Light, LightModelParam,
@@ -149,6 +149,24 @@ impl GlState {
         finite_vec("GL_CURRENT_COLOR", color.to_array().as_slice())?;
         self.lighting.current_color = color;
         self.track_current_color();
+        Ok(())
+    }
+
+    /// glNormal: the current normal, every vertex's normal in draws whose layout has no normal
+    /// array. Not normalized here (GL normalizes only under `GL_NORMALIZE`); a NaN or
+    /// infinite component is an error.
+    pub fn normal(&mut self, normal: Vec3) -> Result<(), StateError> {
+        finite_vec("GL_CURRENT_NORMAL", normal.to_array().as_slice())?;
+        self.lighting.current_normal = normal;
+        Ok(())
+    }
+
+    /// glTexCoord4f: the current texture coordinates (glTexCoord2f is (s, t, 0, 1)), every
+    /// vertex's in textured draws whose layout has no texture coordinate array; a NaN or
+    /// infinite component is an error.
+    pub fn tex_coord(&mut self, texcoord: Vec4) -> Result<(), StateError> {
+        finite_vec("GL_CURRENT_TEXTURE_COORDS", texcoord.to_array().as_slice())?;
+        self.lighting.current_texcoord = texcoord;
         Ok(())
     }
 

@@ -43,7 +43,9 @@ use glam::{Vec3, Vec4};
 use super::texture::{TexEnvMode, TextureUnit};
 
 mod machine;
+mod values;
 pub use machine::GlState;
+pub use values::DrawValues;
 
 /// Lights ffvk evaluates per draw (GL_MAX_LIGHTS). GL requires at least 8.
 pub const MAX_LIGHTS: usize = 16;
@@ -558,6 +560,13 @@ pub struct LightingState {
     /// color of every vertex of a draw without a color array. With a color array each vertex
     /// has its own color and this one is not read.
     pub current_color: Vec4,
+    /// GL's current normal (`GL_CURRENT_NORMAL`, set by `glNormal`), (0, 0, 1) initially: the
+    /// normal of every vertex of a draw whose layout has no normal array.
+    pub current_normal: Vec3,
+    /// GL's current texture coordinates (`GL_CURRENT_TEXTURE_COORDS`, set by `glTexCoord`),
+    /// (0, 0, 0, 1) initially: those of every vertex of a textured draw whose layout has no
+    /// texture coordinate array.
+    pub current_texcoord: Vec4,
 }
 
 impl Default for LightingState {
@@ -574,6 +583,8 @@ impl Default for LightingState {
             rescale_normal: false,
             mode: LightingMode::Vertex,
             current_color: Vec4::ONE,
+            current_normal: Vec3::Z,
+            current_texcoord: Vec4::W,
         }
     }
 }
@@ -582,7 +593,7 @@ impl LightingState {
     /// Checks every value against GL's ranges; for state built field by field rather than
     /// through [`GlState`]'s setters.
     pub fn validate(&self) -> Result<(), StateError> {
-        check_values((&self.front, &self.back, self.current_color))?;
+        DrawValues::of(self).validate()?;
         self.validate_shared()
     }
 
@@ -619,15 +630,11 @@ impl LightingState {
         Ok(())
     }
 
-    /// What a draw's own values must be under this state: its materials and current color
-    /// in range and finite, and, lighting, its `modelview` invertible (normals need
-    /// (M⁻¹)ᵀ). The one per-draw check.
-    pub fn check_draw(
-        &self,
-        (front, back, current_color): (&Material, &Material, Vec4),
-        modelview: glam::Mat4,
-    ) -> Result<(), StateError> {
-        check_values((front, back, current_color))?;
+    /// What a draw's own values must be under this state: its materials and current values
+    /// in range and finite ([`DrawValues::validate`]), and, lighting, its `modelview`
+    /// invertible (normals need (M⁻¹)ᵀ). The one per-draw check.
+    pub fn check_draw(&self, values: &DrawValues, modelview: glam::Mat4) -> Result<(), StateError> {
+        values.validate()?;
         if self.lighting {
             let det = glam::Mat3::from_mat4(modelview).determinant();
             if det == 0.0 || !det.is_finite() {
@@ -636,13 +643,6 @@ impl LightingState {
         }
         Ok(())
     }
-}
-
-/// A draw's own values in range and finite: the two materials and the current color.
-fn check_values((front, back, current_color): (&Material, &Material, Vec4)) -> Result<(), StateError> {
-    front.validate()?;
-    back.validate()?;
-    finite_vec("GL_CURRENT_COLOR", current_color.to_array().as_slice())
 }
 
 /// cos(c_rli), exact at 90° (where the f64 cosine is 6e-17, not 0): with the spec's

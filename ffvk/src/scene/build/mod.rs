@@ -423,7 +423,10 @@ impl Builder<'_> {
         }
         for mesh in meshes {
             let modelview = view * mesh.model;
-            match state.check_draw((&mesh.front, &mesh.back, state.current_color), modelview) {
+            match state.check_draw(
+                &DrawValues::new(mesh.front, mesh.back, state.current_color),
+                modelview,
+            ) {
                 Ok(()) => {}
                 Err(StateError::SingularModelview { determinant }) => {
                     let model_det = glam::Mat3::from_mat4(mesh.model).determinant();

@@ -1,0 +1,97 @@
+//! A draw's own values ([`DrawValues`]): what GL programs change between draws without
+//! touching lights or switches, and the per-draw check of them.
+
+use glam::{Vec3, Vec4};
+
+use super::{finite_vec, LightingState, Material, StateError};
+
+/// A draw's own values, the GL state programs change between draws without touching lights or
+/// switches: the two materials (`glMaterial`, or `COLOR_MATERIAL`'s tracking) and GL's
+/// current values (`glColor`, `glNormal`, `glTexCoord`). A [`LitDraw`](crate::LitDraw) with its
+/// own values ([`LitDraw::with_values`](crate::LitDraw::with_values)) takes them instead of
+/// its state's, so that draws which differ only in these can share one [`LightingState`]: an
+/// emulation layer keeps a state per change of lights or switches and these per draw (about
+/// 200 bytes instead of a 2.5 KB state).
+///
+/// ```
+/// use ffvk::gl::state::{Face, GlState, MaterialParam};
+/// use ffvk::glam::{Vec3, Vec4};
+/// use ffvk::DrawValues;
+///
+/// let mut gl = GlState::new();
+/// gl.material(Face::Front, MaterialParam::Diffuse(Vec4::new(1.0, 0.0, 0.0, 1.0))).unwrap();
+/// gl.normal(Vec3::new(0.0, 1.0, 0.0)).unwrap();
+/// let red = DrawValues::of(&gl.lighting);
+/// assert_eq!(red.front.diffuse, Vec4::new(1.0, 0.0, 0.0, 1.0));
+/// assert_eq!(red.current_color, Vec4::ONE);
+/// assert_eq!(red.current_normal, Vec3::Y);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub struct DrawValues {
+    /// The front material (also the back's, unless two-sided lighting is on).
+    pub front: Material,
+    /// The back material.
+    pub back: Material,
+    /// GL's current color: every vertex's color when the layout has no color array.
+    pub current_color: Vec4,
+    /// GL's current normal: every vertex's normal when the layout has no normal array.
+    pub current_normal: Vec3,
+    /// GL's current texture coordinates (s, t, r, q): every vertex's when a textured draw's
+    /// layout has no texture coordinate array.
+    pub current_texcoord: Vec4,
+}
+
+impl DrawValues {
+    /// The values `state` holds now: after a program's `glMaterial`, `glColor`, `glNormal`,
+    /// `glTexCoord` and `glColorMaterial` calls on a [`GlState`](super::GlState), its
+    /// materials already carry what color-material tracking wrote into them.
+    pub fn of(state: &LightingState) -> Self {
+        DrawValues {
+            front: state.front,
+            back: state.back,
+            current_color: state.current_color,
+            current_normal: state.current_normal,
+            current_texcoord: state.current_texcoord,
+        }
+    }
+
+    /// These materials and current color, with GL's initial current normal (0, 0, 1) and
+    /// texture coordinates (0, 0, 0, 1).
+    pub fn new(front: Material, back: Material, current_color: Vec4) -> Self {
+        DrawValues {
+            front,
+            back,
+            current_color,
+            current_normal: Vec3::Z,
+            current_texcoord: Vec4::W,
+        }
+    }
+
+    /// These values with `normal` as the current normal.
+    #[must_use]
+    pub fn with_normal(mut self, normal: Vec3) -> Self {
+        self.current_normal = normal;
+        self
+    }
+
+    /// These values with `texcoord` as the current texture coordinates.
+    #[must_use]
+    pub fn with_texcoord(mut self, texcoord: Vec4) -> Self {
+        self.current_texcoord = texcoord;
+        self
+    }
+
+    /// Checks the values a draw carries: the materials in GL's ranges and every current value
+    /// finite. The one per-draw check of them ([`LightingState::check_draw`]).
+    pub fn validate(&self) -> Result<(), StateError> {
+        self.front.validate()?;
+        self.back.validate()?;
+        finite_vec("GL_CURRENT_COLOR", self.current_color.to_array().as_slice())?;
+        finite_vec("GL_CURRENT_NORMAL", self.current_normal.to_array().as_slice())?;
+        finite_vec(
+            "GL_CURRENT_TEXTURE_COORDS",
+            self.current_texcoord.to_array().as_slice(),
+        )
+    }
+}
