@@ -653,8 +653,8 @@ typedef struct FfvkRaster {
  `struct_size` to `sizeof(FfvkDrawInfo)`.
 
  It grows as `FfvkRendererCreateInfo` does: later headers append fields (each with its
- default), the library accepts every published version's size (this header's is version 1)
- and reads only what `struct_size` covers. `raster` never grows (`FfvkRaster` keeps its
+ default), the library accepts every published version's size (this header's is version 2,
+ which appended `layout`) and reads only what `struct_size` covers. `raster` never grows (`FfvkRaster` keeps its
  size): raster state added later is appended to `FfvkDrawInfo` itself, GL's initial value
  its default.
  */
@@ -1484,7 +1484,8 @@ void ffvkRasterDefaults(struct FfvkRaster *raster);
 /*
  The message of the last call on this thread that returned an error code (or set a GL error
  through a context): what failed, the value, what was expected. Never null; "" before any
- failure. The string is ffvk's, valid until the next ffvk call on this thread.
+ failure. `ffvkDeviceRequirements` sets it when it succeeds too: what the device lacks, or
+ "". The string is ffvk's, valid until the next ffvk call on this thread.
  */
 const char *ffvkResultMessage(void);
 

@@ -21,23 +21,18 @@
 //!   new version, with GL's initial value as the default.
 //! - New behaviour that needs no struct comes as new functions; no function's signature changes.
 //!
-//! How to add a version (for ffvk's maintainers): append the fields to the struct with a doc
-//! comment naming each one's default; freeze the previous version with [`frozen_version!`]
-//! (once it was published, so that its size no longer follows the struct's); append a
-//! [`Version`] to the struct's [`Versioned::VERSIONS`] whose `first_field` is the offset of
-//! the first new field; and give the new fields their defaults in [`Versioned::defaults`]. The
-//! checks below fail to compile when a struct grew without a version, when a version's fields
-//! start inside the previous version's tail padding (a caller's padding bytes would be read as
-//! fields), or when a frozen version's fields moved.
+//! How to add a version (for ffvk's maintainers, in `render/versions.rs`): append the fields to
+//! the struct with a doc comment naming each one's default; freeze the previous version with
+//! `frozen_version!` (once it was published, so that its size no longer follows the struct's);
+//! append a [`Version`] to the struct's [`Versioned::VERSIONS`] whose `first_field` is the
+//! offset of the first new field; and give the new fields their defaults in
+//! [`Versioned::defaults`]. The checks fail to compile when a struct grew without a version,
+//! when a version's fields start inside the previous version's tail padding (a caller's
+//! padding bytes would be read as fields), or when a frozen version's fields moved.
 
-use std::mem::{offset_of, size_of, MaybeUninit};
+use std::mem::{size_of, MaybeUninit};
 
-use ffvk::ash::vk;
-
-use crate::layout::FfvkVertexLayoutInfo;
-use crate::render::{FfvkAttribute, FfvkDrawInfo, FfvkRaster, FfvkRendererCreateInfo, FfvkTexture};
 use crate::result::{fail, FfvkResult};
-use crate::vk_types::*;
 
 /// One published version of a struct.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -49,12 +44,16 @@ pub struct Version {
     pub first_field: usize,
 }
 
-/// A struct the caller passes with a `struct_size` (its first field, a `u32`).
+/// A struct the caller passes with a `struct_size`: `FfvkRendererCreateInfo`, `FfvkDrawInfo`
+/// and `FfvkVertexLayoutInfo` (their versions are in `render/versions.rs`).
 ///
-/// Every field of an implementing type accepts any bit pattern (integers, raw pointers,
-/// nullable function pointers, Vulkan's transparent handles and enums): the caller's bytes are
-/// copied into it as they are, and checked afterwards by the entry point.
-pub(crate) trait Versioned: Sized {
+/// # Safety
+///
+/// The type is `#[repr(C)]` with `struct_size: u32` as its first field, and every field
+/// accepts any bit pattern (integers, raw pointers, nullable function pointers, Vulkan's
+/// transparent handles and enums): the caller's bytes are copied into it as they are, and
+/// checked afterwards by the entry point.
+pub unsafe trait Versioned: Sized {
     /// The struct's C name, for messages.
     const NAME: &'static str;
     /// Its published versions, oldest first; the last is the struct as this crate declares it.
@@ -67,7 +66,7 @@ pub(crate) trait Versioned: Sized {
 /// Fails to compile unless `T`'s versions are consistent: version 1 starts at the struct's
 /// start, each later version is larger and its fields start at or after the previous size,
 /// and the last version is the struct as declared now.
-const fn check_versions<T: Versioned>() {
+pub(crate) const fn check_versions<T: Versioned>() {
     let v = T::VERSIONS;
     assert!(!v.is_empty(), "a versioned struct has at least version 1");
     assert!(v[0].first_field == 0, "version 1 starts at the struct's start");
@@ -85,7 +84,7 @@ const fn check_versions<T: Versioned>() {
     }
     assert!(
         v[v.len() - 1].size == size_of::<T>(),
-        "the struct's size is not its last version's: a field was added without a Version in ffvk-c/src/abi.rs (see its module documentation)"
+        "the struct's size is not its last version's: a field was added without a Version in ffvk-c/src/render/versions.rs (see ffvk-c/src/abi.rs)"
     );
 }
 
@@ -103,7 +102,7 @@ macro_rules! frozen_version {
         }
         const _: () = {
             $(assert!(
-                offset_of!($frozen, $field) == offset_of!($current, $field),
+                ::std::mem::offset_of!($frozen, $field) == ::std::mem::offset_of!($current, $field),
                 concat!(
                     stringify!($current), "::", stringify!($field),
                     " moved: a published version's fields keep their offsets"
@@ -119,169 +118,7 @@ macro_rules! frozen_version {
         };
     };
 }
-
-frozen_version! {
-    /// `FfvkRendererCreateInfo` as version 1 of `ffvk.h` declared it.
-    RendererCreateInfoV1 of FfvkRendererCreateInfo {
-        struct_size: u32,
-        get_instance_proc_addr: PFN_vkGetInstanceProcAddr,
-        instance: VkInstance,
-        physical_device: VkPhysicalDevice,
-        device: VkDevice,
-        enabled_features: u32,
-        color_format: VkFormat,
-        depth_format: VkFormat,
-        samples: VkSampleCountFlagBits,
-        bindings: *const VkVertexInputBindingDescription,
-        binding_count: u32,
-        position: FfvkAttribute,
-        normal: FfvkAttribute,
-        color: *const FfvkAttribute,
-        texcoord: *const FfvkAttribute,
-        frames_in_flight: u32,
-        set_index: u32,
-        pipeline_cache: VkPipelineCache,
-    }
-}
-
-frozen_version! {
-    /// `FfvkDrawInfo` as version 1 of `ffvk.h` declared it.
-    DrawInfoV1 of FfvkDrawInfo {
-        struct_size: u32,
-        mode: u32,
-        vertex_buffers: *const VkBuffer,
-        vertex_offsets: *const VkDeviceSize,
-        vertex_buffer_count: u32,
-        index_buffer: VkBuffer,
-        index_offset: VkDeviceSize,
-        index_type: VkIndexType,
-        first: u32,
-        count: u32,
-        vertex_offset: i32,
-        primitive_restart: u8,
-        raster: FfvkRaster,
-        texture: *const FfvkTexture,
-    }
-}
-
-impl Versioned for FfvkRendererCreateInfo {
-    const NAME: &'static str = "FfvkRendererCreateInfo";
-    const VERSIONS: &'static [Version] = &[Version {
-        size: size_of::<RendererCreateInfoV1>(),
-        first_field: 0,
-    }];
-    fn defaults() -> Self {
-        FfvkRendererCreateInfo {
-            struct_size: size_of::<FfvkRendererCreateInfo>() as u32,
-            get_instance_proc_addr: None,
-            instance: vk::Instance::null(),
-            physical_device: vk::PhysicalDevice::null(),
-            device: vk::Device::null(),
-            enabled_features: 0,
-            color_format: vk::Format::UNDEFINED,
-            depth_format: vk::Format::UNDEFINED,
-            samples: vk::SampleCountFlags::TYPE_1,
-            bindings: std::ptr::null(),
-            binding_count: 0,
-            position: FfvkAttribute {
-                binding: 0,
-                offset: 0,
-                format: vk::Format::UNDEFINED,
-            },
-            normal: FfvkAttribute {
-                binding: 0,
-                offset: 0,
-                format: vk::Format::UNDEFINED,
-            },
-            color: std::ptr::null(),
-            texcoord: std::ptr::null(),
-            frames_in_flight: 0,
-            set_index: 0,
-            pipeline_cache: vk::PipelineCache::null(),
-        }
-    }
-}
-
-impl Versioned for FfvkDrawInfo {
-    const NAME: &'static str = "FfvkDrawInfo";
-    const VERSIONS: &'static [Version] = &[
-        Version {
-            size: size_of::<DrawInfoV1>(),
-            first_field: 0,
-        },
-        // Version 2: the draw's vertex layout.
-        Version {
-            size: size_of::<FfvkDrawInfo>(),
-            first_field: offset_of!(FfvkDrawInfo, layout),
-        },
-    ];
-    fn defaults() -> Self {
-        FfvkDrawInfo {
-            struct_size: size_of::<FfvkDrawInfo>() as u32,
-            mode: 0,
-            vertex_buffers: std::ptr::null(),
-            vertex_offsets: std::ptr::null(),
-            vertex_buffer_count: 0,
-            index_buffer: vk::Buffer::null(),
-            index_offset: 0,
-            index_type: vk::IndexType::UINT32,
-            first: 0,
-            count: 0,
-            vertex_offset: 0,
-            primitive_restart: 0,
-            raster: crate::render::raster_defaults(),
-            texture: std::ptr::null(),
-            layout: std::ptr::null(),
-        }
-    }
-}
-
-impl Versioned for FfvkVertexLayoutInfo {
-    const NAME: &'static str = "FfvkVertexLayoutInfo";
-    const VERSIONS: &'static [Version] = &[Version {
-        size: size_of::<FfvkVertexLayoutInfo>(),
-        first_field: 0,
-    }];
-    fn defaults() -> Self {
-        let none = FfvkAttribute {
-            binding: 0,
-            offset: 0,
-            format: vk::Format::UNDEFINED,
-        };
-        FfvkVertexLayoutInfo {
-            struct_size: size_of::<FfvkVertexLayoutInfo>() as u32,
-            bindings: std::ptr::null(),
-            binding_count: 0,
-            position: none,
-            normal: std::ptr::null(),
-            color: std::ptr::null(),
-            texcoord: std::ptr::null(),
-            materials: std::ptr::null(),
-            material_count: 0,
-        }
-    }
-}
-
-const _: () = {
-    assert!(offset_of!(FfvkRendererCreateInfo, struct_size) == 0);
-    assert!(offset_of!(FfvkDrawInfo, struct_size) == 0);
-    assert!(offset_of!(FfvkVertexLayoutInfo, struct_size) == 0);
-    check_versions::<FfvkRendererCreateInfo>();
-    check_versions::<FfvkDrawInfo>();
-    check_versions::<FfvkVertexLayoutInfo>();
-};
-
-/// The published versions of the struct named `name` (`"FfvkRendererCreateInfo"`,
-/// `"FfvkDrawInfo"`), oldest first, or `None` for a struct without `struct_size`: what the
-/// tests compare an old header's `sizeof` with.
-pub fn versions(name: &str) -> Option<&'static [Version]> {
-    match name {
-        FfvkRendererCreateInfo::NAME => Some(FfvkRendererCreateInfo::VERSIONS),
-        FfvkDrawInfo::NAME => Some(FfvkDrawInfo::VERSIONS),
-        FfvkVertexLayoutInfo::NAME => Some(FfvkVertexLayoutInfo::VERSIONS),
-        _ => None,
-    }
-}
+pub(crate) use frozen_version;
 
 /// The sizes `T` accepts, for a message: `136 (version 1)`, `136 (version 1) or 144 (version 2)`.
 fn accepted<T: Versioned>() -> String {
@@ -343,36 +180,9 @@ pub(crate) unsafe fn read<T: Versioned>(function: &str, ptr: *const T) -> Result
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use std::mem::offset_of;
 
-    #[test]
-    fn every_struct_with_a_struct_size_has_its_published_versions_the_last_its_size_today() {
-        for (name, size) in [
-            ("FfvkRendererCreateInfo", size_of::<FfvkRendererCreateInfo>()),
-            ("FfvkVertexLayoutInfo", size_of::<FfvkVertexLayoutInfo>()),
-        ] {
-            let versions = versions(name).expect("a versioned struct");
-            assert_eq!(versions, [Version { size, first_field: 0 }], "{name}");
-        }
-        // FfvkDrawInfo: version 1 (ffvk-c 0.1's first header) and version 2, which appended
-        // the layout.
-        let draw = versions("FfvkDrawInfo").expect("a versioned struct");
-        assert_eq!(
-            draw,
-            [
-                Version {
-                    size: size_of::<DrawInfoV1>(),
-                    first_field: 0
-                },
-                Version {
-                    size: size_of::<FfvkDrawInfo>(),
-                    first_field: offset_of!(FfvkDrawInfo, layout)
-                }
-            ]
-        );
-        assert_eq!(offset_of!(FfvkDrawInfo, layout), size_of::<DrawInfoV1>());
-        assert_eq!(versions("FfvkRaster"), None);
-    }
+    use super::*;
 
     /// A struct at version 2: version 1 had `struct_size` and `a`; version 2 appended `b`.
     #[repr(C)]
@@ -389,7 +199,8 @@ mod tests {
         a: u32,
     }
 
-    impl Versioned for Grown {
+    // SAFETY: repr(C), struct_size first, integer fields.
+    unsafe impl Versioned for Grown {
         const NAME: &'static str = "Grown";
         const VERSIONS: &'static [Version] = &[
             Version {
@@ -480,16 +291,5 @@ mod tests {
                 assert!(text.contains(word), "{text:?} does not say {word:?}");
             }
         }
-    }
-
-    #[test]
-    fn a_version_1_draw_info_reads_every_field_the_caller_wrote() {
-        let mut info = FfvkDrawInfo::defaults();
-        info.mode = 4;
-        info.count = 36;
-        info.raster.line_width = 2.0;
-        // SAFETY: a whole current struct, aligned, its struct_size its own size.
-        let read = unsafe { read("test", &info) }.expect("version 1's size is accepted");
-        assert_eq!((read.mode, read.count, read.raster.line_width), (4, 36, 2.0));
     }
 }

@@ -92,10 +92,7 @@ gl_enums! {
 /// forwarding every `glEnable`, a `glTexEnv` of `GL_COMBINE`), as `<GL/gl.h>` spells them:
 /// messages name them. The header does not define them.
 const MESSAGE_NAMES: &[(&str, u32)] = &[
-    ("GL_INVALID_OPERATION", 0x0502),
     ("GL_STACK_OVERFLOW", 0x0503),
-    ("GL_CURRENT_NORMAL", 0x0B02),
-    ("GL_CURRENT_TEXTURE_COORDS", 0x0B03),
     ("GL_POINT_SMOOTH", 0x0B10),
     ("GL_LINE_SMOOTH", 0x0B20),
     ("GL_LINE_STIPPLE", 0x0B24),

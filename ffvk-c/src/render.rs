@@ -20,6 +20,7 @@ use ffvk::{
 };
 
 mod raster;
+mod versions;
 
 use raster::raster;
 pub(crate) use raster::raster_defaults;
@@ -133,8 +134,8 @@ pub struct FfvkRendererCreateInfo {
 /// `struct_size` to `sizeof(FfvkDrawInfo)`.
 ///
 /// It grows as `FfvkRendererCreateInfo` does: later headers append fields (each with its
-/// default), the library accepts every published version's size (this header's is version 1)
-/// and reads only what `struct_size` covers. `raster` never grows (`FfvkRaster` keeps its
+/// default), the library accepts every published version's size (this header's is version 2,
+/// which appended `layout`) and reads only what `struct_size` covers. `raster` never grows (`FfvkRaster` keeps its
 /// size): raster state added later is appended to `FfvkDrawInfo` itself, GL's initial value
 /// its default.
 #[repr(C)]

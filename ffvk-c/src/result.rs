@@ -141,7 +141,8 @@ pub(crate) fn panic_text(payload: &Box<dyn std::any::Any + Send>) -> String {
 
 /// The message of the last call on this thread that returned an error code (or set a GL error
 /// through a context): what failed, the value, what was expected. Never null; "" before any
-/// failure. The string is ffvk's, valid until the next ffvk call on this thread.
+/// failure. `ffvkDeviceRequirements` sets it when it succeeds too: what the device lacks, or
+/// "". The string is ffvk's, valid until the next ffvk call on this thread.
 #[no_mangle]
 pub extern "C" fn ffvkResultMessage() -> *const c_char {
     catch_unwind(|| MESSAGE.with(|m| m.borrow().as_ptr())).unwrap_or(c"internal error".as_ptr())

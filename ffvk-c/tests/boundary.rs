@@ -20,6 +20,7 @@ use ffvk_c::mesh::*;
 use ffvk_c::query::*;
 use ffvk_c::render::*;
 use ffvk_c::result::{ffvkResultMessage, FfvkResult};
+use ffvk_c::viewport::{ffvkScissor, ffvkViewport};
 
 // GL's enums, as <GL/gl.h> spells them (checked against the header's list below).
 const NO_ERROR: u32 = 0;
@@ -1549,7 +1550,14 @@ fn every_gl_name_a_message_prints_has_the_value_gl_h_gives_it() {
         headers += &std::fs::read_to_string(path)
             .unwrap_or_else(|e| panic!("{path}: {e} (install the Debian package libgl-dev)"));
     }
-    for (name, value) in ffvk_c::enums::message_names() {
+    let names: Vec<(&str, u32)> = ffvk_c::enums::message_names().collect();
+    for (i, (name, _)) in names.iter().enumerate() {
+        assert!(
+            !names[..i].iter().any(|(n, _)| n == name),
+            "{name} is listed twice"
+        );
+    }
+    for (name, value) in names {
         let defined = headers.lines().find_map(|line| {
             let mut words = line.split_whitespace();
             (words.next() == Some("#define") && words.next() == Some(name))
@@ -2487,6 +2495,108 @@ fn the_range_forms_size_query_and_refusals_are_those_of_the_listed_form() {
         });
     }
     assert_eq!(out, [u32::MAX; 16]);
+}
+
+// ---------------------------------------------------------------------------------------
+// GL's viewport and scissor box as Vulkan's.
+
+#[test]
+fn viewport_and_scissor_refuse_what_gl_refuses_naming_the_function_and_the_value_and_write_nothing() {
+    let kept = vk::Viewport {
+        x: 7.0,
+        y: 7.0,
+        width: 7.0,
+        height: 7.0,
+        min_depth: 0.7,
+        max_depth: 0.7,
+    };
+    let mut v = kept;
+    let kept_rect = vk::Rect2D {
+        offset: vk::Offset2D { x: 7, y: 7 },
+        extent: vk::Extent2D { width: 7, height: 7 },
+    };
+    let mut s = kept_rect;
+    let (vp, sp) = (&raw mut v, &raw mut s);
+    // SAFETY: each out pointer is writable, null or misaligned (what is probed).
+    unsafe {
+        assert_each_invalid_argument!(
+            [
+                "width is -1: expected 0 or more",
+                "GL_INVALID_VALUE in glViewport"
+            ],
+            {
+                ffvkViewport(0, 0, -1, 10, 48, 0.0, 1.0, vp);
+            }
+        );
+        assert_each_invalid_argument!(["height is 0: expected at least 1", "skip the draws instead"], {
+            ffvkViewport(0, 0, 10, 0, 48, 0.0, 1.0, vp);
+        });
+        assert_each_invalid_argument!(["depth_range [NaN, 1] holds NaN"], {
+            ffvkViewport(0, 0, 10, 10, 48, f64::NAN, 1.0, vp);
+        });
+        assert_each_invalid_argument!(["target height is 4294967295: expected at most 2147483647"], {
+            ffvkViewport(0, 0, 10, 10, u32::MAX, 0.0, 1.0, vp);
+        });
+        assert_each_invalid_argument!(["viewport is a null pointer"], {
+            ffvkViewport(0, 0, 10, 10, 48, 0.0, 1.0, null_mut());
+        });
+        assert_each_invalid_argument!(
+            [
+                "height is -3: expected 0 or more",
+                "GL_INVALID_VALUE in glScissor"
+            ],
+            {
+                ffvkScissor(0, 0, 10, -3, 64, 48, sp);
+            }
+        );
+        assert_each_invalid_argument!(["target width is 2147483648"], {
+            ffvkScissor(0, 0, 10, 10, 1 << 31, 48, sp);
+        });
+        assert_each_invalid_argument!(["scissor is a null pointer"], {
+            ffvkScissor(0, 0, 10, 10, 64, 48, null_mut());
+        });
+        let bytes = [0u64; 4];
+        let bad = bytes
+            .as_ptr()
+            .cast::<u8>()
+            .wrapping_add(1)
+            .cast::<vk::Rect2D>()
+            .cast_mut();
+        assert_each_invalid_argument!(["scissor 0x", "not aligned to 4 bytes"], {
+            ffvkScissor(0, 0, 10, 10, 64, 48, bad);
+        });
+        assert_eq!(bytes, [0; 4], "written through a misaligned pointer");
+    }
+    let fields = |v: vk::Viewport| [v.x, v.y, v.width, v.height, v.min_depth, v.max_depth];
+    assert_eq!(fields(v), fields(kept), "a refused viewport was written");
+    assert_eq!(s, kept_rect, "a refused scissor was written");
+}
+
+#[test]
+fn viewport_counts_rows_from_the_top_and_scissor_clips_gls_box_to_the_target() {
+    let mut v = vk::Viewport::default();
+    let mut s = vk::Rect2D::default();
+    // SAFETY: writable out pointers.
+    unsafe {
+        assert_eq!(
+            ffvkViewport(8, 6, 32, 24, 48, 0.25, 2.0, &mut v),
+            FfvkResult::FFVK_SUCCESS
+        );
+        assert_eq!(
+            ffvkScissor(-4, 40, 20, 20, 64, 48, &mut s),
+            FfvkResult::FFVK_SUCCESS
+        );
+    }
+    assert_eq!((v.x, v.y, v.width, v.height), (8.0, 18.0, 32.0, 24.0));
+    assert_eq!(
+        (v.min_depth, v.max_depth),
+        (0.25, 1.0),
+        "glDepthRange's values clamp to [0, 1]"
+    );
+    assert_eq!(
+        (s.offset.x, s.offset.y, s.extent.width, s.extent.height),
+        (0, 0, 16, 8)
+    );
 }
 
 // ---------------------------------------------------------------------------------------

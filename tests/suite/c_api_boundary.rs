@@ -7,6 +7,7 @@
 use std::ffi::CStr;
 
 use ffvk::ash::vk::{self, Handle};
+use ffvk_c::abi::Versioned;
 use ffvk_c::gl::*;
 use ffvk_c::render::*;
 use ffvk_c::result::{ffvkResultMessage, FfvkResult};
@@ -526,4 +527,83 @@ fn forgetting_bindings_inside_an_open_scope_is_refused_naming_ffvk_end_draws() {
     // SAFETY: null is allowed and refused.
     let null = unsafe { ffvkForgetBindings(std::ptr::null_mut()) };
     assert_eq!(null, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+}
+
+#[test]
+fn ffvk_draw_takes_every_published_versions_size_and_refuses_any_other_naming_the_sizes_accepted() {
+    let versions = <FfvkDrawInfo as Versioned>::VERSIONS;
+    let sizes: Vec<u32> = versions.iter().map(|v| v.size as u32).collect();
+    let accepted = sizes
+        .iter()
+        .enumerate()
+        .map(|(i, size)| format!("{size} (version {})", i + 1))
+        .collect::<Vec<_>>()
+        .join(" or ");
+    let expected = format!("expected sizeof(FfvkDrawInfo) as a published ffvk.h declares it, {accepted}");
+    let newest = *sizes.last().expect("version 1 at least");
+    let mut refused = vec![
+        (0, "smaller than version 1"),
+        (sizes[0] - 8, "smaller than version 1"),
+        (newest + 8, "larger than any version this library (ffvk-c 0.1.0) knows, so the program was built against a newer ffvk.h"),
+        (newest + 64, "larger than any version this library (ffvk-c 0.1.0) knows"),
+    ];
+    for pair in sizes.windows(2) {
+        refused.push((pair[0] + 4, "between versions"));
+    }
+    in_draw_scope(|r, ctx| {
+        let buffer = vk::Buffer::from_raw(PLACEHOLDER);
+        for (size, why) in refused {
+            let mut draw = draw_info(&buffer, defaults());
+            draw.struct_size = size;
+            let given = format!("FfvkDrawInfo.struct_size is {size}: {why}");
+            assert_draw_refused(r, ctx, &draw, &given, &expected);
+        }
+        // Each version's size is drawn, whatever lies past it.
+        for size in sizes {
+            let mut draw = draw_info(&buffer, defaults());
+            draw.struct_size = size;
+            assert_drawn(r, ctx, &draw);
+        }
+    });
+}
+
+#[test]
+fn ffvk_draw_names_a_gl_mode_it_does_not_draw_directly_by_its_gl_name() {
+    in_draw_scope(|r, ctx| {
+        let buffer = vk::Buffer::from_raw(PLACEHOLDER);
+        for (mode, name) in [
+            (0x0002, "GL_LINE_LOOP"),
+            (0x0008, "GL_QUAD_STRIP"),
+            (0x0009, "GL_POLYGON"),
+        ] {
+            let draw = FfvkDrawInfo {
+                mode,
+                ..draw_info(&buffer, defaults())
+            };
+            let given = format!("mode {name} (0x{mode:04X}) is drawn as a list");
+            assert_draw_refused(r, ctx, &draw, &given, "ffvkPrimitiveIndicesRange");
+        }
+        let draw = FfvkDrawInfo {
+            mode: 0x0B71,
+            ..draw_info(&buffer, defaults())
+        };
+        assert_draw_refused(
+            r,
+            ctx,
+            &draw,
+            "mode GL_DEPTH_TEST (0x0B71) is not a GL primitive",
+            "expected GL_POINTS",
+        );
+        let draw = FfvkDrawInfo {
+            mode: 0x000A,
+            ..draw_info(&buffer, defaults())
+        };
+        assert_draw_refused(
+            r,
+            ctx,
+            &draw,
+            "mode 0x000A is not a GL primitive",
+            "expected GL_POINTS",
+        );
+    });
 }

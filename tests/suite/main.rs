@@ -7,6 +7,7 @@ mod c_api_example;
 mod c_api_fuzz;
 mod c_api_install;
 mod c_api_layers;
+mod c_api_programs;
 mod c_api_renderer;
 mod c_api_state;
 mod canvas;

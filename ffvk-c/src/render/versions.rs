@@ -1,0 +1,225 @@
+//! The published versions of the structs that grow, `FfvkRendererCreateInfo`, `FfvkDrawInfo`
+//! and `FfvkVertexLayoutInfo` ([`crate::abi`] states the rule and reads them): a frozen copy
+//! of each published version but the newest, the table of their sizes, and the defaults of the
+//! fields a caller's older version lacks.
+
+use std::mem::{offset_of, size_of};
+
+use ffvk::ash::vk;
+
+use super::{raster_defaults, FfvkAttribute, FfvkDrawInfo, FfvkRaster, FfvkRendererCreateInfo, FfvkTexture};
+use crate::abi::{check_versions, frozen_version, Version, Versioned};
+use crate::layout::FfvkVertexLayoutInfo;
+use crate::vk_types::*;
+
+frozen_version! {
+    /// `FfvkRendererCreateInfo` as version 1 of `ffvk.h` declared it.
+    RendererCreateInfoV1 of FfvkRendererCreateInfo {
+        struct_size: u32,
+        get_instance_proc_addr: PFN_vkGetInstanceProcAddr,
+        instance: VkInstance,
+        physical_device: VkPhysicalDevice,
+        device: VkDevice,
+        enabled_features: u32,
+        color_format: VkFormat,
+        depth_format: VkFormat,
+        samples: VkSampleCountFlagBits,
+        bindings: *const VkVertexInputBindingDescription,
+        binding_count: u32,
+        position: FfvkAttribute,
+        normal: FfvkAttribute,
+        color: *const FfvkAttribute,
+        texcoord: *const FfvkAttribute,
+        frames_in_flight: u32,
+        set_index: u32,
+        pipeline_cache: VkPipelineCache,
+    }
+}
+
+frozen_version! {
+    /// `FfvkDrawInfo` as version 1 of `ffvk.h` declared it.
+    DrawInfoV1 of FfvkDrawInfo {
+        struct_size: u32,
+        mode: u32,
+        vertex_buffers: *const VkBuffer,
+        vertex_offsets: *const VkDeviceSize,
+        vertex_buffer_count: u32,
+        index_buffer: VkBuffer,
+        index_offset: VkDeviceSize,
+        index_type: VkIndexType,
+        first: u32,
+        count: u32,
+        vertex_offset: i32,
+        primitive_restart: u8,
+        raster: FfvkRaster,
+        texture: *const FfvkTexture,
+    }
+}
+
+// SAFETY: repr(C), struct_size its first field (checked below), and every field takes any bit
+// pattern: integers, raw pointers, a nullable function pointer, Vulkan's handles and enums.
+unsafe impl Versioned for FfvkRendererCreateInfo {
+    const NAME: &'static str = "FfvkRendererCreateInfo";
+    const VERSIONS: &'static [Version] = &[Version {
+        size: size_of::<RendererCreateInfoV1>(),
+        first_field: 0,
+    }];
+    fn defaults() -> Self {
+        FfvkRendererCreateInfo {
+            struct_size: size_of::<FfvkRendererCreateInfo>() as u32,
+            get_instance_proc_addr: None,
+            instance: vk::Instance::null(),
+            physical_device: vk::PhysicalDevice::null(),
+            device: vk::Device::null(),
+            enabled_features: 0,
+            color_format: vk::Format::UNDEFINED,
+            depth_format: vk::Format::UNDEFINED,
+            samples: vk::SampleCountFlags::TYPE_1,
+            bindings: std::ptr::null(),
+            binding_count: 0,
+            position: FfvkAttribute {
+                binding: 0,
+                offset: 0,
+                format: vk::Format::UNDEFINED,
+            },
+            normal: FfvkAttribute {
+                binding: 0,
+                offset: 0,
+                format: vk::Format::UNDEFINED,
+            },
+            color: std::ptr::null(),
+            texcoord: std::ptr::null(),
+            frames_in_flight: 0,
+            set_index: 0,
+            pipeline_cache: vk::PipelineCache::null(),
+        }
+    }
+}
+
+// SAFETY: as above; `raster` is all integers, floats and Vulkan enums.
+unsafe impl Versioned for FfvkDrawInfo {
+    const NAME: &'static str = "FfvkDrawInfo";
+    const VERSIONS: &'static [Version] = &[
+        Version {
+            size: size_of::<DrawInfoV1>(),
+            first_field: 0,
+        },
+        // Version 2: the draw's vertex layout.
+        Version {
+            size: size_of::<FfvkDrawInfo>(),
+            first_field: offset_of!(FfvkDrawInfo, layout),
+        },
+    ];
+    fn defaults() -> Self {
+        FfvkDrawInfo {
+            struct_size: size_of::<FfvkDrawInfo>() as u32,
+            mode: 0,
+            vertex_buffers: std::ptr::null(),
+            vertex_offsets: std::ptr::null(),
+            vertex_buffer_count: 0,
+            index_buffer: vk::Buffer::null(),
+            index_offset: 0,
+            index_type: vk::IndexType::UINT32,
+            first: 0,
+            count: 0,
+            vertex_offset: 0,
+            primitive_restart: 0,
+            raster: raster_defaults(),
+            texture: std::ptr::null(),
+            layout: std::ptr::null(),
+        }
+    }
+}
+
+// SAFETY: as above: integers, raw pointers and Vulkan's formats.
+unsafe impl Versioned for FfvkVertexLayoutInfo {
+    const NAME: &'static str = "FfvkVertexLayoutInfo";
+    const VERSIONS: &'static [Version] = &[Version {
+        size: size_of::<FfvkVertexLayoutInfo>(),
+        first_field: 0,
+    }];
+    fn defaults() -> Self {
+        let none = FfvkAttribute {
+            binding: 0,
+            offset: 0,
+            format: vk::Format::UNDEFINED,
+        };
+        FfvkVertexLayoutInfo {
+            struct_size: size_of::<FfvkVertexLayoutInfo>() as u32,
+            bindings: std::ptr::null(),
+            binding_count: 0,
+            position: none,
+            normal: std::ptr::null(),
+            color: std::ptr::null(),
+            texcoord: std::ptr::null(),
+            materials: std::ptr::null(),
+            material_count: 0,
+        }
+    }
+}
+
+const _: () = {
+    assert!(offset_of!(FfvkRendererCreateInfo, struct_size) == 0);
+    assert!(offset_of!(FfvkDrawInfo, struct_size) == 0);
+    check_versions::<FfvkRendererCreateInfo>();
+    check_versions::<FfvkDrawInfo>();
+    assert!(offset_of!(FfvkVertexLayoutInfo, struct_size) == 0);
+    check_versions::<FfvkVertexLayoutInfo>();
+};
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_struct_with_a_struct_size_has_its_published_versions_the_last_its_size_today() {
+        for (name, versions, size) in [
+            (
+                "FfvkRendererCreateInfo",
+                FfvkRendererCreateInfo::VERSIONS,
+                size_of::<FfvkRendererCreateInfo>(),
+            ),
+            (
+                "FfvkVertexLayoutInfo",
+                FfvkVertexLayoutInfo::VERSIONS,
+                size_of::<FfvkVertexLayoutInfo>(),
+            ),
+        ] {
+            assert_eq!(versions, [Version { size, first_field: 0 }], "{name}");
+        }
+        // FfvkDrawInfo: version 1 (ffvk-c 0.1's first header) and version 2, which appended
+        // the layout right after version 1's end.
+        assert_eq!(
+            FfvkDrawInfo::VERSIONS,
+            [
+                Version {
+                    size: size_of::<DrawInfoV1>(),
+                    first_field: 0
+                },
+                Version {
+                    size: size_of::<FfvkDrawInfo>(),
+                    first_field: offset_of!(FfvkDrawInfo, layout)
+                }
+            ]
+        );
+        assert_eq!(offset_of!(FfvkDrawInfo, layout), size_of::<DrawInfoV1>());
+    }
+
+    #[test]
+    fn a_version_1_draw_info_reads_every_field_the_caller_wrote_and_the_layout_as_null() {
+        let mut info = FfvkDrawInfo::defaults();
+        info.struct_size = size_of::<DrawInfoV1>() as u32;
+        info.mode = 4;
+        info.count = 36;
+        info.raster.line_width = 2.0;
+        // Where a version 1 caller's memory ends: not read.
+        info.layout = std::ptr::dangling();
+        // SAFETY: a whole current struct, aligned; struct_size covers less of it.
+        let read = unsafe { crate::abi::read("test", &info) }.expect("version 1's size is accepted");
+        assert_eq!((read.mode, read.count, read.raster.line_width), (4, 36, 2.0));
+        assert!(
+            read.layout.is_null(),
+            "a version 1 draw's layout is the default, null"
+        );
+    }
+}

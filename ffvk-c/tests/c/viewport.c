@@ -1,0 +1,122 @@
+/* viewport.c: a scene of GL viewports, depth ranges and scissor boxes drawn through ffvk's C
+ * API, each draw's VkViewport and VkRect2D from ffvkViewport and ffvkScissor given GL's
+ * numbers, on a device made with ffvkDeviceRequirements. The test suite
+ * (tests/suite/c_api_programs.rs) draws the same scene with Mesa's GL (glViewport,
+ * glDepthRange, glScissor) and requires the same pixels.
+ *
+ *     viewport SCENE OUTPUT.ppm */
+
+#include <stdio.h>
+#include <string.h>
+
+#include "ffvk.h"
+#include "harness.h"
+
+#define FFVK_CHECK(call)                                                                     \
+    do {                                                                                     \
+        FfvkResult ffvk_check_result_ = (call);                                              \
+        if (ffvk_check_result_ != FFVK_SUCCESS)                                              \
+            die("%s:%d: %s: FfvkResult %d: %s", __FILE__, __LINE__, #call,                   \
+                (int)ffvk_check_result_, ffvkResultMessage());                               \
+    } while (0)
+
+int main(int argc, char **argv) {
+    if (argc != 3)
+        die("usage: %s SCENE OUTPUT.ppm", argv[0]);
+    static Scene scene;
+    scene_read(argv[1], &scene);
+
+    App app;
+    app_create_instance(&app);
+    VkPhysicalDeviceProvokingVertexFeaturesEXT provoking = {
+        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROVOKING_VERTEX_FEATURES_EXT,
+    };
+    VkPhysicalDeviceVulkan13Features v13 = {
+        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
+        .pNext = &provoking,
+    };
+    VkPhysicalDeviceFeatures2 features = {
+        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
+        .pNext = &v13,
+    };
+    const char *extensions[FFVK_MAX_DEVICE_EXTENSIONS];
+    uint32_t extension_count = FFVK_MAX_DEVICE_EXTENSIONS;
+    uint32_t enabled_features;
+    FFVK_CHECK(ffvkDeviceRequirements(vkGetInstanceProcAddr, app.instance, app.physical,
+                                      &features, &extension_count, extensions,
+                                      &enabled_features));
+    app_create_device(&app, &features, extension_count, extensions);
+    app_create_targets(&app, scene.width, scene.height);
+    Buffer vertices = app_buffer(&app, scene.vertices, sizeof scene.vertices,
+                                 VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+
+    const VkVertexInputBindingDescription binding = {
+        .binding = 0, .stride = 24, .inputRate = VK_VERTEX_INPUT_RATE_VERTEX};
+    FfvkRendererCreateInfo info = {
+        .struct_size = sizeof(FfvkRendererCreateInfo),
+        .get_instance_proc_addr = vkGetInstanceProcAddr,
+        .instance = app.instance,
+        .physical_device = app.physical,
+        .device = app.device,
+        .enabled_features = enabled_features,
+        .color_format = COLOR_FORMAT,
+        .depth_format = DEPTH_FORMAT,
+        .samples = VK_SAMPLE_COUNT_1_BIT,
+        .bindings = &binding,
+        .binding_count = 1,
+        .position = {.binding = 0, .offset = 0, .format = VK_FORMAT_R32G32B32_SFLOAT},
+        .normal = {.binding = 0, .offset = 12, .format = VK_FORMAT_R32G32B32_SFLOAT},
+        .frames_in_flight = 1,
+    };
+    FfvkRenderer *renderer;
+    FFVK_CHECK(ffvkCreateRenderer(&info, &renderer));
+    FfvkContext *ctx = ffvkCreateContext();
+    if (!ctx)
+        die("ffvkCreateContext failed");
+
+    FFVK_CHECK(ffvkBeginFrame(renderer, 0));
+    app_begin(&app, &scene);
+    for (uint32_t i = 0; i < scene.draw_count; i++) {
+        const SceneDraw *d = &scene.draws[i];
+        /* GL's state for this draw, as a layer holds it, into Vulkan's between scopes. */
+        VkViewport viewport;
+        VkRect2D scissor;
+        FFVK_CHECK(ffvkViewport(d->viewport[0], d->viewport[1], d->viewport[2], d->viewport[3],
+                                scene.height, d->depth_range[0], d->depth_range[1],
+                                &viewport));
+        FFVK_CHECK(ffvkScissor(d->scissor[0], d->scissor[1], d->scissor[2], d->scissor[3],
+                               scene.width, scene.height, &scissor));
+        vkCmdSetViewport(app.cmd, 0, 1, &viewport);
+        vkCmdSetScissor(app.cmd, 0, 1, &scissor);
+
+        ffvkColor4f(ctx, d->color[0], d->color[1], d->color[2], d->color[3]);
+        FfvkRaster raster;
+        ffvkRasterDefaults(&raster);
+        raster.depth_test = 1;
+        FfvkDrawInfo draw = {
+            .struct_size = sizeof(FfvkDrawInfo),
+            .mode = GL_TRIANGLE_FAN,
+            .vertex_buffers = &vertices.buffer,
+            .vertex_buffer_count = 1,
+            .index_buffer = VK_NULL_HANDLE,
+            .first = d->first,
+            .count = d->count,
+            .raster = raster,
+        };
+        FFVK_CHECK(ffvkBeginDraws(renderer, app.cmd, 0));
+        FFVK_CHECK(ffvkDraw(renderer, ctx, &draw));
+        FFVK_CHECK(ffvkEndDraws(renderer));
+    }
+    app_finish(&app, argv[2]);
+
+    VkResult idle = vkDeviceWaitIdle(app.device);
+    if (idle != VK_SUCCESS)
+        die("vkDeviceWaitIdle: VkResult %d", (int)idle);
+    ffvkDestroyRenderer(renderer);
+    ffvkDestroyContext(ctx);
+    app_destroy_buffer(&app, &vertices);
+    unsigned messages = app_destroy(&app);
+    if (messages > 0)
+        die("%u validation message(s)", messages);
+    return 0;
+}
