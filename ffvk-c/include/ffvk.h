@@ -348,103 +348,6 @@ typedef struct FfvkTexture FfvkTexture;
 typedef struct FfvkVertexLayout FfvkVertexLayout;
 
 /*
- Where one vertex attribute lives: a binding of the create info's `bindings`, the byte
- offset within one element, the format (any the shaders read as floats, e.g.
- `VK_FORMAT_R32G32B32_SFLOAT`, `VK_FORMAT_R8G8B8A8_UNORM`, that the device reads from
- vertex buffers). The attribute lies within one element: offset + the format's size <= the
- binding's stride.
-
- It never changes (it has no `struct_size`).
- */
-typedef struct FfvkAttribute {
-  /*
-   The vertex buffer binding it is read from.
-   */
-  uint32_t binding;
-  /*
-   Byte offset within one element of that binding.
-   */
-  uint32_t offset;
-  /*
-   The attribute's format.
-   */
-  VkFormat format;
-} FfvkAttribute;
-
-/*
- One material parameter given per vertex (Mesa's material attributes: `glMaterial` between
- `glBegin` and `glEnd`): `face` `GL_FRONT`, `GL_BACK` or `GL_FRONT_AND_BACK`; `pname`
- `GL_AMBIENT`, `GL_DIFFUSE`, `GL_SPECULAR`, `GL_EMISSION` (RGBA,
- `VK_FORMAT_R32G32B32A32_SFLOAT`) or `GL_SHININESS` (`VK_FORMAT_R32_SFLOAT`).
- */
-typedef struct FfvkMaterialAttribute {
-  /*
-   `GL_FRONT`, `GL_BACK` or `GL_FRONT_AND_BACK`.
-   */
-  uint32_t face;
-  /*
-   `GL_AMBIENT`, `GL_DIFFUSE`, `GL_SPECULAR`, `GL_EMISSION` or `GL_SHININESS`.
-   */
-  uint32_t pname;
-  /*
-   Where it lives in the layout's bindings.
-   */
-  struct FfvkAttribute attribute;
-} FfvkMaterialAttribute;
-
-/*
- What `ffvkCreateVertexLayout` takes: a layout of GL's arrays. Set `struct_size` to
- `sizeof(FfvkVertexLayoutInfo)` (the struct grows as `FfvkDrawInfo` does: later versions
- append fields and read only what the caller's size covers). Formats are GL's: positions 2
- to 4 floats or `GL_SHORT`s (`R16G16_SSCALED`..), normals 3 floats or `GL_BYTE`s or
- `GL_SHORT`s (`R8G8B8_SNORM`, `R16G16B16_SNORM`, or their four-component forms with padding),
- colors 3 or 4 floats, signed or unsigned bytes or shorts, or `B8G8R8A8_UNORM`
- (`GL_BGRA`), texture coordinates 1 to 4 floats or shorts. Signed normalized normals and
- colors convert as GL 2.1 says, (2c + 1)/(2^b − 1), not as Vulkan's SNORM.
- */
-typedef struct FfvkVertexLayoutInfo {
-  /*
-   `sizeof(FfvkVertexLayoutInfo)`.
-   */
-  uint32_t struct_size;
-  /*
-   The vertex buffer bindings (per-vertex rate), in the order draws pass their buffers.
-   */
-  const VkVertexInputBindingDescription *bindings;
-  /*
-   How many `bindings`, at most `FFVK_MAX_VERTEX_BINDINGS`.
-   */
-  uint32_t binding_count;
-  /*
-   Object-space position (`glVertexPointer`).
-   */
-  struct FfvkAttribute position;
-  /*
-   Normals (`glNormalPointer`), or null: every vertex takes the context's current normal
-   (`ffvkNormal3f`).
-   */
-  const struct FfvkAttribute *normal;
-  /*
-   Colors (`glColorPointer`), or null: the context's current color (`ffvkColor4f`).
-   */
-  const struct FfvkAttribute *color;
-  /*
-   Texture coordinates (`glTexCoordPointer`), or null: the context's current ones
-   (`ffvkTexCoord4f`).
-   */
-  const struct FfvkAttribute *texcoord;
-  /*
-   Material parameters given per vertex, or null with `material_count` 0. Drawn in the
-   vertex and flat modes; a draw lit per fragment with such a layout is refused.
-   */
-  const struct FfvkMaterialAttribute *materials;
-  /*
-   How many `materials` (at most 10: five parameters, two faces).
-   */
-  uint32_t material_count;
-} FfvkVertexLayoutInfo;
-
-/*
  A view of an `FfvkMesh`'s arrays, valid until `ffvkDestroyMesh`. It never changes (it has
  no `struct_size`).
  */
@@ -474,6 +377,30 @@ typedef struct FfvkMeshArrays {
    */
   const uint32_t *indices;
 } FfvkMeshArrays;
+
+/*
+ Where one vertex attribute lives: a binding of the create info's `bindings`, the byte
+ offset within one element, the format (any the shaders read as floats, e.g.
+ `VK_FORMAT_R32G32B32_SFLOAT`, `VK_FORMAT_R8G8B8A8_UNORM`, that the device reads from
+ vertex buffers). The attribute lies within one element: offset + the format's size <= the
+ binding's stride.
+
+ It never changes (it has no `struct_size`).
+ */
+typedef struct FfvkAttribute {
+  /*
+   The vertex buffer binding it is read from.
+   */
+  uint32_t binding;
+  /*
+   Byte offset within one element of that binding.
+   */
+  uint32_t offset;
+  /*
+   The attribute's format.
+   */
+  VkFormat format;
+} FfvkAttribute;
 
 /*
  What `ffvkCreateRenderer` takes. Set `struct_size` to `sizeof(FfvkRendererCreateInfo)`.
@@ -723,6 +650,79 @@ typedef struct FfvkDrawInfo {
    */
   const struct FfvkVertexLayout *layout;
 } FfvkDrawInfo;
+
+/*
+ One material parameter given per vertex (Mesa's material attributes: `glMaterial` between
+ `glBegin` and `glEnd`): `face` `GL_FRONT`, `GL_BACK` or `GL_FRONT_AND_BACK`; `pname`
+ `GL_AMBIENT`, `GL_DIFFUSE`, `GL_SPECULAR`, `GL_EMISSION` (RGBA,
+ `VK_FORMAT_R32G32B32A32_SFLOAT`) or `GL_SHININESS` (`VK_FORMAT_R32_SFLOAT`).
+ */
+typedef struct FfvkMaterialAttribute {
+  /*
+   `GL_FRONT`, `GL_BACK` or `GL_FRONT_AND_BACK`.
+   */
+  uint32_t face;
+  /*
+   `GL_AMBIENT`, `GL_DIFFUSE`, `GL_SPECULAR`, `GL_EMISSION` or `GL_SHININESS`.
+   */
+  uint32_t pname;
+  /*
+   Where it lives in the layout's bindings.
+   */
+  struct FfvkAttribute attribute;
+} FfvkMaterialAttribute;
+
+/*
+ What `ffvkCreateVertexLayout` takes: a layout of GL's arrays. Set `struct_size` to
+ `sizeof(FfvkVertexLayoutInfo)` (the struct grows as `FfvkDrawInfo` does: later versions
+ append fields and read only what the caller's size covers). Formats are GL's: positions 2
+ to 4 floats or `GL_SHORT`s (`R16G16_SSCALED`..), normals 3 floats or `GL_BYTE`s or
+ `GL_SHORT`s (`R8G8B8_SNORM`, `R16G16B16_SNORM`, or their four-component forms with padding),
+ colors 3 or 4 floats, signed or unsigned bytes or shorts, or `B8G8R8A8_UNORM`
+ (`GL_BGRA`), texture coordinates 1 to 4 floats or shorts. Signed normalized normals and
+ colors convert as GL 2.1 says, (2c + 1)/(2^b − 1), not as Vulkan's SNORM.
+ */
+typedef struct FfvkVertexLayoutInfo {
+  /*
+   `sizeof(FfvkVertexLayoutInfo)`.
+   */
+  uint32_t struct_size;
+  /*
+   The vertex buffer bindings (per-vertex rate), in the order draws pass their buffers.
+   */
+  const VkVertexInputBindingDescription *bindings;
+  /*
+   How many `bindings`, at most `FFVK_MAX_VERTEX_BINDINGS`.
+   */
+  uint32_t binding_count;
+  /*
+   Object-space position (`glVertexPointer`).
+   */
+  struct FfvkAttribute position;
+  /*
+   Normals (`glNormalPointer`), or null: every vertex takes the context's current normal
+   (`ffvkNormal3f`).
+   */
+  const struct FfvkAttribute *normal;
+  /*
+   Colors (`glColorPointer`), or null: the context's current color (`ffvkColor4f`).
+   */
+  const struct FfvkAttribute *color;
+  /*
+   Texture coordinates (`glTexCoordPointer`), or null: the context's current ones
+   (`ffvkTexCoord4f`).
+   */
+  const struct FfvkAttribute *texcoord;
+  /*
+   Material parameters given per vertex, or null with `material_count` 0. Drawn in the
+   vertex and flat modes; a draw lit per fragment with such a layout is refused.
+   */
+  const struct FfvkMaterialAttribute *materials;
+  /*
+   How many `materials` (at most 10: five parameters, two faces).
+   */
+  uint32_t material_count;
+} FfvkVertexLayoutInfo;
 
 #ifdef __cplusplus
 extern "C" {
@@ -1099,37 +1099,6 @@ void ffvkLoadProjection(struct FfvkContext *ctx, const float *m);
 void ffvkLoadTextureMatrix(struct FfvkContext *ctx, const float *m);
 
 /*
- Adds a vertex layout to `renderer` and writes its handle to `*layout`: draws name it in
- `FfvkDrawInfo::layout` (null there: the create info's layout) and pass one buffer per
- binding of it. Checked as the create info's layout is (formats each array takes, offsets
- within strides, the device's limits and vertex formats); pipelines for it are made on the
- first draw that needs them. An equal layout made before shares its pipelines. Free the
- handle with `ffvkDestroyVertexLayout` (the renderer keeps the layout's pipelines until it is
- destroyed). Errors: `FFVK_ERROR_INVALID_ARGUMENT` naming the field, value and what was
- expected (nothing written to `*layout` then), or a Vulkan error.
-
- # Safety
-
- `renderer` is null or live and used by one thread at a time; `info` is null or points at
- `info->struct_size` bytes of an `FfvkVertexLayoutInfo` whose pointers are null or point at
- what their counts say; `layout` is null or points at room for one pointer.
- */
-enum FfvkResult ffvkCreateVertexLayout(struct FfvkRenderer *renderer,
-                                       const struct FfvkVertexLayoutInfo *info,
-                                       struct FfvkVertexLayout **layout);
-
-/*
- Frees a layout handle from `ffvkCreateVertexLayout`; null does nothing. Draws recorded with
- it stay valid (the renderer keeps the layout's pipelines).
-
- # Safety
-
- `layout` is null or from `ffvkCreateVertexLayout`, not yet destroyed, and named by no draw
- of an open scope.
- */
-void ffvkDestroyVertexLayout(struct FfvkVertexLayout *layout);
-
-/*
  Newell's teapot tessellated at `level` (1 ..= 64 steps per patch side), the mesh ffvk's
  examples and tests draw: y up (the lid), the spout toward +x and the handle toward −x,
  centred on the origin within x in [−1, 1], y in [−0.483, 0.483], z in [−0.613, 0.613]
@@ -1469,6 +1438,37 @@ enum FfvkResult ffvkCreateTexture(struct FfvkRenderer *renderer,
  `texture` is null or from `ffvkCreateTexture`, not yet destroyed.
  */
 void ffvkDestroyTexture(struct FfvkTexture *texture);
+
+/*
+ Adds a vertex layout to `renderer` and writes its handle to `*layout`: draws name it in
+ `FfvkDrawInfo::layout` (null there: the create info's layout) and pass one buffer per
+ binding of it. Checked as the create info's layout is (formats each array takes, offsets
+ within strides, the device's limits and vertex formats); pipelines for it are made on the
+ first draw that needs them. An equal layout made before shares its pipelines. Free the
+ handle with `ffvkDestroyVertexLayout` (the renderer keeps the layout's pipelines until it is
+ destroyed). Errors: `FFVK_ERROR_INVALID_ARGUMENT` naming the field, value and what was
+ expected (nothing written to `*layout` then), or a Vulkan error.
+
+ # Safety
+
+ `renderer` is null or live and used by one thread at a time; `info` is null or points at
+ `info->struct_size` bytes of an `FfvkVertexLayoutInfo` whose pointers are null or point at
+ what their counts say; `layout` is null or points at room for one pointer.
+ */
+enum FfvkResult ffvkCreateVertexLayout(struct FfvkRenderer *renderer,
+                                       const struct FfvkVertexLayoutInfo *info,
+                                       struct FfvkVertexLayout **layout);
+
+/*
+ Frees a layout handle from `ffvkCreateVertexLayout`; null does nothing. Draws recorded with
+ it stay valid (the renderer keeps the layout's pipelines).
+
+ # Safety
+
+ `layout` is null or from `ffvkCreateVertexLayout`, not yet destroyed, and named by no draw
+ of an open scope.
+ */
+void ffvkDestroyVertexLayout(struct FfvkVertexLayout *layout);
 
 /*
  Fills `raster` with GL's initial raster state: no culling, `GL_CCW` front faces, depth

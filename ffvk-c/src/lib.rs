@@ -17,10 +17,11 @@
 pub mod abi;
 pub mod enums;
 pub mod gl;
-pub mod layout;
 pub mod mesh;
 pub mod query;
 pub mod render;
+/// Vertex layouts (a part of the renderer's API, `render::layout`).
+pub use render::layout;
 pub mod result;
 pub mod setup;
 pub mod viewport;

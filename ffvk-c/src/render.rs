@@ -19,6 +19,7 @@ use ffvk::{
     Topology, VertexInput,
 };
 
+pub mod layout;
 mod raster;
 mod versions;
 
@@ -28,9 +29,9 @@ pub use raster::{ffvkRasterDefaults, FfvkRaster};
 
 use crate::enums::*;
 use crate::gl::FfvkContext;
-use crate::layout::FfvkVertexLayout;
 use crate::result::{check_ptr, fail, from_error, guard, misaligned, FfvkResult};
 use crate::vk_types::*;
+use layout::FfvkVertexLayout;
 
 /// `dynamicRendering` (Vulkan 1.3): required.
 pub const FFVK_FEATURE_DYNAMIC_RENDERING: u32 = 1;
@@ -580,7 +581,7 @@ pub unsafe extern "C" fn ffvkDraw(
                 )));
             }
             // SAFETY: the caller's contract: the layout is null or live.
-            let (layout, binding_count) = unsafe { crate::layout::of_draw(F, draw.layout, binding_count) }?;
+            let (layout, binding_count) = unsafe { layout::of_draw(F, draw.layout, binding_count) }?;
             if draw.vertex_buffer_count != binding_count {
                 let whose = if layout.is_some() {
                     "the draw's layout"

@@ -7,9 +7,9 @@ use std::mem::{offset_of, size_of};
 
 use ffvk::ash::vk;
 
+use super::layout::FfvkVertexLayoutInfo;
 use super::{raster_defaults, FfvkAttribute, FfvkDrawInfo, FfvkRaster, FfvkRendererCreateInfo, FfvkTexture};
 use crate::abi::{check_versions, frozen_version, Version, Versioned};
-use crate::layout::FfvkVertexLayoutInfo;
 use crate::vk_types::*;
 
 frozen_version! {
