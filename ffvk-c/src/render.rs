@@ -11,7 +11,7 @@
 use std::sync::Arc;
 
 use ffvk::ash::{self, vk};
-use ffvk::gl::state::LightingState;
+use ffvk::gl::state::FixedFunctionState;
 use ffvk::glam::Mat4;
 use ffvk::vk::EnabledFeatures;
 use ffvk::{
@@ -197,7 +197,7 @@ struct Pending {
 pub(crate) struct Recording {
     cmd: vk::CommandBuffer,
     slot: u32,
-    states: Vec<LightingState>,
+    states: Vec<FixedFunctionState>,
     draws: Vec<Pending>,
     /// Each draw as `ffvkDraw` checked it and wrote it into the slot.
     staged: Vec<StagedDraw>,

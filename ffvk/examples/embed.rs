@@ -85,7 +85,7 @@ pub fn teapot() -> Result<MeshData, ffvk::MeshError> {
 /// every vertex takes the state's current color, as after glColor in GL).
 pub struct EmbedFrame {
     /// GL's state for the draw.
-    pub state: ffvk::gl::state::LightingState,
+    pub state: ffvk::gl::state::FixedFunctionState,
     /// Whether the mesh has a color array (binding 1, 8-bit colors).
     pub color_array: bool,
     /// 0: one teapot. n: n × n small teapots in one run of draws, each with its own material
@@ -99,7 +99,7 @@ pub struct EmbedFrame {
 
 /// The objects of an `n` × `n` frame under `state`: each teapot's modelview and its own values
 /// (the state's, with a diffuse color and shininess of its own, as after a glMaterial call).
-pub fn grid_objects(state: &ffvk::gl::state::LightingState, n: u32) -> Vec<(Mat4, DrawValues)> {
+pub fn grid_objects(state: &ffvk::gl::state::FixedFunctionState, n: u32) -> Vec<(Mat4, DrawValues)> {
     let n = n.max(1);
     let cell = 2.4 / n as f32;
     (0..n * n)
@@ -193,7 +193,7 @@ pub fn render_frames_draw_by_draw(
 pub fn render_alternating(
     device_name: Option<&str>,
     validation: bool,
-    state: &ffvk::gl::state::LightingState,
+    state: &ffvk::gl::state::FixedFunctionState,
     n: u32,
     forget_each: bool,
 ) -> Result<Vec<u8>, String> {
@@ -709,7 +709,7 @@ impl App {
 
     fn render_alternating(
         &mut self,
-        state: &ffvk::gl::state::LightingState,
+        state: &ffvk::gl::state::FixedFunctionState,
         n: u32,
         forget_each: bool,
     ) -> Result<Vec<u8>, String> {
@@ -791,7 +791,7 @@ impl App {
             Geometry::indexed(scene.index_buffer, vk::IndexType::UINT32, 3)
                 .with_first(3 * (k as u32 % triangles))
         };
-        let states: Vec<ffvk::gl::state::LightingState> = objects_here
+        let states: Vec<ffvk::gl::state::FixedFunctionState> = objects_here
             .iter()
             .map(|(_, v)| {
                 let mut own = state;

@@ -8,7 +8,7 @@ pub mod texture;
 use glam::{DMat3, DVec3, DVec4, Mat4};
 
 use crate::gl::state::{
-    Attenuation, ColorControl, Light, LightingMode, LightingState, Material, SpecularModel, SpotEdge,
+    Attenuation, ColorControl, FixedFunctionState, Light, LightingMode, Material, SpecularModel, SpotEdge,
 };
 use crate::gl::texture::{texturing_applies, Sampling, TextureImage};
 use crate::mesh::Vertex;
@@ -119,7 +119,7 @@ pub use crate::gl::state::cos_cutoff;
 
 /// Lights eye-space point `v` with eye-space normal `n` and material `m` under `state`'s
 /// enabled lights and light model.
-pub fn light(state: &LightingState, v: DVec4, n: DVec3, m: &Material) -> Lit {
+pub fn light(state: &FixedFunctionState, v: DVec4, n: DVec3, m: &Material) -> Lit {
     let (e_cm, a_cm, d_cm, s_cm) = (d4(m.emission), d4(m.ambient), d4(m.diffuse), d4(m.specular));
     let s_rm = m.shininess as f64;
     let a_cs = d4(state.model.ambient);
@@ -155,7 +155,7 @@ pub fn light(state: &LightingState, v: DVec4, n: DVec3, m: &Material) -> Lit {
 
 #[allow(clippy::too_many_arguments)]
 fn light_terms(
-    state: &LightingState,
+    state: &FixedFunctionState,
     l: &Light,
     v: DVec4,
     n: DVec3,
@@ -248,7 +248,7 @@ fn soft_edge(cos_angle: f64, cos_outer: f64, cos_inner: f64, ramp: impl Fn(f64) 
 }
 
 /// Section 2.11.3: the eye-space normal, with RESCALE_NORMAL and NORMALIZE as enabled.
-pub fn eye_normal(state: &LightingState, modelview: Mat4, n_object: DVec3) -> DVec3 {
+pub fn eye_normal(state: &FixedFunctionState, modelview: Mat4, n_object: DVec3) -> DVec3 {
     let m3 = DMat3::from_mat4(modelview.as_dmat4());
     let inv = m3.inverse();
     let mut n = inv.transpose() * n_object;
@@ -279,7 +279,7 @@ pub struct EyeVertex {
 }
 
 /// Runs the vertex stage on the CPU for object-space vertex `v`, in double precision.
-pub fn transform(state: &LightingState, modelview: Mat4, projection: Mat4, v: &Vertex) -> EyeVertex {
+pub fn transform(state: &FixedFunctionState, modelview: Mat4, projection: Mat4, v: &Vertex) -> EyeVertex {
     let eye = modelview.as_dmat4() * DVec3::from(v.position.map(f64::from)).extend(1.0);
     EyeVertex {
         eye,
@@ -292,7 +292,7 @@ pub fn transform(state: &LightingState, modelview: Mat4, projection: Mat4, v: &V
 
 /// The lit colors of one face at one point: two-sided lighting takes the back material
 /// and −n for the back face; COLOR_MATERIAL applies the current color.
-pub fn light_face(state: &LightingState, eye: DVec4, normal: DVec3, color: DVec4, back: bool) -> Lit {
+pub fn light_face(state: &FixedFunctionState, eye: DVec4, normal: DVec3, color: DVec4, back: bool) -> Lit {
     let two_sided_back = back && state.model.two_side;
     let material = if two_sided_back { &state.back } else { &state.front };
     let material = state
@@ -303,7 +303,7 @@ pub fn light_face(state: &LightingState, eye: DVec4, normal: DVec3, color: DVec4
 }
 
 /// The color GL produces at one vertex for one face (lighting off: the current color).
-pub fn vertex_color(state: &LightingState, v: &EyeVertex, back: bool) -> (DVec4, DVec4) {
+pub fn vertex_color(state: &FixedFunctionState, v: &EyeVertex, back: bool) -> (DVec4, DVec4) {
     if !state.lighting {
         // Section 2.14.6: colors are clamped "after lighting, whether enabled or not".
         return (
@@ -396,7 +396,7 @@ pub struct PixelTerms {
 /// order), in `state.mode`, with `texture` bound: the CPU prediction tests compare the GPU
 /// with.
 pub fn pixel_color(
-    state: &LightingState,
+    state: &FixedFunctionState,
     modelview: Mat4,
     projection: Mat4,
     tri: [&Vertex; 3],
@@ -408,7 +408,7 @@ pub fn pixel_color(
 
 /// [`pixel_color`] with the colors before the color sum and the texturing terms.
 pub fn pixel_terms(
-    state: &LightingState,
+    state: &FixedFunctionState,
     modelview: Mat4,
     projection: Mat4,
     tri: [&Vertex; 3],

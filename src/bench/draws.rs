@@ -16,7 +16,7 @@ pub use super::sweep::MAX_DRAW_COUNT;
 use super::sweep::{BenchMode, Engine, SweepConfig};
 use crate::gl_reference::{time_frames_with, GlDraw, GlScene};
 use crate::Result;
-use ffvk::gl::state::{Cap, Face, GlState, LightParam, LightingState, MaterialParam};
+use ffvk::gl::state::{Cap, Face, FixedFunctionState, GlState, LightParam, MaterialParam};
 use ffvk::mesh::{MeshData, Vertex};
 use ffvk::{Draw, Frame, Recording, Renderer};
 
@@ -139,7 +139,11 @@ fn quad() -> MeshData {
 /// The frame of `draws` quads: a grid filling the view, draw `i` with its own diffuse color and
 /// shininess; a directional and a point light (the point light's attenuation is a per-light
 /// term the shaders must evaluate for every draw).
-pub(crate) fn scene(mode: BenchMode, draws: u32, fit: f32) -> Result<(Vec<(Mat4, LightingState)>, Mat4)> {
+pub(crate) fn scene(
+    mode: BenchMode,
+    draws: u32,
+    fit: f32,
+) -> Result<(Vec<(Mat4, FixedFunctionState)>, Mat4)> {
     let mut gl = GlState::new();
     gl.lighting_mode(mode.lighting_mode());
     for cap in [Cap::Lighting, Cap::Light(0), Cap::Light(1)] {

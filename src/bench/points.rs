@@ -6,7 +6,7 @@ use glam::{Mat4, Vec3, Vec4};
 use super::sweep::{BenchMode, Engine, Group, LightKind, Point, Primitive, SweepConfig, Variant};
 use crate::Result;
 use ffvk::gl::state::{
-    Attenuation, Cap, Face, GlState, LightModelParam, LightParam, LightingState, MaterialParam,
+    Attenuation, Cap, Face, FixedFunctionState, GlState, LightModelParam, LightParam, MaterialParam,
     SpecularModel, SpotEdge,
 };
 
@@ -209,7 +209,7 @@ pub fn points(config: &SweepConfig) -> Vec<Point> {
 
 /// The lighting state of a point: `lights` lights of one kind around the view axis, white
 /// light split between them, a shiny material on both faces.
-pub fn point_state(point: &Point) -> Result<LightingState> {
+pub fn point_state(point: &Point) -> Result<FixedFunctionState> {
     let mut gl = GlState::new();
     gl.lighting_mode(point.mode.lighting_mode());
     if point.mode == BenchMode::Unlit {

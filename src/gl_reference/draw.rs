@@ -5,7 +5,7 @@
 use std::ffi::c_void;
 
 use ffvk::gl::state::{
-    Cap, ColorControl, ColorMaterialMode, Face, Light, LightingMode, LightingState, Material,
+    Cap, ColorControl, ColorMaterialMode, Face, FixedFunctionState, Light, LightingMode, Material,
 };
 use ffvk::gl::texture::{MagFilter, MinFilter, Sampling, TexEnvMode, TextureImage, TextureUnit, Wrap};
 use ffvk::mesh::{MeshData, Vertex};
@@ -434,7 +434,7 @@ fn set_material(gl: &Gl, face: GLenum, m: &Material) {
 }
 
 /// An enabled light past `GL_MAX_LIGHTS` is an error.
-pub(super) fn check_lights(state: &LightingState, max_lights: usize) -> Result<(), DrawError> {
+pub(super) fn check_lights(state: &FixedFunctionState, max_lights: usize) -> Result<(), DrawError> {
     match state
         .lights
         .iter()

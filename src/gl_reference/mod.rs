@@ -1,7 +1,7 @@
 //! Fixed-function OpenGL as a reference renderer: the oracle of the conformance tests and the
 //! anchor of `ffvk bench`.
 //!
-//! It maps a [`LightingState`] onto the legacy GL entry points one to one (glLight, glMaterial,
+//! It maps a [`FixedFunctionState`] onto the legacy GL entry points one to one (glLight, glMaterial,
 //! glLightModel, glColorMaterial, glShadeModel, glEnable; glTexImage2D, glTexParameter,
 //! glTexEnv and the `GL_TEXTURE` matrix for a textured draw) and lets the GL driver evaluate
 //! the lighting and texturing. Nothing is linked: `libEGL.so.1` is opened when a render starts (`egl.rs`), the
@@ -43,7 +43,7 @@ use std::sync::Mutex;
 use glam::{Mat4, Vec4};
 
 use crate::Result;
-use ffvk::gl::state::{Cap, ColorMaterialMode, Face, LightingState};
+use ffvk::gl::state::{Cap, ColorMaterialMode, Face, FixedFunctionState};
 use ffvk::gl::texture::{Sampling, TextureImage};
 use ffvk::mesh::MeshData;
 
@@ -76,7 +76,7 @@ pub struct GlDraw<'a> {
     /// Lighting state; light positions and spot directions are already in eye space. Its
     /// current color is GL's current color when the draw starts (`glColor4fv`, before the
     /// materials and the `GL_COLOR_MATERIAL` enable).
-    pub state: LightingState,
+    pub state: FixedFunctionState,
     /// Whether the mesh's colors are a color array; `false` draws with GL's current color.
     pub color_array: bool,
     /// GL calls made after the state is set and before the draw, so that GL's own rules
@@ -86,7 +86,7 @@ pub struct GlDraw<'a> {
     /// texture object 0 (no image, so `GL_TEXTURE_2D` on textures nothing). Every level of the
     /// image is uploaded as it is (ffvk's own mipmaps, so that a comparison is about sampling,
     /// not mipmap generation); the texture environment and matrix come from
-    /// [`LightingState::texture`] and the texture coordinates from the mesh.
+    /// [`FixedFunctionState::texture`] and the texture coordinates from the mesh.
     pub texture: Option<(&'a TextureImage, Sampling)>,
     /// The primitive mode `glDrawElements` draws the mesh's indices with (`GL_TRIANGLES` by
     /// default; the mesh's indices are then read as that mode's vertices).
@@ -147,7 +147,7 @@ impl GlMode {
 
 impl<'a> GlDraw<'a> {
     /// A draw of `mesh` with its color array, no extra calls and no texture.
-    pub fn new(mesh: &'a MeshData, modelview: Mat4, projection: Mat4, state: LightingState) -> Self {
+    pub fn new(mesh: &'a MeshData, modelview: Mat4, projection: Mat4, state: FixedFunctionState) -> Self {
         GlDraw {
             mesh,
             modelview,

@@ -15,7 +15,7 @@ use super::draw::{
 use super::egl::{gl_string, has_extension, version_number};
 use super::error::GlError;
 use super::{GlDraw, GlScene, GlTiming};
-use ffvk::gl::state::{LightingState, Material};
+use ffvk::gl::state::{FixedFunctionState, Material};
 
 /// Draws `scene` `warmup` + `frames` times, timing each frame (see [`super::time_frames`]).
 pub(super) fn time(gl: &Gl, scene: &GlScene, warmup: u32, frames: u32) -> Result<GlTiming, GlError> {
@@ -238,9 +238,9 @@ fn issue_changes(gl: &Gl, draw: &GlDraw, changes: &Changes) {
 /// something else differs.
 fn changes(prev: &GlDraw, draw: &GlDraw, max_lights: usize) -> Option<Changes> {
     let (a, b) = (&prev.state, &draw.state);
-    let rest = |s: &LightingState| {
+    let rest = |s: &FixedFunctionState| {
         let mut rest = *s;
-        rest.lights = LightingState::default().lights;
+        rest.lights = FixedFunctionState::default().lights;
         (rest.front, rest.back) = (Material::default(), Material::default());
         rest.current_color = Vec4::ONE;
         rest

@@ -320,7 +320,7 @@ fn ffvk_image(
     mesh: &MeshData,
     modelview: Mat4,
     projection: Mat4,
-    state: LightingState,
+    state: FixedFunctionState,
 ) -> RgbaImage {
     let gpu = r.upload(mesh).unwrap();
     let mut frame = Frame::new(SIZE, SIZE);
@@ -328,7 +328,7 @@ fn ffvk_image(
     r.render(&frame).unwrap().into_rgba_image()
 }
 
-fn gl_image(mesh: &MeshData, modelview: Mat4, projection: Mat4, state: LightingState) -> RgbaImage {
+fn gl_image(mesh: &MeshData, modelview: Mat4, projection: Mat4, state: FixedFunctionState) -> RgbaImage {
     gl_draw_image(
         GlDraw::new(mesh, modelview, projection, state),
         [0.0, 0.0, 0.0, 1.0],
@@ -354,7 +354,7 @@ pub(crate) fn gl_draw_image(draw: GlDraw, clear: [f32; 4]) -> RgbaImage {
 pub(crate) fn mask(r: &mut Renderer, mesh: &MeshData, modelview: Mat4, projection: Mat4) -> Vec<bool> {
     let mut white = mesh.clone();
     white.vertices.iter_mut().for_each(|v| v.color = [1.0; 4]);
-    let unlit = LightingState::default();
+    let unlit = FixedFunctionState::default();
     let a = ffvk_image(r, &white, modelview, projection, unlit);
     let b = gl_image(&white, modelview, projection, unlit);
     let both = |x: i64, y: i64| {

@@ -54,7 +54,7 @@ fn assert_same_bytes(renderer: &ffvk::Pixels, caller: &[u8], what: &str) {
 fn renderer_frame(
     r: &mut ffvk::Renderer,
     mesh: &ffvk::Mesh,
-    state: &ffvk::gl::state::LightingState,
+    state: &ffvk::gl::state::FixedFunctionState,
 ) -> ffvk::Pixels {
     let mut frame = Frame::new(embed::SIZE, embed::SIZE);
     frame.clear_color = Vec4::from_array(embed::CLEAR);

@@ -2,7 +2,7 @@
 //! worked out by hand from the GL 2.1 lighting equation (not from ffvk), so that it can serve
 //! as the oracle; and how it chooses, and fails to find, a GL driver and device.
 
-use ffvk::gl::state::{LightingMode, LightingState};
+use ffvk::gl::state::{FixedFunctionState, LightingMode};
 use ffvk::mesh::{MeshData, Vertex};
 use ffvk_cli::gl_reference::{
     gl_info, gl_info_with, render_gl, render_gl_with, time_frames_with, GlDraw, GlError, GlOptions, GlScene,
@@ -26,7 +26,7 @@ fn full_screen_quad(normal: Vec3, color: Vec4) -> MeshData {
     )
 }
 
-fn scene<'a>(mesh: &'a MeshData, state: LightingState) -> GlScene<'a> {
+fn scene<'a>(mesh: &'a MeshData, state: FixedFunctionState) -> GlScene<'a> {
     GlScene {
         width: SIZE,
         height: SIZE,
@@ -66,8 +66,8 @@ fn assert_every_pixel(img: &image::RgbaImage, expected: [u8; 4], tolerance: u8) 
     }
 }
 
-fn lit_default_light0() -> LightingState {
-    let mut state = LightingState::default();
+fn lit_default_light0() -> FixedFunctionState {
+    let mut state = FixedFunctionState::default();
     state.lighting = true;
     state.lights[0].enabled = true;
     state
@@ -85,7 +85,7 @@ fn reports_a_fixed_function_context() {
 fn unlit_color_passes_through() {
     // 0.25, 0.5, 0.75 of 255 are 63.75, 127.5 and 191.25.
     let mesh = full_screen_quad(Vec3::Z, Vec4::new(0.25, 0.5, 0.75, 1.0));
-    let img = render(&scene(&mesh, LightingState::default())).expect("render");
+    let img = render(&scene(&mesh, FixedFunctionState::default())).expect("render");
     assert_eq!(img.dimensions(), (SIZE, SIZE));
     assert_every_pixel(&img, [64, 128, 191, 255], 1);
 }
@@ -111,7 +111,7 @@ fn row_zero_is_the_top_of_the_view() {
             .collect(),
         vec![0, 1, 2],
     );
-    let img = render(&scene(&mesh, LightingState::default())).expect("render");
+    let img = render(&scene(&mesh, FixedFunctionState::default())).expect("render");
     let mid = SIZE / 2;
     // Row 2 at the center column lies near y = +0.75 in NDC: inside the triangle.
     assert_eq!(img.get_pixel(mid, 2).0, [255, 0, 0, 255]);
@@ -141,7 +141,7 @@ fn flat_shading_takes_the_last_vertex() {
             .collect(),
         vec![0, 1, 2],
     );
-    let mut state = LightingState::default();
+    let mut state = FixedFunctionState::default();
     state.mode = LightingMode::Flat;
     let img = render(&scene(&mesh, state)).expect("render");
     assert_every_pixel(&img, [0, 0, 255, 255], 0);
@@ -217,7 +217,7 @@ fn a_missing_egl_library_is_no_gl_driver() {
 
     // Every entry point says the same.
     let mesh = full_screen_quad(Vec3::Z, Vec4::ONE);
-    let scene = scene(&mesh, LightingState::default());
+    let scene = scene(&mesh, FixedFunctionState::default());
     for message in [
         render_gl_with(&scene, &options).map(drop),
         time_frames_with(&scene, 1, 1, &options).map(drop),
@@ -281,7 +281,7 @@ fn framebuffer_sizes_gl_cannot_make_are_errors() {
         let scene = GlScene {
             width,
             height,
-            ..scene(&mesh, LightingState::default())
+            ..scene(&mesh, FixedFunctionState::default())
         };
         let message = render_gl(&scene).expect_err("no framebuffer").to_string();
         assert!(message.contains(expected), "{width}x{height}: {message}");

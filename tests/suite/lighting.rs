@@ -53,7 +53,7 @@ fn sheet_scene(gl: GlState, back: bool) -> Scene {
 }
 
 /// Renders `scene` in `state`'s mode with pipelines of the `specialize` variant.
-fn render_variant(scene: &Scene, state: LightingState, specialize: Specialize) -> RgbaImage {
+fn render_variant(scene: &Scene, state: FixedFunctionState, specialize: Specialize) -> RgbaImage {
     let mut r = renderer_with(specialize);
     let mesh = r.upload(&scene.mesh).unwrap();
     let mut frame = Frame::new(SIZE, SIZE);

@@ -214,7 +214,7 @@ fn unit_vector_between_homogeneous_points() {
 
 #[test]
 fn normals_rescale_and_normalize() {
-    let mut state = LightingState::default();
+    let mut state = FixedFunctionState::default();
     let m = Mat4::from_scale(Vec3::splat(0.5));
     // (M⁻¹)ᵀ of a 0.5 scale doubles the normal.
     assert!((reference::eye_normal(&state, m, DVec3::Z) - DVec3::new(0.0, 0.0, 2.0)).length() < 1e-6);

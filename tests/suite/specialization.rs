@@ -11,7 +11,7 @@ use glam::{Mat4, Vec3, Vec4};
 use crate::support::*;
 
 /// Lighting on with `lights` directional lights, in `mode`.
-fn lit(lights: usize, mode: LightingMode) -> LightingState {
+fn lit(lights: usize, mode: LightingMode) -> FixedFunctionState {
     with(dark(), |gl| {
         for i in 0..lights {
             gl.enable(Cap::Light(i))?;
@@ -24,7 +24,7 @@ fn lit(lights: usize, mode: LightingMode) -> LightingState {
 }
 
 /// Draws one small frame of a quad with each state, in order.
-fn draw_states(r: &mut Renderer, states: &[LightingState]) {
+fn draw_states(r: &mut Renderer, states: &[FixedFunctionState]) {
     let mesh = r.upload(&quad(-1.0, -1.0, 1.0, 1.0, 0.0, Vec4::ONE)).unwrap();
     for &state in states {
         let mut frame = Frame::new(8, 8);
@@ -101,7 +101,7 @@ fn auto_specializes_until_its_budget_then_uses_the_uber_shader() {
 
 #[test]
 fn the_key_keeps_only_what_changes_the_lighting() {
-    let key = |s: &LightingState| SpecKey::for_state(s);
+    let key = |s: &FixedFunctionState| SpecKey::for_state(s);
     // Unlit states share one key whatever their lights and light model.
     let mut unlit_with_lights = lit(3, LightingMode::Vertex);
     unlit_with_lights.lighting = false;
@@ -144,7 +144,7 @@ fn the_key_keeps_only_what_changes_the_lighting() {
 
 #[test]
 fn gls_own_state_promises_no_lighting_variant_and_a_variant_that_cannot_act_changes_no_key() {
-    let key = |s: &LightingState| SpecKey::for_state(s);
+    let key = |s: &FixedFunctionState| SpecKey::for_state(s);
     let variants = |k: SpecKey| {
         [
             SpecConstant::SpecularModel,
@@ -187,7 +187,7 @@ fn gls_own_state_promises_no_lighting_variant_and_a_variant_that_cannot_act_chan
 #[test]
 fn one_sided_single_color_states_pass_one_color_between_the_stages() {
     use ffvk::draw::pipeline::variant_name;
-    let key = |s: &LightingState| SpecKey::for_state(s);
+    let key = |s: &FixedFunctionState| SpecKey::for_state(s);
     let one_sided = lit(2, LightingMode::Vertex);
     let mut two_sided = one_sided;
     two_sided.model.two_side = true;
@@ -246,7 +246,8 @@ fn one_sided_single_color_states_pass_one_color_between_the_stages() {
 /// uber-shader's key keeps them unset.
 #[test]
 fn directional_lights_take_their_derived_state_only_at_affine_modelviews() {
-    let finite = |s: &LightingState, mv: Mat4| SpecKey::for_draw(s, mv).get(SpecConstant::FiniteVertices);
+    let finite =
+        |s: &FixedFunctionState, mv: Mat4| SpecKey::for_draw(s, mv).get(SpecConstant::FiniteVertices);
     let affine = Mat4::from_translation(Vec3::new(0.0, 0.0, -2.0));
     let mut projective = affine;
     projective.w_axis.w = 2.0;
@@ -256,7 +257,7 @@ fn directional_lights_take_their_derived_state_only_at_affine_modelviews() {
     let mut mixed = directional;
     mixed.lights[1].position.w = 1.0;
     assert_eq!(finite(&mixed, affine), 1, "light 0 is still directional");
-    let kinds = |s: &LightingState| {
+    let kinds = |s: &FixedFunctionState| {
         let key = SpecKey::for_draw(s, affine);
         (
             key.get(SpecConstant::DirectionalLights),

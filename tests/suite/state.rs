@@ -238,11 +238,11 @@ fn boundary_values_are_accepted() {
 
 #[test]
 fn state_built_by_hand_is_validated_before_it_reaches_the_gpu() {
-    let mut state = LightingState::default();
+    let mut state = FixedFunctionState::default();
     state.lights[4].spot_cutoff = 100.0;
     let err = DrawBlock::new(&state, Mat4::IDENTITY, Mat4::IDENTITY).unwrap_err();
     assert!(err.to_string().contains("GL_SPOT_CUTOFF = 100"), "{err}");
-    let mut state = LightingState::default();
+    let mut state = FixedFunctionState::default();
     state.front.shininess = f32::NAN;
     assert!(DrawBlock::new(&state, Mat4::IDENTITY, Mat4::IDENTITY).is_err());
 }

@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use ffvk::gl::state::{
-    Cap, ColorControl, Face, GlState, LightModelParam, LightParam, LightingMode, LightingState,
+    Cap, ColorControl, Face, FixedFunctionState, GlState, LightModelParam, LightParam, LightingMode,
     MaterialParam, StateError, TexEnvParam,
 };
 use ffvk::gl::texture::{TexEnvMode, TextureImage};
@@ -147,8 +147,8 @@ pub fn assert_pixel(image: &RgbaImage, x: u32, y: u32, expected: DVec4, tol: f64
 }
 
 /// The state with lighting disabled: vertex colors pass through.
-pub fn unlit() -> LightingState {
-    LightingState::default()
+pub fn unlit() -> FixedFunctionState {
+    FixedFunctionState::default()
 }
 
 pub fn rgba(r: f32, g: f32, b: f32, a: f32) -> Vec4 {
@@ -213,7 +213,7 @@ pub fn textured_state(
     control: ColorControl,
     mode: LightingMode,
     matrix: Mat4,
-) -> LightingState {
+) -> FixedFunctionState {
     let mut gl = lit_state();
     gl.light(0, LightParam::Position(Vec4::new(1.0, 1.0, 2.0, 0.0)))
         .unwrap();

@@ -117,7 +117,7 @@ fn dense_sphere() -> View {
 /// pixels.
 struct Case {
     name: String,
-    state: LightingState,
+    state: FixedFunctionState,
     image: TextureImage,
     sampling: Sampling,
     tol: u8,
@@ -127,7 +127,7 @@ struct Case {
 fn ffvk_image(
     r: &mut Renderer,
     view: &View,
-    state: LightingState,
+    state: FixedFunctionState,
     image: &TextureImage,
     sampling: &Sampling,
 ) -> RgbaImage {
@@ -140,7 +140,7 @@ fn ffvk_image(
     r.render(&frame).unwrap().into_rgba_image()
 }
 
-fn gl_image(view: &View, state: LightingState, image: &TextureImage, sampling: Sampling) -> RgbaImage {
+fn gl_image(view: &View, state: FixedFunctionState, image: &TextureImage, sampling: Sampling) -> RgbaImage {
     let mut draw = GlDraw::new(&view.mesh, view.modelview, view.projection, state);
     draw.texture = Some((image, sampling));
     gl_draw_image(draw, [0.0, 0.0, 0.0, 1.0])
@@ -485,7 +485,7 @@ fn a_scene_with_another_texture_setting_fails_the_comparison() {
     let mut srgb = waves().with_mipmaps();
     srgb.srgb = true;
     let waves = waves().with_mipmaps();
-    type Side<'a> = (LightingState, &'a TextureImage, Sampling);
+    type Side<'a> = (FixedFunctionState, &'a TextureImage, Sampling);
     let pairs: [(&str, Side, Side); 5] = [
         (
             "modulate against replace",

@@ -24,7 +24,7 @@ fn texels() -> TextureImage {
 }
 
 /// [`textured_state`] with the texture repeated twice around the sphere by the texture matrix.
-fn state(env: TexEnvMode, control: ColorControl, mode: LightingMode) -> LightingState {
+fn state(env: TexEnvMode, control: ColorControl, mode: LightingMode) -> FixedFunctionState {
     textured_state(env, control, mode, Mat4::from_scale(Vec3::new(2.0, 1.0, 1.0)))
 }
 
@@ -45,7 +45,7 @@ fn sphere() -> Scene {
 fn render(
     r: &mut Renderer,
     scene: &Scene,
-    state: LightingState,
+    state: FixedFunctionState,
     texture: Option<&ffvk::Texture>,
 ) -> RgbaImage {
     let mesh = r.upload(&scene.mesh).unwrap();
@@ -59,7 +59,7 @@ fn render(
 
 /// The nearest triangle under each probe pixel (every other pixel), with its coverage, away
 /// from triangle edges.
-fn probes(scene: &Scene, state: &LightingState) -> Vec<(u32, u32, [usize; 3], Coverage)> {
+fn probes(scene: &Scene, state: &FixedFunctionState) -> Vec<(u32, u32, [usize; 3], Coverage)> {
     let clips: Vec<DVec4> = scene
         .mesh
         .vertices
@@ -84,7 +84,7 @@ fn probes(scene: &Scene, state: &LightingState) -> Vec<(u32, u32, [usize; 3], Co
 fn differences(
     image: &RgbaImage,
     scene: &Scene,
-    state: &LightingState,
+    state: &FixedFunctionState,
     bound: reference::Bound,
 ) -> Vec<(f64, u32, u32, f64)> {
     let mut out: Vec<(f64, u32, u32, f64)> = probes(scene, state)
@@ -111,7 +111,7 @@ fn differences(
 fn check(
     image: &RgbaImage,
     scene: &Scene,
-    state: &LightingState,
+    state: &FixedFunctionState,
     bound: reference::Bound,
     tol: f64,
     what: &str,

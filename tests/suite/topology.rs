@@ -42,7 +42,7 @@ fn two_sided(mode: LightingMode) -> GlState {
 }
 
 /// The reference's lit color of vertex `v` for the front (or back) face, identity matrices.
-fn lit(state: &LightingState, v: &Vertex, back: bool) -> DVec4 {
+fn lit(state: &FixedFunctionState, v: &Vertex, back: bool) -> DVec4 {
     let eye = ffvk::reference::transform(state, Mat4::IDENTITY, Mat4::IDENTITY, v);
     let (pri, sec) = ffvk::reference::vertex_color(state, &eye, back);
     ffvk::reference::color_sum(pri, sec)

@@ -73,7 +73,7 @@
 //! between draws (modelview, materials, current color), are checked and written as its
 //! [`DrawRecord`] (288 bytes, with the normal matrix): that is all a draw that changes only
 //! those writes, about 0.1 µs on the host on lavapipe in a run whose draws borrow one
-//! [`LightingState`] and carry their own [`DrawValues`] (0.3-0.5 µs when each draw brings a
+//! [`FixedFunctionState`] and carry their own [`DrawValues`] (0.3-0.5 µs when each draw brings a
 //! state of its own, which is compared with the one before). The rest ([`StateBlock`]: lights,
 //! light model, switches, texture environment and matrix, projection; 2,768 bytes) is checked,
 //! packed and written only when it differs from the previous draw's in the same frame slot,
@@ -132,7 +132,7 @@ use super::record::{record_in_run, Bound, RunState, Topology};
 use super::ring::{Pushed, Ring, RingUse};
 use super::texture::TextureBinding;
 use crate::error::{LightingError, Result};
-use crate::gl::state::{LightingMode, LightingState};
+use crate::gl::state::{FixedFunctionState, LightingMode};
 use crate::gpu::layout::{DrawRecord, SpecKey, StateBlock, StateKey};
 use crate::vk::Device;
 
@@ -334,7 +334,7 @@ impl Lighting {
     /// Creates the pipeline a draw of `state` with `raster`, textured or not, would use, so
     /// that the first such draw does not pay for it (pipeline creation is the slow part of a
     /// cold start).
-    pub fn prepare(&mut self, state: &LightingState, raster: RasterState, textured: bool) -> Result<()> {
+    pub fn prepare(&mut self, state: &FixedFunctionState, raster: RasterState, textured: bool) -> Result<()> {
         self.prepare_sized(state, raster, textured, false)?;
         if state.mode == LightingMode::Fragment {
             // Small draws of the fragment mode have a pipeline of their own.
@@ -347,7 +347,7 @@ impl Lighting {
     /// [`SMALL_DRAW_VERTICES`] vertices.
     pub(crate) fn prepare_sized(
         &mut self,
-        state: &LightingState,
+        state: &FixedFunctionState,
         raster: RasterState,
         textured: bool,
         small: bool,
@@ -523,7 +523,7 @@ impl Lighting {
     }
 
     /// Stages `draws` in order ([`Lighting::stage`]), telling each whether it shares the draw
-    /// before's state: the same borrowed [`LightingState`] (which cannot change while the run
+    /// before's state: the same borrowed [`FixedFunctionState`] (which cannot change while the run
     /// borrows it) and an equal projection.
     /// On failure, the index of the draw that failed and why.
     pub(crate) fn stage_run(
@@ -725,7 +725,7 @@ impl Lighting {
     /// affine modelview or not), uses under the [`Specialize`] policy.
     fn pipeline_for(
         &mut self,
-        state: &LightingState,
+        state: &FixedFunctionState,
         raster: RasterState,
         variant: Variant,
     ) -> Result<vk::Pipeline> {

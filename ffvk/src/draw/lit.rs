@@ -8,7 +8,7 @@ use super::pipeline::RasterState;
 use super::record::Geometry;
 use super::texture::TextureBinding;
 pub use crate::gl::state::DrawValues;
-use crate::gl::state::LightingState;
+use crate::gl::state::FixedFunctionState;
 
 #[cfg(doc)]
 use super::pipeline::VertexInput;
@@ -18,7 +18,7 @@ use super::pipeline::VertexInput;
 #[non_exhaustive]
 pub struct LitDraw<'a> {
     /// The lighting state the draw captures (from [`GlState`](crate::gl::state::GlState)).
-    pub state: &'a LightingState,
+    pub state: &'a FixedFunctionState,
     /// Object to eye space (GL conventions: column vectors, viewer looking down −z).
     pub modelview: Mat4,
     /// GL's projection (clip z in [−w, w]); ffvk converts it to Vulkan's clip space.
@@ -67,7 +67,7 @@ impl<'a> LitDraw<'a> {
     /// [`RasterState`] (no depth test, no culling, no blending) and no texture. The `with_*`
     /// methods set the rest.
     pub fn new(
-        state: &'a LightingState,
+        state: &'a FixedFunctionState,
         modelview: Mat4,
         projection: Mat4,
         vertex_buffers: &'a [(vk::Buffer, u64)],

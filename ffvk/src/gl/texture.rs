@@ -3,7 +3,7 @@
 //! secondary color is added (section 3.9, color sum).
 //!
 //! What a draw captures splits as in GL: [`TextureUnit`] (`GL_TEXTURE_2D` enabled, the
-//! environment, the texture matrix) is part of [`LightingState`](super::state::LightingState);
+//! environment, the texture matrix) is part of [`FixedFunctionState`](super::state::FixedFunctionState);
 //! the texture object ([`TextureImage`] and [`Sampling`]) is bound per draw.
 
 use glam::{Mat4, Vec4};

@@ -8,8 +8,8 @@
 use glam::{Mat3, Mat4};
 
 use crate::gl::state::{
-    Attenuation, ColorControl, ColorMaterialMode, DrawValues, Light, LightingState, Material, SpecularModel,
-    SpotEdge, StateError, MAX_LIGHTS,
+    Attenuation, ColorControl, ColorMaterialMode, DrawValues, FixedFunctionState, Light, Material,
+    SpecularModel, SpotEdge, StateError, MAX_LIGHTS,
 };
 
 /// GL clip space (z in [-w, w], y up) to Vulkan clip space (z in [0, w], y down), applied
@@ -409,7 +409,7 @@ impl SpecKey {
     /// share a key: unlit states have one key, and what cannot matter is zeroed (the light
     /// model and light kinds without lights). The environment mode counts only while
     /// `GL_TEXTURE_2D` is enabled.
-    pub fn for_state(state: &LightingState) -> SpecKey {
+    pub fn for_state(state: &FixedFunctionState) -> SpecKey {
         let mut values = [0; SPEC_CONSTANT_COUNT];
         if state.texture.enabled {
             values[SpecConstant::TexEnv as usize] = state.texture.env_mode.code() as i32;
@@ -466,7 +466,7 @@ impl SpecKey {
     /// [`SpecKey::for_state`] for a draw with `modelview`: [`SpecConstant::FiniteVertices`]
     /// set where it can act (lit, with lights, every one directional) and the modelview is
     /// affine, which makes every vertex's w exactly 1. The uber-shader's key stays as it is.
-    pub fn for_draw(state: &LightingState, modelview: Mat4) -> SpecKey {
+    pub fn for_draw(state: &FixedFunctionState, modelview: Mat4) -> SpecKey {
         SpecKey::for_state(state).with_finite_vertices(modelview.row(3) == glam::Vec4::W)
     }
 
@@ -505,7 +505,7 @@ fn pack_lights(lights: &[Light; MAX_LIGHTS]) -> ([GpuLight; MAX_LIGHTS], u32) {
     (packed, count)
 }
 
-/// What of a draw its [`StateBlock`] is made from: its [`LightingState`] but the materials,
+/// What of a draw its [`StateBlock`] is made from: its [`FixedFunctionState`] but the materials,
 /// the current color, `GL_RESCALE_NORMAL` and the mode, and its projection. Two draws with
 /// equal keys share a block (and a pipeline, for equal raster states and texturing). The block
 /// packs the enabled lights only, so keys are equal when every light's enable is and the
@@ -523,7 +523,7 @@ pub(crate) struct StateKey {
 
 impl StateKey {
     /// The key of a draw of `state` under `projection`.
-    pub(crate) fn new(state: &LightingState, projection: Mat4) -> Self {
+    pub(crate) fn new(state: &FixedFunctionState, projection: Mat4) -> Self {
         StateKey {
             lighting: state.lighting,
             normalize: state.normalize,
@@ -538,7 +538,7 @@ impl StateKey {
     /// Whether a draw of `state` under `projection` has this key: compared in place, without
     /// copying the lights into a key of its own (a draw's check when it shares the state of the
     /// draw before, the common case).
-    pub(crate) fn matches(&self, state: &LightingState, projection: Mat4) -> bool {
+    pub(crate) fn matches(&self, state: &FixedFunctionState, projection: Mat4) -> bool {
         self.lighting == state.lighting
             && self.normalize == state.normalize
             && self.model == state.model
@@ -573,7 +573,7 @@ impl PartialEq for StateKey {
 
 /// Whether `a` and `b` make the same block under one projection (their [`StateKey`] parts are
 /// equal), compared in place.
-pub(crate) fn same_block_state(a: &LightingState, b: &LightingState) -> bool {
+pub(crate) fn same_block_state(a: &FixedFunctionState, b: &FixedFunctionState) -> bool {
     a.lighting == b.lighting
         && a.normalize == b.normalize
         && a.model == b.model
@@ -593,7 +593,7 @@ impl StateBlock {
     /// Checks and packs the state part of a draw of `state` under GL's `projection` (the
     /// Vulkan clip conversion is applied here): the light model, the lights (and, lighting,
     /// that no enabled positional light has all-zero attenuation), the texture unit.
-    pub fn new(state: &LightingState, projection: Mat4) -> Self {
+    pub fn new(state: &FixedFunctionState, projection: Mat4) -> Self {
         let (lights, light_count) = pack_lights(&state.lights);
         let cm = &state.color_material;
         StateBlock {
@@ -627,13 +627,13 @@ impl StateBlock {
 impl DrawRecord {
     /// Checks and packs a draw's own values: the materials and current color of `state` and
     /// the `modelview` (invertible, while lighting: normals need (M⁻¹)ᵀ).
-    pub fn new(state: &LightingState, modelview: Mat4) -> Self {
+    pub fn new(state: &FixedFunctionState, modelview: Mat4) -> Self {
         Self::with_values(state, &DrawValues::of(state), modelview)
     }
 
     /// [`DrawRecord::new`] with the draw's own materials and current values given apart
     /// from `state`, whose switches (`GL_LIGHTING`, `GL_RESCALE_NORMAL`) still apply.
-    pub fn with_values(state: &LightingState, values: &DrawValues, modelview: Mat4) -> Self {
+    pub fn with_values(state: &FixedFunctionState, values: &DrawValues, modelview: Mat4) -> Self {
         let (front, back) = (&values.front, &values.back);
         let n = normal_matrix(modelview);
         let rescale = if state.rescale_normal {
@@ -667,10 +667,10 @@ impl DrawRecord {
 }
 
 impl DrawBlock {
-    /// Checks one draw as drawing does ([`LightingState::check_drawable`] and
-    /// [`LightingState::check_draw`]) and packs it: its [`DrawRecord`] and [`StateBlock`].
+    /// Checks one draw as drawing does ([`FixedFunctionState::check_drawable`] and
+    /// [`FixedFunctionState::check_draw`]) and packs it: its [`DrawRecord`] and [`StateBlock`].
     /// `projection` is GL's; the Vulkan clip conversion is applied here.
-    pub fn new(state: &LightingState, modelview: Mat4, projection: Mat4) -> Result<Self, StateError> {
+    pub fn new(state: &FixedFunctionState, modelview: Mat4, projection: Mat4) -> Result<Self, StateError> {
         state.check_drawable()?;
         state.check_draw(&DrawValues::of(state), modelview)?;
         Ok(DrawBlock {

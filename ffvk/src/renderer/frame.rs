@@ -8,7 +8,7 @@ use glam::{Mat4, Vec4};
 use super::texture::Texture;
 use crate::draw::pipeline::RasterState;
 use crate::draw::record::Topology;
-use crate::gl::state::{Face, LightingState};
+use crate::gl::state::{Face, FixedFunctionState};
 use crate::vk::Buffer;
 
 #[cfg(doc)]
@@ -60,7 +60,7 @@ pub struct Draw<'a> {
     /// The lighting state, checked when the frame is drawn: a value GL would reject, a
     /// singular modelview with lighting on, or an enabled positional light with all three
     /// attenuations 0 fails the frame with [`Error::State`].
-    pub state: LightingState,
+    pub state: FixedFunctionState,
     /// `GL_CULL_FACE` with `glCullFace(face)`: `None` (GL's default) draws both faces;
     /// `Some(Face::Back)` drops the triangles that are clockwise on screen.
     pub cull_face: Option<Face>,
@@ -80,7 +80,7 @@ pub struct Draw<'a> {
 
 impl<'a> Draw<'a> {
     /// A draw of `mesh` with both faces drawn (GL's default: culling off).
-    pub fn new(mesh: &'a Mesh, modelview: Mat4, projection: Mat4, state: LightingState) -> Self {
+    pub fn new(mesh: &'a Mesh, modelview: Mat4, projection: Mat4, state: FixedFunctionState) -> Self {
         Draw {
             mesh,
             modelview,

@@ -10,7 +10,7 @@ use crate::draw::pipeline::{Specialize, COLOR_FORMAT, DEPTH_FORMAT};
 use crate::draw::record::Topology;
 use crate::draw::texture::sampler_info;
 use crate::error::{vk_error, Error, MeshError, Result};
-use crate::gl::state::LightingState;
+use crate::gl::state::FixedFunctionState;
 use crate::gl::texture::{Sampling, TextureImage};
 use crate::mesh::MeshData;
 use crate::vk::objects::{CommandPool, Fence, Sampler};
@@ -519,7 +519,7 @@ impl Renderer {
     /// indices (smaller ones have their own, made before the first frame that draws one).
     /// Drivers may still compile part of a new pipeline at its first draw (lavapipe compiles
     /// fragment code then).
-    pub fn prepare(&mut self, state: &LightingState, depth_test: bool) -> Result<f64> {
+    pub fn prepare(&mut self, state: &FixedFunctionState, depth_test: bool) -> Result<f64> {
         let raster = RasterState {
             depth_test,
             ..RasterState::default()

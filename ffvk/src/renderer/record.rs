@@ -9,7 +9,7 @@ use super::{subresource, Frame, Pass, Recording, Renderer, Targets};
 use crate::draw::lighting::{DrawValues, Lighting, LitDraw, Staged};
 use crate::draw::record::Geometry;
 use crate::error::{vk_error, Error, Result};
-use crate::gl::state::LightingState;
+use crate::gl::state::FixedFunctionState;
 use crate::gpu::layout::same_block_state;
 use crate::vk::objects::QueryPool;
 
@@ -233,7 +233,7 @@ unsafe fn record_readback(vkd: &ash::Device, targets: &Targets, cmd: vk::Command
 /// and carries its values, as an embedder's run does: its state is compared here once, and
 /// staging and pipeline lookup take it as the same.
 pub(super) fn lit_draws<'f>(frame: &'f Frame) -> Vec<LitDraw<'f>> {
-    let mut shared: Option<&'f LightingState> = None;
+    let mut shared: Option<&'f FixedFunctionState> = None;
     frame
         .draws
         .iter()

@@ -5,7 +5,7 @@
 use glam::{Mat4, Vec3, Vec4};
 
 use super::gltf::{gl_light, GltfLights, LightKind, PunctualLight};
-use crate::gl::state::{ColorMaterialMode, Face, LightingState};
+use crate::gl::state::{ColorMaterialMode, Face, FixedFunctionState};
 use crate::mesh::MeshData;
 
 /// What glTF asks of one mesh primitive, beyond its material.
@@ -22,7 +22,7 @@ pub struct GltfMeaning {
 
 impl GltfMeaning {
     /// `state` as glTF asks for this mesh.
-    pub(super) fn apply(&self, state: &mut LightingState) {
+    pub(super) fn apply(&self, state: &mut FixedFunctionState) {
         state.model.two_side = self.double_sided;
         if self.color_material {
             state.color_material.enabled = true;

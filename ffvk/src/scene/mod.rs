@@ -30,8 +30,8 @@ pub use self::meaning::{auto_exposure, GltfMeaning};
 pub use self::texture::MeshTexture;
 use crate::gl::presets;
 use crate::gl::state::{
-    Attenuation, Cap, ColorControl, ColorMaterialMode, DrawValues, Face, GlState, LightModelParam,
-    LightParam, LightingMode, LightingState, Material, SpecularModel, SpotEdge, StateError, MAX_LIGHTS,
+    Attenuation, Cap, ColorControl, ColorMaterialMode, DrawValues, Face, FixedFunctionState, GlState,
+    LightModelParam, LightParam, LightingMode, Material, SpecularModel, SpotEdge, StateError, MAX_LIGHTS,
 };
 use crate::mesh::MeshData;
 
@@ -449,7 +449,7 @@ pub struct Scene {
     /// Eye to clip, GL conventions (z in [-w, w]).
     pub projection: Mat4,
     /// Lights, light model, color material, normal handling, mode; materials per mesh.
-    pub state: LightingState,
+    pub state: FixedFunctionState,
     /// What is drawn, in file order.
     pub meshes: Vec<SceneMesh>,
     /// Things ignored while loading (from glTF files), one sentence each.
@@ -461,7 +461,7 @@ pub struct Scene {
 
 impl Scene {
     /// The lighting state `mesh` is drawn with.
-    pub fn draw_state(&self, mesh: &SceneMesh) -> LightingState {
+    pub fn draw_state(&self, mesh: &SceneMesh) -> FixedFunctionState {
         let mut state = self.state;
         state.front = mesh.front;
         state.back = mesh.back;

@@ -8,7 +8,7 @@ use glam::{Vec3, Vec4};
 use super::super::draws::{scene, DrawShape};
 use super::super::sweep::BenchMode;
 use crate::{Error, Result};
-use ffvk::gl::state::{Attenuation, ColorControl, LightingState, SpecularModel};
+use ffvk::gl::state::{Attenuation, ColorControl, FixedFunctionState, SpecularModel};
 use ffvk::gpu::layout::{normal_matrix, VK_FROM_GL_CLIP};
 use ffvk::mesh::MeshData;
 
@@ -77,7 +77,7 @@ fn rgb(v: Vec3) -> [f32; 4] {
 /// equation for a directional light 0, a point light 1 (no spot), both enabled and no other,
 /// one-sided, infinite viewer, no NORMALIZE, no COLOR_MATERIAL, a single color, Blinn's
 /// specular; and the first draw's ambient and emission materials for every draw.
-fn check(state: &LightingState, first: &LightingState) -> Result<()> {
+fn check(state: &FixedFunctionState, first: &FixedFunctionState) -> Result<()> {
     let [l0, l1] = [&state.lights[0], &state.lights[1]];
     let ok = state.lighting
         && l0.enabled

@@ -6,8 +6,8 @@
 use glam::{Mat3, Mat4, Vec3, Vec4};
 
 use super::{
-    check_light_scalar, finite_vec, in_range, Cap, ColorMaterialMode, Face, Light, LightModelParam,
-    LightParam, LightingMode, LightingState, Material, MaterialParam, ShadeModel, StateError, TexEnvParam,
+    check_light_scalar, finite_vec, in_range, Cap, ColorMaterialMode, Face, FixedFunctionState, Light,
+    LightModelParam, LightParam, LightingMode, Material, MaterialParam, ShadeModel, StateError, TexEnvParam,
     MAX_LIGHTS,
 };
 
@@ -17,7 +17,7 @@ use super::{
 #[non_exhaustive]
 pub struct GlState {
     /// The state a draw captures.
-    pub lighting: LightingState,
+    pub lighting: FixedFunctionState,
     /// The modelview matrix in force (glLoadMatrix / glMultMatrix).
     pub modelview: Mat4,
 }
@@ -32,7 +32,7 @@ impl GlState {
     /// GL's initial state: identity modelview, every default of table 2.10.
     pub fn new() -> Self {
         GlState {
-            lighting: LightingState::default(),
+            lighting: FixedFunctionState::default(),
             modelview: Mat4::IDENTITY,
         }
     }

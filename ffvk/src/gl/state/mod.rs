@@ -531,10 +531,15 @@ pub enum LightModelParam {
     SpecularModel(SpecularModel),
 }
 
-/// Everything the lighting of one draw depends on, besides its geometry and matrices.
+/// GL's fixed-function state a draw captures, besides its geometry, matrices and raster state:
+/// GL's state groups in one struct, read as a whole by one key per pipeline
+/// ([`SpecKey`](crate::gpu::layout::SpecKey)). The groups: lighting (`lighting` to
+/// `rescale_normal`, and `mode`), texturing (`texture`), the current values (`current_*`), and
+/// the fragment stages after texturing (`color_sum`, `alpha_test`). Earlier versions called it
+/// `LightingState`, which stays as a deprecated alias for a release.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[non_exhaustive]
-pub struct LightingState {
+pub struct FixedFunctionState {
     /// GL_LIGHTING; off by default, as in GL: the vertex color passes through.
     pub lighting: bool,
     /// `GL_LIGHT0` onwards, [`MAX_LIGHTS`] of them, each starting at [`Light::gl_default`].
@@ -569,9 +574,16 @@ pub struct LightingState {
     pub current_texcoord: Vec4,
 }
 
-impl Default for LightingState {
+/// The old name of [`FixedFunctionState`], from when it held lighting alone.
+#[deprecated(
+    since = "0.2.0",
+    note = "renamed FixedFunctionState: it holds every fixed-function stage, not lighting alone"
+)]
+pub type LightingState = FixedFunctionState;
+
+impl Default for FixedFunctionState {
     fn default() -> Self {
-        LightingState {
+        FixedFunctionState {
             lighting: false,
             lights: std::array::from_fn(Light::gl_default),
             front: Material::default(),
@@ -589,7 +601,7 @@ impl Default for LightingState {
     }
 }
 
-impl LightingState {
+impl FixedFunctionState {
     /// Checks every value against GL's ranges; for state built field by field rather than
     /// through [`GlState`]'s setters.
     pub fn validate(&self) -> Result<(), StateError> {
@@ -657,7 +669,7 @@ pub fn cos_cutoff(cutoff_degrees: f32) -> f64 {
     }
 }
 
-/// The lights' part of [`LightingState::validate`]: every light's values, and the cones of the
+/// The lights' part of [`FixedFunctionState::validate`]: every light's values, and the cones of the
 /// enabled ones (a disabled light may be half set up: its cones count once it is enabled).
 fn validate_lights(lights: &[Light; MAX_LIGHTS]) -> Result<(), StateError> {
     for (index, light) in lights.iter().enumerate() {

@@ -3,13 +3,13 @@
 
 use glam::{Vec3, Vec4};
 
-use super::{finite_vec, LightingState, Material, StateError};
+use super::{finite_vec, FixedFunctionState, Material, StateError};
 
 /// A draw's own values, the GL state programs change between draws without touching lights or
 /// switches: the two materials (`glMaterial`, or `COLOR_MATERIAL`'s tracking) and GL's
 /// current values (`glColor`, `glNormal`, `glTexCoord`). A [`LitDraw`](crate::LitDraw) with its
 /// own values ([`LitDraw::with_values`](crate::LitDraw::with_values)) takes them instead of
-/// its state's, so that draws which differ only in these can share one [`LightingState`]: an
+/// its state's, so that draws which differ only in these can share one [`FixedFunctionState`]: an
 /// emulation layer keeps a state per change of lights or switches and these per draw (about
 /// 200 bytes instead of a 2.5 KB state).
 ///
@@ -46,7 +46,7 @@ impl DrawValues {
     /// The values `state` holds now: after a program's `glMaterial`, `glColor`, `glNormal`,
     /// `glTexCoord` and `glColorMaterial` calls on a [`GlState`](super::GlState), its
     /// materials already carry what color-material tracking wrote into them.
-    pub fn of(state: &LightingState) -> Self {
+    pub fn of(state: &FixedFunctionState) -> Self {
         DrawValues {
             front: state.front,
             back: state.back,
@@ -83,7 +83,7 @@ impl DrawValues {
     }
 
     /// Checks the values a draw carries: the materials in GL's ranges and every current value
-    /// finite. The one per-draw check of them ([`LightingState::check_draw`]).
+    /// finite. The one per-draw check of them ([`FixedFunctionState::check_draw`]).
     pub fn validate(&self) -> Result<(), StateError> {
         self.front.validate()?;
         self.back.validate()?;

@@ -395,13 +395,13 @@ impl Builder<'_> {
     }
 
     /// What drawing would refuse, by the GL state's own rules
-    /// ([`LightingState::check_drawable`], [`LightingState::check_draw`]), found here so that
+    /// ([`FixedFunctionState::check_drawable`], [`FixedFunctionState::check_draw`]), found here so that
     /// the error names the scene's field rather than surfacing at render time without it: a
     /// positional light with all three attenuations 0, a mesh whose modelview has no inverse
     /// (its normals would be NaN).
     pub(super) fn check_drawable(
         &self,
-        state: &LightingState,
+        state: &FixedFunctionState,
         light_of_index: &[(usize, usize)],
         view: Mat4,
         meshes: &[SceneMesh],

@@ -288,7 +288,7 @@ mod tests {
         assert!((gl.spot_cutoff - 45.0).abs() < 1e-4);
         assert!((gl.spot_exponent - spot_exponent(FRAC_PI_8, FRAC_PI_4)).abs() < 1e-6);
         for l in [&sun, &bulb, &torch] {
-            let mut state = crate::gl::state::LightingState::default();
+            let mut state = crate::gl::state::FixedFunctionState::default();
             state.lights[0] = gl_light(l);
             state.validate().unwrap();
         }
