@@ -93,6 +93,45 @@
 #ifndef GL_BLEND
 #define GL_BLEND 0x0BE2
 #endif
+#ifndef GL_ALPHA_TEST
+#define GL_ALPHA_TEST 0x0BC0
+#endif
+#ifndef GL_ALPHA_TEST_FUNC
+#define GL_ALPHA_TEST_FUNC 0x0BC1
+#endif
+#ifndef GL_ALPHA_TEST_REF
+#define GL_ALPHA_TEST_REF 0x0BC2
+#endif
+#ifndef GL_COLOR_SUM
+#define GL_COLOR_SUM 0x8458
+#endif
+#ifndef GL_CURRENT_SECONDARY_COLOR
+#define GL_CURRENT_SECONDARY_COLOR 0x8459
+#endif
+#ifndef GL_NEVER
+#define GL_NEVER 0x0200
+#endif
+#ifndef GL_LESS
+#define GL_LESS 0x0201
+#endif
+#ifndef GL_EQUAL
+#define GL_EQUAL 0x0202
+#endif
+#ifndef GL_LEQUAL
+#define GL_LEQUAL 0x0203
+#endif
+#ifndef GL_GREATER
+#define GL_GREATER 0x0204
+#endif
+#ifndef GL_NOTEQUAL
+#define GL_NOTEQUAL 0x0205
+#endif
+#ifndef GL_GEQUAL
+#define GL_GEQUAL 0x0206
+#endif
+#ifndef GL_ALWAYS
+#define GL_ALWAYS 0x0207
+#endif
 #ifndef GL_MAX_LIGHTS
 #define GL_MAX_LIGHTS 0x0D31
 #endif
@@ -714,6 +753,12 @@ typedef struct FfvkVertexLayoutInfo {
    */
   const struct FfvkAttribute *texcoord;
   /*
+   Secondary colors (`glSecondaryColorPointer`, three components), or null: the context's
+   current secondary color (`ffvkSecondaryColor3f`); summed with lighting off under
+   `GL_COLOR_SUM`.
+   */
+  const struct FfvkAttribute *secondary_color;
+  /*
    Material parameters given per vertex, or null with `material_count` 0. Drawn in the
    vertex and flat modes; a draw lit per fragment with such a layout is refused.
    */
@@ -1006,6 +1051,28 @@ void ffvkTexCoord4f(struct FfvkContext *ctx, float s, float t, float r, float q)
  `ctx` is null or a live context used by one thread at a time.
  */
 void ffvkTexCoord2f(struct FfvkContext *ctx, float s, float t);
+
+/*
+ glAlphaFunc: the alpha test's function (`GL_NEVER` .. `GL_ALWAYS`; another value sets
+ `GL_INVALID_ENUM`) and reference, clamped to [0, 1] as GL clamps it (a NaN reference sets
+ `GL_INVALID_VALUE`: ffvk's choice).
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkAlphaFunc(struct FfvkContext *ctx, uint32_t func, float reference);
+
+/*
+ glSecondaryColor3f: the current secondary color (r, g, b, 1), every vertex's in a draw
+ whose layout has no secondary color array, summed with lighting off under `GL_COLOR_SUM`;
+ `GL_INVALID_VALUE` for a component that is not finite (ffvk's choice).
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkSecondaryColor3f(struct FfvkContext *ctx, float r, float g, float b);
 
 /*
  glColor4f: the current color, the color of every vertex of a draw without a color array,

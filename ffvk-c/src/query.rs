@@ -67,6 +67,8 @@ pub(crate) fn is_enabled(c: &FfvkContext, cap: Cap) -> bool {
         Cap::Normalize => l.normalize,
         Cap::RescaleNormal => l.rescale_normal,
         Cap::Texture2D => l.texture.enabled,
+        Cap::ColorSum => l.fragment.color_sum,
+        Cap::AlphaTest => l.fragment.alpha_test.enabled,
         _ => false,
     }
 }
@@ -160,6 +162,8 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
         GL_NORMALIZE => Some(Cap::Normalize),
         GL_RESCALE_NORMAL => Some(Cap::RescaleNormal),
         GL_TEXTURE_2D => Some(Cap::Texture2D),
+        GL_COLOR_SUM => Some(Cap::ColorSum),
+        GL_ALPHA_TEST => Some(Cap::AlphaTest),
         p if p >= GL_LIGHT0 && p < GL_LIGHT0 + MAX_LIGHTS as u32 => light_index(f, p).ok().map(Cap::Light),
         _ => None,
     };
@@ -185,6 +189,9 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
         } as i64),
         GL_CURRENT_COLOR => Answer::Color(l.current_color.to_array().to_vec()),
         GL_CURRENT_NORMAL => Answer::Color(l.current_normal.to_array().to_vec()),
+        GL_CURRENT_SECONDARY_COLOR => Answer::Color(l.current_secondary_color.to_array().to_vec()),
+        GL_ALPHA_TEST_FUNC => Answer::Int(i64::from(0x0200 + l.fragment.alpha_test.func.code())),
+        GL_ALPHA_TEST_REF => Answer::Color(vec![l.fragment.alpha_test.reference]),
         GL_CURRENT_TEXTURE_COORDS => Answer::Floats(l.current_texcoord.to_array().to_vec()),
         GL_MAX_LIGHTS => Answer::Int(MAX_LIGHTS as i64),
         GL_MODELVIEW_MATRIX => Answer::Floats(c.gl.modelview.to_cols_array().to_vec()),
@@ -195,7 +202,7 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
                 f,
                 "pname",
                 pname,
-                "a lighting state name: GL_LIGHTING, GL_LIGHTi, GL_COLOR_MATERIAL(_FACE, _PARAMETER), GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_LIGHT_MODEL_*, GL_SHADE_MODEL, GL_CURRENT_COLOR, GL_CURRENT_NORMAL, GL_CURRENT_TEXTURE_COORDS, GL_MAX_LIGHTS or GL_{MODELVIEW,PROJECTION,TEXTURE}_MATRIX",
+                "a lighting state name: GL_LIGHTING, GL_LIGHTi, GL_COLOR_MATERIAL(_FACE, _PARAMETER), GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_LIGHT_MODEL_*, GL_SHADE_MODEL, GL_CURRENT_COLOR, GL_CURRENT_NORMAL, GL_CURRENT_TEXTURE_COORDS, GL_CURRENT_SECONDARY_COLOR, GL_COLOR_SUM, GL_ALPHA_TEST(_FUNC, _REF), GL_MAX_LIGHTS or GL_{MODELVIEW,PROJECTION,TEXTURE}_MATRIX",
             ))
         }
     })

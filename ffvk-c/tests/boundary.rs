@@ -185,7 +185,12 @@ impl Drop for Ctx {
 }
 
 /// The names `ffvkGetFloatv` answers (GL_LIGHTi added by [`Ctx::snapshot`]).
-const GET_NAMES: [u32; 19] = [
+const GET_NAMES: [u32; 24] = [
+    0x8459, // GL_CURRENT_SECONDARY_COLOR
+    0x0BC0, // GL_ALPHA_TEST
+    0x0BC1, // GL_ALPHA_TEST_FUNC
+    0x0BC2, // GL_ALPHA_TEST_REF
+    0x8458, // GL_COLOR_SUM
     CURRENT_NORMAL,
     CURRENT_TEXTURE_COORDS,
     LIGHTING,
@@ -433,6 +438,8 @@ fn context_calls() -> Vec<(&'static str, ContextCall)> {
             e("ffvkNormal3b", |c| ffvkNormal3b(c, 0, 127, 0)),
             e("ffvkTexCoord4f", |c| ffvkTexCoord4f(c, 0.5, 0.5, 0.0, 1.0)),
             e("ffvkTexCoord2f", |c| ffvkTexCoord2f(c, 0.5, 0.5)),
+            e("ffvkSecondaryColor3f", |c| ffvkSecondaryColor3f(c, 0.1, 0.2, 0.3)),
+            e("ffvkAlphaFunc", |c| ffvkAlphaFunc(c, 0x0201, 0.5)),
             e("ffvkShadeModel", |c| ffvkShadeModel(c, FLAT)),
             e("ffvkPerFragmentLighting", |c| ffvkPerFragmentLighting(c, 1)),
             e("ffvkLoadModelview", |c| ffvkLoadModelview(c, M.as_ptr())),

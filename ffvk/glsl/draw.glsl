@@ -75,6 +75,10 @@ layout(std140, set = 0, binding = 0) uniform State {
     uint normalize;       // NORMALIZE enabled
     uint specular_model;  // SPECULAR_* (ffvk's extension)
     uint tex_env_mode;    // TEXTURE_ENV_MODE, TEV_* in texture.glsl
+    uint color_sum;       // COLOR_SUM
+    uint alpha_func;      // ALPHA_TEST_FUNC, 0 NEVER .. 7 ALWAYS (7 while the test is off)
+    float alpha_ref;      // ALPHA_TEST_REF, in [0, 1]
+    uint pad_;
     Light lights[MAX_LIGHTS];
 } state;
 
@@ -124,7 +128,14 @@ layout(constant_id = 16) const int SPEC_SPOT_LIGHTS = -1;
 layout(constant_id = 17) const int SPEC_GL_SNORM = 0;
 // vec4s from one draw record to the next in the record buffer (deferred.frag): the ring's
 // stride, set in every pipeline.
-layout(constant_id = 18) const int SPEC_RECORD_VEC4S = 18;
+layout(constant_id = 18) const int SPEC_RECORD_VEC4S = 19;
+// COLOR_SUM with lighting off (lit draws always sum the separate specular color).
+layout(constant_id = 19) const int SPEC_COLOR_SUM = -1;
+// The alpha test's function, 0 NEVER .. 7 ALWAYS (ALWAYS while the test is off).
+layout(constant_id = 20) const int SPEC_ALPHA_FUNC = -1;
+// The color attachment's alpha bits when UNORM (the alpha test compares at that fixed-point
+// precision, GL 2.1 section 4.1.4), 0 for a float compare; set in every pipeline.
+layout(constant_id = 21) const int SPEC_ALPHA_BITS = 0;
 
 // A switch of the uber-shader, read from the uniform block. lavapipe 22.3 compiles a shader
 // variant for every draw whose uniforms changed when an if or a loop bound depends on uniform
@@ -173,6 +184,23 @@ bool may_be_gltf_falloff() {
 bool directional_at_finite_vertices(uint i) {
     return SPEC_FINITE_VERTICES == 1 && !may_be_local(i);
 }
+bool color_sum_enabled() {
+    return SPEC_COLOR_SUM < 0 ? uber_value(state.color_sum) != 0u : SPEC_COLOR_SUM != 0;
+}
+
+// Section 4.1.4: whether a fragment of alpha a passes the alpha test, the alpha and the
+// reference compared as fixed-point values at the color buffer's precision. The comparisons
+// are selected, not branched on: the uber-shader's function is a uniform value.
+bool alpha_passes(float a) {
+    if (SPEC_ALPHA_FUNC == 7) return true;
+    uint func = SPEC_ALPHA_FUNC < 0 ? uber_value(state.alpha_func) : uint(SPEC_ALPHA_FUNC);
+    float scale = exp2(float(SPEC_ALPHA_BITS)) - 1.0;
+    float v = SPEC_ALPHA_BITS > 0 ? floor(clamp(a, 0.0, 1.0) * scale + 0.5) : a;
+    float r = SPEC_ALPHA_BITS > 0 ? floor(state.alpha_ref * scale + 0.5) : state.alpha_ref;
+    bool passes[8] = bool[8](false, v < r, v == r, v <= r, v > r, v != r, v >= r, true);
+    return passes[min(func, 7u)];
+}
+
 uint specular_model() {
     return SPEC_SPECULAR_MODEL < 0 ? uber_value(state.specular_model) : uint(SPEC_SPECULAR_MODEL);
 }

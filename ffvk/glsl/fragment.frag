@@ -6,6 +6,8 @@
 layout(location = 0) in vec4 eye_position;
 layout(location = 1) in vec4 normal;  // xyz: the direction; w: the length
 layout(location = 3) in vec4 color;
+// With lighting off, the clamped secondary color (or (0, 0, 0, 1) without the color sum).
+layout(location = 2) in vec4 secondary;
 #ifdef VARYING_MATERIALS
 // The draw's materials (fragment.vert), for small draws: flat inputs cost lavapipe a setup
 // per attribute per triangle, which few triangles make cheaper than a draw's own uniform block.
@@ -33,6 +35,7 @@ layout(std140, set = 2, binding = 0) uniform Record {
     vec4 current_color;
     vec4 current_normal;
     vec4 current_texcoord;
+    vec4 current_secondary_color;
 } record;
 #endif
 
@@ -76,7 +79,7 @@ void main() {
     LitColor lit;
     if (!lighting_enabled()) {
         lit.c_pri = color;
-        lit.c_sec = vec4(0.0, 0.0, 0.0, 1.0);
+        lit.c_sec = secondary;
     } else {
         vec3 n = unit(normal.xyz) * normal.w;
         bool back_face = two_side() && !gl_FrontFacing;
@@ -88,5 +91,6 @@ void main() {
     lit.c_pri = texture_environment(lit.c_pri, texel_at(stq));
 #endif
     out_color = color_sum(lit);
+    if (!alpha_passes(out_color.a)) discard;
 #endif
 }

@@ -11,6 +11,7 @@ layout(location = 0) out vec4 eye_position;
 // per varying slot, and a float alone takes a slot.
 layout(location = 1) out vec4 normal;
 layout(location = 3) out vec4 color;
+layout(location = 2) out vec4 secondary;  // with lighting off: fragment.frag
 #ifdef VARYING_MATERIALS
 // The draw's materials, the same for every vertex of it (fragment.frag).
 layout(location = 5) flat out vec4 front_a_cm;
@@ -71,4 +72,5 @@ void main() {
     // COLOR_MATERIAL takes it.
     vec4 c = vertex_color(in_color);
     color = lighting_enabled() ? c : clamp(c, 0.0, 1.0);
+    secondary = unlit_secondary();
 }

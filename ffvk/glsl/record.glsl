@@ -23,6 +23,9 @@ layout(location = 17) in vec4 in_back_s_cm;       // back SPECULAR
 layout(location = 18) in vec4 in_back_e_cm;       // back EMISSION
 layout(location = 19) in float in_front_s_rm;    // front SHININESS (in_normal_matrix_0.w)
 layout(location = 20) in float in_back_s_rm;     // back SHININESS (in_normal_matrix_1.w)
+// The secondary color (glSecondaryColorPointer, or the record's current one): summed with
+// lighting off under COLOR_SUM.
+layout(location = 21) in vec4 in_secondary_color;
 
 // Sets draw_front and draw_back from the record (or the layout's per-vertex materials).
 void load_record() {
@@ -45,6 +48,12 @@ vec3 vertex_normal(vec3 n) {
 }
 vec4 vertex_color(vec4 c) {
     return signed_normalized(c, (SPEC_GL_SNORM >> 8) & 255);
+}
+// Section 2.14 with lighting off: the clamped secondary color, or (0, 0, 0, 1) when the color
+// sum is off (it then adds nothing).
+vec4 unlit_secondary() {
+    vec4 c = signed_normalized(in_secondary_color, (SPEC_GL_SNORM >> 16) & 255);
+    return color_sum_enabled() ? vec4(clamp(c.rgb, 0.0, 1.0), 1.0) : vec4(0.0, 0.0, 0.0, 1.0);
 }
 
 // Section 2.11.3: n = (M^-1)^T n_object, then RESCALE_NORMAL, then NORMALIZE.

@@ -35,4 +35,5 @@ void main() {
     lit.c_pri = texture_environment(lit.c_pri, texel_at(stq));
 #endif
     out_color = color_sum(lit);
+    if (!alpha_passes(out_color.a)) discard;
 }

@@ -49,7 +49,7 @@ void main() {
         // Section 2.14.6: colors are clamped after lighting, whether enabled or not.
         front_pri = clamp(c, 0.0, 1.0);
         back_pri = front_pri;
-        front_sec = vec4(0.0, 0.0, 0.0, 1.0);
+        front_sec = unlit_secondary();
         back_sec = front_sec;
         return;
     }

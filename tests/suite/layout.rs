@@ -145,7 +145,8 @@ fn the_state_block_matches_the_glsl_in_every_stage() {
         let block = r.struct_id("State");
         let want = rust_offsets!(StateBlock: projection, texture_matrix, a_cs, c_c, light_count, lighting,
             v_bs, t_bs, separate_specular, color_material, color_material_front, color_material_back,
-            color_material_mode, normalize, specular_model, tex_env_mode, lights);
+            color_material_mode, normalize, specular_model, tex_env_mode, color_sum, alpha_func, alpha_ref,
+            pad_, lights);
         assert_eq!(r.members(block), want, "{stage}: State block offsets");
 
         let light = r.struct_id("Light");
@@ -191,7 +192,8 @@ fn the_record_block_of_the_fragment_stages_matches_the_draw_record() {
             back,
             current_color,
             current_normal,
-            current_texcoord
+            current_texcoord,
+            current_secondary_color
         );
         assert_eq!(r.members(block), want, "{stage}: Record block offsets");
         seen += 1;
@@ -289,10 +291,11 @@ fn specialization_constant_ids_match_the_rust_side() {
             // float, is GL's 1.
             let default = match constant {
                 SpecConstant::PointSize => 1.0f32.to_bits() as i32,
-                // The layout's constants, set in every pipeline: no conversion, and the
-                // record's 18 vec4s.
+                // The layout's and target's constants, set in every pipeline: no conversion,
+                // the record's 19 vec4s, a float alpha compare.
                 SpecConstant::GlSnorm => 0,
-                SpecConstant::RecordVec4s => 18,
+                SpecConstant::RecordVec4s => 19,
+                SpecConstant::AlphaBits => 0,
                 _ => -1,
             };
             assert_eq!(

@@ -17,6 +17,7 @@ mod deferred;
 mod determinism;
 mod embedding;
 mod files;
+mod fragment_stages;
 mod fuzz;
 mod gl_oracle;
 mod gltf_files;

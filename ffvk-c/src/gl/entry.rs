@@ -461,6 +461,48 @@ pub unsafe extern "C" fn ffvkTexCoord2f(ctx: *mut FfvkContext, s: f32, t: f32) {
     })
 }
 
+/// glAlphaFunc: the alpha test's function (`GL_NEVER` .. `GL_ALWAYS`; another value sets
+/// `GL_INVALID_ENUM`) and reference, clamped to [0, 1] as GL clamps it (a NaN reference sets
+/// `GL_INVALID_VALUE`: ffvk's choice).
+///
+/// # Safety
+///
+/// `ctx` is null or a live context used by one thread at a time.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkAlphaFunc(ctx: *mut FfvkContext, func: u32, reference: f32) {
+    const F: &str = "ffvkAlphaFunc";
+    with_context(ctx, F, |c| {
+        let Some(&compare) = func
+            .checked_sub(GL_NEVER)
+            .and_then(|i| ffvk::gl::state::CompareFunc::ALL.get(i as usize))
+        else {
+            return Err(invalid_enum(
+                F,
+                "func",
+                func,
+                "GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL, GL_GREATER, GL_NOTEQUAL, GL_GEQUAL or GL_ALWAYS",
+            ));
+        };
+        c.gl.alpha_func(compare, reference).map_err(|e| state_error(F, e))
+    })
+}
+
+/// glSecondaryColor3f: the current secondary color (r, g, b, 1), every vertex's in a draw
+/// whose layout has no secondary color array, summed with lighting off under `GL_COLOR_SUM`;
+/// `GL_INVALID_VALUE` for a component that is not finite (ffvk's choice).
+///
+/// # Safety
+///
+/// `ctx` is null or a live context used by one thread at a time.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkSecondaryColor3f(ctx: *mut FfvkContext, r: f32, g: f32, b: f32) {
+    const F: &str = "ffvkSecondaryColor3f";
+    with_context(ctx, F, |c| {
+        c.gl.secondary_color(Vec3::new(r, g, b))
+            .map_err(|e| state_error(F, e))
+    })
+}
+
 fn color(ctx: *mut FfvkContext, f: &str, rgba: Vec4) {
     with_context(ctx, f, |c| c.gl.color(rgba).map_err(|e| state_error(f, e)))
 }

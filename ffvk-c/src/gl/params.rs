@@ -254,12 +254,14 @@ pub(crate) fn cap(function: &str, cap: u32) -> GlResult<Cap> {
         GL_NORMALIZE => Ok(Cap::Normalize),
         GL_RESCALE_NORMAL => Ok(Cap::RescaleNormal),
         GL_TEXTURE_2D => Ok(Cap::Texture2D),
+        GL_COLOR_SUM => Ok(Cap::ColorSum),
+        GL_ALPHA_TEST => Ok(Cap::AlphaTest),
         other => light_index(function, other).map(Cap::Light).map_err(|_| {
             invalid_enum(
                 function,
                 "cap",
                 other,
-                "GL_LIGHTING, GL_LIGHT0 .. GL_LIGHT0 + 15, GL_COLOR_MATERIAL, GL_NORMALIZE, GL_RESCALE_NORMAL or GL_TEXTURE_2D",
+                "GL_LIGHTING, GL_LIGHT0 .. GL_LIGHT0 + 15, GL_COLOR_MATERIAL, GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_COLOR_SUM or GL_ALPHA_TEST",
             )
         }),
     }

@@ -54,6 +54,10 @@ pub struct FfvkVertexLayoutInfo {
     /// Texture coordinates (`glTexCoordPointer`), or null: the context's current ones
     /// (`ffvkTexCoord4f`).
     pub texcoord: *const FfvkAttribute,
+    /// Secondary colors (`glSecondaryColorPointer`, three components), or null: the context's
+    /// current secondary color (`ffvkSecondaryColor3f`); summed with lighting off under
+    /// `GL_COLOR_SUM`.
+    pub secondary_color: *const FfvkAttribute,
     /// Material parameters given per vertex, or null with `material_count` 0. Drawn in the
     /// vertex and flat modes; a draw lit per fragment with such a layout is refused.
     pub materials: *const FfvkMaterialAttribute,
@@ -94,6 +98,7 @@ unsafe fn vertex_input(function: &str, info: &FfvkVertexLayoutInfo) -> Result<Ve
         ("normal", info.normal),
         ("color", info.color),
         ("texcoord", info.texcoord),
+        ("secondary_color", info.secondary_color),
     ] {
         if misaligned(ptr) {
             return Err(invalid(format!(
@@ -102,13 +107,20 @@ unsafe fn vertex_input(function: &str, info: &FfvkVertexLayoutInfo) -> Result<Ve
         }
     }
     // SAFETY: the caller's contract: each is null or points at an attribute (checked aligned).
-    let (normal, color, texcoord) =
-        unsafe { (info.normal.as_ref(), info.color.as_ref(), info.texcoord.as_ref()) };
+    let (normal, color, texcoord, secondary) = unsafe {
+        (
+            info.normal.as_ref(),
+            info.color.as_ref(),
+            info.texcoord.as_ref(),
+            info.secondary_color.as_ref(),
+        )
+    };
     let position = attribute(&info.position);
     let mut input = VertexInput::new(bindings, position, position)
         .with_normal(normal.map(attribute))
         .with_color(color.map(attribute))
-        .with_texcoord(texcoord.map(attribute));
+        .with_texcoord(texcoord.map(attribute))
+        .with_secondary_color(secondary.map(attribute));
     // SAFETY: the caller's contract: material_count entries at materials (checked bounded).
     let materials = unsafe { slice(function, "materials", info.materials, info.material_count) }?;
     for (i, m) in materials.iter().enumerate() {

@@ -152,6 +152,7 @@ unsafe impl Versioned for FfvkVertexLayoutInfo {
             normal: std::ptr::null(),
             color: std::ptr::null(),
             texcoord: std::ptr::null(),
+            secondary_color: std::ptr::null(),
             materials: std::ptr::null(),
             material_count: 0,
         }

@@ -34,6 +34,26 @@ fn is_integer(raw: i32) -> bool {
     }
 }
 
+/// The alpha channel's bits of a color format stored as unsigned normalized integers (what the
+/// alpha test's fixed-point compare takes: GL 2.1 section 4.1.4), or 0 for any other (floats,
+/// SNORM, formats without alpha): those compare as floats.
+pub(crate) fn unorm_alpha_bits(format: vk::Format) -> u32 {
+    use vk::Format as F;
+    match format {
+        F::R8G8B8A8_UNORM
+        | F::B8G8R8A8_UNORM
+        | F::A8B8G8R8_UNORM_PACK32
+        | F::R8G8B8A8_SRGB
+        | F::B8G8R8A8_SRGB
+        | F::A8B8G8R8_SRGB_PACK32 => 8,
+        F::A2B10G10R10_UNORM_PACK32 | F::A2R10G10B10_UNORM_PACK32 => 2,
+        F::R16G16B16A16_UNORM => 16,
+        F::R4G4B4A4_UNORM_PACK16 | F::B4G4R4A4_UNORM_PACK16 => 4,
+        F::R5G5B5A1_UNORM_PACK16 | F::B5G5R5A1_UNORM_PACK16 | F::A1R5G5B5_UNORM_PACK16 => 1,
+        _ => 0,
+    }
+}
+
 /// The depth formats, in Vulkan's order (`S8_UINT`, which has no depth, left out).
 pub(crate) const DEPTH_FORMATS: [vk::Format; 6] = [
     vk::Format::D16_UNORM,

@@ -25,8 +25,12 @@ pub use super::vertex_input::{Attribute, FaceArrays, MaterialArray, VertexInput,
 /// vertex pipeline cheaper (BENCHMARKS.md); the uber-shader always passes all four colors.
 pub fn one_color(key: SpecKey) -> bool {
     key != SpecKey::UBER
-        && (key.get(SpecConstant::Lighting) == 0
-            || (key.get(SpecConstant::TwoSide) == 0 && key.get(SpecConstant::SeparateSpecular) == 0))
+        && if key.get(SpecConstant::Lighting) == 0 {
+            // Unlit: a secondary color reaches the fragment stage only under COLOR_SUM.
+            key.get(SpecConstant::ColorSum) == 0
+        } else {
+            key.get(SpecConstant::TwoSide) == 0 && key.get(SpecConstant::SeparateSpecular) == 0
+        }
 }
 
 /// Draws of fewer indices (or, not indexed, vertices) than this are small: in the fragment mode
@@ -76,12 +80,14 @@ pub(crate) fn with_assembly(key: SpecKey, points: bool, point_size: f32) -> Spec
     spec
 }
 
-/// `key` with the vertex layout's constants set: its GL conversions (`SPEC_GL_SNORM`) and the
-/// record stride on `device` (`SPEC_RECORD_VEC4S`), in every pipeline.
-pub(crate) fn with_layout(key: SpecKey, gl_snorm: i32, device: &Device) -> SpecKey {
+/// `key` with the constants of the vertex layout and the target set: the layout's GL
+/// conversions (`SPEC_GL_SNORM`), the record stride on `device` (`SPEC_RECORD_VEC4S`) and the
+/// color attachment's alpha precision (`SPEC_ALPHA_BITS`), in every pipeline.
+pub(crate) fn with_layout(key: SpecKey, gl_snorm: i32, color_format: vk::Format, device: &Device) -> SpecKey {
     let mut spec = key;
     spec.values[SpecConstant::GlSnorm as usize] = gl_snorm;
     spec.values[SpecConstant::RecordVec4s as usize] = (record_stride_on(device) / 16) as i32;
+    spec.values[SpecConstant::AlphaBits as usize] = super::formats::unorm_alpha_bits(color_format) as i32;
     spec
 }
 
@@ -559,7 +565,7 @@ impl Pipelines {
         let frag = shader_module(device, name, variant.fragment, config.set_index)?;
         let entries = spec_entries();
         let spec = with_assembly(k.spec, k.topology == Topology::PointList, k.raster.point_size.0);
-        let spec = with_layout(spec, input.gl_snorm_code(), device);
+        let spec = with_layout(spec, input.gl_snorm_code(), config.target.color_format, device);
         let specialization = vk::SpecializationInfo::default()
             .map_entries(&entries)
             .data(bytemuck::bytes_of(&spec));

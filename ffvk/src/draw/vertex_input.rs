@@ -120,6 +120,9 @@ pub struct VertexInput {
     /// Texture coordinates (`glTexCoordPointer`, 1 to 4 components, missing ones read as
     /// t = r = 0, q = 1), read by textured draws; `None`: GL's current texture coordinates.
     pub texcoord: Option<Attribute>,
+    /// Secondary colors (`glSecondaryColorPointer`: three components; a fourth is ignored),
+    /// summed with lighting off under `GL_COLOR_SUM`; `None`: GL's current secondary color.
+    pub secondary_color: Option<Attribute>,
     /// Per-vertex front material parameters (Mesa's material attributes: `glMaterial` between
     /// `glBegin` and `glEnd`), each taking the place of the draw's own for that parameter.
     pub front_materials: FaceArrays,
@@ -136,8 +139,19 @@ impl PartialEq for VertexInput {
             .iter()
             .map(binding)
             .eq(other.bindings.iter().map(binding))
-            && (self.position, self.normal, self.color, self.texcoord)
-                == (other.position, other.normal, other.color, other.texcoord)
+            && (
+                self.position,
+                self.normal,
+                self.color,
+                self.texcoord,
+                self.secondary_color,
+            ) == (
+                other.position,
+                other.normal,
+                other.color,
+                other.texcoord,
+                other.secondary_color,
+            )
             && (self.front_materials, self.back_materials) == (other.front_materials, other.back_materials)
     }
 }
@@ -320,6 +334,7 @@ impl VertexInput {
             normal: Some(normal),
             color: None,
             texcoord: None,
+            secondary_color: None,
             front_materials: [None; 5],
             back_materials: [None; 5],
         }
@@ -346,6 +361,14 @@ impl VertexInput {
     #[must_use]
     pub fn with_texcoord(mut self, texcoord: Option<Attribute>) -> Self {
         self.texcoord = texcoord;
+        self
+    }
+
+    /// This layout with a secondary color array (`glSecondaryColorPointer`) at `secondary`;
+    /// `None`: GL's current secondary color for every vertex.
+    #[must_use]
+    pub fn with_secondary_color(mut self, secondary: Option<Attribute>) -> Self {
+        self.secondary_color = secondary;
         self
     }
 
@@ -392,6 +415,7 @@ impl VertexInput {
                 std::mem::offset_of!(Vertex, texcoord),
                 F::R32G32_SFLOAT,
             )),
+            secondary_color: None,
             front_materials: [None; 5],
             back_materials: [None; 5],
         }
@@ -419,6 +443,7 @@ impl VertexInput {
             ("normal", Kind::Normal, self.normal),
             ("color", Kind::Color, self.color),
             ("texcoord", Kind::TexCoord, self.texcoord),
+            ("secondary color", Kind::Color, self.secondary_color),
         ] {
             if let Some(a) = a {
                 out.push((name.to_owned(), kind, a));
@@ -588,7 +613,8 @@ impl VertexInput {
                 .into());
             }
         }
-        let locations = RECORD_FIRST_LOCATION + RECORD_LOCATIONS;
+        // The record's locations, then the secondary color's.
+        let locations = RECORD_FIRST_LOCATION + RECORD_LOCATIONS + 1;
         if locations > limits.max_vertex_input_attributes {
             return Err(LightingError::VertexInputLimit {
                 what: "attribute locations",
@@ -672,6 +698,8 @@ impl VertexInput {
                 or_record(Kind::Shininess, arrays[4], offset, F::R32_SFLOAT),
             ));
         }
+        let current = record_offset!(current_secondary_color);
+        out.push((21, or_record(Kind::Color, self.secondary_color, current, vec4)));
         out
     }
 
@@ -699,15 +727,18 @@ impl VertexInput {
             .collect()
     }
 
-    /// `SPEC_GL_SNORM` for this layout: a byte per converted attribute (the normal's, then
-    /// the color's), b in bits 0-4 and bit 7 when the array has a fourth component.
+    /// `SPEC_GL_SNORM` for this layout: a byte per converted attribute (the normal's, the
+    /// color's, the secondary color's), b in bits 0-4 and bit 7 when the array has a fourth
+    /// component.
     pub(crate) fn gl_snorm_code(&self) -> i32 {
         let code = |kind: Kind, a: Option<Attribute>| {
             a.and_then(|a| kind.read(a.format))
                 .filter(|r| r.gl_snorm_bits != 0)
                 .map_or(0, |r| r.gl_snorm_bits | if r.components == 4 { 0x80 } else { 0 })
         };
-        (code(Kind::Normal, self.normal) | code(Kind::Color, self.color) << 8) as i32
+        (code(Kind::Normal, self.normal)
+            | code(Kind::Color, self.color) << 8
+            | code(Kind::Color, self.secondary_color) << 16) as i32
     }
 }
 
@@ -749,7 +780,7 @@ mod tests {
         // The shininesses: the w of the normal matrix's first two columns.
         assert_eq!(at(19), Some((19, record, nm + 12, F::R32_SFLOAT)));
         assert_eq!(at(20), Some((20, record, nm + 28, F::R32_SFLOAT)));
-        assert_eq!(all.len(), 21, "locations 0-20, texture coordinates included");
+        assert_eq!(all.len(), 22, "locations 0-21, texture coordinates included");
     }
 
     #[test]

@@ -195,8 +195,16 @@ pub struct StateBlock {
     /// 1 Phong's reflection vector.
     pub specular_model: u32,
     /// `GL_TEXTURE_ENV_MODE` as [`TexEnvMode::code`](crate::gl::texture::TexEnvMode::code).
-    /// (It also starts `lights` on a 16-byte boundary.)
     pub tex_env_mode: u32,
+    /// `GL_COLOR_SUM` (read by the uber-shader with lighting off).
+    pub color_sum: u32,
+    /// The alpha test's function as [`CompareFunc::code`](crate::gl::state::CompareFunc::code),
+    /// `GL_ALWAYS` (7) while the test is off.
+    pub alpha_func: u32,
+    /// `GL_ALPHA_TEST_REF`, in [0, 1].
+    pub alpha_ref: f32,
+    /// Unused: starts `lights` on a 16-byte boundary.
+    pub pad_: u32,
     /// The enabled lights packed in index order, so entry i is not necessarily `GL_LIGHTi`;
     /// entries from `light_count` on are zeroed.
     pub lights: [GpuLight; MAX_LIGHTS],
@@ -205,7 +213,7 @@ pub struct StateBlock {
 /// One draw's own values, as the vertex stages read them: per-instance vertex attributes at
 /// locations 4-20 (`glsl/record.glsl`), one record per draw in ffvk's record buffer, the draw's
 /// `firstInstance` naming its record, and the current values a layout without an array for them
-/// reads at locations 1-3 instead. 288 bytes, eighteen `vec4`s; in the buffer, records lie the
+/// reads at locations 1-3 and 21 instead. 304 bytes, nineteen `vec4`s; in the buffer, records lie the
 /// device's uniform offset alignment apart ([`record_stride`]).
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
@@ -229,6 +237,9 @@ pub struct DrawRecord {
     /// GL's current texture coordinates (`glTexCoord`), s t r q: every vertex's (location 3)
     /// where a textured draw's layout has no texture coordinate array.
     pub current_texcoord: [f32; 4],
+    /// GL's current secondary color (`glSecondaryColor`), RGBA: every vertex's (location 21)
+    /// where the layout has no secondary color array.
+    pub current_secondary_color: [f32; 4],
 }
 
 /// The first vertex-attribute location of a [`DrawRecord`].
@@ -324,10 +335,19 @@ pub enum SpecConstant {
     /// `SPEC_RECORD_VEC4S`: `vec4`s from one draw record to the next in the record buffer
     /// ([`record_stride`] / 16), for the deferred lighting pass; set in every pipeline.
     RecordVec4s = 18,
+    /// `SPEC_COLOR_SUM`: `GL_COLOR_SUM` with lighting off, 0 or 1 (lit draws always sum).
+    ColorSum = 19,
+    /// `SPEC_ALPHA_FUNC`: the alpha test's function as
+    /// [`CompareFunc::code`](crate::gl::state::CompareFunc::code), 7 (`GL_ALWAYS`) while off.
+    AlphaFunc = 20,
+    /// `SPEC_ALPHA_BITS`: the color attachment's alpha bits when it is UNORM (the alpha test
+    /// compares at that fixed-point precision, as GL does), 0 for a float compare; set from the
+    /// target in every pipeline.
+    AlphaBits = 21,
 }
 
 /// How many specialization constants there are.
-pub const SPEC_CONSTANT_COUNT: usize = 19;
+pub const SPEC_CONSTANT_COUNT: usize = 22;
 
 impl SpecConstant {
     /// Every constant, in `constant_id` order.
@@ -351,6 +371,9 @@ impl SpecConstant {
         SpecConstant::SpotLights,
         SpecConstant::GlSnorm,
         SpecConstant::RecordVec4s,
+        SpecConstant::ColorSum,
+        SpecConstant::AlphaFunc,
+        SpecConstant::AlphaBits,
     ];
 
     /// The `constant_id` in the GLSL.
@@ -380,6 +403,9 @@ impl SpecConstant {
             SpecConstant::PointSize => "SPEC_POINT_SIZE",
             SpecConstant::GlSnorm => "SPEC_GL_SNORM",
             SpecConstant::RecordVec4s => "SPEC_RECORD_VEC4S",
+            SpecConstant::ColorSum => "SPEC_COLOR_SUM",
+            SpecConstant::AlphaFunc => "SPEC_ALPHA_FUNC",
+            SpecConstant::AlphaBits => "SPEC_ALPHA_BITS",
         }
     }
 }
@@ -414,7 +440,9 @@ impl SpecKey {
         if state.texture.enabled {
             values[SpecConstant::TexEnv as usize] = state.texture.env_mode.code() as i32;
         }
+        values[SpecConstant::AlphaFunc as usize] = state.fragment.alpha_test.effective_func().code() as i32;
         if !state.lighting {
+            values[SpecConstant::ColorSum as usize] = state.fragment.color_sum as i32;
             return SpecKey { values };
         }
         let lights: Vec<&Light> = state.enabled_lights().collect();
@@ -517,6 +545,7 @@ pub(crate) struct StateKey {
     model: crate::gl::state::LightModel,
     color_material: crate::gl::state::ColorMaterial,
     texture: crate::gl::texture::TextureUnit,
+    fragment: crate::gl::state::FragmentStages,
     projection: Mat4,
     lights: [Light; MAX_LIGHTS],
 }
@@ -530,6 +559,7 @@ impl StateKey {
             model: state.model,
             color_material: state.color_material,
             texture: state.texture,
+            fragment: state.fragment,
             projection,
             lights: state.lights,
         }
@@ -544,6 +574,7 @@ impl StateKey {
             && self.model == state.model
             && self.color_material == state.color_material
             && self.texture == state.texture
+            && self.fragment == state.fragment
             && self.projection == projection
             && same_lights(&self.lights, &state.lights)
     }
@@ -557,6 +588,7 @@ impl PartialEq for StateKey {
             model,
             color_material,
             texture,
+            fragment,
             projection,
             lights,
         } = self;
@@ -566,6 +598,7 @@ impl PartialEq for StateKey {
             && *model == other.model
             && *color_material == other.color_material
             && *texture == other.texture
+            && *fragment == other.fragment
             && *projection == other.projection
             && same_lights(lights, &other.lights)
     }
@@ -579,6 +612,7 @@ pub(crate) fn same_block_state(a: &FixedFunctionState, b: &FixedFunctionState) -
         && a.model == b.model
         && a.color_material == b.color_material
         && a.texture == b.texture
+        && a.fragment == b.fragment
         && same_lights(&a.lights, &b.lights)
 }
 
@@ -619,6 +653,10 @@ impl StateBlock {
             normalize: state.normalize as u32,
             specular_model: specular_code(state.model.specular_model),
             tex_env_mode: state.texture.env_mode.code(),
+            color_sum: state.fragment.color_sum as u32,
+            alpha_func: state.fragment.alpha_test.effective_func().code(),
+            alpha_ref: state.fragment.alpha_test.reference,
+            pad_: 0,
             lights,
         }
     }
@@ -662,6 +700,7 @@ impl DrawRecord {
             current_color: values.current_color.to_array(),
             current_normal: values.current_normal.extend(0.0).to_array(),
             current_texcoord: values.current_texcoord.to_array(),
+            current_secondary_color: values.current_secondary_color.to_array(),
         }
     }
 }

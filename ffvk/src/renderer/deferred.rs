@@ -97,6 +97,9 @@ pub(super) fn eligible(frame: &Frame, specialize: Specialize, cpu: bool) -> Opti
         d.state.mode == LightingMode::Fragment
             && d.raster(frame).blend.is_none()
             && !d.textured()
+            // The alpha test and an unlit color sum are forward-only stages.
+            && d.state.fragment.alpha_test.effective_func() == crate::gl::state::CompareFunc::Always
+            && (!d.state.fragment.color_sum || d.state.lighting)
             && affine(&d.modelview) == affine(&first.modelview)
             && StateKey::new(&d.state, d.projection) == key
     });
@@ -295,7 +298,7 @@ impl Deferred {
         let vert = shader_module(&self.device, name, variant.vertex, 0)?;
         let frag = shader_module(&self.device, name, variant.fragment, 0)?;
         let entries = spec_entries();
-        let spec = with_layout(with_assembly(key, false, 1.0), 0, &self.device);
+        let spec = with_layout(with_assembly(key, false, 1.0), 0, COLOR_FORMAT, &self.device);
         let specialization = vk::SpecializationInfo::default()
             .map_entries(&entries)
             .data(bytemuck::bytes_of(&spec));

@@ -6,9 +6,9 @@
 use glam::{Mat3, Mat4, Vec3, Vec4};
 
 use super::{
-    check_light_scalar, finite_vec, in_range, Cap, ColorMaterialMode, Face, FixedFunctionState, Light,
-    LightModelParam, LightParam, LightingMode, Material, MaterialParam, ShadeModel, StateError, TexEnvParam,
-    MAX_LIGHTS,
+    check_light_scalar, finite_vec, in_range, Cap, ColorMaterialMode, CompareFunc, Face, FixedFunctionState,
+    Light, LightModelParam, LightParam, LightingMode, Material, MaterialParam, ShadeModel, StateError,
+    TexEnvParam, MAX_LIGHTS,
 };
 
 /// The fixed-function state machine: the lighting state plus the current modelview matrix,
@@ -204,7 +204,35 @@ impl GlState {
             Cap::Normalize => self.lighting.normalize = on,
             Cap::RescaleNormal => self.lighting.rescale_normal = on,
             Cap::Texture2D => self.lighting.texture.enabled = on,
+            Cap::ColorSum => self.lighting.fragment.color_sum = on,
+            Cap::AlphaTest => self.lighting.fragment.alpha_test.enabled = on,
         }
+        Ok(())
+    }
+
+    /// glAlphaFunc: the alpha test's function and reference, the reference clamped to [0, 1]
+    /// as GL clamps it; a NaN reference is an error (ffvk's choice: GL leaves it undefined).
+    pub fn alpha_func(&mut self, func: CompareFunc, reference: f32) -> Result<(), StateError> {
+        if reference.is_nan() {
+            return Err(StateError::NotFinite {
+                parameter: "GL_ALPHA_TEST_REF",
+                value: reference,
+                valid: "a number (clamped to [0, 1])",
+            });
+        }
+        let test = &mut self.lighting.fragment.alpha_test;
+        test.func = func;
+        test.reference = reference.clamp(0.0, 1.0);
+        Ok(())
+    }
+
+    /// glSecondaryColor3f: the current secondary color (r, g, b, 1), every vertex's in draws
+    /// whose layout has no secondary color array (summed with lighting off under
+    /// `GL_COLOR_SUM`). Unclamped here, as GL clamps after lighting; a NaN or infinite
+    /// component is an error.
+    pub fn secondary_color(&mut self, rgb: Vec3) -> Result<(), StateError> {
+        finite_vec("GL_CURRENT_SECONDARY_COLOR", rgb.to_array().as_slice())?;
+        self.lighting.current_secondary_color = rgb.extend(1.0);
         Ok(())
     }
 

@@ -43,8 +43,10 @@ use glam::{Vec3, Vec4};
 use super::texture::{TexEnvMode, TextureUnit};
 
 mod machine;
+mod stages;
 mod values;
 pub use machine::GlState;
+pub use stages::{AlphaTest, CompareFunc, FragmentStages};
 pub use values::DrawValues;
 
 /// Lights ffvk evaluates per draw (GL_MAX_LIGHTS). GL requires at least 8.
@@ -452,6 +454,10 @@ pub enum Cap {
     RescaleNormal,
     /// `GL_TEXTURE_2D`: texturing with the bound texture, when it is complete.
     Texture2D,
+    /// `GL_COLOR_SUM`: with lighting off, the secondary color is added after texturing.
+    ColorSum,
+    /// `GL_ALPHA_TEST`: fragments are kept as [`AlphaTest`] says.
+    AlphaTest,
 }
 
 /// Parameters of glTexEnv (target `GL_TEXTURE_ENV`).
@@ -572,6 +578,12 @@ pub struct FixedFunctionState {
     /// (0, 0, 0, 1) initially: those of every vertex of a textured draw whose layout has no
     /// texture coordinate array.
     pub current_texcoord: Vec4,
+    /// GL's current secondary color (`GL_CURRENT_SECONDARY_COLOR`, set by
+    /// `glSecondaryColor`), (0, 0, 0, 1) initially: that of every vertex of a draw whose layout
+    /// has no secondary color array; summed only with lighting off and `GL_COLOR_SUM` on.
+    pub current_secondary_color: Vec4,
+    /// The fragment stages after texturing: the color sum and the alpha test.
+    pub fragment: FragmentStages,
 }
 
 /// The old name of [`FixedFunctionState`], from when it held lighting alone.
@@ -597,6 +609,8 @@ impl Default for FixedFunctionState {
             current_color: Vec4::ONE,
             current_normal: Vec3::Z,
             current_texcoord: Vec4::W,
+            current_secondary_color: Vec4::W,
+            fragment: FragmentStages::default(),
         }
     }
 }
@@ -614,6 +628,14 @@ impl FixedFunctionState {
     fn validate_shared(&self) -> Result<(), StateError> {
         finite_vec("GL_LIGHT_MODEL_AMBIENT", self.model.ambient.to_array().as_slice())?;
         self.texture.validate()?;
+        let reference = self.fragment.alpha_test.reference;
+        if !(0.0..=1.0).contains(&reference) {
+            return Err(StateError::OutOfRange {
+                parameter: "GL_ALPHA_TEST_REF",
+                value: reference,
+                valid: "a value in [0, 1] (glAlphaFunc clamps it)",
+            });
+        }
         validate_lights(&self.lights)
     }
 

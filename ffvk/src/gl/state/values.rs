@@ -40,6 +40,9 @@ pub struct DrawValues {
     /// GL's current texture coordinates (s, t, r, q): every vertex's when a textured draw's
     /// layout has no texture coordinate array.
     pub current_texcoord: Vec4,
+    /// GL's current secondary color: every vertex's when the layout has no secondary color
+    /// array (summed with lighting off under `GL_COLOR_SUM`).
+    pub current_secondary_color: Vec4,
 }
 
 impl DrawValues {
@@ -53,11 +56,12 @@ impl DrawValues {
             current_color: state.current_color,
             current_normal: state.current_normal,
             current_texcoord: state.current_texcoord,
+            current_secondary_color: state.current_secondary_color,
         }
     }
 
-    /// These materials and current color, with GL's initial current normal (0, 0, 1) and
-    /// texture coordinates (0, 0, 0, 1).
+    /// These materials and current color, with GL's initial current normal (0, 0, 1), texture
+    /// coordinates (0, 0, 0, 1) and secondary color (0, 0, 0, 1).
     pub fn new(front: Material, back: Material, current_color: Vec4) -> Self {
         DrawValues {
             front,
@@ -65,6 +69,7 @@ impl DrawValues {
             current_color,
             current_normal: Vec3::Z,
             current_texcoord: Vec4::W,
+            current_secondary_color: Vec4::W,
         }
     }
 
@@ -92,6 +97,10 @@ impl DrawValues {
         finite_vec(
             "GL_CURRENT_TEXTURE_COORDS",
             self.current_texcoord.to_array().as_slice(),
+        )?;
+        finite_vec(
+            "GL_CURRENT_SECONDARY_COLOR",
+            self.current_secondary_color.to_array().as_slice(),
         )
     }
 }
