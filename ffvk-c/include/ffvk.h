@@ -93,6 +93,75 @@
 #ifndef GL_BLEND
 #define GL_BLEND 0x0BE2
 #endif
+#ifndef GL_FOG
+#define GL_FOG 0x0B60
+#endif
+#ifndef GL_FOG_DENSITY
+#define GL_FOG_DENSITY 0x0B62
+#endif
+#ifndef GL_FOG_START
+#define GL_FOG_START 0x0B63
+#endif
+#ifndef GL_FOG_END
+#define GL_FOG_END 0x0B64
+#endif
+#ifndef GL_FOG_MODE
+#define GL_FOG_MODE 0x0B65
+#endif
+#ifndef GL_FOG_COLOR
+#define GL_FOG_COLOR 0x0B66
+#endif
+#ifndef GL_EXP
+#define GL_EXP 0x0800
+#endif
+#ifndef GL_EXP2
+#define GL_EXP2 0x0801
+#endif
+#ifndef GL_LINEAR
+#define GL_LINEAR 0x2601
+#endif
+#ifndef GL_FOG_COORD_SRC
+#define GL_FOG_COORD_SRC 0x8450
+#endif
+#ifndef GL_FOG_COORD
+#define GL_FOG_COORD 0x8451
+#endif
+#ifndef GL_FRAGMENT_DEPTH
+#define GL_FRAGMENT_DEPTH 0x8452
+#endif
+#ifndef GL_CURRENT_FOG_COORD
+#define GL_CURRENT_FOG_COORD 0x8453
+#endif
+#ifndef GL_PERSPECTIVE_CORRECTION_HINT
+#define GL_PERSPECTIVE_CORRECTION_HINT 0x0C50
+#endif
+#ifndef GL_POINT_SMOOTH_HINT
+#define GL_POINT_SMOOTH_HINT 0x0C51
+#endif
+#ifndef GL_LINE_SMOOTH_HINT
+#define GL_LINE_SMOOTH_HINT 0x0C52
+#endif
+#ifndef GL_POLYGON_SMOOTH_HINT
+#define GL_POLYGON_SMOOTH_HINT 0x0C53
+#endif
+#ifndef GL_FOG_HINT
+#define GL_FOG_HINT 0x0C54
+#endif
+#ifndef GL_GENERATE_MIPMAP_HINT
+#define GL_GENERATE_MIPMAP_HINT 0x8192
+#endif
+#ifndef GL_TEXTURE_COMPRESSION_HINT
+#define GL_TEXTURE_COMPRESSION_HINT 0x84EF
+#endif
+#ifndef GL_DONT_CARE
+#define GL_DONT_CARE 0x1100
+#endif
+#ifndef GL_FASTEST
+#define GL_FASTEST 0x1101
+#endif
+#ifndef GL_NICEST
+#define GL_NICEST 0x1102
+#endif
 #ifndef GL_ALPHA_TEST
 #define GL_ALPHA_TEST 0x0BC0
 #endif
@@ -759,6 +828,11 @@ typedef struct FfvkVertexLayoutInfo {
    */
   const struct FfvkAttribute *secondary_color;
   /*
+   Fog coordinates (`glFogCoordPointer`, one float: `VK_FORMAT_R32_SFLOAT`), or null: the
+   context's current fog coordinate (`ffvkFogCoordf`).
+   */
+  const struct FfvkAttribute *fog_coord;
+  /*
    Material parameters given per vertex, or null with `material_count` 0. Drawn in the
    vertex and flat modes; a draw lit per fragment with such a layout is refused.
    */
@@ -1164,6 +1238,70 @@ void ffvkLoadProjection(struct FfvkContext *ctx, const float *m);
  As `ffvkLoadModelview`.
  */
 void ffvkLoadTextureMatrix(struct FfvkContext *ctx, const float *m);
+
+/*
+ glFogf: `GL_FOG_MODE` (`GL_LINEAR`, `GL_EXP`, `GL_EXP2`), `GL_FOG_DENSITY` (≥ 0),
+ `GL_FOG_START`, `GL_FOG_END` or `GL_FOG_COORD_SRC` (`GL_FOG_COORD`, `GL_FRAGMENT_DEPTH`).
+ Errors: `GL_INVALID_ENUM` for another `pname` (`GL_FOG_COLOR` included: it has four values)
+ or mode; `GL_INVALID_VALUE` for a negative density or a value that is not finite.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkFogf(struct FfvkContext *ctx, uint32_t pname, float param);
+
+/*
+ glFogi: `ffvkFogf` with an integer.
+
+ # Safety
+
+ As `ffvkFogf`.
+ */
+void ffvkFogi(struct FfvkContext *ctx, uint32_t pname, int32_t param);
+
+/*
+ glFogfv: `ffvkFogf`'s names, and `GL_FOG_COLOR` (4 values, clamped to [0, 1]).
+ `GL_INVALID_VALUE` also for a null `params`.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `params` is null or points
+ at as many values as `pname` has.
+ */
+void ffvkFogfv(struct FfvkContext *ctx, uint32_t pname, const float *params);
+
+/*
+ glFogiv: `ffvkFogfv` with integers (the color's map [-2^31, 2^31 - 1] onto [-1, 1], as GL
+ maps integer colors).
+
+ # Safety
+
+ As `ffvkFogfv`.
+ */
+void ffvkFogiv(struct FfvkContext *ctx, uint32_t pname, const int32_t *params);
+
+/*
+ glFogCoordf: the current fog coordinate, every vertex's in draws whose layout has no fog
+ coordinate array (read with `GL_FOG_COORD_SRC` `GL_FOG_COORD`); `GL_INVALID_VALUE` for a
+ value that is not finite (ffvk's choice).
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkFogCoordf(struct FfvkContext *ctx, float coord);
+
+/*
+ glHint: `GL_FOG_HINT` `GL_FASTEST` fogs per vertex, `GL_DONT_CARE` and `GL_NICEST` per
+ fragment; GL's other hint targets are accepted and change nothing ffvk draws. Errors:
+ `GL_INVALID_ENUM` for a target or mode GL does not name.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkHint(struct FfvkContext *ctx, uint32_t target, uint32_t mode);
 
 /*
  Newell's teapot tessellated at `level` (1 ..= 64 steps per patch side), the mesh ffvk's

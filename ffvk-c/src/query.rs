@@ -69,6 +69,7 @@ pub(crate) fn is_enabled(c: &FfvkContext, cap: Cap) -> bool {
         Cap::Texture2D => l.texture.enabled,
         Cap::ColorSum => l.fragment.color_sum,
         Cap::AlphaTest => l.fragment.alpha_test.enabled,
+        Cap::Fog => l.fragment.fog.enabled,
         _ => false,
     }
 }
@@ -164,6 +165,7 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
         GL_TEXTURE_2D => Some(Cap::Texture2D),
         GL_COLOR_SUM => Some(Cap::ColorSum),
         GL_ALPHA_TEST => Some(Cap::AlphaTest),
+        GL_FOG => Some(Cap::Fog),
         p if p >= GL_LIGHT0 && p < GL_LIGHT0 + MAX_LIGHTS as u32 => light_index(f, p).ok().map(Cap::Light),
         _ => None,
     };
@@ -192,6 +194,25 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
         GL_CURRENT_SECONDARY_COLOR => Answer::Color(l.current_secondary_color.to_array().to_vec()),
         GL_ALPHA_TEST_FUNC => Answer::Int(i64::from(0x0200 + l.fragment.alpha_test.func.code())),
         GL_ALPHA_TEST_REF => Answer::Color(vec![l.fragment.alpha_test.reference]),
+        GL_FOG_MODE => Answer::Int(i64::from(match l.fragment.fog.mode {
+            ffvk::gl::state::FogMode::Linear => GL_LINEAR,
+            ffvk::gl::state::FogMode::Exp => GL_EXP,
+            _ => GL_EXP2,
+        })),
+        GL_FOG_DENSITY => Answer::Floats(vec![l.fragment.fog.density]),
+        GL_FOG_START => Answer::Floats(vec![l.fragment.fog.start]),
+        GL_FOG_END => Answer::Floats(vec![l.fragment.fog.end]),
+        GL_FOG_COLOR => Answer::Color(l.fragment.fog.color.to_array().to_vec()),
+        GL_FOG_COORD_SRC => Answer::Int(i64::from(match l.fragment.fog.source {
+            ffvk::gl::state::FogSource::FogCoord => GL_FOG_COORD,
+            _ => GL_FRAGMENT_DEPTH,
+        })),
+        GL_FOG_HINT => Answer::Int(i64::from(match l.fragment.fog.hint {
+            ffvk::gl::state::FogHint::Fastest => GL_FASTEST,
+            ffvk::gl::state::FogHint::Nicest => GL_NICEST,
+            _ => GL_DONT_CARE,
+        })),
+        GL_CURRENT_FOG_COORD => Answer::Floats(vec![l.current_fog_coord]),
         GL_CURRENT_TEXTURE_COORDS => Answer::Floats(l.current_texcoord.to_array().to_vec()),
         GL_MAX_LIGHTS => Answer::Int(MAX_LIGHTS as i64),
         GL_MODELVIEW_MATRIX => Answer::Floats(c.gl.modelview.to_cols_array().to_vec()),
@@ -202,7 +223,7 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
                 f,
                 "pname",
                 pname,
-                "a lighting state name: GL_LIGHTING, GL_LIGHTi, GL_COLOR_MATERIAL(_FACE, _PARAMETER), GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_LIGHT_MODEL_*, GL_SHADE_MODEL, GL_CURRENT_COLOR, GL_CURRENT_NORMAL, GL_CURRENT_TEXTURE_COORDS, GL_CURRENT_SECONDARY_COLOR, GL_COLOR_SUM, GL_ALPHA_TEST(_FUNC, _REF), GL_MAX_LIGHTS or GL_{MODELVIEW,PROJECTION,TEXTURE}_MATRIX",
+                "a lighting state name: GL_LIGHTING, GL_LIGHTi, GL_COLOR_MATERIAL(_FACE, _PARAMETER), GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_LIGHT_MODEL_*, GL_SHADE_MODEL, GL_CURRENT_COLOR, GL_CURRENT_NORMAL, GL_CURRENT_TEXTURE_COORDS, GL_CURRENT_SECONDARY_COLOR, GL_COLOR_SUM, GL_ALPHA_TEST(_FUNC, _REF), GL_FOG(_MODE, _DENSITY, _START, _END, _COLOR, _COORD_SRC, _HINT), GL_CURRENT_FOG_COORD, GL_MAX_LIGHTS or GL_{MODELVIEW,PROJECTION,TEXTURE}_MATRIX",
             ))
         }
     })

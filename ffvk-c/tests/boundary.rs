@@ -185,7 +185,15 @@ impl Drop for Ctx {
 }
 
 /// The names `ffvkGetFloatv` answers (GL_LIGHTi added by [`Ctx::snapshot`]).
-const GET_NAMES: [u32; 24] = [
+const GET_NAMES: [u32; 32] = [
+    0x0B60, // GL_FOG
+    0x0B62, // GL_FOG_DENSITY
+    0x0B63, // GL_FOG_START
+    0x0B64, // GL_FOG_END
+    0x0B65, // GL_FOG_MODE
+    0x0B66, // GL_FOG_COLOR
+    0x8450, // GL_FOG_COORD_SRC
+    0x8453, // GL_CURRENT_FOG_COORD
     0x8459, // GL_CURRENT_SECONDARY_COLOR
     0x0BC0, // GL_ALPHA_TEST
     0x0BC1, // GL_ALPHA_TEST_FUNC
@@ -440,6 +448,12 @@ fn context_calls() -> Vec<(&'static str, ContextCall)> {
             e("ffvkTexCoord2f", |c| ffvkTexCoord2f(c, 0.5, 0.5)),
             e("ffvkSecondaryColor3f", |c| ffvkSecondaryColor3f(c, 0.1, 0.2, 0.3)),
             e("ffvkAlphaFunc", |c| ffvkAlphaFunc(c, 0x0201, 0.5)),
+            e("ffvkFogf", |c| ffvkFogf(c, 0x0B62, 0.5)),
+            e("ffvkFogi", |c| ffvkFogi(c, 0x0B65, 0x0800)),
+            e("ffvkFogfv", |c| ffvkFogfv(c, 0x0B66, [0.5f32; 4].as_ptr())),
+            e("ffvkFogiv", |c| ffvkFogiv(c, 0x0B65, [0x0801i32].as_ptr())),
+            e("ffvkFogCoordf", |c| ffvkFogCoordf(c, 2.0)),
+            e("ffvkHint", |c| ffvkHint(c, 0x0C54, 0x1101)),
             e("ffvkShadeModel", |c| ffvkShadeModel(c, FLAT)),
             e("ffvkPerFragmentLighting", |c| ffvkPerFragmentLighting(c, 1)),
             e("ffvkLoadModelview", |c| ffvkLoadModelview(c, M.as_ptr())),

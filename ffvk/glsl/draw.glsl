@@ -79,6 +79,15 @@ layout(std140, set = 0, binding = 0) uniform State {
     uint alpha_func;      // ALPHA_TEST_FUNC, 0 NEVER .. 7 ALWAYS (7 while the test is off)
     float alpha_ref;      // ALPHA_TEST_REF, in [0, 1]
     uint pad_;
+    vec4 fog_color;       // FOG_COLOR
+    float fog_start;      // FOG_START
+    float fog_end;        // FOG_END
+    float fog_density;    // FOG_DENSITY
+    float fog_scale;      // 1 / (FOG_END - FOG_START), 0 where they are equal
+    uint fog_mode;        // 0 off, 1 LINEAR, 2 EXP, 3 EXP2
+    uint fog_source;      // 1 FOG_COORD, 0 FRAGMENT_DEPTH
+    uint fog_per_vertex;  // 1 for FOG_HINT FASTEST
+    uint pad_fog;
     Light lights[MAX_LIGHTS];
 } state;
 
@@ -136,6 +145,11 @@ layout(constant_id = 20) const int SPEC_ALPHA_FUNC = -1;
 // The color attachment's alpha bits when UNORM (the alpha test compares at that fixed-point
 // precision, GL 2.1 section 4.1.4), 0 for a float compare; set in every pipeline.
 layout(constant_id = 21) const int SPEC_ALPHA_BITS = 0;
+// Fog (section 3.10): 0 off, 1 LINEAR, 2 EXP, 3 EXP2; its source (1 FOG_COORD, 0 the eye-space
+// depth); 1 where f is computed per vertex (FOG_HINT FASTEST).
+layout(constant_id = 22) const int SPEC_FOG_MODE = -1;
+layout(constant_id = 23) const int SPEC_FOG_SOURCE = -1;
+layout(constant_id = 24) const int SPEC_FOG_PER_VERTEX = -1;
 
 // A switch of the uber-shader, read from the uniform block. lavapipe 22.3 compiles a shader
 // variant for every draw whose uniforms changed when an if or a loop bound depends on uniform
@@ -199,6 +213,47 @@ bool alpha_passes(float a) {
     float r = SPEC_ALPHA_BITS > 0 ? floor(state.alpha_ref * scale + 0.5) : state.alpha_ref;
     bool passes[8] = bool[8](false, v < r, v == r, v <= r, v > r, v != r, v >= r, true);
     return passes[min(func, 7u)];
+}
+
+uint fog_mode() {
+    return SPEC_FOG_MODE < 0 ? uber_value(state.fog_mode) : uint(SPEC_FOG_MODE);
+}
+bool fog_per_vertex() {
+    return SPEC_FOG_PER_VERTEX < 0 ? uber_value(state.fog_per_vertex) != 0u : SPEC_FOG_PER_VERTEX != 0;
+}
+
+// Section 3.10: the fog's distance c of a vertex at eye position V with fog coordinate
+// `coord`: the coordinate as it is (FOG_COORD: no absolute value, as the spec says), or
+// |z_e| (FRAGMENT_DEPTH: the approximation of the eye-space distance GL 2.1 allows).
+float fog_distance(vec4 V, float coord) {
+    bool from_coord = SPEC_FOG_SOURCE < 0 ? uber_value(state.fog_source) != 0u : SPEC_FOG_SOURCE != 0;
+    return from_coord ? coord : abs(V.z);
+}
+
+// The fog factor f for distance c, clamped to [0, 1]; the three modes selected, not branched
+// on (the uber-shader's mode is a uniform value).
+float fog_factor(float c) {
+    float linear = state.fog_scale == 0.0 ? 1.0 : (state.fog_end - c) * state.fog_scale;
+    float dc = state.fog_density * c;
+    uint mode = fog_mode();
+    float f = mode == 1u ? linear : (mode == 2u ? exp(-dc) : exp(-dc * dc));
+    return clamp(f, 0.0, 1.0);
+}
+
+// What the vertex stage passes for fog: f itself (per vertex) or c (f per fragment).
+float fog_varying(vec4 V, float coord) {
+    float c = fog_distance(V, coord);
+    return fog_per_vertex() ? fog_factor(c) : c;
+}
+
+// Section 3.10 on the color after texturing and the color sum: rgb = f rgb + (1 - f) fog rgb,
+// alpha untouched. `fog` is the vertex stage's fog_varying, interpolated.
+vec4 apply_fog(vec4 color, float fog) {
+    if (SPEC_FOG_MODE == 0) return color;
+    float f = fog_per_vertex() ? clamp(fog, 0.0, 1.0) : fog_factor(fog);
+    vec4 fogged = vec4(mix(state.fog_color.rgb, color.rgb, f), color.a);
+    bool off = fog_mode() == 0u;
+    return mix(fogged, color, bvec4(off));
 }
 
 uint specular_model() {

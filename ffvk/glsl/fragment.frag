@@ -8,6 +8,7 @@ layout(location = 1) in vec4 normal;  // xyz: the direction; w: the length
 layout(location = 3) in vec4 color;
 // With lighting off, the clamped secondary color (or (0, 0, 0, 1) without the color sum).
 layout(location = 2) in vec4 secondary;
+layout(location = 15) in float fog;  // draw.glsl, fog_varying
 #ifdef VARYING_MATERIALS
 // The draw's materials (fragment.vert), for small draws: flat inputs cost lavapipe a setup
 // per attribute per triangle, which few triangles make cheaper than a draw's own uniform block.
@@ -90,7 +91,7 @@ void main() {
     // After lighting, before the color sum: the secondary color is not textured.
     lit.c_pri = texture_environment(lit.c_pri, texel_at(stq));
 #endif
-    out_color = color_sum(lit);
+    out_color = apply_fog(color_sum(lit), fog);
     if (!alpha_passes(out_color.a)) discard;
 #endif
 }

@@ -12,6 +12,7 @@ layout(location = 0) out vec4 eye_position;
 layout(location = 1) out vec4 normal;
 layout(location = 3) out vec4 color;
 layout(location = 2) out vec4 secondary;  // with lighting off: fragment.frag
+layout(location = 15) out float fog;      // c, or f per vertex (draw.glsl, fog_varying)
 #ifdef VARYING_MATERIALS
 // The draw's materials, the same for every vertex of it (fragment.frag).
 layout(location = 5) flat out vec4 front_a_cm;
@@ -48,6 +49,7 @@ void main() {
     if (SPEC_POINTS != 0) gl_PointSize = SPEC_POINT_SIZE;
     eye_position = in_modelview * in_position;
     gl_Position = state.projection * eye_position;
+    fog = fog_varying(eye_position, in_fog_coord);
 #ifdef TEXTURE
     stq = state.texture_matrix * in_texcoord;
 #endif

@@ -26,6 +26,8 @@ layout(location = 20) in float in_back_s_rm;     // back SHININESS (in_normal_ma
 // The secondary color (glSecondaryColorPointer, or the record's current one): summed with
 // lighting off under COLOR_SUM.
 layout(location = 21) in vec4 in_secondary_color;
+// The fog coordinate (glFogCoordPointer, or the record's current one).
+layout(location = 22) in float in_fog_coord;
 
 // Sets draw_front and draw_back from the record (or the layout's per-vertex materials).
 void load_record() {

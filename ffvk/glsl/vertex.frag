@@ -11,6 +11,8 @@ layout(location = 2) INTERP in vec4 back_pri;
 layout(location = 3) INTERP in vec4 back_sec;
 #endif
 
+layout(location = 5) in float fog;  // draw.glsl, fog_varying
+
 layout(location = 0) out vec4 out_color;
 
 // A zero the compiler cannot prove zero (fragments lie inside the framebuffer, at x >= 0):
@@ -34,6 +36,6 @@ void main() {
 #ifdef TEXTURE
     lit.c_pri = texture_environment(lit.c_pri, texel_at(stq));
 #endif
-    out_color = color_sum(lit);
+    out_color = apply_fog(color_sum(lit), fog);
     if (!alpha_passes(out_color.a)) discard;
 }

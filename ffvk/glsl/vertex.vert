@@ -21,6 +21,9 @@ layout(location = 2) INTERP out vec4 back_pri;
 layout(location = 3) INTERP out vec4 back_sec;
 #endif
 
+// Fog: c, or f where it is computed per vertex (draw.glsl, fog_varying).
+layout(location = 5) out float fog;
+
 #ifdef TEXTURE
 // Texture coordinates (s, t) in, (s, t, r, q) after the texture matrix out: always
 // interpolated, whatever the shade model (GL's flat shading is about colors only).
@@ -40,6 +43,7 @@ void main() {
     if (SPEC_POINTS != 0) gl_PointSize = SPEC_POINT_SIZE;
     vec4 V = in_modelview * in_position;
     gl_Position = state.projection * V;
+    fog = fog_varying(V, in_fog_coord);
 #ifdef TEXTURE
     stq = state.texture_matrix * in_texcoord;
 #endif

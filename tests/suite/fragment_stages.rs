@@ -286,3 +286,325 @@ fn the_color_sum_adds_the_secondary_color_with_lighting_off_as_mesa_does() {
     drop(lighting);
     drop(device);
 }
+
+/// A quad over the whole viewport whose eye-space depth runs from −1 (left) to −9 (right),
+/// with a fog coordinate running from 1 to 9 alongside: x y z, then the coordinate.
+const DEEP_QUAD: [[f32; 4]; 4] = [
+    [-1.0, -1.0, -1.0, 1.0],
+    [1.0, -1.0, -9.0, 9.0],
+    [-1.0, 1.0, -1.0, 1.0],
+    [1.0, 1.0, -9.0, 9.0],
+];
+
+/// The fog set-ups the tests draw: (mode, density, start, end).
+const FOGS: [(ffvk::gl::state::FogMode, f32, f32, f32); 3] = [
+    (ffvk::gl::state::FogMode::Linear, 1.0, 1.0, 9.0),
+    (ffvk::gl::state::FogMode::Exp, 0.2, 0.0, 1.0),
+    (ffvk::gl::state::FogMode::Exp2, 0.15, 0.0, 1.0),
+];
+
+const FOG_COLOR: Vec4 = Vec4::new(0.1, 0.2, 0.9, 1.0);
+const FOGGED: Vec4 = Vec4::new(0.8, 0.6, 0.4, 1.0);
+
+fn gl_fog_mode(mode: ffvk::gl::state::FogMode) -> u32 {
+    match mode {
+        ffvk::gl::state::FogMode::Linear => raw::LINEAR,
+        ffvk::gl::state::FogMode::Exp => raw::EXP,
+        _ => raw::EXP2,
+    }
+}
+
+/// Fog in each mode (GL_LINEAR, GL_EXP, GL_EXP2) from each source (the eye-space depth, and
+/// a fog coordinate array), per fragment, on a quad running deep into the view, unlit, in
+/// the vertex and fragment modes, against Mesa's GL (glFog, glFogCoord).
+#[test]
+fn fog_in_each_mode_and_source_fogs_as_mesa_does() {
+    use ffvk::gl::state::{FogParam, FogSource};
+    let (size, cell) = (48, 16);
+    let mut canvas = Canvas::new(size);
+    let device = canvas.ffvk();
+    let buffer = canvas.buffer(bytemuck::cast_slice(&DEEP_QUAD));
+    let position = Attribute::new(0, 0, vk::Format::R32G32B32_SFLOAT);
+    let input = VertexInput::new(vec![binding(16)], position, position)
+        .with_normal(None)
+        .with_fog_coord(Some(Attribute::new(0, 12, vk::Format::R32_SFLOAT)));
+    let target = Target::new(vk::Format::R8G8B8A8_UNORM, vk::Format::UNDEFINED);
+    let mut lighting = Lighting::new(&device, &LightingOptions::new(target, input)).unwrap();
+    let buffers = [(buffer, 0)];
+    let strip = Geometry::vertices(4).with_topology(Topology::TriangleStrip);
+    let projection = Mat4::orthographic_rh_gl(-1.0, 1.0, -1.0, 1.0, 0.0, 10.0);
+
+    let mesa = render_raw_gl(size, size, |g| {
+        // SAFETY: a context is current; the arrays outlive the calls that read them.
+        unsafe {
+            g.MatrixMode(raw::PROJECTION);
+            g.Ortho(-1.0, 1.0, -1.0, 1.0, 0.0, 10.0);
+            g.MatrixMode(raw::MODELVIEW);
+            g.Enable(raw::FOG);
+            g.Fogfv(raw::FOG_COLOR, FOG_COLOR.to_array().as_ptr());
+            g.Color4f(FOGGED.x, FOGGED.y, FOGGED.z, FOGGED.w);
+            for (column, (mode, density, start, end)) in FOGS.iter().enumerate() {
+                g.Fogi(raw::FOG_MODE, gl_fog_mode(*mode) as i32);
+                g.Fogf(raw::FOG_DENSITY, *density);
+                g.Fogf(raw::FOG_START, *start);
+                g.Fogf(raw::FOG_END, *end);
+                for (row, source) in [raw::FRAGMENT_DEPTH, raw::FOG_COORD].iter().enumerate() {
+                    g.Fogi(raw::FOG_COORD_SRC, *source as i32);
+                    g.Viewport(
+                        (column as u32 * cell) as i32,
+                        (row as u32 * cell) as i32,
+                        cell as i32,
+                        cell as i32,
+                    );
+                    g.Begin(raw::TRIANGLE_STRIP);
+                    for v in DEEP_QUAD {
+                        g.FogCoordf(v[3]);
+                        g.Vertex3f(v[0], v[1], v[2]);
+                    }
+                    g.End();
+                }
+            }
+        }
+    })
+    .expect("Mesa's GL renders");
+    save_for_inspection(&mesa, "fragment_stages_fog_mesa");
+
+    for mode in [LightingMode::Vertex, LightingMode::Fragment] {
+        let mut states = Vec::new();
+        for (fog_mode, density, start, end) in FOGS {
+            for source in [FogSource::FragmentDepth, FogSource::FogCoord] {
+                let mut gl = GlState::new();
+                gl.lighting_mode(mode);
+                gl.enable(Cap::Fog).unwrap();
+                for param in [
+                    FogParam::Mode(fog_mode),
+                    FogParam::Density(density),
+                    FogParam::Start(start),
+                    FogParam::End(end),
+                    FogParam::Color(FOG_COLOR),
+                    FogParam::CoordSrc(source),
+                ] {
+                    gl.fog(param).unwrap();
+                }
+                gl.color(FOGGED).unwrap();
+                states.push(gl.lighting);
+            }
+        }
+        lighting.begin_frame(0).unwrap();
+        let mut results = Vec::new();
+        let ffvk = canvas
+            .frame(|d, cmd| {
+                for (i, state) in states.iter().enumerate() {
+                    let (column, row) = (i as u32 / 2, i as u32 % 2);
+                    let draw = LitDraw::new(state, Mat4::IDENTITY, projection, &buffers, strip);
+                    // SAFETY: the canvas's pass is open; the buffer lives as long as it.
+                    unsafe { d.cmd_set_viewport(cmd, 0, &[viewport(column * cell, row * cell, cell, size)]) };
+                    // SAFETY: as above.
+                    results.push(unsafe { lighting.draw(cmd, 0, &draw) });
+                }
+            })
+            .unwrap();
+        for r in results {
+            r.unwrap();
+        }
+        save_for_inspection(&ffvk, &format!("fragment_stages_fog_{}", mode.name()));
+        // Not unfogged: the right edge of the linear cell is nearly the fog color.
+        let right = ffvk.get_pixel(cell - 1, size - cell / 2).0;
+        assert!(
+            right[2] > 200,
+            "{}: the far side is fogged: {right:?}",
+            mode.name()
+        );
+        let d = max_difference(&ffvk, &mesa);
+        assert!(
+            d <= 1,
+            "{}: ffvk and Mesa's GL differ by {d}/255 (tests/output/fragment_stages_fog_*)",
+            mode.name()
+        );
+    }
+    drop(lighting);
+    drop(device);
+}
+
+/// GL 2.1 takes the fog coordinate as it is (section 3.10): a coordinate of −2 with
+/// GL_LINEAR from 0 to 10 gives f = 1.2, clamped to 1 (no fog), and with GL_EXP of density
+/// 0.5 f = e, clamped to 1. Mesa 22.3 takes |c| (f = 0.8 and e^−1): ffvk follows the spec, and
+/// this test pins Mesa's deviation. And GL_FOG_HINT GL_FASTEST computes f per vertex (GL 2.1
+/// allows it; Mesa ignores the hint): with GL_EXP2 of density 0.5 and coordinates 0 and 4,
+/// f is interpolated between 1 and e^−4, not taken at the interpolated coordinate.
+#[test]
+fn negative_fog_coordinates_and_per_vertex_fog_follow_the_spec_where_mesa_does_not() {
+    use ffvk::gl::state::{FogHint, FogMode, FogParam, FogSource};
+    let size = 32;
+    let mut canvas = Canvas::new(size);
+    let device = canvas.ffvk();
+    let flat: Vec<f32> = QUAD
+        .iter()
+        .flat_map(|p| [p[0], p[1], p[2], if p[0] < 0.0 { 0.0 } else { 4.0 }])
+        .collect();
+    let buffer = canvas.buffer(bytemuck::cast_slice(&flat));
+    let position = Attribute::new(0, 0, vk::Format::R32G32B32_SFLOAT);
+    let bare = VertexInput::new(vec![binding(16)], position, position).with_normal(None);
+    let with_coords = bare
+        .clone()
+        .with_fog_coord(Some(Attribute::new(0, 12, vk::Format::R32_SFLOAT)));
+    let target = Target::new(vk::Format::R8G8B8A8_UNORM, vk::Format::UNDEFINED);
+    let mut lighting = Lighting::new(&device, &LightingOptions::new(target, bare)).unwrap();
+    let coords = lighting.vertex_layout(with_coords).unwrap();
+    let buffers = [(buffer, 0)];
+    let strip = Geometry::vertices(4).with_topology(Topology::TriangleStrip);
+    let fogged_state = |mode: FogMode, density: f32, hint: FogHint| {
+        let mut gl = GlState::new();
+        gl.enable(Cap::Fog).unwrap();
+        for p in [
+            FogParam::Mode(mode),
+            FogParam::Density(density),
+            FogParam::Start(0.0),
+            FogParam::End(10.0),
+            FogParam::Color(FOG_COLOR),
+            FogParam::CoordSrc(FogSource::FogCoord),
+        ] {
+            gl.fog(p).unwrap();
+        }
+        gl.fog_hint(hint);
+        gl.fog_coord(-2.0).unwrap();
+        gl.color(FOGGED).unwrap();
+        gl.lighting
+    };
+    let states = [
+        fogged_state(FogMode::Linear, 1.0, FogHint::DontCare),
+        fogged_state(FogMode::Exp, 0.5, FogHint::DontCare),
+        fogged_state(FogMode::Exp2, 0.5, FogHint::Fastest),
+    ];
+    let half = size / 2;
+    lighting.begin_frame(0).unwrap();
+    let mut results = Vec::new();
+    let ffvk = canvas
+        .frame(|d, cmd| {
+            // The negative coordinate (the current one) in the top half, a cell per mode; the
+            // per-vertex fog across the bottom half.
+            for (i, state) in states.iter().enumerate() {
+                let (vp, layout) = match i {
+                    2 => (
+                        vk::Viewport {
+                            x: 0.0,
+                            y: half as f32,
+                            width: size as f32,
+                            height: half as f32,
+                            min_depth: 0.0,
+                            max_depth: 1.0,
+                        },
+                        Some(coords),
+                    ),
+                    _ => (viewport(i as u32 * half, half, half, size), None),
+                };
+                let draw =
+                    LitDraw::new(state, Mat4::IDENTITY, Mat4::IDENTITY, &buffers, strip).with_layout(layout);
+                // SAFETY: the canvas's pass is open; the buffer lives as long as it.
+                unsafe { d.cmd_set_viewport(cmd, 0, &[vp]) };
+                // SAFETY: as above.
+                results.push(unsafe { lighting.draw(cmd, 0, &draw) });
+            }
+        })
+        .unwrap();
+    for r in results {
+        r.unwrap();
+    }
+    drop(lighting);
+    drop(device);
+    save_for_inspection(&ffvk, "fragment_stages_fog_spec");
+    let unorm = |c: f32| (c * 255.0).round() as i32;
+    let close = |got: [u8; 4], want: Vec4, slack: i32, what: &str| {
+        let want = [unorm(want.x), unorm(want.y), unorm(want.z)];
+        assert!(
+            got.iter()
+                .zip(want)
+                .all(|(&g, w)| (i32::from(g) - w).abs() <= slack),
+            "{what}: {got:?}, expected {want:?}"
+        );
+    };
+    let fog = |f: f32| FOG_COLOR.lerp(FOGGED, f).truncate().extend(1.0);
+    // The spec: f clamped to 1, the color unfogged, in both top cells.
+    close(
+        ffvk.get_pixel(half / 2, half / 2).0,
+        FOGGED,
+        1,
+        "GL_LINEAR at c = -2",
+    );
+    close(
+        ffvk.get_pixel(half + half / 2, half / 2).0,
+        FOGGED,
+        1,
+        "GL_EXP at c = -2",
+    );
+    // Per vertex: at pixel x, f interpolates between 1 (c = 0) and e^-4 (c = 4).
+    for x in [4, half, size - 5] {
+        let t = (x as f32 + 0.5) / size as f32;
+        let per_vertex = (1.0 - t) + t * (-4.0f32).exp();
+        close(
+            ffvk.get_pixel(x, size - 4).0,
+            fog(per_vertex),
+            2,
+            &format!("GL_FASTEST at x = {x}"),
+        );
+    }
+
+    // Mesa's GL on the same calls.
+    let mesa = render_raw_gl(size, size, |g| {
+        // SAFETY: a context is current.
+        unsafe {
+            g.Enable(raw::FOG);
+            g.Fogfv(raw::FOG_COLOR, FOG_COLOR.to_array().as_ptr());
+            g.Fogi(raw::FOG_COORD_SRC, raw::FOG_COORD as i32);
+            g.Fogf(raw::FOG_START, 0.0);
+            g.Fogf(raw::FOG_END, 10.0);
+            g.Color4f(FOGGED.x, FOGGED.y, FOGGED.z, FOGGED.w);
+            for (i, (mode, density)) in [(raw::LINEAR, 1.0), (raw::EXP, 0.5)].iter().enumerate() {
+                g.Fogi(raw::FOG_MODE, *mode as i32);
+                g.Fogf(raw::FOG_DENSITY, *density);
+                g.Viewport(i as i32 * half as i32, half as i32, half as i32, half as i32);
+                g.Begin(raw::TRIANGLE_STRIP);
+                for p in QUAD {
+                    g.FogCoordf(-2.0);
+                    g.Vertex3f(p[0], p[1], p[2]);
+                }
+                g.End();
+            }
+            g.Hint(raw::FOG_HINT, raw::FASTEST);
+            g.Fogi(raw::FOG_MODE, raw::EXP2 as i32);
+            g.Fogf(raw::FOG_DENSITY, 0.5);
+            g.Viewport(0, 0, size as i32, half as i32);
+            g.Begin(raw::TRIANGLE_STRIP);
+            for p in QUAD {
+                g.FogCoordf(if p[0] < 0.0 { 0.0 } else { 4.0 });
+                g.Vertex3f(p[0], p[1], p[2]);
+            }
+            g.End();
+        }
+    })
+    .expect("Mesa's GL renders");
+    save_for_inspection(&mesa, "fragment_stages_fog_spec_mesa");
+    // Mesa's deviation: |c|, so f = 0.8 for GL_LINEAR and e^-1 for GL_EXP.
+    close(
+        mesa.get_pixel(half / 2, half / 2).0,
+        fog(0.8),
+        1,
+        "Mesa's GL_LINEAR at c = -2 (|c|)",
+    );
+    close(
+        mesa.get_pixel(half + half / 2, half / 2).0,
+        fog((-1.0f32).exp()),
+        1,
+        "Mesa's GL_EXP at c = -2 (|c|)",
+    );
+    // Mesa ignores GL_FASTEST: f at the interpolated coordinate, e^-(2 × 0.5 × c)^2 ... at the
+    // middle, c = 2: e^-1.
+    let t = (half as f32 + 0.5) / size as f32;
+    let c = 4.0 * t;
+    close(
+        mesa.get_pixel(half, size - 4).0,
+        fog((-(0.5 * c) * (0.5 * c)).exp()),
+        2,
+        "Mesa's GL_FASTEST (per fragment)",
+    );
+}

@@ -107,7 +107,10 @@ fn the_key_keeps_only_what_changes_the_lighting() {
     unlit_with_lights.lighting = false;
     unlit_with_lights.model.local_viewer = true;
     assert_eq!(key(&unlit_with_lights), key(&unlit()));
-    assert_eq!(key(&unlit()).values, [0; ffvk::gpu::layout::SPEC_CONSTANT_COUNT]);
+    // Every constant 0 but the alpha test's function, GL_ALWAYS (7) with the test off.
+    let mut want = [0; ffvk::gpu::layout::SPEC_CONSTANT_COUNT];
+    want[ffvk::gpu::layout::SpecConstant::AlphaFunc as usize] = 7;
+    assert_eq!(key(&unlit()).values, want);
 
     // Without lights the viewer and color control cannot matter; two-sided still does (the
     // back material's emission and ambient).

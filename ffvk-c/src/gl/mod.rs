@@ -18,9 +18,11 @@ use crate::enums::*;
 use crate::result::{fail, misaligned, panic_text, FfvkResult};
 
 mod entry;
+mod fog;
 mod params;
 
 pub use entry::*;
+pub use fog::*;
 pub(crate) use params::{face, light_index, LIGHT_PNAMES};
 
 /// GL's lighting state, its matrices and its error flag: what an application's GL calls set.

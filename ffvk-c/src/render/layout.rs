@@ -58,6 +58,9 @@ pub struct FfvkVertexLayoutInfo {
     /// current secondary color (`ffvkSecondaryColor3f`); summed with lighting off under
     /// `GL_COLOR_SUM`.
     pub secondary_color: *const FfvkAttribute,
+    /// Fog coordinates (`glFogCoordPointer`, one float: `VK_FORMAT_R32_SFLOAT`), or null: the
+    /// context's current fog coordinate (`ffvkFogCoordf`).
+    pub fog_coord: *const FfvkAttribute,
     /// Material parameters given per vertex, or null with `material_count` 0. Drawn in the
     /// vertex and flat modes; a draw lit per fragment with such a layout is refused.
     pub materials: *const FfvkMaterialAttribute,
@@ -99,6 +102,7 @@ unsafe fn vertex_input(function: &str, info: &FfvkVertexLayoutInfo) -> Result<Ve
         ("color", info.color),
         ("texcoord", info.texcoord),
         ("secondary_color", info.secondary_color),
+        ("fog_coord", info.fog_coord),
     ] {
         if misaligned(ptr) {
             return Err(invalid(format!(
@@ -107,12 +111,13 @@ unsafe fn vertex_input(function: &str, info: &FfvkVertexLayoutInfo) -> Result<Ve
         }
     }
     // SAFETY: the caller's contract: each is null or points at an attribute (checked aligned).
-    let (normal, color, texcoord, secondary) = unsafe {
+    let (normal, color, texcoord, secondary, fog) = unsafe {
         (
             info.normal.as_ref(),
             info.color.as_ref(),
             info.texcoord.as_ref(),
             info.secondary_color.as_ref(),
+            info.fog_coord.as_ref(),
         )
     };
     let position = attribute(&info.position);
@@ -120,7 +125,8 @@ unsafe fn vertex_input(function: &str, info: &FfvkVertexLayoutInfo) -> Result<Ve
         .with_normal(normal.map(attribute))
         .with_color(color.map(attribute))
         .with_texcoord(texcoord.map(attribute))
-        .with_secondary_color(secondary.map(attribute));
+        .with_secondary_color(secondary.map(attribute))
+        .with_fog_coord(fog.map(attribute));
     // SAFETY: the caller's contract: material_count entries at materials (checked bounded).
     let materials = unsafe { slice(function, "materials", info.materials, info.material_count) }?;
     for (i, m) in materials.iter().enumerate() {

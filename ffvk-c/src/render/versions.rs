@@ -153,6 +153,7 @@ unsafe impl Versioned for FfvkVertexLayoutInfo {
             color: std::ptr::null(),
             texcoord: std::ptr::null(),
             secondary_color: std::ptr::null(),
+            fog_coord: std::ptr::null(),
             materials: std::ptr::null(),
             material_count: 0,
         }

@@ -75,7 +75,7 @@
 //! those writes, about 0.1 µs on the host on lavapipe in a run whose draws borrow one
 //! [`FixedFunctionState`] and carry their own [`DrawValues`] (0.3-0.5 µs when each draw brings a
 //! state of its own, which is compared with the one before). The rest ([`StateBlock`]: lights,
-//! light model, switches, texture environment and matrix, projection; 2,784 bytes) is checked,
+//! light model, switches, texture environment and matrix, projection; 2,832 bytes) is checked,
 //! packed and written only when it differs from the previous draw's in the same frame slot,
 //! and then bound at a new dynamic offset; the pipeline, too, is looked up only then (about
 //! 0.7 µs more). [`Lighting::draw_run`] is the recording scope: its draws bind only what

@@ -123,6 +123,9 @@ pub struct VertexInput {
     /// Secondary colors (`glSecondaryColorPointer`: three components; a fourth is ignored),
     /// summed with lighting off under `GL_COLOR_SUM`; `None`: GL's current secondary color.
     pub secondary_color: Option<Attribute>,
+    /// Fog coordinates (`glFogCoordPointer`, one float), read with `GL_FOG_COORD_SRC`
+    /// `GL_FOG_COORD`; `None`: GL's current fog coordinate.
+    pub fog_coord: Option<Attribute>,
     /// Per-vertex front material parameters (Mesa's material attributes: `glMaterial` between
     /// `glBegin` and `glEnd`), each taking the place of the draw's own for that parameter.
     pub front_materials: FaceArrays,
@@ -134,25 +137,28 @@ pub struct VertexInput {
 impl PartialEq for VertexInput {
     /// The same bindings (number, stride, rate, in order) and the same attributes.
     fn eq(&self, other: &Self) -> bool {
+        // Every field by name: a field added to the layout fails to compile here until it is
+        // compared too.
+        let VertexInput {
+            bindings,
+            position,
+            normal,
+            color,
+            texcoord,
+            secondary_color,
+            fog_coord,
+            front_materials,
+            back_materials,
+        } = self;
         let binding = |b: &vk::VertexInputBindingDescription| (b.binding, b.stride, b.input_rate);
-        self.bindings
+        bindings
             .iter()
             .map(binding)
             .eq(other.bindings.iter().map(binding))
-            && (
-                self.position,
-                self.normal,
-                self.color,
-                self.texcoord,
-                self.secondary_color,
-            ) == (
-                other.position,
-                other.normal,
-                other.color,
-                other.texcoord,
-                other.secondary_color,
-            )
-            && (self.front_materials, self.back_materials) == (other.front_materials, other.back_materials)
+            && (*position, *normal, *color, *texcoord)
+                == (other.position, other.normal, other.color, other.texcoord)
+            && (*secondary_color, *fog_coord) == (other.secondary_color, other.fog_coord)
+            && (*front_materials, *back_materials) == (other.front_materials, other.back_materials)
     }
 }
 
@@ -335,6 +341,7 @@ impl VertexInput {
             color: None,
             texcoord: None,
             secondary_color: None,
+            fog_coord: None,
             front_materials: [None; 5],
             back_materials: [None; 5],
         }
@@ -369,6 +376,14 @@ impl VertexInput {
     #[must_use]
     pub fn with_secondary_color(mut self, secondary: Option<Attribute>) -> Self {
         self.secondary_color = secondary;
+        self
+    }
+
+    /// This layout with a fog coordinate array (`glFogCoordPointer`, `R32_SFLOAT`) at `fog`;
+    /// `None`: GL's current fog coordinate for every vertex.
+    #[must_use]
+    pub fn with_fog_coord(mut self, fog: Option<Attribute>) -> Self {
+        self.fog_coord = fog;
         self
     }
 
@@ -416,6 +431,7 @@ impl VertexInput {
                 F::R32G32_SFLOAT,
             )),
             secondary_color: None,
+            fog_coord: None,
             front_materials: [None; 5],
             back_materials: [None; 5],
         }
@@ -444,6 +460,7 @@ impl VertexInput {
             ("color", Kind::Color, self.color),
             ("texcoord", Kind::TexCoord, self.texcoord),
             ("secondary color", Kind::Color, self.secondary_color),
+            ("fog coordinate", Kind::Shininess, self.fog_coord),
         ] {
             if let Some(a) = a {
                 out.push((name.to_owned(), kind, a));
@@ -613,8 +630,8 @@ impl VertexInput {
                 .into());
             }
         }
-        // The record's locations, then the secondary color's.
-        let locations = RECORD_FIRST_LOCATION + RECORD_LOCATIONS + 1;
+        // The record's locations, then the secondary color's and the fog coordinate's.
+        let locations = RECORD_FIRST_LOCATION + RECORD_LOCATIONS + 2;
         if locations > limits.max_vertex_input_attributes {
             return Err(LightingError::VertexInputLimit {
                 what: "attribute locations",
@@ -700,6 +717,12 @@ impl VertexInput {
         }
         let current = record_offset!(current_secondary_color);
         out.push((21, or_record(Kind::Color, self.secondary_color, current, vec4)));
+        // The current fog coordinate is the current normal's w.
+        let current = record_offset!(current_normal) + 12;
+        out.push((
+            22,
+            or_record(Kind::Shininess, self.fog_coord, current, F::R32_SFLOAT),
+        ));
         out
     }
 
@@ -780,7 +803,7 @@ mod tests {
         // The shininesses: the w of the normal matrix's first two columns.
         assert_eq!(at(19), Some((19, record, nm + 12, F::R32_SFLOAT)));
         assert_eq!(at(20), Some((20, record, nm + 28, F::R32_SFLOAT)));
-        assert_eq!(all.len(), 22, "locations 0-21, texture coordinates included");
+        assert_eq!(all.len(), 23, "locations 0-22, texture coordinates included");
     }
 
     #[test]

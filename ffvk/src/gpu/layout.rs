@@ -8,7 +8,7 @@
 use glam::{Mat3, Mat4};
 
 use crate::gl::state::{
-    Attenuation, ColorControl, ColorMaterialMode, DrawValues, FixedFunctionState, Light, Material,
+    Attenuation, ColorControl, ColorMaterialMode, DrawValues, FixedFunctionState, FogSource, Light, Material,
     SpecularModel, SpotEdge, StateError, MAX_LIGHTS,
 };
 
@@ -203,8 +203,27 @@ pub struct StateBlock {
     pub alpha_func: u32,
     /// `GL_ALPHA_TEST_REF`, in [0, 1].
     pub alpha_ref: f32,
-    /// Unused: starts `lights` on a 16-byte boundary.
+    /// Unused: keeps the next field on a 16-byte boundary.
     pub pad_: u32,
+    /// `GL_FOG_COLOR`, RGBA in [0, 1].
+    pub fog_color: [f32; 4],
+    /// `GL_FOG_START`.
+    pub fog_start: f32,
+    /// `GL_FOG_END`.
+    pub fog_end: f32,
+    /// `GL_FOG_DENSITY`.
+    pub fog_density: f32,
+    /// 1 / (end − start) for `GL_LINEAR`, 0 where end = start (f is then 1: GL leaves it
+    /// undefined).
+    pub fog_scale: f32,
+    /// The fog's mode as [`Fog::mode_code`](crate::gl::state::Fog::mode_code): 0 off.
+    pub fog_mode: u32,
+    /// 1 for `GL_FOG_COORD_SRC` `GL_FOG_COORD`, 0 for `GL_FRAGMENT_DEPTH`.
+    pub fog_source: u32,
+    /// 1 for `GL_FOG_HINT` `GL_FASTEST` (f per vertex).
+    pub fog_per_vertex: u32,
+    /// Unused: starts `lights` on a 16-byte boundary.
+    pub pad_fog: u32,
     /// The enabled lights packed in index order, so entry i is not necessarily `GL_LIGHTi`;
     /// entries from `light_count` on are zeroed.
     pub lights: [GpuLight; MAX_LIGHTS],
@@ -231,8 +250,9 @@ pub struct DrawRecord {
     /// GL's current color (`glColor`), RGBA: every vertex's color (location 2) where the
     /// layout has no color array.
     pub current_color: [f32; 4],
-    /// GL's current normal (`glNormal`), x y z (w unused, 0): every vertex's normal (location
-    /// 1) where the layout has no normal array.
+    /// GL's current normal (`glNormal`), x y z: every vertex's normal (location 1) where the
+    /// layout has no normal array; w: GL's current fog coordinate (`glFogCoord`, location 22
+    /// where the layout has no fog coordinate array).
     pub current_normal: [f32; 4],
     /// GL's current texture coordinates (`glTexCoord`), s t r q: every vertex's (location 3)
     /// where a textured draw's layout has no texture coordinate array.
@@ -344,10 +364,16 @@ pub enum SpecConstant {
     /// compares at that fixed-point precision, as GL does), 0 for a float compare; set from the
     /// target in every pipeline.
     AlphaBits = 21,
+    /// `SPEC_FOG_MODE`: [`Fog::mode_code`](crate::gl::state::Fog::mode_code), 0 with fog off.
+    FogMode = 22,
+    /// `SPEC_FOG_SOURCE`: 1 for `GL_FOG_COORD`, 0 for `GL_FRAGMENT_DEPTH` (0 with fog off).
+    FogSource = 23,
+    /// `SPEC_FOG_PER_VERTEX`: 1 for `GL_FOG_HINT` `GL_FASTEST` (0 with fog off).
+    FogPerVertex = 24,
 }
 
 /// How many specialization constants there are.
-pub const SPEC_CONSTANT_COUNT: usize = 22;
+pub const SPEC_CONSTANT_COUNT: usize = 25;
 
 impl SpecConstant {
     /// Every constant, in `constant_id` order.
@@ -374,6 +400,9 @@ impl SpecConstant {
         SpecConstant::ColorSum,
         SpecConstant::AlphaFunc,
         SpecConstant::AlphaBits,
+        SpecConstant::FogMode,
+        SpecConstant::FogSource,
+        SpecConstant::FogPerVertex,
     ];
 
     /// The `constant_id` in the GLSL.
@@ -406,6 +435,9 @@ impl SpecConstant {
             SpecConstant::ColorSum => "SPEC_COLOR_SUM",
             SpecConstant::AlphaFunc => "SPEC_ALPHA_FUNC",
             SpecConstant::AlphaBits => "SPEC_ALPHA_BITS",
+            SpecConstant::FogMode => "SPEC_FOG_MODE",
+            SpecConstant::FogSource => "SPEC_FOG_SOURCE",
+            SpecConstant::FogPerVertex => "SPEC_FOG_PER_VERTEX",
         }
     }
 }
@@ -441,6 +473,12 @@ impl SpecKey {
             values[SpecConstant::TexEnv as usize] = state.texture.env_mode.code() as i32;
         }
         values[SpecConstant::AlphaFunc as usize] = state.fragment.alpha_test.effective_func().code() as i32;
+        let fog = &state.fragment.fog;
+        if fog.enabled {
+            values[SpecConstant::FogMode as usize] = fog.mode_code() as i32;
+            values[SpecConstant::FogSource as usize] = (fog.source == FogSource::FogCoord) as i32;
+            values[SpecConstant::FogPerVertex as usize] = fog.hint.per_vertex() as i32;
+        }
         if !state.lighting {
             values[SpecConstant::ColorSum as usize] = state.fragment.color_sum as i32;
             return SpecKey { values };
@@ -630,6 +668,7 @@ impl StateBlock {
     pub fn new(state: &FixedFunctionState, projection: Mat4) -> Self {
         let (lights, light_count) = pack_lights(&state.lights);
         let cm = &state.color_material;
+        let fog = &state.fragment.fog;
         StateBlock {
             projection: (VK_FROM_GL_CLIP * projection).to_cols_array(),
             texture_matrix: state.texture.matrix.to_cols_array(),
@@ -657,6 +696,19 @@ impl StateBlock {
             alpha_func: state.fragment.alpha_test.effective_func().code(),
             alpha_ref: state.fragment.alpha_test.reference,
             pad_: 0,
+            fog_color: fog.color.to_array(),
+            fog_start: fog.start,
+            fog_end: fog.end,
+            fog_density: fog.density,
+            fog_scale: if fog.end == fog.start {
+                0.0
+            } else {
+                1.0 / (fog.end - fog.start)
+            },
+            fog_mode: fog.mode_code(),
+            fog_source: (fog.source == FogSource::FogCoord) as u32,
+            fog_per_vertex: fog.hint.per_vertex() as u32,
+            pad_fog: 0,
             lights,
         }
     }
@@ -698,7 +750,7 @@ impl DrawRecord {
             front: face(front),
             back: face(back),
             current_color: values.current_color.to_array(),
-            current_normal: values.current_normal.extend(0.0).to_array(),
+            current_normal: values.current_normal.extend(values.current_fog_coord).to_array(),
             current_texcoord: values.current_texcoord.to_array(),
             current_secondary_color: values.current_secondary_color.to_array(),
         }

@@ -97,7 +97,8 @@ pub(super) fn eligible(frame: &Frame, specialize: Specialize, cpu: bool) -> Opti
         d.state.mode == LightingMode::Fragment
             && d.raster(frame).blend.is_none()
             && !d.textured()
-            // The alpha test and an unlit color sum are forward-only stages.
+            // Fog, the alpha test and an unlit color sum are forward-only stages.
+            && !d.state.fragment.fog.enabled
             && d.state.fragment.alpha_test.effective_func() == crate::gl::state::CompareFunc::Always
             && (!d.state.fragment.color_sum || d.state.lighting)
             && affine(&d.modelview) == affine(&first.modelview)

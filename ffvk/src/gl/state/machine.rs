@@ -7,8 +7,8 @@ use glam::{Mat3, Mat4, Vec3, Vec4};
 
 use super::{
     check_light_scalar, finite_vec, in_range, Cap, ColorMaterialMode, CompareFunc, Face, FixedFunctionState,
-    Light, LightModelParam, LightParam, LightingMode, Material, MaterialParam, ShadeModel, StateError,
-    TexEnvParam, MAX_LIGHTS,
+    FogHint, FogParam, Light, LightModelParam, LightParam, LightingMode, Material, MaterialParam, ShadeModel,
+    StateError, TexEnvParam, MAX_LIGHTS,
 };
 
 /// The fixed-function state machine: the lighting state plus the current modelview matrix,
@@ -206,6 +206,7 @@ impl GlState {
             Cap::Texture2D => self.lighting.texture.enabled = on,
             Cap::ColorSum => self.lighting.fragment.color_sum = on,
             Cap::AlphaTest => self.lighting.fragment.alpha_test.enabled = on,
+            Cap::Fog => self.lighting.fragment.fog.enabled = on,
         }
         Ok(())
     }
@@ -223,6 +224,46 @@ impl GlState {
         let test = &mut self.lighting.fragment.alpha_test;
         test.func = func;
         test.reference = reference.clamp(0.0, 1.0);
+        Ok(())
+    }
+
+    /// glFog: GL's values and errors (a negative density is `GL_INVALID_VALUE`; the color is
+    /// clamped to [0, 1]); a NaN or infinite value is an error (ffvk's choice).
+    pub fn fog(&mut self, param: FogParam) -> Result<(), StateError> {
+        let fog = &mut self.lighting.fragment.fog;
+        match param {
+            FogParam::Mode(mode) => fog.mode = mode,
+            FogParam::Density(d) => {
+                in_range("GL_FOG_DENSITY", d, 0.0, f32::MAX, "a value >= 0")?;
+                fog.density = d;
+            }
+            FogParam::Start(s) => {
+                finite_vec("GL_FOG_START", &[s])?;
+                fog.start = s;
+            }
+            FogParam::End(e) => {
+                finite_vec("GL_FOG_END", &[e])?;
+                fog.end = e;
+            }
+            FogParam::Color(c) => {
+                finite_vec("GL_FOG_COLOR", c.to_array().as_slice())?;
+                fog.color = c.clamp(Vec4::ZERO, Vec4::ONE);
+            }
+            FogParam::CoordSrc(source) => fog.source = source,
+        }
+        Ok(())
+    }
+
+    /// glHint(GL_FOG_HINT): `GL_FASTEST` fogs per vertex, the others per fragment.
+    pub fn fog_hint(&mut self, hint: FogHint) {
+        self.lighting.fragment.fog.hint = hint;
+    }
+
+    /// glFogCoordf: the current fog coordinate, every vertex's in draws whose layout has no
+    /// fog coordinate array; a NaN or infinite value is an error.
+    pub fn fog_coord(&mut self, c: f32) -> Result<(), StateError> {
+        finite_vec("GL_CURRENT_FOG_COORD", &[c])?;
+        self.lighting.current_fog_coord = c;
         Ok(())
     }
 

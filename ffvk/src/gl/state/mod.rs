@@ -42,11 +42,14 @@ use glam::{Vec3, Vec4};
 
 use super::texture::{TexEnvMode, TextureUnit};
 
+mod checks;
 mod machine;
 mod stages;
 mod values;
+pub use checks::validate_light;
+use checks::validate_lights;
 pub use machine::GlState;
-pub use stages::{AlphaTest, CompareFunc, FragmentStages};
+pub use stages::{AlphaTest, CompareFunc, Fog, FogHint, FogMode, FogParam, FogSource, FragmentStages};
 pub use values::DrawValues;
 
 /// Lights ffvk evaluates per draw (GL_MAX_LIGHTS). GL requires at least 8.
@@ -458,6 +461,8 @@ pub enum Cap {
     ColorSum,
     /// `GL_ALPHA_TEST`: fragments are kept as [`AlphaTest`] says.
     AlphaTest,
+    /// `GL_FOG`: fragments are fogged as [`Fog`] says.
+    Fog,
 }
 
 /// Parameters of glTexEnv (target `GL_TEXTURE_ENV`).
@@ -582,7 +587,10 @@ pub struct FixedFunctionState {
     /// `glSecondaryColor`), (0, 0, 0, 1) initially: that of every vertex of a draw whose layout
     /// has no secondary color array; summed only with lighting off and `GL_COLOR_SUM` on.
     pub current_secondary_color: Vec4,
-    /// The fragment stages after texturing: the color sum and the alpha test.
+    /// GL's current fog coordinate (`GL_CURRENT_FOG_COORD`, set by `glFogCoord`), 0
+    /// initially: that of every vertex of a draw whose layout has no fog coordinate array.
+    pub current_fog_coord: f32,
+    /// The fragment stages after texturing: the color sum, fog and the alpha test.
     pub fragment: FragmentStages,
 }
 
@@ -610,6 +618,7 @@ impl Default for FixedFunctionState {
             current_normal: Vec3::Z,
             current_texcoord: Vec4::W,
             current_secondary_color: Vec4::W,
+            current_fog_coord: 0.0,
             fragment: FragmentStages::default(),
         }
     }
@@ -628,6 +637,10 @@ impl FixedFunctionState {
     fn validate_shared(&self) -> Result<(), StateError> {
         finite_vec("GL_LIGHT_MODEL_AMBIENT", self.model.ambient.to_array().as_slice())?;
         self.texture.validate()?;
+        let fog = &self.fragment.fog;
+        finite_vec("GL_FOG_START", &[fog.start, fog.end])?;
+        finite_vec("GL_FOG_COLOR", fog.color.to_array().as_slice())?;
+        in_range("GL_FOG_DENSITY", fog.density, 0.0, f32::MAX, "a value >= 0")?;
         let reference = self.fragment.alpha_test.reference;
         if !(0.0..=1.0).contains(&reference) {
             return Err(StateError::OutOfRange {
@@ -688,50 +701,6 @@ pub fn cos_cutoff(cutoff_degrees: f32) -> f64 {
         0.0
     } else {
         (cutoff_degrees as f64).to_radians().cos()
-    }
-}
-
-/// The lights' part of [`FixedFunctionState::validate`]: every light's values, and the cones of the
-/// enabled ones (a disabled light may be half set up: its cones count once it is enabled).
-fn validate_lights(lights: &[Light; MAX_LIGHTS]) -> Result<(), StateError> {
-    for (index, light) in lights.iter().enumerate() {
-        validate_light(light)?;
-        if light.enabled {
-            check_cone(index, light)?;
-        }
-    }
-    Ok(())
-}
-
-/// Checks one light's values against GL's ranges and that every value is finite.
-pub fn validate_light(l: &Light) -> Result<(), StateError> {
-    for (name, c) in [
-        ("GL_AMBIENT", l.ambient),
-        ("GL_DIFFUSE", l.diffuse),
-        ("GL_SPECULAR", l.specular),
-        ("GL_POSITION", l.position),
-    ] {
-        finite_vec(name, c.to_array().as_slice())?;
-    }
-    finite_vec("GL_SPOT_DIRECTION", l.spot_direction.to_array().as_slice())?;
-    check_light_scalar(&LightParam::SpotExponent(l.spot_exponent))?;
-    check_light_scalar(&LightParam::SpotCutoff(l.spot_cutoff))?;
-    check_light_scalar(&LightParam::ConstantAttenuation(l.constant_attenuation))?;
-    check_light_scalar(&LightParam::LinearAttenuation(l.linear_attenuation))?;
-    check_light_scalar(&LightParam::QuadraticAttenuation(l.quadratic_attenuation))?;
-    check_light_scalar(&LightParam::SpotEdge(l.spot_edge))?;
-    check_light_scalar(&LightParam::Attenuation(l.attenuation))
-}
-
-/// A soft edge's inner cone must fit in the outer one (`GL_SPOT_CUTOFF`; no cone at 180).
-fn check_cone(index: usize, l: &Light) -> Result<(), StateError> {
-    match l.spot_edge.inner_degrees() {
-        Some(inner) if l.spot_cutoff != 180.0 && inner > l.spot_cutoff => Err(StateError::SpotCone {
-            light: index,
-            inner,
-            outer: l.spot_cutoff,
-        }),
-        _ => Ok(()),
     }
 }
 

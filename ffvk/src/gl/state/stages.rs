@@ -1,6 +1,6 @@
 //! The fixed-function stages after texturing that a draw's state carries
-//! ([`FragmentStages`]): the color sum (GL 2.1 §3.9) and the alpha test (§4.1.4), in GL's
-//! order; fog (§3.10) joins them between the two.
+//! ([`FragmentStages`]), in GL's order: the color sum (GL 2.1 §3.9), fog (§3.10) and the alpha
+//! test (§4.1.4).
 
 /// A comparison function of GL's (`glAlphaFunc`, and later `glDepthFunc` and `glStencilFunc`):
 /// the test passes when `value func reference`.
@@ -119,6 +119,156 @@ pub struct FragmentStages {
     /// the secondary color (the layout's array or the current secondary color) to the primary
     /// after texturing; with lighting on GL always sums (the separate specular color).
     pub color_sum: bool,
-    /// The alpha test.
+    /// Fog, after the color sum.
+    pub fog: Fog,
+    /// The alpha test, last.
     pub alpha_test: AlphaTest,
+}
+
+/// `GL_FOG_MODE` (§3.10): how the fog factor f falls with the distance c.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[non_exhaustive]
+pub enum FogMode {
+    /// `GL_LINEAR`: f = (end − c) / (end − start).
+    Linear,
+    /// `GL_EXP` (GL's default): f = exp(−density · c).
+    #[default]
+    Exp,
+    /// `GL_EXP2`: f = exp(−(density · c)²).
+    Exp2,
+}
+
+impl FogMode {
+    /// The shaders' `SPEC_FOG_MODE` for this mode with fog on: 1 linear, 2 exp, 3 exp2 (0 is
+    /// fog off).
+    pub fn code(self) -> u32 {
+        match self {
+            FogMode::Linear => 1,
+            FogMode::Exp => 2,
+            FogMode::Exp2 => 3,
+        }
+    }
+
+    /// GL's name.
+    pub fn gl_name(self) -> &'static str {
+        match self {
+            FogMode::Linear => "GL_LINEAR",
+            FogMode::Exp => "GL_EXP",
+            FogMode::Exp2 => "GL_EXP2",
+        }
+    }
+}
+
+/// `GL_FOG_COORD_SRC` (EXT_fog_coord): where the fog's distance c comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[non_exhaustive]
+pub enum FogSource {
+    /// `GL_FRAGMENT_DEPTH` (the default): the eye-space distance, taken as |z_e| (the
+    /// approximation GL 2.1 allows and Mesa uses).
+    #[default]
+    FragmentDepth,
+    /// `GL_FOG_COORD`: the fog coordinate (a layout's array or the current one,
+    /// `glFogCoord`), as it is: GL 2.1 takes no absolute value (Mesa does).
+    FogCoord,
+}
+
+/// `GL_FOG_HINT`: where ffvk computes f. `GL_FASTEST` per vertex, interpolated (GL 2.1
+/// allows it; Mesa ignores the hint); the others per fragment from the interpolated c.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[non_exhaustive]
+pub enum FogHint {
+    /// `GL_DONT_CARE` (the default): per fragment.
+    #[default]
+    DontCare,
+    /// `GL_FASTEST`: per vertex.
+    Fastest,
+    /// `GL_NICEST`: per fragment.
+    Nicest,
+}
+
+impl FogHint {
+    /// Whether f is computed per vertex.
+    pub fn per_vertex(self) -> bool {
+        self == FogHint::Fastest
+    }
+}
+
+/// Fog (§3.10): after texturing and the color sum, each fragment's RGB becomes
+/// f · rgb + (1 − f) · color.rgb, f clamped to [0, 1]; alpha is untouched.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub struct Fog {
+    /// `GL_FOG`; off by default.
+    pub enabled: bool,
+    /// `GL_FOG_MODE`; `GL_EXP` by default.
+    pub mode: FogMode,
+    /// `GL_FOG_DENSITY`, ≥ 0; 1 by default.
+    pub density: f32,
+    /// `GL_FOG_START`; 0 by default.
+    pub start: f32,
+    /// `GL_FOG_END`; 1 by default.
+    pub end: f32,
+    /// `GL_FOG_COLOR`, clamped to [0, 1] when set; (0, 0, 0, 0) by default.
+    pub color: glam::Vec4,
+    /// `GL_FOG_COORD_SRC`.
+    pub source: FogSource,
+    /// `GL_FOG_HINT`.
+    pub hint: FogHint,
+}
+
+impl Default for Fog {
+    fn default() -> Self {
+        Fog {
+            enabled: false,
+            mode: FogMode::Exp,
+            density: 1.0,
+            start: 0.0,
+            end: 1.0,
+            color: glam::Vec4::ZERO,
+            source: FogSource::FragmentDepth,
+            hint: FogHint::DontCare,
+        }
+    }
+}
+
+impl Fog {
+    /// The shaders' `SPEC_FOG_MODE`: 0 with fog off, else [`FogMode::code`].
+    pub fn mode_code(&self) -> u32 {
+        if self.enabled {
+            self.mode.code()
+        } else {
+            0
+        }
+    }
+
+    /// GL 2.1's fog factor for distance `c`, clamped to [0, 1] (`GL_LINEAR` with end = start,
+    /// which GL leaves undefined, gives 1: no fog, as Mesa's scale of 1 with no divide does
+    /// for c = start).
+    pub fn factor(&self, c: f32) -> f32 {
+        let f = match self.mode {
+            FogMode::Linear if self.end == self.start => 1.0,
+            FogMode::Linear => (self.end - c) / (self.end - self.start),
+            FogMode::Exp => (-self.density * c).exp(),
+            FogMode::Exp2 => (-(self.density * c) * (self.density * c)).exp(),
+        };
+        f.clamp(0.0, 1.0)
+    }
+}
+
+/// Parameters of glFog.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum FogParam {
+    /// `GL_FOG_MODE`.
+    Mode(FogMode),
+    /// `GL_FOG_DENSITY`: a negative value is GL's `GL_INVALID_VALUE`.
+    Density(f32),
+    /// `GL_FOG_START`.
+    Start(f32),
+    /// `GL_FOG_END`.
+    End(f32),
+    /// `GL_FOG_COLOR`: clamped to [0, 1] as GL does.
+    Color(glam::Vec4),
+    /// `GL_FOG_COORD_SRC`.
+    CoordSrc(FogSource),
 }

@@ -43,6 +43,9 @@ pub struct DrawValues {
     /// GL's current secondary color: every vertex's when the layout has no secondary color
     /// array (summed with lighting off under `GL_COLOR_SUM`).
     pub current_secondary_color: Vec4,
+    /// GL's current fog coordinate: every vertex's when the layout has no fog coordinate
+    /// array (read with `GL_FOG_COORD_SRC` `GL_FOG_COORD`).
+    pub current_fog_coord: f32,
 }
 
 impl DrawValues {
@@ -57,6 +60,7 @@ impl DrawValues {
             current_normal: state.current_normal,
             current_texcoord: state.current_texcoord,
             current_secondary_color: state.current_secondary_color,
+            current_fog_coord: state.current_fog_coord,
         }
     }
 
@@ -70,6 +74,7 @@ impl DrawValues {
             current_normal: Vec3::Z,
             current_texcoord: Vec4::W,
             current_secondary_color: Vec4::W,
+            current_fog_coord: 0.0,
         }
     }
 
@@ -101,6 +106,7 @@ impl DrawValues {
         finite_vec(
             "GL_CURRENT_SECONDARY_COLOR",
             self.current_secondary_color.to_array().as_slice(),
-        )
+        )?;
+        finite_vec("GL_CURRENT_FOG_COORD", &[self.current_fog_coord])
     }
 }
