@@ -96,6 +96,21 @@ const VARIANTS: &[Variant] = &[
     },
 ];
 
+/// The build with GL's user clip planes of each variant whose vertex stage is a drawing one,
+/// named `<variant>_clipped`: `gl_ClipDistance[6]` written (the device's `shaderClipDistance`
+/// needed, which pipelines without clip planes do not ask for).
+const CLIP_PLANES: (&str, &str) = ("CLIP_PLANES", "1");
+
+/// The variants with a `_clipped` build.
+const CLIPPED: [&str; 6] = [
+    "vertex",
+    "vertex_one_color",
+    "flat",
+    "flat_one_color",
+    "fragment",
+    "fragment_small",
+];
+
 /// The textured build of each of those, named `<…>_textured`: texture coordinates at
 /// location 3, the texture environment before the color sum (`glsl/texture.glsl`).
 /// Untextured draws keep the variants without it, unchanged.
@@ -116,20 +131,29 @@ fn main() {
     let mut table = String::new();
     let mut errors = Vec::new();
     let builds = VARIANTS.iter().flat_map(|v| {
-        let mut textured = v.defines.to_vec();
-        textured.push(TEXTURE);
-        [
-            (v, v.name.to_string(), v.doc.to_string(), v.defines.to_vec()),
-            (
-                v,
-                format!("{}_textured", v.name),
-                format!(
-                    "{} Textured: the texture environment before the color sum.",
-                    v.doc
+        let mut bases = vec![(v.name.to_string(), v.doc.to_string(), v.defines.to_vec())];
+        if CLIPPED.contains(&v.name) {
+            let mut clipped = v.defines.to_vec();
+            clipped.push(CLIP_PLANES);
+            bases.push((
+                format!("{}_clipped", v.name),
+                format!("{} With GL's user clip planes.", v.doc),
+                clipped,
+            ));
+        }
+        bases.into_iter().flat_map(move |(name, doc, defines)| {
+            let mut textured = defines.clone();
+            textured.push(TEXTURE);
+            [
+                (v, name.clone(), doc.clone(), defines),
+                (
+                    v,
+                    format!("{name}_textured"),
+                    format!("{doc} Textured: the texture environment before the color sum."),
+                    textured,
                 ),
-                textured,
-            ),
-        ]
+            ]
+        })
     });
     for (variant, name, doc, defines) in builds {
         let mut stages = Vec::new();

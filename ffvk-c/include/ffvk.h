@@ -96,6 +96,12 @@
 #ifndef GL_FOG
 #define GL_FOG 0x0B60
 #endif
+#ifndef GL_CLIP_PLANE0
+#define GL_CLIP_PLANE0 0x3000
+#endif
+#ifndef GL_MAX_CLIP_PLANES
+#define GL_MAX_CLIP_PLANES 0x0D32
+#endif
 #ifndef GL_FOG_DENSITY
 #define GL_FOG_DENSITY 0x0B62
 #endif
@@ -372,6 +378,11 @@
  `largePoints`: needed for a point size other than 1.
  */
 #define FFVK_FEATURE_LARGE_POINTS 8
+
+/*
+ `shaderClipDistance`: needed for GL's user clip planes (`ffvkClipPlane`).
+ */
+#define FFVK_FEATURE_CLIP_DISTANCE 16
 
 /*
  The most `frames_in_flight` a renderer takes (`ffvk::MAX_FRAMES_IN_FLIGHT`).
@@ -846,6 +857,21 @@ typedef struct FfvkVertexLayoutInfo {
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+/*
+ glClipPlane: the plane's equation (four doubles, in object coordinates), stored in eye
+ space by the inverse of the context's modelview now (GL 2.1 §2.12); enable it with
+ `ffvkEnable(ctx, GL_CLIP_PLANEi)`. Drawing with a plane enabled needs
+ `FFVK_FEATURE_CLIP_DISTANCE`. Errors: `GL_INVALID_ENUM` for another `plane`;
+ `GL_INVALID_VALUE` for a null `equation`, a value that is not finite, or a singular
+ modelview (ffvk's choices: GL leaves those undefined).
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `equation` is null or points
+ at four doubles.
+ */
+void ffvkClipPlane(struct FfvkContext *ctx, uint32_t plane, const double *equation);
 
 /*
  Creates a context in GL's initial state (table 2.10 and friends): lighting off, every
@@ -1493,6 +1519,18 @@ void ffvkGetIntegerv(struct FfvkContext *ctx, uint32_t pname, int32_t *params);
  set.
  */
 void ffvkGetBooleanv(struct FfvkContext *ctx, uint32_t pname, uint8_t *params);
+
+/*
+ glGetClipPlane: the plane's equation as stored, in eye space (four doubles). Errors:
+ `GL_INVALID_ENUM` for another `plane`; `GL_INVALID_VALUE` for a null `equation`. Nothing is
+ written when an error is set.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `equation` is null or has room
+ for four doubles.
+ */
+void ffvkGetClipPlane(struct FfvkContext *ctx, uint32_t plane, double *equation);
 
 /*
  Makes a renderer on the caller's device: checks every value of `info` before Vulkan is

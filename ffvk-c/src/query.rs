@@ -70,6 +70,7 @@ pub(crate) fn is_enabled(c: &FfvkContext, cap: Cap) -> bool {
         Cap::ColorSum => l.fragment.color_sum,
         Cap::AlphaTest => l.fragment.alpha_test.enabled,
         Cap::Fog => l.fragment.fog.enabled,
+        Cap::ClipPlane(i) => l.clip.enabled.get(i).copied().unwrap_or(false),
         _ => false,
     }
 }
@@ -166,6 +167,9 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
         GL_COLOR_SUM => Some(Cap::ColorSum),
         GL_ALPHA_TEST => Some(Cap::AlphaTest),
         GL_FOG => Some(Cap::Fog),
+        p if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 6).contains(&p) => {
+            Some(Cap::ClipPlane((p - GL_CLIP_PLANE0) as usize))
+        }
         p if p >= GL_LIGHT0 && p < GL_LIGHT0 + MAX_LIGHTS as u32 => light_index(f, p).ok().map(Cap::Light),
         _ => None,
     };
@@ -213,6 +217,7 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
             _ => GL_DONT_CARE,
         })),
         GL_CURRENT_FOG_COORD => Answer::Floats(vec![l.current_fog_coord]),
+        GL_MAX_CLIP_PLANES => Answer::Int(ffvk::gl::state::MAX_CLIP_PLANES as i64),
         GL_CURRENT_TEXTURE_COORDS => Answer::Floats(l.current_texcoord.to_array().to_vec()),
         GL_MAX_LIGHTS => Answer::Int(MAX_LIGHTS as i64),
         GL_MODELVIEW_MATRIX => Answer::Floats(c.gl.modelview.to_cols_array().to_vec()),
@@ -223,7 +228,7 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
                 f,
                 "pname",
                 pname,
-                "a lighting state name: GL_LIGHTING, GL_LIGHTi, GL_COLOR_MATERIAL(_FACE, _PARAMETER), GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_LIGHT_MODEL_*, GL_SHADE_MODEL, GL_CURRENT_COLOR, GL_CURRENT_NORMAL, GL_CURRENT_TEXTURE_COORDS, GL_CURRENT_SECONDARY_COLOR, GL_COLOR_SUM, GL_ALPHA_TEST(_FUNC, _REF), GL_FOG(_MODE, _DENSITY, _START, _END, _COLOR, _COORD_SRC, _HINT), GL_CURRENT_FOG_COORD, GL_MAX_LIGHTS or GL_{MODELVIEW,PROJECTION,TEXTURE}_MATRIX",
+                "a lighting state name: GL_LIGHTING, GL_LIGHTi, GL_COLOR_MATERIAL(_FACE, _PARAMETER), GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_LIGHT_MODEL_*, GL_SHADE_MODEL, GL_CURRENT_COLOR, GL_CURRENT_NORMAL, GL_CURRENT_TEXTURE_COORDS, GL_CURRENT_SECONDARY_COLOR, GL_COLOR_SUM, GL_ALPHA_TEST(_FUNC, _REF), GL_FOG(_MODE, _DENSITY, _START, _END, _COLOR, _COORD_SRC, _HINT), GL_CURRENT_FOG_COORD, GL_CLIP_PLANEi, GL_MAX_CLIP_PLANES, GL_MAX_LIGHTS or GL_{MODELVIEW,PROJECTION,TEXTURE}_MATRIX",
             ))
         }
     })
@@ -413,5 +418,24 @@ pub unsafe extern "C" fn ffvkGetBooleanv(ctx: *mut FfvkContext, pname: u32, para
         let answer = get_answer(f, c, pname)?;
         // SAFETY: the caller's contract on params.
         unsafe { write(f, params, &answer.bools()) }
+    })
+}
+
+/// glGetClipPlane: the plane's equation as stored, in eye space (four doubles). Errors:
+/// `GL_INVALID_ENUM` for another `plane`; `GL_INVALID_VALUE` for a null `equation`. Nothing is
+/// written when an error is set.
+///
+/// # Safety
+///
+/// `ctx` is null or a live context used by one thread at a time; `equation` is null or has room
+/// for four doubles.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkGetClipPlane(ctx: *mut FfvkContext, plane: u32, equation: *mut f64) {
+    let f = "ffvkGetClipPlane";
+    with_context(ctx, f, |c| {
+        let i = crate::gl::clip_plane_index(f, plane)?;
+        let p = c.gl.lighting.clip.planes[i].as_dvec4().to_array();
+        // SAFETY: the caller's contract on equation.
+        unsafe { write(f, equation, &p) }
     })
 }

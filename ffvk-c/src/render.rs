@@ -41,6 +41,8 @@ pub const FFVK_FEATURE_PROVOKING_VERTEX_LAST: u32 = 2;
 pub const FFVK_FEATURE_WIDE_LINES: u32 = 4;
 /// `largePoints`: needed for a point size other than 1.
 pub const FFVK_FEATURE_LARGE_POINTS: u32 = 8;
+/// `shaderClipDistance`: needed for GL's user clip planes (`ffvkClipPlane`).
+pub const FFVK_FEATURE_CLIP_DISTANCE: u32 = 16;
 
 /// The most `frames_in_flight` a renderer takes (`ffvk::MAX_FRAMES_IN_FLIGHT`).
 pub const FFVK_MAX_FRAMES_IN_FLIGHT: u32 = 64;
@@ -280,7 +282,8 @@ unsafe fn create(info: &FfvkRendererCreateInfo) -> Result<FfvkRenderer, FfvkResu
     let known = FFVK_FEATURE_DYNAMIC_RENDERING
         | FFVK_FEATURE_PROVOKING_VERTEX_LAST
         | FFVK_FEATURE_WIDE_LINES
-        | FFVK_FEATURE_LARGE_POINTS;
+        | FFVK_FEATURE_LARGE_POINTS
+        | FFVK_FEATURE_CLIP_DISTANCE;
     if info.enabled_features & !known != 0 {
         return Err(invalid(format!(
             "{F}: enabled_features 0x{:X} has unknown bits: expected FFVK_FEATURE_* flags (0x{known:X})",
@@ -331,7 +334,8 @@ unsafe fn create(info: &FfvkRendererCreateInfo) -> Result<FfvkRenderer, FfvkResu
         .with_dynamic_rendering(has(FFVK_FEATURE_DYNAMIC_RENDERING))
         .with_provoking_vertex_last(has(FFVK_FEATURE_PROVOKING_VERTEX_LAST))
         .with_wide_lines(has(FFVK_FEATURE_WIDE_LINES))
-        .with_large_points(has(FFVK_FEATURE_LARGE_POINTS));
+        .with_large_points(has(FFVK_FEATURE_LARGE_POINTS))
+        .with_clip_distance(has(FFVK_FEATURE_CLIP_DISTANCE));
     // SAFETY: the caller's contract: device was made from physical_device of instance with
     // these features and outlives the renderer.
     let ffvk_device =

@@ -7,8 +7,8 @@ use std::ffi::c_char;
 use ffvk::ash::{self, ext, vk};
 
 use crate::render::{
-    FFVK_FEATURE_DYNAMIC_RENDERING, FFVK_FEATURE_LARGE_POINTS, FFVK_FEATURE_PROVOKING_VERTEX_LAST,
-    FFVK_FEATURE_WIDE_LINES,
+    FFVK_FEATURE_CLIP_DISTANCE, FFVK_FEATURE_DYNAMIC_RENDERING, FFVK_FEATURE_LARGE_POINTS,
+    FFVK_FEATURE_PROVOKING_VERTEX_LAST, FFVK_FEATURE_WIDE_LINES,
 };
 use crate::result::{check_ptr, fail, guard, misaligned, FfvkResult};
 use crate::vk_types::*;
@@ -97,6 +97,7 @@ struct Support {
     provoking_extension: bool,
     wide_lines: bool,
     large_points: bool,
+    clip_distance: bool,
 }
 
 /// Asks the device what it supports.
@@ -132,6 +133,7 @@ unsafe fn query(
     // SAFETY: the chained structs live until the call returns; the caller's contract.
     unsafe { instance.get_physical_device_features2(physical_device, &mut features) };
     let (wide_lines, large_points) = (features.features.wide_lines, features.features.large_points);
+    let clip_distance = features.features.shader_clip_distance == vk::TRUE;
     Ok(Support {
         api_version: props.api_version,
         dynamic_rendering: v13.dynamic_rendering == vk::TRUE,
@@ -139,6 +141,7 @@ unsafe fn query(
         provoking_extension,
         wide_lines: wide_lines == vk::TRUE,
         large_points: large_points == vk::TRUE,
+        clip_distance,
     })
 }
 
@@ -318,6 +321,14 @@ pub unsafe extern "C" fn ffvkDeviceRequirements(
         } else {
             missing.push("FFVK_FEATURE_LARGE_POINTS (the device lacks largePoints; point sizes other than 1 are refused)".into());
         }
+        if support.clip_distance {
+            bits |= FFVK_FEATURE_CLIP_DISTANCE;
+        } else {
+            missing.push(
+                "FFVK_FEATURE_CLIP_DISTANCE (the device lacks shaderClipDistance; draws with user clip planes are refused)"
+                    .into(),
+            );
+        }
         let names: &[&'static std::ffi::CStr] = if provoking {
             &[ext::provoking_vertex::NAME]
         } else {
@@ -371,6 +382,9 @@ pub unsafe extern "C" fn ffvkDeviceRequirements(
             }
             if support.large_points {
                 (*features).features.large_points = vk::TRUE;
+            }
+            if support.clip_distance {
+                (*features).features.shader_clip_distance = vk::TRUE;
             }
         }
         fail(FfvkResult::FFVK_SUCCESS, message)

@@ -339,7 +339,20 @@ impl Ctx {
                 });
             }
             let caps = [LIGHTING, COLOR_MATERIAL, NORMALIZE, RESCALE_NORMAL, TEXTURE_2D];
-            for cap in caps.into_iter().chain((0..16).map(|i| LIGHT0 + i)) {
+            for p in 0..6 {
+                take(format!("GetClipPlane({p})"), &|b| {
+                    let mut d = [0.0f64; 4];
+                    ffvkGetClipPlane(x, 0x3000 + p, d.as_mut_ptr());
+                    for (k, v) in d.iter().enumerate() {
+                        b.add(k).write(*v as f32);
+                    }
+                });
+            }
+            for cap in caps
+                .into_iter()
+                .chain((0..16).map(|i| LIGHT0 + i))
+                .chain((0..6).map(|i| 0x3000 + i))
+            {
                 let on = ffvkIsEnabled(x, cap) as f32;
                 take(format!("IsEnabled(0x{cap:04X})"), &|b| b.write(on));
             }
@@ -454,6 +467,14 @@ fn context_calls() -> Vec<(&'static str, ContextCall)> {
             e("ffvkFogiv", |c| ffvkFogiv(c, 0x0B65, [0x0801i32].as_ptr())),
             e("ffvkFogCoordf", |c| ffvkFogCoordf(c, 2.0)),
             e("ffvkHint", |c| ffvkHint(c, 0x0C54, 0x1101)),
+            e("ffvkClipPlane", |c| {
+                ffvkClipPlane(c, 0x3000, [1.0f64, 0.0, 0.0, 0.5].as_ptr())
+            }),
+            e("ffvkGetClipPlane", |c| {
+                let mut b = [f64::from(SENTINEL_F); 4];
+                ffvkGetClipPlane(c, 0x3000, b.as_mut_ptr());
+                assert!(b.iter().all(|&v| v == f64::from(SENTINEL_F)), "{b:?}");
+            }),
             e("ffvkShadeModel", |c| ffvkShadeModel(c, FLAT)),
             e("ffvkPerFragmentLighting", |c| ffvkPerFragmentLighting(c, 1)),
             e("ffvkLoadModelview", |c| ffvkLoadModelview(c, M.as_ptr())),
@@ -1853,7 +1874,7 @@ fn create_renderer_with_no_frames_in_flight_is_invalid_argument() {
 #[test]
 fn create_renderer_with_unknown_feature_bits_is_invalid_argument() {
     for bits in [
-        0x10u32,
+        0x20u32,
         0x8000_0000,
         u32::MAX,
         FFVK_FEATURE_DYNAMIC_RENDERING | 0x100,
@@ -1861,7 +1882,7 @@ fn create_renderer_with_unknown_feature_bits_is_invalid_argument() {
         let mut info = create_info();
         info.enabled_features = bits;
         let shown = format!("enabled_features 0x{bits:X} has unknown bits");
-        assert_create_refused(&info, &[&shown, "expected FFVK_FEATURE_* flags (0xF)"]);
+        assert_create_refused(&info, &[&shown, "expected FFVK_FEATURE_* flags (0x1F)"]);
     }
 }
 

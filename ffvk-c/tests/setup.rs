@@ -23,6 +23,7 @@ struct Device {
     provoking_vertex_last: bool,
     wide_lines: bool,
     large_points: bool,
+    clip_distance: bool,
 }
 
 const FULL: Device = Device {
@@ -32,6 +33,7 @@ const FULL: Device = Device {
     provoking_vertex_last: true,
     wide_lines: true,
     large_points: true,
+    clip_distance: true,
 };
 
 thread_local! {
@@ -88,6 +90,7 @@ unsafe extern "system" fn get_features2(_: vk::PhysicalDevice, features: *mut vk
     unsafe {
         (*features).features.wide_lines = bool32(d.wide_lines);
         (*features).features.large_points = bool32(d.large_points);
+        (*features).features.shader_clip_distance = bool32(d.clip_distance);
         let mut node = (*features).p_next.cast::<vk::BaseOutStructure>();
         while !node.is_null() {
             match (*node).s_type {
@@ -188,6 +191,7 @@ impl Chain {
             && self.provoking.provoking_vertex_last == vk::FALSE
             && self.features.features.wide_lines == vk::FALSE
             && self.features.features.large_points == vk::FALSE
+            && self.features.features.shader_clip_distance == vk::FALSE
     }
 }
 
@@ -242,7 +246,8 @@ fn ask(device: Device, chain: &mut Chain, room: Option<u32>) -> Answer {
 const ALL: u32 = FFVK_FEATURE_DYNAMIC_RENDERING
     | FFVK_FEATURE_PROVOKING_VERTEX_LAST
     | FFVK_FEATURE_WIDE_LINES
-    | FFVK_FEATURE_LARGE_POINTS;
+    | FFVK_FEATURE_LARGE_POINTS
+    | FFVK_FEATURE_CLIP_DISTANCE;
 
 #[test]
 fn a_device_with_everything_gets_every_feature_set_the_extension_listed_and_every_bit() {
@@ -261,6 +266,7 @@ fn a_device_with_everything_gets_every_feature_set_the_extension_listed_and_ever
     assert_eq!(chain.provoking.provoking_vertex_last, vk::TRUE);
     assert_eq!(chain.features.features.wide_lines, vk::TRUE);
     assert_eq!(chain.features.features.large_points, vk::TRUE);
+    assert_eq!(chain.features.features.shader_clip_distance, vk::TRUE);
 }
 
 #[test]
@@ -367,7 +373,7 @@ fn without_wide_lines_or_large_points_their_bits_are_missing_and_named() {
     assert_eq!(a.result, FfvkResult::FFVK_SUCCESS, "{}", a.message);
     assert_eq!(
         a.bits,
-        FFVK_FEATURE_DYNAMIC_RENDERING | FFVK_FEATURE_PROVOKING_VERTEX_LAST
+        FFVK_FEATURE_DYNAMIC_RENDERING | FFVK_FEATURE_PROVOKING_VERTEX_LAST | FFVK_FEATURE_CLIP_DISTANCE
     );
     assert_eq!(chain.features.features.wide_lines, vk::FALSE);
     for words in [

@@ -87,7 +87,8 @@ layout(std140, set = 0, binding = 0) uniform State {
     uint fog_mode;        // 0 off, 1 LINEAR, 2 EXP, 3 EXP2
     uint fog_source;      // 1 FOG_COORD, 0 FRAGMENT_DEPTH
     uint fog_per_vertex;  // 1 for FOG_HINT FASTEST
-    uint pad_fog;
+    uint clip_mask;       // the enabled CLIP_PLANEi, a bit each
+    vec4 clip_planes[6];  // CLIP_PLANEi in eye space (glClipPlane's p M^-1)
     Light lights[MAX_LIGHTS];
 } state;
 
@@ -150,6 +151,8 @@ layout(constant_id = 21) const int SPEC_ALPHA_BITS = 0;
 layout(constant_id = 22) const int SPEC_FOG_MODE = -1;
 layout(constant_id = 23) const int SPEC_FOG_SOURCE = -1;
 layout(constant_id = 24) const int SPEC_FOG_PER_VERTEX = -1;
+// The enabled user clip planes, a bit each (the `_clipped` builds write gl_ClipDistance).
+layout(constant_id = 25) const int SPEC_CLIP_PLANES = -1;
 
 // A switch of the uber-shader, read from the uniform block. lavapipe 22.3 compiles a shader
 // variant for every draw whose uniforms changed when an if or a loop bound depends on uniform
@@ -254,6 +257,14 @@ vec4 apply_fog(vec4 color, float fog) {
     vec4 fogged = vec4(mix(state.fog_color.rgb, color.rgb, f), color.a);
     bool off = fog_mode() == 0u;
     return mix(fogged, color, bvec4(off));
+}
+
+// Section 2.12: the distance of eye position V to user clip plane i, kept where it is >= 0;
+// 1 (kept) for a disabled plane.
+float clip_distance(uint i, vec4 V) {
+    uint mask = SPEC_CLIP_PLANES < 0 ? uber_value(state.clip_mask) : uint(SPEC_CLIP_PLANES);
+    bool on = ((mask >> i) & 1u) != 0u;
+    return on ? dot(state.clip_planes[i], V) : 1.0;
 }
 
 uint specular_model() {

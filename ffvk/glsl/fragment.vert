@@ -1,4 +1,5 @@
 #version 450
+#extension GL_EXT_control_flow_attributes : require  // [[unroll]] (the clip planes)
 // Vertex stage of the `fragment` mode: passes the eye-space position, the normal's
 // direction and length, and the current color.
 // (x, y, z, w): a layout with fewer components gets z = 0 and w = 1 from Vulkan, as from GL.
@@ -13,6 +14,10 @@ layout(location = 1) out vec4 normal;
 layout(location = 3) out vec4 color;
 layout(location = 2) out vec4 secondary;  // with lighting off: fragment.frag
 layout(location = 15) out float fog;      // c, or f per vertex (draw.glsl, fog_varying)
+#ifdef CLIP_PLANES
+// GL's user clip planes (the `_clipped` builds; the device's shaderClipDistance).
+out float gl_ClipDistance[6];
+#endif
 #ifdef VARYING_MATERIALS
 // The draw's materials, the same for every vertex of it (fragment.frag).
 layout(location = 5) flat out vec4 front_a_cm;
@@ -50,6 +55,9 @@ void main() {
     eye_position = in_modelview * in_position;
     gl_Position = state.projection * eye_position;
     fog = fog_varying(eye_position, in_fog_coord);
+#ifdef CLIP_PLANES
+    [[unroll]] for (uint i = 0u; i < 6u; i++) gl_ClipDistance[i] = clip_distance(i, eye_position);
+#endif
 #ifdef TEXTURE
     stq = state.texture_matrix * in_texcoord;
 #endif

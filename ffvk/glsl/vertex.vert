@@ -21,6 +21,11 @@ layout(location = 2) INTERP out vec4 back_pri;
 layout(location = 3) INTERP out vec4 back_sec;
 #endif
 
+#ifdef CLIP_PLANES
+// GL's user clip planes (the `_clipped` builds; the device's shaderClipDistance).
+out float gl_ClipDistance[6];
+#endif
+
 // Fog: c, or f where it is computed per vertex (draw.glsl, fog_varying).
 layout(location = 5) out float fog;
 
@@ -44,6 +49,9 @@ void main() {
     vec4 V = in_modelview * in_position;
     gl_Position = state.projection * V;
     fog = fog_varying(V, in_fog_coord);
+#ifdef CLIP_PLANES
+    [[unroll]] for (uint i = 0u; i < 6u; i++) gl_ClipDistance[i] = clip_distance(i, V);
+#endif
 #ifdef TEXTURE
     stq = state.texture_matrix * in_texcoord;
 #endif

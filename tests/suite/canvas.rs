@@ -1,6 +1,6 @@
 //! A caller's Vulkan device made with plain ash for tests of the embedding and C APIs: the
-//! validation layer on (any message it reports fails the frame), lavapipe, dynamic rendering
-//! and the provoking-vertex extension, one color image of `size`² (`R8G8B8A8_UNORM`, no
+//! validation layer on (any message it reports fails the frame), lavapipe, dynamic rendering,
+//! the provoking-vertex extension and shaderClipDistance, one color image of `size`² (`R8G8B8A8_UNORM`, no
 //! depth) read back after each frame, and host-visible buffers holding what a test writes.
 
 use std::ffi::{c_void, CStr};
@@ -110,9 +110,11 @@ impl Canvas {
             let mut provoking =
                 vk::PhysicalDeviceProvokingVertexFeaturesEXT::default().provoking_vertex_last(true);
             let device_extensions = [ext::provoking_vertex::NAME.as_ptr()];
+            let base = vk::PhysicalDeviceFeatures::default().shader_clip_distance(true);
             let info = vk::DeviceCreateInfo::default()
                 .queue_create_infos(&queues)
                 .enabled_extension_names(&device_extensions)
+                .enabled_features(&base)
                 .push_next(&mut v13)
                 .push_next(&mut provoking);
             let device = instance.create_device(physical, &info, None).expect("a device");
@@ -163,7 +165,8 @@ impl Canvas {
     pub(crate) fn ffvk(&self) -> Arc<Device> {
         let enabled = EnabledFeatures::default()
             .with_dynamic_rendering(true)
-            .with_provoking_vertex_last(true);
+            .with_provoking_vertex_last(true)
+            .with_clip_distance(true);
         // SAFETY: the device comes from this physical device with those features, and lives
         // until the canvas drops, after the tests' ffvk objects.
         unsafe { Device::from_caller(&self.instance, self.physical, self.device.clone(), enabled) }

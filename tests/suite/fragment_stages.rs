@@ -608,3 +608,155 @@ fn negative_fog_coordinates_and_per_vertex_fog_follow_the_spec_where_mesa_does_n
         "Mesa's GL_FASTEST (per fragment)",
     );
 }
+
+/// User clip planes (§2.12) cutting a lit quad: GL_CLIP_PLANE0 = (1, 0, 0, 0) given under a
+/// modelview that moves x by 0.5 (stored in eye space as (1, 0, 0, −0.5): x ≥ 0.5 kept), and
+/// GL_CLIP_PLANE2 = (0, 1, 1, 0) under the identity; drawn under another modelview, which
+/// moves neither plane. In the vertex, flat and fragment modes, against Mesa's GL.
+#[test]
+fn user_clip_planes_cut_a_lit_quad_where_mesas_gl_cuts_it() {
+    use ffvk::gl::state::{GlState, MaterialParam};
+    let size = 32;
+    let mut canvas = Canvas::new(size);
+    let device = canvas.ffvk();
+    let quad: Vec<f32> = QUAD
+        .iter()
+        .flat_map(|p| [p[0] * 0.9, p[1] * 0.9, p[2], 0.0, 0.0, 1.0])
+        .collect();
+    let buffer = canvas.buffer(bytemuck::cast_slice(&quad));
+    let input = VertexInput::new(
+        vec![binding(24)],
+        Attribute::new(0, 0, vk::Format::R32G32B32_SFLOAT),
+        Attribute::new(0, 12, vk::Format::R32G32B32_SFLOAT),
+    );
+    let target = Target::new(vk::Format::R8G8B8A8_UNORM, vk::Format::UNDEFINED);
+    let mut lighting = Lighting::new(&device, &LightingOptions::new(target, input)).unwrap();
+    let buffers = [(buffer, 0)];
+    let strip = Geometry::vertices(4).with_topology(Topology::TriangleStrip);
+    let moved = Mat4::from_translation(Vec3::new(0.5, 0.0, 0.0));
+    let drawn_under = Mat4::from_rotation_z(0.3);
+    let diffuse = Vec4::new(0.9, 0.5, 0.2, 1.0);
+
+    let mesa = render_raw_gl(size, size, |g| {
+        // SAFETY: a context is current.
+        unsafe {
+            g.Enable(raw::LIGHTING);
+            g.Enable(raw::LIGHT0);
+            g.Materialfv(raw::FRONT_AND_BACK, raw::DIFFUSE, diffuse.to_array().as_ptr());
+            g.LoadMatrixf(moved.to_cols_array().as_ptr());
+            g.ClipPlane(raw::CLIP_PLANE0, [1.0f64, 0.0, 0.0, 0.0].as_ptr());
+            g.LoadIdentity();
+            g.ClipPlane(raw::CLIP_PLANE2, [0.0f64, 1.0, 1.0, 0.0].as_ptr());
+            g.Enable(raw::CLIP_PLANE0);
+            g.Enable(raw::CLIP_PLANE2);
+            g.LoadMatrixf(drawn_under.to_cols_array().as_ptr());
+            g.Begin(raw::TRIANGLE_STRIP);
+            for v in quad.chunks(6) {
+                g.Normal3f(v[3], v[4], v[5]);
+                g.Vertex3f(v[0], v[1], v[2]);
+            }
+            g.End();
+        }
+    })
+    .expect("Mesa's GL renders");
+    save_for_inspection(&mesa, "fragment_stages_clip_mesa");
+
+    for mode in [LightingMode::Vertex, LightingMode::Flat, LightingMode::Fragment] {
+        let mut gl = GlState::new();
+        gl.lighting_mode(mode);
+        gl.enable(Cap::Lighting).unwrap();
+        gl.enable(Cap::Light(0)).unwrap();
+        gl.material(
+            ffvk::gl::state::Face::FrontAndBack,
+            MaterialParam::Diffuse(diffuse),
+        )
+        .unwrap();
+        gl.load_modelview(moved).unwrap();
+        gl.clip_plane(0, glam::DVec4::new(1.0, 0.0, 0.0, 0.0)).unwrap();
+        gl.load_modelview(Mat4::IDENTITY).unwrap();
+        gl.clip_plane(2, glam::DVec4::new(0.0, 1.0, 1.0, 0.0)).unwrap();
+        gl.enable(Cap::ClipPlane(0)).unwrap();
+        gl.enable(Cap::ClipPlane(2)).unwrap();
+        assert_eq!(
+            gl.lighting.clip.planes[0],
+            Vec4::new(1.0, 0.0, 0.0, -0.5),
+            "p M^-1 at the call"
+        );
+        let draw = LitDraw::new(&gl.lighting, drawn_under, Mat4::IDENTITY, &buffers, strip);
+        lighting.begin_frame(0).unwrap();
+        let mut result = Ok(());
+        let ffvk = canvas
+            .frame(|_, cmd| {
+                // SAFETY: the canvas's pass is open; the buffer lives as long as it.
+                result = unsafe { lighting.draw(cmd, 0, &draw) };
+            })
+            .unwrap();
+        result.unwrap();
+        save_for_inspection(&ffvk, &format!("fragment_stages_clip_{}", mode.name()));
+        // Kept: right of x = 0.5 and above y = 0 (eye space, here window space: the projection is
+        // the identity), e.g. (0.6, 0.3); cut: (−0.5, 0.3) and (0.6, −0.53), inside the quad.
+        let (kept, cut) = (ffvk.get_pixel(25, 11).0, ffvk.get_pixel(8, 11).0);
+        assert_ne!(kept, [0; 4], "{}: inside both planes", mode.name());
+        assert_eq!(cut, [0; 4], "{}: left of x = 0.5", mode.name());
+        assert_eq!(
+            ffvk.get_pixel(25, 24).0,
+            [0; 4],
+            "{}: below y = 0",
+            mode.name()
+        );
+        let d = max_difference(&ffvk, &mesa);
+        assert!(
+            d <= 1,
+            "{}: ffvk and Mesa's GL differ by {d}/255 (tests/output/fragment_stages_clip_*)",
+            mode.name()
+        );
+    }
+    drop(lighting);
+    drop(device);
+}
+
+/// A draw with a user clip plane on a device without shaderClipDistance is refused, naming the
+/// feature and `EnabledFeatures::clip_distance`, before anything is recorded.
+#[test]
+fn a_clip_plane_on_a_device_without_clip_distances_is_refused_by_name() {
+    use crate::embedding::PlainDevice;
+    use ffvk::vk::{Device, EnabledFeatures};
+    let plain = PlainDevice::new();
+    // SAFETY: the device comes from this physical device with dynamic rendering, and outlives
+    // every ffvk object here.
+    let device = unsafe {
+        Device::from_caller(
+            &plain.instance,
+            plain.physical,
+            plain.device.clone(),
+            EnabledFeatures::default().with_dynamic_rendering(true),
+        )
+    }
+    .unwrap();
+    let position = Attribute::new(0, 0, vk::Format::R32G32B32_SFLOAT);
+    let input = VertexInput::new(vec![binding(12)], position, position).with_normal(None);
+    let target = Target::new(vk::Format::R8G8B8A8_UNORM, vk::Format::UNDEFINED);
+    let mut lighting = Lighting::new(&device, &LightingOptions::new(target, input)).unwrap();
+    let mut gl = GlState::new();
+    gl.clip_plane(0, glam::DVec4::new(1.0, 0.0, 0.0, 0.0)).unwrap();
+    gl.enable(Cap::ClipPlane(0)).unwrap();
+    let buffers = [(vk::Buffer::null(), 0)];
+    let draw = LitDraw::new(
+        &gl.lighting,
+        Mat4::IDENTITY,
+        Mat4::IDENTITY,
+        &buffers,
+        Geometry::vertices(3),
+    );
+    lighting.begin_frame(0).unwrap();
+    // SAFETY: the draw is refused while staging, before the command buffer is touched.
+    let e = unsafe { lighting.draw(vk::CommandBuffer::null(), 0, &draw) }
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("shaderClipDistance") && e.contains("clip_distance"),
+        "{e}"
+    );
+    drop(lighting);
+    drop(device);
+}

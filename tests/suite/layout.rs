@@ -121,8 +121,8 @@ fn stages() -> Vec<(String, &'static [u8])> {
     }
     assert_eq!(
         stages.len(),
-        36,
-        "eighteen variants (nine, untextured and textured) of two stages"
+        60,
+        "thirty variants (nine, six of them also with clip planes, each untextured and textured) of two stages"
     );
     stages
 }
@@ -147,7 +147,7 @@ fn the_state_block_matches_the_glsl_in_every_stage() {
             v_bs, t_bs, separate_specular, color_material, color_material_front, color_material_back,
             color_material_mode, normalize, specular_model, tex_env_mode, color_sum, alpha_func, alpha_ref,
             pad_, fog_color, fog_start, fog_end, fog_density, fog_scale, fog_mode, fog_source, fog_per_vertex,
-            pad_fog, lights);
+            clip_mask, clip_planes, lights);
         assert_eq!(r.members(block), want, "{stage}: State block offsets");
 
         let light = r.struct_id("Light");
@@ -200,8 +200,8 @@ fn the_record_block_of_the_fragment_stages_matches_the_draw_record() {
         seen += 1;
     }
     assert_eq!(
-        seen, 2,
-        "the fragment mode's fragment stages for large draws, textured or not"
+        seen, 4,
+        "the fragment mode's fragment stages for large draws, textured or not, clipped or not"
     );
     // The deferred lighting pass reads the frame's records as vec4s, at these indices of a
     // record's (deferred.frag): the normal matrix's columns (w: the shininesses) at 4 and 5,

@@ -17,10 +17,12 @@ use ffvk::glam::{Mat4, Vec4};
 use crate::enums::*;
 use crate::result::{fail, misaligned, panic_text, FfvkResult};
 
+mod clip;
 mod entry;
 mod fog;
 mod params;
 
+pub use clip::*;
 pub use entry::*;
 pub use fog::*;
 pub(crate) use params::{face, light_index, LIGHT_PNAMES};

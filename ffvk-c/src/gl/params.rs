@@ -257,12 +257,13 @@ pub(crate) fn cap(function: &str, cap: u32) -> GlResult<Cap> {
         GL_COLOR_SUM => Ok(Cap::ColorSum),
         GL_ALPHA_TEST => Ok(Cap::AlphaTest),
         GL_FOG => Ok(Cap::Fog),
+        p if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 6).contains(&p) => Ok(Cap::ClipPlane((p - GL_CLIP_PLANE0) as usize)),
         other => light_index(function, other).map(Cap::Light).map_err(|_| {
             invalid_enum(
                 function,
                 "cap",
                 other,
-                "GL_LIGHTING, GL_LIGHT0 .. GL_LIGHT0 + 15, GL_COLOR_MATERIAL, GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_COLOR_SUM, GL_FOG or GL_ALPHA_TEST",
+                "GL_LIGHTING, GL_LIGHT0 .. GL_LIGHT0 + 15, GL_COLOR_MATERIAL, GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_COLOR_SUM, GL_FOG, GL_ALPHA_TEST or GL_CLIP_PLANE0 .. GL_CLIP_PLANE0 + 5",
             )
         }),
     }

@@ -75,7 +75,7 @@
 //! those writes, about 0.1 µs on the host on lavapipe in a run whose draws borrow one
 //! [`FixedFunctionState`] and carry their own [`DrawValues`] (0.3-0.5 µs when each draw brings a
 //! state of its own, which is compared with the one before). The rest ([`StateBlock`]: lights,
-//! light model, switches, texture environment and matrix, projection; 2,832 bytes) is checked,
+//! light model, switches, texture environment and matrix, projection; 2,928 bytes) is checked,
 //! packed and written only when it differs from the previous draw's in the same frame slot,
 //! and then bound at a new dynamic offset; the pipeline, too, is looked up only then (about
 //! 0.7 µs more). [`Lighting::draw_run`] is the recording scope: its draws bind only what
@@ -195,6 +195,8 @@ struct Variant {
     assembly: (Topology, bool),
     /// The deferred path's G-buffer pass ([`Lighting::set_gbuffer`]).
     gbuffer: bool,
+    /// Some user clip plane is enabled: the `_clipped` build.
+    clipped: bool,
 }
 
 /// The next [`Lighting`]'s number (its layouts name it, so another's are refused).
@@ -362,6 +364,7 @@ impl Lighting {
             affine: !self.input(0)?.positions_have_w(),
             assembly: (Topology::TriangleList, false),
             gbuffer: false,
+            clipped: state.clip.mask() != 0,
         };
         self.pipeline_for(state, raster, variant).map(|_| ())
     }
@@ -486,6 +489,7 @@ impl Lighting {
             affine: draw.modelview.row(3) == glam::Vec4::W && !positions_have_w,
             assembly: draw.geometry.assembly(),
             gbuffer: self.gbuffer && mode == LightingMode::Fragment,
+            clipped: draw.state.clip.mask() != 0,
         };
         let found = self.last.as_ref().and_then(|last| {
             last.pipelines
@@ -756,7 +760,7 @@ impl Lighting {
             (mode, key, raster),
             textured,
             assembly,
-            variant.gbuffer,
+            (variant.gbuffer, variant.clipped),
         )
     }
 

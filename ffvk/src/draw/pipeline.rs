@@ -47,9 +47,20 @@ pub const SMALL_DRAW_VERTICES: u32 = 256;
 /// draw samples a texture. (Layouts without a color, normal or texture coordinate array share
 /// the variants: the pipeline's vertex input reads GL's current value from the draw record.)
 pub fn variant_name(mode: LightingMode, key: SpecKey, textured: bool, small: bool) -> String {
+    variant_name_clipped(mode, key, (textured, small), false)
+}
+
+/// [`variant_name`], with `_clipped` for a draw with user clip planes (the build that writes
+/// `gl_ClipDistance`), before `_textured`.
+pub fn variant_name_clipped(
+    mode: LightingMode,
+    key: SpecKey,
+    (textured, small): (bool, bool),
+    clipped: bool,
+) -> String {
     let one = one_color(key) && mode != LightingMode::Fragment;
     format!(
-        "{}{}{}{}",
+        "{}{}{}{}{}",
         mode.name(),
         if small && mode == LightingMode::Fragment {
             "_small"
@@ -57,6 +68,7 @@ pub fn variant_name(mode: LightingMode, key: SpecKey, textured: bool, small: boo
             ""
         },
         if one { "_one_color" } else { "" },
+        if clipped { "_clipped" } else { "" },
         if textured { "_textured" } else { "" },
     )
 }
@@ -245,6 +257,8 @@ struct PipelineKey {
     /// The deferred path's G-buffer pass (fragment mode only): four color attachments
     /// ([`GBUFFER_FORMATS`]) instead of the target's one.
     gbuffer: bool,
+    /// The draw has user clip planes: the `_clipped` build.
+    clipped: bool,
 }
 
 /// The G-buffer's attachments, in `fragment.frag`'s output order under `GBUFFER`: the
@@ -398,7 +412,7 @@ impl Pipelines {
             (mode, key, raster),
             (textured, small),
             (topology, restart),
-            false,
+            (false, false),
         )
     }
 
@@ -415,7 +429,7 @@ impl Pipelines {
         (mode, key, raster): (LightingMode, SpecKey, RasterState),
         (textured, small): (bool, bool),
         (topology, restart): (Topology, bool),
-        gbuffer: bool,
+        (gbuffer, clipped): (bool, bool),
     ) -> Result<vk::Pipeline> {
         let gbuffer = gbuffer && mode == LightingMode::Fragment;
         let k = PipelineKey {
@@ -428,6 +442,7 @@ impl Pipelines {
             topology,
             restart,
             gbuffer,
+            clipped: clipped && !gbuffer,
         };
         if let Some(pipeline) = self.pipelines.get(&k) {
             return Ok(pipeline.raw());
@@ -459,6 +474,7 @@ impl Pipelines {
             topology,
             restart,
             gbuffer: false,
+            clipped: key != SpecKey::UBER && key.get(SpecConstant::ClipPlanes) != 0,
         })
     }
 
@@ -490,6 +506,13 @@ impl Pipelines {
         }
         if k.raster.depth_test && config.target.depth_format == vk::Format::UNDEFINED {
             return Err(LightingError::NoDepthAttachment.into());
+        }
+        if k.clipped && !device.info.clip_distance {
+            return Err(Error::NotEnabled {
+                feature: "shaderClipDistance",
+                flag: "clip_distance",
+                needed_for: "GL's user clip planes (glClipPlane) need",
+            });
         }
         if k.mode == LightingMode::Fragment && input.has_material_arrays() {
             let arrays = input.front_materials.iter().map(|a| ("front", a));
@@ -556,7 +579,7 @@ impl Pipelines {
         let name = if k.gbuffer {
             "fragment_gbuffer".to_owned()
         } else {
-            variant_name(k.mode, k.spec, k.textured, k.small)
+            variant_name_clipped(k.mode, k.spec, (k.textured, k.small), k.clipped)
         };
         let name = name.as_str();
         let variant = shaders::variant(name)

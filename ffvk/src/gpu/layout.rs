@@ -8,8 +8,8 @@
 use glam::{Mat3, Mat4};
 
 use crate::gl::state::{
-    Attenuation, ColorControl, ColorMaterialMode, DrawValues, FixedFunctionState, FogSource, Light, Material,
-    SpecularModel, SpotEdge, StateError, MAX_LIGHTS,
+    Attenuation, ClipPlanes, ColorControl, ColorMaterialMode, DrawValues, FixedFunctionState, FogSource,
+    Light, Material, SpecularModel, SpotEdge, StateError, MAX_CLIP_PLANES, MAX_LIGHTS,
 };
 
 /// GL clip space (z in [-w, w], y up) to Vulkan clip space (z in [0, w], y down), applied
@@ -222,8 +222,10 @@ pub struct StateBlock {
     pub fog_source: u32,
     /// 1 for `GL_FOG_HINT` `GL_FASTEST` (f per vertex).
     pub fog_per_vertex: u32,
-    /// Unused: starts `lights` on a 16-byte boundary.
-    pub pad_fog: u32,
+    /// The enabled user clip planes, a bit each ([`ClipPlanes::mask`]).
+    pub clip_mask: u32,
+    /// The user clip planes in eye space (`glClipPlane`, §2.12).
+    pub clip_planes: [[f32; 4]; MAX_CLIP_PLANES],
     /// The enabled lights packed in index order, so entry i is not necessarily `GL_LIGHTi`;
     /// entries from `light_count` on are zeroed.
     pub lights: [GpuLight; MAX_LIGHTS],
@@ -370,10 +372,13 @@ pub enum SpecConstant {
     FogSource = 23,
     /// `SPEC_FOG_PER_VERTEX`: 1 for `GL_FOG_HINT` `GL_FASTEST` (0 with fog off).
     FogPerVertex = 24,
+    /// `SPEC_CLIP_PLANES`: the enabled user clip planes, a bit each ([`ClipPlanes::mask`]);
+    /// read by the `_clipped` variants, which write `gl_ClipDistance`.
+    ClipPlanes = 25,
 }
 
 /// How many specialization constants there are.
-pub const SPEC_CONSTANT_COUNT: usize = 25;
+pub const SPEC_CONSTANT_COUNT: usize = 26;
 
 impl SpecConstant {
     /// Every constant, in `constant_id` order.
@@ -403,6 +408,7 @@ impl SpecConstant {
         SpecConstant::FogMode,
         SpecConstant::FogSource,
         SpecConstant::FogPerVertex,
+        SpecConstant::ClipPlanes,
     ];
 
     /// The `constant_id` in the GLSL.
@@ -438,6 +444,7 @@ impl SpecConstant {
             SpecConstant::FogMode => "SPEC_FOG_MODE",
             SpecConstant::FogSource => "SPEC_FOG_SOURCE",
             SpecConstant::FogPerVertex => "SPEC_FOG_PER_VERTEX",
+            SpecConstant::ClipPlanes => "SPEC_CLIP_PLANES",
         }
     }
 }
@@ -473,6 +480,7 @@ impl SpecKey {
             values[SpecConstant::TexEnv as usize] = state.texture.env_mode.code() as i32;
         }
         values[SpecConstant::AlphaFunc as usize] = state.fragment.alpha_test.effective_func().code() as i32;
+        values[SpecConstant::ClipPlanes as usize] = state.clip.mask() as i32;
         let fog = &state.fragment.fog;
         if fog.enabled {
             values[SpecConstant::FogMode as usize] = fog.mode_code() as i32;
@@ -584,6 +592,7 @@ pub(crate) struct StateKey {
     color_material: crate::gl::state::ColorMaterial,
     texture: crate::gl::texture::TextureUnit,
     fragment: crate::gl::state::FragmentStages,
+    clip: ClipPlanes,
     projection: Mat4,
     lights: [Light; MAX_LIGHTS],
 }
@@ -598,6 +607,7 @@ impl StateKey {
             color_material: state.color_material,
             texture: state.texture,
             fragment: state.fragment,
+            clip: state.clip,
             projection,
             lights: state.lights,
         }
@@ -613,6 +623,7 @@ impl StateKey {
             && self.color_material == state.color_material
             && self.texture == state.texture
             && self.fragment == state.fragment
+            && self.clip == state.clip
             && self.projection == projection
             && same_lights(&self.lights, &state.lights)
     }
@@ -627,6 +638,7 @@ impl PartialEq for StateKey {
             color_material,
             texture,
             fragment,
+            clip,
             projection,
             lights,
         } = self;
@@ -637,6 +649,7 @@ impl PartialEq for StateKey {
             && *color_material == other.color_material
             && *texture == other.texture
             && *fragment == other.fragment
+            && *clip == other.clip
             && *projection == other.projection
             && same_lights(lights, &other.lights)
     }
@@ -651,6 +664,7 @@ pub(crate) fn same_block_state(a: &FixedFunctionState, b: &FixedFunctionState) -
         && a.color_material == b.color_material
         && a.texture == b.texture
         && a.fragment == b.fragment
+        && a.clip == b.clip
         && same_lights(&a.lights, &b.lights)
 }
 
@@ -708,7 +722,8 @@ impl StateBlock {
             fog_mode: fog.mode_code(),
             fog_source: (fog.source == FogSource::FogCoord) as u32,
             fog_per_vertex: fog.hint.per_vertex() as u32,
-            pad_fog: 0,
+            clip_mask: state.clip.mask(),
+            clip_planes: state.clip.planes.map(|p| p.to_array()),
             lights,
         }
     }

@@ -99,6 +99,7 @@ pub(super) fn eligible(frame: &Frame, specialize: Specialize, cpu: bool) -> Opti
             && !d.textured()
             // Fog, the alpha test and an unlit color sum are forward-only stages.
             && !d.state.fragment.fog.enabled
+            && d.state.clip.mask() == 0
             && d.state.fragment.alpha_test.effective_func() == crate::gl::state::CompareFunc::Always
             && (!d.state.fragment.color_sum || d.state.lighting)
             && affine(&d.modelview) == affine(&first.modelview)

@@ -55,6 +55,8 @@ pub struct DeviceInfo {
     pub wide_lines: bool,
     /// `largePoints`: points larger than one pixel (`RasterState::point_size`).
     pub large_points: bool,
+    /// `shaderClipDistance`: GL's user clip planes (`glClipPlane`) through `gl_ClipDistance`.
+    pub clip_distance: bool,
     /// `lineWidthRange` and `pointSizeRange`, in pixels.
     pub line_width_range: [f32; 2],
     /// `pointSizeRange`, in pixels.
@@ -138,6 +140,8 @@ pub struct EnabledFeatures {
     pub wide_lines: bool,
     /// `largePoints`: needed for a point size other than 1.
     pub large_points: bool,
+    /// `shaderClipDistance`: needed for GL's user clip planes.
+    pub clip_distance: bool,
 }
 
 with_fields!(EnabledFeatures {
@@ -149,6 +153,8 @@ with_fields!(EnabledFeatures {
     with_wide_lines => wide_lines: bool,
     /// Sets [`large_points`](EnabledFeatures::large_points).
     with_large_points => large_points: bool,
+    /// Sets [`clip_distance`](EnabledFeatures::clip_distance).
+    with_clip_distance => clip_distance: bool,
 });
 
 fn device_name(props: &vk::PhysicalDeviceProperties) -> String {
@@ -252,6 +258,7 @@ impl Device {
         );
         // GL's glLineWidth and glPointSize, where the device has them.
         (info.wide_lines, info.large_points) = (supported.wide_lines, supported.large_points);
+        info.clip_distance = supported.clip_distance;
 
         let priorities = [1.0f32];
         let queues = [vk::DeviceQueueCreateInfo::default()
@@ -266,7 +273,8 @@ impl Device {
         let base = vk::PhysicalDeviceFeatures::default()
             .pipeline_statistics_query(pipeline_statistics_query)
             .wide_lines(supported.wide_lines)
-            .large_points(supported.large_points);
+            .large_points(supported.large_points)
+            .shader_clip_distance(supported.clip_distance);
         let create = vk::DeviceCreateInfo::default()
             .queue_create_infos(&queues)
             .enabled_extension_names(&extension_names)
@@ -388,6 +396,11 @@ impl Device {
                 supported.large_points,
                 "largePoints (EnabledFeatures::large_points says it is enabled)",
             ),
+            (
+                enabled.clip_distance,
+                supported.clip_distance,
+                "shaderClipDistance (EnabledFeatures::clip_distance says it is enabled)",
+            ),
         ] {
             if claimed && !has {
                 return Err(Error::MissingFeature(name.into()));
@@ -395,6 +408,7 @@ impl Device {
         }
         let mut info = describe(&props, &supported, 0, false, enabled.provoking_vertex_last, false);
         (info.wide_lines, info.large_points) = (enabled.wide_lines, enabled.large_points);
+        info.clip_distance = enabled.clip_distance;
         let allocator = match shared {
             #[cfg(feature = "shared-allocator")]
             Some(shared) => Ok(DeviceAllocator::Shared(shared)),
@@ -555,6 +569,7 @@ struct Supported {
     pipeline_statistics_query: bool,
     wide_lines: bool,
     large_points: bool,
+    clip_distance: bool,
     driver_name: String,
     driver_info: String,
     /// Vulkan 1.1's maxMemoryAllocationSize.
@@ -585,6 +600,7 @@ impl Supported {
         let pipeline_statistics_query = features.features.pipeline_statistics_query == vk::TRUE;
         let wide_lines = features.features.wide_lines == vk::TRUE;
         let large_points = features.features.large_points == vk::TRUE;
+        let clip_distance = features.features.shader_clip_distance == vk::TRUE;
         let cstr = |bytes: &[std::ffi::c_char]| {
             // SAFETY: the driver properties hold NUL-terminated strings within their arrays.
             unsafe { CStr::from_ptr(bytes.as_ptr()) }
@@ -598,6 +614,7 @@ impl Supported {
             pipeline_statistics_query,
             wide_lines,
             large_points,
+            clip_distance,
             driver_name: cstr(&driver.driver_name),
             driver_info: cstr(&driver.driver_info),
             max_memory_allocation_size: v11.max_memory_allocation_size,
@@ -633,6 +650,7 @@ fn describe(
         provoking_vertex_last,
         wide_lines: false,
         large_points: false,
+        clip_distance: false,
         line_width_range: props.limits.line_width_range,
         point_size_range: props.limits.point_size_range,
         validation,

@@ -6,9 +6,9 @@
 use glam::{Mat3, Mat4, Vec3, Vec4};
 
 use super::{
-    check_light_scalar, finite_vec, in_range, Cap, ColorMaterialMode, CompareFunc, Face, FixedFunctionState,
-    FogHint, FogParam, Light, LightModelParam, LightParam, LightingMode, Material, MaterialParam, ShadeModel,
-    StateError, TexEnvParam, MAX_LIGHTS,
+    check_light_scalar, finite_vec, in_range, Cap, ClipPlanes, ColorMaterialMode, CompareFunc, Face,
+    FixedFunctionState, FogHint, FogParam, Light, LightModelParam, LightParam, LightingMode, Material,
+    MaterialParam, ShadeModel, StateError, TexEnvParam, MAX_LIGHTS,
 };
 
 /// The fixed-function state machine: the lighting state plus the current modelview matrix,
@@ -207,6 +207,7 @@ impl GlState {
             Cap::ColorSum => self.lighting.fragment.color_sum = on,
             Cap::AlphaTest => self.lighting.fragment.alpha_test.enabled = on,
             Cap::Fog => self.lighting.fragment.fog.enabled = on,
+            Cap::ClipPlane(i) => *self.clip_plane_mut(i)? = on,
         }
         Ok(())
     }
@@ -224,6 +225,35 @@ impl GlState {
         let test = &mut self.lighting.fragment.alpha_test;
         test.func = func;
         test.reference = reference.clamp(0.0, 1.0);
+        Ok(())
+    }
+
+    /// The enable of `GL_CLIP_PLANEi`, refusing i past [`MAX_CLIP_PLANES`].
+    fn clip_plane_mut(&mut self, i: usize) -> Result<&mut bool, StateError> {
+        self.lighting
+            .clip
+            .enabled
+            .get_mut(i)
+            .ok_or(StateError::OutOfRange {
+                parameter: "GL_CLIP_PLANEi",
+                value: i as f32,
+                valid: "a plane index in 0..6 (GL_MAX_CLIP_PLANES)",
+            })
+    }
+
+    /// glClipPlane(GL_CLIP_PLANEi, p): the plane stored in eye space, p · M⁻¹ with the
+    /// modelview current now (§2.12); later modelview changes do not move it. Errors: i past
+    /// [`MAX_CLIP_PLANES`], a component that is not finite, a singular modelview (GL leaves the
+    /// plane undefined then).
+    pub fn clip_plane(&mut self, i: usize, p: glam::DVec4) -> Result<(), StateError> {
+        self.clip_plane_mut(i)?;
+        let components = p.to_array().map(|c| c as f32);
+        finite_vec("GL_CLIP_PLANEi", &components)?;
+        let eye = ClipPlanes::to_eye(p, self.modelview).ok_or(StateError::SingularModelview {
+            determinant: self.modelview.determinant(),
+        })?;
+        finite_vec("GL_CLIP_PLANEi", eye.to_array().as_slice())?;
+        self.lighting.clip.planes[i] = eye;
         Ok(())
     }
 

@@ -43,11 +43,13 @@ use glam::{Vec3, Vec4};
 use super::texture::{TexEnvMode, TextureUnit};
 
 mod checks;
+mod clip;
 mod machine;
 mod stages;
 mod values;
 pub use checks::validate_light;
 use checks::validate_lights;
+pub use clip::{ClipPlanes, MAX_CLIP_PLANES};
 pub use machine::GlState;
 pub use stages::{AlphaTest, CompareFunc, Fog, FogHint, FogMode, FogParam, FogSource, FragmentStages};
 pub use values::DrawValues;
@@ -463,6 +465,9 @@ pub enum Cap {
     AlphaTest,
     /// `GL_FOG`: fragments are fogged as [`Fog`] says.
     Fog,
+    /// `GL_CLIP_PLANEi`, i in 0..[`MAX_CLIP_PLANES`]; a larger i is a
+    /// [`StateError::OutOfRange`].
+    ClipPlane(usize),
 }
 
 /// Parameters of glTexEnv (target `GL_TEXTURE_ENV`).
@@ -546,7 +551,8 @@ pub enum LightModelParam {
 /// GL's state groups in one struct, read as a whole by one key per pipeline
 /// ([`SpecKey`](crate::gpu::layout::SpecKey)). The groups: lighting (`lighting` to
 /// `rescale_normal`, and `mode`), texturing (`texture`), the current values (`current_*`), and
-/// the fragment stages after texturing (`color_sum`, `alpha_test`). Earlier versions called it
+/// the fragment stages after texturing (`fragment`: color sum, fog, alpha test) and the user
+/// clip planes (`clip`). Earlier versions called it
 /// `LightingState`, which stays as a deprecated alias for a release.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[non_exhaustive]
@@ -592,6 +598,8 @@ pub struct FixedFunctionState {
     pub current_fog_coord: f32,
     /// The fragment stages after texturing: the color sum, fog and the alpha test.
     pub fragment: FragmentStages,
+    /// The user clip planes (a vertex stage, §2.12).
+    pub clip: ClipPlanes,
 }
 
 /// The old name of [`FixedFunctionState`], from when it held lighting alone.
@@ -620,6 +628,7 @@ impl Default for FixedFunctionState {
             current_secondary_color: Vec4::W,
             current_fog_coord: 0.0,
             fragment: FragmentStages::default(),
+            clip: ClipPlanes::default(),
         }
     }
 }
@@ -637,6 +646,9 @@ impl FixedFunctionState {
     fn validate_shared(&self) -> Result<(), StateError> {
         finite_vec("GL_LIGHT_MODEL_AMBIENT", self.model.ambient.to_array().as_slice())?;
         self.texture.validate()?;
+        for plane in &self.clip.planes {
+            finite_vec("GL_CLIP_PLANEi", plane.to_array().as_slice())?;
+        }
         let fog = &self.fragment.fog;
         finite_vec("GL_FOG_START", &[fog.start, fog.end])?;
         finite_vec("GL_FOG_COLOR", fog.color.to_array().as_slice())?;
