@@ -102,6 +102,9 @@
 #ifndef GL_MAX_CLIP_PLANES
 #define GL_MAX_CLIP_PLANES 0x0D32
 #endif
+#ifndef GL_FOG_INDEX
+#define GL_FOG_INDEX 0x0B61
+#endif
 #ifndef GL_FOG_DENSITY
 #define GL_FOG_DENSITY 0x0B62
 #endif

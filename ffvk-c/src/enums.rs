@@ -39,6 +39,7 @@ gl_enums! {
     GL_FOG = 0x0B60,
     GL_CLIP_PLANE0 = 0x3000,
     GL_MAX_CLIP_PLANES = 0x0D32,
+    GL_FOG_INDEX = 0x0B61,
     GL_FOG_DENSITY = 0x0B62,
     GL_FOG_START = 0x0B63,
     GL_FOG_END = 0x0B64,

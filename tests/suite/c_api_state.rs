@@ -94,6 +94,16 @@ enum Call {
     LoadModelview([f32; 16]),
     /// glMatrixMode(GL_PROJECTION) + glLoadMatrixf.
     LoadProjection([f32; 16]),
+    Fogf(u32, f32),
+    Fogi(u32, i32),
+    Fogfv(u32, Vec<f32>),
+    FogCoordf(f32),
+    Hint(u32, u32),
+    AlphaFunc(u32, f32),
+    SecondaryColor3f([f32; 3]),
+    Normal3f([f32; 3]),
+    TexCoord4f([f32; 4]),
+    ClipPlane(u32, [f64; 4]),
 }
 
 /// One query, with how many values it answers.
@@ -107,6 +117,7 @@ enum Query {
     GetIntegerv(u32, usize),
     GetBooleanv(u32, usize),
     GetTexEnvfv(u32, u32, usize),
+    GetClipPlane(u32),
     GetTexEnviv(u32, u32, usize),
     IsEnabled(u32),
 }
@@ -251,6 +262,16 @@ impl Gl for Ffvk {
                 Call::TexEnvf(t, p, v) => ffvkTexEnvf(c, *t, *p, *v),
                 Call::LoadModelview(m) => ffvkLoadModelview(c, m.as_ptr()),
                 Call::LoadProjection(m) => ffvkLoadProjection(c, m.as_ptr()),
+                Call::Fogf(p, v) => ffvkFogf(c, *p, *v),
+                Call::Fogi(p, v) => ffvkFogi(c, *p, *v),
+                Call::Fogfv(p, v) => ffvkFogfv(c, *p, padded(v).as_ptr()),
+                Call::FogCoordf(v) => ffvkFogCoordf(c, *v),
+                Call::Hint(t, m) => ffvkHint(c, *t, *m),
+                Call::AlphaFunc(f, r) => ffvkAlphaFunc(c, *f, *r),
+                Call::SecondaryColor3f([r, g, b]) => ffvkSecondaryColor3f(c, *r, *g, *b),
+                Call::Normal3f([x, y, z]) => ffvkNormal3f(c, *x, *y, *z),
+                Call::TexCoord4f([s, t, r, q]) => ffvkTexCoord4f(c, *s, *t, *r, *q),
+                Call::ClipPlane(p, e) => ffvkClipPlane(c, *p, e.as_ptr()),
             }
         }
     }
@@ -278,6 +299,11 @@ impl Gl for Ffvk {
                 }
                 Query::GetTexEnvfv(t, p, n) => (ffvkGetTexEnvfv(c, t, p, f.as_mut_ptr()), fs(&f, n)).1,
                 Query::GetTexEnviv(t, p, n) => (ffvkGetTexEnviv(c, t, p, i.as_mut_ptr()), is(&i, n)).1,
+                Query::GetClipPlane(p) => {
+                    let mut d = [UNWRITTEN; 4];
+                    ffvkGetClipPlane(c, p, d.as_mut_ptr());
+                    d.to_vec()
+                }
                 Query::IsEnabled(cap) => vec![ffvkIsEnabled(c, cap) as f64],
             }
         }
@@ -357,6 +383,16 @@ impl Gl for Mesa<'_> {
                     gl.LoadMatrixf(m.as_ptr());
                     gl.MatrixMode(raw::MODELVIEW);
                 }
+                Call::Fogf(p, v) => gl.Fogf(*p, *v),
+                Call::Fogi(p, v) => gl.Fogi(*p, *v),
+                Call::Fogfv(p, v) => gl.Fogfv(*p, padded(v).as_ptr()),
+                Call::FogCoordf(v) => gl.FogCoordf(*v),
+                Call::Hint(t, m) => gl.Hint(*t, *m),
+                Call::AlphaFunc(f, r) => gl.AlphaFunc(*f, *r),
+                Call::SecondaryColor3f([r, g, b]) => gl.SecondaryColor3f(*r, *g, *b),
+                Call::Normal3f([x, y, z]) => gl.Normal3f(*x, *y, *z),
+                Call::TexCoord4f([s, t, r, q]) => gl.TexCoord4f(*s, *t, *r, *q),
+                Call::ClipPlane(p, e) => gl.ClipPlane(*p, e.as_ptr()),
             }
         }
     }
@@ -382,6 +418,11 @@ impl Gl for Mesa<'_> {
                 }
                 Query::GetTexEnvfv(t, p, n) => (gl.GetTexEnvfv(t, p, f.as_mut_ptr()), fs(&f, n)).1,
                 Query::GetTexEnviv(t, p, n) => (gl.GetTexEnviv(t, p, i.as_mut_ptr()), is(&i, n)).1,
+                Query::GetClipPlane(p) => {
+                    let mut d = [UNWRITTEN; 4];
+                    gl.GetClipPlane(p, d.as_mut_ptr());
+                    d.to_vec()
+                }
                 Query::IsEnabled(cap) => vec![gl.IsEnabled(cap) as f64],
             }
         }
@@ -402,6 +443,9 @@ impl Gl for Mesa<'_> {
                 gl.MatrixMode(mode);
                 gl.LoadIdentity();
             }
+            // Mesa 22.3's glPopAttrib(GL_FOG_BIT) leaves GL_FOG_COORD_SRC as it was: set GL's
+            // initial value back by hand.
+            gl.Fogi(raw::FOG_COORD_SRC, raw::FRAGMENT_DEPTH as i32);
             while gl.GetError() != raw::NO_ERROR {}
         }
     }
@@ -908,6 +952,209 @@ fn sequences() -> Vec<(String, Vec<Step>)> {
             q(GetLightfv(LIGHT0, SHININESS, 4)),
             q(GetMaterialfv(FRONT, POSITION, 4)),
             q(GetTexEnvfv(TEXTURE_ENV, BOGUS, 4)),
+        ],
+    ));
+    // The stages after texturing and the current values they read (issue 49), and the clip
+    // planes: each call valid and invalid, each answered through every query form.
+    const FOG: u32 = 0x0B60;
+    const FOG_DENSITY: u32 = 0x0B62;
+    const FOG_START: u32 = 0x0B63;
+    const FOG_END: u32 = 0x0B64;
+    const FOG_MODE: u32 = 0x0B65;
+    const FOG_COLOR: u32 = 0x0B66;
+    const FOG_COORD_SRC: u32 = 0x8450;
+    const FOG_COORD: u32 = 0x8451;
+    const CURRENT_FOG_COORD: u32 = 0x8453;
+    const FOG_HINT: u32 = 0x0C54;
+    const FASTEST: u32 = 0x1101;
+    const NICEST: u32 = 0x1102;
+    const EXP2: u32 = 0x0801;
+    const LINEAR: u32 = 0x2601;
+    const ALPHA_TEST: u32 = 0x0BC0;
+    const ALPHA_TEST_FUNC: u32 = 0x0BC1;
+    const ALPHA_TEST_REF: u32 = 0x0BC2;
+    const LESS: u32 = 0x0201;
+    const GEQUAL: u32 = 0x0206;
+    const COLOR_SUM: u32 = 0x8458;
+    const CURRENT_SECONDARY_COLOR: u32 = 0x8459;
+    const CURRENT_NORMAL: u32 = 0x0B02;
+    const CURRENT_TEXTURE_COORDS: u32 = 0x0B03;
+    const CLIP_PLANE0: u32 = 0x3000;
+    let answers = |pname: u32, n: usize| {
+        vec![
+            q(GetFloatv(pname, n)),
+            q(GetIntegerv(pname, n)),
+            q(GetBooleanv(pname, n)),
+        ]
+    };
+    type StageCall = (&'static str, Vec<Step>, Vec<(u32, usize)>);
+    let stage_calls: Vec<StageCall> = vec![
+        (
+            "glFogi(GL_FOG_MODE, GL_LINEAR)",
+            vec![c(Fogi(FOG_MODE, LINEAR as i32))],
+            vec![(FOG_MODE, 1)],
+        ),
+        (
+            "glFogf(GL_FOG_MODE, GL_EXP2)",
+            vec![c(Fogf(FOG_MODE, EXP2 as f32))],
+            vec![(FOG_MODE, 1)],
+        ),
+        (
+            "glFogi(GL_FOG_MODE, bad)",
+            vec![c(Fogi(FOG_MODE, 0x1234))],
+            vec![(FOG_MODE, 1)],
+        ),
+        (
+            "glFogf(GL_FOG_DENSITY, 0.25)",
+            vec![c(Fogf(FOG_DENSITY, 0.25))],
+            vec![(FOG_DENSITY, 1)],
+        ),
+        (
+            "glFogf(GL_FOG_DENSITY, -1)",
+            vec![c(Fogf(FOG_DENSITY, -1.0))],
+            vec![(FOG_DENSITY, 1)],
+        ),
+        (
+            "glFogf(GL_FOG_START, -3), glFogf(GL_FOG_END, 7)",
+            vec![c(Fogf(FOG_START, -3.0)), c(Fogf(FOG_END, 7.0))],
+            vec![(FOG_START, 1), (FOG_END, 1)],
+        ),
+        (
+            "glFogfv(GL_FOG_COLOR, beyond [0, 1])",
+            vec![c(Fogfv(FOG_COLOR, vec![0.25, 1.5, -0.5, 0.75]))],
+            vec![(FOG_COLOR, 4)],
+        ),
+        (
+            "glFogi(GL_FOG_COORD_SRC, GL_FOG_COORD)",
+            vec![c(Fogi(FOG_COORD_SRC, FOG_COORD as i32))],
+            vec![(FOG_COORD_SRC, 1)],
+        ),
+        (
+            "glFogi(GL_FOG_COORD_SRC, bad)",
+            vec![c(Fogi(FOG_COORD_SRC, LINEAR as i32))],
+            vec![(FOG_COORD_SRC, 1)],
+        ),
+        (
+            "glFogf(GL_FOG_INDEX, 3) (color-index fog: taken, no effect)",
+            vec![c(Fogf(0x0B61, 3.0))],
+            vec![(FOG_MODE, 1)],
+        ),
+        (
+            "glFogf(bad pname)",
+            vec![c(Fogf(0x0B67, 1.0))],
+            vec![(FOG_MODE, 1)],
+        ),
+        (
+            "glFogCoordf(-2)",
+            vec![c(FogCoordf(-2.0))],
+            vec![(CURRENT_FOG_COORD, 1)],
+        ),
+        (
+            "glHint(GL_FOG_HINT, GL_FASTEST)",
+            vec![c(Hint(FOG_HINT, FASTEST))],
+            vec![(FOG_HINT, 1)],
+        ),
+        (
+            "glHint(GL_FOG_HINT, GL_NICEST)",
+            vec![c(Hint(FOG_HINT, NICEST))],
+            vec![(FOG_HINT, 1)],
+        ),
+        (
+            "glHint(GL_FOG_HINT, bad)",
+            vec![c(Hint(FOG_HINT, 0x1234))],
+            vec![(FOG_HINT, 1)],
+        ),
+        (
+            "glHint(bad target)",
+            vec![c(Hint(0x1234, FASTEST))],
+            vec![(FOG_HINT, 1)],
+        ),
+        (
+            "glAlphaFunc(GL_LESS, 0.5)",
+            vec![c(AlphaFunc(LESS, 0.5))],
+            vec![(ALPHA_TEST_FUNC, 1), (ALPHA_TEST_REF, 1)],
+        ),
+        (
+            "glAlphaFunc(GL_GEQUAL, 1.5) (clamped)",
+            vec![c(AlphaFunc(GEQUAL, 1.5))],
+            vec![(ALPHA_TEST_FUNC, 1), (ALPHA_TEST_REF, 1)],
+        ),
+        (
+            "glAlphaFunc(GL_GEQUAL, -0.5) (clamped)",
+            vec![c(AlphaFunc(GEQUAL, -0.5))],
+            vec![(ALPHA_TEST_REF, 1)],
+        ),
+        (
+            "glAlphaFunc(bad)",
+            vec![c(AlphaFunc(0x0208, 0.5))],
+            vec![(ALPHA_TEST_FUNC, 1), (ALPHA_TEST_REF, 1)],
+        ),
+        (
+            "glSecondaryColor3f",
+            vec![c(SecondaryColor3f([0.25, 0.5, 0.75]))],
+            vec![(CURRENT_SECONDARY_COLOR, 4)],
+        ),
+        (
+            "glNormal3f",
+            vec![c(Normal3f([0.5, -2.0, 0.25]))],
+            vec![(CURRENT_NORMAL, 3)],
+        ),
+        (
+            "glTexCoord4f",
+            vec![c(TexCoord4f([0.75, -2.0, 0.25, 2.0]))],
+            vec![(CURRENT_TEXTURE_COORDS, 4)],
+        ),
+    ];
+    for (name, mut steps, queries) in stage_calls {
+        for (pname, n) in queries {
+            steps.extend(answers(pname, n));
+        }
+        s.push((name.to_string(), steps));
+    }
+    for cap in [FOG, ALPHA_TEST, COLOR_SUM, CLIP_PLANE0, CLIP_PLANE0 + 5] {
+        s.push((
+            format!("glEnable(0x{cap:04X}), glDisable"),
+            vec![
+                c(Enable(cap)),
+                q(IsEnabled(cap)),
+                q(GetBooleanv(cap, 1)),
+                c(Disable(cap)),
+                q(IsEnabled(cap)),
+            ],
+        ));
+    }
+    // Clip planes: stored in eye space at the call (modelviews exact in floats), later
+    // modelview changes do not move them; a plane past Mesa's 8 is refused by both.
+    let mut identity = [0.0f32; 16];
+    for i in 0..4 {
+        identity[i * 5] = 1.0;
+    }
+    let translate = {
+        let mut m = [0.0f32; 16];
+        for i in 0..4 {
+            m[i * 5] = if i == 3 { 1.0 } else { 2.0 };
+        }
+        m[12] = 0.5;
+        m[13] = -1.0;
+        m
+    };
+    s.push((
+        "glClipPlane under a scale and translation".to_string(),
+        vec![
+            c(LoadModelview(translate)),
+            c(ClipPlane(CLIP_PLANE0, [1.0, 0.5, 0.0, 0.25])),
+            q(GetClipPlane(CLIP_PLANE0)),
+            c(LoadModelview(identity)),
+            q(GetClipPlane(CLIP_PLANE0)),
+            c(ClipPlane(CLIP_PLANE0 + 5, [0.0, 0.0, 1.0, -2.0])),
+            q(GetClipPlane(CLIP_PLANE0 + 5)),
+        ],
+    ));
+    s.push((
+        "glClipPlane(bad plane), glGetClipPlane(bad plane)".to_string(),
+        vec![
+            c(ClipPlane(CLIP_PLANE0 + 8, [1.0, 0.0, 0.0, 0.0])),
+            q(GetClipPlane(CLIP_PLANE0 + 8)),
         ],
     ));
     s

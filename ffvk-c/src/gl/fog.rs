@@ -11,7 +11,7 @@ const FOG_PNAMES: &str =
 /// How many values `pname` takes; `scalar` for glFogf/glFogi, which cannot set the color.
 fn fog_len(function: &str, pname: u32, scalar: bool) -> GlResult<usize> {
     match pname {
-        GL_FOG_MODE | GL_FOG_DENSITY | GL_FOG_START | GL_FOG_END | GL_FOG_COORD_SRC => Ok(1),
+        GL_FOG_MODE | GL_FOG_DENSITY | GL_FOG_START | GL_FOG_END | GL_FOG_COORD_SRC | GL_FOG_INDEX => Ok(1),
         GL_FOG_COLOR if !scalar => Ok(4),
         _ => Err(invalid_enum(function, "pname", pname, FOG_PNAMES)),
     }
@@ -38,6 +38,8 @@ fn set_fog(c: &mut FfvkContext, function: &str, pname: u32, v: Values) -> GlResu
         GL_FOG_START => FogParam::Start(v.plain(0)),
         GL_FOG_END => FogParam::End(v.plain(0)),
         GL_FOG_COLOR => FogParam::Color(v.color4()),
+        // Color-index fog: GL takes it, and it changes nothing in RGBA, the only mode ffvk draws.
+        GL_FOG_INDEX => return v.finite(function, "GL_FOG_INDEX", "a finite number", 1),
         GL_FOG_COORD_SRC => FogParam::CoordSrc(
             match v.as_enum(function, "GL_FOG_COORD_SRC", "GL_FOG_COORD or GL_FRAGMENT_DEPTH")? {
                 GL_FOG_COORD => FogSource::FogCoord,
