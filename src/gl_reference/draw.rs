@@ -603,8 +603,60 @@ pub(super) fn set_state(
     set_enabled(gl, gl::RESCALE_NORMAL, state.rescale_normal);
     set_enabled(gl, gl::LIGHTING, state.lighting);
     set_texture_unit(gl, &state.texture, texture);
+    set_stages(gl, state);
     for call in &draw.calls {
         replay(gl, *call);
     }
     check_draw(gl, "from the replayed calls")
+}
+
+/// The stages around lighting: the color sum, fog, the alpha test and the user clip planes
+/// (stored in eye space already: set with the identity modelview, as the lights are).
+fn set_stages(gl: &Gl, state: &ffvk::gl::state::FixedFunctionState) {
+    use ffvk::gl::state::{FogHint, FogMode, FogSource};
+    let f = &state.fragment;
+    let fog = &f.fog;
+    // SAFETY: a context is current on this thread; the arrays have the lengths GL reads.
+    unsafe {
+        gl.Fogi(
+            gl::FOG_MODE,
+            match fog.mode {
+                FogMode::Linear => gl::LINEAR,
+                FogMode::Exp => gl::EXP,
+                _ => gl::EXP2,
+            } as GLint,
+        );
+        gl.Fogf(gl::FOG_DENSITY, fog.density);
+        gl.Fogf(gl::FOG_START, fog.start);
+        gl.Fogf(gl::FOG_END, fog.end);
+        gl.Fogfv(gl::FOG_COLOR, fog.color.to_array().as_ptr());
+        gl.Fogi(
+            gl::FOG_COORD_SRC,
+            match fog.source {
+                FogSource::FogCoord => gl::FOG_COORD,
+                _ => gl::FRAGMENT_DEPTH,
+            } as GLint,
+        );
+        gl.FogCoordf(state.current_fog_coord);
+        gl.Hint(
+            gl::FOG_HINT,
+            match fog.hint {
+                FogHint::Fastest => gl::FASTEST,
+                FogHint::Nicest => gl::NICEST,
+                _ => gl::DONT_CARE,
+            },
+        );
+        let c = state.current_secondary_color;
+        gl.SecondaryColor3f(c.x, c.y, c.z);
+        gl.AlphaFunc(gl::NEVER + f.alpha_test.func.code(), f.alpha_test.reference);
+        for (i, p) in state.clip.planes.iter().enumerate() {
+            gl.ClipPlane(gl::CLIP_PLANE0 + i as u32, p.as_dvec4().to_array().as_ptr());
+        }
+    }
+    set_enabled(gl, gl::FOG, fog.enabled);
+    set_enabled(gl, gl::COLOR_SUM, f.color_sum);
+    set_enabled(gl, gl::ALPHA_TEST, f.alpha_test.enabled);
+    for (i, &on) in state.clip.enabled.iter().enumerate() {
+        set_enabled(gl, gl::CLIP_PLANE0 + i as u32, on);
+    }
 }

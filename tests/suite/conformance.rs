@@ -272,6 +272,41 @@ fn cases() -> Vec<Case> {
             scaled(|gl| gl.enable(Cap::RescaleNormal)),
         ),
         sphere("neither_scaled", scaled(|_| Ok(()))),
+        // The stages around lighting (issue 49): fog over the sphere's depth (its eye-space z
+        // runs from -2 to -4), lit and unlit; a user clip plane halving it; an unlit color sum.
+        sphere(
+            "fog_linear_lit",
+            scaled(|gl| {
+                gl.fog(FogParam::Mode(FogMode::Linear))?;
+                gl.fog(FogParam::Start(2.0))?;
+                gl.fog(FogParam::End(4.5))?;
+                gl.fog(FogParam::Color(rgba(0.2, 0.3, 0.8, 1.0)))?;
+                gl.enable(Cap::Fog)
+            }),
+        ),
+        sphere(
+            "fog_exp2_unlit",
+            with(GlState::new(), |gl| {
+                gl.fog(FogParam::Mode(FogMode::Exp2))?;
+                gl.fog(FogParam::Density(0.4))?;
+                gl.fog(FogParam::Color(rgba(0.9, 0.9, 0.9, 1.0)))?;
+                gl.enable(Cap::Fog)
+            }),
+        ),
+        sphere(
+            "clip_plane_lit",
+            scaled(|gl| {
+                gl.clip_plane(1, glam::DVec4::new(1.0, 0.5, 0.0, 0.0))?;
+                gl.enable(Cap::ClipPlane(1))
+            }),
+        ),
+        sphere(
+            "color_sum_unlit",
+            with(GlState::new(), |gl| {
+                gl.secondary_color(Vec3::new(0.3, 0.1, 0.2))?;
+                gl.enable(Cap::ColorSum)
+            }),
+        ),
     ];
     for (name, mode) in [
         (

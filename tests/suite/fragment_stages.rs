@@ -755,3 +755,78 @@ fn a_clip_plane_on_a_device_without_clip_distances_is_refused_by_name() {
     drop(lighting);
     drop(device);
 }
+
+/// Scene files carry the stages with GL's names and defaults: `color_sum`, `[fog]`,
+/// `[alpha_test]` and `[[clip_planes]]` (in world space, set with the view loaded, as
+/// glClipPlane after glLoadMatrix(view)); a bad word or value is refused naming the field.
+#[test]
+fn scene_files_set_the_stages_and_refuse_bad_values_naming_the_field() {
+    use ffvk::gl::state::{FogHint, FogMode, FogSource};
+    use ffvk::scene::Scene;
+    use std::path::Path;
+    let text = r#"
+        color_sum = true
+        [camera]
+        eye = [0.0, 0.0, 5.0]
+        target = [0.0, 0.0, 0.0]
+        [fog]
+        mode = "linear"
+        start = 2.0
+        end = 8.0
+        color = [0.5, 0.5, 0.5]
+        coord_src = "fog_coord"
+        coord = 3.0
+        hint = "fastest"
+        [alpha_test]
+        func = "gequal"
+        reference = 1.5
+        [[clip_planes]]
+        equation = [1.0, 0.0, 0.0, 0.0]
+        [[meshes]]
+        builtin = "sphere"
+    "#;
+    let scene = Scene::parse(text, Path::new("stages.toml")).unwrap();
+    let s = &scene.state;
+    assert!(s.fragment.color_sum);
+    let fog = &s.fragment.fog;
+    assert!(fog.enabled);
+    assert_eq!(
+        (fog.mode, fog.start, fog.end, fog.source, fog.hint),
+        (FogMode::Linear, 2.0, 8.0, FogSource::FogCoord, FogHint::Fastest)
+    );
+    assert_eq!(fog.color, Vec4::new(0.5, 0.5, 0.5, 1.0));
+    assert_eq!(s.current_fog_coord, 3.0);
+    let alpha = &s.fragment.alpha_test;
+    assert!(alpha.enabled);
+    assert_eq!(
+        (alpha.func, alpha.reference),
+        (CompareFunc::GreaterOrEqual, 1.0),
+        "the reference clamped"
+    );
+    // The world's x >= 0 in eye space: the view looks down -z from (0, 0, 5), so the plane is
+    // (1, 0, 0, 0) there too.
+    assert!(s.clip.enabled[0]);
+    assert!(
+        (s.clip.planes[0] - Vec4::X).abs().max_element() < 1e-6,
+        "{:?}",
+        s.clip.planes[0]
+    );
+
+    for (bad, field) in [
+        ("[fog]\nmode = \"exp3\"", "fog.mode"),
+        ("[fog]\ndensity = -1.0", "fog.density"),
+        ("[fog]\nhint = \"slow\"", "fog.hint"),
+        ("[alpha_test]\nfunc = \"sometimes\"", "alpha_test.func"),
+        (
+            "[[clip_planes]]\nindex = 6\nequation = [1.0, 0.0, 0.0, 0.0]",
+            "clip_planes[0]",
+        ),
+        ("[[clip_planes]]\nenabled = true", "clip_planes[0].equation"),
+    ] {
+        let text = format!("{bad}\n[[meshes]]\nbuiltin = \"sphere\"\n");
+        let e = Scene::parse(&text, Path::new("bad.toml"))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains(field), "{bad:?}: {e}");
+    }
+}

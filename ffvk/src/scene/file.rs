@@ -35,8 +35,61 @@ pub(super) struct SceneFile {
     pub(super) gltf_defaults: Option<bool>,
     /// GL light color per glTF light unit (lux, candela), or "auto".
     pub(super) gltf_exposure: Option<ExposureSpec>,
+    /// `GL_COLOR_SUM`: off (GL's default).
+    pub(super) color_sum: Option<bool>,
+    /// `[fog]`: GL_FOG and glFog.
+    pub(super) fog: Option<FogSpec>,
+    /// `[alpha_test]`: GL_ALPHA_TEST and glAlphaFunc.
+    pub(super) alpha_test: Option<AlphaTestSpec>,
+    /// `[[clip_planes]]`: glClipPlane and GL_CLIP_PLANEi, in world space.
+    #[serde(default)]
+    pub(super) clip_planes: Vec<ClipPlaneSpec>,
     #[serde(default)]
     pub(super) meshes: Vec<MeshSpec>,
+}
+
+/// `[fog]`: GL_FOG (on unless `enabled = false`) and glFog's parameters, GL's defaults for
+/// those left out.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct FogSpec {
+    pub(super) enabled: Option<bool>,
+    /// "linear", "exp" (GL's default) or "exp2".
+    pub(super) mode: Option<String>,
+    pub(super) density: Option<f32>,
+    pub(super) start: Option<f32>,
+    pub(super) end: Option<f32>,
+    pub(super) color: Option<Vec<f32>>,
+    /// "fragment_depth" (GL's default) or "fog_coord".
+    pub(super) coord_src: Option<String>,
+    /// GL's current fog coordinate (glFogCoord), read with `coord_src = "fog_coord"`.
+    pub(super) coord: Option<f32>,
+    /// GL_FOG_HINT: "dont_care" (GL's default), "fastest" or "nicest".
+    pub(super) hint: Option<String>,
+}
+
+/// `[alpha_test]`: GL_ALPHA_TEST (on unless `enabled = false`) and glAlphaFunc.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct AlphaTestSpec {
+    pub(super) enabled: Option<bool>,
+    /// "never", "less", "equal", "lequal", "greater", "notequal", "gequal" or "always"
+    /// (GL's default).
+    pub(super) func: Option<String>,
+    /// The reference, clamped to [0, 1] as GL clamps it; 0 by default.
+    pub(super) reference: Option<f32>,
+}
+
+/// One `[[clip_planes]]` table: glClipPlane(GL_CLIP_PLANEi) in world space (given with the
+/// view loaded, as a program sets it after glLoadMatrix(view)), enabled unless said otherwise.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct ClipPlaneSpec {
+    /// i in 0..6; the table's position by default.
+    pub(super) index: Option<usize>,
+    #[serde(default, deserialize_with = "exact")]
+    pub(super) equation: Option<[f64; 4]>,
+    pub(super) enabled: Option<bool>,
 }
 
 /// `gltf_lights`: a word, or a boolean as earlier versions wrote.

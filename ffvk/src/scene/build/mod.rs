@@ -5,6 +5,7 @@
 use super::*;
 
 mod meshes;
+mod stages;
 mod state;
 
 /// One glTF primitive or built-in shape placed by a `[[meshes]]` table.
@@ -140,10 +141,17 @@ impl Builder<'_> {
         if let Some(cm) = &file.color_material {
             self.color_material(&mut gl, cm)?;
         }
+        self.fragment_stages(
+            &mut gl,
+            file.color_sum,
+            file.fog.as_ref(),
+            file.alpha_test.as_ref(),
+        )?;
 
-        // Lights are specified in world space with the view loaded, as glLight after
-        // glLoadMatrix(view).
+        // Lights and clip planes are specified in world space with the view loaded, as glLight
+        // and glClipPlane after glLoadMatrix(view).
         gl.load_modelview(view).map_err(self.state("camera.view"))?;
+        self.clip_planes(&mut gl, &file.clip_planes)?;
         let mut light_of_index: Vec<(usize, usize)> = Vec::new();
         let mut warnings = Vec::new();
         for (i, spec) in file.lights.iter().enumerate() {
