@@ -228,7 +228,7 @@ impl GlState {
         Ok(())
     }
 
-    /// The enable of `GL_CLIP_PLANEi`, refusing i past [`MAX_CLIP_PLANES`].
+    /// The enable of `GL_CLIP_PLANEi`, refusing i past [`MAX_CLIP_PLANES`](super::MAX_CLIP_PLANES).
     fn clip_plane_mut(&mut self, i: usize) -> Result<&mut bool, StateError> {
         self.lighting
             .clip
@@ -243,7 +243,7 @@ impl GlState {
 
     /// glClipPlane(GL_CLIP_PLANEi, p): the plane stored in eye space, p · M⁻¹ with the
     /// modelview current now (§2.12); later modelview changes do not move it. Errors: i past
-    /// [`MAX_CLIP_PLANES`], a component that is not finite, a singular modelview (GL leaves the
+    /// [`MAX_CLIP_PLANES`](super::MAX_CLIP_PLANES), a component that is not finite, a singular modelview (GL leaves the
     /// plane undefined then).
     pub fn clip_plane(&mut self, i: usize, p: glam::DVec4) -> Result<(), StateError> {
         self.clip_plane_mut(i)?;
