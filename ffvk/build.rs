@@ -101,7 +101,11 @@ const VARIANTS: &[Variant] = &[
 /// needed, which pipelines without clip planes do not ask for).
 const CLIP_PLANES: (&str, &str) = ("CLIP_PLANES", "1");
 
-/// The variants with a `_clipped` build.
+/// The build with fog of each of those, named `<variant>_fog` (before `_clipped`): the fog
+/// varying passed between the stages, which pipelines without fog do without.
+const FOG: (&str, &str) = ("FOG", "1");
+
+/// The variants with `_fog` and `_clipped` builds.
 const CLIPPED: [&str; 6] = [
     "vertex",
     "vertex_one_color",
@@ -133,13 +137,21 @@ fn main() {
     let builds = VARIANTS.iter().flat_map(|v| {
         let mut bases = vec![(v.name.to_string(), v.doc.to_string(), v.defines.to_vec())];
         if CLIPPED.contains(&v.name) {
-            let mut clipped = v.defines.to_vec();
-            clipped.push(CLIP_PLANES);
-            bases.push((
-                format!("{}_clipped", v.name),
-                format!("{} With GL's user clip planes.", v.doc),
-                clipped,
-            ));
+            for (fog, clip) in [(true, false), (false, true), (true, true)] {
+                let mut defines = v.defines.to_vec();
+                let (mut name, mut doc) = (v.name.to_string(), v.doc.to_string());
+                if fog {
+                    defines.push(FOG);
+                    name.push_str("_fog");
+                    doc.push_str(" With fog.");
+                }
+                if clip {
+                    defines.push(CLIP_PLANES);
+                    name.push_str("_clipped");
+                    doc.push_str(" With GL's user clip planes.");
+                }
+                bases.push((name, doc, defines));
+            }
         }
         bases.into_iter().flat_map(move |(name, doc, defines)| {
             let mut textured = defines.clone();

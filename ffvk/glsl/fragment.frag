@@ -6,9 +6,9 @@
 layout(location = 0) in vec4 eye_position;
 layout(location = 1) in vec4 normal;  // xyz: the direction; w: the length
 layout(location = 3) in vec4 color;
-// With lighting off, the clamped secondary color (or (0, 0, 0, 1) without the color sum).
-layout(location = 2) in vec4 secondary;
+#ifdef FOG
 layout(location = 15) in float fog;  // draw.glsl, fog_varying
+#endif
 #ifdef VARYING_MATERIALS
 // The draw's materials (fragment.vert), for small draws: flat inputs cost lavapipe a setup
 // per attribute per triangle, which few triangles make cheaper than a draw's own uniform block.
@@ -80,7 +80,7 @@ void main() {
     LitColor lit;
     if (!lighting_enabled()) {
         lit.c_pri = color;
-        lit.c_sec = secondary;
+        lit.c_sec = normal;  // the secondary color rides in the normal's varying (fragment.vert)
     } else {
         vec3 n = unit(normal.xyz) * normal.w;
         bool back_face = two_side() && !gl_FrontFacing;
@@ -91,7 +91,11 @@ void main() {
     // After lighting, before the color sum: the secondary color is not textured.
     lit.c_pri = texture_environment(lit.c_pri, texel_at(stq));
 #endif
+#ifdef FOG
     out_color = apply_fog(color_sum(lit), fog);
+#else
+    out_color = color_sum(lit);
+#endif
     if (!alpha_passes(out_color.a)) discard;
 #endif
 }

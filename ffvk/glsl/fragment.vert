@@ -12,8 +12,9 @@ layout(location = 0) out vec4 eye_position;
 // per varying slot, and a float alone takes a slot.
 layout(location = 1) out vec4 normal;
 layout(location = 3) out vec4 color;
-layout(location = 2) out vec4 secondary;  // with lighting off: fragment.frag
+#ifdef FOG
 layout(location = 15) out float fog;      // c, or f per vertex (draw.glsl, fog_varying)
+#endif
 #ifdef CLIP_PLANES
 // GL's user clip planes (the `_clipped` builds; the device's shaderClipDistance).
 out float gl_ClipDistance[6];
@@ -54,7 +55,9 @@ void main() {
     if (SPEC_POINTS != 0) gl_PointSize = SPEC_POINT_SIZE;
     eye_position = in_modelview * in_position;
     gl_Position = state.projection * eye_position;
+#ifdef FOG
     fog = fog_varying(eye_position, in_fog_coord);
+#endif
 #ifdef CLIP_PLANES
     [[unroll]] for (uint i = 0u; i < 6u; i++) gl_ClipDistance[i] = clip_distance(i, eye_position);
 #endif
@@ -77,10 +80,12 @@ void main() {
 #endif
     vec3 n = eye_normal(vertex_normal(in_normal));
     float normal_length = length(n);
-    normal = vec4(normal_length > 0.0 ? n / normal_length : vec3(0.0), normal_length);
+    // With lighting off the normal is not read: the varying carries the clamped secondary
+    // color instead (fragment.frag), so the color sum costs no varying of its own.
+    vec4 lit_normal = vec4(normal_length > 0.0 ? n / normal_length : vec3(0.0), normal_length);
+    normal = mix(unlit_secondary(), lit_normal, bvec4(lighting_enabled()));
     // Lighting off: the clamped current color (section 2.14.6); lighting on: unclamped, as
     // COLOR_MATERIAL takes it.
     vec4 c = vertex_color(in_color);
     color = lighting_enabled() ? c : clamp(c, 0.0, 1.0);
-    secondary = unlit_secondary();
 }

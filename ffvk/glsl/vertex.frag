@@ -11,7 +11,9 @@ layout(location = 2) INTERP in vec4 back_pri;
 layout(location = 3) INTERP in vec4 back_sec;
 #endif
 
+#ifdef FOG
 layout(location = 5) in float fog;  // draw.glsl, fog_varying
+#endif
 
 layout(location = 0) out vec4 out_color;
 
@@ -36,6 +38,10 @@ void main() {
 #ifdef TEXTURE
     lit.c_pri = texture_environment(lit.c_pri, texel_at(stq));
 #endif
+#ifdef FOG
     out_color = apply_fog(color_sum(lit), fog);
+#else
+    out_color = color_sum(lit);
+#endif
     if (!alpha_passes(out_color.a)) discard;
 }

@@ -26,8 +26,11 @@ layout(location = 3) INTERP out vec4 back_sec;
 out float gl_ClipDistance[6];
 #endif
 
-// Fog: c, or f where it is computed per vertex (draw.glsl, fog_varying).
+#ifdef FOG
+// Fog: c, or f where it is computed per vertex (draw.glsl, fog_varying). Only the `_fog`
+// builds pass it: an output the fragment stage does not read still costs lavapipe per vertex.
 layout(location = 5) out float fog;
+#endif
 
 #ifdef TEXTURE
 // Texture coordinates (s, t) in, (s, t, r, q) after the texture matrix out: always
@@ -48,7 +51,9 @@ void main() {
     if (SPEC_POINTS != 0) gl_PointSize = SPEC_POINT_SIZE;
     vec4 V = in_modelview * in_position;
     gl_Position = state.projection * V;
+#ifdef FOG
     fog = fog_varying(V, in_fog_coord);
+#endif
 #ifdef CLIP_PLANES
     [[unroll]] for (uint i = 0u; i < 6u; i++) gl_ClipDistance[i] = clip_distance(i, V);
 #endif

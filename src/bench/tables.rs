@@ -129,7 +129,7 @@ pub(super) fn draw_cost_note(d: &DrawCost) -> String {
          packed) takes {share:.0}% of a warm draw's time. A draw whose state (lights, light \
          model, switches, projection) equals the draw before's reuses its state block and \
          pipeline (here every draw: each has its own material under the same lights), so it \
-         checks and writes only its 256-byte record: materials, current color, modelview and \
+         checks and writes only its 304-byte record: materials, current values, modelview and \
          normal matrix. The first two rows go through the Renderer, whose frames hold a whole \
          state per draw (it compares each with the one before); the draw_run rows are what an \
          emulation layer pays recording into its own command buffer, each draw a command of its \

@@ -121,8 +121,8 @@ fn stages() -> Vec<(String, &'static [u8])> {
     }
     assert_eq!(
         stages.len(),
-        60,
-        "thirty variants (nine, six of them also with clip planes, each untextured and textured) of two stages"
+        108,
+        "fifty-four variants (nine, six of them also with fog, clip planes or both, each untextured and textured) of two stages"
     );
     stages
 }
@@ -200,8 +200,8 @@ fn the_record_block_of_the_fragment_stages_matches_the_draw_record() {
         seen += 1;
     }
     assert_eq!(
-        seen, 4,
-        "the fragment mode's fragment stages for large draws, textured or not, clipped or not"
+        seen, 8,
+        "the fragment mode's fragment stages for large draws, textured or not, fogged or not, clipped or not"
     );
     // The deferred lighting pass reads the frame's records as vec4s, at these indices of a
     // record's (deferred.frag): the normal matrix's columns (w: the shininesses) at 4 and 5,

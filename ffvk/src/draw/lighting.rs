@@ -197,6 +197,8 @@ struct Variant {
     gbuffer: bool,
     /// Some user clip plane is enabled: the `_clipped` build.
     clipped: bool,
+    /// Fog is on: the `_fog` build.
+    fogged: bool,
 }
 
 /// The next [`Lighting`]'s number (its layouts name it, so another's are refused).
@@ -365,6 +367,7 @@ impl Lighting {
             assembly: (Topology::TriangleList, false),
             gbuffer: false,
             clipped: state.clip.mask() != 0,
+            fogged: state.fragment.fog.enabled,
         };
         self.pipeline_for(state, raster, variant).map(|_| ())
     }
@@ -490,6 +493,7 @@ impl Lighting {
             assembly: draw.geometry.assembly(),
             gbuffer: self.gbuffer && mode == LightingMode::Fragment,
             clipped: draw.state.clip.mask() != 0,
+            fogged: draw.state.fragment.fog.enabled,
         };
         let found = self.last.as_ref().and_then(|last| {
             last.pipelines
@@ -760,7 +764,7 @@ impl Lighting {
             (mode, key, raster),
             textured,
             assembly,
-            (variant.gbuffer, variant.clipped),
+            (variant.gbuffer, variant.clipped, variant.fogged),
         )
     }
 

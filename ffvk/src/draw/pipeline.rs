@@ -47,20 +47,21 @@ pub const SMALL_DRAW_VERTICES: u32 = 256;
 /// draw samples a texture. (Layouts without a color, normal or texture coordinate array share
 /// the variants: the pipeline's vertex input reads GL's current value from the draw record.)
 pub fn variant_name(mode: LightingMode, key: SpecKey, textured: bool, small: bool) -> String {
-    variant_name_clipped(mode, key, (textured, small), false)
+    variant_name_staged(mode, key, (textured, small), (false, false))
 }
 
-/// [`variant_name`], with `_clipped` for a draw with user clip planes (the build that writes
-/// `gl_ClipDistance`), before `_textured`.
-pub fn variant_name_clipped(
+/// [`variant_name`], with `_fog` for a fogged draw (the build that passes the fog varying) and
+/// `_clipped` for a draw with user clip planes (the build that writes `gl_ClipDistance`), in
+/// that order, before `_textured`.
+pub fn variant_name_staged(
     mode: LightingMode,
     key: SpecKey,
     (textured, small): (bool, bool),
-    clipped: bool,
+    (fogged, clipped): (bool, bool),
 ) -> String {
     let one = one_color(key) && mode != LightingMode::Fragment;
     format!(
-        "{}{}{}{}{}",
+        "{}{}{}{}{}{}",
         mode.name(),
         if small && mode == LightingMode::Fragment {
             "_small"
@@ -68,6 +69,7 @@ pub fn variant_name_clipped(
             ""
         },
         if one { "_one_color" } else { "" },
+        if fogged { "_fog" } else { "" },
         if clipped { "_clipped" } else { "" },
         if textured { "_textured" } else { "" },
     )
@@ -259,6 +261,8 @@ struct PipelineKey {
     gbuffer: bool,
     /// The draw has user clip planes: the `_clipped` build.
     clipped: bool,
+    /// The draw is fogged: the `_fog` build.
+    fogged: bool,
 }
 
 /// The G-buffer's attachments, in `fragment.frag`'s output order under `GBUFFER`: the
@@ -412,7 +416,7 @@ impl Pipelines {
             (mode, key, raster),
             (textured, small),
             (topology, restart),
-            (false, false),
+            (false, false, false),
         )
     }
 
@@ -429,7 +433,7 @@ impl Pipelines {
         (mode, key, raster): (LightingMode, SpecKey, RasterState),
         (textured, small): (bool, bool),
         (topology, restart): (Topology, bool),
-        (gbuffer, clipped): (bool, bool),
+        (gbuffer, clipped, fogged): (bool, bool, bool),
     ) -> Result<vk::Pipeline> {
         let gbuffer = gbuffer && mode == LightingMode::Fragment;
         let k = PipelineKey {
@@ -443,6 +447,7 @@ impl Pipelines {
             restart,
             gbuffer,
             clipped: clipped && !gbuffer,
+            fogged: fogged && !gbuffer,
         };
         if let Some(pipeline) = self.pipelines.get(&k) {
             return Ok(pipeline.raw());
@@ -475,6 +480,7 @@ impl Pipelines {
             restart,
             gbuffer: false,
             clipped: key != SpecKey::UBER && key.get(SpecConstant::ClipPlanes) != 0,
+            fogged: key != SpecKey::UBER && key.get(SpecConstant::FogMode) > 0,
         })
     }
 
@@ -579,7 +585,7 @@ impl Pipelines {
         let name = if k.gbuffer {
             "fragment_gbuffer".to_owned()
         } else {
-            variant_name_clipped(k.mode, k.spec, (k.textured, k.small), k.clipped)
+            variant_name_staged(k.mode, k.spec, (k.textured, k.small), (k.fogged, k.clipped))
         };
         let name = name.as_str();
         let variant = shaders::variant(name)
