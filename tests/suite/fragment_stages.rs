@@ -830,3 +830,124 @@ fn scene_files_set_the_stages_and_refuse_bad_values_naming_the_field() {
         assert!(e.contains(field), "{bad:?}: {e}");
     }
 }
+
+/// GL's order (§3.8.13 texturing, §3.9 color sum, §3.10 fog, §4.1.4 alpha test): a textured
+/// quad under `GL_REPLACE`, fogged with f = 0.5 everywhere (GL_LINEAR over a constant fog
+/// coordinate), alpha-tested after the fog. Fog applied before texturing would be replaced by
+/// the texel (an unfogged red); the alpha test before fog would see another alpha. Against
+/// Mesa's GL and the spec's value, in the vertex and fragment modes.
+#[test]
+fn texturing_then_fog_then_the_alpha_test_run_in_gls_order() {
+    use ffvk::draw::texture::sampler_info;
+    use ffvk::gl::state::{FogMode, FogParam, FogSource};
+    use ffvk::gl::texture::{Sampling, TexEnvMode};
+    let size = 16;
+    let texel: [u8; 4] = [255, 0, 0, 128];
+    let mut canvas = Canvas::new(size);
+    let device = canvas.ffvk();
+    let (view, sampler) = canvas.texture(&texel, (1, 1), &sampler_info(&Sampling::NEAREST, 1));
+    let mut with_st = Vec::new();
+    for p in QUAD {
+        with_st.extend_from_slice(&[p[0], p[1], p[2], 0.5, 0.5]);
+    }
+    let buffer = canvas.buffer(bytemuck::cast_slice(&with_st));
+    let position = Attribute::new(0, 0, vk::Format::R32G32B32_SFLOAT);
+    let input = VertexInput::new(vec![binding(20)], position, position)
+        .with_normal(None)
+        .with_texcoord(Some(Attribute::new(0, 12, vk::Format::R32G32_SFLOAT)));
+    let target = Target::new(vk::Format::R8G8B8A8_UNORM, vk::Format::UNDEFINED);
+    let mut lighting = Lighting::new(&device, &LightingOptions::new(target, input)).unwrap();
+    // SAFETY: the view and sampler are the canvas's, alive until it drops, after `lighting`.
+    let texture = unsafe { lighting.bind_texture(view, sampler) }.unwrap();
+    let buffers = [(buffer, 0)];
+    let strip = Geometry::vertices(4).with_topology(Topology::TriangleStrip);
+    let fog_color = Vec4::new(0.0, 0.0, 1.0, 1.0);
+
+    let mesa = render_raw_gl(size, size, |g| {
+        // SAFETY: a context is current; the texel outlives glTexImage2D.
+        unsafe {
+            let mut name = 0;
+            g.GenTextures(1, &mut name);
+            g.BindTexture(raw::TEXTURE_2D, name);
+            g.TexImage2D(
+                raw::TEXTURE_2D,
+                0,
+                raw::RGBA as i32,
+                1,
+                1,
+                0,
+                raw::RGBA,
+                raw::UNSIGNED_BYTE,
+                texel.as_ptr().cast(),
+            );
+            g.TexParameteri(raw::TEXTURE_2D, raw::TEXTURE_MIN_FILTER, raw::NEAREST as i32);
+            g.TexParameteri(raw::TEXTURE_2D, raw::TEXTURE_MAG_FILTER, raw::NEAREST as i32);
+            g.TexEnvi(raw::TEXTURE_ENV, raw::TEXTURE_ENV_MODE, raw::REPLACE as i32);
+            g.Enable(raw::TEXTURE_2D);
+            g.Enable(raw::FOG);
+            g.Fogi(raw::FOG_MODE, raw::LINEAR as i32);
+            g.Fogf(raw::FOG_START, 0.0);
+            g.Fogf(raw::FOG_END, 2.0);
+            g.Fogi(raw::FOG_COORD_SRC, raw::FOG_COORD as i32);
+            g.Fogfv(raw::FOG_COLOR, fog_color.to_array().as_ptr());
+            g.Enable(raw::ALPHA_TEST);
+            g.AlphaFunc(raw::GEQUAL, 0.5);
+            g.FogCoordf(1.0);
+            g.Begin(raw::TRIANGLE_STRIP);
+            for p in QUAD {
+                g.TexCoord2f(0.5, 0.5);
+                g.Vertex3f(p[0], p[1], p[2]);
+            }
+            g.End();
+            g.DeleteTextures(1, &name);
+        }
+    })
+    .expect("Mesa's GL renders");
+    save_for_inspection(&mesa, "fragment_stages_order_mesa");
+
+    for mode in [LightingMode::Vertex, LightingMode::Fragment] {
+        let mut gl = GlState::new();
+        gl.lighting_mode(mode);
+        gl.lighting.texture.enabled = true;
+        gl.lighting.texture.env_mode = TexEnvMode::Replace;
+        for p in [
+            FogParam::Mode(FogMode::Linear),
+            FogParam::Start(0.0),
+            FogParam::End(2.0),
+            FogParam::CoordSrc(FogSource::FogCoord),
+            FogParam::Color(fog_color),
+        ] {
+            gl.fog(p).unwrap();
+        }
+        gl.enable(Cap::Fog).unwrap();
+        gl.enable(Cap::AlphaTest).unwrap();
+        gl.alpha_func(CompareFunc::GreaterOrEqual, 0.5).unwrap();
+        gl.fog_coord(1.0).unwrap();
+        let draw = LitDraw::new(&gl.lighting, Mat4::IDENTITY, Mat4::IDENTITY, &buffers, strip)
+            .with_texture(Some(&texture));
+        lighting.begin_frame(0).unwrap();
+        let mut result = Ok(());
+        let ffvk = canvas
+            .frame(|_, cmd| {
+                // SAFETY: the canvas's pass is open; buffer and texture outlive the frame.
+                result = unsafe { lighting.draw(cmd, 0, &draw) };
+            })
+            .unwrap();
+        result.unwrap();
+        save_for_inspection(&ffvk, &format!("fragment_stages_order_{}", mode.name()));
+        // The texel (1, 0, 0, 128/255) replaces the color, fog mixes half of it with blue
+        // (alpha untouched), and 128/255 passes GL_GEQUAL 0.5 (128 >= 128 at 8 bits).
+        let got = ffvk.get_pixel(size / 2, size / 2).0;
+        let want = [128, 0, 128, 128];
+        assert!(
+            got.iter().zip(want).all(|(a, b)| a.abs_diff(b) <= 1),
+            "{}: {got:?}, expected {want:?}: texturing, then fog, then the alpha test",
+            mode.name()
+        );
+        let d = max_difference(&ffvk, &mesa);
+        assert!(d <= 1, "{}: ffvk and Mesa's GL differ by {d}/255", mode.name());
+    }
+    drop(texture);
+    drop(lighting);
+    drop(device);
+}
