@@ -546,3 +546,29 @@ impl Drop for Canvas {
         }
     }
 }
+
+/// A quad over its whole viewport as a triangle strip, z = 0.
+pub(crate) const QUAD: [[f32; 3]; 4] = [
+    [-1.0, -1.0, 0.0],
+    [1.0, -1.0, 0.0],
+    [-1.0, 1.0, 0.0],
+    [1.0, 1.0, 0.0],
+];
+
+/// Vertex binding 0 of `stride` bytes, per vertex.
+pub(crate) fn binding(stride: u32) -> vk::VertexInputBindingDescription {
+    vk::VertexInputBindingDescription {
+        binding: 0,
+        stride,
+        input_rate: vk::VertexInputRate::VERTEX,
+    }
+}
+
+/// The largest difference of any channel between two images of one size.
+pub(crate) fn max_difference(a: &image::RgbaImage, b: &image::RgbaImage) -> u8 {
+    a.pixels()
+        .zip(b.pixels())
+        .flat_map(|(p, q)| p.0.iter().zip(q.0).map(|(x, y)| x.abs_diff(y)))
+        .max()
+        .unwrap_or(0)
+}

@@ -10,24 +10,8 @@ use ffvk::{
 use ffvk_cli::gl_reference::{raw, render_raw_gl};
 use glam::{Mat4, Vec3, Vec4};
 
-use crate::canvas::Canvas;
+use crate::canvas::{binding, max_difference, Canvas, QUAD};
 use crate::support::save_for_inspection;
-
-/// A quad over its whole viewport as a triangle strip, z = 0.
-const QUAD: [[f32; 3]; 4] = [
-    [-1.0, -1.0, 0.0],
-    [1.0, -1.0, 0.0],
-    [-1.0, 1.0, 0.0],
-    [1.0, 1.0, 0.0],
-];
-
-fn binding(stride: u32) -> vk::VertexInputBindingDescription {
-    vk::VertexInputBindingDescription {
-        binding: 0,
-        stride,
-        input_rate: vk::VertexInputRate::VERTEX,
-    }
-}
 
 fn viewport(x: u32, y: u32, size: u32, canvas: u32) -> vk::Viewport {
     // GL's glViewport(x, y, size, size) on a target `canvas` high: rows from the top.
@@ -39,14 +23,6 @@ fn viewport(x: u32, y: u32, size: u32, canvas: u32) -> vk::Viewport {
         min_depth: 0.0,
         max_depth: 1.0,
     }
-}
-
-fn max_difference(a: &image::RgbaImage, b: &image::RgbaImage) -> u8 {
-    a.pixels()
-        .zip(b.pixels())
-        .flat_map(|(p, q)| p.0.iter().zip(q.0).map(|(x, y)| x.abs_diff(y)))
-        .max()
-        .unwrap_or(0)
 }
 
 /// (alpha, reference) pairs at the alpha test's edges on an 8-bit target: 0.5 and 0.5015 are

@@ -11,30 +11,13 @@ use ffvk::{
 use ffvk_cli::gl_reference::{raw, render_raw_gl};
 use glam::{Mat4, Vec3, Vec4};
 
-use crate::canvas::Canvas;
+use crate::canvas::{binding, max_difference, Canvas, QUAD};
 use crate::support::save_for_inspection;
 
 const SIZE: u32 = 48;
 
-fn binding(stride: u32) -> vk::VertexInputBindingDescription {
-    vk::VertexInputBindingDescription {
-        binding: 0,
-        stride,
-        input_rate: vk::VertexInputRate::VERTEX,
-    }
-}
-
 fn bytes_of<T: bytemuck::Pod>(values: &[T]) -> Vec<u8> {
     bytemuck::cast_slice(values).to_vec()
-}
-
-/// The largest difference of any channel between two images of one size.
-fn max_difference(a: &image::RgbaImage, b: &image::RgbaImage) -> u8 {
-    a.pixels()
-        .zip(b.pixels())
-        .flat_map(|(p, q)| p.0.iter().zip(q.0).map(|(x, y)| x.abs_diff(y)))
-        .max()
-        .unwrap_or(0)
 }
 
 fn assert_matches_gl(ffvk: &image::RgbaImage, gl: &image::RgbaImage, name: &str) {
@@ -197,14 +180,6 @@ fn materials_set_between_glbegin_and_glend_light_each_vertex_as_mesa_lights_pigl
     }
     drop(device);
 }
-
-/// A quad over the whole viewport as a triangle strip, z = 0.
-const QUAD: [[f32; 3]; 4] = [
-    [-1.0, -1.0, 0.0],
-    [1.0, -1.0, 0.0],
-    [-1.0, 1.0, 0.0],
-    [1.0, 1.0, 0.0],
-];
 
 /// One `Lighting`, three layouts in one frame, a viewport of its own for each draw (the
 /// caller's command between ffvk's draws): float normals; normals as GL_BYTE (all zero bytes,
