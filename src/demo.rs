@@ -2,8 +2,11 @@
 //! teapot in each lighting mode at a coarse tessellation, as separate PNGs and one labelled
 //! contact sheet; the white teapot textured in each texture environment mode, with and without
 //! separate specular color; then the glTF files of `assets/gltf` drawn directly, on a sheet of
-//! their own; and a sheet of ffvk's lighting variants: Blinn's (GL's) against Phong's specular
-//! term, and hard against soft spot edges.
+//! their own; a sheet of ffvk's lighting variants: Blinn's (GL's) against Phong's specular
+//! term, and hard against soft spot edges; and a sheet of the stages around lighting
+//! ([`stages`]).
+
+pub mod stages;
 
 use std::path::Path;
 
@@ -376,6 +379,18 @@ pub fn run(options: &RendererOptions, out: &Path) -> Result<()> {
     save_png(&sheet, &path)?;
     crate::outln!(
         "wrote {} (Blinn against Phong, hard against soft spot edges)",
+        path.display()
+    )?;
+    let stages = stages::stage_panels(&mut renderer, 256)?;
+    for p in &stages {
+        save_png(&p.image, &out.join("stages").join(format!("{}.png", p.name)))?;
+    }
+    let labelled: Vec<(String, image::RgbaImage)> = stages.into_iter().map(|p| (p.label, p.image)).collect();
+    let sheet = contact_sheet(&labelled, 4)?;
+    let path = out.join("stages_sheet.png");
+    save_png(&sheet, &path)?;
+    crate::outln!(
+        "wrote {} (fog, the alpha test, clip planes and the color sum)",
         path.display()
     )?;
     let gltf = gltf_panels(

@@ -4,7 +4,7 @@ use std::fmt::Write as _;
 
 use glam::{DVec3, DVec4};
 
-use ffvk::gl::state::{Attenuation, Face, Light, LightingMode, SpecularModel, SpotEdge};
+use ffvk::gl::state::{Attenuation, Face, FogMode, FogSource, Light, LightingMode, SpecularModel, SpotEdge};
 use ffvk::reference::{self, Coverage, EyeVertex, LightTerms, Lit};
 use ffvk::scene::Scene;
 
@@ -17,10 +17,37 @@ pub struct Hit {
     pub depth: f64,
 }
 
-/// The nearest triangle whose interior holds the center of pixel (x, y), row 0 at the top,
-/// among those the mesh's culling keeps.
-pub fn find_surface(scene: &Scene, x: u32, y: u32) -> Option<Hit> {
-    let mut best: Option<Hit> = None;
+/// The surface pixel (x, y) shows in `mode`: the first of [`surfaces_at`] whose fragment the
+/// user clip planes and the alpha test keep.
+pub fn find_surface(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Hit> {
+    surfaces_at(scene, x, y)
+        .into_iter()
+        .find(|hit| pixel_terms(scene, hit, mode).kept)
+}
+
+/// The CPU reference's terms for `hit` drawn in `mode`.
+pub fn pixel_terms(scene: &Scene, hit: &Hit, mode: LightingMode) -> reference::PixelTerms {
+    let mesh = &scene.meshes[hit.mesh];
+    let mut state = scene.draw_state(mesh);
+    state.mode = mode;
+    let verts = hit.vertices.map(|i| &mesh.data.vertices[i]);
+    let bound = mesh.texture.as_ref().map(|t| (&*t.image, &t.sampling));
+    reference::pixel_terms(
+        &state,
+        scene.modelview(mesh),
+        scene.projection,
+        verts,
+        hit.coverage,
+        bound,
+    )
+}
+
+/// Every triangle whose interior holds the center of pixel (x, y), row 0 at the top, among
+/// those the mesh's culling keeps, the one drawn on top first: by depth with the depth test
+/// on (the nearest first, the earlier drawn first among equals, as `GL_LESS` keeps it), in
+/// reverse drawing order without it.
+pub fn surfaces_at(scene: &Scene, x: u32, y: u32) -> Vec<Hit> {
+    let mut hits: Vec<Hit> = Vec::new();
     for (mi, mesh) in scene.meshes.iter().enumerate() {
         let state = scene.draw_state(mesh);
         let cull = scene.cull_face(mesh);
@@ -58,18 +85,22 @@ pub fn find_surface(scene: &Scene, x: u32, y: u32) -> Option<Hit> {
             if !(-1.0..=1.0).contains(&depth) {
                 continue;
             }
-            if best.as_ref().is_none_or(|b| !scene.depth_test || depth < b.depth) {
-                best = Some(Hit {
-                    mesh: mi,
-                    triangle: ti,
-                    vertices: idx,
-                    coverage: cov,
-                    depth,
-                });
-            }
+            hits.push(Hit {
+                mesh: mi,
+                triangle: ti,
+                vertices: idx,
+                coverage: cov,
+                depth,
+            });
         }
     }
-    best
+    if scene.depth_test {
+        // A stable sort: among equal depths the earlier drawn stays first.
+        hits.sort_by(|a, b| a.depth.total_cmp(&b.depth));
+    } else {
+        hits.reverse();
+    }
+    hits
 }
 
 fn rgb(v: DVec3) -> String {
@@ -161,18 +192,34 @@ fn terms(out: &mut String, indent: &str, lit: &Lit, indices: &[usize], lights: &
     let _ = writeln!(out, "{indent}c_sec (clamped)            {}", rgba(lit.c_sec));
 }
 
+/// Why the clip planes or the alpha test discard a fragment, or `None` where they keep it.
+fn discarded_by(terms: &reference::PixelTerms) -> Option<String> {
+    let clipped: Vec<String> = terms
+        .clip_distances
+        .iter()
+        .filter(|(_, d)| *d < 0.0)
+        .map(|(i, d)| format!("GL_CLIP_PLANE{i} (distance {d:.4} < 0)"))
+        .collect();
+    if !clipped.is_empty() {
+        return Some(format!("clipped by {}", clipped.join(" and ")));
+    }
+    let a = &terms.alpha_test;
+    (!a.passes).then(|| {
+        format!(
+            "discarded by the alpha test: alpha {} {} reference {} fails (8-bit values)",
+            a.alpha,
+            a.func.gl_name(),
+            a.reference
+        )
+    })
+}
+
 /// The explanation of pixel (x, y) in `mode`, or `None` when nothing covers it.
 pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<String> {
-    let hit = find_surface(scene, x, y)?;
-    let mesh = &scene.meshes[hit.mesh];
-    let mut state = scene.draw_state(mesh);
-    state.mode = mode;
-    let modelview = scene.modelview(mesh);
-    let verts = hit.vertices.map(|i| &mesh.data.vertices[i]);
-    let eye: [EyeVertex; 3] = verts.map(|v| reference::transform(&state, modelview, scene.projection, v));
-    let back = !hit.coverage.front;
-    let w = hit.coverage.weights;
-
+    let surfaces = surfaces_at(scene, x, y);
+    if surfaces.is_empty() {
+        return None;
+    }
     let mut out = String::new();
     let _ = writeln!(
         out,
@@ -182,6 +229,48 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
         scene.height,
         mode.name()
     );
+    for note in &scene.notes {
+        let _ = writeln!(out, "scene: {note}");
+    }
+    for hit in &surfaces {
+        let terms = pixel_terms(scene, hit, mode);
+        match discarded_by(&terms) {
+            None => {
+                explain_surface(&mut out, scene, hit, mode);
+                return Some(out);
+            }
+            Some(why) => {
+                let _ = writeln!(
+                    out,
+                    "mesh {:?} triangle {} (window depth {:.5}) covers the pixel but is {why}: what lies behind shows",
+                    scene.meshes[hit.mesh].name,
+                    hit.triangle,
+                    hit.depth * 0.5 + 0.5
+                );
+            }
+        }
+    }
+    let c = scene.clear_color;
+    let _ = writeln!(
+        out,
+        "final color: every surface here is discarded, the clear color stays {} = {}",
+        rgba(c.as_dvec4()),
+        bytes(c.as_dvec4())
+    );
+    Some(out)
+}
+
+/// Writes the terms of the surface `hit`, whose fragment is kept, at its pixel.
+fn explain_surface(out: &mut String, scene: &Scene, hit: &Hit, mode: LightingMode) {
+    let mesh = &scene.meshes[hit.mesh];
+    let mut state = scene.draw_state(mesh);
+    state.mode = mode;
+    let modelview = scene.modelview(mesh);
+    let verts = hit.vertices.map(|i| &mesh.data.vertices[i]);
+    let eye: [EyeVertex; 3] = verts.map(|v| reference::transform(&state, modelview, scene.projection, v));
+    let back = !hit.coverage.front;
+    let w = hit.coverage.weights;
+
     let _ = writeln!(
         out,
         "surface: mesh {:?} triangle {} (vertices {:?}), {} face, window depth {:.5}",
@@ -196,9 +285,6 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
         "perspective-correct weights: ({:.4}, {:.4}, {:.4})",
         w.x, w.y, w.z
     );
-    for note in &scene.notes {
-        let _ = writeln!(out, "scene: {note}");
-    }
     if let Some(meaning) = &mesh.gltf {
         let _ = writeln!(out, "glTF meaning for this mesh: {}", meaning.describe());
     }
@@ -256,7 +342,7 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
                     rgba(e.color)
                 );
                 if state.lighting {
-                    terms(&mut out, "  ", &lit, &indices, &state.lights);
+                    terms(out, "  ", &lit, &indices, &state.lights);
                 }
                 let (p, s) = reference::vertex_color(&state, e, back);
                 pri += p * weight;
@@ -289,7 +375,7 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
                     rgb(n)
                 );
                 terms(
-                    &mut out,
+                    out,
                     "  ",
                     &reference::light_face(&state, p, n, c, back),
                     &indices,
@@ -298,8 +384,7 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
             }
         }
     }
-    let bound = mesh.texture.as_ref().map(|t| (&*t.image, &t.sampling));
-    let pixel = reference::pixel_terms(&state, modelview, scene.projection, verts, hit.coverage, bound);
+    let pixel = pixel_terms(scene, hit, mode);
     match (&mesh.texture, pixel.textured) {
         (Some(t), Some(tex)) => {
             let image = &t.image;
@@ -351,12 +436,82 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
         }
         (None, _) => {}
     }
+    stage_terms(out, &state, &pixel);
     let color = pixel.color;
-    let _ = writeln!(
-        out,
-        "final color (clamp(c_pri + c_sec), alpha of c_pri; textured: C_v for c_pri) {} = {}",
-        rgba(color),
-        bytes(color)
-    );
-    Some(out)
+    let how = if pixel.fog.is_some() {
+        "clamp(c_pri + c_sec), alpha of c_pri, fogged; textured: C_v for c_pri"
+    } else {
+        "clamp(c_pri + c_sec), alpha of c_pri; textured: C_v for c_pri"
+    };
+    let _ = writeln!(out, "final color ({how}) {} = {}", rgba(color), bytes(color));
+}
+
+/// Writes the terms of the stages after texturing (the color sum with lighting off, fog, the
+/// alpha test) and the user clip planes' distances, where they are on.
+fn stage_terms(out: &mut String, state: &ffvk::gl::state::FixedFunctionState, pixel: &reference::PixelTerms) {
+    if !state.lighting && state.fragment.color_sum {
+        let _ = writeln!(
+            out,
+            "GL_COLOR_SUM with lighting off: c_sec is the current secondary color {} (clamped), sum {}",
+            rgba(pixel.c_sec),
+            rgba(pixel.summed)
+        );
+    }
+    if let Some(fog) = &pixel.fog {
+        let f = &state.fragment.fog;
+        let source = match f.source {
+            FogSource::FragmentDepth => "GL_FRAGMENT_DEPTH: c = |z_e|".to_string(),
+            FogSource::FogCoord => {
+                format!("GL_FOG_COORD: c = the fog coordinate {}", state.current_fog_coord)
+            }
+            _ => "c".into(),
+        };
+        let formula = match f.mode {
+            FogMode::Linear => format!("(end − c) / (end − start), start {} end {}", f.start, f.end),
+            FogMode::Exp => format!("exp(−density · c), density {}", f.density),
+            FogMode::Exp2 => format!("exp(−(density · c)²), density {}", f.density),
+            _ => "f".into(),
+        };
+        let _ = writeln!(out, "fog: {} = {formula}; {source}", f.mode.gl_name());
+        let c = fog.c_vertices;
+        if fog.per_vertex {
+            let _ = writeln!(
+                out,
+                "  GL_FOG_HINT GL_FASTEST: f per vertex (c {:.4}, {:.4}, {:.4}), interpolated: f {:.4}",
+                c[0], c[1], c[2], fog.f
+            );
+        } else {
+            let _ = writeln!(
+                out,
+                "  c at the pixel {:.4} (interpolated), f {:.4}",
+                fog.c, fog.f
+            );
+        }
+        let _ = writeln!(
+            out,
+            "  rgb = f · rgb + (1 − f) · fog color {}: {} -> {}",
+            rgba(f.color.as_dvec4()),
+            rgba(fog.before),
+            rgba(fog.after)
+        );
+    }
+    let a = &pixel.alpha_test;
+    if state.fragment.alpha_test.enabled {
+        let _ = writeln!(
+            out,
+            "alpha test: alpha {} {} reference {} at 8 bits (GL_ALPHA_TEST_REF {}): {}",
+            a.alpha,
+            a.func.gl_name(),
+            a.reference,
+            state.fragment.alpha_test.reference,
+            if a.passes { "kept" } else { "discarded" }
+        );
+    }
+    for (i, d) in &pixel.clip_distances {
+        let _ = writeln!(
+            out,
+            "GL_CLIP_PLANE{i}: p_eye · e = {d:.4} ({})",
+            if *d >= 0.0 { "kept" } else { "clipped" }
+        );
+    }
 }

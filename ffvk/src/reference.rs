@@ -3,6 +3,7 @@
 //! interpolation tests need to predict a pixel, and texturing ([`texture`]) with the color
 //! sum after it. Tests and `ffvk explain` use it.
 
+pub mod stages;
 pub mod texture;
 
 use glam::{DMat3, DVec3, DVec4, Mat4};
@@ -308,7 +309,7 @@ pub fn vertex_color(state: &FixedFunctionState, v: &EyeVertex, back: bool) -> (D
         // Section 2.14.6: colors are clamped "after lighting, whether enabled or not".
         return (
             v.color.clamp(DVec4::ZERO, DVec4::ONE),
-            DVec4::new(0.0, 0.0, 0.0, 1.0),
+            stages::unlit_secondary(state),
         );
     }
     let lit = light_face(state, v.eye, v.normal, v.color, back);
@@ -388,13 +389,26 @@ pub struct PixelTerms {
     pub c_sec: DVec4,
     /// What texturing did, when it applies.
     pub textured: Option<texture::Textured>,
-    /// The final color: the color sum of the (textured) primary and the secondary color.
+    /// The color sum of the (textured) primary and the secondary color.
+    pub summed: DVec4,
+    /// What fog did, where it is on.
+    pub fog: Option<stages::FogTerms>,
+    /// The final color: `summed`, fogged where fog is on.
     pub color: DVec4,
+    /// The alpha test's verdict on `color`'s alpha at an 8-bit UNORM target's precision (the
+    /// format ffvk's renderer draws to); `GL_ALWAYS` while the test is off.
+    pub alpha_test: stages::AlphaVerdict,
+    /// Each enabled user clip plane's index and its distance at the pixel (kept where ≥ 0).
+    pub clip_distances: Vec<(usize, f64)>,
+    /// Whether the fragment survives the clip planes and the alpha test: where it does not,
+    /// the pixel keeps what was drawn before.
+    pub kept: bool,
 }
 
 /// What ffvk should draw at a pixel covered by triangle `tri` (object-space vertices, in
 /// order), in `state.mode`, with `texture` bound: the CPU prediction tests compare the GPU
-/// with.
+/// with. A fragment the clip planes or the alpha test discard draws nothing: see
+/// [`pixel_terms`]' `kept`.
 pub fn pixel_color(
     state: &FixedFunctionState,
     modelview: Mat4,
@@ -433,7 +447,7 @@ pub fn pixel_terms(
             let c = v.map(|e| vertex_color(state, &e, back).0);
             (
                 c[0] * w.x + c[1] * w.y + c[2] * w.z,
-                DVec4::new(0.0, 0.0, 0.0, 1.0),
+                stages::unlit_secondary(state),
             )
         }
         LightingMode::Fragment => {
@@ -454,11 +468,26 @@ pub fn pixel_terms(
             texture::texture_fragment(&state.texture, image, sampling, stq, c_pri)
         });
     let textured_pri = textured.map_or(c_pri, |t| t.env);
+    let summed = color_sum(textured_pri, c_sec);
+    let fog = state
+        .fragment
+        .fog
+        .enabled
+        .then(|| stages::fog_pixel(state, v.map(|e| e.eye), w, summed));
+    let color = fog.map_or(summed, |f| f.after);
+    let alpha_test = stages::alpha_test(&state.fragment.alpha_test, color.w, Some(8));
+    let clip_distances = stages::clip_distances(&state.clip, at(w, &|e| e.eye));
+    let kept = alpha_test.passes && clip_distances.iter().all(|&(_, d)| d >= 0.0);
     PixelTerms {
         c_pri,
         c_sec,
         textured,
-        color: color_sum(textured_pri, c_sec),
+        summed,
+        fog,
+        color,
+        alpha_test,
+        clip_distances,
+        kept,
     }
 }
 

@@ -35,6 +35,7 @@ mod report;
 mod rooms;
 mod scene;
 mod specialization;
+mod stage_scenes;
 mod state;
 mod support;
 mod texture_conformance;

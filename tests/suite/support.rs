@@ -190,7 +190,7 @@ pub fn reference_at(
     y: u32,
     mode: ffvk::gl::state::LightingMode,
 ) -> Option<(ffvk_cli::explain::Hit, DVec4)> {
-    let hit = ffvk_cli::explain::find_surface(scene, x, y)?;
+    let hit = ffvk_cli::explain::find_surface(scene, x, y, mode)?;
     let mesh = &scene.meshes[hit.mesh];
     let mut state = scene.draw_state(mesh);
     state.mode = mode;

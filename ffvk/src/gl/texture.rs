@@ -478,6 +478,47 @@ impl TextureImage {
         TextureImage::new(size, size, rgba)
     }
 
+    /// Foliage for the alpha test: a `size`² texture (at least 8) of five leaves, opaque greens
+    /// whose shade runs along each leaf, on texels of alpha 0. Each leaf is the intersection of
+    /// two discs (a lens), so its outline is crisp: with `GL_ALPHA_TEST` `GL_GREATER` 0.5 and
+    /// linear filtering the cut follows the lens's edge.
+    pub fn leaves(size: u32) -> Result<Self, TextureError> {
+        // Centre (x, y), direction of the leaf's axis (radians), half-length: in texture units.
+        const LEAVES: [(f32, f32, f32, f32); 5] = [
+            (0.30, 0.30, 0.6, 0.22),
+            (0.70, 0.28, 2.3, 0.20),
+            (0.50, 0.55, 1.5, 0.26),
+            (0.25, 0.75, 2.6, 0.18),
+            (0.75, 0.75, 0.9, 0.21),
+        ];
+        let size = size.max(8);
+        let mut rgba = Vec::with_capacity(size as usize * size as usize * 4);
+        for j in 0..size {
+            for i in 0..size {
+                let p = glam::Vec2::new(i as f32 + 0.5, j as f32 + 0.5) / size as f32;
+                let mut texel = [0u8, 0, 0, 0];
+                for (k, &(x, y, angle, half)) in LEAVES.iter().enumerate() {
+                    let axis = glam::Vec2::from_angle(angle);
+                    let d = p - glam::Vec2::new(x, y);
+                    let (along, across) = (d.dot(axis), d.perp_dot(axis));
+                    // A lens of half-length `half` and half-width half / 2.5: the points within
+                    // radius r of two centres on the normal, each r - half / 2.5 away.
+                    let w = half / 2.5;
+                    let r = (half * half + w * w) / (2.0 * w);
+                    let inside = (along * along + (across - (r - w)).powi(2)) <= r * r
+                        && (along * along + (across + (r - w)).powi(2)) <= r * r;
+                    if inside {
+                        let shade = 0.55 + 0.45 * (0.5 + along / (2.0 * half)).clamp(0.0, 1.0);
+                        let g = (shade * (200.0 - 12.0 * k as f32)) as u8;
+                        texel = [(g as f32 * 0.35) as u8, g, (g as f32 * 0.2) as u8, 255];
+                    }
+                }
+                rgba.extend_from_slice(&texel);
+            }
+        }
+        TextureImage::new(size, size, rgba)
+    }
+
     /// Level 0's width.
     pub fn width(&self) -> u32 {
         self.levels.first().map_or(0, |l| l.width)

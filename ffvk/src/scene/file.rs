@@ -37,6 +37,9 @@ pub(super) struct SceneFile {
     pub(super) gltf_exposure: Option<ExposureSpec>,
     /// `GL_COLOR_SUM`: off (GL's default).
     pub(super) color_sum: Option<bool>,
+    /// GL's current secondary color (glSecondaryColor3f: RGB), added by the color sum with
+    /// lighting off; (0, 0, 0) by default.
+    pub(super) secondary_color: Option<Vec<f32>>,
     /// `[fog]`: GL_FOG and glFog.
     pub(super) fog: Option<FogSpec>,
     /// `[alpha_test]`: GL_ALPHA_TEST and glAlphaFunc.
@@ -274,7 +277,7 @@ pub(super) struct TextureSpec {
     pub(super) enabled: Option<bool>,
     /// A PNG or JPEG file, relative to the scene file.
     pub(super) image: Option<std::path::PathBuf>,
-    /// A built-in image: "checker".
+    /// A built-in image: "checker" or "leaves".
     pub(super) builtin: Option<String>,
     pub(super) env: Option<String>,
     pub(super) env_color: Option<Vec<f32>>,

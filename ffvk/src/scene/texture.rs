@@ -78,15 +78,17 @@ impl Builder<'_> {
             }
             (Some(path), None) => (self.texture_file(&f("image"), path)?, path.display().to_string()),
             (None, Some(name)) => {
-                word(self, &f("builtin"), name, &[("checker", ())])?;
-                let checker = TextureImage::checker(64, 8, [235, 235, 235, 255], [40, 90, 160, 255])
-                    .map_err(|e| self.field(f("builtin"), e.to_string()))?;
-                (checker, format!("builtin {name}"))
+                let image = match word(self, &f("builtin"), name, &[("checker", false), ("leaves", true)])? {
+                    false => TextureImage::checker(64, 8, [235, 235, 235, 255], [40, 90, 160, 255]),
+                    true => TextureImage::leaves(64),
+                }
+                .map_err(|e| self.field(f("builtin"), e.to_string()))?;
+                (image, format!("builtin {name}"))
             }
             (None, None) => {
                 return Err(self.field(
                     field,
-                    "no image: expected image = \"file.png\" or builtin = \"checker\"",
+                    "no image: expected image = \"file.png\" or builtin = \"checker\" or \"leaves\"",
                 ))
             }
         };

@@ -243,13 +243,18 @@ impl Fog {
 
     /// GL 2.1's fog factor for distance `c`, clamped to [0, 1] (`GL_LINEAR` with end = start,
     /// which GL leaves undefined, gives 1: no fog, as Mesa's scale of 1 with no divide does
-    /// for c = start).
-    pub fn factor(&self, c: f32) -> f32 {
+    /// for c = start), in double precision (the CPU reference's).
+    pub fn factor(&self, c: f64) -> f64 {
+        let (start, end, density) = (
+            f64::from(self.start),
+            f64::from(self.end),
+            f64::from(self.density),
+        );
         let f = match self.mode {
-            FogMode::Linear if self.end == self.start => 1.0,
-            FogMode::Linear => (self.end - c) / (self.end - self.start),
-            FogMode::Exp => (-self.density * c).exp(),
-            FogMode::Exp2 => (-(self.density * c) * (self.density * c)).exp(),
+            FogMode::Linear if end == start => 1.0,
+            FogMode::Linear => (end - c) / (end - start),
+            FogMode::Exp => (-density * c).exp(),
+            FogMode::Exp2 => (-(density * c) * (density * c)).exp(),
         };
         f.clamp(0.0, 1.0)
     }

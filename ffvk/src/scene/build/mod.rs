@@ -144,6 +144,7 @@ impl Builder<'_> {
         self.fragment_stages(
             &mut gl,
             file.color_sum,
+            file.secondary_color.as_deref(),
             file.fog.as_ref(),
             file.alpha_test.as_ref(),
         )?;

@@ -22,16 +22,30 @@ impl Builder<'_> {
             })
     }
 
-    /// `color_sum`, `[fog]` and `[alpha_test]`.
+    /// `color_sum`, `secondary_color`, `[fog]` and `[alpha_test]`.
     pub(super) fn fragment_stages(
         &self,
         gl: &mut GlState,
         color_sum: Option<bool>,
+        secondary_color: Option<&[f32]>,
         fog: Option<&FogSpec>,
         alpha: Option<&AlphaTestSpec>,
     ) -> Result<(), SceneError> {
         gl.set_enabled(Cap::ColorSum, color_sum.unwrap_or(false))
             .map_err(self.state("color_sum"))?;
+        if let Some(c) = secondary_color {
+            let &[r, g, b] = c else {
+                return Err(self.field(
+                    "secondary_color",
+                    format!(
+                        "{c:?} has {} numbers: expected 3 (RGB, as glSecondaryColor3f)",
+                        c.len()
+                    ),
+                ));
+            };
+            gl.secondary_color(glam::Vec3::new(r, g, b))
+                .map_err(self.state("secondary_color"))?;
+        }
         if let Some(f) = fog {
             if let Some(mode) = &f.mode {
                 let modes = [
