@@ -397,9 +397,13 @@ pub fn summarize(results: &[BenchResult]) -> Summary {
     let crossover_vertices = crossover(&by_vertices(BenchMode::Vertex), &by_vertices(BenchMode::Fragment));
     let crossover_pixels = crossover(&by_pixels(BenchMode::Vertex), &by_pixels(BenchMode::Fragment));
 
-    // Uber / specialized over every point that ran both.
+    // Uber / specialized over every point that ran both but the stages sweep's (its table has
+    // them), so that the summary reads as before the stages.
     let mut speedups: BTreeMap<String, Vec<f64>> = BTreeMap::new();
-    for r in results.iter().filter(|r| r.point.variant == Variant::Uber) {
+    for r in results
+        .iter()
+        .filter(|r| r.point.variant == Variant::Uber && r.point.group != Group::Stages)
+    {
         let twin = results.iter().find(|s| {
             s.point
                 == Point {
@@ -427,11 +431,11 @@ pub fn summarize(results: &[BenchResult]) -> Summary {
     };
 
     let mut gl_ratios = Vec::new();
-    // The primitives sweep has a table of its own; the summary's ratios stay the triangles'.
-    for g in results
-        .iter()
-        .filter(|r| r.point.engine == Engine::Gl && r.point.group != Group::Primitives)
-    {
+    // The primitives and stages sweeps have tables of their own; the summary's ratios stay
+    // those of lit triangles without stages.
+    for g in results.iter().filter(|r| {
+        r.point.engine == Engine::Gl && !matches!(r.point.group, Group::Primitives | Group::Stages)
+    }) {
         let twin = results.iter().find(|s| {
             s.point
                 == Point {

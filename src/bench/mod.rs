@@ -30,6 +30,7 @@ mod measure;
 mod plots;
 mod points;
 mod report;
+mod stages;
 mod suite;
 mod sweep;
 mod tables;
@@ -53,7 +54,7 @@ pub use measure::{crossover, fit_line, summarize, Costs, GlRatio, PointStats, Sp
 pub use points::{point_state, points};
 pub use report::{csv, markdown, write_outputs, CSV_COLUMNS};
 pub use suite::{generate_scenes, jobs_markdown, run_jobs_sweep, JobsPoint, SuiteConfig, SuiteReport};
-pub use sweep::{BenchMode, Engine, Group, LightKind, Point, SweepConfig, Variant, MAX_DRAWS};
+pub use sweep::{BenchMode, Engine, Group, LightKind, Point, Stage, SweepConfig, Variant, MAX_DRAWS};
 
 use measure::{measure_ffvk, GlAnchor};
 
@@ -79,10 +80,12 @@ pub struct BenchArgs {
     /// virtual GPU, else `standard`. `paths` (about 3 minutes on 2 cores): the fragment
     /// mode forward and deferred over mesh density, image size and lights, with what
     /// `FragmentPath::Auto` picks at each point. `draws` (about 2 minutes on 2 cores): the
-    /// many-draws frames alone, with their anchors. `jobs` is another kind of sweep:
+    /// many-draws frames alone, with their anchors. `stages` (about 2 minutes on 2 cores):
+    /// what fog, the alpha test, the color sum and clip planes cost in each lighting mode,
+    /// specialized and uber, and GL's cost of each. `jobs` is another kind of sweep:
     /// regression-suite throughput (`ffvk render --check` of generated scenes) with 1, 2, …
     /// worker processes.
-    #[arg(long, default_value = "auto", value_parser = ["auto", "quick", "standard", "full", "gpu", "paths", "draws", "jobs"])]
+    #[arg(long, default_value = "auto", value_parser = ["auto", "quick", "standard", "full", "gpu", "paths", "draws", "stages", "jobs"])]
     pub sweep: String,
     /// `--sweep jobs`: scenes in the generated suite (128² each).
     #[arg(long, default_value_t = 200, value_parser = clap::value_parser!(u32).range(1..=100_000),
@@ -179,6 +182,7 @@ pub fn run(args: &BenchArgs, options: &RendererOptions, program: &std::path::Pat
         "standard" => SweepConfig::standard(),
         "gpu" => SweepConfig::gpu(),
         "draws" => SweepConfig::draws_only(),
+        "stages" => SweepConfig::stages_only(),
         "paths" => {
             let probe = Renderer::new(options)?;
             SweepConfig::paths(is_gpu(&probe.device_info().device_type))

@@ -3,11 +3,11 @@
 
 use glam::{Mat4, Vec3, Vec4};
 
-use super::sweep::{BenchMode, Engine, Group, LightKind, Point, Primitive, SweepConfig, Variant};
+use super::sweep::{BenchMode, Engine, Group, LightKind, Point, Primitive, Stage, SweepConfig, Variant};
 use crate::Result;
 use ffvk::gl::state::{
-    Attenuation, Cap, Face, FixedFunctionState, GlState, LightModelParam, LightParam, MaterialParam,
-    SpecularModel, SpotEdge,
+    Attenuation, Cap, CompareFunc, Face, FixedFunctionState, FogHint, FogMode, FogParam, GlState,
+    LightModelParam, LightParam, MaterialParam, SpecularModel, SpotEdge,
 };
 
 pub(super) fn sphere_counts(stacks: u32) -> (u64, u64) {
@@ -43,6 +43,7 @@ pub fn points(config: &SweepConfig) -> Vec<Point> {
             local_viewer: false,
             draws: config.draws,
             primitive: Primitive::Triangles,
+            stage: Stage::Off,
         }
     };
     let some_variants = |everywhere: bool| {
@@ -164,6 +165,26 @@ pub fn points(config: &SweepConfig) -> Vec<Point> {
             }
         }
     }
+    // The stages around lighting on the light sweeps' sphere, each alone and all together, in
+    // every mode, specialized and uber, and GL's.
+    for stage in Stage::ALL.into_iter().filter(|_| config.stages) {
+        let with_stage = |p: Point| Point { stage, ..p };
+        for mode in BenchMode::ALL {
+            for variant in [Variant::Specialized, Variant::Uber] {
+                out.push(with_stage(base(Group::Stages, Engine::Ffvk, mode, variant)));
+            }
+        }
+        if config.gl {
+            for mode in GL_MODES {
+                out.push(with_stage(base(
+                    Group::Stages,
+                    Engine::Gl,
+                    mode,
+                    Variant::FixedFunction,
+                )));
+            }
+        }
+    }
     // Fragment lighting's cost on the dense mesh, ffvk's modes only (GL has no fragment mode).
     let (vertices, triangles) = sphere_counts(config.fragment_stacks);
     for &size in &config.fragment_sizes {
@@ -212,6 +233,7 @@ pub fn points(config: &SweepConfig) -> Vec<Point> {
 pub fn point_state(point: &Point) -> Result<FixedFunctionState> {
     let mut gl = GlState::new();
     gl.lighting_mode(point.mode.lighting_mode());
+    set_stage(&mut gl, point.stage)?;
     if point.mode == BenchMode::Unlit {
         return Ok(gl.lighting);
     }
@@ -273,6 +295,59 @@ pub fn point_state(point: &Point) -> Result<FixedFunctionState> {
         }
     }
     Ok(gl.lighting)
+}
+
+/// Turns on the stages of `stage` as a GL program would, with the identity modelview (the
+/// sphere's center is at z_e = -2.6, its radius 1): fog over the sphere's depth, an alpha
+/// test and clip planes every fragment passes, so that a point costs the stage's work and
+/// draws the same pixels.
+fn set_stage(gl: &mut GlState, stage: Stage) -> Result<()> {
+    let fog = |gl: &mut GlState, mode: FogMode, hint: FogHint| -> Result<()> {
+        gl.enable(Cap::Fog)?;
+        gl.fog(FogParam::Mode(mode))?;
+        gl.fog(FogParam::Start(1.5))?;
+        gl.fog(FogParam::End(4.0))?;
+        gl.fog(FogParam::Density(0.3))?;
+        gl.fog(FogParam::Color(Vec4::new(0.5, 0.55, 0.6, 1.0)))?;
+        gl.fog_hint(hint);
+        Ok(())
+    };
+    let alpha = |gl: &mut GlState| -> Result<()> {
+        gl.enable(Cap::AlphaTest)?;
+        gl.alpha_func(CompareFunc::Greater, 0.0)?;
+        Ok(())
+    };
+    let color_sum = |gl: &mut GlState| -> Result<()> {
+        gl.enable(Cap::ColorSum)?;
+        gl.secondary_color(Vec3::new(0.1, 0.05, 0.0))?;
+        Ok(())
+    };
+    let planes = |gl: &mut GlState, n: usize| -> Result<()> {
+        // Planes facing the eye from 50 units behind it: every vertex is kept.
+        for i in 0..n {
+            let a = std::f64::consts::TAU * i as f64 / 6.0;
+            gl.clip_plane(i, glam::DVec4::new(0.1 * a.cos(), 0.1 * a.sin(), -1.0, 50.0))?;
+            gl.enable(Cap::ClipPlane(i))?;
+        }
+        Ok(())
+    };
+    match stage {
+        Stage::Off => {}
+        Stage::FogLinear => fog(gl, FogMode::Linear, FogHint::DontCare)?,
+        Stage::FogExp2 => fog(gl, FogMode::Exp2, FogHint::DontCare)?,
+        Stage::FogExp2PerVertex => fog(gl, FogMode::Exp2, FogHint::Fastest)?,
+        Stage::AlphaTest => alpha(gl)?,
+        Stage::ColorSum => color_sum(gl)?,
+        Stage::ClipPlane => planes(gl, 1)?,
+        Stage::ClipPlanes6 => planes(gl, 6)?,
+        Stage::All => {
+            fog(gl, FogMode::Linear, FogHint::DontCare)?;
+            alpha(gl)?;
+            color_sum(gl)?;
+            planes(gl, 6)?;
+        }
+    }
+    Ok(())
 }
 
 /// The modelview of each of the point's draws and the GL projection (square image). Draw

@@ -22,7 +22,7 @@ use crate::{write_file, Error, Result};
 // The files.
 
 /// The CSV columns, in order.
-pub const CSV_COLUMNS: [&str; 40] = [
+pub const CSV_COLUMNS: [&str; 41] = [
     "group",
     "engine",
     "mode",
@@ -38,6 +38,7 @@ pub const CSV_COLUMNS: [&str; 40] = [
     "local_viewer",
     "draws",
     "primitive",
+    "stage",
     "warmup",
     "frames",
     "time_ms",
@@ -103,6 +104,7 @@ pub fn csv(report: &BenchReport) -> String {
             p.local_viewer.to_string(),
             p.draws.to_string(),
             serde_name(&p.primitive),
+            serde_name(&p.stage),
             s.warmup.to_string(),
             s.frames.to_string(),
             num(s.time_ms),
@@ -235,6 +237,17 @@ pub fn markdown(report: &BenchReport) -> String {
         if report.results.iter().any(|r| r.point.group == group) {
             let _ = write!(m, "\n### {title}\n\n{}", table.markdown());
         }
+    }
+    if report.results.iter().any(|r| r.point.group == Group::Stages) {
+        let _ = write!(
+            m,
+            "\n### The stages around lighting ({} vertices, {}², {})\n\n{}\n{}\n",
+            sphere_counts(c.base_stacks).0,
+            c.base_size,
+            lights_text(c.base_lights),
+            super::stages::stages_table(report, has_gl).markdown(),
+            super::stages::STAGES_NOTE
+        );
     }
     if !c.fragment_sizes.is_empty() {
         let _ = write!(

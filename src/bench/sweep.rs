@@ -77,6 +77,9 @@ pub struct SweepConfig {
     pub path_lights: Vec<usize>,
     /// Whether the primitives group runs.
     pub primitives: bool,
+    /// Whether the stages group runs ([`Group::Stages`]): what fog, the alpha test, the color
+    /// sum and user clip planes cost in each lighting mode.
+    pub stages: bool,
     /// ffvk's own executable, which times the zink anchor in a process of its own
     /// ([`super::zink`]); `None` leaves zink out.
     #[serde(skip)]
@@ -114,6 +117,7 @@ impl SweepConfig {
             path_sizes: Vec::new(),
             path_lights: Vec::new(),
             primitives: true,
+            stages: true,
             zink: None,
         }
     }
@@ -179,6 +183,7 @@ impl SweepConfig {
             path_sizes: SweepConfig::PATH_SIZES.to_vec(),
             path_lights: SweepConfig::PATH_LIGHTS.to_vec(),
             primitives: false,
+            stages: false,
             ..SweepConfig::quick()
         };
         match gpu {
@@ -205,7 +210,20 @@ impl SweepConfig {
             record_draws: 0,
             fragment_sizes: Vec::new(),
             primitives: false,
+            stages: false,
             ..SweepConfig::standard()
+        }
+    }
+
+    /// The stages sweep alone (about 2 minutes on 2 cores): what fog, the alpha test, the color
+    /// sum and clip planes cost in each mode, at the standard sweep's frames.
+    pub fn stages_only() -> Self {
+        SweepConfig {
+            name: "stages".into(),
+            primitives: false,
+            stages: true,
+            draw_counts: Vec::new(),
+            ..SweepConfig::draws_only()
         }
     }
 
@@ -239,6 +257,7 @@ impl SweepConfig {
             path_sizes: vec![16],
             path_lights: vec![1, 2],
             primitives: true,
+            stages: true,
             zink: None,
         }
     }
@@ -368,6 +387,63 @@ pub enum Group {
     /// The fragment mode's two paths, forward and deferred, over density, size and lights:
     /// where each wins, and what [`FragmentPath::Auto`](ffvk::FragmentPath::Auto) picks.
     Paths,
+    /// The stages around lighting ([`Stage`]), each alone and all together, in every mode.
+    Stages,
+}
+
+/// The fixed-function stages around lighting a point turns on (the stages sweep).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum Stage {
+    /// None: the pipeline of a frame without them.
+    #[default]
+    Off,
+    /// `GL_FOG` `GL_LINEAR` from the eye-space depth, per fragment.
+    FogLinear,
+    /// `GL_FOG` `GL_EXP2`, per fragment.
+    FogExp2,
+    /// `GL_FOG` `GL_EXP2` under `GL_FOG_HINT` `GL_FASTEST`: f per vertex.
+    FogExp2PerVertex,
+    /// `GL_ALPHA_TEST` `GL_GREATER` 0 (every fragment passes: the test's cost, not a saving).
+    AlphaTest,
+    /// `GL_COLOR_SUM` with a current secondary color (lit draws always sum: no change there).
+    ColorSum,
+    /// One user clip plane that cuts nothing (the distance's cost, not a saving).
+    ClipPlane,
+    /// All six user clip planes, cutting nothing.
+    ClipPlanes6,
+    /// Linear fog, the alpha test, the color sum and six clip planes together.
+    All,
+}
+
+impl Stage {
+    /// Every stage setting, in table order.
+    pub const ALL: [Stage; 9] = [
+        Stage::Off,
+        Stage::FogLinear,
+        Stage::FogExp2,
+        Stage::FogExp2PerVertex,
+        Stage::AlphaTest,
+        Stage::ColorSum,
+        Stage::ClipPlane,
+        Stage::ClipPlanes6,
+        Stage::All,
+    ];
+
+    /// How tables name it.
+    pub fn label(self) -> &'static str {
+        match self {
+            Stage::Off => "none",
+            Stage::FogLinear => "fog GL_LINEAR",
+            Stage::FogExp2 => "fog GL_EXP2",
+            Stage::FogExp2PerVertex => "fog GL_EXP2, GL_FASTEST (per vertex)",
+            Stage::AlphaTest => "alpha test GL_GREATER 0",
+            Stage::ColorSum => "GL_COLOR_SUM",
+            Stage::ClipPlane => "1 clip plane",
+            Stage::ClipPlanes6 => "6 clip planes",
+            Stage::All => "all of them",
+        }
+    }
 }
 
 /// What the sphere is drawn as.
@@ -605,12 +681,14 @@ pub struct Point {
     pub draws: u32,
     /// What the sphere is drawn as.
     pub primitive: Primitive,
+    /// The stages around lighting that are on.
+    pub stage: Stage,
 }
 
 impl Point {
     pub(super) fn label(&self) -> String {
         format!(
-            "{:?} {} {} {} {}v{} {}x{} {}×{}{}{}",
+            "{:?} {} {} {} {}v{} {}x{} {}×{}{}{}{}",
             self.group,
             self.engine.name(),
             self.mode.name(),
@@ -629,6 +707,10 @@ impl Point {
             match self.primitive {
                 Primitive::Triangles => String::new(),
                 p => format!(" {}", p.gl_name()),
+            },
+            match self.stage {
+                Stage::Off => String::new(),
+                s => format!(", {}", s.label()),
             }
         )
     }

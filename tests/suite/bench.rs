@@ -111,6 +111,27 @@ fn a_tiny_sweep_runs_every_point_and_writes_csv_json_and_plots() {
         }
     }
     assert!(ffvk_cli::bench::markdown(&report).contains("### Many draws, each with its own material"));
+    // The stages sweep: every stage setting in every mode, specialized and uber, and GL's;
+    // its table has a time in every ffvk cell.
+    for stage in ffvk_cli::bench::Stage::ALL {
+        let of_stage: Vec<_> = report
+            .results
+            .iter()
+            .filter(|r| r.point.group == Group::Stages && r.point.stage == stage)
+            .collect();
+        assert_eq!(of_stage.len(), 4 * 2 + 3, "{stage:?}");
+    }
+    let markdown = ffvk_cli::bench::markdown(&report);
+    let table = markdown
+        .split("### The stages around lighting")
+        .nth(1)
+        .expect("the stages table");
+    let all = table
+        .lines()
+        .find(|l| l.starts_with("| all of them |"))
+        .expect("the row of all the stages");
+    assert_eq!(all.matches('|').count(), 2 * 8 + 3, "{all}");
+    assert!(!all.contains('–'), "{all}");
     // The floor: each frame class through every path that draws it (lavapipe has
     // VK_EXT_multi_draw), each frame measured, in the summary against GL.
     let classes = ffvk_cli::bench::floor::frame_classes(&config.draw_counts);
