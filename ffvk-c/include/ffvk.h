@@ -162,6 +162,9 @@
 #ifndef GL_TEXTURE_COMPRESSION_HINT
 #define GL_TEXTURE_COMPRESSION_HINT 0x84EF
 #endif
+#ifndef GL_FRAGMENT_SHADER_DERIVATIVE_HINT
+#define GL_FRAGMENT_SHADER_DERIVATIVE_HINT 0x8B8B
+#endif
 #ifndef GL_DONT_CARE
 #define GL_DONT_CARE 0x1100
 #endif
@@ -563,7 +566,8 @@ typedef struct FfvkRendererCreateInfo {
    `VK_EXT_provoking_vertex` enabled with `VkPhysicalDeviceProvokingVertexFeaturesEXT::
    provokingVertexLast`; without it `GL_FLAT` draws are refused. `FFVK_FEATURE_WIDE_LINES`
    and `FFVK_FEATURE_LARGE_POINTS` are `VkPhysicalDeviceFeatures::wideLines` and
-   `largePoints`.
+   `largePoints`; `FFVK_FEATURE_CLIP_DISTANCE` is `shaderClipDistance` (draws with a user
+   clip plane enabled). `ffvkDeviceRequirements` says which bits a device will have.
    */
   uint32_t enabled_features;
   /*
@@ -865,7 +869,8 @@ extern "C" {
  glClipPlane: the plane's equation (four doubles, in object coordinates), stored in eye
  space by the inverse of the context's modelview now (GL 2.1 §2.12); enable it with
  `ffvkEnable(ctx, GL_CLIP_PLANEi)`. Drawing with a plane enabled needs
- `FFVK_FEATURE_CLIP_DISTANCE`. Errors: `GL_INVALID_ENUM` for another `plane`;
+ `FFVK_FEATURE_CLIP_DISTANCE`. `plane` is GL's enum, `GL_CLIP_PLANE0` + i (i < 6), not the
+ index. Errors: `GL_INVALID_ENUM` for another `plane`;
  `GL_INVALID_VALUE` for a null `equation`, a value that is not finite, or a singular
  modelview (ffvk's choices: GL leaves those undefined).
 
@@ -906,7 +911,8 @@ uint32_t ffvkGetError(struct FfvkContext *ctx);
 
 /*
  glEnable for `GL_LIGHTING`, `GL_LIGHTi` (i < 16), `GL_COLOR_MATERIAL`, `GL_NORMALIZE`,
- `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`. Sets `GL_INVALID_ENUM` for any other cap (a layer
+ `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_COLOR_SUM`, `GL_FOG`, `GL_ALPHA_TEST` and
+ `GL_CLIP_PLANEi` (i < 6). Sets `GL_INVALID_ENUM` for any other cap (a layer
  keeps the rest of GL's capabilities itself). Enabling `GL_COLOR_MATERIAL` writes the
  current color into the tracked material parameters, as GL does.
 
@@ -1270,15 +1276,19 @@ void ffvkLoadTextureMatrix(struct FfvkContext *ctx, const float *m);
 
 /*
  glFogf: `GL_FOG_MODE` (`GL_LINEAR`, `GL_EXP`, `GL_EXP2`), `GL_FOG_DENSITY` (≥ 0),
- `GL_FOG_START`, `GL_FOG_END` or `GL_FOG_COORD_SRC` (`GL_FOG_COORD`, `GL_FRAGMENT_DEPTH`).
- Errors: `GL_INVALID_ENUM` for another `pname` (`GL_FOG_COLOR` included: it has four values)
+ `GL_FOG_START`, `GL_FOG_END`, `GL_FOG_COORD_SRC` (`GL_FOG_COORD`, `GL_FRAGMENT_DEPTH`) or
+ `GL_FOG_INDEX` (color-index fog: kept for queries, drawing nothing in RGBA). A mode given as
+ a float that is not finite is `GL_INVALID_VALUE` (ffvk's rule for every non-finite value,
+ where GL would say `GL_INVALID_ENUM`). Errors: `GL_INVALID_ENUM` for another `pname` (`GL_FOG_COLOR` included: it has four values)
  or mode; `GL_INVALID_VALUE` for a negative density or a value that is not finite.
 
  # Safety
 
  `ctx` is null or a live context used by one thread at a time.
  */
-void ffvkFogf(struct FfvkContext *ctx, uint32_t pname, float param);
+void ffvkFogf(struct FfvkContext *ctx,
+              uint32_t pname,
+              float param);
 
 /*
  glFogi: `ffvkFogf` with an integer.
@@ -1485,12 +1495,17 @@ void ffvkGetTexEnvfv(struct FfvkContext *ctx, uint32_t target, uint32_t pname, f
 void ffvkGetTexEnviv(struct FfvkContext *ctx, uint32_t target, uint32_t pname, int32_t *params);
 
 /*
- glGetFloatv for the lighting state's names: `GL_LIGHTING`, `GL_LIGHTi`,
+ glGetFloatv for the names of the state ffvk keeps: `GL_LIGHTING`, `GL_LIGHTi`,
  `GL_COLOR_MATERIAL`, `GL_COLOR_MATERIAL_FACE`, `GL_COLOR_MATERIAL_PARAMETER`,
  `GL_NORMALIZE`, `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_LIGHT_MODEL_AMBIENT`,
  `GL_LIGHT_MODEL_LOCAL_VIEWER`, `GL_LIGHT_MODEL_TWO_SIDE`, `GL_LIGHT_MODEL_COLOR_CONTROL`,
- `GL_SHADE_MODEL`, `GL_CURRENT_COLOR`, `GL_MAX_LIGHTS` (16) and the modelview,
- projection and texture matrices. Errors: `GL_INVALID_ENUM` for any other name (a layer
+ `GL_SHADE_MODEL`, `GL_CURRENT_COLOR`, `GL_CURRENT_NORMAL`, `GL_CURRENT_TEXTURE_COORDS`,
+ `GL_MAX_LIGHTS` (16) and the modelview, projection and texture matrices; and the stages
+ around lighting: `GL_COLOR_SUM`, `GL_CURRENT_SECONDARY_COLOR`, `GL_FOG`, `GL_FOG_MODE`,
+ `GL_FOG_DENSITY`, `GL_FOG_START`, `GL_FOG_END`, `GL_FOG_COLOR`, `GL_FOG_INDEX`,
+ `GL_FOG_COORD_SRC`, `GL_FOG_HINT`, `GL_CURRENT_FOG_COORD`, `GL_ALPHA_TEST`,
+ `GL_ALPHA_TEST_FUNC`, `GL_ALPHA_TEST_REF`, `GL_CLIP_PLANEi` (enabled) and
+ `GL_MAX_CLIP_PLANES` (6). Errors: `GL_INVALID_ENUM` for any other name (a layer
  answers the rest of GL's state itself); `GL_INVALID_VALUE` for a null `params`.
 
  # Safety
@@ -1612,8 +1627,8 @@ enum FfvkResult ffvkBeginDraws(struct FfvkRenderer *renderer, VkCommandBuffer cm
  textured draw without texture coordinates),
  `FFVK_ERROR_STATE` (the context's state cannot be drawn: a soft spot cone wider than its
  cutoff, a modelview that cannot be inverted while lighting), `FFVK_ERROR_MISSING_FEATURE`
- (`GL_FLAT`, a point size or a line width the create info's `enabled_features` did not
- declare), `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN` (making the pipeline).
+ (`GL_FLAT`, a point size or a line width, or a `GL_CLIP_PLANEi` enabled, that the create
+ info's `enabled_features` did not declare), `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN` (making the pipeline).
 
  # Safety
 
@@ -1750,7 +1765,9 @@ const char *ffvkResultMessage(void);
    one whatever the device: where the device lacks the extension or the feature, ffvk takes
    the struct out of the chain (Vulkan forbids the struct of an extension not enabled);
  - `wideLines` and `largePoints` in `features->features`, where supported (line widths and
-   point sizes other than 1).
+   point sizes other than 1);
+ - `shaderClipDistance` in `features->features`, where supported (draws with a user clip
+   plane enabled).
 
  `extension_names` receives the extensions to enable (static strings, valid for the life of
  the program), to be appended to the caller's own: `*extension_count` is, on the way in, the

@@ -217,6 +217,7 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
             _ => GL_DONT_CARE,
         })),
         GL_CURRENT_FOG_COORD => Answer::Floats(vec![l.current_fog_coord]),
+        GL_FOG_INDEX => Answer::Floats(vec![c.fog_index]),
         GL_MAX_CLIP_PLANES => Answer::Int(ffvk::gl::state::MAX_CLIP_PLANES as i64),
         GL_CURRENT_TEXTURE_COORDS => Answer::Floats(l.current_texcoord.to_array().to_vec()),
         GL_MAX_LIGHTS => Answer::Int(MAX_LIGHTS as i64),
@@ -228,7 +229,7 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
                 f,
                 "pname",
                 pname,
-                "a lighting state name: GL_LIGHTING, GL_LIGHTi, GL_COLOR_MATERIAL(_FACE, _PARAMETER), GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_LIGHT_MODEL_*, GL_SHADE_MODEL, GL_CURRENT_COLOR, GL_CURRENT_NORMAL, GL_CURRENT_TEXTURE_COORDS, GL_CURRENT_SECONDARY_COLOR, GL_COLOR_SUM, GL_ALPHA_TEST(_FUNC, _REF), GL_FOG(_MODE, _DENSITY, _START, _END, _COLOR, _COORD_SRC, _HINT), GL_CURRENT_FOG_COORD, GL_CLIP_PLANEi, GL_MAX_CLIP_PLANES, GL_MAX_LIGHTS or GL_{MODELVIEW,PROJECTION,TEXTURE}_MATRIX",
+                "a state name: GL_LIGHTING, GL_LIGHTi, GL_COLOR_MATERIAL(_FACE, _PARAMETER), GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_LIGHT_MODEL_*, GL_SHADE_MODEL, GL_CURRENT_COLOR, GL_CURRENT_NORMAL, GL_CURRENT_TEXTURE_COORDS, GL_CURRENT_SECONDARY_COLOR, GL_COLOR_SUM, GL_ALPHA_TEST(_FUNC, _REF), GL_FOG(_MODE, _DENSITY, _START, _END, _COLOR, _COORD_SRC, _HINT, _INDEX), GL_CURRENT_FOG_COORD, GL_CLIP_PLANEi, GL_MAX_CLIP_PLANES, GL_MAX_LIGHTS or GL_{MODELVIEW,PROJECTION,TEXTURE}_MATRIX",
             ))
         }
     })
@@ -240,11 +241,21 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
 ///
 /// `out` is null, misaligned or has room for `values.len()` values.
 unsafe fn write<T: Copy>(f: &str, out: *mut T, values: &[T]) -> GlResult {
+    // SAFETY: the caller's contract, passed on.
+    unsafe { write_named(f, "params", out, values) }
+}
+
+/// [`write`] to an out-parameter named `name`.
+///
+/// # Safety
+///
+/// As [`write`].
+unsafe fn write_named<T: Copy>(f: &str, name: &str, out: *mut T, values: &[T]) -> GlResult {
     if out.is_null() {
-        return Err(crate::gl::GlError::null_out(f));
+        return Err(crate::gl::GlError::null_out(f, name));
     }
     if crate::result::misaligned(out) {
-        return Err(crate::gl::GlError::misaligned(f, "params", out.cast_const()));
+        return Err(crate::gl::GlError::misaligned(f, name, out.cast_const()));
     }
     // SAFETY: the caller's contract: out has room for as many values as the name has.
     unsafe { std::ptr::copy_nonoverlapping(values.as_ptr(), out, values.len()) };
@@ -364,12 +375,17 @@ pub unsafe extern "C" fn ffvkGetTexEnviv(ctx: *mut FfvkContext, target: u32, pna
     })
 }
 
-/// glGetFloatv for the lighting state's names: `GL_LIGHTING`, `GL_LIGHTi`,
+/// glGetFloatv for the names of the state ffvk keeps: `GL_LIGHTING`, `GL_LIGHTi`,
 /// `GL_COLOR_MATERIAL`, `GL_COLOR_MATERIAL_FACE`, `GL_COLOR_MATERIAL_PARAMETER`,
 /// `GL_NORMALIZE`, `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_LIGHT_MODEL_AMBIENT`,
 /// `GL_LIGHT_MODEL_LOCAL_VIEWER`, `GL_LIGHT_MODEL_TWO_SIDE`, `GL_LIGHT_MODEL_COLOR_CONTROL`,
-/// `GL_SHADE_MODEL`, `GL_CURRENT_COLOR`, `GL_MAX_LIGHTS` (16) and the modelview,
-/// projection and texture matrices. Errors: `GL_INVALID_ENUM` for any other name (a layer
+/// `GL_SHADE_MODEL`, `GL_CURRENT_COLOR`, `GL_CURRENT_NORMAL`, `GL_CURRENT_TEXTURE_COORDS`,
+/// `GL_MAX_LIGHTS` (16) and the modelview, projection and texture matrices; and the stages
+/// around lighting: `GL_COLOR_SUM`, `GL_CURRENT_SECONDARY_COLOR`, `GL_FOG`, `GL_FOG_MODE`,
+/// `GL_FOG_DENSITY`, `GL_FOG_START`, `GL_FOG_END`, `GL_FOG_COLOR`, `GL_FOG_INDEX`,
+/// `GL_FOG_COORD_SRC`, `GL_FOG_HINT`, `GL_CURRENT_FOG_COORD`, `GL_ALPHA_TEST`,
+/// `GL_ALPHA_TEST_FUNC`, `GL_ALPHA_TEST_REF`, `GL_CLIP_PLANEi` (enabled) and
+/// `GL_MAX_CLIP_PLANES` (6). Errors: `GL_INVALID_ENUM` for any other name (a layer
 /// answers the rest of GL's state itself); `GL_INVALID_VALUE` for a null `params`.
 ///
 /// # Safety
@@ -436,6 +452,6 @@ pub unsafe extern "C" fn ffvkGetClipPlane(ctx: *mut FfvkContext, plane: u32, equ
         let i = crate::gl::clip_plane_index(f, plane)?;
         let p = c.gl.lighting.clip.planes[i].as_dvec4().to_array();
         // SAFETY: the caller's contract on equation.
-        unsafe { write(f, equation, &p) }
+        unsafe { write_named(f, "equation", equation, &p) }
     })
 }

@@ -96,7 +96,8 @@ pub struct FfvkRendererCreateInfo {
     /// `VK_EXT_provoking_vertex` enabled with `VkPhysicalDeviceProvokingVertexFeaturesEXT::
     /// provokingVertexLast`; without it `GL_FLAT` draws are refused. `FFVK_FEATURE_WIDE_LINES`
     /// and `FFVK_FEATURE_LARGE_POINTS` are `VkPhysicalDeviceFeatures::wideLines` and
-    /// `largePoints`.
+    /// `largePoints`; `FFVK_FEATURE_CLIP_DISTANCE` is `shaderClipDistance` (draws with a user
+    /// clip plane enabled). `ffvkDeviceRequirements` says which bits a device will have.
     pub enabled_features: u32,
     /// The color attachment's format: an uncompressed core format the shaders write as floats
     /// (UNORM, SNORM, SRGB or FLOAT; not UNDEFINED, a depth or an integer format) that the
@@ -544,8 +545,8 @@ fn topology(mode: u32) -> Result<Topology, FfvkResult> {
 /// textured draw without texture coordinates),
 /// `FFVK_ERROR_STATE` (the context's state cannot be drawn: a soft spot cone wider than its
 /// cutoff, a modelview that cannot be inverted while lighting), `FFVK_ERROR_MISSING_FEATURE`
-/// (`GL_FLAT`, a point size or a line width the create info's `enabled_features` did not
-/// declare), `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN` (making the pipeline).
+/// (`GL_FLAT`, a point size or a line width, or a `GL_CLIP_PLANEi` enabled, that the create
+/// info's `enabled_features` did not declare), `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN` (making the pipeline).
 ///
 /// # Safety
 ///

@@ -159,7 +159,9 @@ unsafe fn query(
 ///   one whatever the device: where the device lacks the extension or the feature, ffvk takes
 ///   the struct out of the chain (Vulkan forbids the struct of an extension not enabled);
 /// - `wideLines` and `largePoints` in `features->features`, where supported (line widths and
-///   point sizes other than 1).
+///   point sizes other than 1);
+/// - `shaderClipDistance` in `features->features`, where supported (draws with a user clip
+///   plane enabled).
 ///
 /// `extension_names` receives the extensions to enable (static strings, valid for the life of
 /// the program), to be appended to the caller's own: `*extension_count` is, on the way in, the

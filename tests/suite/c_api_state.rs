@@ -1035,9 +1035,9 @@ fn sequences() -> Vec<(String, Vec<Step>)> {
             vec![(FOG_COORD_SRC, 1)],
         ),
         (
-            "glFogf(GL_FOG_INDEX, 3) (color-index fog: taken, no effect)",
+            "glFogf(GL_FOG_INDEX, 3) (color-index fog: taken, no effect, and queried)",
             vec![c(Fogf(0x0B61, 3.0))],
-            vec![(FOG_MODE, 1)],
+            vec![(FOG_MODE, 1), (0x0B61, 1)],
         ),
         (
             "glFogf(bad pname)",
@@ -1062,6 +1062,11 @@ fn sequences() -> Vec<(String, Vec<Step>)> {
         (
             "glHint(GL_FOG_HINT, bad)",
             vec![c(Hint(FOG_HINT, 0x1234))],
+            vec![(FOG_HINT, 1)],
+        ),
+        (
+            "glHint(GL_FRAGMENT_SHADER_DERIVATIVE_HINT, GL_NICEST) (GL 2.0's target, no effect)",
+            vec![c(Hint(0x8B8B, NICEST))],
             vec![(FOG_HINT, 1)],
         ),
         (

@@ -688,6 +688,26 @@ fn user_clip_planes_cut_a_lit_quad_where_mesas_gl_cuts_it() {
 
 /// A draw with a user clip plane on a device without shaderClipDistance is refused, naming the
 /// feature and `EnabledFeatures::clip_distance`, before anything is recorded.
+/// glClipPlane needs M⁻¹ of the whole modelview: one whose 4×4 has no inverse is refused naming
+/// glClipPlane's p · M⁻¹, even where its upper 3×3 (the normal matrix's) is the identity; one
+/// whose 3×3 alone is singular takes the plane.
+#[test]
+fn a_clip_plane_under_a_modelview_without_an_inverse_is_refused_naming_glclipplane() {
+    let mut gl = GlState::new();
+    let singular_4x4 = Mat4::from_diagonal(Vec4::new(1.0, 1.0, 1.0, 0.0));
+    gl.load_modelview(singular_4x4).unwrap();
+    let e = gl.clip_plane(0, glam::DVec4::X).unwrap_err().to_string();
+    assert!(
+        e.contains("determinant of the modelview = 0") && e.contains("glClipPlane"),
+        "{e}"
+    );
+    assert_eq!(gl.lighting.clip.planes[0], Vec4::ZERO, "the plane is unchanged");
+    let singular_3x3 = Mat4::from_cols(Vec4::X, Vec4::Y, Vec4::W, Vec4::Z);
+    assert_ne!(singular_3x3.determinant(), 0.0);
+    gl.load_modelview(singular_3x3).unwrap();
+    gl.clip_plane(0, glam::DVec4::X).unwrap();
+}
+
 #[test]
 fn a_clip_plane_on_a_device_without_clip_distances_is_refused_by_name() {
     use crate::embedding::PlainDevice;

@@ -17,7 +17,8 @@ pub(crate) fn clip_plane_index(function: &str, plane: u32) -> GlResult<usize> {
 /// glClipPlane: the plane's equation (four doubles, in object coordinates), stored in eye
 /// space by the inverse of the context's modelview now (GL 2.1 §2.12); enable it with
 /// `ffvkEnable(ctx, GL_CLIP_PLANEi)`. Drawing with a plane enabled needs
-/// `FFVK_FEATURE_CLIP_DISTANCE`. Errors: `GL_INVALID_ENUM` for another `plane`;
+/// `FFVK_FEATURE_CLIP_DISTANCE`. `plane` is GL's enum, `GL_CLIP_PLANE0` + i (i < 6), not the
+/// index. Errors: `GL_INVALID_ENUM` for another `plane`;
 /// `GL_INVALID_VALUE` for a null `equation`, a value that is not finite, or a singular
 /// modelview (ffvk's choices: GL leaves those undefined).
 ///

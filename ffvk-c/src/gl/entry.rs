@@ -52,7 +52,8 @@ pub unsafe extern "C" fn ffvkGetError(ctx: *mut FfvkContext) -> u32 {
 }
 
 /// glEnable for `GL_LIGHTING`, `GL_LIGHTi` (i < 16), `GL_COLOR_MATERIAL`, `GL_NORMALIZE`,
-/// `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`. Sets `GL_INVALID_ENUM` for any other cap (a layer
+/// `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_COLOR_SUM`, `GL_FOG`, `GL_ALPHA_TEST` and
+/// `GL_CLIP_PLANEi` (i < 6). Sets `GL_INVALID_ENUM` for any other cap (a layer
 /// keeps the rest of GL's capabilities itself). Enabling `GL_COLOR_MATERIAL` writes the
 /// current color into the tracked material parameters, as GL does.
 ///

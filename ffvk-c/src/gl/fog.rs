@@ -39,7 +39,11 @@ fn set_fog(c: &mut FfvkContext, function: &str, pname: u32, v: Values) -> GlResu
         GL_FOG_END => FogParam::End(v.plain(0)),
         GL_FOG_COLOR => FogParam::Color(v.color4()),
         // Color-index fog: GL takes it, and it changes nothing in RGBA, the only mode ffvk draws.
-        GL_FOG_INDEX => return v.finite(function, "GL_FOG_INDEX", "a finite number", 1),
+        GL_FOG_INDEX => {
+            v.finite(function, "GL_FOG_INDEX", "a finite number", 1)?;
+            c.fog_index = v.plain(0);
+            return Ok(());
+        }
         GL_FOG_COORD_SRC => FogParam::CoordSrc(
             match v.as_enum(function, "GL_FOG_COORD_SRC", "GL_FOG_COORD or GL_FRAGMENT_DEPTH")? {
                 GL_FOG_COORD => FogSource::FogCoord,
@@ -72,8 +76,10 @@ fn fog_entry<'a>(
 }
 
 /// glFogf: `GL_FOG_MODE` (`GL_LINEAR`, `GL_EXP`, `GL_EXP2`), `GL_FOG_DENSITY` (≥ 0),
-/// `GL_FOG_START`, `GL_FOG_END` or `GL_FOG_COORD_SRC` (`GL_FOG_COORD`, `GL_FRAGMENT_DEPTH`).
-/// Errors: `GL_INVALID_ENUM` for another `pname` (`GL_FOG_COLOR` included: it has four values)
+/// `GL_FOG_START`, `GL_FOG_END`, `GL_FOG_COORD_SRC` (`GL_FOG_COORD`, `GL_FRAGMENT_DEPTH`) or
+/// `GL_FOG_INDEX` (color-index fog: kept for queries, drawing nothing in RGBA). A mode given as
+/// a float that is not finite is `GL_INVALID_VALUE` (ffvk's rule for every non-finite value,
+/// where GL would say `GL_INVALID_ENUM`). Errors: `GL_INVALID_ENUM` for another `pname` (`GL_FOG_COLOR` included: it has four values)
 /// or mode; `GL_INVALID_VALUE` for a negative density or a value that is not finite.
 ///
 /// # Safety
@@ -171,7 +177,8 @@ pub unsafe extern "C" fn ffvkHint(ctx: *mut FfvkContext, target: u32, mode: u32)
             | GL_LINE_SMOOTH_HINT
             | GL_POLYGON_SMOOTH_HINT
             | GL_GENERATE_MIPMAP_HINT
-            | GL_TEXTURE_COMPRESSION_HINT => {}
+            | GL_TEXTURE_COMPRESSION_HINT
+            | GL_FRAGMENT_SHADER_DERIVATIVE_HINT => {}
             other => {
                 return Err(invalid_enum(
                     F,

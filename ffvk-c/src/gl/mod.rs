@@ -40,6 +40,8 @@ pub struct FfvkContext {
     /// `GL_COLOR_INDEXES` of the front and back material: kept for queries (color-index
     /// lighting is not drawn).
     pub(crate) color_indexes: [[f32; 3]; 2],
+    /// `GL_FOG_INDEX`: kept for queries (color-index fog is not drawn).
+    pub(crate) fog_index: f32,
 }
 
 /// A GL error with its message.
@@ -62,11 +64,11 @@ impl GlError {
         }
     }
 
-    pub(crate) fn null_out(function: &str) -> GlError {
+    pub(crate) fn null_out(function: &str, name: &str) -> GlError {
         GlError {
             code: GL_INVALID_VALUE,
             message: format!(
-                "{function}: params is a null pointer: expected room for the answer (GL_INVALID_VALUE)"
+                "{function}: {name} is a null pointer: expected room for the answer (GL_INVALID_VALUE)"
             ),
         }
     }
@@ -116,6 +118,7 @@ impl FfvkContext {
             shade_model: GL_SMOOTH,
             per_fragment: false,
             color_indexes: [[0.0, 1.0, 1.0]; 2],
+            fog_index: 0.0,
         }
     }
 

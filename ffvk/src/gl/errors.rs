@@ -63,6 +63,16 @@ pub enum StateError {
         /// The determinant found.
         determinant: f32,
     },
+    /// glClipPlane under a modelview with no inverse: p · M⁻¹ is undefined (GL leaves the plane
+    /// undefined; ffvk refuses it).
+    #[error(
+        "determinant of the modelview = {determinant}: expected an invertible modelview \
+         (glClipPlane stores p · M⁻¹)"
+    )]
+    SingularClipModelview {
+        /// The determinant of the whole 4×4 modelview.
+        determinant: f64,
+    },
     /// A light index at or past [`MAX_LIGHTS`](super::state::MAX_LIGHTS) (GL's `INVALID_ENUM` for `GL_LIGHTi`).
     #[error("light index {index} is out of range: expected 0..{max} (GL_MAX_LIGHTS = {max})")]
     LightIndex {

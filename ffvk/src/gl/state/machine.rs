@@ -249,8 +249,8 @@ impl GlState {
         self.clip_plane_mut(i)?;
         let components = p.to_array().map(|c| c as f32);
         finite_vec("GL_CLIP_PLANEi", &components)?;
-        let eye = ClipPlanes::to_eye(p, self.modelview).ok_or(StateError::SingularModelview {
-            determinant: self.modelview.determinant(),
+        let eye = ClipPlanes::to_eye(p, self.modelview).ok_or(StateError::SingularClipModelview {
+            determinant: self.modelview.as_dmat4().determinant(),
         })?;
         finite_vec("GL_CLIP_PLANEi", eye.to_array().as_slice())?;
         self.lighting.clip.planes[i] = eye;
