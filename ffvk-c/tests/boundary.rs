@@ -1048,7 +1048,7 @@ fn gl_shade_model_refuses_anything_but_flat_and_smooth_with_invalid_enum() {
 }
 
 #[test]
-fn gl_get_refuses_a_name_outside_the_lighting_state_and_writes_nothing() {
+fn gl_get_refuses_a_name_outside_the_state_ffvk_keeps_and_writes_nothing() {
     let c = Ctx::busy();
     let x = c.0;
     let before = c.snapshot();
@@ -1062,7 +1062,7 @@ fn gl_get_refuses_a_name_outside_the_lighting_state_and_writes_nothing() {
                 c,
                 before,
                 INVALID_ENUM,
-                ["pname", &hex(pname), "lighting state name"],
+                ["pname", &hex(pname), "a state name: GL_LIGHTING"],
                 {
                     ffvkGetFloatv(x, pname, f.as_mut_ptr());
                     ffvkGetIntegerv(x, pname, i.as_mut_ptr());

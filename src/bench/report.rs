@@ -410,7 +410,7 @@ pub fn markdown(report: &BenchReport) -> String {
 mod tests {
     use super::*;
 
-    use crate::bench::{points, summarize, BenchEnv, LightKind, Point, PointStats, SweepConfig};
+    use crate::bench::{points, summarize, BenchEnv, LightKind, Point, PointStats, Stage, SweepConfig};
 
     /// Made-up times that grow with vertices, pixels and lights, the uber-shader and GL slower;
     /// vertex and fragment mode cross in the density and the size sweep.
@@ -434,8 +434,17 @@ mod tests {
         } else {
             1.0
         };
-        let t =
-            (0.05 + per_vertex * p.vertices as f64 + per_pixel * p.pixels as f64) * kind * viewer * variant;
+        // A stage costs 10 %, all of them 30 %.
+        let stage = match p.stage {
+            Stage::Off => 1.0,
+            Stage::All => 1.3,
+            _ => 1.1,
+        };
+        let t = (0.05 + per_vertex * p.vertices as f64 + per_pixel * p.pixels as f64)
+            * kind
+            * viewer
+            * variant
+            * stage;
         match p.variant {
             Variant::Specialized => t,
             Variant::Uber => t * 1.25,
@@ -577,6 +586,22 @@ Times are per frame in ms: the median, then the interquartile range; ffvk's from
 | GL_LINES | 0.89 (0.85–0.94) | 0.22 (0.21–0.23) | 0.17 (0.17–0.18) | 1.34 (1.27–1.41) | 0.33 (0.31–0.35) | 0.26 (0.25–0.27) | 0.67 | 0.67 |
 | GL_POINTS | 0.89 (0.85–0.94) | 0.22 (0.21–0.23) | 0.17 (0.17–0.18) | 1.34 (1.27–1.41) | 0.33 (0.31–0.35) | 0.26 (0.25–0.27) | 0.67 | 0.67 |
 
+### The stages around lighting (91 vertices, 24², 1 directional light)
+
+| stage | vertex | ÷ none | vertex uber | ÷ none | fragment | ÷ none | fragment uber | ÷ none | flat | ÷ none | unlit | ÷ none | GL smooth | ÷ none | GL unlit | ÷ none | vertex ÷ GL |
+| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |
+| none | 0.89 | 1.00 | 1.12 | 1.00 | 1.21 | 1.00 | 1.51 | 1.00 | 0.22 | 1.00 | 0.17 | 1.00 | 1.34 | 1.00 | 0.26 | 1.00 | 0.67 |
+| fog GL_LINEAR | 0.98 | 1.10 | 1.23 | 1.10 | 1.33 | 1.10 | 1.67 | 1.10 | 0.24 | 1.10 | 0.19 | 1.10 | 1.47 | 1.10 | 0.29 | 1.10 | 0.67 |
+| fog GL_EXP2 | 0.98 | 1.10 | 1.23 | 1.10 | 1.33 | 1.10 | 1.67 | 1.10 | 0.24 | 1.10 | 0.19 | 1.10 | 1.47 | 1.10 | 0.29 | 1.10 | 0.67 |
+| fog GL_EXP2, GL_FASTEST (per vertex) | 0.98 | 1.10 | 1.23 | 1.10 | 1.33 | 1.10 | 1.67 | 1.10 | 0.24 | 1.10 | 0.19 | 1.10 | 1.47 | 1.10 | 0.29 | 1.10 | 0.67 |
+| alpha test GL_GREATER 0 | 0.98 | 1.10 | 1.23 | 1.10 | 1.33 | 1.10 | 1.67 | 1.10 | 0.24 | 1.10 | 0.19 | 1.10 | 1.47 | 1.10 | 0.29 | 1.10 | 0.67 |
+| GL_COLOR_SUM | 0.98 | 1.10 | 1.23 | 1.10 | 1.33 | 1.10 | 1.67 | 1.10 | 0.24 | 1.10 | 0.19 | 1.10 | 1.47 | 1.10 | 0.29 | 1.10 | 0.67 |
+| 1 clip plane | 0.98 | 1.10 | 1.23 | 1.10 | 1.33 | 1.10 | 1.67 | 1.10 | 0.24 | 1.10 | 0.19 | 1.10 | 1.47 | 1.10 | 0.29 | 1.10 | 0.67 |
+| 6 clip planes | 0.98 | 1.10 | 1.23 | 1.10 | 1.33 | 1.10 | 1.67 | 1.10 | 0.24 | 1.10 | 0.19 | 1.10 | 1.47 | 1.10 | 0.29 | 1.10 | 0.67 |
+| all of them | 1.16 | 1.30 | 1.45 | 1.30 | 1.57 | 1.30 | 1.97 | 1.30 | 0.29 | 1.30 | 0.23 | 1.30 | 1.74 | 1.30 | 0.34 | 1.30 | 0.67 |
+
+Each stage alone, then all together, on the light sweeps' sphere; "÷ none" is the time over the same column's frame without stages. The alpha test passes every fragment and the clip planes cut nothing, so each row costs the stage's work and draws the pixels of the row "none"; lit draws always sum the secondary color, so GL_COLOR_SUM changes only the unlit column.
+
 ### Fragment lighting on a dense mesh (91 vertices, 2 directional lights)
 
 | image | path | covered pixels | fragment | vertex | unlit | fragment ÷ unlit | fragment ÷ vertex | equation runs per covered pixel | counted by |
@@ -707,7 +732,7 @@ Least-squares slopes of the sweeps above, in ns: per vertex drawn (density sweep
         assert!(!m.contains("GL smooth") && !m.contains("÷ GL"), "{m}");
         // Every line of a table has as many cells as its headings.
         let tables: Vec<&str> = m.split("\n\n").filter(|b| b.starts_with('|')).collect();
-        assert_eq!(tables.len(), 9, "{m}");
+        assert_eq!(tables.len(), 10, "{m}");
         for table in tables {
             let cells: Vec<usize> = table.lines().map(|l| l.matches(" |").count()).collect();
             assert!(cells.iter().all(|&n| n == cells[0]), "{table}");
