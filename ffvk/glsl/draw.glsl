@@ -153,6 +153,17 @@ layout(constant_id = 23) const int SPEC_FOG_SOURCE = -1;
 layout(constant_id = 24) const int SPEC_FOG_PER_VERTEX = -1;
 // The enabled user clip planes, a bit each (the `_clipped` builds write gl_ClipDistance).
 layout(constant_id = 25) const int SPEC_CLIP_PLANES = -1;
+// Points (section 3.3), the pipeline's own constants (set for points pipelines, "off" in the
+// others): whether the size falls with the distance, GL_POINT_DISTANCE_ATTENUATION's (a, b, c),
+// GL_POINT_SIZE_MIN and _MAX, and the sprite bits (1 GL_POINT_SPRITE, 2 GL_COORD_REPLACE,
+// 4 GL_POINT_SPRITE_COORD_ORIGIN GL_LOWER_LEFT).
+layout(constant_id = 26) const int SPEC_POINT_ATTENUATION = 0;
+layout(constant_id = 27) const float SPEC_POINT_ATTENUATION_A = 1.0;
+layout(constant_id = 28) const float SPEC_POINT_ATTENUATION_B = 0.0;
+layout(constant_id = 29) const float SPEC_POINT_ATTENUATION_C = 0.0;
+layout(constant_id = 30) const float SPEC_POINT_SIZE_MIN = 0.0;
+layout(constant_id = 31) const float SPEC_POINT_SIZE_MAX = 3.40282347e38;  // FLT_MAX
+layout(constant_id = 32) const int SPEC_POINT_SPRITE = 0;
 
 // A switch of the uber-shader, read from the uniform block. lavapipe 22.3 compiles a shader
 // variant for every draw whose uniforms changed when an if or a loop bound depends on uniform
@@ -257,6 +268,21 @@ vec4 apply_fog(vec4 color, float fog) {
     vec4 fogged = vec4(mix(state.fog_color.rgb, color.rgb, f), color.a);
     bool off = fog_mode() == 0u;
     return mix(fogged, color, bvec4(off));
+}
+
+// Section 3.3: the width of a point at eye position V: GL_POINT_SIZE times
+// sqrt(1 / (a + b d + c d^2)) at the eye distance d = |V.xyz| where the size is attenuated,
+// clamped to [GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX] (the maximum first: a minimum above it
+// wins), then, but for sprites, rounded to the nearest integer and at least 1 (3.3.1).
+float point_width(vec4 V) {
+    float size = SPEC_POINT_SIZE;
+    if (SPEC_POINT_ATTENUATION != 0) {
+        float d = length(V.xyz);
+        float a = SPEC_POINT_ATTENUATION_A + SPEC_POINT_ATTENUATION_B * d + SPEC_POINT_ATTENUATION_C * d * d;
+        size *= sqrt(1.0 / a);
+    }
+    size = max(min(size, SPEC_POINT_SIZE_MAX), SPEC_POINT_SIZE_MIN);
+    return (SPEC_POINT_SPRITE & 1) != 0 ? size : max(floor(size + 0.5), 1.0);
 }
 
 // Section 2.12: the distance of eye position V to user clip plane i, kept where it is >= 0;

@@ -51,9 +51,9 @@ layout(location = 4) out vec4 stq;
 #include "record.glsl"
 
 void main() {
-    // GL's point size; Vulkan leaves a point's size undefined unless it is written.
-    if (SPEC_POINTS != 0) gl_PointSize = SPEC_POINT_SIZE;
     eye_position = in_modelview * in_position;
+    // GL's point size; Vulkan leaves a point's size undefined unless it is written.
+    if (SPEC_POINTS != 0) gl_PointSize = point_width(eye_position);
     gl_Position = state.projection * eye_position;
 #ifdef FOG
     fog = fog_varying(eye_position, in_fog_coord);

@@ -35,9 +35,19 @@ vec4 texture_environment(vec4 C_f, vec4 C_s) {
     return C_f * C_s;  // TEV_MODULATE
 }
 
-// The texel at interpolated texture coordinates stq = (s, t, r, q).
+// Section 3.3 with GL_COORD_REPLACE: a sprite's texture coordinates (s, t, 0, 1), t from the
+// top (GL_UPPER_LEFT) or from the bottom (GL_LOWER_LEFT). ffvk's images have GL's top row
+// first, as Vulkan's framebuffer does, so gl_PointCoord's t is GL_UPPER_LEFT's.
+vec4 sprite_or(vec4 stq) {
+    if ((SPEC_POINT_SPRITE & 3) != 3) return stq;
+    float t = (SPEC_POINT_SPRITE & 4) != 0 ? 1.0 - gl_PointCoord.y : gl_PointCoord.y;
+    return vec4(gl_PointCoord.x, t, 0.0, 1.0);
+}
+
+// The texel at interpolated texture coordinates stq = (s, t, r, q), or a point sprite's.
 vec4 texel_at(vec4 stq) {
-    return texture(texture_2d, stq.xy / stq.w);
+    vec4 c = sprite_or(stq);
+    return texture(texture_2d, c.xy / c.w);
 }
 
 #endif

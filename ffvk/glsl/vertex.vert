@@ -47,9 +47,9 @@ layout(location = 4) out vec4 stq;
 #include "record.glsl"
 
 void main() {
-    // GL's point size; Vulkan leaves a point's size undefined unless it is written.
-    if (SPEC_POINTS != 0) gl_PointSize = SPEC_POINT_SIZE;
     vec4 V = in_modelview * in_position;
+    // GL's point size; Vulkan leaves a point's size undefined unless it is written.
+    if (SPEC_POINTS != 0) gl_PointSize = point_width(V);
     gl_Position = state.projection * V;
 #ifdef FOG
     fog = fog_varying(V, in_fog_coord);

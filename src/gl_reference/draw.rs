@@ -653,6 +653,30 @@ fn set_stages(gl: &Gl, state: &ffvk::gl::state::FixedFunctionState) {
             gl.ClipPlane(gl::CLIP_PLANE0 + i as u32, p.as_dvec4().to_array().as_ptr());
         }
     }
+    let p = &state.points;
+    // SAFETY: as above.
+    unsafe {
+        gl.PointParameterf(gl::POINT_SIZE_MIN, p.size_min);
+        gl.PointParameterf(gl::POINT_SIZE_MAX, p.size_max);
+        gl.PointParameterf(gl::POINT_FADE_THRESHOLD_SIZE, p.fade_threshold);
+        gl.PointParameterfv(
+            gl::POINT_DISTANCE_ATTENUATION,
+            p.distance_attenuation.to_array().as_ptr(),
+        );
+        gl.PointParameteri(
+            gl::POINT_SPRITE_COORD_ORIGIN,
+            match p.sprite_origin {
+                ffvk::gl::state::SpriteOrigin::LowerLeft => gl::LOWER_LEFT,
+                _ => gl::UPPER_LEFT,
+            } as GLint,
+        );
+        gl.TexEnvi(
+            gl::POINT_SPRITE,
+            gl::COORD_REPLACE,
+            state.texture.coord_replace as GLint,
+        );
+    }
+    set_enabled(gl, gl::POINT_SPRITE, p.sprite);
     set_enabled(gl, gl::FOG, fog.enabled);
     set_enabled(gl, gl::COLOR_SUM, f.color_sum);
     set_enabled(gl, gl::ALPHA_TEST, f.alpha_test.enabled);

@@ -297,6 +297,14 @@ fn specialization_constant_ids_match_the_rust_side() {
                 SpecConstant::GlSnorm => 0,
                 SpecConstant::RecordVec4s => 19,
                 SpecConstant::AlphaBits => 0,
+                // The point constants' "off" values: no attenuation, (a, b, c) = (1, 0, 0),
+                // the clamp [0, FLT_MAX], no sprite.
+                SpecConstant::PointAttenuation => 0,
+                SpecConstant::PointAttenuationA => 1.0f32.to_bits() as i32,
+                SpecConstant::PointAttenuationB | SpecConstant::PointAttenuationC => 0,
+                SpecConstant::PointSizeMin => 0,
+                SpecConstant::PointSizeMax => f32::MAX.to_bits() as i32,
+                SpecConstant::PointSprite => 0,
                 _ => -1,
             };
             assert_eq!(

@@ -28,6 +28,7 @@ mod layout;
 mod lighting;
 mod memory;
 mod outputs;
+mod points;
 mod reference;
 mod regression;
 mod render_path;

@@ -126,7 +126,8 @@ use bindings::Remembered;
 pub use super::lit::{DrawValues, LitDraw, VertexLayout};
 pub use super::options::{LightingOptions, MAX_FRAMES_IN_FLIGHT};
 use super::pipeline::{
-    PipelineConfig, Pipelines, RasterState, Specialize, VertexInput, MAX_AUTO_VARIANTS, SMALL_DRAW_VERTICES,
+    PipelineConfig, Pipelines, PointKey, RasterState, Specialize, VertexInput, MAX_AUTO_VARIANTS,
+    SMALL_DRAW_VERTICES,
 };
 use super::record::{record_in_run, Bound, RunState, Topology};
 use super::ring::{Pushed, Ring, RingUse};
@@ -199,6 +200,8 @@ struct Variant {
     clipped: bool,
     /// Fog is on: the `_fog` build.
     fogged: bool,
+    /// Its point constants ([`PointKey::OFF`] but for points).
+    points: PointKey,
 }
 
 /// The next [`Lighting`]'s number (its layouts name it, so another's are refused).
@@ -368,6 +371,7 @@ impl Lighting {
             gbuffer: false,
             clipped: state.clip.mask() != 0,
             fogged: state.fragment.fog.enabled,
+            points: PointKey::OFF,
         };
         self.pipeline_for(state, raster, variant).map(|_| ())
     }
@@ -494,6 +498,7 @@ impl Lighting {
             gbuffer: self.gbuffer && mode == LightingMode::Fragment,
             clipped: draw.state.clip.mask() != 0,
             fogged: draw.state.fragment.fog.enabled,
+            points: PointKey::of(draw.state, draw.geometry.assembly().0, Self::textured(draw)),
         };
         let found = self.last.as_ref().and_then(|last| {
             last.pipelines
@@ -748,10 +753,15 @@ impl Lighting {
             Specialize::Always => SpecKey::for_state(state).with_finite_vertices(affine),
             Specialize::Auto => {
                 let key = SpecKey::for_state(state).with_finite_vertices(affine);
-                if self
-                    .pipelines
-                    .contains(variant.layout, mode, key, raster, textured, assembly)
-                    || self.pipelines.counts().1 < MAX_AUTO_VARIANTS
+                if self.pipelines.contains(
+                    variant.layout,
+                    mode,
+                    key,
+                    raster,
+                    textured,
+                    assembly,
+                    variant.points,
+                ) || self.pipelines.counts().1 < MAX_AUTO_VARIANTS
                 {
                     key
                 } else {
@@ -765,6 +775,7 @@ impl Lighting {
             textured,
             assembly,
             (variant.gbuffer, variant.clipped, variant.fogged),
+            variant.points,
         )
     }
 

@@ -9,7 +9,7 @@ use ash::vk;
 
 use crate::draw::record::Topology;
 use crate::error::{Error, LightingError, Result};
-use crate::gl::state::LightingMode;
+use crate::gl::state::{FixedFunctionState, LightingMode, SpriteOrigin};
 use crate::gpu::layout::{SpecConstant, SpecKey, SPEC_CONSTANT_COUNT};
 use crate::gpu::shaders;
 use crate::vk::objects::{DescriptorSetLayout, Pipeline, PipelineCache, PipelineLayout, ShaderModule};
@@ -85,12 +85,69 @@ pub(crate) fn spec_entries() -> [vk::SpecializationMapEntry; SPEC_CONSTANT_COUNT
     })
 }
 
-/// `key` with the pipeline's own constants set: the topology's (points or not) and the point
-/// size (a float constant, passed to every pipeline, the uber-shader's too).
-pub(crate) fn with_assembly(key: SpecKey, points: bool, point_size: f32) -> SpecKey {
+/// What a points pipeline is made for beyond its size (GL 2.1 §3.3): the attenuation, the
+/// clamp and the sprite, as the bits of the constants `SPEC_POINT_ATTENUATION` ..
+/// `SPEC_POINT_SPRITE`. Every other pipeline has [`PointKey::OFF`], whatever the state's points
+/// say, so that point parameters never split the pipelines of triangles and lines.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub(crate) struct PointKey {
+    /// `SPEC_POINT_ATTENUATION` .. `SPEC_POINT_SPRITE`, in `constant_id` order.
+    values: [i32; 7],
+}
+
+impl PointKey {
+    /// The constants' "off" values (the GLSL's defaults).
+    pub(crate) const OFF: PointKey = PointKey {
+        values: [0, 0x3f80_0000, 0, 0, 0, 0x7f7f_ffff, 0],
+    };
+
+    /// Whether the shader may write a size other than the draw's `glPointSize`: attenuated
+    /// points whose `GL_POINT_SIZE_MAX` lets them grow past one pixel, or a
+    /// `GL_POINT_SIZE_MIN` above one pixel.
+    fn varies_the_size(&self) -> bool {
+        let float = |i: usize| f32::from_bits(self.values[i] as u32);
+        (self.values[0] != 0 && float(5) > 1.0) || float(4) > 1.0
+    }
+
+    /// The key of a draw of `topology` under `state`, `textured` when it samples its unit.
+    pub(crate) fn of(state: &FixedFunctionState, topology: Topology, textured: bool) -> PointKey {
+        if topology != Topology::PointList {
+            return PointKey::OFF;
+        }
+        let p = &state.points;
+        let bits = |v: f32| v.to_bits() as i32;
+        let attenuated = p.attenuated();
+        let abc = if attenuated {
+            p.distance_attenuation.to_array()
+        } else {
+            [1.0, 0.0, 0.0]
+        };
+        let sprite = p.sprite as i32
+            | ((p.sprite && textured && state.texture.coord_replace) as i32) << 1
+            | ((p.sprite_origin == SpriteOrigin::LowerLeft) as i32) << 2;
+        PointKey {
+            values: [
+                attenuated as i32,
+                bits(abc[0]),
+                bits(abc[1]),
+                bits(abc[2]),
+                bits(p.size_min),
+                bits(p.size_max),
+                sprite,
+            ],
+        }
+    }
+}
+
+/// `key` with the pipeline's own constants set: the topology's (points or not), the point
+/// size (a float constant, passed to every pipeline, the uber-shader's too) and the other
+/// point constants ([`PointKey`]).
+pub(crate) fn with_assembly(key: SpecKey, points: bool, point_size: f32, point: PointKey) -> SpecKey {
     let mut spec = key;
     spec.values[SpecConstant::Points as usize] = points as i32;
     spec.values[SpecConstant::PointSize as usize] = point_size.to_bits() as i32;
+    let first = SpecConstant::PointAttenuation as usize;
+    spec.values[first..first + point.values.len()].copy_from_slice(&point.values);
     spec
 }
 
@@ -263,6 +320,8 @@ struct PipelineKey {
     clipped: bool,
     /// The draw is fogged: the `_fog` build.
     fogged: bool,
+    /// The point constants ([`PointKey::OFF`] but for points).
+    points: PointKey,
 }
 
 /// The G-buffer's attachments, in `fragment.frag`'s output order under `GBUFFER`: the
@@ -417,6 +476,7 @@ impl Pipelines {
             (textured, small),
             (topology, restart),
             (false, false, false),
+            PointKey::of(&FixedFunctionState::default(), topology, textured),
         )
     }
 
@@ -434,6 +494,7 @@ impl Pipelines {
         (textured, small): (bool, bool),
         (topology, restart): (Topology, bool),
         (gbuffer, clipped, fogged): (bool, bool, bool),
+        points: PointKey,
     ) -> Result<vk::Pipeline> {
         let gbuffer = gbuffer && mode == LightingMode::Fragment;
         let k = PipelineKey {
@@ -448,6 +509,7 @@ impl Pipelines {
             gbuffer,
             clipped: clipped && !gbuffer,
             fogged: fogged && !gbuffer,
+            points,
         };
         if let Some(pipeline) = self.pipelines.get(&k) {
             return Ok(pipeline.raw());
@@ -460,7 +522,7 @@ impl Pipelines {
 
     /// Whether the pipeline [`Pipelines::get`] would return for these (and vertex layout
     /// `layout`) exists already.
-    pub fn contains(
+    pub(crate) fn contains(
         &self,
         layout: u32,
         mode: LightingMode,
@@ -468,6 +530,7 @@ impl Pipelines {
         raster: RasterState,
         (textured, small): (bool, bool),
         (topology, restart): (Topology, bool),
+        points: PointKey,
     ) -> bool {
         self.pipelines.contains_key(&PipelineKey {
             layout,
@@ -481,6 +544,7 @@ impl Pipelines {
             gbuffer: false,
             clipped: key != SpecKey::UBER && key.get(SpecConstant::ClipPlanes) != 0,
             fogged: key != SpecKey::UBER && key.get(SpecConstant::FogMode) > 0,
+            points,
         })
     }
 
@@ -576,6 +640,13 @@ impl Pipelines {
                 .into());
             }
         }
+        if k.points.varies_the_size() && !device.info.large_points {
+            return Err(Error::NotEnabled {
+                feature: "largePoints",
+                flag: "large_points",
+                needed_for: "attenuated points (GL_POINT_DISTANCE_ATTENUATION) larger than 1 pixel need",
+            });
+        }
         if k.restart && !k.topology.restartable() {
             return Err(LightingError::RestartOnList {
                 topology: k.topology.gl_name(),
@@ -593,7 +664,12 @@ impl Pipelines {
         let vert = shader_module(device, name, variant.vertex, config.set_index)?;
         let frag = shader_module(device, name, variant.fragment, config.set_index)?;
         let entries = spec_entries();
-        let spec = with_assembly(k.spec, k.topology == Topology::PointList, k.raster.point_size.0);
+        let spec = with_assembly(
+            k.spec,
+            k.topology == Topology::PointList,
+            k.raster.point_size.0,
+            k.points,
+        );
         let spec = with_layout(spec, input.gl_snorm_code(), config.target.color_format, device);
         let specialization = vk::SpecializationInfo::default()
             .map_entries(&entries)

@@ -89,6 +89,9 @@ pub struct TextureUnit {
     /// The `GL_TEXTURE` matrix: (s, t, 0, 1) is multiplied by it, then s and t are divided by
     /// q per fragment (section 2.11.4). Identity by default.
     pub matrix: Mat4,
+    /// `GL_COORD_REPLACE` (glTexEnv with target `GL_POINT_SPRITE`); off by default. On, a point
+    /// sprite's fragments take the sprite's (s, t, 0, 1) as this unit's texture coordinates.
+    pub coord_replace: bool,
 }
 
 impl Default for TextureUnit {
@@ -98,6 +101,7 @@ impl Default for TextureUnit {
             env_mode: TexEnvMode::Modulate,
             env_color: Vec4::ZERO,
             matrix: Mat4::IDENTITY,
+            coord_replace: false,
         }
     }
 }

@@ -375,10 +375,28 @@ pub enum SpecConstant {
     /// `SPEC_CLIP_PLANES`: the enabled user clip planes, a bit each ([`ClipPlanes::mask`]);
     /// read by the `_clipped` variants, which write `gl_ClipDistance`.
     ClipPlanes = 25,
+    /// `SPEC_POINT_ATTENUATION`: 1 where a points pipeline's size falls with the distance
+    /// (`GL_POINT_DISTANCE_ATTENUATION` ≠ (1, 0, 0)). This and the point constants after it are
+    /// the pipeline's own, like [`SpecConstant::PointSize`]: set when a points pipeline is made
+    /// (the uber-shader's too), fixed to their "off" values in every other pipeline.
+    PointAttenuation = 26,
+    /// `SPEC_POINT_ATTENUATION_A`: a `float`, a of `GL_POINT_DISTANCE_ATTENUATION`.
+    PointAttenuationA = 27,
+    /// `SPEC_POINT_ATTENUATION_B`: a `float`, b.
+    PointAttenuationB = 28,
+    /// `SPEC_POINT_ATTENUATION_C`: a `float`, c.
+    PointAttenuationC = 29,
+    /// `SPEC_POINT_SIZE_MIN`: a `float`, `GL_POINT_SIZE_MIN`.
+    PointSizeMin = 30,
+    /// `SPEC_POINT_SIZE_MAX`: a `float`, `GL_POINT_SIZE_MAX`.
+    PointSizeMax = 31,
+    /// `SPEC_POINT_SPRITE`: bit 0 `GL_POINT_SPRITE`, bit 1 `GL_COORD_REPLACE` (of a textured
+    /// pipeline), bit 2 `GL_POINT_SPRITE_COORD_ORIGIN` `GL_LOWER_LEFT`.
+    PointSprite = 32,
 }
 
 /// How many specialization constants there are.
-pub const SPEC_CONSTANT_COUNT: usize = 26;
+pub const SPEC_CONSTANT_COUNT: usize = 33;
 
 impl SpecConstant {
     /// Every constant, in `constant_id` order.
@@ -409,6 +427,13 @@ impl SpecConstant {
         SpecConstant::FogSource,
         SpecConstant::FogPerVertex,
         SpecConstant::ClipPlanes,
+        SpecConstant::PointAttenuation,
+        SpecConstant::PointAttenuationA,
+        SpecConstant::PointAttenuationB,
+        SpecConstant::PointAttenuationC,
+        SpecConstant::PointSizeMin,
+        SpecConstant::PointSizeMax,
+        SpecConstant::PointSprite,
     ];
 
     /// The `constant_id` in the GLSL.
@@ -445,6 +470,13 @@ impl SpecConstant {
             SpecConstant::FogSource => "SPEC_FOG_SOURCE",
             SpecConstant::FogPerVertex => "SPEC_FOG_PER_VERTEX",
             SpecConstant::ClipPlanes => "SPEC_CLIP_PLANES",
+            SpecConstant::PointAttenuation => "SPEC_POINT_ATTENUATION",
+            SpecConstant::PointAttenuationA => "SPEC_POINT_ATTENUATION_A",
+            SpecConstant::PointAttenuationB => "SPEC_POINT_ATTENUATION_B",
+            SpecConstant::PointAttenuationC => "SPEC_POINT_ATTENUATION_C",
+            SpecConstant::PointSizeMin => "SPEC_POINT_SIZE_MIN",
+            SpecConstant::PointSizeMax => "SPEC_POINT_SIZE_MAX",
+            SpecConstant::PointSprite => "SPEC_POINT_SPRITE",
         }
     }
 }
@@ -593,6 +625,7 @@ pub(crate) struct StateKey {
     texture: crate::gl::texture::TextureUnit,
     fragment: crate::gl::state::FragmentStages,
     clip: ClipPlanes,
+    points: crate::gl::state::PointParameters,
     projection: Mat4,
     lights: [Light; MAX_LIGHTS],
 }
@@ -608,6 +641,7 @@ impl StateKey {
             texture: state.texture,
             fragment: state.fragment,
             clip: state.clip,
+            points: state.points,
             projection,
             lights: state.lights,
         }
@@ -624,6 +658,7 @@ impl StateKey {
             && self.texture == state.texture
             && self.fragment == state.fragment
             && self.clip == state.clip
+            && self.points == state.points
             && self.projection == projection
             && same_lights(&self.lights, &state.lights)
     }
@@ -639,6 +674,7 @@ impl PartialEq for StateKey {
             texture,
             fragment,
             clip,
+            points,
             projection,
             lights,
         } = self;
@@ -650,6 +686,7 @@ impl PartialEq for StateKey {
             && *texture == other.texture
             && *fragment == other.fragment
             && *clip == other.clip
+            && *points == other.points
             && *projection == other.projection
             && same_lights(lights, &other.lights)
     }
@@ -665,6 +702,7 @@ pub(crate) fn same_block_state(a: &FixedFunctionState, b: &FixedFunctionState) -
         && a.texture == b.texture
         && a.fragment == b.fragment
         && a.clip == b.clip
+        && a.points == b.points
         && same_lights(&a.lights, &b.lights)
 }
 

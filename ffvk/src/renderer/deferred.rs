@@ -300,7 +300,12 @@ impl Deferred {
         let vert = shader_module(&self.device, name, variant.vertex, 0)?;
         let frag = shader_module(&self.device, name, variant.fragment, 0)?;
         let entries = spec_entries();
-        let spec = with_layout(with_assembly(key, false, 1.0), 0, COLOR_FORMAT, &self.device);
+        let spec = with_layout(
+            with_assembly(key, false, 1.0, crate::draw::pipeline::PointKey::OFF),
+            0,
+            COLOR_FORMAT,
+            &self.device,
+        );
         let specialization = vk::SpecializationInfo::default()
             .map_entries(&entries)
             .data(bytemuck::bytes_of(&spec));

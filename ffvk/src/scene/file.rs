@@ -279,6 +279,8 @@ pub(super) struct TextureSpec {
     pub(super) image: Option<std::path::PathBuf>,
     /// A built-in image: "checker" or "leaves".
     pub(super) builtin: Option<String>,
+    /// `GL_COORD_REPLACE`: point sprites take the sprite's coordinates; off by default.
+    pub(super) coord_replace: Option<bool>,
     pub(super) env: Option<String>,
     pub(super) env_color: Option<Vec<f32>>,
     pub(super) min_filter: Option<String>,

@@ -132,6 +132,7 @@ impl Builder<'_> {
                 None => Vec4::ZERO,
             },
             matrix: self.texture_matrix(field, spec)?,
+            coord_replace: spec.coord_replace.unwrap_or(false),
         };
         unit.validate().map_err(self.state(field))?;
         if !unit.enabled {

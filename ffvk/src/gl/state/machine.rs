@@ -8,7 +8,7 @@ use glam::{Mat3, Mat4, Vec3, Vec4};
 use super::{
     check_light_scalar, finite_vec, in_range, Cap, ClipPlanes, ColorMaterialMode, CompareFunc, Face,
     FixedFunctionState, FogHint, FogParam, Light, LightModelParam, LightParam, LightingMode, Material,
-    MaterialParam, ShadeModel, StateError, TexEnvParam, MAX_LIGHTS,
+    MaterialParam, PointParam, ShadeModel, StateError, TexEnvParam, MAX_LIGHTS,
 };
 
 /// The fixed-function state machine: the lighting state plus the current modelview matrix,
@@ -208,6 +208,7 @@ impl GlState {
             Cap::AlphaTest => self.lighting.fragment.alpha_test.enabled = on,
             Cap::Fog => self.lighting.fragment.fog.enabled = on,
             Cap::ClipPlane(i) => *self.clip_plane_mut(i)? = on,
+            Cap::PointSprite => self.lighting.points.sprite = on,
         }
         Ok(())
     }
@@ -282,6 +283,38 @@ impl GlState {
             FogParam::CoordSrc(source) => fog.source = source,
         }
         Ok(())
+    }
+
+    /// glPointParameter: GL's values and errors (a negative minimum, maximum or fade threshold
+    /// is `GL_INVALID_VALUE`); a NaN or infinite value is an error (ffvk's choice).
+    pub fn point_parameter(&mut self, param: PointParam) -> Result<(), StateError> {
+        let points = &mut self.lighting.points;
+        match param {
+            PointParam::SizeMin(v) => {
+                in_range("GL_POINT_SIZE_MIN", v, 0.0, f32::MAX, "a value >= 0")?;
+                points.size_min = v;
+            }
+            PointParam::SizeMax(v) => {
+                in_range("GL_POINT_SIZE_MAX", v, 0.0, f32::MAX, "a value >= 0")?;
+                points.size_max = v;
+            }
+            PointParam::FadeThresholdSize(v) => {
+                in_range("GL_POINT_FADE_THRESHOLD_SIZE", v, 0.0, f32::MAX, "a value >= 0")?;
+                points.fade_threshold = v;
+            }
+            PointParam::DistanceAttenuation(abc) => {
+                finite_vec("GL_POINT_DISTANCE_ATTENUATION", abc.to_array().as_slice())?;
+                points.distance_attenuation = abc;
+            }
+            PointParam::SpriteCoordOrigin(origin) => points.sprite_origin = origin,
+        }
+        Ok(())
+    }
+
+    /// glTexEnv(GL_POINT_SPRITE, GL_COORD_REPLACE, on): whether point sprites replace the
+    /// texture unit's coordinates.
+    pub fn coord_replace(&mut self, on: bool) {
+        self.lighting.texture.coord_replace = on;
     }
 
     /// glHint(GL_FOG_HINT): `GL_FASTEST` fogs per vertex, the others per fragment.

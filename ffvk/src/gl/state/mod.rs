@@ -45,12 +45,14 @@ use super::texture::{TexEnvMode, TextureUnit};
 mod checks;
 mod clip;
 mod machine;
+mod points;
 mod stages;
 mod values;
 pub use checks::validate_light;
 use checks::validate_lights;
 pub use clip::{ClipPlanes, MAX_CLIP_PLANES};
 pub use machine::GlState;
+pub use points::{PointParam, PointParameters, SpriteOrigin};
 pub use stages::{AlphaTest, CompareFunc, Fog, FogHint, FogMode, FogParam, FogSource, FragmentStages};
 pub use values::DrawValues;
 
@@ -468,6 +470,8 @@ pub enum Cap {
     /// `GL_CLIP_PLANEi`, i in 0..[`MAX_CLIP_PLANES`]; a larger i is a
     /// [`StateError::OutOfRange`].
     ClipPlane(usize),
+    /// `GL_POINT_SPRITE`: points are sprites ([`PointParameters::sprite`]).
+    PointSprite,
 }
 
 /// Parameters of glTexEnv (target `GL_TEXTURE_ENV`).
@@ -600,6 +604,8 @@ pub struct FixedFunctionState {
     pub fragment: FragmentStages,
     /// The user clip planes (a vertex stage, §2.12).
     pub clip: ClipPlanes,
+    /// The point parameters and point sprites (§3.3), read by draws of points.
+    pub points: PointParameters,
 }
 
 /// The old name of [`FixedFunctionState`], from when it held lighting alone.
@@ -629,6 +635,7 @@ impl Default for FixedFunctionState {
             current_fog_coord: 0.0,
             fragment: FragmentStages::default(),
             clip: ClipPlanes::default(),
+            points: PointParameters::default(),
         }
     }
 }
