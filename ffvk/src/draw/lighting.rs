@@ -759,8 +759,7 @@ impl Lighting {
                     key,
                     raster,
                     textured,
-                    assembly,
-                    variant.points,
+                    (assembly.0, assembly.1, variant.points),
                 ) || self.pipelines.counts().1 < MAX_AUTO_VARIANTS
                 {
                     key

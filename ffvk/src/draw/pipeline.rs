@@ -529,8 +529,7 @@ impl Pipelines {
         key: SpecKey,
         raster: RasterState,
         (textured, small): (bool, bool),
-        (topology, restart): (Topology, bool),
-        points: PointKey,
+        (topology, restart, points): (Topology, bool, PointKey),
     ) -> bool {
         self.pipelines.contains_key(&PipelineKey {
             layout,
