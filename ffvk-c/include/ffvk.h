@@ -165,6 +165,33 @@
 #ifndef GL_FRAGMENT_SHADER_DERIVATIVE_HINT
 #define GL_FRAGMENT_SHADER_DERIVATIVE_HINT 0x8B8B
 #endif
+#ifndef GL_POINT_SIZE_MIN
+#define GL_POINT_SIZE_MIN 0x8126
+#endif
+#ifndef GL_POINT_SIZE_MAX
+#define GL_POINT_SIZE_MAX 0x8127
+#endif
+#ifndef GL_POINT_FADE_THRESHOLD_SIZE
+#define GL_POINT_FADE_THRESHOLD_SIZE 0x8128
+#endif
+#ifndef GL_POINT_DISTANCE_ATTENUATION
+#define GL_POINT_DISTANCE_ATTENUATION 0x8129
+#endif
+#ifndef GL_POINT_SPRITE
+#define GL_POINT_SPRITE 0x8861
+#endif
+#ifndef GL_COORD_REPLACE
+#define GL_COORD_REPLACE 0x8862
+#endif
+#ifndef GL_POINT_SPRITE_COORD_ORIGIN
+#define GL_POINT_SPRITE_COORD_ORIGIN 0x8CA0
+#endif
+#ifndef GL_LOWER_LEFT
+#define GL_LOWER_LEFT 0x8CA1
+#endif
+#ifndef GL_UPPER_LEFT
+#define GL_UPPER_LEFT 0x8CA2
+#endif
 #ifndef GL_DONT_CARE
 #define GL_DONT_CARE 0x1100
 #endif
@@ -911,8 +938,8 @@ uint32_t ffvkGetError(struct FfvkContext *ctx);
 
 /*
  glEnable for `GL_LIGHTING`, `GL_LIGHTi` (i < 16), `GL_COLOR_MATERIAL`, `GL_NORMALIZE`,
- `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_COLOR_SUM`, `GL_FOG`, `GL_ALPHA_TEST` and
- `GL_CLIP_PLANEi` (i < 6). Sets `GL_INVALID_ENUM` for any other cap (a layer
+ `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_COLOR_SUM`, `GL_FOG`, `GL_ALPHA_TEST`,
+ `GL_CLIP_PLANEi` (i < 6) and `GL_POINT_SPRITE`. Sets `GL_INVALID_ENUM` for any other cap (a layer
  keeps the rest of GL's capabilities itself). Enabling `GL_COLOR_MATERIAL` writes the
  current color into the tracked material parameters, as GL does.
 
@@ -1071,7 +1098,8 @@ void ffvkLightModeli(struct FfvkContext *ctx, uint32_t pname, int32_t param);
 
 /*
  glTexEnvfv on `GL_TEXTURE_ENV`: `GL_TEXTURE_ENV_MODE` (`GL_MODULATE`, `GL_REPLACE`,
- `GL_DECAL`, `GL_BLEND`, `GL_ADD`) or `GL_TEXTURE_ENV_COLOR` (4 values, clamped to [0, 1]).
+ `GL_DECAL`, `GL_BLEND`, `GL_ADD`) or `GL_TEXTURE_ENV_COLOR` (4 values, clamped to [0, 1]);
+ on `GL_POINT_SPRITE`: `GL_COORD_REPLACE` (zero is `GL_FALSE`, anything else `GL_TRUE`).
  Errors: `GL_INVALID_ENUM` for another target, `pname` or mode (`GL_COMBINE` included: ffvk
  does not draw it); `GL_INVALID_VALUE` for a value that is not finite or a null `params`.
 
@@ -1343,6 +1371,50 @@ void ffvkFogCoordf(struct FfvkContext *ctx, float coord);
 void ffvkHint(struct FfvkContext *ctx, uint32_t target, uint32_t mode);
 
 /*
+ glPointParameterf: `GL_POINT_SIZE_MIN`, `GL_POINT_SIZE_MAX`, `GL_POINT_FADE_THRESHOLD_SIZE`
+ (each ≥ 0) or `GL_POINT_SPRITE_COORD_ORIGIN` (`GL_UPPER_LEFT`, `GL_LOWER_LEFT`). A draw of
+ points takes its size from `FfvkRaster::point_size`, times √(1 / (a + b d + c d²)) at the
+ eye distance d where the attenuation is not (1, 0, 0), clamped to [min, max], and rounded
+ to whole pixels unless `GL_POINT_SPRITE` is enabled. Errors: `GL_INVALID_ENUM` for another
+ `pname` (`GL_POINT_DISTANCE_ATTENUATION` included: it has three values) or origin;
+ `GL_INVALID_VALUE` for a negative size or threshold or a value that is not finite.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkPointParameterf(struct FfvkContext *ctx, uint32_t pname, float param);
+
+/*
+ glPointParameteri: `ffvkPointParameterf` with an integer.
+
+ # Safety
+
+ As `ffvkPointParameterf`.
+ */
+void ffvkPointParameteri(struct FfvkContext *ctx, uint32_t pname, int32_t param);
+
+/*
+ glPointParameterfv: `ffvkPointParameterf`'s names, and `GL_POINT_DISTANCE_ATTENUATION`
+ (a, b, c). `GL_INVALID_VALUE` also for a null `params`.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `params` is null or points
+ at as many values as `pname` has.
+ */
+void ffvkPointParameterfv(struct FfvkContext *ctx, uint32_t pname, const float *params);
+
+/*
+ glPointParameteriv: `ffvkPointParameterfv` with integers.
+
+ # Safety
+
+ As `ffvkPointParameterfv`.
+ */
+void ffvkPointParameteriv(struct FfvkContext *ctx, uint32_t pname, const int32_t *params);
+
+/*
  Newell's teapot tessellated at `level` (1 ..= 64 steps per patch side), the mesh ffvk's
  examples and tests draw: y up (the lid), the spout toward +x and the handle toward −x,
  centred on the origin within x in [−1, 1], y in [−0.483, 0.483], z in [−0.613, 0.613]
@@ -1504,8 +1576,10 @@ void ffvkGetTexEnviv(struct FfvkContext *ctx, uint32_t target, uint32_t pname, i
  around lighting: `GL_COLOR_SUM`, `GL_CURRENT_SECONDARY_COLOR`, `GL_FOG`, `GL_FOG_MODE`,
  `GL_FOG_DENSITY`, `GL_FOG_START`, `GL_FOG_END`, `GL_FOG_COLOR`, `GL_FOG_INDEX`,
  `GL_FOG_COORD_SRC`, `GL_FOG_HINT`, `GL_CURRENT_FOG_COORD`, `GL_ALPHA_TEST`,
- `GL_ALPHA_TEST_FUNC`, `GL_ALPHA_TEST_REF`, `GL_CLIP_PLANEi` (enabled) and
- `GL_MAX_CLIP_PLANES` (6). Errors: `GL_INVALID_ENUM` for any other name (a layer
+ `GL_ALPHA_TEST_FUNC`, `GL_ALPHA_TEST_REF`, `GL_CLIP_PLANEi` (enabled),
+ `GL_MAX_CLIP_PLANES` (6); and the points': `GL_POINT_SIZE_MIN`, `GL_POINT_SIZE_MAX`,
+ `GL_POINT_FADE_THRESHOLD_SIZE`, `GL_POINT_DISTANCE_ATTENUATION` (3 values),
+ `GL_POINT_SPRITE` and `GL_POINT_SPRITE_COORD_ORIGIN`. Errors: `GL_INVALID_ENUM` for any other name (a layer
  answers the rest of GL's state itself); `GL_INVALID_VALUE` for a null `params`.
 
  # Safety
@@ -1514,7 +1588,9 @@ void ffvkGetTexEnviv(struct FfvkContext *ctx, uint32_t target, uint32_t pname, i
  for as many values as the name has (16 for a matrix). Nothing is written when an error is
  set.
  */
-void ffvkGetFloatv(struct FfvkContext *ctx, uint32_t pname, float *params);
+void ffvkGetFloatv(struct FfvkContext *ctx,
+                   uint32_t pname,
+                   float *params);
 
 /*
  glGetIntegerv: `ffvkGetFloatv`'s names as integers.

@@ -3,7 +3,9 @@
 //! booleans as 0 or 1, integers and enums as they are, floats rounded to the nearest integer,
 //! colors mapped by [(2^32 - 1) c - 1] / 2, and anything non-zero as `GL_TRUE`.
 
-use ffvk::gl::state::{Cap, ColorControl, ColorMaterialMode, Face, Light, Material, MAX_LIGHTS};
+use ffvk::gl::state::{
+    Cap, ColorControl, ColorMaterialMode, Face, Light, Material, SpriteOrigin, MAX_LIGHTS,
+};
 use ffvk::gl::texture::TexEnvMode;
 
 use crate::enums::*;
@@ -30,11 +32,9 @@ impl Answer {
         }
     }
     fn ints(&self) -> Vec<i32> {
-        let round = |v: f32| {
-            (v as f64)
-                .round_ties_even()
-                .clamp(i32::MIN as f64, i32::MAX as f64) as i32
-        };
+        // GL says "rounded to the nearest integer"; halves go away from zero, as Mesa's
+        // IROUND takes them (2.5 is 3).
+        let round = |v: f32| (v as f64).round().clamp(i32::MIN as f64, i32::MAX as f64) as i32;
         match self {
             Answer::Bool(b) => vec![*b as i32],
             Answer::Int(i) => vec![*i as i32],
@@ -71,6 +71,7 @@ pub(crate) fn is_enabled(c: &FfvkContext, cap: Cap) -> bool {
         Cap::AlphaTest => l.fragment.alpha_test.enabled,
         Cap::Fog => l.fragment.fog.enabled,
         Cap::ClipPlane(i) => l.clip.enabled.get(i).copied().unwrap_or(false),
+        Cap::PointSprite => l.points.sprite,
         _ => false,
     }
 }
@@ -123,8 +124,24 @@ fn material_answer(f: &str, c: &FfvkContext, face_enum: u32, pname: u32) -> GlRe
 }
 
 fn tex_env_answer(f: &str, c: &FfvkContext, target: u32, pname: u32) -> GlResult<Answer> {
+    if target == GL_POINT_SPRITE {
+        return match pname {
+            GL_COORD_REPLACE => Ok(Answer::Bool(c.gl.lighting.texture.coord_replace)),
+            _ => Err(invalid_enum(
+                f,
+                "pname",
+                pname,
+                "GL_COORD_REPLACE (target GL_POINT_SPRITE)",
+            )),
+        };
+    }
     if target != GL_TEXTURE_ENV {
-        return Err(invalid_enum(f, "target", target, "GL_TEXTURE_ENV"));
+        return Err(invalid_enum(
+            f,
+            "target",
+            target,
+            "GL_TEXTURE_ENV or GL_POINT_SPRITE",
+        ));
     }
     let unit = &c.gl.lighting.texture;
     Ok(match pname {
@@ -167,6 +184,7 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
         GL_COLOR_SUM => Some(Cap::ColorSum),
         GL_ALPHA_TEST => Some(Cap::AlphaTest),
         GL_FOG => Some(Cap::Fog),
+        GL_POINT_SPRITE => Some(Cap::PointSprite),
         p if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 6).contains(&p) => {
             Some(Cap::ClipPlane((p - GL_CLIP_PLANE0) as usize))
         }
@@ -218,6 +236,14 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
         })),
         GL_CURRENT_FOG_COORD => Answer::Floats(vec![l.current_fog_coord]),
         GL_FOG_INDEX => Answer::Floats(vec![c.fog_index]),
+        GL_POINT_SIZE_MIN => Answer::Floats(vec![l.points.size_min]),
+        GL_POINT_SIZE_MAX => Answer::Floats(vec![l.points.size_max]),
+        GL_POINT_FADE_THRESHOLD_SIZE => Answer::Floats(vec![l.points.fade_threshold]),
+        GL_POINT_DISTANCE_ATTENUATION => Answer::Floats(l.points.distance_attenuation.to_array().to_vec()),
+        GL_POINT_SPRITE_COORD_ORIGIN => Answer::Int(match l.points.sprite_origin {
+            SpriteOrigin::LowerLeft => GL_LOWER_LEFT,
+            _ => GL_UPPER_LEFT,
+        } as i64),
         GL_MAX_CLIP_PLANES => Answer::Int(ffvk::gl::state::MAX_CLIP_PLANES as i64),
         GL_CURRENT_TEXTURE_COORDS => Answer::Floats(l.current_texcoord.to_array().to_vec()),
         GL_MAX_LIGHTS => Answer::Int(MAX_LIGHTS as i64),
@@ -229,7 +255,7 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
                 f,
                 "pname",
                 pname,
-                "a state name: GL_LIGHTING, GL_LIGHTi, GL_COLOR_MATERIAL(_FACE, _PARAMETER), GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_LIGHT_MODEL_*, GL_SHADE_MODEL, GL_CURRENT_COLOR, GL_CURRENT_NORMAL, GL_CURRENT_TEXTURE_COORDS, GL_CURRENT_SECONDARY_COLOR, GL_COLOR_SUM, GL_ALPHA_TEST(_FUNC, _REF), GL_FOG(_MODE, _DENSITY, _START, _END, _COLOR, _COORD_SRC, _HINT, _INDEX), GL_CURRENT_FOG_COORD, GL_CLIP_PLANEi, GL_MAX_CLIP_PLANES, GL_MAX_LIGHTS or GL_{MODELVIEW,PROJECTION,TEXTURE}_MATRIX",
+                "a state name: GL_LIGHTING, GL_LIGHTi, GL_COLOR_MATERIAL(_FACE, _PARAMETER), GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_LIGHT_MODEL_*, GL_SHADE_MODEL, GL_CURRENT_COLOR, GL_CURRENT_NORMAL, GL_CURRENT_TEXTURE_COORDS, GL_CURRENT_SECONDARY_COLOR, GL_COLOR_SUM, GL_ALPHA_TEST(_FUNC, _REF), GL_FOG(_MODE, _DENSITY, _START, _END, _COLOR, _COORD_SRC, _HINT, _INDEX), GL_CURRENT_FOG_COORD, GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX, GL_POINT_FADE_THRESHOLD_SIZE, GL_POINT_DISTANCE_ATTENUATION, GL_POINT_SPRITE(_COORD_ORIGIN), GL_CLIP_PLANEi, GL_MAX_CLIP_PLANES, GL_MAX_LIGHTS or GL_{MODELVIEW,PROJECTION,TEXTURE}_MATRIX",
             ))
         }
     })
@@ -384,8 +410,10 @@ pub unsafe extern "C" fn ffvkGetTexEnviv(ctx: *mut FfvkContext, target: u32, pna
 /// around lighting: `GL_COLOR_SUM`, `GL_CURRENT_SECONDARY_COLOR`, `GL_FOG`, `GL_FOG_MODE`,
 /// `GL_FOG_DENSITY`, `GL_FOG_START`, `GL_FOG_END`, `GL_FOG_COLOR`, `GL_FOG_INDEX`,
 /// `GL_FOG_COORD_SRC`, `GL_FOG_HINT`, `GL_CURRENT_FOG_COORD`, `GL_ALPHA_TEST`,
-/// `GL_ALPHA_TEST_FUNC`, `GL_ALPHA_TEST_REF`, `GL_CLIP_PLANEi` (enabled) and
-/// `GL_MAX_CLIP_PLANES` (6). Errors: `GL_INVALID_ENUM` for any other name (a layer
+/// `GL_ALPHA_TEST_FUNC`, `GL_ALPHA_TEST_REF`, `GL_CLIP_PLANEi` (enabled),
+/// `GL_MAX_CLIP_PLANES` (6); and the points': `GL_POINT_SIZE_MIN`, `GL_POINT_SIZE_MAX`,
+/// `GL_POINT_FADE_THRESHOLD_SIZE`, `GL_POINT_DISTANCE_ATTENUATION` (3 values),
+/// `GL_POINT_SPRITE` and `GL_POINT_SPRITE_COORD_ORIGIN`. Errors: `GL_INVALID_ENUM` for any other name (a layer
 /// answers the rest of GL's state itself); `GL_INVALID_VALUE` for a null `params`.
 ///
 /// # Safety

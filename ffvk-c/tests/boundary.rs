@@ -466,6 +466,14 @@ fn context_calls() -> Vec<(&'static str, ContextCall)> {
             e("ffvkFogfv", |c| ffvkFogfv(c, 0x0B66, [0.5f32; 4].as_ptr())),
             e("ffvkFogiv", |c| ffvkFogiv(c, 0x0B65, [0x0801i32].as_ptr())),
             e("ffvkFogCoordf", |c| ffvkFogCoordf(c, 2.0)),
+            e("ffvkPointParameterf", |c| ffvkPointParameterf(c, 0x8126, 2.0)),
+            e("ffvkPointParameteri", |c| ffvkPointParameteri(c, 0x8127, 9)),
+            e("ffvkPointParameterfv", |c| {
+                ffvkPointParameterfv(c, 0x8129, [0.5f32, 0.25, 0.125].as_ptr())
+            }),
+            e("ffvkPointParameteriv", |c| {
+                ffvkPointParameteriv(c, 0x8128, [3i32].as_ptr())
+            }),
             e("ffvkHint", |c| ffvkHint(c, 0x0C54, 0x1101)),
             e("ffvkClipPlane", |c| {
                 ffvkClipPlane(c, 0x3000, [1.0f64, 0.0, 0.0, 0.5].as_ptr())

@@ -52,8 +52,8 @@ pub unsafe extern "C" fn ffvkGetError(ctx: *mut FfvkContext) -> u32 {
 }
 
 /// glEnable for `GL_LIGHTING`, `GL_LIGHTi` (i < 16), `GL_COLOR_MATERIAL`, `GL_NORMALIZE`,
-/// `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_COLOR_SUM`, `GL_FOG`, `GL_ALPHA_TEST` and
-/// `GL_CLIP_PLANEi` (i < 6). Sets `GL_INVALID_ENUM` for any other cap (a layer
+/// `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_COLOR_SUM`, `GL_FOG`, `GL_ALPHA_TEST`,
+/// `GL_CLIP_PLANEi` (i < 6) and `GL_POINT_SPRITE`. Sets `GL_INVALID_ENUM` for any other cap (a layer
 /// keeps the rest of GL's capabilities itself). Enabling `GL_COLOR_MATERIAL` writes the
 /// current color into the tracked material parameters, as GL does.
 ///
@@ -326,7 +326,8 @@ fn tex_env_entry<'a>(
 }
 
 /// glTexEnvfv on `GL_TEXTURE_ENV`: `GL_TEXTURE_ENV_MODE` (`GL_MODULATE`, `GL_REPLACE`,
-/// `GL_DECAL`, `GL_BLEND`, `GL_ADD`) or `GL_TEXTURE_ENV_COLOR` (4 values, clamped to [0, 1]).
+/// `GL_DECAL`, `GL_BLEND`, `GL_ADD`) or `GL_TEXTURE_ENV_COLOR` (4 values, clamped to [0, 1]);
+/// on `GL_POINT_SPRITE`: `GL_COORD_REPLACE` (zero is `GL_FALSE`, anything else `GL_TRUE`).
 /// Errors: `GL_INVALID_ENUM` for another target, `pname` or mode (`GL_COMBINE` included: ffvk
 /// does not draw it); `GL_INVALID_VALUE` for a value that is not finite or a null `params`.
 ///

@@ -21,11 +21,13 @@ mod clip;
 mod entry;
 mod fog;
 mod params;
+mod points;
 
 pub use clip::*;
 pub use entry::*;
 pub use fog::*;
 pub(crate) use params::{face, light_index, LIGHT_PNAMES};
+pub use points::*;
 
 /// GL's lighting state, its matrices and its error flag: what an application's GL calls set.
 /// Made by `ffvkCreateContext`, freed by `ffvkDestroyContext`. One thread at a time may call

@@ -199,8 +199,24 @@ pub(super) fn set_light_model(ctx: &mut FfvkContext, function: &str, pname: u32,
 }
 
 pub(super) fn tex_env_len(function: &str, target: u32, pname: u32, scalar: bool) -> GlResult<usize> {
+    if target == GL_POINT_SPRITE {
+        return match pname {
+            GL_COORD_REPLACE => Ok(1),
+            _ => Err(invalid_enum(
+                function,
+                "pname",
+                pname,
+                "GL_COORD_REPLACE (target GL_POINT_SPRITE)",
+            )),
+        };
+    }
     if target != GL_TEXTURE_ENV {
-        return Err(invalid_enum(function, "target", target, "GL_TEXTURE_ENV"));
+        return Err(invalid_enum(
+            function,
+            "target",
+            target,
+            "GL_TEXTURE_ENV or GL_POINT_SPRITE",
+        ));
     }
     match pname {
         GL_TEXTURE_ENV_MODE => Ok(1),
@@ -221,6 +237,12 @@ pub(super) fn tex_env_len(function: &str, target: u32, pname: u32, scalar: bool)
 }
 
 pub(super) fn set_tex_env(ctx: &mut FfvkContext, function: &str, pname: u32, v: Values) -> GlResult {
+    if pname == GL_COORD_REPLACE {
+        // GL takes any value: zero is GL_FALSE, anything else GL_TRUE.
+        v.finite(function, "GL_COORD_REPLACE", "GL_TRUE or GL_FALSE", 1)?;
+        ctx.gl.coord_replace(v.plain(0) != 0.0);
+        return Ok(());
+    }
     let param = match pname {
         GL_TEXTURE_ENV_MODE => TexEnvParam::Mode(
             match v.as_enum(
@@ -256,6 +278,7 @@ pub(crate) fn cap(function: &str, cap: u32) -> GlResult<Cap> {
         GL_TEXTURE_2D => Ok(Cap::Texture2D),
         GL_COLOR_SUM => Ok(Cap::ColorSum),
         GL_ALPHA_TEST => Ok(Cap::AlphaTest),
+        GL_POINT_SPRITE => Ok(Cap::PointSprite),
         GL_FOG => Ok(Cap::Fog),
         p if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 6).contains(&p) => Ok(Cap::ClipPlane((p - GL_CLIP_PLANE0) as usize)),
         other => light_index(function, other).map(Cap::Light).map_err(|_| {
