@@ -1,8 +1,9 @@
 //! The demo's sheet of the stages around lighting: fog in each mode (and per vertex), foliage
 //! with and without the alpha test, a section view cut by user clip planes, and the color sum
-//! with lighting off (added after texturing). Each panel is one of the asset scenes (`assets/scenes/fog.toml`,
-//! `foliage.toml`, `section.toml`), built into the binary, with the stage moved to the setting
-//! the panel names.
+//! with lighting off (added after texturing), and points: attenuated sprites, sprites of one
+//! size, plain points, sprites without the alpha test. Each panel is one of the asset scenes
+//! (`assets/scenes/fog.toml`, `foliage.toml`, `section.toml`, `particles.toml`), built into
+//! the binary, with the state moved to the setting the panel names.
 
 use std::path::Path;
 
@@ -16,6 +17,7 @@ use crate::Result;
 const FOG: &str = include_str!("../../assets/scenes/fog.toml");
 const FOLIAGE: &str = include_str!("../../assets/scenes/foliage.toml");
 const SECTION: &str = include_str!("../../assets/scenes/section.toml");
+const PARTICLES: &str = include_str!("../../assets/scenes/particles.toml");
 
 /// One panel: its file name, its label, the scene's text, and what replaces what in it.
 struct Variation {
@@ -29,7 +31,7 @@ struct Variation {
 
 const FOG_MODE: &str = "mode = \"linear\"\n";
 
-const VARIATIONS: [Variation; 12] = [
+const VARIATIONS: [Variation; 16] = [
     Variation {
         name: "fog_linear",
         label: "GL_LINEAR fog, start 2.5 end 9",
@@ -133,6 +135,41 @@ const VARIATIONS: [Variation; 12] = [
             "[image]",
             "lighting = false\ncolor_sum = true\nsecondary_color = [0.35, 0.0, 0.25]\n\n[image]",
         )],
+        mode: None,
+    },
+    Variation {
+        name: "points_attenuated_sprites",
+        label: "sprites, size / distance",
+        scene: PARTICLES,
+        file: "particles.toml",
+        edits: &[],
+        mode: None,
+    },
+    Variation {
+        name: "points_one_size",
+        label: "sprites of one size",
+        scene: PARTICLES,
+        file: "particles.toml",
+        edits: &[
+            ("distance_attenuation = [0.0, 0.0, 1.0]\n", ""),
+            ("size = 40.0", "size = 13.0"),
+        ],
+        mode: None,
+    },
+    Variation {
+        name: "points_squares",
+        label: "GL_POINTS, no sprites",
+        scene: PARTICLES,
+        file: "particles.toml",
+        edits: &[("sprite = true", "sprite = false")],
+        mode: None,
+    },
+    Variation {
+        name: "points_no_alpha_test",
+        label: "sprites, no alpha test",
+        scene: PARTICLES,
+        file: "particles.toml",
+        edits: &[("func = \"greater\"", "enabled = false\nfunc = \"greater\"")],
         mode: None,
     },
 ];

@@ -280,3 +280,52 @@ fn the_attenuation_distance_is_the_eye_distance_where_mesa_takes_the_depth() {
     assert_eq!((width_at(&ours, at), width_at(&theirs, at)), (Some(8), Some(10)));
     finish(r);
 }
+
+/// Scene files take `[points]` with GL's names and defaults, and `coord_replace` on a texture;
+/// bad values are refused naming the field.
+#[test]
+fn scene_files_take_the_points_and_refuse_bad_values_naming_the_field() {
+    use ffvk::scene::Scene;
+    use std::path::Path;
+    let text = "[points]\nsize = 12.0\nsize_min = 2.0\nsize_max = 20.0\n\
+                distance_attenuation = [0.0, 0.5, 0.25]\nfade_threshold_size = 3.0\nsprite = true\n\
+                sprite_coord_origin = \"lower_left\"\n\
+                [[meshes]]\nbuiltin = \"sphere\"\nprimitive = \"points\"\n\
+                texture = { builtin = \"disc\", coord_replace = true }\n";
+    let s = Scene::parse(text, Path::new("points.toml")).unwrap();
+    assert_eq!(s.point_size, 12.0);
+    let p = s.state.points;
+    assert_eq!((p.size_min, p.size_max, p.fade_threshold), (2.0, 20.0, 3.0));
+    assert_eq!(p.distance_attenuation, Vec3::new(0.0, 0.5, 0.25));
+    assert!(p.sprite);
+    assert_eq!(p.sprite_origin, SpriteOrigin::LowerLeft);
+    let texture = s.meshes[0].texture.as_ref().expect("a texture");
+    assert!(texture.unit.coord_replace);
+    // GL's defaults where left out.
+    let s = Scene::parse(
+        "[points]\n[[meshes]]\nbuiltin = \"sphere\"\n",
+        Path::new("d.toml"),
+    )
+    .unwrap();
+    assert_eq!((s.point_size, s.state.points), (1.0, PointParameters::default()));
+    for (bad, field) in [
+        ("[points]\nsize = 0.0", "points.size"),
+        ("[points]\nsize_min = -1.0", "points.size_min"),
+        ("[points]\nsize_max = -2.0", "points.size_max"),
+        (
+            "[points]\nfade_threshold_size = -0.5",
+            "points.fade_threshold_size",
+        ),
+        (
+            "[points]\nsprite_coord_origin = \"middle\"",
+            "points.sprite_coord_origin",
+        ),
+        ("[points]\nsprite = 3", "sprite"),
+    ] {
+        let text = format!("{bad}\n[[meshes]]\nbuiltin = \"sphere\"\n");
+        let e = Scene::parse(&text, Path::new("bad.toml"))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains(field), "{bad:?}: {e}");
+    }
+}

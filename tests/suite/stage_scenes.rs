@@ -54,6 +54,17 @@ fn scenes() -> Vec<(String, Scene)> {
         ("foliage".into(), load(&asset("foliage.toml"))),
         ("section".into(), load(&asset("section.toml"))),
         (
+            // Mesa takes |z_e| for the attenuation's distance (pinned in points.rs): the
+            // sprites here are of one size, so that the comparison is about the rest.
+            "particles_one_size".into(),
+            variant(
+                "particles_one_size",
+                &read("particles.toml")
+                    .replace("distance_attenuation = [0.0, 0.0, 1.0]\n", "")
+                    .replace("size = 40.0", "size = 13.0"),
+            ),
+        ),
+        (
             "fog_exp2_fastest".into(),
             variant(
                 "fog_exp2_fastest",
@@ -106,6 +117,7 @@ fn gl_image(scene: &Scene, mode: LightingMode) -> RgbaImage {
             state.mode = mode;
             let mut draw = GlDraw::new(&mesh.data, scene.modelview(mesh), scene.projection, state);
             draw.texture = mesh.texture.as_ref().map(|t| (&*t.image, t.sampling));
+            draw.point_size = scene.point_size;
             draw
         })
         .collect();

@@ -482,6 +482,22 @@ impl TextureImage {
         TextureImage::new(size, size, rgba)
     }
 
+    /// A particle for point sprites: a `size`² (at least 4) white disc, opaque to 0.77 of its
+    /// radius r and fading to alpha 0 at the rim (alpha min(1, 2.5 (1 − r²))), on texels of
+    /// alpha 0 outside it.
+    pub fn disc(size: u32) -> Result<Self, TextureError> {
+        let size = size.max(4);
+        let mut rgba = Vec::with_capacity(size as usize * size as usize * 4);
+        for j in 0..size {
+            for i in 0..size {
+                let p = glam::Vec2::new(i as f32 + 0.5, j as f32 + 0.5) / size as f32 * 2.0 - glam::Vec2::ONE;
+                let alpha = (2.5 * (1.0 - p.length_squared())).clamp(0.0, 1.0);
+                rgba.extend_from_slice(&[255, 255, 255, (alpha * 255.0).round() as u8]);
+            }
+        }
+        TextureImage::new(size, size, rgba)
+    }
+
     /// Foliage for the alpha test: a `size`² texture (at least 8) of five leaves, opaque greens
     /// whose shade runs along each leaf, on texels of alpha 0. Each leaf is the intersection of
     /// two discs (a lens), so its outline is crisp: with `GL_ALPHA_TEST` `GL_GREATER` 0.5 and

@@ -44,6 +44,8 @@ pub(super) struct SceneFile {
     pub(super) fog: Option<FogSpec>,
     /// `[alpha_test]`: GL_ALPHA_TEST and glAlphaFunc.
     pub(super) alpha_test: Option<AlphaTestSpec>,
+    /// `[points]`: glPointSize and glPointParameter, GL_POINT_SPRITE.
+    pub(super) points: Option<PointsSpec>,
     /// `[[clip_planes]]`: glClipPlane and GL_CLIP_PLANEi, in world space.
     #[serde(default)]
     pub(super) clip_planes: Vec<ClipPlaneSpec>,
@@ -69,6 +71,26 @@ pub(super) struct FogSpec {
     pub(super) coord: Option<f32>,
     /// GL_FOG_HINT: "dont_care" (GL's default), "fastest" or "nicest".
     pub(super) hint: Option<String>,
+}
+
+/// `[points]`: how the meshes drawn as points are drawn, GL's defaults for those left out.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct PointsSpec {
+    /// glPointSize, > 0.
+    pub(super) size: Option<f32>,
+    /// GL_POINT_SIZE_MIN, ≥ 0.
+    pub(super) size_min: Option<f32>,
+    /// GL_POINT_SIZE_MAX, ≥ 0.
+    pub(super) size_max: Option<f32>,
+    /// GL_POINT_DISTANCE_ATTENUATION, [a, b, c].
+    pub(super) distance_attenuation: Option<[f32; 3]>,
+    /// GL_POINT_FADE_THRESHOLD_SIZE, ≥ 0.
+    pub(super) fade_threshold_size: Option<f32>,
+    /// GL_POINT_SPRITE.
+    pub(super) sprite: Option<bool>,
+    /// GL_POINT_SPRITE_COORD_ORIGIN: "upper_left" (GL's default) or "lower_left".
+    pub(super) sprite_coord_origin: Option<String>,
 }
 
 /// `[alpha_test]`: GL_ALPHA_TEST (on unless `enabled = false`) and glAlphaFunc.
@@ -277,7 +299,7 @@ pub(super) struct TextureSpec {
     pub(super) enabled: Option<bool>,
     /// A PNG or JPEG file, relative to the scene file.
     pub(super) image: Option<std::path::PathBuf>,
-    /// A built-in image: "checker" or "leaves".
+    /// A built-in image: "checker", "leaves" or "disc".
     pub(super) builtin: Option<String>,
     /// `GL_COORD_REPLACE`: point sprites take the sprite's coordinates; off by default.
     pub(super) coord_replace: Option<bool>,

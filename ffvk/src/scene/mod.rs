@@ -441,6 +441,8 @@ pub struct Scene {
     pub clear_color: Vec4,
     /// Whether the depth test is on (GL_DEPTH_TEST with GL_LESS).
     pub depth_test: bool,
+    /// glPointSize of the meshes drawn as points (`[points] size`); 1 by default.
+    pub point_size: f32,
     /// How the fragment mode is drawn (`[image] fragment_path`): forward (the default),
     /// deferred where the frame allows it, or auto.
     pub fragment_path: crate::FragmentPath,
@@ -647,7 +649,7 @@ pub fn render_scene_with(
             cull_face: scene.cull_face(mesh),
             texture: mesh.texture.as_ref().and_then(texture_of),
             topology: gpu.topology(),
-            point_size: 1.0,
+            point_size: scene.point_size,
             line_width: 1.0,
         });
     }

@@ -78,19 +78,19 @@ impl Builder<'_> {
             }
             (Some(path), None) => (self.texture_file(&f("image"), path)?, path.display().to_string()),
             (None, Some(name)) => {
-                let image = match word(self, &f("builtin"), name, &[("checker", false), ("leaves", true)])? {
-                    false => TextureImage::checker(64, 8, [235, 235, 235, 255], [40, 90, 160, 255]),
-                    true => TextureImage::leaves(64),
+                let builtins = [("checker", 0), ("leaves", 1), ("disc", 2)];
+                let image = match word(self, &f("builtin"), name, &builtins)? {
+                    0 => TextureImage::checker(64, 8, [235, 235, 235, 255], [40, 90, 160, 255]),
+                    1 => TextureImage::leaves(64),
+                    _ => TextureImage::disc(32),
                 }
                 .map_err(|e| self.field(f("builtin"), e.to_string()))?;
                 (image, format!("builtin {name}"))
             }
-            (None, None) => {
-                return Err(self.field(
-                    field,
-                    "no image: expected image = \"file.png\" or builtin = \"checker\" or \"leaves\"",
-                ))
-            }
+            (None, None) => return Err(self.field(
+                field,
+                "no image: expected image = \"file.png\" or builtin = \"checker\", \"leaves\" or \"disc\"",
+            )),
         };
         let mut image = image;
         image.srgb = spec.srgb.unwrap_or(false);

@@ -141,6 +141,7 @@ impl Builder<'_> {
         if let Some(cm) = &file.color_material {
             self.color_material(&mut gl, cm)?;
         }
+        let point_size = self.points(&mut gl, file.points.as_ref())?;
         self.fragment_stages(
             &mut gl,
             file.color_sum,
@@ -318,6 +319,7 @@ impl Builder<'_> {
             height,
             clear_color,
             depth_test: file.image.depth_test.unwrap_or(true),
+            point_size,
             fragment_path,
             view,
             projection,

@@ -2,8 +2,8 @@
 //! `[[clip_planes]]`, set on the state as a GL program's calls would, errors naming the field.
 
 use super::*;
-use crate::gl::state::{CompareFunc, FogHint, FogMode, FogParam, FogSource};
-use crate::scene::file::{AlphaTestSpec, ClipPlaneSpec, FogSpec};
+use crate::gl::state::{CompareFunc, FogHint, FogMode, FogParam, FogSource, PointParam, SpriteOrigin};
+use crate::scene::file::{AlphaTestSpec, ClipPlaneSpec, FogSpec, PointsSpec};
 
 impl Builder<'_> {
     /// A word of `choices` (GL's names in lowercase, without `GL_`), or an error naming the
@@ -112,6 +112,53 @@ impl Builder<'_> {
                 .map_err(self.state("alpha_test.enabled"))?;
         }
         Ok(())
+    }
+
+    /// `[points]`: the point parameters on the state; returns glPointSize (1 by default).
+    pub(super) fn points(&self, gl: &mut GlState, spec: Option<&PointsSpec>) -> Result<f32, SceneError> {
+        let Some(p) = spec else {
+            return Ok(1.0);
+        };
+        let size = p.size.unwrap_or(1.0);
+        if !(size > 0.0 && size.is_finite()) {
+            return Err(self.field(
+                "points.size",
+                format!("{size}: expected a finite size above 0 (GL_INVALID_VALUE in GL)"),
+            ));
+        }
+        for (field, value, param) in [
+            (
+                "points.size_min",
+                p.size_min,
+                PointParam::SizeMin as fn(f32) -> PointParam,
+            ),
+            ("points.size_max", p.size_max, PointParam::SizeMax),
+            (
+                "points.fade_threshold_size",
+                p.fade_threshold_size,
+                PointParam::FadeThresholdSize,
+            ),
+        ] {
+            if let Some(v) = value {
+                gl.point_parameter(param(v)).map_err(self.state(field))?;
+            }
+        }
+        if let Some(abc) = p.distance_attenuation {
+            gl.point_parameter(PointParam::DistanceAttenuation(glam::Vec3::from_array(abc)))
+                .map_err(self.state("points.distance_attenuation"))?;
+        }
+        if let Some(origin) = &p.sprite_coord_origin {
+            let origins = [
+                ("upper_left", SpriteOrigin::UpperLeft),
+                ("lower_left", SpriteOrigin::LowerLeft),
+            ];
+            let origin = self.word("points.sprite_coord_origin", origin, &origins)?;
+            gl.point_parameter(PointParam::SpriteCoordOrigin(origin))
+                .map_err(self.state("points.sprite_coord_origin"))?;
+        }
+        gl.set_enabled(Cap::PointSprite, p.sprite.unwrap_or(false))
+            .map_err(self.state("points.sprite"))?;
+        Ok(size)
     }
 
     /// `[[clip_planes]]`, with the view loaded (world space), as lights are set.
