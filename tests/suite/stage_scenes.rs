@@ -244,7 +244,8 @@ fn borderline(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> bool {
 fn the_cpu_reference_predicts_every_stage_at_a_grid_of_probes_in_every_mode() {
     let mut r = renderer();
     let mut seen_through = 0;
-    for (name, scene) in scenes() {
+    // The CPU reference draws triangles: the particles (points) are left to points.rs.
+    for (name, scene) in scenes().into_iter().filter(|(n, _)| !n.starts_with("particles")) {
         for mode in LightingMode::ALL {
             let image = render_scene(&mut r, &scene, Some(mode)).unwrap();
             let (mut probed, mut discarded) = (0, 0);

@@ -121,20 +121,21 @@ use std::sync::Arc;
 use ash::vk;
 
 mod bindings;
+mod variant;
 use bindings::Remembered;
+use variant::Variant;
 
 pub use super::lit::{DrawValues, LitDraw, VertexLayout};
 pub use super::options::{LightingOptions, MAX_FRAMES_IN_FLIGHT};
 use super::pipeline::{
-    PipelineConfig, Pipelines, PointKey, RasterState, Specialize, VertexInput, MAX_AUTO_VARIANTS,
-    SMALL_DRAW_VERTICES,
+    PipelineConfig, Pipelines, PointKey, RasterState, Specialize, VertexInput, SMALL_DRAW_VERTICES,
 };
 use super::record::{record_in_run, Bound, RunState, Topology};
 use super::ring::{Pushed, Ring, RingUse};
 use super::texture::TextureBinding;
 use crate::error::{LightingError, Result};
 use crate::gl::state::{FixedFunctionState, LightingMode};
-use crate::gpu::layout::{DrawRecord, SpecKey, StateBlock, StateKey};
+use crate::gpu::layout::{DrawRecord, StateBlock, StateKey};
 use crate::vk::Device;
 
 /// A draw's pipeline, state block and record, ready to record ([`Lighting::stage`]).
@@ -178,30 +179,6 @@ struct LastState {
     block: Pushed,
     /// (mode, raster state, variant) and the pipeline such a draw of this state uses.
     pipelines: Vec<(LightingMode, RasterState, Variant, vk::Pipeline)>,
-}
-
-/// What besides its state and raster state picks a draw's pipeline.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-struct Variant {
-    /// The vertex layout's number.
-    layout: u32,
-    /// It samples a texture.
-    textured: bool,
-    /// A fragment-mode draw of fewer than [`SMALL_DRAW_VERTICES`] vertices.
-    small: bool,
-    /// Every vertex at w = 1 after the modelview (`SpecConstant::FiniteVertices`): an affine
-    /// modelview and a layout whose positions have no w.
-    affine: bool,
-    /// Its topology and primitive restart.
-    assembly: (Topology, bool),
-    /// The deferred path's G-buffer pass ([`Lighting::set_gbuffer`]).
-    gbuffer: bool,
-    /// Some user clip plane is enabled: the `_clipped` build.
-    clipped: bool,
-    /// Fog is on: the `_fog` build.
-    fogged: bool,
-    /// Its point constants ([`PointKey::OFF`] but for points).
-    points: PointKey,
 }
 
 /// The next [`Lighting`]'s number (its layouts name it, so another's are refused).
@@ -732,50 +709,6 @@ impl Lighting {
             draws: 1,
             record_block: staged.record_block,
         }
-    }
-
-    /// The pipeline a draw with `state` and `raster`, (textured or not, small or not, with an
-    /// affine modelview or not), uses under the [`Specialize`] policy.
-    fn pipeline_for(
-        &mut self,
-        state: &FixedFunctionState,
-        raster: RasterState,
-        variant: Variant,
-    ) -> Result<vk::Pipeline> {
-        let mode = state.mode;
-        let (textured, affine, assembly) = (
-            (variant.textured, variant.small),
-            variant.affine,
-            variant.assembly,
-        );
-        let key = match self.specialize {
-            Specialize::Never => SpecKey::UBER,
-            Specialize::Always => SpecKey::for_state(state).with_finite_vertices(affine),
-            Specialize::Auto => {
-                let key = SpecKey::for_state(state).with_finite_vertices(affine);
-                if self.pipelines.contains(
-                    variant.layout,
-                    mode,
-                    key,
-                    raster,
-                    textured,
-                    (assembly.0, assembly.1, variant.points),
-                ) || self.pipelines.counts().1 < MAX_AUTO_VARIANTS
-                {
-                    key
-                } else {
-                    SpecKey::UBER
-                }
-            }
-        };
-        self.pipelines.get_for(
-            variant.layout,
-            (mode, key, raster),
-            textured,
-            assembly,
-            (variant.gbuffer, variant.clipped, variant.fogged),
-            variant.points,
-        )
     }
 
     /// Draws staged from now on write the deferred path's G-buffer (fragment mode; the

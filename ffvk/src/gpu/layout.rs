@@ -7,9 +7,12 @@
 
 use glam::{Mat3, Mat4};
 
+mod key;
+pub(crate) use key::{same_block_state, StateKey};
+
 use crate::gl::state::{
-    Attenuation, ClipPlanes, ColorControl, ColorMaterialMode, DrawValues, FixedFunctionState, FogSource,
-    Light, Material, SpecularModel, SpotEdge, StateError, MAX_CLIP_PLANES, MAX_LIGHTS,
+    Attenuation, ColorControl, ColorMaterialMode, DrawValues, FixedFunctionState, FogSource, Light, Material,
+    SpecularModel, SpotEdge, StateError, MAX_CLIP_PLANES, MAX_LIGHTS,
 };
 
 /// GL clip space (z in [-w, w], y up) to Vulkan clip space (z in [0, w], y down), applied
@@ -222,7 +225,7 @@ pub struct StateBlock {
     pub fog_source: u32,
     /// 1 for `GL_FOG_HINT` `GL_FASTEST` (f per vertex).
     pub fog_per_vertex: u32,
-    /// The enabled user clip planes, a bit each ([`ClipPlanes::mask`]).
+    /// The enabled user clip planes, a bit each ([`ClipPlanes::mask`](crate::gl::state::ClipPlanes::mask)).
     pub clip_mask: u32,
     /// The user clip planes in eye space (`glClipPlane`, §2.12).
     pub clip_planes: [[f32; 4]; MAX_CLIP_PLANES],
@@ -372,7 +375,7 @@ pub enum SpecConstant {
     FogSource = 23,
     /// `SPEC_FOG_PER_VERTEX`: 1 for `GL_FOG_HINT` `GL_FASTEST` (0 with fog off).
     FogPerVertex = 24,
-    /// `SPEC_CLIP_PLANES`: the enabled user clip planes, a bit each ([`ClipPlanes::mask`]);
+    /// `SPEC_CLIP_PLANES`: the enabled user clip planes, a bit each ([`ClipPlanes::mask`](crate::gl::state::ClipPlanes::mask));
     /// read by the `_clipped` variants, which write `gl_ClipDistance`.
     ClipPlanes = 25,
     /// `SPEC_POINT_ATTENUATION`: 1 where a points pipeline's size falls with the distance
@@ -609,108 +612,6 @@ fn pack_lights(lights: &[Light; MAX_LIGHTS]) -> ([GpuLight; MAX_LIGHTS], u32) {
         count += 1;
     }
     (packed, count)
-}
-
-/// What of a draw its [`StateBlock`] is made from: its [`FixedFunctionState`] but the materials,
-/// the current color, `GL_RESCALE_NORMAL` and the mode, and its projection. Two draws with
-/// equal keys share a block (and a pipeline, for equal raster states and texturing). The block
-/// packs the enabled lights only, so keys are equal when every light's enable is and the
-/// enabled lights' values are: a disabled light's values never split a block.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct StateKey {
-    lighting: bool,
-    normalize: bool,
-    model: crate::gl::state::LightModel,
-    color_material: crate::gl::state::ColorMaterial,
-    texture: crate::gl::texture::TextureUnit,
-    fragment: crate::gl::state::FragmentStages,
-    clip: ClipPlanes,
-    points: crate::gl::state::PointParameters,
-    projection: Mat4,
-    lights: [Light; MAX_LIGHTS],
-}
-
-impl StateKey {
-    /// The key of a draw of `state` under `projection`.
-    pub(crate) fn new(state: &FixedFunctionState, projection: Mat4) -> Self {
-        StateKey {
-            lighting: state.lighting,
-            normalize: state.normalize,
-            model: state.model,
-            color_material: state.color_material,
-            texture: state.texture,
-            fragment: state.fragment,
-            clip: state.clip,
-            points: state.points,
-            projection,
-            lights: state.lights,
-        }
-    }
-
-    /// Whether a draw of `state` under `projection` has this key: compared in place, without
-    /// copying the lights into a key of its own (a draw's check when it shares the state of the
-    /// draw before, the common case).
-    pub(crate) fn matches(&self, state: &FixedFunctionState, projection: Mat4) -> bool {
-        self.lighting == state.lighting
-            && self.normalize == state.normalize
-            && self.model == state.model
-            && self.color_material == state.color_material
-            && self.texture == state.texture
-            && self.fragment == state.fragment
-            && self.clip == state.clip
-            && self.points == state.points
-            && self.projection == projection
-            && same_lights(&self.lights, &state.lights)
-    }
-}
-
-impl PartialEq for StateKey {
-    fn eq(&self, other: &StateKey) -> bool {
-        let StateKey {
-            lighting,
-            normalize,
-            model,
-            color_material,
-            texture,
-            fragment,
-            clip,
-            points,
-            projection,
-            lights,
-        } = self;
-        // Every field by name: a field added to the key must be compared here too.
-        *lighting == other.lighting
-            && *normalize == other.normalize
-            && *model == other.model
-            && *color_material == other.color_material
-            && *texture == other.texture
-            && *fragment == other.fragment
-            && *clip == other.clip
-            && *points == other.points
-            && *projection == other.projection
-            && same_lights(lights, &other.lights)
-    }
-}
-
-/// Whether `a` and `b` make the same block under one projection (their [`StateKey`] parts are
-/// equal), compared in place.
-pub(crate) fn same_block_state(a: &FixedFunctionState, b: &FixedFunctionState) -> bool {
-    a.lighting == b.lighting
-        && a.normalize == b.normalize
-        && a.model == b.model
-        && a.color_material == b.color_material
-        && a.texture == b.texture
-        && a.fragment == b.fragment
-        && a.clip == b.clip
-        && a.points == b.points
-        && same_lights(&a.lights, &b.lights)
-}
-
-/// Lights that pack into the same block: the same enables, and equal values where enabled.
-fn same_lights(a: &[Light; MAX_LIGHTS], b: &[Light; MAX_LIGHTS]) -> bool {
-    a.iter()
-        .zip(b)
-        .all(|(a, b)| a.enabled == b.enabled && (!a.enabled || a == b))
 }
 
 impl StateBlock {
