@@ -106,7 +106,7 @@ pub use draw::lighting::{
     DrawValues, Lighting, LightingOptions, LitDraw, StagedDraw, VertexLayout, MAX_FRAMES_IN_FLIGHT,
 };
 pub use draw::pipeline::{
-    Attribute, Blend, FaceArrays, MaterialArray, RasterState, Specialize, Target, VertexInput,
+    Attribute, Blend, FaceArrays, MaterialArray, PolygonOffset, RasterState, Specialize, Target, VertexInput,
     MAX_VERTEX_BINDINGS,
 };
 pub use draw::record::{Geometry, Topology};

@@ -330,6 +330,8 @@ pub(super) fn begin_frame(gl: &Gl, scene: &GlScene) {
         let [r, g, b, a] = scene.clear_color;
         gl.ClearColor(r, g, b, a);
         gl.ClearDepth(1.0);
+        // glColorMask masks glClear too: the whole image is cleared.
+        gl.ColorMask(1, 1, 1, 1);
         gl.Clear(gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT);
         if scene.depth_test {
             gl.Enable(gl::DEPTH_TEST);
@@ -369,6 +371,13 @@ fn replay(gl: &Gl, call: GlCall) {
         GlCall::ColorMaterial(face, mode) => unsafe {
             gl.ColorMaterial(face_enum(face), color_material_enum(mode))
         },
+        GlCall::PolygonOffsetFill(factor, units) => {
+            set_enabled(gl, gl::POLYGON_OFFSET_FILL, true);
+            // SAFETY: a context is current on this thread.
+            unsafe { gl.PolygonOffset(factor, units) };
+        }
+        // SAFETY: a context is current on this thread.
+        GlCall::ColorMask([r, g, b, a]) => unsafe { gl.ColorMask(r as u8, g as u8, b as u8, a as u8) },
     }
 }
 
@@ -604,6 +613,10 @@ pub(super) fn set_state(
     set_enabled(gl, gl::LIGHTING, state.lighting);
     set_texture_unit(gl, &state.texture, texture);
     set_stages(gl, state);
+    // The raster state the calls may set, at GL's defaults for each draw.
+    set_enabled(gl, gl::POLYGON_OFFSET_FILL, false);
+    // SAFETY: a context is current on this thread.
+    unsafe { gl.ColorMask(1, 1, 1, 1) };
     for call in &draw.calls {
         replay(gl, *call);
     }

@@ -174,6 +174,10 @@ pub enum GlCall {
     Disable(Cap),
     /// `glColorMaterial`.
     ColorMaterial(Face, ColorMaterialMode),
+    /// `glEnable(GL_POLYGON_OFFSET_FILL)` and `glPolygonOffset(factor, units)`.
+    PolygonOffsetFill(f32, f32),
+    /// `glColorMask(r, g, b, a)`.
+    ColorMask([bool; 4]),
 }
 
 /// What the GL context reports about itself, and where it came from.

@@ -29,6 +29,7 @@ mod lighting;
 mod memory;
 mod outputs;
 mod points;
+mod raster_state;
 mod reference;
 mod regression;
 mod render_path;

@@ -15,7 +15,7 @@ use crate::gpu::shaders;
 use crate::vk::objects::{DescriptorSetLayout, Pipeline, PipelineCache, PipelineLayout, ShaderModule};
 use crate::vk::Device;
 
-pub use super::raster::{Blend, Pixels, RasterState};
+pub use super::raster::{Blend, Pixels, PolygonOffset, RasterState};
 pub use super::target::{Target, COLOR_FORMAT, DEPTH_FORMAT};
 pub use super::vertex_input::{Attribute, FaceArrays, MaterialArray, VertexInput, MAX_VERTEX_BINDINGS};
 
@@ -709,6 +709,13 @@ impl Pipelines {
             .cull_mode(k.raster.cull_mode)
             .front_face(k.raster.front_face)
             .line_width(k.raster.line_width.0);
+        // GL_POLYGON_OFFSET_FILL offsets filled polygons only.
+        if let Some(o) = k.raster.polygon_offset.filter(|_| k.topology.is_triangles()) {
+            rasterization = rasterization
+                .depth_bias_enable(true)
+                .depth_bias_slope_factor(o.factor)
+                .depth_bias_constant_factor(o.units);
+        }
         if k.mode == LightingMode::Flat {
             rasterization = rasterization.push_next(&mut provoking);
         }
@@ -719,7 +726,7 @@ impl Pipelines {
             .depth_write_enable(k.raster.depth_test && k.raster.depth_write)
             .depth_compare_op(k.raster.depth_compare);
         let mut blend_attachment =
-            vk::PipelineColorBlendAttachmentState::default().color_write_mask(vk::ColorComponentFlags::RGBA);
+            vk::PipelineColorBlendAttachmentState::default().color_write_mask(k.raster.color_mask);
         if let Some(b) = k.raster.blend {
             blend_attachment = blend_attachment
                 .blend_enable(true)

@@ -104,6 +104,39 @@ pub struct RasterState {
     /// `glLineWidth`: 1 by default; another width needs the device's `wideLines` and must lie
     /// in its `lineWidthRange`.
     pub line_width: Pixels,
+    /// `GL_POLYGON_OFFSET_FILL` with `glPolygonOffset`: `None` (off) by default. Filled
+    /// triangles only (lines and points are not offset, as GL offsets them only under
+    /// `GL_POLYGON_OFFSET_LINE`/`POINT` with `glPolygonMode`).
+    pub polygon_offset: Option<PolygonOffset>,
+    /// `glColorMask`: the channels written, all four by default (`VK_COLOR_COMPONENT_R_BIT` ..
+    /// `A_BIT`). A masked channel keeps what the image held; tests still run.
+    pub color_mask: vk::ColorComponentFlags,
+}
+
+/// `glPolygonOffset(factor, units)`: a filled polygon's depth moves by
+/// o = m · factor + r · units (GL 2.1 §3.5.5), m its depth slope and r the depth format's
+/// smallest resolvable step; Vulkan's depth bias with slope factor `factor` and constant factor
+/// `units` (and no clamp, as GL 2.1 has none). Compared and hashed by its bits.
+#[derive(Debug, Clone, Copy)]
+pub struct PolygonOffset {
+    /// The slope factor.
+    pub factor: f32,
+    /// The constant, in units of r.
+    pub units: f32,
+}
+
+impl PartialEq for PolygonOffset {
+    fn eq(&self, other: &Self) -> bool {
+        (self.factor.to_bits(), self.units.to_bits()) == (other.factor.to_bits(), other.units.to_bits())
+    }
+}
+
+impl Eq for PolygonOffset {}
+
+impl std::hash::Hash for PolygonOffset {
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        (self.factor.to_bits(), self.units.to_bits()).hash(state);
+    }
 }
 
 /// A size in pixels (a point size, a line width), compared and hashed by its bits so that a
@@ -136,6 +169,8 @@ impl Default for RasterState {
             blend: None,
             point_size: Pixels(1.0),
             line_width: Pixels(1.0),
+            polygon_offset: None,
+            color_mask: vk::ColorComponentFlags::RGBA,
         }
     }
 }
@@ -199,6 +234,23 @@ impl RasterState {
                 "a VkCompareOp, VK_COMPARE_OP_NEVER (0) .. VK_COMPARE_OP_ALWAYS (7)",
             );
         }
+        let mask = self.color_mask.as_raw();
+        if mask & !vk::ColorComponentFlags::RGBA.as_raw() != 0 {
+            return refuse(
+                "color_mask",
+                format!("0x{mask:X}"),
+                "VK_COLOR_COMPONENT_R_BIT, G, B and A_BIT (bits 0xF)",
+            );
+        }
+        if let Some(o) = self.polygon_offset {
+            if !(o.factor.is_finite() && o.units.is_finite()) {
+                return refuse(
+                    "polygon_offset",
+                    format!("factor {}, units {}", o.factor, o.units),
+                    "finite numbers",
+                );
+            }
+        }
         let Some(b) = self.blend else { return Ok(()) };
         for (field, factor) in [
             ("src_color", b.src_color),
@@ -240,4 +292,9 @@ with_fields!(RasterState {
     with_depth_compare => depth_compare: vk::CompareOp,
     /// Sets [`blend`](RasterState::blend) (`GL_BLEND` and `glBlendFuncSeparate`).
     with_blend => blend: Option<Blend>,
+    /// Sets [`polygon_offset`](RasterState::polygon_offset) (`GL_POLYGON_OFFSET_FILL` and
+    /// `glPolygonOffset`).
+    with_polygon_offset => polygon_offset: Option<PolygonOffset>,
+    /// Sets [`color_mask`](RasterState::color_mask) (`glColorMask`).
+    with_color_mask => color_mask: vk::ColorComponentFlags,
 });

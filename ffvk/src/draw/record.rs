@@ -54,6 +54,15 @@ impl Topology {
         }
     }
 
+    /// A list, strip or fan of triangles: filled polygons (what `GL_POLYGON_OFFSET_FILL`
+    /// offsets).
+    pub fn is_triangles(self) -> bool {
+        matches!(
+            self,
+            Topology::TriangleList | Topology::TriangleStrip | Topology::TriangleFan
+        )
+    }
+
     /// A strip or a fan: the topologies primitive restart can cut (Vulkan allows it on lists
     /// only with a feature ffvk does not ask for).
     pub fn restartable(self) -> bool {

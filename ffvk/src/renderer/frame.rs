@@ -6,7 +6,7 @@ use ash::vk;
 use glam::{Mat4, Vec4};
 
 use super::texture::Texture;
-use crate::draw::pipeline::RasterState;
+use crate::draw::pipeline::{PolygonOffset, RasterState};
 use crate::draw::record::Topology;
 use crate::gl::state::{Face, FixedFunctionState};
 use crate::vk::Buffer;
@@ -76,6 +76,11 @@ pub struct Draw<'a> {
     pub point_size: f32,
     /// `glLineWidth`, in pixels.
     pub line_width: f32,
+    /// `GL_POLYGON_OFFSET_FILL` with `glPolygonOffset` (`None`: off, GL's default; see
+    /// [`RasterState::polygon_offset`]).
+    pub polygon_offset: Option<PolygonOffset>,
+    /// `glColorMask` (R, G, B, A): all written by default.
+    pub color_mask: [bool; 4],
 }
 
 impl<'a> Draw<'a> {
@@ -91,7 +96,23 @@ impl<'a> Draw<'a> {
             topology: mesh.topology,
             point_size: 1.0,
             line_width: 1.0,
+            polygon_offset: None,
+            color_mask: [true; 4],
         }
+    }
+
+    /// This draw with `glPolygonOffset(factor, units)` and `GL_POLYGON_OFFSET_FILL` on.
+    #[must_use]
+    pub fn with_polygon_offset(mut self, factor: f32, units: f32) -> Self {
+        self.polygon_offset = Some(PolygonOffset { factor, units });
+        self
+    }
+
+    /// This draw with `glColorMask(r, g, b, a)`.
+    #[must_use]
+    pub fn with_color_mask(mut self, mask: [bool; 4]) -> Self {
+        self.color_mask = mask;
+        self
     }
 
     /// This draw with `glPointSize(size)`.
@@ -145,6 +166,17 @@ impl<'a> Draw<'a> {
                 Some(Face::Back) => vk::CullModeFlags::BACK,
                 Some(Face::FrontAndBack) => vk::CullModeFlags::FRONT_AND_BACK,
             },
+            polygon_offset: self.polygon_offset,
+            color_mask: [
+                vk::ColorComponentFlags::R,
+                vk::ColorComponentFlags::G,
+                vk::ColorComponentFlags::B,
+                vk::ColorComponentFlags::A,
+            ]
+            .into_iter()
+            .zip(self.color_mask)
+            .filter(|(_, on)| *on)
+            .fold(vk::ColorComponentFlags::empty(), |m, (c, _)| m | c),
             ..RasterState::default()
         }
         .with_point_size(self.point_size)

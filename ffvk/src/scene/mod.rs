@@ -651,6 +651,8 @@ pub fn render_scene_with(
             topology: gpu.topology(),
             point_size: scene.point_size,
             line_width: 1.0,
+            polygon_offset: None,
+            color_mask: [true; 4],
         });
     }
     Ok(renderer.render(&frame)?.into())

@@ -1,0 +1,177 @@
+//! The raster state a GL draw carries beyond culling, depth and blending (issue 50, item 2),
+//! through the Renderer and Mesa's GL: glPolygonOffset with GL_POLYGON_OFFSET_FILL and
+//! glColorMask.
+
+use ffvk::gl::state::GlState;
+use ffvk::mesh::{MeshData, Vertex};
+use ffvk::{Draw, Frame, Renderer};
+use ffvk_cli::gl_reference::{render_gl_with, GlCall, GlDraw, GlScene};
+use glam::{Mat4, Vec3, Vec4};
+use image::RgbaImage;
+
+use crate::support::*;
+
+const SIZE: u32 = 64;
+
+/// A quad of one color, tilted about x so that its depth has a slope across the image.
+fn quad(color: Vec4) -> MeshData {
+    let corners = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)];
+    MeshData::new(
+        corners
+            .iter()
+            .map(|&(x, y)| Vertex::new(Vec3::new(x, y, 0.0), Vec3::Z, color))
+            .collect(),
+        vec![0, 1, 2, 0, 2, 3],
+    )
+}
+
+fn modelview() -> Mat4 {
+    Mat4::from_translation(Vec3::new(0.0, 0.0, -3.0)) * Mat4::from_rotation_x(-0.6)
+}
+
+fn projection() -> Mat4 {
+    Mat4::perspective_rh_gl(50f32.to_radians(), 1.0, 1.0, 10.0)
+}
+
+/// A red quad, then the same quad green with `offset` and `mask`, depth test `GL_LESS`, by
+/// ffvk and by Mesa's GL.
+fn draw_both(r: &mut Renderer, offset: Option<(f32, f32)>, mask: [bool; 4]) -> (RgbaImage, RgbaImage) {
+    let (red, green) = (
+        quad(Vec4::new(1.0, 0.0, 0.0, 1.0)),
+        quad(Vec4::new(0.0, 1.0, 0.0, 1.0)),
+    );
+    let state = GlState::new().lighting;
+    let (a, b) = (r.upload(&red).unwrap(), r.upload(&green).unwrap());
+    let mut frame = Frame::new(SIZE, SIZE);
+    frame.clear_color = Vec4::new(0.2, 0.4, 0.6, 1.0);
+    frame.depth_test = true;
+    frame.draws.push(Draw::new(&a, modelview(), projection(), state));
+    let mut second = Draw::new(&b, modelview(), projection(), state).with_color_mask(mask);
+    if let Some((factor, units)) = offset {
+        second = second.with_polygon_offset(factor, units);
+    }
+    frame.draws.push(second);
+    let ours = r.render(&frame).unwrap().into_rgba_image();
+    let first = GlDraw::new(&red, modelview(), projection(), state);
+    let mut then = GlDraw::new(&green, modelview(), projection(), state);
+    then.calls.push(GlCall::ColorMask(mask));
+    if let Some((factor, units)) = offset {
+        then.calls.push(GlCall::PolygonOffsetFill(factor, units));
+    }
+    let theirs = render_gl_with(
+        &GlScene {
+            width: SIZE,
+            height: SIZE,
+            clear_color: [0.2, 0.4, 0.6, 1.0],
+            depth_test: true,
+            draws: vec![first, then],
+        },
+        &gl_options(),
+    )
+    .unwrap();
+    (ours, theirs)
+}
+
+/// Pixels of the quad (not the clear color) in both images that differ by more than 1/255.
+fn differing(a: &RgbaImage, b: &RgbaImage) -> usize {
+    a.pixels()
+        .zip(b.pixels())
+        .filter(|(p, q)| p.0.iter().zip(q.0).any(|(x, y)| x.abs_diff(y) > 1))
+        .count()
+}
+
+/// GL 2.1 §3.5.5: a coplanar second quad fails `GL_LESS` unless offset toward the eye;
+/// pushed away it fails everywhere. Units alone and the slope factor alone (the quad is
+/// tilted) each bring it forward. As Mesa's GL draws them.
+#[test]
+fn polygon_offset_brings_a_coplanar_decal_forward_or_pushes_it_back_as_gl_does() {
+    let mut r = renderer();
+    let red = [255, 0, 0, 255];
+    let green = [0, 255, 0, 255];
+    for (offset, want, what) in [
+        (None, red, "no offset: the coplanar quad fails GL_LESS"),
+        (Some((-1.0, -1.0)), green, "(-1, -1): in front"),
+        (Some((0.0, -4.0)), green, "units alone"),
+        (
+            Some((-2.0, 0.0)),
+            green,
+            "the slope factor alone on a tilted quad",
+        ),
+        (Some((1.0, 1.0)), red, "(1, 1): behind"),
+    ] {
+        let (ours, theirs) = draw_both(&mut r, offset, [true; 4]);
+        let name = what.replace([' ', ':', '(', ')', ','], "_");
+        let a = save_for_inspection(&ours, &format!("raster_offset_{name}_ffvk"));
+        save_for_inspection(&theirs, &format!("raster_offset_{name}_gl"));
+        assert_eq!(
+            ours.get_pixel(SIZE / 2, SIZE / 2).0,
+            want,
+            "{what}: {}",
+            a.display()
+        );
+        assert_eq!(theirs.get_pixel(SIZE / 2, SIZE / 2).0, want, "{what}: Mesa");
+        let n = differing(&ours, &theirs);
+        assert!(n <= 4, "{what}: {n} pixels differ from Mesa's; {}", a.display());
+    }
+    finish(r);
+}
+
+/// GL 2.1 §4.2.2: masked channels keep what the image held (here the red quad's, drawn
+/// before) while the depth test still runs; as Mesa's GL draws it.
+#[test]
+fn the_color_mask_keeps_the_masked_channels_of_what_was_drawn_before() {
+    let mut r = renderer();
+    for (mask, want) in [
+        ([true, true, true, true], [0, 255, 0, 255]),
+        ([false, true, false, true], [255, 255, 0, 255]),
+        ([true, false, true, false], [0, 0, 0, 255]),
+        ([false, false, false, false], [255, 0, 0, 255]),
+    ] {
+        let (ours, theirs) = draw_both(&mut r, Some((-1.0, -1.0)), mask);
+        let what = format!("mask {mask:?}");
+        let a = save_for_inspection(
+            &ours,
+            &format!("raster_mask_{}", what.replace([' ', ',', '[', ']'], "_")),
+        );
+        assert_eq!(
+            ours.get_pixel(SIZE / 2, SIZE / 2).0,
+            want,
+            "{what}: {}",
+            a.display()
+        );
+        let n = differing(&ours, &theirs);
+        assert!(n == 0, "{what}: {n} pixels differ from Mesa's; {}", a.display());
+    }
+    finish(r);
+}
+
+/// A color mask with bits beyond R, G, B and A, or an offset that is not finite, is refused
+/// naming the field and the value.
+#[test]
+fn bad_color_masks_and_offsets_are_refused_naming_the_field() {
+    use ffvk::ash::vk;
+    use ffvk::{PolygonOffset, RasterState};
+    let e = RasterState::default()
+        .with_color_mask(vk::ColorComponentFlags::from_raw(0x1F))
+        .validate()
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("color_mask") && e.contains("0x1F"), "{e}");
+    let e = RasterState::default()
+        .with_polygon_offset(Some(PolygonOffset {
+            factor: f32::NAN,
+            units: 1.0,
+        }))
+        .validate()
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("polygon_offset") && e.contains("NaN"), "{e}");
+    RasterState::default()
+        .with_color_mask(vk::ColorComponentFlags::R | vk::ColorComponentFlags::A)
+        .with_polygon_offset(Some(PolygonOffset {
+            factor: -1.0,
+            units: -1.0,
+        }))
+        .validate()
+        .unwrap();
+}
