@@ -1266,6 +1266,11 @@ fn sequences() -> Vec<(String, Vec<Step>)> {
             vec![(POINT_SPRITE_COORD_ORIGIN, 1)],
         ),
         (
+            "glTexEnvi(GL_POINT_SPRITE, GL_COORD_REPLACE, 2) (neither GL_TRUE nor GL_FALSE)",
+            vec![Call::TexEnvi(POINT_SPRITE, COORD_REPLACE, 2)],
+            vec![(POINT_SPRITE, 1)],
+        ),
+        (
             "glPointParameterf(bad pname)",
             vec![Call::PointParameterf(0x812A, 1.0)],
             vec![(POINT_SIZE_MIN, 1)],

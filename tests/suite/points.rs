@@ -197,6 +197,8 @@ fn aliased_points_are_rounded_to_whole_pixels_and_sprites_are_not() {
     for s in &spots {
         let (a, b) = (width_at(&ours, s.at), width_at(&theirs, s.at));
         assert_eq!(a, b, "sprite of size {}: ffvk {a:?}, Mesa {b:?}", s.size);
+        // Drawn (a sprite of a fractional size may cover a rectangle: `None`).
+        assert_ne!(a, Some(0), "sprite of size {}: drawn", s.size);
     }
     finish(r);
 }

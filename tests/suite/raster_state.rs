@@ -175,3 +175,47 @@ fn bad_color_masks_and_offsets_are_refused_naming_the_field() {
         .validate()
         .unwrap();
 }
+
+/// The deferred path writes every channel, so a frame with a color mask in the fragment mode
+/// stays forward, even asked for the deferred path: its image is the forward one.
+#[test]
+fn a_color_masked_frame_asked_for_the_deferred_path_draws_as_the_forward_path() {
+    use ffvk::gl::state::{Cap, LightParam, LightingMode};
+    let mut r = renderer();
+    let mut gl = GlState::new();
+    gl.lighting_mode(LightingMode::Fragment);
+    gl.enable(Cap::Lighting).unwrap();
+    gl.enable(Cap::Light(0)).unwrap();
+    gl.light(0, LightParam::Position(Vec4::new(0.3, 0.4, 1.0, 0.0)))
+        .unwrap();
+    let (red, green) = (quad(Vec4::new(1.0, 0.0, 0.0, 1.0)), quad(Vec4::ONE));
+    let (a, b) = (r.upload(&red).unwrap(), r.upload(&green).unwrap());
+    let mut images = Vec::new();
+    for (path, mask) in [
+        (ffvk::FragmentPath::Forward, [false, true, false, true]),
+        (ffvk::FragmentPath::Deferred, [false, true, false, true]),
+        (ffvk::FragmentPath::Deferred, [true; 4]),
+    ] {
+        let mut frame = Frame::new(SIZE, SIZE);
+        frame.depth_test = true;
+        frame.fragment_path = path;
+        frame
+            .draws
+            .push(Draw::new(&a, modelview(), projection(), gl.lighting));
+        frame.draws.push(
+            Draw::new(&b, modelview(), projection(), gl.lighting)
+                .with_polygon_offset(-1.0, -1.0)
+                .with_color_mask(mask),
+        );
+        let (pixels, stats) = r.render_measured(&frame).unwrap();
+        images.push((pixels.into_rgba_image(), stats.deferred));
+    }
+    assert!(images[2].1, "the unmasked frame takes the deferred path");
+    assert!(!images[1].1, "the masked frame stays forward");
+    assert_eq!(
+        differing(&images[0].0, &images[1].0),
+        0,
+        "the masked frame's image"
+    );
+    finish(r);
+}

@@ -66,6 +66,14 @@ impl GlError {
         }
     }
 
+    /// GL_INVALID_VALUE with `what` (the parameter, its value, what was expected).
+    pub(crate) fn invalid_value(function: &str, what: String) -> GlError {
+        GlError {
+            code: GL_INVALID_VALUE,
+            message: format!("{function}: {what} (GL_INVALID_VALUE)"),
+        }
+    }
+
     pub(crate) fn null_out(function: &str, name: &str) -> GlError {
         GlError {
             code: GL_INVALID_VALUE,

@@ -238,9 +238,15 @@ pub(super) fn tex_env_len(function: &str, target: u32, pname: u32, scalar: bool)
 
 pub(super) fn set_tex_env(ctx: &mut FfvkContext, function: &str, pname: u32, v: Values) -> GlResult {
     if pname == GL_COORD_REPLACE {
-        // GL takes any value: zero is GL_FALSE, anything else GL_TRUE.
-        v.finite(function, "GL_COORD_REPLACE", "GL_TRUE or GL_FALSE", 1)?;
-        ctx.gl.coord_replace(v.plain(0) != 0.0);
+        // GL_TRUE or GL_FALSE; another value is GL_INVALID_VALUE, as Mesa sets it.
+        let value = v.plain(0);
+        if value != 0.0 && value != 1.0 {
+            return Err(GlError::invalid_value(
+                function,
+                format!("GL_COORD_REPLACE = {value} is not GL_TRUE (1) or GL_FALSE (0)"),
+            ));
+        }
+        ctx.gl.coord_replace(value == 1.0);
         return Ok(());
     }
     let param = match pname {

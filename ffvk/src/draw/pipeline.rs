@@ -643,7 +643,8 @@ impl Pipelines {
             return Err(Error::NotEnabled {
                 feature: "largePoints",
                 flag: "large_points",
-                needed_for: "attenuated points (GL_POINT_DISTANCE_ATTENUATION) larger than 1 pixel need",
+                needed_for: "points that may grow past one pixel (GL_POINT_DISTANCE_ATTENUATION with \
+                             GL_POINT_SIZE_MAX above 1, or GL_POINT_SIZE_MIN above 1) need",
             });
         }
         if k.restart && !k.topology.restartable() {

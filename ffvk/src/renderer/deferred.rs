@@ -96,6 +96,8 @@ pub(super) fn eligible(frame: &Frame, specialize: Specialize, cpu: bool) -> Opti
     let alike = frame.draws.iter().all(|d| {
         d.state.mode == LightingMode::Fragment
             && d.raster(frame).blend.is_none()
+            // The passes write every channel: a masked draw stays forward.
+            && d.raster(frame).color_mask == ash::vk::ColorComponentFlags::RGBA
             && !d.textured()
             // Fog, the alpha test and an unlit color sum are forward-only stages.
             && !d.state.fragment.fog.enabled

@@ -649,7 +649,13 @@ pub fn render_scene_with(
             cull_face: scene.cull_face(mesh),
             texture: mesh.texture.as_ref().and_then(texture_of),
             topology: gpu.topology(),
-            point_size: scene.point_size,
+            // glPointSize draws points only: other meshes keep GL's 1 (their pipelines are
+            // not split by it).
+            point_size: if gpu.topology() == crate::Topology::PointList {
+                scene.point_size
+            } else {
+                1.0
+            },
             line_width: 1.0,
             polygon_offset: None,
             color_mask: [true; 4],
