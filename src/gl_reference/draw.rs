@@ -378,6 +378,55 @@ fn replay(gl: &Gl, call: GlCall) {
         }
         // SAFETY: a context is current on this thread.
         GlCall::ColorMask([r, g, b, a]) => unsafe { gl.ColorMask(r as u8, g as u8, b as u8, a as u8) },
+        GlCall::Blend(b) => {
+            set_enabled(gl, gl::BLEND, true);
+            // SAFETY: a context is current on this thread.
+            unsafe {
+                gl.BlendFuncSeparate(
+                    blend_factor(b.src_color),
+                    blend_factor(b.dst_color),
+                    blend_factor(b.src_alpha),
+                    blend_factor(b.dst_alpha),
+                );
+                gl.BlendEquationSeparate(blend_op(b.color_op), blend_op(b.alpha_op));
+            }
+        }
+        // SAFETY: a context is current on this thread.
+        GlCall::BlendColor([r, g, b, a]) => unsafe { gl.BlendColor(r, g, b, a) },
+    }
+}
+
+/// GL's name of a Vulkan blend factor (the fifteen GL 2.1 has).
+fn blend_factor(f: ash::vk::BlendFactor) -> GLenum {
+    use ash::vk::BlendFactor as F;
+    match f {
+        F::ZERO => gl::ZERO,
+        F::ONE => gl::ONE,
+        F::SRC_COLOR => gl::SRC_COLOR,
+        F::ONE_MINUS_SRC_COLOR => gl::ONE_MINUS_SRC_COLOR,
+        F::DST_COLOR => gl::DST_COLOR,
+        F::ONE_MINUS_DST_COLOR => gl::ONE_MINUS_DST_COLOR,
+        F::SRC_ALPHA => gl::SRC_ALPHA,
+        F::ONE_MINUS_SRC_ALPHA => gl::ONE_MINUS_SRC_ALPHA,
+        F::DST_ALPHA => gl::DST_ALPHA,
+        F::ONE_MINUS_DST_ALPHA => gl::ONE_MINUS_DST_ALPHA,
+        F::CONSTANT_COLOR => gl::CONSTANT_COLOR,
+        F::ONE_MINUS_CONSTANT_COLOR => gl::ONE_MINUS_CONSTANT_COLOR,
+        F::CONSTANT_ALPHA => gl::CONSTANT_ALPHA,
+        F::ONE_MINUS_CONSTANT_ALPHA => gl::ONE_MINUS_CONSTANT_ALPHA,
+        _ => gl::SRC_ALPHA_SATURATE,
+    }
+}
+
+/// GL's name of a Vulkan blend equation (GL 2.1's five).
+fn blend_op(op: ash::vk::BlendOp) -> GLenum {
+    use ash::vk::BlendOp as O;
+    match op {
+        O::SUBTRACT => gl::FUNC_SUBTRACT,
+        O::REVERSE_SUBTRACT => gl::FUNC_REVERSE_SUBTRACT,
+        O::MIN => gl::MIN,
+        O::MAX => gl::MAX,
+        _ => gl::FUNC_ADD,
     }
 }
 
@@ -615,8 +664,12 @@ pub(super) fn set_state(
     set_stages(gl, state);
     // The raster state the calls may set, at GL's defaults for each draw.
     set_enabled(gl, gl::POLYGON_OFFSET_FILL, false);
+    set_enabled(gl, gl::BLEND, false);
     // SAFETY: a context is current on this thread.
-    unsafe { gl.ColorMask(1, 1, 1, 1) };
+    unsafe {
+        gl.ColorMask(1, 1, 1, 1);
+        gl.BlendColor(0.0, 0.0, 0.0, 0.0);
+    }
     for call in &draw.calls {
         replay(gl, *call);
     }

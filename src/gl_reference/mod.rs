@@ -178,6 +178,10 @@ pub enum GlCall {
     PolygonOffsetFill(f32, f32),
     /// `glColorMask(r, g, b, a)`.
     ColorMask([bool; 4]),
+    /// `glEnable(GL_BLEND)` with `glBlendFuncSeparate` and `glBlendEquationSeparate`.
+    Blend(ffvk::Blend),
+    /// `glBlendColor`.
+    BlendColor([f32; 4]),
 }
 
 /// What the GL context reports about itself, and where it came from.

@@ -219,3 +219,105 @@ fn a_color_masked_frame_asked_for_the_deferred_path_draws_as_the_forward_path() 
     );
     finish(r);
 }
+
+/// GL 1.4's blend equations and glBlendColor (GL 2.1 §4.1.8): a red quad, then a translucent
+/// green one over it blended with each equation, its factors reading the constant color;
+/// the pixel as GL's formula says, within the 8-bit buffer's 2/255, and every pixel as Mesa's
+/// GL draws it.
+#[test]
+fn blend_equations_and_the_blend_color_blend_as_gl_says() {
+    use ffvk::ash::vk::{BlendFactor as F, BlendOp as O};
+    use ffvk::Blend;
+    let mut r = renderer();
+    let (dst, src) = (Vec4::new(0.8, 0.1, 0.3, 1.0), Vec4::new(0.2, 0.9, 0.5, 0.6));
+    let color = [0.25f32, 0.5, 0.75, 0.4];
+    let flat = GlState::new().lighting;
+    let (under, over) = (quad(dst), quad(src));
+    let (a, b) = (r.upload(&under).unwrap(), r.upload(&over).unwrap());
+    let c = Vec4::from_array(color);
+    for (op, sf, df) in [
+        (O::ADD, F::CONSTANT_COLOR, F::ONE_MINUS_CONSTANT_COLOR),
+        (O::SUBTRACT, F::ONE, F::CONSTANT_ALPHA),
+        (O::REVERSE_SUBTRACT, F::SRC_ALPHA, F::ONE_MINUS_CONSTANT_ALPHA),
+        (O::MIN, F::ONE, F::ONE),
+        (O::MAX, F::ZERO, F::ZERO),
+    ] {
+        let blend = Blend::new(sf, df, op);
+        let mut frame = Frame::new(SIZE, SIZE);
+        frame.clear_color = Vec4::new(0.0, 0.0, 0.0, 1.0);
+        // The second quad is coplanar: without a depth test it blends over the first.
+        frame.depth_test = false;
+        frame.draws.push(Draw::new(&a, modelview(), projection(), flat));
+        frame.draws.push(
+            Draw::new(&b, modelview(), projection(), flat)
+                .with_blend(Some(blend))
+                .with_blend_color(color),
+        );
+        let ours = r.render(&frame).unwrap().into_rgba_image();
+        let mut then = GlDraw::new(&over, modelview(), projection(), flat);
+        then.calls
+            .extend([GlCall::Blend(blend), GlCall::BlendColor(color)]);
+        let theirs = render_gl_with(
+            &GlScene {
+                width: SIZE,
+                height: SIZE,
+                clear_color: [0.0, 0.0, 0.0, 1.0],
+                depth_test: false,
+                draws: vec![GlDraw::new(&under, modelview(), projection(), flat), then],
+            },
+            &gl_options(),
+        )
+        .unwrap();
+        // GL's formula: the factors, then the equation (MIN and MAX ignore the factors),
+        // clamped to [0, 1].
+        let factor = |f: F| match f {
+            F::ZERO => Vec4::ZERO,
+            F::ONE => Vec4::ONE,
+            F::CONSTANT_COLOR => c,
+            F::ONE_MINUS_CONSTANT_COLOR => Vec4::ONE - c,
+            F::CONSTANT_ALPHA => Vec4::splat(c.w),
+            F::ONE_MINUS_CONSTANT_ALPHA => Vec4::splat(1.0 - c.w),
+            F::SRC_ALPHA => Vec4::splat(src.w),
+            _ => unreachable!(),
+        };
+        let (s, d) = (src * factor(sf), dst * factor(df));
+        let want = match op {
+            O::ADD => s + d,
+            O::SUBTRACT => s - d,
+            O::REVERSE_SUBTRACT => d - s,
+            O::MIN => src.min(dst),
+            _ => src.max(dst),
+        }
+        .clamp(Vec4::ZERO, Vec4::ONE);
+        let what = format!("{op:?} {sf:?} {df:?}");
+        let path = save_for_inspection(&ours, &format!("raster_blend_{op:?}"));
+        let got = Vec4::from_array(ours.get_pixel(SIZE / 2, SIZE / 2).0.map(|v| v as f32 / 255.0));
+        assert!(
+            // Blending runs at the color buffer's 8 bits (the destination, the constant and
+            // each product rounded there): within 2/255 of the real-number formula.
+            (got - want).abs().max_element() <= 2.0 / 255.0 + 1e-6,
+            "{what}: {got} vs GL's {want}; {}",
+            path.display()
+        );
+        let n = differing(&ours, &theirs);
+        assert!(
+            n == 0,
+            "{what}: {n} pixels differ from Mesa's; {}",
+            path.display()
+        );
+    }
+    finish(r);
+}
+
+/// A blend color outside [0, 1] is refused naming the field (GL clamps at glBlendColor; the
+/// Vulkan-side state takes what a draw will use).
+#[test]
+fn a_blend_color_outside_0_1_is_refused_naming_the_field() {
+    use ffvk::{BlendColor, RasterState};
+    let e = RasterState::default()
+        .with_blend_color(BlendColor([0.5, 1.5, 0.0, 1.0]))
+        .validate()
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("blend_color") && e.contains("1.5"), "{e}");
+}

@@ -15,7 +15,7 @@ use crate::gpu::shaders;
 use crate::vk::objects::{DescriptorSetLayout, Pipeline, PipelineCache, PipelineLayout, ShaderModule};
 use crate::vk::Device;
 
-pub use super::raster::{Blend, Pixels, PolygonOffset, RasterState};
+pub use super::raster::{Blend, BlendColor, Pixels, PolygonOffset, RasterState};
 pub use super::target::{Target, COLOR_FORMAT, DEPTH_FORMAT};
 pub use super::vertex_input::{Attribute, FaceArrays, MaterialArray, VertexInput, MAX_VERTEX_BINDINGS};
 
@@ -746,7 +746,9 @@ impl Pipelines {
         } else {
             vec![blend_attachment]
         };
-        let blend = vk::PipelineColorBlendStateCreateInfo::default().attachments(&blend_attachments);
+        let blend = vk::PipelineColorBlendStateCreateInfo::default()
+            .attachments(&blend_attachments)
+            .blend_constants(k.raster.blend_color.0);
         let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
         let dynamic = vk::PipelineDynamicStateCreateInfo::default().dynamic_states(&dynamic_states);
         let color_formats = if k.gbuffer {

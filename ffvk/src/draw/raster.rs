@@ -111,6 +111,27 @@ pub struct RasterState {
     /// `glColorMask`: the channels written, all four by default (`VK_COLOR_COMPONENT_R_BIT` ..
     /// `A_BIT`). A masked channel keeps what the image held; tests still run.
     pub color_mask: vk::ColorComponentFlags,
+    /// `glBlendColor`: the constant the `CONSTANT_*` blend factors read, (0, 0, 0, 0) by
+    /// default, each in [0, 1] (GL clamps it there).
+    pub blend_color: BlendColor,
+}
+
+/// `glBlendColor`'s RGBA, compared and hashed by its bits.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct BlendColor(pub [f32; 4]);
+
+impl PartialEq for BlendColor {
+    fn eq(&self, other: &Self) -> bool {
+        self.0.map(f32::to_bits) == other.0.map(f32::to_bits)
+    }
+}
+
+impl Eq for BlendColor {}
+
+impl std::hash::Hash for BlendColor {
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        self.0.map(f32::to_bits).hash(state);
+    }
 }
 
 /// `glPolygonOffset(factor, units)`: a filled polygon's depth moves by
@@ -171,6 +192,7 @@ impl Default for RasterState {
             line_width: Pixels(1.0),
             polygon_offset: None,
             color_mask: vk::ColorComponentFlags::RGBA,
+            blend_color: BlendColor::default(),
         }
     }
 }
@@ -251,6 +273,13 @@ impl RasterState {
                 );
             }
         }
+        if !self.blend_color.0.iter().all(|c| (0.0..=1.0).contains(c)) {
+            return refuse(
+                "blend_color",
+                format!("{:?}", self.blend_color.0),
+                "four values in [0, 1] (glBlendColor clamps them there)",
+            );
+        }
         let Some(b) = self.blend else { return Ok(()) };
         for (field, factor) in [
             ("src_color", b.src_color),
@@ -297,4 +326,6 @@ with_fields!(RasterState {
     with_polygon_offset => polygon_offset: Option<PolygonOffset>,
     /// Sets [`color_mask`](RasterState::color_mask) (`glColorMask`).
     with_color_mask => color_mask: vk::ColorComponentFlags,
+    /// Sets [`blend_color`](RasterState::blend_color) (`glBlendColor`).
+    with_blend_color => blend_color: BlendColor,
 });

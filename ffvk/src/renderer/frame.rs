@@ -6,7 +6,7 @@ use ash::vk;
 use glam::{Mat4, Vec4};
 
 use super::texture::Texture;
-use crate::draw::pipeline::{PolygonOffset, RasterState};
+use crate::draw::pipeline::{Blend, BlendColor, PolygonOffset, RasterState};
 use crate::draw::record::Topology;
 use crate::gl::state::{Face, FixedFunctionState};
 use crate::vk::Buffer;
@@ -81,6 +81,11 @@ pub struct Draw<'a> {
     pub polygon_offset: Option<PolygonOffset>,
     /// `glColorMask` (R, G, B, A): all written by default.
     pub color_mask: [bool; 4],
+    /// `GL_BLEND` with `glBlendFuncSeparate` and `glBlendEquationSeparate`: `None` (off) by
+    /// default. Draws blend in the frame's order.
+    pub blend: Option<Blend>,
+    /// `glBlendColor`, each in [0, 1]; (0, 0, 0, 0) by default.
+    pub blend_color: [f32; 4],
 }
 
 impl<'a> Draw<'a> {
@@ -98,7 +103,23 @@ impl<'a> Draw<'a> {
             line_width: 1.0,
             polygon_offset: None,
             color_mask: [true; 4],
+            blend: None,
+            blend_color: [0.0; 4],
         }
+    }
+
+    /// This draw with `GL_BLEND` on and `blend`'s factors and equations (`None`: off).
+    #[must_use]
+    pub fn with_blend(mut self, blend: Option<Blend>) -> Self {
+        self.blend = blend;
+        self
+    }
+
+    /// This draw with `glBlendColor(r, g, b, a)`.
+    #[must_use]
+    pub fn with_blend_color(mut self, rgba: [f32; 4]) -> Self {
+        self.blend_color = rgba;
+        self
     }
 
     /// This draw with `glPolygonOffset(factor, units)` and `GL_POLYGON_OFFSET_FILL` on.
@@ -167,6 +188,8 @@ impl<'a> Draw<'a> {
                 Some(Face::FrontAndBack) => vk::CullModeFlags::FRONT_AND_BACK,
             },
             polygon_offset: self.polygon_offset,
+            blend: self.blend,
+            blend_color: BlendColor(self.blend_color),
             color_mask: [
                 vk::ColorComponentFlags::R,
                 vk::ColorComponentFlags::G,

@@ -659,6 +659,8 @@ pub fn render_scene_with(
             line_width: 1.0,
             polygon_offset: None,
             color_mask: [true; 4],
+            blend: None,
+            blend_color: [0.0; 4],
         });
     }
     Ok(renderer.render(&frame)?.into())
