@@ -236,7 +236,7 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
         let terms = pixel_terms(scene, hit, mode);
         match discarded_by(&terms) {
             None => {
-                explain_surface(&mut out, scene, hit, mode);
+                explain_surface(&mut out, scene, (hit, &terms), mode);
                 return Some(out);
             }
             Some(why) => {
@@ -260,8 +260,14 @@ pub fn explain(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> Option<Stri
     Some(out)
 }
 
-/// Writes the terms of the surface `hit`, whose fragment is kept, at its pixel.
-fn explain_surface(out: &mut String, scene: &Scene, hit: &Hit, mode: LightingMode) {
+/// Writes the terms of the surface `hit`, whose fragment is kept, at its pixel (`pixel`: the
+/// CPU reference's terms there).
+fn explain_surface(
+    out: &mut String,
+    scene: &Scene,
+    (hit, pixel): (&Hit, &reference::PixelTerms),
+    mode: LightingMode,
+) {
     let mesh = &scene.meshes[hit.mesh];
     let mut state = scene.draw_state(mesh);
     state.mode = mode;
@@ -384,7 +390,6 @@ fn explain_surface(out: &mut String, scene: &Scene, hit: &Hit, mode: LightingMod
             }
         }
     }
-    let pixel = pixel_terms(scene, hit, mode);
     match (&mesh.texture, pixel.textured) {
         (Some(t), Some(tex)) => {
             let image = &t.image;
@@ -436,7 +441,7 @@ fn explain_surface(out: &mut String, scene: &Scene, hit: &Hit, mode: LightingMod
         }
         (None, _) => {}
     }
-    stage_terms(out, &state, &pixel);
+    stage_terms(out, &state, pixel);
     let color = pixel.color;
     let how = if pixel.fog.is_some() {
         "clamp(c_pri + c_sec), alpha of c_pri, fogged; textured: C_v for c_pri"

@@ -5,7 +5,7 @@ use ffvk::gl::state::{Cap, GlState, PointParam, PointParameters, SpriteOrigin};
 use ffvk::gl::texture::{MagFilter, MinFilter, Sampling, TextureImage};
 use ffvk::mesh::{MeshData, Vertex};
 use ffvk::{Draw, Frame, Renderer, Topology};
-use ffvk_cli::gl_reference::{render_gl_with, GlDraw, GlMode, GlScene};
+use ffvk_cli::gl_reference::{GlDraw, GlMode};
 use glam::{Mat4, Vec2, Vec3, Vec4};
 use image::RgbaImage;
 
@@ -61,17 +61,7 @@ fn draw_both(
         draws.push(d);
     }
     let ours = r.render(&frame).unwrap().into_rgba_image();
-    let theirs = render_gl_with(
-        &GlScene {
-            width: SIZE,
-            height: SIZE,
-            clear_color: [0.0, 0.0, 0.0, 1.0],
-            depth_test: false,
-            draws,
-        },
-        &gl_options(),
-    )
-    .unwrap();
+    let theirs = mesa_image((SIZE, SIZE), [0.0, 0.0, 0.0, 1.0], false, draws);
     (ours, theirs)
 }
 

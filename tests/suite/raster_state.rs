@@ -5,7 +5,7 @@
 use ffvk::gl::state::GlState;
 use ffvk::mesh::{MeshData, Vertex};
 use ffvk::{Draw, Frame, Renderer};
-use ffvk_cli::gl_reference::{render_gl_with, GlCall, GlDraw, GlScene};
+use ffvk_cli::gl_reference::{GlCall, GlDraw};
 use glam::{Mat4, Vec3, Vec4};
 use image::RgbaImage;
 
@@ -58,17 +58,7 @@ fn draw_both(r: &mut Renderer, offset: Option<(f32, f32)>, mask: [bool; 4]) -> (
     if let Some((factor, units)) = offset {
         then.calls.push(GlCall::PolygonOffsetFill(factor, units));
     }
-    let theirs = render_gl_with(
-        &GlScene {
-            width: SIZE,
-            height: SIZE,
-            clear_color: [0.2, 0.4, 0.6, 1.0],
-            depth_test: true,
-            draws: vec![first, then],
-        },
-        &gl_options(),
-    )
-    .unwrap();
+    let theirs = mesa_image((SIZE, SIZE), [0.2, 0.4, 0.6, 1.0], true, vec![first, then]);
     (ours, theirs)
 }
 
@@ -257,17 +247,8 @@ fn blend_equations_and_the_blend_color_blend_as_gl_says() {
         let mut then = GlDraw::new(&over, modelview(), projection(), flat);
         then.calls
             .extend([GlCall::Blend(blend), GlCall::BlendColor(color)]);
-        let theirs = render_gl_with(
-            &GlScene {
-                width: SIZE,
-                height: SIZE,
-                clear_color: [0.0, 0.0, 0.0, 1.0],
-                depth_test: false,
-                draws: vec![GlDraw::new(&under, modelview(), projection(), flat), then],
-            },
-            &gl_options(),
-        )
-        .unwrap();
+        let first = GlDraw::new(&under, modelview(), projection(), flat);
+        let theirs = mesa_image((SIZE, SIZE), [0.0, 0.0, 0.0, 1.0], false, vec![first, then]);
         // GL's formula: the factors, then the equation (MIN and MAX ignore the factors),
         // clamped to [0, 1].
         let factor = |f: F| match f {

@@ -35,6 +35,24 @@ pub fn renderer_from(options: RendererOptions) -> Renderer {
 /// the tolerances were measured on) where EGL has one, even on a machine whose GPU driver
 /// lists its devices first; otherwise the first device that works. To compare with another
 /// driver, leave EGL only that driver (README, "The GL reference").
+/// Mesa's image of `draws` on a `size`² image cleared to `clear`, with GL_DEPTH_TEST
+/// (`GL_LESS`) as `depth_test` says, through the oracle's device ([`gl_options`]).
+pub fn mesa_image(
+    size: (u32, u32),
+    clear: [f32; 4],
+    depth_test: bool,
+    draws: Vec<ffvk_cli::gl_reference::GlDraw>,
+) -> RgbaImage {
+    let scene = ffvk_cli::gl_reference::GlScene {
+        width: size.0,
+        height: size.1,
+        clear_color: clear,
+        depth_test,
+        draws,
+    };
+    ffvk_cli::gl_reference::render_gl_with(&scene, &gl_options()).expect("Mesa's GL renders")
+}
+
 pub fn gl_options() -> GlOptions {
     GlOptions {
         prefer_software: true,
