@@ -256,6 +256,19 @@ pub enum LightingError {
     /// A draw tests depth but the target has no depth attachment.
     #[error("the draw tests depth, but the target has no depth format: expected RasterState::depth_test false or a Target::depth_format")]
     NoDepthAttachment,
+    /// A draw tests the stencil buffer but the target's depth format has none.
+    #[error("the draw tests the stencil buffer, but the target's depth format {format:?} has no stencil: expected RasterState::stencil None, or a Target::depth_format with stencil (e.g. D24_UNORM_S8_UINT)")]
+    NoStencilAttachment {
+        /// The target's depth format.
+        format: ash::vk::Format,
+    },
+    /// A logic op on a color format that does not take one (Vulkan applies logic ops to
+    /// integer and normalized formats only).
+    #[error("the draw has a logic op (glLogicOp), but the target's color format {format:?} is not normalized: expected RasterState::logic_op None, or a UNORM color format")]
+    LogicOpFormat {
+        /// The target's color format.
+        format: ash::vk::Format,
+    },
     /// `frames_in_flight` is 0.
     #[error("frames_in_flight is 0: expected at least 1 frame slot")]
     NoFrameSlots,

@@ -106,8 +106,8 @@ pub use draw::lighting::{
     DrawValues, Lighting, LightingOptions, LitDraw, StagedDraw, VertexLayout, MAX_FRAMES_IN_FLIGHT,
 };
 pub use draw::pipeline::{
-    Attribute, Blend, BlendColor, FaceArrays, MaterialArray, PolygonOffset, RasterState, Specialize, Target,
-    VertexInput, MAX_VERTEX_BINDINGS,
+    Attribute, Blend, BlendColor, FaceArrays, LineStipple, MaterialArray, PolygonModes, PolygonOffset,
+    RasterState, Specialize, Stencil, StencilFace, Target, VertexInput, MAX_VERTEX_BINDINGS,
 };
 pub use draw::record::{Geometry, Topology};
 pub use draw::texture::TextureBinding;

@@ -330,9 +330,11 @@ pub(super) fn begin_frame(gl: &Gl, scene: &GlScene) {
         let [r, g, b, a] = scene.clear_color;
         gl.ClearColor(r, g, b, a);
         gl.ClearDepth(1.0);
-        // glColorMask masks glClear too: the whole image is cleared.
+        // glColorMask and glStencilMask mask glClear too: the whole image is cleared.
         gl.ColorMask(1, 1, 1, 1);
-        gl.Clear(gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT);
+        gl.StencilMask(!0);
+        gl.ClearStencil(0);
+        gl.Clear(gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT | gl::STENCIL_BUFFER_BIT);
         if scene.depth_test {
             gl.Enable(gl::DEPTH_TEST);
             gl.DepthFunc(gl::LESS);
@@ -393,6 +395,74 @@ fn replay(gl: &Gl, call: GlCall) {
         }
         // SAFETY: a context is current on this thread.
         GlCall::BlendColor([r, g, b, a]) => unsafe { gl.BlendColor(r, g, b, a) },
+        GlCall::PolygonOffset(o) => {
+            set_enabled(gl, gl::POLYGON_OFFSET_FILL, o.fill);
+            set_enabled(gl, gl::POLYGON_OFFSET_LINE, o.line);
+            set_enabled(gl, gl::POLYGON_OFFSET_POINT, o.point);
+            // SAFETY: a context is current on this thread.
+            unsafe { gl.PolygonOffset(o.factor, o.units) };
+        }
+        // SAFETY: a context is current on this thread.
+        GlCall::PolygonMode(m) => unsafe {
+            gl.PolygonMode(gl::FRONT, polygon_mode(m.front));
+            gl.PolygonMode(gl::BACK, polygon_mode(m.back));
+        },
+        GlCall::Stencil(s) => {
+            set_enabled(gl, gl::STENCIL_TEST, true);
+            for (face, f) in [(gl::FRONT, s.front), (gl::BACK, s.back)] {
+                // SAFETY: a context is current on this thread.
+                unsafe {
+                    gl.StencilFuncSeparate(face, compare_func(f.func), f.reference as GLint, f.value_mask);
+                    gl.StencilOpSeparate(
+                        face,
+                        stencil_op(f.fail),
+                        stencil_op(f.depth_fail),
+                        stencil_op(f.pass),
+                    );
+                    gl.StencilMaskSeparate(face, f.write_mask);
+                }
+            }
+        }
+        GlCall::LogicOp(op) => {
+            set_enabled(gl, gl::COLOR_LOGIC_OP, true);
+            // SAFETY: a context is current on this thread; CLEAR + op is GL's order of the
+            // sixteen, Vulkan's too.
+            unsafe { gl.LogicOp(gl::CLEAR + op.as_raw() as GLenum) };
+        }
+        GlCall::LineStipple(l) => {
+            set_enabled(gl, gl::LINE_STIPPLE, true);
+            // SAFETY: a context is current on this thread.
+            unsafe { gl.LineStipple(l.factor as GLint, l.pattern) };
+        }
+    }
+}
+
+/// GL's name of a Vulkan polygon mode.
+fn polygon_mode(m: ash::vk::PolygonMode) -> GLenum {
+    match m {
+        ash::vk::PolygonMode::LINE => gl::LINE,
+        ash::vk::PolygonMode::POINT => gl::POINT,
+        _ => gl::FILL,
+    }
+}
+
+/// GL's name of a Vulkan compare op (`NEVER` + the op: the same order).
+fn compare_func(op: ash::vk::CompareOp) -> GLenum {
+    gl::NEVER + op.as_raw() as GLenum
+}
+
+/// GL's name of a Vulkan stencil op.
+fn stencil_op(op: ash::vk::StencilOp) -> GLenum {
+    use ash::vk::StencilOp as S;
+    match op {
+        S::ZERO => gl::ZERO,
+        S::REPLACE => gl::REPLACE,
+        S::INCREMENT_AND_CLAMP => gl::INCR,
+        S::DECREMENT_AND_CLAMP => gl::DECR,
+        S::INVERT => gl::INVERT,
+        S::INCREMENT_AND_WRAP => gl::INCR_WRAP,
+        S::DECREMENT_AND_WRAP => gl::DECR_WRAP,
+        _ => gl::KEEP,
     }
 }
 
@@ -663,12 +733,22 @@ pub(super) fn set_state(
     set_texture_unit(gl, &state.texture, texture);
     set_stages(gl, state);
     // The raster state the calls may set, at GL's defaults for each draw.
-    set_enabled(gl, gl::POLYGON_OFFSET_FILL, false);
-    set_enabled(gl, gl::BLEND, false);
+    for cap in [
+        gl::POLYGON_OFFSET_FILL,
+        gl::POLYGON_OFFSET_LINE,
+        gl::POLYGON_OFFSET_POINT,
+        gl::BLEND,
+        gl::STENCIL_TEST,
+        gl::COLOR_LOGIC_OP,
+        gl::LINE_STIPPLE,
+    ] {
+        set_enabled(gl, cap, false);
+    }
     // SAFETY: a context is current on this thread.
     unsafe {
         gl.ColorMask(1, 1, 1, 1);
         gl.BlendColor(0.0, 0.0, 0.0, 0.0);
+        gl.PolygonMode(gl::FRONT_AND_BACK, gl::FILL);
     }
     for call in &draw.calls {
         replay(gl, *call);

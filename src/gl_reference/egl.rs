@@ -607,7 +607,7 @@ impl<'g> Framebuffer<'g> {
             gl.BindRenderbuffer(bindings::RENDERBUFFER, color);
             gl.RenderbufferStorage(bindings::RENDERBUFFER, bindings::RGBA8, w, h);
             gl.BindRenderbuffer(bindings::RENDERBUFFER, depth);
-            gl.RenderbufferStorage(bindings::RENDERBUFFER, bindings::DEPTH_COMPONENT24, w, h);
+            gl.RenderbufferStorage(bindings::RENDERBUFFER, bindings::DEPTH24_STENCIL8, w, h);
             gl.BindRenderbuffer(bindings::RENDERBUFFER, 0);
             gl.BindFramebuffer(bindings::FRAMEBUFFER, framebuffer.framebuffer);
             gl.FramebufferRenderbuffer(
@@ -618,7 +618,7 @@ impl<'g> Framebuffer<'g> {
             );
             gl.FramebufferRenderbuffer(
                 bindings::FRAMEBUFFER,
-                bindings::DEPTH_ATTACHMENT,
+                bindings::DEPTH_STENCIL_ATTACHMENT,
                 bindings::RENDERBUFFER,
                 depth,
             );

@@ -182,6 +182,18 @@ pub enum GlCall {
     Blend(ffvk::Blend),
     /// `glBlendColor`.
     BlendColor([f32; 4]),
+    /// `glPolygonOffset(factor, units)` with `GL_POLYGON_OFFSET_FILL`, `_LINE` and `_POINT`
+    /// each enabled as the offset says.
+    PolygonOffset(ffvk::PolygonOffset),
+    /// `glPolygonMode(GL_FRONT, front)` and `glPolygonMode(GL_BACK, back)`.
+    PolygonMode(ffvk::PolygonModes),
+    /// `glEnable(GL_STENCIL_TEST)` with `glStencilFuncSeparate`, `glStencilOpSeparate` and
+    /// `glStencilMaskSeparate` for each face.
+    Stencil(ffvk::Stencil),
+    /// `glEnable(GL_COLOR_LOGIC_OP)` and `glLogicOp`.
+    LogicOp(ash::vk::LogicOp),
+    /// `glEnable(GL_LINE_STIPPLE)` and `glLineStipple(factor, pattern)`.
+    LineStipple(ffvk::LineStipple),
 }
 
 /// What the GL context reports about itself, and where it came from.

@@ -148,20 +148,14 @@ fn bad_color_masks_and_offsets_are_refused_naming_the_field() {
         .to_string();
     assert!(e.contains("color_mask") && e.contains("0x1F"), "{e}");
     let e = RasterState::default()
-        .with_polygon_offset(Some(PolygonOffset {
-            factor: f32::NAN,
-            units: 1.0,
-        }))
+        .with_polygon_offset(Some(PolygonOffset::fill(f32::NAN, 1.0)))
         .validate()
         .unwrap_err()
         .to_string();
     assert!(e.contains("polygon_offset") && e.contains("NaN"), "{e}");
     RasterState::default()
         .with_color_mask(vk::ColorComponentFlags::R | vk::ColorComponentFlags::A)
-        .with_polygon_offset(Some(PolygonOffset {
-            factor: -1.0,
-            units: -1.0,
-        }))
+        .with_polygon_offset(Some(PolygonOffset::fill(-1.0, -1.0)))
         .validate()
         .unwrap();
 }

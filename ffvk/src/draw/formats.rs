@@ -18,6 +18,21 @@ pub(crate) fn is_float_color(format: vk::Format) -> bool {
     (1..=LAST_COLOR).contains(&raw) && !is_integer(raw)
 }
 
+/// Whether the color format `format` is normalized (UNORM or SNORM, not sRGB): the formats a
+/// Vulkan logic op applies to among those ffvk renders into (it leaves float and sRGB ones
+/// alone, where GL would apply it).
+pub(crate) fn is_unorm_color(format: vk::Format) -> bool {
+    let raw = format.as_raw();
+    match raw {
+        // R4G4 .. A1R5G5B5: the packed formats, all UNORM.
+        1..=8 => true,
+        9..=57 => matches!((raw - 9) % 7, 0 | 1),
+        58..=69 => matches!((raw - 58) % 6, 0 | 1),
+        70..=97 => matches!((raw - 70) % 7, 0 | 1),
+        _ => false,
+    }
+}
+
 /// Whether the core format `raw` (1 ..= 123) is UINT or SINT: in each family of formats
 /// (R8, R8G8, …) the integer ones come at fixed places.
 fn is_integer(raw: i32) -> bool {

@@ -141,7 +141,8 @@ use crate::vk::Device;
 /// A draw's pipeline, state block and record, ready to record ([`Lighting::stage`]).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Staged {
-    pipeline: vk::Pipeline,
+    /// The pipeline, and a second one for a draw whose faces take different polygon modes.
+    pipeline: (vk::Pipeline, Option<vk::Pipeline>),
     /// The vertex layout's number.
     layout: u32,
     /// The state block's set and dynamic offset.
@@ -178,7 +179,12 @@ struct LastState {
     key: StateKey,
     block: Pushed,
     /// (mode, raster state, variant) and the pipeline such a draw of this state uses.
-    pipelines: Vec<(LightingMode, RasterState, Variant, vk::Pipeline)>,
+    pipelines: Vec<(
+        LightingMode,
+        RasterState,
+        Variant,
+        (vk::Pipeline, Option<vk::Pipeline>),
+    )>,
 }
 
 /// The next [`Lighting`]'s number (its layouts name it, so another's are refused).
@@ -206,6 +212,8 @@ pub struct Lighting {
     id: u64,
     /// Draws are staged for the deferred path's G-buffer pass ([`Lighting::set_gbuffer`]).
     gbuffer: bool,
+    /// Draws are staged for the stencil form of the target ([`Lighting::set_stencil_target`]).
+    stencil_target: bool,
     /// What the public recording calls last bound, and into which command buffer (module
     /// docs, "Bindings"): the next such call into the same command buffer binds only what
     /// differs. Cleared by [`Lighting::begin_frame`] and [`Lighting::forget_bindings`].
@@ -257,6 +265,7 @@ impl Lighting {
             last: None,
             id: NEXT_LIGHTING.fetch_add(1, std::sync::atomic::Ordering::Relaxed),
             gbuffer: false,
+            stencil_target: false,
             remembered: std::sync::Mutex::new(None),
             device: device.clone(),
         })
@@ -346,6 +355,7 @@ impl Lighting {
             affine: !self.input(0)?.positions_have_w(),
             assembly: (Topology::TriangleList, false),
             gbuffer: false,
+            stencil_target: self.stencil_target,
             clipped: state.clip.mask() != 0,
             fogged: state.fragment.fog.enabled,
             points: PointKey::OFF,
@@ -473,6 +483,7 @@ impl Lighting {
             affine: draw.modelview.row(3) == glam::Vec4::W && !positions_have_w,
             assembly: draw.geometry.assembly(),
             gbuffer: self.gbuffer && mode == LightingMode::Fragment,
+            stencil_target: self.stencil_target,
             clipped: draw.state.clip.mask() != 0,
             fogged: draw.state.fragment.fog.enabled,
             points: PointKey::of(draw.state, draw.geometry.assembly().0, Self::textured(draw)),
@@ -695,7 +706,8 @@ impl Lighting {
             .vertex_layout(staged.layout)
             .unwrap_or(&config.vertex_input);
         Bound {
-            pipeline: staged.pipeline,
+            pipeline: staged.pipeline.0,
+            second_pipeline: staged.pipeline.1,
             layout: self.pipelines.layout(),
             set_index: config.set_index,
             set: staged.state.0,
@@ -715,6 +727,13 @@ impl Lighting {
     /// Renderer's deferred frames) instead of lighting.
     pub(crate) fn set_gbuffer(&mut self, on: bool) {
         self.gbuffer = on;
+    }
+
+    /// Draws staged from now on render into the target's stencil form
+    /// ([`Target::with_stencil`](crate::Target::with_stencil)): the Renderer's frames that
+    /// test the stencil buffer.
+    pub(crate) fn set_stencil_target(&mut self, on: bool) {
+        self.stencil_target = on;
     }
 
     /// The pipeline cache its pipelines are made through.

@@ -7,6 +7,7 @@ use std::sync::Arc;
 
 use ash::vk;
 
+use crate::draw::formats;
 use crate::draw::record::Topology;
 use crate::error::{Error, LightingError, Result};
 use crate::gl::state::{FixedFunctionState, LightingMode, SpriteOrigin};
@@ -15,7 +16,9 @@ use crate::gpu::shaders;
 use crate::vk::objects::{DescriptorSetLayout, Pipeline, PipelineCache, PipelineLayout, ShaderModule};
 use crate::vk::Device;
 
-pub use super::raster::{Blend, BlendColor, Pixels, PolygonOffset, RasterState};
+pub use super::raster::{
+    Blend, BlendColor, LineStipple, Pixels, PolygonModes, PolygonOffset, RasterState, Stencil, StencilFace,
+};
 pub use super::target::{Target, COLOR_FORMAT, DEPTH_FORMAT};
 pub use super::vertex_input::{Attribute, FaceArrays, MaterialArray, VertexInput, MAX_VERTEX_BINDINGS};
 
@@ -316,6 +319,9 @@ struct PipelineKey {
     /// The deferred path's G-buffer pass (fragment mode only): four color attachments
     /// ([`GBUFFER_FORMATS`]) instead of the target's one.
     gbuffer: bool,
+    /// Renders into the stencil form of the target ([`Target::with_stencil`]): the
+    /// Renderer's frames that test the stencil buffer.
+    stencil_target: bool,
     /// The draw has user clip planes: the `_clipped` build.
     clipped: bool,
     /// The draw is fogged: the `_fog` build.
@@ -475,7 +481,7 @@ impl Pipelines {
             (mode, key, raster),
             (textured, small),
             (topology, restart),
-            (false, false, false),
+            (false, false, false, false),
             PointKey::of(&FixedFunctionState::default(), topology, textured),
         )
     }
@@ -493,7 +499,7 @@ impl Pipelines {
         (mode, key, raster): (LightingMode, SpecKey, RasterState),
         (textured, small): (bool, bool),
         (topology, restart): (Topology, bool),
-        (gbuffer, clipped, fogged): (bool, bool, bool),
+        (gbuffer, clipped, fogged, stencil_target): (bool, bool, bool, bool),
         points: PointKey,
     ) -> Result<vk::Pipeline> {
         let gbuffer = gbuffer && mode == LightingMode::Fragment;
@@ -507,6 +513,7 @@ impl Pipelines {
             topology,
             restart,
             gbuffer,
+            stencil_target,
             clipped: clipped && !gbuffer,
             fogged: fogged && !gbuffer,
             points,
@@ -530,6 +537,7 @@ impl Pipelines {
         raster: RasterState,
         (textured, small): (bool, bool),
         (topology, restart, points): (Topology, bool, PointKey),
+        stencil_target: bool,
     ) -> bool {
         self.pipelines.contains_key(&PipelineKey {
             layout,
@@ -541,6 +549,7 @@ impl Pipelines {
             topology,
             restart,
             gbuffer: false,
+            stencil_target,
             clipped: key != SpecKey::UBER && key.get(SpecConstant::ClipPlanes) != 0,
             fogged: key != SpecKey::UBER && key.get(SpecConstant::FogMode) > 0,
             points,
@@ -575,6 +584,44 @@ impl Pipelines {
         }
         if k.raster.depth_test && config.target.depth_format == vk::Format::UNDEFINED {
             return Err(LightingError::NoDepthAttachment.into());
+        }
+        let depth_format = if k.stencil_target {
+            config.target.with_stencil().depth_format
+        } else {
+            config.target.depth_format
+        };
+        if k.raster.stencil.is_some() && !formats::has_stencil(depth_format) {
+            return Err(LightingError::NoStencilAttachment { format: depth_format }.into());
+        }
+        let mode = k.raster.polygon_mode.front;
+        if mode != vk::PolygonMode::FILL && !device.info.fill_mode_non_solid {
+            return Err(Error::NotEnabled {
+                feature: "fillModeNonSolid",
+                flag: "fill_mode_non_solid",
+                needed_for: "glPolygonMode's GL_LINE and GL_POINT need",
+            });
+        }
+        if k.raster.logic_op.is_some() && !k.gbuffer {
+            if !device.info.logic_op {
+                return Err(Error::NotEnabled {
+                    feature: "logicOp",
+                    flag: "logic_op",
+                    needed_for: "glLogicOp (GL_COLOR_LOGIC_OP) needs",
+                });
+            }
+            if !formats::is_unorm_color(config.target.color_format) {
+                return Err(LightingError::LogicOpFormat {
+                    format: config.target.color_format,
+                }
+                .into());
+            }
+        }
+        if k.raster.line_stipple.is_some() && !device.info.stippled_lines {
+            return Err(Error::NotEnabled {
+                feature: "VK_EXT_line_rasterization's bresenhamLines and stippledBresenhamLines",
+                flag: "stippled_lines",
+                needed_for: "glLineStipple (GL_LINE_STIPPLE) needs",
+            });
         }
         if k.clipped && !device.info.clip_distance {
             return Err(Error::NotEnabled {
@@ -705,13 +752,18 @@ impl Pipelines {
             .provoking_vertex_mode(vk::ProvokingVertexModeEXT::LAST_VERTEX);
         // After the y flip of VK_FROM_GL_CLIP a GL-CCW triangle has positive area in Vulkan's
         // formula, so Vulkan's COUNTER_CLOCKWISE matches GL's FrontFace(CCW).
+        // Keys come from RasterState::face_passes: one polygon mode for both faces, and an
+        // offset only where the pass's mode is offset.
         let mut rasterization = vk::PipelineRasterizationStateCreateInfo::default()
-            .polygon_mode(vk::PolygonMode::FILL)
+            .polygon_mode(mode)
             .cull_mode(k.raster.cull_mode)
             .front_face(k.raster.front_face)
             .line_width(k.raster.line_width.0);
-        // GL_POLYGON_OFFSET_FILL offsets filled polygons only.
-        if let Some(o) = k.raster.polygon_offset.filter(|_| k.topology.is_triangles()) {
+        if let Some(o) = k
+            .raster
+            .polygon_offset
+            .filter(|o| k.topology.is_triangles() && o.offsets(mode))
+        {
             rasterization = rasterization
                 .depth_bias_enable(true)
                 .depth_bias_slope_factor(o.factor)
@@ -720,12 +772,38 @@ impl Pipelines {
         if k.mode == LightingMode::Flat {
             rasterization = rasterization.push_next(&mut provoking);
         }
+        // GL's stippled lines: Bresenham lines, bit (c / factor) mod 16 of the pattern.
+        let mut stippled = vk::PipelineRasterizationLineStateCreateInfoEXT::default();
+        if let Some(l) = k.raster.line_stipple {
+            stippled = stippled
+                .line_rasterization_mode(vk::LineRasterizationModeEXT::BRESENHAM)
+                .stippled_line_enable(true)
+                .line_stipple_factor(l.factor)
+                .line_stipple_pattern(l.pattern);
+            rasterization = rasterization.push_next(&mut stippled);
+        }
         let multisample =
             vk::PipelineMultisampleStateCreateInfo::default().rasterization_samples(config.target.samples);
-        let depth = vk::PipelineDepthStencilStateCreateInfo::default()
+        let mut depth = vk::PipelineDepthStencilStateCreateInfo::default()
             .depth_test_enable(k.raster.depth_test)
             .depth_write_enable(k.raster.depth_test && k.raster.depth_write)
             .depth_compare_op(k.raster.depth_compare);
+        if let Some(stencil) = k.raster.stencil {
+            let face = |f: crate::StencilFace| {
+                vk::StencilOpState::default()
+                    .compare_op(f.func)
+                    .reference(f.reference)
+                    .compare_mask(f.value_mask)
+                    .fail_op(f.fail)
+                    .depth_fail_op(f.depth_fail)
+                    .pass_op(f.pass)
+                    .write_mask(f.write_mask)
+            };
+            depth = depth
+                .stencil_test_enable(true)
+                .front(face(stencil.front))
+                .back(face(stencil.back));
+        }
         let mut blend_attachment =
             vk::PipelineColorBlendAttachmentState::default().color_write_mask(k.raster.color_mask);
         if let Some(b) = k.raster.blend {
@@ -746,9 +824,12 @@ impl Pipelines {
         } else {
             vec![blend_attachment]
         };
-        let blend = vk::PipelineColorBlendStateCreateInfo::default()
+        let mut blend = vk::PipelineColorBlendStateCreateInfo::default()
             .attachments(&blend_attachments)
             .blend_constants(k.raster.blend_color.0);
+        if let Some(op) = k.raster.logic_op.filter(|_| !k.gbuffer) {
+            blend = blend.logic_op_enable(true).logic_op(op);
+        }
         let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
         let dynamic = vk::PipelineDynamicStateCreateInfo::default().dynamic_states(&dynamic_states);
         let color_formats = if k.gbuffer {
@@ -758,7 +839,10 @@ impl Pipelines {
         };
         let mut rendering = vk::PipelineRenderingCreateInfo::default()
             .color_attachment_formats(&color_formats)
-            .depth_attachment_format(config.target.depth_format);
+            .depth_attachment_format(depth_format);
+        if formats::has_stencil(depth_format) {
+            rendering = rendering.stencil_attachment_format(depth_format);
+        }
         let info = vk::GraphicsPipelineCreateInfo::default()
             .stages(&stages)
             .vertex_input_state(&vertex_input)

@@ -104,9 +104,8 @@ pub struct RasterState {
     /// `glLineWidth`: 1 by default; another width needs the device's `wideLines` and must lie
     /// in its `lineWidthRange`.
     pub line_width: Pixels,
-    /// `GL_POLYGON_OFFSET_FILL` with `glPolygonOffset`: `None` (off) by default. Filled
-    /// triangles only (lines and points are not offset, as GL offsets them only under
-    /// `GL_POLYGON_OFFSET_LINE`/`POINT` with `glPolygonMode`).
+    /// `glPolygonOffset` with the modes it is enabled for: `None` (all three off) by
+    /// default. Polygons only: lines and points drawn as such are never offset.
     pub polygon_offset: Option<PolygonOffset>,
     /// `glColorMask`: the channels written, all four by default (`VK_COLOR_COMPONENT_R_BIT` ..
     /// `A_BIT`). A masked channel keeps what the image held; tests still run.
@@ -114,6 +113,139 @@ pub struct RasterState {
     /// `glBlendColor`: the constant the `CONSTANT_*` blend factors read, (0, 0, 0, 0) by
     /// default, each in [0, 1] (GL clamps it there).
     pub blend_color: BlendColor,
+    /// `glPolygonMode`: how front- and back-facing polygons are rasterized, `FILL` for both
+    /// by default. `LINE` and `POINT` need the device's `fillModeNonSolid`. Where the two
+    /// differ, ffvk draws the polygons twice, once with the back faces culled in the front
+    /// mode and once with the front faces culled in the back mode: each polygon is drawn once,
+    /// in its face's mode, but overlapping polygons of one draw may reach the framebuffer in
+    /// another order than GL's (seen only where they blend or tie in depth).
+    pub polygon_mode: PolygonModes,
+    /// `GL_STENCIL_TEST` with `glStencilFuncSeparate`, `glStencilOpSeparate` and
+    /// `glStencilMaskSeparate`: `None` (off) by default. Needs a depth format with stencil in
+    /// the [`Target`].
+    pub stencil: Option<Stencil>,
+    /// `GL_COLOR_LOGIC_OP` with `glLogicOp`: `None` (off) by default. Needs the device's
+    /// `logicOp` and a UNORM color format; replaces blending while on, as in GL.
+    pub logic_op: Option<vk::LogicOp>,
+    /// `GL_LINE_STIPPLE` with `glLineStipple`: `None` (off) by default. Needs
+    /// `VK_EXT_line_rasterization`'s stippled Bresenham lines.
+    pub line_stipple: Option<LineStipple>,
+}
+
+/// `glPolygonMode`'s two modes, `FILL`, `LINE` or `POINT` each.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct PolygonModes {
+    /// `GL_FRONT`'s mode.
+    pub front: vk::PolygonMode,
+    /// `GL_BACK`'s mode.
+    pub back: vk::PolygonMode,
+}
+
+impl PolygonModes {
+    /// `glPolygonMode(GL_FRONT_AND_BACK, mode)`.
+    pub const fn both(mode: vk::PolygonMode) -> Self {
+        PolygonModes {
+            front: mode,
+            back: mode,
+        }
+    }
+
+    /// GL's default: both faces filled.
+    pub const FILL: PolygonModes = PolygonModes::both(vk::PolygonMode::FILL);
+}
+
+impl Default for PolygonModes {
+    fn default() -> Self {
+        PolygonModes::FILL
+    }
+}
+
+/// One face's stencil state (GL 2.1 §4.1.5): the test `(reference & value_mask) func
+/// (stencil & value_mask)`, what each outcome writes, and the bits that may be written.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct StencilFace {
+    /// `glStencilFunc`'s func: `ALWAYS` by default.
+    pub func: vk::CompareOp,
+    /// `glStencilFunc`'s ref: 0 by default (GL clamps it to [0, 2^s - 1] when it tests).
+    pub reference: u32,
+    /// `glStencilFunc`'s mask: all ones by default.
+    pub value_mask: u32,
+    /// `glStencilOp`'s sfail: `KEEP` by default.
+    pub fail: vk::StencilOp,
+    /// `glStencilOp`'s dpfail: `KEEP` by default.
+    pub depth_fail: vk::StencilOp,
+    /// `glStencilOp`'s dppass: `KEEP` by default.
+    pub pass: vk::StencilOp,
+    /// `glStencilMask`: all ones by default.
+    pub write_mask: u32,
+}
+
+impl Default for StencilFace {
+    fn default() -> Self {
+        StencilFace {
+            func: vk::CompareOp::ALWAYS,
+            reference: 0,
+            value_mask: u32::MAX,
+            fail: vk::StencilOp::KEEP,
+            depth_fail: vk::StencilOp::KEEP,
+            pass: vk::StencilOp::KEEP,
+            write_mask: u32::MAX,
+        }
+    }
+}
+
+with_fields!(StencilFace {
+    /// Sets [`func`](StencilFace::func), [`reference`](StencilFace::reference) and
+    /// [`value_mask`](StencilFace::value_mask) at once through [`StencilFace::with_func`].
+    with_compare => func: vk::CompareOp,
+    /// Sets [`write_mask`](StencilFace::write_mask) (`glStencilMask`).
+    with_write_mask => write_mask: u32,
+});
+
+impl StencilFace {
+    /// `glStencilFunc(func, reference, value_mask)`.
+    #[must_use]
+    pub fn with_func(mut self, func: vk::CompareOp, reference: u32, value_mask: u32) -> Self {
+        (self.func, self.reference, self.value_mask) = (func, reference, value_mask);
+        self
+    }
+
+    /// `glStencilOp(fail, depth_fail, pass)`.
+    #[must_use]
+    pub fn with_ops(mut self, fail: vk::StencilOp, depth_fail: vk::StencilOp, pass: vk::StencilOp) -> Self {
+        (self.fail, self.depth_fail, self.pass) = (fail, depth_fail, pass);
+        self
+    }
+}
+
+/// The stencil test's state for each face (`glStencilFuncSeparate` and its kin); a polygon's
+/// facing picks one, points and lines take the front's.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub struct Stencil {
+    /// The front faces' (and points' and lines').
+    pub front: StencilFace,
+    /// The back faces'.
+    pub back: StencilFace,
+}
+
+impl Stencil {
+    /// The same state for both faces (`glStencilFunc`, `glStencilOp`, `glStencilMask`).
+    pub const fn both(face: StencilFace) -> Self {
+        Stencil {
+            front: face,
+            back: face,
+        }
+    }
+}
+
+/// `glLineStipple(factor, pattern)`: bit `(c / factor) mod 16` of `pattern` says whether the
+/// line's c-th fragment is drawn, c counting from each line's (or strip's) start.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct LineStipple {
+    /// The repeat factor, 1 ..= 256 (GL clamps it there).
+    pub factor: u32,
+    /// The 16-bit pattern, least significant bit first.
+    pub pattern: u16,
 }
 
 /// `glBlendColor`'s RGBA, compared and hashed by its bits.
@@ -134,21 +266,62 @@ impl std::hash::Hash for BlendColor {
     }
 }
 
-/// `glPolygonOffset(factor, units)`: a filled polygon's depth moves by
+/// `glPolygonOffset(factor, units)` with `GL_POLYGON_OFFSET_FILL`, `_LINE` and `_POINT`: a
+/// polygon rasterized in an enabled mode ([`RasterState::polygon_mode`]) has its depth moved by
 /// o = m · factor + r · units (GL 2.1 §3.5.5), m its depth slope and r the depth format's
 /// smallest resolvable step; Vulkan's depth bias with slope factor `factor` and constant factor
-/// `units` (and no clamp, as GL 2.1 has none). Compared and hashed by its bits.
+/// `units` (and no clamp, as GL 2.1 has none). Points and lines drawn as such are never
+/// offset. Compared and hashed by its bits.
 #[derive(Debug, Clone, Copy)]
 pub struct PolygonOffset {
     /// The slope factor.
     pub factor: f32,
     /// The constant, in units of r.
     pub units: f32,
+    /// `GL_POLYGON_OFFSET_FILL`: filled polygons are offset.
+    pub fill: bool,
+    /// `GL_POLYGON_OFFSET_LINE`: polygons drawn as outlines (`glPolygonMode` `GL_LINE`) are.
+    pub line: bool,
+    /// `GL_POLYGON_OFFSET_POINT`: polygons drawn as vertices (`GL_POINT`) are.
+    pub point: bool,
+}
+
+impl PolygonOffset {
+    /// `glPolygonOffset(factor, units)` with `GL_POLYGON_OFFSET_FILL` on (and `_LINE`,
+    /// `_POINT` off).
+    pub const fn fill(factor: f32, units: f32) -> Self {
+        PolygonOffset {
+            factor,
+            units,
+            fill: true,
+            line: false,
+            point: false,
+        }
+    }
+
+    /// Whether a polygon rasterized in `mode` is offset.
+    pub fn offsets(&self, mode: vk::PolygonMode) -> bool {
+        match mode {
+            vk::PolygonMode::LINE => self.line,
+            vk::PolygonMode::POINT => self.point,
+            _ => self.fill,
+        }
+    }
+
+    fn bits(&self) -> (u32, u32, bool, bool, bool) {
+        (
+            self.factor.to_bits(),
+            self.units.to_bits(),
+            self.fill,
+            self.line,
+            self.point,
+        )
+    }
 }
 
 impl PartialEq for PolygonOffset {
     fn eq(&self, other: &Self) -> bool {
-        (self.factor.to_bits(), self.units.to_bits()) == (other.factor.to_bits(), other.units.to_bits())
+        self.bits() == other.bits()
     }
 }
 
@@ -156,7 +329,7 @@ impl Eq for PolygonOffset {}
 
 impl std::hash::Hash for PolygonOffset {
     fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
-        (self.factor.to_bits(), self.units.to_bits()).hash(state);
+        self.bits().hash(state);
     }
 }
 
@@ -193,6 +366,10 @@ impl Default for RasterState {
             polygon_offset: None,
             color_mask: vk::ColorComponentFlags::RGBA,
             blend_color: BlendColor::default(),
+            polygon_mode: PolygonModes::FILL,
+            stencil: None,
+            logic_op: None,
+            line_stipple: None,
         }
     }
 }
@@ -210,6 +387,56 @@ impl RasterState {
     pub fn with_line_width(mut self, width: f32) -> Self {
         self.line_width = Pixels(width);
         self
+    }
+}
+
+impl RasterState {
+    /// Whether the state has none of the stencil test, a logic op, a polygon mode other than
+    /// fill and a line stipple: what the Renderer's deferred path (which lights a G-buffer's
+    /// pixels, not fragments) can take.
+    pub(crate) fn only_fills_and_blends(&self) -> bool {
+        self.stencil.is_none()
+            && self.logic_op.is_none()
+            && self.polygon_mode == PolygonModes::FILL
+            && self.line_stipple.is_none()
+    }
+
+    /// The raster state of each pass a draw of `triangles` (or, if not, of points or lines)
+    /// takes: one, or two where `glPolygonMode` gives the faces different modes and culling
+    /// keeps both (the front faces in their mode with the back ones culled, then the back
+    /// faces in theirs). Each has one polygon mode for both faces, and state that cannot
+    /// apply is dropped: points and lines have no polygon mode and no offset, and an offset
+    /// not enabled for a pass's mode is off in it.
+    pub fn face_passes(&self, triangles: bool) -> (RasterState, Option<RasterState>) {
+        if !triangles {
+            let plain = RasterState {
+                polygon_mode: PolygonModes::FILL,
+                polygon_offset: None,
+                ..*self
+            };
+            return (plain, None);
+        }
+        let in_mode = |mode: vk::PolygonMode, cull: vk::CullModeFlags| RasterState {
+            polygon_mode: PolygonModes::both(mode),
+            polygon_offset: self.polygon_offset.filter(|o| o.offsets(mode)),
+            cull_mode: cull,
+            ..*self
+        };
+        let PolygonModes { front, back } = self.polygon_mode;
+        let cull = self.cull_mode;
+        if front == back || cull == vk::CullModeFlags::FRONT_AND_BACK {
+            return (in_mode(front, cull), None);
+        }
+        if cull == vk::CullModeFlags::FRONT {
+            return (in_mode(back, cull), None);
+        }
+        if cull == vk::CullModeFlags::BACK {
+            return (in_mode(front, cull), None);
+        }
+        (
+            in_mode(front, vk::CullModeFlags::BACK),
+            Some(in_mode(back, vk::CullModeFlags::FRONT)),
+        )
     }
 }
 
@@ -280,6 +507,56 @@ impl RasterState {
                 "four values in [0, 1] (glBlendColor clamps them there)",
             );
         }
+        for (face, mode) in [
+            ("polygon_mode.front", self.polygon_mode.front),
+            ("polygon_mode.back", self.polygon_mode.back),
+        ] {
+            if !(0..=2).contains(&mode.as_raw()) {
+                return refuse(
+                    face,
+                    mode.as_raw().to_string(),
+                    "VK_POLYGON_MODE_FILL (0), LINE (1) or POINT (2)",
+                );
+            }
+        }
+        if let Some(s) = self.stencil {
+            for (field, f) in [("stencil.front", s.front), ("stencil.back", s.back)] {
+                if !(0..=7).contains(&f.func.as_raw()) {
+                    return refuse(
+                        field,
+                        format!("func {}", f.func.as_raw()),
+                        "a VkCompareOp, VK_COMPARE_OP_NEVER (0) .. VK_COMPARE_OP_ALWAYS (7)",
+                    );
+                }
+                for (what, op) in [("fail", f.fail), ("depth_fail", f.depth_fail), ("pass", f.pass)] {
+                    if !(0..=7).contains(&op.as_raw()) {
+                        return refuse(
+                            field,
+                            format!("{what} {}", op.as_raw()),
+                            "a VkStencilOp, VK_STENCIL_OP_KEEP (0) .. VK_STENCIL_OP_DECREMENT_AND_WRAP (7)",
+                        );
+                    }
+                }
+            }
+        }
+        if let Some(op) = self.logic_op {
+            if !(0..=15).contains(&op.as_raw()) {
+                return refuse(
+                    "logic_op",
+                    op.as_raw().to_string(),
+                    "a VkLogicOp, VK_LOGIC_OP_CLEAR (0) .. VK_LOGIC_OP_SET (15)",
+                );
+            }
+        }
+        if let Some(l) = self.line_stipple {
+            if !(1..=256).contains(&l.factor) {
+                return refuse(
+                    "line_stipple",
+                    format!("factor {}", l.factor),
+                    "a factor of 1 to 256 (glLineStipple clamps it there)",
+                );
+            }
+        }
         let Some(b) = self.blend else { return Ok(()) };
         for (field, factor) in [
             ("src_color", b.src_color),
@@ -328,4 +605,13 @@ with_fields!(RasterState {
     with_color_mask => color_mask: vk::ColorComponentFlags,
     /// Sets [`blend_color`](RasterState::blend_color) (`glBlendColor`).
     with_blend_color => blend_color: BlendColor,
+    /// Sets [`polygon_mode`](RasterState::polygon_mode) (`glPolygonMode`).
+    with_polygon_mode => polygon_mode: PolygonModes,
+    /// Sets [`stencil`](RasterState::stencil) (`GL_STENCIL_TEST` and its state).
+    with_stencil => stencil: Option<Stencil>,
+    /// Sets [`logic_op`](RasterState::logic_op) (`GL_COLOR_LOGIC_OP` and `glLogicOp`).
+    with_logic_op => logic_op: Option<vk::LogicOp>,
+    /// Sets [`line_stipple`](RasterState::line_stipple) (`GL_LINE_STIPPLE` and
+    /// `glLineStipple`).
+    with_line_stipple => line_stipple: Option<LineStipple>,
 });

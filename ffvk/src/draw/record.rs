@@ -303,6 +303,10 @@ impl Geometry {
 pub(crate) struct Bound<'a> {
     /// The pipeline for the draw's mode, state and raster state.
     pub pipeline: vk::Pipeline,
+    /// The pipeline of a second pass over the same geometry: the back faces, where
+    /// `glPolygonMode` gives them another mode than the front's
+    /// ([`RasterState::face_passes`](crate::RasterState::face_passes)).
+    pub second_pipeline: Option<vk::Pipeline>,
     /// The pipeline layout it was created with.
     pub layout: vk::PipelineLayout,
     /// The index of the state block's set in that layout.
@@ -440,6 +444,31 @@ pub(crate) unsafe fn record_in_run(
         // SAFETY: as above; one buffer per binding of the pipeline.
         unsafe { device.cmd_bind_vertex_buffers(cmd, binding, &[buffer], &[offset]) };
     }
+    // SAFETY: the caller's contract above.
+    unsafe { draw_geometry(device, cmd, bound, geometry, run) };
+    if let Some(second) = bound.second_pipeline {
+        run.pipeline = Some(second);
+        // SAFETY: as above; the second pipeline has the first's layout, vertex input and
+        // specialization, so everything bound stays valid for it.
+        unsafe {
+            device.cmd_bind_pipeline(cmd, vk::PipelineBindPoint::GRAPHICS, second);
+            draw_geometry(device, cmd, bound, geometry, run);
+        }
+    }
+}
+
+/// Binds `geometry`'s index buffer where it differs from the run's and draws it.
+///
+/// # Safety
+///
+/// As [`record_in_run`], with everything but the index buffer bound.
+unsafe fn draw_geometry(
+    device: &ash::Device,
+    cmd: vk::CommandBuffer,
+    bound: &Bound,
+    geometry: &Geometry,
+    run: &mut RunState,
+) {
     let (instances, first_instance) = (bound.draws, bound.first_record);
     match *geometry {
         Geometry::Indexed {

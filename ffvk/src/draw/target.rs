@@ -45,6 +45,19 @@ impl Target {
 }
 
 impl Target {
+    /// This target with a stencil buffer: its depth format with 8 stencil bits beside
+    /// (`D32_SFLOAT` becomes `D32_SFLOAT_S8_UINT`, `D16_UNORM` `D16_UNORM_S8_UINT`,
+    /// `X8_D24_UNORM_PACK32` `D24_UNORM_S8_UINT`); a format with stencil, or none, stays.
+    pub fn with_stencil(mut self) -> Self {
+        self.depth_format = match self.depth_format {
+            vk::Format::D32_SFLOAT => vk::Format::D32_SFLOAT_S8_UINT,
+            vk::Format::D16_UNORM => vk::Format::D16_UNORM_S8_UINT,
+            vk::Format::X8_D24_UNORM_PACK32 => vk::Format::D24_UNORM_S8_UINT,
+            other => other,
+        };
+        self
+    }
+
     /// Checks the values themselves, before any device is asked: the color format is one the
     /// shaders write as floats, the depth format is `UNDEFINED` or a depth format, and the
     /// samples are one `VkSampleCountFlagBits` bit. Errors name the field and its value.

@@ -32,8 +32,37 @@ pub(super) fn attachment_barriers(targets: &Targets) -> [vk::ImageMemoryBarrier2
             .old_layout(vk::ImageLayout::UNDEFINED)
             .new_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
             .image(targets.depth.raw())
-            .subresource_range(subresource(vk::ImageAspectFlags::DEPTH)),
+            .subresource_range(subresource(depth_aspects(targets))),
     ]
+}
+
+/// The depth image's aspects: depth, and stencil where it has one.
+pub(super) fn depth_aspects(targets: &Targets) -> vk::ImageAspectFlags {
+    match targets.stencil {
+        false => vk::ImageAspectFlags::DEPTH,
+        true => vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL,
+    }
+}
+
+/// The depth image as the frame's stencil attachment (the same view), cleared to the
+/// frame's `glClearStencil`, where it has stencil.
+pub(super) fn stencil_attachment<'a>(
+    targets: &Targets,
+    frame: &Frame,
+) -> Option<vk::RenderingAttachmentInfo<'a>> {
+    targets.stencil.then(|| {
+        vk::RenderingAttachmentInfo::default()
+            .image_view(targets.depth.view())
+            .image_layout(vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL)
+            .load_op(vk::AttachmentLoadOp::CLEAR)
+            .store_op(vk::AttachmentStoreOp::DONT_CARE)
+            .clear_value(vk::ClearValue {
+                depth_stencil: vk::ClearDepthStencilValue {
+                    depth: 1.0,
+                    stencil: frame.clear_stencil,
+                },
+            })
+    })
 }
 
 /// The color image as the frame's attachment, cleared to its clear color.

@@ -98,6 +98,8 @@ pub(super) fn eligible(frame: &Frame, specialize: Specialize, cpu: bool) -> Opti
             && d.raster(frame).blend.is_none()
             // The passes write every channel: a masked draw stays forward.
             && d.raster(frame).color_mask == ash::vk::ColorComponentFlags::RGBA
+            // So do the stencil test, logic ops, outlines, points and stipples.
+            && d.raster(frame).only_fills_and_blends()
             && !d.textured()
             // Fog, the alpha test and an unlit color sum are forward-only stages.
             && !d.state.fragment.fog.enabled

@@ -6,7 +6,9 @@ use ash::vk;
 use glam::{Mat4, Vec4};
 
 use super::texture::Texture;
-use crate::draw::pipeline::{Blend, BlendColor, PolygonOffset, RasterState};
+use crate::draw::pipeline::{
+    Blend, BlendColor, LineStipple, PolygonModes, PolygonOffset, RasterState, Stencil,
+};
 use crate::draw::record::Topology;
 use crate::gl::state::{Face, FixedFunctionState};
 use crate::vk::Buffer;
@@ -86,6 +88,14 @@ pub struct Draw<'a> {
     pub blend: Option<Blend>,
     /// `glBlendColor`, each in [0, 1]; (0, 0, 0, 0) by default.
     pub blend_color: [f32; 4],
+    /// `glPolygonMode`: both faces filled by default (see [`RasterState::polygon_mode`]).
+    pub polygon_mode: PolygonModes,
+    /// `GL_STENCIL_TEST` with its state: `None` (off) by default.
+    pub stencil: Option<Stencil>,
+    /// `GL_COLOR_LOGIC_OP` with `glLogicOp`: `None` (off) by default.
+    pub logic_op: Option<vk::LogicOp>,
+    /// `GL_LINE_STIPPLE` with `glLineStipple`: `None` (off) by default.
+    pub line_stipple: Option<LineStipple>,
 }
 
 impl<'a> Draw<'a> {
@@ -105,7 +115,40 @@ impl<'a> Draw<'a> {
             color_mask: [true; 4],
             blend: None,
             blend_color: [0.0; 4],
+            polygon_mode: PolygonModes::FILL,
+            stencil: None,
+            logic_op: None,
+            line_stipple: None,
         }
+    }
+
+    /// This draw with `glPolygonMode` (both faces' modes).
+    #[must_use]
+    pub fn with_polygon_mode(mut self, modes: PolygonModes) -> Self {
+        self.polygon_mode = modes;
+        self
+    }
+
+    /// This draw with `GL_STENCIL_TEST` on and `stencil`'s state (`None`: off). A frame
+    /// with such a draw has a stencil buffer, cleared to [`Frame::clear_stencil`].
+    #[must_use]
+    pub fn with_stencil(mut self, stencil: Option<Stencil>) -> Self {
+        self.stencil = stencil;
+        self
+    }
+
+    /// This draw with `GL_COLOR_LOGIC_OP` on and `glLogicOp(op)` (`None`: off).
+    #[must_use]
+    pub fn with_logic_op(mut self, op: Option<vk::LogicOp>) -> Self {
+        self.logic_op = op;
+        self
+    }
+
+    /// This draw with `GL_LINE_STIPPLE` on and `glLineStipple` (`None`: off).
+    #[must_use]
+    pub fn with_line_stipple(mut self, stipple: Option<LineStipple>) -> Self {
+        self.line_stipple = stipple;
+        self
     }
 
     /// This draw with `GL_BLEND` on and `blend`'s factors and equations (`None`: off).
@@ -125,7 +168,7 @@ impl<'a> Draw<'a> {
     /// This draw with `glPolygonOffset(factor, units)` and `GL_POLYGON_OFFSET_FILL` on.
     #[must_use]
     pub fn with_polygon_offset(mut self, factor: f32, units: f32) -> Self {
-        self.polygon_offset = Some(PolygonOffset { factor, units });
+        self.polygon_offset = Some(PolygonOffset::fill(factor, units));
         self
     }
 
@@ -188,6 +231,10 @@ impl<'a> Draw<'a> {
                 Some(Face::FrontAndBack) => vk::CullModeFlags::FRONT_AND_BACK,
             },
             polygon_offset: self.polygon_offset,
+            polygon_mode: self.polygon_mode,
+            stencil: self.stencil,
+            logic_op: self.logic_op,
+            line_stipple: self.line_stipple,
             blend: self.blend,
             blend_color: BlendColor(self.blend_color),
             color_mask: [
@@ -228,6 +275,9 @@ pub struct Frame<'a> {
     /// How the draws are recorded: as one run (the default), or one draw at a time as an
     /// embedder recording each GL draw as it comes would ([`Recording`]).
     pub recording: Recording,
+    /// `glClearStencil`: what the stencil buffer is cleared to (0 by default), where a draw
+    /// tests it ([`Frame::has_stencil`]). The buffer has 8 bits.
+    pub clear_stencil: u32,
 }
 
 /// How a [`Frame`]'s draws are recorded into the command buffer. Both draw the same image; the
@@ -306,7 +356,13 @@ impl<'a> Frame<'a> {
             draws: Vec::new(),
             fragment_path: FragmentPath::Forward,
             recording: Recording::Run,
+            clear_stencil: 0,
         }
+    }
+
+    /// Whether a draw tests the stencil buffer: then the frame has one.
+    pub fn has_stencil(&self) -> bool {
+        self.draws.iter().any(|d| d.stencil.is_some())
     }
 }
 

@@ -88,7 +88,11 @@ impl Pass {
 struct Targets {
     extent: vk::Extent2D,
     color: Image,
+    /// [`DEPTH_FORMAT`], or its stencil form ([`Target::with_stencil`]) for frames that test
+    /// the stencil buffer.
     depth: Image,
+    /// Whether `depth` has stencil.
+    stencil: bool,
     readback: Buffer,
 }
 
@@ -285,13 +289,17 @@ impl Renderer {
         Ok(Texture::new(gpu_image, sampler, binding, image, sampling))
     }
 
-    fn ensure_targets(&mut self, width: u32, height: u32) -> Result<()> {
+    fn ensure_targets(&mut self, width: u32, height: u32, stencil: bool) -> Result<()> {
         let max = self.device.limits.max_image_dimension2_d;
         if width == 0 || height == 0 || width > max || height > max {
             return Err(Error::InvalidSize { width, height, max });
         }
         let extent = vk::Extent2D { width, height };
-        if self.targets.as_ref().is_some_and(|t| t.extent == extent) {
+        if self
+            .targets
+            .as_ref()
+            .is_some_and(|t| t.extent == extent && t.stencil == stencil)
+        {
             return Ok(());
         }
         self.targets = None;
@@ -302,12 +310,19 @@ impl Renderer {
             vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::TRANSFER_SRC,
             vk::ImageAspectFlags::COLOR,
         )?;
+        let (depth_format, depth_aspects) = match stencil {
+            false => (DEPTH_FORMAT, vk::ImageAspectFlags::DEPTH),
+            true => (
+                Target::OFFSCREEN.with_stencil().depth_format,
+                vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL,
+            ),
+        };
         let depth = Image::new(
             &self.device,
             extent,
-            DEPTH_FORMAT,
+            depth_format,
             vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT,
-            vk::ImageAspectFlags::DEPTH,
+            depth_aspects,
         )?;
         let readback = Buffer::new(
             &self.device,
@@ -320,6 +335,7 @@ impl Renderer {
             extent,
             color,
             depth,
+            stencil,
             readback,
         });
         Ok(())
@@ -396,7 +412,8 @@ impl Renderer {
                 return Err(MeshError::ForeignTexture { draw: i }.into());
             }
         }
-        self.ensure_targets(frame.width, frame.height)?;
+        self.ensure_targets(frame.width, frame.height, frame.has_stencil())?;
+        self.lighting.set_stencil_target(frame.has_stencil());
         // The lit draws first (their time counts as recording, below): consecutive draws under
         // one state borrow it.
         let lits_start = std::time::Instant::now();

@@ -3,7 +3,9 @@
 
 use ash::vk;
 
-use super::attachments::{area_and_viewport, attachment_barriers, color_attachment, depth_attachment};
+use super::attachments::{
+    area_and_viewport, attachment_barriers, color_attachment, depth_attachment, stencil_attachment,
+};
 use super::deferred::{record_deferred, DeferredPass};
 use super::{subresource, Frame, Pass, Recording, Renderer, Targets};
 use crate::draw::lighting::{DrawValues, Lighting, LitDraw, Staged};
@@ -108,12 +110,16 @@ unsafe fn record_pass(
     let to_attachment = attachment_barriers(targets);
     let color_attachments = [color_attachment(targets, frame)];
     let depth_attachment = depth_attachment(targets, vk::AttachmentStoreOp::DONT_CARE);
+    let stencil_attachment = stencil_attachment(targets, frame);
     let (area, viewport) = area_and_viewport(extent);
-    let rendering = vk::RenderingInfo::default()
+    let mut rendering = vk::RenderingInfo::default()
         .render_area(area)
         .layer_count(1)
         .color_attachments(&color_attachments)
         .depth_attachment(&depth_attachment);
+    if let Some(stencil) = &stencil_attachment {
+        rendering = rendering.stencil_attachment(stencil);
+    }
 
     // SAFETY: recording into a command buffer in the recording state; every handle belongs
     // to this device and outlives the submission (render waits for it). The same holds for

@@ -661,6 +661,10 @@ pub fn render_scene_with(
             color_mask: [true; 4],
             blend: None,
             blend_color: [0.0; 4],
+            polygon_mode: crate::PolygonModes::FILL,
+            stencil: None,
+            logic_op: None,
+            line_stipple: None,
         });
     }
     Ok(renderer.render(&frame)?.into())

@@ -57,6 +57,13 @@ pub struct DeviceInfo {
     pub large_points: bool,
     /// `shaderClipDistance`: GL's user clip planes (`glClipPlane`) through `gl_ClipDistance`.
     pub clip_distance: bool,
+    /// `fillModeNonSolid`: `glPolygonMode`'s `GL_LINE` and `GL_POINT`.
+    pub fill_mode_non_solid: bool,
+    /// `logicOp`: `glLogicOp` (`GL_COLOR_LOGIC_OP`).
+    pub logic_op: bool,
+    /// `VK_EXT_line_rasterization` with `bresenhamLines` and `stippledBresenhamLines`:
+    /// `glLineStipple` (`GL_LINE_STIPPLE`).
+    pub stippled_lines: bool,
     /// `lineWidthRange` and `pointSizeRange`, in pixels.
     pub line_width_range: [f32; 2],
     /// `pointSizeRange`, in pixels.
@@ -142,6 +149,13 @@ pub struct EnabledFeatures {
     pub large_points: bool,
     /// `shaderClipDistance`: needed for GL's user clip planes.
     pub clip_distance: bool,
+    /// `fillModeNonSolid`: needed for `glPolygonMode`'s `GL_LINE` and `GL_POINT`.
+    pub fill_mode_non_solid: bool,
+    /// `logicOp`: needed for `glLogicOp`.
+    pub logic_op: bool,
+    /// `VK_EXT_line_rasterization` (enabled) with `bresenhamLines` and
+    /// `stippledBresenhamLines`: needed for `glLineStipple`.
+    pub stippled_lines: bool,
 }
 
 with_fields!(EnabledFeatures {
@@ -155,6 +169,12 @@ with_fields!(EnabledFeatures {
     with_large_points => large_points: bool,
     /// Sets [`clip_distance`](EnabledFeatures::clip_distance).
     with_clip_distance => clip_distance: bool,
+    /// Sets [`fill_mode_non_solid`](EnabledFeatures::fill_mode_non_solid).
+    with_fill_mode_non_solid => fill_mode_non_solid: bool,
+    /// Sets [`logic_op`](EnabledFeatures::logic_op).
+    with_logic_op => logic_op: bool,
+    /// Sets [`stippled_lines`](EnabledFeatures::stippled_lines).
+    with_stippled_lines => stippled_lines: bool,
 });
 
 fn device_name(props: &vk::PhysicalDeviceProperties) -> String {
@@ -259,12 +279,24 @@ impl Device {
         // GL's glLineWidth and glPointSize, where the device has them.
         (info.wide_lines, info.large_points) = (supported.wide_lines, supported.large_points);
         info.clip_distance = supported.clip_distance;
+        (info.fill_mode_non_solid, info.logic_op) = (supported.fill_mode_non_solid, supported.logic_op);
+        let has_line_rasterization = extensions.iter().any(|e| {
+            e.extension_name_as_c_str()
+                .is_ok_and(|n| n == ext::line_rasterization::NAME)
+        });
+        info.stippled_lines = has_line_rasterization && supported.stippled_lines;
 
         let priorities = [1.0f32];
         let queues = [vk::DeviceQueueCreateInfo::default()
             .queue_family_index(queue_family)
             .queue_priorities(&priorities)];
-        let extension_names = [ext::provoking_vertex::NAME.as_ptr()];
+        let mut extension_names = vec![ext::provoking_vertex::NAME.as_ptr()];
+        if info.stippled_lines {
+            extension_names.push(ext::line_rasterization::NAME.as_ptr());
+        }
+        let mut enable_lines = vk::PhysicalDeviceLineRasterizationFeaturesEXT::default()
+            .bresenham_lines(info.stippled_lines)
+            .stippled_bresenham_lines(info.stippled_lines);
         let mut enable_v13 = vk::PhysicalDeviceVulkan13Features::default()
             .dynamic_rendering(true)
             .synchronization2(true);
@@ -274,13 +306,18 @@ impl Device {
             .pipeline_statistics_query(pipeline_statistics_query)
             .wide_lines(supported.wide_lines)
             .large_points(supported.large_points)
-            .shader_clip_distance(supported.clip_distance);
-        let create = vk::DeviceCreateInfo::default()
+            .shader_clip_distance(supported.clip_distance)
+            .fill_mode_non_solid(supported.fill_mode_non_solid)
+            .logic_op(supported.logic_op);
+        let mut create = vk::DeviceCreateInfo::default()
             .queue_create_infos(&queues)
             .enabled_extension_names(&extension_names)
             .enabled_features(&base)
             .push_next(&mut enable_v13)
             .push_next(&mut enable_provoking);
+        if info.stippled_lines {
+            create = create.push_next(&mut enable_lines);
+        }
         // SAFETY: the create info and everything it points to live until the call returns.
         let raw =
             unsafe { vki.create_device(physical, &create, None) }.map_err(vk_error("vkCreateDevice"))?;
@@ -401,6 +438,21 @@ impl Device {
                 supported.clip_distance,
                 "shaderClipDistance (EnabledFeatures::clip_distance says it is enabled)",
             ),
+            (
+                enabled.fill_mode_non_solid,
+                supported.fill_mode_non_solid,
+                "fillModeNonSolid (EnabledFeatures::fill_mode_non_solid says it is enabled)",
+            ),
+            (
+                enabled.logic_op,
+                supported.logic_op,
+                "logicOp (EnabledFeatures::logic_op says it is enabled)",
+            ),
+            (
+                enabled.stippled_lines,
+                supported.stippled_lines,
+                "VK_EXT_line_rasterization's bresenhamLines and stippledBresenhamLines (EnabledFeatures::stippled_lines says they are enabled)",
+            ),
         ] {
             if claimed && !has {
                 return Err(Error::MissingFeature(name.into()));
@@ -409,6 +461,11 @@ impl Device {
         let mut info = describe(&props, &supported, 0, false, enabled.provoking_vertex_last, false);
         (info.wide_lines, info.large_points) = (enabled.wide_lines, enabled.large_points);
         info.clip_distance = enabled.clip_distance;
+        (info.fill_mode_non_solid, info.logic_op, info.stippled_lines) = (
+            enabled.fill_mode_non_solid,
+            enabled.logic_op,
+            enabled.stippled_lines,
+        );
         let allocator = match shared {
             #[cfg(feature = "shared-allocator")]
             Some(shared) => Ok(DeviceAllocator::Shared(shared)),
@@ -570,6 +627,10 @@ struct Supported {
     wide_lines: bool,
     large_points: bool,
     clip_distance: bool,
+    fill_mode_non_solid: bool,
+    logic_op: bool,
+    /// `bresenhamLines` and `stippledBresenhamLines` (the extension must be listed too).
+    stippled_lines: bool,
     driver_name: String,
     driver_info: String,
     /// Vulkan 1.1's maxMemoryAllocationSize.
@@ -583,9 +644,11 @@ impl Supported {
     unsafe fn query(instance: &ash::Instance, physical: vk::PhysicalDevice) -> Supported {
         let mut provoking = vk::PhysicalDeviceProvokingVertexFeaturesEXT::default();
         let mut v13 = vk::PhysicalDeviceVulkan13Features::default();
+        let mut lines = vk::PhysicalDeviceLineRasterizationFeaturesEXT::default();
         let mut features = vk::PhysicalDeviceFeatures2::default()
             .push_next(&mut v13)
-            .push_next(&mut provoking);
+            .push_next(&mut provoking)
+            .push_next(&mut lines);
         let mut driver = vk::PhysicalDeviceDriverProperties::default();
         let mut v11 = vk::PhysicalDeviceVulkan11Properties::default();
         let mut props2 = vk::PhysicalDeviceProperties2::default()
@@ -601,6 +664,9 @@ impl Supported {
         let wide_lines = features.features.wide_lines == vk::TRUE;
         let large_points = features.features.large_points == vk::TRUE;
         let clip_distance = features.features.shader_clip_distance == vk::TRUE;
+        let fill_mode_non_solid = features.features.fill_mode_non_solid == vk::TRUE;
+        let logic_op = features.features.logic_op == vk::TRUE;
+        let stippled_lines = lines.bresenham_lines == vk::TRUE && lines.stippled_bresenham_lines == vk::TRUE;
         let cstr = |bytes: &[std::ffi::c_char]| {
             // SAFETY: the driver properties hold NUL-terminated strings within their arrays.
             unsafe { CStr::from_ptr(bytes.as_ptr()) }
@@ -615,6 +681,9 @@ impl Supported {
             wide_lines,
             large_points,
             clip_distance,
+            fill_mode_non_solid,
+            logic_op,
+            stippled_lines,
             driver_name: cstr(&driver.driver_name),
             driver_info: cstr(&driver.driver_info),
             max_memory_allocation_size: v11.max_memory_allocation_size,
@@ -651,6 +720,9 @@ fn describe(
         wide_lines: false,
         large_points: false,
         clip_distance: false,
+        fill_mode_non_solid: false,
+        logic_op: false,
+        stippled_lines: false,
         line_width_range: props.limits.line_width_range,
         point_size_range: props.limits.point_size_range,
         validation,

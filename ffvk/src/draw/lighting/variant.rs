@@ -26,6 +26,8 @@ pub(super) struct Variant {
     pub(super) assembly: (Topology, bool),
     /// The deferred path's G-buffer pass ([`Lighting::set_gbuffer`]).
     pub(super) gbuffer: bool,
+    /// Renders into the stencil form of the target ([`Lighting::set_stencil_target`]).
+    pub(super) stencil_target: bool,
     /// Some user clip plane is enabled: the `_clipped` build.
     pub(super) clipped: bool,
     /// Fog is on: the `_fog` build.
@@ -35,9 +37,26 @@ pub(super) struct Variant {
 }
 
 impl Lighting {
-    /// The pipeline a draw with `state` and `raster`, (textured or not, small or not, with an
-    /// affine modelview or not), uses under the [`Specialize`] policy.
+    /// The pipelines a draw with `state` and `raster`, (textured or not, small or not, with an
+    /// affine modelview or not), uses under the [`Specialize`] policy: one, or two where its
+    /// faces are rasterized in different polygon modes ([`RasterState::face_passes`]).
     pub(super) fn pipeline_for(
+        &mut self,
+        state: &FixedFunctionState,
+        raster: RasterState,
+        variant: Variant,
+    ) -> Result<(vk::Pipeline, Option<vk::Pipeline>)> {
+        let (first, second) = raster.face_passes(variant.assembly.0.is_triangles());
+        let first = self.pipeline_of_pass(state, first, variant)?;
+        let second = match second {
+            Some(raster) => Some(self.pipeline_of_pass(state, raster, variant)?),
+            None => None,
+        };
+        Ok((first, second))
+    }
+
+    /// The pipeline of one of a draw's passes.
+    fn pipeline_of_pass(
         &mut self,
         state: &FixedFunctionState,
         raster: RasterState,
@@ -61,6 +80,7 @@ impl Lighting {
                     raster,
                     textured,
                     (assembly.0, assembly.1, variant.points),
+                    variant.stencil_target,
                 ) || self.pipelines.counts().1 < MAX_AUTO_VARIANTS
                 {
                     key
@@ -74,7 +94,12 @@ impl Lighting {
             (mode, key, raster),
             textured,
             assembly,
-            (variant.gbuffer, variant.clipped, variant.fogged),
+            (
+                variant.gbuffer,
+                variant.clipped,
+                variant.fogged,
+                variant.stencil_target,
+            ),
             variant.points,
         )
     }
