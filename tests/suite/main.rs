@@ -29,6 +29,7 @@ mod lighting;
 mod memory;
 mod outputs;
 mod points;
+mod raster_modes;
 mod raster_state;
 mod reference;
 mod regression;

@@ -772,15 +772,21 @@ impl Pipelines {
         if k.mode == LightingMode::Flat {
             rasterization = rasterization.push_next(&mut provoking);
         }
-        // GL's stippled lines: Bresenham lines, bit (c / factor) mod 16 of the pattern.
-        let mut stippled = vk::PipelineRasterizationLineStateCreateInfoEXT::default();
-        if let Some(l) = k.raster.line_stipple {
-            stippled = stippled
-                .line_rasterization_mode(vk::LineRasterizationModeEXT::BRESENHAM)
-                .stippled_line_enable(true)
-                .line_stipple_factor(l.factor)
-                .line_stipple_pattern(l.pattern);
-            rasterization = rasterization.push_next(&mut stippled);
+        // GL's aliased lines are its diamond-exit lines (§3.4.1): Vulkan's Bresenham lines,
+        // where the device has them, for line primitives and polygon outlines alike (the
+        // default lines of some drivers are rectangles, two pixels wide on a diagonal).
+        // Stippled, bit (c / factor) mod 16 of the pattern draws fragment c.
+        let draws_lines = k.topology.is_lines() || (k.topology.is_triangles() && mode == vk::PolygonMode::LINE);
+        let mut lines = vk::PipelineRasterizationLineStateCreateInfoEXT::default();
+        if draws_lines && device.info.stippled_lines {
+            lines = lines.line_rasterization_mode(vk::LineRasterizationModeEXT::BRESENHAM);
+            if let Some(l) = k.raster.line_stipple {
+                lines = lines
+                    .stippled_line_enable(true)
+                    .line_stipple_factor(l.factor)
+                    .line_stipple_pattern(l.pattern);
+            }
+            rasterization = rasterization.push_next(&mut lines);
         }
         let multisample =
             vk::PipelineMultisampleStateCreateInfo::default().rasterization_samples(config.target.samples);

@@ -63,6 +63,11 @@ impl Topology {
         )
     }
 
+    /// A list or strip of lines.
+    pub fn is_lines(self) -> bool {
+        matches!(self, Topology::LineList | Topology::LineStrip)
+    }
+
     /// A strip or a fan: the topologies primitive restart can cut (Vulkan allows it on lists
     /// only with a feature ffvk does not ask for).
     pub fn restartable(self) -> bool {

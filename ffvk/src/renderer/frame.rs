@@ -172,6 +172,13 @@ impl<'a> Draw<'a> {
         self
     }
 
+    /// This draw with `glPolygonOffset` and the modes it is enabled for (`None`: all off).
+    #[must_use]
+    pub fn with_offset(mut self, offset: Option<PolygonOffset>) -> Self {
+        self.polygon_offset = offset;
+        self
+    }
+
     /// This draw with `glColorMask(r, g, b, a)`.
     #[must_use]
     pub fn with_color_mask(mut self, mask: [bool; 4]) -> Self {
