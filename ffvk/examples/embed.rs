@@ -322,6 +322,8 @@ struct App {
     messages: Box<Mutex<Vec<String>>>,
     physical: vk::PhysicalDevice,
     device: ash::Device,
+    /// VK_EXT_line_rasterization's Bresenham lines are enabled: GL's aliased lines.
+    bresenham_lines: bool,
     queue: vk::Queue,
     pool: vk::CommandPool,
     cmd: vk::CommandBuffer,
@@ -418,17 +420,32 @@ impl App {
         let queues = [vk::DeviceQueueCreateInfo::default()
             .queue_family_index(family)
             .queue_priorities(&priorities)];
-        let device_extensions = [ext::provoking_vertex::NAME.as_ptr()];
+        // GL draws its lines by the diamond-exit rule: Bresenham lines, where the device has them.
+        // SAFETY: physical is valid.
+        let bresenham_lines = unsafe { instance.enumerate_device_extension_properties(physical) }
+            .map_err(|e| e.to_string())?
+            .iter()
+            .any(|e| e.extension_name_as_c_str() == Ok(ext::line_rasterization::NAME));
+        let mut device_extensions = vec![ext::provoking_vertex::NAME.as_ptr()];
+        if bresenham_lines {
+            device_extensions.push(ext::line_rasterization::NAME.as_ptr());
+        }
         let mut v13 = vk::PhysicalDeviceVulkan13Features::default()
             .dynamic_rendering(true)
             .synchronization2(true);
         let mut provoking =
             vk::PhysicalDeviceProvokingVertexFeaturesEXT::default().provoking_vertex_last(true);
-        let info = vk::DeviceCreateInfo::default()
+        let mut lines = vk::PhysicalDeviceLineRasterizationFeaturesEXT::default()
+            .bresenham_lines(true)
+            .stippled_bresenham_lines(true);
+        let mut info = vk::DeviceCreateInfo::default()
             .queue_create_infos(&queues)
             .enabled_extension_names(&device_extensions)
             .push_next(&mut v13)
             .push_next(&mut provoking);
+        if bresenham_lines {
+            info = info.push_next(&mut lines);
+        }
         // SAFETY: the create info and what it points to outlive the call.
         let device = unsafe { instance.create_device(physical, &info, None) }
             .map_err(|e| format!("vkCreateDevice: {e}"))?;
@@ -461,6 +478,7 @@ impl App {
             messages,
             physical,
             device,
+            bresenham_lines,
             queue,
             pool,
             cmd,
@@ -615,6 +633,7 @@ impl App {
         let mut features = EnabledFeatures::default();
         features.dynamic_rendering = true;
         features.provoking_vertex_last = true;
+        features.stippled_lines = self.bresenham_lines;
         // SAFETY: the device was made from this physical device of this instance with these
         // features, and outlives the returned device (the caller drops it before `self`).
         let ffvk_device = unsafe {

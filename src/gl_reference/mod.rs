@@ -15,6 +15,7 @@
 //! all again, on the calling thread. Calls are serialized by a process-wide lock so that
 //! threads (parallel tests, for one) never drive the GL driver concurrently.
 
+mod calls;
 mod draw;
 mod egl;
 mod error;

@@ -142,7 +142,7 @@ use crate::vk::Device;
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Staged {
     /// The pipeline, and a second one for a draw whose faces take different polygon modes.
-    pipeline: (vk::Pipeline, Option<vk::Pipeline>),
+    pipeline: DrawPipelines,
     /// The vertex layout's number.
     layout: u32,
     /// The state block's set and dynamic offset.
@@ -179,13 +179,12 @@ struct LastState {
     key: StateKey,
     block: Pushed,
     /// (mode, raster state, variant) and the pipeline such a draw of this state uses.
-    pipelines: Vec<(
-        LightingMode,
-        RasterState,
-        Variant,
-        (vk::Pipeline, Option<vk::Pipeline>),
-    )>,
+    pipelines: Vec<(LightingMode, RasterState, Variant, DrawPipelines)>,
 }
+
+/// A draw's pipeline, and a second one for a draw whose faces take different polygon modes
+/// ([`RasterState::face_passes`]).
+type DrawPipelines = (vk::Pipeline, Option<vk::Pipeline>);
 
 /// The next [`Lighting`]'s number (its layouts name it, so another's are refused).
 static NEXT_LIGHTING: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);

@@ -10,6 +10,7 @@ mod lit;
 mod options;
 pub mod pipeline;
 mod raster;
+mod raster_device;
 pub mod record;
 mod ring;
 mod target;

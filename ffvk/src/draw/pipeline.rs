@@ -536,8 +536,7 @@ impl Pipelines {
         key: SpecKey,
         raster: RasterState,
         (textured, small): (bool, bool),
-        (topology, restart, points): (Topology, bool, PointKey),
-        stencil_target: bool,
+        (topology, restart, points, stencil_target): (Topology, bool, PointKey, bool),
     ) -> bool {
         self.pipelines.contains_key(&PipelineKey {
             layout,
@@ -575,54 +574,11 @@ impl Pipelines {
                 needed_for: "the flat mode needs (each triangle takes its last vertex's color, as in GL)",
             });
         }
-        k.raster.validate()?;
-        if k.raster.blend.is_some() && !k.gbuffer && !self.blendable {
-            return Err(LightingError::BlendUnsupported {
-                format: config.target.color_format,
-            }
-            .into());
-        }
-        if k.raster.depth_test && config.target.depth_format == vk::Format::UNDEFINED {
-            return Err(LightingError::NoDepthAttachment.into());
-        }
-        let depth_format = if k.stencil_target {
-            config.target.with_stencil().depth_format
-        } else {
-            config.target.depth_format
-        };
-        if k.raster.stencil.is_some() && !formats::has_stencil(depth_format) {
-            return Err(LightingError::NoStencilAttachment { format: depth_format }.into());
-        }
-        let mode = k.raster.polygon_mode.front;
-        if mode != vk::PolygonMode::FILL && !device.info.fill_mode_non_solid {
-            return Err(Error::NotEnabled {
-                feature: "fillModeNonSolid",
-                flag: "fill_mode_non_solid",
-                needed_for: "glPolygonMode's GL_LINE and GL_POINT need",
-            });
-        }
-        if k.raster.logic_op.is_some() && !k.gbuffer {
-            if !device.info.logic_op {
-                return Err(Error::NotEnabled {
-                    feature: "logicOp",
-                    flag: "logic_op",
-                    needed_for: "glLogicOp (GL_COLOR_LOGIC_OP) needs",
-                });
-            }
-            if !formats::is_unorm_color(config.target.color_format) {
-                return Err(LightingError::LogicOpFormat {
-                    format: config.target.color_format,
-                }
-                .into());
-            }
-        }
-        if k.raster.line_stipple.is_some() && !device.info.stippled_lines {
-            return Err(Error::NotEnabled {
-                feature: "VK_EXT_line_rasterization's bresenhamLines and stippledBresenhamLines",
-                flag: "stippled_lines",
-                needed_for: "glLineStipple (GL_LINE_STIPPLE) needs",
-            });
-        }
+        let (depth_format, mode) = k.raster.check_device(
+            device,
+            config.target,
+            (k.stencil_target, k.gbuffer, self.blendable),
+        )?;
         if k.clipped && !device.info.clip_distance {
             return Err(Error::NotEnabled {
                 feature: "shaderClipDistance",
@@ -639,52 +595,6 @@ impl Pipelines {
                 .map(|((face, _), which)| format!("{face} {} material", which.gl_name()))
                 .unwrap_or_default();
             return Err(LightingError::MaterialArraysInFragmentMode { attribute: first }.into());
-        }
-        for (what, Pixels(size), enabled, range, feature, flag) in [
-            (
-                "point size",
-                k.raster.point_size,
-                device.info.large_points,
-                device.info.point_size_range,
-                "largePoints",
-                "large_points",
-            ),
-            (
-                "line width",
-                k.raster.line_width,
-                device.info.wide_lines,
-                device.info.line_width_range,
-                "wideLines",
-                "wide_lines",
-            ),
-        ] {
-            if !(size > 0.0 && size.is_finite()) {
-                return Err(LightingError::RasterSize {
-                    what,
-                    size: size.to_string(),
-                    expected: "a finite size above 0 (GL_INVALID_VALUE in GL)".to_owned(),
-                }
-                .into());
-            }
-            if size != 1.0 && !enabled {
-                return Err(Error::NotEnabled {
-                    feature,
-                    flag,
-                    needed_for: if what == "point size" {
-                        "a point size other than 1 needs"
-                    } else {
-                        "a line width other than 1 needs"
-                    },
-                });
-            }
-            if !(range[0]..=range[1]).contains(&size) {
-                return Err(LightingError::RasterSize {
-                    what,
-                    size: size.to_string(),
-                    expected: format!("{} to {}, the device's range", range[0], range[1]),
-                }
-                .into());
-            }
         }
         if k.points.varies_the_size() && !device.info.large_points {
             return Err(Error::NotEnabled {
@@ -776,7 +686,8 @@ impl Pipelines {
         // where the device has them, for line primitives and polygon outlines alike (the
         // default lines of some drivers are rectangles, two pixels wide on a diagonal).
         // Stippled, bit (c / factor) mod 16 of the pattern draws fragment c.
-        let draws_lines = k.topology.is_lines() || (k.topology.is_triangles() && mode == vk::PolygonMode::LINE);
+        let draws_lines =
+            k.topology.is_lines() || (k.topology.is_triangles() && mode == vk::PolygonMode::LINE);
         let mut lines = vk::PipelineRasterizationLineStateCreateInfoEXT::default();
         if draws_lines && device.info.stippled_lines {
             lines = lines.line_rasterization_mode(vk::LineRasterizationModeEXT::BRESENHAM);

@@ -79,8 +79,7 @@ impl Lighting {
                     key,
                     raster,
                     textured,
-                    (assembly.0, assembly.1, variant.points),
-                    variant.stencil_target,
+                    (assembly.0, assembly.1, variant.points, variant.stencil_target),
                 ) || self.pipelines.counts().1 < MAX_AUTO_VARIANTS
                 {
                     key

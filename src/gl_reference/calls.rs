@@ -1,0 +1,161 @@
+//! The calls a draw replays before it is drawn ([`GlCall`]): GL's raster state and the few
+//! lighting calls whose rules GL applies itself, with the conversions of ffvk's Vulkan enums
+//! to GL's names.
+
+use ffvk::gl::state::Cap;
+
+use super::bindings::types::{GLenum, GLint};
+use super::bindings::{self as gl, Gl};
+use super::draw::{color_material_enum, face_enum, set_enabled};
+use super::GlCall;
+
+fn cap_enum(cap: Cap) -> GLenum {
+    match cap {
+        Cap::Lighting => gl::LIGHTING,
+        Cap::Light(i) => gl::LIGHT0 + i as GLenum,
+        Cap::ColorMaterial => gl::COLOR_MATERIAL,
+        Cap::Normalize => gl::NORMALIZE,
+        Cap::RescaleNormal => gl::RESCALE_NORMAL,
+        Cap::Texture2D => gl::TEXTURE_2D,
+        // As in wrap_enum: GL's INVALID_ENUM fails the render.
+        _ => gl::NONE,
+    }
+}
+
+/// Makes one replayed call.
+pub(super) fn replay(gl: &Gl, call: GlCall) {
+    match call {
+        // SAFETY: a context is current on this thread; the color has four components.
+        GlCall::Color(c) => unsafe { gl.Color4fv(c.to_array().as_ptr()) },
+        GlCall::Enable(cap) => set_enabled(gl, cap_enum(cap), true),
+        GlCall::Disable(cap) => set_enabled(gl, cap_enum(cap), false),
+        // SAFETY: a context is current on this thread.
+        GlCall::ColorMaterial(face, mode) => unsafe {
+            gl.ColorMaterial(face_enum(face), color_material_enum(mode))
+        },
+        GlCall::PolygonOffsetFill(factor, units) => {
+            set_enabled(gl, gl::POLYGON_OFFSET_FILL, true);
+            // SAFETY: a context is current on this thread.
+            unsafe { gl.PolygonOffset(factor, units) };
+        }
+        // SAFETY: a context is current on this thread.
+        GlCall::ColorMask([r, g, b, a]) => unsafe { gl.ColorMask(r as u8, g as u8, b as u8, a as u8) },
+        GlCall::Blend(b) => {
+            set_enabled(gl, gl::BLEND, true);
+            // SAFETY: a context is current on this thread.
+            unsafe {
+                gl.BlendFuncSeparate(
+                    blend_factor(b.src_color),
+                    blend_factor(b.dst_color),
+                    blend_factor(b.src_alpha),
+                    blend_factor(b.dst_alpha),
+                );
+                gl.BlendEquationSeparate(blend_op(b.color_op), blend_op(b.alpha_op));
+            }
+        }
+        // SAFETY: a context is current on this thread.
+        GlCall::BlendColor([r, g, b, a]) => unsafe { gl.BlendColor(r, g, b, a) },
+        GlCall::PolygonOffset(o) => {
+            set_enabled(gl, gl::POLYGON_OFFSET_FILL, o.fill);
+            set_enabled(gl, gl::POLYGON_OFFSET_LINE, o.line);
+            set_enabled(gl, gl::POLYGON_OFFSET_POINT, o.point);
+            // SAFETY: a context is current on this thread.
+            unsafe { gl.PolygonOffset(o.factor, o.units) };
+        }
+        // SAFETY: a context is current on this thread.
+        GlCall::PolygonMode(m) => unsafe {
+            gl.PolygonMode(gl::FRONT, polygon_mode(m.front));
+            gl.PolygonMode(gl::BACK, polygon_mode(m.back));
+        },
+        GlCall::Stencil(s) => {
+            set_enabled(gl, gl::STENCIL_TEST, true);
+            for (face, f) in [(gl::FRONT, s.front), (gl::BACK, s.back)] {
+                // SAFETY: a context is current on this thread.
+                unsafe {
+                    gl.StencilFuncSeparate(face, compare_func(f.func), f.reference as GLint, f.value_mask);
+                    gl.StencilOpSeparate(
+                        face,
+                        stencil_op(f.fail),
+                        stencil_op(f.depth_fail),
+                        stencil_op(f.pass),
+                    );
+                    gl.StencilMaskSeparate(face, f.write_mask);
+                }
+            }
+        }
+        GlCall::LogicOp(op) => {
+            set_enabled(gl, gl::COLOR_LOGIC_OP, true);
+            // SAFETY: a context is current on this thread; CLEAR + op is GL's order of the
+            // sixteen, Vulkan's too.
+            unsafe { gl.LogicOp(gl::CLEAR + op.as_raw() as GLenum) };
+        }
+        GlCall::LineStipple(l) => {
+            set_enabled(gl, gl::LINE_STIPPLE, true);
+            // SAFETY: a context is current on this thread.
+            unsafe { gl.LineStipple(l.factor as GLint, l.pattern) };
+        }
+    }
+}
+
+/// GL's name of a Vulkan polygon mode.
+fn polygon_mode(m: ash::vk::PolygonMode) -> GLenum {
+    match m {
+        ash::vk::PolygonMode::LINE => gl::LINE,
+        ash::vk::PolygonMode::POINT => gl::POINT,
+        _ => gl::FILL,
+    }
+}
+
+/// GL's name of a Vulkan compare op (`NEVER` + the op: the same order).
+fn compare_func(op: ash::vk::CompareOp) -> GLenum {
+    gl::NEVER + op.as_raw() as GLenum
+}
+
+/// GL's name of a Vulkan stencil op.
+fn stencil_op(op: ash::vk::StencilOp) -> GLenum {
+    use ash::vk::StencilOp as S;
+    match op {
+        S::ZERO => gl::ZERO,
+        S::REPLACE => gl::REPLACE,
+        S::INCREMENT_AND_CLAMP => gl::INCR,
+        S::DECREMENT_AND_CLAMP => gl::DECR,
+        S::INVERT => gl::INVERT,
+        S::INCREMENT_AND_WRAP => gl::INCR_WRAP,
+        S::DECREMENT_AND_WRAP => gl::DECR_WRAP,
+        _ => gl::KEEP,
+    }
+}
+
+/// GL's name of a Vulkan blend factor (the fifteen GL 2.1 has).
+fn blend_factor(f: ash::vk::BlendFactor) -> GLenum {
+    use ash::vk::BlendFactor as F;
+    match f {
+        F::ZERO => gl::ZERO,
+        F::ONE => gl::ONE,
+        F::SRC_COLOR => gl::SRC_COLOR,
+        F::ONE_MINUS_SRC_COLOR => gl::ONE_MINUS_SRC_COLOR,
+        F::DST_COLOR => gl::DST_COLOR,
+        F::ONE_MINUS_DST_COLOR => gl::ONE_MINUS_DST_COLOR,
+        F::SRC_ALPHA => gl::SRC_ALPHA,
+        F::ONE_MINUS_SRC_ALPHA => gl::ONE_MINUS_SRC_ALPHA,
+        F::DST_ALPHA => gl::DST_ALPHA,
+        F::ONE_MINUS_DST_ALPHA => gl::ONE_MINUS_DST_ALPHA,
+        F::CONSTANT_COLOR => gl::CONSTANT_COLOR,
+        F::ONE_MINUS_CONSTANT_COLOR => gl::ONE_MINUS_CONSTANT_COLOR,
+        F::CONSTANT_ALPHA => gl::CONSTANT_ALPHA,
+        F::ONE_MINUS_CONSTANT_ALPHA => gl::ONE_MINUS_CONSTANT_ALPHA,
+        _ => gl::SRC_ALPHA_SATURATE,
+    }
+}
+
+/// GL's name of a Vulkan blend equation (GL 2.1's five).
+fn blend_op(op: ash::vk::BlendOp) -> GLenum {
+    use ash::vk::BlendOp as O;
+    match op {
+        O::SUBTRACT => gl::FUNC_SUBTRACT,
+        O::REVERSE_SUBTRACT => gl::FUNC_REVERSE_SUBTRACT,
+        O::MIN => gl::MIN,
+        O::MAX => gl::MAX,
+        _ => gl::FUNC_ADD,
+    }
+}
