@@ -2,11 +2,10 @@
 //! lighting calls whose rules GL applies itself, with the conversions of ffvk's Vulkan enums
 //! to GL's names.
 
-use ffvk::gl::state::Cap;
+use ffvk::gl::state::{Cap, ColorMaterialMode, Face};
 
 use super::bindings::types::{GLenum, GLint};
 use super::bindings::{self as gl, Gl};
-use super::draw::{color_material_enum, face_enum, set_enabled};
 use super::GlCall;
 
 fn cap_enum(cap: Cap) -> GLenum {
@@ -157,5 +156,34 @@ fn blend_op(op: ash::vk::BlendOp) -> GLenum {
         O::MIN => gl::MIN,
         O::MAX => gl::MAX,
         _ => gl::FUNC_ADD,
+    }
+}
+
+pub(super) fn face_enum(face: Face) -> GLenum {
+    match face {
+        Face::Front => gl::FRONT,
+        Face::Back => gl::BACK,
+        Face::FrontAndBack => gl::FRONT_AND_BACK,
+    }
+}
+
+pub(super) fn color_material_enum(mode: ColorMaterialMode) -> GLenum {
+    match mode {
+        ColorMaterialMode::Emission => gl::EMISSION,
+        ColorMaterialMode::Ambient => gl::AMBIENT,
+        ColorMaterialMode::Diffuse => gl::DIFFUSE,
+        ColorMaterialMode::Specular => gl::SPECULAR,
+        ColorMaterialMode::AmbientAndDiffuse => gl::AMBIENT_AND_DIFFUSE,
+    }
+}
+
+pub(super) fn set_enabled(gl: &Gl, cap: GLenum, on: bool) {
+    // SAFETY: a context is current on this thread.
+    unsafe {
+        if on {
+            gl.Enable(cap)
+        } else {
+            gl.Disable(cap)
+        }
     }
 }

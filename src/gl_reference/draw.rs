@@ -4,15 +4,13 @@
 
 use std::ffi::c_void;
 
-use ffvk::gl::state::{
-    ColorControl, ColorMaterialMode, Face, FixedFunctionState, Light, LightingMode, Material,
-};
+use ffvk::gl::state::{ColorControl, FixedFunctionState, Light, LightingMode, Material};
 use ffvk::gl::texture::{MagFilter, MinFilter, Sampling, TexEnvMode, TextureImage, TextureUnit, Wrap};
 use ffvk::mesh::{MeshData, Vertex};
 
 use super::bindings::types::{GLenum, GLint, GLsizei, GLsizeiptr, GLuint};
 use super::bindings::{self as gl, Gl};
-use super::calls::replay;
+use super::calls::{color_material_enum, face_enum, replay, set_enabled};
 use super::egl::{drain_errors, gl_string};
 use super::error::{DrawError, GlError};
 use super::{GlDraw, GlInfo, GlScene};
@@ -347,35 +345,6 @@ pub(super) fn begin_frame(gl: &Gl, scene: &GlScene) {
         gl.Disable(gl::BLEND);
         // Dithering is on by default in GL; the Vulkan side never dithers.
         gl.Disable(gl::DITHER);
-    }
-}
-
-pub(super) fn face_enum(face: Face) -> GLenum {
-    match face {
-        Face::Front => gl::FRONT,
-        Face::Back => gl::BACK,
-        Face::FrontAndBack => gl::FRONT_AND_BACK,
-    }
-}
-
-pub(super) fn color_material_enum(mode: ColorMaterialMode) -> GLenum {
-    match mode {
-        ColorMaterialMode::Emission => gl::EMISSION,
-        ColorMaterialMode::Ambient => gl::AMBIENT,
-        ColorMaterialMode::Diffuse => gl::DIFFUSE,
-        ColorMaterialMode::Specular => gl::SPECULAR,
-        ColorMaterialMode::AmbientAndDiffuse => gl::AMBIENT_AND_DIFFUSE,
-    }
-}
-
-pub(super) fn set_enabled(gl: &Gl, cap: GLenum, on: bool) {
-    // SAFETY: a context is current on this thread.
-    unsafe {
-        if on {
-            gl.Enable(cap)
-        } else {
-            gl.Disable(cap)
-        }
     }
 }
 

@@ -130,6 +130,7 @@ pub use super::options::{LightingOptions, MAX_FRAMES_IN_FLIGHT};
 use super::pipeline::{
     PipelineConfig, Pipelines, PointKey, RasterState, Specialize, VertexInput, SMALL_DRAW_VERTICES,
 };
+use super::raster::DynamicRaster;
 use super::record::{record_in_run, Bound, RunState, Topology};
 use super::ring::{Pushed, Ring, RingUse};
 use super::texture::TextureBinding;
@@ -182,9 +183,12 @@ struct LastState {
     pipelines: Vec<(LightingMode, RasterState, Variant, DrawPipelines)>,
 }
 
-/// A draw's pipeline, and a second one for a draw whose faces take different polygon modes
-/// ([`RasterState::face_passes`]).
-type DrawPipelines = (vk::Pipeline, Option<vk::Pipeline>);
+/// A draw's pipeline and the raster state it sets as dynamic state, and a second pair for a
+/// draw whose faces take different polygon modes ([`RasterState::face_passes`]).
+pub(super) type DrawPipelines = (
+    (vk::Pipeline, DynamicRaster),
+    Option<(vk::Pipeline, DynamicRaster)>,
+);
 
 /// The next [`Lighting`]'s number (its layouts name it, so another's are refused).
 static NEXT_LIGHTING: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);

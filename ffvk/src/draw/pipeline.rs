@@ -301,6 +301,30 @@ impl PipelineConfig {
     }
 }
 
+/// The states every ffvk pipeline takes as dynamic state, all core in Vulkan 1.3: the
+/// viewport and scissor (the caller's), and the raster state a draw sets when it is recorded
+/// (`DynamicRaster`): culling, front face, the depth test, the stencil test (its enable, ops,
+/// masks and reference), the depth bias (its enable and values), line width and blend
+/// constants. The rest of [`RasterState`] keys the pipeline.
+pub const DYNAMIC_RASTER: [vk::DynamicState; 16] = [
+    vk::DynamicState::VIEWPORT,
+    vk::DynamicState::SCISSOR,
+    vk::DynamicState::CULL_MODE,
+    vk::DynamicState::FRONT_FACE,
+    vk::DynamicState::DEPTH_TEST_ENABLE,
+    vk::DynamicState::DEPTH_WRITE_ENABLE,
+    vk::DynamicState::DEPTH_COMPARE_OP,
+    vk::DynamicState::DEPTH_BIAS_ENABLE,
+    vk::DynamicState::DEPTH_BIAS,
+    vk::DynamicState::STENCIL_TEST_ENABLE,
+    vk::DynamicState::STENCIL_OP,
+    vk::DynamicState::STENCIL_COMPARE_MASK,
+    vk::DynamicState::STENCIL_WRITE_MASK,
+    vk::DynamicState::STENCIL_REFERENCE,
+    vk::DynamicState::LINE_WIDTH,
+    vk::DynamicState::BLEND_CONSTANTS,
+];
+
 /// What a pipeline is found by.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 struct PipelineKey {
@@ -527,6 +551,22 @@ impl Pipelines {
         Ok(raw)
     }
 
+    /// Checks a draw's whole raster state against the device and target
+    /// ([`RasterState::check_device`]): pipelines are made for its keyed part only.
+    pub(crate) fn check_raster(
+        &self,
+        raster: &RasterState,
+        (stencil_target, gbuffer): (bool, bool),
+    ) -> Result<()> {
+        raster
+            .check_device(
+                &self.device,
+                self.config.target,
+                (stencil_target, gbuffer, self.blendable),
+            )
+            .map(|_| ())
+    }
+
     /// Whether the pipeline [`Pipelines::get`] would return for these (and vertex layout
     /// `layout`) exists already.
     pub(crate) fn contains(
@@ -669,16 +709,6 @@ impl Pipelines {
             .cull_mode(k.raster.cull_mode)
             .front_face(k.raster.front_face)
             .line_width(k.raster.line_width.0);
-        if let Some(o) = k
-            .raster
-            .polygon_offset
-            .filter(|o| k.topology.is_triangles() && o.offsets(mode))
-        {
-            rasterization = rasterization
-                .depth_bias_enable(true)
-                .depth_bias_slope_factor(o.factor)
-                .depth_bias_constant_factor(o.units);
-        }
         if k.mode == LightingMode::Flat {
             rasterization = rasterization.push_next(&mut provoking);
         }
@@ -701,26 +731,8 @@ impl Pipelines {
         }
         let multisample =
             vk::PipelineMultisampleStateCreateInfo::default().rasterization_samples(config.target.samples);
-        let mut depth = vk::PipelineDepthStencilStateCreateInfo::default()
-            .depth_test_enable(k.raster.depth_test)
-            .depth_write_enable(k.raster.depth_test && k.raster.depth_write)
-            .depth_compare_op(k.raster.depth_compare);
-        if let Some(stencil) = k.raster.stencil {
-            let face = |f: crate::StencilFace| {
-                vk::StencilOpState::default()
-                    .compare_op(f.func)
-                    .reference(f.reference)
-                    .compare_mask(f.value_mask)
-                    .fail_op(f.fail)
-                    .depth_fail_op(f.depth_fail)
-                    .pass_op(f.pass)
-                    .write_mask(f.write_mask)
-            };
-            depth = depth
-                .stencil_test_enable(true)
-                .front(face(stencil.front))
-                .back(face(stencil.back));
-        }
+        // The depth and stencil tests are dynamic state (DYNAMIC_RASTER).
+        let depth = vk::PipelineDepthStencilStateCreateInfo::default();
         let mut blend_attachment =
             vk::PipelineColorBlendAttachmentState::default().color_write_mask(k.raster.color_mask);
         if let Some(b) = k.raster.blend {
@@ -747,7 +759,7 @@ impl Pipelines {
         if let Some(op) = k.raster.logic_op.filter(|_| !k.gbuffer) {
             blend = blend.logic_op_enable(true).logic_op(op);
         }
-        let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
+        let dynamic_states = DYNAMIC_RASTER;
         let dynamic = vk::PipelineDynamicStateCreateInfo::default().dynamic_states(&dynamic_states);
         let color_formats = if k.gbuffer {
             GBUFFER_FORMATS.to_vec()

@@ -390,7 +390,57 @@ impl RasterState {
     }
 }
 
+/// The part of a raster state ffvk sets as dynamic state when it records a draw, rather than
+/// baking it into the draw's pipeline (Vulkan 1.3 core: culling, front face, the depth test,
+/// the stencil test, the depth bias, line width and blend constants). Draws that differ only
+/// here share a pipeline.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct DynamicRaster {
+    pub(crate) cull_mode: vk::CullModeFlags,
+    pub(crate) front_face: vk::FrontFace,
+    pub(crate) depth_test: bool,
+    /// Depth writes: `glDepthMask`, only while the depth test is on.
+    pub(crate) depth_write: bool,
+    pub(crate) depth_compare: vk::CompareOp,
+    /// The depth bias (constant, slope), where the polygon offset applies to the pass.
+    pub(crate) depth_bias: Option<(f32, f32)>,
+    pub(crate) stencil: Option<Stencil>,
+    pub(crate) line_width: f32,
+    pub(crate) blend_color: [f32; 4],
+}
+
 impl RasterState {
+    /// The state a pipeline is found by, with every dynamic part at GL's default, and the
+    /// dynamic part, set when the draw is recorded. Call on a pass's state
+    /// ([`RasterState::face_passes`]): its offset applies as it is.
+    pub(crate) fn split_dynamic(&self) -> (RasterState, DynamicRaster) {
+        let d = RasterState::default();
+        let keyed = RasterState {
+            cull_mode: d.cull_mode,
+            front_face: d.front_face,
+            depth_test: d.depth_test,
+            depth_write: d.depth_write,
+            depth_compare: d.depth_compare,
+            polygon_offset: d.polygon_offset,
+            stencil: d.stencil,
+            line_width: d.line_width,
+            blend_color: d.blend_color,
+            ..*self
+        };
+        let dynamic = DynamicRaster {
+            cull_mode: self.cull_mode,
+            front_face: self.front_face,
+            depth_test: self.depth_test,
+            depth_write: self.depth_test && self.depth_write,
+            depth_compare: self.depth_compare,
+            depth_bias: self.polygon_offset.map(|o| (o.units, o.factor)),
+            stencil: self.stencil,
+            line_width: self.line_width.0,
+            blend_color: self.blend_color.0,
+        };
+        (keyed, dynamic)
+    }
+
     /// Whether the state has none of the stencil test, a logic op, a polygon mode other than
     /// fill and a line stipple: what the Renderer's deferred path (which lights a G-buffer's
     /// pixels, not fragments) can take.

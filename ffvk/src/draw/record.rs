@@ -2,6 +2,8 @@
 
 use ash::vk;
 
+use super::raster::DynamicRaster;
+
 /// How a draw's vertices make primitives: GL's primitive modes that Vulkan draws as they are.
 /// GL's `GL_QUADS`, `GL_QUAD_STRIP`, `GL_POLYGON` and `GL_LINE_LOOP` become these through
 /// [`gl_primitives`](crate::draw::gl_primitives), which keeps GL's provoking vertex.
@@ -306,12 +308,13 @@ impl Geometry {
 /// Everything one draw binds.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Bound<'a> {
-    /// The pipeline for the draw's mode, state and raster state.
-    pub pipeline: vk::Pipeline,
-    /// The pipeline of a second pass over the same geometry: the back faces, where
-    /// `glPolygonMode` gives them another mode than the front's
+    /// The pipeline for the draw's mode, state and raster state, and the raster state it
+    /// takes as dynamic state.
+    pub pipeline: (vk::Pipeline, DynamicRaster),
+    /// The pipeline of a second pass over the same geometry, with its dynamic state: the back
+    /// faces, where `glPolygonMode` gives them another mode than the front's
     /// ([`RasterState::face_passes`](crate::RasterState::face_passes)).
-    pub second_pipeline: Option<vk::Pipeline>,
+    pub second_pipeline: Option<(vk::Pipeline, DynamicRaster)>,
     /// The pipeline layout it was created with.
     pub layout: vk::PipelineLayout,
     /// The index of the state block's set in that layout.
@@ -348,6 +351,8 @@ pub(crate) struct Bound<'a> {
 #[derive(Debug, Default)]
 pub(crate) struct RunState {
     pipeline: Option<vk::Pipeline>,
+    /// The dynamic raster state set (all of it, or none yet).
+    dynamic: Option<DynamicRaster>,
     state_block: Option<(vk::DescriptorSet, u32)>,
     record_block: Option<(vk::DescriptorSet, u32)>,
     texture_set: Option<vk::DescriptorSet>,
@@ -399,12 +404,15 @@ pub(crate) unsafe fn record_in_run(
     geometry: &Geometry,
     run: &mut RunState,
 ) {
-    if run.pipeline != Some(bound.pipeline) {
+    let (pipeline, dynamic) = bound.pipeline;
+    if run.pipeline != Some(pipeline) {
         // SAFETY: the caller's contract above (it covers each call below too): `cmd` is
         // recording inside a rendering pass and the pipeline belongs to `device`.
-        unsafe { device.cmd_bind_pipeline(cmd, vk::PipelineBindPoint::GRAPHICS, bound.pipeline) };
-        run.pipeline = Some(bound.pipeline);
+        unsafe { device.cmd_bind_pipeline(cmd, vk::PipelineBindPoint::GRAPHICS, pipeline) };
+        run.pipeline = Some(pipeline);
     }
+    // SAFETY: as above; every ffvk pipeline takes these states as dynamic.
+    unsafe { set_dynamic(device, cmd, &dynamic, run) };
     let state_block = (bound.set, bound.uniform_offset);
     if run.state_block != Some(state_block) {
         run.state_block = Some(state_block);
@@ -451,15 +459,96 @@ pub(crate) unsafe fn record_in_run(
     }
     // SAFETY: the caller's contract above.
     unsafe { draw_geometry(device, cmd, bound, geometry, run) };
-    if let Some(second) = bound.second_pipeline {
+    if let Some((second, dynamic)) = bound.second_pipeline {
         run.pipeline = Some(second);
         // SAFETY: as above; the second pipeline has the first's layout, vertex input and
         // specialization, so everything bound stays valid for it.
         unsafe {
             device.cmd_bind_pipeline(cmd, vk::PipelineBindPoint::GRAPHICS, second);
+            set_dynamic(device, cmd, &dynamic, run);
             draw_geometry(device, cmd, bound, geometry, run);
         }
     }
+}
+
+/// Sets the dynamic raster state `want` where it differs from what `run` set (all of it
+/// where the run set none yet).
+///
+/// # Safety
+///
+/// As [`record_in_run`]: `cmd` is recording and a pipeline with these dynamic states is bound.
+unsafe fn set_dynamic(
+    device: &ash::Device,
+    cmd: vk::CommandBuffer,
+    want: &DynamicRaster,
+    run: &mut RunState,
+) {
+    let had = run.dynamic;
+    if had.as_ref() == Some(want) {
+        return;
+    }
+    // Each setter runs where the value changed, or when nothing was set yet.
+    let changed = |f: &dyn Fn(&DynamicRaster) -> bool| had.is_none_or(|h| !f(&h));
+    // SAFETY: the caller's contract above (for every call below).
+    unsafe {
+        if changed(&|h| h.cull_mode == want.cull_mode) {
+            device.cmd_set_cull_mode(cmd, want.cull_mode);
+        }
+        if changed(&|h| h.front_face == want.front_face) {
+            device.cmd_set_front_face(cmd, want.front_face);
+        }
+        if changed(&|h| h.depth_test == want.depth_test) {
+            device.cmd_set_depth_test_enable(cmd, want.depth_test);
+        }
+        if changed(&|h| h.depth_write == want.depth_write) {
+            device.cmd_set_depth_write_enable(cmd, want.depth_write);
+        }
+        if changed(&|h| h.depth_compare == want.depth_compare) {
+            device.cmd_set_depth_compare_op(cmd, want.depth_compare);
+        }
+        if changed(&|h| h.depth_bias.is_some() == want.depth_bias.is_some()) {
+            device.cmd_set_depth_bias_enable(cmd, want.depth_bias.is_some());
+        }
+        // The values are set on a first set too, off or not, so that they always have one.
+        if (had.is_none() || want.depth_bias.is_some()) && changed(&|h| h.depth_bias == want.depth_bias) {
+            let (constant, slope) = want.depth_bias.unwrap_or((0.0, 0.0));
+            device.cmd_set_depth_bias(cmd, constant, 0.0, slope);
+        }
+        if changed(&|h| h.stencil.is_some() == want.stencil.is_some()) {
+            device.cmd_set_stencil_test_enable(cmd, want.stencil.is_some());
+        }
+        // The stencil's values are set whenever they may be read: a first set sets GL's
+        // defaults where the test is off, so that every dynamic state has a value.
+        let stencil = want.stencil.unwrap_or_default();
+        let had_stencil = had.map(|h| h.stencil.unwrap_or_default());
+        for (face, f, before) in [
+            (
+                vk::StencilFaceFlags::FRONT,
+                stencil.front,
+                had_stencil.map(|s| s.front),
+            ),
+            (
+                vk::StencilFaceFlags::BACK,
+                stencil.back,
+                had_stencil.map(|s| s.back),
+            ),
+        ] {
+            if before == Some(f) {
+                continue;
+            }
+            device.cmd_set_stencil_op(cmd, face, f.fail, f.pass, f.depth_fail, f.func);
+            device.cmd_set_stencil_compare_mask(cmd, face, f.value_mask);
+            device.cmd_set_stencil_write_mask(cmd, face, f.write_mask);
+            device.cmd_set_stencil_reference(cmd, face, f.reference);
+        }
+        if changed(&|h| h.line_width.to_bits() == want.line_width.to_bits()) {
+            device.cmd_set_line_width(cmd, want.line_width);
+        }
+        if changed(&|h| h.blend_color == want.blend_color) {
+            device.cmd_set_blend_constants(cmd, &want.blend_color);
+        }
+    }
+    run.dynamic = Some(*want);
 }
 
 /// Binds `geometry`'s index buffer where it differs from the run's and draws it.

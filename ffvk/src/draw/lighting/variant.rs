@@ -5,7 +5,7 @@ use ash::vk;
 
 use super::super::pipeline::{PointKey, RasterState, Specialize, MAX_AUTO_VARIANTS};
 use super::super::record::Topology;
-use super::Lighting;
+use super::{DrawPipelines, Lighting};
 use crate::error::Result;
 use crate::gl::state::FixedFunctionState;
 use crate::gpu::layout::SpecKey;
@@ -45,11 +45,15 @@ impl Lighting {
         state: &FixedFunctionState,
         raster: RasterState,
         variant: Variant,
-    ) -> Result<(vk::Pipeline, Option<vk::Pipeline>)> {
+    ) -> Result<DrawPipelines> {
+        // The whole state is checked once here: the pipelines see only its keyed part.
+        self.pipelines
+            .check_raster(&raster, (variant.stencil_target, variant.gbuffer))?;
         let (first, second) = raster.face_passes(variant.assembly.0.is_triangles());
-        let first = self.pipeline_of_pass(state, first, variant)?;
-        let second = match second {
-            Some(raster) => Some(self.pipeline_of_pass(state, raster, variant)?),
+        let (keyed, dynamic) = first.split_dynamic();
+        let first = (self.pipeline_of_pass(state, keyed, variant)?, dynamic);
+        let second = match second.map(|pass| pass.split_dynamic()) {
+            Some((keyed, dynamic)) => Some((self.pipeline_of_pass(state, keyed, variant)?, dynamic)),
             None => None,
         };
         Ok((first, second))
