@@ -449,3 +449,36 @@ fn raster_modes_out_of_range_are_refused_naming_the_field() {
         .to_string();
     assert!(e.contains("polygon_mode.front"), "{e}");
 }
+
+/// Culling, the stencil state and the polygon offset's values are dynamic state: draws that
+/// differ only there share one pipeline (and still draw as GL does: the other tests); a
+/// polygon mode keys a pipeline of its own.
+#[test]
+fn draws_that_differ_only_in_dynamic_state_share_one_pipeline() {
+    use ffvk::gl::state::Face;
+    let mut r = renderer();
+    let mesh = r.upload(&square(0.5, 0.0, RED, false)).unwrap();
+    let state = GlState::new().lighting;
+    let before = r.pipeline_counts().0;
+    let base = Draw::new(&mesh, view(), projection(), state);
+    let mut frame = Frame::new(SIZE, SIZE);
+    let equal = StencilFace::default().with_func(vk::CompareOp::EQUAL, 0, 0xF);
+    frame.draws = vec![
+        base.with_stencil(Some(Stencil::both(StencilFace::default()))),
+        base.with_cull_face(Some(Face::Back)),
+        base.with_stencil(Some(Stencil::both(equal))),
+        base.with_polygon_offset(1.0, 2.0),
+        base.with_cull_face(Some(Face::Front)).with_polygon_offset(-1.0, 0.0),
+    ];
+    let image = r.render(&frame).unwrap().into_rgba_image();
+    assert_eq!(
+        r.pipeline_counts().0 - before,
+        1,
+        "five draws differing in dynamic state only"
+    );
+    assert_eq!(image.get_pixel(SIZE / 2, SIZE / 2).0, rgba(RED));
+    frame.draws.push(base.with_polygon_mode(PolygonModes::both(vk::PolygonMode::LINE)));
+    r.render(&frame).unwrap();
+    assert_eq!(r.pipeline_counts().0 - before, 2, "a polygon mode keys its own");
+    finish(r);
+}
