@@ -88,6 +88,8 @@ pub(super) fn replay(gl: &Gl, call: GlCall) {
             // sixteen, Vulkan's too.
             unsafe { gl.LogicOp(gl::CLEAR + op.as_raw() as GLenum) };
         }
+        // SAFETY: a context is current on this thread.
+        GlCall::DepthRange(near, far) => unsafe { gl.DepthRange(near, far) },
         GlCall::LineStipple(l) => {
             set_enabled(gl, gl::LINE_STIPPLE, true);
             // SAFETY: a context is current on this thread.

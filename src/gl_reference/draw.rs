@@ -568,6 +568,7 @@ pub(super) fn set_state(
         gl.ColorMask(1, 1, 1, 1);
         gl.BlendColor(0.0, 0.0, 0.0, 0.0);
         gl.PolygonMode(gl::FRONT_AND_BACK, gl::FILL);
+        gl.DepthRange(0.0, 1.0);
     }
     for call in &draw.calls {
         replay(gl, *call);

@@ -195,6 +195,8 @@ pub enum GlCall {
     LogicOp(ash::vk::LogicOp),
     /// `glEnable(GL_LINE_STIPPLE)` and `glLineStipple(factor, pattern)`.
     LineStipple(ffvk::LineStipple),
+    /// `glDepthRange(near, far)`.
+    DepthRange(f64, f64),
 }
 
 /// What the GL context reports about itself, and where it came from.

@@ -468,7 +468,8 @@ fn draws_that_differ_only_in_dynamic_state_share_one_pipeline() {
         base.with_cull_face(Some(Face::Back)),
         base.with_stencil(Some(Stencil::both(equal))),
         base.with_polygon_offset(1.0, 2.0),
-        base.with_cull_face(Some(Face::Front)).with_polygon_offset(-1.0, 0.0),
+        base.with_cull_face(Some(Face::Front))
+            .with_polygon_offset(-1.0, 0.0),
     ];
     let image = r.render(&frame).unwrap().into_rgba_image();
     assert_eq!(
@@ -477,8 +478,52 @@ fn draws_that_differ_only_in_dynamic_state_share_one_pipeline() {
         "five draws differing in dynamic state only"
     );
     assert_eq!(image.get_pixel(SIZE / 2, SIZE / 2).0, rgba(RED));
-    frame.draws.push(base.with_polygon_mode(PolygonModes::both(vk::PolygonMode::LINE)));
+    frame
+        .draws
+        .push(base.with_polygon_mode(PolygonModes::both(vk::PolygonMode::LINE)));
     r.render(&frame).unwrap();
     assert_eq!(r.pipeline_counts().0 - before, 2, "a polygon mode keys its own");
+    finish(r);
+}
+
+/// GL 2.1 §2.11.1: glDepthRange maps window z into [near, far], clamped to [0, 1]: a far
+/// square drawn into (0, 0.4) covers a near one drawn into (0.5, 1) under `GL_LESS`, as a
+/// first-person weapon drawn with glDepthRange(0, 0.1) stays before the world; near may
+/// exceed far, turning the depth order around. As Mesa's GL draws it.
+#[test]
+fn the_depth_range_maps_each_draws_depth_into_its_own_interval() {
+    let mut r = renderer();
+    let near = square(0.5, 0.5, RED, false);
+    let far = square(0.3, -0.5, GREEN, false);
+    for (red_range, green_range, want) in [
+        ((0.0, 1.0), (0.0, 1.0), RED),
+        ((0.5, 1.0), (0.0, 0.4), GREEN),
+        ((0.5, 1.5), (-1.0, 0.4), GREEN),
+        ((1.0, 0.0), (1.0, 0.0), GREEN),
+    ] {
+        let cases = [
+            Case {
+                mesh: &near,
+                set: Box::new(move |d| d.with_depth_range(red_range.0, red_range.1)),
+                calls: vec![GlCall::DepthRange(red_range.0 as f64, red_range.1 as f64)],
+            },
+            Case {
+                mesh: &far,
+                set: Box::new(move |d| d.with_depth_range(green_range.0, green_range.1)),
+                calls: vec![GlCall::DepthRange(green_range.0 as f64, green_range.1 as f64)],
+            },
+        ];
+        let (ours, theirs) = draw_both(&mut r, true, &cases);
+        let what = format!("depth ranges {red_range:?} and {green_range:?}");
+        check_like_mesa(&what, &ours, &theirs, 0);
+        assert_eq!(ours.get_pixel(SIZE / 2, SIZE / 2).0, rgba(want), "{what}");
+    }
+    let mesh = r.upload(&near).unwrap();
+    let mut frame = Frame::new(SIZE, SIZE);
+    frame.draws.push(
+        Draw::new(&mesh, view(), projection(), GlState::new().lighting).with_depth_range(f32::NAN, 1.0),
+    );
+    let e = r.render(&frame).unwrap_err().to_string();
+    assert!(e.contains("depth_range") && e.contains("NaN"), "{e}");
     finish(r);
 }

@@ -100,6 +100,7 @@ pub(super) fn eligible(frame: &Frame, specialize: Specialize, cpu: bool) -> Opti
             && d.raster(frame).color_mask == ash::vk::ColorComponentFlags::RGBA
             // So do the stencil test, logic ops, outlines, points and stipples.
             && d.raster(frame).only_fills_and_blends()
+            && d.clamped_depth_range() == [0.0, 1.0]
             && !d.textured()
             // Fog, the alpha test and an unlit color sum are forward-only stages.
             && !d.state.fragment.fog.enabled

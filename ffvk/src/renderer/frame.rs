@@ -96,6 +96,9 @@ pub struct Draw<'a> {
     pub logic_op: Option<vk::LogicOp>,
     /// `GL_LINE_STIPPLE` with `glLineStipple`: `None` (off) by default.
     pub line_stipple: Option<LineStipple>,
+    /// `glDepthRange(near, far)`: (0, 1) by default; each clamped to [0, 1] as GL clamps it,
+    /// near may exceed far. The viewport's depth: set between the draws where it changes.
+    pub depth_range: [f32; 2],
 }
 
 impl<'a> Draw<'a> {
@@ -119,7 +122,20 @@ impl<'a> Draw<'a> {
             stencil: None,
             logic_op: None,
             line_stipple: None,
+            depth_range: [0.0, 1.0],
         }
+    }
+
+    /// This draw with `glDepthRange(near, far)`.
+    #[must_use]
+    pub fn with_depth_range(mut self, near: f32, far: f32) -> Self {
+        self.depth_range = [near, far];
+        self
+    }
+
+    /// The depth range as the viewport takes it: clamped to [0, 1], as GL clamps it.
+    pub(super) fn clamped_depth_range(&self) -> [f32; 2] {
+        self.depth_range.map(|d| d.clamp(0.0, 1.0))
     }
 
     /// This draw with `glPolygonMode` (both faces' modes).

@@ -403,6 +403,14 @@ impl Renderer {
             ));
         }
         for (i, d) in frame.draws.iter().enumerate() {
+            if d.depth_range.iter().any(|r| r.is_nan()) {
+                return Err(crate::error::LightingError::RasterEnum {
+                    field: "depth_range",
+                    value: format!("{:?} (draw {i})", d.depth_range),
+                    expected: "numbers (glDepthRange clamps them to [0, 1])",
+                }
+                .into());
+            }
             if !Arc::ptr_eq(d.mesh.vertices.device(), &self.device) {
                 return Err(MeshError::ForeignMesh { draw: i }.into());
             }

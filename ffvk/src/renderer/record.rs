@@ -7,7 +7,7 @@ use super::attachments::{
     area_and_viewport, attachment_barriers, color_attachment, depth_attachment, stencil_attachment,
 };
 use super::deferred::{record_deferred, DeferredPass};
-use super::{subresource, Frame, Pass, Recording, Renderer, Targets};
+use super::{subresource, Draw, Frame, Pass, Recording, Renderer, Targets};
 use crate::draw::lighting::{DrawValues, Lighting, LitDraw, Staged};
 use crate::draw::record::Geometry;
 use crate::error::{vk_error, Error, Result};
@@ -146,13 +146,34 @@ unsafe fn record_pass(
     // Target::OFFSCREEN the lighting was made for, viewport and scissor set; the mesh buffers
     // outlive the submission; slot 0 was begun after the last frame's fence. The draws are one
     // run: nothing else is recorded between them.
-    // SAFETY: as above; staged[i] was staged for lits[i] in this frame's slot.
-    unsafe {
-        match frame.recording {
-            Recording::Run => lighting.record_staged_run(cmd, staged, lits),
-            Recording::DrawByDraw => lighting.record_staged_draw_by_draw(cmd, staged, lits),
+    // glDepthRange is the viewport's depth: the draws go in runs of one range, the viewport
+    // set before each run whose range is not the last one set.
+    let mut at = 0;
+    let mut range_set = [viewport.min_depth, viewport.max_depth];
+    while at < lits.len() {
+        let range = |i: usize| frame.draws.get(i).map(Draw::clamped_depth_range);
+        let here = range(at);
+        let end = (at..lits.len()).find(|&i| range(i) != here).unwrap_or(lits.len());
+        if let Some([near, far]) = here.filter(|&r| r != range_set) {
+            range_set = [near, far];
+            let v = vk::Viewport {
+                min_depth: near,
+                max_depth: far,
+                ..viewport
+            };
+            // SAFETY: as above; the viewport is dynamic in every pipeline.
+            unsafe { vkd.cmd_set_viewport(cmd, 0, &[v]) };
         }
-    };
+        let (staged, lits) = (&staged[at..end], &lits[at..end]);
+        // SAFETY: as above; staged[i] was staged for lits[i] in this frame's slot.
+        unsafe {
+            match frame.recording {
+                Recording::Run => lighting.record_staged_run(cmd, staged, lits),
+                Recording::DrawByDraw => lighting.record_staged_draw_by_draw(cmd, staged, lits),
+            }
+        };
+        at = end;
+    }
     let record_ns = draws_start.elapsed().as_nanos() as f64;
     // SAFETY: as above; the pass begun above ends here.
     unsafe { vkd.cmd_end_rendering(cmd) };

@@ -665,6 +665,7 @@ pub fn render_scene_with(
             stencil: None,
             logic_op: None,
             line_stipple: None,
+            depth_range: [0.0, 1.0],
         });
     }
     Ok(renderer.render(&frame)?.into())
