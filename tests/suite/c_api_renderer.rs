@@ -81,6 +81,7 @@ fn draw_info(mode: u32, buffer: &vk::Buffer, raster: FfvkRaster) -> FfvkDrawInfo
         raster,
         texture: std::ptr::null(),
         layout: std::ptr::null(),
+        raster_source: FFVK_RASTER_SOURCE_DRAW,
     }
 }
 
