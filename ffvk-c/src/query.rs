@@ -44,7 +44,9 @@ impl Answer {
         let round = |v: f32| (v as f64).round().clamp(i32::MIN as f64, i32::MAX as f64) as i32;
         match self {
             Answer::Bool(b) => vec![*b as i32],
-            Answer::Int(i) => vec![*i as i32],
+            // An unsigned value past i32's range (a stencil mask of all ones) is the nearest
+            // representable one, as Mesa answers it.
+            Answer::Int(i) => vec![(*i).clamp(i32::MIN.into(), i32::MAX.into()) as i32],
             Answer::Ints(v) => v.iter().map(|&i| i as i32).collect(),
             Answer::Floats(v) => v.iter().map(|&v| round(v)).collect(),
             Answer::Color(c) => c

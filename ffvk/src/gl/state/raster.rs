@@ -245,6 +245,9 @@ impl GlEnum for CompareFunc {
 /// [0, 2^s - 1], the range the reference is clamped to.
 pub const STENCIL_BITS: u32 = 8;
 
+/// GL's initial stencil masks, "1's" (table 6.20) in the [`STENCIL_BITS`] of the buffer.
+pub const STENCIL_ONES: u32 = (1 << STENCIL_BITS) - 1;
+
 /// One face's stencil state (GL 2.1 §4.1.5, table 6.20), GL's initial values by default.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[non_exhaustive]
@@ -254,7 +257,8 @@ pub struct StencilGl {
     /// `GL_STENCIL_REF` as given (0 by default); [`StencilGl::clamped_reference`] is the
     /// value tested and queried.
     pub reference: i32,
-    /// `GL_STENCIL_VALUE_MASK`; all ones by default.
+    /// `GL_STENCIL_VALUE_MASK` as given; by default [`STENCIL_ONES`], table 6.20's "1's" in
+    /// the stencil buffer's bits (as Mesa answers it).
     pub value_mask: u32,
     /// `GL_STENCIL_FAIL` (sfail); `GL_KEEP` by default.
     pub fail: StencilOp,
@@ -262,7 +266,7 @@ pub struct StencilGl {
     pub pass_depth_fail: StencilOp,
     /// `GL_STENCIL_PASS_DEPTH_PASS` (dppass); `GL_KEEP` by default.
     pub pass_depth_pass: StencilOp,
-    /// `GL_STENCIL_WRITEMASK`; all ones by default.
+    /// `GL_STENCIL_WRITEMASK` as given; [`STENCIL_ONES`] by default.
     pub write_mask: u32,
 }
 
@@ -271,11 +275,11 @@ impl Default for StencilGl {
         StencilGl {
             func: CompareFunc::Always,
             reference: 0,
-            value_mask: u32::MAX,
+            value_mask: STENCIL_ONES,
             fail: StencilOp::Keep,
             pass_depth_fail: StencilOp::Keep,
             pass_depth_pass: StencilOp::Keep,
-            write_mask: u32::MAX,
+            write_mask: STENCIL_ONES,
         }
     }
 }
@@ -742,6 +746,13 @@ mod tests {
     #[test]
     fn gls_initial_raster_state_is_ffvks_default_raster_state() {
         assert_eq!(RasterGl::default().to_raster_state(), RasterState::default());
+        let all = RasterGl {
+            stencil_test: true,
+            ..RasterGl::default()
+        };
+        let stencil = all.to_raster_state().stencil.unwrap();
+        let gl = StencilFace::default().with_write_mask(0xFF);
+        assert_eq!(stencil.front, gl.with_func(vk::CompareOp::ALWAYS, 0, 0xFF));
     }
 
     #[test]
@@ -795,7 +806,10 @@ mod tests {
         let on = gl.raster_state();
         let stencil = on.stencil.unwrap();
         assert_eq!((stencil.back.reference, stencil.back.value_mask), (0, 0x0F));
-        assert_eq!(stencil.front, StencilFace::default());
+        assert_eq!(
+            stencil.front.value_mask, 0xFF,
+            "the stencil buffer's bits of all ones"
+        );
         let offset = on.polygon_offset.unwrap();
         assert_eq!((offset.factor, offset.fill, offset.line), (2.0, false, true));
         assert_eq!(on.line_stipple.unwrap().factor, 256, "clamped by glLineStipple");
