@@ -360,6 +360,288 @@
 #ifndef GL_SEPARATE_SPECULAR_COLOR
 #define GL_SEPARATE_SPECULAR_COLOR 0x81FA
 #endif
+#ifndef GL_POINT_SIZE
+#define GL_POINT_SIZE 0x0B11
+#endif
+#ifndef GL_LINE_WIDTH
+#define GL_LINE_WIDTH 0x0B21
+#endif
+#ifndef GL_LINE_STIPPLE
+#define GL_LINE_STIPPLE 0x0B24
+#endif
+#ifndef GL_LINE_STIPPLE_PATTERN
+#define GL_LINE_STIPPLE_PATTERN 0x0B25
+#endif
+#ifndef GL_LINE_STIPPLE_REPEAT
+#define GL_LINE_STIPPLE_REPEAT 0x0B26
+#endif
+#ifndef GL_POLYGON_MODE
+#define GL_POLYGON_MODE 0x0B40
+#endif
+#ifndef GL_EDGE_FLAG
+#define GL_EDGE_FLAG 0x0B43
+#endif
+#ifndef GL_CULL_FACE
+#define GL_CULL_FACE 0x0B44
+#endif
+#ifndef GL_CULL_FACE_MODE
+#define GL_CULL_FACE_MODE 0x0B45
+#endif
+#ifndef GL_FRONT_FACE
+#define GL_FRONT_FACE 0x0B46
+#endif
+#ifndef GL_DEPTH_RANGE
+#define GL_DEPTH_RANGE 0x0B70
+#endif
+#ifndef GL_DEPTH_TEST
+#define GL_DEPTH_TEST 0x0B71
+#endif
+#ifndef GL_DEPTH_WRITEMASK
+#define GL_DEPTH_WRITEMASK 0x0B72
+#endif
+#ifndef GL_DEPTH_FUNC
+#define GL_DEPTH_FUNC 0x0B74
+#endif
+#ifndef GL_STENCIL_TEST
+#define GL_STENCIL_TEST 0x0B90
+#endif
+#ifndef GL_STENCIL_CLEAR_VALUE
+#define GL_STENCIL_CLEAR_VALUE 0x0B91
+#endif
+#ifndef GL_STENCIL_FUNC
+#define GL_STENCIL_FUNC 0x0B92
+#endif
+#ifndef GL_STENCIL_VALUE_MASK
+#define GL_STENCIL_VALUE_MASK 0x0B93
+#endif
+#ifndef GL_STENCIL_FAIL
+#define GL_STENCIL_FAIL 0x0B94
+#endif
+#ifndef GL_STENCIL_PASS_DEPTH_FAIL
+#define GL_STENCIL_PASS_DEPTH_FAIL 0x0B95
+#endif
+#ifndef GL_STENCIL_PASS_DEPTH_PASS
+#define GL_STENCIL_PASS_DEPTH_PASS 0x0B96
+#endif
+#ifndef GL_STENCIL_REF
+#define GL_STENCIL_REF 0x0B97
+#endif
+#ifndef GL_STENCIL_WRITEMASK
+#define GL_STENCIL_WRITEMASK 0x0B98
+#endif
+#ifndef GL_STENCIL_BACK_FUNC
+#define GL_STENCIL_BACK_FUNC 0x8800
+#endif
+#ifndef GL_STENCIL_BACK_FAIL
+#define GL_STENCIL_BACK_FAIL 0x8801
+#endif
+#ifndef GL_STENCIL_BACK_PASS_DEPTH_FAIL
+#define GL_STENCIL_BACK_PASS_DEPTH_FAIL 0x8802
+#endif
+#ifndef GL_STENCIL_BACK_PASS_DEPTH_PASS
+#define GL_STENCIL_BACK_PASS_DEPTH_PASS 0x8803
+#endif
+#ifndef GL_STENCIL_BACK_REF
+#define GL_STENCIL_BACK_REF 0x8CA3
+#endif
+#ifndef GL_STENCIL_BACK_VALUE_MASK
+#define GL_STENCIL_BACK_VALUE_MASK 0x8CA4
+#endif
+#ifndef GL_STENCIL_BACK_WRITEMASK
+#define GL_STENCIL_BACK_WRITEMASK 0x8CA5
+#endif
+#ifndef GL_BLEND_DST
+#define GL_BLEND_DST 0x0BE0
+#endif
+#ifndef GL_BLEND_SRC
+#define GL_BLEND_SRC 0x0BE1
+#endif
+#ifndef GL_LOGIC_OP_MODE
+#define GL_LOGIC_OP_MODE 0x0BF0
+#endif
+#ifndef GL_COLOR_LOGIC_OP
+#define GL_COLOR_LOGIC_OP 0x0BF2
+#endif
+#ifndef GL_COLOR_WRITEMASK
+#define GL_COLOR_WRITEMASK 0x0C23
+#endif
+#ifndef GL_POLYGON_OFFSET_UNITS
+#define GL_POLYGON_OFFSET_UNITS 0x2A00
+#endif
+#ifndef GL_POLYGON_OFFSET_POINT
+#define GL_POLYGON_OFFSET_POINT 0x2A01
+#endif
+#ifndef GL_POLYGON_OFFSET_LINE
+#define GL_POLYGON_OFFSET_LINE 0x2A02
+#endif
+#ifndef GL_POLYGON_OFFSET_FILL
+#define GL_POLYGON_OFFSET_FILL 0x8037
+#endif
+#ifndef GL_POLYGON_OFFSET_FACTOR
+#define GL_POLYGON_OFFSET_FACTOR 0x8038
+#endif
+#ifndef GL_BLEND_COLOR
+#define GL_BLEND_COLOR 0x8005
+#endif
+#ifndef GL_BLEND_EQUATION
+#define GL_BLEND_EQUATION 0x8009
+#endif
+#ifndef GL_BLEND_EQUATION_RGB
+#define GL_BLEND_EQUATION_RGB 0x8009
+#endif
+#ifndef GL_BLEND_EQUATION_ALPHA
+#define GL_BLEND_EQUATION_ALPHA 0x883D
+#endif
+#ifndef GL_BLEND_DST_RGB
+#define GL_BLEND_DST_RGB 0x80C8
+#endif
+#ifndef GL_BLEND_SRC_RGB
+#define GL_BLEND_SRC_RGB 0x80C9
+#endif
+#ifndef GL_BLEND_DST_ALPHA
+#define GL_BLEND_DST_ALPHA 0x80CA
+#endif
+#ifndef GL_BLEND_SRC_ALPHA
+#define GL_BLEND_SRC_ALPHA 0x80CB
+#endif
+#ifndef GL_CW
+#define GL_CW 0x0900
+#endif
+#ifndef GL_CCW
+#define GL_CCW 0x0901
+#endif
+#ifndef GL_POINT
+#define GL_POINT 0x1B00
+#endif
+#ifndef GL_LINE
+#define GL_LINE 0x1B01
+#endif
+#ifndef GL_FILL
+#define GL_FILL 0x1B02
+#endif
+#ifndef GL_KEEP
+#define GL_KEEP 0x1E00
+#endif
+#ifndef GL_INCR
+#define GL_INCR 0x1E02
+#endif
+#ifndef GL_DECR
+#define GL_DECR 0x1E03
+#endif
+#ifndef GL_INVERT
+#define GL_INVERT 0x150A
+#endif
+#ifndef GL_INCR_WRAP
+#define GL_INCR_WRAP 0x8507
+#endif
+#ifndef GL_DECR_WRAP
+#define GL_DECR_WRAP 0x8508
+#endif
+#ifndef GL_ZERO
+#define GL_ZERO 0x0000
+#endif
+#ifndef GL_ONE
+#define GL_ONE 0x0001
+#endif
+#ifndef GL_SRC_COLOR
+#define GL_SRC_COLOR 0x0300
+#endif
+#ifndef GL_ONE_MINUS_SRC_COLOR
+#define GL_ONE_MINUS_SRC_COLOR 0x0301
+#endif
+#ifndef GL_SRC_ALPHA
+#define GL_SRC_ALPHA 0x0302
+#endif
+#ifndef GL_ONE_MINUS_SRC_ALPHA
+#define GL_ONE_MINUS_SRC_ALPHA 0x0303
+#endif
+#ifndef GL_DST_ALPHA
+#define GL_DST_ALPHA 0x0304
+#endif
+#ifndef GL_ONE_MINUS_DST_ALPHA
+#define GL_ONE_MINUS_DST_ALPHA 0x0305
+#endif
+#ifndef GL_DST_COLOR
+#define GL_DST_COLOR 0x0306
+#endif
+#ifndef GL_ONE_MINUS_DST_COLOR
+#define GL_ONE_MINUS_DST_COLOR 0x0307
+#endif
+#ifndef GL_SRC_ALPHA_SATURATE
+#define GL_SRC_ALPHA_SATURATE 0x0308
+#endif
+#ifndef GL_CONSTANT_COLOR
+#define GL_CONSTANT_COLOR 0x8001
+#endif
+#ifndef GL_ONE_MINUS_CONSTANT_COLOR
+#define GL_ONE_MINUS_CONSTANT_COLOR 0x8002
+#endif
+#ifndef GL_CONSTANT_ALPHA
+#define GL_CONSTANT_ALPHA 0x8003
+#endif
+#ifndef GL_ONE_MINUS_CONSTANT_ALPHA
+#define GL_ONE_MINUS_CONSTANT_ALPHA 0x8004
+#endif
+#ifndef GL_FUNC_ADD
+#define GL_FUNC_ADD 0x8006
+#endif
+#ifndef GL_MIN
+#define GL_MIN 0x8007
+#endif
+#ifndef GL_MAX
+#define GL_MAX 0x8008
+#endif
+#ifndef GL_FUNC_SUBTRACT
+#define GL_FUNC_SUBTRACT 0x800A
+#endif
+#ifndef GL_FUNC_REVERSE_SUBTRACT
+#define GL_FUNC_REVERSE_SUBTRACT 0x800B
+#endif
+#ifndef GL_CLEAR
+#define GL_CLEAR 0x1500
+#endif
+#ifndef GL_AND
+#define GL_AND 0x1501
+#endif
+#ifndef GL_AND_REVERSE
+#define GL_AND_REVERSE 0x1502
+#endif
+#ifndef GL_COPY
+#define GL_COPY 0x1503
+#endif
+#ifndef GL_AND_INVERTED
+#define GL_AND_INVERTED 0x1504
+#endif
+#ifndef GL_NOOP
+#define GL_NOOP 0x1505
+#endif
+#ifndef GL_XOR
+#define GL_XOR 0x1506
+#endif
+#ifndef GL_OR
+#define GL_OR 0x1507
+#endif
+#ifndef GL_NOR
+#define GL_NOR 0x1508
+#endif
+#ifndef GL_EQUIV
+#define GL_EQUIV 0x1509
+#endif
+#ifndef GL_OR_REVERSE
+#define GL_OR_REVERSE 0x150B
+#endif
+#ifndef GL_COPY_INVERTED
+#define GL_COPY_INVERTED 0x150C
+#endif
+#ifndef GL_OR_INVERTED
+#define GL_OR_INVERTED 0x150D
+#endif
+#ifndef GL_NAND
+#define GL_NAND 0x150E
+#endif
+#ifndef GL_SET
+#define GL_SET 0x150F
+#endif
 #ifndef GL_POINTS
 #define GL_POINTS 0x0000
 #endif
@@ -426,6 +708,17 @@
  The most vertex `bindings` a renderer takes (`ffvk::MAX_VERTEX_BINDINGS`).
  */
 #define FFVK_MAX_VERTEX_BINDINGS 32
+
+/*
+ `FfvkDrawInfo::raster_source`: the draw's raster state is its `raster` (the default).
+ */
+#define FFVK_RASTER_SOURCE_DRAW 0
+
+/*
+ `FfvkDrawInfo::raster_source`: the draw's raster state is the context's GL raster state at
+ `ffvkDraw` (`ffvkPolygonMode`, `ffvkStencilFunc`, `ffvkColorMask`, `ffvkEnable`, ...).
+ */
+#define FFVK_RASTER_SOURCE_CONTEXT 1
 
 /*
  The most extension names `ffvkDeviceRequirements` ever lists, in this version and later
@@ -733,10 +1026,10 @@ typedef struct FfvkRaster {
  `struct_size` to `sizeof(FfvkDrawInfo)`.
 
  It grows as `FfvkRendererCreateInfo` does: later headers append fields (each with its
- default), the library accepts every published version's size (this header's is version 2,
- which appended `layout`) and reads only what `struct_size` covers. `raster` never grows (`FfvkRaster` keeps its
- size): raster state added later is appended to `FfvkDrawInfo` itself, GL's initial value
- its default.
+ default), the library accepts every published version's size (this header's is version 3:
+ version 2 appended `layout`, version 3 `raster_source`) and reads only what `struct_size`
+ covers. `raster` never grows (`FfvkRaster` keeps its size): the rest of GL's raster state
+ comes from the context (`raster_source`).
  */
 typedef struct FfvkDrawInfo {
   /*
@@ -802,6 +1095,15 @@ typedef struct FfvkDrawInfo {
    (the default, and what a version 1 caller gets): the create info's.
    */
   const struct FfvkVertexLayout *layout;
+  /*
+   Version 3: where the draw's raster state comes from. `FFVK_RASTER_SOURCE_DRAW` (0, the
+   default, and what version 1 and 2 callers get): `raster`. `FFVK_RASTER_SOURCE_CONTEXT`
+   (1): the whole of the context's GL raster state as it is at this `ffvkDraw` (polygon
+   modes and offset, line stipple, point size, line width, culling, front face, the
+   stencil and depth tests, blending, blend color, logic op, color and depth masks);
+   `raster` is not read.
+   */
+  uint32_t raster_source;
 } FfvkDrawInfo;
 
 /*
@@ -939,8 +1241,11 @@ uint32_t ffvkGetError(struct FfvkContext *ctx);
 /*
  glEnable for `GL_LIGHTING`, `GL_LIGHTi` (i < 16), `GL_COLOR_MATERIAL`, `GL_NORMALIZE`,
  `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_COLOR_SUM`, `GL_FOG`, `GL_ALPHA_TEST`,
- `GL_CLIP_PLANEi` (i < 6) and `GL_POINT_SPRITE`. Sets `GL_INVALID_ENUM` for any other cap (a layer
- keeps the rest of GL's capabilities itself). Enabling `GL_COLOR_MATERIAL` writes the
+ `GL_CLIP_PLANEi` (i < 6), `GL_POINT_SPRITE`, and the raster state's `GL_POLYGON_OFFSET_FILL`,
+ `GL_POLYGON_OFFSET_LINE`, `GL_POLYGON_OFFSET_POINT`, `GL_LINE_STIPPLE`, `GL_STENCIL_TEST`,
+ `GL_COLOR_LOGIC_OP`, `GL_BLEND`, `GL_DEPTH_TEST` and `GL_CULL_FACE` (which a draw takes with
+ `FFVK_RASTER_SOURCE_CONTEXT`). Sets `GL_INVALID_ENUM` for any other cap (a layer keeps the
+ rest of GL's capabilities itself). Enabling `GL_COLOR_MATERIAL` writes the
  current color into the tracked material parameters, as GL does.
 
  # Safety
@@ -1371,6 +1676,198 @@ void ffvkFogCoordf(struct FfvkContext *ctx, float coord);
 void ffvkHint(struct FfvkContext *ctx, uint32_t target, uint32_t mode);
 
 /*
+ glStencilFunc: both faces' stencil test: `func` (`GL_NEVER` .. `GL_ALWAYS`), the reference
+ `ref` (kept as given; clamped to [0, 255], ffvk's 8 stencil bits, when tested and queried)
+ and the mask both are ANDed with. Errors: `GL_INVALID_ENUM` for another func.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkStencilFunc(struct FfvkContext *ctx, uint32_t func, int32_t reference, uint32_t mask);
+
+/*
+ glStencilFuncSeparate: `ffvkStencilFunc` for `face` (`GL_FRONT`, `GL_BACK` or
+ `GL_FRONT_AND_BACK`). Errors: `GL_INVALID_ENUM` for another face or func.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkStencilFuncSeparate(struct FfvkContext *ctx,
+                             uint32_t face_enum,
+                             uint32_t func,
+                             int32_t reference,
+                             uint32_t mask);
+
+/*
+ glStencilOp: both faces' actions when the stencil test fails (`sfail`), when it passes and
+ the depth test fails (`dpfail`) and when both pass (`dppass`): `GL_KEEP`, `GL_ZERO`,
+ `GL_REPLACE`, `GL_INCR`, `GL_DECR`, `GL_INVERT`, `GL_INCR_WRAP` or `GL_DECR_WRAP`. Errors:
+ `GL_INVALID_ENUM` for another action.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkStencilOp(struct FfvkContext *ctx, uint32_t sfail, uint32_t dpfail, uint32_t dppass);
+
+/*
+ glStencilOpSeparate: `ffvkStencilOp` for `face`. Errors: `GL_INVALID_ENUM` for another face
+ or action.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkStencilOpSeparate(struct FfvkContext *ctx,
+                           uint32_t face_enum,
+                           uint32_t sfail,
+                           uint32_t dpfail,
+                           uint32_t dppass);
+
+/*
+ glStencilMask: the stencil bits both faces' fragments may write. Never an error.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkStencilMask(struct FfvkContext *ctx, uint32_t mask);
+
+/*
+ glStencilMaskSeparate: `ffvkStencilMask` for `face`. Errors: `GL_INVALID_ENUM` for another
+ face.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkStencilMaskSeparate(struct FfvkContext *ctx, uint32_t face_enum, uint32_t mask);
+
+/*
+ glClearStencil: the value a stencil clear writes, kept as given for
+ `GL_STENCIL_CLEAR_VALUE` (the caller clears its own attachments). Never an error.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkClearStencil(struct FfvkContext *ctx, int32_t s);
+
+/*
+ glColorMask: which channels fragments write (non-zero is `GL_TRUE`). Never an error.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkColorMask(struct FfvkContext *ctx,
+                   uint8_t red,
+                   uint8_t green,
+                   uint8_t blue,
+                   uint8_t alpha);
+
+/*
+ glDepthMask: whether fragments write depth while the depth test is on (non-zero is
+ `GL_TRUE`). Never an error.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkDepthMask(struct FfvkContext *ctx, uint8_t flag);
+
+/*
+ glDepthFunc: the depth test's function, `GL_NEVER` .. `GL_ALWAYS` (`GL_LESS` by default).
+ Errors: `GL_INVALID_ENUM` for another func.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkDepthFunc(struct FfvkContext *ctx, uint32_t func);
+
+/*
+ glDepthRange: near and far, each clamped to [0, 1] as GL clamps them, kept for
+ `GL_DEPTH_RANGE` queries (a draw's depth range is its viewport's: pass them to
+ `ffvkViewport`). Errors: `GL_INVALID_VALUE` for a NaN (ffvk's choice).
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkDepthRange(struct FfvkContext *ctx, double near, double far);
+
+/*
+ glBlendFunc: the source and destination factors of color and alpha while `GL_BLEND` is
+ enabled (GL 2.1 table 4.2: `GL_ZERO`, `GL_ONE`, the `SRC`, `DST` and `CONSTANT` color and
+ alpha factors and their `ONE_MINUS` forms, and, as a source only, `GL_SRC_ALPHA_SATURATE`).
+ Errors: `GL_INVALID_ENUM` for another factor.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkBlendFunc(struct FfvkContext *ctx, uint32_t sfactor, uint32_t dfactor);
+
+/*
+ glBlendFuncSeparate: `ffvkBlendFunc` with color's and alpha's factors apart. Errors:
+ `GL_INVALID_ENUM` for another factor.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkBlendFuncSeparate(struct FfvkContext *ctx,
+                           uint32_t src_rgb,
+                           uint32_t dst_rgb,
+                           uint32_t src_alpha,
+                           uint32_t dst_alpha);
+
+/*
+ glBlendEquation: color's and alpha's equation, `GL_FUNC_ADD` (the default),
+ `GL_FUNC_SUBTRACT`, `GL_FUNC_REVERSE_SUBTRACT`, `GL_MIN` or `GL_MAX`. Errors:
+ `GL_INVALID_ENUM` for another mode.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkBlendEquation(struct FfvkContext *ctx, uint32_t mode);
+
+/*
+ glBlendEquationSeparate: `ffvkBlendEquation` with color's and alpha's apart. Errors:
+ `GL_INVALID_ENUM` for another mode.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkBlendEquationSeparate(struct FfvkContext *ctx, uint32_t mode_rgb, uint32_t mode_alpha);
+
+/*
+ glBlendColor: the constant the `GL_CONSTANT_*` factors read, each component clamped to
+ [0, 1] as GL 2.1 clamps it. Errors: `GL_INVALID_VALUE` for a component that is not finite
+ (ffvk's choice).
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkBlendColor(struct FfvkContext *ctx, float red, float green, float blue, float alpha);
+
+/*
+ glLogicOp: the op used while `GL_COLOR_LOGIC_OP` is enabled, `GL_CLEAR` .. `GL_SET`
+ (`GL_COPY` by default). Errors: `GL_INVALID_ENUM` for another op.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkLogicOp(struct FfvkContext *ctx, uint32_t opcode);
+
+/*
  glPointParameterf: `GL_POINT_SIZE_MIN`, `GL_POINT_SIZE_MAX`, `GL_POINT_FADE_THRESHOLD_SIZE`
  (each ≥ 0) or `GL_POINT_SPRITE_COORD_ORIGIN` (`GL_UPPER_LEFT`, `GL_LOWER_LEFT`). A draw of
  points takes its size from `FfvkRaster::point_size`, times √(1 / (a + b d + c d²)) at the
@@ -1413,6 +1910,88 @@ void ffvkPointParameterfv(struct FfvkContext *ctx, uint32_t pname, const float *
  As `ffvkPointParameterfv`.
  */
 void ffvkPointParameteriv(struct FfvkContext *ctx, uint32_t pname, const int32_t *params);
+
+/*
+ glPolygonMode: how `face`'s polygons (`GL_FRONT`, `GL_BACK`, `GL_FRONT_AND_BACK`) are
+ rasterized: `GL_POINT`, `GL_LINE` or `GL_FILL`. Errors: `GL_INVALID_ENUM` for another face or
+ mode.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkPolygonMode(struct FfvkContext *ctx, uint32_t face_enum, uint32_t mode);
+
+/*
+ glPolygonOffset: the slope factor and constant of the offset enabled by
+ `GL_POLYGON_OFFSET_FILL`, `_LINE` and `_POINT`. Errors: `GL_INVALID_VALUE` for a value that
+ is not finite (ffvk's choice).
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkPolygonOffset(struct FfvkContext *ctx, float factor, float units);
+
+/*
+ glLineStipple: the repeat factor (clamped to [1, 256] as GL clamps it) and the 16-bit
+ pattern used while `GL_LINE_STIPPLE` is enabled. Never an error.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkLineStipple(struct FfvkContext *ctx, int32_t factor, uint16_t pattern);
+
+/*
+ glPointSize: the size of points, in pixels. Errors: `GL_INVALID_VALUE` for a size at or below
+ 0, or not finite (ffvk's choice).
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkPointSize(struct FfvkContext *ctx, float size);
+
+/*
+ glLineWidth: the width of lines, in pixels. Errors: `GL_INVALID_VALUE` for a width at or
+ below 0, or not finite (ffvk's choice).
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkLineWidth(struct FfvkContext *ctx, float width);
+
+/*
+ glCullFace: the faces culled while `GL_CULL_FACE` is enabled: `GL_FRONT`, `GL_BACK` (the
+ default) or `GL_FRONT_AND_BACK`. Errors: `GL_INVALID_ENUM` for another mode.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkCullFace(struct FfvkContext *ctx, uint32_t mode);
+
+/*
+ glFrontFace: the winding of front-facing polygons, `GL_CW` or `GL_CCW` (the default).
+ Errors: `GL_INVALID_ENUM` for another mode.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkFrontFace(struct FfvkContext *ctx, uint32_t mode);
+
+/*
+ glEdgeFlag: the current edge flag (non-zero is `GL_TRUE`), kept for `GL_EDGE_FLAG` queries:
+ ffvk draws no polygon edges apart. Never an error.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkEdgeFlag(struct FfvkContext *ctx, uint8_t flag);
 
 /*
  Newell's teapot tessellated at `level` (1 ..= 64 steps per patch side), the mesh ffvk's
@@ -1579,8 +2158,20 @@ void ffvkGetTexEnviv(struct FfvkContext *ctx, uint32_t target, uint32_t pname, i
  `GL_ALPHA_TEST_FUNC`, `GL_ALPHA_TEST_REF`, `GL_CLIP_PLANEi` (enabled),
  `GL_MAX_CLIP_PLANES` (6); and the points': `GL_POINT_SIZE_MIN`, `GL_POINT_SIZE_MAX`,
  `GL_POINT_FADE_THRESHOLD_SIZE`, `GL_POINT_DISTANCE_ATTENUATION` (3 values),
- `GL_POINT_SPRITE` and `GL_POINT_SPRITE_COORD_ORIGIN`. Errors: `GL_INVALID_ENUM` for any other name (a layer
- answers the rest of GL's state itself); `GL_INVALID_VALUE` for a null `params`.
+ `GL_POINT_SPRITE` and `GL_POINT_SPRITE_COORD_ORIGIN`; and the raster state's:
+ `GL_POLYGON_MODE` (front, back), `GL_POLYGON_OFFSET_FACTOR`, `GL_POLYGON_OFFSET_UNITS`,
+ `GL_POLYGON_OFFSET_FILL`, `_LINE`, `_POINT`, `GL_EDGE_FLAG`, `GL_LINE_STIPPLE`,
+ `GL_LINE_STIPPLE_PATTERN`, `GL_LINE_STIPPLE_REPEAT`, `GL_DEPTH_RANGE`, `GL_DEPTH_TEST`,
+ `GL_DEPTH_WRITEMASK`, `GL_DEPTH_FUNC`, `GL_STENCIL_TEST`, `GL_STENCIL_FUNC`, `GL_STENCIL_REF`
+ (clamped to [0, 255]), `GL_STENCIL_VALUE_MASK`, `GL_STENCIL_FAIL`,
+ `GL_STENCIL_PASS_DEPTH_FAIL`, `GL_STENCIL_PASS_DEPTH_PASS`, `GL_STENCIL_WRITEMASK`, their
+ `GL_STENCIL_BACK_*` forms, `GL_STENCIL_CLEAR_VALUE`, `GL_COLOR_WRITEMASK` (4 values),
+ `GL_BLEND`, `GL_BLEND_SRC_RGB` (`GL_BLEND_SRC`), `GL_BLEND_DST_RGB` (`GL_BLEND_DST`),
+ `GL_BLEND_SRC_ALPHA`, `GL_BLEND_DST_ALPHA`, `GL_BLEND_EQUATION_RGB`,
+ `GL_BLEND_EQUATION_ALPHA`, `GL_BLEND_COLOR`, `GL_COLOR_LOGIC_OP`, `GL_LOGIC_OP_MODE`,
+ `GL_CULL_FACE`, `GL_CULL_FACE_MODE`, `GL_FRONT_FACE`, `GL_POINT_SIZE` and `GL_LINE_WIDTH`.
+ Errors: `GL_INVALID_ENUM` for any other name (a layer answers the rest of GL's state
+ itself); `GL_INVALID_VALUE` for a null `params`.
 
  # Safety
 
@@ -1588,9 +2179,7 @@ void ffvkGetTexEnviv(struct FfvkContext *ctx, uint32_t target, uint32_t pname, i
  for as many values as the name has (16 for a matrix). Nothing is written when an error is
  set.
  */
-void ffvkGetFloatv(struct FfvkContext *ctx,
-                   uint32_t pname,
-                   float *params);
+void ffvkGetFloatv(struct FfvkContext *ctx, uint32_t pname, float *params);
 
 /*
  glGetIntegerv: `ffvkGetFloatv`'s names as integers.
@@ -1697,7 +2286,8 @@ enum FfvkResult ffvkBeginDraws(struct FfvkRenderer *renderer, VkCommandBuffer cm
  not added and the scope stays open with the draws before it. Errors:
  `FFVK_ERROR_INVALID_ARGUMENT` (no open scope, a null pointer, a `struct_size` that is not a
  published version's, a mode ffvk does not draw directly, a buffer count other than the
- layout's bindings, a raster enum that is not one ffvk passes to Vulkan (see `FfvkRaster`),
+ layout's bindings, a raster enum that is not one ffvk passes to Vulkan (see `FfvkRaster`), a `raster_source`
+ other than `FFVK_RASTER_SOURCE_DRAW` and `FFVK_RASTER_SOURCE_CONTEXT`,
  blending into a color
  format the device cannot blend, a point size or line width out of the device's range, a
  textured draw without texture coordinates),

@@ -9,13 +9,19 @@ use ffvk::gl::state::{
 use ffvk::gl::texture::TexEnvMode;
 
 use crate::enums::*;
-use crate::gl::{face, invalid_enum, light_index, with_context, FfvkContext, GlResult, LIGHT_PNAMES};
+use crate::gl::{
+    face, invalid_enum, light_index, raster_cap, with_context, FfvkContext, GlResult, LIGHT_PNAMES,
+};
+
+mod raster;
 
 /// A queried value before its conversion to the entry point's type.
 enum Answer {
     Bool(bool),
     /// An enum or an integer.
     Int(i64),
+    /// Several enums, integers or booleans (0 or 1).
+    Ints(Vec<i64>),
     /// Floats that convert to integers by rounding.
     Floats(Vec<f32>),
     /// Color or normal components, which convert to integers by GL's linear mapping.
@@ -27,6 +33,7 @@ impl Answer {
         match self {
             Answer::Bool(b) => vec![*b as u8 as f32],
             Answer::Int(i) => vec![*i as f32],
+            Answer::Ints(v) => v.iter().map(|&i| i as f32).collect(),
             Answer::Floats(v) => v.clone(),
             Answer::Color(c) => c.clone(),
         }
@@ -37,7 +44,10 @@ impl Answer {
         let round = |v: f32| (v as f64).round().clamp(i32::MIN as f64, i32::MAX as f64) as i32;
         match self {
             Answer::Bool(b) => vec![*b as i32],
-            Answer::Int(i) => vec![*i as i32],
+            // An unsigned value past i32's range (a stencil mask of all ones) is the nearest
+            // representable one, as Mesa answers it.
+            Answer::Int(i) => vec![(*i).clamp(i32::MIN.into(), i32::MAX.into()) as i32],
+            Answer::Ints(v) => v.iter().map(|&i| i as i32).collect(),
             Answer::Floats(v) => v.iter().map(|&v| round(v)).collect(),
             Answer::Color(c) => c
                 .iter()
@@ -53,6 +63,7 @@ impl Answer {
         match self {
             Answer::Bool(b) => vec![*b as u8],
             Answer::Int(i) => vec![(*i != 0) as u8],
+            Answer::Ints(v) => v.iter().map(|&i| (i != 0) as u8).collect(),
             other => other.floats().iter().map(|&v| (v != 0.0) as u8).collect(),
         }
     }
@@ -72,7 +83,7 @@ pub(crate) fn is_enabled(c: &FfvkContext, cap: Cap) -> bool {
         Cap::Fog => l.fragment.fog.enabled,
         Cap::ClipPlane(i) => l.clip.enabled.get(i).copied().unwrap_or(false),
         Cap::PointSprite => l.points.sprite,
-        _ => false,
+        other => c.gl.raster.enabled(other).unwrap_or(false),
     }
 }
 
@@ -189,10 +200,13 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
             Some(Cap::ClipPlane((p - GL_CLIP_PLANE0) as usize))
         }
         p if p >= GL_LIGHT0 && p < GL_LIGHT0 + MAX_LIGHTS as u32 => light_index(f, p).ok().map(Cap::Light),
-        _ => None,
+        p => raster_cap(p),
     };
     if let Some(cap) = cap {
         return Ok(Answer::Bool(is_enabled(c, cap)));
+    }
+    if let Some(answer) = raster::answer(c, pname) {
+        return Ok(answer);
     }
     Ok(match pname {
         GL_LIGHT_MODEL_AMBIENT => Answer::Color(l.model.ambient.to_array().to_vec()),
@@ -255,7 +269,7 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
                 f,
                 "pname",
                 pname,
-                "a state name: GL_LIGHTING, GL_LIGHTi, GL_COLOR_MATERIAL(_FACE, _PARAMETER), GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_LIGHT_MODEL_*, GL_SHADE_MODEL, GL_CURRENT_COLOR, GL_CURRENT_NORMAL, GL_CURRENT_TEXTURE_COORDS, GL_CURRENT_SECONDARY_COLOR, GL_COLOR_SUM, GL_ALPHA_TEST(_FUNC, _REF), GL_FOG(_MODE, _DENSITY, _START, _END, _COLOR, _COORD_SRC, _HINT, _INDEX), GL_CURRENT_FOG_COORD, GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX, GL_POINT_FADE_THRESHOLD_SIZE, GL_POINT_DISTANCE_ATTENUATION, GL_POINT_SPRITE(_COORD_ORIGIN), GL_CLIP_PLANEi, GL_MAX_CLIP_PLANES, GL_MAX_LIGHTS or GL_{MODELVIEW,PROJECTION,TEXTURE}_MATRIX",
+                "a state name: GL_LIGHTING, GL_LIGHTi, GL_COLOR_MATERIAL(_FACE, _PARAMETER), GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_LIGHT_MODEL_*, GL_SHADE_MODEL, GL_CURRENT_COLOR, GL_CURRENT_NORMAL, GL_CURRENT_TEXTURE_COORDS, GL_CURRENT_SECONDARY_COLOR, GL_COLOR_SUM, GL_ALPHA_TEST(_FUNC, _REF), GL_FOG(_MODE, _DENSITY, _START, _END, _COLOR, _COORD_SRC, _HINT, _INDEX), GL_CURRENT_FOG_COORD, GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX, GL_POINT_FADE_THRESHOLD_SIZE, GL_POINT_DISTANCE_ATTENUATION, GL_POINT_SPRITE(_COORD_ORIGIN), GL_CLIP_PLANEi, GL_MAX_CLIP_PLANES, GL_MAX_LIGHTS, GL_{MODELVIEW,PROJECTION,TEXTURE}_MATRIX or a raster state name (GL_POLYGON_MODE, GL_POLYGON_OFFSET_*, GL_EDGE_FLAG, GL_LINE_STIPPLE*, GL_STENCIL_*, GL_DEPTH_*, GL_COLOR_WRITEMASK, GL_BLEND*, GL_COLOR_LOGIC_OP, GL_LOGIC_OP_MODE, GL_CULL_FACE(_MODE), GL_FRONT_FACE, GL_POINT_SIZE, GL_LINE_WIDTH)",
             ))
         }
     })
@@ -413,8 +427,20 @@ pub unsafe extern "C" fn ffvkGetTexEnviv(ctx: *mut FfvkContext, target: u32, pna
 /// `GL_ALPHA_TEST_FUNC`, `GL_ALPHA_TEST_REF`, `GL_CLIP_PLANEi` (enabled),
 /// `GL_MAX_CLIP_PLANES` (6); and the points': `GL_POINT_SIZE_MIN`, `GL_POINT_SIZE_MAX`,
 /// `GL_POINT_FADE_THRESHOLD_SIZE`, `GL_POINT_DISTANCE_ATTENUATION` (3 values),
-/// `GL_POINT_SPRITE` and `GL_POINT_SPRITE_COORD_ORIGIN`. Errors: `GL_INVALID_ENUM` for any other name (a layer
-/// answers the rest of GL's state itself); `GL_INVALID_VALUE` for a null `params`.
+/// `GL_POINT_SPRITE` and `GL_POINT_SPRITE_COORD_ORIGIN`; and the raster state's:
+/// `GL_POLYGON_MODE` (front, back), `GL_POLYGON_OFFSET_FACTOR`, `GL_POLYGON_OFFSET_UNITS`,
+/// `GL_POLYGON_OFFSET_FILL`, `_LINE`, `_POINT`, `GL_EDGE_FLAG`, `GL_LINE_STIPPLE`,
+/// `GL_LINE_STIPPLE_PATTERN`, `GL_LINE_STIPPLE_REPEAT`, `GL_DEPTH_RANGE`, `GL_DEPTH_TEST`,
+/// `GL_DEPTH_WRITEMASK`, `GL_DEPTH_FUNC`, `GL_STENCIL_TEST`, `GL_STENCIL_FUNC`, `GL_STENCIL_REF`
+/// (clamped to [0, 255]), `GL_STENCIL_VALUE_MASK`, `GL_STENCIL_FAIL`,
+/// `GL_STENCIL_PASS_DEPTH_FAIL`, `GL_STENCIL_PASS_DEPTH_PASS`, `GL_STENCIL_WRITEMASK`, their
+/// `GL_STENCIL_BACK_*` forms, `GL_STENCIL_CLEAR_VALUE`, `GL_COLOR_WRITEMASK` (4 values),
+/// `GL_BLEND`, `GL_BLEND_SRC_RGB` (`GL_BLEND_SRC`), `GL_BLEND_DST_RGB` (`GL_BLEND_DST`),
+/// `GL_BLEND_SRC_ALPHA`, `GL_BLEND_DST_ALPHA`, `GL_BLEND_EQUATION_RGB`,
+/// `GL_BLEND_EQUATION_ALPHA`, `GL_BLEND_COLOR`, `GL_COLOR_LOGIC_OP`, `GL_LOGIC_OP_MODE`,
+/// `GL_CULL_FACE`, `GL_CULL_FACE_MODE`, `GL_FRONT_FACE`, `GL_POINT_SIZE` and `GL_LINE_WIDTH`.
+/// Errors: `GL_INVALID_ENUM` for any other name (a layer answers the rest of GL's state
+/// itself); `GL_INVALID_VALUE` for a null `params`.
 ///
 /// # Safety
 ///

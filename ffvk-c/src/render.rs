@@ -16,18 +16,18 @@ use ffvk::glam::Mat4;
 use ffvk::vk::EnabledFeatures;
 use ffvk::{
     Attribute, Geometry, Lighting, LightingOptions, LitDraw, RasterState, StagedDraw, Target, TextureBinding,
-    Topology, VertexInput,
+    VertexInput,
 };
 
 pub mod layout;
 mod raster;
+mod topology;
 mod versions;
 
-use raster::raster;
 pub(crate) use raster::raster_defaults;
-pub use raster::{ffvkRasterDefaults, FfvkRaster};
+pub use raster::{ffvkRasterDefaults, FfvkRaster, FFVK_RASTER_SOURCE_CONTEXT, FFVK_RASTER_SOURCE_DRAW};
+use topology::topology;
 
-use crate::enums::*;
 use crate::gl::FfvkContext;
 use crate::result::{check_ptr, fail, from_error, guard, misaligned, FfvkResult};
 use crate::vk_types::*;
@@ -138,10 +138,10 @@ pub struct FfvkRendererCreateInfo {
 /// `struct_size` to `sizeof(FfvkDrawInfo)`.
 ///
 /// It grows as `FfvkRendererCreateInfo` does: later headers append fields (each with its
-/// default), the library accepts every published version's size (this header's is version 2,
-/// which appended `layout`) and reads only what `struct_size` covers. `raster` never grows (`FfvkRaster` keeps its
-/// size): raster state added later is appended to `FfvkDrawInfo` itself, GL's initial value
-/// its default.
+/// default), the library accepts every published version's size (this header's is version 3:
+/// version 2 appended `layout`, version 3 `raster_source`) and reads only what `struct_size`
+/// covers. `raster` never grows (`FfvkRaster` keeps its size): the rest of GL's raster state
+/// comes from the context (`raster_source`).
 #[repr(C)]
 pub struct FfvkDrawInfo {
     /// `sizeof(FfvkDrawInfo)`.
@@ -177,6 +177,13 @@ pub struct FfvkDrawInfo {
     /// Version 2: the vertex layout the buffers follow (`ffvkCreateVertexLayout`), or null
     /// (the default, and what a version 1 caller gets): the create info's.
     pub layout: *const FfvkVertexLayout,
+    /// Version 3: where the draw's raster state comes from. `FFVK_RASTER_SOURCE_DRAW` (0, the
+    /// default, and what version 1 and 2 callers get): `raster`. `FFVK_RASTER_SOURCE_CONTEXT`
+    /// (1): the whole of the context's GL raster state as it is at this `ffvkDraw` (polygon
+    /// modes and offset, line stipple, point size, line width, culling, front face, the
+    /// stencil and depth tests, blending, blend color, logic op, color and depth masks);
+    /// `raster` is not read.
+    pub raster_source: u32,
 }
 
 /// A descriptor set naming the caller's image view and sampler (`ffvkCreateTexture`).
@@ -509,29 +516,6 @@ pub unsafe extern "C" fn ffvkBeginDraws(
     })
 }
 
-fn topology(mode: u32) -> Result<Topology, FfvkResult> {
-    Ok(match mode {
-        GL_POINTS => Topology::PointList,
-        GL_LINES => Topology::LineList,
-        GL_LINE_STRIP => Topology::LineStrip,
-        GL_TRIANGLES => Topology::TriangleList,
-        GL_TRIANGLE_STRIP => Topology::TriangleStrip,
-        GL_TRIANGLE_FAN => Topology::TriangleFan,
-        GL_LINE_LOOP | GL_QUADS | GL_QUAD_STRIP | GL_POLYGON => {
-            return Err(invalid(format!(
-                "ffvkDraw: mode {} is drawn as a list: turn its vertices into indices with ffvkPrimitiveIndices (or ffvkPrimitiveIndicesRange) and draw those",
-                mode_name(mode)
-            )))
-        }
-        other => {
-            return Err(invalid(format!(
-                "ffvkDraw: mode {} is not a GL primitive: expected GL_POINTS, GL_LINES, GL_LINE_STRIP, GL_TRIANGLES, GL_TRIANGLE_STRIP or GL_TRIANGLE_FAN",
-                enum_name(other)
-            )))
-        }
-    })
-}
-
 /// Adds a draw to the open scope: the context's state now (lights, materials, switches, its
 /// modelview and projection) is captured, so the caller may change the context right after.
 /// The draw is checked and its state written into the slot's memory now (its pipeline is made
@@ -539,7 +523,8 @@ fn topology(mode: u32) -> Result<Topology, FfvkResult> {
 /// not added and the scope stays open with the draws before it. Errors:
 /// `FFVK_ERROR_INVALID_ARGUMENT` (no open scope, a null pointer, a `struct_size` that is not a
 /// published version's, a mode ffvk does not draw directly, a buffer count other than the
-/// layout's bindings, a raster enum that is not one ffvk passes to Vulkan (see `FfvkRaster`),
+/// layout's bindings, a raster enum that is not one ffvk passes to Vulkan (see `FfvkRaster`), a `raster_source`
+/// other than `FFVK_RASTER_SOURCE_DRAW` and `FFVK_RASTER_SOURCE_CONTEXT`,
 /// blending into a color
 /// format the device cannot blend, a point size or line width out of the device's range, a
 /// textured draw without texture coordinates),
@@ -624,7 +609,7 @@ pub unsafe extern "C" fn ffvkDraw(
             }
             .with_topology(topology);
             let buffers: Vec<(vk::Buffer, u64)> = buffers.iter().copied().zip(offsets).collect();
-            let raster = raster(&draw.raster);
+            let raster = raster::of_draw(F, &draw, ctx)?;
             // SAFETY: checked aligned above; the caller's contract: null or a live texture.
             let texture = unsafe { draw.texture.as_ref() }.map(|t| &t.binding);
             let lit = LitDraw::new(

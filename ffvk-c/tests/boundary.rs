@@ -33,6 +33,8 @@ const NORMALIZE: u32 = 0x0BA1;
 const RESCALE_NORMAL: u32 = 0x803A;
 const TEXTURE_2D: u32 = 0x0DE1;
 const BLEND: u32 = 0x0BE2;
+/// GL_DITHER: a cap ffvk does not keep.
+const DITHER: u32 = 0x0BD0;
 const AMBIENT: u32 = 0x1200;
 const DIFFUSE: u32 = 0x1201;
 const SPECULAR: u32 = 0x1202;
@@ -185,7 +187,47 @@ impl Drop for Ctx {
 }
 
 /// The names `ffvkGetFloatv` answers (GL_LIGHTi added by [`Ctx::snapshot`]).
-const GET_NAMES: [u32; 32] = [
+const GET_NAMES: &[u32] = &[
+    0x0B40, // GL_POLYGON_MODE
+    0x8038, // GL_POLYGON_OFFSET_FACTOR
+    0x2A00, // GL_POLYGON_OFFSET_UNITS
+    0x8037, // GL_POLYGON_OFFSET_FILL
+    0x0B43, // GL_EDGE_FLAG
+    0x0B24, // GL_LINE_STIPPLE
+    0x0B25, // GL_LINE_STIPPLE_PATTERN
+    0x0B26, // GL_LINE_STIPPLE_REPEAT
+    0x0B70, // GL_DEPTH_RANGE
+    0x0B71, // GL_DEPTH_TEST
+    0x0B72, // GL_DEPTH_WRITEMASK
+    0x0B74, // GL_DEPTH_FUNC
+    0x0B90, // GL_STENCIL_TEST
+    0x0B91, // GL_STENCIL_CLEAR_VALUE
+    0x0B92, // GL_STENCIL_FUNC
+    0x0B93, // GL_STENCIL_VALUE_MASK
+    0x0B94, // GL_STENCIL_FAIL
+    0x0B96, // GL_STENCIL_PASS_DEPTH_PASS
+    0x0B97, // GL_STENCIL_REF
+    0x0B98, // GL_STENCIL_WRITEMASK
+    0x8800, // GL_STENCIL_BACK_FUNC
+    0x8802, // GL_STENCIL_BACK_PASS_DEPTH_FAIL
+    0x8CA3, // GL_STENCIL_BACK_REF
+    0x8CA5, // GL_STENCIL_BACK_WRITEMASK
+    0x0C23, // GL_COLOR_WRITEMASK
+    BLEND,
+    0x80C9, // GL_BLEND_SRC_RGB
+    0x80C8, // GL_BLEND_DST_RGB
+    0x80CB, // GL_BLEND_SRC_ALPHA
+    0x80CA, // GL_BLEND_DST_ALPHA
+    0x8009, // GL_BLEND_EQUATION_RGB
+    0x883D, // GL_BLEND_EQUATION_ALPHA
+    0x8005, // GL_BLEND_COLOR
+    0x0BF2, // GL_COLOR_LOGIC_OP
+    0x0BF0, // GL_LOGIC_OP_MODE
+    0x0B44, // GL_CULL_FACE
+    0x0B45, // GL_CULL_FACE_MODE
+    0x0B46, // GL_FRONT_FACE
+    0x0B11, // GL_POINT_SIZE
+    0x0B21, // GL_LINE_WIDTH
     0x0B60, // GL_FOG
     0x0B62, // GL_FOG_DENSITY
     0x0B63, // GL_FOG_START
@@ -288,6 +330,31 @@ impl Ctx {
             ffvkLoadModelview(x, scale.as_ptr());
             ffvkLoadProjection(x, shear.as_ptr());
             ffvkLoadTextureMatrix(x, scale.as_ptr());
+            for cap in [0x8037, 0x0B24, 0x0B71, 0x0B90, BLEND, 0x0BF2, 0x0B44] {
+                ffvkEnable(x, cap);
+            }
+            ffvkPolygonMode(x, BACK, 0x1B01);
+            ffvkPolygonOffset(x, 1.5, -2.0);
+            ffvkEdgeFlag(x, 0);
+            ffvkLineStipple(x, 3, 0x0F0F);
+            ffvkDepthRange(x, 0.25, 0.75);
+            ffvkDepthMask(x, 0);
+            ffvkDepthFunc(x, 0x0203);
+            ffvkStencilFuncSeparate(x, FRONT, 0x0202, 7, 0x3F);
+            ffvkStencilFuncSeparate(x, BACK, 0x0205, 9, 0x1F);
+            ffvkStencilOpSeparate(x, FRONT, 0x1E01, 0x1E02, 0x150A);
+            ffvkStencilOpSeparate(x, BACK, 0, 0x8507, 0x8508);
+            ffvkStencilMaskSeparate(x, BACK, 0x0F);
+            ffvkClearStencil(x, 5);
+            ffvkColorMask(x, 1, 0, 1, 0);
+            ffvkBlendFuncSeparate(x, 0x0302, 0x0303, 0x8001, 0x8004);
+            ffvkBlendEquationSeparate(x, 0x800A, 0x8008);
+            ffvkBlendColor(x, 0.25, 0.5, 0.75, 1.0);
+            ffvkLogicOp(x, 0x1506);
+            ffvkCullFace(x, FRONT_AND_BACK);
+            ffvkFrontFace(x, 0x0900);
+            ffvkPointSize(x, 3.0);
+            ffvkLineWidth(x, 2.0);
             assert_eq!(
                 ffvkGetError(x),
                 NO_ERROR,
@@ -315,7 +382,7 @@ impl Ctx {
         };
         // SAFETY: a live context; each buffer has room for 16 values, the most any name has.
         unsafe {
-            let names = GET_NAMES.into_iter().chain((0..16).map(|i| LIGHT0 + i));
+            let names = GET_NAMES.iter().copied().chain((0..16).map(|i| LIGHT0 + i));
             for p in names {
                 take(format!("GetFloatv(0x{p:04X})"), &|b| ffvkGetFloatv(x, p, b));
             }
@@ -484,6 +551,41 @@ fn context_calls() -> Vec<(&'static str, ContextCall)> {
                 assert!(b.iter().all(|&v| v == f64::from(SENTINEL_F)), "{b:?}");
             }),
             e("ffvkShadeModel", |c| ffvkShadeModel(c, FLAT)),
+            e("ffvkPolygonMode", |c| ffvkPolygonMode(c, FRONT, 0x1B01)),
+            e("ffvkPolygonOffset", |c| ffvkPolygonOffset(c, 1.0, 1.0)),
+            e("ffvkEdgeFlag", |c| ffvkEdgeFlag(c, 0)),
+            e("ffvkLineStipple", |c| ffvkLineStipple(c, 2, 0x00FF)),
+            e("ffvkDepthRange", |c| ffvkDepthRange(c, 0.0, 0.5)),
+            e("ffvkStencilFunc", |c| ffvkStencilFunc(c, 0x0202, 1, 0xFF)),
+            e("ffvkStencilFuncSeparate", |c| {
+                ffvkStencilFuncSeparate(c, BACK, 0x0202, 1, 0xFF)
+            }),
+            e("ffvkStencilOp", |c| ffvkStencilOp(c, 0x1E00, 0x1E00, 0x1E01)),
+            e("ffvkStencilOpSeparate", |c| {
+                ffvkStencilOpSeparate(c, FRONT, 0x1E00, 0x1E00, 0x1E01)
+            }),
+            e("ffvkStencilMask", |c| ffvkStencilMask(c, 0x0F)),
+            e("ffvkStencilMaskSeparate", |c| {
+                ffvkStencilMaskSeparate(c, BACK, 0x0F)
+            }),
+            e("ffvkClearStencil", |c| ffvkClearStencil(c, 1)),
+            e("ffvkColorMask", |c| ffvkColorMask(c, 0, 1, 1, 1)),
+            e("ffvkDepthMask", |c| ffvkDepthMask(c, 0)),
+            e("ffvkDepthFunc", |c| ffvkDepthFunc(c, 0x0203)),
+            e("ffvkBlendFunc", |c| ffvkBlendFunc(c, 0x0302, 0x0303)),
+            e("ffvkBlendFuncSeparate", |c| {
+                ffvkBlendFuncSeparate(c, 0x0302, 0x0303, 1, 0)
+            }),
+            e("ffvkBlendEquation", |c| ffvkBlendEquation(c, 0x800A)),
+            e("ffvkBlendEquationSeparate", |c| {
+                ffvkBlendEquationSeparate(c, 0x800A, 0x8006)
+            }),
+            e("ffvkBlendColor", |c| ffvkBlendColor(c, 0.5, 0.5, 0.5, 0.5)),
+            e("ffvkLogicOp", |c| ffvkLogicOp(c, 0x1506)),
+            e("ffvkCullFace", |c| ffvkCullFace(c, FRONT)),
+            e("ffvkFrontFace", |c| ffvkFrontFace(c, 0x0900)),
+            e("ffvkPointSize", |c| ffvkPointSize(c, 2.0)),
+            e("ffvkLineWidth", |c| ffvkLineWidth(c, 2.0)),
             e("ffvkPerFragmentLighting", |c| ffvkPerFragmentLighting(c, 1)),
             e("ffvkLoadModelview", |c| ffvkLoadModelview(c, M.as_ptr())),
             e("ffvkLoadProjection", |c| ffvkLoadProjection(c, M.as_ptr())),
@@ -728,7 +830,7 @@ fn enable_disable_and_is_enabled_refuse_an_unknown_cap_with_invalid_enum() {
         BOGUS,
         0,
         u32::MAX,
-        BLEND,
+        DITHER,
         LIGHT0 - 1,
         LIGHT0 + 16,
         LIGHT0 + 0x1000,
@@ -749,6 +851,71 @@ fn enable_disable_and_is_enabled_refuse_an_unknown_cap_with_invalid_enum() {
             assert_eq!(ffvkIsEnabled(x, cap), 0, "GL_FALSE for an unknown cap");
             assert_eq!(c.error(), INVALID_ENUM);
         }
+    }
+}
+
+#[test]
+fn the_raster_entry_points_refuse_what_gl_refuses_naming_the_parameter_and_change_nothing() {
+    let c = Ctx::busy();
+    let x = c.0;
+    let before = c.snapshot();
+    // SAFETY: a live context.
+    unsafe {
+        assert_each_refused!(c, before, INVALID_ENUM, ["face", &hex(BOGUS), "GL_FRONT"], {
+            ffvkPolygonMode(x, BOGUS, 0x1B01);
+            ffvkStencilFuncSeparate(x, BOGUS, 0x0202, 0, 0);
+            ffvkStencilOpSeparate(x, BOGUS, 0x1E00, 0x1E00, 0x1E00);
+            ffvkStencilMaskSeparate(x, BOGUS, 0);
+        });
+        assert_each_refused!(c, before, INVALID_ENUM, ["mode", &hex(BOGUS), "expected GL_"], {
+            ffvkPolygonMode(x, FRONT, BOGUS);
+            ffvkCullFace(x, BOGUS);
+            ffvkFrontFace(x, BOGUS);
+            ffvkBlendEquation(x, BOGUS);
+        });
+        assert_each_refused!(c, before, INVALID_ENUM, ["func", &hex(BOGUS), "GL_NEVER"], {
+            ffvkStencilFunc(x, BOGUS, 0, 0);
+            ffvkDepthFunc(x, BOGUS);
+        });
+        assert_each_refused!(c, before, INVALID_ENUM, ["dppass", &hex(BOGUS), "GL_KEEP"], {
+            ffvkStencilOp(x, 0x1E00, 0x1E00, BOGUS);
+        });
+        assert_each_refused!(
+            c,
+            before,
+            INVALID_ENUM,
+            ["dfactor", "GL_SRC_ALPHA_SATURATE", "source factor only"],
+            {
+                ffvkBlendFunc(x, 1, 0x0308);
+            }
+        );
+        assert_each_refused!(
+            c,
+            before,
+            INVALID_ENUM,
+            ["sfactorAlpha", &hex(BOGUS), "GL_ZERO"],
+            {
+                ffvkBlendFuncSeparate(x, 1, 0, BOGUS, 0);
+            }
+        );
+        assert_each_refused!(c, before, INVALID_ENUM, ["opcode", &hex(BOGUS), "GL_CLEAR"], {
+            ffvkLogicOp(x, BOGUS);
+        });
+        for size in [0.0, -1.0, f32::NAN, f32::INFINITY] {
+            assert_each_refused!(c, before, INVALID_VALUE, [&size.to_string()], {
+                ffvkPointSize(x, size);
+                ffvkLineWidth(x, size);
+            });
+        }
+        assert_each_refused!(c, before, INVALID_VALUE, ["GL_POLYGON_OFFSET_UNITS", "NaN"], {
+            ffvkPolygonOffset(x, 1.0, f32::NAN);
+        });
+        assert_each_refused!(c, before, INVALID_VALUE, ["GL_BLEND_COLOR", "inf"], {
+            ffvkBlendColor(x, 0.0, f32::INFINITY, 0.0, 0.0);
+        });
+        assert_each_refused!(c, before, INVALID_VALUE, ["GL_DEPTH_RANGE", "NaN"], {
+            ffvkDepthRange(x, f64::NAN, 1.0);
+        });
     }
 }
 
@@ -1060,7 +1227,7 @@ fn gl_get_refuses_a_name_outside_the_state_ffvk_keeps_and_writes_nothing() {
     let c = Ctx::busy();
     let x = c.0;
     let before = c.snapshot();
-    for pname in [BOGUS, 0, BLEND, LIGHT0 + 16, AMBIENT, TEXTURE_ENV_MODE, u32::MAX] {
+    for pname in [BOGUS, 0, DITHER, LIGHT0 + 16, AMBIENT, TEXTURE_ENV_MODE, u32::MAX] {
         let mut f = [SENTINEL_F; 16];
         let mut i = [SENTINEL_I; 16];
         let mut b = [SENTINEL_B; 16];
@@ -1561,7 +1728,7 @@ fn messages_name_the_function_the_parameter_the_value_and_what_was_expected() {
 
 #[test]
 fn messages_name_a_gl_enum_by_its_gl_name_and_a_value_gl_has_no_name_for_in_hex() {
-    const DEPTH_TEST: u32 = 0x0B71;
+    const SCISSOR_TEST: u32 = 0x0C11;
     const VERTEX_ARRAY: u32 = 0x8074;
     let c = Ctx::new();
     let x = c.0;
@@ -1573,8 +1740,8 @@ fn messages_name_a_gl_enum_by_its_gl_name_and_a_value_gl_has_no_name_for_in_hex(
     // SAFETY: a live context; params point at 4 values.
     unsafe {
         // Names the API refuses, as a layer forwarding every glEnable passes them.
-        ffvkEnable(x, DEPTH_TEST);
-        expect(&["ffvkEnable: cap GL_DEPTH_TEST (0x0B71) is not accepted"]);
+        ffvkEnable(x, SCISSOR_TEST);
+        expect(&["ffvkEnable: cap GL_SCISSOR_TEST (0x0C11) is not accepted"]);
         ffvkDisable(x, VERTEX_ARRAY);
         expect(&["ffvkDisable: cap GL_VERTEX_ARRAY (0x8074) is not accepted"]);
         ffvkTexEnvi(x, TEXTURE_ENV, TEXTURE_ENV_MODE, COMBINE as i32);

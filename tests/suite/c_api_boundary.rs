@@ -277,6 +277,7 @@ pub(crate) fn draw_info(buffer: &vk::Buffer, raster: FfvkRaster) -> FfvkDrawInfo
         raster,
         texture: std::ptr::null(),
         layout: std::ptr::null(),
+        raster_source: FFVK_RASTER_SOURCE_DRAW,
     }
 }
 

@@ -81,6 +81,7 @@ fn draw_info(mode: u32, buffer: &vk::Buffer, raster: FfvkRaster) -> FfvkDrawInfo
         raster,
         texture: std::ptr::null(),
         layout: std::ptr::null(),
+        raster_source: FFVK_RASTER_SOURCE_DRAW,
     }
 }
 
@@ -180,6 +181,97 @@ fn a_draw_the_device_or_the_state_cannot_take_is_refused_at_ffvk_draw_and_the_sc
         assert_eq!(ffvkBeginFrame(r, 0), FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
 
         // Destroyed with its scope open: nothing was recorded, everything is freed.
+        ffvkDestroyRenderer(r);
+        ffvkDestroyContext(ctx);
+    }
+}
+
+/// A version 3 draw with `FFVK_RASTER_SOURCE_CONTEXT` takes the context's GL raster state as it
+/// is at `ffvkDraw` (GL's rule: a draw takes the state in force when it is issued), and one with
+/// `FFVK_RASTER_SOURCE_DRAW` its own `raster`: the context's stencil test on a target without
+/// stencil, and its `GL_LINE` polygon mode on a device without `fillModeNonSolid`, refuse the
+/// first and not the second.
+#[test]
+fn a_version_3_draw_takes_the_contexts_raster_state_as_it_is_when_the_draw_is_issued() {
+    const GL_FRONT_AND_BACK: u32 = 0x0408;
+    const GL_LINE: u32 = 0x1B01;
+    const GL_FILL: u32 = 0x1B02;
+    const GL_STENCIL_TEST: u32 = 0x0B90;
+    let plain = PlainDevice::new();
+    let bindings = [vk::VertexInputBindingDescription {
+        binding: 0,
+        stride: 24,
+        input_rate: vk::VertexInputRate::VERTEX,
+    }];
+    let r = renderer(&plain, &bindings);
+    let ctx = ffvkCreateContext();
+    // Never dereferenced: the draws are checked and staged, never recorded.
+    let buffer = vk::Buffer::null();
+    let mut raster = std::mem::MaybeUninit::<FfvkRaster>::uninit();
+    // SAFETY: writable; ffvkRasterDefaults fills every field.
+    let raster = unsafe {
+        ffvkRasterDefaults(raster.as_mut_ptr());
+        raster.assume_init()
+    };
+    let own = draw_info(GL_TRIANGLES, &buffer, raster);
+    let mut from_context = draw_info(GL_TRIANGLES, &buffer, raster);
+    from_context.raster_source = FFVK_RASTER_SOURCE_CONTEXT;
+    // SAFETY: every pointer is live for its call; the command buffer handle is a placeholder
+    // ffvk never records into (the renderer is destroyed with its scope open).
+    unsafe {
+        assert_eq!(ffvkBeginFrame(r, 0), FfvkResult::FFVK_SUCCESS, "{}", message());
+        let fake_cmd = vk::CommandBuffer::from_raw(0x1000);
+        assert_eq!(ffvkBeginDraws(r, fake_cmd, 0), FfvkResult::FFVK_SUCCESS);
+        // GL's initial raster state draws.
+        assert_eq!(
+            ffvkDraw(r, ctx, &from_context),
+            FfvkResult::FFVK_SUCCESS,
+            "{}",
+            message()
+        );
+
+        ffvkEnable(ctx, GL_STENCIL_TEST);
+        let stencil = ffvkDraw(r, ctx, &from_context);
+        assert_ne!(
+            stencil,
+            FfvkResult::FFVK_SUCCESS,
+            "the context's stencil test on D32_SFLOAT"
+        );
+        assert!(message().to_lowercase().contains("stencil"), "{}", message());
+        assert_eq!(
+            ffvkDraw(r, ctx, &own),
+            FfvkResult::FFVK_SUCCESS,
+            "a draw with its own raster state does not read the context's: {}",
+            message()
+        );
+        ffvkDisable(ctx, GL_STENCIL_TEST);
+
+        ffvkPolygonMode(ctx, GL_FRONT_AND_BACK, GL_LINE);
+        assert_ne!(ffvkDraw(r, ctx, &from_context), FfvkResult::FFVK_SUCCESS);
+        assert!(message().contains("fillModeNonSolid"), "{}", message());
+        assert_eq!(ffvkDraw(r, ctx, &own), FfvkResult::FFVK_SUCCESS, "{}", message());
+        ffvkPolygonMode(ctx, GL_FRONT_AND_BACK, GL_FILL);
+
+        // The state at this ffvkDraw, not at the scope's start: drawable again.
+        ffvkColorMask(ctx, 0, 1, 1, 1);
+        assert_eq!(
+            ffvkDraw(r, ctx, &from_context),
+            FfvkResult::FFVK_SUCCESS,
+            "{}",
+            message()
+        );
+        assert_eq!(ffvkGetError(ctx), 0);
+
+        from_context.raster_source = 2;
+        assert_eq!(
+            ffvkDraw(r, ctx, &from_context),
+            FfvkResult::FFVK_ERROR_INVALID_ARGUMENT
+        );
+        assert!(
+            message().contains("raster_source 2 is not accepted: expected FFVK_RASTER_SOURCE_DRAW (0) or FFVK_RASTER_SOURCE_CONTEXT (1)"),
+            "{}",
+            message()
+        );
         ffvkDestroyRenderer(r);
         ffvkDestroyContext(ctx);
     }

@@ -20,14 +20,18 @@ use crate::result::{fail, misaligned, panic_text, FfvkResult};
 mod clip;
 mod entry;
 mod fog;
+mod fragment;
 mod params;
 mod points;
+mod raster;
 
 pub use clip::*;
 pub use entry::*;
 pub use fog::*;
+pub use fragment::*;
 pub(crate) use params::{face, light_index, LIGHT_PNAMES};
 pub use points::*;
+pub use raster::*;
 
 /// GL's lighting state, its matrices and its error flag: what an application's GL calls set.
 /// Made by `ffvkCreateContext`, freed by `ffvkDestroyContext`. One thread at a time may call
@@ -96,7 +100,7 @@ pub(crate) fn invalid_enum(function: &str, what: &str, value: u32, expected: &st
 
 fn state_error(function: &str, e: StateError) -> GlError {
     let code = match e {
-        StateError::LightIndex { .. } => GL_INVALID_ENUM,
+        StateError::LightIndex { .. } | StateError::NotAccepted { .. } => GL_INVALID_ENUM,
         _ => GL_INVALID_VALUE,
     };
     let name = if code == GL_INVALID_ENUM {

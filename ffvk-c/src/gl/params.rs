@@ -276,6 +276,9 @@ pub(super) fn set_tex_env(ctx: &mut FfvkContext, function: &str, pname: u32, v: 
 
 /// The capability of glEnable, glDisable and glIsEnabled.
 pub(crate) fn cap(function: &str, cap: u32) -> GlResult<Cap> {
+    if let Some(raster) = super::raster_cap(cap) {
+        return Ok(raster);
+    }
     match cap {
         GL_LIGHTING => Ok(Cap::Lighting),
         GL_COLOR_MATERIAL => Ok(Cap::ColorMaterial),
@@ -292,7 +295,7 @@ pub(crate) fn cap(function: &str, cap: u32) -> GlResult<Cap> {
                 function,
                 "cap",
                 other,
-                "GL_LIGHTING, GL_LIGHT0 .. GL_LIGHT0 + 15, GL_COLOR_MATERIAL, GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_COLOR_SUM, GL_FOG, GL_ALPHA_TEST or GL_CLIP_PLANE0 .. GL_CLIP_PLANE0 + 5",
+                "GL_LIGHTING, GL_LIGHT0 .. GL_LIGHT0 + 15, GL_COLOR_MATERIAL, GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_COLOR_SUM, GL_FOG, GL_ALPHA_TEST, GL_POINT_SPRITE, GL_CLIP_PLANE0 .. GL_CLIP_PLANE0 + 5, GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT, GL_LINE_STIPPLE, GL_STENCIL_TEST, GL_COLOR_LOGIC_OP, GL_BLEND, GL_DEPTH_TEST or GL_CULL_FACE",
             )
         }),
     }

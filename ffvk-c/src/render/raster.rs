@@ -5,8 +5,32 @@
 use ffvk::ash::vk;
 use ffvk::{Blend, RasterState};
 
-use crate::result::misaligned;
+use super::{invalid, FfvkDrawInfo};
+use crate::gl::FfvkContext;
+use crate::result::{misaligned, FfvkResult};
 use crate::vk_types::*;
+
+/// `FfvkDrawInfo::raster_source`: the draw's raster state is its `raster` (the default).
+pub const FFVK_RASTER_SOURCE_DRAW: u32 = 0;
+/// `FfvkDrawInfo::raster_source`: the draw's raster state is the context's GL raster state at
+/// `ffvkDraw` (`ffvkPolygonMode`, `ffvkStencilFunc`, `ffvkColorMask`, `ffvkEnable`, ...).
+pub const FFVK_RASTER_SOURCE_CONTEXT: u32 = 1;
+
+/// The raster state a draw is staged with: its `raster`, or the context's GL raster state now
+/// (GL's rule: a draw takes the state in force when it is issued).
+pub(crate) fn of_draw(
+    function: &str,
+    draw: &FfvkDrawInfo,
+    ctx: &FfvkContext,
+) -> Result<RasterState, FfvkResult> {
+    match draw.raster_source {
+        FFVK_RASTER_SOURCE_DRAW => Ok(raster(&draw.raster)),
+        FFVK_RASTER_SOURCE_CONTEXT => Ok(ctx.gl.raster_state()),
+        other => Err(invalid(format!(
+            "{function}: raster_source {other} is not accepted: expected FFVK_RASTER_SOURCE_DRAW (0) or FFVK_RASTER_SOURCE_CONTEXT (1)"
+        ))),
+    }
+}
 
 /// A draw's fixed-function raster state (GL's glCullFace/glFrontFace, depth and blend state,
 /// glPointSize, glLineWidth) in Vulkan's terms. `ffvkRasterDefaults` fills GL's initial
@@ -52,7 +76,7 @@ pub struct FfvkRaster {
     pub line_width: f32,
 }
 
-pub(crate) fn raster(r: &FfvkRaster) -> RasterState {
+fn raster(r: &FfvkRaster) -> RasterState {
     let mut state = RasterState::default()
         .with_depth_test(r.depth_test != 0)
         .with_point_size(r.point_size)

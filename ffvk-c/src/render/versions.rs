@@ -96,6 +96,27 @@ unsafe impl Versioned for FfvkRendererCreateInfo {
     }
 }
 
+frozen_version! {
+    /// `FfvkDrawInfo` as version 2 of `ffvk.h` declared it.
+    DrawInfoV2 of FfvkDrawInfo {
+        struct_size: u32,
+        mode: u32,
+        vertex_buffers: *const VkBuffer,
+        vertex_offsets: *const VkDeviceSize,
+        vertex_buffer_count: u32,
+        index_buffer: VkBuffer,
+        index_offset: VkDeviceSize,
+        index_type: VkIndexType,
+        first: u32,
+        count: u32,
+        vertex_offset: i32,
+        primitive_restart: u8,
+        raster: FfvkRaster,
+        texture: *const FfvkTexture,
+        layout: *const super::layout::FfvkVertexLayout,
+    }
+}
+
 // SAFETY: as above; `raster` is all integers, floats and Vulkan enums.
 unsafe impl Versioned for FfvkDrawInfo {
     const NAME: &'static str = "FfvkDrawInfo";
@@ -106,8 +127,13 @@ unsafe impl Versioned for FfvkDrawInfo {
         },
         // Version 2: the draw's vertex layout.
         Version {
-            size: size_of::<FfvkDrawInfo>(),
+            size: size_of::<DrawInfoV2>(),
             first_field: offset_of!(FfvkDrawInfo, layout),
+        },
+        // Version 3: where the draw's raster state comes from.
+        Version {
+            size: size_of::<FfvkDrawInfo>(),
+            first_field: offset_of!(FfvkDrawInfo, raster_source),
         },
     ];
     fn defaults() -> Self {
@@ -127,6 +153,7 @@ unsafe impl Versioned for FfvkDrawInfo {
             raster: raster_defaults(),
             texture: std::ptr::null(),
             layout: std::ptr::null(),
+            raster_source: super::FFVK_RASTER_SOURCE_DRAW,
         }
     }
 }
@@ -189,8 +216,9 @@ mod tests {
         ] {
             assert_eq!(versions, [Version { size, first_field: 0 }], "{name}");
         }
-        // FfvkDrawInfo: version 1 (ffvk-c 0.1's first header) and version 2, which appended
-        // the layout right after version 1's end.
+        // FfvkDrawInfo: version 1 (ffvk-c 0.1's first header), version 2, which appended the
+        // layout right after version 1's end, and version 3, the raster source after version
+        // 2's end.
         assert_eq!(
             FfvkDrawInfo::VERSIONS,
             [
@@ -199,12 +227,17 @@ mod tests {
                     first_field: 0
                 },
                 Version {
-                    size: size_of::<FfvkDrawInfo>(),
+                    size: size_of::<DrawInfoV2>(),
                     first_field: offset_of!(FfvkDrawInfo, layout)
+                },
+                Version {
+                    size: size_of::<FfvkDrawInfo>(),
+                    first_field: offset_of!(FfvkDrawInfo, raster_source)
                 }
             ]
         );
         assert_eq!(offset_of!(FfvkDrawInfo, layout), size_of::<DrawInfoV1>());
+        assert_eq!(offset_of!(FfvkDrawInfo, raster_source), size_of::<DrawInfoV2>());
     }
 
     #[test]
@@ -223,5 +256,27 @@ mod tests {
             read.layout.is_null(),
             "a version 1 draw's layout is the default, null"
         );
+        assert_eq!(read.raster_source, crate::render::FFVK_RASTER_SOURCE_DRAW);
+    }
+
+    #[test]
+    fn a_version_2_draw_info_reads_its_layout_and_takes_the_draws_raster_state() {
+        let mut info = FfvkDrawInfo::defaults();
+        info.struct_size = size_of::<DrawInfoV2>() as u32;
+        info.layout = std::ptr::dangling();
+        // Where a version 2 caller's memory ends: not read.
+        info.raster_source = crate::render::FFVK_RASTER_SOURCE_CONTEXT;
+        // SAFETY: a whole current struct, aligned; struct_size covers less of it.
+        let read = unsafe { crate::abi::read("test", &info) }.expect("version 2's size is accepted");
+        assert_eq!(read.layout, std::ptr::dangling());
+        assert_eq!(
+            read.raster_source,
+            crate::render::FFVK_RASTER_SOURCE_DRAW,
+            "a version 2 draw takes its raster state from its raster, the default"
+        );
+        info.struct_size = size_of::<FfvkDrawInfo>() as u32;
+        // SAFETY: as above, struct_size covering all of it.
+        let read = unsafe { crate::abi::read("test", &info) }.expect("version 3's size is accepted");
+        assert_eq!(read.raster_source, crate::render::FFVK_RASTER_SOURCE_CONTEXT);
     }
 }

@@ -73,6 +73,18 @@ pub enum StateError {
         /// The determinant of the whole 4×4 modelview.
         determinant: f64,
     },
+    /// GL's `INVALID_ENUM` for a value of the right type that the parameter does not take
+    /// here: `GL_SRC_ALPHA_SATURATE` as a destination blend factor (GL 2.1 table 4.2: "valid
+    /// only for source RGB and alpha").
+    #[error("{parameter} = {value} is not accepted: expected {valid}")]
+    NotAccepted {
+        /// The GL name of the parameter, e.g. `"dfactorRGB"`.
+        parameter: &'static str,
+        /// The GL name of the value refused.
+        value: &'static str,
+        /// What would have been accepted, in words.
+        valid: &'static str,
+    },
     /// A light index at or past [`MAX_LIGHTS`](super::state::MAX_LIGHTS) (GL's `INVALID_ENUM` for `GL_LIGHTi`).
     #[error("light index {index} is out of range: expected 0..{max} (GL_MAX_LIGHTS = {max})")]
     LightIndex {

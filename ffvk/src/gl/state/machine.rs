@@ -8,11 +8,11 @@ use glam::{Mat3, Mat4, Vec3, Vec4};
 use super::{
     check_light_scalar, finite_vec, in_range, Cap, ClipPlanes, ColorMaterialMode, CompareFunc, Face,
     FixedFunctionState, FogHint, FogParam, Light, LightModelParam, LightParam, LightingMode, Material,
-    MaterialParam, PointParam, ShadeModel, StateError, TexEnvParam, MAX_LIGHTS,
+    MaterialParam, PointParam, RasterGl, ShadeModel, StateError, TexEnvParam, MAX_LIGHTS,
 };
 
-/// The fixed-function state machine: the lighting state plus the current modelview matrix,
-/// with GL's entry points. Start from [`GlState::new`] for GL's initial state.
+/// The fixed-function state machine: the lighting state, the current modelview matrix and the
+/// raster state, with GL's entry points (the raster state's are in `raster.rs`). Start from [`GlState::new`] for GL's initial state.
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
 pub struct GlState {
@@ -20,6 +20,9 @@ pub struct GlState {
     pub lighting: FixedFunctionState,
     /// The modelview matrix in force (glLoadMatrix / glMultMatrix).
     pub modelview: Mat4,
+    /// GL's raster and per-fragment state ([`RasterGl`]): what a draw's
+    /// [`RasterState`](crate::RasterState) is made from ([`GlState::raster_state`]).
+    pub raster: RasterGl,
 }
 
 impl Default for GlState {
@@ -34,6 +37,7 @@ impl GlState {
         GlState {
             lighting: FixedFunctionState::default(),
             modelview: Mat4::IDENTITY,
+            raster: RasterGl::default(),
         }
     }
 
@@ -209,6 +213,19 @@ impl GlState {
             Cap::Fog => self.lighting.fragment.fog.enabled = on,
             Cap::ClipPlane(i) => *self.clip_plane_mut(i)? = on,
             Cap::PointSprite => self.lighting.points.sprite = on,
+            Cap::PolygonOffsetFill
+            | Cap::PolygonOffsetLine
+            | Cap::PolygonOffsetPoint
+            | Cap::LineStipple
+            | Cap::StencilTest
+            | Cap::ColorLogicOp
+            | Cap::Blend
+            | Cap::DepthTest
+            | Cap::CullFace => {
+                if let Some(enabled) = self.raster.enabled_mut(cap) {
+                    *enabled = on;
+                }
+            }
         }
         Ok(())
     }

@@ -42,17 +42,24 @@ use glam::{Vec3, Vec4};
 
 use super::texture::{TexEnvMode, TextureUnit};
 
+mod caps;
 mod checks;
 mod clip;
 mod machine;
 mod points;
+mod raster;
 mod stages;
 mod values;
+pub use caps::Cap;
 pub use checks::validate_light;
 use checks::validate_lights;
 pub use clip::{ClipPlanes, MAX_CLIP_PLANES};
 pub use machine::GlState;
 pub use points::{PointParam, PointParameters, SpriteOrigin};
+pub use raster::{
+    BlendEquation, BlendFactor, FrontFace, GlEnum, LogicOp, PolygonMode, RasterGl, StencilGl, StencilOp,
+    STENCIL_BITS,
+};
 pub use stages::{AlphaTest, CompareFunc, Fog, FogHint, FogMode, FogParam, FogSource, FragmentStages};
 pub use values::DrawValues;
 
@@ -442,36 +449,6 @@ pub enum ShadeModel {
     Smooth,
     /// `GL_FLAT`: selects [`LightingMode::Flat`].
     Flat,
-}
-
-/// Capabilities toggled by glEnable/glDisable that touch lighting.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[non_exhaustive]
-pub enum Cap {
-    /// `GL_LIGHTING`: without it the clamped vertex color is drawn unlit.
-    Lighting,
-    /// `GL_LIGHTi`, i in 0..[`MAX_LIGHTS`]; a larger i is a [`StateError::LightIndex`].
-    Light(usize),
-    /// `GL_COLOR_MATERIAL`.
-    ColorMaterial,
-    /// `GL_NORMALIZE`: eye-space normals are made unit length.
-    Normalize,
-    /// `GL_RESCALE_NORMAL`: eye-space normals are scaled to undo a uniform scale in the
-    /// modelview (the factor comes from the third row of its inverse).
-    RescaleNormal,
-    /// `GL_TEXTURE_2D`: texturing with the bound texture, when it is complete.
-    Texture2D,
-    /// `GL_COLOR_SUM`: with lighting off, the secondary color is added after texturing.
-    ColorSum,
-    /// `GL_ALPHA_TEST`: fragments are kept as [`AlphaTest`] says.
-    AlphaTest,
-    /// `GL_FOG`: fragments are fogged as [`Fog`] says.
-    Fog,
-    /// `GL_CLIP_PLANEi`, i in 0..[`MAX_CLIP_PLANES`]; a larger i is a
-    /// [`StateError::OutOfRange`].
-    ClipPlane(usize),
-    /// `GL_POINT_SPRITE`: points are sprites ([`PointParameters::sprite`]).
-    PointSprite,
 }
 
 /// Parameters of glTexEnv (target `GL_TEXTURE_ENV`).
