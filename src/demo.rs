@@ -3,9 +3,10 @@
 //! contact sheet; the white teapot textured in each texture environment mode, with and without
 //! separate specular color; then the glTF files of `assets/gltf` drawn directly, on a sheet of
 //! their own; a sheet of ffvk's lighting variants: Blinn's (GL's) against Phong's specular
-//! term, and hard against soft spot edges; and a sheet of the stages around lighting
-//! ([`stages`]).
+//! term, and hard against soft spot edges; a sheet of the stages around lighting
+//! ([`stages`]); and a sheet of the raster state a draw carries ([`raster`]).
 
+pub mod raster;
 pub mod stages;
 
 use std::path::Path;
@@ -391,6 +392,18 @@ pub fn run(options: &RendererOptions, out: &Path) -> Result<()> {
     save_png(&sheet, &path)?;
     crate::outln!(
         "wrote {} (fog, the alpha test, clip planes and the color sum)",
+        path.display()
+    )?;
+    let raster = raster::raster_panels(&mut renderer, 256)?;
+    for p in &raster {
+        save_png(&p.image, &out.join("raster").join(format!("{}.png", p.name)))?;
+    }
+    let labelled: Vec<(String, image::RgbaImage)> = raster.into_iter().map(|p| (p.label, p.image)).collect();
+    let sheet = contact_sheet(&labelled, 4)?;
+    let path = out.join("raster_sheet.png");
+    save_png(&sheet, &path)?;
+    crate::outln!(
+        "wrote {} (polygon modes and offsets, the stencil test, logic ops, stipple, depth range)",
         path.display()
     )?;
     let gltf = gltf_panels(

@@ -112,6 +112,7 @@ fn golden_demo_panels() {
     let mut panels = ffvk_cli::demo::panels(&mut r, 128).unwrap();
     panels.extend(ffvk_cli::demo::model_panels(&mut r, 128).unwrap());
     panels.extend(ffvk_cli::demo::stages::stage_panels(&mut r, 128).unwrap());
+    panels.extend(ffvk_cli::demo::raster::raster_panels(&mut r, 128).unwrap());
     finish(r);
     let refs = root().join("tests/golden/demo");
     let out = root().join("tests/output/golden/demo");

@@ -101,6 +101,7 @@ pub(super) fn eligible(frame: &Frame, specialize: Specialize, cpu: bool) -> Opti
             // So do the stencil test, logic ops, outlines, points and stipples.
             && d.raster(frame).only_fills_and_blends()
             && d.clamped_depth_range() == [0.0, 1.0]
+            && d.depth_write
             && !d.textured()
             // Fog, the alpha test and an unlit color sum are forward-only stages.
             && !d.state.fragment.fog.enabled

@@ -96,6 +96,8 @@ pub struct Draw<'a> {
     pub logic_op: Option<vk::LogicOp>,
     /// `GL_LINE_STIPPLE` with `glLineStipple`: `None` (off) by default.
     pub line_stipple: Option<LineStipple>,
+    /// `glDepthMask`: depth writes on (GL's default) or off; only while the frame tests depth.
+    pub depth_write: bool,
     /// `glDepthRange(near, far)`: (0, 1) by default; each clamped to [0, 1] as GL clamps it,
     /// near may exceed far. The viewport's depth: set between the draws where it changes.
     pub depth_range: [f32; 2],
@@ -123,7 +125,15 @@ impl<'a> Draw<'a> {
             logic_op: None,
             line_stipple: None,
             depth_range: [0.0, 1.0],
+            depth_write: true,
         }
+    }
+
+    /// This draw with `glDepthMask(on)`.
+    #[must_use]
+    pub fn with_depth_write(mut self, on: bool) -> Self {
+        self.depth_write = on;
+        self
     }
 
     /// This draw with `glDepthRange(near, far)`.
@@ -247,6 +257,7 @@ impl<'a> Draw<'a> {
     pub(super) fn raster(&self, frame: &Frame) -> RasterState {
         RasterState {
             depth_test: frame.depth_test,
+            depth_write: self.depth_write,
             cull_mode: match self.cull_face {
                 None => vk::CullModeFlags::NONE,
                 Some(Face::Front) => vk::CullModeFlags::FRONT,

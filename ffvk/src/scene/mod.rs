@@ -666,6 +666,7 @@ pub fn render_scene_with(
             logic_op: None,
             line_stipple: None,
             depth_range: [0.0, 1.0],
+            depth_write: true,
         });
     }
     Ok(renderer.render(&frame)?.into())
