@@ -140,6 +140,9 @@ pub(super) struct ImageSpec {
     #[serde(default, deserialize_with = "exact")]
     pub(super) size: Option<[u32; 2]>,
     pub(super) clear_color: Option<Vec<f32>>,
+    /// glClearStencil, 0..=255; 0 by default. Read wide, so that a bad value is refused by
+    /// name.
+    pub(super) clear_stencil: Option<i64>,
     pub(super) lighting_mode: Option<String>,
     pub(super) depth_test: Option<bool>,
     pub(super) fragment_path: Option<String>,
@@ -269,6 +272,28 @@ pub(super) struct MeshSpec {
     /// "lines", "line_strip", "line_loop", "triangles", "triangle_strip", "triangle_fan",
     /// "quads", "quad_strip" or "polygon".
     pub(super) primitive: Option<String>,
+    /// GL_CULL_FACE with glCullFace: "front", "back" or "front_and_back"; off by default.
+    pub(super) cull_face: Option<String>,
+    /// glPolygonMode: "fill" (GL's default), "line" or "point" for both faces, or
+    /// `{ front = ..., back = ... }`.
+    pub(super) polygon_mode: Option<super::raster::PolygonModeSpec>,
+    /// glPolygonOffset with GL_POLYGON_OFFSET_FILL (on with the table), _LINE and _POINT.
+    pub(super) polygon_offset: Option<super::raster::PolygonOffsetSpec>,
+    /// glColorMask(r, g, b, a); all true by default.
+    #[serde(default, deserialize_with = "exact")]
+    pub(super) color_mask: Option<[bool; 4]>,
+    /// GL_STENCIL_TEST with the front faces' (and points' and lines') state, and the back
+    /// faces' unless `stencil_back` gives theirs.
+    pub(super) stencil: Option<super::raster::StencilSpec>,
+    pub(super) stencil_back: Option<super::raster::StencilSpec>,
+    /// GL_COLOR_LOGIC_OP with glLogicOp: GL's names ("copy", "xor", ...).
+    pub(super) logic_op: Option<String>,
+    /// GL_LINE_STIPPLE with glLineStipple.
+    pub(super) line_stipple: Option<super::raster::LineStippleSpec>,
+    /// GL_BLEND with glBlendFuncSeparate and glBlendEquationSeparate.
+    pub(super) blend: Option<super::raster::BlendSpec>,
+    /// glBlendColor, RGBA in [0, 1]; (0, 0, 0, 0) by default.
+    pub(super) blend_color: Option<Vec<f32>>,
 }
 
 /// A fixed-length array that refuses extra or missing elements (serde's own arrays, read from
