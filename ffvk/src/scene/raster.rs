@@ -2,92 +2,11 @@
 //! the stencil test, `glLogicOp`, `glLineStipple`, blending and culling, each with GL's names
 //! and GL's defaults, checked into the [`MeshRaster`] its draw is made with.
 
-use ash::vk;
-use serde::Deserialize;
-
-use super::file::MeshSpec;
+use super::file::{BlendSpec, MeshSpec, PolygonModeSpec, StencilSpec};
 use super::{Builder, SceneError};
 use crate::gl::state::Face;
 use crate::{Blend, LineStipple, PolygonModes, PolygonOffset, Stencil, StencilFace};
-
-/// `polygon_mode`: one word for both faces, or a table with each face's.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(untagged)]
-pub(super) enum PolygonModeSpec {
-    Both(String),
-    Faces(FacesSpec),
-}
-
-/// `polygon_mode = { front = ..., back = ... }`: `"fill"` for a face left out.
-#[derive(Debug, Default, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct FacesSpec {
-    pub(super) front: Option<String>,
-    pub(super) back: Option<String>,
-}
-
-/// `polygon_offset`: glPolygonOffset and the modes it is enabled for.
-#[derive(Debug, Default, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct PolygonOffsetSpec {
-    /// 0 by default.
-    pub(super) factor: Option<f32>,
-    /// 0 by default.
-    pub(super) units: Option<f32>,
-    /// GL_POLYGON_OFFSET_FILL: on when the table is given unless this says otherwise.
-    pub(super) fill: Option<bool>,
-    /// GL_POLYGON_OFFSET_LINE: off by default.
-    pub(super) line: Option<bool>,
-    /// GL_POLYGON_OFFSET_POINT: off by default.
-    pub(super) point: Option<bool>,
-}
-
-/// `stencil` and `stencil_back`: glStencilFuncSeparate, glStencilOpSeparate and
-/// glStencilMaskSeparate for one face. Integers are read wide, so that an out-of-range value
-/// is refused by name rather than as a type mismatch.
-#[derive(Debug, Default, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct StencilSpec {
-    /// "always" by default.
-    pub(super) func: Option<String>,
-    /// A GLint, 0 by default; GL clamps it to [0, 255] for the 8-bit stencil buffer.
-    #[serde(rename = "ref")]
-    pub(super) reference: Option<i64>,
-    /// A GLuint, all ones by default.
-    pub(super) value_mask: Option<i64>,
-    /// "keep" by default, as are `depth_fail` and `pass`.
-    pub(super) fail: Option<String>,
-    pub(super) depth_fail: Option<String>,
-    pub(super) pass: Option<String>,
-    /// A GLuint, all ones by default.
-    pub(super) write_mask: Option<i64>,
-}
-
-/// `line_stipple`: glLineStipple.
-#[derive(Debug, Default, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct LineStippleSpec {
-    /// 1..=256, 1 by default.
-    pub(super) factor: Option<i64>,
-    /// A GLushort, 0xFFFF by default.
-    pub(super) pattern: Option<i64>,
-}
-
-/// `blend`: glBlendFuncSeparate and glBlendEquationSeparate; the alpha ones default to the
-/// color ones.
-#[derive(Debug, Default, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(super) struct BlendSpec {
-    /// "one" by default.
-    pub(super) src: Option<String>,
-    /// "zero" by default.
-    pub(super) dst: Option<String>,
-    /// "func_add" by default.
-    pub(super) equation: Option<String>,
-    pub(super) src_alpha: Option<String>,
-    pub(super) dst_alpha: Option<String>,
-    pub(super) equation_alpha: Option<String>,
-}
+use ash::vk;
 
 /// The raster state one scene mesh is drawn with; `Default` is GL's initial state.
 #[derive(Debug, Clone, Copy, PartialEq)]
