@@ -62,6 +62,7 @@ fn raster_state_left_out_is_gls_initial_state() {
         ),
         (None, None, None, None, None, None)
     );
+    assert_eq!((r.blend_color, r.depth_range), ([0.0; 4], [0.0, 1.0]));
     let scene = parse("plain", "[[meshes]]\nbuiltin = \"sphere\"\n").unwrap();
     assert_eq!(scene.clear_stencil, 0);
 }
@@ -235,6 +236,13 @@ fn each_raster_field_parses_with_gls_names() {
         "GL's initial factors and equation"
     );
 
+    let r = raster("depth_range = [0.25, 2.0]");
+    assert_eq!(
+        r.depth_range,
+        [0.25, 2.0],
+        "kept as given: the renderer clamps it as GL does"
+    );
+
     let r = raster("cull_face = \"front\"");
     assert_eq!(r.cull_face, Some(Face::Front));
     let scene = parse(
@@ -319,6 +327,10 @@ fn bad_raster_values_name_the_file_the_field_the_value_and_what_was_expected() {
     contains_all(&m, &["meshes[0].blend.equation", "\"add\"", "\"func_add\""]);
     let m = refused("blend_color", "", "blend_color = [0.5, 2.0, 0.0]");
     contains_all(&m, &["meshes[0].blend_color", "2", "[0, 1]"]);
+    let m = refused("depth_range", "", "depth_range = [0.0, inf]");
+    contains_all(&m, &["meshes[0].depth_range", "inf", "finite"]);
+    let m = refused("depth_range_len", "", "depth_range = [0.0]");
+    contains_all(&m, &["depth_range", "exactly 2"]);
     let m = refused("cull", "", "cull_face = \"both\"");
     contains_all(&m, &["meshes[0].cull_face", "\"both\"", "\"front_and_back\""]);
     let m = refused("clear_stencil", "clear_stencil = 256", "");

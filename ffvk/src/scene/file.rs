@@ -294,6 +294,9 @@ pub(super) struct MeshSpec {
     pub(super) blend: Option<BlendSpec>,
     /// glBlendColor, RGBA in [0, 1]; (0, 0, 0, 0) by default.
     pub(super) blend_color: Option<Vec<f32>>,
+    /// glDepthRange(near, far), each clamped to [0, 1] as GL clamps it; [0, 1] by default.
+    #[serde(default, deserialize_with = "exact")]
+    pub(super) depth_range: Option<[f32; 2]>,
 }
 
 /// `polygon_mode`: one word for both faces, or a table with each face's.

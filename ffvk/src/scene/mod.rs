@@ -429,7 +429,7 @@ pub struct SceneMesh {
     pub lit: bool,
     /// The raster state it is drawn with: the `[[meshes]]` table's `polygon_mode`,
     /// `polygon_offset`, `color_mask`, `stencil`, `logic_op`, `line_stipple`, `blend`,
-    /// `cull_face`; GL's defaults for those left out.
+    /// `cull_face`, `depth_range`; GL's defaults for those left out.
     pub raster: MeshRaster,
 }
 
@@ -681,7 +681,7 @@ pub fn render_scene_with(
             stencil: raster.stencil,
             logic_op: raster.logic_op,
             line_stipple: raster.line_stipple,
-            depth_range: [0.0, 1.0],
+            depth_range: raster.depth_range,
         });
     }
     Ok(renderer.render(&frame)?.into())

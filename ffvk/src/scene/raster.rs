@@ -31,6 +31,9 @@ pub struct MeshRaster {
     pub blend: Option<Blend>,
     /// `glBlendColor` (`blend_color`).
     pub blend_color: [f32; 4],
+    /// `glDepthRange(near, far)` (`depth_range`), finite; the renderer clamps each to
+    /// [0, 1] as GL does.
+    pub depth_range: [f32; 2],
 }
 
 impl Default for MeshRaster {
@@ -45,6 +48,7 @@ impl Default for MeshRaster {
             line_stipple: None,
             blend: None,
             blend_color: [0.0; 4],
+            depth_range: [0.0, 1.0],
         }
     }
 }
@@ -262,6 +266,10 @@ impl Builder<'_> {
                 ));
             }
             raster.blend_color = c.to_array();
+        }
+        if let Some(range) = spec.depth_range {
+            self.finite(&at("depth_range"), &range)?;
+            raster.depth_range = range;
         }
         Ok(raster)
     }
