@@ -37,6 +37,7 @@ mod render_path;
 mod report;
 mod rooms;
 mod scene;
+mod scene_raster;
 mod specialization;
 mod stage_scenes;
 mod state;

@@ -140,6 +140,9 @@ pub(super) struct ImageSpec {
     #[serde(default, deserialize_with = "exact")]
     pub(super) size: Option<[u32; 2]>,
     pub(super) clear_color: Option<Vec<f32>>,
+    /// glClearStencil, 0..=255; 0 by default. Read wide, so that a bad value is refused by
+    /// name.
+    pub(super) clear_stencil: Option<i64>,
     pub(super) lighting_mode: Option<String>,
     pub(super) depth_test: Option<bool>,
     pub(super) fragment_path: Option<String>,
@@ -269,6 +272,112 @@ pub(super) struct MeshSpec {
     /// "lines", "line_strip", "line_loop", "triangles", "triangle_strip", "triangle_fan",
     /// "quads", "quad_strip" or "polygon".
     pub(super) primitive: Option<String>,
+    /// GL_CULL_FACE with glCullFace: "front", "back" or "front_and_back"; off by default.
+    pub(super) cull_face: Option<String>,
+    /// glPolygonMode: "fill" (GL's default), "line" or "point" for both faces, or
+    /// `{ front = ..., back = ... }`.
+    pub(super) polygon_mode: Option<PolygonModeSpec>,
+    /// glPolygonOffset with GL_POLYGON_OFFSET_FILL (on with the table), _LINE and _POINT.
+    pub(super) polygon_offset: Option<PolygonOffsetSpec>,
+    /// glColorMask(r, g, b, a); all true by default.
+    #[serde(default, deserialize_with = "exact")]
+    pub(super) color_mask: Option<[bool; 4]>,
+    /// GL_STENCIL_TEST with the front faces' (and points' and lines') state, and the back
+    /// faces' unless `stencil_back` gives theirs.
+    pub(super) stencil: Option<StencilSpec>,
+    pub(super) stencil_back: Option<StencilSpec>,
+    /// GL_COLOR_LOGIC_OP with glLogicOp: GL's names ("copy", "xor", ...).
+    pub(super) logic_op: Option<String>,
+    /// GL_LINE_STIPPLE with glLineStipple.
+    pub(super) line_stipple: Option<LineStippleSpec>,
+    /// GL_BLEND with glBlendFuncSeparate and glBlendEquationSeparate.
+    pub(super) blend: Option<BlendSpec>,
+    /// glBlendColor, RGBA in [0, 1]; (0, 0, 0, 0) by default.
+    pub(super) blend_color: Option<Vec<f32>>,
+    /// glDepthRange(near, far), each clamped to [0, 1] as GL clamps it; [0, 1] by default.
+    #[serde(default, deserialize_with = "exact")]
+    pub(super) depth_range: Option<[f32; 2]>,
+    /// glDepthMask: true (depth writes on) by default.
+    pub(super) depth_mask: Option<bool>,
+}
+
+/// `polygon_mode`: one word for both faces, or a table with each face's.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(untagged)]
+pub(super) enum PolygonModeSpec {
+    Both(String),
+    Faces(FacesSpec),
+}
+
+/// `polygon_mode = { front = ..., back = ... }`: `"fill"` for a face left out.
+#[derive(Debug, Default, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct FacesSpec {
+    pub(super) front: Option<String>,
+    pub(super) back: Option<String>,
+}
+
+/// `polygon_offset`: glPolygonOffset and the modes it is enabled for.
+#[derive(Debug, Default, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct PolygonOffsetSpec {
+    /// 0 by default.
+    pub(super) factor: Option<f32>,
+    /// 0 by default.
+    pub(super) units: Option<f32>,
+    /// GL_POLYGON_OFFSET_FILL: on when the table is given unless this says otherwise.
+    pub(super) fill: Option<bool>,
+    /// GL_POLYGON_OFFSET_LINE: off by default.
+    pub(super) line: Option<bool>,
+    /// GL_POLYGON_OFFSET_POINT: off by default.
+    pub(super) point: Option<bool>,
+}
+
+/// `stencil` and `stencil_back`: glStencilFuncSeparate, glStencilOpSeparate and
+/// glStencilMaskSeparate for one face. Integers are read wide, so that an out-of-range value
+/// is refused by name rather than as a type mismatch.
+#[derive(Debug, Default, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct StencilSpec {
+    /// "always" by default.
+    pub(super) func: Option<String>,
+    /// A GLint, 0 by default; GL clamps it to [0, 255] for the 8-bit stencil buffer.
+    #[serde(rename = "ref")]
+    pub(super) reference: Option<i64>,
+    /// A GLuint, all ones by default.
+    pub(super) value_mask: Option<i64>,
+    /// "keep" by default, as are `depth_fail` and `pass`.
+    pub(super) fail: Option<String>,
+    pub(super) depth_fail: Option<String>,
+    pub(super) pass: Option<String>,
+    /// A GLuint, all ones by default.
+    pub(super) write_mask: Option<i64>,
+}
+
+/// `line_stipple`: glLineStipple.
+#[derive(Debug, Default, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct LineStippleSpec {
+    /// 1..=256, 1 by default.
+    pub(super) factor: Option<i64>,
+    /// A GLushort, 0xFFFF by default.
+    pub(super) pattern: Option<i64>,
+}
+
+/// `blend`: glBlendFuncSeparate and glBlendEquationSeparate; the alpha ones default to the
+/// color ones.
+#[derive(Debug, Default, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct BlendSpec {
+    /// "one" by default.
+    pub(super) src: Option<String>,
+    /// "zero" by default.
+    pub(super) dst: Option<String>,
+    /// "func_add" by default.
+    pub(super) equation: Option<String>,
+    pub(super) src_alpha: Option<String>,
+    pub(super) dst_alpha: Option<String>,
+    pub(super) equation_alpha: Option<String>,
 }
 
 /// A fixed-length array that refuses extra or missing elements (serde's own arrays, read from

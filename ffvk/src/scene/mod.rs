@@ -12,6 +12,7 @@ pub mod gltf;
 mod inputs;
 mod meaning;
 mod open;
+mod raster;
 mod texture;
 
 pub use inputs::inputs;
@@ -27,6 +28,7 @@ use self::file::{
 };
 use self::gltf::{GltfLights, LoadError, PunctualLight};
 pub use self::meaning::{auto_exposure, GltfMeaning};
+pub use self::raster::MeshRaster;
 pub use self::texture::MeshTexture;
 use crate::gl::presets;
 use crate::gl::state::{
@@ -425,6 +427,10 @@ pub struct SceneMesh {
     /// Whether lighting applies: false for glTF points and lines without normals, which are
     /// drawn unlit (glTF 2.0: lighting needs normals).
     pub lit: bool,
+    /// The raster state it is drawn with: the `[[meshes]]` table's `polygon_mode`,
+    /// `polygon_offset`, `color_mask`, `stencil`, `logic_op`, `line_stipple`, `blend`,
+    /// `cull_face`, `depth_range`; GL's defaults for those left out.
+    pub raster: MeshRaster,
 }
 
 /// A scene ready to draw: GL state already in eye space, matrices in GL conventions.
@@ -441,6 +447,9 @@ pub struct Scene {
     pub clear_color: Vec4,
     /// Whether the depth test is on (GL_DEPTH_TEST with GL_LESS).
     pub depth_test: bool,
+    /// glClearStencil: what the stencil buffer of a scene with a stencil-tested mesh is
+    /// cleared to (`[image] clear_stencil`), 0 by default.
+    pub clear_stencil: u32,
     /// glPointSize of the meshes drawn as points (`[points] size`); 1 by default.
     pub point_size: f32,
     /// How the fragment mode is drawn (`[image] fragment_path`): forward (the default),
@@ -477,10 +486,13 @@ impl Scene {
         state
     }
 
-    /// The faces `mesh` is drawn without (GL_CULL_FACE with glCullFace): back faces of
-    /// single-sided glTF materials where the scene follows glTF's meaning, else none.
+    /// The faces `mesh` is drawn without (GL_CULL_FACE with glCullFace): the mesh's
+    /// `cull_face`, else back faces of single-sided glTF materials where the scene follows
+    /// glTF's meaning, else none.
     pub fn cull_face(&self, mesh: &SceneMesh) -> Option<Face> {
-        mesh.gltf.and_then(|m| m.cull_face())
+        mesh.raster
+            .cull_face
+            .or_else(|| mesh.gltf.and_then(|m| m.cull_face()))
     }
 
     /// The modelview matrix `mesh` is drawn with: view × model.
@@ -635,8 +647,12 @@ pub fn render_scene_with(
     let mut frame = crate::Frame::new(width, height);
     frame.clear_color = scene.clear_color;
     frame.depth_test = scene.depth_test;
+    frame.clear_stencil = scene.clear_stencil;
     frame.fragment_path = path.unwrap_or(scene.fragment_path);
+    // In file order: what one mesh leaves in the stencil and depth buffers is what the next
+    // one is tested against.
     for (mesh, gpu) in scene.meshes.iter().zip(&uploaded) {
+        let raster = &mesh.raster;
         let mut state = scene.draw_state(mesh);
         if let Some(mode) = mode {
             state.mode = mode;
@@ -657,16 +673,16 @@ pub fn render_scene_with(
                 1.0
             },
             line_width: 1.0,
-            polygon_offset: None,
-            color_mask: [true; 4],
-            blend: None,
-            blend_color: [0.0; 4],
-            polygon_mode: crate::PolygonModes::FILL,
-            stencil: None,
-            logic_op: None,
-            line_stipple: None,
-            depth_range: [0.0, 1.0],
-            depth_write: true,
+            polygon_offset: raster.polygon_offset,
+            color_mask: raster.color_mask,
+            blend: raster.blend,
+            blend_color: raster.blend_color,
+            polygon_mode: raster.polygon_mode,
+            stencil: raster.stencil,
+            logic_op: raster.logic_op,
+            line_stipple: raster.line_stipple,
+            depth_range: raster.depth_range,
+            depth_write: raster.depth_write,
         });
     }
     Ok(renderer.render(&frame)?.into())

@@ -263,6 +263,7 @@ impl Builder<'_> {
                     }
                     _ => None,
                 };
+                let raster = self.mesh_raster(&field, spec)?;
                 meshes.push(SceneMesh {
                     name: p.name,
                     data,
@@ -272,6 +273,7 @@ impl Builder<'_> {
                     gltf: meaning,
                     texture,
                     lit: p.lit,
+                    raster,
                 });
             }
         }
@@ -319,6 +321,7 @@ impl Builder<'_> {
             height,
             clear_color,
             depth_test: file.image.depth_test.unwrap_or(true),
+            clear_stencil: self.clear_stencil(file.image.clear_stencil)?,
             point_size,
             fragment_path,
             view,

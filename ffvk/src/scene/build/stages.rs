@@ -8,7 +8,12 @@ use crate::scene::file::{AlphaTestSpec, ClipPlaneSpec, FogSpec, PointsSpec};
 impl Builder<'_> {
     /// A word of `choices` (GL's names in lowercase, without `GL_`), or an error naming the
     /// field and the words it takes.
-    fn word<T: Copy>(&self, field: &str, given: &str, choices: &[(&str, T)]) -> Result<T, SceneError> {
+    pub(in crate::scene) fn word<T: Copy>(
+        &self,
+        field: &str,
+        given: &str,
+        choices: &[(&str, T)],
+    ) -> Result<T, SceneError> {
         choices
             .iter()
             .find(|(w, _)| *w == given)
