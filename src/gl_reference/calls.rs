@@ -90,12 +90,52 @@ pub(super) fn replay(gl: &Gl, call: GlCall) {
         }
         // SAFETY: a context is current on this thread.
         GlCall::DepthRange(near, far) => unsafe { gl.DepthRange(near, far) },
+        // SAFETY: a context is current on this thread.
+        GlCall::DepthMask(on) => unsafe { gl.DepthMask(u8::from(on)) },
+        GlCall::CullFace(face) => {
+            set_enabled(gl, gl::CULL_FACE, true);
+            // SAFETY: a context is current on this thread.
+            unsafe { gl.CullFace(face_enum(face)) };
+        }
         GlCall::LineStipple(l) => {
             set_enabled(gl, gl::LINE_STIPPLE, true);
             // SAFETY: a context is current on this thread.
             unsafe { gl.LineStipple(l.factor as GLint, l.pattern) };
         }
     }
+}
+
+/// The calls that set a scene mesh's raster state ([`ffvk::scene::MeshRaster`]) on GL's
+/// defaults (what each draw starts from): those of the state that differs from them.
+pub fn mesh_raster_calls(r: &ffvk::scene::MeshRaster) -> Vec<GlCall> {
+    let mut calls = Vec::new();
+    if let Some(face) = r.cull_face {
+        calls.push(GlCall::CullFace(face));
+    }
+    if r.polygon_mode != ffvk::PolygonModes::FILL {
+        calls.push(GlCall::PolygonMode(r.polygon_mode));
+    }
+    calls.extend(r.polygon_offset.map(GlCall::PolygonOffset));
+    if r.color_mask != [true; 4] {
+        calls.push(GlCall::ColorMask(r.color_mask));
+    }
+    calls.extend(r.stencil.map(GlCall::Stencil));
+    calls.extend(r.logic_op.map(GlCall::LogicOp));
+    calls.extend(r.line_stipple.map(GlCall::LineStipple));
+    calls.extend(r.blend.map(GlCall::Blend));
+    if r.blend_color != [0.0; 4] {
+        calls.push(GlCall::BlendColor(r.blend_color));
+    }
+    if r.depth_range != [0.0, 1.0] {
+        calls.push(GlCall::DepthRange(
+            r.depth_range[0].into(),
+            r.depth_range[1].into(),
+        ));
+    }
+    if !r.depth_write {
+        calls.push(GlCall::DepthMask(false));
+    }
+    calls
 }
 
 /// GL's name of a Vulkan polygon mode.

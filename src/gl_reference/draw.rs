@@ -332,6 +332,7 @@ pub(super) fn begin_frame(gl: &Gl, scene: &GlScene) {
         // glColorMask and glStencilMask mask glClear too: the whole image is cleared.
         gl.ColorMask(1, 1, 1, 1);
         gl.StencilMask(!0);
+        gl.DepthMask(1);
         gl.ClearStencil(0);
         gl.Clear(gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT | gl::STENCIL_BUFFER_BIT);
         if scene.depth_test {
@@ -560,6 +561,7 @@ pub(super) fn set_state(
         gl::STENCIL_TEST,
         gl::COLOR_LOGIC_OP,
         gl::LINE_STIPPLE,
+        gl::CULL_FACE,
     ] {
         set_enabled(gl, cap, false);
     }
@@ -569,6 +571,7 @@ pub(super) fn set_state(
         gl.BlendColor(0.0, 0.0, 0.0, 0.0);
         gl.PolygonMode(gl::FRONT_AND_BACK, gl::FILL);
         gl.DepthRange(0.0, 1.0);
+        gl.DepthMask(1);
     }
     for call in &draw.calls {
         replay(gl, *call);

@@ -48,6 +48,7 @@ use ffvk::gl::state::{Cap, ColorMaterialMode, Face, FixedFunctionState};
 use ffvk::gl::texture::{Sampling, TextureImage};
 use ffvk::mesh::MeshData;
 
+pub use calls::mesh_raster_calls;
 pub use error::{DrawError, GlError, NoDriver};
 
 /// The generated GL 2.1 compatibility entry points and enums, for tests that compare GL's
@@ -197,6 +198,10 @@ pub enum GlCall {
     LineStipple(ffvk::LineStipple),
     /// `glDepthRange(near, far)`.
     DepthRange(f64, f64),
+    /// `glDepthMask(on)`.
+    DepthMask(bool),
+    /// `glEnable(GL_CULL_FACE)` and `glCullFace(face)`.
+    CullFace(Face),
 }
 
 /// What the GL context reports about itself, and where it came from.
