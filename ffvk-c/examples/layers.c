@@ -202,12 +202,18 @@ static void create_device(App *app) {
     /* This program's own feature: synchronization2 (vkCmdPipelineBarrier2). ffvk adds what it
      * uses to the same chain: dynamicRendering (required) in the Vulkan 1.3 struct,
      * provokingVertexLast (GL's rule for GL_FLAT: the last vertex) in the provoking-vertex
-     * struct, and wideLines and largePoints, each where the device has it, with the extension
-     * names to enable. It says which FFVK_FEATURE_* bits the device will then have: what
+     * struct, GL's aliased and stippled lines (bresenhamLines, stippledBresenhamLines) in the
+     * line-rasterization struct, and wideLines, largePoints, shaderClipDistance,
+     * fillModeNonSolid and logicOp, each where the device has it, with the extension names to
+     * enable (a struct whose extension the device lacks is taken out of the chain). It says which FFVK_FEATURE_* bits the device will then have: what
      * FfvkRendererCreateInfo::enabled_features says (Vulkan cannot tell ffvk what a device
      * was created with). */
+    VkPhysicalDeviceLineRasterizationFeaturesEXT lines = {
+        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT,
+    };
     VkPhysicalDeviceProvokingVertexFeaturesEXT provoking = {
         .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROVOKING_VERTEX_FEATURES_EXT,
+        .pNext = &lines,
     };
     VkPhysicalDeviceVulkan13Features v13 = {
         .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,

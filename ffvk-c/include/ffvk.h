@@ -675,6 +675,16 @@
 
 
 /*
+ The most `frames_in_flight` a renderer takes (`ffvk::MAX_FRAMES_IN_FLIGHT`).
+ */
+#define FFVK_MAX_FRAMES_IN_FLIGHT 64
+
+/*
+ The most vertex `bindings` a renderer takes (`ffvk::MAX_VERTEX_BINDINGS`).
+ */
+#define FFVK_MAX_VERTEX_BINDINGS 32
+
+/*
  `dynamicRendering` (Vulkan 1.3): required.
  */
 #define FFVK_FEATURE_DYNAMIC_RENDERING 1
@@ -700,14 +710,23 @@
 #define FFVK_FEATURE_CLIP_DISTANCE 16
 
 /*
- The most `frames_in_flight` a renderer takes (`ffvk::MAX_FRAMES_IN_FLIGHT`).
+ `VkPhysicalDeviceFeatures::fillModeNonSolid`: needed for `ffvkPolygonMode`'s `GL_LINE` and
+ `GL_POINT`.
  */
-#define FFVK_MAX_FRAMES_IN_FLIGHT 64
+#define FFVK_FEATURE_FILL_MODE_NON_SOLID 32
 
 /*
- The most vertex `bindings` a renderer takes (`ffvk::MAX_VERTEX_BINDINGS`).
+ `VkPhysicalDeviceFeatures::logicOp`: needed for `GL_COLOR_LOGIC_OP` (`ffvkLogicOp`).
  */
-#define FFVK_MAX_VERTEX_BINDINGS 32
+#define FFVK_FEATURE_LOGIC_OP 64
+
+/*
+ The extension `VK_EXT_line_rasterization` enabled with
+ `VkPhysicalDeviceLineRasterizationFeaturesEXT::bresenhamLines` and
+ `stippledBresenhamLines`: needed for `GL_LINE_STIPPLE` (`ffvkLineStipple`). With it every
+ line and polygon outline is drawn as GL's aliased (diamond-exit) lines.
+ */
+#define FFVK_FEATURE_STIPPLED_LINES 128
 
 /*
  `FfvkDrawInfo::raster_source`: the draw's raster state is its `raster` (the default).
@@ -887,7 +906,13 @@ typedef struct FfvkRendererCreateInfo {
    provokingVertexLast`; without it `GL_FLAT` draws are refused. `FFVK_FEATURE_WIDE_LINES`
    and `FFVK_FEATURE_LARGE_POINTS` are `VkPhysicalDeviceFeatures::wideLines` and
    `largePoints`; `FFVK_FEATURE_CLIP_DISTANCE` is `shaderClipDistance` (draws with a user
-   clip plane enabled). `ffvkDeviceRequirements` says which bits a device will have.
+   clip plane enabled); `FFVK_FEATURE_FILL_MODE_NON_SOLID` is `fillModeNonSolid` (polygon
+   modes `GL_LINE` and `GL_POINT`); `FFVK_FEATURE_LOGIC_OP` is `logicOp`
+   (`GL_COLOR_LOGIC_OP`); `FFVK_FEATURE_STIPPLED_LINES` is the extension
+   `VK_EXT_line_rasterization` enabled with `VkPhysicalDeviceLineRasterizationFeaturesEXT::
+   bresenhamLines` and `stippledBresenhamLines` (`GL_LINE_STIPPLE`; every line then drawn
+   as GL's aliased lines). A draw needing a feature not declared is refused, naming its bit.
+   `ffvkDeviceRequirements` says which bits a device will have.
    */
   uint32_t enabled_features;
   /*
@@ -2433,7 +2458,14 @@ const char *ffvkResultMessage(void);
  - `wideLines` and `largePoints` in `features->features`, where supported (line widths and
    point sizes other than 1);
  - `shaderClipDistance` in `features->features`, where supported (draws with a user clip
-   plane enabled).
+   plane enabled);
+ - `fillModeNonSolid` and `logicOp` in `features->features`, where supported (polygon modes
+   `GL_LINE` and `GL_POINT`; `GL_COLOR_LOGIC_OP`);
+ - `bresenhamLines` and `stippledBresenhamLines` in a `VkPhysicalDeviceLineRasterizationFeaturesEXT`
+   of the chain, when the device supports both (`GL_LINE_STIPPLE` needs them, and with them
+   every line is GL's aliased line), with `VK_EXT_line_rasterization` listed. As with the
+   provoking-vertex struct, chain one whatever the device: ffvk takes it out of the chain
+   where the device lacks the extension or either feature.
 
  `extension_names` receives the extensions to enable (static strings, valid for the life of
  the program), to be appended to the caller's own: `*extension_count` is, on the way in, the

@@ -13,17 +13,23 @@ use std::sync::Arc;
 use ffvk::ash::{self, vk};
 use ffvk::gl::state::FixedFunctionState;
 use ffvk::glam::Mat4;
-use ffvk::vk::EnabledFeatures;
 use ffvk::{
     Attribute, Geometry, Lighting, LightingOptions, LitDraw, RasterState, StagedDraw, Target, TextureBinding,
     VertexInput,
 };
 
+mod features;
 pub mod layout;
 mod raster;
 mod topology;
 mod versions;
 
+use features::{enabled_features, KNOWN_FEATURES};
+pub use features::{
+    FFVK_FEATURE_CLIP_DISTANCE, FFVK_FEATURE_DYNAMIC_RENDERING, FFVK_FEATURE_FILL_MODE_NON_SOLID,
+    FFVK_FEATURE_LARGE_POINTS, FFVK_FEATURE_LOGIC_OP, FFVK_FEATURE_PROVOKING_VERTEX_LAST,
+    FFVK_FEATURE_STIPPLED_LINES, FFVK_FEATURE_WIDE_LINES,
+};
 pub(crate) use raster::raster_defaults;
 pub use raster::{ffvkRasterDefaults, FfvkRaster, FFVK_RASTER_SOURCE_CONTEXT, FFVK_RASTER_SOURCE_DRAW};
 use topology::topology;
@@ -32,17 +38,6 @@ use crate::gl::FfvkContext;
 use crate::result::{check_ptr, fail, from_error, guard, misaligned, FfvkResult};
 use crate::vk_types::*;
 use layout::FfvkVertexLayout;
-
-/// `dynamicRendering` (Vulkan 1.3): required.
-pub const FFVK_FEATURE_DYNAMIC_RENDERING: u32 = 1;
-/// `VK_EXT_provoking_vertex` with `provokingVertexLast`: needed for `GL_FLAT`.
-pub const FFVK_FEATURE_PROVOKING_VERTEX_LAST: u32 = 2;
-/// `wideLines`: needed for a line width other than 1.
-pub const FFVK_FEATURE_WIDE_LINES: u32 = 4;
-/// `largePoints`: needed for a point size other than 1.
-pub const FFVK_FEATURE_LARGE_POINTS: u32 = 8;
-/// `shaderClipDistance`: needed for GL's user clip planes (`ffvkClipPlane`).
-pub const FFVK_FEATURE_CLIP_DISTANCE: u32 = 16;
 
 /// The most `frames_in_flight` a renderer takes (`ffvk::MAX_FRAMES_IN_FLIGHT`).
 pub const FFVK_MAX_FRAMES_IN_FLIGHT: u32 = 64;
@@ -97,7 +92,13 @@ pub struct FfvkRendererCreateInfo {
     /// provokingVertexLast`; without it `GL_FLAT` draws are refused. `FFVK_FEATURE_WIDE_LINES`
     /// and `FFVK_FEATURE_LARGE_POINTS` are `VkPhysicalDeviceFeatures::wideLines` and
     /// `largePoints`; `FFVK_FEATURE_CLIP_DISTANCE` is `shaderClipDistance` (draws with a user
-    /// clip plane enabled). `ffvkDeviceRequirements` says which bits a device will have.
+    /// clip plane enabled); `FFVK_FEATURE_FILL_MODE_NON_SOLID` is `fillModeNonSolid` (polygon
+    /// modes `GL_LINE` and `GL_POINT`); `FFVK_FEATURE_LOGIC_OP` is `logicOp`
+    /// (`GL_COLOR_LOGIC_OP`); `FFVK_FEATURE_STIPPLED_LINES` is the extension
+    /// `VK_EXT_line_rasterization` enabled with `VkPhysicalDeviceLineRasterizationFeaturesEXT::
+    /// bresenhamLines` and `stippledBresenhamLines` (`GL_LINE_STIPPLE`; every line then drawn
+    /// as GL's aliased lines). A draw needing a feature not declared is refused, naming its bit.
+    /// `ffvkDeviceRequirements` says which bits a device will have.
     pub enabled_features: u32,
     /// The color attachment's format: an uncompressed core format the shaders write as floats
     /// (UNORM, SNORM, SRGB or FLOAT; not UNDEFINED, a depth or an integer format) that the
@@ -287,11 +288,7 @@ unsafe fn create(info: &FfvkRendererCreateInfo) -> Result<FfvkRenderer, FfvkResu
             )));
         }
     }
-    let known = FFVK_FEATURE_DYNAMIC_RENDERING
-        | FFVK_FEATURE_PROVOKING_VERTEX_LAST
-        | FFVK_FEATURE_WIDE_LINES
-        | FFVK_FEATURE_LARGE_POINTS
-        | FFVK_FEATURE_CLIP_DISTANCE;
+    let known = KNOWN_FEATURES;
     if info.enabled_features & !known != 0 {
         return Err(invalid(format!(
             "{F}: enabled_features 0x{:X} has unknown bits: expected FFVK_FEATURE_* flags (0x{known:X})",
@@ -337,13 +334,7 @@ unsafe fn create(info: &FfvkRendererCreateInfo) -> Result<FfvkRenderer, FfvkResu
     let instance = unsafe { ash::Instance::load(&static_fn, info.instance) };
     // SAFETY: as above, for the device of that instance.
     let device = unsafe { ash::Device::load(instance.fp_v1_0(), info.device) };
-    let has = |bit: u32| info.enabled_features & bit != 0;
-    let features = EnabledFeatures::default()
-        .with_dynamic_rendering(has(FFVK_FEATURE_DYNAMIC_RENDERING))
-        .with_provoking_vertex_last(has(FFVK_FEATURE_PROVOKING_VERTEX_LAST))
-        .with_wide_lines(has(FFVK_FEATURE_WIDE_LINES))
-        .with_large_points(has(FFVK_FEATURE_LARGE_POINTS))
-        .with_clip_distance(has(FFVK_FEATURE_CLIP_DISTANCE));
+    let features = enabled_features(info.enabled_features);
     // SAFETY: the caller's contract: device was made from physical_device of instance with
     // these features and outlives the renderer.
     let ffvk_device =

@@ -7,8 +7,9 @@ use std::ffi::c_char;
 use ffvk::ash::{self, ext, vk};
 
 use crate::render::{
-    FFVK_FEATURE_CLIP_DISTANCE, FFVK_FEATURE_DYNAMIC_RENDERING, FFVK_FEATURE_LARGE_POINTS,
-    FFVK_FEATURE_PROVOKING_VERTEX_LAST, FFVK_FEATURE_WIDE_LINES,
+    FFVK_FEATURE_CLIP_DISTANCE, FFVK_FEATURE_DYNAMIC_RENDERING, FFVK_FEATURE_FILL_MODE_NON_SOLID,
+    FFVK_FEATURE_LARGE_POINTS, FFVK_FEATURE_LOGIC_OP, FFVK_FEATURE_PROVOKING_VERTEX_LAST,
+    FFVK_FEATURE_STIPPLED_LINES, FFVK_FEATURE_WIDE_LINES,
 };
 use crate::result::{check_ptr, fail, guard, misaligned, FfvkResult};
 use crate::vk_types::*;
@@ -20,17 +21,39 @@ pub const FFVK_MAX_DEVICE_EXTENSIONS: u32 = 4;
 /// The longest `pNext` chain walked: a longer one is taken for a loop.
 const MAX_CHAIN: usize = 64;
 
-/// The structs of the caller's chain that ffvk sets, and the link that points at the
-/// provoking-vertex one (to take it out when the device lacks the extension).
+/// A struct of an extension's features in the caller's chain: the `pNext` field that points
+/// at it (to take it out when the extension is not listed), the struct, and its `sType`.
+type Linked = (
+    *mut *mut vk::BaseOutStructure<'static>,
+    *mut vk::BaseOutStructure<'static>,
+    vk::StructureType,
+);
+
+/// The structs of the caller's chain that ffvk sets.
 struct Chain {
     vulkan13: Vec<*mut vk::PhysicalDeviceVulkan13Features<'static>>,
     dynamic_rendering: Vec<*mut vk::PhysicalDeviceDynamicRenderingFeatures<'static>>,
-    /// Each provoking-vertex struct and the `pNext` field that points at it.
-    provoking: Vec<(
-        *mut *mut vk::BaseOutStructure<'static>,
-        *mut vk::PhysicalDeviceProvokingVertexFeaturesEXT<'static>,
-    )>,
+    /// The provoking-vertex and line-rasterization structs, in the chain's order.
+    extension_structs: Vec<Linked>,
 }
+
+impl Chain {
+    /// The structs of `s_type` among `extension_structs`.
+    fn of<T>(&self, s_type: vk::StructureType) -> impl Iterator<Item = *mut T> + '_ {
+        self.extension_structs
+            .iter()
+            .filter(move |e| e.2 == s_type)
+            .map(|e| e.1.cast())
+    }
+
+    /// Whether the chain holds a struct of `s_type`.
+    fn has(&self, s_type: vk::StructureType) -> bool {
+        self.extension_structs.iter().any(|e| e.2 == s_type)
+    }
+}
+
+const PROVOKING: vk::StructureType = vk::StructureType::PHYSICAL_DEVICE_PROVOKING_VERTEX_FEATURES_EXT;
+const LINES: vk::StructureType = vk::StructureType::PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT;
 
 /// Walks `features`' `pNext` chain, reading only `sType` and `pNext` of each struct.
 ///
@@ -44,7 +67,7 @@ unsafe fn walk(
     let mut chain = Chain {
         vulkan13: Vec::new(),
         dynamic_rendering: Vec::new(),
-        provoking: Vec::new(),
+        extension_structs: Vec::new(),
     };
     // SAFETY: the caller's contract: a valid struct; its p_next is the chain's first link.
     let mut link: *mut *mut vk::BaseOutStructure<'static> = unsafe { (&raw mut (*features).p_next).cast() };
@@ -76,9 +99,7 @@ unsafe fn walk(
             vk::StructureType::PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES => {
                 chain.dynamic_rendering.push(node.cast())
             }
-            vk::StructureType::PHYSICAL_DEVICE_PROVOKING_VERTEX_FEATURES_EXT => {
-                chain.provoking.push((link, node.cast()))
-            }
+            PROVOKING | LINES => chain.extension_structs.push((link, node, s_type)),
             _ => {}
         }
         // SAFETY: as above; pNext follows sType in every Vulkan struct.
@@ -98,6 +119,14 @@ struct Support {
     wide_lines: bool,
     large_points: bool,
     clip_distance: bool,
+    fill_mode_non_solid: bool,
+    logic_op: bool,
+    /// `VK_EXT_line_rasterization` listed, with `bresenhamLines` and `stippledBresenhamLines`.
+    stippled_lines: bool,
+    /// The extension alone.
+    lines_extension: bool,
+    /// Which of the two line features the device lacks, if it has the extension.
+    lines_lacking: &'static str,
 }
 
 /// Asks the device what it supports.
@@ -120,20 +149,36 @@ unsafe fn query(
                 format!("{function}: vkEnumerateDeviceExtensionProperties failed: {e}"),
             )
         })?;
-    let provoking_extension = extensions
-        .iter()
-        .any(|e| e.extension_name_as_c_str() == Ok(ext::provoking_vertex::NAME));
+    let listed = |name| extensions.iter().any(|e| e.extension_name_as_c_str() == Ok(name));
+    let provoking_extension = listed(ext::provoking_vertex::NAME);
+    let lines_extension = listed(ext::line_rasterization::NAME);
     let mut v13 = vk::PhysicalDeviceVulkan13Features::default();
     let mut provoking = vk::PhysicalDeviceProvokingVertexFeaturesEXT::default();
+    let mut lines = vk::PhysicalDeviceLineRasterizationFeaturesEXT::default();
     let mut features = vk::PhysicalDeviceFeatures2::default().push_next(&mut v13);
+    // Each extension's struct chained only when the device has the extension, as Vulkan
+    // requires.
     if provoking_extension {
-        // Chained only when the device has the extension, as Vulkan requires.
         features = features.push_next(&mut provoking);
+    }
+    if lines_extension {
+        features = features.push_next(&mut lines);
     }
     // SAFETY: the chained structs live until the call returns; the caller's contract.
     unsafe { instance.get_physical_device_features2(physical_device, &mut features) };
-    let (wide_lines, large_points) = (features.features.wide_lines, features.features.large_points);
-    let clip_distance = features.features.shader_clip_distance == vk::TRUE;
+    let base = features.features;
+    let (wide_lines, large_points) = (base.wide_lines, base.large_points);
+    let clip_distance = base.shader_clip_distance == vk::TRUE;
+    let (bresenham, stippled) = (
+        lines.bresenham_lines == vk::TRUE,
+        lines.stippled_bresenham_lines == vk::TRUE,
+    );
+    let lines_lacking = match (bresenham, stippled) {
+        (false, false) => "bresenhamLines and stippledBresenhamLines",
+        (false, true) => "bresenhamLines",
+        (true, false) => "stippledBresenhamLines",
+        (true, true) => "",
+    };
     Ok(Support {
         api_version: props.api_version,
         dynamic_rendering: v13.dynamic_rendering == vk::TRUE,
@@ -142,6 +187,11 @@ unsafe fn query(
         wide_lines: wide_lines == vk::TRUE,
         large_points: large_points == vk::TRUE,
         clip_distance,
+        fill_mode_non_solid: base.fill_mode_non_solid == vk::TRUE,
+        logic_op: base.logic_op == vk::TRUE,
+        stippled_lines: lines_extension && bresenham && stippled,
+        lines_extension,
+        lines_lacking,
     })
 }
 
@@ -161,7 +211,14 @@ unsafe fn query(
 /// - `wideLines` and `largePoints` in `features->features`, where supported (line widths and
 ///   point sizes other than 1);
 /// - `shaderClipDistance` in `features->features`, where supported (draws with a user clip
-///   plane enabled).
+///   plane enabled);
+/// - `fillModeNonSolid` and `logicOp` in `features->features`, where supported (polygon modes
+///   `GL_LINE` and `GL_POINT`; `GL_COLOR_LOGIC_OP`);
+/// - `bresenhamLines` and `stippledBresenhamLines` in a `VkPhysicalDeviceLineRasterizationFeaturesEXT`
+///   of the chain, when the device supports both (`GL_LINE_STIPPLE` needs them, and with them
+///   every line is GL's aliased line), with `VK_EXT_line_rasterization` listed. As with the
+///   provoking-vertex struct, chain one whatever the device: ffvk takes it out of the chain
+///   where the device lacks the extension or either feature.
 ///
 /// `extension_names` receives the extensions to enable (static strings, valid for the life of
 /// the program), to be appended to the caller's own: `*extension_count` is, on the way in, the
@@ -295,7 +352,7 @@ pub unsafe extern "C" fn ffvkDeviceRequirements(
 
         let mut bits = FFVK_FEATURE_DYNAMIC_RENDERING;
         let mut missing = Vec::new();
-        let provoking = support.provoking_vertex_last && !chain.provoking.is_empty();
+        let provoking = support.provoking_vertex_last && chain.has(PROVOKING);
         if provoking {
             bits |= FFVK_FEATURE_PROVOKING_VERTEX_LAST;
         } else {
@@ -331,11 +388,41 @@ pub unsafe extern "C" fn ffvkDeviceRequirements(
                     .into(),
             );
         }
-        let names: &[&'static std::ffi::CStr] = if provoking {
-            &[ext::provoking_vertex::NAME]
+        if support.fill_mode_non_solid {
+            bits |= FFVK_FEATURE_FILL_MODE_NON_SOLID;
         } else {
-            &[]
-        };
+            missing.push("FFVK_FEATURE_FILL_MODE_NON_SOLID (the device lacks fillModeNonSolid; polygon modes GL_LINE and GL_POINT are refused)".into());
+        }
+        if support.logic_op {
+            bits |= FFVK_FEATURE_LOGIC_OP;
+        } else {
+            missing.push(
+                "FFVK_FEATURE_LOGIC_OP (the device lacks logicOp; draws with GL_COLOR_LOGIC_OP are refused)"
+                    .into(),
+            );
+        }
+        let stippled = support.stippled_lines && chain.has(LINES);
+        if stippled {
+            bits |= FFVK_FEATURE_STIPPLED_LINES;
+        } else {
+            let why = if !support.lines_extension {
+                "the device lacks VK_EXT_line_rasterization".to_owned()
+            } else if !support.stippled_lines {
+                format!("the device lacks {}", support.lines_lacking)
+            } else {
+                "features' pNext chain has no VkPhysicalDeviceLineRasterizationFeaturesEXT to set them in"
+                    .to_owned()
+            };
+            missing.push(format!("FFVK_FEATURE_STIPPLED_LINES ({why}; draws with GL_LINE_STIPPLE are refused, and lines are the device's own, not GL's aliased lines)"));
+        }
+        let mut names: Vec<&'static std::ffi::CStr> = Vec::new();
+        if provoking {
+            names.push(ext::provoking_vertex::NAME);
+        }
+        if stippled {
+            names.push(ext::line_rasterization::NAME);
+        }
+        debug_assert!(names.len() <= FFVK_MAX_DEVICE_EXTENSIONS as usize);
         let needed = names.len() as u32;
         let message = if missing.is_empty() {
             String::new()
@@ -369,14 +456,22 @@ pub unsafe extern "C" fn ffvkDeviceRequirements(
                 (*s).dynamic_rendering = vk::TRUE;
             }
             if provoking {
-                for &(_, s) in &chain.provoking {
+                for s in chain.of::<vk::PhysicalDeviceProvokingVertexFeaturesEXT>(PROVOKING) {
                     (*s).provoking_vertex_last = vk::TRUE;
                 }
-            } else {
-                // VK_EXT_provoking_vertex is not listed: its struct may not be chained. Unlinked
-                // last first, so that each link still points at its struct.
-                for &(link, s) in chain.provoking.iter().rev() {
-                    *link = (*s).p_next.cast();
+            }
+            if stippled {
+                for s in chain.of::<vk::PhysicalDeviceLineRasterizationFeaturesEXT>(LINES) {
+                    (*s).bresenham_lines = vk::TRUE;
+                    (*s).stippled_bresenham_lines = vk::TRUE;
+                }
+            }
+            // The struct of an extension not listed may not be chained. Unlinked last first
+            // (of both kinds together), so that each link still points at its struct.
+            for &(link, s, s_type) in chain.extension_structs.iter().rev() {
+                let listed = if s_type == PROVOKING { provoking } else { stippled };
+                if !listed {
+                    *link = (*s).p_next;
                 }
             }
             if support.wide_lines {
@@ -387,6 +482,12 @@ pub unsafe extern "C" fn ffvkDeviceRequirements(
             }
             if support.clip_distance {
                 (*features).features.shader_clip_distance = vk::TRUE;
+            }
+            if support.fill_mode_non_solid {
+                (*features).features.fill_mode_non_solid = vk::TRUE;
+            }
+            if support.logic_op {
+                (*features).features.logic_op = vk::TRUE;
             }
         }
         fail(FfvkResult::FFVK_SUCCESS, message)

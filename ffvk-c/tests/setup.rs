@@ -1,8 +1,9 @@
 //! `ffvkDeviceRequirements` against devices made up here: a loader whose
 //! `vkGetPhysicalDeviceProperties`, `vkEnumerateDeviceExtensionProperties` and
 //! `vkGetPhysicalDeviceFeatures2` answer as the test's device says, so that every answer a
-//! real device could give (no Vulkan 1.3, no dynamic rendering, no provoking-vertex extension,
-//! the extension without the feature, no wide lines) is asked. What ffvk fills in, lists and
+//! real device could give (no Vulkan 1.3, no dynamic rendering, no provoking-vertex or
+//! line-rasterization extension, an extension without its features, no wide lines, no polygon
+//! modes, no logic ops) is asked. What ffvk fills in, lists and
 //! says is checked; nothing is created.
 
 use std::cell::Cell;
@@ -24,6 +25,11 @@ struct Device {
     wide_lines: bool,
     large_points: bool,
     clip_distance: bool,
+    fill_mode_non_solid: bool,
+    logic_op: bool,
+    lines_extension: bool,
+    bresenham_lines: bool,
+    stippled_bresenham_lines: bool,
 }
 
 const FULL: Device = Device {
@@ -34,6 +40,11 @@ const FULL: Device = Device {
     wide_lines: true,
     large_points: true,
     clip_distance: true,
+    fill_mode_non_solid: true,
+    logic_op: true,
+    lines_extension: true,
+    bresenham_lines: true,
+    stippled_bresenham_lines: true,
 };
 
 thread_local! {
@@ -60,26 +71,33 @@ unsafe extern "system" fn enumerate_extensions(
     count: *mut u32,
     properties: *mut vk::ExtensionProperties,
 ) -> vk::Result {
-    let has = DEVICE.get().provoking_extension;
+    let d = DEVICE.get();
+    let names: Vec<&CStr> = [
+        (d.provoking_extension, c"VK_EXT_provoking_vertex"),
+        (d.lines_extension, c"VK_EXT_line_rasterization"),
+    ]
+    .into_iter()
+    .filter_map(|(has, name)| has.then_some(name))
+    .collect();
     // SAFETY: Vulkan's two-call contract, which ash follows: count is writable, properties
     // null or room for *count.
     unsafe {
         if properties.is_null() {
-            *count = has as u32;
+            *count = names.len() as u32;
             return vk::Result::SUCCESS;
         }
-        if has && *count >= 1 {
+        let written = names.len().min(*count as usize);
+        for (i, name) in names[..written].iter().enumerate() {
             let mut p = vk::ExtensionProperties::default();
-            for (dst, &src) in p
-                .extension_name
-                .iter_mut()
-                .zip(c"VK_EXT_provoking_vertex".to_bytes_with_nul())
-            {
+            for (dst, &src) in p.extension_name.iter_mut().zip(name.to_bytes_with_nul()) {
                 *dst = src as c_char;
             }
-            properties.write(p);
+            properties.add(i).write(p);
         }
-        *count = has as u32;
+        *count = written as u32;
+        if written < names.len() {
+            return vk::Result::INCOMPLETE;
+        }
     }
     vk::Result::SUCCESS
 }
@@ -91,6 +109,8 @@ unsafe extern "system" fn get_features2(_: vk::PhysicalDevice, features: *mut vk
         (*features).features.wide_lines = bool32(d.wide_lines);
         (*features).features.large_points = bool32(d.large_points);
         (*features).features.shader_clip_distance = bool32(d.clip_distance);
+        (*features).features.fill_mode_non_solid = bool32(d.fill_mode_non_solid);
+        (*features).features.logic_op = bool32(d.logic_op);
         let mut node = (*features).p_next.cast::<vk::BaseOutStructure>();
         while !node.is_null() {
             match (*node).s_type {
@@ -102,6 +122,12 @@ unsafe extern "system" fn get_features2(_: vk::PhysicalDevice, features: *mut vk
                     assert!(d.provoking_extension, "the extension's struct chained without it");
                     (*node.cast::<vk::PhysicalDeviceProvokingVertexFeaturesEXT>()).provoking_vertex_last =
                         bool32(d.provoking_vertex_last)
+                }
+                vk::StructureType::PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT => {
+                    assert!(d.lines_extension, "the extension's struct chained without it");
+                    let lines = node.cast::<vk::PhysicalDeviceLineRasterizationFeaturesEXT>();
+                    (*lines).bresenham_lines = bool32(d.bresenham_lines);
+                    (*lines).stippled_bresenham_lines = bool32(d.stippled_bresenham_lines);
                 }
                 _ => {}
             }
@@ -147,25 +173,41 @@ fn message() -> String {
         .into_owned()
 }
 
-/// A caller's chain: features2 → Vulkan 1.3 → (provoking vertex, when `provoking`), all
+/// A caller's chain: features2 → Vulkan 1.3 → (provoking vertex) → (line rasterization), all
 /// features off but the caller's own synchronization2.
 struct Chain {
     features: vk::PhysicalDeviceFeatures2<'static>,
     v13: vk::PhysicalDeviceVulkan13Features<'static>,
     provoking: vk::PhysicalDeviceProvokingVertexFeaturesEXT<'static>,
+    lines: vk::PhysicalDeviceLineRasterizationFeaturesEXT<'static>,
 }
 
 impl Chain {
-    fn new(provoking: bool) -> Box<Chain> {
+    /// With both extensions' structs (`extensions`) or neither.
+    fn new(extensions: bool) -> Box<Chain> {
+        Chain::with(extensions, extensions)
+    }
+
+    /// With the provoking-vertex struct when `provoking`, the line-rasterization one when
+    /// `lines`.
+    fn with(provoking: bool, lines: bool) -> Box<Chain> {
         let mut chain = Box::new(Chain {
             features: vk::PhysicalDeviceFeatures2::default(),
             v13: vk::PhysicalDeviceVulkan13Features::default(),
             provoking: vk::PhysicalDeviceProvokingVertexFeaturesEXT::default(),
+            lines: vk::PhysicalDeviceLineRasterizationFeaturesEXT::default(),
         });
         chain.v13.synchronization2 = vk::TRUE;
         chain.features.p_next = (&raw mut chain.v13).cast();
+        let mut last: *mut *mut std::ffi::c_void = &raw mut chain.v13.p_next;
         if provoking {
-            chain.v13.p_next = (&raw mut chain.provoking).cast();
+            // SAFETY: last points at a pNext field of the boxed chain.
+            unsafe { *last = (&raw mut chain.provoking).cast() };
+            last = &raw mut chain.provoking.p_next;
+        }
+        if lines {
+            // SAFETY: as above.
+            unsafe { *last = (&raw mut chain.lines).cast() };
         }
         chain
     }
@@ -192,6 +234,10 @@ impl Chain {
             && self.features.features.wide_lines == vk::FALSE
             && self.features.features.large_points == vk::FALSE
             && self.features.features.shader_clip_distance == vk::FALSE
+            && self.features.features.fill_mode_non_solid == vk::FALSE
+            && self.features.features.logic_op == vk::FALSE
+            && self.lines.bresenham_lines == vk::FALSE
+            && self.lines.stippled_bresenham_lines == vk::FALSE
     }
 }
 
@@ -247,15 +293,18 @@ const ALL: u32 = FFVK_FEATURE_DYNAMIC_RENDERING
     | FFVK_FEATURE_PROVOKING_VERTEX_LAST
     | FFVK_FEATURE_WIDE_LINES
     | FFVK_FEATURE_LARGE_POINTS
-    | FFVK_FEATURE_CLIP_DISTANCE;
+    | FFVK_FEATURE_CLIP_DISTANCE
+    | FFVK_FEATURE_FILL_MODE_NON_SOLID
+    | FFVK_FEATURE_LOGIC_OP
+    | FFVK_FEATURE_STIPPLED_LINES;
 
 #[test]
 fn a_device_with_everything_gets_every_feature_set_the_extension_listed_and_every_bit() {
     let mut chain = Chain::new(true);
     let a = ask(FULL, &mut chain, Some(FFVK_MAX_DEVICE_EXTENSIONS));
     assert_eq!(a.result, FfvkResult::FFVK_SUCCESS, "{}", a.message);
-    assert_eq!(a.names, ["VK_EXT_provoking_vertex"]);
-    assert_eq!((a.count, a.bits), (1, ALL));
+    assert_eq!(a.names, ["VK_EXT_provoking_vertex", "VK_EXT_line_rasterization"]);
+    assert_eq!((a.count, a.bits), (2, ALL));
     assert_eq!(a.message, "", "nothing is missing");
     assert_eq!(chain.v13.dynamic_rendering, vk::TRUE);
     assert_eq!(
@@ -267,6 +316,21 @@ fn a_device_with_everything_gets_every_feature_set_the_extension_listed_and_ever
     assert_eq!(chain.features.features.wide_lines, vk::TRUE);
     assert_eq!(chain.features.features.large_points, vk::TRUE);
     assert_eq!(chain.features.features.shader_clip_distance, vk::TRUE);
+    assert_eq!(chain.features.features.fill_mode_non_solid, vk::TRUE);
+    assert_eq!(chain.features.features.logic_op, vk::TRUE);
+    assert_eq!(
+        (chain.lines.bresenham_lines, chain.lines.stippled_bresenham_lines),
+        (vk::TRUE, vk::TRUE)
+    );
+    assert_eq!(
+        chain.types(),
+        [
+            vk::StructureType::PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_PROVOKING_VERTEX_FEATURES_EXT,
+            vk::StructureType::PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT,
+        ],
+        "both extensions' structs stay chained"
+    );
 }
 
 #[test]
@@ -274,7 +338,7 @@ fn a_size_query_says_the_count_and_the_bits_and_changes_no_feature() {
     let mut chain = Chain::new(true);
     let a = ask(FULL, &mut chain, None);
     assert_eq!(a.result, FfvkResult::FFVK_SUCCESS, "{}", a.message);
-    assert_eq!((a.count, a.bits), (1, ALL));
+    assert_eq!((a.count, a.bits), (2, ALL));
     assert!(chain.untouched(), "a size query set a feature");
 }
 
@@ -283,10 +347,10 @@ fn too_little_room_for_the_names_is_refused_saying_how_many_and_changes_no_featu
     let mut chain = Chain::new(true);
     let a = ask(FULL, &mut chain, Some(0));
     assert_eq!(a.result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
-    assert_eq!(a.count, 1, "*extension_count says how many are needed");
+    assert_eq!(a.count, 2, "*extension_count says how many are needed");
     assert!(
         a.message
-            .contains("ffvkDeviceRequirements: *extension_count is 0: expected room for 1"),
+            .contains("ffvkDeviceRequirements: *extension_count is 0: expected room for 2"),
         "{}",
         a.message
     );
@@ -304,7 +368,7 @@ fn without_the_provoking_vertex_extension_its_struct_leaves_the_chain_and_the_me
     let mut chain = Chain::new(true);
     let a = ask(device, &mut chain, Some(FFVK_MAX_DEVICE_EXTENSIONS));
     assert_eq!(a.result, FfvkResult::FFVK_SUCCESS, "{}", a.message);
-    assert!(a.names.is_empty(), "{:?}", a.names);
+    assert_eq!(a.names, ["VK_EXT_line_rasterization"]);
     assert_eq!(a.bits, ALL & !FFVK_FEATURE_PROVOKING_VERTEX_LAST);
     for words in [
         "ffvkDeviceRequirements: without FFVK_FEATURE_PROVOKING_VERTEX_LAST",
@@ -319,8 +383,11 @@ fn without_the_provoking_vertex_extension_its_struct_leaves_the_chain_and_the_me
     }
     assert_eq!(
         chain.types(),
-        [vk::StructureType::PHYSICAL_DEVICE_VULKAN_1_3_FEATURES],
-        "the extension's struct is still chained"
+        [
+            vk::StructureType::PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT,
+        ],
+        "the extension's struct is still chained, or the line one was taken out"
     );
     assert_eq!(chain.v13.dynamic_rendering, vk::TRUE);
 }
@@ -334,7 +401,7 @@ fn the_extension_without_provoking_vertex_last_is_not_listed_and_its_struct_leav
     let mut chain = Chain::new(true);
     let a = ask(device, &mut chain, Some(FFVK_MAX_DEVICE_EXTENSIONS));
     assert_eq!(a.result, FfvkResult::FFVK_SUCCESS, "{}", a.message);
-    assert!(a.names.is_empty(), "{:?}", a.names);
+    assert_eq!(a.names, ["VK_EXT_line_rasterization"]);
     assert!(
         a.message.contains("the device lacks provokingVertexLast"),
         "{}",
@@ -342,17 +409,20 @@ fn the_extension_without_provoking_vertex_last_is_not_listed_and_its_struct_leav
     );
     assert_eq!(
         chain.types(),
-        [vk::StructureType::PHYSICAL_DEVICE_VULKAN_1_3_FEATURES]
+        [
+            vk::StructureType::PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT,
+        ]
     );
 }
 
 #[test]
 fn a_chain_without_the_provoking_vertex_struct_gets_no_extension_and_is_told_to_chain_one() {
-    let mut chain = Chain::new(false);
+    let mut chain = Chain::with(false, true);
     let a = ask(FULL, &mut chain, Some(FFVK_MAX_DEVICE_EXTENSIONS));
     assert_eq!(a.result, FfvkResult::FFVK_SUCCESS, "{}", a.message);
-    assert!(a.names.is_empty());
-    assert_eq!(a.bits & FFVK_FEATURE_PROVOKING_VERTEX_LAST, 0);
+    assert_eq!(a.names, ["VK_EXT_line_rasterization"]);
+    assert_eq!(a.bits, ALL & !FFVK_FEATURE_PROVOKING_VERTEX_LAST);
     assert!(
         a.message
             .contains("features' pNext chain has no VkPhysicalDeviceProvokingVertexFeaturesEXT"),
@@ -369,11 +439,11 @@ fn without_wide_lines_or_large_points_their_bits_are_missing_and_named() {
         ..FULL
     };
     let mut chain = Chain::new(true);
-    let a = ask(device, &mut chain, Some(1));
+    let a = ask(device, &mut chain, Some(2));
     assert_eq!(a.result, FfvkResult::FFVK_SUCCESS, "{}", a.message);
     assert_eq!(
         a.bits,
-        FFVK_FEATURE_DYNAMIC_RENDERING | FFVK_FEATURE_PROVOKING_VERTEX_LAST | FFVK_FEATURE_CLIP_DISTANCE
+        ALL & !(FFVK_FEATURE_WIDE_LINES | FFVK_FEATURE_LARGE_POINTS)
     );
     assert_eq!(chain.features.features.wide_lines, vk::FALSE);
     for words in [
@@ -386,6 +456,146 @@ fn without_wide_lines_or_large_points_their_bits_are_missing_and_named() {
             a.message
         );
     }
+}
+
+#[test]
+fn without_fill_mode_non_solid_or_logic_op_their_bits_are_missing_named_and_their_features_left_off() {
+    let device = Device {
+        fill_mode_non_solid: false,
+        logic_op: false,
+        ..FULL
+    };
+    let mut chain = Chain::new(true);
+    let a = ask(device, &mut chain, Some(FFVK_MAX_DEVICE_EXTENSIONS));
+    assert_eq!(a.result, FfvkResult::FFVK_SUCCESS, "{}", a.message);
+    assert_eq!(
+        a.bits,
+        ALL & !(FFVK_FEATURE_FILL_MODE_NON_SOLID | FFVK_FEATURE_LOGIC_OP)
+    );
+    assert_eq!(
+        (
+            chain.features.features.fill_mode_non_solid,
+            chain.features.features.logic_op
+        ),
+        (vk::FALSE, vk::FALSE)
+    );
+    assert_eq!(
+        a.message,
+        "ffvkDeviceRequirements: without FFVK_FEATURE_FILL_MODE_NON_SOLID (the device lacks fillModeNonSolid; \
+         polygon modes GL_LINE and GL_POINT are refused), without FFVK_FEATURE_LOGIC_OP (the device lacks \
+         logicOp; draws with GL_COLOR_LOGIC_OP are refused)"
+    );
+}
+
+#[test]
+fn without_the_line_rasterization_extension_its_struct_leaves_the_chain_and_the_message_says_stipple_is_refused(
+) {
+    let device = Device {
+        lines_extension: false,
+        bresenham_lines: false,
+        stippled_bresenham_lines: false,
+        ..FULL
+    };
+    let mut chain = Chain::new(true);
+    let a = ask(device, &mut chain, Some(FFVK_MAX_DEVICE_EXTENSIONS));
+    assert_eq!(a.result, FfvkResult::FFVK_SUCCESS, "{}", a.message);
+    assert_eq!(a.names, ["VK_EXT_provoking_vertex"]);
+    assert_eq!(a.bits, ALL & !FFVK_FEATURE_STIPPLED_LINES);
+    assert_eq!(
+        a.message,
+        "ffvkDeviceRequirements: without FFVK_FEATURE_STIPPLED_LINES (the device lacks \
+         VK_EXT_line_rasterization; draws with GL_LINE_STIPPLE are refused, and lines are the \
+         device's own, not GL's aliased lines)"
+    );
+    assert_eq!(
+        chain.types(),
+        [
+            vk::StructureType::PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
+            vk::StructureType::PHYSICAL_DEVICE_PROVOKING_VERTEX_FEATURES_EXT,
+        ]
+    );
+    assert_eq!(chain.lines.bresenham_lines, vk::FALSE);
+}
+
+#[test]
+fn the_line_extension_without_a_line_feature_is_not_listed_names_the_feature_and_its_struct_leaves() {
+    for (bresenham_lines, stippled_bresenham_lines, lacking) in [
+        (true, false, "the device lacks stippledBresenhamLines;"),
+        (false, true, "the device lacks bresenhamLines;"),
+        (
+            false,
+            false,
+            "the device lacks bresenhamLines and stippledBresenhamLines;",
+        ),
+    ] {
+        let device = Device {
+            bresenham_lines,
+            stippled_bresenham_lines,
+            ..FULL
+        };
+        let mut chain = Chain::new(true);
+        let a = ask(device, &mut chain, Some(FFVK_MAX_DEVICE_EXTENSIONS));
+        assert_eq!(a.result, FfvkResult::FFVK_SUCCESS, "{}", a.message);
+        assert_eq!(a.names, ["VK_EXT_provoking_vertex"]);
+        assert_eq!(a.bits, ALL & !FFVK_FEATURE_STIPPLED_LINES);
+        assert!(
+            a.message.contains(lacking),
+            "{:?} does not say {lacking:?}",
+            a.message
+        );
+        assert_eq!(chain.types().len(), 2, "the line struct is still chained");
+        assert_eq!(
+            (chain.lines.bresenham_lines, chain.lines.stippled_bresenham_lines),
+            (vk::FALSE, vk::FALSE),
+            "a feature set in a struct taken out"
+        );
+    }
+}
+
+#[test]
+fn without_either_extension_both_structs_leave_the_chain_whatever_their_order() {
+    let device = Device {
+        provoking_extension: false,
+        provoking_vertex_last: false,
+        lines_extension: false,
+        ..FULL
+    };
+    let mut chain = Chain::new(true);
+    let a = ask(device, &mut chain, Some(FFVK_MAX_DEVICE_EXTENSIONS));
+    assert_eq!(a.result, FfvkResult::FFVK_SUCCESS, "{}", a.message);
+    assert!(a.names.is_empty(), "{:?}", a.names);
+    assert_eq!(a.count, 0);
+    assert_eq!(
+        chain.types(),
+        [vk::StructureType::PHYSICAL_DEVICE_VULKAN_1_3_FEATURES]
+    );
+    // The line struct first, the provoking-vertex one after it.
+    let mut chain = Chain::with(false, false);
+    chain.v13.p_next = (&raw mut chain.lines).cast();
+    chain.lines.p_next = (&raw mut chain.provoking).cast();
+    let a = ask(device, &mut chain, Some(FFVK_MAX_DEVICE_EXTENSIONS));
+    assert_eq!(a.result, FfvkResult::FFVK_SUCCESS, "{}", a.message);
+    assert_eq!(
+        chain.types(),
+        [vk::StructureType::PHYSICAL_DEVICE_VULKAN_1_3_FEATURES]
+    );
+}
+
+#[test]
+fn a_chain_without_the_line_rasterization_struct_gets_no_line_extension_and_is_told_to_chain_one() {
+    let mut chain = Chain::with(true, false);
+    let a = ask(FULL, &mut chain, Some(FFVK_MAX_DEVICE_EXTENSIONS));
+    assert_eq!(a.result, FfvkResult::FFVK_SUCCESS, "{}", a.message);
+    assert_eq!(a.names, ["VK_EXT_provoking_vertex"]);
+    assert_eq!(a.bits, ALL & !FFVK_FEATURE_STIPPLED_LINES);
+    assert!(
+        a.message.contains(
+            "without FFVK_FEATURE_STIPPLED_LINES (features' pNext chain has no \
+             VkPhysicalDeviceLineRasterizationFeaturesEXT to set them in"
+        ),
+        "{}",
+        a.message
+    );
 }
 
 #[test]

@@ -7,6 +7,10 @@
 //!   from GL's numbers (viewports off the target's edges, reversed and narrowed depth ranges,
 //!   scissor boxes inside, across and outside the target), on a device made with
 //!   ffvkDeviceRequirements.
+//! - `raster.c` draws version 3 draws with `FFVK_RASTER_SOURCE_CONTEXT`, each taking the raster
+//!   state set on the context with ffvkColorMask, ffvkStencilFunc and ffvkStencilOp,
+//!   ffvkLogicOp and ffvkEnable, on a D24_UNORM_S8_UINT target and a device made with
+//!   ffvkDeviceRequirements (logicOp from FFVK_FEATURE_LOGIC_OP).
 //! - `abi_v1.c` is compiled against version 1 of the header (ffvk-c/tests/abi/ffvk_v1.h,
 //!   frozen) and run with today's library: the ABI's promise that a program built against an
 //!   older header keeps working.
@@ -30,6 +34,73 @@ struct Draw {
     scissor: [i32; 4],
     color: [f32; 4],
     fan: Vec<[f32; 3]>,
+    /// The raster state set before it (raster.c; the other programs ignore it).
+    raster: Raster,
+}
+
+/// GL's raster state of one draw, as GL's calls set it: glColorMask, glEnable(GL_STENCIL_TEST)
+/// with glStencilFunc (function, reference, mask) and glStencilOp (sfail, dpfail, dppass),
+/// glEnable(GL_COLOR_LOGIC_OP) with glLogicOp. GL's enums as numbers.
+#[derive(Clone, Copy)]
+struct Raster {
+    color_mask: [bool; 4],
+    stencil: Option<(u32, i32, u32, [u32; 3])>,
+    logic_op: Option<u32>,
+}
+
+/// GL's initial raster state (tables 6.20 and 6.21).
+const INITIAL: Raster = Raster {
+    color_mask: [true; 4],
+    stencil: None,
+    logic_op: None,
+};
+
+impl Raster {
+    /// The scene file's `raster` line.
+    fn text(&self) -> String {
+        let m = self.color_mask.map(u32::from);
+        let (on, (func, reference, mask, ops)) = match self.stencil {
+            Some(s) => (1, s),
+            None => (0, (raw::ALWAYS, 0, !0, [raw::KEEP; 3])),
+        };
+        let (logic, op) = self.logic_op.map_or((0, raw::COPY), |op| (1, op));
+        format!(
+            "raster {} {} {} {} {on} {func} {reference} {mask} {} {} {} {logic} {op}",
+            m[0], m[1], m[2], m[3], ops[0], ops[1], ops[2]
+        )
+    }
+
+    /// Sets it on Mesa's context.
+    ///
+    /// # Safety
+    ///
+    /// A context is current on this thread.
+    unsafe fn apply(&self, gl: &raw::Gl) {
+        let [r, g, b, a] = self.color_mask.map(u8::from);
+        let cap = |on: bool, cap| {
+            // SAFETY: the caller's contract.
+            unsafe {
+                if on {
+                    gl.Enable(cap)
+                } else {
+                    gl.Disable(cap)
+                }
+            }
+        };
+        // SAFETY: the caller's contract.
+        unsafe {
+            gl.ColorMask(r, g, b, a);
+            cap(self.stencil.is_some(), raw::STENCIL_TEST);
+            if let Some((func, reference, mask, [sfail, dpfail, dppass])) = self.stencil {
+                gl.StencilFunc(func, reference, mask);
+                gl.StencilOp(sfail, dpfail, dppass);
+            }
+            cap(self.logic_op.is_some(), raw::COLOR_LOGIC_OP);
+            if let Some(op) = self.logic_op {
+                gl.LogicOp(op);
+            }
+        }
+    }
 }
 
 /// A frame: the target's size, its clear color and depth, the draws in order, with GL's
@@ -63,11 +134,13 @@ impl Scene {
                 write!(text, " {x} {y} {z}").unwrap();
             }
             text.push('\n');
+            writeln!(text, "{}", d.raster.text()).unwrap();
         }
         text
     }
 
-    /// The scene drawn by Mesa's GL: RGBA8, top row first.
+    /// The scene drawn by Mesa's GL: RGBA8, top row first (a depth-stencil buffer, the stencil
+    /// cleared to 0).
     fn render_gl(&self) -> Vec<u8> {
         let (w, h) = (self.width as i32, self.height as i32);
         with_raw_gl(|gl| {
@@ -82,7 +155,7 @@ impl Scene {
                 gl.BindRenderbuffer(raw::RENDERBUFFER, renderbuffers[0]);
                 gl.RenderbufferStorage(raw::RENDERBUFFER, raw::RGBA8, w, h);
                 gl.BindRenderbuffer(raw::RENDERBUFFER, renderbuffers[1]);
-                gl.RenderbufferStorage(raw::RENDERBUFFER, raw::DEPTH_COMPONENT24, w, h);
+                gl.RenderbufferStorage(raw::RENDERBUFFER, raw::DEPTH24_STENCIL8, w, h);
                 gl.BindFramebuffer(raw::FRAMEBUFFER, framebuffer);
                 gl.FramebufferRenderbuffer(
                     raw::FRAMEBUFFER,
@@ -92,7 +165,7 @@ impl Scene {
                 );
                 gl.FramebufferRenderbuffer(
                     raw::FRAMEBUFFER,
-                    raw::DEPTH_ATTACHMENT,
+                    raw::DEPTH_STENCIL_ATTACHMENT,
                     raw::RENDERBUFFER,
                     renderbuffers[1],
                 );
@@ -106,7 +179,8 @@ impl Scene {
                 gl.Disable(raw::SCISSOR_TEST);
                 gl.ClearColor(r, g, b, a);
                 gl.ClearDepth(f64::from(self.clear_depth));
-                gl.Clear(raw::COLOR_BUFFER_BIT | raw::DEPTH_BUFFER_BIT);
+                gl.ClearStencil(0);
+                gl.Clear(raw::COLOR_BUFFER_BIT | raw::DEPTH_BUFFER_BIT | raw::STENCIL_BUFFER_BIT);
                 gl.Enable(raw::DEPTH_TEST);
                 gl.DepthFunc(raw::LESS);
                 gl.Enable(raw::SCISSOR_TEST);
@@ -118,12 +192,14 @@ impl Scene {
                     gl.DepthRange(d.depth_range[0], d.depth_range[1]);
                     gl.Scissor(sx, sy, sw, sh);
                     gl.Color4f(r, g, b, a);
+                    d.raster.apply(gl);
                     gl.Begin(raw::TRIANGLE_FAN);
                     for &[x, y, z] in &d.fan {
                         gl.Vertex3f(x, y, z);
                     }
                     gl.End();
                 }
+                INITIAL.apply(gl);
                 gl.Finish();
                 gl.PixelStorei(raw::PACK_ALIGNMENT, 1);
                 gl.ReadPixels(
@@ -289,6 +365,7 @@ fn viewport_scene() -> Scene {
         scissor,
         color,
         fan,
+        raster: INITIAL,
     };
     Scene {
         width: width as u32,
@@ -426,6 +503,7 @@ fn a_program_built_against_version_1_of_the_header_draws_through_todays_library_
         scissor: whole,
         color,
         fan,
+        raster: INITIAL,
     };
     let scene = Scene {
         width: width as u32,
@@ -462,4 +540,101 @@ fn a_program_built_against_version_1_of_the_header_draws_through_todays_library_
             "version 1's header declares {name} of another size than the library's version 1 ({v1}): {printed_sizes}"
         );
     }
+}
+
+/// GL's raster state from the context (FFVK_RASTER_SOURCE_CONTEXT), set with the C entry
+/// points: a red quad; a green one over the left half with red masked off (§4.2.2: red stays as
+/// it was, so yellow); a quad over the upper right with every color masked off writing stencil 1
+/// (GL_ALWAYS, GL_REPLACE on depth pass); a blue quad over everything limited by GL_EQUAL 1 to
+/// the upper right; a white square inside the lower right with GL_XOR (§4.1.11: red XOR white
+/// is cyan). Each later draw is nearer, so GL_LESS passes it.
+#[test]
+fn version_3_draws_with_the_contexts_color_mask_stencil_and_logic_op_draw_mesas_pixels_and_the_specs() {
+    let (width, height) = (64, 48);
+    let whole = [0, 0, width, height];
+    let draw = |color, fan, raster| Draw {
+        viewport: whole,
+        depth_range: [0.0, 1.0],
+        scissor: whole,
+        color,
+        fan,
+        raster,
+    };
+    let stencil = |func, reference, dppass| Some((func, reference, 0xFF, [raw::KEEP, raw::KEEP, dppass]));
+    let scene = Scene {
+        width: width as u32,
+        height: height as u32,
+        clear: [0.0, 0.0, 0.0, 1.0],
+        clear_depth: 1.0,
+        draws: vec![
+            draw(RED, quad(-1.0, -1.0, 1.0, 1.0, 0.0), INITIAL),
+            draw(
+                GREEN,
+                quad(-1.0, -1.0, 0.0, 1.0, -0.5),
+                Raster {
+                    color_mask: [false, true, true, true],
+                    ..INITIAL
+                },
+            ),
+            draw(
+                WHITE,
+                quad(0.0, 0.0, 1.0, 1.0, -0.6),
+                Raster {
+                    color_mask: [false; 4],
+                    stencil: stencil(raw::ALWAYS, 1, raw::REPLACE),
+                    ..INITIAL
+                },
+            ),
+            draw(
+                BLUE,
+                quad(-1.0, -1.0, 1.0, 1.0, -0.9),
+                Raster {
+                    stencil: stencil(raw::EQUAL, 1, raw::KEEP),
+                    ..INITIAL
+                },
+            ),
+            draw(
+                WHITE,
+                quad(0.25, -0.75, 0.75, -0.25, -0.95),
+                Raster {
+                    logic_op: Some(raw::XOR),
+                    ..INITIAL
+                },
+            ),
+        ],
+    };
+    // What GL's spec gives, region by region (rows from the top): the left half yellow, the
+    // upper right blue, a 16 x 12 cyan square in the lower right, the rest of it red.
+    let spec = |x: u32, y: u32| -> [u8; 3] {
+        if x < 32 {
+            [255, 255, 0]
+        } else if y < 24 {
+            [0, 0, 255]
+        } else if (40..56).contains(&x) && (30..42).contains(&y) {
+            [0, 255, 255]
+        } else {
+            [255, 0, 0]
+        }
+    };
+    let expected: Vec<u8> = (0..height as u32)
+        .flat_map(|y| (0..width as u32).flat_map(move |x| spec(x, y)))
+        .collect();
+
+    let program = build_program("raster", &workspace().join("ffvk-c/include"));
+    let (_, rgb) = run_program(&program, &scene, "raster");
+    let differing = (0..expected.len() / 3)
+        .filter(|&i| expected[i * 3..i * 3 + 3] != rgb[i * 3..i * 3 + 3])
+        .count();
+    assert_eq!(
+        differing, 0,
+        "pixels through ffvk differ from GL's spec (tests/output/c_api_programs/raster.ppm)"
+    );
+
+    let gl = scene.render_gl();
+    let gl_rgb: Vec<u8> = gl.chunks(4).flat_map(|p| [p[0], p[1], p[2]]).collect();
+    assert!(
+        gl_rgb == expected,
+        "Mesa's GL does not draw what the spec gives: the scene is broken"
+    );
+    assert_gl_pixels(&scene, &gl, &rgb, "raster");
 }

@@ -47,8 +47,18 @@ void scene_read(const char *path, Scene *scene) {
         die("%s: expected the clear color and depth", path);
     char word[16];
     while (fscanf(file, "%15s", word) == 1) {
+        if (strcmp(word, "raster") == 0 && scene->draw_count > 0) {
+            SceneRaster *r = &scene->draws[scene->draw_count - 1].raster;
+            if (fscanf(file, "%u %u %u %u %u %u %u %u %u %u %u %u %u", &r->color_mask[0],
+                       &r->color_mask[1], &r->color_mask[2], &r->color_mask[3],
+                       &r->stencil_test, &r->stencil_func, &r->stencil_ref, &r->stencil_mask,
+                       &r->stencil_ops[0], &r->stencil_ops[1], &r->stencil_ops[2],
+                       &r->logic_op_enabled, &r->logic_op) != 13)
+                die("%s: draw %u: expected its raster state", path, scene->draw_count - 1);
+            continue;
+        }
         if (strcmp(word, "draw") != 0)
-            die("%s: \"%s\": expected \"draw\"", path, word);
+            die("%s: \"%s\": expected \"draw\" or \"raster\"", path, word);
         if (scene->draw_count == SCENE_MAX_DRAWS)
             die("%s: more than %u draws", path, SCENE_MAX_DRAWS);
         SceneDraw *d = &scene->draws[scene->draw_count++];
@@ -61,6 +71,11 @@ void scene_read(const char *path, Scene *scene) {
                 path, scene->draw_count - 1);
         if (d->count > SCENE_MAX_VERTICES - scene->vertex_count)
             die("%s: more than %u vertices", path, SCENE_MAX_VERTICES);
+        /* GL's initial state (tables 6.20 and 6.21): all colors written, GL_ALWAYS 0 with
+         * all ones in the mask, GL_KEEP, GL_COPY. */
+        const SceneRaster initial = {{1, 1, 1, 1}, 0, 0x0207, 0, 0xFFFFFFFFu,
+                                     {0x1E00, 0x1E00, 0x1E00}, 0, 0x1503};
+        d->raster = initial;
         d->first = scene->vertex_count;
         for (uint32_t i = 0; i < d->count; i++) {
             float *v = scene->vertices[scene->vertex_count++];
@@ -276,14 +291,31 @@ static Image create_image(App *app, VkFormat format, VkImageUsageFlags usage,
     return im;
 }
 
+/* The aspects of the depth attachment's format. */
+static VkImageAspectFlags depth_aspects(VkFormat format) {
+    switch (format) {
+    case VK_FORMAT_D16_UNORM_S8_UINT:
+    case VK_FORMAT_D24_UNORM_S8_UINT:
+    case VK_FORMAT_D32_SFLOAT_S8_UINT:
+        return VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
+    default:
+        return VK_IMAGE_ASPECT_DEPTH_BIT;
+    }
+}
+
 void app_create_targets(App *app, uint32_t width, uint32_t height) {
+    app_create_targets_with(app, width, height, DEPTH_FORMAT);
+}
+
+void app_create_targets_with(App *app, uint32_t width, uint32_t height, VkFormat depth_format) {
     app->width = width;
     app->height = height;
+    app->depth_format = depth_format;
     app->color = create_image(app, COLOR_FORMAT,
                               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                               VK_IMAGE_ASPECT_COLOR_BIT);
-    app->depth = create_image(app, DEPTH_FORMAT, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
-                              VK_IMAGE_ASPECT_DEPTH_BIT);
+    app->depth = create_image(app, depth_format, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                              depth_aspects(depth_format));
     app->readback = app_buffer(app, NULL, (VkDeviceSize)width * height * 4,
                                VK_BUFFER_USAGE_TRANSFER_DST_BIT);
 }
@@ -316,8 +348,11 @@ void app_begin(App *app, const Scene *scene) {
     barrier(app, app->color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
             VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, 0, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
             VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT);
-    barrier(app, app->depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-            VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, 0,
+    const VkImageAspectFlags aspects = depth_aspects(app->depth_format);
+    const int stencil = (aspects & VK_IMAGE_ASPECT_STENCIL_BIT) != 0;
+    const VkImageLayout depth_layout = stencil ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL
+                                               : VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    barrier(app, app->depth.image, aspects, VK_IMAGE_LAYOUT_UNDEFINED, depth_layout, 0,
             VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
                 VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
             VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
@@ -334,7 +369,7 @@ void app_begin(App *app, const Scene *scene) {
     VkRenderingAttachmentInfo depth = {
         .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
         .imageView = app->depth.view,
-        .imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+        .imageLayout = depth_layout,
         .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
         .storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE,
         .clearValue.depthStencil = {.depth = scene->clear_depth, .stencil = 0},
@@ -346,6 +381,8 @@ void app_begin(App *app, const Scene *scene) {
         .colorAttachmentCount = 1,
         .pColorAttachments = &color,
         .pDepthAttachment = &depth,
+        /* The same view and clear (stencil 0) for the stencil aspect, where there is one. */
+        .pStencilAttachment = stencil ? &depth : NULL,
     };
     vkCmdBeginRendering(app->cmd, &rendering);
 }

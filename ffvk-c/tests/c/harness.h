@@ -1,4 +1,4 @@
-/* harness.h: the Vulkan side of the C API's test programs (abi_v1.c, viewport.c), and the
+/* harness.h: the Vulkan side of the C API's test programs (abi_v1.c, viewport.c, raster.c), and the
  * scenes they draw. Plain C99 on Vulkan's C API; no ffvk here, so that each program includes
  * the ffvk.h it is about (today's, or version 1's).
  *
@@ -16,16 +16,26 @@
 #define SCENE_MAX_DRAWS 32u
 #define SCENE_MAX_VERTICES 256u
 
+/* GL's raster state for one draw (raster.c): glColorMask, glEnable(GL_STENCIL_TEST) with
+ * glStencilFunc and glStencilOp, glEnable(GL_COLOR_LOGIC_OP) with glLogicOp; GL's enums as
+ * numbers. Without a `raster` line, GL's initial state. */
+typedef struct {
+    uint32_t color_mask[4];
+    uint32_t stencil_test, stencil_func, stencil_ref, stencil_mask, stencil_ops[3];
+    uint32_t logic_op_enabled, logic_op;
+} SceneRaster;
+
 /* One draw of a scene: GL's glViewport, glDepthRange and glScissor (GL's window coordinates,
  * rows from the bottom), glColor4f, and a GL_TRIANGLE_FAN of `count` vertices from `first`,
  * given in GL's clip coordinates (the modelview and projection are the identity, lighting
- * is off). */
+ * is off); and the raster state raster.c sets before it (the other programs ignore it). */
 typedef struct {
     int32_t viewport[4];
     double depth_range[2];
     int32_t scissor[4];
     float color[4];
     uint32_t first, count;
+    SceneRaster raster;
 } SceneDraw;
 
 /* A scene file, as the tests write it (one item a line, numbers separated by spaces):
@@ -33,7 +43,9 @@ typedef struct {
  *     target WIDTH HEIGHT
  *     clear R G B A DEPTH
  *     draw VX VY VW VH NEAR FAR SX SY SW SH R G B A N X0 Y0 Z0 ... X(N-1) Y(N-1) Z(N-1)
+ *     raster MR MG MB MA STENCIL FUNC REF MASK SFAIL DPFAIL DPPASS LOGIC OP   (optional)
  *
+ * A `raster` line sets the raster state of the draw before it.
  * The depth test is on with GL_LESS, as after glEnable(GL_DEPTH_TEST). */
 typedef struct {
     uint32_t width, height;
@@ -72,6 +84,7 @@ typedef struct {
     VkFence fence;
     uint32_t width, height;
     Image color, depth;
+    VkFormat depth_format;
     Buffer readback;
 } App;
 
@@ -94,6 +107,10 @@ void app_create_device(App *app, const void *features, uint32_t extension_count,
 /* The color (RGBA8) and depth (D32) attachments of `width` x `height` and the readback
  * buffer. */
 void app_create_targets(App *app, uint32_t width, uint32_t height);
+
+/* app_create_targets with the depth attachment in `depth_format` (one with stencil too, e.g.
+ * VK_FORMAT_D24_UNORM_S8_UINT: app_begin then clears the stencil to 0 and renders to it). */
+void app_create_targets_with(App *app, uint32_t width, uint32_t height, VkFormat depth_format);
 
 /* A host-visible buffer holding `size` bytes of `bytes`. */
 Buffer app_buffer(App *app, const void *bytes, VkDeviceSize size, VkBufferUsageFlags usage);

@@ -28,8 +28,12 @@ int main(int argc, char **argv) {
 
     App app;
     app_create_instance(&app);
+    VkPhysicalDeviceLineRasterizationFeaturesEXT lines = {
+        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT,
+    };
     VkPhysicalDeviceProvokingVertexFeaturesEXT provoking = {
         .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROVOKING_VERTEX_FEATURES_EXT,
+        .pNext = &lines,
     };
     VkPhysicalDeviceVulkan13Features v13 = {
         .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
