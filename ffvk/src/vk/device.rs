@@ -645,10 +645,17 @@ impl Supported {
         let mut provoking = vk::PhysicalDeviceProvokingVertexFeaturesEXT::default();
         let mut v13 = vk::PhysicalDeviceVulkan13Features::default();
         let mut lines = vk::PhysicalDeviceLineRasterizationFeaturesEXT::default();
-        let mut features = vk::PhysicalDeviceFeatures2::default()
-            .push_next(&mut v13)
-            .push_next(&mut provoking)
-            .push_next(&mut lines);
+        // An extension's struct is chained only where the device lists the extension.
+        // SAFETY: the caller vouches for the handle.
+        let listed = unsafe { instance.enumerate_device_extension_properties(physical) }.unwrap_or_default();
+        let has = |name: &std::ffi::CStr| listed.iter().any(|e| e.extension_name_as_c_str() == Ok(name));
+        let mut features = vk::PhysicalDeviceFeatures2::default().push_next(&mut v13);
+        if has(ext::provoking_vertex::NAME) {
+            features = features.push_next(&mut provoking);
+        }
+        if has(ext::line_rasterization::NAME) {
+            features = features.push_next(&mut lines);
+        }
         let mut driver = vk::PhysicalDeviceDriverProperties::default();
         let mut v11 = vk::PhysicalDeviceVulkan11Properties::default();
         let mut props2 = vk::PhysicalDeviceProperties2::default()
