@@ -58,7 +58,7 @@ pub use machine::GlState;
 pub use points::{PointParam, PointParameters, SpriteOrigin};
 pub use raster::{
     BlendEquation, BlendFactor, FrontFace, GlEnum, LogicOp, PolygonMode, RasterGl, StencilGl, StencilOp,
-    STENCIL_BITS,
+    STENCIL_BITS, STENCIL_ONES,
 };
 pub use stages::{AlphaTest, CompareFunc, Fog, FogHint, FogMode, FogParam, FogSource, FragmentStages};
 pub use values::DrawValues;
