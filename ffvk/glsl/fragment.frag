@@ -61,7 +61,10 @@ layout(location = 0) out vec4 out_color;
 layout(location = 4) in vec4 stq;
 #endif
 
+#include "stipple.glsl"
+
 void main() {
+    if (!stipple_passes()) discard;
 #ifdef GBUFFER
     g_position = eye_position;
     g_normal = vec4(unit(normal.xyz) * normal.w, gl_FrontFacing ? 1.0 : -1.0);

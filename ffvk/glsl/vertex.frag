@@ -26,7 +26,10 @@ layout(location = 0) out vec4 out_color;
 layout(location = 4) in vec4 stq;
 #endif
 
+#include "stipple.glsl"
+
 void main() {
+    if (!stipple_passes()) discard;
     LitColor lit;
 #ifdef ONE_COLOR
     lit.c_pri = front_pri;

@@ -107,7 +107,7 @@ pub use draw::lighting::{
 };
 pub use draw::pipeline::{
     Attribute, Blend, BlendColor, FaceArrays, LineStipple, MaterialArray, PolygonModes, PolygonOffset,
-    RasterState, Specialize, Stencil, StencilFace, Target, VertexInput, MAX_VERTEX_BINDINGS,
+    PolygonStipple, RasterState, Specialize, Stencil, StencilFace, Target, VertexInput, MAX_VERTEX_BINDINGS,
 };
 pub use draw::record::{Geometry, Topology};
 pub use draw::texture::TextureBinding;

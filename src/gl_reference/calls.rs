@@ -92,6 +92,11 @@ pub(super) fn replay(gl: &Gl, call: GlCall) {
         GlCall::DepthRange(near, far) => unsafe { gl.DepthRange(near, far) },
         // SAFETY: a context is current on this thread.
         GlCall::DepthMask(on) => unsafe { gl.DepthMask(u8::from(on)) },
+        GlCall::PolygonStipple(mask) => {
+            set_enabled(gl, gl::POLYGON_STIPPLE, true);
+            // SAFETY: a context is current on this thread; the mask is GL's 32 × 32 bits.
+            unsafe { gl.PolygonStipple(mask.as_ptr()) };
+        }
         GlCall::CullFace(face) => {
             set_enabled(gl, gl::CULL_FACE, true);
             // SAFETY: a context is current on this thread.

@@ -562,6 +562,7 @@ pub(super) fn set_state(
         gl::COLOR_LOGIC_OP,
         gl::LINE_STIPPLE,
         gl::CULL_FACE,
+        gl::POLYGON_STIPPLE,
     ] {
         set_enabled(gl, cap, false);
     }

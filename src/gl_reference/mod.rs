@@ -202,6 +202,8 @@ pub enum GlCall {
     DepthMask(bool),
     /// `glEnable(GL_CULL_FACE)` and `glCullFace(face)`.
     CullFace(Face),
+    /// `glEnable(GL_POLYGON_STIPPLE)` and `glPolygonStipple(mask)`.
+    PolygonStipple([u8; 128]),
 }
 
 /// What the GL context reports about itself, and where it came from.

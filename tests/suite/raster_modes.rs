@@ -527,3 +527,59 @@ fn the_depth_range_maps_each_draws_depth_into_its_own_interval() {
     assert!(e.contains("depth_range") && e.contains("NaN"), "{e}");
     finish(r);
 }
+
+/// GL 2.1 §3.5.2: a filled polygon's fragment at window (x, y) is drawn where bit x mod 32 of
+/// row y mod 32 of the pattern is set, rows counted from the framebuffer's bottom (a height
+/// that is no multiple of 32 moves them), each mask byte's most significant bit leftmost;
+/// polygons drawn as lines are not stippled. As Mesa's GL draws it, pixel for pixel.
+#[test]
+fn polygon_stipple_draws_the_patterns_bits_in_window_coordinates() {
+    let mut r = renderer();
+    // 4 × 4 checks, and an asymmetric mark (bottom-left 3 × 2 pixels) that shows a flip.
+    let mut mask = [0u8; 128];
+    for y in 0..32 {
+        for x in 0..32 {
+            let on = ((x / 4) + (y / 4)) % 2 == 0 || (x < 3 && y < 2);
+            if on {
+                mask[y * 4 + x / 8] |= 0x80 >> (x % 8);
+            }
+        }
+    }
+    let state = GlState::new().lighting;
+    let quad = square(1.5, 0.0, GREEN, false);
+    let mesh = r.upload(&quad).unwrap();
+    for (height, modes) in [
+        (64, PolygonModes::FILL),
+        (70, PolygonModes::FILL),
+        (64, PolygonModes::both(vk::PolygonMode::LINE)),
+    ] {
+        let mut frame = Frame::new(SIZE, height);
+        frame.clear_color = Vec4::from_array(CLEAR);
+        frame.depth_test = false;
+        let projection = Mat4::perspective_rh_gl(50f32.to_radians(), SIZE as f32 / height as f32, 1.0, 10.0);
+        frame.draws.push(
+            Draw::new(&mesh, view(), projection, state)
+                .with_polygon_stipple(Some(mask))
+                .with_polygon_mode(modes),
+        );
+        let ours = r.render(&frame).unwrap().into_rgba_image();
+        let mut gl = GlDraw::new(&quad, view(), projection, state);
+        gl.calls = vec![GlCall::PolygonStipple(mask), GlCall::PolygonMode(modes)];
+        let theirs = mesa_image((SIZE, height), CLEAR, false, vec![gl]);
+        let what = format!("stipple at height {height}, {:?}", modes.front);
+        check_like_mesa(&what, &ours, &theirs, 0);
+        let green = ours.pixels().filter(|p| p.0 == rgba(GREEN)).count();
+        if modes == PolygonModes::FILL {
+            // The quad covers the frame: about half its pixels are drawn.
+            let all = (SIZE * height) as usize;
+            assert!(
+                (all * 2 / 5..all * 3 / 5).contains(&green),
+                "{what}: {green} of {all}"
+            );
+            // The mark: window (0, 0) .. (2, 1) is GL's bottom-left, Vulkan's last rows.
+            let bottom = height - 1;
+            assert_eq!(ours.get_pixel(2, bottom - 1).0, rgba(GREEN), "{what}: the mark");
+        }
+    }
+    finish(r);
+}

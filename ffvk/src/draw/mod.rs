@@ -13,6 +13,7 @@ mod raster;
 mod raster_device;
 pub mod record;
 mod ring;
+mod stipple;
 mod target;
 pub mod texture;
 mod vertex_input;

@@ -19,6 +19,7 @@ use crate::vk::Device;
 pub use super::raster::{
     Blend, BlendColor, LineStipple, Pixels, PolygonModes, PolygonOffset, RasterState, Stencil, StencilFace,
 };
+pub use super::stipple::PolygonStipple;
 pub use super::target::{Target, COLOR_FORMAT, DEPTH_FORMAT};
 pub use super::vertex_input::{Attribute, FaceArrays, MaterialArray, VertexInput, MAX_VERTEX_BINDINGS};
 
@@ -682,9 +683,14 @@ impl Pipelines {
                 .name(c"main"),
         ];
         // The uber-shader's key leaves every lighting constant at its default (-1).
-        for stage in &mut stages {
-            *stage = stage.specialization_info(&specialization);
-        }
+        stages[0] = stages[0].specialization_info(&specialization);
+        let stipple = k.raster.polygon_stipple;
+        let (entries, data) =
+            super::stipple::fragment_specialization(&entries, bytemuck::bytes_of(&spec), stipple);
+        let fragment_specialization = vk::SpecializationInfo::default()
+            .map_entries(&entries)
+            .data(&data);
+        stages[1] = stages[1].specialization_info(&fragment_specialization);
         let attributes = input.attributes(k.textured);
         let bindings = input.binding_descriptions(record_stride_on(device));
         let vertex_input = vk::PipelineVertexInputStateCreateInfo::default()

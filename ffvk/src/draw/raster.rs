@@ -3,6 +3,7 @@
 
 use ash::vk;
 
+use super::stipple::PolygonStipple;
 use crate::error::LightingError;
 
 #[cfg(doc)]
@@ -130,6 +131,9 @@ pub struct RasterState {
     /// `GL_LINE_STIPPLE` with `glLineStipple`: `None` (off) by default. Needs
     /// `VK_EXT_line_rasterization`'s stippled Bresenham lines.
     pub line_stipple: Option<LineStipple>,
+    /// `GL_POLYGON_STIPPLE` with `glPolygonStipple`: `None` (off) by default. Filled polygons
+    /// only; keys the pipeline by its pattern.
+    pub polygon_stipple: Option<PolygonStipple>,
 }
 
 /// `glPolygonMode`'s two modes, `FILL`, `LINE` or `POINT` each.
@@ -370,6 +374,7 @@ impl Default for RasterState {
             stencil: None,
             logic_op: None,
             line_stipple: None,
+            polygon_stipple: None,
         }
     }
 }
@@ -449,6 +454,7 @@ impl RasterState {
             && self.logic_op.is_none()
             && self.polygon_mode == PolygonModes::FILL
             && self.line_stipple.is_none()
+            && self.polygon_stipple.is_none()
     }
 
     /// The raster state of each pass a draw of `triangles` (or, if not, of points or lines)
@@ -462,6 +468,7 @@ impl RasterState {
             let plain = RasterState {
                 polygon_mode: PolygonModes::FILL,
                 polygon_offset: None,
+                polygon_stipple: None,
                 ..*self
             };
             return (plain, None);
@@ -469,6 +476,7 @@ impl RasterState {
         let in_mode = |mode: vk::PolygonMode, cull: vk::CullModeFlags| RasterState {
             polygon_mode: PolygonModes::both(mode),
             polygon_offset: self.polygon_offset.filter(|o| o.offsets(mode)),
+            polygon_stipple: self.polygon_stipple.filter(|_| mode == vk::PolygonMode::FILL),
             cull_mode: cull,
             ..*self
         };
@@ -607,6 +615,15 @@ impl RasterState {
                 );
             }
         }
+        if let Some(s) = self.polygon_stipple {
+            if s.framebuffer_height == 0 {
+                return refuse(
+                    "polygon_stipple",
+                    "framebuffer_height 0".to_owned(),
+                    "the framebuffer's height in pixels (GL counts the pattern's rows from its bottom)",
+                );
+            }
+        }
         let Some(b) = self.blend else { return Ok(()) };
         for (field, factor) in [
             ("src_color", b.src_color),
@@ -664,4 +681,7 @@ with_fields!(RasterState {
     /// Sets [`line_stipple`](RasterState::line_stipple) (`GL_LINE_STIPPLE` and
     /// `glLineStipple`).
     with_line_stipple => line_stipple: Option<LineStipple>,
+    /// Sets [`polygon_stipple`](RasterState::polygon_stipple) (`GL_POLYGON_STIPPLE` and
+    /// `glPolygonStipple`).
+    with_polygon_stipple => polygon_stipple: Option<PolygonStipple>,
 });

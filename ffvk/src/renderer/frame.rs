@@ -7,7 +7,7 @@ use glam::{Mat4, Vec4};
 
 use super::texture::Texture;
 use crate::draw::pipeline::{
-    Blend, BlendColor, LineStipple, PolygonModes, PolygonOffset, RasterState, Stencil,
+    Blend, BlendColor, LineStipple, PolygonModes, PolygonOffset, PolygonStipple, RasterState, Stencil,
 };
 use crate::draw::record::Topology;
 use crate::gl::state::{Face, FixedFunctionState};
@@ -98,6 +98,9 @@ pub struct Draw<'a> {
     pub line_stipple: Option<LineStipple>,
     /// `glDepthMask`: depth writes on (GL's default) or off; only while the frame tests depth.
     pub depth_write: bool,
+    /// `GL_POLYGON_STIPPLE` with `glPolygonStipple(mask)`: `None` (off) by default; the mask
+    /// as GL takes it ([`PolygonStipple::from_gl_mask`]), rows from the frame's bottom.
+    pub polygon_stipple: Option<[u8; 128]>,
     /// `glDepthRange(near, far)`: (0, 1) by default; each clamped to [0, 1] as GL clamps it,
     /// near may exceed far. The viewport's depth: set between the draws where it changes.
     pub depth_range: [f32; 2],
@@ -126,7 +129,15 @@ impl<'a> Draw<'a> {
             line_stipple: None,
             depth_range: [0.0, 1.0],
             depth_write: true,
+            polygon_stipple: None,
         }
+    }
+
+    /// This draw with `GL_POLYGON_STIPPLE` on and `glPolygonStipple(mask)` (`None`: off).
+    #[must_use]
+    pub fn with_polygon_stipple(mut self, mask: Option<[u8; 128]>) -> Self {
+        self.polygon_stipple = mask;
+        self
     }
 
     /// This draw with `glDepthMask(on)`.
@@ -269,6 +280,9 @@ impl<'a> Draw<'a> {
             stencil: self.stencil,
             logic_op: self.logic_op,
             line_stipple: self.line_stipple,
+            polygon_stipple: self
+                .polygon_stipple
+                .map(|mask| PolygonStipple::from_gl_mask(&mask, frame.height)),
             blend: self.blend,
             blend_color: BlendColor(self.blend_color),
             color_mask: [
