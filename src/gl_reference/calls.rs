@@ -127,6 +127,7 @@ pub fn mesh_raster_calls(r: &ffvk::scene::MeshRaster) -> Vec<GlCall> {
     calls.extend(r.stencil.map(GlCall::Stencil));
     calls.extend(r.logic_op.map(GlCall::LogicOp));
     calls.extend(r.line_stipple.map(GlCall::LineStipple));
+    calls.extend(r.polygon_stipple.map(GlCall::PolygonStipple));
     calls.extend(r.blend.map(GlCall::Blend));
     if r.blend_color != [0.0; 4] {
         calls.push(GlCall::BlendColor(r.blend_color));

@@ -247,6 +247,14 @@ fn each_raster_field_parses_with_gls_names() {
     );
 
     assert!(!raster("depth_mask = false").depth_write, "glDepthMask(GL_FALSE)");
+    let rows: Vec<String> = (0..32).map(|i| format!("0x{:08X}", 0x8000_0001u32 | i)).collect();
+    let r = raster(&format!("polygon_stipple = [{}]", rows.join(", ")));
+    let mask = r.polygon_stipple.expect("the stipple is on");
+    assert_eq!(
+        mask[..8],
+        [0x80, 0, 0, 0x01, 0x80, 0, 0, 0x01 | 1],
+        "rows as GL's bytes, MSB first"
+    );
 
     let r = raster("cull_face = \"front\"");
     assert_eq!(r.cull_face, Some(Face::Front));
@@ -336,6 +344,16 @@ fn bad_raster_values_name_the_file_the_field_the_value_and_what_was_expected() {
     contains_all(&m, &["meshes[0].depth_range", "inf", "finite"]);
     let m = refused("depth_range_len", "", "depth_range = [0.0]");
     contains_all(&m, &["depth_range", "exactly 2"]);
+    let m = refused("stipple_rows", "", "polygon_stipple = [1, 2, 3]");
+    contains_all(&m, &["meshes[0].polygon_stipple", "3 rows", "exactly 32"]);
+    let mut rows = vec!["0".to_owned(); 32];
+    rows[5] = "4294967296".to_owned();
+    let m = refused(
+        "stipple_row",
+        "",
+        &format!("polygon_stipple = [{}]", rows.join(", ")),
+    );
+    contains_all(&m, &["meshes[0].polygon_stipple[5]", "4294967296", "32-bit"]);
     let m = refused("depth_mask", "", "depth_mask = 0");
     contains_all(&m, &["depth_mask"]);
     let m = refused("cull", "", "cull_face = \"both\"");

@@ -58,6 +58,24 @@ fn scenes() -> Vec<(String, Scene)> {
         ("hidden_line".into(), load(&asset("hidden_line.toml"))),
         ("mirror".into(), load(&asset("mirror.toml"))),
         (
+            // The fill screen-doored by a polygon stipple of 2 × 2 checks.
+            "hidden_line_stippled".into(),
+            variant(
+                "hidden_line_stippled",
+                &read("hidden_line.toml").replacen(
+                    "[[meshes]]\n",
+                    &format!(
+                        "[[meshes]]\npolygon_stipple = [{}]\n",
+                        (0..32)
+                            .map(|y| if y % 4 < 2 { "0xCCCCCCCC" } else { "0x33333333" })
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    ),
+                    1,
+                ),
+            ),
+        ),
+        (
             // Mesa takes |z_e| for the attenuation's distance (pinned in points.rs): the
             // sprites here are of one size, so that the comparison is about the rest.
             "particles_one_size".into(),

@@ -290,6 +290,9 @@ pub(super) struct MeshSpec {
     pub(super) logic_op: Option<String>,
     /// GL_LINE_STIPPLE with glLineStipple.
     pub(super) line_stipple: Option<LineStippleSpec>,
+    /// GL_POLYGON_STIPPLE with glPolygonStipple: 32 rows from the bottom, each a 32-bit
+    /// integer whose most significant bit is the leftmost column.
+    pub(super) polygon_stipple: Option<Vec<i64>>,
     /// GL_BLEND with glBlendFuncSeparate and glBlendEquationSeparate.
     pub(super) blend: Option<BlendSpec>,
     /// glBlendColor, RGBA in [0, 1]; (0, 0, 0, 0) by default.

@@ -683,7 +683,7 @@ pub fn render_scene_with(
             line_stipple: raster.line_stipple,
             depth_range: raster.depth_range,
             depth_write: raster.depth_write,
-            polygon_stipple: None,
+            polygon_stipple: raster.polygon_stipple,
         });
     }
     Ok(renderer.render(&frame)?.into())

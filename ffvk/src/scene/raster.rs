@@ -27,6 +27,9 @@ pub struct MeshRaster {
     pub logic_op: Option<vk::LogicOp>,
     /// `GL_LINE_STIPPLE` with `glLineStipple` (`line_stipple`).
     pub line_stipple: Option<LineStipple>,
+    /// `GL_POLYGON_STIPPLE` with `glPolygonStipple` (`polygon_stipple`): the mask as GL takes
+    /// it, 4 bytes a row from the bottom row up.
+    pub polygon_stipple: Option<[u8; 128]>,
     /// `GL_BLEND` with its factors and equations (`blend`).
     pub blend: Option<Blend>,
     /// `glBlendColor` (`blend_color`).
@@ -48,6 +51,7 @@ impl Default for MeshRaster {
             stencil: None,
             logic_op: None,
             line_stipple: None,
+            polygon_stipple: None,
             blend: None,
             blend_color: [0.0; 4],
             depth_range: [0.0, 1.0],
@@ -256,6 +260,28 @@ impl Builder<'_> {
                 factor: factor as u32,
                 pattern: pattern as u16,
             });
+        }
+        if let Some(rows) = &spec.polygon_stipple {
+            if rows.len() != 32 {
+                return Err(self.field(
+                    at("polygon_stipple"),
+                    format!(
+                        "{} rows: expected exactly 32 (the pattern's rows, the bottom one first)",
+                        rows.len()
+                    ),
+                ));
+            }
+            let mut mask = [0u8; 128];
+            for (i, (&row, bytes)) in rows.iter().zip(mask.chunks_exact_mut(4)).enumerate() {
+                let row = self.integer(
+                    &format!("{}[{i}]", at("polygon_stipple")),
+                    row,
+                    0..=0xFFFF_FFFF,
+                    "a 32-bit row, the most significant bit the leftmost column",
+                )?;
+                bytes.copy_from_slice(&(row as u32).to_be_bytes());
+            }
+            raster.polygon_stipple = Some(mask);
         }
         if let Some(b) = &spec.blend {
             raster.blend = Some(self.blend(&at("blend"), b)?);
