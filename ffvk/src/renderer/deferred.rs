@@ -94,12 +94,13 @@ pub(super) fn eligible(frame: &Frame, specialize: Specialize, cpu: bool) -> Opti
     let affine = |m: &glam::Mat4| m.row(3) == glam::Vec4::W;
     let key = StateKey::new(&first.state, first.projection);
     let alike = frame.draws.iter().all(|d| {
+        let raster = d.raster(frame);
         d.state.mode == LightingMode::Fragment
-            && d.raster(frame).blend.is_none()
+            && raster.blend.is_none()
             // The passes write every channel: a masked draw stays forward.
-            && d.raster(frame).color_mask == ash::vk::ColorComponentFlags::RGBA
+            && raster.color_mask == ash::vk::ColorComponentFlags::RGBA
             // So do the stencil test, logic ops, outlines, points and stipples.
-            && d.raster(frame).only_fills_and_blends()
+            && raster.only_fills_and_blends()
             && d.clamped_depth_range() == [0.0, 1.0]
             && d.depth_write
             && !d.textured()

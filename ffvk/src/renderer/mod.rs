@@ -420,8 +420,9 @@ impl Renderer {
                 return Err(MeshError::ForeignTexture { draw: i }.into());
             }
         }
-        self.ensure_targets(frame.width, frame.height, frame.has_stencil())?;
-        self.lighting.set_stencil_target(frame.has_stencil());
+        let stencil = frame.has_stencil();
+        self.ensure_targets(frame.width, frame.height, stencil)?;
+        self.lighting.set_stencil_target(stencil);
         // The lit draws first (their time counts as recording, below): consecutive draws under
         // one state borrow it.
         let lits_start = std::time::Instant::now();
