@@ -338,12 +338,14 @@ fn bad_raster_values_name_the_file_the_field_the_value_and_what_was_expected() {
     );
     let m = refused("blend_equation", "", "blend = { equation = \"add\" }");
     contains_all(&m, &["meshes[0].blend.equation", "\"add\"", "\"func_add\""]);
-    let m = refused("blend_color", "", "blend_color = [0.5, 2.0, 0.0]");
+    let m = refused("blend_color", "", "blend_color = [0.5, 2.0, 0.0, 1.0]");
     contains_all(&m, &["meshes[0].blend_color", "2", "[0, 1]"]);
     let m = refused("depth_range", "", "depth_range = [0.0, inf]");
     contains_all(&m, &["meshes[0].depth_range", "inf", "finite"]);
     let m = refused("depth_range_len", "", "depth_range = [0.0]");
     contains_all(&m, &["depth_range", "exactly 2"]);
+    let m = refused("blend_color_rgb", "", "blend_color = [0.5, 0.5, 0.5]");
+    contains_all(&m, &["meshes[0].blend_color", "3 values", "exactly 4"]);
     let m = refused("stipple_rows", "", "polygon_stipple = [1, 2, 3]");
     contains_all(&m, &["meshes[0].polygon_stipple", "3 rows", "exactly 32"]);
     let mut rows = vec!["0".to_owned(); 32];

@@ -287,6 +287,16 @@ impl Builder<'_> {
             raster.blend = Some(self.blend(&at("blend"), b)?);
         }
         if let Some(c) = &spec.blend_color {
+            // All four: glBlendColor has no implied alpha (a 3-value color would take 1).
+            if c.len() != 4 {
+                return Err(self.field(
+                    at("blend_color"),
+                    format!(
+                        "{} values: expected exactly 4 (glBlendColor's red, green, blue and alpha)",
+                        c.len()
+                    ),
+                ));
+            }
             let c = self.color(&at("blend_color"), c)?;
             if c.to_array().iter().any(|x| !(0.0..=1.0).contains(x)) {
                 return Err(self.field(
