@@ -120,6 +120,16 @@ const CLIPPED: [&str; 6] = [
 /// Untextured draws keep the variants without it, unchanged.
 const TEXTURE: (&str, &str) = ("TEXTURE", "1");
 
+/// The variants with an `_edges` build of each of their builds (`<…>_edges`, last): GL's edge
+/// flags for polygons drawn as lines or points, a geometry stage (`glsl/edges.geom`) between
+/// the two, reading the draw's triangles with adjacency (`glsl/edges.glsl`). The per-vertex
+/// modes' `_one_color` builds have none: such draws take the build with all four colors.
+const EDGES: [&str; 4] = ["vertex", "flat", "fragment", "fragment_small"];
+const EDGE_FLAGS: (&str, &str) = ("EDGE_FLAGS", "1");
+/// The geometry stage's varyings are the fragment mode's (fragment.vert) rather than the
+/// per-vertex modes' (vertex.vert).
+const EDGES_OF_FRAGMENT_MODE: (&str, &str) = ("EDGES_OF_FRAGMENT_MODE", "1");
+
 fn main() {
     let cargo_dir = |name: &str| match env::var_os(name) {
         Some(dir) => PathBuf::from(dir),
@@ -156,43 +166,73 @@ fn main() {
         bases.into_iter().flat_map(move |(name, doc, defines)| {
             let mut textured = defines.clone();
             textured.push(TEXTURE);
-            [
-                (v, name.clone(), doc.clone(), defines),
+            let builds = [
+                (name.clone(), doc.clone(), defines),
                 (
-                    v,
                     format!("{name}_textured"),
                     format!("{doc} Textured: the texture environment before the color sum."),
                     textured,
                 ),
-            ]
+            ];
+            builds.into_iter().flat_map(move |(name, doc, defines)| {
+                let mut all = vec![(v, name.clone(), doc.clone(), defines.clone(), false)];
+                if EDGES.contains(&v.name) {
+                    let mut edged = defines;
+                    edged.push(EDGE_FLAGS);
+                    if v.vertex == "fragment.vert" {
+                        edged.push(EDGES_OF_FRAGMENT_MODE);
+                    }
+                    all.push((
+                        v,
+                        format!("{name}_edges"),
+                        format!("{doc} With GL's edge flags (a geometry stage)."),
+                        edged,
+                        true,
+                    ));
+                }
+                all
+            })
         })
     });
-    for (variant, name, doc, defines) in builds {
+    for (variant, name, doc, defines, edges) in builds {
         let mut stages = Vec::new();
-        for (source, stage) in [(variant.vertex, "vert"), (variant.fragment, "frag")] {
+        let mut sources = vec![(variant.vertex, "vert"), (variant.fragment, "frag")];
+        if edges {
+            sources.push(("edges.geom", "geom"));
+        }
+        for (source, stage) in sources {
             let spv = out_dir.join(format!("{name}.{stage}.spv"));
             match compile(&glslc, &glsl_dir.join(source), stage, &defines, &spv) {
                 Ok(()) => stages.push(spv),
                 Err(e) => errors.push(format!("variant {name}: {e}")),
             }
         }
-        if let [vertex, fragment] = stages.as_slice() {
-            // Writing to a String cannot fail.
-            let _ = writeln!(
-                table,
-                "    ShaderVariant {{\n        name: {:?},\n        doc: {:?},\n        \
-                 vertex_source: {:?},\n        fragment_source: {:?},\n        \
-                 defines: &{:?},\n        \
-                 vertex: include_bytes!({:?}),\n        fragment: include_bytes!({:?}),\n    }},",
-                name,
-                doc,
-                variant.vertex,
-                variant.fragment,
-                defines,
-                vertex.display().to_string(),
-                fragment.display().to_string(),
-            );
-        }
+        let (vertex, fragment, geometry) = match stages.as_slice() {
+            [v, f] => (v, f, None),
+            [v, f, g] => (v, f, Some(g)),
+            _ => continue,
+        };
+        let geometry = match geometry {
+            Some(g) => format!("Some(include_bytes!({:?}))", g.display().to_string()),
+            None => "None".to_owned(),
+        };
+        // Writing to a String cannot fail.
+        let _ = writeln!(
+            table,
+            "    ShaderVariant {{\n        name: {:?},\n        doc: {:?},\n        \
+             vertex_source: {:?},\n        fragment_source: {:?},\n        \
+             defines: &{:?},\n        \
+             vertex: include_bytes!({:?}),\n        fragment: include_bytes!({:?}),\n        \
+             geometry: {},\n    }},",
+            name,
+            doc,
+            variant.vertex,
+            variant.fragment,
+            defines,
+            vertex.display().to_string(),
+            fragment.display().to_string(),
+            geometry,
+        );
     }
     if !errors.is_empty() {
         fail(&errors.join("\n"));

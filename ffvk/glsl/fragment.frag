@@ -62,12 +62,21 @@ layout(location = 4) in vec4 stq;
 #endif
 
 #include "stipple.glsl"
+#ifdef EDGE_FLAGS
+#define EDGES_FRAGMENT_STAGE
+#include "edges.glsl"
+#else
+#define FRONT_FACING gl_FrontFacing
+#endif
 
 void main() {
     if (!stipple_passes()) discard;
+#ifdef EDGE_FLAGS
+    if (!on_boundary_edge()) discard;
+#endif
 #ifdef GBUFFER
     g_position = eye_position;
-    g_normal = vec4(unit(normal.xyz) * normal.w, gl_FrontFacing ? 1.0 : -1.0);
+    g_normal = vec4(unit(normal.xyz) * normal.w, FRONT_FACING ? 1.0 : -1.0);
     g_color = color;
     g_record = record_index + 1u;
 #else
@@ -86,7 +95,7 @@ void main() {
         lit.c_sec = normal;  // the secondary color rides in the normal's varying (fragment.vert)
     } else {
         vec3 n = unit(normal.xyz) * normal.w;
-        bool back_face = two_side() && !gl_FrontFacing;
+        bool back_face = two_side() && !FRONT_FACING;
         lit = back_face ? light_equation(eye_position, -n, face_material(true, color))
                         : light_equation(eye_position, n, face_material(false, color));
     }

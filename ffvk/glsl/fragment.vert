@@ -45,6 +45,12 @@ layout(location = 3) in vec4 in_texcoord;
 layout(location = 4) out vec4 stq;
 #endif
 
+#ifdef EDGE_FLAGS
+// The `_edges` builds: the vertex's index, for edges.geom (edges.glsl).
+#include "edges.glsl"
+layout(location = VERTEX_INDEX_LOCATION) flat out uint vertex_index;
+#endif
+
 // A zero the compiler cannot prove zero (valid draws have no negative vertex index): the
 // uber-shader's switches pass through it (draw.glsl, uber_value).
 #define HIDDEN_ZERO uint(gl_VertexIndex < 0)
@@ -52,6 +58,9 @@ layout(location = 4) out vec4 stq;
 
 void main() {
     eye_position = in_modelview * in_position;
+#ifdef EDGE_FLAGS
+    vertex_index = uint(gl_VertexIndex);
+#endif
     // GL's point size; Vulkan leaves a point's size undefined unless it is written.
     if (SPEC_POINTS != 0) gl_PointSize = point_width(eye_position);
     gl_Position = state.projection * eye_position;

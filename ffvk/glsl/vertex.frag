@@ -27,16 +27,25 @@ layout(location = 4) in vec4 stq;
 #endif
 
 #include "stipple.glsl"
+#ifdef EDGE_FLAGS
+#define EDGES_FRAGMENT_STAGE
+#include "edges.glsl"
+#else
+#define FRONT_FACING gl_FrontFacing
+#endif
 
 void main() {
     if (!stipple_passes()) discard;
+#ifdef EDGE_FLAGS
+    if (!on_boundary_edge()) discard;
+#endif
     LitColor lit;
 #ifdef ONE_COLOR
     lit.c_pri = front_pri;
     lit.c_sec = vec4(0.0, 0.0, 0.0, 1.0);
 #else
-    lit.c_pri = gl_FrontFacing ? front_pri : back_pri;
-    lit.c_sec = gl_FrontFacing ? front_sec : back_sec;
+    lit.c_pri = FRONT_FACING ? front_pri : back_pri;
+    lit.c_sec = FRONT_FACING ? front_sec : back_sec;
 #endif
 #ifdef TEXTURE
     lit.c_pri = texture_environment(lit.c_pri, texel_at(stq));

@@ -102,6 +102,15 @@ pub(super) fn replay(gl: &Gl, call: GlCall) {
             // SAFETY: a context is current on this thread.
             unsafe { gl.CullFace(face_enum(face)) };
         }
+        GlCall::FrontFace(winding) => {
+            let mode = if winding == ash::vk::FrontFace::CLOCKWISE {
+                gl::CW
+            } else {
+                gl::CCW
+            };
+            // SAFETY: a context is current on this thread.
+            unsafe { gl.FrontFace(mode) };
+        }
         GlCall::LineStipple(l) => {
             set_enabled(gl, gl::LINE_STIPPLE, true);
             // SAFETY: a context is current on this thread.

@@ -461,6 +461,10 @@ fn draw_one(gl: &Gl, draw: &GlDraw, max_lights: usize, texture: Option<&GlTextur
     check_lights(&draw.state, max_lights)?;
     let mesh = draw.mesh;
     check_indices(mesh)?;
+    if mesh.topology == ffvk::Topology::EdgeFlaggedTriangles {
+        set_state(gl, draw, max_lights, texture)?;
+        return draw_edge_flagged(gl, draw, texture.is_some());
+    }
     let count = index_count(draw)?;
     set_state(gl, draw, max_lights, texture)?;
     if count == 0 {
@@ -472,6 +476,22 @@ fn draw_one(gl: &Gl, draw: &GlDraw, max_lights: usize, texture: Option<&GlTextur
         draw.color_array,
         texture.is_some(),
     );
+    if let Some(flags) = draw.edge_flags {
+        if flags.len() != mesh.vertices.len() {
+            end_arrays(gl);
+            return Err(DrawError::EdgeFlagCount {
+                flags: flags.len(),
+                vertices: mesh.vertices.len(),
+            });
+        }
+        // SAFETY: a context is current on this thread; `flags` (one byte per vertex, checked
+        // above) outlives the draw below, and the array is disabled by end_arrays' caller
+        // below.
+        unsafe {
+            gl.EdgeFlagPointer(0, flags.as_ptr().cast());
+            gl.EnableClientState(gl::EDGE_FLAG_ARRAY);
+        }
+    }
     // SAFETY: a context is current on this thread. The arrays point into `mesh.vertices`
     // (repr(C) f32 fields) and glDrawElements reads them and the indices before it returns.
     // Every index was checked against the vertex count, and the arrays are disabled after the
@@ -485,6 +505,44 @@ fn draw_one(gl: &Gl, draw: &GlDraw, max_lights: usize, texture: Option<&GlTextur
             gl::UNSIGNED_INT,
             mesh.indices.as_ptr().cast(),
         );
+        gl.DisableClientState(gl::EDGE_FLAG_ARRAY);
+    }
+    end_arrays(gl);
+    Ok(())
+}
+
+/// A mesh of `Topology::EdgeFlaggedTriangles` as GL draws its meaning: `GL_TRIANGLES` of each
+/// triangle's three corners (copied, so that each corner has its own flag), each corner with
+/// the edge flag of the edge that starts at it (set where its adjacency index repeats it).
+/// The indices were checked against the vertices.
+fn draw_edge_flagged(gl: &Gl, draw: &GlDraw, textured: bool) -> Result<(), DrawError> {
+    let mesh = draw.mesh;
+    let (vertices, flags): (Vec<Vertex>, Vec<u8>) = mesh
+        .indices
+        .chunks_exact(6)
+        .flat_map(|p| {
+            (0..3).map(move |e| {
+                (
+                    mesh.vertices[p[2 * e] as usize],
+                    u8::from(p[2 * e + 1] == p[2 * e]),
+                )
+            })
+        })
+        .unzip();
+    let count = GLsizei::try_from(vertices.len()).map_err(|_| DrawError::TooManyIndices(vertices.len()))?;
+    if count == 0 {
+        return Ok(());
+    }
+    set_arrays(gl, vertices.as_ptr().cast(), draw.color_array, textured);
+    // SAFETY: a context is current on this thread; `vertices` and `flags` (one per corner)
+    // live until glDrawArrays has read them, and the arrays are disabled after it.
+    unsafe {
+        gl.EdgeFlagPointer(0, flags.as_ptr().cast());
+        gl.EnableClientState(gl::EDGE_FLAG_ARRAY);
+        gl.MatrixMode(gl::MODELVIEW);
+        gl.LoadMatrixf(draw.modelview.to_cols_array().as_ptr());
+        gl.DrawArrays(gl::TRIANGLES, 0, count);
+        gl.DisableClientState(gl::EDGE_FLAG_ARRAY);
     }
     end_arrays(gl);
     Ok(())
@@ -573,6 +631,7 @@ pub(super) fn set_state(
         gl.PolygonMode(gl::FRONT_AND_BACK, gl::FILL);
         gl.DepthRange(0.0, 1.0);
         gl.DepthMask(1);
+        gl.FrontFace(gl::CCW);
     }
     for call in &draw.calls {
         replay(gl, *call);

@@ -106,6 +106,10 @@ pub enum DrawError {
     #[error("index {index} is out of range for a mesh of {vertices} vertices")]
     IndexOutOfRange { index: u32, vertices: usize },
 
+    /// An edge flag array whose length is not the mesh's vertex count.
+    #[error("{flags} edge flags for a mesh of {vertices} vertices: expected one per vertex")]
+    EdgeFlagCount { flags: usize, vertices: usize },
+
     /// More indices than one glDrawElements takes.
     #[error("{0} indices are too many for one draw")]
     TooManyIndices(usize),

@@ -97,6 +97,11 @@ pub struct GlDraw<'a> {
     pub point_size: f32,
     /// `glLineWidth`.
     pub line_width: f32,
+    /// GL's edge flag array (`glEdgeFlagPointer`): a flag per vertex of the mesh, non-zero for
+    /// `GL_TRUE`; `None` draws with the current edge flag (`GL_TRUE`). A mesh of
+    /// `Topology::EdgeFlaggedTriangles` carries its flags in its indices instead: GL draws it as
+    /// `GL_TRIANGLES` of its corners, each with the flag its indices give the edge it starts.
+    pub edge_flags: Option<&'a [u8]>,
 }
 
 /// GL's primitive modes (`glDrawElements`' first argument), all ten of GL 2.1.
@@ -161,6 +166,7 @@ impl<'a> GlDraw<'a> {
             mode: GlMode::of(mesh.topology),
             point_size: 1.0,
             line_width: 1.0,
+            edge_flags: None,
         }
     }
 }
@@ -204,6 +210,8 @@ pub enum GlCall {
     CullFace(Face),
     /// `glEnable(GL_POLYGON_STIPPLE)` and `glPolygonStipple(mask)`.
     PolygonStipple([u8; 128]),
+    /// `glFrontFace`: `GL_CW` for `CLOCKWISE`, `GL_CCW` for `COUNTER_CLOCKWISE`.
+    FrontFace(ash::vk::FrontFace),
 }
 
 /// What the GL context reports about itself, and where it came from.

@@ -43,6 +43,7 @@ fn scene<'a>(mesh: &'a MeshData, state: FixedFunctionState) -> GlScene<'a> {
             mode: Default::default(),
             point_size: 1.0,
             line_width: 1.0,
+            edge_flags: None,
         }],
     }
 }

@@ -112,7 +112,8 @@ impl Reflection {
     }
 }
 
-/// Every compiled stage of every variant, named `<variant>.<vert|frag>`.
+/// Every compiled vertex and fragment stage of every variant, named `<variant>.<vert|frag>`
+/// (the `_edges` builds' geometry stages: [`the_edges_geometry_stage_takes_only_the_front_face`]).
 fn stages() -> Vec<(String, &'static [u8])> {
     let mut stages = Vec::new();
     for v in ffvk::gpu::shaders::VARIANTS {
@@ -121,10 +122,47 @@ fn stages() -> Vec<(String, &'static [u8])> {
     }
     assert_eq!(
         stages.len(),
-        108,
-        "fifty-four variants (nine, six of them also with fog, clip planes or both, each untextured and textured) of two stages"
+        172,
+        "eighty-six variants (nine, six of them also with fog, clip planes or both, each untextured \
+         and textured; and the 32 `_edges` builds of four of them) of two stages"
     );
     stages
+}
+
+/// glsl/edges.geom, in each `_edges` build and no other: one specialization constant, the front
+/// face at SpecId 0 (its own stage's, set by draw/pipeline.rs), and no block of the state or
+/// the record.
+#[test]
+fn the_edges_geometry_stage_takes_only_the_front_face() {
+    let mut edges = 0;
+    for v in ffvk::gpu::shaders::VARIANTS {
+        assert_eq!(
+            v.geometry.is_some(),
+            v.name.ends_with("_edges"),
+            "{}: a geometry stage",
+            v.name
+        );
+        let Some(spirv) = v.geometry else { continue };
+        edges += 1;
+        let r = reflect(spirv);
+        let constants: Vec<(&str, u32)> = r
+            .spec_ids
+            .iter()
+            .map(|(id, spec)| (r.names.get(id).map_or("(unnamed)", String::as_str), *spec))
+            .collect();
+        assert_eq!(constants, [("SPEC_FRONT_FACE_CW", 0)], "{}.geom", v.name);
+        for block in ["State", "Record"] {
+            assert!(
+                !r.names.values().any(|n| n == block),
+                "{}.geom declares {block}",
+                v.name
+            );
+        }
+    }
+    assert_eq!(
+        edges, 32,
+        "vertex, flat, fragment and fragment_small: fog, clipped, textured"
+    );
 }
 
 /// The deferred lighting pass's vertex stages: a full-screen triangle, no state, no record.
@@ -200,8 +238,9 @@ fn the_record_block_of_the_fragment_stages_matches_the_draw_record() {
         seen += 1;
     }
     assert_eq!(
-        seen, 8,
-        "the fragment mode's fragment stages for large draws, textured or not, fogged or not, clipped or not"
+        seen, 16,
+        "the fragment mode's fragment stages for large draws, textured or not, fogged or not, \
+         clipped or not, with edge flags or not"
     );
     // The deferred lighting pass reads the frame's records as vec4s, at these indices of a
     // record's (deferred.frag): the normal matrix's columns (w: the shininesses) at 4 and 5,

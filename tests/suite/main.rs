@@ -15,6 +15,7 @@ mod cli;
 mod conformance;
 mod deferred;
 mod determinism;
+mod edge_flags;
 mod embedding;
 mod files;
 mod fragment_stages;

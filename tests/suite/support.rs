@@ -301,3 +301,22 @@ pub fn hashed_texels(side: u32) -> TextureImage {
     }
     TextureImage::new(side, side, rgba).unwrap()
 }
+
+/// Two-sided lighting with a light from the upper right, a warm front and a blue back
+/// material, so that a wrong face or a wrong vertex shows.
+pub fn two_sided(mode: LightingMode) -> GlState {
+    with(dark(), |gl| {
+        gl.enable(Cap::Light(0))?;
+        gl.light(0, LightParam::Position(Vec4::new(0.6, 0.5, 1.0, 0.0)))?;
+        gl.light(0, LightParam::Specular(Vec4::new(0.5, 0.5, 0.5, 1.0)))?;
+        gl.light_model(LightModelParam::TwoSide(true))?;
+        gl.material(Face::Front, MaterialParam::Diffuse(Vec4::new(0.9, 0.5, 0.2, 1.0)))?;
+        gl.material(Face::Front, MaterialParam::Ambient(Vec4::new(0.3, 0.1, 0.0, 1.0)))?;
+        gl.material(Face::Back, MaterialParam::Diffuse(Vec4::new(0.1, 0.3, 0.9, 1.0)))?;
+        gl.material(Face::Back, MaterialParam::Ambient(Vec4::new(0.0, 0.1, 0.4, 1.0)))?;
+        gl.material(Face::FrontAndBack, MaterialParam::Specular(Vec4::splat(0.6)))?;
+        gl.material(Face::FrontAndBack, MaterialParam::Shininess(10.0))?;
+        gl.lighting_mode(mode);
+        Ok(())
+    })
+}

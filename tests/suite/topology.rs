@@ -22,25 +22,6 @@ fn at_pixel(x: f32, y: f32) -> Vec3 {
     )
 }
 
-/// Two-sided lighting with a light from the upper right, a warm front and a blue back
-/// material, so that a wrong face or a wrong vertex shows.
-fn two_sided(mode: LightingMode) -> GlState {
-    with(dark(), |gl| {
-        gl.enable(Cap::Light(0))?;
-        gl.light(0, LightParam::Position(Vec4::new(0.6, 0.5, 1.0, 0.0)))?;
-        gl.light(0, LightParam::Specular(Vec4::new(0.5, 0.5, 0.5, 1.0)))?;
-        gl.light_model(LightModelParam::TwoSide(true))?;
-        gl.material(Face::Front, MaterialParam::Diffuse(Vec4::new(0.9, 0.5, 0.2, 1.0)))?;
-        gl.material(Face::Front, MaterialParam::Ambient(Vec4::new(0.3, 0.1, 0.0, 1.0)))?;
-        gl.material(Face::Back, MaterialParam::Diffuse(Vec4::new(0.1, 0.3, 0.9, 1.0)))?;
-        gl.material(Face::Back, MaterialParam::Ambient(Vec4::new(0.0, 0.1, 0.4, 1.0)))?;
-        gl.material(Face::FrontAndBack, MaterialParam::Specular(Vec4::splat(0.6)))?;
-        gl.material(Face::FrontAndBack, MaterialParam::Shininess(10.0))?;
-        gl.lighting_mode(mode);
-        Ok(())
-    })
-}
-
 /// The reference's lit color of vertex `v` for the front (or back) face, identity matrices.
 fn lit(state: &FixedFunctionState, v: &Vertex, back: bool) -> DVec4 {
     let eye = ffvk::reference::transform(state, Mat4::IDENTITY, Mat4::IDENTITY, v);

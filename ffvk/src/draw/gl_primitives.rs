@@ -97,6 +97,85 @@ pub fn line_loop_count(vertices: u64) -> u64 {
     }
 }
 
+/// Triangles with their edge flags, as [`Topology::EdgeFlaggedTriangles`] draws them: triangle
+/// t of `triangles` (three indices each; a trailing partial one is dropped), its edge e (from
+/// corner e to corner e + 1) a boundary edge where `boundary(t)[e]` holds, becomes
+/// (c0, a0, c1, a1, c2, a2) with a_e = c_e on a boundary edge and c_(e+1) on an inner one. An
+/// edge whose two corners are the same vertex cannot be marked inner (it draws nothing in GL).
+///
+/// [`Topology::EdgeFlaggedTriangles`]: crate::draw::record::Topology::EdgeFlaggedTriangles
+pub fn edge_flagged(triangles: &[u32], boundary: impl Fn(usize) -> [bool; 3]) -> Vec<u32> {
+    let mut out = Vec::with_capacity(triangles.len() / 3 * 6);
+    for (t, c) in triangles.chunks_exact(3).enumerate() {
+        let b = boundary(t);
+        for e in 0..3 {
+            out.extend([c[e], if b[e] { c[e] } else { c[(e + 1) % 3] }]);
+        }
+    }
+    out
+}
+
+/// `GL_TRIANGLES` with GL's per-vertex edge flags: each vertex's `flag` (glEdgeFlag, or
+/// the edge flag array at that vertex's index) says whether the edge that starts at it is a
+/// boundary edge. Six indices per triangle ([`edge_flagged`]).
+pub fn triangles_edge_flagged(vertices: &[u32], flag: impl Fn(u32) -> bool) -> Vec<u32> {
+    edge_flagged(vertices, |t| {
+        let v = &vertices[3 * t..3 * t + 3];
+        [flag(v[0]), flag(v[1]), flag(v[2])]
+    })
+}
+
+/// `GL_QUADS` as [`quads`] makes them, with each quad's diagonal an inner edge and its four
+/// sides taking their first vertex's `flag` (GL's edge flags: a quad drawn with `GL_LINE`
+/// shows its outline). Six indices per triangle ([`edge_flagged`]).
+pub fn quads_edge_flagged(vertices: &[u32], flag: impl Fn(u32) -> bool) -> Vec<u32> {
+    let triangles = quads(vertices);
+    edge_flagged(&triangles, |t| {
+        let q = &vertices[4 * (t / 2)..4 * (t / 2) + 4];
+        // (v0, v1, v3): v0-v1, the diagonal, v3-v0; (v1, v2, v3): v1-v2, v2-v3, the diagonal.
+        if t % 2 == 0 {
+            [flag(q[0]), false, flag(q[3])]
+        } else {
+            [flag(q[1]), flag(q[2]), false]
+        }
+    })
+}
+
+/// `GL_QUAD_STRIP` as [`quad_strip`] makes it, each quad's diagonal an inner edge. GL applies
+/// no edge flags to strips: every side of every quad is a boundary edge.
+pub fn quad_strip_edge_flagged(vertices: &[u32]) -> Vec<u32> {
+    let triangles = quad_strip(vertices);
+    // (v2i, v2i+1, v2i+3): bottom, right, the diagonal; (v2i+2, v2i, v2i+3): left, the
+    // diagonal, top.
+    edge_flagged(&triangles, |t| {
+        if t % 2 == 0 {
+            [true, true, false]
+        } else {
+            [true, false, true]
+        }
+    })
+}
+
+/// `GL_POLYGON` as [`polygon`] makes it, the fan's inner edges inner and the polygon's sides
+/// taking their first vertex's `flag`. Six indices per triangle ([`edge_flagged`]).
+pub fn polygon_edge_flagged(vertices: &[u32], flag: impl Fn(u32) -> bool) -> Vec<u32> {
+    let triangles = polygon(vertices);
+    let last = triangles.len() / 3;
+    edge_flagged(&triangles, |t| {
+        // (v_t+1, v_t+2, v0): a side; the side v_n-1 to v0 on the last; v0 to v1 on the first.
+        [
+            flag(vertices[t + 1]),
+            t + 1 == last && flag(vertices[t + 2]),
+            t == 0 && flag(vertices[0]),
+        ]
+    })
+}
+
+/// How many indices the `_edge_flagged` functions make of a triangle list of `indices`.
+pub fn edge_flagged_count(indices: u64) -> u64 {
+    indices / 3 * 6
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -167,6 +246,90 @@ mod tests {
         assert!(line_loop(&[4]).is_empty());
     }
 
+    /// The boundary edges an edge-flagged list marks, as (from, to) vertex pairs, and its
+    /// triangles, as the plain list.
+    fn decode(list: &[u32]) -> (Vec<(u32, u32)>, Vec<u32>) {
+        let mut edges = Vec::new();
+        let mut triangles = Vec::new();
+        for p in list.chunks_exact(6) {
+            let c = [p[0], p[2], p[4]];
+            triangles.extend(c);
+            for e in 0..3 {
+                let adjacent = p[2 * e + 1];
+                assert!(adjacent == c[e] || adjacent == c[(e + 1) % 3], "{p:?}: edge {e}");
+                if adjacent == c[e] {
+                    edges.push((c[e], c[(e + 1) % 3]));
+                }
+            }
+        }
+        edges.sort_unstable();
+        (edges, triangles)
+    }
+
+    fn sorted(mut edges: Vec<(u32, u32)>) -> Vec<(u32, u32)> {
+        edges.sort_unstable();
+        edges
+    }
+
+    #[test]
+    fn edge_flagged_quads_keep_their_four_sides_and_hide_the_diagonal() {
+        let v = [10, 11, 12, 13, 20, 21, 22, 23, 99];
+        let list = quads_edge_flagged(&v, |_| true);
+        assert_eq!(list[..12], [10, 10, 11, 13, 13, 13, 11, 11, 12, 12, 13, 11]);
+        let (edges, triangles) = decode(&list);
+        assert_eq!(triangles, quads(&v), "the same triangles as the filled form");
+        let want = [
+            (10, 11),
+            (11, 12),
+            (12, 13),
+            (13, 10),
+            (20, 21),
+            (21, 22),
+            (22, 23),
+            (23, 20),
+        ];
+        assert_eq!(edges, sorted(want.to_vec()));
+        // A vertex's flag hides the side that starts at it (glEdgeFlag(GL_FALSE) before it).
+        let (edges, _) = decode(&quads_edge_flagged(&v, |i| i != 12 && i != 20));
+        let want = [(10, 11), (11, 12), (13, 10), (21, 22), (22, 23), (23, 20)];
+        assert_eq!(edges, sorted(want.to_vec()));
+    }
+
+    #[test]
+    fn edge_flagged_quad_strips_show_every_side_of_every_quad_and_no_diagonal() {
+        let v = [0, 1, 2, 3, 4, 5];
+        let (edges, triangles) = decode(&quad_strip_edge_flagged(&v));
+        assert_eq!(triangles, quad_strip(&v));
+        // Quads (0, 1, 3, 2) and (2, 3, 5, 4): their shared side 2-3 is drawn by each.
+        let want = [(0, 1), (1, 3), (3, 2), (2, 0), (2, 3), (3, 5), (5, 4), (4, 2)];
+        assert_eq!(edges, sorted(want.to_vec()));
+    }
+
+    #[test]
+    fn edge_flagged_polygons_show_their_sides_and_not_their_fan() {
+        let v = [5, 6, 7, 8, 9];
+        let (edges, triangles) = decode(&polygon_edge_flagged(&v, |_| true));
+        assert_eq!(triangles, polygon(&v));
+        let want = [(5, 6), (6, 7), (7, 8), (8, 9), (9, 5)];
+        assert_eq!(edges, sorted(want.to_vec()));
+        let (edges, _) = decode(&polygon_edge_flagged(&v, |i| i != 5 && i != 9));
+        assert_eq!(edges, sorted(vec![(6, 7), (7, 8), (8, 9)]));
+        // A triangle as a polygon: one triangle with all three sides.
+        let (edges, _) = decode(&polygon_edge_flagged(&[1, 2, 3], |_| true));
+        assert_eq!(edges, sorted(vec![(1, 2), (2, 3), (3, 1)]));
+    }
+
+    #[test]
+    fn edge_flagged_triangles_take_each_vertexs_flag_for_the_edge_it_starts() {
+        let (edges, triangles) = decode(&triangles_edge_flagged(&[0, 1, 2, 3, 4, 5, 6], |i| i % 2 == 0));
+        assert_eq!(
+            triangles,
+            [0, 1, 2, 3, 4, 5],
+            "the partial last triangle is dropped"
+        );
+        assert_eq!(edges, sorted(vec![(0, 1), (2, 0), (4, 5)]));
+    }
+
     #[test]
     fn each_count_is_the_length_of_the_list_it_counts() {
         let v: Vec<u32> = (100..120).collect();
@@ -177,6 +340,12 @@ mod tests {
             assert_eq!(quad_strip(part).len() as u64, quad_strip_count(n), "strip of {n}");
             assert_eq!(polygon(part).len() as u64, polygon_count(n), "polygon of {n}");
             assert_eq!(line_loop(part).len() as u64, line_loop_count(n), "loop of {n}");
+            let flagged = quads_edge_flagged(part, |_| true).len() as u64;
+            assert_eq!(
+                flagged,
+                edge_flagged_count(quads_count(n)),
+                "flagged quads of {n}"
+            );
         }
         assert_eq!(polygon_count(u64::from(u32::MAX)), 3 * (u64::from(u32::MAX) - 2));
     }

@@ -16,5 +16,6 @@ mod ring;
 mod stipple;
 mod target;
 pub mod texture;
+mod variants;
 mod vertex_input;
 pub mod viewport;

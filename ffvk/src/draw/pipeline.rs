@@ -21,63 +21,10 @@ pub use super::raster::{
 };
 pub use super::stipple::PolygonStipple;
 pub use super::target::{Target, COLOR_FORMAT, DEPTH_FORMAT};
+pub use super::variants::{
+    edges_variant_name, one_color, variant_name, variant_name_staged, SMALL_DRAW_VERTICES,
+};
 pub use super::vertex_input::{Attribute, FaceArrays, MaterialArray, VertexInput, MAX_VERTEX_BINDINGS};
-
-/// Whether a pipeline specialized by `key` needs only the front primary color between the
-/// per-vertex stages: unlit, or one-sided with a single color (the back colors then equal the
-/// front ones and the secondary color is (0, 0, 0, 1)). Fewer vertex outputs make lavapipe's
-/// vertex pipeline cheaper (BENCHMARKS.md); the uber-shader always passes all four colors.
-pub fn one_color(key: SpecKey) -> bool {
-    key != SpecKey::UBER
-        && if key.get(SpecConstant::Lighting) == 0 {
-            // Unlit: a secondary color reaches the fragment stage only under COLOR_SUM.
-            key.get(SpecConstant::ColorSum) == 0
-        } else {
-            key.get(SpecConstant::TwoSide) == 0 && key.get(SpecConstant::SeparateSpecular) == 0
-        }
-}
-
-/// Draws of fewer indices (or, not indexed, vertices) than this are small: in the fragment mode
-/// they pass their materials from the vertex stage as flat varyings (the `fragment_small`
-/// variants), so that consecutive small draws bind nothing of their own; larger draws read them
-/// from their record as a uniform block bound per draw. On lavapipe a flat varying costs its
-/// triangle setup per triangle (about 70 ns for the materials) and a draw's own block about
-/// 5 µs: the two meet near 80 triangles.
-pub const SMALL_DRAW_VERTICES: u32 = 256;
-
-/// The name of the shader variant a mode's pipeline specialized by `key` uses: the mode's
-/// name, with `_small` for a small draw of the fragment mode ([`SMALL_DRAW_VERTICES`]), with
-/// `_one_color` when [`one_color`] holds for a per-vertex mode, and with `_textured` when the
-/// draw samples a texture. (Layouts without a color, normal or texture coordinate array share
-/// the variants: the pipeline's vertex input reads GL's current value from the draw record.)
-pub fn variant_name(mode: LightingMode, key: SpecKey, textured: bool, small: bool) -> String {
-    variant_name_staged(mode, key, (textured, small), (false, false))
-}
-
-/// [`variant_name`], with `_fog` for a fogged draw (the build that passes the fog varying) and
-/// `_clipped` for a draw with user clip planes (the build that writes `gl_ClipDistance`), in
-/// that order, before `_textured`.
-pub fn variant_name_staged(
-    mode: LightingMode,
-    key: SpecKey,
-    (textured, small): (bool, bool),
-    (fogged, clipped): (bool, bool),
-) -> String {
-    let one = one_color(key) && mode != LightingMode::Fragment;
-    format!(
-        "{}{}{}{}{}{}",
-        mode.name(),
-        if small && mode == LightingMode::Fragment {
-            "_small"
-        } else {
-            ""
-        },
-        if one { "_one_color" } else { "" },
-        if fogged { "_fog" } else { "" },
-        if clipped { "_clipped" } else { "" },
-        if textured { "_textured" } else { "" },
-    )
-}
 
 /// The specialization map of every pipeline: each constant is an `int` at offset
 /// 4 × constant_id of the key; a stage that does not use a constant ignores its entry.
@@ -651,8 +598,21 @@ impl Pipelines {
             }
             .into());
         }
+        if k.topology == Topology::EdgeFlaggedTriangles && !device.info.geometry_shader {
+            return Err(Error::NotEnabled {
+                feature: "geometryShader",
+                flag: "geometry_shader",
+                needed_for:
+                    "GL's edge flags (Topology::EdgeFlaggedTriangles, a triangle list with adjacency) need",
+            });
+        }
+        // Polygons drawn as lines or points with their edge flags: the `_edges` build, whose
+        // geometry stage marks the boundary edges. Filled, the adjacency is ignored.
+        let edges = k.topology == Topology::EdgeFlaggedTriangles && mode != vk::PolygonMode::FILL;
         let name = if k.gbuffer {
             "fragment_gbuffer".to_owned()
+        } else if edges {
+            edges_variant_name(k.mode, (k.textured, k.small), (k.fogged, k.clipped))
         } else {
             variant_name_staged(k.mode, k.spec, (k.textured, k.small), (k.fogged, k.clipped))
         };
@@ -661,6 +621,10 @@ impl Pipelines {
             .ok_or_else(|| Error::MissingFeature(format!("the embedded shader variant {name}")))?;
         let vert = shader_module(device, name, variant.vertex, config.set_index)?;
         let frag = shader_module(device, name, variant.fragment, config.set_index)?;
+        let geom = match variant.geometry {
+            Some(spirv) => Some(shader_module(device, name, spirv, config.set_index)?),
+            None => None,
+        };
         let entries = spec_entries();
         let spec = with_assembly(
             k.spec,
@@ -691,6 +655,25 @@ impl Pipelines {
             .map_entries(&entries)
             .data(&data);
         stages[1] = stages[1].specialization_info(&fragment_specialization);
+        let mut stages = stages.to_vec();
+        // edges.geom's one constant: whether GL_CW is the front face.
+        let front_cw = i32::from(k.raster.front_face == vk::FrontFace::CLOCKWISE);
+        let geometry_entries = [vk::SpecializationMapEntry::default()
+            .constant_id(0)
+            .offset(0)
+            .size(4)];
+        let geometry_specialization = vk::SpecializationInfo::default()
+            .map_entries(&geometry_entries)
+            .data(bytemuck::bytes_of(&front_cw));
+        if let Some(geom) = &geom {
+            stages.push(
+                vk::PipelineShaderStageCreateInfo::default()
+                    .stage(vk::ShaderStageFlags::GEOMETRY)
+                    .module(geom.raw())
+                    .name(c"main")
+                    .specialization_info(&geometry_specialization),
+            );
+        }
         let attributes = input.attributes(k.textured);
         let bindings = input.binding_descriptions(record_stride_on(device));
         let vertex_input = vk::PipelineVertexInputStateCreateInfo::default()

@@ -420,9 +420,16 @@ impl RasterState {
     /// ([`RasterState::face_passes`]): its offset applies as it is.
     pub(crate) fn split_dynamic(&self) -> (RasterState, DynamicRaster) {
         let d = RasterState::default();
+        // Polygons drawn as lines or points keep their front face in the key: the geometry
+        // stage of GL's edge flags finds their facing itself (glsl/edges.geom).
+        let front_face = if self.polygon_mode == PolygonModes::FILL {
+            d.front_face
+        } else {
+            self.front_face
+        };
         let keyed = RasterState {
             cull_mode: d.cull_mode,
-            front_face: d.front_face,
+            front_face,
             depth_test: d.depth_test,
             depth_write: d.depth_write,
             depth_compare: d.depth_compare,

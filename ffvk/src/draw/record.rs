@@ -29,6 +29,15 @@ pub enum Topology {
     TriangleStrip,
     /// `GL_TRIANGLE_FAN`.
     TriangleFan,
+    /// GL's polygons with their edge flags (GL 2.1 §2.6.2): triangles, each given as six
+    /// indices (c0, a0, c1, a1, c2, a2), a Vulkan triangle list with adjacency, where a_e
+    /// repeats c_e when edge e (from corner e to corner e + 1) is a boundary edge and is
+    /// c_(e+1) when it is not. Filled, they draw as [`Topology::TriangleList`] would; in
+    /// `GL_LINE` or `GL_POINT` polygon mode, only the boundary edges (or the vertices that start
+    /// one) are drawn, as GL draws them: a quad without its diagonal, a polygon without its fan.
+    /// [`gl_primitives::edge_flagged`](crate::draw::gl_primitives::edge_flagged) and its
+    /// siblings make the indices. Needs the device's `geometryShader`.
+    EdgeFlaggedTriangles,
 }
 
 impl Topology {
@@ -41,6 +50,7 @@ impl Topology {
             Topology::TriangleList => vk::PrimitiveTopology::TRIANGLE_LIST,
             Topology::TriangleStrip => vk::PrimitiveTopology::TRIANGLE_STRIP,
             Topology::TriangleFan => vk::PrimitiveTopology::TRIANGLE_FAN,
+            Topology::EdgeFlaggedTriangles => vk::PrimitiveTopology::TRIANGLE_LIST_WITH_ADJACENCY,
         }
     }
 
@@ -53,6 +63,7 @@ impl Topology {
             Topology::TriangleList => "GL_TRIANGLES",
             Topology::TriangleStrip => "GL_TRIANGLE_STRIP",
             Topology::TriangleFan => "GL_TRIANGLE_FAN",
+            Topology::EdgeFlaggedTriangles => "GL_TRIANGLES with edge flags",
         }
     }
 
@@ -61,7 +72,10 @@ impl Topology {
     pub fn is_triangles(self) -> bool {
         matches!(
             self,
-            Topology::TriangleList | Topology::TriangleStrip | Topology::TriangleFan
+            Topology::TriangleList
+                | Topology::TriangleStrip
+                | Topology::TriangleFan
+                | Topology::EdgeFlaggedTriangles
         )
     }
 

@@ -20,6 +20,9 @@ pub struct ShaderVariant {
     pub vertex: &'static [u8],
     /// Fragment-stage SPIR-V (bytes of 32-bit little-endian words).
     pub fragment: &'static [u8],
+    /// Geometry-stage SPIR-V, of `glsl/edges.geom`: the `_edges` builds only (GL's edge
+    /// flags, read from a triangle list with adjacency).
+    pub geometry: Option<&'static [u8]>,
 }
 
 include!(concat!(env!("OUT_DIR"), "/shaders.rs"));

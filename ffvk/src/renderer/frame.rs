@@ -66,6 +66,9 @@ pub struct Draw<'a> {
     /// `GL_CULL_FACE` with `glCullFace(face)`: `None` (GL's default) draws both faces;
     /// `Some(Face::Back)` drops the triangles that are clockwise on screen.
     pub cull_face: Option<Face>,
+    /// `glFrontFace`: `COUNTER_CLOCKWISE` (GL's `GL_CCW`, the default) or `CLOCKWISE`
+    /// (`GL_CW`), in GL's window coordinates.
+    pub front_face: vk::FrontFace,
     /// The texture bound to `GL_TEXTURE_2D` (uploaded by the same renderer): sampled when
     /// `state.texture.enabled` is on and the texture is complete. `None`: GL's texture 0,
     /// which textures nothing.
@@ -115,6 +118,7 @@ impl<'a> Draw<'a> {
             projection,
             state,
             cull_face: None,
+            front_face: vk::FrontFace::COUNTER_CLOCKWISE,
             texture: None,
             topology: mesh.topology,
             point_size: 1.0,
@@ -251,6 +255,13 @@ impl<'a> Draw<'a> {
         self
     }
 
+    /// This draw with `glFrontFace`: `CLOCKWISE` for `GL_CW`, `COUNTER_CLOCKWISE` for `GL_CCW`.
+    #[must_use]
+    pub fn with_front_face(mut self, winding: vk::FrontFace) -> Self {
+        self.front_face = winding;
+        self
+    }
+
     /// This draw with `texture` bound to `GL_TEXTURE_2D` (`None`: texture object 0).
     #[must_use]
     pub fn with_texture(mut self, texture: Option<&'a Texture>) -> Self {
@@ -275,6 +286,7 @@ impl<'a> Draw<'a> {
                 Some(Face::Back) => vk::CullModeFlags::BACK,
                 Some(Face::FrontAndBack) => vk::CullModeFlags::FRONT_AND_BACK,
             },
+            front_face: self.front_face,
             polygon_offset: self.polygon_offset,
             polygon_mode: self.polygon_mode,
             stencil: self.stencil,

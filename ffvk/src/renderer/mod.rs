@@ -200,6 +200,7 @@ impl Renderer {
     pub fn upload(&self, mesh: &MeshData) -> Result<Mesh> {
         let whole = match mesh.topology {
             Topology::TriangleList => 3,
+            Topology::EdgeFlaggedTriangles => 6,
             Topology::LineList => 2,
             _ => 1,
         };

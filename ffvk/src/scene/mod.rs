@@ -663,6 +663,7 @@ pub fn render_scene_with(
             projection: scene.projection,
             state,
             cull_face: scene.cull_face(mesh),
+            front_face: ash::vk::FrontFace::COUNTER_CLOCKWISE,
             texture: mesh.texture.as_ref().and_then(texture_of),
             topology: gpu.topology(),
             // glPointSize draws points only: other meshes keep GL's 1 (their pipelines are

@@ -61,6 +61,9 @@ pub struct DeviceInfo {
     pub fill_mode_non_solid: bool,
     /// `logicOp`: `glLogicOp` (`GL_COLOR_LOGIC_OP`).
     pub logic_op: bool,
+    /// `geometryShader`: GL's edge flags (polygons drawn as lines or points without their
+    /// inner edges, [`Topology::EdgeFlaggedTriangles`](crate::draw::record::Topology)).
+    pub geometry_shader: bool,
     /// `VK_EXT_line_rasterization` with `bresenhamLines` and `stippledBresenhamLines`:
     /// `glLineStipple` (`GL_LINE_STIPPLE`).
     pub stippled_lines: bool,
@@ -153,6 +156,8 @@ pub struct EnabledFeatures {
     pub fill_mode_non_solid: bool,
     /// `logicOp`: needed for `glLogicOp`.
     pub logic_op: bool,
+    /// `geometryShader`: needed for GL's edge flags (`Topology::EdgeFlaggedTriangles`).
+    pub geometry_shader: bool,
     /// `VK_EXT_line_rasterization` (enabled) with `bresenhamLines` and
     /// `stippledBresenhamLines`: needed for `glLineStipple`.
     pub stippled_lines: bool,
@@ -173,6 +178,8 @@ with_fields!(EnabledFeatures {
     with_fill_mode_non_solid => fill_mode_non_solid: bool,
     /// Sets [`logic_op`](EnabledFeatures::logic_op).
     with_logic_op => logic_op: bool,
+    /// Sets [`geometry_shader`](EnabledFeatures::geometry_shader).
+    with_geometry_shader => geometry_shader: bool,
     /// Sets [`stippled_lines`](EnabledFeatures::stippled_lines).
     with_stippled_lines => stippled_lines: bool,
 });
@@ -280,6 +287,7 @@ impl Device {
         (info.wide_lines, info.large_points) = (supported.wide_lines, supported.large_points);
         info.clip_distance = supported.clip_distance;
         (info.fill_mode_non_solid, info.logic_op) = (supported.fill_mode_non_solid, supported.logic_op);
+        info.geometry_shader = supported.geometry_shader;
         let has_line_rasterization = extensions.iter().any(|e| {
             e.extension_name_as_c_str()
                 .is_ok_and(|n| n == ext::line_rasterization::NAME)
@@ -308,7 +316,8 @@ impl Device {
             .large_points(supported.large_points)
             .shader_clip_distance(supported.clip_distance)
             .fill_mode_non_solid(supported.fill_mode_non_solid)
-            .logic_op(supported.logic_op);
+            .logic_op(supported.logic_op)
+            .geometry_shader(supported.geometry_shader);
         let mut create = vk::DeviceCreateInfo::default()
             .queue_create_infos(&queues)
             .enabled_extension_names(&extension_names)
@@ -449,6 +458,11 @@ impl Device {
                 "logicOp (EnabledFeatures::logic_op says it is enabled)",
             ),
             (
+                enabled.geometry_shader,
+                supported.geometry_shader,
+                "geometryShader (EnabledFeatures::geometry_shader says it is enabled)",
+            ),
+            (
                 enabled.stippled_lines,
                 supported.stippled_lines,
                 "VK_EXT_line_rasterization's bresenhamLines and stippledBresenhamLines (EnabledFeatures::stippled_lines says they are enabled)",
@@ -466,6 +480,7 @@ impl Device {
             enabled.logic_op,
             enabled.stippled_lines,
         );
+        info.geometry_shader = enabled.geometry_shader;
         let allocator = match shared {
             #[cfg(feature = "shared-allocator")]
             Some(shared) => Ok(DeviceAllocator::Shared(shared)),
@@ -629,6 +644,7 @@ struct Supported {
     clip_distance: bool,
     fill_mode_non_solid: bool,
     logic_op: bool,
+    geometry_shader: bool,
     /// `bresenhamLines` and `stippledBresenhamLines` (the extension must be listed too).
     stippled_lines: bool,
     driver_name: String,
@@ -673,6 +689,7 @@ impl Supported {
         let clip_distance = features.features.shader_clip_distance == vk::TRUE;
         let fill_mode_non_solid = features.features.fill_mode_non_solid == vk::TRUE;
         let logic_op = features.features.logic_op == vk::TRUE;
+        let geometry_shader = features.features.geometry_shader == vk::TRUE;
         let stippled_lines = lines.bresenham_lines == vk::TRUE && lines.stippled_bresenham_lines == vk::TRUE;
         let cstr = |bytes: &[std::ffi::c_char]| {
             // SAFETY: the driver properties hold NUL-terminated strings within their arrays.
@@ -690,6 +707,7 @@ impl Supported {
             clip_distance,
             fill_mode_non_solid,
             logic_op,
+            geometry_shader,
             stippled_lines,
             driver_name: cstr(&driver.driver_name),
             driver_info: cstr(&driver.driver_info),
@@ -729,6 +747,7 @@ fn describe(
         clip_distance: false,
         fill_mode_non_solid: false,
         logic_op: false,
+        geometry_shader: false,
         stippled_lines: false,
         line_width_range: props.limits.line_width_range,
         point_size_range: props.limits.point_size_range,
