@@ -126,6 +126,9 @@ pub fn mesh_raster_calls(r: &ffvk::scene::MeshRaster) -> Vec<GlCall> {
     if let Some(face) = r.cull_face {
         calls.push(GlCall::CullFace(face));
     }
+    if r.front_face != ash::vk::FrontFace::COUNTER_CLOCKWISE {
+        calls.push(GlCall::FrontFace(r.front_face));
+    }
     if r.polygon_mode != ffvk::PolygonModes::FILL {
         calls.push(GlCall::PolygonMode(r.polygon_mode));
     }

@@ -267,3 +267,66 @@ fn quads_quad_strips_and_polygons_drawn_as_lines_or_points_show_only_their_bound
     eprintln!("{}", report.join("\n"));
     finish(r);
 }
+
+/// Scene files: a mesh of quads, quad strips or polygons drawn with `polygon_mode = "line"` (or
+/// "point") keeps its edge flags; filled, it stays a triangle list. `front_face` is glFrontFace,
+/// "ccw" or "cw", and anything else is refused naming the field.
+#[test]
+fn a_scene_mesh_of_quads_drawn_as_lines_keeps_its_edge_flags_and_takes_its_front_face() {
+    let dir = output_dir().join("edge_flags_scene");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let load = |extra: &str| {
+        let path = dir.join("s.toml");
+        std::fs::write(
+            &path,
+            format!(
+                "[image]\nsize = [64, 64]\n[[lights]]\nindex = 0\nposition = [0.0, 0.0, 1.0, 0.0]\n\
+                 [[meshes]]\nbuiltin = \"sphere\"\nlevel = 12\ntranslate = [0.0, 0.0, -3.0]\n{extra}"
+            ),
+        )
+        .unwrap();
+        ffvk::scene::Scene::load(&path)
+    };
+    let mut r = renderer();
+    let outlined = load("primitive = \"quads\"\npolygon_mode = \"line\"").unwrap();
+    let filled = load("primitive = \"quads\"").unwrap();
+    let (o, f) = (&outlined.meshes[0].data, &filled.meshes[0].data);
+    assert_eq!(
+        (o.topology, f.topology),
+        (Topology::EdgeFlaggedTriangles, Topology::TriangleList)
+    );
+    assert_eq!(o.indices.len(), 2 * f.indices.len(), "six indices a triangle");
+    let image = ffvk::scene::render_scene(&mut r, &outlined, None).unwrap();
+    // The scene's outlines are the API's: the same vertices through quads_edge_flagged.
+    let mesh = r.upload(o).unwrap();
+    let mut frame = Frame::new(64, 64);
+    frame.clear_color = Vec4::new(0.0, 0.0, 0.0, 1.0);
+    let draw = Draw::new(
+        &mesh,
+        outlined.modelview(&outlined.meshes[0]),
+        outlined.projection,
+        outlined.draw_state(&outlined.meshes[0]),
+    )
+    .with_polygon_mode(PolygonModes::both(vk::PolygonMode::LINE));
+    frame.draws.push(draw);
+    let direct = r.render(&frame).unwrap().into_rgba_image();
+    assert!(lit_pixels(&direct) > 100, "{} lit", lit_pixels(&direct));
+    assert_eq!(compare(&image.clone().into(), &direct), (0, 0));
+
+    let cw = load("front_face = \"cw\"\ncull_face = \"back\"").unwrap();
+    let ccw = load("front_face = \"ccw\"\ncull_face = \"back\"").unwrap();
+    assert_eq!(cw.meshes[0].raster.front_face, vk::FrontFace::CLOCKWISE);
+    let (a, b) = (
+        ffvk::scene::render_scene(&mut r, &cw, None).unwrap(),
+        ffvk::scene::render_scene(&mut r, &ccw, None).unwrap(),
+    );
+    let (a, b): (RgbaImage, RgbaImage) = (a.into(), b.into());
+    assert_ne!(a, b, "glFrontFace(GL_CW) culls the other faces");
+    let e = load("front_face = \"clockwise\"").unwrap_err().to_string();
+    assert!(
+        e.contains("meshes[0].front_face") && e.contains("\"clockwise\"") && e.contains("ccw"),
+        "{e}"
+    );
+    finish(r);
+}

@@ -274,6 +274,8 @@ pub(super) struct MeshSpec {
     pub(super) primitive: Option<String>,
     /// GL_CULL_FACE with glCullFace: "front", "back" or "front_and_back"; off by default.
     pub(super) cull_face: Option<String>,
+    /// glFrontFace: "ccw" (GL's default) or "cw".
+    pub(super) front_face: Option<String>,
     /// glPolygonMode: "fill" (GL's default), "line" or "point" for both faces, or
     /// `{ front = ..., back = ... }`.
     pub(super) polygon_mode: Option<PolygonModeSpec>,

@@ -296,8 +296,11 @@ pub struct SceneError {
 
 /// `data`'s index list drawn as GL's primitive mode `name` (see the scene file's `primitive`):
 /// Vulkan's topologies as they are, GL's others through [`crate::draw::gl_primitives`]; an
-/// incomplete last line is dropped, as GL drops it.
-fn as_primitive(mut data: MeshData, name: &str) -> Result<MeshData, String> {
+/// incomplete last line is dropped, as GL drops it. Quads, quad strips and polygons of a mesh
+/// drawn as lines or points (`outlined`) keep their edge flags
+/// ([`Topology::EdgeFlaggedTriangles`](crate::Topology::EdgeFlaggedTriangles)): GL draws
+/// their sides, not ffvk's inner triangle edges.
+fn as_primitive(mut data: MeshData, name: &str, outlined: bool) -> Result<MeshData, String> {
     use crate::draw::gl_primitives;
     use crate::Topology;
     if data.topology != Topology::TriangleList {
@@ -319,6 +322,15 @@ fn as_primitive(mut data: MeshData, name: &str) -> Result<MeshData, String> {
         "triangles" => (Topology::TriangleList, indices),
         "triangle_strip" => (Topology::TriangleStrip, indices),
         "triangle_fan" => (Topology::TriangleFan, indices),
+        "quads" | "quad_strip" | "polygon" if outlined => {
+            let all = |_| true;
+            let flagged = match name {
+                "quads" => gl_primitives::quads_edge_flagged(&indices, all),
+                "quad_strip" => gl_primitives::quad_strip_edge_flagged(&indices),
+                _ => gl_primitives::polygon_edge_flagged(&indices, all),
+            };
+            (Topology::EdgeFlaggedTriangles, flagged)
+        }
         "quads" => (Topology::TriangleList, gl_primitives::quads(&indices)),
         "quad_strip" => (Topology::TriangleList, gl_primitives::quad_strip(&indices)),
         "polygon" => (Topology::TriangleList, gl_primitives::polygon(&indices)),
@@ -663,7 +675,7 @@ pub fn render_scene_with(
             projection: scene.projection,
             state,
             cull_face: scene.cull_face(mesh),
-            front_face: ash::vk::FrontFace::COUNTER_CLOCKWISE,
+            front_face: raster.front_face,
             texture: mesh.texture.as_ref().and_then(texture_of),
             topology: gpu.topology(),
             // glPointSize draws points only: other meshes keep GL's 1 (their pipelines are

@@ -15,6 +15,9 @@ pub struct MeshRaster {
     /// `GL_CULL_FACE` with `glCullFace` (`cull_face`): `None`, GL's default, leaves the choice
     /// to the glTF meaning ([`Scene::cull_face`](super::Scene::cull_face)).
     pub cull_face: Option<Face>,
+    /// `glFrontFace` (`front_face`): `COUNTER_CLOCKWISE` (`"ccw"`, GL's default) or
+    /// `CLOCKWISE` (`"cw"`).
+    pub front_face: vk::FrontFace,
     /// `glPolygonMode` (`polygon_mode`).
     pub polygon_mode: PolygonModes,
     /// `glPolygonOffset` with its modes (`polygon_offset`); `None`: all three off.
@@ -45,6 +48,7 @@ impl Default for MeshRaster {
     fn default() -> Self {
         MeshRaster {
             cull_face: None,
+            front_face: vk::FrontFace::COUNTER_CLOCKWISE,
             polygon_mode: PolygonModes::FILL,
             polygon_offset: None,
             color_mask: [true; 4],
@@ -146,6 +150,11 @@ const BLEND_EQUATION: &[(&str, vk::BlendOp)] = &[
     ("max", vk::BlendOp::MAX),
 ];
 
+const FRONT_FACE: &[(&str, vk::FrontFace)] = &[
+    ("ccw", vk::FrontFace::COUNTER_CLOCKWISE),
+    ("cw", vk::FrontFace::CLOCKWISE),
+];
+
 const FACE: &[(&str, Face)] = &[
     ("front", Face::Front),
     ("back", Face::Back),
@@ -189,6 +198,9 @@ impl Builder<'_> {
         let mut raster = MeshRaster::default();
         if let Some(face) = &spec.cull_face {
             raster.cull_face = Some(self.word(&at("cull_face"), face, FACE)?);
+        }
+        if let Some(winding) = &spec.front_face {
+            raster.front_face = self.word(&at("front_face"), winding, FRONT_FACE)?;
         }
         raster.polygon_mode = match &spec.polygon_mode {
             None => PolygonModes::FILL,

@@ -226,10 +226,12 @@ impl Builder<'_> {
                     (None, None, None) => front,
                 };
                 let own_material = spec.material.is_none() && scene_front.is_none();
+                let raster = self.mesh_raster(&field, spec)?;
                 let mut data = p.data;
                 if let Some(name) = &spec.primitive {
-                    data =
-                        as_primitive(data, name).map_err(|m| self.field(format!("{field}.primitive"), m))?;
+                    let outlined = raster.polygon_mode != crate::PolygonModes::FILL;
+                    data = as_primitive(data, name, outlined)
+                        .map_err(|m| self.field(format!("{field}.primitive"), m))?;
                 }
                 let meaning = match &pbr {
                     Some(pbr) if gltf_meaning => {
@@ -263,7 +265,6 @@ impl Builder<'_> {
                     }
                     _ => None,
                 };
-                let raster = self.mesh_raster(&field, spec)?;
                 meshes.push(SceneMesh {
                     name: p.name,
                     data,
