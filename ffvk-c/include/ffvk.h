@@ -369,6 +369,9 @@
 #ifndef GL_LINE_STIPPLE
 #define GL_LINE_STIPPLE 0x0B24
 #endif
+#ifndef GL_POLYGON_STIPPLE
+#define GL_POLYGON_STIPPLE 0x0B42
+#endif
 #ifndef GL_LINE_STIPPLE_PATTERN
 #define GL_LINE_STIPPLE_PATTERN 0x0B25
 #endif
@@ -672,6 +675,9 @@
 #ifndef GL_POLYGON
 #define GL_POLYGON 0x0009
 #endif
+#ifndef GL_TRIANGLES_ADJACENCY
+#define GL_TRIANGLES_ADJACENCY 0x000C
+#endif
 
 
 /*
@@ -727,6 +733,12 @@
  line and polygon outline is drawn as GL's aliased (diamond-exit) lines.
  */
 #define FFVK_FEATURE_STIPPLED_LINES 128
+
+/*
+ `VkPhysicalDeviceFeatures::geometryShader`: needed for GL's edge flags (draws of mode
+ `GL_TRIANGLES_ADJACENCY` from `ffvkEdgeFlaggedIndices`).
+ */
+#define FFVK_FEATURE_GEOMETRY_SHADER 256
 
 /*
  `FfvkDrawInfo::raster_source`: the draw's raster state is its `raster` (the default).
@@ -911,7 +923,9 @@ typedef struct FfvkRendererCreateInfo {
    (`GL_COLOR_LOGIC_OP`); `FFVK_FEATURE_STIPPLED_LINES` is the extension
    `VK_EXT_line_rasterization` enabled with `VkPhysicalDeviceLineRasterizationFeaturesEXT::
    bresenhamLines` and `stippledBresenhamLines` (`GL_LINE_STIPPLE`; every line then drawn
-   as GL's aliased lines). A draw needing a feature not declared is refused, naming its bit.
+   as GL's aliased lines); `FFVK_FEATURE_GEOMETRY_SHADER` is `geometryShader` (GL's edge
+   flags: draws of mode `GL_TRIANGLES_ADJACENCY`). A draw needing a feature not declared is
+   refused, naming its bit.
    `ffvkDeviceRequirements` says which bits a device will have.
    */
   uint32_t enabled_features;
@@ -2009,6 +2023,32 @@ void ffvkCullFace(struct FfvkContext *ctx, uint32_t mode);
 void ffvkFrontFace(struct FfvkContext *ctx, uint32_t mode);
 
 /*
+ glPolygonStipple: the 32 × 32 pattern `GL_POLYGON_STIPPLE` applies to filled polygons, 128
+ bytes as GL unpacks them with the default pixel storage: rows of 4 bytes from the bottom row
+ up, the most significant bit of each byte leftmost (`GL_UNPACK_LSB_FIRST` false). A draw with
+ the stipple on needs the framebuffer's height (`ffvkFramebufferHeight`). Errors:
+ `GL_INVALID_VALUE` for a null `mask`.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `mask` is null or points at
+ 128 bytes.
+ */
+void ffvkPolygonStipple(struct FfvkContext *ctx, const uint8_t *mask);
+
+/*
+ The height in pixels of the framebuffer the context's draws render into (ffvk's call: a GL
+ context knows its window's): GL counts `GL_POLYGON_STIPPLE`'s rows from the framebuffer's
+ bottom, so a draw with the stipple on needs it (`FFVK_ERROR_STATE` at `ffvkDraw` otherwise).
+ Call it when the framebuffer is made or resized. Errors: `GL_INVALID_VALUE` for 0.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkFramebufferHeight(struct FfvkContext *ctx, uint32_t height);
+
+/*
  glEdgeFlag: the current edge flag (non-zero is `GL_TRUE`), kept for `GL_EDGE_FLAG` queries:
  ffvk draws no polygon edges apart. Never an error.
 
@@ -2097,6 +2137,39 @@ enum FfvkResult ffvkPrimitiveIndicesRange(uint32_t mode,
                                           uint32_t capacity,
                                           uint32_t *written,
                                           uint32_t *draw_mode);
+
+/*
+ GL's polygons with their edge flags (GL 2.1 §2.6.2), for draws in polygon mode `GL_LINE` or
+ `GL_POINT`: `GL_TRIANGLES`, `GL_QUADS`, `GL_QUAD_STRIP` or `GL_POLYGON` over the `count`
+ vertex numbers `vertices` (as `ffvkPrimitiveIndices` takes them), as indices to draw with
+ mode `GL_TRIANGLES_ADJACENCY` (`ffvkDraw`; the device's `geometryShader`,
+ `FFVK_FEATURE_GEOMETRY_SHADER`): the same triangles as `ffvkPrimitiveIndices` makes, six
+ indices each, whose adjacency indices mark the edges GL draws: a quad's four sides and not
+ its diagonal, a polygon's sides and not its fan, and of those only the edges whose first
+ vertex's edge flag is `GL_TRUE`. `edge_flags` is null (every flag `GL_TRUE`, GL's default
+ edge flag) or GL's edge flag array (`glEdgeFlagPointer`): `flag_count` flags (non-zero:
+ `GL_TRUE`), one per vertex number; a caller whose current edge flag (`glEdgeFlag`) is
+ `GL_FALSE` passes flags of zero. `GL_QUAD_STRIP` takes no flags, as in GL (every side of
+ every quad is drawn). Filled, such a draw looks as the `ffvkPrimitiveIndices` draw does.
+ Writes at most `capacity` indices to `out` (null to ask the size) and the needed count to
+ `*written`. Errors: `FFVK_ERROR_INVALID_ARGUMENT` for another mode, a null `vertices` (with
+ a count) or `written`, a vertex number at or past `flag_count` (with flags; nothing written
+ to `out` then), a count whose indices would number more than a `uint32_t` holds, or a
+ `capacity` below the needed count (nothing written to `out` then).
+
+ # Safety
+
+ `vertices` points at `count` values and `edge_flags` at `flag_count` (unless `out` is null);
+ `out` is null or has room for `capacity`.
+ */
+enum FfvkResult ffvkEdgeFlaggedIndices(uint32_t mode,
+                                       const uint32_t *vertices,
+                                       uint32_t count,
+                                       const uint8_t *edge_flags,
+                                       uint32_t flag_count,
+                                       uint32_t *out,
+                                       uint32_t capacity,
+                                       uint32_t *written);
 
 /*
  glGetLightfv: a light's parameter as stored: positions and spot directions in eye
@@ -2227,6 +2300,18 @@ void ffvkGetIntegerv(struct FfvkContext *ctx, uint32_t pname, int32_t *params);
  set.
  */
 void ffvkGetBooleanv(struct FfvkContext *ctx, uint32_t pname, uint8_t *params);
+
+/*
+ glGetPolygonStipple: the polygon stipple's 128 bytes as `ffvkPolygonStipple` takes them
+ (GL's default pixel storage); all ones until set. Errors: `GL_INVALID_VALUE` for a null
+ `mask`. Nothing is written when an error is set.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `mask` is null or has room
+ for 128 bytes.
+ */
+void ffvkGetPolygonStipple(struct FfvkContext *ctx, uint8_t *mask);
 
 /*
  glGetClipPlane: the plane's equation as stored, in eye space (four doubles). Errors:

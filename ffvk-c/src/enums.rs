@@ -128,6 +128,7 @@ gl_enums! {
     GL_POINT_SIZE = 0x0B11,
     GL_LINE_WIDTH = 0x0B21,
     GL_LINE_STIPPLE = 0x0B24,
+    GL_POLYGON_STIPPLE = 0x0B42,
     GL_LINE_STIPPLE_PATTERN = 0x0B25,
     GL_LINE_STIPPLE_REPEAT = 0x0B26,
     GL_POLYGON_MODE = 0x0B40,
@@ -229,6 +230,7 @@ gl_enums! {
     GL_QUADS = 0x0007,
     GL_QUAD_STRIP = 0x0008,
     GL_POLYGON = 0x0009,
+    GL_TRIANGLES_ADJACENCY = 0x000C,
 }
 
 /// GL's names for values the API refuses but an application may well pass on (a layer
@@ -239,7 +241,6 @@ const MESSAGE_NAMES: &[(&str, u32)] = &[
     ("GL_POINT_SMOOTH", 0x0B10),
     ("GL_LINE_SMOOTH", 0x0B20),
     ("GL_POLYGON_SMOOTH", 0x0B41),
-    ("GL_POLYGON_STIPPLE", 0x0B42),
     ("GL_MATRIX_MODE", 0x0BA0),
     ("GL_VIEWPORT", 0x0BA2),
     ("GL_DITHER", 0x0BD0),
@@ -298,6 +299,9 @@ pub(crate) fn enum_name(value: u32) -> String {
 /// A primitive mode as a message shows it: `GL_QUAD_STRIP (0x0008)`, or `0x0042` for a value
 /// that is none of GL's ten.
 pub(crate) fn mode_name(mode: u32) -> String {
+    if mode == GL_TRIANGLES_ADJACENCY {
+        return "GL_TRIANGLES_ADJACENCY (0x000C)".into();
+    }
     match MODES.get(mode as usize) {
         Some(name) => format!("{name} (0x{mode:04X})"),
         None => format!("0x{mode:04X}"),

@@ -326,6 +326,129 @@ unsafe fn primitive_indices(
     })
 }
 
+/// GL's polygons with their edge flags (GL 2.1 §2.6.2), for draws in polygon mode `GL_LINE` or
+/// `GL_POINT`: `GL_TRIANGLES`, `GL_QUADS`, `GL_QUAD_STRIP` or `GL_POLYGON` over the `count`
+/// vertex numbers `vertices` (as `ffvkPrimitiveIndices` takes them), as indices to draw with
+/// mode `GL_TRIANGLES_ADJACENCY` (`ffvkDraw`; the device's `geometryShader`,
+/// `FFVK_FEATURE_GEOMETRY_SHADER`): the same triangles as `ffvkPrimitiveIndices` makes, six
+/// indices each, whose adjacency indices mark the edges GL draws: a quad's four sides and not
+/// its diagonal, a polygon's sides and not its fan, and of those only the edges whose first
+/// vertex's edge flag is `GL_TRUE`. `edge_flags` is null (every flag `GL_TRUE`, GL's default
+/// edge flag) or GL's edge flag array (`glEdgeFlagPointer`): `flag_count` flags (non-zero:
+/// `GL_TRUE`), one per vertex number; a caller whose current edge flag (`glEdgeFlag`) is
+/// `GL_FALSE` passes flags of zero. `GL_QUAD_STRIP` takes no flags, as in GL (every side of
+/// every quad is drawn). Filled, such a draw looks as the `ffvkPrimitiveIndices` draw does.
+/// Writes at most `capacity` indices to `out` (null to ask the size) and the needed count to
+/// `*written`. Errors: `FFVK_ERROR_INVALID_ARGUMENT` for another mode, a null `vertices` (with
+/// a count) or `written`, a vertex number at or past `flag_count` (with flags; nothing written
+/// to `out` then), a count whose indices would number more than a `uint32_t` holds, or a
+/// `capacity` below the needed count (nothing written to `out` then).
+///
+/// # Safety
+///
+/// `vertices` points at `count` values and `edge_flags` at `flag_count` (unless `out` is null);
+/// `out` is null or has room for `capacity`.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkEdgeFlaggedIndices(
+    mode: u32,
+    vertices: *const u32,
+    count: u32,
+    edge_flags: *const u8,
+    flag_count: u32,
+    out: *mut u32,
+    capacity: u32,
+    written: *mut u32,
+) -> FfvkResult {
+    let f = "ffvkEdgeFlaggedIndices";
+    guard(|| {
+        let mut checked = check_ptr(f, "written", written, "where to write the index count");
+        if count > 0 {
+            let expected = format!("the {count} vertex numbers of count");
+            checked = checked.and_then(|()| check_ptr(f, "vertices", vertices, &expected));
+        }
+        if !out.is_null() {
+            checked = checked.and_then(|()| check_ptr(f, "out", out, "room for capacity indices, or null"));
+        }
+        if let Err(code) = checked {
+            return code;
+        }
+        let n = u64::from(count);
+        let triangles = match mode {
+            GL_TRIANGLES => n / 3 * 3,
+            GL_QUADS => gl_primitives::quads_count(n),
+            GL_QUAD_STRIP => gl_primitives::quad_strip_count(n),
+            GL_POLYGON => gl_primitives::polygon_count(n),
+            other => {
+                return fail(
+                    FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                    format!(
+                        "{f}: mode {} has no edge flags: expected GL_TRIANGLES, GL_QUADS, GL_QUAD_STRIP or GL_POLYGON",
+                        mode_name(other)
+                    ),
+                )
+            }
+        };
+        let needed = gl_primitives::edge_flagged_count(triangles);
+        let Ok(needed) = u32::try_from(needed) else {
+            return fail(
+                FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                format!(
+                    "{f}: count {count} of mode {} makes {needed} indices, more than written (a uint32_t) holds: expected a count whose indices number at most {}",
+                    mode_name(mode),
+                    u32::MAX
+                ),
+            );
+        };
+        // SAFETY: checked non-null; writable by the caller's contract.
+        unsafe { written.write(needed) };
+        if out.is_null() {
+            return FfvkResult::FFVK_SUCCESS;
+        }
+        if capacity < needed {
+            return fail(
+                FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                format!("{f}: capacity {capacity} is too small: expected at least {needed}"),
+            );
+        }
+        let input: &[u32] = if count == 0 {
+            &[]
+        } else {
+            // SAFETY: the caller's contract: count values at vertices (checked non-null above).
+            unsafe { std::slice::from_raw_parts(vertices, count as usize) }
+        };
+        let flags: Option<&[u8]> = if edge_flags.is_null() || flag_count == 0 {
+            None
+        } else {
+            // SAFETY: the caller's contract: flag_count flags at edge_flags.
+            Some(unsafe { std::slice::from_raw_parts(edge_flags, flag_count as usize) })
+        };
+        if !edge_flags.is_null() || flag_count > 0 {
+            let have = flags.map_or(0, <[u8]>::len);
+            if let Some(&v) = input.iter().find(|&&v| v as usize >= have) {
+                return fail(
+                    FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                    format!(
+                        "{f}: vertex number {v} has no edge flag: expected every vertex number below flag_count {flag_count} (edge_flags {})",
+                        if edge_flags.is_null() { "null" } else { "given" }
+                    ),
+                );
+            }
+        }
+        let flag = move |v: u32| flags.is_none_or(|f| f[v as usize] != 0);
+        // Written straight into the caller's room, which holds capacity >= needed values.
+        // SAFETY: out has room for `needed` values; each iterator yields exactly `needed`.
+        unsafe {
+            match mode {
+                GL_TRIANGLES => fill(out, gl_primitives::triangles_edge_flagged_iter(input, flag)),
+                GL_QUADS => fill(out, gl_primitives::quads_edge_flagged_iter(input, flag)),
+                GL_QUAD_STRIP => fill(out, gl_primitives::quad_strip_edge_flagged_iter(input)),
+                _ => fill(out, gl_primitives::polygon_edge_flagged_iter(input, flag)),
+            }
+        }
+        FfvkResult::FFVK_SUCCESS
+    })
+}
+
 /// Writes each index of `indices` to `out`, one after another.
 ///
 /// # Safety

@@ -491,6 +491,24 @@ pub unsafe extern "C" fn ffvkGetBooleanv(ctx: *mut FfvkContext, pname: u32, para
     })
 }
 
+/// glGetPolygonStipple: the polygon stipple's 128 bytes as `ffvkPolygonStipple` takes them
+/// (GL's default pixel storage); all ones until set. Errors: `GL_INVALID_VALUE` for a null
+/// `mask`. Nothing is written when an error is set.
+///
+/// # Safety
+///
+/// `ctx` is null or a live context used by one thread at a time; `mask` is null or has room
+/// for 128 bytes.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkGetPolygonStipple(ctx: *mut FfvkContext, mask: *mut u8) {
+    let f = "ffvkGetPolygonStipple";
+    with_context(ctx, f, |c| {
+        let pattern = c.gl.raster.polygon_stipple_mask;
+        // SAFETY: the caller's contract on mask.
+        unsafe { write_named(f, "mask", mask, &pattern) }
+    })
+}
+
 /// glGetClipPlane: the plane's equation as stored, in eye space (four doubles). Errors:
 /// `GL_INVALID_ENUM` for another `plane`; `GL_INVALID_VALUE` for a null `equation`. Nothing is
 /// written when an error is set.

@@ -8,8 +8,8 @@ use ffvk::ash::{self, ext, vk};
 
 use crate::render::{
     FFVK_FEATURE_CLIP_DISTANCE, FFVK_FEATURE_DYNAMIC_RENDERING, FFVK_FEATURE_FILL_MODE_NON_SOLID,
-    FFVK_FEATURE_LARGE_POINTS, FFVK_FEATURE_LOGIC_OP, FFVK_FEATURE_PROVOKING_VERTEX_LAST,
-    FFVK_FEATURE_STIPPLED_LINES, FFVK_FEATURE_WIDE_LINES,
+    FFVK_FEATURE_GEOMETRY_SHADER, FFVK_FEATURE_LARGE_POINTS, FFVK_FEATURE_LOGIC_OP,
+    FFVK_FEATURE_PROVOKING_VERTEX_LAST, FFVK_FEATURE_STIPPLED_LINES, FFVK_FEATURE_WIDE_LINES,
 };
 use crate::result::{check_ptr, fail, guard, misaligned, FfvkResult};
 use crate::vk_types::*;
@@ -121,6 +121,7 @@ struct Support {
     clip_distance: bool,
     fill_mode_non_solid: bool,
     logic_op: bool,
+    geometry_shader: bool,
     /// `VK_EXT_line_rasterization` listed, with `bresenhamLines` and `stippledBresenhamLines`.
     stippled_lines: bool,
     /// The extension alone.
@@ -189,6 +190,7 @@ unsafe fn query(
         clip_distance,
         fill_mode_non_solid: base.fill_mode_non_solid == vk::TRUE,
         logic_op: base.logic_op == vk::TRUE,
+        geometry_shader: base.geometry_shader == vk::TRUE,
         stippled_lines: lines_extension && bresenham && stippled,
         lines_extension,
         lines_lacking,
@@ -393,6 +395,11 @@ pub unsafe extern "C" fn ffvkDeviceRequirements(
         } else {
             missing.push("FFVK_FEATURE_FILL_MODE_NON_SOLID (the device lacks fillModeNonSolid; polygon modes GL_LINE and GL_POINT are refused)".into());
         }
+        if support.geometry_shader {
+            bits |= FFVK_FEATURE_GEOMETRY_SHADER;
+        } else {
+            missing.push("FFVK_FEATURE_GEOMETRY_SHADER (the device lacks geometryShader; draws of GL_TRIANGLES_ADJACENCY, GL's edge flags, are refused)".into());
+        }
         if support.logic_op {
             bits |= FFVK_FEATURE_LOGIC_OP;
         } else {
@@ -488,6 +495,9 @@ pub unsafe extern "C" fn ffvkDeviceRequirements(
             }
             if support.logic_op {
                 (*features).features.logic_op = vk::TRUE;
+            }
+            if support.geometry_shader {
+                (*features).features.geometry_shader = vk::TRUE;
             }
         }
         fail(FfvkResult::FFVK_SUCCESS, message)

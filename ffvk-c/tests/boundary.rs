@@ -554,6 +554,15 @@ fn context_calls() -> Vec<(&'static str, ContextCall)> {
             e("ffvkPolygonMode", |c| ffvkPolygonMode(c, FRONT, 0x1B01)),
             e("ffvkPolygonOffset", |c| ffvkPolygonOffset(c, 1.0, 1.0)),
             e("ffvkEdgeFlag", |c| ffvkEdgeFlag(c, 0)),
+            e("ffvkPolygonStipple", |c| {
+                ffvkPolygonStipple(c, [0x55u8; 128].as_ptr())
+            }),
+            e("ffvkFramebufferHeight", |c| ffvkFramebufferHeight(c, 480)),
+            e("ffvkGetPolygonStipple", |c| {
+                let mut b = [0xA5u8; 128];
+                ffvkGetPolygonStipple(c, b.as_mut_ptr());
+                assert!(b.iter().all(|&v| v == 0xA5), "{b:?}");
+            }),
             e("ffvkLineStipple", |c| ffvkLineStipple(c, 2, 0x00FF)),
             e("ffvkDepthRange", |c| ffvkDepthRange(c, 0.0, 0.5)),
             e("ffvkStencilFunc", |c| ffvkStencilFunc(c, 0x0202, 1, 0xFF)),
@@ -2049,15 +2058,15 @@ fn create_renderer_with_no_frames_in_flight_is_invalid_argument() {
 #[test]
 fn create_renderer_with_unknown_feature_bits_is_invalid_argument() {
     for bits in [
-        0x200u32,
+        0x400u32,
         0x8000_0000,
         u32::MAX,
-        FFVK_FEATURE_DYNAMIC_RENDERING | 0x100,
+        FFVK_FEATURE_DYNAMIC_RENDERING | 0x200,
     ] {
         let mut info = create_info();
         info.enabled_features = bits;
         let shown = format!("enabled_features 0x{bits:X} has unknown bits");
-        assert_create_refused(&info, &[&shown, "expected FFVK_FEATURE_* flags (0xFF)"]);
+        assert_create_refused(&info, &[&shown, "expected FFVK_FEATURE_* flags (0x1FF)"]);
     }
 }
 
@@ -2917,4 +2926,127 @@ fn get_mesh_arrays_refuses_a_null_or_misaligned_mesh_or_arrays_naming_which() {
         ffvkDestroyMesh(mesh);
     }
     assert_eq!(bytes, [0; 8]);
+}
+
+// ---------------------------------------------------------------------------------------
+// GL's polygons with their edge flags.
+
+/// `ffvkEdgeFlaggedIndices` asked for its size, then filled.
+fn edge_flagged_indices(mode: u32, vertices: &[u32], flags: Option<&[u8]>) -> Vec<u32> {
+    let count = vertices.len() as u32;
+    let (flag_ptr, flag_count) = flags.map_or((null(), 0), |f| (f.as_ptr(), f.len() as u32));
+    let mut written = u32::MAX;
+    // SAFETY: vertices points at count values, the flags at flag_count; out is null (the size).
+    let r = unsafe {
+        ffvkEdgeFlaggedIndices(
+            mode,
+            vertices.as_ptr(),
+            count,
+            flag_ptr,
+            flag_count,
+            null_mut(),
+            0,
+            &mut written,
+        )
+    };
+    assert_eq!(r, FfvkResult::FFVK_SUCCESS, "{}", message());
+    let mut out = vec![u32::MAX; written as usize + 2];
+    let mut again = u32::MAX;
+    // SAFETY: out has room for `written` values (and two more, which must stay untouched).
+    let r = unsafe {
+        ffvkEdgeFlaggedIndices(
+            mode,
+            vertices.as_ptr(),
+            count,
+            flag_ptr,
+            flag_count,
+            out.as_mut_ptr(),
+            written,
+            &mut again,
+        )
+    };
+    assert_eq!(r, FfvkResult::FFVK_SUCCESS, "{}", message());
+    assert_eq!(again, written);
+    assert_eq!(out[written as usize..], [u32::MAX; 2], "written past the count");
+    out.truncate(written as usize);
+    out
+}
+
+#[test]
+fn edge_flagged_indices_are_the_primitive_indices_triangles_with_their_boundary_edges_marked() {
+    const TRIANGLES: u32 = 0x0004;
+    const QUAD_STRIP: u32 = 0x0008;
+    const POLYGON: u32 = 0x0009;
+    let v: Vec<u32> = (20..29).collect();
+    for mode in [TRIANGLES, QUADS, QUAD_STRIP, POLYGON] {
+        let flagged = edge_flagged_indices(mode, &v, None);
+        let (triangles, draw_mode) = primitive_indices(mode, &v);
+        assert_eq!(draw_mode, TRIANGLES);
+        let corners: Vec<u32> = flagged.chunks(2).map(|p| p[0]).collect();
+        assert_eq!(corners, triangles, "mode {mode}: the same triangles");
+    }
+    // Two quads: each with its four sides and no diagonal; a flag of zero hides the side
+    // that starts at its vertex (here 21, then 24).
+    let quads: Vec<u32> = (20..28).collect();
+    let mut flags = vec![1u8; 28];
+    flags[21] = 0;
+    flags[24] = 0;
+    assert_eq!(
+        edge_flagged_indices(QUADS, &quads, Some(&flags))[..12],
+        [20, 20, 21, 23, 23, 23, 21, 22, 22, 22, 23, 21],
+        "quad 20-23: 20-21, 23-20 from the first triangle; 22-23 from the second; 21-22 hidden"
+    );
+    assert_eq!(
+        edge_flagged_indices(QUADS, &quads, None),
+        ffvk::draw::gl_primitives::quads_edge_flagged(&quads, |_| true)
+    );
+}
+
+#[test]
+fn edge_flagged_indices_refuse_other_modes_missing_flags_and_small_rooms_writing_nothing() {
+    let v = [0u32, 1, 2, 3, 4, 5, 6, 7];
+    let mut out = [u32::MAX; 32];
+    let mut written = 0u32;
+    let mut call = |mode: u32, flags: &[u8], capacity: u32, out: &mut [u32; 32]| {
+        // SAFETY: 8 vertex numbers; the flags as given; out has room for 32.
+        unsafe {
+            ffvkEdgeFlaggedIndices(
+                mode,
+                v.as_ptr(),
+                8,
+                if flags.is_empty() { null() } else { flags.as_ptr() },
+                flags.len() as u32,
+                out.as_mut_ptr(),
+                capacity,
+                &mut written,
+            )
+        }
+    };
+    assert_eq!(
+        call(0x0005, &[], 32, &mut out),
+        FfvkResult::FFVK_ERROR_INVALID_ARGUMENT
+    );
+    assert_names(
+        &message(),
+        &[
+            "ffvkEdgeFlaggedIndices: mode GL_TRIANGLE_STRIP (0x0005) has no edge flags",
+            "GL_QUADS",
+        ],
+    );
+    assert_eq!(
+        call(QUADS, &[1; 6], 32, &mut out),
+        FfvkResult::FFVK_ERROR_INVALID_ARGUMENT
+    );
+    assert_names(
+        &message(),
+        &["vertex number 6 has no edge flag", "below flag_count 6"],
+    );
+    assert_eq!(
+        call(QUADS, &[], 23, &mut out),
+        FfvkResult::FFVK_ERROR_INVALID_ARGUMENT
+    );
+    assert_names(&message(), &["capacity 23 is too small", "expected at least 24"]);
+    assert_eq!(out, [u32::MAX; 32], "nothing written on a refusal");
+    assert_eq!(call(QUADS, &[], 24, &mut out), FfvkResult::FFVK_SUCCESS);
+    assert_eq!(written, 24);
 }

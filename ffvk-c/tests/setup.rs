@@ -27,6 +27,7 @@ struct Device {
     clip_distance: bool,
     fill_mode_non_solid: bool,
     logic_op: bool,
+    geometry_shader: bool,
     lines_extension: bool,
     bresenham_lines: bool,
     stippled_bresenham_lines: bool,
@@ -42,6 +43,7 @@ const FULL: Device = Device {
     clip_distance: true,
     fill_mode_non_solid: true,
     logic_op: true,
+    geometry_shader: true,
     lines_extension: true,
     bresenham_lines: true,
     stippled_bresenham_lines: true,
@@ -111,6 +113,7 @@ unsafe extern "system" fn get_features2(_: vk::PhysicalDevice, features: *mut vk
         (*features).features.shader_clip_distance = bool32(d.clip_distance);
         (*features).features.fill_mode_non_solid = bool32(d.fill_mode_non_solid);
         (*features).features.logic_op = bool32(d.logic_op);
+        (*features).features.geometry_shader = bool32(d.geometry_shader);
         let mut node = (*features).p_next.cast::<vk::BaseOutStructure>();
         while !node.is_null() {
             match (*node).s_type {
@@ -236,6 +239,7 @@ impl Chain {
             && self.features.features.shader_clip_distance == vk::FALSE
             && self.features.features.fill_mode_non_solid == vk::FALSE
             && self.features.features.logic_op == vk::FALSE
+            && self.features.features.geometry_shader == vk::FALSE
             && self.lines.bresenham_lines == vk::FALSE
             && self.lines.stippled_bresenham_lines == vk::FALSE
     }
@@ -296,7 +300,8 @@ const ALL: u32 = FFVK_FEATURE_DYNAMIC_RENDERING
     | FFVK_FEATURE_CLIP_DISTANCE
     | FFVK_FEATURE_FILL_MODE_NON_SOLID
     | FFVK_FEATURE_LOGIC_OP
-    | FFVK_FEATURE_STIPPLED_LINES;
+    | FFVK_FEATURE_STIPPLED_LINES
+    | FFVK_FEATURE_GEOMETRY_SHADER;
 
 #[test]
 fn a_device_with_everything_gets_every_feature_set_the_extension_listed_and_every_bit() {
@@ -318,6 +323,7 @@ fn a_device_with_everything_gets_every_feature_set_the_extension_listed_and_ever
     assert_eq!(chain.features.features.shader_clip_distance, vk::TRUE);
     assert_eq!(chain.features.features.fill_mode_non_solid, vk::TRUE);
     assert_eq!(chain.features.features.logic_op, vk::TRUE);
+    assert_eq!(chain.features.features.geometry_shader, vk::TRUE);
     assert_eq!(
         (chain.lines.bresenham_lines, chain.lines.stippled_bresenham_lines),
         (vk::TRUE, vk::TRUE)
@@ -484,6 +490,24 @@ fn without_fill_mode_non_solid_or_logic_op_their_bits_are_missing_named_and_thei
         "ffvkDeviceRequirements: without FFVK_FEATURE_FILL_MODE_NON_SOLID (the device lacks fillModeNonSolid; \
          polygon modes GL_LINE and GL_POINT are refused), without FFVK_FEATURE_LOGIC_OP (the device lacks \
          logicOp; draws with GL_COLOR_LOGIC_OP are refused)"
+    );
+}
+
+#[test]
+fn without_geometry_shader_its_bit_is_missing_named_and_its_feature_left_off() {
+    let device = Device {
+        geometry_shader: false,
+        ..FULL
+    };
+    let mut chain = Chain::new(true);
+    let a = ask(device, &mut chain, Some(FFVK_MAX_DEVICE_EXTENSIONS));
+    assert_eq!(a.result, FfvkResult::FFVK_SUCCESS, "{}", a.message);
+    assert_eq!(a.bits, ALL & !FFVK_FEATURE_GEOMETRY_SHADER);
+    assert_eq!(chain.features.features.geometry_shader, vk::FALSE);
+    assert_eq!(
+        a.message,
+        "ffvkDeviceRequirements: without FFVK_FEATURE_GEOMETRY_SHADER (the device lacks geometryShader; \
+         draws of GL_TRIANGLES_ADJACENCY, GL's edge flags, are refused)"
     );
 }
 

@@ -18,6 +18,7 @@ const GL_SMOOTH: u32 = 0x1D01;
 const GL_LINES: u32 = 0x0001;
 const GL_TRIANGLES: u32 = 0x0004;
 const GL_QUADS: u32 = 0x0007;
+const GL_TRIANGLES_ADJACENCY: u32 = 0x000C;
 
 fn message() -> String {
     // SAFETY: ffvkResultMessage never returns null; the string is valid until the next call.
@@ -169,6 +170,15 @@ fn a_draw_the_device_or_the_state_cannot_take_is_refused_at_ffvk_draw_and_the_sc
         let quads = ffvkDraw(r, ctx, &draw_info(GL_QUADS, &buffer, raster));
         assert_eq!(quads, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
         assert!(message().contains("ffvkPrimitiveIndices"), "{}", message());
+        // GL's edge flags (GL_TRIANGLES_ADJACENCY, ffvkEdgeFlaggedIndices' lists) without
+        // geometryShader.
+        let edges = ffvkDraw(r, ctx, &draw_info(GL_TRIANGLES_ADJACENCY, &buffer, raster));
+        assert_eq!(edges, FfvkResult::FFVK_ERROR_MISSING_FEATURE, "{}", message());
+        assert!(
+            message().contains("FFVK_FEATURE_GEOMETRY_SHADER"),
+            "{}",
+            message()
+        );
 
         // Nothing was added: the scope closes recording nothing, and opens again.
         assert_eq!(ffvkEndDraws(r), FfvkResult::FFVK_SUCCESS, "{}", message());
@@ -251,6 +261,25 @@ fn a_version_3_draw_takes_the_contexts_raster_state_as_it_is_when_the_draw_is_is
         assert!(message().contains("fillModeNonSolid"), "{}", message());
         assert_eq!(ffvkDraw(r, ctx, &own), FfvkResult::FFVK_SUCCESS, "{}", message());
         ffvkPolygonMode(ctx, GL_FRONT_AND_BACK, GL_FILL);
+
+        // GL_POLYGON_STIPPLE counts its rows from the framebuffer's bottom: without the
+        // framebuffer's height the draw is refused, naming the call that gives it.
+        const GL_POLYGON_STIPPLE: u32 = 0x0B42;
+        let checks = [0xAAu8; 128];
+        ffvkPolygonStipple(ctx, checks.as_ptr());
+        ffvkEnable(ctx, GL_POLYGON_STIPPLE);
+        assert_eq!(ffvkDraw(r, ctx, &from_context), FfvkResult::FFVK_ERROR_STATE);
+        assert!(message().contains("ffvkFramebufferHeight"), "{}", message());
+        ffvkFramebufferHeight(ctx, 0);
+        assert_eq!(ffvkGetError(ctx), 0x0501, "GL_INVALID_VALUE for a height of 0");
+        ffvkFramebufferHeight(ctx, 64);
+        assert_eq!(
+            ffvkDraw(r, ctx, &from_context),
+            FfvkResult::FFVK_SUCCESS,
+            "{}",
+            message()
+        );
+        ffvkDisable(ctx, GL_POLYGON_STIPPLE);
 
         // The state at this ffvkDraw, not at the scope's start: drawable again.
         ffvkColorMask(ctx, 0, 1, 1, 1);

@@ -113,6 +113,8 @@ enum Call {
     PolygonOffset(f32, f32),
     EdgeFlag(u8),
     LineStipple(i32, u16),
+    /// glPolygonStipple's 128 bytes.
+    PolygonStipple(Vec<u8>),
     DepthRange(f64, f64),
     StencilFunc(u32, i32, u32),
     StencilFuncSeparate(u32, u32, i32, u32),
@@ -148,6 +150,7 @@ enum Query {
     GetBooleanv(u32, usize),
     GetTexEnvfv(u32, u32, usize),
     GetClipPlane(u32),
+    GetPolygonStipple,
     GetTexEnviv(u32, u32, usize),
     IsEnabled(u32),
 }
@@ -309,6 +312,7 @@ impl Gl for Ffvk {
                 Call::PolygonOffset(f, u) => ffvkPolygonOffset(c, *f, *u),
                 Call::EdgeFlag(f) => ffvkEdgeFlag(c, *f),
                 Call::LineStipple(f, p) => ffvkLineStipple(c, *f, *p),
+                Call::PolygonStipple(m) => ffvkPolygonStipple(c, m.as_ptr()),
                 Call::DepthRange(n, f) => ffvkDepthRange(c, *n, *f),
                 Call::StencilFunc(f, r, m) => ffvkStencilFunc(c, *f, *r, *m),
                 Call::StencilFuncSeparate(s, f, r, m) => ffvkStencilFuncSeparate(c, *s, *f, *r, *m),
@@ -361,6 +365,11 @@ impl Gl for Ffvk {
                     let mut d = [UNWRITTEN; 4];
                     ffvkGetClipPlane(c, p, d.as_mut_ptr());
                     d.to_vec()
+                }
+                Query::GetPolygonStipple => {
+                    let mut m = [0x5Au8; 128];
+                    ffvkGetPolygonStipple(c, m.as_mut_ptr());
+                    m.map(f64::from).to_vec()
                 }
                 Query::IsEnabled(cap) => vec![ffvkIsEnabled(c, cap) as f64],
             }
@@ -458,6 +467,7 @@ impl Gl for Mesa<'_> {
                 Call::PolygonOffset(f, u) => gl.PolygonOffset(*f, *u),
                 Call::EdgeFlag(f) => gl.EdgeFlag(*f),
                 Call::LineStipple(f, p) => gl.LineStipple(*f, *p),
+                Call::PolygonStipple(m) => gl.PolygonStipple(m.as_ptr()),
                 Call::DepthRange(n, f) => gl.DepthRange(*n, *f),
                 Call::StencilFunc(f, r, m) => gl.StencilFunc(*f, *r, *m),
                 Call::StencilFuncSeparate(s, f, r, m) => gl.StencilFuncSeparate(*s, *f, *r, *m),
@@ -508,6 +518,11 @@ impl Gl for Mesa<'_> {
                     let mut d = [UNWRITTEN; 4];
                     gl.GetClipPlane(p, d.as_mut_ptr());
                     d.to_vec()
+                }
+                Query::GetPolygonStipple => {
+                    let mut m = [0x5Au8; 128];
+                    gl.GetPolygonStipple(m.as_mut_ptr());
+                    m.map(f64::from).to_vec()
                 }
                 Query::IsEnabled(cap) => vec![gl.IsEnabled(cap) as f64],
             }

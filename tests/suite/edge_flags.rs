@@ -312,7 +312,7 @@ fn a_scene_mesh_of_quads_drawn_as_lines_keeps_its_edge_flags_and_takes_its_front
     frame.draws.push(draw);
     let direct = r.render(&frame).unwrap().into_rgba_image();
     assert!(lit_pixels(&direct) > 100, "{} lit", lit_pixels(&direct));
-    assert_eq!(compare(&image.clone().into(), &direct), (0, 0));
+    assert_eq!(compare(&image, &direct), (0, 0));
 
     let cw = load("front_face = \"cw\"\ncull_face = \"back\"").unwrap();
     let ccw = load("front_face = \"ccw\"\ncull_face = \"back\"").unwrap();
@@ -321,7 +321,7 @@ fn a_scene_mesh_of_quads_drawn_as_lines_keeps_its_edge_flags_and_takes_its_front
         ffvk::scene::render_scene(&mut r, &cw, None).unwrap(),
         ffvk::scene::render_scene(&mut r, &ccw, None).unwrap(),
     );
-    let (a, b): (RgbaImage, RgbaImage) = (a.into(), b.into());
+
     assert_ne!(a, b, "glFrontFace(GL_CW) culls the other faces");
     let e = load("front_face = \"clockwise\"").unwrap_err().to_string();
     assert!(

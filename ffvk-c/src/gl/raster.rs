@@ -15,6 +15,7 @@ pub(crate) fn raster_cap(cap: u32) -> Option<Cap> {
         GL_POLYGON_OFFSET_LINE => Cap::PolygonOffsetLine,
         GL_POLYGON_OFFSET_POINT => Cap::PolygonOffsetPoint,
         GL_LINE_STIPPLE => Cap::LineStipple,
+        GL_POLYGON_STIPPLE => Cap::PolygonStipple,
         GL_STENCIL_TEST => Cap::StencilTest,
         GL_COLOR_LOGIC_OP => Cap::ColorLogicOp,
         GL_BLEND => Cap::Blend,
@@ -141,6 +142,45 @@ pub unsafe extern "C" fn ffvkFrontFace(ctx: *mut FfvkContext, mode: u32) {
         let winding: FrontFace = gl_enum(F, "mode", mode)?;
         c.gl.front_face(winding);
         Ok(())
+    })
+}
+
+/// glPolygonStipple: the 32 × 32 pattern `GL_POLYGON_STIPPLE` applies to filled polygons, 128
+/// bytes as GL unpacks them with the default pixel storage: rows of 4 bytes from the bottom row
+/// up, the most significant bit of each byte leftmost (`GL_UNPACK_LSB_FIRST` false). A draw with
+/// the stipple on needs the framebuffer's height (`ffvkFramebufferHeight`). Errors:
+/// `GL_INVALID_VALUE` for a null `mask`.
+///
+/// # Safety
+///
+/// `ctx` is null or a live context used by one thread at a time; `mask` is null or points at
+/// 128 bytes.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkPolygonStipple(ctx: *mut FfvkContext, mask: *const u8) {
+    const F: &str = "ffvkPolygonStipple";
+    with_context(ctx, F, |c| {
+        // SAFETY: the caller's contract on mask.
+        let bytes = unsafe { super::read_named(F, "mask", mask, 128) }?;
+        let mut pattern = [0u8; 128];
+        pattern.copy_from_slice(bytes);
+        c.gl.polygon_stipple(&pattern);
+        Ok(())
+    })
+}
+
+/// The height in pixels of the framebuffer the context's draws render into (ffvk's call: a GL
+/// context knows its window's): GL counts `GL_POLYGON_STIPPLE`'s rows from the framebuffer's
+/// bottom, so a draw with the stipple on needs it (`FFVK_ERROR_STATE` at `ffvkDraw` otherwise).
+/// Call it when the framebuffer is made or resized. Errors: `GL_INVALID_VALUE` for 0.
+///
+/// # Safety
+///
+/// `ctx` is null or a live context used by one thread at a time.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkFramebufferHeight(ctx: *mut FfvkContext, height: u32) {
+    const F: &str = "ffvkFramebufferHeight";
+    with_context(ctx, F, |c| {
+        c.gl.framebuffer_height(height).map_err(|e| state_error(F, e))
     })
 }
 

@@ -24,6 +24,9 @@ pub const FFVK_FEATURE_LOGIC_OP: u32 = 64;
 /// `stippledBresenhamLines`: needed for `GL_LINE_STIPPLE` (`ffvkLineStipple`). With it every
 /// line and polygon outline is drawn as GL's aliased (diamond-exit) lines.
 pub const FFVK_FEATURE_STIPPLED_LINES: u32 = 128;
+/// `VkPhysicalDeviceFeatures::geometryShader`: needed for GL's edge flags (draws of mode
+/// `GL_TRIANGLES_ADJACENCY` from `ffvkEdgeFlaggedIndices`).
+pub const FFVK_FEATURE_GEOMETRY_SHADER: u32 = 256;
 
 /// Every bit this version knows.
 pub(crate) const KNOWN_FEATURES: u32 = FFVK_FEATURE_DYNAMIC_RENDERING
@@ -33,7 +36,8 @@ pub(crate) const KNOWN_FEATURES: u32 = FFVK_FEATURE_DYNAMIC_RENDERING
     | FFVK_FEATURE_CLIP_DISTANCE
     | FFVK_FEATURE_FILL_MODE_NON_SOLID
     | FFVK_FEATURE_LOGIC_OP
-    | FFVK_FEATURE_STIPPLED_LINES;
+    | FFVK_FEATURE_STIPPLED_LINES
+    | FFVK_FEATURE_GEOMETRY_SHADER;
 
 /// The features `bits` (checked for unknown bits before) say the caller enabled.
 pub(crate) fn enabled_features(bits: u32) -> EnabledFeatures {
@@ -47,4 +51,5 @@ pub(crate) fn enabled_features(bits: u32) -> EnabledFeatures {
         .with_fill_mode_non_solid(has(FFVK_FEATURE_FILL_MODE_NON_SOLID))
         .with_logic_op(has(FFVK_FEATURE_LOGIC_OP))
         .with_stippled_lines(has(FFVK_FEATURE_STIPPLED_LINES))
+        .with_geometry_shader(has(FFVK_FEATURE_GEOMETRY_SHADER))
 }

@@ -25,7 +25,12 @@ pub(crate) fn of_draw(
 ) -> Result<RasterState, FfvkResult> {
     match draw.raster_source {
         FFVK_RASTER_SOURCE_DRAW => Ok(raster(&draw.raster)),
-        FFVK_RASTER_SOURCE_CONTEXT => Ok(ctx.gl.raster_state()),
+        FFVK_RASTER_SOURCE_CONTEXT => ctx.gl.raster_state().map_err(|e| {
+            crate::result::fail(
+                FfvkResult::FFVK_ERROR_STATE,
+                format!("{function}: {e}"),
+            )
+        }),
         other => Err(invalid(format!(
             "{function}: raster_source {other} is not accepted: expected FFVK_RASTER_SOURCE_DRAW (0) or FFVK_RASTER_SOURCE_CONTEXT (1)"
         ))),

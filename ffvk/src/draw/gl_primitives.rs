@@ -105,21 +105,38 @@ pub fn line_loop_count(vertices: u64) -> u64 {
 ///
 /// [`Topology::EdgeFlaggedTriangles`]: crate::draw::record::Topology::EdgeFlaggedTriangles
 pub fn edge_flagged(triangles: &[u32], boundary: impl Fn(usize) -> [bool; 3]) -> Vec<u32> {
-    let mut out = Vec::with_capacity(triangles.len() / 3 * 6);
-    for (t, c) in triangles.chunks_exact(3).enumerate() {
+    edge_flagged_iter(triangles.iter().copied(), boundary).collect()
+}
+
+/// [`edge_flagged`] one index at a time, allocating nothing.
+pub fn edge_flagged_iter(
+    mut triangles: impl Iterator<Item = u32>,
+    boundary: impl Fn(usize) -> [bool; 3],
+) -> impl Iterator<Item = u32> {
+    let mut t = 0;
+    std::iter::from_fn(move || {
+        let c = [triangles.next()?, triangles.next()?, triangles.next()?];
         let b = boundary(t);
-        for e in 0..3 {
-            out.extend([c[e], if b[e] { c[e] } else { c[(e + 1) % 3] }]);
-        }
-    }
-    out
+        t += 1;
+        let a = |e: usize| if b[e] { c[e] } else { c[(e + 1) % 3] };
+        Some([c[0], a(0), c[1], a(1), c[2], a(2)])
+    })
+    .flatten()
 }
 
 /// `GL_TRIANGLES` with GL's per-vertex edge flags: each vertex's `flag` (glEdgeFlag, or
 /// the edge flag array at that vertex's index) says whether the edge that starts at it is a
 /// boundary edge. Six indices per triangle ([`edge_flagged`]).
 pub fn triangles_edge_flagged(vertices: &[u32], flag: impl Fn(u32) -> bool) -> Vec<u32> {
-    edge_flagged(vertices, |t| {
+    triangles_edge_flagged_iter(vertices, flag).collect()
+}
+
+/// [`triangles_edge_flagged`] one index at a time, allocating nothing.
+pub fn triangles_edge_flagged_iter<'a>(
+    vertices: &'a [u32],
+    flag: impl Fn(u32) -> bool + 'a,
+) -> impl Iterator<Item = u32> + 'a {
+    edge_flagged_iter(vertices.iter().copied(), move |t| {
         let v = &vertices[3 * t..3 * t + 3];
         [flag(v[0]), flag(v[1]), flag(v[2])]
     })
@@ -129,8 +146,15 @@ pub fn triangles_edge_flagged(vertices: &[u32], flag: impl Fn(u32) -> bool) -> V
 /// sides taking their first vertex's `flag` (GL's edge flags: a quad drawn with `GL_LINE`
 /// shows its outline). Six indices per triangle ([`edge_flagged`]).
 pub fn quads_edge_flagged(vertices: &[u32], flag: impl Fn(u32) -> bool) -> Vec<u32> {
-    let triangles = quads(vertices);
-    edge_flagged(&triangles, |t| {
+    quads_edge_flagged_iter(vertices, flag).collect()
+}
+
+/// [`quads_edge_flagged`] one index at a time, allocating nothing.
+pub fn quads_edge_flagged_iter<'a>(
+    vertices: &'a [u32],
+    flag: impl Fn(u32) -> bool + 'a,
+) -> impl Iterator<Item = u32> + 'a {
+    edge_flagged_iter(quads_iter(vertices), move |t| {
         let q = &vertices[4 * (t / 2)..4 * (t / 2) + 4];
         // (v0, v1, v3): v0-v1, the diagonal, v3-v0; (v1, v2, v3): v1-v2, v2-v3, the diagonal.
         if t % 2 == 0 {
@@ -144,10 +168,14 @@ pub fn quads_edge_flagged(vertices: &[u32], flag: impl Fn(u32) -> bool) -> Vec<u
 /// `GL_QUAD_STRIP` as [`quad_strip`] makes it, each quad's diagonal an inner edge. GL applies
 /// no edge flags to strips: every side of every quad is a boundary edge.
 pub fn quad_strip_edge_flagged(vertices: &[u32]) -> Vec<u32> {
-    let triangles = quad_strip(vertices);
+    quad_strip_edge_flagged_iter(vertices).collect()
+}
+
+/// [`quad_strip_edge_flagged`] one index at a time, allocating nothing.
+pub fn quad_strip_edge_flagged_iter(vertices: &[u32]) -> impl Iterator<Item = u32> + '_ {
     // (v2i, v2i+1, v2i+3): bottom, right, the diagonal; (v2i+2, v2i, v2i+3): left, the
     // diagonal, top.
-    edge_flagged(&triangles, |t| {
+    edge_flagged_iter(quad_strip_iter(vertices), |t| {
         if t % 2 == 0 {
             [true, true, false]
         } else {
@@ -159,9 +187,16 @@ pub fn quad_strip_edge_flagged(vertices: &[u32]) -> Vec<u32> {
 /// `GL_POLYGON` as [`polygon`] makes it, the fan's inner edges inner and the polygon's sides
 /// taking their first vertex's `flag`. Six indices per triangle ([`edge_flagged`]).
 pub fn polygon_edge_flagged(vertices: &[u32], flag: impl Fn(u32) -> bool) -> Vec<u32> {
-    let triangles = polygon(vertices);
-    let last = triangles.len() / 3;
-    edge_flagged(&triangles, |t| {
+    polygon_edge_flagged_iter(vertices, flag).collect()
+}
+
+/// [`polygon_edge_flagged`] one index at a time, allocating nothing.
+pub fn polygon_edge_flagged_iter<'a>(
+    vertices: &'a [u32],
+    flag: impl Fn(u32) -> bool + 'a,
+) -> impl Iterator<Item = u32> + 'a {
+    let last = vertices.len().saturating_sub(2);
+    edge_flagged_iter(polygon_iter(vertices), move |t| {
         // (v_t+1, v_t+2, v0): a side; the side v_n-1 to v0 on the last; v0 to v1 on the first.
         [
             flag(vertices[t + 1]),

@@ -7,6 +7,10 @@
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum StateError {
+    /// `GL_POLYGON_STIPPLE` on while the framebuffer's height is unknown: GL counts the
+    /// stipple's rows from the framebuffer's bottom, and Vulkan's fragments count from its top.
+    #[error("GL_POLYGON_STIPPLE is enabled but the framebuffer's height is unknown: expected GlState::framebuffer_height (ffvkFramebufferHeight) first, since GL counts the stipple's rows from the framebuffer's bottom")]
+    NoFramebufferHeight,
     /// GL's `INVALID_VALUE`: a finite value outside the parameter's range. Also used for a
     /// state that is in range but cannot be drawn (see [`DrawBlock::new`]).
     ///

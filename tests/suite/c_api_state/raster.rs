@@ -40,11 +40,12 @@ const NAND: u32 = 0x150E;
 const CW: u32 = 0x0900;
 
 /// The raster caps.
-pub(super) const CAPS: [u32; 9] = [
+pub(super) const CAPS: [u32; 10] = [
     0x8037, // GL_POLYGON_OFFSET_FILL
     0x2A02, // GL_POLYGON_OFFSET_LINE
     0x2A01, // GL_POLYGON_OFFSET_POINT
     0x0B24, // GL_LINE_STIPPLE
+    0x0B42, // GL_POLYGON_STIPPLE
     0x0B90, // GL_STENCIL_TEST
     0x0BF2, // GL_COLOR_LOGIC_OP
     0x0BE2, // GL_BLEND
@@ -124,6 +125,12 @@ pub(super) fn sequences() -> Vec<(String, Vec<Step>)> {
         (
             "glLineStipple(-5, ..) (clamped to 1)",
             vec![LineStipple(-5, 0x0F0F)],
+        ),
+        (
+            "glPolygonStipple(a pattern of every byte value)",
+            vec![PolygonStipple(
+                (0..128u8).map(|b| b.wrapping_mul(37) ^ 0xA5).collect(),
+            )],
         ),
         ("glDepthRange(0.25, 0.75)", vec![DepthRange(0.25, 0.75)]),
         ("glDepthRange(-1, 2) (clamped)", vec![DepthRange(-1.0, 2.0)]),
@@ -271,6 +278,7 @@ pub(super) fn sequences() -> Vec<(String, Vec<Step>)> {
                 steps.push(Step::Query(Query::GetBooleanv(pname, n)));
             }
             steps.extend(CAPS.map(|cap| Step::Query(Query::IsEnabled(cap))));
+            steps.push(Step::Query(Query::GetPolygonStipple));
             (name.to_string(), steps)
         })
         .collect()

@@ -42,6 +42,8 @@ pub enum Cap {
     PolygonOffsetPoint,
     /// `GL_LINE_STIPPLE`: lines are stippled ([`RasterGl::line_stipple`]).
     LineStipple,
+    /// `GL_POLYGON_STIPPLE`: filled polygons are stippled ([`RasterGl::polygon_stipple`]).
+    PolygonStipple,
     /// `GL_STENCIL_TEST`.
     StencilTest,
     /// `GL_COLOR_LOGIC_OP`: the logic op replaces blending.

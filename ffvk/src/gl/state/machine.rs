@@ -217,6 +217,7 @@ impl GlState {
             | Cap::PolygonOffsetLine
             | Cap::PolygonOffsetPoint
             | Cap::LineStipple
+            | Cap::PolygonStipple
             | Cap::StencilTest
             | Cap::ColorLogicOp
             | Cap::Blend

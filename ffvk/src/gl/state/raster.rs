@@ -14,7 +14,7 @@
 //! gl.stencil_func(CompareFunc::Equal, 300, 0xFF);
 //! gl.stencil_op(StencilOp::Keep, StencilOp::Keep, StencilOp::Incr);
 //! gl.color_mask(false, true, true, true);
-//! let raster = gl.raster_state();
+//! let raster = gl.raster_state()?;
 //! let stencil = raster.stencil.expect("the stencil test is on");
 //! // GL clamps the reference to the 8-bit stencil buffer's range when it tests.
 //! assert_eq!(stencil.front.reference, 255);
@@ -30,6 +30,7 @@ use ash::vk;
 use glam::Vec4;
 
 use super::{finite_vec, Cap, CompareFunc, Face, GlState, StateError};
+use crate::draw::pipeline::PolygonStipple;
 use crate::{Blend, BlendColor, LineStipple, PolygonModes, PolygonOffset, RasterState, Stencil, StencilFace};
 
 /// A GL enum type: its values as `<GL/gl.h>` spells them, for the C API's parameters and queries.
@@ -336,6 +337,15 @@ pub struct RasterGl {
     pub line_stipple_repeat: u32,
     /// `GL_LINE_STIPPLE_PATTERN`; all ones (0xFFFF) by default.
     pub line_stipple_pattern: u16,
+    /// `GL_POLYGON_STIPPLE`; off by default.
+    pub polygon_stipple: bool,
+    /// glPolygonStipple's pattern as GL unpacks it (default pixel storage: rows of 4 bytes from
+    /// the bottom row up, the most significant bit of each byte leftmost); all ones by default.
+    pub polygon_stipple_mask: [u8; 128],
+    /// The height of the framebuffer draws render into, in pixels (ffvk's; GL knows its
+    /// window's): GL counts the polygon stipple's rows from the framebuffer's bottom. `None`
+    /// until set; a draw with `GL_POLYGON_STIPPLE` on needs it.
+    pub framebuffer_height: Option<u32>,
     /// `GL_STENCIL_TEST`; off by default.
     pub stencil_test: bool,
     /// The front faces' stencil state (also points' and lines').
@@ -404,6 +414,9 @@ impl Default for RasterGl {
             line_stipple: false,
             line_stipple_repeat: 1,
             line_stipple_pattern: 0xFFFF,
+            polygon_stipple: false,
+            polygon_stipple_mask: [0xFF; 128],
+            framebuffer_height: None,
             stencil_test: false,
             stencil_front: StencilGl::default(),
             stencil_back: StencilGl::default(),
@@ -441,6 +454,7 @@ impl RasterGl {
             Cap::PolygonOffsetLine => &mut self.polygon_offset_line,
             Cap::PolygonOffsetPoint => &mut self.polygon_offset_point,
             Cap::LineStipple => &mut self.line_stipple,
+            Cap::PolygonStipple => &mut self.polygon_stipple,
             Cap::StencilTest => &mut self.stencil_test,
             Cap::ColorLogicOp => &mut self.color_logic_op,
             Cap::Blend => &mut self.blend,
@@ -459,8 +473,8 @@ impl RasterGl {
     /// The draw's raster state under this GL state: each disabled test, blend, logic op,
     /// offset or stipple `None`, culling `NONE` unless `GL_CULL_FACE` is on, the stencil
     /// reference clamped ([`StencilGl::clamped_reference`]). The one place each GL value
-    /// becomes Vulkan's.
-    pub fn to_raster_state(&self) -> RasterState {
+    /// becomes Vulkan's. Errors: `GL_POLYGON_STIPPLE` on without the framebuffer's height.
+    pub fn to_raster_state(&self) -> Result<RasterState, StateError> {
         let mut r = RasterState::default()
             .with_point_size(self.point_size)
             .with_line_width(self.line_width);
@@ -525,7 +539,11 @@ impl RasterGl {
             factor: self.line_stipple_repeat,
             pattern: self.line_stipple_pattern,
         });
-        r
+        if self.polygon_stipple {
+            let height = self.framebuffer_height.ok_or(StateError::NoFramebufferHeight)?;
+            r.polygon_stipple = Some(PolygonStipple::from_gl_mask(&self.polygon_stipple_mask, height));
+        }
+        Ok(r)
     }
 
     /// The stencil faces `face` selects.
@@ -552,8 +570,9 @@ fn positive(parameter: &'static str, value: f32) -> Result<f32, StateError> {
 }
 
 impl GlState {
-    /// GL's raster state as a draw takes it: [`RasterGl::to_raster_state`].
-    pub fn raster_state(&self) -> RasterState {
+    /// GL's raster state as a draw takes it: [`RasterGl::to_raster_state`]. Errors: a polygon
+    /// stipple without the framebuffer's height ([`GlState::framebuffer_height`]).
+    pub fn raster_state(&self) -> Result<RasterState, StateError> {
         self.raster.to_raster_state()
     }
 
@@ -574,6 +593,27 @@ impl GlState {
         finite_vec("GL_POLYGON_OFFSET_UNITS", &[units])?;
         self.raster.polygon_offset_factor = factor;
         self.raster.polygon_offset_units = units;
+        Ok(())
+    }
+
+    /// glPolygonStipple: the 32 × 32 pattern of filled polygons, as GL unpacks `mask` with the
+    /// default pixel storage (rows of 4 bytes from the bottom row up, the most significant bit
+    /// of each byte leftmost).
+    pub fn polygon_stipple(&mut self, mask: &[u8; 128]) {
+        self.raster.polygon_stipple_mask = *mask;
+    }
+
+    /// The height in pixels of the framebuffer the draws render into (GL knows its window's):
+    /// GL counts the polygon stipple's rows from its bottom. Errors: a height of 0.
+    pub fn framebuffer_height(&mut self, height: u32) -> Result<(), StateError> {
+        if height == 0 {
+            return Err(StateError::OutOfRange {
+                parameter: "framebuffer height",
+                value: 0.0,
+                valid: "a height of at least 1 pixel",
+            });
+        }
+        self.raster.framebuffer_height = Some(height);
         Ok(())
     }
 
@@ -745,12 +785,12 @@ mod tests {
 
     #[test]
     fn gls_initial_raster_state_is_ffvks_default_raster_state() {
-        assert_eq!(RasterGl::default().to_raster_state(), RasterState::default());
+        assert_eq!(RasterGl::default().to_raster_state(), Ok(RasterState::default()));
         let all = RasterGl {
             stencil_test: true,
             ..RasterGl::default()
         };
-        let stencil = all.to_raster_state().stencil.unwrap();
+        let stencil = all.to_raster_state().unwrap().stencil.unwrap();
         let gl = StencilFace::default().with_write_mask(0xFF);
         assert_eq!(stencil.front, gl.with_func(vk::CompareOp::ALWAYS, 0, 0xFF));
     }
@@ -790,7 +830,7 @@ mod tests {
         gl.polygon_offset(2.0, 1.0).unwrap();
         gl.line_stipple(1000, 0x00FF);
         gl.cull_face(Face::Front);
-        let off = gl.raster_state();
+        let off = gl.raster_state().unwrap();
         assert_eq!(
             (off.stencil, off.polygon_offset, off.line_stipple, off.cull_mode),
             (None, None, None, vk::CullModeFlags::NONE)
@@ -803,7 +843,7 @@ mod tests {
         ] {
             gl.enable(cap).unwrap();
         }
-        let on = gl.raster_state();
+        let on = gl.raster_state().unwrap();
         let stencil = on.stencil.unwrap();
         assert_eq!((stencil.back.reference, stencil.back.value_mask), (0, 0x0F));
         assert_eq!(
@@ -816,7 +856,7 @@ mod tests {
         assert_eq!(on.cull_mode, vk::CullModeFlags::FRONT);
         gl.color_mask(false, true, false, true);
         assert_eq!(
-            gl.raster_state().color_mask,
+            gl.raster_state().unwrap().color_mask,
             vk::ColorComponentFlags::G | vk::ColorComponentFlags::A
         );
         on.validate().unwrap();
