@@ -2050,7 +2050,8 @@ void ffvkFramebufferHeight(struct FfvkContext *ctx, uint32_t height);
 
 /*
  glEdgeFlag: the current edge flag (non-zero is `GL_TRUE`), kept for `GL_EDGE_FLAG` queries:
- ffvk draws no polygon edges apart. Never an error.
+ a draw's flags are in its indices (`ffvkEdgeFlaggedIndices` takes each vertex's). Never an
+ error.
 
  # Safety
 

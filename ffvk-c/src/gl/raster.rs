@@ -185,7 +185,8 @@ pub unsafe extern "C" fn ffvkFramebufferHeight(ctx: *mut FfvkContext, height: u3
 }
 
 /// glEdgeFlag: the current edge flag (non-zero is `GL_TRUE`), kept for `GL_EDGE_FLAG` queries:
-/// ffvk draws no polygon edges apart. Never an error.
+/// a draw's flags are in its indices (`ffvkEdgeFlaggedIndices` takes each vertex's). Never an
+/// error.
 ///
 /// # Safety
 ///

@@ -397,7 +397,8 @@ pub struct RasterGl {
     /// `GL_LINE_WIDTH`, > 0; 1 by default.
     pub line_width: f32,
     /// `GL_EDGE_FLAG`, the current edge flag (glEdgeFlag); true by default. Kept for queries:
-    /// ffvk draws no polygon edges apart (a layer drops flagged edges itself).
+    /// a draw's flags are in its indices (`Topology::EdgeFlaggedTriangles`, made from each
+    /// vertex's flag by `gl_primitives`' `_edge_flagged` functions).
     pub edge_flag: bool,
 }
 
