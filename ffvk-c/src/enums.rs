@@ -263,7 +263,7 @@ const MESSAGE_NAMES: &[(&str, u32)] = &[
 ];
 
 /// Every GL name a message may print with its value: the API's enums and the names of values
-/// it refuses ([`MESSAGE_NAMES`]). The tests check each against `<GL/gl.h>`.
+/// it refuses (`MESSAGE_NAMES`). The tests check each against `<GL/gl.h>`.
 pub fn message_names() -> impl Iterator<Item = (&'static str, u32)> {
     gl_enums().iter().chain(MESSAGE_NAMES).copied()
 }
