@@ -735,8 +735,9 @@
 #define FFVK_FEATURE_STIPPLED_LINES 128
 
 /*
- `VkPhysicalDeviceFeatures::geometryShader`: needed for GL's edge flags (draws of mode
- `GL_TRIANGLES_ADJACENCY` from `ffvkEdgeFlaggedIndices`).
+ `VkPhysicalDeviceFeatures::geometryShader` and `shaderTessellationAndGeometryPointSize`:
+ needed for GL's edge flags (draws of mode `GL_TRIANGLES_ADJACENCY` from
+ `ffvkEdgeFlaggedIndices`).
  */
 #define FFVK_FEATURE_GEOMETRY_SHADER 256
 
@@ -1078,7 +1079,9 @@ typedef struct FfvkDrawInfo {
   /*
    `GL_POINTS`, `GL_LINES`, `GL_LINE_STRIP`, `GL_TRIANGLES`, `GL_TRIANGLE_STRIP` or
    `GL_TRIANGLE_FAN`; `ffvkPrimitiveIndices` turns `GL_LINE_LOOP`, `GL_QUADS`,
-   `GL_QUAD_STRIP` and `GL_POLYGON` into lists of these.
+   `GL_QUAD_STRIP` and `GL_POLYGON` into lists of these. `GL_TRIANGLES_ADJACENCY` draws
+   GL's polygons with their edge flags as `ffvkEdgeFlaggedIndices` makes them (six indices
+   a triangle: `first` and `count` multiples of 6; `FFVK_FEATURE_GEOMETRY_SHADER`).
    */
   uint32_t mode;
   /*
@@ -1281,7 +1284,7 @@ uint32_t ffvkGetError(struct FfvkContext *ctx);
  glEnable for `GL_LIGHTING`, `GL_LIGHTi` (i < 16), `GL_COLOR_MATERIAL`, `GL_NORMALIZE`,
  `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_COLOR_SUM`, `GL_FOG`, `GL_ALPHA_TEST`,
  `GL_CLIP_PLANEi` (i < 6), `GL_POINT_SPRITE`, and the raster state's `GL_POLYGON_OFFSET_FILL`,
- `GL_POLYGON_OFFSET_LINE`, `GL_POLYGON_OFFSET_POINT`, `GL_LINE_STIPPLE`, `GL_STENCIL_TEST`,
+ `GL_POLYGON_OFFSET_LINE`, `GL_POLYGON_OFFSET_POINT`, `GL_LINE_STIPPLE`, `GL_POLYGON_STIPPLE`, `GL_STENCIL_TEST`,
  `GL_COLOR_LOGIC_OP`, `GL_BLEND`, `GL_DEPTH_TEST` and `GL_CULL_FACE` (which a draw takes with
  `FFVK_RASTER_SOURCE_CONTEXT`). Sets `GL_INVALID_ENUM` for any other cap (a layer keeps the
  rest of GL's capabilities itself). Enabling `GL_COLOR_MATERIAL` writes the
@@ -1291,7 +1294,8 @@ uint32_t ffvkGetError(struct FfvkContext *ctx);
 
  `ctx` is null or a live context used by one thread at a time.
  */
-void ffvkEnable(struct FfvkContext *ctx, uint32_t cap_enum);
+void ffvkEnable(struct FfvkContext *ctx,
+                uint32_t cap_enum);
 
 /*
  glDisable for the caps of `ffvkEnable`; `GL_INVALID_ENUM` for any other.
@@ -2160,8 +2164,10 @@ enum FfvkResult ffvkPrimitiveIndicesRange(uint32_t mode,
 
  # Safety
 
- `vertices` points at `count` values and `edge_flags` at `flag_count` (unless `out` is null);
- `out` is null or has room for `capacity`.
+ `vertices` points at `count` values and `edge_flags` at `flag_count` (neither is read when
+ `out` is null, but `vertices` must not be null with a count); `out` is null or has room for
+ `capacity`. A size query (null `out`) checks the mode, the count and the pointers only: the
+ flags are checked when the indices are written.
  */
 enum FfvkResult ffvkEdgeFlaggedIndices(uint32_t mode,
                                        const uint32_t *vertices,
@@ -2259,7 +2265,7 @@ void ffvkGetTexEnviv(struct FfvkContext *ctx, uint32_t target, uint32_t pname, i
  `GL_POINT_FADE_THRESHOLD_SIZE`, `GL_POINT_DISTANCE_ATTENUATION` (3 values),
  `GL_POINT_SPRITE` and `GL_POINT_SPRITE_COORD_ORIGIN`; and the raster state's:
  `GL_POLYGON_MODE` (front, back), `GL_POLYGON_OFFSET_FACTOR`, `GL_POLYGON_OFFSET_UNITS`,
- `GL_POLYGON_OFFSET_FILL`, `_LINE`, `_POINT`, `GL_EDGE_FLAG`, `GL_LINE_STIPPLE`,
+ `GL_POLYGON_OFFSET_FILL`, `_LINE`, `_POINT`, `GL_EDGE_FLAG`, `GL_LINE_STIPPLE`, `GL_POLYGON_STIPPLE`,
  `GL_LINE_STIPPLE_PATTERN`, `GL_LINE_STIPPLE_REPEAT`, `GL_DEPTH_RANGE`, `GL_DEPTH_TEST`,
  `GL_DEPTH_WRITEMASK`, `GL_DEPTH_FUNC`, `GL_STENCIL_TEST`, `GL_STENCIL_FUNC`, `GL_STENCIL_REF`
  (clamped to [0, 255]), `GL_STENCIL_VALUE_MASK`, `GL_STENCIL_FAIL`,
@@ -2278,7 +2284,9 @@ void ffvkGetTexEnviv(struct FfvkContext *ctx, uint32_t target, uint32_t pname, i
  for as many values as the name has (16 for a matrix). Nothing is written when an error is
  set.
  */
-void ffvkGetFloatv(struct FfvkContext *ctx, uint32_t pname, float *params);
+void ffvkGetFloatv(struct FfvkContext *ctx,
+                   uint32_t pname,
+                   float *params);
 
 /*
  glGetIntegerv: `ffvkGetFloatv`'s names as integers.
@@ -2403,9 +2411,10 @@ enum FfvkResult ffvkBeginDraws(struct FfvkRenderer *renderer, VkCommandBuffer cm
  format the device cannot blend, a point size or line width out of the device's range, a
  textured draw without texture coordinates),
  `FFVK_ERROR_STATE` (the context's state cannot be drawn: a soft spot cone wider than its
- cutoff, a modelview that cannot be inverted while lighting), `FFVK_ERROR_MISSING_FEATURE`
- (`GL_FLAT`, a point size or a line width, or a `GL_CLIP_PLANEi` enabled, that the create
- info's `enabled_features` did not declare), `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN` (making the pipeline).
+ cutoff, a modelview that cannot be inverted while lighting, a fill with `GL_POLYGON_STIPPLE`
+ on and no `ffvkFramebufferHeight`), `FFVK_ERROR_MISSING_FEATURE` (`GL_FLAT`, a point size or
+ a line width, a `GL_CLIP_PLANEi` enabled, a polygon mode, logic op or line stipple, or a
+ `GL_TRIANGLES_ADJACENCY` draw, that the create info's `enabled_features` did not declare), `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN` (making the pipeline).
 
  # Safety
 
@@ -2545,8 +2554,10 @@ const char *ffvkResultMessage(void);
    point sizes other than 1);
  - `shaderClipDistance` in `features->features`, where supported (draws with a user clip
    plane enabled);
- - `fillModeNonSolid` and `logicOp` in `features->features`, where supported (polygon modes
-   `GL_LINE` and `GL_POINT`; `GL_COLOR_LOGIC_OP`);
+ - `fillModeNonSolid`, `logicOp`, and `geometryShader` with
+   `shaderTessellationAndGeometryPointSize`, in `features->features`, where supported (polygon
+   modes `GL_LINE` and `GL_POINT`; `GL_COLOR_LOGIC_OP`; GL's edge flags, draws of
+   `GL_TRIANGLES_ADJACENCY`);
  - `bresenhamLines` and `stippledBresenhamLines` in a `VkPhysicalDeviceLineRasterizationFeaturesEXT`
    of the chain, when the device supports both (`GL_LINE_STIPPLE` needs them, and with them
    every line is GL's aliased line), with `VK_EXT_line_rasterization` listed. As with the

@@ -346,8 +346,10 @@ unsafe fn primitive_indices(
 ///
 /// # Safety
 ///
-/// `vertices` points at `count` values and `edge_flags` at `flag_count` (unless `out` is null);
-/// `out` is null or has room for `capacity`.
+/// `vertices` points at `count` values and `edge_flags` at `flag_count` (neither is read when
+/// `out` is null, but `vertices` must not be null with a count); `out` is null or has room for
+/// `capacity`. A size query (null `out`) checks the mode, the count and the pointers only: the
+/// flags are checked when the indices are written.
 #[no_mangle]
 pub unsafe extern "C" fn ffvkEdgeFlaggedIndices(
     mode: u32,
@@ -422,14 +424,22 @@ pub unsafe extern "C" fn ffvkEdgeFlaggedIndices(
             // SAFETY: the caller's contract: flag_count flags at edge_flags.
             Some(unsafe { std::slice::from_raw_parts(edge_flags, flag_count as usize) })
         };
-        if !edge_flags.is_null() || flag_count > 0 {
+        if edge_flags.is_null() && flag_count > 0 {
+            return fail(
+                FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                format!(
+                    "{f}: edge_flags is a null pointer with flag_count {flag_count}: expected flag_count flags, or null with flag_count 0 (every flag GL_TRUE)"
+                ),
+            );
+        }
+        // GL applies no edge flags to quad strips: theirs are not read.
+        if !edge_flags.is_null() && mode != GL_QUAD_STRIP {
             let have = flags.map_or(0, <[u8]>::len);
             if let Some(&v) = input.iter().find(|&&v| v as usize >= have) {
                 return fail(
                     FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
                     format!(
-                        "{f}: vertex number {v} has no edge flag: expected every vertex number below flag_count {flag_count} (edge_flags {})",
-                        if edge_flags.is_null() { "null" } else { "given" }
+                        "{f}: vertex number {v} has no edge flag: expected every vertex number below flag_count {flag_count}"
                     ),
                 );
             }

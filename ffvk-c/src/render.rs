@@ -151,7 +151,9 @@ pub struct FfvkDrawInfo {
     pub struct_size: u32,
     /// `GL_POINTS`, `GL_LINES`, `GL_LINE_STRIP`, `GL_TRIANGLES`, `GL_TRIANGLE_STRIP` or
     /// `GL_TRIANGLE_FAN`; `ffvkPrimitiveIndices` turns `GL_LINE_LOOP`, `GL_QUADS`,
-    /// `GL_QUAD_STRIP` and `GL_POLYGON` into lists of these.
+    /// `GL_QUAD_STRIP` and `GL_POLYGON` into lists of these. `GL_TRIANGLES_ADJACENCY` draws
+    /// GL's polygons with their edge flags as `ffvkEdgeFlaggedIndices` makes them (six indices
+    /// a triangle: `first` and `count` multiples of 6; `FFVK_FEATURE_GEOMETRY_SHADER`).
     pub mode: u32,
     /// The vertex buffers, one per binding of the create info, in its order.
     pub vertex_buffers: *const VkBuffer,
@@ -522,9 +524,10 @@ pub unsafe extern "C" fn ffvkBeginDraws(
 /// format the device cannot blend, a point size or line width out of the device's range, a
 /// textured draw without texture coordinates),
 /// `FFVK_ERROR_STATE` (the context's state cannot be drawn: a soft spot cone wider than its
-/// cutoff, a modelview that cannot be inverted while lighting), `FFVK_ERROR_MISSING_FEATURE`
-/// (`GL_FLAT`, a point size or a line width, or a `GL_CLIP_PLANEi` enabled, that the create
-/// info's `enabled_features` did not declare), `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN` (making the pipeline).
+/// cutoff, a modelview that cannot be inverted while lighting, a fill with `GL_POLYGON_STIPPLE`
+/// on and no `ffvkFramebufferHeight`), `FFVK_ERROR_MISSING_FEATURE` (`GL_FLAT`, a point size or
+/// a line width, a `GL_CLIP_PLANEi` enabled, a polygon mode, logic op or line stipple, or a
+/// `GL_TRIANGLES_ADJACENCY` draw, that the create info's `enabled_features` did not declare), `FFVK_ERROR_OUT_OF_MEMORY`, `FFVK_ERROR_VULKAN` (making the pipeline).
 ///
 /// # Safety
 ///

@@ -190,7 +190,8 @@ unsafe fn query(
         clip_distance,
         fill_mode_non_solid: base.fill_mode_non_solid == vk::TRUE,
         logic_op: base.logic_op == vk::TRUE,
-        geometry_shader: base.geometry_shader == vk::TRUE,
+        geometry_shader: base.geometry_shader == vk::TRUE
+            && base.shader_tessellation_and_geometry_point_size == vk::TRUE,
         stippled_lines: lines_extension && bresenham && stippled,
         lines_extension,
         lines_lacking,
@@ -214,8 +215,10 @@ unsafe fn query(
 ///   point sizes other than 1);
 /// - `shaderClipDistance` in `features->features`, where supported (draws with a user clip
 ///   plane enabled);
-/// - `fillModeNonSolid` and `logicOp` in `features->features`, where supported (polygon modes
-///   `GL_LINE` and `GL_POINT`; `GL_COLOR_LOGIC_OP`);
+/// - `fillModeNonSolid`, `logicOp`, and `geometryShader` with
+///   `shaderTessellationAndGeometryPointSize`, in `features->features`, where supported (polygon
+///   modes `GL_LINE` and `GL_POINT`; `GL_COLOR_LOGIC_OP`; GL's edge flags, draws of
+///   `GL_TRIANGLES_ADJACENCY`);
 /// - `bresenhamLines` and `stippledBresenhamLines` in a `VkPhysicalDeviceLineRasterizationFeaturesEXT`
 ///   of the chain, when the device supports both (`GL_LINE_STIPPLE` needs them, and with them
 ///   every line is GL's aliased line), with `VK_EXT_line_rasterization` listed. As with the
@@ -398,7 +401,7 @@ pub unsafe extern "C" fn ffvkDeviceRequirements(
         if support.geometry_shader {
             bits |= FFVK_FEATURE_GEOMETRY_SHADER;
         } else {
-            missing.push("FFVK_FEATURE_GEOMETRY_SHADER (the device lacks geometryShader; draws of GL_TRIANGLES_ADJACENCY, GL's edge flags, are refused)".into());
+            missing.push("FFVK_FEATURE_GEOMETRY_SHADER (the device lacks geometryShader or shaderTessellationAndGeometryPointSize; draws of GL_TRIANGLES_ADJACENCY, GL's edge flags, are refused)".into());
         }
         if support.logic_op {
             bits |= FFVK_FEATURE_LOGIC_OP;
@@ -498,6 +501,7 @@ pub unsafe extern "C" fn ffvkDeviceRequirements(
             }
             if support.geometry_shader {
                 (*features).features.geometry_shader = vk::TRUE;
+                (*features).features.shader_tessellation_and_geometry_point_size = vk::TRUE;
             }
         }
         fail(FfvkResult::FFVK_SUCCESS, message)

@@ -114,6 +114,7 @@ unsafe extern "system" fn get_features2(_: vk::PhysicalDevice, features: *mut vk
         (*features).features.fill_mode_non_solid = bool32(d.fill_mode_non_solid);
         (*features).features.logic_op = bool32(d.logic_op);
         (*features).features.geometry_shader = bool32(d.geometry_shader);
+        (*features).features.shader_tessellation_and_geometry_point_size = bool32(d.geometry_shader);
         let mut node = (*features).p_next.cast::<vk::BaseOutStructure>();
         while !node.is_null() {
             match (*node).s_type {
@@ -325,6 +326,13 @@ fn a_device_with_everything_gets_every_feature_set_the_extension_listed_and_ever
     assert_eq!(chain.features.features.logic_op, vk::TRUE);
     assert_eq!(chain.features.features.geometry_shader, vk::TRUE);
     assert_eq!(
+        chain
+            .features
+            .features
+            .shader_tessellation_and_geometry_point_size,
+        vk::TRUE
+    );
+    assert_eq!(
         (chain.lines.bresenham_lines, chain.lines.stippled_bresenham_lines),
         (vk::TRUE, vk::TRUE)
     );
@@ -506,8 +514,9 @@ fn without_geometry_shader_its_bit_is_missing_named_and_its_feature_left_off() {
     assert_eq!(chain.features.features.geometry_shader, vk::FALSE);
     assert_eq!(
         a.message,
-        "ffvkDeviceRequirements: without FFVK_FEATURE_GEOMETRY_SHADER (the device lacks geometryShader; \
-         draws of GL_TRIANGLES_ADJACENCY, GL's edge flags, are refused)"
+        "ffvkDeviceRequirements: without FFVK_FEATURE_GEOMETRY_SHADER (the device lacks geometryShader \
+         or shaderTessellationAndGeometryPointSize; draws of GL_TRIANGLES_ADJACENCY, GL's edge flags, \
+         are refused)"
     );
 }
 

@@ -81,6 +81,8 @@ layout(location = EDGE_LOCATION) noperspective out vec4 edge;
 void corner(int k, uint bits) {
     int i = 2 * k;
     gl_Position = gl_in[i].gl_Position;
+    // The vertex stage's size where it writes one (polygons drawn as points, SPEC_POINTS).
+    gl_PointSize = gl_in[i].gl_PointSize;
 #ifdef CLIP_PLANES
     gl_ClipDistance[0] = gl_in[i].gl_ClipDistance[0];
     gl_ClipDistance[1] = gl_in[i].gl_ClipDistance[1];

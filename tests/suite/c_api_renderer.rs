@@ -270,6 +270,15 @@ fn a_version_3_draw_takes_the_contexts_raster_state_as_it_is_when_the_draw_is_is
         ffvkEnable(ctx, GL_POLYGON_STIPPLE);
         assert_eq!(ffvkDraw(r, ctx, &from_context), FfvkResult::FFVK_ERROR_STATE);
         assert!(message().contains("ffvkFramebufferHeight"), "{}", message());
+        // GL stipples fills only: lines, and polygons drawn as lines, need no height.
+        let mut lines = draw_info(GL_LINES, &buffer, raster);
+        lines.raster_source = FFVK_RASTER_SOURCE_CONTEXT;
+        assert_eq!(
+            ffvkDraw(r, ctx, &lines),
+            FfvkResult::FFVK_SUCCESS,
+            "{}",
+            message()
+        );
         ffvkFramebufferHeight(ctx, 0);
         assert_eq!(ffvkGetError(ctx), 0x0501, "GL_INVALID_VALUE for a height of 0");
         ffvkFramebufferHeight(ctx, 64);

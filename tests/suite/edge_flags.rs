@@ -109,6 +109,8 @@ struct Setup {
     lit: bool,
     cull: Option<Face>,
     front: vk::FrontFace,
+    /// glPointSize (what polygons drawn as points take).
+    point_size: f32,
 }
 
 /// The shape through ffvk and Mesa's GL as `setup` says.
@@ -119,6 +121,7 @@ fn draw_both(r: &mut Renderer, shape: &Shape, setup: Setup) -> (RgbaImage, RgbaI
         lit,
         cull,
         front,
+        point_size,
     } = setup;
     let mut state = if lit {
         two_sided(shading).lighting
@@ -139,9 +142,11 @@ fn draw_both(r: &mut Renderer, shape: &Shape, setup: Setup) -> (RgbaImage, RgbaI
         draw = draw.with_cull_face(Some(face));
         calls.push(GlCall::CullFace(face));
     }
+    draw.point_size = point_size;
     frame.draws.push(draw);
     let ours = r.render(&frame).unwrap().into_rgba_image();
     let mut gl = GlDraw::new(&gl_mesh, Mat4::IDENTITY, Mat4::IDENTITY, state);
+    gl.point_size = point_size;
     gl.mode = shape.mode;
     gl.calls = calls;
     gl.edge_flags = shape.flags.as_deref();
@@ -221,15 +226,16 @@ fn quads_quad_strips_and_polygons_drawn_as_lines_or_points_show_only_their_bound
     for shape in shapes() {
         let (ccw, cw) = (vk::FrontFace::COUNTER_CLOCKWISE, vk::FrontFace::CLOCKWISE);
         let (vertex, flat, fragment) = (LightingMode::Vertex, LightingMode::Flat, LightingMode::Fragment);
-        for (front, back, shading, lit, cull, winding) in [
-            (fill, fill, vertex, false, None, ccw),
-            (line, line, vertex, false, None, ccw),
-            (point, point, vertex, false, None, ccw),
-            (line, fill, flat, false, None, ccw),
-            (line, line, fragment, true, Some(Face::Back), ccw),
-            (line, line, fragment, true, None, ccw),
-            (line, point, vertex, true, None, cw),
-            (point, line, flat, true, Some(Face::Front), cw),
+        for (front, back, shading, lit, cull, winding, point_size) in [
+            (fill, fill, vertex, false, None, ccw, 1.0),
+            (line, line, vertex, false, None, ccw, 1.0),
+            (point, point, vertex, false, None, ccw, 1.0),
+            (point, point, fragment, true, None, ccw, 3.0),
+            (line, fill, flat, false, None, ccw, 1.0),
+            (line, line, fragment, true, Some(Face::Back), ccw, 1.0),
+            (line, line, fragment, true, None, ccw, 1.0),
+            (line, point, vertex, true, None, cw, 4.0),
+            (point, line, flat, true, Some(Face::Front), cw, 1.0),
         ] {
             let modes = PolygonModes { front, back };
             let setup = Setup {
@@ -238,10 +244,11 @@ fn quads_quad_strips_and_polygons_drawn_as_lines_or_points_show_only_their_bound
                 lit,
                 cull,
                 front: winding,
+                point_size,
             };
             let (ours, theirs) = draw_both(&mut r, &shape, setup);
             let what = format!(
-                "{} {front:?}-{back:?} {shading:?} lit {lit} cull {cull:?} {winding:?}",
+                "{} {front:?}-{back:?} {shading:?} lit {lit} cull {cull:?} {winding:?} size {point_size}",
                 shape.name
             );
             let file = what.replace([' ', ':', '(', ')', ','], "_");

@@ -24,8 +24,9 @@ pub const FFVK_FEATURE_LOGIC_OP: u32 = 64;
 /// `stippledBresenhamLines`: needed for `GL_LINE_STIPPLE` (`ffvkLineStipple`). With it every
 /// line and polygon outline is drawn as GL's aliased (diamond-exit) lines.
 pub const FFVK_FEATURE_STIPPLED_LINES: u32 = 128;
-/// `VkPhysicalDeviceFeatures::geometryShader`: needed for GL's edge flags (draws of mode
-/// `GL_TRIANGLES_ADJACENCY` from `ffvkEdgeFlaggedIndices`).
+/// `VkPhysicalDeviceFeatures::geometryShader` and `shaderTessellationAndGeometryPointSize`:
+/// needed for GL's edge flags (draws of mode `GL_TRIANGLES_ADJACENCY` from
+/// `ffvkEdgeFlaggedIndices`).
 pub const FFVK_FEATURE_GEOMETRY_SHADER: u32 = 256;
 
 /// Every bit this version knows.

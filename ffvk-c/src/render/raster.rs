@@ -25,15 +25,43 @@ pub(crate) fn of_draw(
 ) -> Result<RasterState, FfvkResult> {
     match draw.raster_source {
         FFVK_RASTER_SOURCE_DRAW => Ok(raster(&draw.raster)),
-        FFVK_RASTER_SOURCE_CONTEXT => ctx.gl.raster_state().map_err(|e| {
-            crate::result::fail(
-                FfvkResult::FFVK_ERROR_STATE,
-                format!("{function}: {e}"),
-            )
-        }),
+        FFVK_RASTER_SOURCE_CONTEXT => context_raster(function, draw.mode, ctx),
         other => Err(invalid(format!(
             "{function}: raster_source {other} is not accepted: expected FFVK_RASTER_SOURCE_DRAW (0) or FFVK_RASTER_SOURCE_CONTEXT (1)"
         ))),
+    }
+}
+
+/// The context's raster state for a draw of GL mode `mode`. GL stipples filled polygons only: a
+/// draw of points or lines, or of polygons drawn as lines or points, needs no framebuffer
+/// height for `GL_POLYGON_STIPPLE`; a fill does (`ffvkFramebufferHeight`).
+fn context_raster(function: &str, mode: u32, ctx: &FfvkContext) -> Result<RasterState, FfvkResult> {
+    use crate::enums::{GL_TRIANGLES, GL_TRIANGLES_ADJACENCY, GL_TRIANGLE_FAN, GL_TRIANGLE_STRIP};
+    let state_error = |message: String| crate::result::fail(FfvkResult::FFVK_ERROR_STATE, message);
+    match ctx.gl.raster_state() {
+        Ok(raster) => Ok(raster),
+        Err(ffvk::gl::state::StateError::NoFramebufferHeight) => {
+            let mut unstippled = ctx.gl.raster;
+            unstippled.polygon_stipple = false;
+            let raster = unstippled
+                .to_raster_state()
+                .map_err(|e| state_error(format!("{function}: {e}")))?;
+            let polygons = matches!(
+                mode,
+                GL_TRIANGLES | GL_TRIANGLE_STRIP | GL_TRIANGLE_FAN | GL_TRIANGLES_ADJACENCY
+            );
+            let modes = raster.polygon_mode;
+            if polygons && (modes.front == vk::PolygonMode::FILL || modes.back == vk::PolygonMode::FILL) {
+                Err(state_error(format!(
+                    "{function}: GL_POLYGON_STIPPLE is enabled but the context has no framebuffer height: \
+                     expected ffvkFramebufferHeight(ctx, height) first (GL counts the stipple's rows \
+                     from the framebuffer's bottom)"
+                )))
+            } else {
+                Ok(raster)
+            }
+        }
+        Err(e) => Err(state_error(format!("{function}: {e}"))),
     }
 }
 

@@ -602,8 +602,7 @@ impl Pipelines {
             return Err(Error::NotEnabled {
                 feature: "geometryShader",
                 flag: "geometry_shader",
-                needed_for:
-                    "GL's edge flags (Topology::EdgeFlaggedTriangles, a triangle list with adjacency) need",
+                needed_for: "GL's edge flags (GL_TRIANGLES_ADJACENCY, a triangle list with adjacency) need",
             });
         }
         // Polygons drawn as lines or points with their edge flags: the `_edges` build, whose
@@ -626,9 +625,11 @@ impl Pipelines {
             None => None,
         };
         let entries = spec_entries();
+        // Points and polygons drawn as points take GL's point size (§3.5.4: their vertices are
+        // rasterized as points).
         let spec = with_assembly(
             k.spec,
-            k.topology == Topology::PointList,
+            k.topology == Topology::PointList || mode == vk::PolygonMode::POINT,
             k.raster.point_size.0,
             k.points,
         );

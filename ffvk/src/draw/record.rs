@@ -29,7 +29,8 @@ pub enum Topology {
     TriangleStrip,
     /// `GL_TRIANGLE_FAN`.
     TriangleFan,
-    /// GL's polygons with their edge flags (GL 2.1 §2.6.2): triangles, each given as six
+    /// GL's polygons with their edge flags (GL 2.1 §2.6.2; GL 3.2's `GL_TRIANGLES_ADJACENCY`
+    /// as ffvk reads it): triangles, each given as six
     /// indices (c0, a0, c1, a1, c2, a2), a Vulkan triangle list with adjacency, where a_e
     /// repeats c_e when edge e (from corner e to corner e + 1) is a boundary edge and is
     /// c_(e+1) when it is not. Filled, they draw as [`Topology::TriangleList`] would; in
@@ -63,7 +64,7 @@ impl Topology {
             Topology::TriangleList => "GL_TRIANGLES",
             Topology::TriangleStrip => "GL_TRIANGLE_STRIP",
             Topology::TriangleFan => "GL_TRIANGLE_FAN",
-            Topology::EdgeFlaggedTriangles => "GL_TRIANGLES with edge flags",
+            Topology::EdgeFlaggedTriangles => "GL_TRIANGLES_ADJACENCY",
         }
     }
 
@@ -281,6 +282,15 @@ impl Geometry {
                 "first + count",
                 format!("{first} + {count}"),
                 "at most 4294967295 (2^32 - 1)",
+            ));
+        }
+        if self.assembly().0 == Topology::EdgeFlaggedTriangles && (count % 6 != 0 || first % 6 != 0) {
+            return Err(error(
+                "first, count",
+                format!("{first}, {count}"),
+                "multiples of 6 for GL_TRIANGLES_ADJACENCY (GL's polygons with their edge flags: six \
+                 indices a triangle, as gl_primitives' _edge_flagged lists and ffvkEdgeFlaggedIndices \
+                 make them)",
             ));
         }
         Ok(())

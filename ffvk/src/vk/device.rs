@@ -61,8 +61,9 @@ pub struct DeviceInfo {
     pub fill_mode_non_solid: bool,
     /// `logicOp`: `glLogicOp` (`GL_COLOR_LOGIC_OP`).
     pub logic_op: bool,
-    /// `geometryShader`: GL's edge flags (polygons drawn as lines or points without their
-    /// inner edges, [`Topology::EdgeFlaggedTriangles`](crate::draw::record::Topology)).
+    /// `geometryShader` with `shaderTessellationAndGeometryPointSize`: GL's edge flags (polygons
+    /// drawn as lines or points without their inner edges,
+    /// [`Topology::EdgeFlaggedTriangles`](crate::draw::record::Topology)).
     pub geometry_shader: bool,
     /// `VK_EXT_line_rasterization` with `bresenhamLines` and `stippledBresenhamLines`:
     /// `glLineStipple` (`GL_LINE_STIPPLE`).
@@ -156,7 +157,8 @@ pub struct EnabledFeatures {
     pub fill_mode_non_solid: bool,
     /// `logicOp`: needed for `glLogicOp`.
     pub logic_op: bool,
-    /// `geometryShader`: needed for GL's edge flags (`Topology::EdgeFlaggedTriangles`).
+    /// `geometryShader` and `shaderTessellationAndGeometryPointSize`: needed for GL's edge flags
+    /// (`Topology::EdgeFlaggedTriangles`).
     pub geometry_shader: bool,
     /// `VK_EXT_line_rasterization` (enabled) with `bresenhamLines` and
     /// `stippledBresenhamLines`: needed for `glLineStipple`.
@@ -317,7 +319,8 @@ impl Device {
             .shader_clip_distance(supported.clip_distance)
             .fill_mode_non_solid(supported.fill_mode_non_solid)
             .logic_op(supported.logic_op)
-            .geometry_shader(supported.geometry_shader);
+            .geometry_shader(supported.geometry_shader)
+            .shader_tessellation_and_geometry_point_size(supported.geometry_shader);
         let mut create = vk::DeviceCreateInfo::default()
             .queue_create_infos(&queues)
             .enabled_extension_names(&extension_names)
@@ -460,7 +463,7 @@ impl Device {
             (
                 enabled.geometry_shader,
                 supported.geometry_shader,
-                "geometryShader (EnabledFeatures::geometry_shader says it is enabled)",
+                "geometryShader and shaderTessellationAndGeometryPointSize (EnabledFeatures::geometry_shader says they are enabled)",
             ),
             (
                 enabled.stippled_lines,
@@ -689,7 +692,9 @@ impl Supported {
         let clip_distance = features.features.shader_clip_distance == vk::TRUE;
         let fill_mode_non_solid = features.features.fill_mode_non_solid == vk::TRUE;
         let logic_op = features.features.logic_op == vk::TRUE;
-        let geometry_shader = features.features.geometry_shader == vk::TRUE;
+        // Edge flags' geometry stage passes the point size on (polygons drawn as points).
+        let geometry_shader = features.features.geometry_shader == vk::TRUE
+            && features.features.shader_tessellation_and_geometry_point_size == vk::TRUE;
         let stippled_lines = lines.bresenham_lines == vk::TRUE && lines.stippled_bresenham_lines == vk::TRUE;
         let cstr = |bytes: &[std::ffi::c_char]| {
             // SAFETY: the driver properties hold NUL-terminated strings within their arrays.
