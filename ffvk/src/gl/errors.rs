@@ -71,7 +71,7 @@ pub enum StateError {
     /// undefined; ffvk refuses it).
     #[error(
         "determinant of the modelview = {determinant}: expected an invertible modelview \
-         (glClipPlane stores p · M⁻¹)"
+         (glClipPlane and glTexGen's GL_EYE_PLANE store p · M⁻¹)"
     )]
     SingularClipModelview {
         /// The determinant of the whole 4×4 modelview.

@@ -34,6 +34,10 @@ pub enum Cap {
     ClipPlane(usize),
     /// `GL_POINT_SPRITE`: points are sprites ([`PointParameters::sprite`]).
     PointSprite,
+    /// `GL_TEXTURE_GEN_S` (0), `_T` (1), `_R` (2) or `_Q` (3): the coordinate is generated
+    /// ([`TexCoordGen::enabled`](crate::gl::texture::TexCoordGen::enabled)); a larger index is
+    /// a [`StateError::OutOfRange`].
+    TextureGen(usize),
     /// `GL_POLYGON_OFFSET_FILL`: filled polygons are offset ([`RasterGl::polygon_offset_fill`]).
     PolygonOffsetFill,
     /// `GL_POLYGON_OFFSET_LINE`: polygons drawn as outlines are offset.

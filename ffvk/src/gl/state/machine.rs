@@ -10,6 +10,7 @@ use super::{
     FixedFunctionState, FogHint, FogParam, Light, LightModelParam, LightParam, LightingMode, Material,
     MaterialParam, PointParam, RasterGl, ShadeModel, StateError, TexEnvParam, MAX_LIGHTS,
 };
+use crate::gl::texture::{TexCoordGen, TexGenMode};
 
 /// The fixed-function state machine: the lighting state, the current modelview matrix and the
 /// raster state, with GL's entry points (the raster state's are in `raster.rs`). Start from [`GlState::new`] for GL's initial state.
@@ -213,6 +214,7 @@ impl GlState {
             Cap::Fog => self.lighting.fragment.fog.enabled = on,
             Cap::ClipPlane(i) => *self.clip_plane_mut(i)? = on,
             Cap::PointSprite => self.lighting.points.sprite = on,
+            Cap::TextureGen(i) => self.texgen_mut(i)?.enabled = on,
             Cap::PolygonOffsetFill
             | Cap::PolygonOffsetLine
             | Cap::PolygonOffsetPoint
@@ -228,6 +230,58 @@ impl GlState {
                 }
             }
         }
+        Ok(())
+    }
+
+    /// Coordinate `coord`'s generation (0 S, 1 T, 2 R, 3 Q); another index is an error.
+    fn texgen_mut(&mut self, coord: usize) -> Result<&mut TexCoordGen, StateError> {
+        self.lighting
+            .texture
+            .texgen
+            .get_mut(coord)
+            .ok_or(StateError::OutOfRange {
+                parameter: "texture coordinate (GL_S, GL_T, GL_R, GL_Q)",
+                value: coord as f32,
+                valid: "0 (S), 1 (T), 2 (R) or 3 (Q)",
+            })
+    }
+
+    /// glTexGen with `GL_TEXTURE_GEN_MODE`: coordinate `coord`'s (0 S .. 3 Q) mode. GL's
+    /// `GL_INVALID_ENUM` for `GL_SPHERE_MAP` on R or Q and `GL_REFLECTION_MAP` or
+    /// `GL_NORMAL_MAP` on Q ([`TexGenMode::allowed_for`]); nothing changes then.
+    pub fn tex_gen_mode(&mut self, coord: usize, mode: TexGenMode) -> Result<(), StateError> {
+        let gen = self.texgen_mut(coord)?;
+        if !mode.allowed_for(coord) {
+            return Err(StateError::NotAccepted {
+                parameter: "GL_TEXTURE_GEN_MODE",
+                value: mode.gl_name(),
+                valid: "GL_OBJECT_LINEAR, GL_EYE_LINEAR or (S, T) GL_SPHERE_MAP, (S, T, R) GL_REFLECTION_MAP or GL_NORMAL_MAP",
+            });
+        }
+        gen.mode = mode;
+        Ok(())
+    }
+
+    /// glTexGen with `GL_OBJECT_PLANE`: coordinate `coord`'s object plane, kept as given.
+    pub fn tex_gen_object_plane(&mut self, coord: usize, p: glam::DVec4) -> Result<(), StateError> {
+        let components = p.to_array().map(|c| c as f32);
+        finite_vec("GL_OBJECT_PLANE", &components)?;
+        self.texgen_mut(coord)?.object_plane = p.as_vec4();
+        Ok(())
+    }
+
+    /// glTexGen with `GL_EYE_PLANE`: coordinate `coord`'s eye plane, taken to eye space as GL
+    /// does, (p1 p2 p3 p4) M⁻¹ with the modelview M in force now (as `glClipPlane`'s); a
+    /// singular modelview is an error (ffvk's choice: GL's inverse does not exist).
+    pub fn tex_gen_eye_plane(&mut self, coord: usize, p: glam::DVec4) -> Result<(), StateError> {
+        self.texgen_mut(coord)?;
+        let components = p.to_array().map(|c| c as f32);
+        finite_vec("GL_EYE_PLANE", &components)?;
+        let eye = ClipPlanes::to_eye(p, self.modelview).ok_or(StateError::SingularClipModelview {
+            determinant: self.modelview.as_dmat4().determinant(),
+        })?;
+        finite_vec("GL_EYE_PLANE", eye.to_array().as_slice())?;
+        self.texgen_mut(coord)?.eye_plane = eye;
         Ok(())
     }
 
