@@ -133,6 +133,8 @@ impl Builder<'_> {
             },
             matrix: self.texture_matrix(field, spec)?,
             coord_replace: spec.coord_replace.unwrap_or(false),
+            // Scene files do not generate coordinates yet: GL's initial generation (off).
+            texgen: TextureUnit::default().texgen,
         };
         unit.validate().map_err(self.state(field))?;
         if !unit.enabled {
