@@ -89,6 +89,11 @@ layout(std140, set = 0, binding = 0) uniform State {
     uint fog_per_vertex;  // 1 for FOG_HINT FASTEST
     uint clip_mask;       // the enabled CLIP_PLANEi, a bit each
     vec4 clip_planes[6];  // CLIP_PLANEi in eye space (glClipPlane's p M^-1)
+    uint texgen;          // TEXTURE_GEN_S..Q with their modes, 3 bits each (texgen.glsl)
+    uint texgen_pad_0;
+    uint texgen_pad_1;
+    uint texgen_pad_2;
+    vec4 texgen_planes[4];  // S, T, R, Q: OBJECT_PLANE or EYE_PLANE (p M^-1), as the mode reads
     Light lights[MAX_LIGHTS];
 } state;
 
@@ -164,6 +169,8 @@ layout(constant_id = 29) const float SPEC_POINT_ATTENUATION_C = 0.0;
 layout(constant_id = 30) const float SPEC_POINT_SIZE_MIN = 0.0;
 layout(constant_id = 31) const float SPEC_POINT_SIZE_MAX = 3.40282347e38;  // FLT_MAX
 layout(constant_id = 32) const int SPEC_POINT_SPRITE = 0;
+// Texture coordinate generation: each coordinate's mode, 3 bits from S (texgen.glsl).
+layout(constant_id = 33) const int SPEC_TEXGEN = -1;
 
 // A switch of the uber-shader, read from the uniform block. lavapipe 22.3 compiles a shader
 // variant for every draw whose uniforms changed when an if or a loop bound depends on uniform

@@ -55,6 +55,9 @@ layout(location = VERTEX_INDEX_LOCATION) flat out uint vertex_index;
 // uber-shader's switches pass through it (draw.glsl, uber_value).
 #define HIDDEN_ZERO uint(gl_VertexIndex < 0)
 #include "record.glsl"
+#ifdef TEXTURE
+#include "texgen.glsl"
+#endif
 
 void main() {
     eye_position = in_modelview * in_position;
@@ -71,7 +74,8 @@ void main() {
     [[unroll]] for (uint i = 0u; i < 6u; i++) gl_ClipDistance[i] = clip_distance(i, eye_position);
 #endif
 #ifdef TEXTURE
-    stq = state.texture_matrix * in_texcoord;
+    vec3 n_f = texgen_reads_normal() ? eye_normal(vertex_normal(in_normal)) : vec3(0.0);
+    stq = state.texture_matrix * generated_coords(in_texcoord, in_position, eye_position, n_f);
 #endif
 #ifdef GBUFFER
     record_index = uint(gl_InstanceIndex);

@@ -51,6 +51,9 @@ layout(location = VERTEX_INDEX_LOCATION) flat out uint vertex_index;
 #define HIDDEN_ZERO uint(gl_VertexIndex < 0)
 #include "lighting.glsl"
 #include "record.glsl"
+#ifdef TEXTURE
+#include "texgen.glsl"
+#endif
 
 void main() {
     vec4 V = in_modelview * in_position;
@@ -67,7 +70,8 @@ void main() {
     [[unroll]] for (uint i = 0u; i < 6u; i++) gl_ClipDistance[i] = clip_distance(i, V);
 #endif
 #ifdef TEXTURE
-    stq = state.texture_matrix * in_texcoord;
+    vec3 n_f = texgen_reads_normal() ? eye_normal(vertex_normal(in_normal)) : vec3(0.0);
+    stq = state.texture_matrix * generated_coords(in_texcoord, in_position, V, n_f);
 #endif
 
     vec4 c = vertex_color(in_color);

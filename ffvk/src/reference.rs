@@ -275,19 +275,22 @@ pub struct EyeVertex {
     pub normal: DVec3,
     /// The vertex's color (GL's current color), not yet clamped.
     pub color: DVec4,
-    /// (s, t, 0, 1) through the texture matrix: (s, t, r, q), not yet divided by q.
+    /// (s, t, 0, 1), the generated coordinates replaced (§2.11.4), through the texture matrix:
+    /// (s, t, r, q), not yet divided by q.
     pub texcoord: DVec4,
 }
 
 /// Runs the vertex stage on the CPU for object-space vertex `v`, in double precision.
 pub fn transform(state: &FixedFunctionState, modelview: Mat4, projection: Mat4, v: &Vertex) -> EyeVertex {
-    let eye = modelview.as_dmat4() * DVec3::from(v.position.map(f64::from)).extend(1.0);
+    let object = DVec3::from(v.position.map(f64::from)).extend(1.0);
+    let eye = modelview.as_dmat4() * object;
+    let normal = eye_normal(state, modelview, DVec3::from(v.normal.map(f64::from)));
     EyeVertex {
         eye,
         clip: projection.as_dmat4() * eye,
-        normal: eye_normal(state, modelview, DVec3::from(v.normal.map(f64::from))),
+        normal,
         color: DVec4::from(v.color.map(f64::from)),
-        texcoord: texture::transform_st(&state.texture, v.texcoord),
+        texcoord: texture::transform_st(&state.texture, v.texcoord, object, eye, normal),
     }
 }
 

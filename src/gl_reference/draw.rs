@@ -307,6 +307,37 @@ fn set_texture_unit(gl: &Gl, unit: &TextureUnit, texture: Option<&GlTexture>) {
         gl.MatrixMode(gl::MODELVIEW);
     }
     set_enabled(gl, gl::TEXTURE_2D, unit.enabled);
+    // Texture coordinate generation, with the modelview at identity (set_state's), so that
+    // each eye plane, already in eye space, is stored as it is.
+    let coords = [
+        (gl::S, gl::TEXTURE_GEN_S),
+        (gl::T, gl::TEXTURE_GEN_T),
+        (gl::R, gl::TEXTURE_GEN_R),
+        (gl::Q, gl::TEXTURE_GEN_Q),
+    ];
+    for ((coord, cap), g) in coords.into_iter().zip(&unit.texgen) {
+        // SAFETY: a context is current on this thread; each plane has four components.
+        unsafe {
+            gl.TexGeni(coord, gl::TEXTURE_GEN_MODE, texgen_enum(g.mode) as GLint);
+            gl.TexGenfv(coord, gl::OBJECT_PLANE, g.object_plane.to_array().as_ptr());
+            gl.TexGenfv(coord, gl::EYE_PLANE, g.eye_plane.to_array().as_ptr());
+        }
+        set_enabled(gl, cap, g.enabled);
+    }
+}
+
+/// GL's enum of a texture coordinate generation mode.
+fn texgen_enum(mode: ffvk::gl::texture::TexGenMode) -> GLenum {
+    use ffvk::gl::texture::TexGenMode;
+    match mode {
+        TexGenMode::ObjectLinear => gl::OBJECT_LINEAR,
+        TexGenMode::EyeLinear => gl::EYE_LINEAR,
+        TexGenMode::SphereMap => gl::SPHERE_MAP,
+        TexGenMode::ReflectionMap => gl::REFLECTION_MAP,
+        TexGenMode::NormalMap => gl::NORMAL_MAP,
+        // As in tex_env_enum: GL's INVALID_ENUM fails the render.
+        _ => gl::NONE,
+    }
 }
 
 /// Every index of `mesh` within its vertices.

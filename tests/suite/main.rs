@@ -43,6 +43,7 @@ mod specialization;
 mod stage_scenes;
 mod state;
 mod support;
+mod texgen;
 mod texture_conformance;
 mod texturing;
 mod topology;

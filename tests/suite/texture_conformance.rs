@@ -62,7 +62,7 @@ fn texels() -> TextureImage {
 
 /// A 64×64 texture of smooth waves with a finer ripple and alpha: linear filtering and mip
 /// levels change it by little per texel, but the levels differ from one another.
-fn waves() -> TextureImage {
+pub(crate) fn waves() -> TextureImage {
     let mut rgba = Vec::new();
     for j in 0..64u32 {
         for i in 0..64u32 {
@@ -115,13 +115,13 @@ fn dense_sphere() -> View {
 
 /// One textured scene and what it must meet: within `tol`/255 on a share `need` of the masked
 /// pixels.
-struct Case {
-    name: String,
-    state: FixedFunctionState,
-    image: TextureImage,
-    sampling: Sampling,
-    tol: u8,
-    need: f64,
+pub(crate) struct Case {
+    pub(crate) name: String,
+    pub(crate) state: FixedFunctionState,
+    pub(crate) image: TextureImage,
+    pub(crate) sampling: Sampling,
+    pub(crate) tol: u8,
+    pub(crate) need: f64,
 }
 
 fn ffvk_image(
@@ -199,7 +199,7 @@ fn run(variant: Specialize, cases: &[Case]) -> (Vec<String>, Vec<String>) {
     (lines, failures)
 }
 
-fn check(variant: Specialize, cases: &[Case]) {
+pub(crate) fn check(variant: Specialize, cases: &[Case]) {
     let (lines, failures) = run(variant, cases);
     println!("{} pipelines:\n{}", variant.name(), lines.join("\n"));
     assert!(

@@ -1,5 +1,5 @@
 //! GL's polygon stipple (§3.5.2, `glPolygonStipple`): the pattern as a draw carries it
-//! ([`PolygonStipple`]) and as the fragment stage reads it, specialization constants 33 .. 65 of
+//! ([`PolygonStipple`]) and as the fragment stage reads it, specialization constants 34 .. 66 of
 //! `glsl/stipple.glsl`, set for stippled pipelines only (the lighting's [`SpecKey`] stays as it
 //! is).
 //!
@@ -8,7 +8,7 @@
 use ash::vk;
 
 /// The first constant of `glsl/stipple.glsl` (`SPEC_STIPPLE`); the 32 rows follow it.
-pub(crate) const FIRST_STIPPLE_CONSTANT: u32 = 33;
+pub(crate) const FIRST_STIPPLE_CONSTANT: u32 = crate::gpu::layout::SPEC_CONSTANT_COUNT as u32;
 
 /// `GL_POLYGON_STIPPLE` with `glPolygonStipple`: a fragment of a filled polygon at window
 /// (x_w, y_w) is drawn only where bit x_w mod 32 of `rows[y_w mod 32]` is set, window rows

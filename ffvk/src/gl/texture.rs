@@ -238,6 +238,15 @@ impl Default for TextureUnit {
 }
 
 impl TextureUnit {
+    /// Each coordinate's generation as the shaders read it (`SPEC_TEXGEN`, the state block's
+    /// `texgen`): [`TexCoordGen::code`] of S in bits 0-2, T in 3-5, R in 6-8, Q in 9-11.
+    pub fn texgen_code(&self) -> u32 {
+        self.texgen
+            .iter()
+            .enumerate()
+            .fold(0, |bits, (i, g)| bits | g.code() << (3 * i))
+    }
+
     /// Checks that the environment color is in [0, 1] and the matrix finite (state built field
     /// by field rather than through [`GlState`](super::state::GlState)'s setters).
     pub fn validate(&self) -> Result<(), StateError> {

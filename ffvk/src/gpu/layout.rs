@@ -8,7 +8,9 @@
 use glam::{Mat3, Mat4};
 
 mod key;
+mod spec;
 pub(crate) use key::{same_block_state, StateKey};
+pub use spec::{SpecConstant, SpecKey, SPEC_CONSTANT_COUNT};
 
 use crate::gl::state::{
     Attenuation, ColorControl, ColorMaterialMode, DrawValues, FixedFunctionState, FogSource, Light, Material,
@@ -229,6 +231,18 @@ pub struct StateBlock {
     pub clip_mask: u32,
     /// The user clip planes in eye space (`glClipPlane`, §2.12).
     pub clip_planes: [[f32; 4]; MAX_CLIP_PLANES],
+    /// Texture coordinate generation while `GL_TEXTURE_2D` is on
+    /// ([`TextureUnit::texgen_code`](crate::gl::texture::TextureUnit::texgen_code)), else 0.
+    pub texgen: u32,
+    /// Unused: keep `texgen_planes` on a 16-byte boundary.
+    pub texgen_pad_0: u32,
+    /// Unused.
+    pub texgen_pad_1: u32,
+    /// Unused.
+    pub texgen_pad_2: u32,
+    /// Each coordinate's plane as its mode reads it: the object plane (`GL_OBJECT_LINEAR`), the
+    /// eye plane in eye space (`GL_EYE_LINEAR`), else zero.
+    pub texgen_planes: [[f32; 4]; 4],
     /// The enabled lights packed in index order, so entry i is not necessarily `GL_LIGHTi`;
     /// entries from `light_count` on are zeroed.
     pub lights: [GpuLight; MAX_LIGHTS],
@@ -290,306 +304,6 @@ pub struct DrawBlock {
     pub state: StateBlock,
     /// The draw's own record.
     pub record: DrawRecord,
-}
-
-/// The specialization constants of `glsl/draw.glsl`, by `constant_id`. Each is an `int`
-/// whose default, -1, makes the shader read the uniform instead (the uber-shader).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-#[repr(u32)]
-#[non_exhaustive]
-pub enum SpecConstant {
-    /// `SPEC_LIGHT_COUNT`: the number of enabled lights, 0..=[`MAX_LIGHTS`]; a constant
-    /// count lets the light loop unroll.
-    LightCount = 0,
-    /// `SPEC_LIGHTING`: `GL_LIGHTING`, 0 or 1.
-    Lighting = 1,
-    /// `SPEC_LOCAL_VIEWER`: `GL_LIGHT_MODEL_LOCAL_VIEWER`, 0 or 1.
-    LocalViewer = 2,
-    /// `SPEC_TWO_SIDE`: `GL_LIGHT_MODEL_TWO_SIDE`, 0 or 1.
-    TwoSide = 3,
-    /// `SPEC_SEPARATE_SPECULAR`: 1 for `GL_SEPARATE_SPECULAR_COLOR`, 0 for `GL_SINGLE_COLOR`.
-    SeparateSpecular = 4,
-    /// `SPEC_COLOR_MATERIAL`: `GL_COLOR_MATERIAL`, 0 or 1.
-    ColorMaterial = 5,
-    /// `SPEC_ANY_LOCAL_LIGHT`: 0 promises that no enabled light is positional (w ≠ 0), so
-    /// the shader skips attenuation; 1 means some may be.
-    AnyLocalLight = 6,
-    /// `SPEC_ANY_SPOT_LIGHT`: 0 promises that no enabled light is a spot (cutoff ≠ 180), so
-    /// the shader skips the cone; 1 means some may be.
-    AnySpotLight = 7,
-    /// `SPEC_TEX_ENV`: `GL_TEXTURE_ENV_MODE` as
-    /// [`TexEnvMode::code`](crate::gl::texture::TexEnvMode::code); read only by the textured
-    /// variants.
-    TexEnv = 8,
-    /// `SPEC_SPECULAR_MODEL`: the specular term as [`specular_code`].
-    SpecularModel = 9,
-    /// `SPEC_ANY_SOFT_SPOT`: 0 promises that every enabled light has GL's spot edge, so the
-    /// soft edges are compiled out; 1 means some light may have another.
-    AnySoftSpot = 10,
-    /// `SPEC_ANY_GLTF_FALLOFF`: 0 promises that every enabled light has GL's attenuation,
-    /// so glTF's falloff is compiled out; 1 means some light may have it.
-    AnyGltfFalloff = 11,
-    /// `SPEC_FINITE_VERTICES`: 1 promises that every vertex lies at a finite point (w ≠ 0: the
-    /// draw's modelview is affine, its last row (0, 0, 0, 1)), so that for every light
-    /// [`SpecConstant::DirectionalLights`] names, VP_pli and, for the infinite viewer, ĥ_i are
-    /// the light's derived state ([`GpuLight::VP_hat_inf`], [`GpuLight::h_hat_inf`]) at every
-    /// vertex; 0 promises nothing. Set per draw ([`SpecKey::for_draw`]).
-    FiniteVertices = 12,
-    /// `SPEC_POINTS`: 1 for a pipeline drawing points, whose vertex stage writes the point
-    /// size (one pixel, GL's default); 0 for other topologies. Set from the draw's topology
-    /// when the pipeline is made, not by [`SpecKey::for_state`].
-    Points = 13,
-    /// `SPEC_POINT_SIZE`: a `float`, the point size a points pipeline writes (GL's
-    /// `glPointSize`, [`RasterState::point_size`](crate::draw::pipeline::RasterState::point_size));
-    /// its bits are the key's entry, set when the pipeline is made.
-    PointSize = 14,
-    /// `SPEC_DIRECTIONAL_LIGHTS`: a bit per enabled light in packed order, set where the light
-    /// is directional (w = 0): its attenuation is compiled out, and at finite vertices its
-    /// VP_pli and ĥ_i are its derived state; a clear bit is a positional light. Each light is
-    /// specialized for its own kind, as Mesa's fixed-function key does, rather than every
-    /// light for the kinds of all.
-    DirectionalLights = 15,
-    /// `SPEC_SPOT_LIGHTS`: a bit per enabled light in packed order, set where the light is a
-    /// spot (cutoff ≠ 180): the cone is compiled in for those lights only.
-    SpotLights = 16,
-    /// `SPEC_GL_SNORM`: the vertex layout's signed normalized arrays, converted as GL 2.1 does
-    /// ((2c + 1) / (2^b − 1)): a byte per attribute (the normal's, then the color's), holding
-    /// b (0: none) and bit 7 when the array has a fourth component. Set from the layout when
-    /// the pipeline is made, in every pipeline.
-    GlSnorm = 17,
-    /// `SPEC_RECORD_VEC4S`: `vec4`s from one draw record to the next in the record buffer
-    /// ([`record_stride`] / 16), for the deferred lighting pass; set in every pipeline.
-    RecordVec4s = 18,
-    /// `SPEC_COLOR_SUM`: `GL_COLOR_SUM` with lighting off, 0 or 1 (lit draws always sum).
-    ColorSum = 19,
-    /// `SPEC_ALPHA_FUNC`: the alpha test's function as
-    /// [`CompareFunc::code`](crate::gl::state::CompareFunc::code), 7 (`GL_ALWAYS`) while off.
-    AlphaFunc = 20,
-    /// `SPEC_ALPHA_BITS`: the color attachment's alpha bits when it is UNORM (the alpha test
-    /// compares at that fixed-point precision, as GL does), 0 for a float compare; set from the
-    /// target in every pipeline.
-    AlphaBits = 21,
-    /// `SPEC_FOG_MODE`: [`Fog::mode_code`](crate::gl::state::Fog::mode_code), 0 with fog off.
-    FogMode = 22,
-    /// `SPEC_FOG_SOURCE`: 1 for `GL_FOG_COORD`, 0 for `GL_FRAGMENT_DEPTH` (0 with fog off).
-    FogSource = 23,
-    /// `SPEC_FOG_PER_VERTEX`: 1 for `GL_FOG_HINT` `GL_FASTEST` (0 with fog off).
-    FogPerVertex = 24,
-    /// `SPEC_CLIP_PLANES`: the enabled user clip planes, a bit each ([`ClipPlanes::mask`](crate::gl::state::ClipPlanes::mask));
-    /// read by the `_clipped` variants, which write `gl_ClipDistance`.
-    ClipPlanes = 25,
-    /// `SPEC_POINT_ATTENUATION`: 1 where a points pipeline's size falls with the distance
-    /// (`GL_POINT_DISTANCE_ATTENUATION` ≠ (1, 0, 0)). This and the point constants after it are
-    /// the pipeline's own, like [`SpecConstant::PointSize`]: set when a points pipeline is made
-    /// (the uber-shader's too), fixed to their "off" values in every other pipeline.
-    PointAttenuation = 26,
-    /// `SPEC_POINT_ATTENUATION_A`: a `float`, a of `GL_POINT_DISTANCE_ATTENUATION`.
-    PointAttenuationA = 27,
-    /// `SPEC_POINT_ATTENUATION_B`: a `float`, b.
-    PointAttenuationB = 28,
-    /// `SPEC_POINT_ATTENUATION_C`: a `float`, c.
-    PointAttenuationC = 29,
-    /// `SPEC_POINT_SIZE_MIN`: a `float`, `GL_POINT_SIZE_MIN`.
-    PointSizeMin = 30,
-    /// `SPEC_POINT_SIZE_MAX`: a `float`, `GL_POINT_SIZE_MAX`.
-    PointSizeMax = 31,
-    /// `SPEC_POINT_SPRITE`: bit 0 `GL_POINT_SPRITE`, bit 1 `GL_COORD_REPLACE` (of a textured
-    /// pipeline), bit 2 `GL_POINT_SPRITE_COORD_ORIGIN` `GL_LOWER_LEFT`.
-    PointSprite = 32,
-}
-
-/// How many specialization constants there are.
-pub const SPEC_CONSTANT_COUNT: usize = 33;
-
-impl SpecConstant {
-    /// Every constant, in `constant_id` order.
-    pub const ALL: [SpecConstant; SPEC_CONSTANT_COUNT] = [
-        SpecConstant::LightCount,
-        SpecConstant::Lighting,
-        SpecConstant::LocalViewer,
-        SpecConstant::TwoSide,
-        SpecConstant::SeparateSpecular,
-        SpecConstant::ColorMaterial,
-        SpecConstant::AnyLocalLight,
-        SpecConstant::AnySpotLight,
-        SpecConstant::TexEnv,
-        SpecConstant::SpecularModel,
-        SpecConstant::AnySoftSpot,
-        SpecConstant::AnyGltfFalloff,
-        SpecConstant::FiniteVertices,
-        SpecConstant::Points,
-        SpecConstant::PointSize,
-        SpecConstant::DirectionalLights,
-        SpecConstant::SpotLights,
-        SpecConstant::GlSnorm,
-        SpecConstant::RecordVec4s,
-        SpecConstant::ColorSum,
-        SpecConstant::AlphaFunc,
-        SpecConstant::AlphaBits,
-        SpecConstant::FogMode,
-        SpecConstant::FogSource,
-        SpecConstant::FogPerVertex,
-        SpecConstant::ClipPlanes,
-        SpecConstant::PointAttenuation,
-        SpecConstant::PointAttenuationA,
-        SpecConstant::PointAttenuationB,
-        SpecConstant::PointAttenuationC,
-        SpecConstant::PointSizeMin,
-        SpecConstant::PointSizeMax,
-        SpecConstant::PointSprite,
-    ];
-
-    /// The `constant_id` in the GLSL.
-    pub fn id(self) -> u32 {
-        self as u32
-    }
-
-    /// The constant's name in the GLSL.
-    pub fn glsl_name(self) -> &'static str {
-        match self {
-            SpecConstant::LightCount => "SPEC_LIGHT_COUNT",
-            SpecConstant::Lighting => "SPEC_LIGHTING",
-            SpecConstant::LocalViewer => "SPEC_LOCAL_VIEWER",
-            SpecConstant::TwoSide => "SPEC_TWO_SIDE",
-            SpecConstant::SeparateSpecular => "SPEC_SEPARATE_SPECULAR",
-            SpecConstant::ColorMaterial => "SPEC_COLOR_MATERIAL",
-            SpecConstant::AnyLocalLight => "SPEC_ANY_LOCAL_LIGHT",
-            SpecConstant::AnySpotLight => "SPEC_ANY_SPOT_LIGHT",
-            SpecConstant::TexEnv => "SPEC_TEX_ENV",
-            SpecConstant::SpecularModel => "SPEC_SPECULAR_MODEL",
-            SpecConstant::AnySoftSpot => "SPEC_ANY_SOFT_SPOT",
-            SpecConstant::AnyGltfFalloff => "SPEC_ANY_GLTF_FALLOFF",
-            SpecConstant::FiniteVertices => "SPEC_FINITE_VERTICES",
-            SpecConstant::DirectionalLights => "SPEC_DIRECTIONAL_LIGHTS",
-            SpecConstant::SpotLights => "SPEC_SPOT_LIGHTS",
-            SpecConstant::Points => "SPEC_POINTS",
-            SpecConstant::PointSize => "SPEC_POINT_SIZE",
-            SpecConstant::GlSnorm => "SPEC_GL_SNORM",
-            SpecConstant::RecordVec4s => "SPEC_RECORD_VEC4S",
-            SpecConstant::ColorSum => "SPEC_COLOR_SUM",
-            SpecConstant::AlphaFunc => "SPEC_ALPHA_FUNC",
-            SpecConstant::AlphaBits => "SPEC_ALPHA_BITS",
-            SpecConstant::FogMode => "SPEC_FOG_MODE",
-            SpecConstant::FogSource => "SPEC_FOG_SOURCE",
-            SpecConstant::FogPerVertex => "SPEC_FOG_PER_VERTEX",
-            SpecConstant::ClipPlanes => "SPEC_CLIP_PLANES",
-            SpecConstant::PointAttenuation => "SPEC_POINT_ATTENUATION",
-            SpecConstant::PointAttenuationA => "SPEC_POINT_ATTENUATION_A",
-            SpecConstant::PointAttenuationB => "SPEC_POINT_ATTENUATION_B",
-            SpecConstant::PointAttenuationC => "SPEC_POINT_ATTENUATION_C",
-            SpecConstant::PointSizeMin => "SPEC_POINT_SIZE_MIN",
-            SpecConstant::PointSizeMax => "SPEC_POINT_SIZE_MAX",
-            SpecConstant::PointSprite => "SPEC_POINT_SPRITE",
-        }
-    }
-}
-
-/// The values of every specialization constant for one pipeline, indexed by `constant_id`;
-/// -1 leaves the state to the uniform. The bytes are the `VkSpecializationInfo` data.
-#[repr(C)]
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, bytemuck::Pod, bytemuck::Zeroable)]
-#[non_exhaustive]
-pub struct SpecKey {
-    /// Entry `constant_id`: -1 (read the uniform), or the value the constant is fixed to.
-    pub values: [i32; SPEC_CONSTANT_COUNT],
-}
-
-impl SpecKey {
-    /// Every constant at -1: one pipeline per mode that branches on the uniforms.
-    pub const UBER: SpecKey = SpecKey {
-        values: [-1; SPEC_CONSTANT_COUNT],
-    };
-
-    /// The value of one constant.
-    pub fn get(&self, c: SpecConstant) -> i32 {
-        self.values[c as usize]
-    }
-
-    /// A key with every constant fixed to `state`'s values. States that light the same way
-    /// share a key: unlit states have one key, and what cannot matter is zeroed (the light
-    /// model and light kinds without lights). The environment mode counts only while
-    /// `GL_TEXTURE_2D` is enabled.
-    pub fn for_state(state: &FixedFunctionState) -> SpecKey {
-        let mut values = [0; SPEC_CONSTANT_COUNT];
-        if state.texture.enabled {
-            values[SpecConstant::TexEnv as usize] = state.texture.env_mode.code() as i32;
-        }
-        values[SpecConstant::AlphaFunc as usize] = state.fragment.alpha_test.effective_func().code() as i32;
-        values[SpecConstant::ClipPlanes as usize] = state.clip.mask() as i32;
-        let fog = &state.fragment.fog;
-        if fog.enabled {
-            values[SpecConstant::FogMode as usize] = fog.mode_code() as i32;
-            values[SpecConstant::FogSource as usize] = (fog.source == FogSource::FogCoord) as i32;
-            values[SpecConstant::FogPerVertex as usize] = fog.hint.per_vertex() as i32;
-        }
-        if !state.lighting {
-            values[SpecConstant::ColorSum as usize] = state.fragment.color_sum as i32;
-            return SpecKey { values };
-        }
-        let lights: Vec<&Light> = state.enabled_lights().collect();
-        let mut set = |c: SpecConstant, on: bool| values[c as usize] = on as i32;
-        set(SpecConstant::Lighting, true);
-        set(SpecConstant::TwoSide, state.model.two_side);
-        set(SpecConstant::ColorMaterial, state.color_material.enabled);
-        if !lights.is_empty() {
-            set(SpecConstant::LocalViewer, state.model.local_viewer);
-            set(
-                SpecConstant::SeparateSpecular,
-                state.model.color_control == ColorControl::SeparateSpecularColor,
-            );
-            set(
-                SpecConstant::AnyLocalLight,
-                lights.iter().any(|l| l.position.w != 0.0),
-            );
-            set(
-                SpecConstant::AnySpotLight,
-                lights.iter().any(|l| l.spot_cutoff != 180.0),
-            );
-            set(
-                SpecConstant::AnySoftSpot,
-                lights
-                    .iter()
-                    .any(|l| l.spot_cutoff != 180.0 && l.spot_edge != SpotEdge::GlExponent),
-            );
-            set(
-                SpecConstant::AnyGltfFalloff,
-                lights
-                    .iter()
-                    .any(|l| l.position.w != 0.0 && l.attenuation != Attenuation::GlK012),
-            );
-            values[SpecConstant::SpecularModel as usize] = specular_code(state.model.specular_model) as i32;
-        }
-        let mask = |kind: fn(&Light) -> bool| {
-            lights
-                .iter()
-                .enumerate()
-                .filter(|(_, l)| kind(l))
-                .fold(0, |mask, (i, _)| mask | 1 << i)
-        };
-        values[SpecConstant::DirectionalLights as usize] = mask(|l| l.position.w == 0.0);
-        values[SpecConstant::SpotLights as usize] = mask(|l| l.spot_cutoff != 180.0);
-        values[SpecConstant::LightCount as usize] = lights.len() as i32;
-        SpecKey { values }
-    }
-
-    /// [`SpecKey::for_state`] for a draw with `modelview`: [`SpecConstant::FiniteVertices`]
-    /// set where it can act (lit, with lights, every one directional) and the modelview is
-    /// affine, which makes every vertex's w exactly 1. The uber-shader's key stays as it is.
-    pub fn for_draw(state: &FixedFunctionState, modelview: Mat4) -> SpecKey {
-        SpecKey::for_state(state).with_finite_vertices(modelview.row(3) == glam::Vec4::W)
-    }
-
-    /// This key with [`SpecConstant::FiniteVertices`] set to `finite` where it can act (see
-    /// [`SpecKey::for_draw`]).
-    pub fn with_finite_vertices(mut self, finite: bool) -> SpecKey {
-        let can_act = self.get(SpecConstant::Lighting) == 1
-            && self.get(SpecConstant::LightCount) > 0
-            && self.get(SpecConstant::DirectionalLights) > 0;
-        if can_act {
-            self.values[SpecConstant::FiniteVertices as usize] = finite as i32;
-        }
-        self
-    }
 }
 
 /// (M⁻¹)ᵀ of the upper 3x3 of the modelview: the matrix normals are transformed by.
@@ -663,6 +377,15 @@ impl StateBlock {
             fog_per_vertex: fog.hint.per_vertex() as u32,
             clip_mask: state.clip.mask(),
             clip_planes: state.clip.planes.map(|p| p.to_array()),
+            texgen: if state.texture.enabled {
+                state.texture.texgen_code()
+            } else {
+                0
+            },
+            texgen_pad_0: 0,
+            texgen_pad_1: 0,
+            texgen_pad_2: 0,
+            texgen_planes: state.texture.texgen.map(|g| g.plane().to_array()),
             lights,
         }
     }

@@ -6,7 +6,7 @@
 
 use glam::{DVec2, DVec3, DVec4};
 
-use crate::gl::texture::{MagFilter, Sampling, TexEnvMode, TextureImage, TextureUnit, Wrap};
+use crate::gl::texture::{MagFilter, Sampling, TexEnvMode, TexGenMode, TextureImage, TextureUnit, Wrap};
 
 /// What texturing did at one fragment (what `ffvk explain` prints).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -37,9 +37,35 @@ pub fn tex_env(mode: TexEnvMode, c_f: DVec4, c_s: DVec4, c_c: DVec4) -> DVec4 {
     }
 }
 
-/// A texture coordinate (s, t) through the texture matrix, divided by q.
-pub fn transform_st(unit: &TextureUnit, st: [f32; 2]) -> DVec4 {
-    unit.matrix.as_dmat4() * DVec4::new(st[0] as f64, st[1] as f64, 0.0, 1.0)
+/// A vertex's texture coordinates (s, t, 0, 1), each generated one replaced
+/// ([`generated_coords`]), through the texture matrix: (s, t, r, q), not yet divided by q.
+/// `p_o`, `p_e`, `n_f` as [`generated_coords`] takes them.
+pub fn transform_st(unit: &TextureUnit, st: [f32; 2], p_o: DVec4, p_e: DVec4, n_f: DVec3) -> DVec4 {
+    let c = DVec4::new(st[0] as f64, st[1] as f64, 0.0, 1.0);
+    unit.matrix.as_dmat4() * generated_coords(unit, c, p_o, p_e, n_f)
+}
+
+/// GL 2.1 §2.11.4, texture coordinate generation: `c` with each coordinate whose generation
+/// is on replaced by its mode's value of the vertex, `p_o` in object coordinates, `p_e` in eye
+/// coordinates, `n_f` the eye-space normal as lighting takes it. The copy of
+/// `glsl/texgen.glsl`'s `generated_coords`.
+pub fn generated_coords(unit: &TextureUnit, c: DVec4, p_o: DVec4, p_e: DVec4, n_f: DVec3) -> DVec4 {
+    // u: the unit vector from the eye to the vertex; r: its reflection about n_f.
+    let u = p_e.truncate().normalize();
+    let r = u - 2.0 * n_f * n_f.dot(u);
+    let m = 2.0 * (r.x * r.x + r.y * r.y + (r.z + 1.0) * (r.z + 1.0)).sqrt();
+    let sphere = [r.x / m + 0.5, r.y / m + 0.5, 0.0, 0.0];
+    let mut g = c.to_array();
+    for (i, gen) in unit.texgen.iter().enumerate().filter(|(_, gen)| gen.enabled) {
+        g[i] = match gen.mode {
+            TexGenMode::ObjectLinear => gen.object_plane.as_dvec4().dot(p_o),
+            TexGenMode::EyeLinear => gen.eye_plane.as_dvec4().dot(p_e),
+            TexGenMode::SphereMap => sphere[i],
+            TexGenMode::ReflectionMap => r.extend(0.0)[i],
+            TexGenMode::NormalMap => n_f.extend(0.0)[i],
+        };
+    }
+    DVec4::from_array(g)
 }
 
 /// (s, t, r, q) → (s/q, t/q).

@@ -1,0 +1,60 @@
+// Texture coordinate generation (GL 2.1 §2.11.4) in the vertex stages of the TEXTURE builds:
+// each coordinate whose GL_TEXTURE_GEN_S (_T, _R, _Q) is on is replaced, before the texture
+// matrix, by the value its GL_TEXTURE_GEN_MODE makes of the vertex. Evaluated per vertex in every
+// lighting mode, as GL does. The CPU reference's copy is src/reference/texture.rs
+// (generated_coords).
+#ifndef FFVK_TEXGEN_GLSL
+#define FFVK_TEXGEN_GLSL
+
+#include "draw.glsl"
+
+// Values of each coordinate's 3 bits of SPEC_TEXGEN and state.texgen, S in bits 0-2, T 3-5,
+// R 6-8, Q 9-11; mirrored by TexGenMode::code.
+#define TEXGEN_OFF 0u
+#define TEXGEN_OBJECT_LINEAR 1u
+#define TEXGEN_EYE_LINEAR 2u
+#define TEXGEN_SPHERE_MAP 3u
+#define TEXGEN_REFLECTION_MAP 4u
+#define TEXGEN_NORMAL_MAP 5u
+
+uint texgen_modes() {
+    return SPEC_TEXGEN < 0 ? uber_value(state.texgen) : uint(SPEC_TEXGEN);
+}
+
+// Whether some coordinate's mode reads the eye-space normal (sphere, reflection, normal map).
+bool texgen_reads_normal() {
+    uint modes = texgen_modes();
+    bool reads = false;
+    [[unroll]] for (uint i = 0u; i < 4u; i++) reads = reads || ((modes >> (3u * i)) & 7u) >= TEXGEN_SPHERE_MAP;
+    return reads;
+}
+
+// (s, t, r, q) = c with the generated coordinates replaced: p_o the vertex in object
+// coordinates, p_e in eye coordinates, n_f the eye-space normal as lighting takes it
+// (GL_NORMALIZE and GL_RESCALE_NORMAL applied). The plane of coordinate i is
+// state.texgen_planes[i]: its object plane for GL_OBJECT_LINEAR, its eye plane (already
+// p M⁻¹) for GL_EYE_LINEAR.
+vec4 generated_coords(vec4 c, vec4 p_o, vec4 p_e, vec3 n_f) {
+    uint modes = texgen_modes();
+    if (modes == TEXGEN_OFF) return c;
+    // u: the unit vector from the eye to the vertex; r: its reflection about n_f.
+    vec3 u = normalize(p_e.xyz);
+    vec3 r = u - 2.0 * n_f * dot(n_f, u);
+    float m = 2.0 * sqrt(r.x * r.x + r.y * r.y + (r.z + 1.0) * (r.z + 1.0));
+    float sphere[4] = float[4](r.x / m + 0.5, r.y / m + 0.5, 0.0, 0.0);
+    float reflected[4] = float[4](r.x, r.y, r.z, 0.0);
+    float normal[4] = float[4](n_f.x, n_f.y, n_f.z, 0.0);
+    vec4 g = c;
+    [[unroll]] for (uint i = 0u; i < 4u; i++) {
+        uint mode = (modes >> (3u * i)) & 7u;
+        vec4 plane = state.texgen_planes[i];
+        if (mode == TEXGEN_OBJECT_LINEAR) g[i] = dot(plane, p_o);
+        else if (mode == TEXGEN_EYE_LINEAR) g[i] = dot(plane, p_e);
+        else if (mode == TEXGEN_SPHERE_MAP) g[i] = sphere[i];
+        else if (mode == TEXGEN_REFLECTION_MAP) g[i] = reflected[i];
+        else if (mode == TEXGEN_NORMAL_MAP) g[i] = normal[i];
+    }
+    return g;
+}
+
+#endif
