@@ -12,6 +12,9 @@ use glam::{DVec3, DVec4, Mat4, Vec3};
 use crate::support::*;
 use crate::texture_conformance::{check, waves, Case};
 
+/// (coordinate, mode) pairs: the coordinates generated.
+type Generated = Vec<(usize, TexGenMode)>;
+
 /// GL's state of the texture conformance scenes with `gens` (coordinate, mode) generated and the
 /// texture matrix `matrix` after them; GL_EYE_LINEAR's planes set under `eye_modelview`.
 fn with_texgen(mode: LightingMode, gens: &[(usize, TexGenMode)], matrix: Mat4) -> FixedFunctionState {
@@ -50,7 +53,7 @@ fn each_texgen_mode_on_a_lit_turned_sphere_matches_mesa_gl() {
     let identity = Mat4::IDENTITY;
     // Reflection and normal vectors lie in [-1, 1]: scaled into [0, 1] by the texture matrix.
     let to_unit = Mat4::from_translation(Vec3::splat(0.5)) * Mat4::from_scale(Vec3::splat(0.5));
-    let setups: Vec<(&str, Vec<(usize, TexGenMode)>, Mat4)> = vec![
+    let setups: Vec<(&str, Generated, Mat4)> = vec![
         (
             "object_linear",
             vec![(0, ObjectLinear), (1, ObjectLinear)],
