@@ -259,14 +259,7 @@ unsafe fn primitive_indices(
             }
         };
         let Ok(needed) = u32::try_from(needed) else {
-            return fail(
-                FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
-                format!(
-                    "{f}: count {count} of mode {} makes {needed} indices, more than written (a uint32_t) holds: expected a count whose indices number at most {}",
-                    mode_name(mode),
-                    u32::MAX
-                ),
-            );
+            return too_many_indices(f, count, mode, needed);
         };
         // SAFETY: checked non-null; writable by the caller's contract.
         unsafe {
@@ -392,14 +385,7 @@ pub unsafe extern "C" fn ffvkEdgeFlaggedIndices(
         };
         let needed = gl_primitives::edge_flagged_count(triangles);
         let Ok(needed) = u32::try_from(needed) else {
-            return fail(
-                FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
-                format!(
-                    "{f}: count {count} of mode {} makes {needed} indices, more than written (a uint32_t) holds: expected a count whose indices number at most {}",
-                    mode_name(mode),
-                    u32::MAX
-                ),
-            );
+            return too_many_indices(f, count, mode, needed);
         };
         // SAFETY: checked non-null; writable by the caller's contract.
         unsafe { written.write(needed) };
@@ -457,6 +443,18 @@ pub unsafe extern "C" fn ffvkEdgeFlaggedIndices(
         }
         FfvkResult::FFVK_SUCCESS
     })
+}
+
+/// The error for `count` vertices of `mode` whose `needed` indices pass a `uint32_t`.
+fn too_many_indices(f: &str, count: u32, mode: u32, needed: u64) -> FfvkResult {
+    fail(
+        FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+        format!(
+            "{f}: count {count} of mode {} makes {needed} indices, more than written (a uint32_t) holds: expected a count whose indices number at most {}",
+            mode_name(mode),
+            u32::MAX
+        ),
+    )
 }
 
 /// Writes each index of `indices` to `out`, one after another.

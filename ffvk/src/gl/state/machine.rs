@@ -275,14 +275,22 @@ impl GlState {
     /// singular modelview is an error (ffvk's choice: GL's inverse does not exist).
     pub fn tex_gen_eye_plane(&mut self, coord: usize, p: glam::DVec4) -> Result<(), StateError> {
         self.texgen_mut(coord)?;
+        let eye = self.plane_to_eye("GL_EYE_PLANE", p)?;
+        self.texgen_mut(coord)?.eye_plane = eye;
+        Ok(())
+    }
+
+    /// Plane `p` (object coordinates, parameter `parameter`) in eye space, p · M⁻¹ with the
+    /// modelview current now: glClipPlane's and glTexGen(GL_EYE_PLANE)'s rule. Errors: a
+    /// component, given or transformed, that is not finite; a singular modelview.
+    fn plane_to_eye(&self, parameter: &'static str, p: glam::DVec4) -> Result<Vec4, StateError> {
         let components = p.to_array().map(|c| c as f32);
-        finite_vec("GL_EYE_PLANE", &components)?;
+        finite_vec(parameter, &components)?;
         let eye = ClipPlanes::to_eye(p, self.modelview).ok_or(StateError::SingularClipModelview {
             determinant: self.modelview.as_dmat4().determinant(),
         })?;
-        finite_vec("GL_EYE_PLANE", eye.to_array().as_slice())?;
-        self.texgen_mut(coord)?.eye_plane = eye;
-        Ok(())
+        finite_vec(parameter, eye.to_array().as_slice())?;
+        Ok(eye)
     }
 
     /// glAlphaFunc: the alpha test's function and reference, the reference clamped to [0, 1]
@@ -320,12 +328,7 @@ impl GlState {
     /// plane undefined then).
     pub fn clip_plane(&mut self, i: usize, p: glam::DVec4) -> Result<(), StateError> {
         self.clip_plane_mut(i)?;
-        let components = p.to_array().map(|c| c as f32);
-        finite_vec("GL_CLIP_PLANEi", &components)?;
-        let eye = ClipPlanes::to_eye(p, self.modelview).ok_or(StateError::SingularClipModelview {
-            determinant: self.modelview.as_dmat4().determinant(),
-        })?;
-        finite_vec("GL_CLIP_PLANEi", eye.to_array().as_slice())?;
+        let eye = self.plane_to_eye("GL_CLIP_PLANEi", p)?;
         self.lighting.clip.planes[i] = eye;
         Ok(())
     }
