@@ -78,7 +78,7 @@ layout(std140, set = 0, binding = 0) uniform State {
     uint color_sum;       // COLOR_SUM
     uint alpha_func;      // ALPHA_TEST_FUNC, 0 NEVER .. 7 ALWAYS (7 while the test is off)
     float alpha_ref;      // ALPHA_TEST_REF, in [0, 1]
-    uint pad_;
+    uint combine;         // GL_COMBINE's state (Combine::code), read under TEXTURE_ENV_MODE COMBINE
     vec4 fog_color;       // FOG_COLOR
     float fog_start;      // FOG_START
     float fog_end;        // FOG_END
@@ -171,6 +171,8 @@ layout(constant_id = 31) const float SPEC_POINT_SIZE_MAX = 3.40282347e38;  // FL
 layout(constant_id = 32) const int SPEC_POINT_SPRITE = 0;
 // Texture coordinate generation: each coordinate's mode, 3 bits from S (texgen.glsl).
 layout(constant_id = 33) const int SPEC_TEXGEN = -1;
+// GL_COMBINE's functions, sources, operands and scales (texture.glsl, Combine::code).
+layout(constant_id = 34) const int SPEC_COMBINE = -1;
 
 // A switch of the uber-shader, read from the uniform block. lavapipe 22.3 compiles a shader
 // variant for every draw whose uniforms changed when an if or a loop bound depends on uniform

@@ -5,7 +5,7 @@
 use std::ffi::c_void;
 
 use ffvk::gl::state::{ColorControl, FixedFunctionState, Light, LightingMode, Material};
-use ffvk::gl::texture::{MagFilter, MinFilter, Sampling, TexEnvMode, TextureImage, TextureUnit, Wrap};
+use ffvk::gl::texture::{MagFilter, MinFilter, Sampling, TextureImage, Wrap};
 use ffvk::mesh::{MeshData, Vertex};
 
 use super::bindings::types::{GLenum, GLint, GLsizei, GLsizeiptr, GLuint};
@@ -13,6 +13,7 @@ use super::bindings::{self as gl, Gl};
 use super::calls::{color_material_enum, face_enum, replay, set_enabled};
 use super::egl::{drain_errors, gl_string};
 use super::error::{DrawError, GlError};
+use super::texture_unit::set_texture_unit;
 use super::{GlDraw, GlInfo, GlScene};
 
 /// GL_VERSION, GL_RENDERER, GL_VENDOR and GL_MAX_LIGHTS of the current context.
@@ -267,75 +268,6 @@ fn wrap_enum(wrap: Wrap) -> GLenum {
         Wrap::MirroredRepeat => gl::MIRRORED_REPEAT,
         // A mode added to ffvk after this table: GL_NONE makes GL raise INVALID_ENUM, which
         // fails the render with GL's error rather than drawing another mode.
-        _ => gl::NONE,
-    }
-}
-
-fn tex_env_enum(mode: TexEnvMode) -> GLenum {
-    match mode {
-        TexEnvMode::Modulate => gl::MODULATE,
-        TexEnvMode::Replace => gl::REPLACE,
-        TexEnvMode::Decal => gl::DECAL,
-        TexEnvMode::Blend => gl::BLEND,
-        TexEnvMode::Add => gl::ADD,
-        // As in wrap_enum: GL's INVALID_ENUM fails the render.
-        _ => gl::NONE,
-    }
-}
-
-/// The texture unit: `texture`'s object bound (else object 0, which has no image), the
-/// environment, the `GL_TEXTURE` matrix and the `GL_TEXTURE_2D` enable. Leaves the matrix mode
-/// at `GL_MODELVIEW`.
-fn set_texture_unit(gl: &Gl, unit: &TextureUnit, texture: Option<&GlTexture>) {
-    // SAFETY: a context is current on this thread; the name, when there is one, is a texture
-    // it made and has not deleted; the color has four components and the matrix 16,
-    // column-major as both glam and GL store it.
-    unsafe {
-        gl.BindTexture(gl::TEXTURE_2D, texture.map_or(0, |t| t.name));
-        gl.TexEnvi(
-            gl::TEXTURE_ENV,
-            gl::TEXTURE_ENV_MODE,
-            tex_env_enum(unit.env_mode) as GLint,
-        );
-        gl.TexEnvfv(
-            gl::TEXTURE_ENV,
-            gl::TEXTURE_ENV_COLOR,
-            unit.env_color.to_array().as_ptr(),
-        );
-        gl.MatrixMode(gl::TEXTURE);
-        gl.LoadMatrixf(unit.matrix.to_cols_array().as_ptr());
-        gl.MatrixMode(gl::MODELVIEW);
-    }
-    set_enabled(gl, gl::TEXTURE_2D, unit.enabled);
-    // Texture coordinate generation, with the modelview at identity (set_state's), so that
-    // each eye plane, already in eye space, is stored as it is.
-    let coords = [
-        (gl::S, gl::TEXTURE_GEN_S),
-        (gl::T, gl::TEXTURE_GEN_T),
-        (gl::R, gl::TEXTURE_GEN_R),
-        (gl::Q, gl::TEXTURE_GEN_Q),
-    ];
-    for ((coord, cap), g) in coords.into_iter().zip(&unit.texgen) {
-        // SAFETY: a context is current on this thread; each plane has four components.
-        unsafe {
-            gl.TexGeni(coord, gl::TEXTURE_GEN_MODE, texgen_enum(g.mode) as GLint);
-            gl.TexGenfv(coord, gl::OBJECT_PLANE, g.object_plane.to_array().as_ptr());
-            gl.TexGenfv(coord, gl::EYE_PLANE, g.eye_plane.to_array().as_ptr());
-        }
-        set_enabled(gl, cap, g.enabled);
-    }
-}
-
-/// GL's enum of a texture coordinate generation mode.
-fn texgen_enum(mode: ffvk::gl::texture::TexGenMode) -> GLenum {
-    use ffvk::gl::texture::TexGenMode;
-    match mode {
-        TexGenMode::ObjectLinear => gl::OBJECT_LINEAR,
-        TexGenMode::EyeLinear => gl::EYE_LINEAR,
-        TexGenMode::SphereMap => gl::SPHERE_MAP,
-        TexGenMode::ReflectionMap => gl::REFLECTION_MAP,
-        TexGenMode::NormalMap => gl::NORMAL_MAP,
-        // As in tex_env_enum: GL's INVALID_ENUM fails the render.
         _ => gl::NONE,
     }
 }
@@ -639,7 +571,7 @@ pub(super) fn set_state(
     set_enabled(gl, gl::NORMALIZE, state.normalize);
     set_enabled(gl, gl::RESCALE_NORMAL, state.rescale_normal);
     set_enabled(gl, gl::LIGHTING, state.lighting);
-    set_texture_unit(gl, &state.texture, texture);
+    set_texture_unit(gl, &state.texture, texture.map(|t| t.name));
     set_stages(gl, state);
     // The raster state the calls may set, at GL's defaults for each draw.
     for cap in [

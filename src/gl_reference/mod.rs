@@ -19,6 +19,7 @@ mod calls;
 mod draw;
 mod egl;
 mod error;
+mod texture_unit;
 mod timing;
 
 /// GL 2.1 compatibility-profile entry points and enums (plus GL_ARB_framebuffer_object),

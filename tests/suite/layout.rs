@@ -184,7 +184,7 @@ fn the_state_block_matches_the_glsl_in_every_stage() {
         let want = rust_offsets!(StateBlock: projection, texture_matrix, a_cs, c_c, light_count, lighting,
             v_bs, t_bs, separate_specular, color_material, color_material_front, color_material_back,
             color_material_mode, normalize, specular_model, tex_env_mode, color_sum, alpha_func, alpha_ref,
-            pad_, fog_color, fog_start, fog_end, fog_density, fog_scale, fog_mode, fog_source, fog_per_vertex,
+            combine, fog_color, fog_start, fog_end, fog_density, fog_scale, fog_mode, fog_source, fog_per_vertex,
             clip_mask, clip_planes, texgen, texgen_pad_0, texgen_pad_1, texgen_pad_2, texgen_planes, lights);
         assert_eq!(r.members(block), want, "{stage}: State block offsets");
 

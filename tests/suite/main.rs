@@ -12,6 +12,7 @@ mod c_api_renderer;
 mod c_api_state;
 mod canvas;
 mod cli;
+mod combine;
 mod conformance;
 mod deferred;
 mod determinism;

@@ -1,5 +1,5 @@
 //! GL's polygon stipple (§3.5.2, `glPolygonStipple`): the pattern as a draw carries it
-//! ([`PolygonStipple`]) and as the fragment stage reads it, specialization constants 34 .. 66 of
+//! ([`PolygonStipple`]) and as the fragment stage reads it, specialization constants 35 .. 67 of
 //! `glsl/stipple.glsl`, set for stippled pipelines only (the lighting's [`SpecKey`] stays as it
 //! is).
 //!

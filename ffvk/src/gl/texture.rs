@@ -10,6 +10,11 @@ use glam::{Mat4, Vec4};
 
 use super::errors::StateError;
 
+mod combine;
+mod texgen;
+pub use combine::{AlphaOperand, Combine, CombineFunc, CombineSource, RgbOperand};
+pub use texgen::{TexCoordGen, TexGenMode};
+
 /// `GL_TEXTURE_ENV_MODE` (table 3.22): how the texel C_s, A_s combines with the incoming
 /// fragment color C_f, A_f (the lit primary color).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
@@ -26,6 +31,9 @@ pub enum TexEnvMode {
     Blend,
     /// `GL_ADD`: C_v = C_f + C_s (clamped to [0, 1]), A_v = A_f A_s.
     Add,
+    /// `GL_COMBINE` (§3.8.13): the function [`TextureUnit::combine`] says. Not in
+    /// [`TexEnvMode::ALL`], which lists table 3.22's five.
+    Combine,
 }
 
 impl TexEnvMode {
@@ -46,6 +54,7 @@ impl TexEnvMode {
             TexEnvMode::Decal => "decal",
             TexEnvMode::Blend => "blend",
             TexEnvMode::Add => "add",
+            TexEnvMode::Combine => "combine",
         }
     }
 
@@ -73,134 +82,6 @@ impl std::str::FromStr for TexEnvMode {
     }
 }
 
-/// `GL_TEXTURE_GEN_MODE` (GL 2.1 §2.11.4): how a texture coordinate is generated from the
-/// vertex, when its `GL_TEXTURE_GEN_S` (`_T`, `_R`, `_Q`) is enabled.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-#[non_exhaustive]
-pub enum TexGenMode {
-    /// `GL_OBJECT_LINEAR`: g = p1 x_o + p2 y_o + p3 z_o + p4 w_o, the object plane.
-    ObjectLinear,
-    /// `GL_EYE_LINEAR` (GL's default): g = p1' x_e + p2' y_e + p3' z_e + p4' w_e, the eye plane
-    /// (given in object coordinates, taken to eye space by the modelview's inverse then).
-    #[default]
-    EyeLinear,
-    /// `GL_SPHERE_MAP` (S and T only): r = u − 2 n_f (n_f · u), m = 2 √(r_x² + r_y² + (r_z + 1)²),
-    /// s = r_x / m + ½, t = r_y / m + ½, u the unit vector from the eye to the vertex, n_f the
-    /// eye-space normal.
-    SphereMap,
-    /// `GL_REFLECTION_MAP` (S, T and R): r's x, y, z.
-    ReflectionMap,
-    /// `GL_NORMAL_MAP` (S, T and R): n_f's x, y, z.
-    NormalMap,
-}
-
-impl TexGenMode {
-    /// Every mode.
-    pub const ALL: [TexGenMode; 5] = [
-        TexGenMode::ObjectLinear,
-        TexGenMode::EyeLinear,
-        TexGenMode::SphereMap,
-        TexGenMode::ReflectionMap,
-        TexGenMode::NormalMap,
-    ];
-
-    /// Lowercase name, as scene files write it (`object_linear`, …).
-    pub fn name(self) -> &'static str {
-        match self {
-            TexGenMode::ObjectLinear => "object_linear",
-            TexGenMode::EyeLinear => "eye_linear",
-            TexGenMode::SphereMap => "sphere_map",
-            TexGenMode::ReflectionMap => "reflection_map",
-            TexGenMode::NormalMap => "normal_map",
-        }
-    }
-
-    /// GL's name (`GL_OBJECT_LINEAR`, …).
-    pub fn gl_name(self) -> &'static str {
-        match self {
-            TexGenMode::ObjectLinear => "GL_OBJECT_LINEAR",
-            TexGenMode::EyeLinear => "GL_EYE_LINEAR",
-            TexGenMode::SphereMap => "GL_SPHERE_MAP",
-            TexGenMode::ReflectionMap => "GL_REFLECTION_MAP",
-            TexGenMode::NormalMap => "GL_NORMAL_MAP",
-        }
-    }
-
-    /// The value the shaders' `TEXGEN_*` take (`glsl/texgen.glsl`): 1 to 5; 0 is "not
-    /// generated".
-    pub fn code(self) -> u32 {
-        match self {
-            TexGenMode::ObjectLinear => 1,
-            TexGenMode::EyeLinear => 2,
-            TexGenMode::SphereMap => 3,
-            TexGenMode::ReflectionMap => 4,
-            TexGenMode::NormalMap => 5,
-        }
-    }
-
-    /// Whether GL accepts the mode for coordinate `coord` (0 S, 1 T, 2 R, 3 Q): `GL_SPHERE_MAP`
-    /// for S and T only, `GL_REFLECTION_MAP` and `GL_NORMAL_MAP` for S, T and R (§2.11.4's
-    /// `GL_INVALID_ENUM`).
-    pub fn allowed_for(self, coord: usize) -> bool {
-        match self {
-            TexGenMode::SphereMap => coord < 2,
-            TexGenMode::ReflectionMap | TexGenMode::NormalMap => coord < 3,
-            _ => coord < 4,
-        }
-    }
-}
-
-/// One texture coordinate's generation (`GL_TEXTURE_GEN_S` .. `_Q` with glTexGen's state).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
-pub struct TexCoordGen {
-    /// `GL_TEXTURE_GEN_S` (`_T`, `_R`, `_Q`); off by default: the coordinate is the vertex's.
-    pub enabled: bool,
-    /// `GL_TEXTURE_GEN_MODE`; `GL_EYE_LINEAR` by default.
-    pub mode: TexGenMode,
-    /// `GL_OBJECT_PLANE`, as given.
-    pub object_plane: Vec4,
-    /// `GL_EYE_PLANE` in eye space: (p1 p2 p3 p4) M⁻¹ with M the modelview when it was set.
-    pub eye_plane: Vec4,
-}
-
-impl TexCoordGen {
-    /// GL's initial state of coordinate `coord` (0 S, 1 T, 2 R, 3 Q): both planes (1, 0, 0, 0)
-    /// for S, (0, 1, 0, 0) for T, zero for R and Q (table 6.15), the eye plane as set with the
-    /// identity modelview.
-    pub fn initial(coord: usize) -> TexCoordGen {
-        let plane = match coord {
-            0 => Vec4::X,
-            1 => Vec4::Y,
-            _ => Vec4::ZERO,
-        };
-        TexCoordGen {
-            enabled: false,
-            mode: TexGenMode::EyeLinear,
-            object_plane: plane,
-            eye_plane: plane,
-        }
-    }
-
-    /// The shader's code for this coordinate: 0 when it is not generated, else the mode's.
-    pub fn code(&self) -> u32 {
-        if self.enabled {
-            self.mode.code()
-        } else {
-            0
-        }
-    }
-
-    /// The plane the mode reads (object or eye), zero for the others.
-    pub fn plane(&self) -> Vec4 {
-        match self.mode {
-            TexGenMode::ObjectLinear => self.object_plane,
-            TexGenMode::EyeLinear => self.eye_plane,
-            _ => Vec4::ZERO,
-        }
-    }
-}
-
 /// The texture unit's state besides the bound texture.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[non_exhaustive]
@@ -220,6 +101,9 @@ pub struct TextureUnit {
     /// `GL_COORD_REPLACE` (glTexEnv with target `GL_POINT_SPRITE`); off by default. On, a point
     /// sprite's fragments take the sprite's (s, t, 0, 1) as this unit's texture coordinates.
     pub coord_replace: bool,
+    /// `GL_COMBINE`'s functions, sources, operands and scales, which only
+    /// [`TexEnvMode::Combine`] reads.
+    pub combine: Combine,
     /// Texture coordinate generation for S, T, R and Q (§2.11.4), before the texture matrix.
     pub texgen: [TexCoordGen; 4],
 }
@@ -232,6 +116,7 @@ impl Default for TextureUnit {
             env_color: Vec4::ZERO,
             matrix: Mat4::IDENTITY,
             coord_replace: false,
+            combine: Combine::default(),
             texgen: [0, 1, 2, 3].map(TexCoordGen::initial),
         }
     }
@@ -265,6 +150,13 @@ impl TextureUnit {
                     valid: "components in [0, 1] (glTexEnv clamps them)",
                 });
             }
+        }
+        if !self.combine.is_valid() {
+            return Err(StateError::NotAccepted {
+                parameter: "GL_COMBINE_ALPHA, GL_RGB_SCALE or GL_ALPHA_SCALE",
+                value: self.combine.alpha.gl_name(),
+                valid: "an alpha function other than GL_DOT3_RGB(A), and scales of 1, 2 or 4",
+            });
         }
         for (i, g) in self.texgen.iter().enumerate() {
             if !g.mode.allowed_for(i) {

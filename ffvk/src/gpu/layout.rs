@@ -208,8 +208,10 @@ pub struct StateBlock {
     pub alpha_func: u32,
     /// `GL_ALPHA_TEST_REF`, in [0, 1].
     pub alpha_ref: f32,
-    /// Unused: keeps the next field on a 16-byte boundary.
-    pub pad_: u32,
+    /// `GL_COMBINE`'s state as [`Combine::code`](crate::gl::texture::Combine::code) (read
+    /// under `GL_TEXTURE_ENV_MODE` `GL_COMBINE`); it also keeps the next field on a 16-byte
+    /// boundary.
+    pub combine: u32,
     /// `GL_FOG_COLOR`, RGBA in [0, 1].
     pub fog_color: [f32; 4],
     /// `GL_FOG_START`.
@@ -362,7 +364,7 @@ impl StateBlock {
             color_sum: state.fragment.color_sum as u32,
             alpha_func: state.fragment.alpha_test.effective_func().code(),
             alpha_ref: state.fragment.alpha_test.reference,
-            pad_: 0,
+            combine: state.texture.combine.code(),
             fog_color: fog.color.to_array(),
             fog_start: fog.start,
             fog_end: fog.end,

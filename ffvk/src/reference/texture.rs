@@ -6,7 +6,10 @@
 
 use glam::{DVec2, DVec3, DVec4};
 
-use crate::gl::texture::{MagFilter, Sampling, TexEnvMode, TexGenMode, TextureImage, TextureUnit, Wrap};
+use crate::gl::texture::{
+    AlphaOperand, Combine, CombineFunc, CombineSource, MagFilter, RgbOperand, Sampling, TexEnvMode,
+    TexGenMode, TextureImage, TextureUnit, Wrap,
+};
 
 /// What texturing did at one fragment (what `ffvk explain` prints).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -23,18 +26,70 @@ pub struct Textured {
 }
 
 /// Table 3.22 for an RGBA texture: the fragment color `c_f` (the primary color) combined with
-/// the texel `c_s` in `mode`, `c_c` the environment color. Every result is in [0, 1] (ADD
-/// clamps).
-pub fn tex_env(mode: TexEnvMode, c_f: DVec4, c_s: DVec4, c_c: DVec4) -> DVec4 {
+/// the texel `c_s` in `mode`, `c_c` the environment color; `GL_COMBINE` as `combine` says
+/// ([`combine`]). Every result is in [0, 1] (ADD and COMBINE clamp).
+pub fn tex_env(mode: TexEnvMode, combine_state: &Combine, c_f: DVec4, c_s: DVec4, c_c: DVec4) -> DVec4 {
     let (cf, cs, cc) = (c_f.truncate(), c_s.truncate(), c_c.truncate());
     let (af, a_s) = (c_f.w, c_s.w);
     match mode {
+        TexEnvMode::Combine => combine(combine_state, c_f, c_s, c_c),
         TexEnvMode::Replace => c_s,
         TexEnvMode::Modulate => (cf * cs).extend(af * a_s),
         TexEnvMode::Decal => (cf * (1.0 - a_s) + cs * a_s).extend(af),
         TexEnvMode::Blend => (cf * (DVec3::ONE - cs) + cc * cs).extend(af * a_s),
         TexEnvMode::Add => (cf + cs).clamp(DVec3::ZERO, DVec3::ONE).extend(af * a_s),
     }
+}
+
+/// GL 2.1 §3.8.13, `GL_COMBINE` (table 3.24) for one unit: the arguments from the sources
+/// (`GL_PREVIOUS` of the first unit is the primary color `c_f`), the function of them for RGB
+/// and for alpha (`GL_DOT3_RGBA` puts the dot product in alpha too), each result scaled and
+/// clamped to [0, 1]. The copy of `glsl/texture.glsl`'s `combine`.
+pub fn combine(c: &Combine, c_f: DVec4, c_s: DVec4, c_c: DVec4) -> DVec4 {
+    let source = |s: CombineSource| match s {
+        CombineSource::Texture => c_s,
+        CombineSource::Constant => c_c,
+        _ => c_f,
+    };
+    let rgb_arg = |i: usize| {
+        let v = source(c.rgb_sources[i]);
+        match c.rgb_operands[i] {
+            RgbOperand::SrcColor => v.truncate(),
+            RgbOperand::OneMinusSrcColor => DVec3::ONE - v.truncate(),
+            RgbOperand::SrcAlpha => DVec3::splat(v.w),
+            _ => DVec3::splat(1.0 - v.w),
+        }
+    };
+    let alpha_arg = |i: usize| {
+        let a = source(c.alpha_sources[i]).w;
+        match c.alpha_operands[i] {
+            AlphaOperand::SrcAlpha => a,
+            _ => 1.0 - a,
+        }
+    };
+    let [a0, a1, a2] = [0, 1, 2].map(rgb_arg);
+    let dot = 4.0 * (a0 - 0.5).dot(a1 - 0.5);
+    let rgb = match c.rgb {
+        CombineFunc::Replace => a0,
+        CombineFunc::Modulate => a0 * a1,
+        CombineFunc::Add => a0 + a1,
+        CombineFunc::AddSigned => a0 + a1 - 0.5,
+        CombineFunc::Interpolate => a0 * a2 + a1 * (DVec3::ONE - a2),
+        CombineFunc::Subtract => a0 - a1,
+        _ => DVec3::splat(dot),
+    };
+    let [b0, b1, b2] = [0, 1, 2].map(alpha_arg);
+    let alpha = match (c.rgb, c.alpha) {
+        (CombineFunc::Dot3Rgba, _) => dot,
+        (_, CombineFunc::Replace) => b0,
+        (_, CombineFunc::Add) => b0 + b1,
+        (_, CombineFunc::AddSigned) => b0 + b1 - 0.5,
+        (_, CombineFunc::Interpolate) => b0 * b2 + b1 * (1.0 - b2),
+        (_, CombineFunc::Subtract) => b0 - b1,
+        _ => b0 * b1,
+    };
+    let rgb = (rgb * f64::from(c.rgb_scale)).clamp(DVec3::ZERO, DVec3::ONE);
+    rgb.extend((alpha * f64::from(c.alpha_scale)).clamp(0.0, 1.0))
 }
 
 /// A vertex's texture coordinates (s, t, 0, 1), each generated one replaced
@@ -187,7 +242,13 @@ pub fn texture_fragment(
     let [st, st_dx, st_dy] = stq.map(project);
     let lambda = lambda(image, st_dx - st, st_dy - st);
     let texel = sample(image, sampling, st, lambda);
-    let env = tex_env(unit.env_mode, c_pri, texel, unit.env_color.as_dvec4());
+    let env = tex_env(
+        unit.env_mode,
+        &unit.combine,
+        c_pri,
+        texel,
+        unit.env_color.as_dvec4(),
+    );
     Textured {
         st,
         lambda,
@@ -212,14 +273,26 @@ mod tests {
             c(0.5, 1.0, 0.0, 0.25),
             c(1.0, 0.0, 0.5, 1.0),
         );
-        assert_eq!(tex_env(TexEnvMode::Replace, f, s, cc), s);
-        assert_eq!(tex_env(TexEnvMode::Modulate, f, s, cc), c(0.25, 0.25, 0.0, 0.2));
+        assert_eq!(tex_env(TexEnvMode::Replace, &Combine::default(), f, s, cc), s);
+        assert_eq!(
+            tex_env(TexEnvMode::Modulate, &Combine::default(), f, s, cc),
+            c(0.25, 0.25, 0.0, 0.2)
+        );
         // Decal: C_f (1 − A_s) + C_s A_s, alpha A_f.
-        assert_eq!(tex_env(TexEnvMode::Decal, f, s, cc), c(0.5, 0.4375, 0.75, 0.8));
+        assert_eq!(
+            tex_env(TexEnvMode::Decal, &Combine::default(), f, s, cc),
+            c(0.5, 0.4375, 0.75, 0.8)
+        );
         // Blend: C_f (1 − C_s) + C_c C_s, alpha A_f A_s.
-        assert_eq!(tex_env(TexEnvMode::Blend, f, s, cc), c(0.75, 0.0, 1.0, 0.2));
+        assert_eq!(
+            tex_env(TexEnvMode::Blend, &Combine::default(), f, s, cc),
+            c(0.75, 0.0, 1.0, 0.2)
+        );
         // Add clamps.
-        assert_eq!(tex_env(TexEnvMode::Add, f, s, cc), c(1.0, 1.0, 1.0, 0.2));
+        assert_eq!(
+            tex_env(TexEnvMode::Add, &Combine::default(), f, s, cc),
+            c(1.0, 1.0, 1.0, 0.2)
+        );
     }
 
     #[test]

@@ -123,6 +123,8 @@ impl Builder<'_> {
         let modes: Vec<(&'static str, TexEnvMode)> = TexEnvMode::ALL.iter().map(|&m| (m.name(), m)).collect();
         let unit = TextureUnit {
             enabled: spec.enabled.unwrap_or(true),
+            // Scene files have no GL_COMBINE yet: GL's initial combine state.
+            combine: TextureUnit::default().combine,
             env_mode: spec
                 .env
                 .as_deref()

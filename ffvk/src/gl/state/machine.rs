@@ -423,6 +423,53 @@ impl GlState {
                 let c = finite4("GL_TEXTURE_ENV_COLOR", c)?;
                 self.lighting.texture.env_color = c.clamp(Vec4::ZERO, Vec4::ONE);
             }
+            combine => self.tex_env_combine(combine)?,
+        }
+        Ok(())
+    }
+
+    /// glTexEnv's `GL_COMBINE` parameters, with GL's errors; nothing changes on one.
+    fn tex_env_combine(&mut self, param: TexEnvParam) -> Result<(), StateError> {
+        let argument = |n: usize| {
+            if n < 3 {
+                Ok(n)
+            } else {
+                Err(StateError::OutOfRange {
+                    parameter: "the argument n of GL_SRCn_* or GL_OPERANDn_*",
+                    value: n as f32,
+                    valid: "0, 1 or 2",
+                })
+            }
+        };
+        let scale = |parameter: &'static str, s: f32| {
+            if s == 1.0 || s == 2.0 || s == 4.0 {
+                Ok(s)
+            } else {
+                Err(StateError::OutOfRange {
+                    parameter,
+                    value: s,
+                    valid: "1.0, 2.0 or 4.0",
+                })
+            }
+        };
+        let c = &mut self.lighting.texture.combine;
+        match param {
+            TexEnvParam::CombineRgb(f) => c.rgb = f,
+            TexEnvParam::CombineAlpha(f) if !f.is_alpha_function() => {
+                return Err(StateError::NotAccepted {
+                    parameter: "GL_COMBINE_ALPHA",
+                    value: f.gl_name(),
+                    valid: "GL_REPLACE, GL_MODULATE, GL_ADD, GL_ADD_SIGNED, GL_INTERPOLATE or GL_SUBTRACT",
+                })
+            }
+            TexEnvParam::CombineAlpha(f) => c.alpha = f,
+            TexEnvParam::SourceRgb(n, s) => c.rgb_sources[argument(n)?] = s,
+            TexEnvParam::SourceAlpha(n, s) => c.alpha_sources[argument(n)?] = s,
+            TexEnvParam::OperandRgb(n, o) => c.rgb_operands[argument(n)?] = o,
+            TexEnvParam::OperandAlpha(n, o) => c.alpha_operands[argument(n)?] = o,
+            TexEnvParam::RgbScale(s) => c.rgb_scale = scale("GL_RGB_SCALE", s)?,
+            TexEnvParam::AlphaScale(s) => c.alpha_scale = scale("GL_ALPHA_SCALE", s)?,
+            TexEnvParam::Mode(_) | TexEnvParam::Color(_) => {}
         }
         Ok(())
     }

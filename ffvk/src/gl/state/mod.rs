@@ -40,7 +40,7 @@
 
 use glam::{Vec3, Vec4};
 
-use super::texture::{TexEnvMode, TextureUnit};
+use super::texture::{AlphaOperand, CombineFunc, CombineSource, RgbOperand, TexEnvMode, TextureUnit};
 
 mod caps;
 mod checks;
@@ -459,6 +459,22 @@ pub enum TexEnvParam {
     Mode(TexEnvMode),
     /// `GL_TEXTURE_ENV_COLOR`, C_c: clamped to [0, 1] as GL does; NaN or infinity is an error.
     Color(Vec4),
+    /// `GL_COMBINE_RGB`.
+    CombineRgb(CombineFunc),
+    /// `GL_COMBINE_ALPHA`: `GL_DOT3_RGB` and `GL_DOT3_RGBA` are GL's `GL_INVALID_ENUM`.
+    CombineAlpha(CombineFunc),
+    /// `GL_SRCn_RGB`, n in 0..3.
+    SourceRgb(usize, CombineSource),
+    /// `GL_SRCn_ALPHA`, n in 0..3.
+    SourceAlpha(usize, CombineSource),
+    /// `GL_OPERANDn_RGB`, n in 0..3.
+    OperandRgb(usize, RgbOperand),
+    /// `GL_OPERANDn_ALPHA`, n in 0..3.
+    OperandAlpha(usize, AlphaOperand),
+    /// `GL_RGB_SCALE`: 1, 2 or 4, else GL's `GL_INVALID_VALUE`.
+    RgbScale(f32),
+    /// `GL_ALPHA_SCALE`: 1, 2 or 4, else GL's `GL_INVALID_VALUE`.
+    AlphaScale(f32),
 }
 
 /// Parameters of glLight.

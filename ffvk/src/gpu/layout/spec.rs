@@ -115,10 +115,14 @@ pub enum SpecConstant {
     /// ([`TextureUnit::texgen_code`](crate::gl::texture::TextureUnit::texgen_code)); read only
     /// by the textured variants' vertex stages.
     TexGen = 33,
+    /// `SPEC_COMBINE`: `GL_COMBINE`'s state as
+    /// [`Combine::code`](crate::gl::texture::Combine::code) where the environment mode is
+    /// `GL_COMBINE`, else 0; read only by the textured variants' fragment stages.
+    Combine = 34,
 }
 
 /// How many specialization constants there are.
-pub const SPEC_CONSTANT_COUNT: usize = 34;
+pub const SPEC_CONSTANT_COUNT: usize = 35;
 
 impl SpecConstant {
     /// Every constant, in `constant_id` order.
@@ -157,6 +161,7 @@ impl SpecConstant {
         SpecConstant::PointSizeMax,
         SpecConstant::PointSprite,
         SpecConstant::TexGen,
+        SpecConstant::Combine,
     ];
 
     /// The `constant_id` in the GLSL.
@@ -201,6 +206,7 @@ impl SpecConstant {
             SpecConstant::PointSizeMax => "SPEC_POINT_SIZE_MAX",
             SpecConstant::PointSprite => "SPEC_POINT_SPRITE",
             SpecConstant::TexGen => "SPEC_TEXGEN",
+            SpecConstant::Combine => "SPEC_COMBINE",
         }
     }
 }
@@ -235,6 +241,9 @@ impl SpecKey {
         if state.texture.enabled {
             values[SpecConstant::TexEnv as usize] = state.texture.env_mode.code() as i32;
             values[SpecConstant::TexGen as usize] = state.texture.texgen_code() as i32;
+            if state.texture.env_mode == crate::gl::texture::TexEnvMode::Combine {
+                values[SpecConstant::Combine as usize] = state.texture.combine.code() as i32;
+            }
         }
         values[SpecConstant::AlphaFunc as usize] = state.fragment.alpha_test.effective_func().code() as i32;
         values[SpecConstant::ClipPlanes as usize] = state.clip.mask() as i32;
