@@ -39,6 +39,7 @@ mod report;
 mod rooms;
 mod scene;
 mod scene_raster;
+mod scene_texgen;
 mod specialization;
 mod stage_scenes;
 mod state;
