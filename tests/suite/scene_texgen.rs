@@ -274,3 +274,18 @@ fn bad_texgen_values_name_the_file_the_field_the_value_and_what_was_expected() {
     let m = refused("enabled", "{ s = { enabled = 1 } }");
     contains_all(&m, &["enabled"]);
 }
+
+/// The asset scene: a lit teapot whose S and T come from GL_SPHERE_MAP.
+#[test]
+fn the_chrome_asset_scene_is_sphere_mapped() {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/chrome.toml");
+    let scene = Scene::load(&path).unwrap();
+    assert!(scene.warnings.is_empty(), "{:?}", scene.warnings);
+    assert!(scene.state.lighting);
+    let teapot = scene.meshes.iter().find(|m| m.name == "teapot").unwrap();
+    let g = teapot.texture.as_ref().unwrap().unit.texgen;
+    assert!(g[..2]
+        .iter()
+        .all(|g| g.enabled && g.mode == TexGenMode::SphereMap));
+    assert!(!g[2].enabled && !g[3].enabled);
+}
