@@ -40,6 +40,7 @@ mod report;
 mod rooms;
 mod scene;
 mod scene_raster;
+mod scene_texgen;
 mod specialization;
 mod stage_scenes;
 mod state;

@@ -1,7 +1,8 @@
-//! The stages' asset scenes (fog.toml, foliage.toml, section.toml, and the raster state's
-//! hidden_line.toml and mirror.toml) and variations of them,
-//! drawn through ffvk against Mesa's GL (vertex and flat modes: GL has no per-fragment
-//! lighting) and against the CPU reference at a grid of probes (every mode), and explained.
+//! The stages' asset scenes (fog.toml, foliage.toml, section.toml, the raster state's
+//! hidden_line.toml and mirror.toml, texture coordinate generation's chrome.toml) and
+//! variations of them, drawn through ffvk against Mesa's GL (vertex and flat modes: GL has no
+//! per-fragment lighting) and against the CPU reference at a grid of probes (every mode), and
+//! explained.
 
 use std::path::{Path, PathBuf};
 
@@ -57,6 +58,8 @@ fn scenes() -> Vec<(String, Scene)> {
         // The raster state of issue 50: an offset fill under GL_LINE, a stencil mirror.
         ("hidden_line".into(), load(&asset("hidden_line.toml"))),
         ("mirror".into(), load(&asset("mirror.toml"))),
+        // A lit teapot sphere-mapped (glTexGen's GL_SPHERE_MAP on S and T).
+        ("chrome".into(), load(&asset("chrome.toml"))),
         (
             // The fill screen-doored by a polygon stipple of 2 × 2 checks.
             "hidden_line_stippled".into(),

@@ -3,6 +3,7 @@
 //! the scene is built from it.
 
 use serde::Deserialize;
+use std::collections::BTreeMap;
 use std::path::PathBuf;
 
 /// A whole scene file.
@@ -436,4 +437,21 @@ pub(super) struct TextureSpec {
     pub(super) rotate: Option<f32>,
     #[serde(default, deserialize_with = "exact")]
     pub(super) translate: Option<[f32; 2]>,
+    /// Texture coordinate generation: a table per coordinate generated, `s`, `t`, `r` or `q`.
+    /// A map rather than fields, so that an unknown coordinate is refused naming its path.
+    pub(super) texgen: Option<BTreeMap<String, TexCoordGenSpec>>,
+}
+
+/// One coordinate of a `texgen` table: glTexGen for it, GL_TEXTURE_GEN_S (`_T`, `_R`, `_Q`)
+/// on unless `enabled = false`.
+#[derive(Debug, Default, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct TexCoordGenSpec {
+    pub(super) enabled: Option<bool>,
+    /// GL_TEXTURE_GEN_MODE: "object_linear", "eye_linear" (GL's default), "sphere_map",
+    /// "reflection_map" or "normal_map".
+    pub(super) mode: Option<String>,
+    /// GL_OBJECT_PLANE or GL_EYE_PLANE (the mode's), 4 numbers; an eye plane in world space.
+    /// Read as a list, so that a wrong length is refused by name.
+    pub(super) plane: Option<Vec<f64>>,
 }

@@ -1,20 +1,26 @@
 //! The `[texture]` table of a scene file (and a mesh's own `texture`): GL_TEXTURE_2D with a
 //! texture image from a PNG or JPEG file or a built-in pattern, glTexParameter's filters and
-//! wraps, GL_GENERATE_MIPMAP, glTexEnv and the GL_TEXTURE matrix.
+//! wraps, GL_GENERATE_MIPMAP, glTexEnv, glTexGen and the GL_TEXTURE matrix.
 
+use std::collections::BTreeMap;
 use std::path::Path;
 use std::sync::Arc;
 
 use glam::{Mat4, Quat, Vec3, Vec4};
 
-use super::file::TextureSpec;
+use super::file::{TexCoordGenSpec, TextureSpec};
 use super::{shorten, Builder, SceneError};
+use crate::gl::state::{Cap, GlState};
 use crate::gl::texture::{
-    MagFilter, MinFilter, Sampling, TexEnvMode, TextureImage, TextureUnit, Wrap, MAX_TEXTURE_SIZE,
+    MagFilter, MinFilter, Sampling, TexCoordGen, TexEnvMode, TexGenMode, TextureImage, TextureUnit, Wrap,
+    MAX_TEXTURE_SIZE,
 };
 
 /// The largest image file read for a texture, in bytes.
 const MAX_IMAGE_BYTES: u64 = 256 << 20;
+
+/// The keys of a `texgen` table, S to Q (glTexGen's coordinates 0 to 3).
+const COORDS: [&str; 4] = ["s", "t", "r", "q"];
 
 /// A texture a mesh is drawn with: the image (shared between the meshes that name the same
 /// one), GL's texture parameters and the texture unit's state.
@@ -61,11 +67,12 @@ fn word<T: Copy>(
 impl Builder<'_> {
     /// The texture a `texture` table at `field` describes, or `None` when it is disabled;
     /// `warnings` gets a sentence when the texture is incomplete (it then textures nothing,
-    /// as in GL).
+    /// as in GL). `view` is the camera's, which takes `texgen`'s eye planes to eye space.
     pub(super) fn texture(
         &self,
         field: &str,
         spec: &TextureSpec,
+        view: Mat4,
         warnings: &mut Vec<String>,
     ) -> Result<Option<MeshTexture>, SceneError> {
         let f = |name: &str| format!("{field}.{name}");
@@ -135,8 +142,10 @@ impl Builder<'_> {
             },
             matrix: self.texture_matrix(field, spec)?,
             coord_replace: spec.coord_replace.unwrap_or(false),
-            // Scene files do not generate coordinates yet: GL's initial generation (off).
-            texgen: TextureUnit::default().texgen,
+            texgen: match &spec.texgen {
+                Some(coords) => self.texgen(&f("texgen"), coords, view)?,
+                None => TextureUnit::default().texgen,
+            },
         };
         unit.validate().map_err(self.state(field))?;
         if !unit.enabled {
@@ -155,6 +164,103 @@ impl Builder<'_> {
             ));
         }
         Ok(Some(texture))
+    }
+
+    /// The `texgen` table at `field`, set as a GL program's glTexGen calls would set it: each
+    /// coordinate given generated (GL_TEXTURE_GEN_S .. on unless `enabled = false`) in its
+    /// `mode`, GL's `eye_linear` by default, from its `plane`, GL's initial plane by default;
+    /// an eye plane is given in world space and set with the view loaded, as
+    /// glTexGen(GL_EYE_PLANE) after glLoadMatrix(view), so it is stored as p · view⁻¹.
+    fn texgen(
+        &self,
+        field: &str,
+        coords: &BTreeMap<String, TexCoordGenSpec>,
+        view: Mat4,
+    ) -> Result<[TexCoordGen; 4], SceneError> {
+        if let Some(key) = coords.keys().find(|k| !COORDS.contains(&k.as_str())) {
+            return Err(self.field(
+                format!("{field}.{}", shorten(key)),
+                "is not a texture coordinate: expected s, t, r or q (GL_S, GL_T, GL_R, GL_Q)",
+            ));
+        }
+        let mut gl = GlState::new();
+        gl.load_modelview(view).map_err(self.state("camera.view"))?;
+        for (coord, name) in COORDS.into_iter().enumerate() {
+            let Some(spec) = coords.get(name) else {
+                continue;
+            };
+            let f = |part: &str| format!("{field}.{name}.{part}");
+            let mode = match &spec.mode {
+                Some(w) => self.texgen_mode(&f("mode"), coord, w)?,
+                None => TexGenMode::EyeLinear,
+            };
+            gl.tex_gen_mode(coord, mode).map_err(self.state(f("mode")))?;
+            if let Some(p) = &spec.plane {
+                let &[a, b, c, d] = p.as_slice() else {
+                    return Err(self.field(
+                        f("plane"),
+                        format!(
+                            "{} values: expected exactly 4 (the plane's p1, p2, p3, p4)",
+                            p.len()
+                        ),
+                    ));
+                };
+                if let Some(x) = p.iter().find(|x| !x.is_finite()) {
+                    return Err(self.field(f("plane"), format!("{x} is not finite: expected finite numbers")));
+                }
+                let plane = glam::DVec4::new(a, b, c, d);
+                match mode {
+                    TexGenMode::ObjectLinear => gl.tex_gen_object_plane(coord, plane),
+                    TexGenMode::EyeLinear => gl.tex_gen_eye_plane(coord, plane),
+                    _ => {
+                        return Err(self.field(
+                            f("plane"),
+                            format!(
+                                "is given with mode {:?}, which reads no plane: expected a plane with \
+                                 \"object_linear\" or \"eye_linear\" only",
+                                mode.name()
+                            ),
+                        ))
+                    }
+                }
+                .map_err(self.state(f("plane")))?;
+            }
+            gl.set_enabled(Cap::TextureGen(coord), spec.enabled.unwrap_or(true))
+                .map_err(self.state(f("enabled")))?;
+        }
+        Ok(gl.lighting.texture.texgen)
+    }
+
+    /// A `texgen` coordinate's `mode` word for coordinate `coord` (0 S .. 3 Q): one of the
+    /// modes GL accepts for it, a mode of the others refused saying which coordinates take it
+    /// (GL's `GL_INVALID_ENUM`).
+    fn texgen_mode(&self, field: &str, coord: usize, given: &str) -> Result<TexGenMode, SceneError> {
+        let modes: Vec<(&'static str, TexGenMode)> = TexGenMode::ALL
+            .iter()
+            .filter(|m| m.allowed_for(coord))
+            .map(|&m| (m.name(), m))
+            .collect();
+        let Some(&other) = TexGenMode::ALL
+            .iter()
+            .find(|m| m.name() == given && !m.allowed_for(coord))
+        else {
+            return word(self, field, given, &modes);
+        };
+        let names: Vec<String> = modes.iter().map(|(n, _)| format!("{n:?}")).collect();
+        let takes = if other == TexGenMode::SphereMap {
+            "S and T"
+        } else {
+            "S, T and R"
+        };
+        Err(self.field(
+            field,
+            format!(
+                "{given:?} for {}: expected one of {} ({} generates {takes} only: GL_INVALID_ENUM)",
+                COORDS[coord],
+                names.join(", "),
+                other.gl_name()
+            ),
+        ))
     }
 
     fn texture_matrix(&self, field: &str, spec: &TextureSpec) -> Result<Mat4, SceneError> {

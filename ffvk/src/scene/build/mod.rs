@@ -195,7 +195,7 @@ impl Builder<'_> {
         let exposure_spec = self.exposure_spec(&file, gltf_meaning)?;
         let mut meshes = Vec::new();
         let scene_texture = match &file.texture {
-            Some(t) => self.texture("texture", t, &mut warnings)?,
+            Some(t) => self.texture("texture", t, view, &mut warnings)?,
             None => None,
         };
         let mut gltf_lights: Vec<(String, PunctualLight, Mat4)> = Vec::new();
@@ -249,7 +249,7 @@ impl Builder<'_> {
                 // Texture precedence: the mesh's own, the scene's, the glTF base color texture
                 // (under glTF's meaning, through GL_MODULATE), none.
                 let texture = match (&spec.texture, &scene_texture, &pbr) {
-                    (Some(t), _, _) => self.texture(&format!("{field}.texture"), t, &mut warnings)?,
+                    (Some(t), _, _) => self.texture(&format!("{field}.texture"), t, view, &mut warnings)?,
                     (None, Some(t), _) => Some(t.clone()),
                     (None, None, Some(pbr)) if gltf_meaning => {
                         pbr.base_color_sampled.as_ref().map(|s| MeshTexture {
