@@ -12,7 +12,7 @@ use crate::gl::state::{Attenuation, ColorControl, FixedFunctionState, FogSource,
 #[repr(u32)]
 #[non_exhaustive]
 pub enum SpecConstant {
-    /// `SPEC_LIGHT_COUNT`: the number of enabled lights, 0..=[`MAX_LIGHTS`]; a constant
+    /// `SPEC_LIGHT_COUNT`: the number of enabled lights, 0..=[`MAX_LIGHTS`](crate::gl::state::MAX_LIGHTS); a constant
     /// count lets the light loop unroll.
     LightCount = 0,
     /// `SPEC_LIGHTING`: `GL_LIGHTING`, 0 or 1.
@@ -46,7 +46,7 @@ pub enum SpecConstant {
     /// `SPEC_FINITE_VERTICES`: 1 promises that every vertex lies at a finite point (w ≠ 0: the
     /// draw's modelview is affine, its last row (0, 0, 0, 1)), so that for every light
     /// [`SpecConstant::DirectionalLights`] names, VP_pli and, for the infinite viewer, ĥ_i are
-    /// the light's derived state ([`GpuLight::VP_hat_inf`], [`GpuLight::h_hat_inf`]) at every
+    /// the light's derived state ([`GpuLight::VP_hat_inf`](super::GpuLight::VP_hat_inf), [`GpuLight::h_hat_inf`](super::GpuLight::h_hat_inf)) at every
     /// vertex; 0 promises nothing. Set per draw ([`SpecKey::for_draw`]).
     FiniteVertices = 12,
     /// `SPEC_POINTS`: 1 for a pipeline drawing points, whose vertex stage writes the point
@@ -72,7 +72,7 @@ pub enum SpecConstant {
     /// the pipeline is made, in every pipeline.
     GlSnorm = 17,
     /// `SPEC_RECORD_VEC4S`: `vec4`s from one draw record to the next in the record buffer
-    /// ([`record_stride`] / 16), for the deferred lighting pass; set in every pipeline.
+    /// ([`record_stride`](super::record_stride) / 16), for the deferred lighting pass; set in every pipeline.
     RecordVec4s = 18,
     /// `SPEC_COLOR_SUM`: `GL_COLOR_SUM` with lighting off, 0 or 1 (lit draws always sum).
     ColorSum = 19,
