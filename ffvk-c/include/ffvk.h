@@ -324,6 +324,54 @@
 #ifndef GL_TEXTURE_ENV
 #define GL_TEXTURE_ENV 0x2300
 #endif
+#ifndef GL_S
+#define GL_S 0x2000
+#endif
+#ifndef GL_T
+#define GL_T 0x2001
+#endif
+#ifndef GL_R
+#define GL_R 0x2002
+#endif
+#ifndef GL_Q
+#define GL_Q 0x2003
+#endif
+#ifndef GL_EYE_LINEAR
+#define GL_EYE_LINEAR 0x2400
+#endif
+#ifndef GL_OBJECT_LINEAR
+#define GL_OBJECT_LINEAR 0x2401
+#endif
+#ifndef GL_SPHERE_MAP
+#define GL_SPHERE_MAP 0x2402
+#endif
+#ifndef GL_TEXTURE_GEN_MODE
+#define GL_TEXTURE_GEN_MODE 0x2500
+#endif
+#ifndef GL_OBJECT_PLANE
+#define GL_OBJECT_PLANE 0x2501
+#endif
+#ifndef GL_EYE_PLANE
+#define GL_EYE_PLANE 0x2502
+#endif
+#ifndef GL_NORMAL_MAP
+#define GL_NORMAL_MAP 0x8511
+#endif
+#ifndef GL_REFLECTION_MAP
+#define GL_REFLECTION_MAP 0x8512
+#endif
+#ifndef GL_TEXTURE_GEN_S
+#define GL_TEXTURE_GEN_S 0x0C60
+#endif
+#ifndef GL_TEXTURE_GEN_T
+#define GL_TEXTURE_GEN_T 0x0C61
+#endif
+#ifndef GL_TEXTURE_GEN_R
+#define GL_TEXTURE_GEN_R 0x0C62
+#endif
+#ifndef GL_TEXTURE_GEN_Q
+#define GL_TEXTURE_GEN_Q 0x0C63
+#endif
 #ifndef GL_LIGHT0
 #define GL_LIGHT0 0x4000
 #endif
@@ -1283,7 +1331,8 @@ uint32_t ffvkGetError(struct FfvkContext *ctx);
 /*
  glEnable for `GL_LIGHTING`, `GL_LIGHTi` (i < 16), `GL_COLOR_MATERIAL`, `GL_NORMALIZE`,
  `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_COLOR_SUM`, `GL_FOG`, `GL_ALPHA_TEST`,
- `GL_CLIP_PLANEi` (i < 6), `GL_POINT_SPRITE`, and the raster state's `GL_POLYGON_OFFSET_FILL`,
+ `GL_CLIP_PLANEi` (i < 6), `GL_POINT_SPRITE`, `GL_TEXTURE_GEN_S`, `_T`, `_R`, `_Q` (the
+ coordinate generated as `ffvkTexGeni` says, GL 2.1 §2.11.4), and the raster state's `GL_POLYGON_OFFSET_FILL`,
  `GL_POLYGON_OFFSET_LINE`, `GL_POLYGON_OFFSET_POINT`, `GL_LINE_STIPPLE`, `GL_POLYGON_STIPPLE`, `GL_STENCIL_TEST`,
  `GL_COLOR_LOGIC_OP`, `GL_BLEND`, `GL_DEPTH_TEST` and `GL_CULL_FACE` (which a draw takes with
  `FFVK_RASTER_SOURCE_CONTEXT`). Sets `GL_INVALID_ENUM` for any other cap (a layer keeps the
@@ -2064,6 +2113,75 @@ void ffvkFramebufferHeight(struct FfvkContext *ctx, uint32_t height);
 void ffvkEdgeFlag(struct FfvkContext *ctx, uint8_t flag);
 
 /*
+ glTexGeni: `GL_TEXTURE_GEN_MODE` of coordinate `coord` (`GL_S`, `GL_T`, `GL_R`, `GL_Q`):
+ `GL_OBJECT_LINEAR`, `GL_EYE_LINEAR` (the initial mode), `GL_SPHERE_MAP` (S and T only),
+ `GL_REFLECTION_MAP` or `GL_NORMAL_MAP` (S, T and R), used while the coordinate's
+ `GL_TEXTURE_GEN_S` (`_T`, `_R`, `_Q`) is enabled (GL 2.1 §2.11.4). Errors:
+ `GL_INVALID_ENUM` for another `coord`, another `pname` (`GL_OBJECT_PLANE` and
+ `GL_EYE_PLANE` included: their four values take the vector forms), a value that is no mode,
+ or a mode the coordinate does not take.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkTexGeni(struct FfvkContext *ctx, uint32_t coord, uint32_t pname, int32_t param);
+
+/*
+ glTexGenf: `ffvkTexGeni` with the mode's value as a float (truncated to an integer, as GL
+ reads an enum given as a float; one that is not finite sets `GL_INVALID_VALUE`, ffvk's rule
+ for every non-finite value).
+
+ # Safety
+
+ As `ffvkTexGeni`.
+ */
+void ffvkTexGenf(struct FfvkContext *ctx, uint32_t coord, uint32_t pname, float param);
+
+/*
+ glTexGend: `ffvkTexGenf` with a double.
+
+ # Safety
+
+ As `ffvkTexGeni`.
+ */
+void ffvkTexGend(struct FfvkContext *ctx, uint32_t coord, uint32_t pname, double param);
+
+/*
+ glTexGenfv: `ffvkTexGenf`'s `GL_TEXTURE_GEN_MODE`, and the coordinate's planes (p1, p2, p3,
+ p4): `GL_OBJECT_PLANE`, kept as given, and `GL_EYE_PLANE`, stored in eye space as
+ (p1 p2 p3 p4) M⁻¹ with M the context's modelview at this call (`ffvkLoadModelview`), as GL
+ does; later modelview changes do not move it. Errors: as `ffvkTexGeni`, and
+ `GL_INVALID_VALUE` for a null `params`, a plane value that is not finite, or (for the eye
+ plane) a singular modelview (ffvk's choices: GL leaves those undefined).
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `params` is null or points
+ at as many values as `pname` has (4 for a plane, 1 for the mode).
+ */
+void ffvkTexGenfv(struct FfvkContext *ctx, uint32_t coord, uint32_t pname, const float *params);
+
+/*
+ glTexGeniv: `ffvkTexGenfv` with integers, a plane's converted directly to floats.
+
+ # Safety
+
+ As `ffvkTexGenfv`.
+ */
+void ffvkTexGeniv(struct FfvkContext *ctx, uint32_t coord, uint32_t pname, const int32_t *params);
+
+/*
+ glTexGendv: `ffvkTexGenfv` with doubles (a plane is stored as floats, the eye plane
+ transformed in double precision first).
+
+ # Safety
+
+ As `ffvkTexGenfv`.
+ */
+void ffvkTexGendv(struct FfvkContext *ctx, uint32_t coord, uint32_t pname, const double *params);
+
+/*
  Newell's teapot tessellated at `level` (1 ..= 64 steps per patch side), the mesh ffvk's
  examples and tests draw: y up (the lid), the spout toward +x and the handle toward −x,
  centred on the origin within x in [−1, 1], y in [−0.483, 0.483], z in [−0.613, 0.613]
@@ -2251,6 +2369,40 @@ void ffvkGetTexEnvfv(struct FfvkContext *ctx, uint32_t target, uint32_t pname, f
 void ffvkGetTexEnviv(struct FfvkContext *ctx, uint32_t target, uint32_t pname, int32_t *params);
 
 /*
+ glGetTexGenfv: coordinate `coord`'s (`GL_S`, `GL_T`, `GL_R`, `GL_Q`) `GL_TEXTURE_GEN_MODE`
+ (one value, the mode's enum), `GL_OBJECT_PLANE` or `GL_EYE_PLANE` (four values, as stored:
+ the eye plane in eye space, as `ffvkTexGenfv` transformed it) (GL 2.1 §2.11.4, §6.1.3).
+ Errors: `GL_INVALID_ENUM` for another `coord` or `pname`; `GL_INVALID_VALUE` for a null
+ `params`.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `params` is null or has room
+ for as many values as the name has (4 for a plane). Nothing is written when an error is
+ set.
+ */
+void ffvkGetTexGenfv(struct FfvkContext *ctx, uint32_t coord, uint32_t pname, float *params);
+
+/*
+ glGetTexGeniv: `ffvkGetTexGenfv` as integers, a plane's values rounded to the nearest
+ integer (GL 2.1 §6.1.2).
+
+ # Safety
+
+ As `ffvkGetTexGenfv`.
+ */
+void ffvkGetTexGeniv(struct FfvkContext *ctx, uint32_t coord, uint32_t pname, int32_t *params);
+
+/*
+ glGetTexGendv: `ffvkGetTexGenfv` as doubles.
+
+ # Safety
+
+ As `ffvkGetTexGenfv`.
+ */
+void ffvkGetTexGendv(struct FfvkContext *ctx, uint32_t coord, uint32_t pname, double *params);
+
+/*
  glGetFloatv for the names of the state ffvk keeps: `GL_LIGHTING`, `GL_LIGHTi`,
  `GL_COLOR_MATERIAL`, `GL_COLOR_MATERIAL_FACE`, `GL_COLOR_MATERIAL_PARAMETER`,
  `GL_NORMALIZE`, `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_LIGHT_MODEL_AMBIENT`,
@@ -2261,7 +2413,7 @@ void ffvkGetTexEnviv(struct FfvkContext *ctx, uint32_t target, uint32_t pname, i
  `GL_FOG_DENSITY`, `GL_FOG_START`, `GL_FOG_END`, `GL_FOG_COLOR`, `GL_FOG_INDEX`,
  `GL_FOG_COORD_SRC`, `GL_FOG_HINT`, `GL_CURRENT_FOG_COORD`, `GL_ALPHA_TEST`,
  `GL_ALPHA_TEST_FUNC`, `GL_ALPHA_TEST_REF`, `GL_CLIP_PLANEi` (enabled),
- `GL_MAX_CLIP_PLANES` (6); and the points': `GL_POINT_SIZE_MIN`, `GL_POINT_SIZE_MAX`,
+ `GL_MAX_CLIP_PLANES` (6), `GL_TEXTURE_GEN_S`, `_T`, `_R`, `_Q` (enabled); and the points': `GL_POINT_SIZE_MIN`, `GL_POINT_SIZE_MAX`,
  `GL_POINT_FADE_THRESHOLD_SIZE`, `GL_POINT_DISTANCE_ATTENUATION` (3 values),
  `GL_POINT_SPRITE` and `GL_POINT_SPRITE_COORD_ORIGIN`; and the raster state's:
  `GL_POLYGON_MODE` (front, back), `GL_POLYGON_OFFSET_FACTOR`, `GL_POLYGON_OFFSET_UNITS`,

@@ -6,11 +6,12 @@
 use ffvk::gl::state::{
     Cap, ColorControl, ColorMaterialMode, Face, Light, Material, SpriteOrigin, MAX_LIGHTS,
 };
-use ffvk::gl::texture::TexEnvMode;
+use ffvk::gl::texture::{TexEnvMode, TexGenMode};
 
 use crate::enums::*;
 use crate::gl::{
-    face, invalid_enum, light_index, raster_cap, with_context, FfvkContext, GlResult, LIGHT_PNAMES,
+    face, invalid_enum, light_index, raster_cap, texgen_coord, with_context, FfvkContext, GlResult,
+    LIGHT_PNAMES, TEXGEN_PNAMES,
 };
 
 mod raster;
@@ -83,6 +84,7 @@ pub(crate) fn is_enabled(c: &FfvkContext, cap: Cap) -> bool {
         Cap::Fog => l.fragment.fog.enabled,
         Cap::ClipPlane(i) => l.clip.enabled.get(i).copied().unwrap_or(false),
         Cap::PointSprite => l.points.sprite,
+        Cap::TextureGen(i) => l.texture.texgen.get(i).is_some_and(|g| g.enabled),
         other => c.gl.raster.enabled(other).unwrap_or(false),
     }
 }
@@ -175,6 +177,24 @@ fn tex_env_answer(f: &str, c: &FfvkContext, target: u32, pname: u32) -> GlResult
     })
 }
 
+/// glGetTexGen's answer: the mode as GL's enum, a plane's four values as stored (the eye plane
+/// in eye space).
+fn tex_gen_answer(f: &str, c: &FfvkContext, coord: u32, pname: u32) -> GlResult<Answer> {
+    let gen = &c.gl.lighting.texture.texgen[texgen_coord(f, coord)?];
+    Ok(match pname {
+        GL_TEXTURE_GEN_MODE => Answer::Int(i64::from(match gen.mode {
+            TexGenMode::ObjectLinear => GL_OBJECT_LINEAR,
+            TexGenMode::SphereMap => GL_SPHERE_MAP,
+            TexGenMode::ReflectionMap => GL_REFLECTION_MAP,
+            TexGenMode::NormalMap => GL_NORMAL_MAP,
+            _ => GL_EYE_LINEAR,
+        })),
+        GL_OBJECT_PLANE => Answer::Floats(gen.object_plane.to_array().to_vec()),
+        GL_EYE_PLANE => Answer::Floats(gen.eye_plane.to_array().to_vec()),
+        _ => return Err(invalid_enum(f, "pname", pname, TEXGEN_PNAMES)),
+    })
+}
+
 fn face_enum(face: Face) -> u32 {
     match face {
         Face::Front => GL_FRONT,
@@ -198,6 +218,9 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
         GL_POINT_SPRITE => Some(Cap::PointSprite),
         p if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 6).contains(&p) => {
             Some(Cap::ClipPlane((p - GL_CLIP_PLANE0) as usize))
+        }
+        p if (GL_TEXTURE_GEN_S..=GL_TEXTURE_GEN_Q).contains(&p) => {
+            Some(Cap::TextureGen((p - GL_TEXTURE_GEN_S) as usize))
         }
         p if p >= GL_LIGHT0 && p < GL_LIGHT0 + MAX_LIGHTS as u32 => light_index(f, p).ok().map(Cap::Light),
         p => raster_cap(p),
@@ -269,7 +292,7 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
                 f,
                 "pname",
                 pname,
-                "a state name: GL_LIGHTING, GL_LIGHTi, GL_COLOR_MATERIAL(_FACE, _PARAMETER), GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_LIGHT_MODEL_*, GL_SHADE_MODEL, GL_CURRENT_COLOR, GL_CURRENT_NORMAL, GL_CURRENT_TEXTURE_COORDS, GL_CURRENT_SECONDARY_COLOR, GL_COLOR_SUM, GL_ALPHA_TEST(_FUNC, _REF), GL_FOG(_MODE, _DENSITY, _START, _END, _COLOR, _COORD_SRC, _HINT, _INDEX), GL_CURRENT_FOG_COORD, GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX, GL_POINT_FADE_THRESHOLD_SIZE, GL_POINT_DISTANCE_ATTENUATION, GL_POINT_SPRITE(_COORD_ORIGIN), GL_CLIP_PLANEi, GL_MAX_CLIP_PLANES, GL_MAX_LIGHTS, GL_{MODELVIEW,PROJECTION,TEXTURE}_MATRIX or a raster state name (GL_POLYGON_MODE, GL_POLYGON_OFFSET_*, GL_EDGE_FLAG, GL_LINE_STIPPLE*, GL_POLYGON_STIPPLE, GL_STENCIL_*, GL_DEPTH_*, GL_COLOR_WRITEMASK, GL_BLEND*, GL_COLOR_LOGIC_OP, GL_LOGIC_OP_MODE, GL_CULL_FACE(_MODE), GL_FRONT_FACE, GL_POINT_SIZE, GL_LINE_WIDTH)",
+                "a state name: GL_LIGHTING, GL_LIGHTi, GL_COLOR_MATERIAL(_FACE, _PARAMETER), GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_LIGHT_MODEL_*, GL_SHADE_MODEL, GL_CURRENT_COLOR, GL_CURRENT_NORMAL, GL_CURRENT_TEXTURE_COORDS, GL_CURRENT_SECONDARY_COLOR, GL_COLOR_SUM, GL_ALPHA_TEST(_FUNC, _REF), GL_FOG(_MODE, _DENSITY, _START, _END, _COLOR, _COORD_SRC, _HINT, _INDEX), GL_CURRENT_FOG_COORD, GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX, GL_POINT_FADE_THRESHOLD_SIZE, GL_POINT_DISTANCE_ATTENUATION, GL_POINT_SPRITE(_COORD_ORIGIN), GL_CLIP_PLANEi, GL_TEXTURE_GEN_S, _T, _R, _Q, GL_MAX_CLIP_PLANES, GL_MAX_LIGHTS, GL_{MODELVIEW,PROJECTION,TEXTURE}_MATRIX or a raster state name (GL_POLYGON_MODE, GL_POLYGON_OFFSET_*, GL_EDGE_FLAG, GL_LINE_STIPPLE*, GL_POLYGON_STIPPLE, GL_STENCIL_*, GL_DEPTH_*, GL_COLOR_WRITEMASK, GL_BLEND*, GL_COLOR_LOGIC_OP, GL_LOGIC_OP_MODE, GL_CULL_FACE(_MODE), GL_FRONT_FACE, GL_POINT_SIZE, GL_LINE_WIDTH)",
             ))
         }
     })
@@ -415,6 +438,59 @@ pub unsafe extern "C" fn ffvkGetTexEnviv(ctx: *mut FfvkContext, target: u32, pna
     })
 }
 
+/// glGetTexGenfv: coordinate `coord`'s (`GL_S`, `GL_T`, `GL_R`, `GL_Q`) `GL_TEXTURE_GEN_MODE`
+/// (one value, the mode's enum), `GL_OBJECT_PLANE` or `GL_EYE_PLANE` (four values, as stored:
+/// the eye plane in eye space, as `ffvkTexGenfv` transformed it) (GL 2.1 §2.11.4, §6.1.3).
+/// Errors: `GL_INVALID_ENUM` for another `coord` or `pname`; `GL_INVALID_VALUE` for a null
+/// `params`.
+///
+/// # Safety
+///
+/// `ctx` is null or a live context used by one thread at a time; `params` is null or has room
+/// for as many values as the name has (4 for a plane). Nothing is written when an error is
+/// set.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkGetTexGenfv(ctx: *mut FfvkContext, coord: u32, pname: u32, params: *mut f32) {
+    let f = "ffvkGetTexGenfv";
+    with_context(ctx, f, |c| {
+        let answer = tex_gen_answer(f, c, coord, pname)?;
+        // SAFETY: the caller's contract on params.
+        unsafe { write(f, params, &answer.floats()) }
+    })
+}
+
+/// glGetTexGeniv: `ffvkGetTexGenfv` as integers, a plane's values rounded to the nearest
+/// integer (GL 2.1 §6.1.2).
+///
+/// # Safety
+///
+/// As `ffvkGetTexGenfv`.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkGetTexGeniv(ctx: *mut FfvkContext, coord: u32, pname: u32, params: *mut i32) {
+    let f = "ffvkGetTexGeniv";
+    with_context(ctx, f, |c| {
+        let answer = tex_gen_answer(f, c, coord, pname)?;
+        // SAFETY: the caller's contract on params.
+        unsafe { write(f, params, &answer.ints()) }
+    })
+}
+
+/// glGetTexGendv: `ffvkGetTexGenfv` as doubles.
+///
+/// # Safety
+///
+/// As `ffvkGetTexGenfv`.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkGetTexGendv(ctx: *mut FfvkContext, coord: u32, pname: u32, params: *mut f64) {
+    let f = "ffvkGetTexGendv";
+    with_context(ctx, f, |c| {
+        let answer = tex_gen_answer(f, c, coord, pname)?;
+        let values: Vec<f64> = answer.floats().into_iter().map(f64::from).collect();
+        // SAFETY: the caller's contract on params.
+        unsafe { write(f, params, &values) }
+    })
+}
+
 /// glGetFloatv for the names of the state ffvk keeps: `GL_LIGHTING`, `GL_LIGHTi`,
 /// `GL_COLOR_MATERIAL`, `GL_COLOR_MATERIAL_FACE`, `GL_COLOR_MATERIAL_PARAMETER`,
 /// `GL_NORMALIZE`, `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_LIGHT_MODEL_AMBIENT`,
@@ -425,7 +501,7 @@ pub unsafe extern "C" fn ffvkGetTexEnviv(ctx: *mut FfvkContext, target: u32, pna
 /// `GL_FOG_DENSITY`, `GL_FOG_START`, `GL_FOG_END`, `GL_FOG_COLOR`, `GL_FOG_INDEX`,
 /// `GL_FOG_COORD_SRC`, `GL_FOG_HINT`, `GL_CURRENT_FOG_COORD`, `GL_ALPHA_TEST`,
 /// `GL_ALPHA_TEST_FUNC`, `GL_ALPHA_TEST_REF`, `GL_CLIP_PLANEi` (enabled),
-/// `GL_MAX_CLIP_PLANES` (6); and the points': `GL_POINT_SIZE_MIN`, `GL_POINT_SIZE_MAX`,
+/// `GL_MAX_CLIP_PLANES` (6), `GL_TEXTURE_GEN_S`, `_T`, `_R`, `_Q` (enabled); and the points': `GL_POINT_SIZE_MIN`, `GL_POINT_SIZE_MAX`,
 /// `GL_POINT_FADE_THRESHOLD_SIZE`, `GL_POINT_DISTANCE_ATTENUATION` (3 values),
 /// `GL_POINT_SPRITE` and `GL_POINT_SPRITE_COORD_ORIGIN`; and the raster state's:
 /// `GL_POLYGON_MODE` (front, back), `GL_POLYGON_OFFSET_FACTOR`, `GL_POLYGON_OFFSET_UNITS`,

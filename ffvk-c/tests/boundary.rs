@@ -91,6 +91,21 @@ const BOGUS: u32 = 0x1234;
 const LEFT: u32 = 0x0406;
 /// GL_COMBINE (GL 1.3): a texture environment mode ffvk does not draw.
 const COMBINE: u32 = 0x8570;
+const S: u32 = 0x2000;
+const T: u32 = 0x2001;
+const R: u32 = 0x2002;
+const Q: u32 = 0x2003;
+const TEXTURE_GEN_MODE: u32 = 0x2500;
+const OBJECT_PLANE: u32 = 0x2501;
+const EYE_PLANE: u32 = 0x2502;
+const EYE_LINEAR: u32 = 0x2400;
+const OBJECT_LINEAR: u32 = 0x2401;
+const SPHERE_MAP: u32 = 0x2402;
+const NORMAL_MAP: u32 = 0x8511;
+const REFLECTION_MAP: u32 = 0x8512;
+const TEXTURE_GEN_S: u32 = 0x0C60;
+const TEXTURE_GEN_R: u32 = 0x0C62;
+const TEXTURE_GEN_Q: u32 = 0x0C63;
 
 /// What a query buffer holds before the call: a query that answers overwrites it.
 const SENTINEL_F: f32 = -12345.5;
@@ -330,6 +345,15 @@ impl Ctx {
             ffvkLoadModelview(x, scale.as_ptr());
             ffvkLoadProjection(x, shear.as_ptr());
             ffvkLoadTextureMatrix(x, scale.as_ptr());
+            ffvkEnable(x, TEXTURE_GEN_S);
+            ffvkEnable(x, TEXTURE_GEN_R);
+            ffvkTexGeni(x, S, TEXTURE_GEN_MODE, OBJECT_LINEAR as i32);
+            ffvkTexGeni(x, T, TEXTURE_GEN_MODE, SPHERE_MAP as i32);
+            ffvkTexGeni(x, R, TEXTURE_GEN_MODE, REFLECTION_MAP as i32);
+            ffvkTexGenfv(x, S, OBJECT_PLANE, [0.5, -1.0, 2.0, 0.25].as_ptr());
+            ffvkTexGenfv(x, Q, OBJECT_PLANE, [1.0, 2.0, 3.0, 4.0].as_ptr());
+            ffvkTexGendv(x, T, EYE_PLANE, [0.0, 1.5, -0.5, 3.0].as_ptr());
+            ffvkTexGeniv(x, R, EYE_PLANE, [4, 0, -2, 1].as_ptr());
             for cap in [0x8037, 0x0B24, 0x0B71, 0x0B90, BLEND, 0x0BF2, 0x0B44] {
                 ffvkEnable(x, cap);
             }
@@ -406,6 +430,13 @@ impl Ctx {
                 });
             }
             let caps = [LIGHTING, COLOR_MATERIAL, NORMALIZE, RESCALE_NORMAL, TEXTURE_2D];
+            for coord in [S, T, R, Q] {
+                for p in [TEXTURE_GEN_MODE, OBJECT_PLANE, EYE_PLANE] {
+                    take(format!("GetTexGenfv(0x{coord:04X}, 0x{p:04X})"), &|b| {
+                        ffvkGetTexGenfv(x, coord, p, b)
+                    });
+                }
+            }
             for p in 0..6 {
                 take(format!("GetClipPlane({p})"), &|b| {
                     let mut d = [0.0f64; 4];
@@ -419,6 +450,7 @@ impl Ctx {
                 .into_iter()
                 .chain((0..16).map(|i| LIGHT0 + i))
                 .chain((0..6).map(|i| 0x3000 + i))
+                .chain(TEXTURE_GEN_S..=TEXTURE_GEN_Q)
             {
                 let on = ffvkIsEnabled(x, cap) as f32;
                 take(format!("IsEnabled(0x{cap:04X})"), &|b| b.write(on));
@@ -548,6 +580,35 @@ fn context_calls() -> Vec<(&'static str, ContextCall)> {
             e("ffvkGetClipPlane", |c| {
                 let mut b = [f64::from(SENTINEL_F); 4];
                 ffvkGetClipPlane(c, 0x3000, b.as_mut_ptr());
+                assert!(b.iter().all(|&v| v == f64::from(SENTINEL_F)), "{b:?}");
+            }),
+            e("ffvkTexGeni", |c| {
+                ffvkTexGeni(c, S, TEXTURE_GEN_MODE, OBJECT_LINEAR as i32)
+            }),
+            e("ffvkTexGenf", |c| {
+                ffvkTexGenf(c, T, TEXTURE_GEN_MODE, SPHERE_MAP as f32)
+            }),
+            e("ffvkTexGend", |c| {
+                ffvkTexGend(c, R, TEXTURE_GEN_MODE, f64::from(NORMAL_MAP))
+            }),
+            e("ffvkTexGeniv", |c| ffvkTexGeniv(c, S, OBJECT_PLANE, I4.as_ptr())),
+            e("ffvkTexGenfv", |c| ffvkTexGenfv(c, T, EYE_PLANE, F4.as_ptr())),
+            e("ffvkTexGendv", |c| {
+                ffvkTexGendv(c, Q, OBJECT_PLANE, [1.0f64, 0.0, 0.0, 0.5].as_ptr())
+            }),
+            e("ffvkGetTexGeniv", |c| {
+                let mut b = [SENTINEL_I; 16];
+                ffvkGetTexGeniv(c, S, TEXTURE_GEN_MODE, b.as_mut_ptr());
+                assert!(b.iter().all(|&v| v == SENTINEL_I), "{b:?}");
+            }),
+            e("ffvkGetTexGenfv", |c| {
+                let mut b = [SENTINEL_F; 16];
+                ffvkGetTexGenfv(c, T, OBJECT_PLANE, b.as_mut_ptr());
+                assert!(b.iter().all(|&v| v == SENTINEL_F), "{b:?}");
+            }),
+            e("ffvkGetTexGendv", |c| {
+                let mut b = [f64::from(SENTINEL_F); 16];
+                ffvkGetTexGendv(c, Q, EYE_PLANE, b.as_mut_ptr());
                 assert!(b.iter().all(|&v| v == f64::from(SENTINEL_F)), "{b:?}");
             }),
             e("ffvkShadeModel", |c| ffvkShadeModel(c, FLAT)),
@@ -733,6 +794,9 @@ fn a_null_params_sets_invalid_value_names_the_function_and_changes_nothing() {
                 ffvkLightModeliv(x, LIGHT_MODEL_TWO_SIDE, null());
                 ffvkTexEnvfv(x, TEXTURE_ENV, TEXTURE_ENV_COLOR, null());
                 ffvkTexEnviv(x, TEXTURE_ENV, TEXTURE_ENV_MODE, null());
+                ffvkTexGenfv(x, S, OBJECT_PLANE, null());
+                ffvkTexGeniv(x, T, TEXTURE_GEN_MODE, null());
+                ffvkTexGendv(x, R, EYE_PLANE, null());
             }
         );
         // The matrix entry points' parameter is `m` (ffvk.h).
@@ -763,6 +827,9 @@ fn a_query_with_a_null_params_sets_invalid_value_and_names_the_function() {
                 ffvkGetMaterialiv(x, BACK, EMISSION, null_mut());
                 ffvkGetTexEnvfv(x, TEXTURE_ENV, TEXTURE_ENV_COLOR, null_mut());
                 ffvkGetTexEnviv(x, TEXTURE_ENV, TEXTURE_ENV_MODE, null_mut());
+                ffvkGetTexGenfv(x, S, OBJECT_PLANE, null_mut());
+                ffvkGetTexGeniv(x, T, TEXTURE_GEN_MODE, null_mut());
+                ffvkGetTexGendv(x, Q, EYE_PLANE, null_mut());
                 ffvkGetFloatv(x, MODELVIEW_MATRIX, null_mut());
                 ffvkGetIntegerv(x, MAX_LIGHTS, null_mut());
                 ffvkGetBooleanv(x, LIGHTING, null_mut());
@@ -804,6 +871,10 @@ fn a_misaligned_params_sets_invalid_value_and_is_neither_read_nor_written() {
                 ffvkGetMaterialiv(x, FRONT, AMBIENT, im);
                 ffvkGetTexEnvfv(x, TEXTURE_ENV, TEXTURE_ENV_COLOR, fm);
                 ffvkGetTexEnviv(x, TEXTURE_ENV, TEXTURE_ENV_MODE, im);
+                ffvkTexGenfv(x, S, OBJECT_PLANE, f);
+                ffvkTexGeniv(x, T, EYE_PLANE, i);
+                ffvkGetTexGenfv(x, R, EYE_PLANE, fm);
+                ffvkGetTexGeniv(x, Q, OBJECT_PLANE, im);
                 ffvkGetFloatv(x, MODELVIEW_MATRIX, fm);
                 ffvkGetIntegerv(x, MODELVIEW_MATRIX, im);
             }
@@ -1209,6 +1280,177 @@ fn gl_tex_env_refuses_an_unknown_target_pname_or_mode_with_invalid_enum() {
     // SAFETY: a live context; 16 values of room.
     unsafe { ffvkGetTexEnvfv(x, env, mode, got.as_mut_ptr()) };
     assert_eq!(got[0], REPLACE as f32, "the busy context's mode survived");
+}
+
+#[test]
+fn gl_tex_gen_refuses_an_unknown_coord_pname_or_mode_and_a_mode_the_coordinate_does_not_take() {
+    let c = Ctx::busy();
+    let x = c.0;
+    let before = c.snapshot();
+    let (f4, i4, d4) = ([0.5f32; 4], [1i32; 4], [0.5f64; 4]);
+    let (f, i, d) = (f4.as_ptr(), i4.as_ptr(), d4.as_ptr());
+    let (mut f16, mut i16, mut d16) = ([SENTINEL_F; 16], [SENTINEL_I; 16], [f64::from(SENTINEL_F); 16]);
+    let (fo, io, dout) = (f16.as_mut_ptr(), i16.as_mut_ptr(), d16.as_mut_ptr());
+    let mode = TEXTURE_GEN_MODE;
+    // SAFETY: a live context for every call below; params point at 4 values, query buffers
+    // at 16.
+    unsafe {
+        for coord in [BOGUS, 0, S - 1, Q + 1, TEXTURE_GEN_S] {
+            let words = ["coord", &hex(coord), "GL_S, GL_T, GL_R or GL_Q"];
+            assert_each_refused!(c, before, INVALID_ENUM, words, {
+                ffvkTexGeni(x, coord, mode, OBJECT_LINEAR as i32);
+                ffvkTexGenf(x, coord, mode, OBJECT_LINEAR as f32);
+                ffvkTexGend(x, coord, mode, f64::from(OBJECT_LINEAR));
+                ffvkTexGeniv(x, coord, OBJECT_PLANE, i);
+                ffvkTexGenfv(x, coord, EYE_PLANE, f);
+                ffvkTexGendv(x, coord, OBJECT_PLANE, d);
+                ffvkGetTexGeniv(x, coord, mode, io);
+                ffvkGetTexGenfv(x, coord, OBJECT_PLANE, fo);
+                ffvkGetTexGendv(x, coord, EYE_PLANE, dout);
+            });
+        }
+        for pname in [BOGUS, 0, TEXTURE_GEN_S, TEXTURE_ENV_MODE, EYE_PLANE + 1] {
+            let words = [
+                "pname",
+                &hex(pname),
+                "GL_TEXTURE_GEN_MODE, GL_OBJECT_PLANE or GL_EYE_PLANE",
+            ];
+            assert_each_refused!(c, before, INVALID_ENUM, words, {
+                ffvkTexGeni(x, S, pname, OBJECT_LINEAR as i32);
+                ffvkTexGenf(x, T, pname, OBJECT_LINEAR as f32);
+                ffvkTexGend(x, R, pname, f64::from(OBJECT_LINEAR));
+                ffvkTexGeniv(x, Q, pname, i);
+                ffvkTexGenfv(x, S, pname, f);
+                ffvkTexGendv(x, T, pname, d);
+                ffvkGetTexGeniv(x, R, pname, io);
+                ffvkGetTexGenfv(x, Q, pname, fo);
+                ffvkGetTexGendv(x, S, pname, dout);
+            });
+        }
+        // A plane has 4 values: not for the scalar entry points (§2.11.4).
+        for pname in [OBJECT_PLANE, EYE_PLANE] {
+            assert_each_refused!(
+                c,
+                before,
+                INVALID_ENUM,
+                ["pname", &hex(pname), "single-valued"],
+                {
+                    ffvkTexGeni(x, S, pname, 1);
+                    ffvkTexGenf(x, T, pname, 1.0);
+                    ffvkTexGend(x, Q, pname, 1.0);
+                }
+            );
+        }
+        for value in [BOGUS, 0, OBJECT_PLANE, TEXTURE_GEN_S, EYE_LINEAR - 1] {
+            let (fv, iv, dv) = ([value as f32; 4], [value as i32; 4], [f64::from(value); 4]);
+            let words = ["GL_T's GL_TEXTURE_GEN_MODE", &hex(value), "GL_OBJECT_LINEAR"];
+            assert_each_refused!(c, before, INVALID_ENUM, words, {
+                ffvkTexGeni(x, T, mode, value as i32);
+                ffvkTexGenf(x, T, mode, value as f32);
+                ffvkTexGend(x, T, mode, f64::from(value));
+                ffvkTexGeniv(x, T, mode, iv.as_ptr());
+                ffvkTexGenfv(x, T, mode, fv.as_ptr());
+                ffvkTexGendv(x, T, mode, dv.as_ptr());
+            });
+        }
+        // GL_SPHERE_MAP is for S and T, GL_REFLECTION_MAP and GL_NORMAL_MAP for S, T and R.
+        for (coord, name, value, why) in [
+            (R, "GL_R", SPHERE_MAP, "for S and T only"),
+            (Q, "GL_Q", SPHERE_MAP, "for S and T only"),
+            (Q, "GL_Q", REFLECTION_MAP, "for S, T and R"),
+            (Q, "GL_Q", NORMAL_MAP, "for S, T and R"),
+        ] {
+            let words = [name, "GL_TEXTURE_GEN_MODE", &hex(value), why];
+            assert_each_refused!(c, before, INVALID_ENUM, words, {
+                ffvkTexGeni(x, coord, mode, value as i32);
+                ffvkTexGenf(x, coord, mode, value as f32);
+                ffvkTexGendv(x, coord, mode, [f64::from(value)].as_ptr());
+            });
+        }
+        // An enum is checked before the values are looked at.
+        assert_each_refused!(c, before, INVALID_ENUM, ["0x1234"], {
+            ffvkTexGenfv(x, BOGUS, OBJECT_PLANE, null());
+            ffvkTexGendv(x, S, BOGUS, null());
+            ffvkGetTexGeniv(x, BOGUS, OBJECT_PLANE, null_mut());
+        });
+        // A double's alignment is 8 bytes.
+        let mut bytes = [0x5Au8; 160];
+        let dm = misaligned(bytes.as_mut_ptr().cast::<f64>().cast_const());
+        assert_each_refused!(
+            c,
+            before,
+            INVALID_VALUE,
+            ["params 0x", "not aligned to 8 bytes"],
+            {
+                ffvkTexGendv(x, S, OBJECT_PLANE, dm);
+                ffvkGetTexGendv(x, T, EYE_PLANE, dm.cast_mut());
+            }
+        );
+        assert!(
+            bytes.iter().all(|&b| b == 0x5A),
+            "written through a misaligned pointer"
+        );
+    }
+    assert_eq!(f16, [SENTINEL_F; 16], "a refused query wrote");
+    assert_eq!(i16, [SENTINEL_I; 16], "a refused query wrote");
+    assert_eq!(d16, [f64::from(SENTINEL_F); 16], "a refused query wrote");
+}
+
+#[test]
+fn a_non_finite_plane_value_or_a_singular_modelview_sets_invalid_value_and_keeps_the_planes() {
+    let c = Ctx::busy();
+    let x = c.0;
+    let before = c.snapshot();
+    for bad in NON_FINITE {
+        let shown = bad.to_string();
+        for at in 0..4 {
+            let bad_d = with_bad(at, bad).map(f64::from);
+            // SAFETY: a live context; 16 values.
+            unsafe {
+                assert_each_refused!(c, before, INVALID_VALUE, [&shown, "not a finite number"], {
+                    ffvkTexGenfv(x, S, OBJECT_PLANE, with_bad(at, bad).as_ptr());
+                    ffvkTexGenfv(x, T, EYE_PLANE, with_bad(at, bad).as_ptr());
+                    ffvkTexGendv(x, Q, OBJECT_PLANE, bad_d.as_ptr());
+                    ffvkTexGendv(x, R, EYE_PLANE, bad_d.as_ptr());
+                });
+            }
+        }
+        // A mode given as a float that is not finite is no enum: ffvk's GL_INVALID_VALUE.
+        // SAFETY: a live context.
+        unsafe {
+            assert_each_refused!(c, before, INVALID_VALUE, [&shown, "not a finite number"], {
+                ffvkTexGenf(x, S, TEXTURE_GEN_MODE, bad);
+                ffvkTexGend(x, T, TEXTURE_GEN_MODE, f64::from(bad));
+            });
+        }
+    }
+    // A double past a float's range is not finite once stored.
+    // SAFETY: a live context; 4 values.
+    unsafe {
+        assert_each_refused!(c, before, INVALID_VALUE, ["not a finite number"], {
+            ffvkTexGendv(x, S, OBJECT_PLANE, [1e300, 0.0, 0.0, 0.0].as_ptr());
+        });
+    }
+    // The eye plane is p · M⁻¹: a modelview without an inverse is refused.
+    let singular: [f32; 16] = [1., 0., 0., 0., 0., 0., 0., 0., 0., 0., 1., 0., 0., 0., 0., 1.];
+    // SAFETY: a live context; 16 and 4 values.
+    unsafe {
+        ffvkLoadModelview(x, singular.as_ptr());
+        assert_eq!(c.error(), NO_ERROR);
+        let before = c.snapshot();
+        assert_each_refused!(
+            c,
+            before,
+            INVALID_VALUE,
+            ["determinant of the modelview", "invertible"],
+            {
+                ffvkTexGenfv(x, T, EYE_PLANE, [0.0f32, 1.0, 0.0, 0.0].as_ptr());
+            }
+        );
+        // The object plane takes no matrix.
+        ffvkTexGenfv(x, T, OBJECT_PLANE, [0.0f32, 1.0, 0.0, 0.0].as_ptr());
+        assert_eq!(c.error(), NO_ERROR, "{}", message());
+    }
 }
 
 #[test]

@@ -53,7 +53,8 @@ pub unsafe extern "C" fn ffvkGetError(ctx: *mut FfvkContext) -> u32 {
 
 /// glEnable for `GL_LIGHTING`, `GL_LIGHTi` (i < 16), `GL_COLOR_MATERIAL`, `GL_NORMALIZE`,
 /// `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_COLOR_SUM`, `GL_FOG`, `GL_ALPHA_TEST`,
-/// `GL_CLIP_PLANEi` (i < 6), `GL_POINT_SPRITE`, and the raster state's `GL_POLYGON_OFFSET_FILL`,
+/// `GL_CLIP_PLANEi` (i < 6), `GL_POINT_SPRITE`, `GL_TEXTURE_GEN_S`, `_T`, `_R`, `_Q` (the
+/// coordinate generated as `ffvkTexGeni` says, GL 2.1 §2.11.4), and the raster state's `GL_POLYGON_OFFSET_FILL`,
 /// `GL_POLYGON_OFFSET_LINE`, `GL_POLYGON_OFFSET_POINT`, `GL_LINE_STIPPLE`, `GL_POLYGON_STIPPLE`, `GL_STENCIL_TEST`,
 /// `GL_COLOR_LOGIC_OP`, `GL_BLEND`, `GL_DEPTH_TEST` and `GL_CULL_FACE` (which a draw takes with
 /// `FFVK_RASTER_SOURCE_CONTEXT`). Sets `GL_INVALID_ENUM` for any other cap (a layer keeps the

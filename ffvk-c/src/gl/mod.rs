@@ -12,7 +12,7 @@
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use ffvk::gl::state::{GlState, LightingMode, StateError};
-use ffvk::glam::{Mat4, Vec4};
+use ffvk::glam::{DVec4, Mat4, Vec4};
 
 use crate::enums::*;
 use crate::result::{fail, misaligned, panic_text, FfvkResult};
@@ -24,6 +24,7 @@ mod fragment;
 mod params;
 mod points;
 mod raster;
+mod texgen;
 
 pub use clip::*;
 pub use entry::*;
@@ -32,6 +33,7 @@ pub use fragment::*;
 pub(crate) use params::{face, light_index, LIGHT_PNAMES};
 pub use points::*;
 pub use raster::*;
+pub use texgen::*;
 
 /// GL's lighting state, its matrices and its error flag: what an application's GL calls set.
 /// Made by `ffvkCreateContext`, freed by `ffvkDestroyContext`. One thread at a time may call
@@ -208,11 +210,12 @@ pub(crate) fn with_context<T: Default>(
     }
 }
 
-/// A parameter array as GL's `fv` or `iv` entry point passes it.
+/// A parameter array as GL's `fv`, `iv` or `dv` entry point passes it.
 #[derive(Clone, Copy)]
 pub(crate) enum Values<'a> {
     F(&'a [f32]),
     I(&'a [i32]),
+    D(&'a [f64]),
 }
 
 impl Values<'_> {
@@ -221,6 +224,7 @@ impl Values<'_> {
         match self {
             Values::F(v) => v[i],
             Values::I(v) => v[i] as f32,
+            Values::D(v) => v[i] as f32,
         }
     }
     /// The values as a color: integers map [-2^31, 2^31 - 1] onto [-1, 1] (GL 2.1 table 2.9:
@@ -229,6 +233,7 @@ impl Values<'_> {
         match self {
             Values::F(v) => v[i],
             Values::I(v) => ((2.0 * v[i] as f64 + 1.0) / 4_294_967_295.0) as f32,
+            Values::D(v) => v[i] as f32,
         }
     }
     fn color4(&self) -> Vec4 {
@@ -237,13 +242,24 @@ impl Values<'_> {
     fn vec4(&self) -> Vec4 {
         Vec4::new(self.plain(0), self.plain(1), self.plain(2), self.plain(3))
     }
-    /// The value read as an enum: a float is truncated to an integer first; one that is not
-    /// finite is no enum and sets GL_INVALID_VALUE, as for every other parameter.
+    /// Four values as doubles, each exactly as given (integers convert directly): a plane's
+    /// coefficients, which ffvk's state takes in double precision as `glClipPlane` gives them.
+    fn dvec4(&self) -> DVec4 {
+        let d = |i: usize| match self {
+            Values::F(v) => f64::from(v[i]),
+            Values::I(v) => f64::from(v[i]),
+            Values::D(v) => v[i],
+        };
+        DVec4::new(d(0), d(1), d(2), d(3))
+    }
+    /// The value read as an enum: a float or double is truncated to an integer first; one
+    /// that is not finite is no enum and sets GL_INVALID_VALUE, as for every other parameter.
     fn as_enum(&self, function: &str, parameter: &'static str, valid: &'static str) -> GlResult<u32> {
         self.finite(function, parameter, valid, 1)?;
         Ok(match self {
             Values::F(v) => v[0] as i32 as u32,
             Values::I(v) => v[0] as u32,
+            Values::D(v) => v[0] as i32 as u32,
         })
     }
     /// The value read as a boolean (non-zero is true); GL_INVALID_VALUE for a float that is
@@ -262,6 +278,17 @@ impl Values<'_> {
                     StateError::NotFinite {
                         parameter,
                         value,
+                        valid,
+                    },
+                )),
+                None => Ok(()),
+            },
+            Values::D(v) => match v[..len].iter().find(|v| !v.is_finite()) {
+                Some(&value) => Err(state_error(
+                    function,
+                    StateError::NotFinite {
+                        parameter,
+                        value: value as f32,
                         valid,
                     },
                 )),

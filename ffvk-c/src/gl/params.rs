@@ -290,12 +290,15 @@ pub(crate) fn cap(function: &str, cap: u32) -> GlResult<Cap> {
         GL_POINT_SPRITE => Ok(Cap::PointSprite),
         GL_FOG => Ok(Cap::Fog),
         p if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 6).contains(&p) => Ok(Cap::ClipPlane((p - GL_CLIP_PLANE0) as usize)),
+        p if (GL_TEXTURE_GEN_S..=GL_TEXTURE_GEN_Q).contains(&p) => {
+            Ok(Cap::TextureGen((p - GL_TEXTURE_GEN_S) as usize))
+        }
         other => light_index(function, other).map(Cap::Light).map_err(|_| {
             invalid_enum(
                 function,
                 "cap",
                 other,
-                "GL_LIGHTING, GL_LIGHT0 .. GL_LIGHT0 + 15, GL_COLOR_MATERIAL, GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_COLOR_SUM, GL_FOG, GL_ALPHA_TEST, GL_POINT_SPRITE, GL_CLIP_PLANE0 .. GL_CLIP_PLANE0 + 5, GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT, GL_LINE_STIPPLE, GL_POLYGON_STIPPLE, GL_STENCIL_TEST, GL_COLOR_LOGIC_OP, GL_BLEND, GL_DEPTH_TEST or GL_CULL_FACE",
+                "GL_LIGHTING, GL_LIGHT0 .. GL_LIGHT0 + 15, GL_COLOR_MATERIAL, GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_COLOR_SUM, GL_FOG, GL_ALPHA_TEST, GL_POINT_SPRITE, GL_CLIP_PLANE0 .. GL_CLIP_PLANE0 + 5, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q, GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT, GL_LINE_STIPPLE, GL_POLYGON_STIPPLE, GL_STENCIL_TEST, GL_COLOR_LOGIC_OP, GL_BLEND, GL_DEPTH_TEST or GL_CULL_FACE",
             )
         }),
     }
