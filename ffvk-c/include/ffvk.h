@@ -324,6 +324,84 @@
 #ifndef GL_TEXTURE_ENV
 #define GL_TEXTURE_ENV 0x2300
 #endif
+#ifndef GL_COMBINE
+#define GL_COMBINE 0x8570
+#endif
+#ifndef GL_COMBINE_RGB
+#define GL_COMBINE_RGB 0x8571
+#endif
+#ifndef GL_COMBINE_ALPHA
+#define GL_COMBINE_ALPHA 0x8572
+#endif
+#ifndef GL_RGB_SCALE
+#define GL_RGB_SCALE 0x8573
+#endif
+#ifndef GL_ALPHA_SCALE
+#define GL_ALPHA_SCALE 0x0D1C
+#endif
+#ifndef GL_ADD_SIGNED
+#define GL_ADD_SIGNED 0x8574
+#endif
+#ifndef GL_INTERPOLATE
+#define GL_INTERPOLATE 0x8575
+#endif
+#ifndef GL_SUBTRACT
+#define GL_SUBTRACT 0x84E7
+#endif
+#ifndef GL_DOT3_RGB
+#define GL_DOT3_RGB 0x86AE
+#endif
+#ifndef GL_DOT3_RGBA
+#define GL_DOT3_RGBA 0x86AF
+#endif
+#ifndef GL_TEXTURE
+#define GL_TEXTURE 0x1702
+#endif
+#ifndef GL_CONSTANT
+#define GL_CONSTANT 0x8576
+#endif
+#ifndef GL_PRIMARY_COLOR
+#define GL_PRIMARY_COLOR 0x8577
+#endif
+#ifndef GL_PREVIOUS
+#define GL_PREVIOUS 0x8578
+#endif
+#ifndef GL_SRC0_RGB
+#define GL_SRC0_RGB 0x8580
+#endif
+#ifndef GL_SRC1_RGB
+#define GL_SRC1_RGB 0x8581
+#endif
+#ifndef GL_SRC2_RGB
+#define GL_SRC2_RGB 0x8582
+#endif
+#ifndef GL_SRC0_ALPHA
+#define GL_SRC0_ALPHA 0x8588
+#endif
+#ifndef GL_SRC1_ALPHA
+#define GL_SRC1_ALPHA 0x8589
+#endif
+#ifndef GL_SRC2_ALPHA
+#define GL_SRC2_ALPHA 0x858A
+#endif
+#ifndef GL_OPERAND0_RGB
+#define GL_OPERAND0_RGB 0x8590
+#endif
+#ifndef GL_OPERAND1_RGB
+#define GL_OPERAND1_RGB 0x8591
+#endif
+#ifndef GL_OPERAND2_RGB
+#define GL_OPERAND2_RGB 0x8592
+#endif
+#ifndef GL_OPERAND0_ALPHA
+#define GL_OPERAND0_ALPHA 0x8598
+#endif
+#ifndef GL_OPERAND1_ALPHA
+#define GL_OPERAND1_ALPHA 0x8599
+#endif
+#ifndef GL_OPERAND2_ALPHA
+#define GL_OPERAND2_ALPHA 0x859A
+#endif
 #ifndef GL_S
 #define GL_S 0x2000
 #endif
@@ -1495,10 +1573,19 @@ void ffvkLightModeli(struct FfvkContext *ctx, uint32_t pname, int32_t param);
 
 /*
  glTexEnvfv on `GL_TEXTURE_ENV`: `GL_TEXTURE_ENV_MODE` (`GL_MODULATE`, `GL_REPLACE`,
- `GL_DECAL`, `GL_BLEND`, `GL_ADD`) or `GL_TEXTURE_ENV_COLOR` (4 values, clamped to [0, 1]);
- on `GL_POINT_SPRITE`: `GL_COORD_REPLACE` (zero is `GL_FALSE`, anything else `GL_TRUE`).
- Errors: `GL_INVALID_ENUM` for another target, `pname` or mode (`GL_COMBINE` included: ffvk
- does not draw it); `GL_INVALID_VALUE` for a value that is not finite or a null `params`.
+ `GL_DECAL`, `GL_BLEND`, `GL_ADD`, `GL_COMBINE`), `GL_TEXTURE_ENV_COLOR` (4 values, clamped
+ to [0, 1]), or one of `GL_COMBINE`'s (GL 2.1 §3.8.13, table 3.24): `GL_COMBINE_RGB` and
+ `GL_COMBINE_ALPHA` (`GL_REPLACE`, `GL_MODULATE`, `GL_ADD`, `GL_ADD_SIGNED`,
+ `GL_INTERPOLATE`, `GL_SUBTRACT`, and for RGB `GL_DOT3_RGB`, `GL_DOT3_RGBA`),
+ `GL_SRC0_RGB` .. `GL_SRC2_RGB` and `GL_SRC0_ALPHA` .. `GL_SRC2_ALPHA` (`GL_TEXTURE`,
+ `GL_CONSTANT`, `GL_PRIMARY_COLOR`, `GL_PREVIOUS`), `GL_OPERAND0_RGB` .. `GL_OPERAND2_RGB`
+ (`GL_SRC_COLOR`, `GL_ONE_MINUS_SRC_COLOR`, `GL_SRC_ALPHA`, `GL_ONE_MINUS_SRC_ALPHA`),
+ `GL_OPERAND0_ALPHA` .. `GL_OPERAND2_ALPHA` (`GL_SRC_ALPHA`, `GL_ONE_MINUS_SRC_ALPHA`),
+ `GL_RGB_SCALE` and `GL_ALPHA_SCALE` (1, 2 or 4); on `GL_POINT_SPRITE`: `GL_COORD_REPLACE`
+ (zero is `GL_FALSE`, anything else `GL_TRUE`). Errors: `GL_INVALID_ENUM` for another
+ target, `pname` or value (a dot product for `GL_COMBINE_ALPHA`, a color operand for an alpha
+ argument, and `GL_TEXTUREn`, another unit's texel: ffvk has one unit); `GL_INVALID_VALUE`
+ for a scale other than 1, 2 or 4, a value that is not finite or a null `params`.
 
  # Safety
 
@@ -1517,7 +1604,9 @@ void ffvkTexEnvfv(struct FfvkContext *ctx, uint32_t target, uint32_t pname, cons
 void ffvkTexEnviv(struct FfvkContext *ctx, uint32_t target, uint32_t pname, const int32_t *params);
 
 /*
- glTexEnvf: `GL_TEXTURE_ENV_MODE` only (`GL_TEXTURE_ENV_COLOR` sets `GL_INVALID_ENUM`).
+ glTexEnvf: a single-valued name, `GL_TEXTURE_ENV_MODE` or one of `GL_COMBINE`'s, as
+ `ffvkTexEnvfv` takes it (an enum given as a float is truncated); `GL_TEXTURE_ENV_COLOR`
+ sets `GL_INVALID_ENUM`.
 
  # Safety
 
@@ -2346,8 +2435,9 @@ void ffvkGetMaterialfv(struct FfvkContext *ctx, uint32_t face, uint32_t pname, f
 void ffvkGetMaterialiv(struct FfvkContext *ctx, uint32_t face, uint32_t pname, int32_t *params);
 
 /*
- glGetTexEnvfv on `GL_TEXTURE_ENV`: `GL_TEXTURE_ENV_MODE` or `GL_TEXTURE_ENV_COLOR`.
- Errors: `GL_INVALID_ENUM` for another target or `pname`.
+ glGetTexEnvfv on `GL_TEXTURE_ENV`: `GL_TEXTURE_ENV_MODE`, `GL_TEXTURE_ENV_COLOR` or one of
+ `GL_COMBINE`'s names (`ffvkTexEnvfv`): its enum, or the scale (1, 2 or 4). Errors:
+ `GL_INVALID_ENUM` for another target or `pname`.
 
  # Safety
 

@@ -113,6 +113,32 @@ gl_enums! {
     GL_TEXTURE_ENV_MODE = 0x2200,
     GL_TEXTURE_ENV_COLOR = 0x2201,
     GL_TEXTURE_ENV = 0x2300,
+    GL_COMBINE = 0x8570,
+    GL_COMBINE_RGB = 0x8571,
+    GL_COMBINE_ALPHA = 0x8572,
+    GL_RGB_SCALE = 0x8573,
+    GL_ALPHA_SCALE = 0x0D1C,
+    GL_ADD_SIGNED = 0x8574,
+    GL_INTERPOLATE = 0x8575,
+    GL_SUBTRACT = 0x84E7,
+    GL_DOT3_RGB = 0x86AE,
+    GL_DOT3_RGBA = 0x86AF,
+    GL_TEXTURE = 0x1702,
+    GL_CONSTANT = 0x8576,
+    GL_PRIMARY_COLOR = 0x8577,
+    GL_PREVIOUS = 0x8578,
+    GL_SRC0_RGB = 0x8580,
+    GL_SRC1_RGB = 0x8581,
+    GL_SRC2_RGB = 0x8582,
+    GL_SRC0_ALPHA = 0x8588,
+    GL_SRC1_ALPHA = 0x8589,
+    GL_SRC2_ALPHA = 0x858A,
+    GL_OPERAND0_RGB = 0x8590,
+    GL_OPERAND1_RGB = 0x8591,
+    GL_OPERAND2_RGB = 0x8592,
+    GL_OPERAND0_ALPHA = 0x8598,
+    GL_OPERAND1_ALPHA = 0x8599,
+    GL_OPERAND2_ALPHA = 0x859A,
     GL_S = 0x2000,
     GL_T = 0x2001,
     GL_R = 0x2002,
@@ -250,8 +276,8 @@ gl_enums! {
 }
 
 /// GL's names for values the API refuses but an application may well pass on (a layer
-/// forwarding every `glEnable`, a `glTexEnv` of `GL_COMBINE`), as `<GL/gl.h>` spells them:
-/// messages name them. The header does not define them.
+/// forwarding every `glEnable`, a `GL_COMBINE` source of another unit's texel), as
+/// `<GL/gl.h>` spells them: messages name them. The header does not define them.
 const MESSAGE_NAMES: &[(&str, u32)] = &[
     ("GL_STACK_OVERFLOW", 0x0503),
     ("GL_POINT_SMOOTH", 0x0B10),
@@ -265,7 +291,6 @@ const MESSAGE_NAMES: &[(&str, u32)] = &[
     ("GL_TEXTURE_1D", 0x0DE0),
     ("GL_MODELVIEW", 0x1700),
     ("GL_PROJECTION", 0x1701),
-    ("GL_TEXTURE", 0x1702),
     ("GL_TEXTURE_3D", 0x806F),
     ("GL_VERTEX_ARRAY", 0x8074),
     ("GL_NORMAL_ARRAY", 0x8075),
@@ -273,7 +298,7 @@ const MESSAGE_NAMES: &[(&str, u32)] = &[
     ("GL_TEXTURE_COORD_ARRAY", 0x8078),
     ("GL_MULTISAMPLE", 0x809D),
     ("GL_TEXTURE_CUBE_MAP", 0x8513),
-    ("GL_COMBINE", 0x8570),
+    ("GL_TEXTURE0", 0x84C0),
 ];
 
 /// Every GL name a message may print with its value: the API's enums and the names of values

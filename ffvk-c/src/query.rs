@@ -10,8 +10,9 @@ use ffvk::gl::texture::{TexEnvMode, TexGenMode};
 
 use crate::enums::*;
 use crate::gl::{
-    face, invalid_enum, light_index, raster_cap, texgen_coord, with_context, FfvkContext, GlResult,
-    LIGHT_PNAMES, TEXGEN_PNAMES,
+    combine_argument, face, gl_enum, invalid_enum, light_index, raster_cap, texgen_coord, with_context,
+    Argument, FfvkContext, GlResult, ALPHA_OPERANDS, FUNCS, LIGHT_PNAMES, RGB_OPERANDS, SOURCES,
+    TEXGEN_PNAMES, TEX_ENV_PNAMES,
 };
 
 mod raster;
@@ -157,23 +158,31 @@ fn tex_env_answer(f: &str, c: &FfvkContext, target: u32, pname: u32) -> GlResult
         ));
     }
     let unit = &c.gl.lighting.texture;
+    let combine = &unit.combine;
     Ok(match pname {
         GL_TEXTURE_ENV_MODE => Answer::Int(match unit.env_mode {
             TexEnvMode::Replace => GL_REPLACE,
             TexEnvMode::Decal => GL_DECAL,
             TexEnvMode::Blend => GL_BLEND,
             TexEnvMode::Add => GL_ADD,
+            TexEnvMode::Combine => GL_COMBINE,
             _ => GL_MODULATE,
         } as i64),
         GL_TEXTURE_ENV_COLOR => Answer::Color(unit.env_color.to_array().to_vec()),
-        _ => {
-            return Err(invalid_enum(
-                f,
-                "pname",
-                pname,
-                "GL_TEXTURE_ENV_MODE or GL_TEXTURE_ENV_COLOR",
-            ))
-        }
+        GL_COMBINE_RGB => Answer::Int(gl_enum(&FUNCS, combine.rgb).into()),
+        GL_COMBINE_ALPHA => Answer::Int(gl_enum(&FUNCS, combine.alpha).into()),
+        GL_RGB_SCALE => Answer::Floats(vec![combine.rgb_scale]),
+        GL_ALPHA_SCALE => Answer::Floats(vec![combine.alpha_scale]),
+        _ => Answer::Int(
+            match combine_argument(pname) {
+                Some((Argument::SourceRgb, n)) => gl_enum(&SOURCES, combine.rgb_sources[n]),
+                Some((Argument::SourceAlpha, n)) => gl_enum(&SOURCES, combine.alpha_sources[n]),
+                Some((Argument::OperandRgb, n)) => gl_enum(&RGB_OPERANDS, combine.rgb_operands[n]),
+                Some((Argument::OperandAlpha, n)) => gl_enum(&ALPHA_OPERANDS, combine.alpha_operands[n]),
+                None => return Err(invalid_enum(f, "pname", pname, TEX_ENV_PNAMES)),
+            }
+            .into(),
+        ),
     })
 }
 
@@ -403,8 +412,9 @@ pub unsafe extern "C" fn ffvkGetMaterialiv(ctx: *mut FfvkContext, face: u32, pna
     })
 }
 
-/// glGetTexEnvfv on `GL_TEXTURE_ENV`: `GL_TEXTURE_ENV_MODE` or `GL_TEXTURE_ENV_COLOR`.
-/// Errors: `GL_INVALID_ENUM` for another target or `pname`.
+/// glGetTexEnvfv on `GL_TEXTURE_ENV`: `GL_TEXTURE_ENV_MODE`, `GL_TEXTURE_ENV_COLOR` or one of
+/// `GL_COMBINE`'s names (`ffvkTexEnvfv`): its enum, or the scale (1, 2 or 4). Errors:
+/// `GL_INVALID_ENUM` for another target or `pname`.
 ///
 /// # Safety
 ///

@@ -89,8 +89,21 @@ const POLYGON: u32 = 0x0009;
 const BOGUS: u32 = 0x1234;
 /// GL_LEFT: a real GL enum, but not a material face.
 const LEFT: u32 = 0x0406;
-/// GL_COMBINE (GL 1.3): a texture environment mode ffvk does not draw.
-const COMBINE: u32 = 0x8570;
+const COMBINE_RGB: u32 = 0x8571;
+const COMBINE_ALPHA: u32 = 0x8572;
+const RGB_SCALE: u32 = 0x8573;
+const ALPHA_SCALE: u32 = 0x0D1C;
+const SRC0_RGB: u32 = 0x8580;
+const SRC0_ALPHA: u32 = 0x8588;
+const OPERAND0_RGB: u32 = 0x8590;
+const OPERAND0_ALPHA: u32 = 0x8598;
+const DOT3_RGB: u32 = 0x86AE;
+const DOT3_RGBA: u32 = 0x86AF;
+const TEXTURE: u32 = 0x1702;
+const SRC_COLOR: u32 = 0x0300;
+const ONE_MINUS_SRC_COLOR: u32 = 0x0301;
+/// GL_TEXTURE0 (ARB_texture_env_crossbar): a `GL_COMBINE` source ffvk's one unit does not take.
+const TEXTURE0: u32 = 0x84C0;
 const S: u32 = 0x2000;
 const T: u32 = 0x2001;
 const R: u32 = 0x2002;
@@ -339,6 +352,12 @@ impl Ctx {
             ffvkLightModeli(x, LIGHT_MODEL_COLOR_CONTROL, SEPARATE_SPECULAR_COLOR as i32);
             ffvkTexEnvi(x, TEXTURE_ENV, TEXTURE_ENV_MODE, REPLACE as i32);
             ffvkTexEnvfv(x, TEXTURE_ENV, TEXTURE_ENV_COLOR, [0.25, 0.5, 0.75, 1.0].as_ptr());
+            ffvkTexEnvi(x, TEXTURE_ENV, COMBINE_RGB, DOT3_RGBA as i32);
+            ffvkTexEnvi(x, TEXTURE_ENV, COMBINE_ALPHA, REPLACE as i32);
+            ffvkTexEnvi(x, TEXTURE_ENV, SRC0_RGB + 1, TEXTURE as i32);
+            ffvkTexEnvi(x, TEXTURE_ENV, OPERAND0_RGB, ONE_MINUS_SRC_COLOR as i32);
+            ffvkTexEnvf(x, TEXTURE_ENV, RGB_SCALE, 2.0);
+            ffvkTexEnvf(x, TEXTURE_ENV, ALPHA_SCALE, 4.0);
             ffvkColorMaterial(x, BACK, SPECULAR);
             ffvkColor4f(x, 0.3, 0.6, 0.9, 0.5);
             ffvkShadeModel(x, FLAT);
@@ -424,7 +443,14 @@ impl Ctx {
                     });
                 }
             }
-            for p in [TEXTURE_ENV_MODE, TEXTURE_ENV_COLOR] {
+            let combine = [COMBINE_RGB, COMBINE_ALPHA, RGB_SCALE, ALPHA_SCALE];
+            let arguments = [SRC0_RGB, SRC0_ALPHA, OPERAND0_RGB, OPERAND0_ALPHA];
+            let arguments = arguments.into_iter().flat_map(|p| [p, p + 1, p + 2]);
+            for p in [TEXTURE_ENV_MODE, TEXTURE_ENV_COLOR]
+                .into_iter()
+                .chain(combine)
+                .chain(arguments)
+            {
                 take(format!("GetTexEnvfv(0x{p:04X})"), &|b| {
                     ffvkGetTexEnvfv(x, TEXTURE_ENV, p, b)
                 });
@@ -1263,7 +1289,7 @@ fn gl_tex_env_refuses_an_unknown_target_pname_or_mode_with_invalid_enum() {
             ffvkTexEnvf(x, env, color, 1.0);
             ffvkTexEnvi(x, env, color, 1);
         });
-        for value in [COMBINE, BOGUS, 0, SMOOTH] {
+        for value in [COMBINE_RGB, BOGUS, 0, SMOOTH] {
             let (fv, iv) = ([value as f32; 4], [value as i32; 4]);
             let words = ["GL_TEXTURE_ENV_MODE", &hex(value), "GL_MODULATE"];
             assert_each_refused!(c, before, INVALID_ENUM, words, {
@@ -1280,6 +1306,79 @@ fn gl_tex_env_refuses_an_unknown_target_pname_or_mode_with_invalid_enum() {
     // SAFETY: a live context; 16 values of room.
     unsafe { ffvkGetTexEnvfv(x, env, mode, got.as_mut_ptr()) };
     assert_eq!(got[0], REPLACE as f32, "the busy context's mode survived");
+}
+
+#[test]
+fn gl_tex_env_refuses_a_combine_value_gl_does_not_take_or_another_units_texture() {
+    let c = Ctx::busy();
+    let x = c.0;
+    let before = c.snapshot();
+    let env = TEXTURE_ENV;
+    // SAFETY: a live context for every call below; params point at 4 values.
+    unsafe {
+        // GL_TEXTUREn (ARB_texture_env_crossbar) names another unit's texel: ffvk has one.
+        for pname in [SRC0_RGB, SRC0_RGB + 2, SRC0_ALPHA, SRC0_ALPHA + 1] {
+            for value in [TEXTURE0, TEXTURE0 + 1, TEXTURE0 + 31] {
+                let (fv, iv) = ([value as f32; 4], [value as i32; 4]);
+                let words = [
+                    &hex(value),
+                    "GL_TEXTURE, GL_CONSTANT",
+                    "not supported yet",
+                    "one texture unit",
+                ];
+                assert_each_refused!(c, before, INVALID_ENUM, words, {
+                    ffvkTexEnvfv(x, env, pname, fv.as_ptr());
+                    ffvkTexEnviv(x, env, pname, iv.as_ptr());
+                    ffvkTexEnvf(x, env, pname, value as f32);
+                    ffvkTexEnvi(x, env, pname, value as i32);
+                });
+            }
+        }
+        // The dot products are RGB functions (§3.8.13).
+        for value in [DOT3_RGB, DOT3_RGBA] {
+            assert_each_refused!(c, before, INVALID_ENUM, ["GL_COMBINE_ALPHA", "GL_DOT3_RGB"], {
+                ffvkTexEnvi(x, env, COMBINE_ALPHA, value as i32);
+                ffvkTexEnvf(x, env, COMBINE_ALPHA, value as f32);
+            });
+        }
+        // An alpha argument takes the source's alpha, or one minus it.
+        for pname in [OPERAND0_ALPHA, OPERAND0_ALPHA + 1, OPERAND0_ALPHA + 2] {
+            for value in [SRC_COLOR, ONE_MINUS_SRC_COLOR] {
+                let words = [
+                    "GL_OPERAND",
+                    &hex(value),
+                    "GL_SRC_ALPHA or GL_ONE_MINUS_SRC_ALPHA",
+                ];
+                assert_each_refused!(c, before, INVALID_ENUM, words, {
+                    ffvkTexEnvi(x, env, pname, value as i32);
+                    ffvkTexEnvf(x, env, pname, value as f32);
+                });
+            }
+        }
+        // A value for another argument's kind: a source as an operand, an operand as a source.
+        assert_each_refused!(c, before, INVALID_ENUM, ["GL_OPERAND0_RGB", "0x8580"], {
+            ffvkTexEnvi(x, env, OPERAND0_RGB, SRC0_RGB as i32);
+        });
+        assert_each_refused!(c, before, INVALID_ENUM, ["GL_SRC1_ALPHA", "0x0300"], {
+            ffvkTexEnvi(x, env, SRC0_ALPHA + 1, SRC_COLOR as i32);
+        });
+        // The scales are 1, 2 or 4.
+        for pname in [RGB_SCALE, ALPHA_SCALE] {
+            for scale in [0.0f32, 3.0, 8.0, -1.0, 2.5, 1.0001, f32::NAN, f32::INFINITY] {
+                let (fv, iv) = ([scale; 4], [scale as i32; 4]);
+                assert_each_refused!(c, before, INVALID_VALUE, ["_SCALE", "1.0, 2.0 or 4.0"], {
+                    ffvkTexEnvfv(x, env, pname, fv.as_ptr());
+                    ffvkTexEnvf(x, env, pname, scale);
+                });
+                if scale.fract() == 0.0 {
+                    assert_each_refused!(c, before, INVALID_VALUE, ["_SCALE", "1.0, 2.0 or 4.0"], {
+                        ffvkTexEnviv(x, env, pname, iv.as_ptr());
+                        ffvkTexEnvi(x, env, pname, scale as i32);
+                    });
+                }
+            }
+        }
+    }
 }
 
 #[test]
@@ -1940,11 +2039,11 @@ fn messages_name_the_function_the_parameter_the_value_and_what_was_expected() {
             "expected GL_SHININESS",
             "GL_INVALID_ENUM",
         ]);
-        ffvkTexEnvi(x, TEXTURE_ENV, TEXTURE_ENV_MODE, COMBINE as i32);
+        ffvkTexEnvi(x, TEXTURE_ENV, SRC0_RGB, TEXTURE0 as i32);
         expect(&[
-            "ffvkTexEnvi: GL_TEXTURE_ENV_MODE value GL_COMBINE (0x8570)",
-            "expected GL_MODULATE",
-            "GL_COMBINE",
+            "ffvkTexEnvi: GL_SRC0_RGB value GL_TEXTURE0 (0x84C0)",
+            "expected GL_TEXTURE, GL_CONSTANT, GL_PRIMARY_COLOR or GL_PREVIOUS",
+            "not supported yet",
         ]);
         ffvkColorMaterial(x, FRONT, SHININESS);
         expect(&[
@@ -1995,8 +2094,8 @@ fn messages_name_a_gl_enum_by_its_gl_name_and_a_value_gl_has_no_name_for_in_hex(
         expect(&["ffvkEnable: cap GL_SCISSOR_TEST (0x0C11) is not accepted"]);
         ffvkDisable(x, VERTEX_ARRAY);
         expect(&["ffvkDisable: cap GL_VERTEX_ARRAY (0x8074) is not accepted"]);
-        ffvkTexEnvi(x, TEXTURE_ENV, TEXTURE_ENV_MODE, COMBINE as i32);
-        expect(&["GL_TEXTURE_ENV_MODE value GL_COMBINE (0x8570) is not accepted"]);
+        ffvkTexEnvi(x, TEXTURE_ENV, SRC0_ALPHA, TEXTURE0 as i32);
+        expect(&["GL_SRC0_ALPHA value GL_TEXTURE0 (0x84C0) is not accepted"]);
         // Names the API takes, where they do not belong.
         ffvkLightfv(x, LIGHT0, SHININESS, [0.0f32; 4].as_ptr());
         expect(&["ffvkLightfv: pname GL_SHININESS (0x1601) is not accepted"]);

@@ -330,10 +330,19 @@ fn tex_env_entry<'a>(
 }
 
 /// glTexEnvfv on `GL_TEXTURE_ENV`: `GL_TEXTURE_ENV_MODE` (`GL_MODULATE`, `GL_REPLACE`,
-/// `GL_DECAL`, `GL_BLEND`, `GL_ADD`) or `GL_TEXTURE_ENV_COLOR` (4 values, clamped to [0, 1]);
-/// on `GL_POINT_SPRITE`: `GL_COORD_REPLACE` (zero is `GL_FALSE`, anything else `GL_TRUE`).
-/// Errors: `GL_INVALID_ENUM` for another target, `pname` or mode (`GL_COMBINE` included: ffvk
-/// does not draw it); `GL_INVALID_VALUE` for a value that is not finite or a null `params`.
+/// `GL_DECAL`, `GL_BLEND`, `GL_ADD`, `GL_COMBINE`), `GL_TEXTURE_ENV_COLOR` (4 values, clamped
+/// to [0, 1]), or one of `GL_COMBINE`'s (GL 2.1 §3.8.13, table 3.24): `GL_COMBINE_RGB` and
+/// `GL_COMBINE_ALPHA` (`GL_REPLACE`, `GL_MODULATE`, `GL_ADD`, `GL_ADD_SIGNED`,
+/// `GL_INTERPOLATE`, `GL_SUBTRACT`, and for RGB `GL_DOT3_RGB`, `GL_DOT3_RGBA`),
+/// `GL_SRC0_RGB` .. `GL_SRC2_RGB` and `GL_SRC0_ALPHA` .. `GL_SRC2_ALPHA` (`GL_TEXTURE`,
+/// `GL_CONSTANT`, `GL_PRIMARY_COLOR`, `GL_PREVIOUS`), `GL_OPERAND0_RGB` .. `GL_OPERAND2_RGB`
+/// (`GL_SRC_COLOR`, `GL_ONE_MINUS_SRC_COLOR`, `GL_SRC_ALPHA`, `GL_ONE_MINUS_SRC_ALPHA`),
+/// `GL_OPERAND0_ALPHA` .. `GL_OPERAND2_ALPHA` (`GL_SRC_ALPHA`, `GL_ONE_MINUS_SRC_ALPHA`),
+/// `GL_RGB_SCALE` and `GL_ALPHA_SCALE` (1, 2 or 4); on `GL_POINT_SPRITE`: `GL_COORD_REPLACE`
+/// (zero is `GL_FALSE`, anything else `GL_TRUE`). Errors: `GL_INVALID_ENUM` for another
+/// target, `pname` or value (a dot product for `GL_COMBINE_ALPHA`, a color operand for an alpha
+/// argument, and `GL_TEXTUREn`, another unit's texel: ffvk has one unit); `GL_INVALID_VALUE`
+/// for a scale other than 1, 2 or 4, a value that is not finite or a null `params`.
 ///
 /// # Safety
 ///
@@ -362,7 +371,9 @@ pub unsafe extern "C" fn ffvkTexEnviv(ctx: *mut FfvkContext, target: u32, pname:
     })
 }
 
-/// glTexEnvf: `GL_TEXTURE_ENV_MODE` only (`GL_TEXTURE_ENV_COLOR` sets `GL_INVALID_ENUM`).
+/// glTexEnvf: a single-valued name, `GL_TEXTURE_ENV_MODE` or one of `GL_COMBINE`'s, as
+/// `ffvkTexEnvfv` takes it (an enum given as a float is truncated); `GL_TEXTURE_ENV_COLOR`
+/// sets `GL_INVALID_ENUM`.
 ///
 /// # Safety
 ///

@@ -18,6 +18,7 @@ use crate::enums::*;
 use crate::result::{fail, misaligned, panic_text, FfvkResult};
 
 mod clip;
+mod combine;
 mod entry;
 mod fog;
 mod fragment;
@@ -27,10 +28,13 @@ mod raster;
 mod texgen;
 
 pub use clip::*;
+pub(crate) use combine::{
+    argument as combine_argument, gl_enum, Argument, ALPHA_OPERANDS, FUNCS, RGB_OPERANDS, SOURCES,
+};
 pub use entry::*;
 pub use fog::*;
 pub use fragment::*;
-pub(crate) use params::{face, light_index, LIGHT_PNAMES};
+pub(crate) use params::{face, light_index, LIGHT_PNAMES, TEX_ENV_PNAMES};
 pub use points::*;
 pub use raster::*;
 pub use texgen::*;

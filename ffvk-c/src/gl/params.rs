@@ -8,6 +8,7 @@ use ffvk::gl::state::{
 use ffvk::gl::texture::TexEnvMode;
 use ffvk::glam::{Mat4, Vec3};
 
+use super::combine::{combine_param, is_combine_pname};
 use super::{invalid_enum, read_named, state_error, FfvkContext, GlError, GlResult, Values};
 use crate::enums::*;
 
@@ -198,6 +199,10 @@ pub(super) fn set_light_model(ctx: &mut FfvkContext, function: &str, pname: u32,
     ctx.gl.light_model(param).map_err(|e| state_error(function, e))
 }
 
+const TEX_ENV_MODES: &str = "GL_MODULATE, GL_REPLACE, GL_DECAL, GL_BLEND, GL_ADD or GL_COMBINE";
+pub(crate) const TEX_ENV_PNAMES: &str = "GL_TEXTURE_ENV_MODE, GL_TEXTURE_ENV_COLOR or a GL_COMBINE parameter: GL_COMBINE_RGB, GL_COMBINE_ALPHA, GL_SRC0_RGB .. GL_SRC2_RGB, GL_SRC0_ALPHA .. GL_SRC2_ALPHA, GL_OPERAND0_RGB .. GL_OPERAND2_RGB, GL_OPERAND0_ALPHA .. GL_OPERAND2_ALPHA, GL_RGB_SCALE or GL_ALPHA_SCALE";
+const TEX_ENV_SCALAR_PNAMES: &str = "a single-valued parameter: GL_TEXTURE_ENV_MODE or a GL_COMBINE parameter (GL_COMBINE_RGB, GL_COMBINE_ALPHA, GL_SRCn_RGB, GL_SRCn_ALPHA, GL_OPERANDn_RGB, GL_OPERANDn_ALPHA, GL_RGB_SCALE or GL_ALPHA_SCALE)";
+
 pub(super) fn tex_env_len(function: &str, target: u32, pname: u32, scalar: bool) -> GlResult<usize> {
     if target == GL_POINT_SPRITE {
         return match pname {
@@ -220,19 +225,10 @@ pub(super) fn tex_env_len(function: &str, target: u32, pname: u32, scalar: bool)
     }
     match pname {
         GL_TEXTURE_ENV_MODE => Ok(1),
+        p if is_combine_pname(p) => Ok(1),
         GL_TEXTURE_ENV_COLOR if !scalar => Ok(4),
-        GL_TEXTURE_ENV_COLOR => Err(invalid_enum(
-            function,
-            "pname",
-            pname,
-            "GL_TEXTURE_ENV_MODE (the single-valued parameter)",
-        )),
-        _ => Err(invalid_enum(
-            function,
-            "pname",
-            pname,
-            "GL_TEXTURE_ENV_MODE or GL_TEXTURE_ENV_COLOR",
-        )),
+        GL_TEXTURE_ENV_COLOR => Err(invalid_enum(function, "pname", pname, TEX_ENV_SCALAR_PNAMES)),
+        _ => Err(invalid_enum(function, "pname", pname, TEX_ENV_PNAMES)),
     }
 }
 
@@ -250,25 +246,25 @@ pub(super) fn set_tex_env(ctx: &mut FfvkContext, function: &str, pname: u32, v: 
         return Ok(());
     }
     let param = match pname {
-        GL_TEXTURE_ENV_MODE => TexEnvParam::Mode(
-            match v.as_enum(
-                function,
-                "GL_TEXTURE_ENV_MODE",
-                "GL_MODULATE, GL_REPLACE, GL_DECAL, GL_BLEND or GL_ADD",
-            )? {
+        GL_TEXTURE_ENV_MODE => {
+            TexEnvParam::Mode(match v.as_enum(function, "GL_TEXTURE_ENV_MODE", TEX_ENV_MODES)? {
                 GL_MODULATE => TexEnvMode::Modulate,
                 GL_REPLACE => TexEnvMode::Replace,
                 GL_DECAL => TexEnvMode::Decal,
                 GL_BLEND => TexEnvMode::Blend,
                 GL_ADD => TexEnvMode::Add,
-                other => return Err(invalid_enum(
-                    function,
-                    "GL_TEXTURE_ENV_MODE value",
-                    other,
-                    "GL_MODULATE, GL_REPLACE, GL_DECAL, GL_BLEND or GL_ADD (GL_COMBINE is not drawn by ffvk)",
-                )),
-            },
-        ),
+                GL_COMBINE => TexEnvMode::Combine,
+                other => {
+                    return Err(invalid_enum(
+                        function,
+                        "GL_TEXTURE_ENV_MODE value",
+                        other,
+                        TEX_ENV_MODES,
+                    ))
+                }
+            })
+        }
+        p if is_combine_pname(p) => combine_param(function, p, v)?,
         _ => TexEnvParam::Color(v.color4()),
     };
     ctx.gl.tex_env(param).map_err(|e| state_error(function, e))
