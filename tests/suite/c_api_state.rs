@@ -9,6 +9,7 @@
 use ffvk_c::gl::FfvkContext;
 use ffvk_cli::gl_reference::{raw, with_raw_gl};
 
+mod combine;
 mod raster;
 mod texgen;
 
@@ -91,6 +92,7 @@ enum Call {
     Color3ub([u8; 3]),
     ShadeModel(u32),
     TexEnvfv(u32, u32, Vec<f32>),
+    TexEnviv(u32, u32, Vec<i32>),
     TexEnvi(u32, u32, i32),
     TexEnvf(u32, u32, f32),
     /// glMatrixMode(GL_MODELVIEW) + glLoadMatrixf.
@@ -301,6 +303,7 @@ impl Gl for Ffvk {
                 Call::Color3ub([r, g, b]) => ffvkColor3ub(c, *r, *g, *b),
                 Call::ShadeModel(m) => ffvkShadeModel(c, *m),
                 Call::TexEnvfv(t, p, v) => ffvkTexEnvfv(c, *t, *p, padded(v).as_ptr()),
+                Call::TexEnviv(t, p, v) => ffvkTexEnviv(c, *t, *p, padded(v).as_ptr()),
                 Call::TexEnvi(t, p, v) => ffvkTexEnvi(c, *t, *p, *v),
                 Call::TexEnvf(t, p, v) => ffvkTexEnvf(c, *t, *p, *v),
                 Call::LoadModelview(m) => ffvkLoadModelview(c, m.as_ptr()),
@@ -462,6 +465,7 @@ impl Gl for Mesa<'_> {
                 Call::Color3ub([r, g, b]) => gl.Color3ub(*r, *g, *b),
                 Call::ShadeModel(m) => gl.ShadeModel(*m),
                 Call::TexEnvfv(t, p, v) => gl.TexEnvfv(*t, *p, padded(v).as_ptr()),
+                Call::TexEnviv(t, p, v) => gl.TexEnviv(*t, *p, padded(v).as_ptr()),
                 Call::TexEnvi(t, p, v) => gl.TexEnvi(*t, *p, *v),
                 Call::TexEnvf(t, p, v) => gl.TexEnvf(*t, *p, *v),
                 Call::LoadModelview(m) => {
@@ -1479,6 +1483,7 @@ fn sequences() -> Vec<(String, Vec<Step>)> {
     }
     s.extend(raster::sequences());
     s.extend(texgen::sequences());
+    s.extend(combine::sequences());
     s
 }
 
