@@ -198,7 +198,8 @@ pub(super) fn sequences() -> Vec<(String, Vec<Step>)> {
     }
 
     // Values that are none of a name's, through every form; a float enum is truncated.
-    let bad_values: [(u32, &str, &[(u32, &str)]); 4] = [
+    type Named = (u32, &'static str);
+    let bad_values: [(u32, &str, &[Named]); 4] = [
         (
             COMBINE_RGB,
             "GL_COMBINE_RGB",
