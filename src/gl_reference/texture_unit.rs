@@ -44,7 +44,11 @@ pub(super) fn set_texture_unit(gl: &Gl, unit: &TextureUnit, texture: Option<GLui
         gl.MatrixMode(gl::MODELVIEW);
     }
     set_enabled(gl, gl::TEXTURE_2D, unit.enabled);
-    set_combine(gl, &unit.combine);
+    // GL_COMBINE's parameters and a coordinate's generation only where they are used, as a
+    // program issues them (the timed frames' anchor issues no call an application would not).
+    if unit.env_mode == TexEnvMode::Combine {
+        set_combine(gl, &unit.combine);
+    }
     // Texture coordinate generation, with the modelview at identity (set_state's), so that
     // each eye plane, already in eye space, is stored as it is.
     let coords = [
@@ -54,17 +58,20 @@ pub(super) fn set_texture_unit(gl: &Gl, unit: &TextureUnit, texture: Option<GLui
         (gl::Q, gl::TEXTURE_GEN_Q),
     ];
     for ((coord, cap), g) in coords.into_iter().zip(&unit.texgen) {
+        set_enabled(gl, cap, g.enabled);
+        if !g.enabled {
+            continue;
+        }
         // SAFETY: a context is current on this thread; each plane has four components.
         unsafe {
             gl.TexGeni(coord, gl::TEXTURE_GEN_MODE, texgen_enum(g.mode) as GLint);
             gl.TexGenfv(coord, gl::OBJECT_PLANE, g.object_plane.to_array().as_ptr());
             gl.TexGenfv(coord, gl::EYE_PLANE, g.eye_plane.to_array().as_ptr());
         }
-        set_enabled(gl, cap, g.enabled);
     }
 }
 
-/// glTexEnv's `GL_COMBINE` state (each parameter, whatever the mode, as a program sets them).
+/// glTexEnv's `GL_COMBINE` state, every parameter.
 fn set_combine(gl: &Gl, c: &ffvk::gl::texture::Combine) {
     use ffvk::gl::texture::{AlphaOperand, CombineFunc, CombineSource, RgbOperand};
     let func = |f: CombineFunc| match f {
