@@ -135,7 +135,7 @@ fn render_textured(
     let mut frame = Frame::new(size, size);
     frame.clear_color = Vec4::new(0.08, 0.08, 0.1, 1.0);
     let mut draw = Draw::new(mesh, view(), projection(), gl.lighting);
-    draw.texture = texture;
+    draw.textures[0] = texture;
     frame.draws.push(draw);
     Ok(renderer.render(&frame)?.into())
 }

@@ -79,13 +79,16 @@ pub(crate) fn is_enabled(c: &FfvkContext, cap: Cap) -> bool {
         Cap::ColorMaterial => l.color_material.enabled,
         Cap::Normalize => l.normalize,
         Cap::RescaleNormal => l.rescale_normal,
-        Cap::Texture2D => l.texture.enabled,
+        Cap::Texture2D => l.texture_units[c.gl.active_unit].enabled,
         Cap::ColorSum => l.fragment.color_sum,
         Cap::AlphaTest => l.fragment.alpha_test.enabled,
         Cap::Fog => l.fragment.fog.enabled,
         Cap::ClipPlane(i) => l.clip.enabled.get(i).copied().unwrap_or(false),
         Cap::PointSprite => l.points.sprite,
-        Cap::TextureGen(i) => l.texture.texgen.get(i).is_some_and(|g| g.enabled),
+        Cap::TextureGen(i) => l.texture_units[c.gl.active_unit]
+            .texgen
+            .get(i)
+            .is_some_and(|g| g.enabled),
         other => c.gl.raster.enabled(other).unwrap_or(false),
     }
 }
@@ -140,7 +143,9 @@ fn material_answer(f: &str, c: &FfvkContext, face_enum: u32, pname: u32) -> GlRe
 fn tex_env_answer(f: &str, c: &FfvkContext, target: u32, pname: u32) -> GlResult<Answer> {
     if target == GL_POINT_SPRITE {
         return match pname {
-            GL_COORD_REPLACE => Ok(Answer::Bool(c.gl.lighting.texture.coord_replace)),
+            GL_COORD_REPLACE => Ok(Answer::Bool(
+                c.gl.lighting.texture_units[c.gl.active_unit].coord_replace,
+            )),
             _ => Err(invalid_enum(
                 f,
                 "pname",
@@ -157,7 +162,7 @@ fn tex_env_answer(f: &str, c: &FfvkContext, target: u32, pname: u32) -> GlResult
             "GL_TEXTURE_ENV or GL_POINT_SPRITE",
         ));
     }
-    let unit = &c.gl.lighting.texture;
+    let unit = &c.gl.lighting.texture_units[c.gl.active_unit];
     let combine = &unit.combine;
     Ok(match pname {
         GL_TEXTURE_ENV_MODE => Answer::Int(match unit.env_mode {
@@ -189,7 +194,7 @@ fn tex_env_answer(f: &str, c: &FfvkContext, target: u32, pname: u32) -> GlResult
 /// glGetTexGen's answer: the mode as GL's enum, a plane's four values as stored (the eye plane
 /// in eye space).
 fn tex_gen_answer(f: &str, c: &FfvkContext, coord: u32, pname: u32) -> GlResult<Answer> {
-    let gen = &c.gl.lighting.texture.texgen[texgen_coord(f, coord)?];
+    let gen = &c.gl.lighting.texture_units[c.gl.active_unit].texgen[texgen_coord(f, coord)?];
     Ok(match pname {
         GL_TEXTURE_GEN_MODE => Answer::Int(i64::from(match gen.mode {
             TexGenMode::ObjectLinear => GL_OBJECT_LINEAR,
@@ -291,11 +296,11 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
             _ => GL_UPPER_LEFT,
         } as i64),
         GL_MAX_CLIP_PLANES => Answer::Int(ffvk::gl::state::MAX_CLIP_PLANES as i64),
-        GL_CURRENT_TEXTURE_COORDS => Answer::Floats(l.current_texcoord.to_array().to_vec()),
+        GL_CURRENT_TEXTURE_COORDS => Answer::Floats(l.current_texcoords[c.gl.active_unit].to_array().to_vec()),
         GL_MAX_LIGHTS => Answer::Int(MAX_LIGHTS as i64),
         GL_MODELVIEW_MATRIX => Answer::Floats(c.gl.modelview.to_cols_array().to_vec()),
         GL_PROJECTION_MATRIX => Answer::Floats(c.projection.to_cols_array().to_vec()),
-        GL_TEXTURE_MATRIX => Answer::Floats(l.texture.matrix.to_cols_array().to_vec()),
+        GL_TEXTURE_MATRIX => Answer::Floats(l.texture_units[c.gl.active_unit].matrix.to_cols_array().to_vec()),
         _ => {
             return Err(invalid_enum(
                 f,

@@ -49,6 +49,19 @@ struct Light {
 #define SPECULAR_BLINN_HALFWAY 0u
 #define SPECULAR_PHONG_REFLECT 1u
 
+// One texture unit's state (GL_TEXTUREi), GpuTextureUnit in src/gpu/layout.rs: read by the
+// TEXTURE builds for the units SPEC_TEXTURE_UNITS names.
+#define MAX_TEXTURE_UNITS 4
+struct TextureUnitState {
+    mat4 matrix;             // GL_TEXTURE matrix
+    vec4 c_c;                // TEXTURE_ENV_COLOR
+    vec4 texgen_planes[4];   // S, T, R, Q: OBJECT_PLANE or EYE_PLANE (p M^-1), as the mode reads
+    uint env_mode;           // TEXTURE_ENV_MODE, TEV_* in texture.glsl
+    uint combine;            // GL_COMBINE's state (Combine::code), read under TEXTURE_ENV_MODE COMBINE
+    uint crossbar;           // GL_COMBINE's GL_TEXTUREn sources (Combine::crossbar_code)
+    uint texgen;             // TEXTURE_GEN_S..Q with their modes, 3 bits each (texgen.glsl)
+};
+
 // Values of color_material_mode.
 #define CM_EMISSION 0u
 #define CM_AMBIENT 1u
@@ -60,9 +73,7 @@ struct Light {
 // a draw's state differs from the draw before), bound at a dynamic offset.
 layout(std140, set = 0, binding = 0) uniform State {
     mat4 projection;      // GL projection, premultiplied by GL-to-Vulkan clip conversion
-    mat4 texture_matrix;  // GL_TEXTURE matrix, read by the TEXTURE variants
     vec4 a_cs;            // LIGHT_MODEL_AMBIENT
-    vec4 c_c;             // TEXTURE_ENV_COLOR
     uint light_count;     // enabled lights, packed in index order
     uint lighting;        // LIGHTING enabled
     uint v_bs;            // LIGHT_MODEL_LOCAL_VIEWER
@@ -74,11 +85,11 @@ layout(std140, set = 0, binding = 0) uniform State {
     uint color_material_mode;   // CM_*
     uint normalize;       // NORMALIZE enabled
     uint specular_model;  // SPECULAR_* (ffvk's extension)
-    uint tex_env_mode;    // TEXTURE_ENV_MODE, TEV_* in texture.glsl
     uint color_sum;       // COLOR_SUM
     uint alpha_func;      // ALPHA_TEST_FUNC, 0 NEVER .. 7 ALWAYS (7 while the test is off)
     float alpha_ref;      // ALPHA_TEST_REF, in [0, 1]
-    uint combine;         // GL_COMBINE's state (Combine::code), read under TEXTURE_ENV_MODE COMBINE
+    uint pad_0;
+    uint pad_1;
     vec4 fog_color;       // FOG_COLOR
     float fog_start;      // FOG_START
     float fog_end;        // FOG_END
@@ -89,11 +100,7 @@ layout(std140, set = 0, binding = 0) uniform State {
     uint fog_per_vertex;  // 1 for FOG_HINT FASTEST
     uint clip_mask;       // the enabled CLIP_PLANEi, a bit each
     vec4 clip_planes[6];  // CLIP_PLANEi in eye space (glClipPlane's p M^-1)
-    uint texgen;          // TEXTURE_GEN_S..Q with their modes, 3 bits each (texgen.glsl)
-    uint texgen_pad_0;
-    uint texgen_pad_1;
-    uint texgen_pad_2;
-    vec4 texgen_planes[4];  // S, T, R, Q: OBJECT_PLANE or EYE_PLANE (p M^-1), as the mode reads
+    TextureUnitState units[MAX_TEXTURE_UNITS];
     Light lights[MAX_LIGHTS];
 } state;
 
@@ -143,7 +150,7 @@ layout(constant_id = 16) const int SPEC_SPOT_LIGHTS = -1;
 layout(constant_id = 17) const int SPEC_GL_SNORM = 0;
 // vec4s from one draw record to the next in the record buffer (deferred.frag): the ring's
 // stride, set in every pipeline.
-layout(constant_id = 18) const int SPEC_RECORD_VEC4S = 19;
+layout(constant_id = 18) const int SPEC_RECORD_VEC4S = 22;
 // COLOR_SUM with lighting off (lit draws always sum the separate specular color).
 layout(constant_id = 19) const int SPEC_COLOR_SUM = -1;
 // The alpha test's function, 0 NEVER .. 7 ALWAYS (ALWAYS while the test is off).
@@ -173,6 +180,38 @@ layout(constant_id = 32) const int SPEC_POINT_SPRITE = 0;
 layout(constant_id = 33) const int SPEC_TEXGEN = -1;
 // GL_COMBINE's functions, sources, operands and scales (texture.glsl, Combine::code).
 layout(constant_id = 34) const int SPEC_COMBINE = -1;
+// The texture units of a TEXTURE build: bits 0-3 the units sampled (enabled, with a complete
+// texture), bits 4-7 the units applied (sampled, and not reading a missing unit's texel through
+// GL_TEXTUREn). The pipeline's own, set in every pipeline (the uber-shader's too).
+layout(constant_id = 35) const int SPEC_TEXTURE_UNITS = 0x11;
+// GL_COMBINE's GL_TEXTUREn sources (Combine::crossbar_code), unit 0's; then units 1-3's
+// TEXTURE_ENV_MODE, texgen, GL_COMBINE and crossbar, as SPEC_TEX_ENV, SPEC_TEXGEN,
+// SPEC_COMBINE and SPEC_CROSSBAR are unit 0's.
+layout(constant_id = 36) const int SPEC_CROSSBAR = -1;
+layout(constant_id = 37) const int SPEC_TEX_ENV_1 = -1;
+layout(constant_id = 38) const int SPEC_TEX_ENV_2 = -1;
+layout(constant_id = 39) const int SPEC_TEX_ENV_3 = -1;
+layout(constant_id = 40) const int SPEC_TEXGEN_1 = -1;
+layout(constant_id = 41) const int SPEC_TEXGEN_2 = -1;
+layout(constant_id = 42) const int SPEC_TEXGEN_3 = -1;
+layout(constant_id = 43) const int SPEC_COMBINE_1 = -1;
+layout(constant_id = 44) const int SPEC_COMBINE_2 = -1;
+layout(constant_id = 45) const int SPEC_COMBINE_3 = -1;
+layout(constant_id = 46) const int SPEC_CROSSBAR_1 = -1;
+layout(constant_id = 47) const int SPEC_CROSSBAR_2 = -1;
+layout(constant_id = 48) const int SPEC_CROSSBAR_3 = -1;
+
+// Unit i's constant among four (i a constant once the unit loops unroll).
+int unit_constant(uint i, int c0, int c1, int c2, int c3) {
+    return i == 0u ? c0 : (i == 1u ? c1 : (i == 2u ? c2 : c3));
+}
+// Whether a TEXTURE build samples unit i, and whether it applies it.
+bool unit_sampled(uint i) {
+    return (SPEC_TEXTURE_UNITS & (1 << i)) != 0;
+}
+bool unit_applied(uint i) {
+    return (SPEC_TEXTURE_UNITS & (16 << i)) != 0;
+}
 
 // A switch of the uber-shader, read from the uniform block. lavapipe 22.3 compiles a shader
 // variant for every draw whose uniforms changed when an if or a loop bound depends on uniform

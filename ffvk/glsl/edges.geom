@@ -73,6 +73,14 @@ layout(location = 5) out float out_fog;
 #ifdef TEXTURE
 layout(location = 4) in vec4 in_stq[];
 layout(location = 4) out vec4 out_stq;
+// Units 1-3's coordinates, after the stage's other varyings.
+#ifdef EDGES_OF_FRAGMENT_MODE
+#define UNIT_STQ_LOCATION 16
+#else
+#define UNIT_STQ_LOCATION 8
+#endif
+layout(location = UNIT_STQ_LOCATION) in vec4 in_unit_stq[][3];
+layout(location = UNIT_STQ_LOCATION) out vec4 out_unit_stq[3];
 #endif
 
 layout(location = EDGE_LOCATION) noperspective out vec4 edge;
@@ -113,6 +121,7 @@ void corner(int k, uint bits) {
 #endif
 #ifdef TEXTURE
     out_stq = in_stq[i];
+    out_unit_stq = in_unit_stq[i];
 #endif
     edge = vec4(float(k == 0), float(k == 1), float(k == 2), float(bits));
     EmitVertex();

@@ -37,6 +37,7 @@ layout(std140, set = 2, binding = 0) uniform Record {
     vec4 current_normal;
     vec4 current_texcoord;
     vec4 current_secondary_color;
+    vec4 current_unit_texcoords[3];  // units 1-3's
 } record;
 #endif
 
@@ -59,6 +60,7 @@ layout(location = 0) out vec4 out_color;
 #ifdef TEXTURE
 #include "texture.glsl"
 layout(location = 4) in vec4 stq;
+layout(location = 16) in vec4 unit_stq[MAX_TEXTURE_UNITS - 1];  // units 1-3's
 #endif
 
 #include "stipple.glsl"
@@ -101,7 +103,7 @@ void main() {
     }
 #ifdef TEXTURE
     // After lighting, before the color sum: the secondary color is not textured.
-    lit.c_pri = texture_environment(lit.c_pri, texel_at(stq));
+    lit.c_pri = textured_color(lit.c_pri, vec4[](stq, unit_stq[0], unit_stq[1], unit_stq[2]));
 #endif
 #ifdef FOG
     out_color = apply_fog(color_sum(lit), fog);

@@ -8,7 +8,7 @@
 
 #include "draw.glsl"
 
-// Values of each coordinate's 3 bits of SPEC_TEXGEN and state.texgen, S in bits 0-2, T 3-5,
+// Values of each coordinate's 3 bits of a unit's SPEC_TEXGEN and texgen, S in bits 0-2, T 3-5,
 // R 6-8, Q 9-11; mirrored by TexGenMode::code.
 #define TEXGEN_OFF 0u
 #define TEXGEN_OBJECT_LINEAR 1u
@@ -17,25 +17,30 @@
 #define TEXGEN_REFLECTION_MAP 4u
 #define TEXGEN_NORMAL_MAP 5u
 
-uint texgen_modes() {
-    return SPEC_TEXGEN < 0 ? uber_value(state.texgen) : uint(SPEC_TEXGEN);
+uint texgen_modes(uint unit) {
+    int c = unit_constant(unit, SPEC_TEXGEN, SPEC_TEXGEN_1, SPEC_TEXGEN_2, SPEC_TEXGEN_3);
+    return c < 0 ? uber_value(state.units[unit].texgen) : uint(c);
 }
 
-// Whether some coordinate's mode reads the eye-space normal (sphere, reflection, normal map).
+// Whether some coordinate of a sampled unit reads the eye-space normal (sphere, reflection,
+// normal map).
 bool texgen_reads_normal() {
-    uint modes = texgen_modes();
     bool reads = false;
-    [[unroll]] for (uint i = 0u; i < 4u; i++) reads = reads || ((modes >> (3u * i)) & 7u) >= TEXGEN_SPHERE_MAP;
+    [[unroll]] for (uint unit = 0u; unit < MAX_TEXTURE_UNITS; unit++) {
+        if (!unit_sampled(unit)) continue;
+        uint modes = texgen_modes(unit);
+        [[unroll]] for (uint i = 0u; i < 4u; i++) reads = reads || ((modes >> (3u * i)) & 7u) >= TEXGEN_SPHERE_MAP;
+    }
     return reads;
 }
 
-// (s, t, r, q) = c with the generated coordinates replaced: p_o the vertex in object
-// coordinates, p_e in eye coordinates, n_f the eye-space normal as lighting takes it
-// (GL_NORMALIZE and GL_RESCALE_NORMAL applied). The plane of coordinate i is
-// state.texgen_planes[i]: its object plane for GL_OBJECT_LINEAR, its eye plane (already
-// p M⁻¹) for GL_EYE_LINEAR.
-vec4 generated_coords(vec4 c, vec4 p_o, vec4 p_e, vec3 n_f) {
-    uint modes = texgen_modes();
+// Unit `unit`'s (s, t, r, q) = c with the generated coordinates replaced: p_o the vertex in
+// object coordinates, p_e in eye coordinates, n_f the eye-space normal as lighting takes it
+// (GL_NORMALIZE and GL_RESCALE_NORMAL applied). The plane of coordinate i is the unit's
+// texgen_planes[i]: its object plane for GL_OBJECT_LINEAR, its eye plane (already p M⁻¹) for
+// GL_EYE_LINEAR.
+vec4 generated_coords(uint unit, vec4 c, vec4 p_o, vec4 p_e, vec3 n_f) {
+    uint modes = texgen_modes(unit);
     if (modes == TEXGEN_OFF) return c;
     // u: the unit vector from the eye to the vertex; r: its reflection about n_f.
     vec3 u = normalize(p_e.xyz);
@@ -47,7 +52,7 @@ vec4 generated_coords(vec4 c, vec4 p_o, vec4 p_e, vec3 n_f) {
     vec4 g = c;
     [[unroll]] for (uint i = 0u; i < 4u; i++) {
         uint mode = (modes >> (3u * i)) & 7u;
-        vec4 plane = state.texgen_planes[i];
+        vec4 plane = state.units[unit].texgen_planes[i];
         if (mode == TEXGEN_OBJECT_LINEAR) g[i] = dot(plane, p_o);
         else if (mode == TEXGEN_EYE_LINEAR) g[i] = dot(plane, p_e);
         else if (mode == TEXGEN_SPHERE_MAP) g[i] = sphere[i];
@@ -55,6 +60,15 @@ vec4 generated_coords(vec4 c, vec4 p_o, vec4 p_e, vec3 n_f) {
         else if (mode == TEXGEN_NORMAL_MAP) g[i] = normal[i];
     }
     return g;
+}
+
+// Section 2.11.4 for every sampled unit: its coordinates (`c`, the vertex's or the current
+// ones), generated where the unit says, times its texture matrix. Units not sampled are
+// left unwritten (their varyings are never read).
+void unit_coords(vec4 c[MAX_TEXTURE_UNITS], vec4 p_o, vec4 p_e, vec3 n_f, out vec4 stq[MAX_TEXTURE_UNITS]) {
+    [[unroll]] for (uint i = 0u; i < MAX_TEXTURE_UNITS; i++) {
+        if (unit_sampled(i)) stq[i] = state.units[i].matrix * generated_coords(i, c[i], p_o, p_e, n_f);
+    }
 }
 
 #endif

@@ -7,12 +7,12 @@
 
 #include "draw.glsl"
 
-// The bound texture: GL_TEXTURE_2D's image and its parameters (a VkSampler made from
-// glTexParameter's values). Set 1 is moved to the set after the State block's at pipeline
-// creation.
-layout(set = 1, binding = 0) uniform sampler2D texture_2d;
+// The units' textures: unit i's GL_TEXTURE_2D image and its parameters (a VkSampler made from
+// glTexParameter's values) in element i. Set 1 is moved to the set after the State block's at
+// pipeline creation; a unit a draw does not sample holds another of its textures.
+layout(set = 1, binding = 0) uniform sampler2D unit_2d[MAX_TEXTURE_UNITS];
 
-// Values of tex_env_mode (GL_TEXTURE_ENV_MODE), mirrored by TexEnvMode::code.
+// Values of a unit's env_mode (GL_TEXTURE_ENV_MODE), mirrored by TexEnvMode::code.
 #define TEV_MODULATE 0u
 #define TEV_REPLACE 1u
 #define TEV_DECAL 2u
@@ -22,8 +22,8 @@ layout(set = 1, binding = 0) uniform sampler2D texture_2d;
 
 // GL_COMBINE (section 3.8.13, table 3.24), its state in Combine::code's bits: the functions
 // (CombineFunc::code), sources (CombineSource::code), operands (RgbOperand::code, and one bit
-// "one minus" per alpha operand) and scales. The CPU reference's copy is
-// src/reference/texture.rs (combine).
+// "one minus" per alpha operand) and scales; its GL_TEXTUREn sources in Combine::crossbar_code's
+// 3 bits per argument (n + 1). The CPU reference's copy is src/reference/texture.rs (combine).
 #define COMBINE_REPLACE 0u
 #define COMBINE_MODULATE 1u
 #define COMBINE_ADD 2u
@@ -34,15 +34,36 @@ layout(set = 1, binding = 0) uniform sampler2D texture_2d;
 #define COMBINE_DOT3_RGBA 7u
 #define SOURCE_TEXTURE 0u
 #define SOURCE_CONSTANT 1u
-// 2 (PRIMARY_COLOR) and 3 (PREVIOUS) are both the primary color for the one unit.
+#define SOURCE_PRIMARY_COLOR 2u
+#define SOURCE_PREVIOUS 3u
 
-uint combine_bits() {
-    return SPEC_COMBINE < 0 ? uber_value(state.combine) : uint(SPEC_COMBINE);
+uint combine_bits(uint i) {
+    int c = unit_constant(i, SPEC_COMBINE, SPEC_COMBINE_1, SPEC_COMBINE_2, SPEC_COMBINE_3);
+    return c < 0 ? uber_value(state.units[i].combine) : uint(c);
+}
+uint crossbar_bits(uint i) {
+    int c = unit_constant(i, SPEC_CROSSBAR, SPEC_CROSSBAR_1, SPEC_CROSSBAR_2, SPEC_CROSSBAR_3);
+    return c < 0 ? uber_value(state.units[i].crossbar) : uint(c);
+}
+uint tex_env_mode(uint i) {
+    int c = unit_constant(i, SPEC_TEX_ENV, SPEC_TEX_ENV_1, SPEC_TEX_ENV_2, SPEC_TEX_ENV_3);
+    return c < 0 ? uber_value(state.units[i].env_mode) : uint(c);
 }
 
-// One source's value: the texel, the environment color or the primary color.
-vec4 combine_source(uint source, vec4 C_f, vec4 C_s) {
-    return source == SOURCE_TEXTURE ? C_s : (source == SOURCE_CONSTANT ? state.c_c : C_f);
+// The inputs of unit i: C_f the fragment's primary color (GL_PRIMARY_COLOR), C_p the previous
+// unit's result (GL_PREVIOUS; C_f for unit 0), C_s every sampled unit's texel.
+struct UnitInputs {
+    vec4 C_f;
+    vec4 C_p;
+    vec4 C_s[MAX_TEXTURE_UNITS];
+};
+
+// One source's value for unit i; `unit` is the crossbar's n + 1 for GL_TEXTUREn, else 0.
+vec4 combine_source(uint i, uint source, uint unit, UnitInputs v) {
+    if (unit != 0u) return v.C_s[unit - 1u];
+    if (source == SOURCE_TEXTURE) return v.C_s[i];
+    if (source == SOURCE_CONSTANT) return state.units[i].c_c;
+    return source == SOURCE_PRIMARY_COLOR ? v.C_f : v.C_p;
 }
 
 // The function f of arguments a0, a1, a2 (one component each, or three).
@@ -61,17 +82,20 @@ float combine_scale(uint code) {
     return code == 2u ? 4.0 : (code == 1u ? 2.0 : 1.0);
 }
 
-vec4 combine(vec4 C_f, vec4 C_s) {
-    uint bits = combine_bits();
+vec4 combine(uint i, UnitInputs v) {
+    uint bits = combine_bits(i);
+    uint crossbar = crossbar_bits(i);
     vec3 rgb_args[3];
     vec3 alpha_args[3];
-    [[unroll]] for (uint i = 0u; i < 3u; i++) {
-        vec4 v = combine_source((bits >> (6u + 2u * i)) & 3u, C_f, C_s);
-        uint op = (bits >> (18u + 2u * i)) & 3u;
-        vec3 rgb = op < 2u ? v.rgb : vec3(v.a);
-        rgb_args[i] = (op & 1u) != 0u ? 1.0 - rgb : rgb;
-        float a = combine_source((bits >> (12u + 2u * i)) & 3u, C_f, C_s).a;
-        alpha_args[i] = vec3(((bits >> (24u + i)) & 1u) != 0u ? 1.0 - a : a);
+    [[unroll]] for (uint k = 0u; k < 3u; k++) {
+        uint rgb_unit = (crossbar >> (3u * k)) & 7u;
+        uint alpha_unit = (crossbar >> (9u + 3u * k)) & 7u;
+        vec4 c = combine_source(i, (bits >> (6u + 2u * k)) & 3u, rgb_unit, v);
+        uint op = (bits >> (18u + 2u * k)) & 3u;
+        vec3 rgb = op < 2u ? c.rgb : vec3(c.a);
+        rgb_args[k] = (op & 1u) != 0u ? 1.0 - rgb : rgb;
+        float a = combine_source(i, (bits >> (12u + 2u * k)) & 3u, alpha_unit, v).a;
+        alpha_args[k] = vec3(((bits >> (24u + k)) & 1u) != 0u ? 1.0 - a : a);
     }
     uint f_rgb = bits & 7u;
     vec3 rgb = combine_function(f_rgb, rgb_args[0], rgb_args[1], rgb_args[2]);
@@ -83,36 +107,53 @@ vec4 combine(vec4 C_f, vec4 C_s) {
     return vec4(rgb, alpha);
 }
 
-uint tex_env_mode() {
-    return SPEC_TEX_ENV < 0 ? uber_value(state.tex_env_mode) : uint(SPEC_TEX_ENV);
-}
-
-// Table 3.22 for an RGBA texture: fragment color C_f (the primary color), texel C_s,
-// environment color c_c.
-vec4 texture_environment(vec4 C_f, vec4 C_s) {
-    vec3 c_c = state.c_c.rgb;
-    uint mode = tex_env_mode();
-    if (mode == TEV_COMBINE) return combine(C_f, C_s);
-    if (mode == TEV_REPLACE) return C_s;
-    if (mode == TEV_DECAL) return vec4(mix(C_f.rgb, C_s.rgb, C_s.a), C_f.a);
-    if (mode == TEV_BLEND) return vec4(C_f.rgb * (1.0 - C_s.rgb) + c_c * C_s.rgb, C_f.a * C_s.a);
-    if (mode == TEV_ADD) return vec4(clamp(C_f.rgb + C_s.rgb, 0.0, 1.0), C_f.a * C_s.a);
-    return C_f * C_s;  // TEV_MODULATE
+// Unit i's environment (table 3.22 for an RGBA texture, or GL_COMBINE), clamped to [0, 1] as
+// GL clamps each unit's result before the next unit (section 3.8.13).
+vec4 texture_environment(uint i, UnitInputs v) {
+    vec4 C_p = v.C_p;
+    vec4 C_s = v.C_s[i];
+    vec3 c_c = state.units[i].c_c.rgb;
+    uint mode = tex_env_mode(i);
+    vec4 C_v;
+    if (mode == TEV_COMBINE) C_v = combine(i, v);
+    else if (mode == TEV_REPLACE) C_v = C_s;
+    else if (mode == TEV_DECAL) C_v = vec4(mix(C_p.rgb, C_s.rgb, C_s.a), C_p.a);
+    else if (mode == TEV_BLEND) C_v = vec4(C_p.rgb * (1.0 - C_s.rgb) + c_c * C_s.rgb, C_p.a * C_s.a);
+    else if (mode == TEV_ADD) C_v = vec4(C_p.rgb + C_s.rgb, C_p.a * C_s.a);
+    else C_v = C_p * C_s;  // TEV_MODULATE
+    return clamp(C_v, 0.0, 1.0);
 }
 
 // Section 3.3 with GL_COORD_REPLACE: a sprite's texture coordinates (s, t, 0, 1), t from the
-// top (GL_UPPER_LEFT) or from the bottom (GL_LOWER_LEFT). ffvk's images have GL's top row
-// first, as Vulkan's framebuffer does, so gl_PointCoord's t is GL_UPPER_LEFT's.
-vec4 sprite_or(vec4 stq) {
-    if ((SPEC_POINT_SPRITE & 3) != 3) return stq;
+// top (GL_UPPER_LEFT) or from the bottom (GL_LOWER_LEFT), for the units whose bit of
+// SPEC_POINT_SPRITE says so (bit 1 unit 0, bits 3-5 units 1-3). ffvk's images have GL's top
+// row first, as Vulkan's framebuffer does, so gl_PointCoord's t is GL_UPPER_LEFT's.
+vec4 sprite_or(uint i, vec4 stq) {
+    int replace = i == 0u ? 2 : (4 << i);
+    if ((SPEC_POINT_SPRITE & 1) == 0 || (SPEC_POINT_SPRITE & replace) == 0) return stq;
     float t = (SPEC_POINT_SPRITE & 4) != 0 ? 1.0 - gl_PointCoord.y : gl_PointCoord.y;
     return vec4(gl_PointCoord.x, t, 0.0, 1.0);
 }
 
-// The texel at interpolated texture coordinates stq = (s, t, r, q), or a point sprite's.
-vec4 texel_at(vec4 stq) {
-    vec4 c = sprite_or(stq);
-    return texture(texture_2d, c.xy / c.w);
+// Unit i's texel at interpolated texture coordinates stq = (s, t, r, q), or a point sprite's.
+vec4 texel_at(uint i, vec4 stq) {
+    vec4 c = sprite_or(i, stq);
+    return texture(unit_2d[i], c.xy / c.w);
+}
+
+// Section 3.8.16: the applied units in order, each on the one before's result, from the
+// primary color C_f; stq holds each unit's interpolated coordinates.
+vec4 textured_color(vec4 C_f, vec4 stq[MAX_TEXTURE_UNITS]) {
+    UnitInputs v;
+    v.C_f = C_f;
+    v.C_p = C_f;
+    [[unroll]] for (uint i = 0u; i < MAX_TEXTURE_UNITS; i++) {
+        v.C_s[i] = unit_sampled(i) ? texel_at(i, stq[i]) : vec4(0.0);
+    }
+    [[unroll]] for (uint i = 0u; i < MAX_TEXTURE_UNITS; i++) {
+        if (unit_applied(i)) v.C_p = texture_environment(i, v);
+    }
+    return v.C_p;
 }
 
 #endif

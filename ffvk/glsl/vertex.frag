@@ -24,6 +24,7 @@ layout(location = 0) out vec4 out_color;
 #ifdef TEXTURE
 #include "texture.glsl"
 layout(location = 4) in vec4 stq;
+layout(location = 8) in vec4 unit_stq[MAX_TEXTURE_UNITS - 1];  // units 1-3's
 #endif
 
 #include "stipple.glsl"
@@ -48,7 +49,7 @@ void main() {
     lit.c_sec = FRONT_FACING ? front_sec : back_sec;
 #endif
 #ifdef TEXTURE
-    lit.c_pri = texture_environment(lit.c_pri, texel_at(stq));
+    lit.c_pri = textured_color(lit.c_pri, vec4[](stq, unit_stq[0], unit_stq[1], unit_stq[2]));
 #endif
 #ifdef FOG
     out_color = apply_fog(color_sum(lit), fog);

@@ -38,6 +38,12 @@ layout(location = 5) out float fog;
 // (s, t, r, q): r = 0 and q = 1 where the layout gives fewer, as in GL.
 layout(location = 3) in vec4 in_texcoord;
 layout(location = 4) out vec4 stq;
+// Units 1-3's: their arrays (glClientActiveTexture, glTexCoordPointer) or their current
+// coordinates (glMultiTexCoord), and out after their texture matrices.
+layout(location = 23) in vec4 in_texcoord_1;
+layout(location = 24) in vec4 in_texcoord_2;
+layout(location = 25) in vec4 in_texcoord_3;
+layout(location = 8) out vec4 unit_stq[3];  // MAX_TEXTURE_UNITS - 1
 #endif
 
 #ifdef EDGE_FLAGS
@@ -71,7 +77,13 @@ void main() {
 #endif
 #ifdef TEXTURE
     vec3 n_f = texgen_reads_normal() ? eye_normal(vertex_normal(in_normal)) : vec3(0.0);
-    stq = state.texture_matrix * generated_coords(in_texcoord, in_position, V, n_f);
+    vec4 coords[MAX_TEXTURE_UNITS];
+    vec4 given[MAX_TEXTURE_UNITS] = vec4[](in_texcoord, in_texcoord_1, in_texcoord_2, in_texcoord_3);
+    unit_coords(given, in_position, V, n_f, coords);
+    if (unit_sampled(0u)) stq = coords[0];
+    [[unroll]] for (uint i = 1u; i < MAX_TEXTURE_UNITS; i++) {
+        if (unit_sampled(i)) unit_stq[i - 1u] = coords[i];
+    }
 #endif
 
     vec4 c = vertex_color(in_color);

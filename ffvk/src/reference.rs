@@ -290,7 +290,7 @@ pub fn transform(state: &FixedFunctionState, modelview: Mat4, projection: Mat4, 
         clip: projection.as_dmat4() * eye,
         normal,
         color: DVec4::from(v.color.map(f64::from)),
-        texcoord: texture::transform_st(&state.texture, v.texcoord, object, eye, normal),
+        texcoord: texture::transform_st(&state.texture_units[0], v.texcoord, object, eye, normal),
     }
 }
 
@@ -465,10 +465,10 @@ pub fn pixel_terms(
         }
     };
     let textured = texture
-        .filter(|&(image, sampling)| texturing_applies(&state.texture, Some((image, sampling))))
+        .filter(|&(image, sampling)| texturing_applies(&state.texture_units[0], Some((image, sampling))))
         .map(|(image, sampling)| {
             let stq = [cov.weights, cov.weights_dx, cov.weights_dy].map(|w| at(w, &|e| e.texcoord));
-            texture::texture_fragment(&state.texture, image, sampling, stq, c_pri)
+            texture::texture_fragment(&state.texture_units[0], image, sampling, stq, c_pri)
         });
     let textured_pri = textured.map_or(c_pri, |t| t.env);
     let summed = color_sum(textured_pri, c_sec);

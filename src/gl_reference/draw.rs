@@ -5,7 +5,7 @@
 use std::ffi::c_void;
 
 use ffvk::gl::state::{ColorControl, FixedFunctionState, Light, LightingMode, Material};
-use ffvk::gl::texture::{MagFilter, MinFilter, Sampling, TextureImage, Wrap};
+use ffvk::gl::texture::{MagFilter, MinFilter, Sampling, TextureImage, Wrap, MAX_TEXTURE_UNITS};
 use ffvk::mesh::{MeshData, Vertex};
 
 use super::bindings::types::{GLenum, GLint, GLsizei, GLsizeiptr, GLuint};
@@ -61,16 +61,13 @@ pub(super) fn render(gl: &Gl, scene: &GlScene) -> Result<image::RgbaImage, GlErr
     begin_frame(gl, scene);
     check(gl, || "while setting up the frame".into())?;
 
+    let units = scene.units_used();
     for (index, draw) in scene.draws.iter().enumerate() {
-        // The draw's texture object lives for the draw only (deleted when dropped).
-        let texture = draw
-            .texture
-            .map(|(image, sampling)| GlTexture::upload(gl, image, &sampling))
-            .transpose()
-            .map_err(|problem| GlError::Draw { index, problem })?;
-        draw_one(gl, draw, max_lights, texture.as_ref())
-            .map_err(|problem| GlError::Draw { index, problem })?;
-        drop(texture);
+        // The draw's texture objects live for the draw only (deleted when dropped).
+        let textures = upload_textures(gl, draw).map_err(|problem| GlError::Draw { index, problem })?;
+        let bound = DrawUnits::of(&textures, units);
+        draw_one(gl, draw, max_lights, &bound).map_err(|problem| GlError::Draw { index, problem })?;
+        drop(textures);
         check(gl, || format!("after draw {index}"))?;
     }
 
@@ -367,11 +364,51 @@ pub(super) fn index_count(draw: &GlDraw) -> Result<GLsizei, DrawError> {
     GLsizei::try_from(count).map_err(|_| DrawError::TooManyIndices(count))
 }
 
+/// Each unit's texture of `draw` uploaded (`None` where it has none).
+pub(super) fn upload_textures<'g>(
+    gl: &'g Gl,
+    draw: &GlDraw,
+) -> Result<[Option<GlTexture<'g>>; MAX_TEXTURE_UNITS], DrawError> {
+    let mut out: [Option<GlTexture<'g>>; MAX_TEXTURE_UNITS] = Default::default();
+    for (slot, texture) in out.iter_mut().zip(&draw.textures) {
+        *slot = texture
+            .map(|(image, sampling)| GlTexture::upload(gl, image, &sampling))
+            .transpose()?;
+    }
+    Ok(out)
+}
+
+/// A draw's uploaded textures, a unit each, and how many units the scene sets
+/// ([`GlScene::units_used`](super::GlScene::units_used)).
+#[derive(Clone, Copy)]
+pub(super) struct DrawUnits<'t, 'g> {
+    pub(super) textures: [Option<&'t GlTexture<'g>>; MAX_TEXTURE_UNITS],
+    pub(super) count: usize,
+}
+
+impl<'t, 'g> DrawUnits<'t, 'g> {
+    pub(super) fn of(textures: &'t [Option<GlTexture<'g>>; MAX_TEXTURE_UNITS], count: usize) -> Self {
+        DrawUnits {
+            textures: textures.each_ref().map(Option::as_ref),
+            count,
+        }
+    }
+
+    /// The units whose texture coordinate array is the mesh's: unit 0 when it has a texture,
+    /// and the units `mesh_texcoords` names that have one.
+    pub(super) fn texcoord_arrays(&self, mesh_texcoords: u32) -> u32 {
+        (0..self.count.min(MAX_TEXTURE_UNITS))
+            .filter(|&i| self.textures[i].is_some() && (i == 0 || mesh_texcoords & 1 << i != 0))
+            .fold(0, |mask, i| mask | 1 << i)
+    }
+}
+
 /// Points the vertex, normal, color and texture coordinate arrays at the [`Vertex`] fields from
 /// `base` (a client address, or null for the bound buffer object) and enables those the draw
-/// reads: colors with a color array, texture coordinates with a texture bound (as in ffvk,
-/// each vertex's (s, t, 0, 1) then goes through the texture matrix).
-pub(super) fn set_arrays(gl: &Gl, base: *const u8, colors: bool, texcoords: bool) {
+/// reads: colors with a color array, the mesh's texture coordinates on the units of
+/// `texcoords` (a bit each, of the first `units`; as in ffvk, each vertex's (s, t, 0, 1) then
+/// goes through the unit's texture matrix).
+pub(super) fn set_arrays(gl: &Gl, base: *const u8, colors: bool, (texcoords, units): (u32, usize)) {
     let stride = std::mem::size_of::<Vertex>() as GLsizei;
     let field = |offset: usize| base.wrapping_add(offset).cast::<c_void>();
     // SAFETY: a context is current on this thread; the pointers are read by later draws only,
@@ -384,17 +421,22 @@ pub(super) fn set_arrays(gl: &Gl, base: *const u8, colors: bool, texcoords: bool
         } else {
             gl.DisableClientState(gl::COLOR_ARRAY);
         }
-        if texcoords {
-            gl.EnableClientState(gl::TEXTURE_COORD_ARRAY);
-        } else {
-            gl.DisableClientState(gl::TEXTURE_COORD_ARRAY);
+        for unit in (0..units).rev() {
+            if units > 1 {
+                gl.ClientActiveTexture(gl::TEXTURE0 + unit as u32);
+            }
+            if texcoords & 1 << unit != 0 {
+                gl.EnableClientState(gl::TEXTURE_COORD_ARRAY);
+            } else {
+                gl.DisableClientState(gl::TEXTURE_COORD_ARRAY);
+            }
+            gl.TexCoordPointer(
+                2,
+                gl::FLOAT,
+                stride,
+                field(std::mem::offset_of!(Vertex, texcoord)),
+            );
         }
-        gl.TexCoordPointer(
-            2,
-            gl::FLOAT,
-            stride,
-            field(std::mem::offset_of!(Vertex, texcoord)),
-        );
         gl.VertexPointer(
             3,
             gl::FLOAT,
@@ -406,42 +448,44 @@ pub(super) fn set_arrays(gl: &Gl, base: *const u8, colors: bool, texcoords: bool
     }
 }
 
-/// Disables the arrays and unbinds the buffers.
-pub(super) fn end_arrays(gl: &Gl) {
+/// Disables the arrays (the texture coordinates of the first `units` units) and unbinds the
+/// buffers.
+pub(super) fn end_arrays(gl: &Gl, units: usize) {
     // SAFETY: a context is current on this thread.
     unsafe {
         gl.DisableClientState(gl::VERTEX_ARRAY);
         gl.DisableClientState(gl::NORMAL_ARRAY);
         gl.DisableClientState(gl::COLOR_ARRAY);
-        gl.DisableClientState(gl::TEXTURE_COORD_ARRAY);
+        for unit in (0..units).rev() {
+            if units > 1 {
+                gl.ClientActiveTexture(gl::TEXTURE0 + unit as u32);
+            }
+            gl.DisableClientState(gl::TEXTURE_COORD_ARRAY);
+        }
         gl.BindBuffer(gl::ARRAY_BUFFER, 0);
         gl.BindBuffer(gl::ELEMENT_ARRAY_BUFFER, 0);
     }
 }
 
 /// One draw from client arrays with every state set first: the conformance reference's form.
-fn draw_one(gl: &Gl, draw: &GlDraw, max_lights: usize, texture: Option<&GlTexture>) -> Result<(), DrawError> {
+fn draw_one(gl: &Gl, draw: &GlDraw, max_lights: usize, units: &DrawUnits) -> Result<(), DrawError> {
     check_lights(&draw.state, max_lights)?;
     let mesh = draw.mesh;
     check_indices(mesh)?;
+    let arrays = (units.texcoord_arrays(draw.mesh_texcoords), units.count);
     if mesh.topology == ffvk::Topology::EdgeFlaggedTriangles {
-        set_state(gl, draw, max_lights, texture)?;
-        return draw_edge_flagged(gl, draw, texture.is_some());
+        set_state(gl, draw, max_lights, units)?;
+        return draw_edge_flagged(gl, draw, arrays);
     }
     let count = index_count(draw)?;
-    set_state(gl, draw, max_lights, texture)?;
+    set_state(gl, draw, max_lights, units)?;
     if count == 0 {
         return Ok(());
     }
-    set_arrays(
-        gl,
-        mesh.vertices.as_ptr().cast(),
-        draw.color_array,
-        texture.is_some(),
-    );
+    set_arrays(gl, mesh.vertices.as_ptr().cast(), draw.color_array, arrays);
     if let Some(flags) = draw.edge_flags {
         if flags.len() != mesh.vertices.len() {
-            end_arrays(gl);
+            end_arrays(gl, units.count);
             return Err(DrawError::EdgeFlagCount {
                 flags: flags.len(),
                 vertices: mesh.vertices.len(),
@@ -470,7 +514,7 @@ fn draw_one(gl: &Gl, draw: &GlDraw, max_lights: usize, texture: Option<&GlTextur
         );
         gl.DisableClientState(gl::EDGE_FLAG_ARRAY);
     }
-    end_arrays(gl);
+    end_arrays(gl, units.count);
     Ok(())
 }
 
@@ -478,7 +522,7 @@ fn draw_one(gl: &Gl, draw: &GlDraw, max_lights: usize, texture: Option<&GlTextur
 /// triangle's three corners (copied, so that each corner has its own flag), each corner with
 /// the edge flag of the edge that starts at it (set where its adjacency index repeats it).
 /// The indices were checked against the vertices.
-fn draw_edge_flagged(gl: &Gl, draw: &GlDraw, textured: bool) -> Result<(), DrawError> {
+fn draw_edge_flagged(gl: &Gl, draw: &GlDraw, arrays: (u32, usize)) -> Result<(), DrawError> {
     let mesh = draw.mesh;
     let (vertices, flags): (Vec<Vertex>, Vec<u8>) = mesh
         .indices
@@ -496,7 +540,7 @@ fn draw_edge_flagged(gl: &Gl, draw: &GlDraw, textured: bool) -> Result<(), DrawE
     if count == 0 {
         return Ok(());
     }
-    set_arrays(gl, vertices.as_ptr().cast(), draw.color_array, textured);
+    set_arrays(gl, vertices.as_ptr().cast(), draw.color_array, arrays);
     // SAFETY: a context is current on this thread; `vertices` and `flags` (one per corner)
     // live until glDrawArrays has read them, and the arrays are disabled after it.
     unsafe {
@@ -507,7 +551,7 @@ fn draw_edge_flagged(gl: &Gl, draw: &GlDraw, textured: bool) -> Result<(), DrawE
         gl.DrawArrays(gl::TRIANGLES, 0, count);
         gl.DisableClientState(gl::EDGE_FLAG_ARRAY);
     }
-    end_arrays(gl);
+    end_arrays(gl, arrays.1);
     Ok(())
 }
 
@@ -518,7 +562,7 @@ pub(super) fn set_state(
     gl: &Gl,
     draw: &GlDraw,
     max_lights: usize,
-    texture: Option<&GlTexture>,
+    units: &DrawUnits,
 ) -> Result<(), DrawError> {
     let state = &draw.state;
     // SAFETY: a context is current on this thread; matrices are 16 floats, column-major as
@@ -571,7 +615,27 @@ pub(super) fn set_state(
     set_enabled(gl, gl::NORMALIZE, state.normalize);
     set_enabled(gl, gl::RESCALE_NORMAL, state.rescale_normal);
     set_enabled(gl, gl::LIGHTING, state.lighting);
-    set_texture_unit(gl, &state.texture, texture.map(|t| t.name));
+    // Units from the last, so that unit 0 stays active (and client-active) after, as a
+    // one-unit program leaves it; only a scene of several units names a unit.
+    for unit in (0..units.count).rev() {
+        if units.count > 1 {
+            // SAFETY: a context is current on this thread; the unit is below
+            // GL_MAX_TEXTURE_UNITS (checked by the scene's units) and the coordinates have
+            // four components.
+            unsafe {
+                gl.ActiveTexture(gl::TEXTURE0 + unit as u32);
+                gl.MultiTexCoord4fv(
+                    gl::TEXTURE0 + unit as u32,
+                    state.current_texcoords[unit].to_array().as_ptr(),
+                );
+            }
+        }
+        set_texture_unit(
+            gl,
+            &state.texture_units[unit],
+            units.textures[unit].map(|t| t.name),
+        );
+    }
     set_stages(gl, state);
     // The raster state the calls may set, at GL's defaults for each draw.
     for cap in [
@@ -661,11 +725,6 @@ fn set_stages(gl: &Gl, state: &ffvk::gl::state::FixedFunctionState) {
                 ffvk::gl::state::SpriteOrigin::LowerLeft => gl::LOWER_LEFT,
                 _ => gl::UPPER_LEFT,
             } as GLint,
-        );
-        gl.TexEnvi(
-            gl::POINT_SPRITE,
-            gl::COORD_REPLACE,
-            state.texture.coord_replace as GLint,
         );
     }
     set_enabled(gl, gl::POINT_SPRITE, p.sprite);

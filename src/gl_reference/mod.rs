@@ -46,7 +46,7 @@ use glam::{Mat4, Vec4};
 
 use crate::Result;
 use ffvk::gl::state::{Cap, ColorMaterialMode, Face, FixedFunctionState};
-use ffvk::gl::texture::{Sampling, TextureImage};
+use ffvk::gl::texture::{Sampling, TextureImage, TextureUnit, MAX_TEXTURE_UNITS};
 use ffvk::mesh::MeshData;
 
 pub use calls::mesh_raster_calls;
@@ -68,6 +68,24 @@ pub struct GlScene<'a> {
     pub draws: Vec<GlDraw<'a>>,
 }
 
+impl GlScene<'_> {
+    /// How many texture units the scene's draws use: 1, or past the last unit some draw binds
+    /// a texture to, changes from GL's defaults or gives current coordinates. Each draw sets
+    /// that many units, so that a draw after one that used a unit finds it at its own state,
+    /// while a scene of one unit issues no call a one-unit program would not.
+    pub fn units_used(&self) -> usize {
+        let used = |d: &GlDraw, i: usize| {
+            d.textures[i].is_some()
+                || d.state.texture_units[i] != TextureUnit::default()
+                || d.state.current_texcoords[i] != Vec4::W
+        };
+        (1..MAX_TEXTURE_UNITS)
+            .rev()
+            .find(|&i| self.draws.iter().any(|d| used(d, i)))
+            .map_or(1, |i| i + 1)
+    }
+}
+
 /// One draw call: a triangle list with the matrices and lighting state in force for it.
 pub struct GlDraw<'a> {
     /// Triangle list, counter-clockwise front, per-vertex position, normal and color.
@@ -85,12 +103,17 @@ pub struct GlDraw<'a> {
     /// GL calls made after the state is set and before the draw, so that GL's own rules
     /// (the current color, color-material tracking and write-back) apply to them.
     pub calls: Vec<GlCall>,
-    /// The texture bound to `GL_TEXTURE_2D` for this draw, with its parameters; `None` binds
-    /// texture object 0 (no image, so `GL_TEXTURE_2D` on textures nothing). Every level of the
-    /// image is uploaded as it is (ffvk's own mipmaps, so that a comparison is about sampling,
-    /// not mipmap generation); the texture environment and matrix come from
-    /// [`FixedFunctionState::texture`] and the texture coordinates from the mesh.
-    pub texture: Option<(&'a TextureImage, Sampling)>,
+    /// The texture bound to each unit's `GL_TEXTURE_2D` for this draw, with its parameters,
+    /// `GL_TEXTURE0` first; `None` binds texture object 0 (no image, so `GL_TEXTURE_2D` on
+    /// textures nothing). Every level of the image is uploaded as it is (ffvk's own mipmaps,
+    /// so that a comparison is about sampling, not mipmap generation); each unit's environment
+    /// and matrix come from [`FixedFunctionState::texture_units`], unit 0's texture coordinates
+    /// from the mesh.
+    pub textures: [Option<(&'a TextureImage, Sampling)>; MAX_TEXTURE_UNITS],
+    /// The units 1-3 whose texture coordinates are the mesh's too (`glClientActiveTexture`
+    /// and `glTexCoordPointer` on the same array), a bit each (bit i for unit i); the others
+    /// take the unit's current coordinates (`glMultiTexCoord`, from the state).
+    pub mesh_texcoords: u32,
     /// The primitive mode `glDrawElements` draws the mesh's indices with (`GL_TRIANGLES` by
     /// default; the mesh's indices are then read as that mode's vertices).
     pub mode: GlMode,
@@ -163,7 +186,8 @@ impl<'a> GlDraw<'a> {
             state,
             color_array: true,
             calls: Vec::new(),
-            texture: None,
+            textures: [None; MAX_TEXTURE_UNITS],
+            mesh_texcoords: 0,
             mode: GlMode::of(mesh.topology),
             point_size: 1.0,
             line_width: 1.0,

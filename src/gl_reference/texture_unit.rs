@@ -20,7 +20,7 @@ fn tex_env_enum(mode: TexEnvMode) -> GLenum {
     }
 }
 
-/// The texture unit: texture object `texture` bound (else object 0, which has no image), the
+/// The active texture unit: texture object `texture` bound (else object 0, which has no image), the
 /// environment, the `GL_TEXTURE` matrix and the `GL_TEXTURE_2D` enable. Leaves the matrix mode
 /// at `GL_MODELVIEW`.
 pub(super) fn set_texture_unit(gl: &Gl, unit: &TextureUnit, texture: Option<GLuint>) {
@@ -42,6 +42,7 @@ pub(super) fn set_texture_unit(gl: &Gl, unit: &TextureUnit, texture: Option<GLui
         gl.MatrixMode(gl::TEXTURE);
         gl.LoadMatrixf(unit.matrix.to_cols_array().as_ptr());
         gl.MatrixMode(gl::MODELVIEW);
+        gl.TexEnvi(gl::POINT_SPRITE, gl::COORD_REPLACE, unit.coord_replace as GLint);
     }
     set_enabled(gl, gl::TEXTURE_2D, unit.enabled);
     // GL_COMBINE's parameters and a coordinate's generation only where they are used, as a
@@ -90,6 +91,7 @@ fn set_combine(gl: &Gl, c: &ffvk::gl::texture::Combine) {
         CombineSource::Constant => gl::CONSTANT,
         CombineSource::PrimaryColor => gl::PRIMARY_COLOR,
         CombineSource::Previous => gl::PREVIOUS,
+        CombineSource::TextureUnit(n) => gl::TEXTURE0 + u32::from(n),
         _ => gl::NONE,
     };
     let rgb_operand = |o: RgbOperand| match o {

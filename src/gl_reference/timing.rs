@@ -10,12 +10,13 @@ use super::bindings::types::{GLenum, GLsizei, GLuint};
 use super::bindings::{self as gl, Gl};
 use super::draw::{
     begin_frame, check, check_lights, end_arrays, index_count, max_lights, set_arrays, set_light, set_state,
-    GlTexture, MeshBuffers,
+    upload_textures, DrawUnits, GlTexture, MeshBuffers,
 };
 use super::egl::{gl_string, has_extension, version_number};
 use super::error::GlError;
 use super::{GlDraw, GlScene, GlTiming};
 use ffvk::gl::state::{FixedFunctionState, Material};
+use ffvk::gl::texture::MAX_TEXTURE_UNITS;
 
 /// Draws `scene` `warmup` + `frames` times, timing each frame (see [`super::time_frames`]).
 pub(super) fn time(gl: &Gl, scene: &GlScene, warmup: u32, frames: u32) -> Result<GlTiming, GlError> {
@@ -33,12 +34,7 @@ pub(super) fn time(gl: &Gl, scene: &GlScene, warmup: u32, frames: u32) -> Result
         .draws
         .iter()
         .enumerate()
-        .map(|(index, d)| {
-            d.texture
-                .map(|(image, sampling)| GlTexture::upload(gl, image, &sampling))
-                .transpose()
-                .map_err(|problem| GlError::Draw { index, problem })
-        })
+        .map(|(index, d)| upload_textures(gl, d).map_err(|problem| GlError::Draw { index, problem }))
         .collect::<Result<Vec<_>, _>>()?;
     check(gl, || "while uploading the textures".into())?;
     // What each draw issues, worked out before the first frame is timed.
@@ -170,8 +166,9 @@ pub(super) fn issue_frame(
     scene: &GlScene,
     (max_lights, steps): (usize, &[Step]),
     buffers: &[MeshBuffers],
-    textures: &[Option<GlTexture>],
+    textures: &[[Option<GlTexture>; MAX_TEXTURE_UNITS]],
 ) -> Result<(), GlError> {
+    let units = scene.units_used();
     let mut bound: Option<[GLuint; 2]> = None;
     for (index, (((draw, b), t), step)) in scene
         .draws
@@ -183,7 +180,7 @@ pub(super) fn issue_frame(
     {
         match &step.state {
             Some(changes) => issue_changes(gl, draw, changes),
-            None => set_state(gl, draw, max_lights, t.as_ref())
+            None => set_state(gl, draw, max_lights, &DrawUnits::of(t, units))
                 .map_err(|problem| GlError::Draw { index, problem })?,
         }
         // A draw's buffer objects are bound when they differ from the draw before's.
@@ -194,7 +191,8 @@ pub(super) fn issue_frame(
                 gl.BindBuffer(gl::ARRAY_BUFFER, b.names[0]);
                 gl.BindBuffer(gl::ELEMENT_ARRAY_BUFFER, b.names[1]);
             }
-            set_arrays(gl, std::ptr::null(), draw.color_array, t.is_some());
+            let arrays = DrawUnits::of(t, units).texcoord_arrays(draw.mesh_texcoords);
+            set_arrays(gl, std::ptr::null(), draw.color_array, (arrays, units));
         }
         if step.count > 0 {
             // SAFETY: a context is current; the modelview is 16 floats, column-major; the bound
@@ -205,7 +203,7 @@ pub(super) fn issue_frame(
             }
         }
     }
-    end_arrays(gl);
+    end_arrays(gl, units);
     Ok(())
 }
 
@@ -249,8 +247,8 @@ fn changes(prev: &GlDraw, draw: &GlDraw, max_lights: usize) -> Option<Changes> {
         && prev.projection == draw.projection
         && prev.calls.is_empty()
         && draw.calls.is_empty()
-        && prev.texture.is_none()
-        && draw.texture.is_none()
+        && prev.textures.iter().all(Option::is_none)
+        && draw.textures.iter().all(Option::is_none)
         && (prev.color_array, prev.point_size, prev.line_width)
             == (draw.color_array, draw.point_size, draw.line_width);
     if !same_rest || a.color_material.enabled || b.color_material.enabled {

@@ -142,7 +142,7 @@ fn the_combine_functions_give_table_3_24s_values_and_bad_parameters_are_refused(
         for &p in params {
             gl.tex_env(p).unwrap();
         }
-        combine(&gl.lighting.texture.combine, c_f, c_s, c_c)
+        combine(&gl.lighting.texture_units[0].combine, c_f, c_s, c_c)
     };
     let close = |a: DVec4, b: DVec4| (a - b).abs().max_element() < 1e-12;
     // Defaults: Arg0 = texel, Arg1 = previous (the primary color), MODULATE.
@@ -184,5 +184,5 @@ fn the_combine_functions_give_table_3_24s_values_and_bad_parameters_are_refused(
     assert!(gl.tex_env(CombineAlpha(Dot3Rgb)).is_err());
     assert!(gl.tex_env(RgbScale(3.0)).is_err());
     assert!(gl.tex_env(SourceRgb(3, CombineSource::Texture)).is_err());
-    assert_eq!(gl.lighting.texture.combine, Default::default());
+    assert_eq!(gl.lighting.texture_units[0].combine, Default::default());
 }

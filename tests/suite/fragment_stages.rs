@@ -904,8 +904,8 @@ fn texturing_then_fog_then_the_alpha_test_run_in_gls_order() {
     for mode in [LightingMode::Vertex, LightingMode::Fragment] {
         let mut gl = GlState::new();
         gl.lighting_mode(mode);
-        gl.lighting.texture.enabled = true;
-        gl.lighting.texture.env_mode = TexEnvMode::Replace;
+        gl.lighting.texture_units[0].enabled = true;
+        gl.lighting.texture_units[0].env_mode = TexEnvMode::Replace;
         for p in [
             FogParam::Mode(FogMode::Linear),
             FogParam::Start(0.0),
@@ -943,7 +943,6 @@ fn texturing_then_fog_then_the_alpha_test_run_in_gls_order() {
         let d = max_difference(&ffvk, &mesa);
         assert!(d <= 1, "{}: ffvk and Mesa's GL differ by {d}/255", mode.name());
     }
-    drop(texture);
     drop(lighting);
     drop(device);
 }

@@ -5,8 +5,8 @@ use std::collections::HashMap;
 use std::mem::{offset_of, size_of};
 
 use ffvk::gpu::layout::{
-    DrawRecord, GpuLight, SpecConstant, SpecKey, StateBlock, RECORD_FIRST_LOCATION, RECORD_LOCATIONS,
-    SPEC_CONSTANT_COUNT,
+    DrawRecord, GpuLight, GpuTextureUnit, SpecConstant, SpecKey, StateBlock, RECORD_FIRST_LOCATION,
+    RECORD_LOCATIONS, SPEC_CONSTANT_COUNT,
 };
 
 const OP_NAME: u32 = 5;
@@ -181,12 +181,27 @@ fn the_state_block_matches_the_glsl_in_every_stage() {
     for (stage, spirv) in stages().into_iter().filter(|(s, _)| !full_screen(s)) {
         let r = reflect(spirv);
         let block = r.struct_id("State");
-        let want = rust_offsets!(StateBlock: projection, texture_matrix, a_cs, c_c, light_count, lighting,
+        let want = rust_offsets!(StateBlock: projection, a_cs, light_count, lighting,
             v_bs, t_bs, separate_specular, color_material, color_material_front, color_material_back,
-            color_material_mode, normalize, specular_model, tex_env_mode, color_sum, alpha_func, alpha_ref,
-            combine, fog_color, fog_start, fog_end, fog_density, fog_scale, fog_mode, fog_source, fog_per_vertex,
-            clip_mask, clip_planes, texgen, texgen_pad_0, texgen_pad_1, texgen_pad_2, texgen_planes, lights);
+            color_material_mode, normalize, specular_model, color_sum, alpha_func, alpha_ref,
+            pad_0, pad_1, fog_color, fog_start, fog_end, fog_density, fog_scale, fog_mode, fog_source, fog_per_vertex,
+            clip_mask, clip_planes, units, lights);
         assert_eq!(r.members(block), want, "{stage}: State block offsets");
+
+        let unit = r.struct_id("TextureUnitState");
+        let want =
+            rust_offsets!(GpuTextureUnit: matrix, c_c, texgen_planes, env_mode, combine, crossbar, texgen);
+        assert_eq!(r.members(unit), want, "{stage}: TextureUnitState offsets");
+        let units_type = r.struct_members[&block][28];
+        assert_eq!(
+            r.array_element[&units_type], unit,
+            "{stage}: units is an array of TextureUnitState"
+        );
+        assert_eq!(
+            r.strides[&units_type] as usize,
+            size_of::<GpuTextureUnit>(),
+            "{stage}: TextureUnitState array stride"
+        );
 
         let light = r.struct_id("Light");
         let want = rust_offsets!(GpuLight: a_cli, d_cli, s_cli, P_pli, s_dli, s_rli, c_rli, cos_c_rli, k0, k1, k2, spot_edge, cos_inner, falloff, range, VP_hat_inf, h_hat_inf);
@@ -232,7 +247,8 @@ fn the_record_block_of_the_fragment_stages_matches_the_draw_record() {
             current_color,
             current_normal,
             current_texcoord,
-            current_secondary_color
+            current_secondary_color,
+            current_unit_texcoords
         );
         assert_eq!(r.members(block), want, "{stage}: Record block offsets");
         seen += 1;
@@ -273,6 +289,10 @@ fn the_draw_records_attributes_sit_at_the_locations_the_vertex_stages_read() {
         // give them per vertex), read from the normal matrix's first two columns' w.
         ("in_front_s_rm", RECORD_FIRST_LOCATION + 15),
         ("in_back_s_rm", RECORD_FIRST_LOCATION + 16),
+        // Units 1-3's texture coordinates: the layout's arrays or the record's current ones.
+        ("in_texcoord_1", 23),
+        ("in_texcoord_2", 24),
+        ("in_texcoord_3", 25),
     ];
     assert_eq!(RECORD_LOCATIONS, 17, "15 vec4s and two shininesses");
     for (stage, spirv) in stages()
@@ -323,7 +343,7 @@ fn specialization_constant_ids_match_the_rust_side() {
         for (&id, &spec_id) in &r.spec_ids {
             let name = r.names.get(&id).map(String::as_str).unwrap_or("(unnamed)");
             // glsl/stipple.glsl's, which only stippled pipelines set (draw/stipple.rs): the
-            // stipple at 33, its 32 rows after it.
+            // stipple right after the others, its 32 rows after it.
             if let Some(row) = name.strip_prefix("SPEC_STIPPLE") {
                 let at = row
                     .strip_prefix("_ROW_")
@@ -345,9 +365,11 @@ fn specialization_constant_ids_match_the_rust_side() {
             let default = match constant {
                 SpecConstant::PointSize => 1.0f32.to_bits() as i32,
                 // The layout's and target's constants, set in every pipeline: no conversion,
-                // the record's 19 vec4s, a float alpha compare.
+                // the record's 22 vec4s, a float alpha compare.
                 SpecConstant::GlSnorm => 0,
-                SpecConstant::RecordVec4s => 19,
+                SpecConstant::RecordVec4s => 22,
+                // A textured pipeline's units, set in every one: unit 0 sampled and applied.
+                SpecConstant::TextureUnits => 0x11,
                 SpecConstant::AlphaBits => 0,
                 // The point constants' "off" values: no attenuation, (a, b, c) = (1, 0, 0),
                 // the clamp [0, FLT_MAX], no sprite.

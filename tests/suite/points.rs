@@ -57,7 +57,7 @@ fn draw_both(
         let mut d = GlDraw::new(&data, modelview, projection(s.at), gl.lighting);
         d.mode = GlMode::Points;
         d.point_size = s.size;
-        d.texture = texture;
+        d.textures[0] = texture;
         draws.push(d);
     }
     let ours = r.render(&frame).unwrap().into_rgba_image();

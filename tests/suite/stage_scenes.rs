@@ -141,7 +141,7 @@ fn gl_image(scene: &Scene, mode: LightingMode) -> RgbaImage {
             let mut state = scene.draw_state(mesh);
             state.mode = mode;
             let mut draw = GlDraw::new(&mesh.data, scene.modelview(mesh), scene.projection, state);
-            draw.texture = mesh.texture.as_ref().map(|t| (&*t.image, t.sampling));
+            draw.textures[0] = mesh.texture.as_ref().map(|t| (&*t.image, t.sampling));
             draw.point_size = scene.point_size;
             draw.calls = mesh_raster_calls(&mesh.raster);
             draw

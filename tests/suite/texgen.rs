@@ -131,7 +131,7 @@ fn the_texgen_equations_give_the_spec_values_at_one_vertex() {
     for i in 0..4 {
         gl.enable(Cap::TextureGen(i)).unwrap();
     }
-    unit = gl.lighting.texture;
+    unit = gl.lighting.texture_units[0];
     let g = generated_coords(&unit, c, p_o, p_e, n_f);
     // s: (1, 1, 0, 1) · (1, 2, 3, 1) = 4.
     assert_eq!(g.x, 4.0);
@@ -145,5 +145,8 @@ fn the_texgen_equations_give_the_spec_values_at_one_vertex() {
     // GL_SPHERE_MAP on R and GL_REFLECTION_MAP on Q are GL_INVALID_ENUM, and change nothing.
     assert!(gl.tex_gen_mode(2, TexGenMode::SphereMap).is_err());
     assert!(gl.tex_gen_mode(3, TexGenMode::NormalMap).is_err());
-    assert_eq!(gl.lighting.texture.texgen[2].mode, TexGenMode::ReflectionMap);
+    assert_eq!(
+        gl.lighting.texture_units[0].texgen[2].mode,
+        TexGenMode::ReflectionMap
+    );
 }

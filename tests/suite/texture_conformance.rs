@@ -142,7 +142,7 @@ fn ffvk_image(
 
 fn gl_image(view: &View, state: FixedFunctionState, image: &TextureImage, sampling: Sampling) -> RgbaImage {
     let mut draw = GlDraw::new(&view.mesh, view.modelview, view.projection, state);
-    draw.texture = Some((image, sampling));
+    draw.textures[0] = Some((image, sampling));
     gl_draw_image(draw, [0.0, 0.0, 0.0, 1.0])
 }
 
@@ -585,7 +585,7 @@ fn textured_scenes_time_and_a_malformed_level_cannot_be_made() {
     );
     let scene = |image| {
         let mut draw = GlDraw::new(&view.mesh, view.modelview, view.projection, s);
-        draw.texture = Some((image, Sampling::default()));
+        draw.textures[0] = Some((image, Sampling::default()));
         GlScene {
             width: SIZE,
             height: SIZE,

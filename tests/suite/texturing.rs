@@ -225,7 +225,7 @@ fn an_incomplete_texture_or_gl_texture_2d_off_textures_nothing() {
     assert_eq!(render(&mut r, &scene, s, Some(&incomplete)), untextured);
     let complete = r.upload_texture(&image, &Sampling::NEAREST).unwrap();
     let mut off = s;
-    off.texture.enabled = false;
+    off.texture_units[0].enabled = false;
     assert_eq!(render(&mut r, &scene, off, Some(&complete)), untextured);
     assert_ne!(render(&mut r, &scene, s, Some(&complete)), untextured);
     drop((incomplete, complete));

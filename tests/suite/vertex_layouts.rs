@@ -567,8 +567,8 @@ fn current_and_projective_texture_coordinates_sample_as_mesa_samples_them() {
     let device = canvas.ffvk();
     let (view, sampler) = canvas.texture(&texels, (2, 2), &sampler_info(&Sampling::NEAREST, 1));
     let mut gl = GlState::new();
-    gl.lighting.texture.enabled = true;
-    gl.lighting.texture.env_mode = TexEnvMode::Replace;
+    gl.lighting.texture_units[0].enabled = true;
+    gl.lighting.texture_units[0].env_mode = TexEnvMode::Replace;
     gl.tex_coord(Vec4::new(0.75, 0.25, 0.0, 1.0)).unwrap();
     // x y z, then s t r q with q = 2: 28 bytes.
     let corners = [[0.0f32, 0.0], [1.0, 0.0], [0.0, 1.0], [1.0, 1.0]];
@@ -623,7 +623,6 @@ fn current_and_projective_texture_coordinates_sample_as_mesa_samples_them() {
     for r in results {
         r.unwrap();
     }
-    drop(texture);
     drop(lighting);
     drop(device);
 

@@ -123,7 +123,7 @@ use ash::vk;
 mod bindings;
 mod variant;
 use bindings::Remembered;
-use variant::Variant;
+use variant::{units_key, Variant};
 
 pub use super::lit::{DrawValues, LitDraw, VertexLayout};
 pub use super::options::{LightingOptions, MAX_FRAMES_IN_FLIGHT};
@@ -133,9 +133,10 @@ use super::pipeline::{
 use super::raster::DynamicRaster;
 use super::record::{record_in_run, Bound, RunState, Topology};
 use super::ring::{Pushed, Ring, RingUse};
-use super::texture::TextureBinding;
+use super::texture::{TextureBinding, UnitSets};
 use crate::error::{LightingError, Result};
 use crate::gl::state::{FixedFunctionState, LightingMode};
+use crate::gl::texture::MAX_TEXTURE_UNITS;
 use crate::gpu::layout::{DrawRecord, StateBlock, StateKey};
 use crate::vk::Device;
 
@@ -153,6 +154,8 @@ pub(crate) struct Staged {
     /// The record chunk's set and the record's offset, for a fragment stage that reads it as a
     /// uniform block (the fragment mode).
     record_block: Option<(vk::DescriptorSet, u32)>,
+    /// The texture units' set, for a textured draw.
+    texture_set: Option<vk::DescriptorSet>,
 }
 
 impl Staged {
@@ -208,6 +211,8 @@ pub struct Lighting {
     states: Ring,
     /// The draw records of each frame slot.
     records: Ring,
+    /// The texture units' sets of each frame slot.
+    unit_sets: UnitSets,
     pipelines: Pipelines,
     specialize: Specialize,
     last: Option<LastState>,
@@ -263,6 +268,7 @@ impl Lighting {
                 RingUse::InstanceData,
                 std::mem::size_of::<DrawRecord>(),
             )?,
+            unit_sets: UnitSets::new(device, slots),
             pipelines,
             specialize: options.specialize,
             last: None,
@@ -315,6 +321,7 @@ impl Lighting {
     pub fn begin_frame(&mut self, slot: u32) -> Result<()> {
         self.states.reset(slot)?;
         self.records.reset(slot)?;
+        self.unit_sets.reset(slot)?;
         self.forget_bindings();
         if self.last.as_ref().is_some_and(|last| last.slot == slot) {
             self.last = None;
@@ -327,33 +334,33 @@ impl Lighting {
         self.states.slots()
     }
 
-    /// Creates the pipeline a draw of `state` with `raster`, textured or not, would use, so
-    /// that the first such draw does not pay for it (pipeline creation is the slow part of a
-    /// cold start).
+    /// Creates the pipeline a draw of `state` with `raster`, textured or not (with a texture
+    /// on every unit), would use, so that the first such draw does not pay for it (pipeline
+    /// creation is the slow part of a cold start).
     pub fn prepare(&mut self, state: &FixedFunctionState, raster: RasterState, textured: bool) -> Result<()> {
-        self.prepare_sized(state, raster, textured, false)?;
+        let bound = if textured { (1 << MAX_TEXTURE_UNITS) - 1 } else { 0 };
+        self.prepare_sized(state, raster, bound, false)?;
         if state.mode == LightingMode::Fragment {
             // Small draws of the fragment mode have a pipeline of their own.
-            self.prepare_sized(state, raster, textured, true)?;
+            self.prepare_sized(state, raster, bound, true)?;
         }
         Ok(())
     }
 
-    /// [`Lighting::prepare`] for draws of one size: `small` when they fetch fewer than
-    /// [`SMALL_DRAW_VERTICES`] vertices.
+    /// [`Lighting::prepare`] for draws of one size (`small` when they fetch fewer than
+    /// [`SMALL_DRAW_VERTICES`] vertices) with a texture bound on the units `bound` names.
     pub(crate) fn prepare_sized(
         &mut self,
         state: &FixedFunctionState,
         raster: RasterState,
-        textured: bool,
+        bound: u32,
         small: bool,
     ) -> Result<()> {
-        let textured = textured && state.texture.enabled;
         let small = small && state.mode == LightingMode::Fragment;
         // Draws with an affine modelview, as nearly all are.
         let variant = Variant {
             layout: 0,
-            textured,
+            units: units_key(&state.texture_units, bound),
             small,
             affine: !self.input(0)?.positions_have_w(),
             assembly: (Topology::TriangleList, false),
@@ -366,8 +373,8 @@ impl Lighting {
         self.pipeline_for(state, raster, variant).map(|_| ())
     }
 
-    /// A descriptor set naming the caller's image `view` and `sampler`, for
-    /// [`LitDraw::texture`]. The view is a 2D color view the fragment stage samples as floats
+    /// A texture binding naming the caller's image `view` and `sampler`, for
+    /// [`LitDraw::textures`]. The view is a 2D color view the fragment stage samples as floats
     /// (e.g. `R8G8B8A8_UNORM`, or `R8G8B8A8_SRGB` for GL's `GL_SRGB8_ALPHA8`), in
     /// `SHADER_READ_ONLY_OPTIMAL` layout whenever a draw that uses it executes;
     /// [`sampler_info`](super::texture::sampler_info) makes a sampler that samples as GL's
@@ -379,8 +386,7 @@ impl Lighting {
     /// `view` and `sampler` are live objects of this device and outlive every command buffer
     /// that draws with the returned binding.
     pub unsafe fn bind_texture(&self, view: vk::ImageView, sampler: vk::Sampler) -> Result<TextureBinding> {
-        // SAFETY: the caller's contract above.
-        unsafe { TextureBinding::new(&self.device, self.pipelines.texture_set_layout(), view, sampler) }
+        Ok(TextureBinding::new(view, sampler))
     }
 
     /// How many pipelines exist, and how many of them are specialized.
@@ -479,9 +485,10 @@ impl Lighting {
             !self.gbuffer && mode == LightingMode::Fragment && draw.geometry.fetched() < SMALL_DRAW_VERTICES;
         // An affine modelview puts every vertex without a w at w = 1
         // (SpecConstant::FiniteVertices).
+        let units = Self::units(draw);
         let variant = Variant {
             layout,
-            textured: Self::textured(draw),
+            units,
             small,
             affine: draw.modelview.row(3) == glam::Vec4::W && !positions_have_w,
             assembly: draw.geometry.assembly(),
@@ -489,7 +496,7 @@ impl Lighting {
             stencil_target: self.stencil_target,
             clipped: draw.state.clip.mask() != 0,
             fogged: draw.state.fragment.fog.enabled,
-            points: PointKey::of(draw.state, draw.geometry.assembly().0, Self::textured(draw)),
+            points: PointKey::of(draw.state, draw.geometry.assembly().0, units & 15),
         };
         let found = self.last.as_ref().and_then(|last| {
             last.pipelines
@@ -517,12 +524,24 @@ impl Lighting {
             bytemuck::bytes_of(&record),
             self.pipelines.record_set_layout(),
         )?;
+        let texture_set = if units == 0 {
+            None
+        } else {
+            let textures = std::array::from_fn(|i| draw.textures[i].filter(|_| units & 1 << i != 0).copied());
+            // SAFETY: the textures are the caller's live bindings (Lighting::bind_texture's
+            // contract covers the command buffers this set is drawn in).
+            Some(unsafe {
+                self.unit_sets
+                    .set_for(self.pipelines.texture_set_layout(), slot, textures)
+            }?)
+        };
         Ok(Staged {
             pipeline,
             layout,
             state: (block.set, block.offset),
             record: (record.buffer, record.index),
             record_block: (mode == LightingMode::Fragment && !small).then_some((record.set, record.offset)),
+            texture_set,
         })
     }
 
@@ -585,9 +604,13 @@ impl Lighting {
         Ok(())
     }
 
-    /// Whether `draw` samples its texture: one is bound and `GL_TEXTURE_2D` is on.
-    fn textured(draw: &LitDraw) -> bool {
-        draw.texture.is_some() && draw.state.texture.enabled
+    /// The texture units `draw` samples (bits 0-3) and applies (bits 4-7): 0 when it applies
+    /// none ([`units_key`]).
+    fn units(draw: &LitDraw) -> u32 {
+        let bound = (0..MAX_TEXTURE_UNITS)
+            .filter(|&i| draw.textures[i].is_some())
+            .fold(0, |mask, i| mask | 1 << i);
+        units_key(&draw.state.texture_units, bound)
     }
 
     /// Records `draws` one after the other into `cmd` for frame slot `slot`, as
@@ -678,7 +701,7 @@ impl Lighting {
                         && a.record_block.is_none()
                         && da.geometry == db.geometry
                         && da.vertex_buffers == db.vertex_buffers
-                        && self.texture_set(da) == self.texture_set(db)
+                        && a.texture_set == b.texture_set
                 }
                 _ => false,
             };
@@ -691,13 +714,6 @@ impl Lighting {
             unsafe { record_in_run(&self.device.raw, cmd, &bound, &draw.geometry, run) };
             at += count;
         }
-    }
-
-    /// The texture set `draw` binds, if it samples one.
-    fn texture_set(&self, draw: &LitDraw) -> Option<vk::DescriptorSet> {
-        draw.texture
-            .filter(|_| Self::textured(draw))
-            .map(TextureBinding::set)
     }
 
     /// What `draw` binds, with what staging it found.
@@ -715,7 +731,7 @@ impl Lighting {
             set_index: config.set_index,
             set: staged.state.0,
             uniform_offset: staged.state.1,
-            texture_set: self.texture_set(draw),
+            texture_set: staged.texture_set,
             bindings: &input.bindings,
             vertex_buffers: draw.vertex_buffers,
             record_binding: input.record_binding(),

@@ -9,6 +9,7 @@ use super::record::Geometry;
 use super::texture::TextureBinding;
 pub use crate::gl::state::DrawValues;
 use crate::gl::state::FixedFunctionState;
+use crate::gl::texture::MAX_TEXTURE_UNITS;
 
 #[cfg(doc)]
 use super::pipeline::VertexInput;
@@ -30,12 +31,14 @@ pub struct LitDraw<'a> {
     pub vertex_buffers: &'a [(vk::Buffer, u64)],
     /// Which vertices to draw.
     pub geometry: Geometry,
-    /// The texture bound to `GL_TEXTURE_2D` ([`Lighting::bind_texture`](crate::Lighting::bind_texture)); it is sampled when
-    /// [`TextureUnit::enabled`](crate::gl::texture::TextureUnit::enabled) is on too. `None` is
-    /// GL's texture object 0, which textures nothing. Whether the texture is complete for its
-    /// sampler (mipmaps where the min filter reads them) is the caller's to ensure, as GL's
-    /// completeness rule is about the caller's image.
-    pub texture: Option<&'a TextureBinding>,
+    /// The texture bound to each unit's `GL_TEXTURE_2D`
+    /// ([`Lighting::bind_texture`](crate::Lighting::bind_texture)), `GL_TEXTURE0` first; a
+    /// unit's is sampled when its [`TextureUnit::enabled`](crate::gl::texture::TextureUnit::enabled)
+    /// is on too. `None` is GL's texture object 0, which textures nothing. Whether a texture is
+    /// complete for its sampler (mipmaps where the min filter reads them) is the caller's to
+    /// ensure, as GL's completeness rule is about the caller's image: bind `None` for an
+    /// incomplete one.
+    pub textures: [Option<&'a TextureBinding>; MAX_TEXTURE_UNITS],
     /// The draw's own materials and current values, in place of `state`'s; `None` takes
     /// `state`'s.
     pub values: Option<DrawValues>,
@@ -80,7 +83,7 @@ impl<'a> LitDraw<'a> {
             raster: RasterState::default(),
             vertex_buffers,
             geometry,
-            texture: None,
+            textures: [None; MAX_TEXTURE_UNITS],
             values: None,
             layout: None,
         }
@@ -93,10 +96,17 @@ impl<'a> LitDraw<'a> {
         self
     }
 
-    /// This draw with `texture` bound to `GL_TEXTURE_2D` (`None`: texture object 0).
+    /// This draw with `texture` bound to unit 0's `GL_TEXTURE_2D` (`None`: texture object 0).
     #[must_use]
     pub fn with_texture(mut self, texture: Option<&'a TextureBinding>) -> Self {
-        self.texture = texture;
+        self.textures[0] = texture;
+        self
+    }
+
+    /// This draw with each unit's texture, `GL_TEXTURE0` first.
+    #[must_use]
+    pub fn with_textures(mut self, textures: [Option<&'a TextureBinding>; MAX_TEXTURE_UNITS]) -> Self {
+        self.textures = textures;
         self
     }
 

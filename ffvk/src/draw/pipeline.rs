@@ -60,8 +60,9 @@ impl PointKey {
         (self.values[0] != 0 && float(5) > 1.0) || float(4) > 1.0
     }
 
-    /// The key of a draw of `topology` under `state`, `textured` when it samples its unit.
-    pub(crate) fn of(state: &FixedFunctionState, topology: Topology, textured: bool) -> PointKey {
+    /// The key of a draw of `topology` under `state` sampling the texture units `units` (a bit
+    /// each): `GL_COORD_REPLACE` counts for those units only.
+    pub(crate) fn of(state: &FixedFunctionState, topology: Topology, units: u32) -> PointKey {
         if topology != Topology::PointList {
             return PointKey::OFF;
         }
@@ -73,9 +74,14 @@ impl PointKey {
         } else {
             [1.0, 0.0, 0.0]
         };
-        let sprite = p.sprite as i32
-            | ((p.sprite && textured && state.texture.coord_replace) as i32) << 1
-            | ((p.sprite_origin == SpriteOrigin::LowerLeft) as i32) << 2;
+        // GL_COORD_REPLACE: unit 0's in bit 1, unit i's in bit 2 + i (texture.glsl, sprite_or).
+        let replace = state
+            .texture_units
+            .iter()
+            .enumerate()
+            .filter(|&(i, u)| p.sprite && u.coord_replace && units & 1 << i != 0)
+            .fold(0, |bits, (i, _)| bits | if i == 0 { 2 } else { 4 << i });
+        let sprite = p.sprite as i32 | replace | ((p.sprite_origin == SpriteOrigin::LowerLeft) as i32) << 2;
         PointKey {
             values: [
                 attenuated as i32,
@@ -281,7 +287,8 @@ struct PipelineKey {
     mode: LightingMode,
     spec: SpecKey,
     raster: RasterState,
-    textured: bool,
+    /// The texture units it samples and applies (`SPEC_TEXTURE_UNITS`); 0 untextured.
+    units: u32,
     /// A small draw of the fragment mode (always false in the other modes).
     small: bool,
     /// The primitives its vertices make.
@@ -448,13 +455,15 @@ impl Pipelines {
         (textured, small): (bool, bool),
         (topology, restart): (Topology, bool),
     ) -> Result<vk::Pipeline> {
+        // Textured: unit 0, sampled and applied.
+        let units = if textured { 0x11 } else { 0 };
         self.get_for(
             0,
             (mode, key, raster),
-            (textured, small),
+            (units, small),
             (topology, restart),
             (false, false, false, false),
-            PointKey::of(&FixedFunctionState::default(), topology, textured),
+            PointKey::of(&FixedFunctionState::default(), topology, units),
         )
     }
 
@@ -469,7 +478,7 @@ impl Pipelines {
         &mut self,
         layout: u32,
         (mode, key, raster): (LightingMode, SpecKey, RasterState),
-        (textured, small): (bool, bool),
+        (units, small): (u32, bool),
         (topology, restart): (Topology, bool),
         (gbuffer, clipped, fogged, stencil_target): (bool, bool, bool, bool),
         points: PointKey,
@@ -480,7 +489,7 @@ impl Pipelines {
             mode,
             spec: key,
             raster,
-            textured,
+            units,
             small: small && mode == LightingMode::Fragment && !gbuffer,
             topology,
             restart,
@@ -523,7 +532,7 @@ impl Pipelines {
         mode: LightingMode,
         key: SpecKey,
         raster: RasterState,
-        (textured, small): (bool, bool),
+        (units, small): (u32, bool),
         (topology, restart, points, stencil_target): (Topology, bool, PointKey, bool),
     ) -> bool {
         self.pipelines.contains_key(&PipelineKey {
@@ -531,7 +540,7 @@ impl Pipelines {
             mode,
             spec: key,
             raster,
-            textured,
+            units,
             small: small && mode == LightingMode::Fragment,
             topology,
             restart,
@@ -611,9 +620,9 @@ impl Pipelines {
         let name = if k.gbuffer {
             "fragment_gbuffer".to_owned()
         } else if edges {
-            edges_variant_name(k.mode, (k.textured, k.small), (k.fogged, k.clipped))
+            edges_variant_name(k.mode, (k.units != 0, k.small), (k.fogged, k.clipped))
         } else {
-            variant_name_staged(k.mode, k.spec, (k.textured, k.small), (k.fogged, k.clipped))
+            variant_name_staged(k.mode, k.spec, (k.units != 0, k.small), (k.fogged, k.clipped))
         };
         let name = name.as_str();
         let variant = shaders::variant(name)
@@ -633,7 +642,8 @@ impl Pipelines {
             k.raster.point_size.0,
             k.points,
         );
-        let spec = with_layout(spec, input.gl_snorm_code(), config.target.color_format, device);
+        let mut spec = with_layout(spec, input.gl_snorm_code(), config.target.color_format, device);
+        spec.values[SpecConstant::TextureUnits as usize] = k.units as i32;
         let specialization = vk::SpecializationInfo::default()
             .map_entries(&entries)
             .data(bytemuck::bytes_of(&spec));
@@ -675,7 +685,7 @@ impl Pipelines {
                     .specialization_info(&geometry_specialization),
             );
         }
-        let attributes = input.attributes(k.textured);
+        let attributes = input.attributes(k.units != 0);
         let bindings = input.binding_descriptions(record_stride_on(device));
         let vertex_input = vk::PipelineVertexInputStateCreateInfo::default()
             .vertex_binding_descriptions(&bindings)

@@ -1,80 +1,162 @@
-//! The texture a lit draw samples: a descriptor set naming an image view and a sampler, and
-//! the Vulkan sampler that samples as GL's texture parameters say.
+//! The textures a lit draw samples: the texture units' set (one combined image sampler per
+//! unit, [`MAX_TEXTURE_UNITS`] of them, in one binding), the caller's view and sampler each
+//! unit names ([`TextureBinding`]), and the Vulkan sampler that samples as GL's texture
+//! parameters say.
 //!
 //! ffvk's own renderer uploads [`TextureImage`](crate::gl::texture::TextureImage)s into images
 //! it owns; an embedding caller keeps its own images and samplers and asks
 //! [`Lighting::bind_texture`](super::lighting::Lighting::bind_texture) for a
 //! [`TextureBinding`] that names them.
+//!
+//! A draw binds one set for all its units. Sets are made per frame slot, one for each
+//! combination of textures the slot's draws sample ([`UnitSets`]), and freed together when
+//! the slot is begun again: the cost is one `vkAllocateDescriptorSets` and one
+//! `vkUpdateDescriptorSets` of four descriptors per combination per frame, where one set per
+//! texture would need a set index per unit (Vulkan guarantees four bound sets in all).
 
+use std::collections::HashMap;
 use std::sync::Arc;
 
 use ash::vk;
 
 use crate::error::Result;
-use crate::gl::texture::{MagFilter, MinFilter, Sampling, Wrap};
-use crate::vk::objects::{DescriptorPool, DescriptorSetLayout};
+use crate::gl::texture::{MagFilter, MinFilter, Sampling, Wrap, MAX_TEXTURE_UNITS};
+use crate::vk::objects::{DescriptorSetLayout, SetPool};
 use crate::vk::Device;
 
-/// The layout of a texture's set: binding 0, one combined image sampler, fragment stage.
+/// The layout of the units' set: binding 0, one combined image sampler per unit, fragment
+/// stage.
 pub(crate) fn set_layout(device: &Arc<Device>) -> Result<DescriptorSetLayout> {
     let bindings = [vk::DescriptorSetLayoutBinding::default()
         .binding(0)
         .descriptor_type(vk::DescriptorType::COMBINED_IMAGE_SAMPLER)
-        .descriptor_count(1)
+        .descriptor_count(MAX_TEXTURE_UNITS as u32)
         .stage_flags(vk::ShaderStageFlags::FRAGMENT)];
     DescriptorSetLayout::new(device, &bindings)
 }
 
-/// A descriptor set (and its pool) that names one image view and one sampler; owned by ffvk,
-/// while the view and sampler stay the caller's.
+/// A caller's image view and sampler, as a texture unit samples them: GL's texture object with
+/// its parameters. It holds no reference to either; the caller keeps both alive.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct TextureBinding {
-    pool: DescriptorPool,
-}
-
-impl std::fmt::Debug for TextureBinding {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("TextureBinding")
-            .field("set", &self.set())
-            .finish()
-    }
+    view: vk::ImageView,
+    sampler: vk::Sampler,
 }
 
 impl TextureBinding {
-    /// A set of `layout` naming `view` (in `SHADER_READ_ONLY_OPTIMAL` when drawn) and `sampler`.
+    /// A binding of `view` (in `SHADER_READ_ONLY_OPTIMAL` when drawn) and `sampler`.
+    pub(crate) fn new(view: vk::ImageView, sampler: vk::Sampler) -> Self {
+        TextureBinding { view, sampler }
+    }
+
+    /// The image view.
+    pub fn view(&self) -> vk::ImageView {
+        self.view
+    }
+
+    /// The sampler.
+    pub fn sampler(&self) -> vk::Sampler {
+        self.sampler
+    }
+}
+
+/// Sets a pool holds before another is added.
+const SETS_PER_POOL: u32 = 64;
+
+/// The units' sets of one frame slot: the pools they come from and the set made for each
+/// combination of textures.
+#[derive(Default)]
+struct SlotSets {
+    pools: Vec<SetPool>,
+    sets: HashMap<[TextureBinding; MAX_TEXTURE_UNITS], vk::DescriptorSet>,
+}
+
+/// The units' sets of every frame slot.
+pub(crate) struct UnitSets {
+    slots: Vec<SlotSets>,
+    device: Arc<Device>,
+}
+
+impl UnitSets {
+    /// No sets yet, for `slots` frame slots.
+    pub(crate) fn new(device: &Arc<Device>, slots: u32) -> Self {
+        UnitSets {
+            slots: (0..slots).map(|_| SlotSets::default()).collect(),
+            device: device.clone(),
+        }
+    }
+
+    /// Frees slot `slot`'s sets: no submitted work uses them any more (the caller's contract
+    /// of [`Lighting::begin_frame`](super::lighting::Lighting::begin_frame)).
+    pub(crate) fn reset(&mut self, slot: u32) -> Result<()> {
+        if let Some(s) = self.slots.get_mut(slot as usize) {
+            s.sets.clear();
+            // One pool is kept: a frame like the last one needs no new pool.
+            s.pools.truncate(1);
+            for pool in &mut s.pools {
+                pool.reset()?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The set of slot `slot` naming `units` (each unit's texture; a unit the draw does not
+    /// sample names another of its textures, since every element must be valid), made now if
+    /// the slot has none for them. `units` has at least one texture.
     ///
     /// # Safety
     ///
-    /// `view` and `sampler` are live objects of `device` and outlive every command buffer
-    /// that draws with this binding.
-    pub(crate) unsafe fn new(
-        device: &Arc<Device>,
+    /// Every view and sampler of `units` is live and outlives the command buffers that draw
+    /// with the set (the contract of [`Lighting::bind_texture`](super::lighting::Lighting::bind_texture)).
+    pub(crate) unsafe fn set_for(
+        &mut self,
         layout: &DescriptorSetLayout,
-        view: vk::ImageView,
-        sampler: vk::Sampler,
-    ) -> Result<Self> {
-        let sizes = [vk::DescriptorPoolSize {
-            ty: vk::DescriptorType::COMBINED_IMAGE_SAMPLER,
-            descriptor_count: 1,
-        }];
-        let pool = DescriptorPool::with_one_set(device, &sizes, layout)?;
-        let image = [vk::DescriptorImageInfo {
-            sampler,
-            image_view: view,
+        slot: u32,
+        units: [Option<TextureBinding>; MAX_TEXTURE_UNITS],
+    ) -> Result<vk::DescriptorSet> {
+        let filler = units
+            .iter()
+            .flatten()
+            .next()
+            .copied()
+            .ok_or(crate::Error::Internal(
+                "a textured draw's set was asked for with no texture",
+            ))?;
+        let key = units.map(|u| u.unwrap_or(filler));
+        let s = self.slots.get_mut(slot as usize).ok_or(crate::Error::Internal(
+            "a texture set for a frame slot that does not exist",
+        ))?;
+        if let Some(&set) = s.sets.get(&key) {
+            return Ok(set);
+        }
+        let mut set = match s.pools.last_mut() {
+            Some(pool) => pool.allocate()?,
+            None => None,
+        };
+        if set.is_none() {
+            let sizes = [vk::DescriptorPoolSize {
+                ty: vk::DescriptorType::COMBINED_IMAGE_SAMPLER,
+                descriptor_count: MAX_TEXTURE_UNITS as u32,
+            }];
+            let mut pool = SetPool::new(&self.device, layout, &sizes, SETS_PER_POOL)?;
+            set = pool.allocate()?;
+            s.pools.push(pool);
+        }
+        let set = set.ok_or(crate::Error::Internal("a new descriptor pool had no room"))?;
+        let images = key.map(|t| vk::DescriptorImageInfo {
+            sampler: t.sampler,
+            image_view: t.view,
             image_layout: vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL,
-        }];
+        });
         let write = vk::WriteDescriptorSet::default()
-            .dst_set(pool.set())
+            .dst_set(set)
             .dst_binding(0)
             .descriptor_type(vk::DescriptorType::COMBINED_IMAGE_SAMPLER)
-            .image_info(&image);
-        // SAFETY: the set is new and unused; the view and sampler are live (the contract).
-        unsafe { device.raw.update_descriptor_sets(&[write], &[]) };
-        Ok(TextureBinding { pool })
-    }
-
-    /// The set, bound after the state block's.
-    pub fn set(&self) -> vk::DescriptorSet {
-        self.pool.set()
+            .image_info(&images);
+        // SAFETY: the set is new and unused; the views and samplers are live (the contract).
+        unsafe { self.device.raw.update_descriptor_sets(&[write], &[]) };
+        s.sets.insert(key, set);
+        Ok(set)
     }
 }
 

@@ -6,6 +6,7 @@ use ash::vk;
 
 use crate::error::{LightingError, Result};
 use crate::gl::state::Face;
+use crate::gl::texture::MAX_TEXTURE_UNITS;
 use crate::gpu::layout::{DrawRecord, RECORD_FIRST_LOCATION, RECORD_LOCATIONS};
 use crate::mesh::Vertex;
 use crate::vk::Device;
@@ -117,9 +118,14 @@ pub struct VertexInput {
     pub normal: Option<Attribute>,
     /// Per-vertex color (`glColorPointer`); `None`: GL's current color for every vertex.
     pub color: Option<Attribute>,
-    /// Texture coordinates (`glTexCoordPointer`, 1 to 4 components, missing ones read as
-    /// t = r = 0, q = 1), read by textured draws; `None`: GL's current texture coordinates.
+    /// Unit 0's texture coordinates (`glTexCoordPointer`, 1 to 4 components, missing ones
+    /// read as t = r = 0, q = 1), read by draws sampling unit 0; `None`: GL's current texture
+    /// coordinates of unit 0.
     pub texcoord: Option<Attribute>,
+    /// Units 1-3's texture coordinates (`glClientActiveTexture(GL_TEXTUREi)`, then
+    /// `glTexCoordPointer`), as `texcoord`; `None`: the unit's current coordinates
+    /// (`glMultiTexCoord`).
+    pub unit_texcoords: [Option<Attribute>; MAX_TEXTURE_UNITS - 1],
     /// Secondary colors (`glSecondaryColorPointer`: three components; a fourth is ignored),
     /// summed with lighting off under `GL_COLOR_SUM`; `None`: GL's current secondary color.
     pub secondary_color: Option<Attribute>,
@@ -145,6 +151,7 @@ impl PartialEq for VertexInput {
             normal,
             color,
             texcoord,
+            unit_texcoords,
             secondary_color,
             fog_coord,
             front_materials,
@@ -158,6 +165,7 @@ impl PartialEq for VertexInput {
             && (*position, *normal, *color, *texcoord)
                 == (other.position, other.normal, other.color, other.texcoord)
             && (*secondary_color, *fog_coord) == (other.secondary_color, other.fog_coord)
+            && *unit_texcoords == other.unit_texcoords
             && (*front_materials, *back_materials) == (other.front_materials, other.back_materials)
     }
 }
@@ -340,6 +348,7 @@ impl VertexInput {
             normal: Some(normal),
             color: None,
             texcoord: None,
+            unit_texcoords: [None; MAX_TEXTURE_UNITS - 1],
             secondary_color: None,
             fog_coord: None,
             front_materials: [None; 5],
@@ -368,6 +377,14 @@ impl VertexInput {
     #[must_use]
     pub fn with_texcoord(mut self, texcoord: Option<Attribute>) -> Self {
         self.texcoord = texcoord;
+        self
+    }
+
+    /// This layout with units 1-3's texture coordinate arrays (`None`: a unit's current
+    /// coordinates for every vertex).
+    #[must_use]
+    pub fn with_unit_texcoords(mut self, texcoords: [Option<Attribute>; MAX_TEXTURE_UNITS - 1]) -> Self {
+        self.unit_texcoords = texcoords;
         self
     }
 
@@ -430,6 +447,7 @@ impl VertexInput {
                 std::mem::offset_of!(Vertex, texcoord),
                 F::R32G32_SFLOAT,
             )),
+            unit_texcoords: [None; MAX_TEXTURE_UNITS - 1],
             secondary_color: None,
             fog_coord: None,
             front_materials: [None; 5],
@@ -464,6 +482,11 @@ impl VertexInput {
         ] {
             if let Some(a) = a {
                 out.push((name.to_owned(), kind, a));
+            }
+        }
+        for (i, a) in self.unit_texcoords.iter().enumerate() {
+            if let Some(a) = a {
+                out.push((format!("unit {} texcoord", i + 1), Kind::TexCoord, *a));
             }
         }
         for (face, arrays) in [("front", &self.front_materials), ("back", &self.back_materials)] {
@@ -723,6 +746,13 @@ impl VertexInput {
             22,
             or_record(Kind::Shininess, self.fog_coord, current, F::R32_SFLOAT),
         ));
+        if textured {
+            let current = record_offset!(current_unit_texcoords);
+            for (i, a) in self.unit_texcoords.iter().enumerate() {
+                let offset = current + 16 * i as u32;
+                out.push((23 + i as u32, or_record(Kind::TexCoord, *a, offset, vec4)));
+            }
+        }
         out
     }
 

@@ -15,6 +15,11 @@ mod texgen;
 pub use combine::{AlphaOperand, Combine, CombineFunc, CombineSource, RgbOperand};
 pub use texgen::{TexCoordGen, TexGenMode};
 
+/// `GL_MAX_TEXTURE_UNITS` (and `GL_MAX_TEXTURE_COORDS`): the texture units a draw applies, in
+/// order, each to the previous one's color (§3.8.16). Four, as ANGLE's GLES 1 renderer has; each
+/// more costs every textured pipeline a varying, a vertex attribute location and a descriptor.
+pub const MAX_TEXTURE_UNITS: usize = 4;
+
 /// `GL_TEXTURE_ENV_MODE` (table 3.22): how the texel C_s, A_s combines with the incoming
 /// fragment color C_f, A_f (the lit primary color).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
@@ -644,6 +649,24 @@ impl TextureImage {
 /// The number of levels of a complete mipmap chain for a `width` × `height` level 0.
 pub fn mip_count(width: u32, height: u32) -> u32 {
     32 - width.max(height).max(1).leading_zeros()
+}
+
+/// The units a draw samples and the units it applies (§3.8.16): `bound` has a bit per unit with
+/// a complete texture; a unit is sampled where it is also enabled, and applied where, besides,
+/// every `GL_TEXTUREn` source its `GL_COMBINE` reads names a sampled unit (a unit that reads
+/// another unit's missing texel passes the color through, as ARB_texture_env_crossbar says).
+/// Returns (sampled, applied), a bit per unit each.
+pub fn units_applied(units: &[TextureUnit; MAX_TEXTURE_UNITS], bound: u32) -> (u32, u32) {
+    let sampled = (0..MAX_TEXTURE_UNITS)
+        .filter(|&i| units[i].enabled && bound & 1 << i != 0)
+        .fold(0, |mask, i| mask | 1 << i);
+    let applied = (0..MAX_TEXTURE_UNITS)
+        .filter(|&i| sampled & 1 << i != 0)
+        .filter(|&i| {
+            units[i].env_mode != TexEnvMode::Combine || units[i].combine.units_read() & !sampled == 0
+        })
+        .fold(0, |mask, i| mask | 1 << i);
+    (sampled, applied)
 }
 
 /// Whether texturing applies to a draw (section 3.8.10): `GL_TEXTURE_2D` enabled and a bound

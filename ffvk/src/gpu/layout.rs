@@ -16,6 +16,7 @@ use crate::gl::state::{
     Attenuation, ColorControl, ColorMaterialMode, DrawValues, FixedFunctionState, FogSource, Light, Material,
     SpecularModel, SpotEdge, StateError, MAX_CLIP_PLANES, MAX_LIGHTS,
 };
+use crate::gl::texture::{TextureUnit, MAX_TEXTURE_UNITS};
 
 /// GL clip space (z in [-w, w], y up) to Vulkan clip space (z in [0, w], y down), applied
 /// after the GL projection so the image's top row is the top of the view, as on a GL screen.
@@ -169,12 +170,8 @@ pub fn specular_code(m: SpecularModel) -> u32 {
 pub struct StateBlock {
     /// GL's projection premultiplied by [`VK_FROM_GL_CLIP`].
     pub projection: [f32; 16],
-    /// The `GL_TEXTURE` matrix, column-major (read by the textured variants).
-    pub texture_matrix: [f32; 16],
     /// `GL_LIGHT_MODEL_AMBIENT`, RGBA.
     pub a_cs: [f32; 4],
-    /// `GL_TEXTURE_ENV_COLOR`, RGBA in [0, 1].
-    pub c_c: [f32; 4],
     /// How many entries of `lights` are in use: the enabled lights, 0..=[`MAX_LIGHTS`].
     pub light_count: u32,
     /// `GL_LIGHTING`.
@@ -199,8 +196,6 @@ pub struct StateBlock {
     /// The specular term, the GLSL `SPECULAR_*` values: 0 GL's (Blinn's halfway vector),
     /// 1 Phong's reflection vector.
     pub specular_model: u32,
-    /// `GL_TEXTURE_ENV_MODE` as [`TexEnvMode::code`](crate::gl::texture::TexEnvMode::code).
-    pub tex_env_mode: u32,
     /// `GL_COLOR_SUM` (read by the uber-shader with lighting off).
     pub color_sum: u32,
     /// The alpha test's function as [`CompareFunc::code`](crate::gl::state::CompareFunc::code),
@@ -208,10 +203,10 @@ pub struct StateBlock {
     pub alpha_func: u32,
     /// `GL_ALPHA_TEST_REF`, in [0, 1].
     pub alpha_ref: f32,
-    /// `GL_COMBINE`'s state as [`Combine::code`](crate::gl::texture::Combine::code) (read
-    /// under `GL_TEXTURE_ENV_MODE` `GL_COMBINE`); it also keeps the next field on a 16-byte
-    /// boundary.
-    pub combine: u32,
+    /// Unused: keeps `fog_color` on a 16-byte boundary.
+    pub pad_0: u32,
+    /// Unused.
+    pub pad_1: u32,
     /// `GL_FOG_COLOR`, RGBA in [0, 1].
     pub fog_color: [f32; 4],
     /// `GL_FOG_START`.
@@ -233,27 +228,58 @@ pub struct StateBlock {
     pub clip_mask: u32,
     /// The user clip planes in eye space (`glClipPlane`, §2.12).
     pub clip_planes: [[f32; 4]; MAX_CLIP_PLANES],
-    /// Texture coordinate generation while `GL_TEXTURE_2D` is on
-    /// ([`TextureUnit::texgen_code`](crate::gl::texture::TextureUnit::texgen_code)), else 0.
-    pub texgen: u32,
-    /// Unused: keep `texgen_planes` on a 16-byte boundary.
-    pub texgen_pad_0: u32,
-    /// Unused.
-    pub texgen_pad_1: u32,
-    /// Unused.
-    pub texgen_pad_2: u32,
-    /// Each coordinate's plane as its mode reads it: the object plane (`GL_OBJECT_LINEAR`), the
-    /// eye plane in eye space (`GL_EYE_LINEAR`), else zero.
-    pub texgen_planes: [[f32; 4]; 4],
+    /// The texture units, `GL_TEXTURE0` onwards (read by the textured variants for the units
+    /// they sample).
+    pub units: [GpuTextureUnit; MAX_TEXTURE_UNITS],
     /// The enabled lights packed in index order, so entry i is not necessarily `GL_LIGHTi`;
     /// entries from `light_count` on are zeroed.
     pub lights: [GpuLight; MAX_LIGHTS],
 }
 
+/// One texture unit's state as the shaders read it (`TextureUnitState` in `glsl/draw.glsl`),
+/// 160 bytes.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct GpuTextureUnit {
+    /// The unit's `GL_TEXTURE` matrix, column-major.
+    pub matrix: [f32; 16],
+    /// `GL_TEXTURE_ENV_COLOR`, RGBA in [0, 1].
+    pub c_c: [f32; 4],
+    /// Each coordinate's plane as its mode reads it: the object plane (`GL_OBJECT_LINEAR`), the
+    /// eye plane in eye space (`GL_EYE_LINEAR`), else zero.
+    pub texgen_planes: [[f32; 4]; 4],
+    /// `GL_TEXTURE_ENV_MODE` as [`TexEnvMode::code`](crate::gl::texture::TexEnvMode::code).
+    pub env_mode: u32,
+    /// `GL_COMBINE`'s state as [`Combine::code`](crate::gl::texture::Combine::code) (read
+    /// under `GL_TEXTURE_ENV_MODE` `GL_COMBINE`).
+    pub combine: u32,
+    /// `GL_COMBINE`'s `GL_TEXTUREn` sources as
+    /// [`Combine::crossbar_code`](crate::gl::texture::Combine::crossbar_code).
+    pub crossbar: u32,
+    /// Texture coordinate generation while the unit's `GL_TEXTURE_2D` is on
+    /// ([`TextureUnit::texgen_code`](crate::gl::texture::TextureUnit::texgen_code)), else 0.
+    pub texgen: u32,
+}
+
+impl GpuTextureUnit {
+    /// `unit` packed.
+    pub fn new(unit: &TextureUnit) -> Self {
+        GpuTextureUnit {
+            matrix: unit.matrix.to_cols_array(),
+            c_c: unit.env_color.to_array(),
+            texgen_planes: unit.texgen.map(|g| g.plane().to_array()),
+            env_mode: unit.env_mode.code(),
+            combine: unit.combine.code(),
+            crossbar: unit.combine.crossbar_code(),
+            texgen: if unit.enabled { unit.texgen_code() } else { 0 },
+        }
+    }
+}
+
 /// One draw's own values, as the vertex stages read them: per-instance vertex attributes at
 /// locations 4-20 (`glsl/record.glsl`), one record per draw in ffvk's record buffer, the draw's
 /// `firstInstance` naming its record, and the current values a layout without an array for them
-/// reads at locations 1-3 and 21 instead. 304 bytes, nineteen `vec4`s; in the buffer, records lie the
+/// reads at locations 1-3, 21-25 instead. 352 bytes, 22 `vec4`s; in the buffer, records lie the
 /// device's uniform offset alignment apart ([`record_stride`]).
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
@@ -281,6 +307,9 @@ pub struct DrawRecord {
     /// GL's current secondary color (`glSecondaryColor`), RGBA: every vertex's (location 21)
     /// where the layout has no secondary color array.
     pub current_secondary_color: [f32; 4],
+    /// GL's current texture coordinates of units 1-3 (`glMultiTexCoord`): every vertex's
+    /// (locations 23-25) where a draw sampling the unit has no texture coordinate array for it.
+    pub current_unit_texcoords: [[f32; 4]; MAX_TEXTURE_UNITS - 1],
 }
 
 /// The first vertex-attribute location of a [`DrawRecord`].
@@ -340,9 +369,7 @@ impl StateBlock {
         let fog = &state.fragment.fog;
         StateBlock {
             projection: (VK_FROM_GL_CLIP * projection).to_cols_array(),
-            texture_matrix: state.texture.matrix.to_cols_array(),
             a_cs: state.model.ambient.to_array(),
-            c_c: state.texture.env_color.to_array(),
             light_count,
             lighting: state.lighting as u32,
             v_bs: state.model.local_viewer as u32,
@@ -360,11 +387,11 @@ impl StateBlock {
             },
             normalize: state.normalize as u32,
             specular_model: specular_code(state.model.specular_model),
-            tex_env_mode: state.texture.env_mode.code(),
             color_sum: state.fragment.color_sum as u32,
             alpha_func: state.fragment.alpha_test.effective_func().code(),
             alpha_ref: state.fragment.alpha_test.reference,
-            combine: state.texture.combine.code(),
+            pad_0: 0,
+            pad_1: 0,
             fog_color: fog.color.to_array(),
             fog_start: fog.start,
             fog_end: fog.end,
@@ -379,15 +406,7 @@ impl StateBlock {
             fog_per_vertex: fog.hint.per_vertex() as u32,
             clip_mask: state.clip.mask(),
             clip_planes: state.clip.planes.map(|p| p.to_array()),
-            texgen: if state.texture.enabled {
-                state.texture.texgen_code()
-            } else {
-                0
-            },
-            texgen_pad_0: 0,
-            texgen_pad_1: 0,
-            texgen_pad_2: 0,
-            texgen_planes: state.texture.texgen.map(|g| g.plane().to_array()),
+            units: state.texture_units.each_ref().map(GpuTextureUnit::new),
             lights,
         }
     }
@@ -430,8 +449,9 @@ impl DrawRecord {
             back: face(back),
             current_color: values.current_color.to_array(),
             current_normal: values.current_normal.extend(values.current_fog_coord).to_array(),
-            current_texcoord: values.current_texcoord.to_array(),
+            current_texcoord: values.current_texcoords[0].to_array(),
             current_secondary_color: values.current_secondary_color.to_array(),
+            current_unit_texcoords: [1, 2, 3].map(|i| values.current_texcoords[i].to_array()),
         }
     }
 }

@@ -8,7 +8,7 @@ use glam::{DVec2, DVec3, DVec4};
 
 use crate::gl::texture::{
     AlphaOperand, Combine, CombineFunc, CombineSource, MagFilter, RgbOperand, Sampling, TexEnvMode,
-    TexGenMode, TextureImage, TextureUnit, Wrap,
+    TexGenMode, TextureImage, TextureUnit, Wrap, MAX_TEXTURE_UNITS,
 };
 
 /// What texturing did at one fragment (what `ffvk explain` prints).
@@ -25,31 +25,96 @@ pub struct Textured {
     pub env: DVec4,
 }
 
-/// Table 3.22 for an RGBA texture: the fragment color `c_f` (the primary color) combined with
-/// the texel `c_s` in `mode`, `c_c` the environment color; `GL_COMBINE` as `combine` says
-/// ([`combine`]). Every result is in [0, 1] (ADD and COMBINE clamp).
-pub fn tex_env(mode: TexEnvMode, combine_state: &Combine, c_f: DVec4, c_s: DVec4, c_c: DVec4) -> DVec4 {
-    let (cf, cs, cc) = (c_f.truncate(), c_s.truncate(), c_c.truncate());
-    let (af, a_s) = (c_f.w, c_s.w);
-    match mode {
-        TexEnvMode::Combine => combine(combine_state, c_f, c_s, c_c),
-        TexEnvMode::Replace => c_s,
-        TexEnvMode::Modulate => (cf * cs).extend(af * a_s),
-        TexEnvMode::Decal => (cf * (1.0 - a_s) + cs * a_s).extend(af),
-        TexEnvMode::Blend => (cf * (DVec3::ONE - cs) + cc * cs).extend(af * a_s),
-        TexEnvMode::Add => (cf + cs).clamp(DVec3::ZERO, DVec3::ONE).extend(af * a_s),
-    }
+/// What unit `unit` of a fragment's texturing reads (GL 2.1 §3.8.13): the fragment's primary
+/// color `c_f` (`GL_PRIMARY_COLOR`), the previous unit's result `c_p` (`GL_PREVIOUS`; `c_f`
+/// for unit 0) and every unit's texel `c_s` (`GL_TEXTURE`, and `GL_TEXTUREn` of the crossbar).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct UnitInputs {
+    /// The unit's index.
+    pub unit: usize,
+    /// The primary color.
+    pub c_f: DVec4,
+    /// The previous unit's result.
+    pub c_p: DVec4,
+    /// Each unit's texel (zero for a unit not sampled).
+    pub c_s: [DVec4; MAX_TEXTURE_UNITS],
 }
 
-/// GL 2.1 §3.8.13, `GL_COMBINE` (table 3.24) for one unit: the arguments from the sources
-/// (`GL_PREVIOUS` of the first unit is the primary color `c_f`), the function of them for RGB
-/// and for alpha (`GL_DOT3_RGBA` puts the dot product in alpha too), each result scaled and
-/// clamped to [0, 1]. The copy of `glsl/texture.glsl`'s `combine`.
+/// Table 3.22 for an RGBA texture: the fragment color `c_f` (the primary color) combined with
+/// the texel `c_s` in `mode`, `c_c` the environment color; `GL_COMBINE` as `combine` says
+/// ([`combine`]): unit 0 of [`unit_env`]. Every result is in [0, 1].
+pub fn tex_env(mode: TexEnvMode, combine_state: &Combine, c_f: DVec4, c_s: DVec4, c_c: DVec4) -> DVec4 {
+    let mut texels = [DVec4::ZERO; MAX_TEXTURE_UNITS];
+    texels[0] = c_s;
+    let v = UnitInputs {
+        unit: 0,
+        c_f,
+        c_p: c_f,
+        c_s: texels,
+    };
+    env_of(mode, combine_state, &v, c_c)
+}
+
+/// Unit `v.unit`'s environment (table 3.22 for an RGBA texture, or `GL_COMBINE`) on the
+/// previous unit's result, clamped to [0, 1] as GL clamps every unit's result.
+pub fn unit_env(unit: &TextureUnit, v: &UnitInputs) -> DVec4 {
+    env_of(unit.env_mode, &unit.combine, v, unit.env_color.as_dvec4())
+}
+
+fn env_of(mode: TexEnvMode, combine_state: &Combine, v: &UnitInputs, c_c: DVec4) -> DVec4 {
+    let c_s = v.c_s[v.unit];
+    let (cp, cs, cc) = (v.c_p.truncate(), c_s.truncate(), c_c.truncate());
+    let (ap, a_s) = (v.c_p.w, c_s.w);
+    let c_v = match mode {
+        TexEnvMode::Combine => combine_unit(combine_state, v, c_c),
+        TexEnvMode::Replace => c_s,
+        TexEnvMode::Modulate => (cp * cs).extend(ap * a_s),
+        TexEnvMode::Decal => (cp * (1.0 - a_s) + cs * a_s).extend(ap),
+        TexEnvMode::Blend => (cp * (DVec3::ONE - cs) + cc * cs).extend(ap * a_s),
+        TexEnvMode::Add => (cp + cs).extend(ap * a_s),
+    };
+    c_v.clamp(DVec4::ZERO, DVec4::ONE)
+}
+
+/// §3.8.16: the units `applied` names (a bit each) in order, each on the one before's result,
+/// from the primary color `c_f`; `c_s` holds each sampled unit's texel.
+pub fn textured_color(
+    units: &[TextureUnit; MAX_TEXTURE_UNITS],
+    applied: u32,
+    c_f: DVec4,
+    c_s: [DVec4; MAX_TEXTURE_UNITS],
+) -> DVec4 {
+    (0..MAX_TEXTURE_UNITS)
+        .filter(|&i| applied & 1 << i != 0)
+        .fold(c_f, |c_p, unit| {
+            unit_env(&units[unit], &UnitInputs { unit, c_f, c_p, c_s })
+        })
+}
+
+/// GL 2.1 §3.8.13, `GL_COMBINE` (table 3.24) for the one unit: [`combine_unit`] of unit 0,
+/// whose `GL_PREVIOUS` is the primary color `c_f`.
 pub fn combine(c: &Combine, c_f: DVec4, c_s: DVec4, c_c: DVec4) -> DVec4 {
+    let mut texels = [DVec4::ZERO; MAX_TEXTURE_UNITS];
+    texels[0] = c_s;
+    let v = UnitInputs {
+        unit: 0,
+        c_f,
+        c_p: c_f,
+        c_s: texels,
+    };
+    combine_unit(c, &v, c_c)
+}
+
+/// GL 2.1 §3.8.13, `GL_COMBINE` (table 3.24) for unit `v.unit`: the arguments from the sources,
+/// the function of them for RGB and for alpha (`GL_DOT3_RGBA` puts the dot product in alpha
+/// too), each result scaled and clamped to [0, 1]. The copy of `glsl/texture.glsl`'s `combine`.
+pub fn combine_unit(c: &Combine, v: &UnitInputs, c_c: DVec4) -> DVec4 {
     let source = |s: CombineSource| match s {
-        CombineSource::Texture => c_s,
+        CombineSource::Texture => v.c_s[v.unit],
+        CombineSource::TextureUnit(n) => v.c_s.get(usize::from(n)).copied().unwrap_or(DVec4::ZERO),
         CombineSource::Constant => c_c,
-        _ => c_f,
+        CombineSource::PrimaryColor => v.c_f,
+        _ => v.c_p,
     };
     let rgb_arg = |i: usize| {
         let v = source(c.rgb_sources[i]);

@@ -11,6 +11,7 @@ use crate::draw::pipeline::{
 };
 use crate::draw::record::Topology;
 use crate::gl::state::{Face, FixedFunctionState};
+use crate::gl::texture::MAX_TEXTURE_UNITS;
 use crate::vk::Buffer;
 
 #[cfg(doc)]
@@ -69,10 +70,10 @@ pub struct Draw<'a> {
     /// `glFrontFace`: `COUNTER_CLOCKWISE` (GL's `GL_CCW`, the default) or `CLOCKWISE`
     /// (`GL_CW`), in GL's window coordinates.
     pub front_face: vk::FrontFace,
-    /// The texture bound to `GL_TEXTURE_2D` (uploaded by the same renderer): sampled when
-    /// `state.texture.enabled` is on and the texture is complete. `None`: GL's texture 0,
-    /// which textures nothing.
-    pub texture: Option<&'a Texture>,
+    /// The texture bound to each unit's `GL_TEXTURE_2D` (uploaded by the same renderer),
+    /// `GL_TEXTURE0` first: a unit's is sampled when its `enabled` is on and the texture is
+    /// complete. `None`: GL's texture 0, which textures nothing.
+    pub textures: [Option<&'a Texture>; MAX_TEXTURE_UNITS],
     /// How the mesh's indices make primitives: the mesh's own ([`MeshData::topology`]) unless
     /// [`Draw::with_topology`] says otherwise (see [`Topology`]).
     pub topology: Topology,
@@ -119,7 +120,7 @@ impl<'a> Draw<'a> {
             state,
             cull_face: None,
             front_face: vk::FrontFace::COUNTER_CLOCKWISE,
-            texture: None,
+            textures: [None; MAX_TEXTURE_UNITS],
             topology: mesh.topology,
             point_size: 1.0,
             line_width: 1.0,
@@ -262,16 +263,37 @@ impl<'a> Draw<'a> {
         self
     }
 
-    /// This draw with `texture` bound to `GL_TEXTURE_2D` (`None`: texture object 0).
+    /// This draw with `texture` bound to unit 0's `GL_TEXTURE_2D` (`None`: texture object 0).
     #[must_use]
     pub fn with_texture(mut self, texture: Option<&'a Texture>) -> Self {
-        self.texture = texture;
+        self.textures[0] = texture;
         self
     }
 
-    /// Whether this draw samples its texture: bound, complete, and `GL_TEXTURE_2D` on.
+    /// This draw with each unit's texture, `GL_TEXTURE0` first.
+    #[must_use]
+    pub fn with_textures(mut self, textures: [Option<&'a Texture>; MAX_TEXTURE_UNITS]) -> Self {
+        self.textures = textures;
+        self
+    }
+
+    /// The units with a complete texture bound, a bit each (GL's completeness, §3.8.10: an
+    /// incomplete texture textures nothing).
+    pub fn complete_units(&self) -> u32 {
+        (0..MAX_TEXTURE_UNITS)
+            .filter(|&i| self.textures[i].is_some_and(Texture::is_complete))
+            .fold(0, |mask, i| mask | 1 << i)
+    }
+
+    /// Whether this draw samples a texture: some unit's `GL_TEXTURE_2D` on with a complete
+    /// texture bound.
     pub fn textured(&self) -> bool {
-        self.state.texture.enabled && self.texture.is_some_and(Texture::is_complete)
+        let complete = self.complete_units();
+        self.state
+            .texture_units
+            .iter()
+            .enumerate()
+            .any(|(i, u)| u.enabled && complete & 1 << i != 0)
     }
 
     /// The raster state of this draw in `frame`: GL's defaults, with the frame's depth test

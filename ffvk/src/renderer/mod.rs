@@ -415,8 +415,10 @@ impl Renderer {
             if !Arc::ptr_eq(d.mesh.vertices.device(), &self.device) {
                 return Err(MeshError::ForeignMesh { draw: i }.into());
             }
-            if d.texture
-                .is_some_and(|t| !Arc::ptr_eq(t.image.device(), &self.device))
+            if d.textures
+                .iter()
+                .flatten()
+                .any(|t| !Arc::ptr_eq(t.image.device(), &self.device))
             {
                 return Err(MeshError::ForeignTexture { draw: i }.into());
             }
@@ -438,11 +440,11 @@ impl Renderer {
             let small = d.mesh.index_count < crate::draw::pipeline::SMALL_DRAW_VERTICES;
             let same = before.is_some_and(|(b, s)| {
                 std::ptr::eq(b.state, lit.state)
-                    && (b.raster, b.texture.is_some(), s) == (lit.raster, lit.texture.is_some(), small)
+                    && (b.raster, b.textures, s) == (lit.raster, lit.textures, small)
             });
             if !same {
                 self.lighting
-                    .prepare_sized(lit.state, lit.raster, d.textured(), small)?;
+                    .prepare_sized(lit.state, lit.raster, d.complete_units(), small)?;
             }
             before = Some((lit, small));
         }
@@ -552,7 +554,7 @@ impl Renderer {
             ..RasterState::default()
         };
         let start = std::time::Instant::now();
-        self.lighting.prepare_sized(state, raster, false, false)?;
+        self.lighting.prepare_sized(state, raster, 0, false)?;
         Ok(start.elapsed().as_nanos() as f64)
     }
 

@@ -283,7 +283,9 @@ pub(super) fn lit_draws<'f>(frame: &'f Frame) -> Vec<LitDraw<'f>> {
             LitDraw::new(state, draw.modelview, draw.projection, buffers, geometry)
                 .with_values(Some(DrawValues::of(own)))
                 .with_raster(draw.raster(frame))
-                .with_texture(draw.texture.filter(|_| draw.textured()).map(|t| &t.binding))
+                .with_textures(std::array::from_fn(|i| {
+                    draw.textures[i].filter(|t| t.is_complete()).map(|t| &t.binding)
+                }))
         })
         .collect()
 }

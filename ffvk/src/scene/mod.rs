@@ -492,7 +492,7 @@ impl Scene {
             meaning.apply(&mut state);
         }
         if let Some(texture) = &mesh.texture {
-            state.texture = texture.unit;
+            state.texture_units[0] = texture.unit;
         }
         state.lighting &= mesh.lit;
         state
@@ -676,7 +676,11 @@ pub fn render_scene_with(
             state,
             cull_face: scene.cull_face(mesh),
             front_face: raster.front_face,
-            texture: mesh.texture.as_ref().and_then(texture_of),
+            textures: {
+                let mut textures = [None; crate::gl::texture::MAX_TEXTURE_UNITS];
+                textures[0] = mesh.texture.as_ref().and_then(texture_of);
+                textures
+            },
             topology: gpu.topology(),
             // glPointSize draws points only: other meshes keep GL's 1 (their pipelines are
             // not split by it).

@@ -228,7 +228,7 @@ impl Builder<'_> {
             gl.set_enabled(Cap::TextureGen(coord), spec.enabled.unwrap_or(true))
                 .map_err(self.state(f("enabled")))?;
         }
-        Ok(gl.lighting.texture.texgen)
+        Ok(gl.lighting.texture_units[0].texgen)
     }
 
     /// A `texgen` coordinate's `mode` word for coordinate `coord` (0 S .. 3 Q): one of the

@@ -298,6 +298,84 @@ impl Drop for DescriptorPool {
     }
 }
 
+/// A descriptor pool with room for `max_sets` sets of one layout, allocated one at a time
+/// ([`SetPool::allocate`]) and all freed together ([`SetPool::reset`]).
+pub struct SetPool {
+    device: Arc<Device>,
+    raw: vk::DescriptorPool,
+    layout: vk::DescriptorSetLayout,
+    capacity: u32,
+    allocated: u32,
+}
+
+impl SetPool {
+    /// A pool for `max_sets` sets of `layout`, whose bindings take `sizes` per set.
+    pub fn new(
+        device: &Arc<Device>,
+        layout: &DescriptorSetLayout,
+        sizes_per_set: &[vk::DescriptorPoolSize],
+        max_sets: u32,
+    ) -> Result<Self> {
+        let sizes: Vec<vk::DescriptorPoolSize> = sizes_per_set
+            .iter()
+            .map(|s| vk::DescriptorPoolSize {
+                ty: s.ty,
+                descriptor_count: s.descriptor_count * max_sets,
+            })
+            .collect();
+        let info = vk::DescriptorPoolCreateInfo::default()
+            .max_sets(max_sets)
+            .pool_sizes(&sizes);
+        // SAFETY: a valid create info on a live device.
+        let raw = unsafe { device.raw.create_descriptor_pool(&info, None) }
+            .map_err(vk_error("vkCreateDescriptorPool"))?;
+        Ok(SetPool {
+            device: device.clone(),
+            raw,
+            layout: layout.raw,
+            capacity: max_sets,
+            allocated: 0,
+        })
+    }
+
+    /// A new set, or `None` when the pool is full.
+    pub fn allocate(&mut self) -> Result<Option<vk::DescriptorSet>> {
+        if self.allocated == self.capacity {
+            return Ok(None);
+        }
+        let layouts = [self.layout];
+        let alloc = vk::DescriptorSetAllocateInfo::default()
+            .descriptor_pool(self.raw)
+            .set_layouts(&layouts);
+        // SAFETY: the pool has room for one more set of this layout (counted above).
+        let sets = unsafe { self.device.raw.allocate_descriptor_sets(&alloc) }
+            .map_err(vk_error("vkAllocateDescriptorSets"))?;
+        self.allocated += 1;
+        Ok(sets.first().copied())
+    }
+
+    /// Frees every set; the caller makes sure no pending command uses one.
+    pub fn reset(&mut self) -> Result<()> {
+        // SAFETY: the pool is this device's; the caller's contract above.
+        unsafe {
+            self.device
+                .raw
+                .reset_descriptor_pool(self.raw, vk::DescriptorPoolResetFlags::empty())
+        }
+        .map_err(vk_error("vkResetDescriptorPool"))?;
+        self.allocated = 0;
+        Ok(())
+    }
+}
+
+impl Drop for SetPool {
+    fn drop(&mut self) {
+        // SAFETY: created on this device, destroyed once; its sets go with it, and no pending
+        // command uses them (module docs).
+        unsafe { self.device.raw.destroy_descriptor_pool(self.raw, None) }
+    }
+}
+
 /// A command pool whose buffers may be reset one by one, and one primary buffer from it.
 pub struct CommandPool {
     device: Arc<Device>,

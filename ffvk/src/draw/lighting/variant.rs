@@ -8,6 +8,7 @@ use super::super::record::Topology;
 use super::{DrawPipelines, Lighting};
 use crate::error::Result;
 use crate::gl::state::FixedFunctionState;
+use crate::gl::texture::{units_applied, TextureUnit, MAX_TEXTURE_UNITS};
 use crate::gpu::layout::SpecKey;
 
 /// What besides its state and raster state picks a draw's pipeline.
@@ -15,8 +16,8 @@ use crate::gpu::layout::SpecKey;
 pub(super) struct Variant {
     /// The vertex layout's number.
     pub(super) layout: u32,
-    /// It samples a texture.
-    pub(super) textured: bool,
+    /// The texture units it samples (bits 0-3) and applies (bits 4-7); 0 untextured.
+    pub(super) units: u32,
     /// A fragment-mode draw of fewer than [`SMALL_DRAW_VERTICES`](super::super::pipeline::SMALL_DRAW_VERTICES) vertices.
     pub(super) small: bool,
     /// Every vertex at w = 1 after the modelview (`SpecConstant::FiniteVertices`): an affine
@@ -34,6 +35,16 @@ pub(super) struct Variant {
     pub(super) fogged: bool,
     /// Its point constants ([`PointKey::OFF`] but for points).
     pub(super) points: PointKey,
+}
+
+/// The texture units a draw samples (bits 0-3) and applies (bits 4-7), as the pipeline keys
+/// them (`SPEC_TEXTURE_UNITS`), for `units` with a complete texture bound on the units `bound`
+/// names ([`units_applied`]): 0, the untextured pipeline, when no unit applies.
+pub(crate) fn units_key(units: &[TextureUnit; MAX_TEXTURE_UNITS], bound: u32) -> u32 {
+    match units_applied(units, bound) {
+        (_, 0) => 0,
+        (sampled, applied) => sampled | applied << 4,
+    }
 }
 
 impl Lighting {
@@ -67,11 +78,7 @@ impl Lighting {
         variant: Variant,
     ) -> Result<vk::Pipeline> {
         let mode = state.mode;
-        let (textured, affine, assembly) = (
-            (variant.textured, variant.small),
-            variant.affine,
-            variant.assembly,
-        );
+        let (textured, affine, assembly) = ((variant.units, variant.small), variant.affine, variant.assembly);
         let key = match self.specialize {
             Specialize::Never => SpecKey::UBER,
             Specialize::Always => SpecKey::for_state(state).with_finite_vertices(affine),

@@ -10,7 +10,7 @@ use super::{
     FixedFunctionState, FogHint, FogParam, Light, LightModelParam, LightParam, LightingMode, Material,
     MaterialParam, PointParam, RasterGl, ShadeModel, StateError, TexEnvParam, MAX_LIGHTS,
 };
-use crate::gl::texture::{TexCoordGen, TexGenMode};
+use crate::gl::texture::{CombineSource, TexCoordGen, TexGenMode, TextureUnit, MAX_TEXTURE_UNITS};
 
 /// The fixed-function state machine: the lighting state, the current modelview matrix and the
 /// raster state, with GL's entry points (the raster state's are in `raster.rs`). Start from [`GlState::new`] for GL's initial state.
@@ -21,6 +21,9 @@ pub struct GlState {
     pub lighting: FixedFunctionState,
     /// The modelview matrix in force (glLoadMatrix / glMultMatrix).
     pub modelview: Mat4,
+    /// `GL_ACTIVE_TEXTURE`'s unit (glActiveTexture), 0 initially: the unit glTexEnv, glTexGen,
+    /// the texture matrix and the `GL_TEXTURE_2D` and `GL_TEXTURE_GEN_*` enables act on.
+    pub active_unit: usize,
     /// GL's raster and per-fragment state ([`RasterGl`]): what a draw's
     /// [`RasterState`](crate::RasterState) is made from ([`GlState::raster_state`]).
     pub raster: RasterGl,
@@ -38,6 +41,7 @@ impl GlState {
         GlState {
             lighting: FixedFunctionState::default(),
             modelview: Mat4::IDENTITY,
+            active_unit: 0,
             raster: RasterGl::default(),
         }
     }
@@ -166,13 +170,34 @@ impl GlState {
         Ok(())
     }
 
-    /// glTexCoord4f: the current texture coordinates (glTexCoord2f is (s, t, 0, 1)), every
-    /// vertex's in textured draws whose layout has no texture coordinate array; a NaN or
-    /// infinite component is an error.
+    /// glTexCoord4f: unit 0's current texture coordinates (glTexCoord2f is (s, t, 0, 1)),
+    /// every vertex's in draws applying unit 0 whose layout has no texture coordinate array
+    /// for it; a NaN or infinite component is an error.
     pub fn tex_coord(&mut self, texcoord: Vec4) -> Result<(), StateError> {
+        self.multi_tex_coord(0, texcoord)
+    }
+
+    /// glMultiTexCoord4f(GL_TEXTURE0 + unit, …): unit `unit`'s current texture coordinates;
+    /// a unit at or past [`MAX_TEXTURE_UNITS`] or a NaN or infinite component is an error.
+    pub fn multi_tex_coord(&mut self, unit: usize, texcoord: Vec4) -> Result<(), StateError> {
+        check_unit(unit)?;
         finite_vec("GL_CURRENT_TEXTURE_COORDS", texcoord.to_array().as_slice())?;
-        self.lighting.current_texcoord = texcoord;
+        self.lighting.current_texcoords[unit] = texcoord;
         Ok(())
+    }
+
+    /// glActiveTexture(GL_TEXTURE0 + unit): the unit later glTexEnv, glTexGen, texture matrix
+    /// and texture enable calls act on; a unit at or past [`MAX_TEXTURE_UNITS`] is an error
+    /// (GL's `GL_INVALID_ENUM`) and changes nothing.
+    pub fn active_texture(&mut self, unit: usize) -> Result<(), StateError> {
+        self.active_unit = check_unit(unit)?;
+        Ok(())
+    }
+
+    /// The active texture unit's state.
+    fn unit_mut(&mut self) -> &mut TextureUnit {
+        let unit = self.active_unit.min(MAX_TEXTURE_UNITS - 1);
+        &mut self.lighting.texture_units[unit]
     }
 
     /// While `GL_COLOR_MATERIAL` is enabled, writes the current color into the material
@@ -208,7 +233,7 @@ impl GlState {
             }
             Cap::Normalize => self.lighting.normalize = on,
             Cap::RescaleNormal => self.lighting.rescale_normal = on,
-            Cap::Texture2D => self.lighting.texture.enabled = on,
+            Cap::Texture2D => self.unit_mut().enabled = on,
             Cap::ColorSum => self.lighting.fragment.color_sum = on,
             Cap::AlphaTest => self.lighting.fragment.alpha_test.enabled = on,
             Cap::Fog => self.lighting.fragment.fog.enabled = on,
@@ -235,8 +260,7 @@ impl GlState {
 
     /// Coordinate `coord`'s generation (0 S, 1 T, 2 R, 3 Q); another index is an error.
     fn texgen_mut(&mut self, coord: usize) -> Result<&mut TexCoordGen, StateError> {
-        self.lighting
-            .texture
+        self.unit_mut()
             .texgen
             .get_mut(coord)
             .ok_or(StateError::OutOfRange {
@@ -389,7 +413,7 @@ impl GlState {
     /// glTexEnv(GL_POINT_SPRITE, GL_COORD_REPLACE, on): whether point sprites replace the
     /// texture unit's coordinates.
     pub fn coord_replace(&mut self, on: bool) {
-        self.lighting.texture.coord_replace = on;
+        self.unit_mut().coord_replace = on;
     }
 
     /// glHint(GL_FOG_HINT): `GL_FASTEST` fogs per vertex, the others per fragment.
@@ -418,10 +442,10 @@ impl GlState {
     /// glTexEnv on `GL_TEXTURE_ENV`.
     pub fn tex_env(&mut self, param: TexEnvParam) -> Result<(), StateError> {
         match param {
-            TexEnvParam::Mode(mode) => self.lighting.texture.env_mode = mode,
+            TexEnvParam::Mode(mode) => self.unit_mut().env_mode = mode,
             TexEnvParam::Color(c) => {
                 let c = finite4("GL_TEXTURE_ENV_COLOR", c)?;
-                self.lighting.texture.env_color = c.clamp(Vec4::ZERO, Vec4::ONE);
+                self.unit_mut().env_color = c.clamp(Vec4::ZERO, Vec4::ONE);
             }
             combine => self.tex_env_combine(combine)?,
         }
@@ -452,7 +476,15 @@ impl GlState {
                 })
             }
         };
-        let c = &mut self.lighting.texture.combine;
+        let source = |s: CombineSource| match s.unit() {
+            Some(n) if n >= MAX_TEXTURE_UNITS => Err(StateError::OutOfRange {
+                parameter: "GL_SRCn_RGB or GL_SRCn_ALPHA's GL_TEXTUREn",
+                value: n as f32,
+                valid: "a unit below GL_MAX_TEXTURE_UNITS (4)",
+            }),
+            _ => Ok(s),
+        };
+        let c = &mut self.unit_mut().combine;
         match param {
             TexEnvParam::CombineRgb(f) => c.rgb = f,
             TexEnvParam::CombineAlpha(f) if !f.is_alpha_function() => {
@@ -463,8 +495,8 @@ impl GlState {
                 })
             }
             TexEnvParam::CombineAlpha(f) => c.alpha = f,
-            TexEnvParam::SourceRgb(n, s) => c.rgb_sources[argument(n)?] = s,
-            TexEnvParam::SourceAlpha(n, s) => c.alpha_sources[argument(n)?] = s,
+            TexEnvParam::SourceRgb(n, s) => c.rgb_sources[argument(n)?] = source(s)?,
+            TexEnvParam::SourceAlpha(n, s) => c.alpha_sources[argument(n)?] = source(s)?,
             TexEnvParam::OperandRgb(n, o) => c.rgb_operands[argument(n)?] = o,
             TexEnvParam::OperandAlpha(n, o) => c.alpha_operands[argument(n)?] = o,
             TexEnvParam::RgbScale(s) => c.rgb_scale = scale("GL_RGB_SCALE", s)?,
@@ -474,10 +506,10 @@ impl GlState {
         Ok(())
     }
 
-    /// glLoadMatrix on the `GL_TEXTURE` stack.
+    /// glLoadMatrix on the active unit's `GL_TEXTURE` stack.
     pub fn load_texture_matrix(&mut self, m: Mat4) -> Result<(), StateError> {
         finite_vec("GL_TEXTURE matrix", &m.to_cols_array())?;
-        self.lighting.texture.matrix = m;
+        self.unit_mut().matrix = m;
         Ok(())
     }
 
@@ -489,6 +521,19 @@ impl GlState {
     /// glDisable; fails only for a light index at or past [`MAX_LIGHTS`].
     pub fn disable(&mut self, cap: Cap) -> Result<(), StateError> {
         self.set_enabled(cap, false)
+    }
+}
+
+/// `unit` when it is below [`MAX_TEXTURE_UNITS`], else GL's `GL_INVALID_ENUM` as an error.
+fn check_unit(unit: usize) -> Result<usize, StateError> {
+    if unit < MAX_TEXTURE_UNITS {
+        Ok(unit)
+    } else {
+        Err(StateError::OutOfRange {
+            parameter: "texture unit (GL_TEXTURE0 + i)",
+            value: unit as f32,
+            valid: "0 to 3 (GL_MAX_TEXTURE_UNITS is 4)",
+        })
     }
 }
 

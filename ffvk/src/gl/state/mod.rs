@@ -40,7 +40,9 @@
 
 use glam::{Vec3, Vec4};
 
-use super::texture::{AlphaOperand, CombineFunc, CombineSource, RgbOperand, TexEnvMode, TextureUnit};
+use super::texture::{
+    AlphaOperand, CombineFunc, CombineSource, RgbOperand, TexEnvMode, TextureUnit, MAX_TEXTURE_UNITS,
+};
 
 mod caps;
 mod checks;
@@ -566,9 +568,10 @@ pub struct FixedFunctionState {
     pub model: LightModel,
     /// glColorMaterial state.
     pub color_material: ColorMaterial,
-    /// `GL_TEXTURE_2D`, glTexEnv and the texture matrix: how a bound texture is applied to the
-    /// primary color before the color sum.
-    pub texture: TextureUnit,
+    /// The texture units (`GL_TEXTURE0` onwards): each one's `GL_TEXTURE_2D`, glTexEnv,
+    /// glTexGen and texture matrix, applied in order to the primary color before the color sum
+    /// (§3.8.16).
+    pub texture_units: [TextureUnit; MAX_TEXTURE_UNITS],
     /// `GL_NORMALIZE`; off by default, so a scaled modelview lights with unnormalized normals.
     pub normalize: bool,
     /// `GL_RESCALE_NORMAL`; off by default.
@@ -582,10 +585,10 @@ pub struct FixedFunctionState {
     /// GL's current normal (`GL_CURRENT_NORMAL`, set by `glNormal`), (0, 0, 1) initially: the
     /// normal of every vertex of a draw whose layout has no normal array.
     pub current_normal: Vec3,
-    /// GL's current texture coordinates (`GL_CURRENT_TEXTURE_COORDS`, set by `glTexCoord`),
-    /// (0, 0, 0, 1) initially: those of every vertex of a textured draw whose layout has no
-    /// texture coordinate array.
-    pub current_texcoord: Vec4,
+    /// GL's current texture coordinates of each unit (`GL_CURRENT_TEXTURE_COORDS`, set by
+    /// `glTexCoord` for unit 0 and `glMultiTexCoord`), (0, 0, 0, 1) initially: those of every
+    /// vertex of a draw applying the unit whose layout has no texture coordinate array for it.
+    pub current_texcoords: [Vec4; MAX_TEXTURE_UNITS],
     /// GL's current secondary color (`GL_CURRENT_SECONDARY_COLOR`, set by
     /// `glSecondaryColor`), (0, 0, 0, 1) initially: that of every vertex of a draw whose layout
     /// has no secondary color array; summed only with lighting off and `GL_COLOR_SUM` on.
@@ -617,13 +620,13 @@ impl Default for FixedFunctionState {
             back: Material::default(),
             model: LightModel::default(),
             color_material: ColorMaterial::default(),
-            texture: TextureUnit::default(),
+            texture_units: [TextureUnit::default(); MAX_TEXTURE_UNITS],
             normalize: false,
             rescale_normal: false,
             mode: LightingMode::Vertex,
             current_color: Vec4::ONE,
             current_normal: Vec3::Z,
-            current_texcoord: Vec4::W,
+            current_texcoords: [Vec4::W; MAX_TEXTURE_UNITS],
             current_secondary_color: Vec4::W,
             current_fog_coord: 0.0,
             fragment: FragmentStages::default(),
@@ -645,7 +648,9 @@ impl FixedFunctionState {
     /// texture unit, every light's values and the cones of the enabled ones.
     fn validate_shared(&self) -> Result<(), StateError> {
         finite_vec("GL_LIGHT_MODEL_AMBIENT", self.model.ambient.to_array().as_slice())?;
-        self.texture.validate()?;
+        for unit in &self.texture_units {
+            unit.validate()?;
+        }
         for plane in &self.clip.planes {
             finite_vec("GL_CLIP_PLANEi", plane.to_array().as_slice())?;
         }

@@ -4,6 +4,7 @@
 use glam::{Vec3, Vec4};
 
 use super::{finite_vec, FixedFunctionState, Material, StateError};
+use crate::gl::texture::MAX_TEXTURE_UNITS;
 
 /// A draw's own values, the GL state programs change between draws without touching lights or
 /// switches: the two materials (`glMaterial`, or `COLOR_MATERIAL`'s tracking) and GL's
@@ -37,9 +38,9 @@ pub struct DrawValues {
     pub current_color: Vec4,
     /// GL's current normal: every vertex's normal when the layout has no normal array.
     pub current_normal: Vec3,
-    /// GL's current texture coordinates (s, t, r, q): every vertex's when a textured draw's
-    /// layout has no texture coordinate array.
-    pub current_texcoord: Vec4,
+    /// GL's current texture coordinates (s, t, r, q) of each unit: every vertex's when a draw
+    /// applying the unit has no texture coordinate array for it.
+    pub current_texcoords: [Vec4; MAX_TEXTURE_UNITS],
     /// GL's current secondary color: every vertex's when the layout has no secondary color
     /// array (summed with lighting off under `GL_COLOR_SUM`).
     pub current_secondary_color: Vec4,
@@ -58,7 +59,7 @@ impl DrawValues {
             back: state.back,
             current_color: state.current_color,
             current_normal: state.current_normal,
-            current_texcoord: state.current_texcoord,
+            current_texcoords: state.current_texcoords,
             current_secondary_color: state.current_secondary_color,
             current_fog_coord: state.current_fog_coord,
         }
@@ -72,7 +73,7 @@ impl DrawValues {
             back,
             current_color,
             current_normal: Vec3::Z,
-            current_texcoord: Vec4::W,
+            current_texcoords: [Vec4::W; MAX_TEXTURE_UNITS],
             current_secondary_color: Vec4::W,
             current_fog_coord: 0.0,
         }
@@ -85,10 +86,10 @@ impl DrawValues {
         self
     }
 
-    /// These values with `texcoord` as the current texture coordinates.
+    /// These values with `texcoord` as unit 0's current texture coordinates.
     #[must_use]
     pub fn with_texcoord(mut self, texcoord: Vec4) -> Self {
-        self.current_texcoord = texcoord;
+        self.current_texcoords[0] = texcoord;
         self
     }
 
@@ -99,10 +100,9 @@ impl DrawValues {
         self.back.validate()?;
         finite_vec("GL_CURRENT_COLOR", self.current_color.to_array().as_slice())?;
         finite_vec("GL_CURRENT_NORMAL", self.current_normal.to_array().as_slice())?;
-        finite_vec(
-            "GL_CURRENT_TEXTURE_COORDS",
-            self.current_texcoord.to_array().as_slice(),
-        )?;
+        for texcoord in &self.current_texcoords {
+            finite_vec("GL_CURRENT_TEXTURE_COORDS", texcoord.to_array().as_slice())?;
+        }
         finite_vec(
             "GL_CURRENT_SECONDARY_COLOR",
             self.current_secondary_color.to_array().as_slice(),

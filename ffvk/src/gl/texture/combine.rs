@@ -78,6 +78,11 @@ pub enum CombineSource {
     PrimaryColor,
     /// `GL_PREVIOUS`: the previous unit's result; for the first unit, the primary color.
     Previous,
+    /// `GL_TEXTUREn` (ARB_texture_env_crossbar, GL 1.4): unit n's texel, sampled with unit n's
+    /// own coordinates and texture. A unit whose arguments read a unit that is not enabled with
+    /// a complete texture passes the previous unit's color through, as the extension says (GL
+    /// 2.1 leaves it undefined).
+    TextureUnit(u8),
 }
 
 impl CombineSource {
@@ -89,9 +94,18 @@ impl CombineSource {
         CombineSource::Previous,
     ];
 
-    /// The shaders' value: the index in [`CombineSource::ALL`].
+    /// The shaders' value: the index in [`CombineSource::ALL`]; `GL_TEXTUREn` is
+    /// `GL_TEXTURE`'s, with the unit in [`Combine::crossbar_code`].
     pub fn code(self) -> u32 {
         CombineSource::ALL.iter().position(|&s| s == self).unwrap_or(0) as u32
+    }
+
+    /// The unit a `GL_TEXTUREn` source reads.
+    pub fn unit(self) -> Option<usize> {
+        match self {
+            CombineSource::TextureUnit(n) => Some(usize::from(n)),
+            _ => None,
+        }
     }
 }
 
@@ -199,10 +213,45 @@ impl Combine {
         bits | scale_code(self.rgb_scale) << 27 | scale_code(self.alpha_scale) << 29
     }
 
+    /// The `GL_TEXTUREn` sources as the shaders read them (`SPEC_CROSSBAR`, the unit block's
+    /// `crossbar`): 3 bits per argument, the RGB arguments' from bit 0, the alpha arguments'
+    /// from bit 9, each n + 1 for `GL_TEXTUREn` and 0 for any other source.
+    pub fn crossbar_code(&self) -> u32 {
+        let sources = self.rgb_sources.iter().chain(&self.alpha_sources);
+        sources.enumerate().fold(0, |bits, (i, s)| {
+            bits | s.unit().map_or(0, |n| n as u32 + 1) << (3 * i)
+        })
+    }
+
+    /// The units whose texels the arguments the two functions read come from (`GL_TEXTUREn`
+    /// sources), a bit each: a unit reads `GL_REPLACE`'s one argument, `GL_INTERPOLATE`'s
+    /// three, two for the others, and no alpha argument under `GL_DOT3_RGBA`.
+    pub fn units_read(&self) -> u32 {
+        let args = |f: CombineFunc| match f {
+            CombineFunc::Replace => 1,
+            CombineFunc::Interpolate => 3,
+            _ => 2,
+        };
+        let alpha_args = if self.rgb == CombineFunc::Dot3Rgba {
+            0
+        } else {
+            args(self.alpha)
+        };
+        let rgb = self.rgb_sources.iter().take(args(self.rgb));
+        let alpha = self.alpha_sources.iter().take(alpha_args);
+        rgb.chain(alpha)
+            .filter_map(|s| s.unit())
+            .fold(0, |mask, n| mask | 1 << n)
+    }
+
     /// Whether GL would have accepted every value: an alpha function that is not a dot product,
-    /// scales of 1, 2 or 4.
+    /// scales of 1, 2 or 4, `GL_TEXTUREn` sources of units that exist.
     pub fn is_valid(&self) -> bool {
         let scale = |s: f32| s == 1.0 || s == 2.0 || s == 4.0;
-        self.alpha.is_alpha_function() && scale(self.rgb_scale) && scale(self.alpha_scale)
+        let unit = |s: &CombineSource| s.unit().is_none_or(|n| n < super::MAX_TEXTURE_UNITS);
+        self.alpha.is_alpha_function()
+            && scale(self.rgb_scale)
+            && scale(self.alpha_scale)
+            && self.rgb_sources.iter().chain(&self.alpha_sources).all(unit)
     }
 }

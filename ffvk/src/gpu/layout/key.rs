@@ -47,7 +47,7 @@ pub(crate) fn same_block_state(a: &FixedFunctionState, b: &FixedFunctionState) -
         && a.normalize == b.normalize
         && a.model == b.model
         && a.color_material == b.color_material
-        && a.texture == b.texture
+        && a.texture_units == b.texture_units
         && a.fragment == b.fragment
         && a.clip == b.clip
         && a.points == b.points

@@ -119,10 +119,42 @@ pub enum SpecConstant {
     /// [`Combine::code`](crate::gl::texture::Combine::code) where the environment mode is
     /// `GL_COMBINE`, else 0; read only by the textured variants' fragment stages.
     Combine = 34,
+    /// `SPEC_TEXTURE_UNITS`: the units a textured pipeline samples (bits 0-3) and applies (bits
+    /// 4-7), as [`units_applied`](crate::gl::texture::units_applied) finds them; the
+    /// pipeline's own, set in every textured pipeline (the uber-shader's too).
+    TextureUnits = 35,
+    /// `SPEC_CROSSBAR`: unit 0's `GL_TEXTUREn` sources as
+    /// [`Combine::crossbar_code`](crate::gl::texture::Combine::crossbar_code) where its mode
+    /// is `GL_COMBINE`, else 0.
+    Crossbar = 36,
+    /// `SPEC_TEX_ENV_1`: unit 1's [`SpecConstant::TexEnv`].
+    TexEnv1 = 37,
+    /// `SPEC_TEX_ENV_2`: unit 2's.
+    TexEnv2 = 38,
+    /// `SPEC_TEX_ENV_3`: unit 3's.
+    TexEnv3 = 39,
+    /// `SPEC_TEXGEN_1`: unit 1's [`SpecConstant::TexGen`].
+    TexGen1 = 40,
+    /// `SPEC_TEXGEN_2`: unit 2's.
+    TexGen2 = 41,
+    /// `SPEC_TEXGEN_3`: unit 3's.
+    TexGen3 = 42,
+    /// `SPEC_COMBINE_1`: unit 1's [`SpecConstant::Combine`].
+    Combine1 = 43,
+    /// `SPEC_COMBINE_2`: unit 2's.
+    Combine2 = 44,
+    /// `SPEC_COMBINE_3`: unit 3's.
+    Combine3 = 45,
+    /// `SPEC_CROSSBAR_1`: unit 1's [`SpecConstant::Crossbar`].
+    Crossbar1 = 46,
+    /// `SPEC_CROSSBAR_2`: unit 2's.
+    Crossbar2 = 47,
+    /// `SPEC_CROSSBAR_3`: unit 3's.
+    Crossbar3 = 48,
 }
 
 /// How many specialization constants there are.
-pub const SPEC_CONSTANT_COUNT: usize = 35;
+pub const SPEC_CONSTANT_COUNT: usize = 49;
 
 impl SpecConstant {
     /// Every constant, in `constant_id` order.
@@ -162,7 +194,32 @@ impl SpecConstant {
         SpecConstant::PointSprite,
         SpecConstant::TexGen,
         SpecConstant::Combine,
+        SpecConstant::TextureUnits,
+        SpecConstant::Crossbar,
+        SpecConstant::TexEnv1,
+        SpecConstant::TexEnv2,
+        SpecConstant::TexEnv3,
+        SpecConstant::TexGen1,
+        SpecConstant::TexGen2,
+        SpecConstant::TexGen3,
+        SpecConstant::Combine1,
+        SpecConstant::Combine2,
+        SpecConstant::Combine3,
+        SpecConstant::Crossbar1,
+        SpecConstant::Crossbar2,
+        SpecConstant::Crossbar3,
     ];
+
+    /// Unit `unit`'s `GL_TEXTURE_ENV_MODE`, texgen, `GL_COMBINE` and crossbar constants.
+    pub fn of_unit(unit: usize) -> [SpecConstant; 4] {
+        use SpecConstant::*;
+        match unit {
+            0 => [TexEnv, TexGen, Combine, Crossbar],
+            1 => [TexEnv1, TexGen1, Combine1, Crossbar1],
+            2 => [TexEnv2, TexGen2, Combine2, Crossbar2],
+            _ => [TexEnv3, TexGen3, Combine3, Crossbar3],
+        }
+    }
 
     /// The `constant_id` in the GLSL.
     pub fn id(self) -> u32 {
@@ -207,6 +264,20 @@ impl SpecConstant {
             SpecConstant::PointSprite => "SPEC_POINT_SPRITE",
             SpecConstant::TexGen => "SPEC_TEXGEN",
             SpecConstant::Combine => "SPEC_COMBINE",
+            SpecConstant::TextureUnits => "SPEC_TEXTURE_UNITS",
+            SpecConstant::Crossbar => "SPEC_CROSSBAR",
+            SpecConstant::TexEnv1 => "SPEC_TEX_ENV_1",
+            SpecConstant::TexEnv2 => "SPEC_TEX_ENV_2",
+            SpecConstant::TexEnv3 => "SPEC_TEX_ENV_3",
+            SpecConstant::TexGen1 => "SPEC_TEXGEN_1",
+            SpecConstant::TexGen2 => "SPEC_TEXGEN_2",
+            SpecConstant::TexGen3 => "SPEC_TEXGEN_3",
+            SpecConstant::Combine1 => "SPEC_COMBINE_1",
+            SpecConstant::Combine2 => "SPEC_COMBINE_2",
+            SpecConstant::Combine3 => "SPEC_COMBINE_3",
+            SpecConstant::Crossbar1 => "SPEC_CROSSBAR_1",
+            SpecConstant::Crossbar2 => "SPEC_CROSSBAR_2",
+            SpecConstant::Crossbar3 => "SPEC_CROSSBAR_3",
         }
     }
 }
@@ -234,15 +305,18 @@ impl SpecKey {
 
     /// A key with every constant fixed to `state`'s values. States that light the same way
     /// share a key: unlit states have one key, and what cannot matter is zeroed (the light
-    /// model and light kinds without lights). The environment mode counts only while
-    /// `GL_TEXTURE_2D` is enabled.
+    /// model and light kinds without lights). A unit's environment, texgen and combine count
+    /// only while its `GL_TEXTURE_2D` is enabled; which units a pipeline samples
+    /// ([`SpecConstant::TextureUnits`]) is the pipeline's to set.
     pub fn for_state(state: &FixedFunctionState) -> SpecKey {
         let mut values = [0; SPEC_CONSTANT_COUNT];
-        if state.texture.enabled {
-            values[SpecConstant::TexEnv as usize] = state.texture.env_mode.code() as i32;
-            values[SpecConstant::TexGen as usize] = state.texture.texgen_code() as i32;
-            if state.texture.env_mode == crate::gl::texture::TexEnvMode::Combine {
-                values[SpecConstant::Combine as usize] = state.texture.combine.code() as i32;
+        for (i, unit) in state.texture_units.iter().enumerate().filter(|(_, u)| u.enabled) {
+            let [env, texgen, combine, crossbar] = SpecConstant::of_unit(i);
+            values[env as usize] = unit.env_mode.code() as i32;
+            values[texgen as usize] = unit.texgen_code() as i32;
+            if unit.env_mode == crate::gl::texture::TexEnvMode::Combine {
+                values[combine as usize] = unit.combine.code() as i32;
+                values[crossbar as usize] = unit.combine.crossbar_code() as i32;
             }
         }
         values[SpecConstant::AlphaFunc as usize] = state.fragment.alpha_test.effective_func().code() as i32;
