@@ -74,6 +74,12 @@ pub struct Draw<'a> {
     /// `GL_TEXTURE0` first: a unit's is sampled when its `enabled` is on and the texture is
     /// complete. `None`: GL's texture 0, which textures nothing.
     pub textures: [Option<&'a Texture>; MAX_TEXTURE_UNITS],
+    /// The units 1-3 whose texture coordinates are the mesh's too, a bit each (bit i for unit
+    /// i; as a GL program points `glClientActiveTexture(GL_TEXTUREi)`'s array at the same
+    /// coordinates); the others take their current coordinates
+    /// (`state.current_texcoords`, GL's `glMultiTexCoord`) or generate them. Unit 0's are
+    /// always the mesh's. 0 by default.
+    pub mesh_texcoords: u32,
     /// How the mesh's indices make primitives: the mesh's own ([`MeshData::topology`]) unless
     /// [`Draw::with_topology`] says otherwise (see [`Topology`]).
     pub topology: Topology,
@@ -121,6 +127,7 @@ impl<'a> Draw<'a> {
             cull_face: None,
             front_face: vk::FrontFace::COUNTER_CLOCKWISE,
             textures: [None; MAX_TEXTURE_UNITS],
+            mesh_texcoords: 0,
             topology: mesh.topology,
             point_size: 1.0,
             line_width: 1.0,
@@ -267,6 +274,14 @@ impl<'a> Draw<'a> {
     #[must_use]
     pub fn with_texture(mut self, texture: Option<&'a Texture>) -> Self {
         self.textures[0] = texture;
+        self
+    }
+
+    /// This draw with the mesh's texture coordinates on units 1-3 too where `units` has their
+    /// bit (bit i for unit i; bit 0 and bits past the units are ignored).
+    #[must_use]
+    pub fn with_mesh_texcoords(mut self, units: u32) -> Self {
+        self.mesh_texcoords = units;
         self
     }
 

@@ -429,7 +429,8 @@ impl Renderer {
         // The lit draws first (their time counts as recording, below): consecutive draws under
         // one state borrow it.
         let lits_start = std::time::Instant::now();
-        let lits = record::lit_draws(frame);
+        let layouts = self.texcoord_layouts(frame)?;
+        let lits = record::lit_draws(frame, &layouts);
         let lits_ns = lits_start.elapsed().as_nanos() as f64;
         // Every pipeline is made before recording starts, so that pipeline creation never
         // lands inside a measured frame. A draw that borrows the state of the draw before it

@@ -8,7 +8,8 @@ use super::attachments::{
 };
 use super::deferred::{record_deferred, DeferredPass};
 use super::{subresource, Draw, Frame, Pass, Recording, Renderer, Targets};
-use crate::draw::lighting::{DrawValues, Lighting, LitDraw, Staged};
+use crate::draw::lighting::{DrawValues, Lighting, LitDraw, Staged, VertexLayout};
+use crate::draw::pipeline::VertexInput;
 use crate::draw::record::Geometry;
 use crate::error::{vk_error, Error, Result};
 use crate::gl::state::FixedFunctionState;
@@ -259,7 +260,9 @@ unsafe fn record_readback(vkd: &ash::Device, targets: &Targets, cmd: vk::Command
 /// draw before's only in its own values (materials, current color) borrows that draw's state
 /// and carries its values, as an embedder's run does: its state is compared here once, and
 /// staging and pipeline lookup take it as the same.
-pub(super) fn lit_draws<'f>(frame: &'f Frame) -> Vec<LitDraw<'f>> {
+/// `layouts` holds the vertex layout of each value of a draw's [`Draw::mesh_texcoords`]
+/// (bits 1-3), `None` for the interleaved layout alone.
+pub(super) fn lit_draws<'f>(frame: &'f Frame, layouts: &[Option<VertexLayout>; 8]) -> Vec<LitDraw<'f>> {
     let mut shared: Option<&'f FixedFunctionState> = None;
     frame
         .draws
@@ -281,6 +284,7 @@ pub(super) fn lit_draws<'f>(frame: &'f Frame) -> Vec<LitDraw<'f>> {
                 .with_topology(draw.topology);
             let buffers: &[(vk::Buffer, u64)] = std::slice::from_ref(&mesh.vertex_binding);
             LitDraw::new(state, draw.modelview, draw.projection, buffers, geometry)
+                .with_layout(layouts[mesh_texcoord_index(draw.mesh_texcoords)])
                 .with_values(Some(DrawValues::of(own)))
                 .with_raster(draw.raster(frame))
                 .with_textures(std::array::from_fn(|i| {
@@ -288,4 +292,29 @@ pub(super) fn lit_draws<'f>(frame: &'f Frame) -> Vec<LitDraw<'f>> {
                 }))
         })
         .collect()
+}
+
+/// The index of a draw's [`Draw::mesh_texcoords`] among the layouts [`lit_draws`] takes: its
+/// bits 1-3.
+pub(super) fn mesh_texcoord_index(units: u32) -> usize {
+    ((units >> 1) & 7) as usize
+}
+
+impl Renderer {
+    /// The vertex layouts `frame`'s draws need for their [`Draw::mesh_texcoords`] (added to the
+    /// lighting on first use), by [`mesh_texcoord_index`]: the interleaved layout with the
+    /// mesh's texture coordinates on those units too.
+    pub(super) fn texcoord_layouts(&mut self, frame: &Frame) -> Result<[Option<VertexLayout>; 8]> {
+        let mut layouts = [None; 8];
+        for draw in &frame.draws {
+            let index = mesh_texcoord_index(draw.mesh_texcoords);
+            if index == 0 || layouts[index].is_some() {
+                continue;
+            }
+            let base = VertexInput::interleaved();
+            let shared = std::array::from_fn(|i| base.texcoord.filter(|_| index & 1 << i != 0));
+            layouts[index] = Some(self.lighting.vertex_layout(base.with_unit_texcoords(shared))?);
+        }
+        Ok(layouts)
+    }
 }
