@@ -47,6 +47,7 @@ mod state;
 mod support;
 mod texgen;
 mod texture_conformance;
+mod texture_units;
 mod texturing;
 mod topology;
 mod vertex_layouts;
