@@ -11,6 +11,10 @@
 // glTexParameter's values) in element i. Set 1 is moved to the set after the State block's at
 // pipeline creation; a unit a draw does not sample holds another of its textures.
 layout(set = 1, binding = 0) uniform sampler2D unit_2d[MAX_TEXTURE_UNITS];
+// Unit i's GL_TEXTURE_CUBE_MAP (a cube view of its six faces in GL's order) in element i,
+// sampled instead of its 2D texture where SPEC_TEXTURE_UNITS says so (GL_TEXTURE_CUBE_MAP's
+// precedence). The elements of units a draw does not sample are empty (partially bound).
+layout(set = 1, binding = 1) uniform samplerCube unit_cube[MAX_TEXTURE_UNITS];
 
 // Values of a unit's env_mode (GL_TEXTURE_ENV_MODE), mirrored by TexEnvMode::code.
 #define TEV_MODULATE 0u
@@ -135,9 +139,12 @@ vec4 sprite_or(uint i, vec4 stq) {
     return vec4(gl_PointCoord.x, t, 0.0, 1.0);
 }
 
-// Unit i's texel at interpolated texture coordinates stq = (s, t, r, q), or a point sprite's.
+// Unit i's texel at interpolated texture coordinates stq = (s, t, r, q), or a point sprite's:
+// a 2D texture at (s/q, t/q); a cube map in the direction (s, t, r) (section 3.8.6: the face
+// its largest component points at, q not read).
 vec4 texel_at(uint i, vec4 stq) {
     vec4 c = sprite_or(i, stq);
+    if (unit_is_cube(i)) return texture(unit_cube[i], c.xyz);
     return texture(unit_2d[i], c.xy / c.w);
 }
 

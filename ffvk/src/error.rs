@@ -195,6 +195,19 @@ pub enum Error {
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 #[non_exhaustive]
 pub enum LightingError {
+    /// A draw's texture for one target is bound to the other's slot (a cube map among
+    /// `LitDraw::textures`, or a 2D texture among `LitDraw::cube_maps`).
+    #[error("unit {unit} of the draw's {field} holds a {given} binding: expected {expected}")]
+    TextureTarget {
+        /// `textures` or `cube_maps`.
+        field: &'static str,
+        /// The unit.
+        unit: usize,
+        /// The binding's target.
+        given: &'static str,
+        /// The target the slot takes.
+        expected: &'static str,
+    },
     /// A vertex binding appears twice in [`VertexInput::bindings`](crate::VertexInput).
     #[error("vertex binding {binding} is listed twice: expected each binding once")]
     DuplicateBinding {

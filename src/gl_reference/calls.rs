@@ -16,6 +16,7 @@ fn cap_enum(cap: Cap) -> GLenum {
         Cap::Normalize => gl::NORMALIZE,
         Cap::RescaleNormal => gl::RESCALE_NORMAL,
         Cap::Texture2D => gl::TEXTURE_2D,
+        Cap::TextureCubeMap => gl::TEXTURE_CUBE_MAP,
         // As in wrap_enum: GL's INVALID_ENUM fails the render.
         _ => gl::NONE,
     }

@@ -5,7 +5,6 @@
 use std::ffi::c_void;
 
 use ffvk::gl::state::{ColorControl, FixedFunctionState, Light, LightingMode, Material};
-use ffvk::gl::texture::{MagFilter, MinFilter, Sampling, TextureImage, Wrap, MAX_TEXTURE_UNITS};
 use ffvk::mesh::{MeshData, Vertex};
 
 use super::bindings::types::{GLenum, GLint, GLsizei, GLsizeiptr, GLuint};
@@ -13,6 +12,7 @@ use super::bindings::{self as gl, Gl};
 use super::calls::{color_material_enum, face_enum, replay, set_enabled};
 use super::egl::{drain_errors, gl_string};
 use super::error::{DrawError, GlError};
+use super::texture_object::{upload_textures, DrawUnits};
 use super::texture_unit::set_texture_unit;
 use super::{GlDraw, GlInfo, GlScene};
 
@@ -45,7 +45,7 @@ pub(super) fn check(gl: &Gl, when: impl FnOnce() -> String) -> Result<(), GlErro
 }
 
 /// Like [`check`], for the calls of one draw.
-fn check_draw(gl: &Gl, when: &'static str) -> Result<(), DrawError> {
+pub(super) fn check_draw(gl: &Gl, when: &'static str) -> Result<(), DrawError> {
     let codes = drain_errors(gl);
     if codes.is_empty() {
         Ok(())
@@ -159,116 +159,6 @@ impl Drop for MeshBuffers<'_> {
     }
 }
 
-/// A texture object of the current context holding every level of a [`TextureImage`], with
-/// its parameters set; deleted when dropped.
-pub(super) struct GlTexture<'g> {
-    gl: &'g Gl,
-    name: GLuint,
-}
-
-impl<'g> GlTexture<'g> {
-    /// glTexImage2D for every level (`GL_SRGB8_ALPHA8` for an sRGB image, else `GL_RGBA8`), and
-    /// glTexParameter for the filters and wraps. A complete chain gets `GL_TEXTURE_MAX_LEVEL`
-    /// = levels − 1; any other image keeps GL's default of 1000, so that GL, like ffvk
-    /// ([`ffvk::gl::texture::texturing_applies`]), finds it incomplete under a mipmap filter
-    /// rather than complete at its levels. Leaves the texture bound to `GL_TEXTURE_2D`.
-    pub(super) fn upload(
-        gl: &'g Gl,
-        image: &TextureImage,
-        sampling: &Sampling,
-    ) -> Result<GlTexture<'g>, DrawError> {
-        for (level, l) in image.levels().iter().enumerate() {
-            let fits = GLsizei::try_from(l.width()).is_ok() && GLsizei::try_from(l.height()).is_ok();
-            if !fits || Some(l.rgba().len()) != (l.width() as usize).checked_mul(l.height() as usize * 4) {
-                return Err(DrawError::TextureLevel {
-                    level,
-                    width: l.width(),
-                    height: l.height(),
-                    bytes: l.rgba().len(),
-                });
-            }
-        }
-        let mut texture = GlTexture { gl, name: 0 };
-        let internal = if image.srgb { gl::SRGB8_ALPHA8 } else { gl::RGBA8 };
-        // SAFETY: a context is current on this thread; glGenTextures writes one name (owned by
-        // `texture` from here on); each level's bytes were checked to be width * height * 4,
-        // which glTexImage2D reads with UNPACK_ALIGNMENT 1 (no row padding) and no unpack
-        // buffer bound.
-        unsafe {
-            gl.GenTextures(1, &mut texture.name);
-            gl.BindTexture(gl::TEXTURE_2D, texture.name);
-            gl.PixelStorei(gl::UNPACK_ALIGNMENT, 1);
-            for (level, l) in image.levels().iter().enumerate() {
-                gl.TexImage2D(
-                    gl::TEXTURE_2D,
-                    level as GLint,
-                    internal as GLint,
-                    l.width() as GLsizei,
-                    l.height() as GLsizei,
-                    0,
-                    gl::RGBA,
-                    gl::UNSIGNED_BYTE,
-                    l.rgba().as_ptr().cast(),
-                );
-            }
-            if image.has_mipmaps() {
-                gl.TexParameteri(
-                    gl::TEXTURE_2D,
-                    gl::TEXTURE_MAX_LEVEL,
-                    image.levels().len() as GLint - 1,
-                );
-            }
-            for (parameter, value) in [
-                (gl::TEXTURE_MIN_FILTER, min_filter_enum(sampling.min_filter)),
-                (gl::TEXTURE_MAG_FILTER, mag_filter_enum(sampling.mag_filter)),
-                (gl::TEXTURE_WRAP_S, wrap_enum(sampling.wrap_s)),
-                (gl::TEXTURE_WRAP_T, wrap_enum(sampling.wrap_t)),
-            ] {
-                gl.TexParameteri(gl::TEXTURE_2D, parameter, value as GLint);
-            }
-        }
-        check_draw(gl, "uploading the texture")?;
-        Ok(texture)
-    }
-}
-
-impl Drop for GlTexture<'_> {
-    fn drop(&mut self) {
-        // SAFETY: the context that made the name is current (textures never outlive the
-        // `render` or `time` call that made them, which runs inside its context).
-        unsafe { self.gl.DeleteTextures(1, &self.name) };
-    }
-}
-
-fn min_filter_enum(filter: MinFilter) -> GLenum {
-    match filter {
-        MinFilter::Nearest => gl::NEAREST,
-        MinFilter::Linear => gl::LINEAR,
-        MinFilter::NearestMipmapNearest => gl::NEAREST_MIPMAP_NEAREST,
-        MinFilter::LinearMipmapNearest => gl::LINEAR_MIPMAP_NEAREST,
-        MinFilter::NearestMipmapLinear => gl::NEAREST_MIPMAP_LINEAR,
-        MinFilter::LinearMipmapLinear => gl::LINEAR_MIPMAP_LINEAR,
-    }
-}
-
-fn mag_filter_enum(filter: MagFilter) -> GLenum {
-    match filter {
-        MagFilter::Nearest => gl::NEAREST,
-        MagFilter::Linear => gl::LINEAR,
-    }
-}
-
-fn wrap_enum(wrap: Wrap) -> GLenum {
-    match wrap {
-        Wrap::Repeat => gl::REPEAT,
-        Wrap::ClampToEdge => gl::CLAMP_TO_EDGE,
-        Wrap::MirroredRepeat => gl::MIRRORED_REPEAT,
-        // A mode added to ffvk after this table: GL_NONE makes GL raise INVALID_ENUM, which
-        // fails the render with GL's error rather than drawing another mode.
-        _ => gl::NONE,
-    }
-}
-
 /// Every index of `mesh` within its vertices.
 fn check_indices(mesh: &MeshData) -> Result<(), DrawError> {
     match mesh.indices.iter().find(|&&i| i as usize >= mesh.vertices.len()) {
@@ -362,45 +252,6 @@ pub(super) fn index_count(draw: &GlDraw) -> Result<GLsizei, DrawError> {
         _ => draw.mesh.indices.len(),
     };
     GLsizei::try_from(count).map_err(|_| DrawError::TooManyIndices(count))
-}
-
-/// Each unit's texture of `draw` uploaded (`None` where it has none).
-pub(super) fn upload_textures<'g>(
-    gl: &'g Gl,
-    draw: &GlDraw,
-) -> Result<[Option<GlTexture<'g>>; MAX_TEXTURE_UNITS], DrawError> {
-    let mut out: [Option<GlTexture<'g>>; MAX_TEXTURE_UNITS] = Default::default();
-    for (slot, texture) in out.iter_mut().zip(&draw.textures) {
-        *slot = texture
-            .map(|(image, sampling)| GlTexture::upload(gl, image, &sampling))
-            .transpose()?;
-    }
-    Ok(out)
-}
-
-/// A draw's uploaded textures, a unit each, and how many units the scene sets
-/// ([`GlScene::units_used`](super::GlScene::units_used)).
-#[derive(Clone, Copy)]
-pub(super) struct DrawUnits<'t, 'g> {
-    pub(super) textures: [Option<&'t GlTexture<'g>>; MAX_TEXTURE_UNITS],
-    pub(super) count: usize,
-}
-
-impl<'t, 'g> DrawUnits<'t, 'g> {
-    pub(super) fn of(textures: &'t [Option<GlTexture<'g>>; MAX_TEXTURE_UNITS], count: usize) -> Self {
-        DrawUnits {
-            textures: textures.each_ref().map(Option::as_ref),
-            count,
-        }
-    }
-
-    /// The units whose texture coordinate array is the mesh's: unit 0 when it has a texture,
-    /// and the units `mesh_texcoords` names that have one.
-    pub(super) fn texcoord_arrays(&self, mesh_texcoords: u32) -> u32 {
-        (0..self.count.min(MAX_TEXTURE_UNITS))
-            .filter(|&i| self.textures[i].is_some() && (i == 0 || mesh_texcoords & 1 << i != 0))
-            .fold(0, |mask, i| mask | 1 << i)
-    }
 }
 
 /// Points the vertex, normal, color and texture coordinate arrays at the [`Vertex`] fields from
@@ -633,7 +484,10 @@ pub(super) fn set_state(
         set_texture_unit(
             gl,
             &state.texture_units[unit],
-            units.textures[unit].map(|t| t.name),
+            (
+                units.textures[unit].map(|t| t.name()),
+                units.cube_maps[unit].map(|t| t.name()),
+            ),
         );
     }
     set_stages(gl, state);

@@ -19,6 +19,7 @@ mod calls;
 mod draw;
 mod egl;
 mod error;
+mod texture_object;
 mod texture_unit;
 mod timing;
 
@@ -46,7 +47,7 @@ use glam::{Mat4, Vec4};
 
 use crate::Result;
 use ffvk::gl::state::{Cap, ColorMaterialMode, Face, FixedFunctionState};
-use ffvk::gl::texture::{Sampling, TextureImage, TextureUnit, MAX_TEXTURE_UNITS};
+use ffvk::gl::texture::{CubeImage, Sampling, TextureImage, TextureUnit, MAX_TEXTURE_UNITS};
 use ffvk::mesh::MeshData;
 
 pub use calls::mesh_raster_calls;
@@ -76,6 +77,7 @@ impl GlScene<'_> {
     pub fn units_used(&self) -> usize {
         let used = |d: &GlDraw, i: usize| {
             d.textures[i].is_some()
+                || d.cube_maps[i].is_some()
                 || d.state.texture_units[i] != TextureUnit::default()
                 || d.state.current_texcoords[i] != Vec4::W
         };
@@ -110,6 +112,9 @@ pub struct GlDraw<'a> {
     /// and matrix come from [`FixedFunctionState::texture_units`], unit 0's texture coordinates
     /// from the mesh.
     pub textures: [Option<(&'a TextureImage, Sampling)>; MAX_TEXTURE_UNITS],
+    /// The cube map bound to each unit's `GL_TEXTURE_CUBE_MAP`, with its parameters; `None`
+    /// binds cube map object 0.
+    pub cube_maps: [Option<(&'a CubeImage, Sampling)>; MAX_TEXTURE_UNITS],
     /// The units 1-3 whose texture coordinates are the mesh's too (`glClientActiveTexture`
     /// and `glTexCoordPointer` on the same array), a bit each (bit i for unit i); the others
     /// take the unit's current coordinates (`glMultiTexCoord`, from the state).
@@ -187,6 +192,7 @@ impl<'a> GlDraw<'a> {
             color_array: true,
             calls: Vec::new(),
             textures: [None; MAX_TEXTURE_UNITS],
+            cube_maps: [None; MAX_TEXTURE_UNITS],
             mesh_texcoords: 0,
             mode: GlMode::of(mesh.topology),
             point_size: 1.0,

@@ -23,12 +23,20 @@ fn tex_env_enum(mode: TexEnvMode) -> GLenum {
 /// The active texture unit: texture object `texture` bound (else object 0, which has no image), the
 /// environment, the `GL_TEXTURE` matrix and the `GL_TEXTURE_2D` enable. Leaves the matrix mode
 /// at `GL_MODELVIEW`.
-pub(super) fn set_texture_unit(gl: &Gl, unit: &TextureUnit, texture: Option<GLuint>) {
-    // SAFETY: a context is current on this thread; the name, when there is one, is a texture
-    // it made and has not deleted; the color has four components and the matrix 16,
+pub(super) fn set_texture_unit(
+    gl: &Gl,
+    unit: &TextureUnit,
+    (texture, cube_map): (Option<GLuint>, Option<GLuint>),
+) {
+    // SAFETY: a context is current on this thread; the names, when there are some, are
+    // textures it made and has not deleted; the color has four components and the matrix 16,
     // column-major as both glam and GL store it.
     unsafe {
         gl.BindTexture(gl::TEXTURE_2D, texture.unwrap_or(0));
+        // Cube maps only where some are used, as a program without them issues nothing.
+        if cube_map.is_some() || unit.cube_map {
+            gl.BindTexture(gl::TEXTURE_CUBE_MAP, cube_map.unwrap_or(0));
+        }
         gl.TexEnvi(
             gl::TEXTURE_ENV,
             gl::TEXTURE_ENV_MODE,
@@ -45,6 +53,9 @@ pub(super) fn set_texture_unit(gl: &Gl, unit: &TextureUnit, texture: Option<GLui
         gl.TexEnvi(gl::POINT_SPRITE, gl::COORD_REPLACE, unit.coord_replace as GLint);
     }
     set_enabled(gl, gl::TEXTURE_2D, unit.enabled);
+    if cube_map.is_some() || unit.cube_map {
+        set_enabled(gl, gl::TEXTURE_CUBE_MAP, unit.cube_map);
+    }
     // GL_COMBINE's parameters and a coordinate's generation only where they are used, as a
     // program issues them (the timed frames' anchor issues no call an application would not).
     if unit.env_mode == TexEnvMode::Combine {

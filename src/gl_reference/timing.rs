@@ -10,13 +10,13 @@ use super::bindings::types::{GLenum, GLsizei, GLuint};
 use super::bindings::{self as gl, Gl};
 use super::draw::{
     begin_frame, check, check_lights, end_arrays, index_count, max_lights, set_arrays, set_light, set_state,
-    upload_textures, DrawUnits, GlTexture, MeshBuffers,
+    MeshBuffers,
 };
 use super::egl::{gl_string, has_extension, version_number};
 use super::error::GlError;
+use super::texture_object::{upload_textures, DrawUnits, UploadedUnits};
 use super::{GlDraw, GlScene, GlTiming};
 use ffvk::gl::state::{FixedFunctionState, Material};
-use ffvk::gl::texture::MAX_TEXTURE_UNITS;
 
 /// Draws `scene` `warmup` + `frames` times, timing each frame (see [`super::time_frames`]).
 pub(super) fn time(gl: &Gl, scene: &GlScene, warmup: u32, frames: u32) -> Result<GlTiming, GlError> {
@@ -166,7 +166,7 @@ pub(super) fn issue_frame(
     scene: &GlScene,
     (max_lights, steps): (usize, &[Step]),
     buffers: &[MeshBuffers],
-    textures: &[[Option<GlTexture>; MAX_TEXTURE_UNITS]],
+    textures: &[UploadedUnits],
 ) -> Result<(), GlError> {
     let units = scene.units_used();
     let mut bound: Option<[GLuint; 2]> = None;

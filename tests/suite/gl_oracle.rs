@@ -40,6 +40,7 @@ fn scene<'a>(mesh: &'a MeshData, state: FixedFunctionState) -> GlScene<'a> {
             color_array: true,
             calls: Vec::new(),
             textures: Default::default(),
+            cube_maps: Default::default(),
             mesh_texcoords: 0,
             mode: Default::default(),
             point_size: 1.0,

@@ -367,16 +367,25 @@ fn a_unit_reading_a_missing_units_texel_passes_the_color_through() {
         .unwrap();
     let units = gl.lighting.texture_units;
     // Units 0 and 2 enabled, all bound: unit 2 reads unit 1, which is disabled.
-    assert_eq!(units_applied(&units, 0b1111), (0b101, 0b001));
+    assert_eq!(units_applied(&units, 0b1111, 0), (0b101, 0b001, 0));
     gl.active_texture(1).unwrap();
     gl.enable(Cap::Texture2D).unwrap();
-    assert_eq!(units_applied(&gl.lighting.texture_units, 0b1111), (0b111, 0b111));
+    assert_eq!(
+        units_applied(&gl.lighting.texture_units, 0b1111, 0),
+        (0b111, 0b111, 0)
+    );
     // Unit 1 enabled without a texture: as if disabled.
-    assert_eq!(units_applied(&gl.lighting.texture_units, 0b101), (0b101, 0b001));
+    assert_eq!(
+        units_applied(&gl.lighting.texture_units, 0b101, 0),
+        (0b101, 0b001, 0)
+    );
     // A REPLACE reads Arg0 alone: a crossbar source in Arg1 is not read.
     gl.active_texture(2).unwrap();
     gl.tex_env(TexEnvParam::CombineRgb(CombineFunc::Replace)).unwrap();
-    assert_eq!(units_applied(&gl.lighting.texture_units, 0b101), (0b101, 0b101));
+    assert_eq!(
+        units_applied(&gl.lighting.texture_units, 0b101, 0),
+        (0b101, 0b101, 0)
+    );
 }
 
 /// glActiveTexture and glMultiTexCoord refuse a unit past `GL_MAX_TEXTURE_UNITS`, changing

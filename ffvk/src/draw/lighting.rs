@@ -133,7 +133,7 @@ use super::pipeline::{
 use super::raster::DynamicRaster;
 use super::record::{record_in_run, Bound, RunState, Topology};
 use super::ring::{Pushed, Ring, RingUse};
-use super::texture::{TextureBinding, UnitSets};
+use super::texture::{TextureBinding, TextureTarget, UnitSets, UnitTextures};
 use crate::error::{LightingError, Result};
 use crate::gl::state::{FixedFunctionState, LightingMode};
 use crate::gl::texture::MAX_TEXTURE_UNITS;
@@ -338,7 +338,8 @@ impl Lighting {
     /// on every unit), would use, so that the first such draw does not pay for it (pipeline
     /// creation is the slow part of a cold start).
     pub fn prepare(&mut self, state: &FixedFunctionState, raster: RasterState, textured: bool) -> Result<()> {
-        let bound = if textured { (1 << MAX_TEXTURE_UNITS) - 1 } else { 0 };
+        let all = (1 << MAX_TEXTURE_UNITS) - 1;
+        let bound = if textured { (all, all) } else { (0, 0) };
         self.prepare_sized(state, raster, bound, false)?;
         if state.mode == LightingMode::Fragment {
             // Small draws of the fragment mode have a pipeline of their own.
@@ -348,19 +349,20 @@ impl Lighting {
     }
 
     /// [`Lighting::prepare`] for draws of one size (`small` when they fetch fewer than
-    /// [`SMALL_DRAW_VERTICES`] vertices) with a texture bound on the units `bound` names.
+    /// [`SMALL_DRAW_VERTICES`] vertices) with a 2D texture bound on the units `bound.0` names
+    /// and a cube map on those of `bound.1`.
     pub(crate) fn prepare_sized(
         &mut self,
         state: &FixedFunctionState,
         raster: RasterState,
-        bound: u32,
+        bound: (u32, u32),
         small: bool,
     ) -> Result<()> {
         let small = small && state.mode == LightingMode::Fragment;
         // Draws with an affine modelview, as nearly all are.
         let variant = Variant {
             layout: 0,
-            units: units_key(&state.texture_units, bound),
+            units: units_key(&state.texture_units, bound.0, bound.1),
             small,
             affine: !self.input(0)?.positions_have_w(),
             assembly: (Topology::TriangleList, false),
@@ -386,7 +388,22 @@ impl Lighting {
     /// `view` and `sampler` are live objects of this device and outlive every command buffer
     /// that draws with the returned binding.
     pub unsafe fn bind_texture(&self, view: vk::ImageView, sampler: vk::Sampler) -> Result<TextureBinding> {
-        Ok(TextureBinding::new(view, sampler))
+        Ok(TextureBinding::new(view, sampler, TextureTarget::Texture2D))
+    }
+
+    /// A cube map binding naming the caller's image `view` (a `CUBE` view of an image with six
+    /// array layers in GL's face order, `GL_TEXTURE_CUBE_MAP_POSITIVE_X` first, each face's
+    /// row 0 at t = 0; in `SHADER_READ_ONLY_OPTIMAL` layout whenever a draw that uses it
+    /// executes) and `sampler`, for [`LitDraw::cube_maps`]. GL 2.1 filters each face on its
+    /// own: a sampler made with `VK_SAMPLER_CREATE_NON_SEAMLESS_CUBE_MAP_BIT_EXT`
+    /// ([`cube_sampler_info`](super::texture::cube_sampler_info)) does so where the device
+    /// has `VK_EXT_non_seamless_cube_map`. The binding holds no reference to either.
+    ///
+    /// # Safety
+    ///
+    /// As [`Lighting::bind_texture`].
+    pub unsafe fn bind_cube_map(&self, view: vk::ImageView, sampler: vk::Sampler) -> Result<TextureBinding> {
+        Ok(TextureBinding::new(view, sampler, TextureTarget::CubeMap))
     }
 
     /// How many pipelines exist, and how many of them are specialized.
@@ -448,6 +465,7 @@ impl Lighting {
         }
         draw.raster.validate()?;
         draw.geometry.validate()?;
+        Self::check_targets(draw)?;
         // The draw's own values, checked for every draw; the state, below, when it changed.
         let values = match &draw.values {
             Some(v) => *v,
@@ -527,7 +545,20 @@ impl Lighting {
         let texture_set = if units == 0 {
             None
         } else {
-            let textures = std::array::from_fn(|i| draw.textures[i].filter(|_| units & 1 << i != 0).copied());
+            if !self.device.info.partially_bound {
+                return Err(crate::Error::NotEnabled {
+                    feature: "descriptorBindingPartiallyBound",
+                    flag: "partially_bound",
+                    needed_for:
+                        "textured draws (one set of the texture units, whose unused elements stay empty) need",
+                });
+            }
+            // Units 0-3 sample their 2D texture (bits 0-3 but not 8-11) or their cube map.
+            let flat = |i: usize| units & 1 << i != 0 && units & 256 << i == 0;
+            let textures: UnitTextures = [
+                std::array::from_fn(|i| draw.textures[i].filter(|_| flat(i)).copied()),
+                std::array::from_fn(|i| draw.cube_maps[i].filter(|_| units & 256 << i != 0).copied()),
+            ];
             // SAFETY: the textures are the caller's live bindings (Lighting::bind_texture's
             // contract covers the command buffers this set is drawn in).
             Some(unsafe {
@@ -604,13 +635,42 @@ impl Lighting {
         Ok(())
     }
 
-    /// The texture units `draw` samples (bits 0-3) and applies (bits 4-7): 0 when it applies
-    /// none ([`units_key`]).
+    /// The texture units `draw` samples (bits 0-3), applies (bits 4-7) and samples as cube
+    /// maps (bits 8-11): 0 when it applies none ([`units_key`]).
     fn units(draw: &LitDraw) -> u32 {
-        let bound = (0..MAX_TEXTURE_UNITS)
-            .filter(|&i| draw.textures[i].is_some())
-            .fold(0, |mask, i| mask | 1 << i);
-        units_key(&draw.state.texture_units, bound)
+        let mask = |bound: &[Option<&TextureBinding>; MAX_TEXTURE_UNITS]| {
+            (0..MAX_TEXTURE_UNITS)
+                .filter(|&i| bound[i].is_some())
+                .fold(0, |mask, i| mask | 1 << i)
+        };
+        units_key(
+            &draw.state.texture_units,
+            mask(&draw.textures),
+            mask(&draw.cube_maps),
+        )
+    }
+
+    /// Refuses a draw whose `textures` hold a cube map or whose `cube_maps` hold a 2D
+    /// texture.
+    fn check_targets(draw: &LitDraw) -> Result<()> {
+        let slots = [
+            (&draw.textures, TextureTarget::Texture2D, "textures"),
+            (&draw.cube_maps, TextureTarget::CubeMap, "cube_maps"),
+        ];
+        for (bound, expected, field) in slots {
+            for (unit, t) in bound.iter().enumerate() {
+                if let Some(t) = t.filter(|t| t.target() != expected) {
+                    return Err(LightingError::TextureTarget {
+                        field,
+                        unit,
+                        given: t.target().gl_name(),
+                        expected: expected.gl_name(),
+                    }
+                    .into());
+                }
+            }
+        }
+        Ok(())
     }
 
     /// Records `draws` one after the other into `cmd` for frame slot `slot`, as

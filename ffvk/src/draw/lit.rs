@@ -39,6 +39,13 @@ pub struct LitDraw<'a> {
     /// ensure, as GL's completeness rule is about the caller's image: bind `None` for an
     /// incomplete one.
     pub textures: [Option<&'a TextureBinding>; MAX_TEXTURE_UNITS],
+    /// The cube map bound to each unit's `GL_TEXTURE_CUBE_MAP`
+    /// ([`Lighting::bind_cube_map`](crate::Lighting::bind_cube_map)): sampled, before the
+    /// unit's 2D texture, when its
+    /// [`TextureUnit::cube_map`](crate::gl::texture::TextureUnit::cube_map) is on. `None`: GL's
+    /// cube map object 0, which textures nothing (a unit with `GL_TEXTURE_CUBE_MAP` on and no
+    /// cube map passes the color through, whatever its 2D texture).
+    pub cube_maps: [Option<&'a TextureBinding>; MAX_TEXTURE_UNITS],
     /// The draw's own materials and current values, in place of `state`'s; `None` takes
     /// `state`'s.
     pub values: Option<DrawValues>,
@@ -84,6 +91,7 @@ impl<'a> LitDraw<'a> {
             vertex_buffers,
             geometry,
             textures: [None; MAX_TEXTURE_UNITS],
+            cube_maps: [None; MAX_TEXTURE_UNITS],
             values: None,
             layout: None,
         }
@@ -100,6 +108,13 @@ impl<'a> LitDraw<'a> {
     #[must_use]
     pub fn with_texture(mut self, texture: Option<&'a TextureBinding>) -> Self {
         self.textures[0] = texture;
+        self
+    }
+
+    /// This draw with each unit's cube map, `GL_TEXTURE0` first.
+    #[must_use]
+    pub fn with_cube_maps(mut self, cube_maps: [Option<&'a TextureBinding>; MAX_TEXTURE_UNITS]) -> Self {
+        self.cube_maps = cube_maps;
         self
     }
 

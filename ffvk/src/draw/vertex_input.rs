@@ -833,7 +833,16 @@ mod tests {
         // The shininesses: the w of the normal matrix's first two columns.
         assert_eq!(at(19), Some((19, record, nm + 12, F::R32_SFLOAT)));
         assert_eq!(at(20), Some((20, record, nm + 28, F::R32_SFLOAT)));
-        assert_eq!(all.len(), 23, "locations 0-22, texture coordinates included");
+        // Units 1-3's current coordinates, one vec4 each after the secondary color.
+        let units = std::mem::offset_of!(DrawRecord, current_unit_texcoords) as u32;
+        for i in 0..3 {
+            assert_eq!(at(23 + i), Some((23 + i, record, units + 16 * i, vec4)));
+        }
+        assert_eq!(
+            all.len(),
+            26,
+            "locations 0-25, every unit's texture coordinates included"
+        );
     }
 
     #[test]

@@ -11,8 +11,10 @@ use glam::{Mat4, Vec4};
 use super::errors::StateError;
 
 mod combine;
+mod cube;
 mod texgen;
 pub use combine::{AlphaOperand, Combine, CombineFunc, CombineSource, RgbOperand};
+pub use cube::{cube_face, CubeFace, CubeImage};
 pub use texgen::{TexCoordGen, TexGenMode};
 
 /// `GL_MAX_TEXTURE_UNITS` (and `GL_MAX_TEXTURE_COORDS`): the texture units a draw applies, in
@@ -95,6 +97,10 @@ pub struct TextureUnit {
     /// fragment is textured; on without one (GL's texture object 0 has no image) it is as if
     /// texturing were off (section 3.8.10).
     pub enabled: bool,
+    /// `GL_TEXTURE_CUBE_MAP` (glEnable); off by default. It takes precedence over
+    /// `GL_TEXTURE_2D` (§3.8.16): on, the unit samples its cube map, and with no complete cube
+    /// map bound it textures nothing, whatever its 2D texture.
+    pub cube_map: bool,
     /// `GL_TEXTURE_ENV_MODE`; [`TexEnvMode::Modulate`] by default.
     pub env_mode: TexEnvMode,
     /// C_c, `GL_TEXTURE_ENV_COLOR`; (0, 0, 0, 0) by default. Clamped to [0, 1] when set, as GL
@@ -117,6 +123,7 @@ impl Default for TextureUnit {
     fn default() -> Self {
         TextureUnit {
             enabled: false,
+            cube_map: false,
             env_mode: TexEnvMode::Modulate,
             env_color: Vec4::ZERO,
             matrix: Mat4::IDENTITY,
@@ -366,6 +373,29 @@ pub enum TextureError {
         height: u32,
         /// width × height × 4.
         expected: usize,
+    },
+    /// A cube map face whose sides differ (§3.8.1: cube faces are square).
+    #[error("cube map face {face} is {width}x{height}: expected a square face")]
+    CubeFaceNotSquare {
+        /// The face's target name.
+        face: &'static str,
+        /// Its width in texels.
+        width: u32,
+        /// Its height in texels.
+        height: u32,
+    },
+    /// A cube map face whose size, levels or sRGB flag differ from the first face's (GL's cube
+    /// completeness, §3.8.10).
+    #[error("cube map face {face} is {size} texels a side with {levels} levels: expected {}x{} with {} levels and the first face's sRGB flag, as GL_TEXTURE_CUBE_MAP_POSITIVE_X", .expected.0, .expected.0, .expected.1)]
+    CubeFacesDiffer {
+        /// The face's target name.
+        face: &'static str,
+        /// Its side in texels.
+        size: u32,
+        /// Its levels.
+        levels: usize,
+        /// The first face's side and levels.
+        expected: (u32, usize),
     },
     /// [`TextureImage::from_levels`] was given no level.
     #[error("a texture image without levels: expected level 0 at least")]
@@ -651,22 +681,34 @@ pub fn mip_count(width: u32, height: u32) -> u32 {
     32 - width.max(height).max(1).leading_zeros()
 }
 
-/// The units a draw samples and the units it applies (§3.8.16): `bound` has a bit per unit with
-/// a complete texture; a unit is sampled where it is also enabled, and applied where, besides,
-/// every `GL_TEXTUREn` source its `GL_COMBINE` reads names a sampled unit (a unit that reads
-/// another unit's missing texel passes the color through, as ARB_texture_env_crossbar says).
-/// Returns (sampled, applied), a bit per unit each.
-pub fn units_applied(units: &[TextureUnit; MAX_TEXTURE_UNITS], bound: u32) -> (u32, u32) {
-    let sampled = (0..MAX_TEXTURE_UNITS)
-        .filter(|&i| units[i].enabled && bound & 1 << i != 0)
-        .fold(0, |mask, i| mask | 1 << i);
+/// The units a draw samples and the units it applies (§3.8.16), a bit per unit each. `bound`
+/// has a bit per unit with a complete 2D texture, `bound_cube` one per unit with a complete
+/// cube map. A unit with `GL_TEXTURE_CUBE_MAP` on samples its cube map, or nothing without one
+/// (the cube map's precedence); else, with `GL_TEXTURE_2D` on, its 2D texture. A sampled unit
+/// is applied where every `GL_TEXTUREn` source its `GL_COMBINE` reads names a sampled unit (a
+/// unit that reads another unit's missing texel passes the color through, as
+/// ARB_texture_env_crossbar says). Returns (sampled, applied, the sampled units that sample a
+/// cube map).
+pub fn units_applied(
+    units: &[TextureUnit; MAX_TEXTURE_UNITS],
+    bound: u32,
+    bound_cube: u32,
+) -> (u32, u32, u32) {
+    let bit = |i: usize| 1u32 << i;
+    let cube = (0..MAX_TEXTURE_UNITS)
+        .filter(|&i| units[i].cube_map && bound_cube & bit(i) != 0)
+        .fold(0, |mask, i| mask | bit(i));
+    let flat = (0..MAX_TEXTURE_UNITS)
+        .filter(|&i| !units[i].cube_map && units[i].enabled && bound & bit(i) != 0)
+        .fold(0, |mask, i| mask | bit(i));
+    let sampled = cube | flat;
     let applied = (0..MAX_TEXTURE_UNITS)
         .filter(|&i| sampled & 1 << i != 0)
         .filter(|&i| {
             units[i].env_mode != TexEnvMode::Combine || units[i].combine.units_read() & !sampled == 0
         })
         .fold(0, |mask, i| mask | 1 << i);
-    (sampled, applied)
+    (sampled, applied, cube)
 }
 
 /// Whether texturing applies to a draw (section 3.8.10): `GL_TEXTURE_2D` enabled and a bound

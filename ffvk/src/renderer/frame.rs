@@ -74,6 +74,11 @@ pub struct Draw<'a> {
     /// `GL_TEXTURE0` first: a unit's is sampled when its `enabled` is on and the texture is
     /// complete. `None`: GL's texture 0, which textures nothing.
     pub textures: [Option<&'a Texture>; MAX_TEXTURE_UNITS],
+    /// The cube map bound to each unit's `GL_TEXTURE_CUBE_MAP`
+    /// ([`Renderer::upload_cube_map`](super::Renderer::upload_cube_map)): sampled, before the
+    /// unit's 2D texture, when its `cube_map` is on and the cube map is complete. `None`: GL's
+    /// cube map 0, which textures nothing.
+    pub cube_maps: [Option<&'a Texture>; MAX_TEXTURE_UNITS],
     /// The units 1-3 whose texture coordinates are the mesh's too, a bit each (bit i for unit
     /// i; as a GL program points `glClientActiveTexture(GL_TEXTUREi)`'s array at the same
     /// coordinates); the others take their current coordinates
@@ -127,6 +132,7 @@ impl<'a> Draw<'a> {
             cull_face: None,
             front_face: vk::FrontFace::COUNTER_CLOCKWISE,
             textures: [None; MAX_TEXTURE_UNITS],
+            cube_maps: [None; MAX_TEXTURE_UNITS],
             mesh_texcoords: 0,
             topology: mesh.topology,
             point_size: 1.0,
@@ -292,23 +298,33 @@ impl<'a> Draw<'a> {
         self
     }
 
-    /// The units with a complete texture bound, a bit each (GL's completeness, §3.8.10: an
-    /// incomplete texture textures nothing).
-    pub fn complete_units(&self) -> u32 {
-        (0..MAX_TEXTURE_UNITS)
-            .filter(|&i| self.textures[i].is_some_and(Texture::is_complete))
-            .fold(0, |mask, i| mask | 1 << i)
+    /// This draw with each unit's cube map, `GL_TEXTURE0` first.
+    #[must_use]
+    pub fn with_cube_maps(mut self, cube_maps: [Option<&'a Texture>; MAX_TEXTURE_UNITS]) -> Self {
+        self.cube_maps = cube_maps;
+        self
     }
 
-    /// Whether this draw samples a texture: some unit's `GL_TEXTURE_2D` on with a complete
-    /// texture bound.
+    /// The units with a complete 2D texture bound, a bit each (GL's completeness, §3.8.10: an
+    /// incomplete texture textures nothing).
+    pub fn complete_units(&self) -> u32 {
+        complete(&self.textures)
+    }
+
+    /// The units with a complete cube map bound, a bit each.
+    pub fn complete_cube_maps(&self) -> u32 {
+        complete(&self.cube_maps)
+    }
+
+    /// Whether this draw samples a texture: some unit enabled with a complete texture of the
+    /// target it samples.
     pub fn textured(&self) -> bool {
-        let complete = self.complete_units();
-        self.state
-            .texture_units
-            .iter()
-            .enumerate()
-            .any(|(i, u)| u.enabled && complete & 1 << i != 0)
+        let (_, applied, _) = crate::gl::texture::units_applied(
+            &self.state.texture_units,
+            self.complete_units(),
+            self.complete_cube_maps(),
+        );
+        applied != 0
     }
 
     /// The raster state of this draw in `frame`: GL's defaults, with the frame's depth test
@@ -571,4 +587,11 @@ impl From<Pixels> for image::RgbaImage {
     fn from(p: Pixels) -> Self {
         p.into_rgba_image()
     }
+}
+
+/// The units of `textures` with a complete texture, a bit each.
+fn complete(textures: &[Option<&Texture>; MAX_TEXTURE_UNITS]) -> u32 {
+    (0..MAX_TEXTURE_UNITS)
+        .filter(|&i| textures[i].is_some_and(Texture::is_complete))
+        .fold(0, |mask, i| mask | 1 << i)
 }

@@ -8,10 +8,10 @@ use crate::draw::lighting::{Lighting, LightingOptions, LitDraw};
 use crate::draw::pipeline::{RasterState, Target, VertexInput};
 use crate::draw::pipeline::{Specialize, COLOR_FORMAT, DEPTH_FORMAT};
 use crate::draw::record::Topology;
-use crate::draw::texture::sampler_info;
+use crate::draw::texture::{cube_sampler_info, sampler_info};
 use crate::error::{vk_error, Error, MeshError, Result};
 use crate::gl::state::FixedFunctionState;
-use crate::gl::texture::{Sampling, TextureImage};
+use crate::gl::texture::{CubeImage, Sampling, TextureImage};
 use crate::mesh::MeshData;
 use crate::vk::objects::{CommandPool, Fence, Sampler};
 use crate::vk::{
@@ -281,13 +281,59 @@ impl Renderer {
         self.uploader
             .lock()
             .unwrap_or_else(|poisoned| poisoned.into_inner())
-            .upload_image(&self.device, &gpu_image, image.levels())?;
+            .upload_image(&self.device, &gpu_image, &[image.levels()])?;
         let sampler = Sampler::new(&self.device, &sampler_info(sampling, levels))?;
         // SAFETY: the view and sampler are this device's and live in the Texture as long as
         // the binding (dropped first); frames that draw it are waited for before it can drop
         // (draw_frame waits, and the Texture is borrowed by the frame).
         let binding = unsafe { self.lighting.bind_texture(gpu_image.view(), sampler.raw()) }?;
-        Ok(Texture::new(gpu_image, sampler, binding, image, sampling))
+        let complete = !sampling.min_filter.uses_mipmaps() || image.has_mipmaps();
+        Ok(Texture::new(
+            gpu_image,
+            sampler,
+            binding,
+            complete,
+            (width, height),
+        ))
+    }
+
+    /// Uploads a cube map with its sampling parameters (glTexImage2D on each face's target for
+    /// every level, then glTexParameter on `GL_TEXTURE_CUBE_MAP`), for
+    /// [`Draw::cube_maps`](crate::Draw::cube_maps). Its faces are filtered each on its own, as
+    /// GL 2.1 does, where the device has `VK_EXT_non_seamless_cube_map`
+    /// ([`DeviceInfo::non_seamless_cube_map`](crate::vk::DeviceInfo::non_seamless_cube_map));
+    /// elsewhere across face edges. Incomplete for a mipmap min filter without mipmaps, as in
+    /// GL.
+    pub fn upload_cube_map(&self, image: &CubeImage, sampling: &Sampling) -> Result<Texture> {
+        let max = self.device.limits.max_image_dimension_cube;
+        let side = image.size();
+        if side > max {
+            return Err(Error::InvalidSize {
+                width: side,
+                height: side,
+                max,
+            });
+        }
+        let levels = image.level_count() as u32;
+        let gpu_image = Image::cube(
+            &self.device,
+            side,
+            texture::cube_format(image),
+            vk::ImageUsageFlags::SAMPLED | vk::ImageUsageFlags::TRANSFER_DST,
+            levels,
+        )?;
+        let faces: Vec<&[crate::gl::texture::Level]> =
+            image.faces().iter().map(TextureImage::levels).collect();
+        self.uploader
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner())
+            .upload_image(&self.device, &gpu_image, &faces)?;
+        let non_seamless = self.device.info.non_seamless_cube_map;
+        let sampler = Sampler::new(&self.device, &cube_sampler_info(sampling, levels, non_seamless))?;
+        // SAFETY: as upload_texture's.
+        let binding = unsafe { self.lighting.bind_cube_map(gpu_image.view(), sampler.raw()) }?;
+        let complete = !sampling.min_filter.uses_mipmaps() || image.has_mipmaps();
+        Ok(Texture::new(gpu_image, sampler, binding, complete, (side, side)))
     }
 
     fn ensure_targets(&mut self, width: u32, height: u32, stencil: bool) -> Result<()> {
@@ -417,6 +463,7 @@ impl Renderer {
             }
             if d.textures
                 .iter()
+                .chain(&d.cube_maps)
                 .flatten()
                 .any(|t| !Arc::ptr_eq(t.image.device(), &self.device))
             {
@@ -444,8 +491,12 @@ impl Renderer {
                     && (b.raster, b.textures, s) == (lit.raster, lit.textures, small)
             });
             if !same {
-                self.lighting
-                    .prepare_sized(lit.state, lit.raster, d.complete_units(), small)?;
+                self.lighting.prepare_sized(
+                    lit.state,
+                    lit.raster,
+                    (d.complete_units(), d.complete_cube_maps()),
+                    small,
+                )?;
             }
             before = Some((lit, small));
         }
@@ -555,7 +606,7 @@ impl Renderer {
             ..RasterState::default()
         };
         let start = std::time::Instant::now();
-        self.lighting.prepare_sized(state, raster, 0, false)?;
+        self.lighting.prepare_sized(state, raster, (0, 0), false)?;
         Ok(start.elapsed().as_nanos() as f64)
     }
 

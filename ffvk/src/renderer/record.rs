@@ -290,6 +290,9 @@ pub(super) fn lit_draws<'f>(frame: &'f Frame, layouts: &[Option<VertexLayout>; 8
                 .with_textures(std::array::from_fn(|i| {
                     draw.textures[i].filter(|t| t.is_complete()).map(|t| &t.binding)
                 }))
+                .with_cube_maps(std::array::from_fn(|i| {
+                    draw.cube_maps[i].filter(|t| t.is_complete()).map(|t| &t.binding)
+                }))
         })
         .collect()
 }

@@ -3,8 +3,8 @@
 
 use ash::vk;
 
-use crate::draw::texture::TextureBinding;
-use crate::gl::texture::{Sampling, TextureImage};
+use crate::draw::texture::{TextureBinding, TextureTarget};
+use crate::gl::texture::{CubeImage, TextureImage};
 use crate::vk::objects::Sampler;
 use crate::vk::Image;
 
@@ -23,21 +23,28 @@ pub struct Texture {
 }
 
 impl Texture {
+    /// A texture of `image` (level 0 `size` texels), complete for its min filter or not.
     pub(super) fn new(
         image: Image,
         sampler: Sampler,
         binding: TextureBinding,
-        source: &TextureImage,
-        sampling: &Sampling,
+        complete: bool,
+        size: (u32, u32),
     ) -> Self {
         Texture {
             binding,
             _sampler: sampler,
-            complete: !sampling.min_filter.uses_mipmaps() || source.has_mipmaps(),
-            width: source.width(),
-            height: source.height(),
+            complete,
+            width: size.0,
+            height: size.1,
             image,
         }
+    }
+
+    /// `GL_TEXTURE_2D` or `GL_TEXTURE_CUBE_MAP`: which of a draw's slots it goes in
+    /// ([`Draw::textures`](crate::Draw::textures) or [`Draw::cube_maps`](crate::Draw::cube_maps)).
+    pub fn target(&self) -> TextureTarget {
+        self.binding.target()
     }
 
     /// Whether the texture is complete for its min filter (else drawing with it textures
@@ -46,7 +53,7 @@ impl Texture {
         self.complete
     }
 
-    /// Level 0's size in texels.
+    /// Level 0's size in texels (a cube map's: a face's).
     pub fn size(&self) -> (u32, u32) {
         (self.width, self.height)
     }
@@ -59,7 +66,16 @@ impl Texture {
 
 /// The image format of `image`: `R8G8B8A8_UNORM`, or `R8G8B8A8_SRGB` for sRGB textures.
 pub(super) fn format(image: &TextureImage) -> vk::Format {
-    if image.srgb {
+    srgb_format(image.srgb)
+}
+
+/// The image format of a cube map's faces.
+pub(super) fn cube_format(image: &CubeImage) -> vk::Format {
+    srgb_format(image.srgb())
+}
+
+fn srgb_format(srgb: bool) -> vk::Format {
+    if srgb {
         vk::Format::R8G8B8A8_SRGB
     } else {
         vk::Format::R8G8B8A8_UNORM

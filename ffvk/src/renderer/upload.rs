@@ -101,16 +101,23 @@ impl Uploader {
         Ok(buffers)
     }
 
-    /// Fills every level of `image` (a color image with `TRANSFER_DST` and `SAMPLED` usage,
-    /// as many levels as `levels`) from `levels` through a staging buffer, and leaves it in
-    /// `SHADER_READ_ONLY_OPTIMAL` for fragment shaders. Returns once the GPU has finished.
+    /// Fills every level of every layer of `image` (a color image with `TRANSFER_DST` and
+    /// `SAMPLED` usage, as many levels as each of `layers` has and as many layers as `layers`)
+    /// from `layers` through a staging buffer, and leaves it in `SHADER_READ_ONLY_OPTIMAL` for
+    /// fragment shaders. Returns once the GPU has finished.
     pub(super) fn upload_image(
         &mut self,
         device: &Arc<Device>,
         image: &Image,
-        levels: &[Level],
+        layers: &[&[Level]],
     ) -> Result<()> {
-        let total: u64 = levels.iter().map(|l| l.rgba().len() as u64).sum();
+        let all = || {
+            layers
+                .iter()
+                .enumerate()
+                .flat_map(|(l, levels)| levels.iter().enumerate().map(move |(i, v)| (l, i, v)))
+        };
+        let total: u64 = all().map(|(_, _, l)| l.rgba().len() as u64).sum();
         let mut staging = Buffer::new(
             device,
             "texture staging buffer",
@@ -118,9 +125,9 @@ impl Uploader {
             vk::BufferUsageFlags::TRANSFER_SRC,
             MemoryUse::Staging,
         )?;
-        let mut regions = Vec::with_capacity(levels.len());
+        let mut regions = Vec::new();
         let mut offset = 0;
-        for (index, level) in levels.iter().enumerate() {
+        for (layer, index, level) in all() {
             staging.write(offset, level.rgba())?;
             regions.push(
                 vk::BufferImageCopy::default()
@@ -128,7 +135,7 @@ impl Uploader {
                     .image_subresource(vk::ImageSubresourceLayers {
                         aspect_mask: vk::ImageAspectFlags::COLOR,
                         mip_level: index as u32,
-                        base_array_layer: 0,
+                        base_array_layer: layer as u32,
                         layer_count: 1,
                     })
                     .image_extent(vk::Extent3D {
@@ -145,7 +152,7 @@ impl Uploader {
             base_mip_level: 0,
             level_count: image.levels(),
             base_array_layer: 0,
-            layer_count: 1,
+            layer_count: image.layers(),
         };
         // SAFETY: every upload waits for its fence, so the command buffer is not pending.
         let cmd = unsafe { self.commands.begin_one_time() }?;

@@ -681,6 +681,7 @@ pub fn render_scene_with(
                 textures[0] = mesh.texture.as_ref().and_then(texture_of);
                 textures
             },
+            cube_maps: [None; crate::gl::texture::MAX_TEXTURE_UNITS],
             mesh_texcoords: 0,
             topology: gpu.topology(),
             // glPointSize draws points only: other meshes keep GL's 1 (their pipelines are

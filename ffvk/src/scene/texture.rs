@@ -130,6 +130,7 @@ impl Builder<'_> {
         let modes: Vec<(&'static str, TexEnvMode)> = TexEnvMode::ALL.iter().map(|&m| (m.name(), m)).collect();
         let unit = TextureUnit {
             enabled: spec.enabled.unwrap_or(true),
+            cube_map: false,
             // Scene files have no GL_COMBINE yet: GL's initial combine state.
             combine: TextureUnit::default().combine,
             env_mode: spec

@@ -1,12 +1,12 @@
 //! Physical device choice (lavapipe by default) and the logical device with one graphics queue.
 
-use std::ffi::CStr;
 use std::sync::Arc;
 
 use ash::{ext, vk};
 
 use super::instance::Instance;
 use super::memory::{Books, DeviceAllocator, MemoryUsage, MemoryUse};
+use super::supported::{describe, Supported};
 use crate::error::{vk_error, Error, Result};
 
 /// What `ffvk info` prints and benchmarks record.
@@ -68,6 +68,12 @@ pub struct DeviceInfo {
     /// `VK_EXT_line_rasterization` with `bresenhamLines` and `stippledBresenhamLines`:
     /// `glLineStipple` (`GL_LINE_STIPPLE`).
     pub stippled_lines: bool,
+    /// `descriptorBindingPartiallyBound`: textured draws (the texture units' set leaves the
+    /// elements of units a draw does not sample empty).
+    pub partially_bound: bool,
+    /// `VK_EXT_non_seamless_cube_map` with `nonSeamlessCubeMap`: GL 2.1's cube map filtering,
+    /// each face on its own (without it, cube maps filter across face edges).
+    pub non_seamless_cube_map: bool,
     /// `lineWidthRange` and `pointSizeRange`, in pixels.
     pub line_width_range: [f32; 2],
     /// `pointSizeRange`, in pixels.
@@ -163,6 +169,14 @@ pub struct EnabledFeatures {
     /// `VK_EXT_line_rasterization` (enabled) with `bresenhamLines` and
     /// `stippledBresenhamLines`: needed for `glLineStipple`.
     pub stippled_lines: bool,
+    /// `descriptorBindingPartiallyBound` (Vulkan 1.2 core, on every Vulkan 1.3 device): needed
+    /// for textured draws, whose one set of the texture units leaves the units a draw does not
+    /// sample empty.
+    pub partially_bound: bool,
+    /// `VK_EXT_non_seamless_cube_map` (enabled) with `nonSeamlessCubeMap`: lets the samplers
+    /// of ffvk's renderer filter each cube map face on its own, as GL 2.1 does (a caller makes
+    /// its own samplers).
+    pub non_seamless_cube_map: bool,
 }
 
 with_fields!(EnabledFeatures {
@@ -184,9 +198,13 @@ with_fields!(EnabledFeatures {
     with_geometry_shader => geometry_shader: bool,
     /// Sets [`stippled_lines`](EnabledFeatures::stippled_lines).
     with_stippled_lines => stippled_lines: bool,
+    /// Sets [`partially_bound`](EnabledFeatures::partially_bound).
+    with_partially_bound => partially_bound: bool,
+    /// Sets [`non_seamless_cube_map`](EnabledFeatures::non_seamless_cube_map).
+    with_non_seamless_cube_map => non_seamless_cube_map: bool,
 });
 
-fn device_name(props: &vk::PhysicalDeviceProperties) -> String {
+pub(crate) fn device_name(props: &vk::PhysicalDeviceProperties) -> String {
     props
         .device_name_as_c_str()
         .map(|s| s.to_string_lossy().into_owned())
@@ -295,6 +313,8 @@ impl Device {
                 .is_ok_and(|n| n == ext::line_rasterization::NAME)
         });
         info.stippled_lines = has_line_rasterization && supported.stippled_lines;
+        info.partially_bound = supported.partially_bound;
+        info.non_seamless_cube_map = supported.non_seamless_cube_map;
 
         let priorities = [1.0f32];
         let queues = [vk::DeviceQueueCreateInfo::default()
@@ -304,6 +324,13 @@ impl Device {
         if info.stippled_lines {
             extension_names.push(ext::line_rasterization::NAME.as_ptr());
         }
+        if info.non_seamless_cube_map {
+            extension_names.push(ext::non_seamless_cube_map::NAME.as_ptr());
+        }
+        let mut enable_non_seamless =
+            vk::PhysicalDeviceNonSeamlessCubeMapFeaturesEXT::default().non_seamless_cube_map(true);
+        let mut enable_v12 = vk::PhysicalDeviceVulkan12Features::default()
+            .descriptor_binding_partially_bound(info.partially_bound);
         let mut enable_lines = vk::PhysicalDeviceLineRasterizationFeaturesEXT::default()
             .bresenham_lines(info.stippled_lines)
             .stippled_bresenham_lines(info.stippled_lines);
@@ -326,9 +353,13 @@ impl Device {
             .enabled_extension_names(&extension_names)
             .enabled_features(&base)
             .push_next(&mut enable_v13)
+            .push_next(&mut enable_v12)
             .push_next(&mut enable_provoking);
         if info.stippled_lines {
             create = create.push_next(&mut enable_lines);
+        }
+        if info.non_seamless_cube_map {
+            create = create.push_next(&mut enable_non_seamless);
         }
         // SAFETY: the create info and everything it points to live until the call returns.
         let raw =
@@ -470,6 +501,16 @@ impl Device {
                 supported.stippled_lines,
                 "VK_EXT_line_rasterization's bresenhamLines and stippledBresenhamLines (EnabledFeatures::stippled_lines says they are enabled)",
             ),
+            (
+                enabled.partially_bound,
+                supported.partially_bound,
+                "descriptorBindingPartiallyBound (EnabledFeatures::partially_bound says it is enabled)",
+            ),
+            (
+                enabled.non_seamless_cube_map,
+                supported.non_seamless_cube_map,
+                "VK_EXT_non_seamless_cube_map's nonSeamlessCubeMap (EnabledFeatures::non_seamless_cube_map says it is enabled)",
+            ),
         ] {
             if claimed && !has {
                 return Err(Error::MissingFeature(name.into()));
@@ -484,6 +525,8 @@ impl Device {
             enabled.stippled_lines,
         );
         info.geometry_shader = enabled.geometry_shader;
+        (info.partially_bound, info.non_seamless_cube_map) =
+            (enabled.partially_bound, enabled.non_seamless_cube_map);
         let allocator = match shared {
             #[cfg(feature = "shared-allocator")]
             Some(shared) => Ok(DeviceAllocator::Shared(shared)),
@@ -632,131 +675,6 @@ impl Drop for Device {
         // SAFETY: every child holds an Arc<Device>, so none is left, and the device is idle
         // (waited for above).
         unsafe { self.raw.destroy_device(None) };
-    }
-}
-
-/// What a physical device supports of what ffvk uses, and its driver's name and version.
-struct Supported {
-    dynamic_rendering: bool,
-    synchronization2: bool,
-    /// The feature bit only; the extension must be listed too.
-    provoking_vertex_last: bool,
-    pipeline_statistics_query: bool,
-    wide_lines: bool,
-    large_points: bool,
-    clip_distance: bool,
-    fill_mode_non_solid: bool,
-    logic_op: bool,
-    geometry_shader: bool,
-    /// `bresenhamLines` and `stippledBresenhamLines` (the extension must be listed too).
-    stippled_lines: bool,
-    driver_name: String,
-    driver_info: String,
-    /// Vulkan 1.1's maxMemoryAllocationSize.
-    max_memory_allocation_size: u64,
-}
-
-impl Supported {
-    /// # Safety
-    ///
-    /// `physical` belongs to `instance`.
-    unsafe fn query(instance: &ash::Instance, physical: vk::PhysicalDevice) -> Supported {
-        let mut provoking = vk::PhysicalDeviceProvokingVertexFeaturesEXT::default();
-        let mut v13 = vk::PhysicalDeviceVulkan13Features::default();
-        let mut lines = vk::PhysicalDeviceLineRasterizationFeaturesEXT::default();
-        // An extension's struct is chained only where the device lists the extension.
-        // SAFETY: the caller vouches for the handle.
-        let listed = unsafe { instance.enumerate_device_extension_properties(physical) }.unwrap_or_default();
-        let has = |name: &std::ffi::CStr| listed.iter().any(|e| e.extension_name_as_c_str() == Ok(name));
-        let mut features = vk::PhysicalDeviceFeatures2::default().push_next(&mut v13);
-        if has(ext::provoking_vertex::NAME) {
-            features = features.push_next(&mut provoking);
-        }
-        if has(ext::line_rasterization::NAME) {
-            features = features.push_next(&mut lines);
-        }
-        let mut driver = vk::PhysicalDeviceDriverProperties::default();
-        let mut v11 = vk::PhysicalDeviceVulkan11Properties::default();
-        let mut props2 = vk::PhysicalDeviceProperties2::default()
-            .push_next(&mut driver)
-            .push_next(&mut v11);
-        // SAFETY: the chained structs live until the calls return; the caller vouches for
-        // the handle.
-        unsafe {
-            instance.get_physical_device_features2(physical, &mut features);
-            instance.get_physical_device_properties2(physical, &mut props2);
-        }
-        let pipeline_statistics_query = features.features.pipeline_statistics_query == vk::TRUE;
-        let wide_lines = features.features.wide_lines == vk::TRUE;
-        let large_points = features.features.large_points == vk::TRUE;
-        let clip_distance = features.features.shader_clip_distance == vk::TRUE;
-        let fill_mode_non_solid = features.features.fill_mode_non_solid == vk::TRUE;
-        let logic_op = features.features.logic_op == vk::TRUE;
-        // Edge flags' geometry stage passes the point size on (polygons drawn as points).
-        let geometry_shader = features.features.geometry_shader == vk::TRUE
-            && features.features.shader_tessellation_and_geometry_point_size == vk::TRUE;
-        let stippled_lines = lines.bresenham_lines == vk::TRUE && lines.stippled_bresenham_lines == vk::TRUE;
-        let cstr = |bytes: &[std::ffi::c_char]| {
-            // SAFETY: the driver properties hold NUL-terminated strings within their arrays.
-            unsafe { CStr::from_ptr(bytes.as_ptr()) }
-                .to_string_lossy()
-                .into_owned()
-        };
-        Supported {
-            dynamic_rendering: v13.dynamic_rendering == vk::TRUE,
-            synchronization2: v13.synchronization2 == vk::TRUE,
-            provoking_vertex_last: provoking.provoking_vertex_last == vk::TRUE,
-            pipeline_statistics_query,
-            wide_lines,
-            large_points,
-            clip_distance,
-            fill_mode_non_solid,
-            logic_op,
-            geometry_shader,
-            stippled_lines,
-            driver_name: cstr(&driver.driver_name),
-            driver_info: cstr(&driver.driver_info),
-            max_memory_allocation_size: v11.max_memory_allocation_size,
-        }
-    }
-}
-
-/// What `ffvk info` shows of a physical device.
-fn describe(
-    props: &vk::PhysicalDeviceProperties,
-    supported: &Supported,
-    timestamp_valid_bits: u32,
-    pipeline_statistics_query: bool,
-    provoking_vertex_last: bool,
-    validation: bool,
-) -> DeviceInfo {
-    DeviceInfo {
-        name: device_name(props),
-        device_type: format!("{:?}", props.device_type),
-        driver_name: supported.driver_name.clone(),
-        driver_info: supported.driver_info.clone(),
-        api_version: version_string(props.api_version),
-        vendor_id: props.vendor_id,
-        device_id: props.device_id,
-        max_image_dimension_2d: props.limits.max_image_dimension2_d,
-        max_uniform_buffer_range: props.limits.max_uniform_buffer_range,
-        min_uniform_buffer_offset_alignment: props.limits.min_uniform_buffer_offset_alignment,
-        max_vertex_output_components: props.limits.max_vertex_output_components,
-        timestamp_period_ns: props.limits.timestamp_period,
-        timestamp_valid_bits,
-        timestamps_supported: timestamp_valid_bits > 0,
-        pipeline_statistics_query,
-        provoking_vertex_last,
-        wide_lines: false,
-        large_points: false,
-        clip_distance: false,
-        fill_mode_non_solid: false,
-        logic_op: false,
-        geometry_shader: false,
-        stippled_lines: false,
-        line_width_range: props.limits.line_width_range,
-        point_size_range: props.limits.point_size_range,
-        validation,
     }
 }
 

@@ -6,6 +6,7 @@ pub mod instance;
 pub mod memory;
 pub mod objects;
 pub mod resources;
+mod supported;
 
 pub use device::{Device, DeviceInfo, EnabledFeatures, MemoryChoice};
 pub use instance::{Instance, Validation, ValidationSink};

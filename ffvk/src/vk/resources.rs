@@ -170,13 +170,14 @@ impl Buffer {
     }
 }
 
-/// A 2D image with its memory and a view of all its levels.
+/// A 2D image (or a cube map's six layers) with its memory and a view of all its levels.
 pub struct Image {
     // Field order is drop order: view, then image, then its memory.
     view: ImageView,
     raw: RawImage,
     _memory: Allocation,
     levels: u32,
+    layers: u32,
 }
 
 impl Image {
@@ -201,7 +202,46 @@ impl Image {
         aspect: vk::ImageAspectFlags,
         levels: u32,
     ) -> Result<Self> {
+        Image::make(device, (extent, levels, false), format, usage, aspect)
+    }
+
+    /// A cube map: six square color layers of `side` texels in GL's face order, `levels` mip
+    /// levels each, with a `CUBE` view of them all.
+    pub fn cube(
+        device: &Arc<Device>,
+        side: u32,
+        format: vk::Format,
+        usage: vk::ImageUsageFlags,
+        levels: u32,
+    ) -> Result<Self> {
+        let extent = vk::Extent2D {
+            width: side,
+            height: side,
+        };
+        Image::make(
+            device,
+            (extent, levels, true),
+            format,
+            usage,
+            vk::ImageAspectFlags::COLOR,
+        )
+    }
+
+    fn make(
+        device: &Arc<Device>,
+        (extent, levels, cube): (vk::Extent2D, u32, bool),
+        format: vk::Format,
+        usage: vk::ImageUsageFlags,
+        aspect: vk::ImageAspectFlags,
+    ) -> Result<Self> {
+        let layers = if cube { 6 } else { 1 };
+        let flags = if cube {
+            vk::ImageCreateFlags::CUBE_COMPATIBLE
+        } else {
+            vk::ImageCreateFlags::empty()
+        };
         let info = vk::ImageCreateInfo::default()
+            .flags(flags)
             .image_type(vk::ImageType::TYPE_2D)
             .format(format)
             .extent(vk::Extent3D {
@@ -210,7 +250,7 @@ impl Image {
                 depth: 1,
             })
             .mip_levels(levels)
-            .array_layers(1)
+            .array_layers(layers)
             .samples(vk::SampleCountFlags::TYPE_1)
             .tiling(vk::ImageTiling::OPTIMAL)
             .usage(usage)
@@ -235,14 +275,18 @@ impl Image {
         .map_err(vk_error("vkBindImageMemory"))?;
         let view_info = vk::ImageViewCreateInfo::default()
             .image(raw.raw())
-            .view_type(vk::ImageViewType::TYPE_2D)
+            .view_type(if cube {
+                vk::ImageViewType::CUBE
+            } else {
+                vk::ImageViewType::TYPE_2D
+            })
             .format(format)
             .subresource_range(vk::ImageSubresourceRange {
                 aspect_mask: aspect,
                 base_mip_level: 0,
                 level_count: levels,
                 base_array_layer: 0,
-                layer_count: 1,
+                layer_count: layers,
             });
         let view = ImageView::new(device, &view_info)?;
         Ok(Image {
@@ -250,6 +294,7 @@ impl Image {
             raw,
             _memory: memory,
             levels,
+            layers,
         })
     }
 
@@ -271,5 +316,10 @@ impl Image {
     /// How many mip levels it has.
     pub fn levels(&self) -> u32 {
         self.levels
+    }
+
+    /// How many array layers it has: 6 for a cube map, else 1.
+    pub fn layers(&self) -> u32 {
+        self.layers
     }
 }

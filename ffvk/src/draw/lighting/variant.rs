@@ -37,13 +37,14 @@ pub(super) struct Variant {
     pub(super) points: PointKey,
 }
 
-/// The texture units a draw samples (bits 0-3) and applies (bits 4-7), as the pipeline keys
-/// them (`SPEC_TEXTURE_UNITS`), for `units` with a complete texture bound on the units `bound`
-/// names ([`units_applied`]): 0, the untextured pipeline, when no unit applies.
-pub(crate) fn units_key(units: &[TextureUnit; MAX_TEXTURE_UNITS], bound: u32) -> u32 {
-    match units_applied(units, bound) {
-        (_, 0) => 0,
-        (sampled, applied) => sampled | applied << 4,
+/// The texture units a draw samples (bits 0-3), applies (bits 4-7) and samples as cube maps
+/// (bits 8-11), as the pipeline keys them (`SPEC_TEXTURE_UNITS`), for `units` with a complete
+/// 2D texture on the units `bound` names and a complete cube map on those of `bound_cube`
+/// ([`units_applied`]): 0, the untextured pipeline, when no unit applies.
+pub(crate) fn units_key(units: &[TextureUnit; MAX_TEXTURE_UNITS], bound: u32, bound_cube: u32) -> u32 {
+    match units_applied(units, bound, bound_cube) {
+        (_, 0, _) => 0,
+        (sampled, applied, cube) => sampled | applied << 4 | cube << 8,
     }
 }
 

@@ -21,8 +21,12 @@ pub enum Cap {
     /// `GL_RESCALE_NORMAL`: eye-space normals are scaled to undo a uniform scale in the
     /// modelview (the factor comes from the third row of its inverse).
     RescaleNormal,
-    /// `GL_TEXTURE_2D`: texturing with the bound texture, when it is complete.
+    /// `GL_TEXTURE_2D`: the active unit textures with its bound 2D texture, when it is
+    /// complete.
     Texture2D,
+    /// `GL_TEXTURE_CUBE_MAP`: the active unit textures with its bound cube map (before its 2D
+    /// texture), when it is complete.
+    TextureCubeMap,
     /// `GL_COLOR_SUM`: with lighting off, the secondary color is added after texturing.
     ColorSum,
     /// `GL_ALPHA_TEST`: fragments are kept as [`AlphaTest`] says.

@@ -234,6 +234,7 @@ impl GlState {
             Cap::Normalize => self.lighting.normalize = on,
             Cap::RescaleNormal => self.lighting.rescale_normal = on,
             Cap::Texture2D => self.unit_mut().enabled = on,
+            Cap::TextureCubeMap => self.unit_mut().cube_map = on,
             Cap::ColorSum => self.lighting.fragment.color_sum = on,
             Cap::AlphaTest => self.lighting.fragment.alpha_test.enabled = on,
             Cap::Fog => self.lighting.fragment.fog.enabled = on,
