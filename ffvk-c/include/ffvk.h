@@ -868,13 +868,6 @@
 #define FFVK_FEATURE_GEOMETRY_SHADER 256
 
 /*
- `VkPhysicalDeviceVulkan12Features::descriptorBindingPartiallyBound` (or the same feature of
- `VkPhysicalDeviceDescriptorIndexingFeatures`; every Vulkan 1.3 device has it): needed for
- textured draws, which bind their texture units in one set whose unused elements stay empty.
- */
-#define FFVK_FEATURE_PARTIALLY_BOUND 512
-
-/*
  `FfvkDrawInfo::raster_source`: the draw's raster state is its `raster` (the default).
  */
 #define FFVK_RASTER_SOURCE_DRAW 0
@@ -1058,10 +1051,8 @@ typedef struct FfvkRendererCreateInfo {
    `VK_EXT_line_rasterization` enabled with `VkPhysicalDeviceLineRasterizationFeaturesEXT::
    bresenhamLines` and `stippledBresenhamLines` (`GL_LINE_STIPPLE`; every line then drawn
    as GL's aliased lines); `FFVK_FEATURE_GEOMETRY_SHADER` is `geometryShader` (GL's edge
-   flags: draws of mode `GL_TRIANGLES_ADJACENCY`); `FFVK_FEATURE_PARTIALLY_BOUND` is
-   `VkPhysicalDeviceVulkan12Features::descriptorBindingPartiallyBound` (textured draws: the
-   texture units share one set whose unused elements stay empty). A draw needing a feature
-   not declared is refused, naming its bit.
+   flags: draws of mode `GL_TRIANGLES_ADJACENCY`). A draw needing a feature not declared is
+   refused, naming its bit.
    `ffvkDeviceRequirements` says which bits a device will have.
    */
   uint32_t enabled_features;
@@ -2809,9 +2800,6 @@ const char *ffvkResultMessage(void);
    `shaderTessellationAndGeometryPointSize`, in `features->features`, where supported (polygon
    modes `GL_LINE` and `GL_POINT`; `GL_COLOR_LOGIC_OP`; GL's edge flags, draws of
    `GL_TRIANGLES_ADJACENCY`);
- - `descriptorBindingPartiallyBound` in the chain's `VkPhysicalDeviceVulkan12Features` (or
-   `VkPhysicalDeviceDescriptorIndexingFeatures`), where the chain holds one (textured draws
-   need it; every Vulkan 1.3 device has it);
  - `bresenhamLines` and `stippledBresenhamLines` in a `VkPhysicalDeviceLineRasterizationFeaturesEXT`
    of the chain, when the device supports both (`GL_LINE_STIPPLE` needs them, and with them
    every line is GL's aliased line), with `VK_EXT_line_rasterization` listed. As with the

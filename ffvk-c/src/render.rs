@@ -28,8 +28,7 @@ use features::{enabled_features, KNOWN_FEATURES};
 pub use features::{
     FFVK_FEATURE_CLIP_DISTANCE, FFVK_FEATURE_DYNAMIC_RENDERING, FFVK_FEATURE_FILL_MODE_NON_SOLID,
     FFVK_FEATURE_GEOMETRY_SHADER, FFVK_FEATURE_LARGE_POINTS, FFVK_FEATURE_LOGIC_OP,
-    FFVK_FEATURE_PARTIALLY_BOUND, FFVK_FEATURE_PROVOKING_VERTEX_LAST, FFVK_FEATURE_STIPPLED_LINES,
-    FFVK_FEATURE_WIDE_LINES,
+    FFVK_FEATURE_PROVOKING_VERTEX_LAST, FFVK_FEATURE_STIPPLED_LINES, FFVK_FEATURE_WIDE_LINES,
 };
 pub(crate) use raster::raster_defaults;
 pub use raster::{ffvkRasterDefaults, FfvkRaster, FFVK_RASTER_SOURCE_CONTEXT, FFVK_RASTER_SOURCE_DRAW};
@@ -99,10 +98,8 @@ pub struct FfvkRendererCreateInfo {
     /// `VK_EXT_line_rasterization` enabled with `VkPhysicalDeviceLineRasterizationFeaturesEXT::
     /// bresenhamLines` and `stippledBresenhamLines` (`GL_LINE_STIPPLE`; every line then drawn
     /// as GL's aliased lines); `FFVK_FEATURE_GEOMETRY_SHADER` is `geometryShader` (GL's edge
-    /// flags: draws of mode `GL_TRIANGLES_ADJACENCY`); `FFVK_FEATURE_PARTIALLY_BOUND` is
-    /// `VkPhysicalDeviceVulkan12Features::descriptorBindingPartiallyBound` (textured draws: the
-    /// texture units share one set whose unused elements stay empty). A draw needing a feature
-    /// not declared is refused, naming its bit.
+    /// flags: draws of mode `GL_TRIANGLES_ADJACENCY`). A draw needing a feature not declared is
+    /// refused, naming its bit.
     /// `ffvkDeviceRequirements` says which bits a device will have.
     pub enabled_features: u32,
     /// The color attachment's format: an uncompressed core format the shaders write as floats

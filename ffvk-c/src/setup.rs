@@ -9,8 +9,7 @@ use ffvk::ash::{self, ext, vk};
 use crate::render::{
     FFVK_FEATURE_CLIP_DISTANCE, FFVK_FEATURE_DYNAMIC_RENDERING, FFVK_FEATURE_FILL_MODE_NON_SOLID,
     FFVK_FEATURE_GEOMETRY_SHADER, FFVK_FEATURE_LARGE_POINTS, FFVK_FEATURE_LOGIC_OP,
-    FFVK_FEATURE_PARTIALLY_BOUND, FFVK_FEATURE_PROVOKING_VERTEX_LAST, FFVK_FEATURE_STIPPLED_LINES,
-    FFVK_FEATURE_WIDE_LINES,
+    FFVK_FEATURE_PROVOKING_VERTEX_LAST, FFVK_FEATURE_STIPPLED_LINES, FFVK_FEATURE_WIDE_LINES,
 };
 use crate::result::{check_ptr, fail, guard, misaligned, FfvkResult};
 use crate::vk_types::*;
@@ -34,8 +33,6 @@ type Linked = (
 struct Chain {
     vulkan13: Vec<*mut vk::PhysicalDeviceVulkan13Features<'static>>,
     dynamic_rendering: Vec<*mut vk::PhysicalDeviceDynamicRenderingFeatures<'static>>,
-    vulkan12: Vec<*mut vk::PhysicalDeviceVulkan12Features<'static>>,
-    descriptor_indexing: Vec<*mut vk::PhysicalDeviceDescriptorIndexingFeatures<'static>>,
     /// The provoking-vertex and line-rasterization structs, in the chain's order.
     extension_structs: Vec<Linked>,
 }
@@ -70,8 +67,6 @@ unsafe fn walk(
     let mut chain = Chain {
         vulkan13: Vec::new(),
         dynamic_rendering: Vec::new(),
-        vulkan12: Vec::new(),
-        descriptor_indexing: Vec::new(),
         extension_structs: Vec::new(),
     };
     // SAFETY: the caller's contract: a valid struct; its p_next is the chain's first link.
@@ -104,10 +99,6 @@ unsafe fn walk(
             vk::StructureType::PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES => {
                 chain.dynamic_rendering.push(node.cast())
             }
-            vk::StructureType::PHYSICAL_DEVICE_VULKAN_1_2_FEATURES => chain.vulkan12.push(node.cast()),
-            vk::StructureType::PHYSICAL_DEVICE_DESCRIPTOR_INDEXING_FEATURES => {
-                chain.descriptor_indexing.push(node.cast())
-            }
             PROVOKING | LINES => chain.extension_structs.push((link, node, s_type)),
             _ => {}
         }
@@ -131,8 +122,6 @@ struct Support {
     fill_mode_non_solid: bool,
     logic_op: bool,
     geometry_shader: bool,
-    /// `descriptorBindingPartiallyBound`.
-    partially_bound: bool,
     /// `VK_EXT_line_rasterization` listed, with `bresenhamLines` and `stippledBresenhamLines`.
     stippled_lines: bool,
     /// The extension alone.
@@ -167,10 +156,7 @@ unsafe fn query(
     let mut v13 = vk::PhysicalDeviceVulkan13Features::default();
     let mut provoking = vk::PhysicalDeviceProvokingVertexFeaturesEXT::default();
     let mut lines = vk::PhysicalDeviceLineRasterizationFeaturesEXT::default();
-    let mut v12 = vk::PhysicalDeviceVulkan12Features::default();
-    let mut features = vk::PhysicalDeviceFeatures2::default()
-        .push_next(&mut v13)
-        .push_next(&mut v12);
+    let mut features = vk::PhysicalDeviceFeatures2::default().push_next(&mut v13);
     // Each extension's struct chained only when the device has the extension, as Vulkan
     // requires.
     if provoking_extension {
@@ -207,7 +193,6 @@ unsafe fn query(
         geometry_shader: base.geometry_shader == vk::TRUE
             && base.shader_tessellation_and_geometry_point_size == vk::TRUE,
         stippled_lines: lines_extension && bresenham && stippled,
-        partially_bound: v12.descriptor_binding_partially_bound == vk::TRUE,
         lines_extension,
         lines_lacking,
     })
@@ -234,9 +219,6 @@ unsafe fn query(
 ///   `shaderTessellationAndGeometryPointSize`, in `features->features`, where supported (polygon
 ///   modes `GL_LINE` and `GL_POINT`; `GL_COLOR_LOGIC_OP`; GL's edge flags, draws of
 ///   `GL_TRIANGLES_ADJACENCY`);
-/// - `descriptorBindingPartiallyBound` in the chain's `VkPhysicalDeviceVulkan12Features` (or
-///   `VkPhysicalDeviceDescriptorIndexingFeatures`), where the chain holds one (textured draws
-///   need it; every Vulkan 1.3 device has it);
 /// - `bresenhamLines` and `stippledBresenhamLines` in a `VkPhysicalDeviceLineRasterizationFeaturesEXT`
 ///   of the chain, when the device supports both (`GL_LINE_STIPPLE` needs them, and with them
 ///   every line is GL's aliased line), with `VK_EXT_line_rasterization` listed. As with the
@@ -429,20 +411,6 @@ pub unsafe extern "C" fn ffvkDeviceRequirements(
                     .into(),
             );
         }
-        let partially_bound =
-            support.partially_bound && !(chain.vulkan12.is_empty() && chain.descriptor_indexing.is_empty());
-        if partially_bound {
-            bits |= FFVK_FEATURE_PARTIALLY_BOUND;
-        } else {
-            let why = if support.partially_bound {
-                "features' pNext chain has no VkPhysicalDeviceVulkan12Features or VkPhysicalDeviceDescriptorIndexingFeatures to set descriptorBindingPartiallyBound in"
-            } else {
-                "the device lacks descriptorBindingPartiallyBound"
-            };
-            missing.push(format!(
-                "FFVK_FEATURE_PARTIALLY_BOUND ({why}; textured draws are refused)"
-            ));
-        }
         let stippled = support.stippled_lines && chain.has(LINES);
         if stippled {
             bits |= FFVK_FEATURE_STIPPLED_LINES;
@@ -496,14 +464,6 @@ pub unsafe extern "C" fn ffvkDeviceRequirements(
             }
             for &s in &chain.dynamic_rendering {
                 (*s).dynamic_rendering = vk::TRUE;
-            }
-            if partially_bound {
-                for &s in &chain.vulkan12 {
-                    (*s).descriptor_binding_partially_bound = vk::TRUE;
-                }
-                for &s in &chain.descriptor_indexing {
-                    (*s).descriptor_binding_partially_bound = vk::TRUE;
-                }
             }
             if provoking {
                 for s in chain.of::<vk::PhysicalDeviceProvokingVertexFeaturesEXT>(PROVOKING) {

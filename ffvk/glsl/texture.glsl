@@ -11,10 +11,11 @@
 // glTexParameter's values) in element i. Set 1 is moved to the set after the State block's at
 // pipeline creation; a unit a draw does not sample holds another of its textures.
 layout(set = 1, binding = 0) uniform sampler2D unit_2d[MAX_TEXTURE_UNITS];
-// Unit i's GL_TEXTURE_CUBE_MAP (a cube view of its six faces in GL's order) in element i,
-// sampled instead of its 2D texture where SPEC_TEXTURE_UNITS says so (GL_TEXTURE_CUBE_MAP's
-// precedence). The elements of units a draw does not sample are empty (partially bound).
-layout(set = 1, binding = 1) uniform samplerCube unit_cube[MAX_TEXTURE_UNITS];
+// The same binding read as cube maps: element i holds unit i's GL_TEXTURE_CUBE_MAP (a cube
+// view of its six faces in GL's order) instead of its 2D texture where SPEC_TEXTURE_UNITS says
+// the unit samples its cube map (GL_TEXTURE_CUBE_MAP's precedence); the shader reads each
+// element through the one of the two arrays its view's type matches.
+layout(set = 1, binding = 0) uniform samplerCube unit_cube[MAX_TEXTURE_UNITS];
 
 // Values of a unit's env_mode (GL_TEXTURE_ENV_MODE), mirrored by TexEnvMode::code.
 #define TEV_MODULATE 0u

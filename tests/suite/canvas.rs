@@ -111,15 +111,11 @@ impl Canvas {
                 vk::PhysicalDeviceProvokingVertexFeaturesEXT::default().provoking_vertex_last(true);
             let device_extensions = [ext::provoking_vertex::NAME.as_ptr()];
             let base = vk::PhysicalDeviceFeatures::default().shader_clip_distance(true);
-            // Textured draws' one set of the texture units leaves unused units empty.
-            let mut v12 =
-                vk::PhysicalDeviceVulkan12Features::default().descriptor_binding_partially_bound(true);
             let info = vk::DeviceCreateInfo::default()
                 .queue_create_infos(&queues)
                 .enabled_extension_names(&device_extensions)
                 .enabled_features(&base)
                 .push_next(&mut v13)
-                .push_next(&mut v12)
                 .push_next(&mut provoking);
             let device = instance.create_device(physical, &info, None).expect("a device");
             let queue = device.get_device_queue(0, 0);
@@ -170,8 +166,7 @@ impl Canvas {
         let enabled = EnabledFeatures::default()
             .with_dynamic_rendering(true)
             .with_provoking_vertex_last(true)
-            .with_clip_distance(true)
-            .with_partially_bound(true);
+            .with_clip_distance(true);
         // SAFETY: the device comes from this physical device with those features, and lives
         // until the canvas drops, after the tests' ffvk objects.
         unsafe { Device::from_caller(&self.instance, self.physical, self.device.clone(), enabled) }

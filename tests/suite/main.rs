@@ -14,6 +14,7 @@ mod canvas;
 mod cli;
 mod combine;
 mod conformance;
+mod cube_maps;
 mod deferred;
 mod determinism;
 mod edge_flags;

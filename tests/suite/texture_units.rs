@@ -10,8 +10,8 @@
 
 use ffvk::gl::state::*;
 use ffvk::gl::texture::{
-    CombineFunc, CombineSource, MagFilter, MinFilter, RgbOperand, Sampling, TexEnvMode, TexGenMode,
-    TextureImage, MAX_TEXTURE_UNITS,
+    CombineFunc, CombineSource, CubeImage, MagFilter, MinFilter, RgbOperand, Sampling, TexEnvMode,
+    TexGenMode, TextureImage, MAX_TEXTURE_UNITS,
 };
 use ffvk::mesh::MeshData;
 use ffvk::{Draw, Frame, Renderer, Specialize};
@@ -25,11 +25,15 @@ use ffvk_cli::gl_reference::GlDraw;
 
 /// One scene of several units: the state (its units set through `GlState`), each unit's
 /// texture, and the units 1-3 that read the mesh's coordinates.
-struct UnitsCase {
-    name: &'static str,
-    state: FixedFunctionState,
-    textures: [Option<TextureImage>; MAX_TEXTURE_UNITS],
-    mesh_texcoords: u32,
+pub(crate) struct UnitsCase {
+    pub(crate) name: &'static str,
+    pub(crate) state: FixedFunctionState,
+    pub(crate) textures: [Option<TextureImage>; MAX_TEXTURE_UNITS],
+    pub(crate) mesh_texcoords: u32,
+    /// Each unit's cube map (cube_maps.rs's cases).
+    pub(crate) cube_maps: [Option<CubeImage>; MAX_TEXTURE_UNITS],
+    /// The sampling of every texture and cube map.
+    pub(crate) sampling: Sampling,
 }
 
 struct View {
@@ -46,14 +50,14 @@ fn sphere() -> View {
     }
 }
 
-fn sampling() -> Sampling {
+pub(crate) fn sampling() -> Sampling {
     Sampling::default()
         .with_min_filter(MinFilter::Linear)
         .with_mag_filter(MagFilter::Linear)
 }
 
 /// texture_conformance.rs's lit state (unit 0 enabled, `GL_MODULATE`) in `mode`, then `setup`.
-fn units_state(mode: LightingMode, setup: impl FnOnce(&mut GlState)) -> FixedFunctionState {
+pub(crate) fn units_state(mode: LightingMode, setup: impl FnOnce(&mut GlState)) -> FixedFunctionState {
     let mut gl = GlState::new();
     gl.lighting = textured_state(
         TexEnvMode::Modulate,
@@ -66,7 +70,7 @@ fn units_state(mode: LightingMode, setup: impl FnOnce(&mut GlState)) -> FixedFun
 }
 
 /// Unit `unit` active, enabled, in environment mode `env`.
-fn unit(gl: &mut GlState, unit: usize, env: TexEnvMode) {
+pub(crate) fn unit(gl: &mut GlState, unit: usize, env: TexEnvMode) {
     gl.active_texture(unit).unwrap();
     gl.enable(Cap::Texture2D).unwrap();
     gl.tex_env(TexEnvParam::Mode(env)).unwrap();
@@ -79,14 +83,24 @@ fn ffvk_image(r: &mut Renderer, view: &View, case: &UnitsCase) -> RgbaImage {
         .iter()
         .map(|t| {
             t.as_ref()
-                .map(|image| r.upload_texture(image, &sampling()).unwrap())
+                .map(|image| r.upload_texture(image, &case.sampling).unwrap())
+        })
+        .collect();
+    let cubes: Vec<Option<ffvk::Texture>> = case
+        .cube_maps
+        .iter()
+        .map(|c| {
+            c.as_ref()
+                .map(|image| r.upload_cube_map(image, &case.sampling).unwrap())
         })
         .collect();
     let mut frame = Frame::new(SIZE, SIZE);
     let textures = std::array::from_fn(|i| uploaded[i].as_ref());
+    let cube_maps = std::array::from_fn(|i| cubes[i].as_ref());
     frame.draws.push(
         Draw::new(&gpu, view.modelview, view.projection, case.state)
             .with_textures(textures)
+            .with_cube_maps(cube_maps)
             .with_mesh_texcoords(case.mesh_texcoords),
     );
     r.render(&frame).unwrap().into_rgba_image()
@@ -94,7 +108,8 @@ fn ffvk_image(r: &mut Renderer, view: &View, case: &UnitsCase) -> RgbaImage {
 
 fn gl_image(view: &View, case: &UnitsCase) -> RgbaImage {
     let mut draw = GlDraw::new(&view.mesh, view.modelview, view.projection, case.state);
-    draw.textures = std::array::from_fn(|i| case.textures[i].as_ref().map(|t| (t, sampling())));
+    draw.textures = std::array::from_fn(|i| case.textures[i].as_ref().map(|t| (t, case.sampling)));
+    draw.cube_maps = std::array::from_fn(|i| case.cube_maps[i].as_ref().map(|c| (c, case.sampling)));
     draw.mesh_texcoords = case.mesh_texcoords;
     gl_draw_image(draw, [0.0, 0.0, 0.0, 1.0])
 }
@@ -107,7 +122,7 @@ fn agreement(ours: &RgbaImage, theirs: &RgbaImage, m: &[bool]) -> (f64, u8, usiz
 
 /// A checker of red and green with alpha 1 and 0.25: where it is modulated onto another unit,
 /// both its colors and alphas show.
-fn red_green() -> TextureImage {
+pub(crate) fn red_green() -> TextureImage {
     let mut rgba = Vec::new();
     for j in 0..8u32 {
         for i in 0..8u32 {
@@ -134,6 +149,8 @@ fn cases(mode: LightingMode) -> Vec<UnitsCase> {
             }),
             textures: [Some(waves()), Some(hashed_texels(16)), None, None],
             mesh_texcoords: 0b10,
+            cube_maps: Default::default(),
+            sampling: sampling(),
         },
         UnitsCase {
             name: "a_unit_on_its_current_coordinates_blends_one_texel",
@@ -144,6 +161,8 @@ fn cases(mode: LightingMode) -> Vec<UnitsCase> {
             }),
             textures: [Some(waves()), Some(red_green()), None, None],
             mesh_texcoords: 0,
+            cube_maps: Default::default(),
+            sampling: sampling(),
         },
         UnitsCase {
             name: "four_units_in_order_with_texgen_on_two",
@@ -172,6 +191,8 @@ fn cases(mode: LightingMode) -> Vec<UnitsCase> {
                 Some(red_green()),
             ],
             mesh_texcoords: 0b10,
+            cube_maps: Default::default(),
+            sampling: sampling(),
         },
         UnitsCase {
             name: "combine_reads_unit_0s_texel_and_the_primary_color_through_the_crossbar",
@@ -188,6 +209,8 @@ fn cases(mode: LightingMode) -> Vec<UnitsCase> {
             }),
             textures: [Some(waves()), Some(red_green()), None, None],
             mesh_texcoords: 0b10,
+            cube_maps: Default::default(),
+            sampling: sampling(),
         },
         UnitsCase {
             name: "the_clamp_after_a_unit_holds_a_scaled_sum_at_one_before_the_next_subtracts",
@@ -202,6 +225,8 @@ fn cases(mode: LightingMode) -> Vec<UnitsCase> {
             }),
             textures: [Some(waves()), Some(red_green()), None, None],
             mesh_texcoords: 0b10,
+            cube_maps: Default::default(),
+            sampling: sampling(),
         },
         UnitsCase {
             name: "with_unit_0_off_unit_1s_previous_is_the_primary_color",
@@ -213,6 +238,8 @@ fn cases(mode: LightingMode) -> Vec<UnitsCase> {
             }),
             textures: [Some(waves()), Some(red_green()), None, None],
             mesh_texcoords: 0b10,
+            cube_maps: Default::default(),
+            sampling: sampling(),
         },
     ]
 }
@@ -250,7 +277,7 @@ fn run(variant: Specialize, cases: &[UnitsCase]) -> (Vec<String>, Vec<String>) {
     (lines, failures)
 }
 
-fn check(variant: Specialize, cases: &[UnitsCase]) {
+pub(crate) fn check(variant: Specialize, cases: &[UnitsCase]) {
     let (lines, failures) = run(variant, cases);
     println!("{}", lines.join("\n"));
     assert!(failures.is_empty(), "{}", failures.join("\n"));
@@ -290,6 +317,8 @@ fn swapping_two_units_or_dropping_the_clamp_fails_the_comparison() {
         }),
         textures: two.textures.clone(),
         mesh_texcoords: two.mesh_texcoords,
+        cube_maps: Default::default(),
+        sampling: sampling(),
     };
     let ours = ffvk_image(&mut r, &view, two);
     let (share, ..) = agreement(&ours, &gl_image(&view, &swapped), &m);
@@ -308,6 +337,8 @@ fn swapping_two_units_or_dropping_the_clamp_fails_the_comparison() {
         state: unscaled,
         textures: clamp.textures.clone(),
         mesh_texcoords: clamp.mesh_texcoords,
+        cube_maps: Default::default(),
+        sampling: sampling(),
     };
     let ours = ffvk_image(&mut r, &view, clamp);
     let (share, ..) = agreement(&ours, &gl_image(&view, &other), &m);

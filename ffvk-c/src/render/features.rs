@@ -28,10 +28,6 @@ pub const FFVK_FEATURE_STIPPLED_LINES: u32 = 128;
 /// needed for GL's edge flags (draws of mode `GL_TRIANGLES_ADJACENCY` from
 /// `ffvkEdgeFlaggedIndices`).
 pub const FFVK_FEATURE_GEOMETRY_SHADER: u32 = 256;
-/// `VkPhysicalDeviceVulkan12Features::descriptorBindingPartiallyBound` (or the same feature of
-/// `VkPhysicalDeviceDescriptorIndexingFeatures`; every Vulkan 1.3 device has it): needed for
-/// textured draws, which bind their texture units in one set whose unused elements stay empty.
-pub const FFVK_FEATURE_PARTIALLY_BOUND: u32 = 512;
 
 /// Every bit this version knows.
 pub(crate) const KNOWN_FEATURES: u32 = FFVK_FEATURE_DYNAMIC_RENDERING
@@ -42,8 +38,7 @@ pub(crate) const KNOWN_FEATURES: u32 = FFVK_FEATURE_DYNAMIC_RENDERING
     | FFVK_FEATURE_FILL_MODE_NON_SOLID
     | FFVK_FEATURE_LOGIC_OP
     | FFVK_FEATURE_STIPPLED_LINES
-    | FFVK_FEATURE_GEOMETRY_SHADER
-    | FFVK_FEATURE_PARTIALLY_BOUND;
+    | FFVK_FEATURE_GEOMETRY_SHADER;
 
 /// The features `bits` (checked for unknown bits before) say the caller enabled.
 pub(crate) fn enabled_features(bits: u32) -> EnabledFeatures {
@@ -58,5 +53,4 @@ pub(crate) fn enabled_features(bits: u32) -> EnabledFeatures {
         .with_logic_op(has(FFVK_FEATURE_LOGIC_OP))
         .with_stippled_lines(has(FFVK_FEATURE_STIPPLED_LINES))
         .with_geometry_shader(has(FFVK_FEATURE_GEOMETRY_SHADER))
-        .with_partially_bound(has(FFVK_FEATURE_PARTIALLY_BOUND))
 }

@@ -545,20 +545,12 @@ impl Lighting {
         let texture_set = if units == 0 {
             None
         } else {
-            if !self.device.info.partially_bound {
-                return Err(crate::Error::NotEnabled {
-                    feature: "descriptorBindingPartiallyBound",
-                    flag: "partially_bound",
-                    needed_for:
-                        "textured draws (one set of the texture units, whose unused elements stay empty) need",
-                });
-            }
-            // Units 0-3 sample their 2D texture (bits 0-3 but not 8-11) or their cube map.
-            let flat = |i: usize| units & 1 << i != 0 && units & 256 << i == 0;
-            let textures: UnitTextures = [
-                std::array::from_fn(|i| draw.textures[i].filter(|_| flat(i)).copied()),
-                std::array::from_fn(|i| draw.cube_maps[i].filter(|_| units & 256 << i != 0).copied()),
-            ];
+            // Unit i samples its cube map (bit 8 + i) or its 2D texture (bit i alone).
+            let textures: UnitTextures = std::array::from_fn(|i| {
+                let cube = units & 256 << i != 0;
+                let texture = if cube { draw.cube_maps[i] } else { draw.textures[i] };
+                texture.filter(|_| units & 1 << i != 0).copied()
+            });
             // SAFETY: the textures are the caller's live bindings (Lighting::bind_texture's
             // contract covers the command buffers this set is drawn in).
             Some(unsafe {

@@ -1,7 +1,9 @@
 //! The textures a lit draw samples: the texture units' set (binding 0, one combined image
-//! sampler per unit for its 2D texture, [`MAX_TEXTURE_UNITS`] of them; binding 1, the same for
-//! its cube map), the caller's view and sampler each unit names ([`TextureBinding`]), and the
-//! Vulkan sampler that samples as GL's texture parameters say.
+//! sampler per unit, [`MAX_TEXTURE_UNITS`] of them, holding the unit's 2D texture or its cube
+//! map; the shaders read the binding as an array of `sampler2D` and, aliased, of
+//! `samplerCube`, each unit through the one its target says), the caller's view and sampler
+//! each unit names ([`TextureBinding`]), and the Vulkan sampler that samples as GL's texture
+//! parameters say.
 //!
 //! ffvk's own renderer uploads [`TextureImage`](crate::gl::texture::TextureImage)s into images
 //! it owns; an embedding caller keeps its own images and samplers and asks
@@ -13,8 +15,9 @@
 //! the slot is begun again: the cost is one `vkAllocateDescriptorSets` and one
 //! `vkUpdateDescriptorSets` of the sampled units' descriptors per combination per frame, where
 //! one set per texture would need a set index per unit (Vulkan guarantees four bound sets in
-//! all). The elements of units a draw does not sample stay empty (`PARTIALLY_BOUND`, so the
-//! device needs `descriptorBindingPartiallyBound`, which every Vulkan 1.3 device has).
+//! all). The element of a unit a draw does not sample holds another of its textures (every
+//! element must be valid; lavapipe 22.3 has no `descriptorBindingPartiallyBound`), which the
+//! shader never reads.
 
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -26,21 +29,15 @@ use crate::gl::texture::{MagFilter, MinFilter, Sampling, Wrap, MAX_TEXTURE_UNITS
 use crate::vk::objects::{DescriptorSetLayout, SetPool};
 use crate::vk::Device;
 
-/// The layout of the units' set: binding 0, one combined image sampler per unit for its 2D
-/// texture, binding 1 one per unit for its cube map, fragment stage; both partially bound
-/// where the device has that enabled (textured draws are refused on a device without it).
+/// The layout of the units' set: binding 0, one combined image sampler per unit (its 2D
+/// texture or its cube map), fragment stage.
 pub(crate) fn set_layout(device: &Arc<Device>) -> Result<DescriptorSetLayout> {
-    let binding = |binding: u32| {
-        vk::DescriptorSetLayoutBinding::default()
-            .binding(binding)
-            .descriptor_type(vk::DescriptorType::COMBINED_IMAGE_SAMPLER)
-            .descriptor_count(MAX_TEXTURE_UNITS as u32)
-            .stage_flags(vk::ShaderStageFlags::FRAGMENT)
-    };
-    let bindings = [binding(0), binding(1)];
-    let flags = [vk::DescriptorBindingFlags::PARTIALLY_BOUND; 2];
-    let flags: &[vk::DescriptorBindingFlags] = if device.info.partially_bound { &flags } else { &[] };
-    DescriptorSetLayout::with_flags(device, &bindings, flags)
+    let bindings = [vk::DescriptorSetLayoutBinding::default()
+        .binding(0)
+        .descriptor_type(vk::DescriptorType::COMBINED_IMAGE_SAMPLER)
+        .descriptor_count(MAX_TEXTURE_UNITS as u32)
+        .stage_flags(vk::ShaderStageFlags::FRAGMENT)];
+    DescriptorSetLayout::new(device, &bindings)
 }
 
 /// What a texture binding is bound to: GL's `GL_TEXTURE_2D` or `GL_TEXTURE_CUBE_MAP` target.
@@ -103,15 +100,16 @@ impl TextureBinding {
 /// Sets a pool holds before another is added.
 const SETS_PER_POOL: u32 = 64;
 
-/// The textures of a draw's units, a 2D texture and a cube map per unit, where it samples them.
-pub(crate) type UnitTextures = [[Option<TextureBinding>; MAX_TEXTURE_UNITS]; 2];
+/// The texture each unit of a draw samples (its 2D texture or its cube map), `None` where it
+/// samples none.
+pub(crate) type UnitTextures = [Option<TextureBinding>; MAX_TEXTURE_UNITS];
 
 /// The units' sets of one frame slot: the pools they come from and the set made for each
 /// combination of textures.
 #[derive(Default)]
 struct SlotSets {
     pools: Vec<SetPool>,
-    sets: HashMap<UnitTextures, vk::DescriptorSet>,
+    sets: HashMap<[TextureBinding; MAX_TEXTURE_UNITS], vk::DescriptorSet>,
 }
 
 /// The units' sets of every frame slot.
@@ -143,22 +141,29 @@ impl UnitSets {
         Ok(())
     }
 
-    /// The set of slot `slot` naming `units` (each unit's 2D texture in binding 0, its cube map
-    /// in binding 1, where the draw samples them; the other elements stay empty), made now if
-    /// the slot has none for them.
+    /// The set of slot `slot` naming `units` (each unit's texture where the draw samples one;
+    /// a unit that samples none names another of the draw's textures), made now if the slot
+    /// has none for them. `units` has at least one texture.
     ///
     /// # Safety
     ///
     /// Every view and sampler of `units` is live and outlives the command buffers that draw
-    /// with the set (the contract of [`Lighting::bind_texture`](super::lighting::Lighting::bind_texture)),
-    /// and the layout is partially bound.
+    /// with the set (the contract of [`Lighting::bind_texture`](super::lighting::Lighting::bind_texture)).
     pub(crate) unsafe fn set_for(
         &mut self,
         layout: &DescriptorSetLayout,
         slot: u32,
         units: UnitTextures,
     ) -> Result<vk::DescriptorSet> {
-        let key = units;
+        let filler = units
+            .iter()
+            .flatten()
+            .next()
+            .copied()
+            .ok_or(crate::Error::Internal(
+                "a textured draw's set was asked for with no texture",
+            ))?;
+        let key = units.map(|u| u.unwrap_or(filler));
         let s = self.slots.get_mut(slot as usize).ok_or(crate::Error::Internal(
             "a texture set for a frame slot that does not exist",
         ))?;
@@ -172,40 +177,25 @@ impl UnitSets {
         if set.is_none() {
             let sizes = [vk::DescriptorPoolSize {
                 ty: vk::DescriptorType::COMBINED_IMAGE_SAMPLER,
-                descriptor_count: 2 * MAX_TEXTURE_UNITS as u32,
+                descriptor_count: MAX_TEXTURE_UNITS as u32,
             }];
             let mut pool = SetPool::new(&self.device, layout, &sizes, SETS_PER_POOL)?;
             set = pool.allocate()?;
             s.pools.push(pool);
         }
         let set = set.ok_or(crate::Error::Internal("a new descriptor pool had no room"))?;
-        // One write per texture: binding 0 or 1, element = the unit.
-        let infos: Vec<(u32, u32, [vk::DescriptorImageInfo; 1])> = (0..2u32)
-            .flat_map(|binding| (0..MAX_TEXTURE_UNITS).map(move |unit| (binding, unit)))
-            .filter_map(|(binding, unit)| {
-                key[binding as usize][unit].map(|t| {
-                    let info = vk::DescriptorImageInfo {
-                        sampler: t.sampler,
-                        image_view: t.view,
-                        image_layout: vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL,
-                    };
-                    (binding, unit as u32, [info])
-                })
-            })
-            .collect();
-        let writes: Vec<vk::WriteDescriptorSet> = infos
-            .iter()
-            .map(|(binding, unit, info)| {
-                vk::WriteDescriptorSet::default()
-                    .dst_set(set)
-                    .dst_binding(*binding)
-                    .dst_array_element(*unit)
-                    .descriptor_type(vk::DescriptorType::COMBINED_IMAGE_SAMPLER)
-                    .image_info(info)
-            })
-            .collect();
+        let images = key.map(|t| vk::DescriptorImageInfo {
+            sampler: t.sampler,
+            image_view: t.view,
+            image_layout: vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL,
+        });
+        let write = vk::WriteDescriptorSet::default()
+            .dst_set(set)
+            .dst_binding(0)
+            .descriptor_type(vk::DescriptorType::COMBINED_IMAGE_SAMPLER)
+            .image_info(&images);
         // SAFETY: the set is new and unused; the views and samplers are live (the contract).
-        unsafe { self.device.raw.update_descriptor_sets(&writes, &[]) };
+        unsafe { self.device.raw.update_descriptor_sets(&[write], &[]) };
         s.sets.insert(key, set);
         Ok(set)
     }

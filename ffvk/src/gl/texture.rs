@@ -135,6 +135,12 @@ impl Default for TextureUnit {
 }
 
 impl TextureUnit {
+    /// Whether one of the unit's targets is enabled (`GL_TEXTURE_2D` or `GL_TEXTURE_CUBE_MAP`):
+    /// only then do its environment and texgen count.
+    pub fn is_enabled(&self) -> bool {
+        self.enabled || self.cube_map
+    }
+
     /// Each coordinate's generation as the shaders read it (`SPEC_TEXGEN`, the state block's
     /// `texgen`): [`TexCoordGen::code`] of S in bits 0-2, T in 3-5, R in 6-8, Q in 9-11.
     pub fn texgen_code(&self) -> u32 {

@@ -271,7 +271,7 @@ impl GpuTextureUnit {
             env_mode: unit.env_mode.code(),
             combine: unit.combine.code(),
             crossbar: unit.combine.crossbar_code(),
-            texgen: if unit.enabled { unit.texgen_code() } else { 0 },
+            texgen: if unit.is_enabled() { unit.texgen_code() } else { 0 },
         }
     }
 }

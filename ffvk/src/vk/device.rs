@@ -68,9 +68,6 @@ pub struct DeviceInfo {
     /// `VK_EXT_line_rasterization` with `bresenhamLines` and `stippledBresenhamLines`:
     /// `glLineStipple` (`GL_LINE_STIPPLE`).
     pub stippled_lines: bool,
-    /// `descriptorBindingPartiallyBound`: textured draws (the texture units' set leaves the
-    /// elements of units a draw does not sample empty).
-    pub partially_bound: bool,
     /// `VK_EXT_non_seamless_cube_map` with `nonSeamlessCubeMap`: GL 2.1's cube map filtering,
     /// each face on its own (without it, cube maps filter across face edges).
     pub non_seamless_cube_map: bool,
@@ -169,10 +166,6 @@ pub struct EnabledFeatures {
     /// `VK_EXT_line_rasterization` (enabled) with `bresenhamLines` and
     /// `stippledBresenhamLines`: needed for `glLineStipple`.
     pub stippled_lines: bool,
-    /// `descriptorBindingPartiallyBound` (Vulkan 1.2 core, on every Vulkan 1.3 device): needed
-    /// for textured draws, whose one set of the texture units leaves the units a draw does not
-    /// sample empty.
-    pub partially_bound: bool,
     /// `VK_EXT_non_seamless_cube_map` (enabled) with `nonSeamlessCubeMap`: lets the samplers
     /// of ffvk's renderer filter each cube map face on its own, as GL 2.1 does (a caller makes
     /// its own samplers).
@@ -198,8 +191,6 @@ with_fields!(EnabledFeatures {
     with_geometry_shader => geometry_shader: bool,
     /// Sets [`stippled_lines`](EnabledFeatures::stippled_lines).
     with_stippled_lines => stippled_lines: bool,
-    /// Sets [`partially_bound`](EnabledFeatures::partially_bound).
-    with_partially_bound => partially_bound: bool,
     /// Sets [`non_seamless_cube_map`](EnabledFeatures::non_seamless_cube_map).
     with_non_seamless_cube_map => non_seamless_cube_map: bool,
 });
@@ -313,7 +304,6 @@ impl Device {
                 .is_ok_and(|n| n == ext::line_rasterization::NAME)
         });
         info.stippled_lines = has_line_rasterization && supported.stippled_lines;
-        info.partially_bound = supported.partially_bound;
         info.non_seamless_cube_map = supported.non_seamless_cube_map;
 
         let priorities = [1.0f32];
@@ -329,8 +319,6 @@ impl Device {
         }
         let mut enable_non_seamless =
             vk::PhysicalDeviceNonSeamlessCubeMapFeaturesEXT::default().non_seamless_cube_map(true);
-        let mut enable_v12 = vk::PhysicalDeviceVulkan12Features::default()
-            .descriptor_binding_partially_bound(info.partially_bound);
         let mut enable_lines = vk::PhysicalDeviceLineRasterizationFeaturesEXT::default()
             .bresenham_lines(info.stippled_lines)
             .stippled_bresenham_lines(info.stippled_lines);
@@ -353,7 +341,6 @@ impl Device {
             .enabled_extension_names(&extension_names)
             .enabled_features(&base)
             .push_next(&mut enable_v13)
-            .push_next(&mut enable_v12)
             .push_next(&mut enable_provoking);
         if info.stippled_lines {
             create = create.push_next(&mut enable_lines);
@@ -502,11 +489,6 @@ impl Device {
                 "VK_EXT_line_rasterization's bresenhamLines and stippledBresenhamLines (EnabledFeatures::stippled_lines says they are enabled)",
             ),
             (
-                enabled.partially_bound,
-                supported.partially_bound,
-                "descriptorBindingPartiallyBound (EnabledFeatures::partially_bound says it is enabled)",
-            ),
-            (
                 enabled.non_seamless_cube_map,
                 supported.non_seamless_cube_map,
                 "VK_EXT_non_seamless_cube_map's nonSeamlessCubeMap (EnabledFeatures::non_seamless_cube_map says it is enabled)",
@@ -525,8 +507,7 @@ impl Device {
             enabled.stippled_lines,
         );
         info.geometry_shader = enabled.geometry_shader;
-        (info.partially_bound, info.non_seamless_cube_map) =
-            (enabled.partially_bound, enabled.non_seamless_cube_map);
+        info.non_seamless_cube_map = enabled.non_seamless_cube_map;
         let allocator = match shared {
             #[cfg(feature = "shared-allocator")]
             Some(shared) => Ok(DeviceAllocator::Shared(shared)),

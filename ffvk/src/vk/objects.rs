@@ -114,23 +114,8 @@ impl ShaderModule {
 impl DescriptorSetLayout {
     /// A layout of `bindings`.
     pub fn new(device: &Arc<Device>, bindings: &[vk::DescriptorSetLayoutBinding]) -> Result<Self> {
-        Self::with_flags(device, bindings, &[])
-    }
-
-    /// A layout of `bindings`, each with its flags in `flags` (empty: none; else one per
-    /// binding, and the device has the features they need enabled).
-    pub fn with_flags(
-        device: &Arc<Device>,
-        bindings: &[vk::DescriptorSetLayoutBinding],
-        flags: &[vk::DescriptorBindingFlags],
-    ) -> Result<Self> {
-        let mut binding_flags = vk::DescriptorSetLayoutBindingFlagsCreateInfo::default().binding_flags(flags);
-        let mut info = vk::DescriptorSetLayoutCreateInfo::default().bindings(bindings);
-        if !flags.is_empty() {
-            info = info.push_next(&mut binding_flags);
-        }
-        // SAFETY: a valid create info on a live device (the flags' features are the caller's
-        // to have enabled).
+        let info = vk::DescriptorSetLayoutCreateInfo::default().bindings(bindings);
+        // SAFETY: a valid create info on a live device.
         let raw = unsafe { device.raw.create_descriptor_set_layout(&info, None) }
             .map_err(vk_error("vkCreateDescriptorSetLayout"))?;
         Ok(DescriptorSetLayout {

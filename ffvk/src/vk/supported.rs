@@ -22,8 +22,6 @@ pub(crate) struct Supported {
     pub(crate) geometry_shader: bool,
     /// `bresenhamLines` and `stippledBresenhamLines` (the extension must be listed too).
     pub(crate) stippled_lines: bool,
-    /// `descriptorBindingPartiallyBound` (Vulkan 1.2 core; every Vulkan 1.3 device has it).
-    pub(crate) partially_bound: bool,
     /// `VK_EXT_non_seamless_cube_map` listed, with `nonSeamlessCubeMap`.
     pub(crate) non_seamless_cube_map: bool,
     pub(crate) driver_name: String,
@@ -44,11 +42,8 @@ impl Supported {
         // SAFETY: the caller vouches for the handle.
         let listed = unsafe { instance.enumerate_device_extension_properties(physical) }.unwrap_or_default();
         let has = |name: &std::ffi::CStr| listed.iter().any(|e| e.extension_name_as_c_str() == Ok(name));
-        let mut v12 = vk::PhysicalDeviceVulkan12Features::default();
         let mut non_seamless = vk::PhysicalDeviceNonSeamlessCubeMapFeaturesEXT::default();
-        let mut features = vk::PhysicalDeviceFeatures2::default()
-            .push_next(&mut v13)
-            .push_next(&mut v12);
+        let mut features = vk::PhysicalDeviceFeatures2::default().push_next(&mut v13);
         if has(ext::non_seamless_cube_map::NAME) {
             features = features.push_next(&mut non_seamless);
         }
@@ -79,7 +74,6 @@ impl Supported {
         let geometry_shader = features.features.geometry_shader == vk::TRUE
             && features.features.shader_tessellation_and_geometry_point_size == vk::TRUE;
         let stippled_lines = lines.bresenham_lines == vk::TRUE && lines.stippled_bresenham_lines == vk::TRUE;
-        let partially_bound = v12.descriptor_binding_partially_bound == vk::TRUE;
         let non_seamless_cube_map = non_seamless.non_seamless_cube_map == vk::TRUE;
         let cstr = |bytes: &[std::ffi::c_char]| {
             // SAFETY: the driver properties hold NUL-terminated strings within their arrays.
@@ -99,7 +93,6 @@ impl Supported {
             logic_op,
             geometry_shader,
             stippled_lines,
-            partially_bound,
             non_seamless_cube_map,
             driver_name: cstr(&driver.driver_name),
             driver_info: cstr(&driver.driver_info),
@@ -141,7 +134,6 @@ pub(crate) fn describe(
         logic_op: false,
         geometry_shader: false,
         stippled_lines: false,
-        partially_bound: false,
         non_seamless_cube_map: false,
         line_width_range: props.limits.line_width_range,
         point_size_range: props.limits.point_size_range,

@@ -306,11 +306,16 @@ impl SpecKey {
     /// A key with every constant fixed to `state`'s values. States that light the same way
     /// share a key: unlit states have one key, and what cannot matter is zeroed (the light
     /// model and light kinds without lights). A unit's environment, texgen and combine count
-    /// only while its `GL_TEXTURE_2D` is enabled; which units a pipeline samples
+    /// only while one of its targets is enabled; which units a pipeline samples
     /// ([`SpecConstant::TextureUnits`]) is the pipeline's to set.
     pub fn for_state(state: &FixedFunctionState) -> SpecKey {
         let mut values = [0; SPEC_CONSTANT_COUNT];
-        for (i, unit) in state.texture_units.iter().enumerate().filter(|(_, u)| u.enabled) {
+        for (i, unit) in state
+            .texture_units
+            .iter()
+            .enumerate()
+            .filter(|(_, u)| u.is_enabled())
+        {
             let [env, texgen, combine, crossbar] = SpecConstant::of_unit(i);
             values[env as usize] = unit.env_mode.code() as i32;
             values[texgen as usize] = unit.texgen_code() as i32;
