@@ -76,7 +76,7 @@ int main(void) {
         (fn)&ffvkCreateRenderer, (fn)&ffvkDraw, (fn)&ffvkEndDraws, (fn)&ffvkCreateTexture,
         (fn)&ffvkResultMessage, (fn)&ffvkPrimitiveIndices, (fn)&ffvkCreateTeapot,
         (fn)&ffvkPrimitiveIndicesRange, (fn)&ffvkViewport, (fn)&ffvkScissor,
-        (fn)&ffvkDeviceRequirements,
+        (fn)&ffvkDeviceRequirements, (fn)&ffvkActiveTexture, (fn)&ffvkMultiTexCoord4fv,
     };
     FfvkRendererCreateInfo info;
     FfvkDrawInfo draw;
