@@ -1213,10 +1213,10 @@ typedef struct FfvkRaster {
  `struct_size` to `sizeof(FfvkDrawInfo)`.
 
  It grows as `FfvkRendererCreateInfo` does: later headers append fields (each with its
- default), the library accepts every published version's size (this header's is version 3:
- version 2 appended `layout`, version 3 `raster_source`) and reads only what `struct_size`
- covers. `raster` never grows (`FfvkRaster` keeps its size): the rest of GL's raster state
- comes from the context (`raster_source`).
+ default), the library accepts every published version's size (this header's is version 4:
+ version 2 appended `layout`, version 3 `raster_source`, version 4 `texture1` ..
+ `texture3`) and reads only what `struct_size` covers. `raster` never grows (`FfvkRaster`
+ keeps its size): the rest of GL's raster state comes from the context (`raster_source`).
  */
 typedef struct FfvkDrawInfo {
   /*
@@ -1276,7 +1276,8 @@ typedef struct FfvkDrawInfo {
    */
   struct FfvkRaster raster;
   /*
-   The texture sampled while `GL_TEXTURE_2D` is enabled, or null.
+   Texture unit 0's texture (`GL_TEXTURE0`'s glBindTexture), sampled while unit 0's
+   `GL_TEXTURE_2D` is enabled, or null (GL's texture object 0: the unit textures nothing).
    */
   const struct FfvkTexture *texture;
   /*
@@ -1293,6 +1294,23 @@ typedef struct FfvkDrawInfo {
    `raster` is not read.
    */
   uint32_t raster_source;
+  /*
+   Version 4: texture unit 1's texture (`GL_TEXTURE1`'s glBindTexture), sampled while unit
+   1's `GL_TEXTURE_2D` is enabled (`ffvkActiveTexture(ctx, GL_TEXTURE1)`, `ffvkEnable`), or
+   null (the default, and what version 1 to 3 callers get): unit 1 textures nothing, as
+   GL's texture object 0. Its coordinates are the layout's `texcoord1`, or unit 1's current
+   ones. The units apply in order, each to the result of the one before it; a
+   `GL_COMBINE` source `GL_TEXTUREn` reads unit n's texel.
+   */
+  const struct FfvkTexture *texture1;
+  /*
+   Version 4: unit 2's texture, as `texture1` (null by default).
+   */
+  const struct FfvkTexture *texture2;
+  /*
+   Version 4: unit 3's texture, as `texture1` (null by default).
+   */
+  const struct FfvkTexture *texture3;
 } FfvkDrawInfo;
 
 /*
@@ -1319,8 +1337,10 @@ typedef struct FfvkMaterialAttribute {
 /*
  What `ffvkCreateVertexLayout` takes: a layout of GL's arrays. Set `struct_size` to
  `sizeof(FfvkVertexLayoutInfo)` (the struct grows as `FfvkDrawInfo` does: later versions
- append fields and read only what the caller's size covers). Formats are GL's: positions 2
- to 4 floats or `GL_SHORT`s (`R16G16_SSCALED`..), normals 3 floats or `GL_BYTE`s or
+ append fields and read only what the caller's size covers; this header's is version 2,
+ which appended `texcoord1` .. `texcoord3`, the arrays of the texture units past the first,
+ which glClientActiveTexture selects in GL). Formats are GL's: positions 2 to 4 floats or
+ `GL_SHORT`s (`R16G16_SSCALED`..), normals 3 floats or `GL_BYTE`s or
  `GL_SHORT`s (`R8G8B8_SNORM`, `R16G16B16_SNORM`, or their four-component forms with padding),
  colors 3 or 4 floats, signed or unsigned bytes or shorts, or `B8G8R8A8_UNORM`
  (`GL_BGRA`), texture coordinates 1 to 4 floats or shorts. Signed normalized normals and
@@ -1377,6 +1397,23 @@ typedef struct FfvkVertexLayoutInfo {
    How many `materials` (at most 10: five parameters, two faces).
    */
   uint32_t material_count;
+  /*
+   Version 2: texture unit 1's coordinates (glClientActiveTexture(`GL_TEXTURE1`) then
+   glTexCoordPointer), or null (the default, and what a version 1 caller gets): every
+   vertex takes unit 1's current coordinates (`ffvkMultiTexCoord4f(GL_TEXTURE1, …)`). Read
+   while unit 1 textures (its `GL_TEXTURE_2D` enabled with a texture in
+   `FfvkDrawInfo::texture1`), through unit 1's texture matrix and coordinate generation.
+   `texcoord` is unit 0's.
+   */
+  const struct FfvkAttribute *texcoord1;
+  /*
+   Version 2: unit 2's coordinates, as `texcoord1` (null by default: unit 2's current ones).
+   */
+  const struct FfvkAttribute *texcoord2;
+  /*
+   Version 2: unit 3's coordinates, as `texcoord1` (null by default: unit 3's current ones).
+   */
+  const struct FfvkAttribute *texcoord3;
 } FfvkVertexLayoutInfo;
 
 #ifdef __cplusplus
@@ -2755,8 +2792,8 @@ enum FfvkResult ffvkBeginDraws(struct FfvkRenderer *renderer, VkCommandBuffer cm
 
  `renderer` and `ctx` are null or live and used by this thread only; `draw` is null or
  points at the `struct_size` bytes of a draw info as the caller's header declares it; its
- buffers are the caller's live buffers of the renderer's device, and its texture is null or
- live until `ffvkEndDraws` returns.
+ buffers are the caller's live buffers of the renderer's device, and its textures are null
+ or live until `ffvkEndDraws` returns.
  */
 enum FfvkResult ffvkDraw(struct FfvkRenderer *renderer,
                          const struct FfvkContext *ctx,
@@ -2793,33 +2830,6 @@ enum FfvkResult ffvkEndDraws(struct FfvkRenderer *renderer);
  `renderer` is null or live and used by one thread at a time.
  */
 enum FfvkResult ffvkForgetBindings(struct FfvkRenderer *renderer);
-
-/*
- Makes a texture binding naming the caller's image view (2D, color, sampled as floats, in
- `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` whenever a draw that uses it executes) and
- sampler. ffvk owns the descriptor set; the view and sampler stay the caller's. Records
- nothing. Returns `FFVK_SUCCESS` with `*texture` set, or an error code with `*texture` null
- (`FFVK_ERROR_INVALID_ARGUMENT` for a null pointer or handle).
-
- # Safety
-
- `renderer` is null or live; `view` and `sampler` are live objects of its device and outlive
- every command buffer that draws with the texture; `texture` is null or writable.
- */
-enum FfvkResult ffvkCreateTexture(struct FfvkRenderer *renderer,
-                                  VkImageView view,
-                                  VkSampler sampler,
-                                  struct FfvkTexture **texture);
-
-/*
- Frees a texture binding; null is ignored. The caller first makes sure no submitted command
- buffer still uses it.
-
- # Safety
-
- `texture` is null or from `ffvkCreateTexture`, not yet destroyed.
- */
-void ffvkDestroyTexture(struct FfvkTexture *texture);
 
 /*
  Adds a vertex layout to `renderer` and writes its handle to `*layout`: draws name it in
@@ -2862,6 +2872,33 @@ void ffvkDestroyVertexLayout(struct FfvkVertexLayout *layout);
  `raster` is null (ignored) or writable.
  */
 void ffvkRasterDefaults(struct FfvkRaster *raster);
+
+/*
+ Makes a texture binding naming the caller's image view (2D, color, sampled as floats, in
+ `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` whenever a draw that uses it executes) and
+ sampler. ffvk owns the descriptor set; the view and sampler stay the caller's. Records
+ nothing. Returns `FFVK_SUCCESS` with `*texture` set, or an error code with `*texture` null
+ (`FFVK_ERROR_INVALID_ARGUMENT` for a null pointer or handle).
+
+ # Safety
+
+ `renderer` is null or live; `view` and `sampler` are live objects of its device and outlive
+ every command buffer that draws with the texture; `texture` is null or writable.
+ */
+enum FfvkResult ffvkCreateTexture(struct FfvkRenderer *renderer,
+                                  VkImageView view,
+                                  VkSampler sampler,
+                                  struct FfvkTexture **texture);
+
+/*
+ Frees a texture binding; null is ignored. The caller first makes sure no submitted command
+ buffer still uses it.
+
+ # Safety
+
+ `texture` is null or from `ffvkCreateTexture`, not yet destroyed.
+ */
+void ffvkDestroyTexture(struct FfvkTexture *texture);
 
 /*
  The message of the last call on this thread that returned an error code (or set a GL error

@@ -83,6 +83,7 @@ int main(void) {
     FfvkRaster raster;
     info.struct_size = (uint32_t)sizeof info;
     draw.struct_size = (uint32_t)sizeof draw;
+    draw.texture1 = NULL;
     ffvkRasterDefaults(&raster);
     return (int)(sizeof fns / sizeof fns[0]) + (GL_LIGHT0 == 0x4000 ? 0 : 1) + (int)raster.depth_write;
 }
