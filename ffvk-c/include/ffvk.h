@@ -366,6 +366,27 @@
 #ifndef GL_PREVIOUS
 #define GL_PREVIOUS 0x8578
 #endif
+#ifndef GL_TEXTURE0
+#define GL_TEXTURE0 0x84C0
+#endif
+#ifndef GL_TEXTURE1
+#define GL_TEXTURE1 0x84C1
+#endif
+#ifndef GL_TEXTURE2
+#define GL_TEXTURE2 0x84C2
+#endif
+#ifndef GL_TEXTURE3
+#define GL_TEXTURE3 0x84C3
+#endif
+#ifndef GL_ACTIVE_TEXTURE
+#define GL_ACTIVE_TEXTURE 0x84E0
+#endif
+#ifndef GL_MAX_TEXTURE_UNITS
+#define GL_MAX_TEXTURE_UNITS 0x84E2
+#endif
+#ifndef GL_MAX_TEXTURE_COORDS
+#define GL_MAX_TEXTURE_COORDS 0x8871
+#endif
 #ifndef GL_SRC0_RGB
 #define GL_SRC0_RGB 0x8580
 #endif
@@ -1192,10 +1213,10 @@ typedef struct FfvkRaster {
  `struct_size` to `sizeof(FfvkDrawInfo)`.
 
  It grows as `FfvkRendererCreateInfo` does: later headers append fields (each with its
- default), the library accepts every published version's size (this header's is version 3:
- version 2 appended `layout`, version 3 `raster_source`) and reads only what `struct_size`
- covers. `raster` never grows (`FfvkRaster` keeps its size): the rest of GL's raster state
- comes from the context (`raster_source`).
+ default), the library accepts every published version's size (this header's is version 4:
+ version 2 appended `layout`, version 3 `raster_source`, version 4 `texture1` ..
+ `texture3`) and reads only what `struct_size` covers. `raster` never grows (`FfvkRaster`
+ keeps its size): the rest of GL's raster state comes from the context (`raster_source`).
  */
 typedef struct FfvkDrawInfo {
   /*
@@ -1255,7 +1276,8 @@ typedef struct FfvkDrawInfo {
    */
   struct FfvkRaster raster;
   /*
-   The texture sampled while `GL_TEXTURE_2D` is enabled, or null.
+   Texture unit 0's texture (`GL_TEXTURE0`'s glBindTexture), sampled while unit 0's
+   `GL_TEXTURE_2D` is enabled, or null (GL's texture object 0: the unit textures nothing).
    */
   const struct FfvkTexture *texture;
   /*
@@ -1272,6 +1294,23 @@ typedef struct FfvkDrawInfo {
    `raster` is not read.
    */
   uint32_t raster_source;
+  /*
+   Version 4: texture unit 1's texture (`GL_TEXTURE1`'s glBindTexture), sampled while unit
+   1's `GL_TEXTURE_2D` is enabled (`ffvkActiveTexture(ctx, GL_TEXTURE1)`, `ffvkEnable`), or
+   null (the default, and what version 1 to 3 callers get): unit 1 textures nothing, as
+   GL's texture object 0. Its coordinates are the layout's `texcoord1`, or unit 1's current
+   ones. The units apply in order, each to the result of the one before it; a
+   `GL_COMBINE` source `GL_TEXTUREn` reads unit n's texel.
+   */
+  const struct FfvkTexture *texture1;
+  /*
+   Version 4: unit 2's texture, as `texture1` (null by default).
+   */
+  const struct FfvkTexture *texture2;
+  /*
+   Version 4: unit 3's texture, as `texture1` (null by default).
+   */
+  const struct FfvkTexture *texture3;
 } FfvkDrawInfo;
 
 /*
@@ -1298,8 +1337,10 @@ typedef struct FfvkMaterialAttribute {
 /*
  What `ffvkCreateVertexLayout` takes: a layout of GL's arrays. Set `struct_size` to
  `sizeof(FfvkVertexLayoutInfo)` (the struct grows as `FfvkDrawInfo` does: later versions
- append fields and read only what the caller's size covers). Formats are GL's: positions 2
- to 4 floats or `GL_SHORT`s (`R16G16_SSCALED`..), normals 3 floats or `GL_BYTE`s or
+ append fields and read only what the caller's size covers; this header's is version 2,
+ which appended `texcoord1` .. `texcoord3`, the arrays of the texture units past the first,
+ which glClientActiveTexture selects in GL). Formats are GL's: positions 2 to 4 floats or
+ `GL_SHORT`s (`R16G16_SSCALED`..), normals 3 floats or `GL_BYTE`s or
  `GL_SHORT`s (`R8G8B8_SNORM`, `R16G16B16_SNORM`, or their four-component forms with padding),
  colors 3 or 4 floats, signed or unsigned bytes or shorts, or `B8G8R8A8_UNORM`
  (`GL_BGRA`), texture coordinates 1 to 4 floats or shorts. Signed normalized normals and
@@ -1356,6 +1397,23 @@ typedef struct FfvkVertexLayoutInfo {
    How many `materials` (at most 10: five parameters, two faces).
    */
   uint32_t material_count;
+  /*
+   Version 2: texture unit 1's coordinates (glClientActiveTexture(`GL_TEXTURE1`) then
+   glTexCoordPointer), or null (the default, and what a version 1 caller gets): every
+   vertex takes unit 1's current coordinates (`ffvkMultiTexCoord4f(GL_TEXTURE1, …)`). Read
+   while unit 1 textures (its `GL_TEXTURE_2D` enabled with a texture in
+   `FfvkDrawInfo::texture1`), through unit 1's texture matrix and coordinate generation.
+   `texcoord` is unit 0's.
+   */
+  const struct FfvkAttribute *texcoord1;
+  /*
+   Version 2: unit 2's coordinates, as `texcoord1` (null by default: unit 2's current ones).
+   */
+  const struct FfvkAttribute *texcoord2;
+  /*
+   Version 2: unit 3's coordinates, as `texcoord1` (null by default: unit 3's current ones).
+   */
+  const struct FfvkAttribute *texcoord3;
 } FfvkVertexLayoutInfo;
 
 #ifdef __cplusplus
@@ -1410,8 +1468,10 @@ uint32_t ffvkGetError(struct FfvkContext *ctx);
  glEnable for `GL_LIGHTING`, `GL_LIGHTi` (i < 16), `GL_COLOR_MATERIAL`, `GL_NORMALIZE`,
  `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_COLOR_SUM`, `GL_FOG`, `GL_ALPHA_TEST`,
  `GL_CLIP_PLANEi` (i < 6), `GL_POINT_SPRITE`, `GL_TEXTURE_GEN_S`, `_T`, `_R`, `_Q` (the
- coordinate generated as `ffvkTexGeni` says, GL 2.1 §2.11.4), and the raster state's `GL_POLYGON_OFFSET_FILL`,
- `GL_POLYGON_OFFSET_LINE`, `GL_POLYGON_OFFSET_POINT`, `GL_LINE_STIPPLE`, `GL_POLYGON_STIPPLE`, `GL_STENCIL_TEST`,
+ coordinate generated as `ffvkTexGeni` says, GL 2.1 §2.11.4; `GL_TEXTURE_2D` and
+ `GL_TEXTURE_GEN_*` are the active unit's, `ffvkActiveTexture`), and the raster state's
+ `GL_POLYGON_OFFSET_FILL`, `GL_POLYGON_OFFSET_LINE`, `GL_POLYGON_OFFSET_POINT`,
+ `GL_LINE_STIPPLE`, `GL_POLYGON_STIPPLE`, `GL_STENCIL_TEST`,
  `GL_COLOR_LOGIC_OP`, `GL_BLEND`, `GL_DEPTH_TEST` and `GL_CULL_FACE` (which a draw takes with
  `FFVK_RASTER_SOURCE_CONTEXT`). Sets `GL_INVALID_ENUM` for any other cap (a layer keeps the
  rest of GL's capabilities itself). Enabling `GL_COLOR_MATERIAL` writes the
@@ -1421,8 +1481,7 @@ uint32_t ffvkGetError(struct FfvkContext *ctx);
 
  `ctx` is null or a live context used by one thread at a time.
  */
-void ffvkEnable(struct FfvkContext *ctx,
-                uint32_t cap_enum);
+void ffvkEnable(struct FfvkContext *ctx, uint32_t cap_enum);
 
 /*
  glDisable for the caps of `ffvkEnable`; `GL_INVALID_ENUM` for any other.
@@ -1572,20 +1631,24 @@ void ffvkLightModelf(struct FfvkContext *ctx, uint32_t pname, float param);
 void ffvkLightModeli(struct FfvkContext *ctx, uint32_t pname, int32_t param);
 
 /*
- glTexEnvfv on `GL_TEXTURE_ENV`: `GL_TEXTURE_ENV_MODE` (`GL_MODULATE`, `GL_REPLACE`,
- `GL_DECAL`, `GL_BLEND`, `GL_ADD`, `GL_COMBINE`), `GL_TEXTURE_ENV_COLOR` (4 values, clamped
- to [0, 1]), or one of `GL_COMBINE`'s (GL 2.1 §3.8.13, table 3.24): `GL_COMBINE_RGB` and
- `GL_COMBINE_ALPHA` (`GL_REPLACE`, `GL_MODULATE`, `GL_ADD`, `GL_ADD_SIGNED`,
- `GL_INTERPOLATE`, `GL_SUBTRACT`, and for RGB `GL_DOT3_RGB`, `GL_DOT3_RGBA`),
- `GL_SRC0_RGB` .. `GL_SRC2_RGB` and `GL_SRC0_ALPHA` .. `GL_SRC2_ALPHA` (`GL_TEXTURE`,
- `GL_CONSTANT`, `GL_PRIMARY_COLOR`, `GL_PREVIOUS`), `GL_OPERAND0_RGB` .. `GL_OPERAND2_RGB`
+ glTexEnvfv on `GL_TEXTURE_ENV`, for the active unit (`ffvkActiveTexture`):
+ `GL_TEXTURE_ENV_MODE` (`GL_MODULATE`, `GL_REPLACE`, `GL_DECAL`, `GL_BLEND`, `GL_ADD`,
+ `GL_COMBINE`), `GL_TEXTURE_ENV_COLOR` (4 values, clamped to [0, 1]), or one of
+ `GL_COMBINE`'s (GL 2.1 §3.8.13, table 3.24): `GL_COMBINE_RGB` and `GL_COMBINE_ALPHA`
+ (`GL_REPLACE`, `GL_MODULATE`, `GL_ADD`, `GL_ADD_SIGNED`, `GL_INTERPOLATE`, `GL_SUBTRACT`,
+ and for RGB `GL_DOT3_RGB`, `GL_DOT3_RGBA`), `GL_SRC0_RGB` .. `GL_SRC2_RGB` and
+ `GL_SRC0_ALPHA` .. `GL_SRC2_ALPHA` (`GL_TEXTURE`, `GL_CONSTANT`, `GL_PRIMARY_COLOR`,
+ `GL_PREVIOUS`, and `GL_TEXTURE0` .. `GL_TEXTURE3`: unit n's texel, sampled with unit n's
+ texture and coordinates, ARB_texture_env_crossbar; a unit that is not enabled with a
+ texture passes the previous color on), `GL_OPERAND0_RGB` .. `GL_OPERAND2_RGB`
  (`GL_SRC_COLOR`, `GL_ONE_MINUS_SRC_COLOR`, `GL_SRC_ALPHA`, `GL_ONE_MINUS_SRC_ALPHA`),
  `GL_OPERAND0_ALPHA` .. `GL_OPERAND2_ALPHA` (`GL_SRC_ALPHA`, `GL_ONE_MINUS_SRC_ALPHA`),
  `GL_RGB_SCALE` and `GL_ALPHA_SCALE` (1, 2 or 4); on `GL_POINT_SPRITE`: `GL_COORD_REPLACE`
  (zero is `GL_FALSE`, anything else `GL_TRUE`). Errors: `GL_INVALID_ENUM` for another
  target, `pname` or value (a dot product for `GL_COMBINE_ALPHA`, a color operand for an alpha
- argument, and `GL_TEXTUREn`, another unit's texel: ffvk has one unit); `GL_INVALID_VALUE`
- for a scale other than 1, 2 or 4, a value that is not finite or a null `params`.
+ argument, a `GL_TEXTUREn` source past the four units: `GL_TEXTURE4` and on, as Mesa refuses
+ one past its own); `GL_INVALID_VALUE` for a scale other than 1, 2 or 4, a value that is not
+ finite or a null `params`.
 
  # Safety
 
@@ -1656,9 +1719,9 @@ void ffvkNormal3f(struct FfvkContext *ctx, float x, float y, float z);
 void ffvkNormal3b(struct FfvkContext *ctx, int8_t x, int8_t y, int8_t z);
 
 /*
- glTexCoord4f: the current texture coordinates, every vertex's in a textured draw whose
- layout has no texture coordinate array; `GL_INVALID_VALUE` for a component that is not
- finite (ffvk's choice).
+ glTexCoord4f: unit 0's current texture coordinates (`ffvkMultiTexCoord4f(GL_TEXTURE0, …)`,
+ whatever the active unit), every vertex's in a textured draw whose layout has no texture
+ coordinate array; `GL_INVALID_VALUE` for a component that is not finite (ffvk's choice).
 
  # Safety
 
@@ -1780,7 +1843,8 @@ void ffvkLoadModelview(struct FfvkContext *ctx, const float *m);
 void ffvkLoadProjection(struct FfvkContext *ctx, const float *m);
 
 /*
- The current texture matrix (the `GL_TEXTURE` stack's top). Errors as `ffvkLoadModelview`.
+ The active unit's current texture matrix (its `GL_TEXTURE` stack's top; `ffvkActiveTexture`
+ selects the unit). Errors as `ffvkLoadModelview`.
 
  # Safety
 
@@ -2202,7 +2266,8 @@ void ffvkFramebufferHeight(struct FfvkContext *ctx, uint32_t height);
 void ffvkEdgeFlag(struct FfvkContext *ctx, uint8_t flag);
 
 /*
- glTexGeni: `GL_TEXTURE_GEN_MODE` of coordinate `coord` (`GL_S`, `GL_T`, `GL_R`, `GL_Q`):
+ glTexGeni: `GL_TEXTURE_GEN_MODE` of the active unit's (`ffvkActiveTexture`) coordinate
+ `coord` (`GL_S`, `GL_T`, `GL_R`, `GL_Q`):
  `GL_OBJECT_LINEAR`, `GL_EYE_LINEAR` (the initial mode), `GL_SPHERE_MAP` (S and T only),
  `GL_REFLECTION_MAP` or `GL_NORMAL_MAP` (S, T and R), used while the coordinate's
  `GL_TEXTURE_GEN_S` (`_T`, `_R`, `_Q`) is enabled (GL 2.1 §2.11.4). Errors:
@@ -2269,6 +2334,62 @@ void ffvkTexGeniv(struct FfvkContext *ctx, uint32_t coord, uint32_t pname, const
  As `ffvkTexGenfv`.
  */
 void ffvkTexGendv(struct FfvkContext *ctx, uint32_t coord, uint32_t pname, const double *params);
+
+/*
+ glActiveTexture: `GL_TEXTURE0` .. `GL_TEXTURE3` becomes the active unit (`GL_ACTIVE_TEXTURE`,
+ `GL_TEXTURE0` initially): the unit later `ffvkTexEnv*`, `ffvkTexGen*`,
+ `ffvkLoadTextureMatrix`, `GL_TEXTURE_2D`, `GL_TEXTURE_GEN_*` and `GL_COORD_REPLACE` act on,
+ and whose state `ffvkGetTexEnv*`, `ffvkGetTexGen*`, `ffvkIsEnabled` and
+ `GL_CURRENT_TEXTURE_COORDS` and `GL_TEXTURE_MATRIX` answer. Errors: `GL_INVALID_ENUM` for any
+ other value (`GL_TEXTURE4` and past: ffvk has four units, and no shader image units beyond
+ them), the active unit unchanged.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkActiveTexture(struct FfvkContext *ctx, uint32_t texture);
+
+/*
+ glMultiTexCoord4f: unit `target`'s (`GL_TEXTURE0` .. `GL_TEXTURE3`) current texture
+ coordinates (s, t, r, q), whatever the active unit: every vertex's for that unit in a draw
+ whose layout has no texture coordinate array for it (`ffvkTexCoord4f` is
+ `ffvkMultiTexCoord4f(GL_TEXTURE0, …)`). Initially (0, 0, 0, 1) on every unit. Errors:
+ `GL_INVALID_ENUM` for another target (GL 2.1 §2.7 leaves an invalid coordinate set
+ undefined: ffvk refuses it); `GL_INVALID_VALUE` for a component that is not finite (ffvk's
+ choice). Nothing changes on an error.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkMultiTexCoord4f(struct FfvkContext *ctx,
+                         uint32_t target,
+                         float s,
+                         float t,
+                         float r,
+                         float q);
+
+/*
+ glMultiTexCoord2f: `ffvkMultiTexCoord4f` with r = 0 and q = 1.
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time.
+ */
+void ffvkMultiTexCoord2f(struct FfvkContext *ctx, uint32_t target, float s, float t);
+
+/*
+ glMultiTexCoord4fv: `ffvkMultiTexCoord4f` with (s, t, r, q) read from `v`. Errors as
+ `ffvkMultiTexCoord4f`, and `GL_INVALID_VALUE` for a null or misaligned `v` (checked after
+ the target).
+
+ # Safety
+
+ `ctx` is null or a live context used by one thread at a time; `v` is null or points at four
+ floats.
+ */
+void ffvkMultiTexCoord4fv(struct FfvkContext *ctx, uint32_t target, const float *v);
 
 /*
  Newell's teapot tessellated at `level` (1 ..= 64 steps per patch side), the mesh ffvk's
@@ -2435,8 +2556,10 @@ void ffvkGetMaterialfv(struct FfvkContext *ctx, uint32_t face, uint32_t pname, f
 void ffvkGetMaterialiv(struct FfvkContext *ctx, uint32_t face, uint32_t pname, int32_t *params);
 
 /*
- glGetTexEnvfv on `GL_TEXTURE_ENV`: `GL_TEXTURE_ENV_MODE`, `GL_TEXTURE_ENV_COLOR` or one of
- `GL_COMBINE`'s names (`ffvkTexEnvfv`): its enum, or the scale (1, 2 or 4). Errors:
+ glGetTexEnvfv on `GL_TEXTURE_ENV`: the active unit's (`ffvkActiveTexture`)
+ `GL_TEXTURE_ENV_MODE`, `GL_TEXTURE_ENV_COLOR` or one of `GL_COMBINE`'s names
+ (`ffvkTexEnvfv`): its enum (a `GL_TEXTUREn` source as `GL_TEXTURE0 + n`), or the scale (1, 2
+ or 4); on `GL_POINT_SPRITE`, the active unit's `GL_COORD_REPLACE`. Errors:
  `GL_INVALID_ENUM` for another target or `pname`.
 
  # Safety
@@ -2459,7 +2582,7 @@ void ffvkGetTexEnvfv(struct FfvkContext *ctx, uint32_t target, uint32_t pname, f
 void ffvkGetTexEnviv(struct FfvkContext *ctx, uint32_t target, uint32_t pname, int32_t *params);
 
 /*
- glGetTexGenfv: coordinate `coord`'s (`GL_S`, `GL_T`, `GL_R`, `GL_Q`) `GL_TEXTURE_GEN_MODE`
+ glGetTexGenfv: the active unit's coordinate `coord`'s (`GL_S`, `GL_T`, `GL_R`, `GL_Q`) `GL_TEXTURE_GEN_MODE`
  (one value, the mode's enum), `GL_OBJECT_PLANE` or `GL_EYE_PLANE` (four values, as stored:
  the eye plane in eye space, as `ffvkTexGenfv` transformed it) (GL 2.1 §2.11.4, §6.1.3).
  Errors: `GL_INVALID_ENUM` for another `coord` or `pname`; `GL_INVALID_VALUE` for a null
@@ -2471,7 +2594,10 @@ void ffvkGetTexEnviv(struct FfvkContext *ctx, uint32_t target, uint32_t pname, i
  for as many values as the name has (4 for a plane). Nothing is written when an error is
  set.
  */
-void ffvkGetTexGenfv(struct FfvkContext *ctx, uint32_t coord, uint32_t pname, float *params);
+void ffvkGetTexGenfv(struct FfvkContext *ctx,
+                     uint32_t coord,
+                     uint32_t pname,
+                     float *params);
 
 /*
  glGetTexGeniv: `ffvkGetTexGenfv` as integers, a plane's values rounded to the nearest
@@ -2498,7 +2624,11 @@ void ffvkGetTexGendv(struct FfvkContext *ctx, uint32_t coord, uint32_t pname, do
  `GL_NORMALIZE`, `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_LIGHT_MODEL_AMBIENT`,
  `GL_LIGHT_MODEL_LOCAL_VIEWER`, `GL_LIGHT_MODEL_TWO_SIDE`, `GL_LIGHT_MODEL_COLOR_CONTROL`,
  `GL_SHADE_MODEL`, `GL_CURRENT_COLOR`, `GL_CURRENT_NORMAL`, `GL_CURRENT_TEXTURE_COORDS`,
- `GL_MAX_LIGHTS` (16) and the modelview, projection and texture matrices; and the stages
+ `GL_MAX_LIGHTS` (16) and the modelview, projection and texture matrices; the texture units:
+ `GL_ACTIVE_TEXTURE` (`GL_TEXTURE0` .. `GL_TEXTURE3`, `ffvkActiveTexture`),
+ `GL_MAX_TEXTURE_UNITS` and `GL_MAX_TEXTURE_COORDS` (4), and the active unit's
+ `GL_TEXTURE_2D`, `GL_TEXTURE_GEN_*`, `GL_CURRENT_TEXTURE_COORDS` and `GL_TEXTURE_MATRIX`;
+ and the stages
  around lighting: `GL_COLOR_SUM`, `GL_CURRENT_SECONDARY_COLOR`, `GL_FOG`, `GL_FOG_MODE`,
  `GL_FOG_DENSITY`, `GL_FOG_START`, `GL_FOG_END`, `GL_FOG_COLOR`, `GL_FOG_INDEX`,
  `GL_FOG_COORD_SRC`, `GL_FOG_HINT`, `GL_CURRENT_FOG_COORD`, `GL_ALPHA_TEST`,
@@ -2662,8 +2792,8 @@ enum FfvkResult ffvkBeginDraws(struct FfvkRenderer *renderer, VkCommandBuffer cm
 
  `renderer` and `ctx` are null or live and used by this thread only; `draw` is null or
  points at the `struct_size` bytes of a draw info as the caller's header declares it; its
- buffers are the caller's live buffers of the renderer's device, and its texture is null or
- live until `ffvkEndDraws` returns.
+ buffers are the caller's live buffers of the renderer's device, and its textures are null
+ or live until `ffvkEndDraws` returns.
  */
 enum FfvkResult ffvkDraw(struct FfvkRenderer *renderer,
                          const struct FfvkContext *ctx,
@@ -2700,33 +2830,6 @@ enum FfvkResult ffvkEndDraws(struct FfvkRenderer *renderer);
  `renderer` is null or live and used by one thread at a time.
  */
 enum FfvkResult ffvkForgetBindings(struct FfvkRenderer *renderer);
-
-/*
- Makes a texture binding naming the caller's image view (2D, color, sampled as floats, in
- `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` whenever a draw that uses it executes) and
- sampler. ffvk owns the descriptor set; the view and sampler stay the caller's. Records
- nothing. Returns `FFVK_SUCCESS` with `*texture` set, or an error code with `*texture` null
- (`FFVK_ERROR_INVALID_ARGUMENT` for a null pointer or handle).
-
- # Safety
-
- `renderer` is null or live; `view` and `sampler` are live objects of its device and outlive
- every command buffer that draws with the texture; `texture` is null or writable.
- */
-enum FfvkResult ffvkCreateTexture(struct FfvkRenderer *renderer,
-                                  VkImageView view,
-                                  VkSampler sampler,
-                                  struct FfvkTexture **texture);
-
-/*
- Frees a texture binding; null is ignored. The caller first makes sure no submitted command
- buffer still uses it.
-
- # Safety
-
- `texture` is null or from `ffvkCreateTexture`, not yet destroyed.
- */
-void ffvkDestroyTexture(struct FfvkTexture *texture);
 
 /*
  Adds a vertex layout to `renderer` and writes its handle to `*layout`: draws name it in
@@ -2769,6 +2872,33 @@ void ffvkDestroyVertexLayout(struct FfvkVertexLayout *layout);
  `raster` is null (ignored) or writable.
  */
 void ffvkRasterDefaults(struct FfvkRaster *raster);
+
+/*
+ Makes a texture binding naming the caller's image view (2D, color, sampled as floats, in
+ `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` whenever a draw that uses it executes) and
+ sampler. ffvk owns the descriptor set; the view and sampler stay the caller's. Records
+ nothing. Returns `FFVK_SUCCESS` with `*texture` set, or an error code with `*texture` null
+ (`FFVK_ERROR_INVALID_ARGUMENT` for a null pointer or handle).
+
+ # Safety
+
+ `renderer` is null or live; `view` and `sampler` are live objects of its device and outlive
+ every command buffer that draws with the texture; `texture` is null or writable.
+ */
+enum FfvkResult ffvkCreateTexture(struct FfvkRenderer *renderer,
+                                  VkImageView view,
+                                  VkSampler sampler,
+                                  struct FfvkTexture **texture);
+
+/*
+ Frees a texture binding; null is ignored. The caller first makes sure no submitted command
+ buffer still uses it.
+
+ # Safety
+
+ `texture` is null or from `ffvkCreateTexture`, not yet destroyed.
+ */
+void ffvkDestroyTexture(struct FfvkTexture *texture);
 
 /*
  The message of the last call on this thread that returned an error code (or set a GL error

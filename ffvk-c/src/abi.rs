@@ -4,8 +4,9 @@
 //!
 //! - A struct the API reads from the caller and that may grow starts with `uint32_t
 //!   struct_size`, which the caller sets to `sizeof` of the struct as its `ffvk.h` declared it.
-//!   Today these are `FfvkRendererCreateInfo`, `FfvkDrawInfo` (version 2 added `layout`, version 3 `raster_source`) and
-//!   `FfvkVertexLayoutInfo`.
+//!   Today these are `FfvkRendererCreateInfo`, `FfvkDrawInfo` (version 2 added `layout`, version 3 `raster_source`,
+//!   version 4 `texture1` .. `texture3`) and `FfvkVertexLayoutInfo` (version 2 added `texcoord1` ..
+//!   `texcoord3`).
 //! - Such a struct grows only at its end: a new version of the header appends fields and never
 //!   removes, reorders or retypes one. Each published header that changed a struct's size is a
 //!   version of that struct, numbered from 1 (the first header: every struct is at version 1).

@@ -127,6 +127,13 @@ gl_enums! {
     GL_CONSTANT = 0x8576,
     GL_PRIMARY_COLOR = 0x8577,
     GL_PREVIOUS = 0x8578,
+    GL_TEXTURE0 = 0x84C0,
+    GL_TEXTURE1 = 0x84C1,
+    GL_TEXTURE2 = 0x84C2,
+    GL_TEXTURE3 = 0x84C3,
+    GL_ACTIVE_TEXTURE = 0x84E0,
+    GL_MAX_TEXTURE_UNITS = 0x84E2,
+    GL_MAX_TEXTURE_COORDS = 0x8871,
     GL_SRC0_RGB = 0x8580,
     GL_SRC1_RGB = 0x8581,
     GL_SRC2_RGB = 0x8582,
@@ -298,8 +305,12 @@ const MESSAGE_NAMES: &[(&str, u32)] = &[
     ("GL_TEXTURE_COORD_ARRAY", 0x8078),
     ("GL_MULTISAMPLE", 0x809D),
     ("GL_TEXTURE_CUBE_MAP", 0x8513),
-    ("GL_TEXTURE0", 0x84C0),
+    ("GL_CLIENT_ACTIVE_TEXTURE", 0x84E1),
 ];
+
+/// `GL_TEXTURE0` .. `GL_TEXTURE31`, consecutive in `<GL/gl.h>`: messages name a unit past the
+/// four the header defines (`GL_TEXTURE4 (0x84C4)`) by its GL name too.
+const GL_TEXTURE_UNITS: std::ops::Range<u32> = 0x84C0..0x84E0;
 
 /// Every GL name a message may print with its value: the API's enums and the names of values
 /// it refuses (`MESSAGE_NAMES`). The tests check each against `<GL/gl.h>`.
@@ -326,6 +337,9 @@ const MODES: [&str; 10] = [
 /// booleans, primitive modes and blend factors share) are never named: a primitive mode is
 /// shown by [`mode_name`].
 pub(crate) fn enum_name(value: u32) -> String {
+    if GL_TEXTURE_UNITS.contains(&value) {
+        return format!("GL_TEXTURE{} (0x{value:04X})", value - GL_TEXTURE_UNITS.start);
+    }
     let name = (value >= 0x0100)
         .then(|| message_names().find(|&(_, v)| v == value))
         .flatten();

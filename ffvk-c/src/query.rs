@@ -6,12 +6,12 @@
 use ffvk::gl::state::{
     Cap, ColorControl, ColorMaterialMode, Face, Light, Material, SpriteOrigin, MAX_LIGHTS,
 };
-use ffvk::gl::texture::{TexEnvMode, TexGenMode};
+use ffvk::gl::texture::{TexEnvMode, TexGenMode, MAX_TEXTURE_UNITS};
 
 use crate::enums::*;
 use crate::gl::{
-    combine_argument, face, gl_enum, invalid_enum, light_index, raster_cap, texgen_coord, with_context,
-    Argument, FfvkContext, GlResult, ALPHA_OPERANDS, FUNCS, LIGHT_PNAMES, RGB_OPERANDS, SOURCES,
+    combine_argument, face, gl_enum, invalid_enum, light_index, raster_cap, source_enum, texgen_coord,
+    with_context, Argument, FfvkContext, GlResult, ALPHA_OPERANDS, FUNCS, LIGHT_PNAMES, RGB_OPERANDS,
     TEXGEN_PNAMES, TEX_ENV_PNAMES,
 };
 
@@ -180,8 +180,8 @@ fn tex_env_answer(f: &str, c: &FfvkContext, target: u32, pname: u32) -> GlResult
         GL_ALPHA_SCALE => Answer::Floats(vec![combine.alpha_scale]),
         _ => Answer::Int(
             match combine_argument(pname) {
-                Some((Argument::SourceRgb, n)) => gl_enum(&SOURCES, combine.rgb_sources[n]),
-                Some((Argument::SourceAlpha, n)) => gl_enum(&SOURCES, combine.alpha_sources[n]),
+                Some((Argument::SourceRgb, n)) => source_enum(combine.rgb_sources[n]),
+                Some((Argument::SourceAlpha, n)) => source_enum(combine.alpha_sources[n]),
                 Some((Argument::OperandRgb, n)) => gl_enum(&RGB_OPERANDS, combine.rgb_operands[n]),
                 Some((Argument::OperandAlpha, n)) => gl_enum(&ALPHA_OPERANDS, combine.alpha_operands[n]),
                 None => return Err(invalid_enum(f, "pname", pname, TEX_ENV_PNAMES)),
@@ -298,6 +298,8 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
         GL_MAX_CLIP_PLANES => Answer::Int(ffvk::gl::state::MAX_CLIP_PLANES as i64),
         GL_CURRENT_TEXTURE_COORDS => Answer::Floats(l.current_texcoords[c.gl.active_unit].to_array().to_vec()),
         GL_MAX_LIGHTS => Answer::Int(MAX_LIGHTS as i64),
+        GL_ACTIVE_TEXTURE => Answer::Int(i64::from(GL_TEXTURE0) + c.gl.active_unit as i64),
+        GL_MAX_TEXTURE_UNITS | GL_MAX_TEXTURE_COORDS => Answer::Int(MAX_TEXTURE_UNITS as i64),
         GL_MODELVIEW_MATRIX => Answer::Floats(c.gl.modelview.to_cols_array().to_vec()),
         GL_PROJECTION_MATRIX => Answer::Floats(c.projection.to_cols_array().to_vec()),
         GL_TEXTURE_MATRIX => Answer::Floats(l.texture_units[c.gl.active_unit].matrix.to_cols_array().to_vec()),
@@ -306,7 +308,7 @@ fn get_answer(f: &str, c: &FfvkContext, pname: u32) -> GlResult<Answer> {
                 f,
                 "pname",
                 pname,
-                "a state name: GL_LIGHTING, GL_LIGHTi, GL_COLOR_MATERIAL(_FACE, _PARAMETER), GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_LIGHT_MODEL_*, GL_SHADE_MODEL, GL_CURRENT_COLOR, GL_CURRENT_NORMAL, GL_CURRENT_TEXTURE_COORDS, GL_CURRENT_SECONDARY_COLOR, GL_COLOR_SUM, GL_ALPHA_TEST(_FUNC, _REF), GL_FOG(_MODE, _DENSITY, _START, _END, _COLOR, _COORD_SRC, _HINT, _INDEX), GL_CURRENT_FOG_COORD, GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX, GL_POINT_FADE_THRESHOLD_SIZE, GL_POINT_DISTANCE_ATTENUATION, GL_POINT_SPRITE(_COORD_ORIGIN), GL_CLIP_PLANEi, GL_TEXTURE_GEN_S, _T, _R, _Q, GL_MAX_CLIP_PLANES, GL_MAX_LIGHTS, GL_{MODELVIEW,PROJECTION,TEXTURE}_MATRIX or a raster state name (GL_POLYGON_MODE, GL_POLYGON_OFFSET_*, GL_EDGE_FLAG, GL_LINE_STIPPLE*, GL_POLYGON_STIPPLE, GL_STENCIL_*, GL_DEPTH_*, GL_COLOR_WRITEMASK, GL_BLEND*, GL_COLOR_LOGIC_OP, GL_LOGIC_OP_MODE, GL_CULL_FACE(_MODE), GL_FRONT_FACE, GL_POINT_SIZE, GL_LINE_WIDTH)",
+                "a state name: GL_LIGHTING, GL_LIGHTi, GL_COLOR_MATERIAL(_FACE, _PARAMETER), GL_NORMALIZE, GL_RESCALE_NORMAL, GL_TEXTURE_2D, GL_LIGHT_MODEL_*, GL_SHADE_MODEL, GL_CURRENT_COLOR, GL_CURRENT_NORMAL, GL_CURRENT_TEXTURE_COORDS, GL_CURRENT_SECONDARY_COLOR, GL_COLOR_SUM, GL_ALPHA_TEST(_FUNC, _REF), GL_FOG(_MODE, _DENSITY, _START, _END, _COLOR, _COORD_SRC, _HINT, _INDEX), GL_CURRENT_FOG_COORD, GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX, GL_POINT_FADE_THRESHOLD_SIZE, GL_POINT_DISTANCE_ATTENUATION, GL_POINT_SPRITE(_COORD_ORIGIN), GL_CLIP_PLANEi, GL_TEXTURE_GEN_S, _T, _R, _Q, GL_MAX_CLIP_PLANES, GL_MAX_LIGHTS, GL_ACTIVE_TEXTURE, GL_MAX_TEXTURE_UNITS, GL_MAX_TEXTURE_COORDS, GL_{MODELVIEW,PROJECTION,TEXTURE}_MATRIX or a raster state name (GL_POLYGON_MODE, GL_POLYGON_OFFSET_*, GL_EDGE_FLAG, GL_LINE_STIPPLE*, GL_POLYGON_STIPPLE, GL_STENCIL_*, GL_DEPTH_*, GL_COLOR_WRITEMASK, GL_BLEND*, GL_COLOR_LOGIC_OP, GL_LOGIC_OP_MODE, GL_CULL_FACE(_MODE), GL_FRONT_FACE, GL_POINT_SIZE, GL_LINE_WIDTH)",
             ))
         }
     })
@@ -417,8 +419,10 @@ pub unsafe extern "C" fn ffvkGetMaterialiv(ctx: *mut FfvkContext, face: u32, pna
     })
 }
 
-/// glGetTexEnvfv on `GL_TEXTURE_ENV`: `GL_TEXTURE_ENV_MODE`, `GL_TEXTURE_ENV_COLOR` or one of
-/// `GL_COMBINE`'s names (`ffvkTexEnvfv`): its enum, or the scale (1, 2 or 4). Errors:
+/// glGetTexEnvfv on `GL_TEXTURE_ENV`: the active unit's (`ffvkActiveTexture`)
+/// `GL_TEXTURE_ENV_MODE`, `GL_TEXTURE_ENV_COLOR` or one of `GL_COMBINE`'s names
+/// (`ffvkTexEnvfv`): its enum (a `GL_TEXTUREn` source as `GL_TEXTURE0 + n`), or the scale (1, 2
+/// or 4); on `GL_POINT_SPRITE`, the active unit's `GL_COORD_REPLACE`. Errors:
 /// `GL_INVALID_ENUM` for another target or `pname`.
 ///
 /// # Safety
@@ -453,7 +457,7 @@ pub unsafe extern "C" fn ffvkGetTexEnviv(ctx: *mut FfvkContext, target: u32, pna
     })
 }
 
-/// glGetTexGenfv: coordinate `coord`'s (`GL_S`, `GL_T`, `GL_R`, `GL_Q`) `GL_TEXTURE_GEN_MODE`
+/// glGetTexGenfv: the active unit's coordinate `coord`'s (`GL_S`, `GL_T`, `GL_R`, `GL_Q`) `GL_TEXTURE_GEN_MODE`
 /// (one value, the mode's enum), `GL_OBJECT_PLANE` or `GL_EYE_PLANE` (four values, as stored:
 /// the eye plane in eye space, as `ffvkTexGenfv` transformed it) (GL 2.1 §2.11.4, §6.1.3).
 /// Errors: `GL_INVALID_ENUM` for another `coord` or `pname`; `GL_INVALID_VALUE` for a null
@@ -511,7 +515,11 @@ pub unsafe extern "C" fn ffvkGetTexGendv(ctx: *mut FfvkContext, coord: u32, pnam
 /// `GL_NORMALIZE`, `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_LIGHT_MODEL_AMBIENT`,
 /// `GL_LIGHT_MODEL_LOCAL_VIEWER`, `GL_LIGHT_MODEL_TWO_SIDE`, `GL_LIGHT_MODEL_COLOR_CONTROL`,
 /// `GL_SHADE_MODEL`, `GL_CURRENT_COLOR`, `GL_CURRENT_NORMAL`, `GL_CURRENT_TEXTURE_COORDS`,
-/// `GL_MAX_LIGHTS` (16) and the modelview, projection and texture matrices; and the stages
+/// `GL_MAX_LIGHTS` (16) and the modelview, projection and texture matrices; the texture units:
+/// `GL_ACTIVE_TEXTURE` (`GL_TEXTURE0` .. `GL_TEXTURE3`, `ffvkActiveTexture`),
+/// `GL_MAX_TEXTURE_UNITS` and `GL_MAX_TEXTURE_COORDS` (4), and the active unit's
+/// `GL_TEXTURE_2D`, `GL_TEXTURE_GEN_*`, `GL_CURRENT_TEXTURE_COORDS` and `GL_TEXTURE_MATRIX`;
+/// and the stages
 /// around lighting: `GL_COLOR_SUM`, `GL_CURRENT_SECONDARY_COLOR`, `GL_FOG`, `GL_FOG_MODE`,
 /// `GL_FOG_DENSITY`, `GL_FOG_START`, `GL_FOG_END`, `GL_FOG_COLOR`, `GL_FOG_INDEX`,
 /// `GL_FOG_COORD_SRC`, `GL_FOG_HINT`, `GL_CURRENT_FOG_COORD`, `GL_ALPHA_TEST`,

@@ -12,15 +12,16 @@ use std::sync::Arc;
 
 use ffvk::ash::{self, vk};
 use ffvk::gl::state::FixedFunctionState;
+use ffvk::gl::texture::MAX_TEXTURE_UNITS;
 use ffvk::glam::Mat4;
 use ffvk::{
-    Attribute, Geometry, Lighting, LightingOptions, LitDraw, RasterState, StagedDraw, Target, TextureBinding,
-    VertexInput,
+    Attribute, Geometry, Lighting, LightingOptions, LitDraw, RasterState, StagedDraw, Target, VertexInput,
 };
 
 mod features;
 pub mod layout;
 mod raster;
+mod texture;
 mod topology;
 mod versions;
 
@@ -32,6 +33,7 @@ pub use features::{
 };
 pub(crate) use raster::raster_defaults;
 pub use raster::{ffvkRasterDefaults, FfvkRaster, FFVK_RASTER_SOURCE_CONTEXT, FFVK_RASTER_SOURCE_DRAW};
+pub use texture::{ffvkCreateTexture, ffvkDestroyTexture, FfvkTexture};
 use topology::topology;
 
 use crate::gl::FfvkContext;
@@ -141,10 +143,10 @@ pub struct FfvkRendererCreateInfo {
 /// `struct_size` to `sizeof(FfvkDrawInfo)`.
 ///
 /// It grows as `FfvkRendererCreateInfo` does: later headers append fields (each with its
-/// default), the library accepts every published version's size (this header's is version 3:
-/// version 2 appended `layout`, version 3 `raster_source`) and reads only what `struct_size`
-/// covers. `raster` never grows (`FfvkRaster` keeps its size): the rest of GL's raster state
-/// comes from the context (`raster_source`).
+/// default), the library accepts every published version's size (this header's is version 4:
+/// version 2 appended `layout`, version 3 `raster_source`, version 4 `texture1` ..
+/// `texture3`) and reads only what `struct_size` covers. `raster` never grows (`FfvkRaster`
+/// keeps its size): the rest of GL's raster state comes from the context (`raster_source`).
 #[repr(C)]
 pub struct FfvkDrawInfo {
     /// `sizeof(FfvkDrawInfo)`.
@@ -177,7 +179,8 @@ pub struct FfvkDrawInfo {
     pub primitive_restart: u8,
     /// The raster state.
     pub raster: FfvkRaster,
-    /// The texture sampled while `GL_TEXTURE_2D` is enabled, or null.
+    /// Texture unit 0's texture (`GL_TEXTURE0`'s glBindTexture), sampled while unit 0's
+    /// `GL_TEXTURE_2D` is enabled, or null (GL's texture object 0: the unit textures nothing).
     pub texture: *const FfvkTexture,
     /// Version 2: the vertex layout the buffers follow (`ffvkCreateVertexLayout`), or null
     /// (the default, and what a version 1 caller gets): the create info's.
@@ -189,11 +192,17 @@ pub struct FfvkDrawInfo {
     /// stencil and depth tests, blending, blend color, logic op, color and depth masks);
     /// `raster` is not read.
     pub raster_source: u32,
-}
-
-/// A descriptor set naming the caller's image view and sampler (`ffvkCreateTexture`).
-pub struct FfvkTexture {
-    binding: TextureBinding,
+    /// Version 4: texture unit 1's texture (`GL_TEXTURE1`'s glBindTexture), sampled while unit
+    /// 1's `GL_TEXTURE_2D` is enabled (`ffvkActiveTexture(ctx, GL_TEXTURE1)`, `ffvkEnable`), or
+    /// null (the default, and what version 1 to 3 callers get): unit 1 textures nothing, as
+    /// GL's texture object 0. Its coordinates are the layout's `texcoord1`, or unit 1's current
+    /// ones. The units apply in order, each to the result of the one before it; a
+    /// `GL_COMBINE` source `GL_TEXTUREn` reads unit n's texel.
+    pub texture1: *const FfvkTexture,
+    /// Version 4: unit 2's texture, as `texture1` (null by default).
+    pub texture2: *const FfvkTexture,
+    /// Version 4: unit 3's texture, as `texture1` (null by default).
+    pub texture3: *const FfvkTexture,
 }
 
 /// One draw waiting for `ffvkEndDraws`.
@@ -205,7 +214,7 @@ struct Pending {
     raster: RasterState,
     buffers: Vec<(vk::Buffer, u64)>,
     geometry: Geometry,
-    texture: *const FfvkTexture,
+    textures: [*const FfvkTexture; MAX_TEXTURE_UNITS],
 }
 
 /// What `ffvkBeginDraws` opened.
@@ -533,8 +542,8 @@ pub unsafe extern "C" fn ffvkBeginDraws(
 ///
 /// `renderer` and `ctx` are null or live and used by this thread only; `draw` is null or
 /// points at the `struct_size` bytes of a draw info as the caller's header declares it; its
-/// buffers are the caller's live buffers of the renderer's device, and its texture is null or
-/// live until `ffvkEndDraws` returns.
+/// buffers are the caller's live buffers of the renderer's device, and its textures are null
+/// or live until `ffvkEndDraws` returns.
 #[no_mangle]
 pub unsafe extern "C" fn ffvkDraw(
     renderer: *mut FfvkRenderer,
@@ -560,12 +569,7 @@ pub unsafe extern "C" fn ffvkDraw(
             // a draw info.
             let draw = unsafe { crate::abi::read(F, draw) }?;
             let topology = topology(draw.mode)?;
-            if misaligned(draw.texture) {
-                return Err(invalid(format!(
-                    "{F}: texture {:p} is not aligned: expected a texture from ffvkCreateTexture or null",
-                    draw.texture
-                )));
-            }
+            let textures = texture::of_draw(F, &draw)?;
             // SAFETY: the caller's contract: the layout is null or live.
             let (layout, binding_count) = unsafe { layout::of_draw(F, draw.layout, binding_count) }?;
             if draw.vertex_buffer_count != binding_count {
@@ -606,8 +610,8 @@ pub unsafe extern "C" fn ffvkDraw(
             .with_topology(topology);
             let buffers: Vec<(vk::Buffer, u64)> = buffers.iter().copied().zip(offsets).collect();
             let raster = raster::of_draw(F, &draw, ctx)?;
-            // SAFETY: checked aligned above; the caller's contract: null or a live texture.
-            let texture = unsafe { draw.texture.as_ref() }.map(|t| &t.binding);
+            // SAFETY: checked aligned above; the caller's contract: null or live textures.
+            let bound = unsafe { texture::bindings(&textures) };
             let lit = LitDraw::new(
                 &ctx.gl.lighting,
                 ctx.gl.modelview,
@@ -616,7 +620,7 @@ pub unsafe extern "C" fn ffvkDraw(
                 geometry,
             )
             .with_raster(raster)
-            .with_texture(texture)
+            .with_textures(bound)
             .with_layout(layout);
             // Checked and written into the slot now, so that a bad draw is refused alone.
             let staged = lighting
@@ -637,7 +641,7 @@ pub unsafe extern "C" fn ffvkDraw(
                 raster,
                 buffers,
                 geometry,
-                texture: draw.texture,
+                textures,
             });
             recording.staged.push(staged);
             Ok(())
@@ -672,8 +676,9 @@ pub unsafe extern "C" fn ffvkEndDraws(renderer: *mut FfvkRenderer) -> FfvkResult
         };
         let mut draws = Vec::with_capacity(recording.draws.len());
         for d in &recording.draws {
-            // SAFETY: the caller's contract: the texture is null or live until this returns.
-            let texture = unsafe { d.texture.as_ref() }.map(|t| &t.binding);
+            // SAFETY: the caller's contract: the textures are null or live until this returns
+            // (ffvkDraw checked them aligned).
+            let bound = unsafe { texture::bindings(&d.textures) };
             draws.push(
                 LitDraw::new(
                     &recording.states[d.state],
@@ -683,7 +688,7 @@ pub unsafe extern "C" fn ffvkEndDraws(renderer: *mut FfvkRenderer) -> FfvkResult
                     d.geometry,
                 )
                 .with_raster(d.raster)
-                .with_texture(texture)
+                .with_textures(bound)
                 .with_layout(d.layout),
             );
         }
@@ -715,58 +720,4 @@ pub unsafe extern "C" fn ffvkForgetBindings(renderer: *mut FfvkRenderer) -> Ffvk
         r.lighting.forget_bindings();
         FfvkResult::FFVK_SUCCESS
     })
-}
-
-/// Makes a texture binding naming the caller's image view (2D, color, sampled as floats, in
-/// `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` whenever a draw that uses it executes) and
-/// sampler. ffvk owns the descriptor set; the view and sampler stay the caller's. Records
-/// nothing. Returns `FFVK_SUCCESS` with `*texture` set, or an error code with `*texture` null
-/// (`FFVK_ERROR_INVALID_ARGUMENT` for a null pointer or handle).
-///
-/// # Safety
-///
-/// `renderer` is null or live; `view` and `sampler` are live objects of its device and outlive
-/// every command buffer that draws with the texture; `texture` is null or writable.
-#[no_mangle]
-pub unsafe extern "C" fn ffvkCreateTexture(
-    renderer: *mut FfvkRenderer,
-    view: VkImageView,
-    sampler: VkSampler,
-    texture: *mut *mut FfvkTexture,
-) -> FfvkResult {
-    const F: &str = "ffvkCreateTexture";
-    if !texture.is_null() && !misaligned(texture) {
-        // SAFETY: checked non-null and aligned; the caller's contract makes it writable. Null
-        // until a texture is made, so that a caller's cleanup after an error frees nothing.
-        unsafe { *texture = std::ptr::null_mut() };
-    }
-    with_renderer(renderer, F, |r| {
-        if let Err(code) = check_ptr(F, "texture", texture, "where to write the texture") {
-            return code;
-        }
-        if view == vk::ImageView::null() || sampler == vk::Sampler::null() {
-            return invalid("ffvkCreateTexture: view or sampler is VK_NULL_HANDLE: expected the caller's image view and sampler");
-        }
-        // SAFETY: the caller's contract on view and sampler.
-        match unsafe { r.lighting.bind_texture(view, sampler) } {
-            Ok(binding) => {
-                // SAFETY: checked non-null.
-                unsafe { *texture = Box::into_raw(Box::new(FfvkTexture { binding })) };
-                FfvkResult::FFVK_SUCCESS
-            }
-            Err(e) => from_error("ffvkCreateTexture", &e),
-        }
-    })
-}
-
-/// Frees a texture binding; null is ignored. The caller first makes sure no submitted command
-/// buffer still uses it.
-///
-/// # Safety
-///
-/// `texture` is null or from `ffvkCreateTexture`, not yet destroyed.
-#[no_mangle]
-pub unsafe extern "C" fn ffvkDestroyTexture(texture: *mut FfvkTexture) {
-    // SAFETY: the caller's contract: made by this API, destroyed once.
-    unsafe { crate::result::free(texture) }
 }

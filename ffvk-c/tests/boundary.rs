@@ -102,8 +102,14 @@ const DOT3_RGBA: u32 = 0x86AF;
 const TEXTURE: u32 = 0x1702;
 const SRC_COLOR: u32 = 0x0300;
 const ONE_MINUS_SRC_COLOR: u32 = 0x0301;
-/// GL_TEXTURE0 (ARB_texture_env_crossbar): a `GL_COMBINE` source ffvk's one unit does not take.
+/// GL_TEXTURE0: the first texture unit (glActiveTexture, glMultiTexCoord), and unit 0's texel
+/// as a `GL_COMBINE` source (ARB_texture_env_crossbar); ffvk has four units.
 const TEXTURE0: u32 = 0x84C0;
+const ACTIVE_TEXTURE: u32 = 0x84E0;
+const MAX_TEXTURE_UNITS: u32 = 0x84E2;
+const MAX_TEXTURE_COORDS: u32 = 0x8871;
+const POINT_SPRITE: u32 = 0x8861;
+const COORD_REPLACE: u32 = 0x8862;
 const S: u32 = 0x2000;
 const T: u32 = 0x2001;
 const R: u32 = 0x2002;
@@ -288,6 +294,9 @@ const GET_NAMES: &[u32] = &[
     MODELVIEW_MATRIX,
     PROJECTION_MATRIX,
     TEXTURE_MATRIX,
+    ACTIVE_TEXTURE,
+    MAX_TEXTURE_UNITS,
+    MAX_TEXTURE_COORDS,
 ];
 const LIGHT_PNAMES: [u32; 10] = [
     AMBIENT,
@@ -398,6 +407,38 @@ impl Ctx {
             ffvkFrontFace(x, 0x0900);
             ffvkPointSize(x, 3.0);
             ffvkLineWidth(x, 2.0);
+            // Units 1 to 3 away from their defaults too, each its own way; unit 0 active again.
+            for unit in 1..4u32 {
+                let k = unit as f32;
+                ffvkActiveTexture(x, TEXTURE0 + unit);
+                ffvkTexEnvi(
+                    x,
+                    TEXTURE_ENV,
+                    TEXTURE_ENV_MODE,
+                    [0, 0x0104, 0x8570, 0x0BE2][unit as usize],
+                );
+                ffvkTexEnvfv(
+                    x,
+                    TEXTURE_ENV,
+                    TEXTURE_ENV_COLOR,
+                    [0.1 * k, 0.2, 0.3, 0.4].as_ptr(),
+                );
+                ffvkTexEnvi(x, TEXTURE_ENV, SRC0_RGB + unit - 1, (TEXTURE0 + 3 - unit) as i32);
+                ffvkTexEnvf(x, TEXTURE_ENV, ALPHA_SCALE, [1.0, 2.0, 4.0, 2.0][unit as usize]);
+                ffvkEnable(x, if unit == 2 { TEXTURE_GEN_Q } else { TEXTURE_2D });
+                ffvkTexGeni(
+                    x,
+                    S,
+                    TEXTURE_GEN_MODE,
+                    [0, SPHERE_MAP, NORMAL_MAP, EYE_LINEAR][unit as usize] as i32,
+                );
+                ffvkTexGenfv(x, T, OBJECT_PLANE, [k, 0.5, -k, 2.0].as_ptr());
+                ffvkLoadTextureMatrix(x, if unit == 1 { shear.as_ptr() } else { scale.as_ptr() });
+                ffvkTexEnvi(x, POINT_SPRITE, COORD_REPLACE, (unit % 2) as i32);
+                ffvkMultiTexCoord4f(x, TEXTURE0 + unit, k, -k, 0.5 * k, 2.0);
+            }
+            ffvkActiveTexture(x, TEXTURE0);
+            ffvkTexCoord4f(x, 0.25, 0.75, -1.0, 1.0);
             assert_eq!(
                 ffvkGetError(x),
                 NO_ERROR,
@@ -481,6 +522,39 @@ impl Ctx {
                 let on = ffvkIsEnabled(x, cap) as f32;
                 take(format!("IsEnabled(0x{cap:04X})"), &|b| b.write(on));
             }
+            // Every unit's state, each made active in turn, then the active unit as it was.
+            let mut active = 0;
+            ffvkGetIntegerv(x, ACTIVE_TEXTURE, &mut active);
+            for unit in 0..4 {
+                ffvkActiveTexture(x, TEXTURE0 + unit);
+                for p in [TEXTURE_MATRIX, CURRENT_TEXTURE_COORDS, TEXTURE_2D] {
+                    take(format!("unit {unit}: GetFloatv(0x{p:04X})"), &|b| {
+                        ffvkGetFloatv(x, p, b)
+                    });
+                }
+                let env = [TEXTURE_ENV_MODE, TEXTURE_ENV_COLOR, COMBINE_RGB, ALPHA_SCALE];
+                for p in env.into_iter().chain(SRC0_RGB..SRC0_RGB + 3) {
+                    take(format!("unit {unit}: GetTexEnvfv(0x{p:04X})"), &|b| {
+                        ffvkGetTexEnvfv(x, TEXTURE_ENV, p, b)
+                    });
+                }
+                take(format!("unit {unit}: GL_COORD_REPLACE"), &|b| {
+                    ffvkGetTexEnvfv(x, POINT_SPRITE, COORD_REPLACE, b)
+                });
+                for coord in [S, T, Q] {
+                    for p in [TEXTURE_GEN_MODE, OBJECT_PLANE] {
+                        take(
+                            format!("unit {unit}: GetTexGenfv(0x{coord:04X}, 0x{p:04X})"),
+                            &|b| ffvkGetTexGenfv(x, coord, p, b),
+                        );
+                    }
+                }
+                for cap in TEXTURE_GEN_S..=TEXTURE_GEN_Q {
+                    let on = ffvkIsEnabled(x, cap) as f32;
+                    take(format!("unit {unit}: IsEnabled(0x{cap:04X})"), &|b| b.write(on));
+                }
+            }
+            ffvkActiveTexture(x, active as u32);
         }
         out
     }
@@ -584,6 +658,16 @@ fn context_calls() -> Vec<(&'static str, ContextCall)> {
             e("ffvkNormal3b", |c| ffvkNormal3b(c, 0, 127, 0)),
             e("ffvkTexCoord4f", |c| ffvkTexCoord4f(c, 0.5, 0.5, 0.0, 1.0)),
             e("ffvkTexCoord2f", |c| ffvkTexCoord2f(c, 0.5, 0.5)),
+            e("ffvkActiveTexture", |c| ffvkActiveTexture(c, TEXTURE0 + 1)),
+            e("ffvkMultiTexCoord4f", |c| {
+                ffvkMultiTexCoord4f(c, TEXTURE0 + 2, 0.5, 0.5, 0.0, 1.0)
+            }),
+            e("ffvkMultiTexCoord2f", |c| {
+                ffvkMultiTexCoord2f(c, TEXTURE0 + 3, 0.5, 0.5)
+            }),
+            e("ffvkMultiTexCoord4fv", |c| {
+                ffvkMultiTexCoord4fv(c, TEXTURE0 + 1, F4.as_ptr())
+            }),
             e("ffvkSecondaryColor3f", |c| ffvkSecondaryColor3f(c, 0.1, 0.2, 0.3)),
             e("ffvkAlphaFunc", |c| ffvkAlphaFunc(c, 0x0201, 0.5)),
             e("ffvkFogf", |c| ffvkFogf(c, 0x0B62, 0.5)),
@@ -831,6 +915,10 @@ fn a_null_params_sets_invalid_value_names_the_function_and_changes_nothing() {
             ffvkLoadProjection(x, null());
             ffvkLoadTextureMatrix(x, null());
         });
+        // glMultiTexCoord4fv's is `v`.
+        assert_each_refused!(c, before, INVALID_VALUE, ["v is a null pointer", "4 value(s)"], {
+            ffvkMultiTexCoord4fv(x, TEXTURE0 + 1, null());
+        });
     }
 }
 
@@ -909,6 +997,9 @@ fn a_misaligned_params_sets_invalid_value_and_is_neither_read_nor_written() {
             ffvkLoadModelview(x, f);
             ffvkLoadProjection(x, f);
             ffvkLoadTextureMatrix(x, f);
+        });
+        assert_each_refused!(c, before, INVALID_VALUE, ["v 0x", "not aligned to 4 bytes"], {
+            ffvkMultiTexCoord4fv(x, TEXTURE0 + 3, f);
         });
     }
     assert!(
@@ -1309,22 +1400,24 @@ fn gl_tex_env_refuses_an_unknown_target_pname_or_mode_with_invalid_enum() {
 }
 
 #[test]
-fn gl_tex_env_refuses_a_combine_value_gl_does_not_take_or_another_units_texture() {
+fn gl_tex_env_refuses_a_combine_value_gl_does_not_take_or_a_unit_past_the_last() {
     let c = Ctx::busy();
     let x = c.0;
     let before = c.snapshot();
     let env = TEXTURE_ENV;
     // SAFETY: a live context for every call below; params point at 4 values.
     unsafe {
-        // GL_TEXTUREn (ARB_texture_env_crossbar) names another unit's texel: ffvk has one.
+        // GL_TEXTUREn (ARB_texture_env_crossbar) names unit n's texel: ffvk has four units, so
+        // GL_TEXTURE4 .. GL_TEXTURE31 name none (GL_INVALID_ENUM, as Mesa refuses one past its
+        // own units).
         for pname in [SRC0_RGB, SRC0_RGB + 2, SRC0_ALPHA, SRC0_ALPHA + 1] {
-            for value in [TEXTURE0, TEXTURE0 + 1, TEXTURE0 + 31] {
+            for value in [TEXTURE0 + 4, TEXTURE0 + 7, TEXTURE0 + 31] {
                 let (fv, iv) = ([value as f32; 4], [value as i32; 4]);
                 let words = [
-                    &hex(value),
+                    &format!("GL_TEXTURE{} ({})", value - TEXTURE0, hex(value)),
                     "GL_TEXTURE, GL_CONSTANT",
-                    "not supported yet",
-                    "one texture unit",
+                    "GL_TEXTURE0 .. GL_TEXTURE3",
+                    "GL_MAX_TEXTURE_UNITS, 4",
                 ];
                 assert_each_refused!(c, before, INVALID_ENUM, words, {
                     ffvkTexEnvfv(x, env, pname, fv.as_ptr());
@@ -1378,6 +1471,174 @@ fn gl_tex_env_refuses_a_combine_value_gl_does_not_take_or_another_units_texture(
                 }
             }
         }
+    }
+}
+
+#[test]
+fn gl_active_texture_and_multi_tex_coord_refuse_a_unit_past_the_last_and_change_nothing() {
+    let c = Ctx::busy();
+    let x = c.0;
+    let before = c.snapshot();
+    // SAFETY: a live context for every call below; v points at 4 values.
+    unsafe {
+        // GL_TEXTURE0 + i for i below GL_MAX_TEXTURE_UNITS (4); GL_TEXTURE0 - 1 and 0 wrap
+        // around below it, GL_ACTIVE_TEXTURE is GL_TEXTURE0 + 32.
+        for texture in [
+            TEXTURE0 + 4,
+            TEXTURE0 + 31,
+            ACTIVE_TEXTURE,
+            TEXTURE0 - 1,
+            0,
+            BOGUS,
+            TEXTURE_2D,
+        ] {
+            let words = [
+                &hex(texture) as &str,
+                "texture",
+                "GL_TEXTURE0 .. GL_TEXTURE3",
+                "GL_INVALID_ENUM",
+            ];
+            assert_each_refused!(c, before, INVALID_ENUM, words, {
+                ffvkActiveTexture(x, texture);
+            });
+            let words = [&hex(texture) as &str, "target", "GL_MAX_TEXTURE_COORDS is 4"];
+            assert_each_refused!(c, before, INVALID_ENUM, words, {
+                ffvkMultiTexCoord4f(x, texture, 1.0, 2.0, 3.0, 4.0);
+                ffvkMultiTexCoord2f(x, texture, 1.0, 2.0);
+                ffvkMultiTexCoord4fv(x, texture, [1.0f32; 4].as_ptr());
+                // The target is checked first: a null v with a bad target is GL_INVALID_ENUM.
+                ffvkMultiTexCoord4fv(x, texture, null());
+            });
+        }
+        for bad in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
+            assert_each_refused!(
+                c,
+                before,
+                INVALID_VALUE,
+                ["GL_CURRENT_TEXTURE_COORDS", "finite"],
+                {
+                    ffvkMultiTexCoord4f(x, TEXTURE0 + 2, 0.0, 0.0, bad, 1.0);
+                    ffvkMultiTexCoord2f(x, TEXTURE0, bad, 0.0);
+                    ffvkMultiTexCoord4fv(x, TEXTURE0 + 3, [0.0, 0.0, 0.0, bad].as_ptr());
+                }
+            );
+        }
+    }
+}
+
+/// The value of `pname` on the active unit through `ffvkGetFloatv`, `count` values.
+fn floats(x: *mut FfvkContext, pname: u32, count: usize) -> Vec<f32> {
+    let mut b = [SENTINEL_F; 16];
+    // SAFETY: a live context; room for 16 values.
+    unsafe { ffvkGetFloatv(x, pname, b.as_mut_ptr()) };
+    b[..count].to_vec()
+}
+
+#[test]
+fn each_units_state_is_set_and_answered_through_the_active_unit() {
+    let c = Ctx::new();
+    let x = c.0;
+    let scale = |k: f32| -> [f32; 16] { [k, 0., 0., 0., 0., k, 0., 0., 0., 0., 1., 0., 0., 0., 0., 1.] };
+    let tex_env = |p: u32| {
+        let mut v = SENTINEL_I;
+        // SAFETY: a live context; one value written.
+        unsafe { ffvkGetTexEnviv(x, TEXTURE_ENV, p, &mut v) };
+        v
+    };
+    // SAFETY: a live context; every pointer points at as many values as its name takes.
+    unsafe {
+        assert_eq!(floats(x, MAX_TEXTURE_UNITS, 1), [4.0]);
+        let mut n = [SENTINEL_I; 2];
+        ffvkGetIntegerv(x, MAX_TEXTURE_COORDS, n.as_mut_ptr());
+        assert_eq!(n, [4, SENTINEL_I]);
+        assert_eq!(
+            floats(x, ACTIVE_TEXTURE, 1),
+            [TEXTURE0 as f32],
+            "GL_TEXTURE0 initially"
+        );
+        // Each unit its own way, set while it is the active one; glTexCoord is unit 0's
+        // whatever the active unit, glMultiTexCoord the unit its target names.
+        for unit in 0..4u32 {
+            let k = unit as f32 + 1.0;
+            ffvkActiveTexture(x, TEXTURE0 + unit);
+            ffvkLoadTextureMatrix(x, scale(k).as_ptr());
+            ffvkTexEnvi(
+                x,
+                TEXTURE_ENV,
+                TEXTURE_ENV_MODE,
+                [MODULATE, REPLACE, 0x8570, 0x0104][unit as usize] as i32,
+            );
+            ffvkTexEnvi(x, TEXTURE_ENV, SRC0_RGB + 1, (TEXTURE0 + 3 - unit) as i32);
+            ffvkTexEnvf(x, TEXTURE_ENV, SRC0_ALPHA, (TEXTURE0 + unit) as f32);
+            ffvkTexGenfv(x, T, OBJECT_PLANE, [k, 0.0, 0.0, 1.0].as_ptr());
+            ffvkTexEnvi(x, POINT_SPRITE, COORD_REPLACE, (unit == 2) as i32);
+            if unit % 2 == 1 {
+                ffvkEnable(x, TEXTURE_2D);
+                ffvkEnable(x, TEXTURE_GEN_R);
+            }
+            ffvkMultiTexCoord4fv(x, TEXTURE0 + 3 - unit, [k, 2.0 * k, 0.0, 1.0].as_ptr());
+        }
+        ffvkMultiTexCoord2f(x, TEXTURE0 + 2, 0.5, -0.5);
+        ffvkTexCoord4f(x, 9.0, 8.0, 7.0, 6.0);
+        assert_eq!(c.error(), NO_ERROR, "{}", message());
+        assert_eq!(floats(x, ACTIVE_TEXTURE, 1), [(TEXTURE0 + 3) as f32]);
+        let coords = [
+            [9.0, 8.0, 7.0, 6.0],
+            [3.0, 6.0, 0.0, 1.0],
+            [0.5, -0.5, 0.0, 1.0],
+            [1.0, 2.0, 0.0, 1.0],
+        ];
+        for unit in 0..4u32 {
+            let k = unit as f32 + 1.0;
+            ffvkActiveTexture(x, TEXTURE0 + unit);
+            let mut active = [SENTINEL_I; 1];
+            ffvkGetIntegerv(x, ACTIVE_TEXTURE, active.as_mut_ptr());
+            assert_eq!(active, [(TEXTURE0 + unit) as i32]);
+            assert_eq!(
+                floats(x, TEXTURE_MATRIX, 16),
+                scale(k),
+                "unit {unit}'s texture matrix"
+            );
+            assert_eq!(
+                floats(x, CURRENT_TEXTURE_COORDS, 4),
+                coords[unit as usize],
+                "unit {unit}"
+            );
+            let on = unit % 2 == 1;
+            assert_eq!(
+                ffvkIsEnabled(x, TEXTURE_2D) != 0,
+                on,
+                "unit {unit}'s GL_TEXTURE_2D"
+            );
+            assert_eq!(
+                ffvkIsEnabled(x, TEXTURE_GEN_R) != 0,
+                on,
+                "unit {unit}'s GL_TEXTURE_GEN_R"
+            );
+            assert_eq!(floats(x, TEXTURE_2D, 1), [on as u8 as f32]);
+            assert_eq!(
+                tex_env(TEXTURE_ENV_MODE),
+                [MODULATE, REPLACE, 0x8570, 0x0104][unit as usize] as i32
+            );
+            assert_eq!(
+                tex_env(SRC0_RGB + 1),
+                (TEXTURE0 + 3 - unit) as i32,
+                "GL_TEXTUREn answered"
+            );
+            assert_eq!(tex_env(SRC0_ALPHA), (TEXTURE0 + unit) as i32);
+            assert_eq!(tex_env(SRC0_RGB), TEXTURE as i32, "untouched: GL_TEXTURE");
+            let mut plane = [SENTINEL_F; 4];
+            ffvkGetTexGenfv(x, T, OBJECT_PLANE, plane.as_mut_ptr());
+            assert_eq!(plane, [k, 0.0, 0.0, 1.0]);
+            let mut replace = SENTINEL_I;
+            ffvkGetTexEnviv(x, POINT_SPRITE, COORD_REPLACE, &mut replace);
+            assert_eq!(replace, (unit == 2) as i32);
+        }
+        // A refused unit leaves the active one.
+        ffvkActiveTexture(x, TEXTURE0 + 4);
+        assert_eq!(c.error(), INVALID_ENUM);
+        assert_eq!(floats(x, ACTIVE_TEXTURE, 1), [(TEXTURE0 + 3) as f32]);
+        assert_eq!(c.error(), NO_ERROR);
     }
 }
 
@@ -2039,12 +2300,26 @@ fn messages_name_the_function_the_parameter_the_value_and_what_was_expected() {
             "expected GL_SHININESS",
             "GL_INVALID_ENUM",
         ]);
-        ffvkTexEnvi(x, TEXTURE_ENV, SRC0_RGB, TEXTURE0 as i32);
+        ffvkTexEnvi(x, TEXTURE_ENV, SRC0_RGB, (TEXTURE0 + 4) as i32);
         expect(&[
-            "ffvkTexEnvi: GL_SRC0_RGB value GL_TEXTURE0 (0x84C0)",
-            "expected GL_TEXTURE, GL_CONSTANT, GL_PRIMARY_COLOR or GL_PREVIOUS",
-            "not supported yet",
+            "ffvkTexEnvi: GL_SRC0_RGB value GL_TEXTURE4 (0x84C4) is not accepted",
+            "expected GL_TEXTURE, GL_CONSTANT, GL_PRIMARY_COLOR, GL_PREVIOUS or GL_TEXTURE0 .. GL_TEXTURE3",
+            "GL_INVALID_ENUM",
         ]);
+        ffvkActiveTexture(x, TEXTURE0 + 4);
+        expect(&[
+            "ffvkActiveTexture: texture GL_TEXTURE4 (0x84C4) is not accepted",
+            "expected GL_TEXTURE0 .. GL_TEXTURE3 (GL_MAX_TEXTURE_UNITS is 4)",
+            "GL_INVALID_ENUM",
+        ]);
+        ffvkMultiTexCoord2f(x, 0x1234, 0.0, 0.0);
+        expect(&[
+            "ffvkMultiTexCoord2f: target 0x1234 is not accepted",
+            "expected GL_TEXTURE0 .. GL_TEXTURE3 (GL_MAX_TEXTURE_COORDS is 4)",
+            "GL_INVALID_ENUM",
+        ]);
+        ffvkMultiTexCoord4f(x, TEXTURE0 + 1, 0.0, f32::NAN, 0.0, 1.0);
+        expect(&["ffvkMultiTexCoord4f", "NaN", "GL_INVALID_VALUE"]);
         ffvkColorMaterial(x, FRONT, SHININESS);
         expect(&[
             "ffvkColorMaterial: mode GL_SHININESS (0x1601)",
@@ -2094,8 +2369,10 @@ fn messages_name_a_gl_enum_by_its_gl_name_and_a_value_gl_has_no_name_for_in_hex(
         expect(&["ffvkEnable: cap GL_SCISSOR_TEST (0x0C11) is not accepted"]);
         ffvkDisable(x, VERTEX_ARRAY);
         expect(&["ffvkDisable: cap GL_VERTEX_ARRAY (0x8074) is not accepted"]);
-        ffvkTexEnvi(x, TEXTURE_ENV, SRC0_ALPHA, TEXTURE0 as i32);
-        expect(&["GL_SRC0_ALPHA value GL_TEXTURE0 (0x84C0) is not accepted"]);
+        ffvkTexEnvi(x, TEXTURE_ENV, SRC0_ALPHA, (TEXTURE0 + 9) as i32);
+        expect(&["GL_SRC0_ALPHA value GL_TEXTURE9 (0x84C9) is not accepted"]);
+        ffvkGetFloatv(x, 0x84E1, [0.0f32; 16].as_mut_ptr());
+        expect(&["ffvkGetFloatv: pname GL_CLIENT_ACTIVE_TEXTURE (0x84E1) is not accepted"]);
         // Names the API takes, where they do not belong.
         ffvkLightfv(x, LIGHT0, SHININESS, [0.0f32; 4].as_ptr());
         expect(&["ffvkLightfv: pname GL_SHININESS (0x1601) is not accepted"]);

@@ -76,13 +76,14 @@ int main(void) {
         (fn)&ffvkCreateRenderer, (fn)&ffvkDraw, (fn)&ffvkEndDraws, (fn)&ffvkCreateTexture,
         (fn)&ffvkResultMessage, (fn)&ffvkPrimitiveIndices, (fn)&ffvkCreateTeapot,
         (fn)&ffvkPrimitiveIndicesRange, (fn)&ffvkViewport, (fn)&ffvkScissor,
-        (fn)&ffvkDeviceRequirements,
+        (fn)&ffvkDeviceRequirements, (fn)&ffvkActiveTexture, (fn)&ffvkMultiTexCoord4fv,
     };
     FfvkRendererCreateInfo info;
     FfvkDrawInfo draw;
     FfvkRaster raster;
     info.struct_size = (uint32_t)sizeof info;
     draw.struct_size = (uint32_t)sizeof draw;
+    draw.texture1 = NULL;
     ffvkRasterDefaults(&raster);
     return (int)(sizeof fns / sizeof fns[0]) + (GL_LIGHT0 == 0x4000 ? 0 : 1) + (int)raster.depth_write;
 }

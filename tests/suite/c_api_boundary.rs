@@ -9,6 +9,7 @@ use std::ffi::CStr;
 use ffvk::ash::vk::{self, Handle};
 use ffvk_c::abi::Versioned;
 use ffvk_c::gl::*;
+use ffvk_c::render::layout::*;
 use ffvk_c::render::*;
 use ffvk_c::result::{ffvkResultMessage, FfvkResult};
 
@@ -278,6 +279,9 @@ pub(crate) fn draw_info(buffer: &vk::Buffer, raster: FfvkRaster) -> FfvkDrawInfo
         texture: std::ptr::null(),
         layout: std::ptr::null(),
         raster_source: FFVK_RASTER_SOURCE_DRAW,
+        texture1: std::ptr::null(),
+        texture2: std::ptr::null(),
+        texture3: std::ptr::null(),
     }
 }
 
@@ -566,6 +570,146 @@ fn ffvk_draw_takes_every_published_versions_size_and_refuses_any_other_naming_th
             assert_drawn(r, ctx, &draw);
         }
     });
+}
+
+/// Each unit's texture pointer is checked as unit 0's is, naming its field; a version 3 draw
+/// (without `texture1` .. `texture3`) is drawn whatever lies where they would be.
+#[test]
+fn a_misaligned_texture_of_any_unit_is_refused_naming_its_field_and_an_older_draw_never_reads_them() {
+    let bad = 0x1001 as *const FfvkTexture;
+    in_draw_scope(|r, ctx| {
+        let buffer = vk::Buffer::from_raw(PLACEHOLDER);
+        for (field, draw) in [
+            (
+                "texture",
+                FfvkDrawInfo {
+                    texture: bad,
+                    ..draw_info(&buffer, defaults())
+                },
+            ),
+            (
+                "texture1",
+                FfvkDrawInfo {
+                    texture1: bad,
+                    ..draw_info(&buffer, defaults())
+                },
+            ),
+            (
+                "texture2",
+                FfvkDrawInfo {
+                    texture2: bad,
+                    ..draw_info(&buffer, defaults())
+                },
+            ),
+            (
+                "texture3",
+                FfvkDrawInfo {
+                    texture3: bad,
+                    ..draw_info(&buffer, defaults())
+                },
+            ),
+        ] {
+            let given = format!("{field} 0x1001 is not aligned");
+            assert_draw_refused(
+                r,
+                ctx,
+                &draw,
+                &given,
+                "expected a texture from ffvkCreateTexture or null",
+            );
+        }
+        let version_3 = <FfvkDrawInfo as Versioned>::VERSIONS[2].size as u32;
+        let draw = FfvkDrawInfo {
+            struct_size: version_3,
+            texture1: bad,
+            texture3: bad,
+            ..draw_info(&buffer, defaults())
+        };
+        assert_drawn(r, ctx, &draw);
+    });
+}
+
+/// A vertex layout's coordinate arrays of units 1 to 3 (version 2) are checked as the others
+/// are, naming their field; a version 1 layout info never reads them.
+#[test]
+fn a_vertex_layouts_unit_coordinate_arrays_are_checked_and_an_older_info_never_reads_them() {
+    let plain = PlainDevice::new();
+    let mut r = std::ptr::null_mut();
+    // SAFETY: a valid create info on a live device; out is writable.
+    let made = unsafe { ffvkCreateRenderer(&create_info(&plain), &mut r) };
+    assert_eq!(made, FfvkResult::FFVK_SUCCESS, "{}", message());
+    let binding = vk::VertexInputBindingDescription {
+        binding: 0,
+        stride: 20,
+        input_rate: vk::VertexInputRate::VERTEX,
+    };
+    let st = FfvkAttribute {
+        binding: 0,
+        offset: 12,
+        format: vk::Format::R32G32_SFLOAT,
+    };
+    let past = FfvkAttribute { offset: 16, ..st };
+    let info = FfvkVertexLayoutInfo {
+        struct_size: std::mem::size_of::<FfvkVertexLayoutInfo>() as u32,
+        bindings: &binding,
+        binding_count: 1,
+        position: FfvkAttribute {
+            binding: 0,
+            offset: 0,
+            format: vk::Format::R32G32B32_SFLOAT,
+        },
+        normal: std::ptr::null(),
+        color: std::ptr::null(),
+        texcoord: &st,
+        secondary_color: std::ptr::null(),
+        fog_coord: std::ptr::null(),
+        materials: std::ptr::null(),
+        material_count: 0,
+        texcoord1: std::ptr::null(),
+        texcoord2: &st,
+        texcoord3: std::ptr::null(),
+    };
+    let make = |info: &FfvkVertexLayoutInfo| {
+        let mut layout = std::ptr::null_mut();
+        // SAFETY: a live renderer between scopes; the info's pointers are null, misaligned (and
+        // refused before use) or point at live attributes; out is writable.
+        let result = unsafe { ffvkCreateVertexLayout(r, info, &mut layout) };
+        // SAFETY: null or a layout just made.
+        unsafe { ffvkDestroyVertexLayout(layout) };
+        (result, message())
+    };
+    assert_eq!(make(&info).0, FfvkResult::FFVK_SUCCESS, "{}", make(&info).1);
+    let misaligned = FfvkVertexLayoutInfo {
+        texcoord3: 0x2002 as *const FfvkAttribute,
+        ..info
+    };
+    let (result, text) = make(&misaligned);
+    assert_eq!(result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT, "{text}");
+    assert!(
+        text.starts_with("ffvkCreateVertexLayout: texcoord3 0x2002 is not aligned"),
+        "{text}"
+    );
+    // Past its binding's stride (16 + 8 > 20): named as the core names unit 1's array.
+    let (result, text) = make(&FfvkVertexLayoutInfo {
+        texcoord1: &past,
+        ..info
+    });
+    assert_eq!(result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT, "{text}");
+    assert!(text.contains("unit 1 texcoord"), "{text}");
+    let version_1 = <FfvkVertexLayoutInfo as Versioned>::VERSIONS[0].size as u32;
+    let older = FfvkVertexLayoutInfo {
+        struct_size: version_1,
+        texcoord1: &past,
+        ..misaligned
+    };
+    let (result, text) = make(&older);
+    assert_eq!(
+        result,
+        FfvkResult::FFVK_SUCCESS,
+        "a version 1 info reads no unit array: {text}"
+    );
+    // SAFETY: live, destroyed once.
+    unsafe { ffvkDestroyRenderer(r) };
 }
 
 #[test]

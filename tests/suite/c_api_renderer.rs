@@ -83,6 +83,9 @@ fn draw_info(mode: u32, buffer: &vk::Buffer, raster: FfvkRaster) -> FfvkDrawInfo
         texture: std::ptr::null(),
         layout: std::ptr::null(),
         raster_source: FFVK_RASTER_SOURCE_DRAW,
+        texture1: std::ptr::null(),
+        texture2: std::ptr::null(),
+        texture3: std::ptr::null(),
     }
 }
 

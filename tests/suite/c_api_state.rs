@@ -12,6 +12,7 @@ use ffvk_cli::gl_reference::{raw, with_raw_gl};
 mod combine;
 mod raster;
 mod texgen;
+mod units;
 
 // GL's enums (the values of <GL/gl.h>).
 const LIGHTING: u32 = 0x0B50;
@@ -51,6 +52,7 @@ const COLOR_MATERIAL_PARAMETER: u32 = 0x0B56;
 const CURRENT_COLOR: u32 = 0x0B00;
 const MODELVIEW_MATRIX: u32 = 0x0BA6;
 const PROJECTION_MATRIX: u32 = 0x0BA7;
+const TEXTURE_MATRIX: u32 = 0x0BA8;
 const TEXTURE_ENV: u32 = 0x2300;
 const TEXTURE_ENV_MODE: u32 = 0x2200;
 const TEXTURE_ENV_COLOR: u32 = 0x2201;
@@ -67,6 +69,35 @@ const BOGUS: u32 = 0x1234;
 const LIGHT_PAST_MAX: u32 = 0xFFFF_0001;
 /// Stands for `GL_LIGHT0 + GL_MAX_LIGHTS - 1`.
 const LIGHT_LAST: u32 = 0xFFFF_0002;
+/// Stands for `GL_TEXTURE0 + k` of the implementation running the sequence, where k is the
+/// number of units glActiveTexture takes (GL 2.1 §2.7: the larger of `GL_MAX_TEXTURE_COORDS`
+/// and `GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS`; 4 in ffvk, which has no image units beyond its
+/// texture units). Each texture unit sentinel is a float exactly, so that glTexEnvf and
+/// glTexEnvfv can pass it as glTexEnvi does.
+const UNIT_PAST_ACTIVE: u32 = 0x7F00_0100;
+/// Stands for `GL_TEXTURE0 + GL_MAX_TEXTURE_UNITS - 1`, the last fixed-function unit (3 in
+/// ffvk, 7 in Mesa).
+const UNIT_LAST: u32 = 0x7F00_0200;
+/// Stands for `GL_TEXTURE0 + GL_MAX_TEXTURE_UNITS`: a `GL_TEXTUREn` source past the last unit.
+const UNIT_PAST_LAST: u32 = 0x7F00_0300;
+/// Stands for `GL_TEXTURE0 + GL_MAX_TEXTURE_COORDS`: a glMultiTexCoord target past the last
+/// coordinate set.
+const COORDS_PAST_LAST: u32 = 0x7F00_0400;
+const TEXTURE0: u32 = 0x84C0;
+const MAX_TEXTURE_UNITS: u32 = 0x84E2;
+const MAX_TEXTURE_COORDS: u32 = 0x8871;
+const MAX_COMBINED_TEXTURE_IMAGE_UNITS: u32 = 0x8B4D;
+
+/// An implementation's texture unit limits (GL 2.1 table 6.44), as it answers them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Units {
+    /// `GL_MAX_TEXTURE_UNITS`: the fixed-function units.
+    units: u32,
+    /// `GL_MAX_TEXTURE_COORDS`.
+    coords: u32,
+    /// How many units glActiveTexture takes.
+    active: u32,
+}
 
 /// One GL call.
 #[derive(Debug, Clone)]
@@ -145,6 +176,12 @@ enum Call {
     TexGeniv(u32, u32, Vec<i32>),
     TexGenfv(u32, u32, Vec<f32>),
     TexGendv(u32, u32, Vec<f64>),
+    ActiveTexture(u32),
+    MultiTexCoord4f(u32, [f32; 4]),
+    MultiTexCoord2f(u32, [f32; 2]),
+    MultiTexCoord4fv(u32, Vec<f32>),
+    /// glMatrixMode(GL_TEXTURE) + glLoadMatrixf (the active unit's) + glMatrixMode(GL_MODELVIEW).
+    LoadTextureMatrix([f32; 16]),
 }
 
 /// One query, with how many values it answers.
@@ -190,6 +227,7 @@ const UNWRITTEN: f64 = -12345.0;
 
 trait Gl {
     fn max_lights(&mut self) -> u32;
+    fn units(&mut self) -> Units;
     fn call(&mut self, call: &Call);
     fn query(&mut self, query: Query) -> Vec<f64>;
     fn error(&mut self) -> u32;
@@ -234,12 +272,39 @@ trait Gl {
             })
             .collect()
     }
+    /// The texture unit a sentinel stands for here; any other value as it is.
+    fn resolve_unit(&mut self, texture: u32) -> u32 {
+        if !matches!(
+            texture,
+            UNIT_PAST_ACTIVE | UNIT_LAST | UNIT_PAST_LAST | COORDS_PAST_LAST
+        ) {
+            return texture;
+        }
+        let units = self.units();
+        match texture {
+            UNIT_PAST_ACTIVE => TEXTURE0 + units.active,
+            UNIT_LAST => TEXTURE0 + units.units - 1,
+            UNIT_PAST_LAST => TEXTURE0 + units.units,
+            _ => TEXTURE0 + units.coords,
+        }
+    }
     fn resolve_call(&mut self, call: &Call) -> Call {
         let mut call = call.clone();
         match &mut call {
             Call::Enable(l) | Call::Disable(l) => *l = self.resolve(*l),
             Call::Lightfv(l, ..) | Call::Lightiv(l, ..) | Call::Lightf(l, ..) | Call::Lighti(l, ..) => {
                 *l = self.resolve(*l)
+            }
+            Call::ActiveTexture(t)
+            | Call::MultiTexCoord4f(t, _)
+            | Call::MultiTexCoord2f(t, _)
+            | Call::MultiTexCoord4fv(t, _) => *t = self.resolve_unit(*t),
+            // A GL_TEXTUREn source given as a sentinel, through each form.
+            Call::TexEnvi(_, _, v) => *v = self.resolve_unit(*v as u32) as i32,
+            Call::TexEnviv(_, _, v) if !v.is_empty() => v[0] = self.resolve_unit(v[0] as u32) as i32,
+            Call::TexEnvf(_, _, v) if *v == v.trunc() && *v > 0.0 => *v = self.resolve_unit(*v as u32) as f32,
+            Call::TexEnvfv(_, _, v) if v.first().is_some_and(|x| *x == x.trunc() && *x > 0.0) => {
+                v[0] = self.resolve_unit(v[0] as u32) as f32
             }
             _ => {}
         }
@@ -274,6 +339,20 @@ impl Gl for Ffvk {
         // SAFETY: a live context; one value written.
         unsafe { ffvk_c::query::ffvkGetIntegerv(self.ctx, MAX_LIGHTS, &mut v) };
         v as u32
+    }
+    fn units(&mut self) -> Units {
+        let (mut units, mut coords) = (0i32, 0i32);
+        // SAFETY: a live context; one value written each.
+        unsafe {
+            ffvk_c::query::ffvkGetIntegerv(self.ctx, MAX_TEXTURE_UNITS, &mut units);
+            ffvk_c::query::ffvkGetIntegerv(self.ctx, MAX_TEXTURE_COORDS, &mut coords);
+        }
+        // ffvk has no shader image units: glActiveTexture takes its texture units.
+        Units {
+            units: units as u32,
+            coords: coords as u32,
+            active: units.max(coords) as u32,
+        }
     }
     fn call(&mut self, call: &Call) {
         use ffvk_c::gl::*;
@@ -353,6 +432,11 @@ impl Gl for Ffvk {
                 Call::TexGeniv(t, p, v) => ffvkTexGeniv(c, *t, *p, padded(v).as_ptr()),
                 Call::TexGenfv(t, p, v) => ffvkTexGenfv(c, *t, *p, padded(v).as_ptr()),
                 Call::TexGendv(t, p, v) => ffvkTexGendv(c, *t, *p, padded(v).as_ptr()),
+                Call::ActiveTexture(t) => ffvkActiveTexture(c, *t),
+                Call::MultiTexCoord4f(t, [s, tt, r, q]) => ffvkMultiTexCoord4f(c, *t, *s, *tt, *r, *q),
+                Call::MultiTexCoord2f(t, [s, tt]) => ffvkMultiTexCoord2f(c, *t, *s, *tt),
+                Call::MultiTexCoord4fv(t, v) => ffvkMultiTexCoord4fv(c, *t, padded(v).as_ptr()),
+                Call::LoadTextureMatrix(m) => ffvkLoadTextureMatrix(c, m.as_ptr()),
             }
         }
     }
@@ -439,6 +523,20 @@ impl Gl for Mesa<'_> {
         unsafe { self.gl.GetIntegerv(MAX_LIGHTS, &mut v) };
         v as u32
     }
+    fn units(&mut self) -> Units {
+        let [mut units, mut coords, mut images] = [0i32; 3];
+        // SAFETY: the context is current; one value written each.
+        unsafe {
+            self.gl.GetIntegerv(MAX_TEXTURE_UNITS, &mut units);
+            self.gl.GetIntegerv(MAX_TEXTURE_COORDS, &mut coords);
+            self.gl.GetIntegerv(MAX_COMBINED_TEXTURE_IMAGE_UNITS, &mut images);
+        }
+        Units {
+            units: units as u32,
+            coords: coords as u32,
+            active: coords.max(images) as u32,
+        }
+    }
     fn call(&mut self, call: &Call) {
         let gl = self.gl;
         // SAFETY: the context is current on this thread; vectors as for ffvk.
@@ -522,6 +620,15 @@ impl Gl for Mesa<'_> {
                 Call::TexGeniv(t, p, v) => gl.TexGeniv(*t, *p, padded(v).as_ptr()),
                 Call::TexGenfv(t, p, v) => gl.TexGenfv(*t, *p, padded(v).as_ptr()),
                 Call::TexGendv(t, p, v) => gl.TexGendv(*t, *p, padded(v).as_ptr()),
+                Call::ActiveTexture(t) => gl.ActiveTexture(*t),
+                Call::MultiTexCoord4f(t, [s, tt, r, q]) => gl.MultiTexCoord4f(*t, *s, *tt, *r, *q),
+                Call::MultiTexCoord2f(t, [s, tt]) => gl.MultiTexCoord2f(*t, *s, *tt),
+                Call::MultiTexCoord4fv(t, v) => gl.MultiTexCoord4fv(*t, padded(v).as_ptr()),
+                Call::LoadTextureMatrix(m) => {
+                    gl.MatrixMode(raw::TEXTURE);
+                    gl.LoadMatrixf(m.as_ptr());
+                    gl.MatrixMode(raw::MODELVIEW);
+                }
             }
         }
     }
@@ -584,6 +691,17 @@ impl Gl for Mesa<'_> {
                 gl.MatrixMode(mode);
                 gl.LoadIdentity();
             }
+            // The texture matrices are in no attribute group: each unit's is set back by hand,
+            // then unit 0 made active again as glPopAttrib left it.
+            let mut units = 0;
+            gl.GetIntegerv(MAX_TEXTURE_COORDS, &mut units);
+            for unit in 0..units as u32 {
+                gl.ActiveTexture(TEXTURE0 + unit);
+                gl.MatrixMode(raw::TEXTURE);
+                gl.LoadIdentity();
+            }
+            gl.ActiveTexture(TEXTURE0);
+            gl.MatrixMode(raw::MODELVIEW);
             // Mesa 22.3's glPopAttrib(GL_FOG_BIT) leaves GL_FOG_COORD_SRC as it was: set GL's
             // initial value back by hand.
             gl.Fogi(raw::FOG_COORD_SRC, raw::FRAGMENT_DEPTH as i32);
@@ -593,9 +711,10 @@ impl Gl for Mesa<'_> {
 }
 
 /// Differences from Mesa's GL that ffvk keeps, each where ffvk follows the GL 2.1
-/// specification and Mesa 22.3 does not; every one must still be seen (the test fails when
-/// Mesa stops deviating, so that the list stays true).
-const DEVIATIONS: [&str; 8] = [
+/// specification and Mesa 22.3 does not, or where the specification leaves the result
+/// undefined and ffvk refuses the call with the error its documentation names; every one must
+/// still be seen (the test fails when Mesa stops deviating, so that the list stays true).
+const DEVIATIONS: [&str; 9] = [
     // Mesa's glLightf, glMaterialf, glLightModelf and glPointParameterf pass a multi-valued
     // name on to the vector version with the one value (glMaterialf's other three read from
     // its stack, glPointParameterf's two zeros).
@@ -630,7 +749,24 @@ const DEVIATIONS: [&str; 8] = [
     // Mesa's glGetTexGeniv casts a plane's floats to integers.
     "6.1.2: GetTexGeniv rounds a plane's float to the nearest integer (0.75 is 1); Mesa truncates \
      it toward zero (0)",
+    // Mesa's glMultiTexCoord takes the set from the target's low three bits, unchecked
+    // (vbo_attrib_tmp.h: `(target & 0x7) + VBO_ATTRIB_TEX0`).
+    "2.7: \"Specifying an invalid texture coordinate set for the target argument of MultiTexCoord \
+     results in undefined behavior\": ffvk refuses a target that is no TEXTUREi below \
+     MAX_TEXTURE_COORDS with INVALID_ENUM and changes nothing (its choice, documented in ffvk.h); \
+     Mesa raises no error and sets the coordinates of set (target & 7)",
 ];
+
+/// A glMultiTexCoord whose target is no `GL_TEXTUREi` below ffvk's `GL_MAX_TEXTURE_COORDS`
+/// (nor the last unit's sentinel, which names one of each implementation's own).
+fn invalid_coordinate_set(call: &Call) -> bool {
+    match *call {
+        Call::MultiTexCoord4f(t, _) | Call::MultiTexCoord2f(t, _) | Call::MultiTexCoord4fv(t, _) => {
+            !(TEXTURE0..TEXTURE0 + 4).contains(&t) && t != UNIT_LAST
+        }
+        _ => false,
+    }
+}
 
 /// A glTexGen{i,f,d} naming a plane, which has four values.
 fn scalar_texgen_plane(call: &Call) -> bool {
@@ -690,7 +826,12 @@ fn deviation(steps: &[Step], step: &Step, ours: &Answer, theirs: &Answer) -> Opt
     let texgen_plane = steps
         .iter()
         .any(|s| matches!(s, Step::Call(c) | Step::Quiet(c) if scalar_texgen_plane(c)));
+    let coordinate_set = steps
+        .iter()
+        .any(|s| matches!(s, Step::Call(c) | Step::Quiet(c) if invalid_coordinate_set(c)));
     match step {
+        Step::Call(c) if invalid_coordinate_set(c) && ours.error == 0x0500 && theirs.error == 0 => Some(8),
+        Step::Query(_) if coordinate_set && ours.error == theirs.error => Some(8),
         Step::Call(c) if scalar_texgen_plane(c) && ours.error == 0x0500 && theirs.error == 0 => Some(6),
         Step::Query(_) if texgen_plane && ours.error == theirs.error => Some(6),
         Step::Query(Query::GetTexGeniv(..)) if rounded_where_truncated(ours, theirs) => Some(7),
@@ -703,7 +844,7 @@ fn deviation(steps: &[Step], step: &Step, ours: &Answer, theirs: &Answer) -> Opt
             Some(3)
         }
         Step::Query(_) if scalar_vector && ours.error == theirs.error => Some(0),
-        Step::Query(Query::GetIntegerv(MODELVIEW_MATRIX | PROJECTION_MATRIX, _))
+        Step::Query(Query::GetIntegerv(MODELVIEW_MATRIX | PROJECTION_MATRIX | TEXTURE_MATRIX, _))
             if ours.error == theirs.error =>
         {
             Some(2)
@@ -1484,6 +1625,7 @@ fn sequences() -> Vec<(String, Vec<Step>)> {
     s.extend(raster::sequences());
     s.extend(texgen::sequences());
     s.extend(combine::sequences());
+    s.extend(units::sequences());
     s
 }
 
@@ -1514,14 +1656,46 @@ fn gl_call_sequences_set_the_same_errors_and_answer_the_same_queries_through_the
         let mut mesa = Mesa { gl };
         let answers: Vec<Vec<Answer>> = table.iter().map(|(_, steps)| mesa.run(steps)).collect();
         let max = mesa.max_lights();
-        (answers, max)
+        (answers, max, mesa.units())
     })
     .expect("Mesa's GL through EGL (make test installs it)");
-    let (mesa_answers, mesa_max) = mesa_answers;
+    let (mesa_answers, mesa_max, mesa_units) = mesa_answers;
     assert!(
         mesa_max >= 8 && ffvk.max_lights() >= 8,
         "GL_MAX_LIGHTS must be at least 8"
     );
+    // Each implementation answers its own unit limits (GL 2.1 table 6.44: at least 2), which the
+    // sequences' unit sentinels stand for; ffvk's are 4 through every query form.
+    assert_eq!(
+        ffvk.units(),
+        Units {
+            units: 4,
+            coords: 4,
+            active: 4
+        }
+    );
+    for pname in [MAX_TEXTURE_UNITS, MAX_TEXTURE_COORDS] {
+        for query in [
+            Query::GetFloatv(pname, 1),
+            Query::GetIntegerv(pname, 1),
+            Query::GetBooleanv(pname, 1),
+        ] {
+            let expected = if matches!(query, Query::GetBooleanv(..)) {
+                1.0
+            } else {
+                4.0
+            };
+            assert_eq!(ffvk.query(query), [expected], "{query:?}");
+            assert_eq!(ffvk.error(), 0);
+        }
+    }
+    assert!(
+        mesa_units.units >= 2
+            && mesa_units.coords >= mesa_units.units
+            && mesa_units.active >= mesa_units.coords,
+        "Mesa's unit limits {mesa_units:?}"
+    );
+    eprintln!("texture units: ffvk {:?}, Mesa {mesa_units:?}", ffvk.units());
 
     let mut unexplained = Vec::new();
     let mut seen = [0usize; DEVIATIONS.len()];

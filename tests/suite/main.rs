@@ -10,6 +10,7 @@ mod c_api_layers;
 mod c_api_programs;
 mod c_api_renderer;
 mod c_api_state;
+mod c_api_units;
 mod canvas;
 mod cli;
 mod combine;

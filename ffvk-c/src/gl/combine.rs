@@ -1,18 +1,17 @@
-//! glTexEnv's `GL_COMBINE` parameters (GL 2.1 §3.8.13, table 3.24; ARB_texture_env_combine
-//! and _dot3) for the one texture unit: which names there are, the values each takes and GL's
-//! errors. `ffvkTexEnv*` (`entry.rs`) set them through `params.rs`, `ffvkGetTexEnv*`
-//! (`query.rs`) answer them.
+//! glTexEnv's `GL_COMBINE` parameters (GL 2.1 §3.8.13, table 3.24; ARB_texture_env_combine,
+//! _dot3 and _crossbar) of the active texture unit: which names there are, the values each
+//! takes and GL's errors. `ffvkTexEnv*` (`entry.rs`) set them through `params.rs`,
+//! `ffvkGetTexEnv*` (`query.rs`) answer them.
 
 use ffvk::gl::state::TexEnvParam;
-use ffvk::gl::texture::{AlphaOperand, CombineFunc, CombineSource, RgbOperand};
+use ffvk::gl::texture::{AlphaOperand, CombineFunc, CombineSource, RgbOperand, MAX_TEXTURE_UNITS};
 
 use super::{invalid_enum, GlResult, Values};
 use crate::enums::*;
 
-/// `GL_TEXTURE0`: `GL_TEXTURE0` .. `GL_TEXTURE31` name the units' texels as sources
-/// (ARB_texture_env_crossbar), which ffvk refuses with its one unit (a name for messages, not
-/// one the header defines).
-const GL_TEXTURE0: u32 = 0x84C0;
+/// `GL_TEXTURE0` .. `GL_TEXTURE31`: the enums a `GL_TEXTUREn` source may be spelled with; those
+/// of a unit at or past `GL_MAX_TEXTURE_UNITS` (4) are refused.
+const TEXTURE_UNIT_ENUMS: std::ops::Range<u32> = GL_TEXTURE0..GL_TEXTURE0 + 32;
 
 /// `GL_COMBINE_RGB` and `GL_COMBINE_ALPHA`'s values (the dot products for RGB only).
 pub(crate) const FUNCS: [(u32, CombineFunc); 8] = [
@@ -26,7 +25,7 @@ pub(crate) const FUNCS: [(u32, CombineFunc); 8] = [
     (GL_DOT3_RGBA, CombineFunc::Dot3Rgba),
 ];
 
-/// `GL_SRCn_RGB` and `GL_SRCn_ALPHA`'s values.
+/// `GL_SRCn_RGB` and `GL_SRCn_ALPHA`'s values besides `GL_TEXTUREn` ([`source_enum`]).
 pub(crate) const SOURCES: [(u32, CombineSource); 4] = [
     (GL_TEXTURE, CombineSource::Texture),
     (GL_CONSTANT, CombineSource::Constant),
@@ -47,6 +46,15 @@ pub(crate) const ALPHA_OPERANDS: [(u32, AlphaOperand); 2] = [
     (GL_SRC_ALPHA, AlphaOperand::SrcAlpha),
     (GL_ONE_MINUS_SRC_ALPHA, AlphaOperand::OneMinusSrcAlpha),
 ];
+
+/// The GL enum of a `GL_SRCn_RGB` or `GL_SRCn_ALPHA` value: `GL_TEXTURE0 + n` for unit n's
+/// texel, else its entry in [`SOURCES`].
+pub(crate) fn source_enum(source: CombineSource) -> u32 {
+    match source {
+        CombineSource::TextureUnit(n) => GL_TEXTURE0 + u32::from(n),
+        other => gl_enum(&SOURCES, other),
+    }
+}
 
 /// The GL enum of `value` in `table` (every value of ffvk's has one).
 pub(crate) fn gl_enum<T: Copy + PartialEq>(table: &[(u32, T)], value: T) -> u32 {
@@ -100,7 +108,8 @@ fn pname_name(pname: u32) -> &'static str {
 /// the alpha function and a scale other than 1, 2 or 4.
 pub(super) fn combine_param(function: &str, pname: u32, v: Values) -> GlResult<TexEnvParam> {
     const FUNC_NAMES: &str = "GL_REPLACE, GL_MODULATE, GL_ADD, GL_ADD_SIGNED, GL_INTERPOLATE, GL_SUBTRACT, GL_DOT3_RGB or GL_DOT3_RGBA (GL_DOT3_* for GL_COMBINE_RGB only)";
-    const SOURCE_NAMES: &str = "GL_TEXTURE, GL_CONSTANT, GL_PRIMARY_COLOR or GL_PREVIOUS";
+    const SOURCE_NAMES: &str =
+        "GL_TEXTURE, GL_CONSTANT, GL_PRIMARY_COLOR, GL_PREVIOUS or GL_TEXTURE0 .. GL_TEXTURE3 (another unit's texel)";
     const RGB_OPERAND_NAMES: &str =
         "GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_SRC_ALPHA or GL_ONE_MINUS_SRC_ALPHA";
     const ALPHA_OPERAND_NAMES: &str =
@@ -129,13 +138,19 @@ pub(super) fn combine_param(function: &str, pname: u32, v: Values) -> GlResult<T
             }
         }
         Some((which @ (Argument::SourceRgb | Argument::SourceAlpha), n)) => {
-            let s = from_gl(&SOURCES, value).ok_or_else(|| {
-                if (GL_TEXTURE0..GL_TEXTURE0 + 32).contains(&value) {
-                    refused("GL_TEXTURE, GL_CONSTANT, GL_PRIMARY_COLOR or GL_PREVIOUS (GL_TEXTUREn, another unit's texel (ARB_texture_env_crossbar), is not supported yet: ffvk has one texture unit)")
-                } else {
-                    refused(expected)
+            let s = match from_gl(&SOURCES, value) {
+                Some(s) => s,
+                None if TEXTURE_UNIT_ENUMS.contains(&value) => {
+                    let unit = value - GL_TEXTURE0;
+                    if unit as usize >= MAX_TEXTURE_UNITS {
+                        return Err(refused(
+                            "GL_TEXTURE, GL_CONSTANT, GL_PRIMARY_COLOR, GL_PREVIOUS or GL_TEXTURE0 .. GL_TEXTURE3 (a GL_TEXTUREn source names a unit below GL_MAX_TEXTURE_UNITS, 4)",
+                        ));
+                    }
+                    CombineSource::TextureUnit(unit as u8)
                 }
-            })?;
+                None => return Err(refused(expected)),
+            };
             match which {
                 Argument::SourceRgb => TexEnvParam::SourceRgb(n, s),
                 _ => TexEnvParam::SourceAlpha(n, s),

@@ -54,8 +54,10 @@ pub unsafe extern "C" fn ffvkGetError(ctx: *mut FfvkContext) -> u32 {
 /// glEnable for `GL_LIGHTING`, `GL_LIGHTi` (i < 16), `GL_COLOR_MATERIAL`, `GL_NORMALIZE`,
 /// `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_COLOR_SUM`, `GL_FOG`, `GL_ALPHA_TEST`,
 /// `GL_CLIP_PLANEi` (i < 6), `GL_POINT_SPRITE`, `GL_TEXTURE_GEN_S`, `_T`, `_R`, `_Q` (the
-/// coordinate generated as `ffvkTexGeni` says, GL 2.1 §2.11.4), and the raster state's `GL_POLYGON_OFFSET_FILL`,
-/// `GL_POLYGON_OFFSET_LINE`, `GL_POLYGON_OFFSET_POINT`, `GL_LINE_STIPPLE`, `GL_POLYGON_STIPPLE`, `GL_STENCIL_TEST`,
+/// coordinate generated as `ffvkTexGeni` says, GL 2.1 §2.11.4; `GL_TEXTURE_2D` and
+/// `GL_TEXTURE_GEN_*` are the active unit's, `ffvkActiveTexture`), and the raster state's
+/// `GL_POLYGON_OFFSET_FILL`, `GL_POLYGON_OFFSET_LINE`, `GL_POLYGON_OFFSET_POINT`,
+/// `GL_LINE_STIPPLE`, `GL_POLYGON_STIPPLE`, `GL_STENCIL_TEST`,
 /// `GL_COLOR_LOGIC_OP`, `GL_BLEND`, `GL_DEPTH_TEST` and `GL_CULL_FACE` (which a draw takes with
 /// `FFVK_RASTER_SOURCE_CONTEXT`). Sets `GL_INVALID_ENUM` for any other cap (a layer keeps the
 /// rest of GL's capabilities itself). Enabling `GL_COLOR_MATERIAL` writes the
@@ -329,20 +331,24 @@ fn tex_env_entry<'a>(
     })
 }
 
-/// glTexEnvfv on `GL_TEXTURE_ENV`: `GL_TEXTURE_ENV_MODE` (`GL_MODULATE`, `GL_REPLACE`,
-/// `GL_DECAL`, `GL_BLEND`, `GL_ADD`, `GL_COMBINE`), `GL_TEXTURE_ENV_COLOR` (4 values, clamped
-/// to [0, 1]), or one of `GL_COMBINE`'s (GL 2.1 §3.8.13, table 3.24): `GL_COMBINE_RGB` and
-/// `GL_COMBINE_ALPHA` (`GL_REPLACE`, `GL_MODULATE`, `GL_ADD`, `GL_ADD_SIGNED`,
-/// `GL_INTERPOLATE`, `GL_SUBTRACT`, and for RGB `GL_DOT3_RGB`, `GL_DOT3_RGBA`),
-/// `GL_SRC0_RGB` .. `GL_SRC2_RGB` and `GL_SRC0_ALPHA` .. `GL_SRC2_ALPHA` (`GL_TEXTURE`,
-/// `GL_CONSTANT`, `GL_PRIMARY_COLOR`, `GL_PREVIOUS`), `GL_OPERAND0_RGB` .. `GL_OPERAND2_RGB`
+/// glTexEnvfv on `GL_TEXTURE_ENV`, for the active unit (`ffvkActiveTexture`):
+/// `GL_TEXTURE_ENV_MODE` (`GL_MODULATE`, `GL_REPLACE`, `GL_DECAL`, `GL_BLEND`, `GL_ADD`,
+/// `GL_COMBINE`), `GL_TEXTURE_ENV_COLOR` (4 values, clamped to [0, 1]), or one of
+/// `GL_COMBINE`'s (GL 2.1 §3.8.13, table 3.24): `GL_COMBINE_RGB` and `GL_COMBINE_ALPHA`
+/// (`GL_REPLACE`, `GL_MODULATE`, `GL_ADD`, `GL_ADD_SIGNED`, `GL_INTERPOLATE`, `GL_SUBTRACT`,
+/// and for RGB `GL_DOT3_RGB`, `GL_DOT3_RGBA`), `GL_SRC0_RGB` .. `GL_SRC2_RGB` and
+/// `GL_SRC0_ALPHA` .. `GL_SRC2_ALPHA` (`GL_TEXTURE`, `GL_CONSTANT`, `GL_PRIMARY_COLOR`,
+/// `GL_PREVIOUS`, and `GL_TEXTURE0` .. `GL_TEXTURE3`: unit n's texel, sampled with unit n's
+/// texture and coordinates, ARB_texture_env_crossbar; a unit that is not enabled with a
+/// texture passes the previous color on), `GL_OPERAND0_RGB` .. `GL_OPERAND2_RGB`
 /// (`GL_SRC_COLOR`, `GL_ONE_MINUS_SRC_COLOR`, `GL_SRC_ALPHA`, `GL_ONE_MINUS_SRC_ALPHA`),
 /// `GL_OPERAND0_ALPHA` .. `GL_OPERAND2_ALPHA` (`GL_SRC_ALPHA`, `GL_ONE_MINUS_SRC_ALPHA`),
 /// `GL_RGB_SCALE` and `GL_ALPHA_SCALE` (1, 2 or 4); on `GL_POINT_SPRITE`: `GL_COORD_REPLACE`
 /// (zero is `GL_FALSE`, anything else `GL_TRUE`). Errors: `GL_INVALID_ENUM` for another
 /// target, `pname` or value (a dot product for `GL_COMBINE_ALPHA`, a color operand for an alpha
-/// argument, and `GL_TEXTUREn`, another unit's texel: ffvk has one unit); `GL_INVALID_VALUE`
-/// for a scale other than 1, 2 or 4, a value that is not finite or a null `params`.
+/// argument, a `GL_TEXTUREn` source past the four units: `GL_TEXTURE4` and on, as Mesa refuses
+/// one past its own); `GL_INVALID_VALUE` for a scale other than 1, 2 or 4, a value that is not
+/// finite or a null `params`.
 ///
 /// # Safety
 ///
@@ -448,9 +454,9 @@ pub unsafe extern "C" fn ffvkNormal3b(ctx: *mut FfvkContext, x: i8, y: i8, z: i8
     })
 }
 
-/// glTexCoord4f: the current texture coordinates, every vertex's in a textured draw whose
-/// layout has no texture coordinate array; `GL_INVALID_VALUE` for a component that is not
-/// finite (ffvk's choice).
+/// glTexCoord4f: unit 0's current texture coordinates (`ffvkMultiTexCoord4f(GL_TEXTURE0, …)`,
+/// whatever the active unit), every vertex's in a textured draw whose layout has no texture
+/// coordinate array; `GL_INVALID_VALUE` for a component that is not finite (ffvk's choice).
 ///
 /// # Safety
 ///
@@ -639,7 +645,8 @@ pub unsafe extern "C" fn ffvkLoadProjection(ctx: *mut FfvkContext, m: *const f32
     })
 }
 
-/// The current texture matrix (the `GL_TEXTURE` stack's top). Errors as `ffvkLoadModelview`.
+/// The active unit's current texture matrix (its `GL_TEXTURE` stack's top; `ffvkActiveTexture`
+/// selects the unit). Errors as `ffvkLoadModelview`.
 ///
 /// # Safety
 ///

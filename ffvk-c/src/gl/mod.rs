@@ -26,10 +26,11 @@ mod params;
 mod points;
 mod raster;
 mod texgen;
+mod units;
 
 pub use clip::*;
 pub(crate) use combine::{
-    argument as combine_argument, gl_enum, Argument, ALPHA_OPERANDS, FUNCS, RGB_OPERANDS, SOURCES,
+    argument as combine_argument, gl_enum, source_enum, Argument, ALPHA_OPERANDS, FUNCS, RGB_OPERANDS,
 };
 pub use entry::*;
 pub use fog::*;
@@ -38,6 +39,7 @@ pub(crate) use params::{face, light_index, LIGHT_PNAMES, TEX_ENV_PNAMES};
 pub use points::*;
 pub use raster::*;
 pub use texgen::*;
+pub use units::*;
 
 /// GL's lighting state, its matrices and its error flag: what an application's GL calls set.
 /// Made by `ffvkCreateContext`, freed by `ffvkDestroyContext`. One thread at a time may call

@@ -98,7 +98,8 @@ fn texgen_entry<'a>(
     })
 }
 
-/// glTexGeni: `GL_TEXTURE_GEN_MODE` of coordinate `coord` (`GL_S`, `GL_T`, `GL_R`, `GL_Q`):
+/// glTexGeni: `GL_TEXTURE_GEN_MODE` of the active unit's (`ffvkActiveTexture`) coordinate
+/// `coord` (`GL_S`, `GL_T`, `GL_R`, `GL_Q`):
 /// `GL_OBJECT_LINEAR`, `GL_EYE_LINEAR` (the initial mode), `GL_SPHERE_MAP` (S and T only),
 /// `GL_REFLECTION_MAP` or `GL_NORMAL_MAP` (S, T and R), used while the coordinate's
 /// `GL_TEXTURE_GEN_S` (`_T`, `_R`, `_Q`) is enabled (GL 2.1 §2.11.4). Errors:

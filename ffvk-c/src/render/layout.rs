@@ -29,8 +29,10 @@ pub struct FfvkMaterialAttribute {
 
 /// What `ffvkCreateVertexLayout` takes: a layout of GL's arrays. Set `struct_size` to
 /// `sizeof(FfvkVertexLayoutInfo)` (the struct grows as `FfvkDrawInfo` does: later versions
-/// append fields and read only what the caller's size covers). Formats are GL's: positions 2
-/// to 4 floats or `GL_SHORT`s (`R16G16_SSCALED`..), normals 3 floats or `GL_BYTE`s or
+/// append fields and read only what the caller's size covers; this header's is version 2,
+/// which appended `texcoord1` .. `texcoord3`, the arrays of the texture units past the first,
+/// which glClientActiveTexture selects in GL). Formats are GL's: positions 2 to 4 floats or
+/// `GL_SHORT`s (`R16G16_SSCALED`..), normals 3 floats or `GL_BYTE`s or
 /// `GL_SHORT`s (`R8G8B8_SNORM`, `R16G16B16_SNORM`, or their four-component forms with padding),
 /// colors 3 or 4 floats, signed or unsigned bytes or shorts, or `B8G8R8A8_UNORM`
 /// (`GL_BGRA`), texture coordinates 1 to 4 floats or shorts. Signed normalized normals and
@@ -66,6 +68,17 @@ pub struct FfvkVertexLayoutInfo {
     pub materials: *const FfvkMaterialAttribute,
     /// How many `materials` (at most 10: five parameters, two faces).
     pub material_count: u32,
+    /// Version 2: texture unit 1's coordinates (glClientActiveTexture(`GL_TEXTURE1`) then
+    /// glTexCoordPointer), or null (the default, and what a version 1 caller gets): every
+    /// vertex takes unit 1's current coordinates (`ffvkMultiTexCoord4f(GL_TEXTURE1, …)`). Read
+    /// while unit 1 textures (its `GL_TEXTURE_2D` enabled with a texture in
+    /// `FfvkDrawInfo::texture1`), through unit 1's texture matrix and coordinate generation.
+    /// `texcoord` is unit 0's.
+    pub texcoord1: *const FfvkAttribute,
+    /// Version 2: unit 2's coordinates, as `texcoord1` (null by default: unit 2's current ones).
+    pub texcoord2: *const FfvkAttribute,
+    /// Version 2: unit 3's coordinates, as `texcoord1` (null by default: unit 3's current ones).
+    pub texcoord3: *const FfvkAttribute,
 }
 
 /// A vertex layout of one renderer (`ffvkCreateVertexLayout`), named by `FfvkDrawInfo::layout`.
@@ -103,6 +116,9 @@ unsafe fn vertex_input(function: &str, info: &FfvkVertexLayoutInfo) -> Result<Ve
         ("texcoord", info.texcoord),
         ("secondary_color", info.secondary_color),
         ("fog_coord", info.fog_coord),
+        ("texcoord1", info.texcoord1),
+        ("texcoord2", info.texcoord2),
+        ("texcoord3", info.texcoord3),
     ] {
         if misaligned(ptr) {
             return Err(invalid(format!(
@@ -120,11 +136,15 @@ unsafe fn vertex_input(function: &str, info: &FfvkVertexLayoutInfo) -> Result<Ve
             info.fog_coord.as_ref(),
         )
     };
+    // SAFETY: as above.
+    let units =
+        [info.texcoord1, info.texcoord2, info.texcoord3].map(|a| unsafe { a.as_ref() }.map(attribute));
     let position = attribute(&info.position);
     let mut input = VertexInput::new(bindings, position, position)
         .with_normal(normal.map(attribute))
         .with_color(color.map(attribute))
         .with_texcoord(texcoord.map(attribute))
+        .with_unit_texcoords(units)
         .with_secondary_color(secondary.map(attribute))
         .with_fog_coord(fog.map(attribute));
     // SAFETY: the caller's contract: material_count entries at materials (checked bounded).

@@ -7,6 +7,7 @@ use std::mem::{offset_of, size_of};
 
 use ffvk::ash::vk;
 
+use super::layout::FfvkVertexLayout;
 use super::layout::FfvkVertexLayoutInfo;
 use super::{raster_defaults, FfvkAttribute, FfvkDrawInfo, FfvkRaster, FfvkRendererCreateInfo, FfvkTexture};
 use crate::abi::{check_versions, frozen_version, Version, Versioned};
@@ -113,7 +114,46 @@ frozen_version! {
         primitive_restart: u8,
         raster: FfvkRaster,
         texture: *const FfvkTexture,
-        layout: *const super::layout::FfvkVertexLayout,
+        layout: *const FfvkVertexLayout,
+    }
+}
+
+frozen_version! {
+    /// `FfvkDrawInfo` as version 3 of `ffvk.h` declared it.
+    DrawInfoV3 of FfvkDrawInfo {
+        struct_size: u32,
+        mode: u32,
+        vertex_buffers: *const VkBuffer,
+        vertex_offsets: *const VkDeviceSize,
+        vertex_buffer_count: u32,
+        index_buffer: VkBuffer,
+        index_offset: VkDeviceSize,
+        index_type: VkIndexType,
+        first: u32,
+        count: u32,
+        vertex_offset: i32,
+        primitive_restart: u8,
+        raster: FfvkRaster,
+        texture: *const FfvkTexture,
+        layout: *const FfvkVertexLayout,
+        raster_source: u32,
+    }
+}
+
+frozen_version! {
+    /// `FfvkVertexLayoutInfo` as version 1 of `ffvk.h` declared it.
+    VertexLayoutInfoV1 of FfvkVertexLayoutInfo {
+        struct_size: u32,
+        bindings: *const VkVertexInputBindingDescription,
+        binding_count: u32,
+        position: FfvkAttribute,
+        normal: *const FfvkAttribute,
+        color: *const FfvkAttribute,
+        texcoord: *const FfvkAttribute,
+        secondary_color: *const FfvkAttribute,
+        fog_coord: *const FfvkAttribute,
+        materials: *const super::layout::FfvkMaterialAttribute,
+        material_count: u32,
     }
 }
 
@@ -132,8 +172,13 @@ unsafe impl Versioned for FfvkDrawInfo {
         },
         // Version 3: where the draw's raster state comes from.
         Version {
-            size: size_of::<FfvkDrawInfo>(),
+            size: size_of::<DrawInfoV3>(),
             first_field: offset_of!(FfvkDrawInfo, raster_source),
+        },
+        // Version 4: the textures of units 1 to 3.
+        Version {
+            size: size_of::<FfvkDrawInfo>(),
+            first_field: offset_of!(FfvkDrawInfo, texture1),
         },
     ];
     fn defaults() -> Self {
@@ -154,6 +199,9 @@ unsafe impl Versioned for FfvkDrawInfo {
             texture: std::ptr::null(),
             layout: std::ptr::null(),
             raster_source: super::FFVK_RASTER_SOURCE_DRAW,
+            texture1: std::ptr::null(),
+            texture2: std::ptr::null(),
+            texture3: std::ptr::null(),
         }
     }
 }
@@ -161,10 +209,17 @@ unsafe impl Versioned for FfvkDrawInfo {
 // SAFETY: as above: integers, raw pointers and Vulkan's formats.
 unsafe impl Versioned for FfvkVertexLayoutInfo {
     const NAME: &'static str = "FfvkVertexLayoutInfo";
-    const VERSIONS: &'static [Version] = &[Version {
-        size: size_of::<FfvkVertexLayoutInfo>(),
-        first_field: 0,
-    }];
+    const VERSIONS: &'static [Version] = &[
+        Version {
+            size: size_of::<VertexLayoutInfoV1>(),
+            first_field: 0,
+        },
+        // Version 2: the coordinate arrays of texture units 1 to 3.
+        Version {
+            size: size_of::<FfvkVertexLayoutInfo>(),
+            first_field: offset_of!(FfvkVertexLayoutInfo, texcoord1),
+        },
+    ];
     fn defaults() -> Self {
         let none = FfvkAttribute {
             binding: 0,
@@ -183,6 +238,9 @@ unsafe impl Versioned for FfvkVertexLayoutInfo {
             fog_coord: std::ptr::null(),
             materials: std::ptr::null(),
             material_count: 0,
+            texcoord1: std::ptr::null(),
+            texcoord2: std::ptr::null(),
+            texcoord3: std::ptr::null(),
         }
     }
 }
@@ -202,23 +260,35 @@ mod tests {
 
     #[test]
     fn every_struct_with_a_struct_size_has_its_published_versions_the_last_its_size_today() {
-        for (name, versions, size) in [
-            (
-                "FfvkRendererCreateInfo",
-                FfvkRendererCreateInfo::VERSIONS,
-                size_of::<FfvkRendererCreateInfo>(),
-            ),
-            (
-                "FfvkVertexLayoutInfo",
-                FfvkVertexLayoutInfo::VERSIONS,
-                size_of::<FfvkVertexLayoutInfo>(),
-            ),
-        ] {
-            assert_eq!(versions, [Version { size, first_field: 0 }], "{name}");
-        }
+        assert_eq!(
+            FfvkRendererCreateInfo::VERSIONS,
+            [Version {
+                size: size_of::<FfvkRendererCreateInfo>(),
+                first_field: 0
+            }]
+        );
+        // FfvkVertexLayoutInfo: version 1, and version 2, the units' coordinate arrays right
+        // after version 1's end.
+        assert_eq!(
+            FfvkVertexLayoutInfo::VERSIONS,
+            [
+                Version {
+                    size: size_of::<VertexLayoutInfoV1>(),
+                    first_field: 0
+                },
+                Version {
+                    size: size_of::<FfvkVertexLayoutInfo>(),
+                    first_field: offset_of!(FfvkVertexLayoutInfo, texcoord1)
+                }
+            ]
+        );
+        assert_eq!(
+            offset_of!(FfvkVertexLayoutInfo, texcoord1),
+            size_of::<VertexLayoutInfoV1>()
+        );
         // FfvkDrawInfo: version 1 (ffvk-c 0.1's first header), version 2, which appended the
-        // layout right after version 1's end, and version 3, the raster source after version
-        // 2's end.
+        // layout right after version 1's end, version 3, the raster source after version 2's
+        // end, and version 4, the units' textures after version 3's.
         assert_eq!(
             FfvkDrawInfo::VERSIONS,
             [
@@ -231,13 +301,18 @@ mod tests {
                     first_field: offset_of!(FfvkDrawInfo, layout)
                 },
                 Version {
-                    size: size_of::<FfvkDrawInfo>(),
+                    size: size_of::<DrawInfoV3>(),
                     first_field: offset_of!(FfvkDrawInfo, raster_source)
+                },
+                Version {
+                    size: size_of::<FfvkDrawInfo>(),
+                    first_field: offset_of!(FfvkDrawInfo, texture1)
                 }
             ]
         );
         assert_eq!(offset_of!(FfvkDrawInfo, layout), size_of::<DrawInfoV1>());
         assert_eq!(offset_of!(FfvkDrawInfo, raster_source), size_of::<DrawInfoV2>());
+        assert_eq!(offset_of!(FfvkDrawInfo, texture1), size_of::<DrawInfoV3>());
     }
 
     #[test]
@@ -274,9 +349,41 @@ mod tests {
             crate::render::FFVK_RASTER_SOURCE_DRAW,
             "a version 2 draw takes its raster state from its raster, the default"
         );
-        info.struct_size = size_of::<FfvkDrawInfo>() as u32;
-        // SAFETY: as above, struct_size covering all of it.
+        info.struct_size = size_of::<DrawInfoV3>() as u32;
+        // Where a version 3 caller's memory ends: not read.
+        info.texture1 = std::ptr::dangling();
+        // SAFETY: as above.
         let read = unsafe { crate::abi::read("test", &info) }.expect("version 3's size is accepted");
         assert_eq!(read.raster_source, crate::render::FFVK_RASTER_SOURCE_CONTEXT);
+        assert!(
+            read.texture1.is_null(),
+            "a version 3 draw binds no texture to unit 1"
+        );
+        info.struct_size = size_of::<FfvkDrawInfo>() as u32;
+        // SAFETY: as above, struct_size covering all of it.
+        let read = unsafe { crate::abi::read("test", &info) }.expect("version 4's size is accepted");
+        assert_eq!(read.texture1, std::ptr::dangling());
+    }
+
+    #[test]
+    fn a_version_1_vertex_layout_info_reads_no_coordinate_arrays_of_units_1_to_3() {
+        let mut info = FfvkVertexLayoutInfo::defaults();
+        info.struct_size = size_of::<VertexLayoutInfoV1>() as u32;
+        info.material_count = 3;
+        // Where a version 1 caller's memory ends: not read.
+        info.texcoord1 = std::ptr::dangling();
+        info.texcoord3 = std::ptr::dangling();
+        // SAFETY: a whole current struct, aligned; struct_size covers less of it.
+        let read = unsafe { crate::abi::read("test", &info) }.expect("version 1's size is accepted");
+        assert_eq!(read.material_count, 3);
+        assert!(read.texcoord1.is_null() && read.texcoord2.is_null() && read.texcoord3.is_null());
+        info.struct_size = size_of::<FfvkVertexLayoutInfo>() as u32;
+        // SAFETY: as above, struct_size covering all of it.
+        let read = unsafe { crate::abi::read("test", &info) }.expect("version 2's size is accepted");
+        assert_eq!(
+            (read.texcoord1, read.texcoord3),
+            (std::ptr::dangling(), std::ptr::dangling())
+        );
+        assert!(read.texcoord2.is_null());
     }
 }

@@ -5,11 +5,10 @@
 //! other than 1, 2 or 4, values and names that are none of GL's); the mode switched to
 //! `GL_COMBINE` and away. Each case is followed by glGetTexEnv{i,f}v of every name.
 //!
-//! `GL_TEXTUREn` sources (ARB_texture_env_crossbar, core since GL 1.4) are not here: ffvk has
-//! one texture unit and refuses them (`ffvk-c/tests/boundary.rs` checks the message), where
-//! Mesa takes them. Nor are the extensions' names and values Mesa takes beyond GL 2.1's
-//! (NV_texture_env_combine4's fourth argument, `GL_OPERAND3_ALPHA_NV` 0x859B;
-//! ATI_texture_env_combine3's functions and `GL_ZERO`/`GL_ONE` sources).
+//! `GL_TEXTUREn` sources (ARB_texture_env_crossbar, core since GL 1.4) are in `units.rs`,
+//! with the texture units they name. Not here either: the extensions' names and values Mesa
+//! takes beyond GL 2.1's (NV_texture_env_combine4's fourth argument, `GL_OPERAND3_ALPHA_NV`
+//! 0x859B; ATI_texture_env_combine3's functions and `GL_ZERO`/`GL_ONE` sources).
 
 use super::{Call, Query, Step};
 
