@@ -141,7 +141,10 @@ fn gl_image(scene: &Scene, mode: LightingMode) -> RgbaImage {
             let mut state = scene.draw_state(mesh);
             state.mode = mode;
             let mut draw = GlDraw::new(&mesh.data, scene.modelview(mesh), scene.projection, state);
-            draw.textures[0] = mesh.texture.as_ref().map(|t| (&*t.image, t.sampling));
+            for (unit, texture) in draw.textures.iter_mut().zip(&mesh.textures) {
+                *unit = texture.as_ref().map(|t| (&*t.image, t.sampling));
+            }
+            draw.mesh_texcoords = mesh.mesh_texcoords();
             draw.point_size = scene.point_size;
             draw.calls = mesh_raster_calls(&mesh.raster);
             draw
@@ -293,8 +296,7 @@ fn the_cpu_reference_predicts_every_stage_at_a_grid_of_probes_in_every_mode() {
                             // Mipmapped texels: the level of detail is the device's (from 2×2
                             // quads); as the texturing tests, 4/255 where λ ≤ 2.5.
                             let mipmapped = scene.meshes[hit.mesh]
-                                .texture
-                                .as_ref()
+                                .texture()
                                 .is_some_and(|tex| tex.sampling.min_filter.uses_mipmaps());
                             let lambda = t.textured.map_or(0.0, |tex| tex.lambda);
                             if mipmapped && lambda > 2.5 {
