@@ -425,8 +425,9 @@ pub(super) struct TextureSpec {
     /// `GL_COMBINE`'s parameters, read with `env = "combine"`.
     pub(super) combine: Option<CombineSpec>,
     /// Units 1-3: the mesh's texture coordinates ("mesh") or the unit's current ones
-    /// (glMultiTexCoord4f: 4 numbers); (0, 0, 0, 1), GL's, by default.
-    pub(super) coords: Option<CoordsSpec>,
+    /// (glMultiTexCoord4f: 4 numbers); (0, 0, 0, 1), GL's, by default. Read as any value, so
+    /// that a wrong one is refused naming the field.
+    pub(super) coords: Option<toml::Value>,
     pub(super) min_filter: Option<String>,
     pub(super) mag_filter: Option<String>,
     pub(super) wrap_s: Option<String>,
@@ -484,12 +485,4 @@ pub(super) struct CombineSpec {
     pub(super) rgb_scale: Option<f64>,
     /// `GL_ALPHA_SCALE`: 1, 2 or 4.
     pub(super) alpha_scale: Option<f64>,
-}
-
-/// A unit's `coords`: a word ("mesh") or the unit's current coordinates.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(untagged)]
-pub(super) enum CoordsSpec {
-    Word(String),
-    Numbers(Vec<f32>),
 }

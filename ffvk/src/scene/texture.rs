@@ -10,7 +10,7 @@ use std::sync::Arc;
 
 use glam::{Mat4, Quat, Vec3, Vec4};
 
-use super::file::{CoordsSpec, TexCoordGenSpec, TextureSpec};
+use super::file::{TexCoordGenSpec, TextureSpec};
 use super::{shorten, Builder, SceneError};
 use crate::gl::state::{Cap, GlState};
 use crate::gl::texture::{
@@ -235,7 +235,7 @@ impl Builder<'_> {
 
     /// Unit `unit`'s `coords` at `field`: unit 0 takes the mesh's always; units 1-3 the
     /// mesh's ("mesh") or their current ones (4 finite numbers), GL's (0, 0, 0, 1) by default.
-    fn coords(&self, field: &str, spec: Option<&CoordsSpec>, unit: usize) -> Result<TexCoords, SceneError> {
+    fn coords(&self, field: &str, spec: Option<&toml::Value>, unit: usize) -> Result<TexCoords, SceneError> {
         const EXPECTED: &str = "expected \"mesh\" (the mesh's texture coordinates) or 4 numbers (s, t, r, q, as glMultiTexCoord4f)";
         let Some(spec) = spec else {
             return Ok(if unit == 0 {
@@ -250,16 +250,28 @@ impl Builder<'_> {
                 "is given for unit 0, which always takes the mesh's texture coordinates: expected coords on units 1 to 3 only",
             ));
         }
+        let number = |v: &toml::Value| match v {
+            toml::Value::Integer(i) => Some(*i as f32),
+            toml::Value::Float(x) => Some(*x as f32),
+            _ => None,
+        };
         match spec {
-            CoordsSpec::Word(w) if w == "mesh" => Ok(TexCoords::Mesh),
-            CoordsSpec::Word(w) => Err(self.field(field, format!("{:?}: {EXPECTED}", shorten(w)))),
-            CoordsSpec::Numbers(v) => {
-                let &[s, t, r, q] = v.as_slice() else {
-                    return Err(self.field(field, format!("{} numbers: {EXPECTED}", v.len())));
+            toml::Value::String(w) if w == "mesh" => Ok(TexCoords::Mesh),
+            toml::Value::String(w) => Err(self.field(field, format!("{:?}: {EXPECTED}", shorten(w)))),
+            toml::Value::Array(items) => {
+                let numbers: Option<Vec<f32>> = items.iter().map(number).collect();
+                let Some(&[s, t, r, q]) = numbers.as_deref() else {
+                    let what = match numbers {
+                        Some(v) => format!("{} numbers", v.len()),
+                        None => shorten(&spec.to_string()),
+                    };
+                    return Err(self.field(field, format!("{what}: {EXPECTED}")));
                 };
-                self.finite(field, v)?;
-                Ok(TexCoords::Current(Vec4::new(s, t, r, q)))
+                let c = Vec4::new(s, t, r, q);
+                self.finite(field, &c.to_array())?;
+                Ok(TexCoords::Current(c))
             }
+            other => Err(self.field(field, format!("{}: {EXPECTED}", shorten(&other.to_string())))),
         }
     }
 
