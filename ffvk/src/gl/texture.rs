@@ -772,6 +772,23 @@ mod tests {
     }
 
     #[test]
+    fn the_light_map_is_opaque_dim_between_its_pools_and_warm_and_cool_at_them() {
+        let image = TextureImage::lightmap(64).unwrap();
+        assert_eq!((image.width(), image.height()), (64, 64));
+        let level = &image.levels()[0];
+        assert!(level.rgba().chunks(4).all(|t| t[3] == 255));
+        // A corner far from both pools: the ambient 0.2 alone.
+        assert_eq!(level.texel(63, 0), [51, 51, 51, 255]);
+        // Near the warm pool's centre (0.3, 0.35): about 0.2 + (1, 0.8, 0.55), clamped; near
+        // the cool one's (0.72, 0.7), outside the warm one: about 0.2 + (0.45, 0.6, 1).
+        let [r, g, b, _] = level.texel(19, 22);
+        assert!(r == 255 && g > 240 && b > 180 && b < 200, "{:?}", [r, g, b]);
+        let [r, g, b, _] = level.texel(46, 45);
+        assert!(r < 180 && g > 190 && b == 255, "{:?}", [r, g, b]);
+        assert!(TextureImage::lightmap(1).is_ok_and(|i| i.width() == 4));
+    }
+
+    #[test]
     fn a_one_texel_wide_level_averages_pairs() {
         let image = TextureImage::new(
             1,
