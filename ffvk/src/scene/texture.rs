@@ -110,8 +110,9 @@ impl Builder<'_> {
         Ok(units)
     }
 
-    /// The texture a `texture` table at `field` describes for texture unit `unit.0` of a mesh
-    /// with `unit.1` units, or `None` when it is disabled; `warnings` gets a sentence when the
+    /// The texture a `texture` table at `field` describes for texture unit `index` of a mesh
+    /// of `units` units (the `GL_TEXTUREn` sources its `combine` may name), or `None` when it
+    /// is disabled; `warnings` gets a sentence when the
     /// texture is incomplete (it then textures nothing, as in GL). `view` is the camera's,
     /// which takes `texgen`'s eye planes to eye space.
     pub(super) fn texture(
