@@ -31,7 +31,7 @@ pub fn pixel_terms(scene: &Scene, hit: &Hit, mode: LightingMode) -> reference::P
     let mut state = scene.draw_state(mesh);
     state.mode = mode;
     let verts = hit.vertices.map(|i| &mesh.data.vertices[i]);
-    let bound = mesh.texture.as_ref().map(|t| (&*t.image, &t.sampling));
+    let bound = mesh.texture().map(|t| (&*t.image, &t.sampling));
     reference::pixel_terms(
         &state,
         scene.modelview(mesh),
@@ -390,7 +390,7 @@ fn explain_surface(
             }
         }
     }
-    match (&mesh.texture, pixel.textured) {
+    match (mesh.texture(), pixel.textured) {
         (Some(t), Some(tex)) => {
             let image = &t.image;
             let _ = writeln!(
@@ -440,6 +440,21 @@ fn explain_surface(
             );
         }
         (None, _) => {}
+    }
+    // The CPU reference applies unit 0 alone: say so where the mesh has more.
+    let more: Vec<String> = (1..mesh.textures.len())
+        .filter_map(|i| {
+            mesh.textures[i]
+                .as_ref()
+                .map(|t| format!("GL_TEXTURE{i} {} ({})", t.source, t.unit.env_mode.name()))
+        })
+        .collect();
+    if !more.is_empty() {
+        let _ = writeln!(
+            out,
+            "texture units after unit 0: {}; not predicted here (the CPU reference applies unit 0 alone), so the colors below leave them out",
+            more.join(", ")
+        );
     }
     stage_terms(out, &state, pixel);
     let color = pixel.color;

@@ -4,6 +4,7 @@
 //! file it was not asked to. glTF files also hold images, samplers, textures, sparse accessors
 //! and extensions, valid and not: one loaded although those make it invalid fails, and the
 //! run prints how often each family was generated and loaded (each must load at least once).
+//! A mesh's generated `texture_units` load and draw, or are refused naming one of their fields.
 //!
 //! Bounded for CI (a few hundred cases, under a minute); `FFVK_FUZZ_SCALE=N` multiplies every
 //! case count, e.g. `FFVK_FUZZ_SCALE=100 cargo test --release --test suite fuzz` (see the
@@ -195,9 +196,142 @@ const TABLES: &[(&str, &[&str])] = &[
             "rotate",
             "scale",
             "matrix",
+            "texture_units",
         ],
     ),
 ];
+
+/// A mesh's `texture_units`: one to five unit tables (four at most are taken) of builtin
+/// images, environments, coordinates and `combine` tables, mostly values the fields take and
+/// sometimes ones GL refuses (a dot product for alpha, a scale of 3, GL_TEXTURE4, coords on
+/// unit 0), each field sometimes left out.
+fn texture_units() -> BoxedStrategy<String> {
+    // `words` (TOML values) with probability `p`, else the field left out.
+    let pick = |p: f64, words: Vec<&'static str>| prop::option::weighted(p, prop::sample::select(words));
+    let source = prop::sample::select(vec![
+        "\"texture\"",
+        "\"previous\"",
+        "\"constant\"",
+        "\"primary_color\"",
+        "\"texture0\"",
+        "\"texture0\"",
+        "\"texture1\"",
+        "\"texture3\"",
+        "\"texture4\"",
+    ]);
+    let sources = prop::option::weighted(
+        0.4,
+        prop::collection::vec(source, 1..4).prop_map(|v| format!("[{}]", v.join(", "))),
+    );
+    let combine = (
+        pick(
+            0.5,
+            vec![
+                "\"modulate\"",
+                "\"interpolate\"",
+                "\"add\"",
+                "\"subtract\"",
+                "\"dot3_rgba\"",
+                "\"nope\"",
+            ],
+        ),
+        pick(
+            0.3,
+            vec!["\"replace\"", "\"add_signed\"", "\"modulate\"", "\"dot3_rgb\""],
+        ),
+        (sources.clone(), sources),
+        pick(
+            0.3,
+            vec![
+                "[\"src_color\", \"one_minus_src_alpha\"]",
+                "[\"one_minus_src_color\"]",
+                "[\"alpha\"]",
+            ],
+        ),
+        pick(
+            0.2,
+            vec![
+                "[\"one_minus_src_alpha\"]",
+                "[\"src_alpha\", \"src_alpha\"]",
+                "[\"src_color\"]",
+            ],
+        ),
+        pick(0.3, vec!["1", "2", "4.0", "2.0", "3"]),
+        pick(0.2, vec!["1", "4", "0.5"]),
+    )
+        .prop_map(
+            |(
+                rgb,
+                alpha,
+                (rgb_sources, alpha_sources),
+                rgb_operands,
+                alpha_operands,
+                rgb_scale,
+                alpha_scale,
+            )| {
+                let fields = [
+                    ("rgb", rgb.map(str::to_owned)),
+                    ("alpha", alpha.map(str::to_owned)),
+                    ("rgb_sources", rgb_sources),
+                    ("alpha_sources", alpha_sources),
+                    ("rgb_operands", rgb_operands.map(str::to_owned)),
+                    ("alpha_operands", alpha_operands.map(str::to_owned)),
+                    ("rgb_scale", rgb_scale.map(str::to_owned)),
+                    ("alpha_scale", alpha_scale.map(str::to_owned)),
+                ];
+                inline_table(fields)
+            },
+        );
+    let builtin = pick(
+        0.97,
+        vec![
+            "\"checker\"",
+            "\"lightmap\"",
+            "\"disc\"",
+            "\"leaves\"",
+            "\"checker\"",
+            "\"lightmap\"",
+            "\"nope\"",
+        ],
+    );
+    let coords = pick(
+        0.2,
+        vec!["\"mesh\"", "\"mesh\"", "[0.5, 0.5, 0.0, 1.0]", "[1, 2]", "true"],
+    );
+    let min_filter = pick(0.8, vec!["\"linear\"", "\"nearest\""]);
+    // Mostly a combine table only with env = "combine" (another environment refuses one);
+    // sometimes any.
+    let env_and_combine = prop_oneof![
+        5 => pick(0.5, vec!["\"modulate\"", "\"decal\"", "\"add\"", "\"blend\"", "\"nope\""]).prop_map(|e| (e, None)),
+        4 => combine.clone().prop_map(|c| (Some("\"combine\""), Some(c))),
+        1 => (pick(0.5, vec!["\"modulate\"", "\"combine\""]), prop::option::of(combine)),
+    ];
+    let unit = (builtin, env_and_combine, coords, min_filter).prop_map(
+        |(builtin, (env, combine), coords, min_filter)| {
+            let fields = [
+                ("builtin", builtin.map(str::to_owned)),
+                ("env", env.map(str::to_owned)),
+                ("coords", coords.map(str::to_owned)),
+                ("combine", combine),
+                ("min_filter", min_filter.map(str::to_owned)),
+            ];
+            inline_table(fields)
+        },
+    );
+    prop_oneof![8 => 1usize..5, 1 => Just(5usize)]
+        .prop_flat_map(move |n| prop::collection::vec(unit.clone(), n))
+        .prop_map(|units| format!("[{}]", units.join(", ")))
+        .boxed()
+}
+
+/// An inline TOML table of the `fields` given.
+fn inline_table<const N: usize>(fields: [(&str, Option<String>); N]) -> String {
+    let given: Vec<String> = fields
+        .into_iter()
+        .filter_map(|(k, v)| v.map(|v| format!("{k} = {v}")))
+        .collect();
+    format!("{{ {} }}", given.join(", "))
+}
 
 /// A value for scene-file key `key`: mostly one the field could take, sometimes anything.
 fn scene_value(key: &str) -> BoxedStrategy<String> {
@@ -237,6 +371,7 @@ fn scene_value(key: &str) -> BoxedStrategy<String> {
         "mesh" => words(vec!["thing", "other"]),
         "builtin" => words(vec!["teapot", "sphere", "plane", "cube"]),
         "level" => (1u32..12).prop_map(|l| l.to_string()).boxed(),
+        "texture_units" => texture_units(),
         _ => any::<bool>().prop_map(|b| b.to_string()).boxed(),
     };
     prop_oneof![8 => plausible, 1 => toml_value()].boxed()
@@ -372,6 +507,52 @@ fn generated_scene_files_load_or_fail_with_an_error_and_render_without_panicking
     let (loaded, refused) = (loaded.get(), refused.get());
     eprintln!("{loaded} loaded, {refused} refused");
     assert!(loaded > 0 && refused > 0, "{loaded} loaded, {refused} refused");
+}
+
+/// A plane's generated `texture_units` (see [`texture_units`]): each scene loads and draws, or
+/// is refused naming a field of the units, never a panic; some of several units draw.
+#[test]
+fn generated_texture_units_load_or_are_refused_by_field_and_draw_without_panicking() {
+    let path = sandbox("units").join("scene.toml");
+    let r = RefCell::new(Some(renderer()));
+    let (loaded, several, refused) = (Cell::new(0), Cell::new(0), Cell::new(0));
+    runner(300)
+        .run(&texture_units(), |units| {
+            let text = format!(
+                "[image]\nsize = [16, 16]\n[[meshes]]\nbuiltin = \"plane\"\ntexture_units = {units}\n"
+            );
+            match Scene::parse(&text, &path) {
+                Err(e) => {
+                    refused.set(refused.get() + 1);
+                    let message = e.to_string();
+                    prop_assert!(message.contains("meshes[0].texture_units"), "{message}\n{text}");
+                }
+                Ok(scene) => {
+                    loaded.set(loaded.get() + 1);
+                    let units = scene.meshes[0].textures.iter().flatten().count();
+                    several.set(several.get() + usize::from(units > 1));
+                    let mut renderer = r
+                        .borrow_mut()
+                        .take()
+                        .expect("the renderer survived the last case");
+                    let (renderer, result) = within(Duration::from_secs(60), "render_scene", move || {
+                        let result = ffvk::scene::render_scene(&mut renderer, &scene, None).map(|_| ());
+                        (renderer, result.map_err(|e| e.to_string()))
+                    })?;
+                    *r.borrow_mut() = Some(renderer);
+                    prop_assert!(result.is_ok(), "{result:?}\n{text}");
+                }
+            }
+            Ok(())
+        })
+        .unwrap();
+    finish(r.into_inner().unwrap());
+    let (loaded, several, refused) = (loaded.get(), several.get(), refused.get());
+    eprintln!("{loaded} loaded ({several} of several units), {refused} refused");
+    assert!(
+        several > 0 && refused > 0,
+        "{loaded} loaded ({several} of several units), {refused} refused"
+    );
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -43,6 +43,7 @@ mod rooms;
 mod scene;
 mod scene_raster;
 mod scene_texgen;
+mod scene_units;
 mod specialization;
 mod stage_scenes;
 mod state;

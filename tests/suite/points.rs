@@ -291,7 +291,7 @@ fn scene_files_take_the_points_and_refuse_bad_values_naming_the_field() {
     assert_eq!(p.distance_attenuation, Vec3::new(0.0, 0.5, 0.25));
     assert!(p.sprite);
     assert_eq!(p.sprite_origin, SpriteOrigin::LowerLeft);
-    let texture = s.meshes[0].texture.as_ref().expect("a texture");
+    let texture = s.meshes[0].texture().expect("a texture");
     assert!(texture.unit.coord_replace);
     // GL's defaults where left out.
     let s = Scene::parse(

@@ -28,7 +28,7 @@ fn texgen(texgen: &str) -> [TexCoordGen; 4] {
         "{CAMERA}[[meshes]]\nbuiltin = \"sphere\"\nlevel = 8\ntexture = {{ builtin = \"checker\", texgen = {texgen} }}\n"
     );
     let scene = parse("ok", &text).unwrap();
-    scene.meshes[0].texture.as_ref().expect("textured").unit.texgen
+    scene.meshes[0].texture().expect("textured").unit.texgen
 }
 
 /// The message of the error a scene whose sphere's texture has `texgen` fails with; it names
@@ -64,7 +64,7 @@ fn assert_close(a: Vec4, b: Vec4, what: &str) {
 fn texgen_left_out_is_gls_initial_generation() {
     let text = format!("{CAMERA}[[meshes]]\nbuiltin = \"sphere\"\ntexture = {{ builtin = \"checker\" }}\n");
     let scene = parse("plain", &text).unwrap();
-    let unit = scene.meshes[0].texture.as_ref().unwrap().unit;
+    let unit = scene.meshes[0].texture().unwrap().unit;
     assert_eq!(unit.texgen, TextureUnit::default().texgen);
     assert!(unit.texgen.iter().all(|g| !g.enabled));
     assert_eq!(unit.texgen_code(), 0);
@@ -161,7 +161,7 @@ fn an_eye_plane_is_given_in_world_space_and_stored_in_eye_space() {
         Vec4::new(-2.5, -1.2, -4.7, 1.0),
         "the view's image of the point",
     );
-    let plane = scene.meshes[0].texture.as_ref().unwrap().unit.texgen[0].eye_plane;
+    let plane = scene.meshes[0].texture().unwrap().unit.texgen[0].eye_plane;
     let given = Vec4::new(1.0, 0.5, 0.25, 2.0);
     assert!((plane.dot(eye) - given.dot(world)).abs() < 1e-5);
 }
@@ -177,11 +177,7 @@ fn the_scenes_texture_and_a_meshs_take_texgen_alike() {
          [[meshes]]\nbuiltin = \"teapot\"\nlevel = 2\ntexture = {{ builtin = \"checker\", texgen = {{ r = {{ mode = \"normal_map\" }} }} }}\n"
     );
     let scene = parse("shared", &text).unwrap();
-    let units: Vec<TextureUnit> = scene
-        .meshes
-        .iter()
-        .map(|m| m.texture.as_ref().unwrap().unit)
-        .collect();
+    let units: Vec<TextureUnit> = scene.meshes.iter().map(|m| m.texture().unwrap().unit).collect();
     for unit in &units[..2] {
         assert!(unit.texgen[..2]
             .iter()
@@ -283,7 +279,7 @@ fn the_chrome_asset_scene_is_sphere_mapped() {
     assert!(scene.warnings.is_empty(), "{:?}", scene.warnings);
     assert!(scene.state.lighting);
     let teapot = scene.meshes.iter().find(|m| m.name == "teapot").unwrap();
-    let g = teapot.texture.as_ref().unwrap().unit.texgen;
+    let g = teapot.texture().unwrap().unit.texgen;
     assert!(g[..2]
         .iter()
         .all(|g| g.enabled && g.mode == TexGenMode::SphereMap));

@@ -1,8 +1,8 @@
 //! The stages' asset scenes (fog.toml, foliage.toml, section.toml, the raster state's
-//! hidden_line.toml and mirror.toml, texture coordinate generation's chrome.toml) and
-//! variations of them, drawn through ffvk against Mesa's GL (vertex and flat modes: GL has no
-//! per-fragment lighting) and against the CPU reference at a grid of probes (every mode), and
-//! explained.
+//! hidden_line.toml and mirror.toml, texture coordinate generation's chrome.toml, the texture
+//! units' lightmap.toml) and variations of them, drawn through ffvk against Mesa's GL (vertex
+//! and flat modes: GL has no per-fragment lighting) and against the CPU reference at a grid of
+//! probes (every mode; the scenes of one texture unit, the one it applies), and explained.
 
 use std::path::{Path, PathBuf};
 
@@ -60,6 +60,8 @@ fn scenes() -> Vec<(String, Scene)> {
         ("mirror".into(), load(&asset("mirror.toml"))),
         // A lit teapot sphere-mapped (glTexGen's GL_SPHERE_MAP on S and T).
         ("chrome".into(), load(&asset("chrome.toml"))),
+        // Two texture units: a tiled base and a light map, the wall's through GL_COMBINE.
+        ("lightmap".into(), load(&asset("lightmap.toml"))),
         (
             // The fill screen-doored by a polygon stipple of 2 × 2 checks.
             "hidden_line_stippled".into(),
@@ -133,7 +135,7 @@ fn scenes() -> Vec<(String, Scene)> {
 
 /// The scene drawn by Mesa's GL as a GL program would draw it: each mesh with its state, its
 /// matrices and its texture.
-fn gl_image(scene: &Scene, mode: LightingMode) -> RgbaImage {
+pub(crate) fn gl_image(scene: &Scene, mode: LightingMode) -> RgbaImage {
     let draws = scene
         .meshes
         .iter()
@@ -141,7 +143,10 @@ fn gl_image(scene: &Scene, mode: LightingMode) -> RgbaImage {
             let mut state = scene.draw_state(mesh);
             state.mode = mode;
             let mut draw = GlDraw::new(&mesh.data, scene.modelview(mesh), scene.projection, state);
-            draw.textures[0] = mesh.texture.as_ref().map(|t| (&*t.image, t.sampling));
+            for (unit, texture) in draw.textures.iter_mut().zip(&mesh.textures) {
+                *unit = texture.as_ref().map(|t| (&*t.image, t.sampling));
+            }
+            draw.mesh_texcoords = mesh.mesh_texcoords();
             draw.point_size = scene.point_size;
             draw.calls = mesh_raster_calls(&mesh.raster);
             draw
@@ -158,7 +163,7 @@ fn gl_image(scene: &Scene, mode: LightingMode) -> RgbaImage {
 }
 
 /// Pixels whose channels differ by more than `tol`, out of all.
-fn differing(a: &RgbaImage, b: &RgbaImage, tol: u8) -> (usize, u8) {
+pub(crate) fn differing(a: &RgbaImage, b: &RgbaImage, tol: u8) -> (usize, u8) {
     let mut worst = 0;
     let n = a
         .pixels()
@@ -270,9 +275,15 @@ fn borderline(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> bool {
 fn the_cpu_reference_predicts_every_stage_at_a_grid_of_probes_in_every_mode() {
     let mut r = renderer();
     let mut seen_through = 0;
-    // The CPU reference draws filled triangles under GL's raster defaults: the particles
-    // (points) are left to points.rs, the raster state's scenes to Mesa (above).
-    let plain = |scene: &Scene| scene.meshes.iter().all(|m| m.raster.is_default());
+    // The CPU reference draws filled triangles under GL's raster defaults with texture unit 0
+    // alone: the particles (points) are left to points.rs, the raster state's scenes and those
+    // of several units to Mesa (above).
+    let plain = |scene: &Scene| {
+        scene
+            .meshes
+            .iter()
+            .all(|m| m.raster.is_default() && m.textures[1..].iter().all(Option::is_none))
+    };
     for (name, scene) in scenes()
         .into_iter()
         .filter(|(n, s)| !n.starts_with("particles") && plain(s))
@@ -293,8 +304,7 @@ fn the_cpu_reference_predicts_every_stage_at_a_grid_of_probes_in_every_mode() {
                             // Mipmapped texels: the level of detail is the device's (from 2×2
                             // quads); as the texturing tests, 4/255 where λ ≤ 2.5.
                             let mipmapped = scene.meshes[hit.mesh]
-                                .texture
-                                .as_ref()
+                                .texture()
                                 .is_some_and(|tex| tex.sampling.min_filter.uses_mipmaps());
                             let lambda = t.textured.map_or(0.0, |tex| tex.lambda);
                             if mipmapped && lambda > 2.5 {

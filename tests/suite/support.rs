@@ -219,7 +219,7 @@ pub fn reference_at(
         scene.projection,
         tri,
         hit.coverage,
-        mesh.texture.as_ref().map(|t| (&*t.image, &t.sampling)),
+        mesh.texture().map(|t| (&*t.image, &t.sampling)),
     );
     Some((hit, color))
 }

@@ -11,7 +11,7 @@
 //! [`TextureBinding`] that names them.
 //!
 //! A draw binds one set for all its units. Sets are made per frame slot, one for each
-//! combination of textures the slot's draws sample ([`UnitSets`]), and freed together when
+//! combination of textures the slot's draws sample (`UnitSets`), and freed together when
 //! the slot is begun again: the cost is one `vkAllocateDescriptorSets` and one
 //! `vkUpdateDescriptorSets` of the sampled units' descriptors per combination per frame, where
 //! one set per texture would need a set index per unit (Vulkan guarantees four bound sets in

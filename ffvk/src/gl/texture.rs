@@ -629,6 +629,35 @@ impl TextureImage {
         TextureImage::new(size, size, rgba)
     }
 
+    /// A light map for a second texture unit: a `size`² (at least 4) opaque RGB texture of
+    /// dim ambient light (0.2) with two soft pools, a warm one (1, 0.8, 0.55) around
+    /// (0.3, 0.35) and a cool one (0.45, 0.6, 1) around (0.72, 0.7) in (s, t), each falling off
+    /// as (1 − d²/r²)² to its radius r (0.38, 0.3); the sum clamped to 1.
+    pub fn lightmap(size: u32) -> Result<Self, TextureError> {
+        const POOLS: [([f32; 2], f32, [f32; 3]); 2] = [
+            ([0.3, 0.35], 0.38, [1.0, 0.8, 0.55]),
+            ([0.72, 0.7], 0.3, [0.45, 0.6, 1.0]),
+        ];
+        let size = size.max(4);
+        let mut rgba = Vec::with_capacity(size as usize * size as usize * 4);
+        for j in 0..size {
+            for i in 0..size {
+                let p = glam::Vec2::new(i as f32 + 0.5, j as f32 + 0.5) / size as f32;
+                let mut light = glam::Vec3::splat(0.2);
+                for (centre, radius, color) in POOLS {
+                    let falloff = (1.0 - p.distance_squared(centre.into()) / (radius * radius)).max(0.0);
+                    light += glam::Vec3::from(color) * falloff * falloff;
+                }
+                let [r, g, b] = light
+                    .min(glam::Vec3::ONE)
+                    .to_array()
+                    .map(|c| (c * 255.0).round() as u8);
+                rgba.extend_from_slice(&[r, g, b, 255]);
+            }
+        }
+        TextureImage::new(size, size, rgba)
+    }
+
     /// Level 0's width.
     pub fn width(&self) -> u32 {
         self.levels.first().map_or(0, |l| l.width)
@@ -788,6 +817,23 @@ mod tests {
         assert_eq!(image.levels[2].texel(0, 0), [255; 4]);
         assert_eq!(image.levels[2].texel(1, 0), [0, 0, 0, 255]);
         assert_eq!(image.levels[3].texel(0, 0), [128, 128, 128, 255]);
+    }
+
+    #[test]
+    fn the_light_map_is_opaque_dim_between_its_pools_and_warm_and_cool_at_them() {
+        let image = TextureImage::lightmap(64).unwrap();
+        assert_eq!((image.width(), image.height()), (64, 64));
+        let level = &image.levels()[0];
+        assert!(level.rgba().chunks(4).all(|t| t[3] == 255));
+        // A corner far from both pools: the ambient 0.2 alone.
+        assert_eq!(level.texel(63, 0), [51, 51, 51, 255]);
+        // Near the warm pool's centre (0.3, 0.35): about 0.2 + (1, 0.8, 0.55), clamped; near
+        // the cool one's (0.72, 0.7), outside the warm one: about 0.2 + (0.45, 0.6, 1).
+        let [r, g, b, _] = level.texel(19, 22);
+        assert!(r == 255 && g > 240 && b > 180 && b < 200, "{:?}", [r, g, b]);
+        let [r, g, b, _] = level.texel(46, 45);
+        assert!(r < 180 && g > 190 && b == 255, "{:?}", [r, g, b]);
+        assert!(TextureImage::lightmap(1).is_ok_and(|i| i.width() == 4));
     }
 
     #[test]

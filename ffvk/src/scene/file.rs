@@ -267,8 +267,10 @@ pub(super) struct MeshSpec {
     /// Front (and back unless `back_material`) material for this mesh only.
     pub(super) material: Option<MaterialSpec>,
     pub(super) back_material: Option<MaterialSpec>,
-    /// This mesh's texture (`enabled = false` draws it untextured).
+    /// This mesh's texture (`enabled = false` draws it untextured): unit 0 alone.
     pub(super) texture: Option<TextureSpec>,
+    /// This mesh's texture units, `GL_TEXTURE0` first (at most four); not with `texture`.
+    pub(super) texture_units: Option<Vec<TextureSpec>>,
     /// GL's primitive mode its index list is drawn with ("triangles" by default): "points",
     /// "lines", "line_strip", "line_loop", "triangles", "triangle_strip", "triangle_fan",
     /// "quads", "quad_strip" or "polygon".
@@ -414,12 +416,18 @@ pub(super) struct TextureSpec {
     pub(super) enabled: Option<bool>,
     /// A PNG or JPEG file, relative to the scene file.
     pub(super) image: Option<std::path::PathBuf>,
-    /// A built-in image: "checker", "leaves" or "disc".
+    /// A built-in image: "checker", "leaves", "disc" or "lightmap".
     pub(super) builtin: Option<String>,
     /// `GL_COORD_REPLACE`: point sprites take the sprite's coordinates; off by default.
     pub(super) coord_replace: Option<bool>,
     pub(super) env: Option<String>,
     pub(super) env_color: Option<Vec<f32>>,
+    /// `GL_COMBINE`'s parameters, read with `env = "combine"`.
+    pub(super) combine: Option<CombineSpec>,
+    /// Units 1-3: the mesh's texture coordinates ("mesh") or the unit's current ones
+    /// (glMultiTexCoord4f: 4 numbers); (0, 0, 0, 1), GL's, by default. Read as any value, so
+    /// that a wrong one is refused naming the field.
+    pub(super) coords: Option<toml::Value>,
     pub(super) min_filter: Option<String>,
     pub(super) mag_filter: Option<String>,
     pub(super) wrap_s: Option<String>,
@@ -454,4 +462,27 @@ pub(super) struct TexCoordGenSpec {
     /// GL_OBJECT_PLANE or GL_EYE_PLANE (the mode's), 4 numbers; an eye plane in world space.
     /// Read as a list, so that a wrong length is refused by name.
     pub(super) plane: Option<Vec<f64>>,
+}
+
+/// A unit's `combine` table: glTexEnv's `GL_COMBINE` parameters (table 6.19's defaults for
+/// those left out). Lists are read whole, so that a bad entry is refused naming its index.
+#[derive(Debug, Default, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct CombineSpec {
+    /// `GL_COMBINE_RGB`: "modulate" by default.
+    pub(super) rgb: Option<String>,
+    /// `GL_COMBINE_ALPHA`: "modulate" by default; never a dot product.
+    pub(super) alpha: Option<String>,
+    /// `GL_SRC0_RGB` .. `GL_SRC2_RGB`, at most three, from Arg0.
+    pub(super) rgb_sources: Option<Vec<String>>,
+    /// `GL_SRC0_ALPHA` .. `GL_SRC2_ALPHA`.
+    pub(super) alpha_sources: Option<Vec<String>>,
+    /// `GL_OPERAND0_RGB` .. `GL_OPERAND2_RGB`.
+    pub(super) rgb_operands: Option<Vec<String>>,
+    /// `GL_OPERAND0_ALPHA` .. `GL_OPERAND2_ALPHA`.
+    pub(super) alpha_operands: Option<Vec<String>>,
+    /// `GL_RGB_SCALE`: 1, 2 or 4. Read as a float, so that 2 and 2.0 alike are taken.
+    pub(super) rgb_scale: Option<f64>,
+    /// `GL_ALPHA_SCALE`: 1, 2 or 4.
+    pub(super) alpha_scale: Option<f64>,
 }

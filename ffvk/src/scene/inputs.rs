@@ -31,10 +31,12 @@ pub fn inputs(path: &Path, limits: &Limits) -> Vec<PathBuf> {
         return files;
     };
     let folder = path.parent().unwrap_or(Path::new(""));
-    let textures = scene
-        .texture
-        .iter()
-        .chain(scene.meshes.iter().filter_map(|m| m.texture.as_ref()));
+    let textures = scene.texture.iter().chain(
+        scene
+            .meshes
+            .iter()
+            .flat_map(|m| m.texture.iter().chain(m.texture_units.iter().flatten())),
+    );
     files.extend(
         textures
             .filter_map(|t| t.image.as_ref())

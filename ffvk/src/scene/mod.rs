@@ -6,6 +6,7 @@
 
 mod build;
 mod builtin;
+mod combine;
 pub mod direct;
 mod file;
 pub mod gltf;
@@ -13,10 +14,12 @@ mod inputs;
 mod meaning;
 mod open;
 mod raster;
+mod render;
 mod texture;
 
 pub use inputs::inputs;
 pub use open::{open, OpenNote};
+pub use render::{render_scene, render_scene_with};
 
 use std::path::{Path, PathBuf};
 
@@ -29,12 +32,13 @@ use self::file::{
 use self::gltf::{GltfLights, LoadError, PunctualLight};
 pub use self::meaning::{auto_exposure, GltfMeaning};
 pub use self::raster::MeshRaster;
-pub use self::texture::MeshTexture;
+pub use self::texture::{MeshTexture, TexCoords};
 use crate::gl::presets;
 use crate::gl::state::{
     Attenuation, Cap, ColorControl, ColorMaterialMode, DrawValues, Face, FixedFunctionState, GlState,
     LightModelParam, LightParam, LightingMode, Material, SpecularModel, SpotEdge, StateError, MAX_LIGHTS,
 };
+use crate::gl::texture::MAX_TEXTURE_UNITS;
 use crate::mesh::MeshData;
 
 /// The largest image side a scene may ask for (the renderer also checks its device's limit).
@@ -433,9 +437,10 @@ pub struct SceneMesh {
     /// What glTF asks of this mesh where the scene follows glTF's meaning (`gltf_defaults`);
     /// `None` for built-in shapes and in scenes that keep GL's defaults.
     pub gltf: Option<GltfMeaning>,
-    /// The texture it is drawn with: the mesh's `texture`, else the scene's `[texture]`, else
-    /// (under glTF's meaning) its glTF base color texture; `None` draws it untextured.
-    pub texture: Option<MeshTexture>,
+    /// The textures its units are drawn with, `GL_TEXTURE0` first: the mesh's `texture_units`,
+    /// else its `texture` (unit 0), else the scene's `[texture]`, else (under glTF's meaning)
+    /// its glTF base color texture; `None` leaves a unit off (all `None`: untextured).
+    pub textures: [Option<MeshTexture>; MAX_TEXTURE_UNITS],
     /// Whether lighting applies: false for glTF points and lines without normals, which are
     /// drawn unlit (glTF 2.0: lighting needs normals).
     pub lit: bool,
@@ -482,8 +487,28 @@ pub struct Scene {
     pub notes: Vec<String>,
 }
 
+impl SceneMesh {
+    /// Unit 0's texture (see [`SceneMesh::textures`]).
+    pub fn texture(&self) -> Option<&MeshTexture> {
+        self.textures[0].as_ref()
+    }
+
+    /// The units 1-3 whose texture coordinates are the mesh's ([`TexCoords::Mesh`]), a bit
+    /// each, as [`Draw::mesh_texcoords`](crate::Draw::mesh_texcoords) takes them.
+    pub fn mesh_texcoords(&self) -> u32 {
+        (1..MAX_TEXTURE_UNITS)
+            .filter(|&i| {
+                self.textures[i]
+                    .as_ref()
+                    .is_some_and(|t| t.coords == TexCoords::Mesh)
+            })
+            .fold(0, |bits, i| bits | 1 << i)
+    }
+}
+
 impl Scene {
-    /// The lighting state `mesh` is drawn with.
+    /// The lighting state `mesh` is drawn with: its materials, its texture units and their
+    /// current texture coordinates.
     pub fn draw_state(&self, mesh: &SceneMesh) -> FixedFunctionState {
         let mut state = self.state;
         state.front = mesh.front;
@@ -491,8 +516,12 @@ impl Scene {
         if let Some(meaning) = &mesh.gltf {
             meaning.apply(&mut state);
         }
-        if let Some(texture) = &mesh.texture {
-            state.texture_units[0] = texture.unit;
+        for (i, texture) in mesh.textures.iter().enumerate() {
+            let Some(texture) = texture else { continue };
+            state.texture_units[i] = texture.unit;
+            if let TexCoords::Current(c) = texture.coords {
+                state.current_texcoords[i] = c;
+            }
         }
         state.lighting &= mesh.lit;
         state
@@ -615,95 +644,4 @@ impl Scene {
         }
         .build(file)
     }
-}
-
-/// Draws a scene with `renderer`; `mode` overrides the file's lighting mode when given.
-pub fn render_scene(
-    renderer: &mut crate::Renderer,
-    scene: &Scene,
-    mode: Option<LightingMode>,
-) -> crate::Result<image::RgbaImage> {
-    render_scene_with(renderer, scene, mode, None)
-}
-
-/// [`render_scene`], `path` overriding the scene's [`Scene::fragment_path`] when given.
-pub fn render_scene_with(
-    renderer: &mut crate::Renderer,
-    scene: &Scene,
-    mode: Option<LightingMode>,
-    path: Option<crate::FragmentPath>,
-) -> crate::Result<image::RgbaImage> {
-    let (width, height) = (scene.width, scene.height);
-    let uploaded = scene
-        .meshes
-        .iter()
-        .map(|m| renderer.upload(&m.data))
-        .collect::<crate::Result<Vec<_>>>()?;
-    // Each image once, however many meshes share it (by image and sampling, as a GL program
-    // keeps one texture object per image and parameters).
-    let mut textures: Vec<(&MeshTexture, crate::Texture)> = Vec::new();
-    for t in scene.meshes.iter().filter_map(|m| m.texture.as_ref()) {
-        if !textures
-            .iter()
-            .any(|(u, _)| std::sync::Arc::ptr_eq(&u.image, &t.image) && u.sampling == t.sampling)
-        {
-            textures.push((t, renderer.upload_texture(&t.image, &t.sampling)?));
-        }
-    }
-    let texture_of = |t: &MeshTexture| {
-        textures
-            .iter()
-            .find(|(u, _)| std::sync::Arc::ptr_eq(&u.image, &t.image) && u.sampling == t.sampling)
-            .map(|(_, gpu)| gpu)
-    };
-    let mut frame = crate::Frame::new(width, height);
-    frame.clear_color = scene.clear_color;
-    frame.depth_test = scene.depth_test;
-    frame.clear_stencil = scene.clear_stencil;
-    frame.fragment_path = path.unwrap_or(scene.fragment_path);
-    // In file order: what one mesh leaves in the stencil and depth buffers is what the next
-    // one is tested against.
-    for (mesh, gpu) in scene.meshes.iter().zip(&uploaded) {
-        let raster = &mesh.raster;
-        let mut state = scene.draw_state(mesh);
-        if let Some(mode) = mode {
-            state.mode = mode;
-        }
-        frame.draws.push(crate::Draw {
-            mesh: gpu,
-            modelview: scene.modelview(mesh),
-            projection: scene.projection,
-            state,
-            cull_face: scene.cull_face(mesh),
-            front_face: raster.front_face,
-            textures: {
-                let mut textures = [None; crate::gl::texture::MAX_TEXTURE_UNITS];
-                textures[0] = mesh.texture.as_ref().and_then(texture_of);
-                textures
-            },
-            cube_maps: [None; crate::gl::texture::MAX_TEXTURE_UNITS],
-            mesh_texcoords: 0,
-            topology: gpu.topology(),
-            // glPointSize draws points only: other meshes keep GL's 1 (their pipelines are
-            // not split by it).
-            point_size: if gpu.topology() == crate::Topology::PointList {
-                scene.point_size
-            } else {
-                1.0
-            },
-            line_width: 1.0,
-            polygon_offset: raster.polygon_offset,
-            color_mask: raster.color_mask,
-            blend: raster.blend,
-            blend_color: raster.blend_color,
-            polygon_mode: raster.polygon_mode,
-            stencil: raster.stencil,
-            logic_op: raster.logic_op,
-            line_stipple: raster.line_stipple,
-            depth_range: raster.depth_range,
-            depth_write: raster.depth_write,
-            polygon_stipple: raster.polygon_stipple,
-        });
-    }
-    Ok(renderer.render(&frame)?.into())
 }

@@ -1,6 +1,8 @@
-//! The `[texture]` table of a scene file (and a mesh's own `texture`): GL_TEXTURE_2D with a
-//! texture image from a PNG or JPEG file or a built-in pattern, glTexParameter's filters and
-//! wraps, GL_GENERATE_MIPMAP, glTexEnv, glTexGen and the GL_TEXTURE matrix.
+//! The `[texture]` table of a scene file (and a mesh's own `texture`, or each of its
+//! `texture_units`): GL_TEXTURE_2D with a texture image from a PNG or JPEG file or a built-in
+//! pattern, glTexParameter's filters and wraps, GL_GENERATE_MIPMAP, glTexEnv (`GL_COMBINE`'s
+//! parameters in `combine.rs`), glTexGen, the GL_TEXTURE matrix and, for units 1-3, where the
+//! unit's texture coordinates come from.
 
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -13,7 +15,7 @@ use super::{shorten, Builder, SceneError};
 use crate::gl::state::{Cap, GlState};
 use crate::gl::texture::{
     MagFilter, MinFilter, Sampling, TexCoordGen, TexEnvMode, TexGenMode, TextureImage, TextureUnit, Wrap,
-    MAX_TEXTURE_SIZE,
+    MAX_TEXTURE_SIZE, MAX_TEXTURE_UNITS,
 };
 
 /// The largest image file read for a texture, in bytes.
@@ -33,8 +35,24 @@ pub struct MeshTexture {
     pub sampling: Sampling,
     /// GL_TEXTURE_2D, glTexEnv and the texture matrix for this mesh's draw.
     pub unit: TextureUnit,
+    /// Where the unit's texture coordinates come from: unit 0's are the mesh's, units 1-3's
+    /// the unit's current ones unless `coords = "mesh"` says otherwise.
+    pub coords: TexCoords,
     /// Where the image came from, for messages: a file, a built-in pattern, a glTF image.
     pub source: String,
+}
+
+/// Where a texture unit's coordinates come from, before `texgen` replaces any it generates
+/// (a unit's `coords` in a scene file).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum TexCoords {
+    /// The mesh's texture coordinates: unit 0's always; units 1-3's with `coords = "mesh"` (as
+    /// a GL program points `glClientActiveTexture(GL_TEXTUREi)`'s array at the same ones).
+    Mesh,
+    /// The unit's current texture coordinates (`glMultiTexCoord4f`), every vertex's: GL's
+    /// (0, 0, 0, 1) for units 1-3 unless `coords` gives four numbers.
+    Current(Vec4),
 }
 
 impl MeshTexture {
@@ -65,13 +83,43 @@ fn word<T: Copy>(
 }
 
 impl Builder<'_> {
-    /// The texture a `texture` table at `field` describes, or `None` when it is disabled;
-    /// `warnings` gets a sentence when the texture is incomplete (it then textures nothing,
-    /// as in GL). `view` is the camera's, which takes `texgen`'s eye planes to eye space.
+    /// A mesh's `texture_units` at `field`: one to [`MAX_TEXTURE_UNITS`] tables, `GL_TEXTURE0`
+    /// first, each read as [`Builder::texture`] reads a `texture` table; a unit that is not
+    /// `enabled` is `None`.
+    pub(super) fn texture_units(
+        &self,
+        field: &str,
+        specs: &[TextureSpec],
+        view: Mat4,
+        warnings: &mut Vec<String>,
+    ) -> Result<[Option<MeshTexture>; MAX_TEXTURE_UNITS], SceneError> {
+        if specs.is_empty() || specs.len() > MAX_TEXTURE_UNITS {
+            return Err(self.field(
+                field,
+                format!(
+                    "{} units: expected 1 to {MAX_TEXTURE_UNITS} (GL_TEXTURE0 first; GL_MAX_TEXTURE_UNITS is {MAX_TEXTURE_UNITS})",
+                    specs.len()
+                ),
+            ));
+        }
+        let mut units: [Option<MeshTexture>; MAX_TEXTURE_UNITS] = Default::default();
+        for (i, spec) in specs.iter().enumerate() {
+            let at = format!("{field}[{i}]");
+            units[i] = self.texture(&at, spec, (i, specs.len()), view, warnings)?;
+        }
+        Ok(units)
+    }
+
+    /// The texture a `texture` table at `field` describes for texture unit `index` of a mesh
+    /// of `units` units (the `GL_TEXTUREn` sources its `combine` may name), or `None` when it
+    /// is disabled; `warnings` gets a sentence when the
+    /// texture is incomplete (it then textures nothing, as in GL). `view` is the camera's,
+    /// which takes `texgen`'s eye planes to eye space.
     pub(super) fn texture(
         &self,
         field: &str,
         spec: &TextureSpec,
+        (index, units): (usize, usize),
         view: Mat4,
         warnings: &mut Vec<String>,
     ) -> Result<Option<MeshTexture>, SceneError> {
@@ -85,18 +133,19 @@ impl Builder<'_> {
             }
             (Some(path), None) => (self.texture_file(&f("image"), path)?, path.display().to_string()),
             (None, Some(name)) => {
-                let builtins = [("checker", 0), ("leaves", 1), ("disc", 2)];
+                let builtins = [("checker", 0), ("leaves", 1), ("disc", 2), ("lightmap", 3)];
                 let image = match word(self, &f("builtin"), name, &builtins)? {
                     0 => TextureImage::checker(64, 8, [235, 235, 235, 255], [40, 90, 160, 255]),
                     1 => TextureImage::leaves(64),
-                    _ => TextureImage::disc(32),
+                    2 => TextureImage::disc(32),
+                    _ => TextureImage::lightmap(64),
                 }
                 .map_err(|e| self.field(f("builtin"), e.to_string()))?;
                 (image, format!("builtin {name}"))
             }
             (None, None) => return Err(self.field(
                 field,
-                "no image: expected image = \"file.png\" or builtin = \"checker\", \"leaves\" or \"disc\"",
+                "no image: expected image = \"file.png\" or builtin = \"checker\", \"leaves\", \"disc\" or \"lightmap\"",
             )),
         };
         let mut image = image;
@@ -127,16 +176,33 @@ impl Builder<'_> {
                 .as_deref()
                 .map_or(Ok(defaults.wrap_t), |v| word(self, &f("wrap_t"), v, &wrap))?,
         };
-        let modes: Vec<(&'static str, TexEnvMode)> = TexEnvMode::ALL.iter().map(|&m| (m.name(), m)).collect();
+        let modes: Vec<(&'static str, TexEnvMode)> = TexEnvMode::ALL
+            .iter()
+            .chain([&TexEnvMode::Combine])
+            .map(|&m| (m.name(), m))
+            .collect();
+        let env_mode = spec
+            .env
+            .as_deref()
+            .map_or(Ok(TexEnvMode::Modulate), |v| word(self, &f("env"), v, &modes))?;
+        let combine = match (&spec.combine, env_mode) {
+            (Some(c), TexEnvMode::Combine) => self.combine(&f("combine"), c, units)?,
+            (Some(_), other) => {
+                return Err(self.field(
+                    f("combine"),
+                    format!(
+                        "is given with env {:?}, which reads no combine table: expected env = \"combine\" with it",
+                        other.name()
+                    ),
+                ))
+            }
+            (None, _) => TextureUnit::default().combine,
+        };
         let unit = TextureUnit {
             enabled: spec.enabled.unwrap_or(true),
             cube_map: false,
-            // Scene files have no GL_COMBINE yet: GL's initial combine state.
-            combine: TextureUnit::default().combine,
-            env_mode: spec
-                .env
-                .as_deref()
-                .map_or(Ok(TexEnvMode::Modulate), |v| word(self, &f("env"), v, &modes))?,
+            combine,
+            env_mode,
             env_color: match &spec.env_color {
                 Some(c) => self.color(&f("env_color"), c)?,
                 None => Vec4::ZERO,
@@ -149,6 +215,7 @@ impl Builder<'_> {
             },
         };
         unit.validate().map_err(self.state(field))?;
+        let coords = self.coords(&f("coords"), spec.coords.as_ref(), index)?;
         if !unit.enabled {
             return Ok(None);
         }
@@ -156,6 +223,7 @@ impl Builder<'_> {
             image: Arc::new(image),
             sampling,
             unit,
+            coords,
             source,
         };
         if !texture.applies() {
@@ -165,6 +233,48 @@ impl Builder<'_> {
             ));
         }
         Ok(Some(texture))
+    }
+
+    /// Unit `unit`'s `coords` at `field`: unit 0 takes the mesh's always; units 1-3 the
+    /// mesh's ("mesh") or their current ones (4 finite numbers), GL's (0, 0, 0, 1) by default.
+    fn coords(&self, field: &str, spec: Option<&toml::Value>, unit: usize) -> Result<TexCoords, SceneError> {
+        const EXPECTED: &str = "expected \"mesh\" (the mesh's texture coordinates) or 4 numbers (s, t, r, q, as glMultiTexCoord4f)";
+        let Some(spec) = spec else {
+            return Ok(if unit == 0 {
+                TexCoords::Mesh
+            } else {
+                TexCoords::Current(Vec4::W)
+            });
+        };
+        if unit == 0 {
+            return Err(self.field(
+                field,
+                "is given for unit 0, which always takes the mesh's texture coordinates: expected coords on units 1 to 3 only",
+            ));
+        }
+        let number = |v: &toml::Value| match v {
+            toml::Value::Integer(i) => Some(*i as f32),
+            toml::Value::Float(x) => Some(*x as f32),
+            _ => None,
+        };
+        match spec {
+            toml::Value::String(w) if w == "mesh" => Ok(TexCoords::Mesh),
+            toml::Value::String(w) => Err(self.field(field, format!("{:?}: {EXPECTED}", shorten(w)))),
+            toml::Value::Array(items) => {
+                let numbers: Option<Vec<f32>> = items.iter().map(number).collect();
+                let Some(&[s, t, r, q]) = numbers.as_deref() else {
+                    let what = match numbers {
+                        Some(v) => format!("{} numbers", v.len()),
+                        None => shorten(&spec.to_string()),
+                    };
+                    return Err(self.field(field, format!("{what}: {EXPECTED}")));
+                };
+                let c = Vec4::new(s, t, r, q);
+                self.finite(field, &c.to_array())?;
+                Ok(TexCoords::Current(c))
+            }
+            other => Err(self.field(field, format!("{}: {EXPECTED}", shorten(&other.to_string())))),
+        }
     }
 
     /// The `texgen` table at `field`, set as a GL program's glTexGen calls would set it: each

@@ -195,7 +195,7 @@ impl Builder<'_> {
         let exposure_spec = self.exposure_spec(&file, gltf_meaning)?;
         let mut meshes = Vec::new();
         let scene_texture = match &file.texture {
-            Some(t) => self.texture("texture", t, view, &mut warnings)?,
+            Some(t) => self.texture("texture", t, (0, 1), view, &mut warnings)?,
             None => None,
         };
         let mut gltf_lights: Vec<(String, PunctualLight, Mat4)> = Vec::new();
@@ -246,13 +246,29 @@ impl Builder<'_> {
                     }
                     _ => None,
                 };
-                // Texture precedence: the mesh's own, the scene's, the glTF base color texture
-                // (under glTF's meaning, through GL_MODULATE), none.
-                let texture = match (&spec.texture, &scene_texture, &pbr) {
-                    (Some(t), _, _) => self.texture(&format!("{field}.texture"), t, view, &mut warnings)?,
-                    (None, Some(t), _) => Some(t.clone()),
-                    (None, None, Some(pbr)) if gltf_meaning => {
-                        pbr.base_color_sampled.as_ref().map(|s| MeshTexture {
+                // Texture precedence: the mesh's own units (or its one), the scene's, the glTF
+                // base color texture (under glTF's meaning, through GL_MODULATE), none.
+                let mut textures: [Option<MeshTexture>; MAX_TEXTURE_UNITS] = Default::default();
+                match (&spec.texture_units, &spec.texture, &scene_texture, &pbr) {
+                    (Some(_), Some(_), _, _) => {
+                        return Err(self.field(
+                            format!("{field}.texture_units"),
+                            format!(
+                                "is given with {field}.texture: expected either texture (unit 0 alone) or texture_units"
+                            ),
+                        ))
+                    }
+                    (Some(units), None, _, _) => {
+                        let at = format!("{field}.texture_units");
+                        textures = self.texture_units(&at, units, view, &mut warnings)?;
+                    }
+                    (None, Some(t), _, _) => {
+                        let at = format!("{field}.texture");
+                        textures[0] = self.texture(&at, t, (0, 1), view, &mut warnings)?;
+                    }
+                    (None, None, Some(t), _) => textures[0] = Some(t.clone()),
+                    (None, None, None, Some(pbr)) if gltf_meaning => {
+                        textures[0] = pbr.base_color_sampled.as_ref().map(|s| MeshTexture {
                             image: s.image.clone(),
                             sampling: s.sampling,
                             unit: crate::gl::texture::TextureUnit {
@@ -260,11 +276,12 @@ impl Builder<'_> {
                                 matrix: s.matrix,
                                 ..Default::default()
                             },
+                            coords: TexCoords::Mesh,
                             source: format!("glTF image {} (base color, GL_MODULATE)", s.image_index),
                         })
                     }
-                    _ => None,
-                };
+                    _ => {}
+                }
                 meshes.push(SceneMesh {
                     name: p.name,
                     data,
@@ -272,7 +289,7 @@ impl Builder<'_> {
                     front,
                     back,
                     gltf: meaning,
-                    texture,
+                    textures,
                     lit: p.lit,
                     raster,
                 });
