@@ -182,8 +182,9 @@ layout(constant_id = 33) const int SPEC_TEXGEN = -1;
 layout(constant_id = 34) const int SPEC_COMBINE = -1;
 // The texture units of a TEXTURE build: bits 0-3 the units sampled (enabled, with a complete
 // texture), bits 4-7 the units applied (sampled, and not reading a missing unit's texel through
-// GL_TEXTUREn), bits 8-11 the sampled units that sample their cube map. The pipeline's own, set
-// in every pipeline (the uber-shader's too).
+// GL_TEXTUREn), bits 8-11 the sampled units that sample their cube map, and from bit 12 each
+// sampled unit's base internal format in 3 bits. The pipeline's own, set in every pipeline (the
+// uber-shader's too).
 layout(constant_id = 35) const int SPEC_TEXTURE_UNITS = 0x11;
 // GL_COMBINE's GL_TEXTUREn sources (Combine::crossbar_code), unit 0's; then units 1-3's
 // TEXTURE_ENV_MODE, texgen, GL_COMBINE and crossbar, as SPEC_TEX_ENV, SPEC_TEXGEN,
@@ -215,6 +216,10 @@ bool unit_applied(uint i) {
 }
 bool unit_is_cube(uint i) {
     return (SPEC_TEXTURE_UNITS & (256 << i)) != 0;
+}
+// A sampled unit's base internal format, FORMAT_* in texture.glsl (BaseFormat::code).
+uint unit_format(uint i) {
+    return uint(SPEC_TEXTURE_UNITS >> (12u + 3u * i)) & 7u;
 }
 
 // A switch of the uber-shader, read from the uniform block. lavapipe 22.3 compiles a shader

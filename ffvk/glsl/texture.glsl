@@ -112,21 +112,57 @@ vec4 combine(uint i, UnitInputs v) {
     return vec4(rgb, alpha);
 }
 
-// Unit i's environment (table 3.22 for an RGBA texture, or GL_COMBINE), clamped to [0, 1] as
-// GL clamps each unit's result before the next unit (section 3.8.13).
+// Values of unit_format (BaseFormat::code): which components the texture has (table 3.15).
+#define FORMAT_RGBA 0u
+#define FORMAT_RGB 1u
+#define FORMAT_ALPHA 2u
+#define FORMAT_LUMINANCE 3u
+#define FORMAT_LUMINANCE_ALPHA 4u
+#define FORMAT_INTENSITY 5u
+
+// The texel (C_s, A_s) of a filtered RGBA8 texel c in base format f: luminance and intensity
+// from R, alpha from A, as GL converts RGBA pixels (BaseFormat::texel).
+vec4 format_texel(uint f, vec4 c) {
+    if (f == FORMAT_RGB) return vec4(c.rgb, 1.0);
+    if (f == FORMAT_ALPHA) return vec4(0.0, 0.0, 0.0, c.a);
+    if (f == FORMAT_LUMINANCE) return vec4(c.rrr, 1.0);
+    if (f == FORMAT_LUMINANCE_ALPHA) return vec4(c.rrr, c.a);
+    if (f == FORMAT_INTENSITY) return c.rrrr;
+    return c;  // FORMAT_RGBA
+}
+
+// Unit i's environment (table 3.22 for its texture's base format, or GL_COMBINE), clamped to
+// [0, 1] as GL clamps each unit's result before the next unit (section 3.8.13). A format without
+// color (ALPHA) keeps C_p, one without alpha (LUMINANCE, RGB) keeps A_p; INTENSITY blends and
+// adds its alpha as its color. The CPU reference's copy is src/reference/texture.rs (unit_env).
 vec4 texture_environment(uint i, UnitInputs v) {
     vec4 C_p = v.C_p;
     vec4 C_s = v.C_s[i];
-    vec3 c_c = state.units[i].c_c.rgb;
+    vec4 c_c = state.units[i].c_c;
+    uint f = unit_format(i);
+    bool color = f != FORMAT_ALPHA;
+    bool alpha = f == FORMAT_ALPHA || f == FORMAT_LUMINANCE_ALPHA || f == FORMAT_RGBA || f == FORMAT_INTENSITY;
     uint mode = tex_env_mode(i);
-    vec4 C_v;
-    if (mode == TEV_COMBINE) C_v = combine(i, v);
-    else if (mode == TEV_REPLACE) C_v = C_s;
-    else if (mode == TEV_DECAL) C_v = vec4(mix(C_p.rgb, C_s.rgb, C_s.a), C_p.a);
-    else if (mode == TEV_BLEND) C_v = vec4(C_p.rgb * (1.0 - C_s.rgb) + c_c * C_s.rgb, C_p.a * C_s.a);
-    else if (mode == TEV_ADD) C_v = vec4(C_p.rgb + C_s.rgb, C_p.a * C_s.a);
-    else C_v = C_p * C_s;  // TEV_MODULATE
-    return clamp(C_v, 0.0, 1.0);
+    vec3 C;
+    float A;
+    if (mode == TEV_COMBINE) return clamp(combine(i, v), 0.0, 1.0);
+    if (mode == TEV_REPLACE) {
+        C = color ? C_s.rgb : C_p.rgb;
+        A = alpha ? C_s.a : C_p.a;
+    } else if (mode == TEV_DECAL) {
+        C = mix(C_p.rgb, C_s.rgb, C_s.a);
+        A = C_p.a;
+    } else if (mode == TEV_BLEND) {
+        C = color ? C_p.rgb * (1.0 - C_s.rgb) + c_c.rgb * C_s.rgb : C_p.rgb;
+        A = f == FORMAT_INTENSITY ? C_p.a * (1.0 - C_s.a) + c_c.a * C_s.a : (alpha ? C_p.a * C_s.a : C_p.a);
+    } else if (mode == TEV_ADD) {
+        C = color ? C_p.rgb + C_s.rgb : C_p.rgb;
+        A = f == FORMAT_INTENSITY ? C_p.a + C_s.a : (alpha ? C_p.a * C_s.a : C_p.a);
+    } else {  // TEV_MODULATE
+        C = color ? C_p.rgb * C_s.rgb : C_p.rgb;
+        A = alpha ? C_p.a * C_s.a : C_p.a;
+    }
+    return clamp(vec4(C, A), 0.0, 1.0);
 }
 
 // Section 3.3 with GL_COORD_REPLACE: a sprite's texture coordinates (s, t, 0, 1), t from the
@@ -145,8 +181,8 @@ vec4 sprite_or(uint i, vec4 stq) {
 // its largest component points at, q not read).
 vec4 texel_at(uint i, vec4 stq) {
     vec4 c = sprite_or(i, stq);
-    if (unit_is_cube(i)) return texture(unit_cube[i], c.xyz);
-    return texture(unit_2d[i], c.xy / c.w);
+    if (unit_is_cube(i)) return format_texel(unit_format(i), texture(unit_cube[i], c.xyz));
+    return format_texel(unit_format(i), texture(unit_2d[i], c.xy / c.w));
 }
 
 // Section 3.8.16: the applied units in order, each on the one before's result, from the

@@ -10,7 +10,7 @@ use ffvk::mesh::{MeshData, Vertex};
 use super::bindings::types::{GLenum, GLint, GLsizei, GLsizeiptr, GLuint};
 use super::bindings::{self as gl, Gl};
 use super::calls::{color_material_enum, face_enum, replay, set_enabled};
-use super::egl::{drain_errors, gl_string};
+use super::egl::{check_draw, drain_errors, gl_string};
 use super::error::{DrawError, GlError};
 use super::texture_object::{upload_textures, DrawUnits};
 use super::texture_unit::set_texture_unit;
@@ -41,16 +41,6 @@ pub(super) fn check(gl: &Gl, when: impl FnOnce() -> String) -> Result<(), GlErro
         Ok(())
     } else {
         Err(GlError::Gl { codes, when: when() })
-    }
-}
-
-/// Like [`check`], for the calls of one draw.
-pub(super) fn check_draw(gl: &Gl, when: &'static str) -> Result<(), DrawError> {
-    let codes = drain_errors(gl);
-    if codes.is_empty() {
-        Ok(())
-    } else {
-        Err(DrawError::Gl { codes, when })
     }
 }
 

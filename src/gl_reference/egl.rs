@@ -12,7 +12,7 @@ use std::ffi::{c_char, c_void, CStr};
 use khronos_egl as khr;
 
 use super::bindings::{self, Gl};
-use super::error::{GlError, NoDriver};
+use super::error::{DrawError, GlError, NoDriver};
 use super::GlOptions;
 
 /// EGL 1.4 is what this module calls: eglBindAPI (1.2) and eglMakeCurrent without surfaces
@@ -665,6 +665,16 @@ pub(super) fn drain_errors(gl: &Gl) -> Vec<u32> {
         codes.push(code);
     }
     codes
+}
+
+/// The GL errors of one draw's calls since the last check, as a [`DrawError`] naming `when`.
+pub(super) fn check_draw(gl: &Gl, when: &'static str) -> Result<(), DrawError> {
+    let codes = drain_errors(gl);
+    if codes.is_empty() {
+        Ok(())
+    } else {
+        Err(DrawError::Gl { codes, when })
+    }
 }
 
 #[cfg(test)]

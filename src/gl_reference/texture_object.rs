@@ -2,11 +2,13 @@
 //! its parameters (`glTexImage2D` for every level of every face, `glTexParameter`), and a
 //! draw's textures per unit.
 
-use ffvk::gl::texture::{CubeImage, MagFilter, MinFilter, Sampling, TextureImage, Wrap, MAX_TEXTURE_UNITS};
+use ffvk::gl::texture::{
+    BaseFormat, CubeImage, MagFilter, MinFilter, Sampling, TextureImage, Wrap, MAX_TEXTURE_UNITS,
+};
 
 use super::bindings::types::{GLenum, GLint, GLsizei, GLuint};
 use super::bindings::{self as gl, Gl};
-use super::draw::check_draw;
+use super::egl::check_draw;
 use super::error::DrawError;
 use super::GlDraw;
 
@@ -74,7 +76,7 @@ impl<'g> GlTexture<'g> {
             }
         }
         let mut texture = GlTexture { gl, name: 0 };
-        let internal = if image.srgb { gl::SRGB8_ALPHA8 } else { gl::RGBA8 };
+        let internal = internal_format(image);
         // SAFETY: a context is current on this thread; glGenTextures writes one name (owned by
         // `texture` from here on); each level's bytes were checked to be width * height * 4,
         // which glTexImage2D reads with UNPACK_ALIGNMENT 1 (no row padding) and no unpack
@@ -113,6 +115,24 @@ impl<'g> GlTexture<'g> {
         }
         check_draw(gl, "uploading the texture")?;
         Ok(texture)
+    }
+}
+
+/// `glTexImage2D`'s `internalformat` for `image`: its base format (table 3.15; GL takes
+/// luminance and intensity from the RGBA pixels' R, alpha from A, as ffvk reads them) at 8
+/// bits, sRGB where GL has the format.
+fn internal_format(image: &TextureImage) -> GLenum {
+    match (image.base_format, image.srgb) {
+        (BaseFormat::Rgb, false) => gl::RGB8,
+        (BaseFormat::Rgb, true) => gl::SRGB8,
+        (BaseFormat::Alpha, _) => gl::ALPHA8,
+        (BaseFormat::Luminance, false) => gl::LUMINANCE8,
+        (BaseFormat::Luminance, true) => gl::SLUMINANCE8,
+        (BaseFormat::LuminanceAlpha, false) => gl::LUMINANCE8_ALPHA8,
+        (BaseFormat::LuminanceAlpha, true) => gl::SLUMINANCE8_ALPHA8,
+        (BaseFormat::Intensity, _) => gl::INTENSITY8,
+        (_, true) => gl::SRGB8_ALPHA8,
+        _ => gl::RGBA8,
     }
 }
 

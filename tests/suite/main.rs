@@ -1,5 +1,6 @@
 //! ffvk's integration tests: one binary, modules by area.
 
+mod base_formats;
 mod bench;
 mod browser;
 mod c_api_boundary;

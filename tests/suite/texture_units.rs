@@ -361,6 +361,7 @@ fn each_unit_takes_the_previous_units_clamped_result() {
     unit(&mut gl, 1, TexEnvMode::Modulate);
     let units = gl.lighting.texture_units;
     let c_f = DVec4::new(0.75, 0.5, 0.25, 1.0);
+    let rgba = [ffvk::gl::texture::BaseFormat::Rgba; MAX_TEXTURE_UNITS];
     let texels = [
         DVec4::new(0.5, 0.75, 0.5, 0.5),
         DVec4::new(0.5, 0.5, 0.5, 1.0),
@@ -369,11 +370,11 @@ fn each_unit_takes_the_previous_units_clamped_result() {
     ];
     // Unit 0: ADD, (1.25, 1.25, 0.75) clamped to (1, 1, 0.75), alpha 1 × 0.5. Unit 1:
     // MODULATE by 0.5: (0.5, 0.5, 0.375), alpha 0.5.
-    let both = textured_color(&units, 0b11, c_f, texels);
+    let both = textured_color(&units, (0b11, rgba), c_f, texels);
     assert_eq!(both, DVec4::new(0.5, 0.5, 0.375, 0.5));
     // Unit 1 alone: MODULATE of the primary color.
     assert_eq!(
-        textured_color(&units, 0b10, c_f, texels),
+        textured_color(&units, (0b10, rgba), c_f, texels),
         DVec4::new(0.375, 0.25, 0.125, 1.0)
     );
     // In the other order (MODULATE first, then ADD) the result differs.
@@ -381,7 +382,7 @@ fn each_unit_takes_the_previous_units_clamped_result() {
     swapped.swap(0, 1);
     let texels_swapped = [texels[1], texels[0], texels[2], texels[3]];
     assert_eq!(
-        textured_color(&swapped, 0b11, c_f, texels_swapped),
+        textured_color(&swapped, (0b11, rgba), c_f, texels_swapped),
         DVec4::new(0.875, 1.0, 0.625, 0.5)
     );
 }

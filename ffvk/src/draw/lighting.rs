@@ -15,7 +15,7 @@
 //! pipeline cache unless the caller passes one, the pipelines (created on first use per
 //! lighting mode, specialization key and [`RasterState`]), and for each frame slot
 //! host-visible, coherent memory for the state blocks and the draw records (buffers with
-//! their descriptor sets); and the [`TextureBinding`]s the caller asks
+//! their descriptor sets); and the [`TextureBinding`](super::texture::TextureBinding)s the caller asks
 //! for (a descriptor set naming the caller's image view and sampler), which the caller holds.
 //! Dropping it frees all of that; the caller must first make sure no submitted command buffer
 //! still uses it (wait for its fences or the device).
@@ -121,6 +121,7 @@ use std::sync::Arc;
 use ash::vk;
 
 mod bindings;
+mod textures;
 mod variant;
 use bindings::Remembered;
 use variant::{units_key, Variant};
@@ -133,7 +134,7 @@ use super::pipeline::{
 use super::raster::DynamicRaster;
 use super::record::{record_in_run, Bound, RunState, Topology};
 use super::ring::{Pushed, Ring, RingUse};
-use super::texture::{TextureBinding, TextureTarget, UnitSets, UnitTextures};
+use super::texture::{UnitSets, UnitTextures};
 use crate::error::{LightingError, Result};
 use crate::gl::state::{FixedFunctionState, LightingMode};
 use crate::gl::texture::MAX_TEXTURE_UNITS;
@@ -375,37 +376,6 @@ impl Lighting {
         self.pipeline_for(state, raster, variant).map(|_| ())
     }
 
-    /// A texture binding naming the caller's image `view` and `sampler`, for
-    /// [`LitDraw::textures`]. The view is a 2D color view the fragment stage samples as floats
-    /// (e.g. `R8G8B8A8_UNORM`, or `R8G8B8A8_SRGB` for GL's `GL_SRGB8_ALPHA8`), in
-    /// `SHADER_READ_ONLY_OPTIMAL` layout whenever a draw that uses it executes;
-    /// [`sampler_info`](super::texture::sampler_info) makes a sampler that samples as GL's
-    /// texture parameters say. The binding holds no reference to either: the caller keeps
-    /// both alive as long as the binding may be drawn with.
-    ///
-    /// # Safety
-    ///
-    /// `view` and `sampler` are live objects of this device and outlive every command buffer
-    /// that draws with the returned binding.
-    pub unsafe fn bind_texture(&self, view: vk::ImageView, sampler: vk::Sampler) -> Result<TextureBinding> {
-        Ok(TextureBinding::new(view, sampler, TextureTarget::Texture2D))
-    }
-
-    /// A cube map binding naming the caller's image `view` (a `CUBE` view of an image with six
-    /// array layers in GL's face order, `GL_TEXTURE_CUBE_MAP_POSITIVE_X` first, each face's
-    /// row 0 at t = 0; in `SHADER_READ_ONLY_OPTIMAL` layout whenever a draw that uses it
-    /// executes) and `sampler`, for [`LitDraw::cube_maps`]. GL 2.1 filters each face on its
-    /// own: a sampler made with `VK_SAMPLER_CREATE_NON_SEAMLESS_CUBE_MAP_BIT_EXT`
-    /// ([`cube_sampler_info`](super::texture::cube_sampler_info)) does so where the device
-    /// has `VK_EXT_non_seamless_cube_map`. The binding holds no reference to either.
-    ///
-    /// # Safety
-    ///
-    /// As [`Lighting::bind_texture`].
-    pub unsafe fn bind_cube_map(&self, view: vk::ImageView, sampler: vk::Sampler) -> Result<TextureBinding> {
-        Ok(TextureBinding::new(view, sampler, TextureTarget::CubeMap))
-    }
-
     /// How many pipelines exist, and how many of them are specialized.
     pub fn pipeline_counts(&self) -> (usize, usize) {
         self.pipelines.counts()
@@ -624,44 +594,6 @@ impl Lighting {
         self.with_remembered(cmd, |run| unsafe {
             self.record_staged_run_from(cmd, &staged, draws, run)
         });
-        Ok(())
-    }
-
-    /// The texture units `draw` samples (bits 0-3), applies (bits 4-7) and samples as cube
-    /// maps (bits 8-11): 0 when it applies none ([`units_key`]).
-    fn units(draw: &LitDraw) -> u32 {
-        let mask = |bound: &[Option<&TextureBinding>; MAX_TEXTURE_UNITS]| {
-            (0..MAX_TEXTURE_UNITS)
-                .filter(|&i| bound[i].is_some())
-                .fold(0, |mask, i| mask | 1 << i)
-        };
-        units_key(
-            &draw.state.texture_units,
-            mask(&draw.textures),
-            mask(&draw.cube_maps),
-        )
-    }
-
-    /// Refuses a draw whose `textures` hold a cube map or whose `cube_maps` hold a 2D
-    /// texture.
-    fn check_targets(draw: &LitDraw) -> Result<()> {
-        let slots = [
-            (&draw.textures, TextureTarget::Texture2D, "textures"),
-            (&draw.cube_maps, TextureTarget::CubeMap, "cube_maps"),
-        ];
-        for (bound, expected, field) in slots {
-            for (unit, t) in bound.iter().enumerate() {
-                if let Some(t) = t.filter(|t| t.target() != expected) {
-                    return Err(LightingError::TextureTarget {
-                        field,
-                        unit,
-                        given: t.target().gl_name(),
-                        expected: expected.gl_name(),
-                    }
-                    .into());
-                }
-            }
-        }
         Ok(())
     }
 

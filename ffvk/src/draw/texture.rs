@@ -25,7 +25,7 @@ use std::sync::Arc;
 use ash::vk;
 
 use crate::error::Result;
-use crate::gl::texture::{MagFilter, MinFilter, Sampling, Wrap, MAX_TEXTURE_UNITS};
+use crate::gl::texture::{BaseFormat, MagFilter, MinFilter, Sampling, Wrap, MAX_TEXTURE_UNITS};
 use crate::vk::objects::{DescriptorSetLayout, SetPool};
 use crate::vk::Device;
 
@@ -68,6 +68,7 @@ pub struct TextureBinding {
     view: vk::ImageView,
     sampler: vk::Sampler,
     target: TextureTarget,
+    base_format: BaseFormat,
 }
 
 impl TextureBinding {
@@ -78,12 +79,27 @@ impl TextureBinding {
             view,
             sampler,
             target,
+            base_format: BaseFormat::Rgba,
         }
     }
 
     /// The target it binds to.
     pub fn target(&self) -> TextureTarget {
         self.target
+    }
+
+    /// This binding with the texture's base internal format (`GL_RGBA` by default): which of
+    /// the view's components the texture environment reads (luminance and intensity from R,
+    /// alpha from A; table 3.22).
+    #[must_use]
+    pub fn with_base_format(mut self, format: BaseFormat) -> Self {
+        self.base_format = format;
+        self
+    }
+
+    /// The base internal format.
+    pub fn base_format(&self) -> BaseFormat {
+        self.base_format
     }
 
     /// The image view.

@@ -12,9 +12,11 @@ use super::errors::StateError;
 
 mod combine;
 mod cube;
+mod format;
 mod texgen;
 pub use combine::{AlphaOperand, Combine, CombineFunc, CombineSource, RgbOperand};
 pub use cube::{cube_face, CubeFace, CubeImage};
+pub use format::BaseFormat;
 pub use texgen::{TexCoordGen, TexGenMode};
 
 /// `GL_MAX_TEXTURE_UNITS` (and `GL_MAX_TEXTURE_COORDS`): the texture units a draw applies, in
@@ -509,6 +511,10 @@ pub struct TextureImage {
     /// stays linear). Off by default, as a legacy program's `GL_RGBA8`: a texel then reaches a
     /// UNORM framebuffer unchanged under full white light.
     pub srgb: bool,
+    /// The base internal format (`glTexImage2D`'s `internalformat`): which components the
+    /// texture has, read from the RGBA8 texels as GL converts RGBA pixels (luminance and
+    /// intensity from R, alpha from A). `GL_RGBA` by default.
+    pub base_format: BaseFormat,
 }
 
 impl TextureImage {
@@ -517,6 +523,7 @@ impl TextureImage {
         Ok(TextureImage {
             levels: vec![Level::new(width, height, rgba)?],
             srgb: false,
+            base_format: BaseFormat::Rgba,
         })
     }
 
@@ -547,7 +554,11 @@ impl TextureImage {
                 });
             }
         }
-        Ok(TextureImage { levels, srgb: false })
+        Ok(TextureImage {
+            levels,
+            srgb: false,
+            base_format: BaseFormat::Rgba,
+        })
     }
 
     /// Level 0 first; either one level or more, down to the whole chain to 1×1.
@@ -679,6 +690,18 @@ impl TextureImage {
     /// texel wide or high; odd sides drop their last row or column, as a box filter of GL's
     /// floor(size / 2) rule). The channels are averaged as stored, sRGB or not.
     pub fn with_mipmaps(mut self) -> Self {
+        self.make_mipmaps();
+        self
+    }
+
+    /// This image with base internal format `format` (`GL_LUMINANCE` for a light map, …).
+    #[must_use]
+    pub fn with_base_format(mut self, format: BaseFormat) -> Self {
+        self.base_format = format;
+        self
+    }
+
+    fn make_mipmaps(&mut self) {
         self.levels.truncate(1);
         while let Some(above) = self.levels.last().filter(|l| l.width > 1 || l.height > 1) {
             let (w, h) = ((above.width / 2).max(1), (above.height / 2).max(1));
@@ -707,7 +730,6 @@ impl TextureImage {
                 rgba,
             });
         }
-        self
     }
 }
 

@@ -7,8 +7,8 @@
 use glam::{DVec2, DVec3, DVec4};
 
 use crate::gl::texture::{
-    AlphaOperand, Combine, CombineFunc, CombineSource, MagFilter, RgbOperand, Sampling, TexEnvMode,
-    TexGenMode, TextureImage, TextureUnit, Wrap, MAX_TEXTURE_UNITS,
+    AlphaOperand, BaseFormat, Combine, CombineFunc, CombineSource, MagFilter, RgbOperand, Sampling,
+    TexEnvMode, TexGenMode, TextureImage, TextureUnit, Wrap, MAX_TEXTURE_UNITS,
 };
 
 /// What texturing did at one fragment (what `ffvk explain` prints).
@@ -36,8 +36,11 @@ pub struct UnitInputs {
     pub c_f: DVec4,
     /// The previous unit's result.
     pub c_p: DVec4,
-    /// Each unit's texel (zero for a unit not sampled).
+    /// Each unit's texel (zero for a unit not sampled), in its texture's base format
+    /// ([`BaseFormat::texel`]).
     pub c_s: [DVec4; MAX_TEXTURE_UNITS],
+    /// The base internal format of this unit's texture: which of table 3.22's columns applies.
+    pub format: BaseFormat,
 }
 
 /// Table 3.22 for an RGBA texture: the fragment color `c_f` (the primary color) combined with
@@ -51,6 +54,7 @@ pub fn tex_env(mode: TexEnvMode, combine_state: &Combine, c_f: DVec4, c_s: DVec4
         c_f,
         c_p: c_f,
         c_s: texels,
+        format: BaseFormat::Rgba,
     };
     env_of(mode, combine_state, &v, c_c)
 }
@@ -61,33 +65,52 @@ pub fn unit_env(unit: &TextureUnit, v: &UnitInputs) -> DVec4 {
     env_of(unit.env_mode, &unit.combine, v, unit.env_color.as_dvec4())
 }
 
+/// Table 3.22 by the texture's base format: a format without color (`GL_ALPHA`) keeps C_p, one
+/// without alpha (`GL_LUMINANCE`, `GL_RGB`) keeps A_p, `GL_INTENSITY` blends and adds its
+/// alpha as its color (`GL_DECAL`, undefined but for RGB and RGBA, takes the RGBA row).
 fn env_of(mode: TexEnvMode, combine_state: &Combine, v: &UnitInputs, c_c: DVec4) -> DVec4 {
     let c_s = v.c_s[v.unit];
     let (cp, cs, cc) = (v.c_p.truncate(), c_s.truncate(), c_c.truncate());
     let (ap, a_s) = (v.c_p.w, c_s.w);
+    let (color, alpha) = (v.format.has_color(), v.format.has_alpha());
+    let intensity = v.format == BaseFormat::Intensity;
+    let keep_color = |c: DVec3| if color { c } else { cp };
+    let times_alpha = if alpha { ap * a_s } else { ap };
     let c_v = match mode {
         TexEnvMode::Combine => combine_unit(combine_state, v, c_c),
-        TexEnvMode::Replace => c_s,
-        TexEnvMode::Modulate => (cp * cs).extend(ap * a_s),
+        TexEnvMode::Replace => keep_color(cs).extend(if alpha { a_s } else { ap }),
+        TexEnvMode::Modulate => keep_color(cp * cs).extend(times_alpha),
         TexEnvMode::Decal => (cp * (1.0 - a_s) + cs * a_s).extend(ap),
-        TexEnvMode::Blend => (cp * (DVec3::ONE - cs) + cc * cs).extend(ap * a_s),
-        TexEnvMode::Add => (cp + cs).extend(ap * a_s),
+        TexEnvMode::Blend => keep_color(cp * (DVec3::ONE - cs) + cc * cs).extend(if intensity {
+            ap * (1.0 - a_s) + c_c.w * a_s
+        } else {
+            times_alpha
+        }),
+        TexEnvMode::Add => keep_color(cp + cs).extend(if intensity { ap + a_s } else { times_alpha }),
     };
     c_v.clamp(DVec4::ZERO, DVec4::ONE)
 }
 
 /// §3.8.16: the units `applied` names (a bit each) in order, each on the one before's result,
-/// from the primary color `c_f`; `c_s` holds each sampled unit's texel.
+/// from the primary color `c_f`; `c_s` holds each sampled unit's texel in its texture's base
+/// format, `formats` each unit's format.
 pub fn textured_color(
     units: &[TextureUnit; MAX_TEXTURE_UNITS],
-    applied: u32,
+    (applied, formats): (u32, [BaseFormat; MAX_TEXTURE_UNITS]),
     c_f: DVec4,
     c_s: [DVec4; MAX_TEXTURE_UNITS],
 ) -> DVec4 {
     (0..MAX_TEXTURE_UNITS)
         .filter(|&i| applied & 1 << i != 0)
         .fold(c_f, |c_p, unit| {
-            unit_env(&units[unit], &UnitInputs { unit, c_f, c_p, c_s })
+            let v = UnitInputs {
+                unit,
+                c_f,
+                c_p,
+                c_s,
+                format: formats[unit],
+            };
+            unit_env(&units[unit], &v)
         })
 }
 
@@ -101,6 +124,7 @@ pub fn combine(c: &Combine, c_f: DVec4, c_s: DVec4, c_c: DVec4) -> DVec4 {
         c_f,
         c_p: c_f,
         c_s: texels,
+        format: BaseFormat::Rgba,
     };
     combine_unit(c, &v, c_c)
 }
@@ -306,14 +330,17 @@ pub fn texture_fragment(
 ) -> Textured {
     let [st, st_dx, st_dy] = stq.map(project);
     let lambda = lambda(image, st_dx - st, st_dy - st);
-    let texel = sample(image, sampling, st, lambda);
-    let env = tex_env(
-        unit.env_mode,
-        &unit.combine,
-        c_pri,
-        texel,
-        unit.env_color.as_dvec4(),
-    );
+    let texel = image.base_format.texel(sample(image, sampling, st, lambda));
+    let mut texels = [DVec4::ZERO; MAX_TEXTURE_UNITS];
+    texels[0] = texel;
+    let v = UnitInputs {
+        unit: 0,
+        c_f: c_pri,
+        c_p: c_pri,
+        c_s: texels,
+        format: image.base_format,
+    };
+    let env = unit_env(unit, &v);
     Textured {
         st,
         lambda,

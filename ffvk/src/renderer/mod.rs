@@ -286,7 +286,8 @@ impl Renderer {
         // SAFETY: the view and sampler are this device's and live in the Texture as long as
         // the binding (dropped first); frames that draw it are waited for before it can drop
         // (draw_frame waits, and the Texture is borrowed by the frame).
-        let binding = unsafe { self.lighting.bind_texture(gpu_image.view(), sampler.raw()) }?;
+        let binding = unsafe { self.lighting.bind_texture(gpu_image.view(), sampler.raw()) }?
+            .with_base_format(image.base_format);
         let complete = !sampling.min_filter.uses_mipmaps() || image.has_mipmaps();
         Ok(Texture::new(
             gpu_image,
@@ -331,7 +332,8 @@ impl Renderer {
         let non_seamless = self.device.info.non_seamless_cube_map;
         let sampler = Sampler::new(&self.device, &cube_sampler_info(sampling, levels, non_seamless))?;
         // SAFETY: as upload_texture's.
-        let binding = unsafe { self.lighting.bind_cube_map(gpu_image.view(), sampler.raw()) }?;
+        let binding = unsafe { self.lighting.bind_cube_map(gpu_image.view(), sampler.raw()) }?
+            .with_base_format(image.faces()[0].base_format);
         let complete = !sampling.min_filter.uses_mipmaps() || image.has_mipmaps();
         Ok(Texture::new(gpu_image, sampler, binding, complete, (side, side)))
     }

@@ -6,7 +6,7 @@ use ash::{ext, vk};
 
 use super::instance::Instance;
 use super::memory::{Books, DeviceAllocator, MemoryUsage, MemoryUse};
-use super::supported::{describe, Supported};
+use super::supported::Supported;
 use crate::error::{vk_error, Error, Result};
 
 /// What `ffvk info` prints and benchmarks record.
@@ -656,6 +656,46 @@ impl Drop for Device {
         // SAFETY: every child holds an Arc<Device>, so none is left, and the device is idle
         // (waited for above).
         unsafe { self.raw.destroy_device(None) };
+    }
+}
+
+/// What `ffvk info` shows of a physical device.
+fn describe(
+    props: &vk::PhysicalDeviceProperties,
+    supported: &Supported,
+    timestamp_valid_bits: u32,
+    pipeline_statistics_query: bool,
+    provoking_vertex_last: bool,
+    validation: bool,
+) -> DeviceInfo {
+    DeviceInfo {
+        name: device_name(props),
+        device_type: format!("{:?}", props.device_type),
+        driver_name: supported.driver_name.clone(),
+        driver_info: supported.driver_info.clone(),
+        api_version: version_string(props.api_version),
+        vendor_id: props.vendor_id,
+        device_id: props.device_id,
+        max_image_dimension_2d: props.limits.max_image_dimension2_d,
+        max_uniform_buffer_range: props.limits.max_uniform_buffer_range,
+        min_uniform_buffer_offset_alignment: props.limits.min_uniform_buffer_offset_alignment,
+        max_vertex_output_components: props.limits.max_vertex_output_components,
+        timestamp_period_ns: props.limits.timestamp_period,
+        timestamp_valid_bits,
+        timestamps_supported: timestamp_valid_bits > 0,
+        pipeline_statistics_query,
+        provoking_vertex_last,
+        wide_lines: false,
+        large_points: false,
+        clip_distance: false,
+        fill_mode_non_solid: false,
+        logic_op: false,
+        geometry_shader: false,
+        stippled_lines: false,
+        non_seamless_cube_map: false,
+        line_width_range: props.limits.line_width_range,
+        point_size_range: props.limits.point_size_range,
+        validation,
     }
 }
 

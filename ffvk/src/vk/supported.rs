@@ -1,11 +1,8 @@
-//! What a physical device supports of what ffvk uses ([`Supported`]), and what `ffvk info`
-//! shows of it ([`describe`]).
+//! What a physical device supports of what ffvk uses ([`Supported`]).
 
 use std::ffi::CStr;
 
 use ash::{ext, vk};
-
-use super::device::{device_name, version_string, DeviceInfo};
 
 /// What a physical device supports of what ffvk uses, and its driver's name and version.
 pub(crate) struct Supported {
@@ -98,45 +95,5 @@ impl Supported {
             driver_info: cstr(&driver.driver_info),
             max_memory_allocation_size: v11.max_memory_allocation_size,
         }
-    }
-}
-
-/// What `ffvk info` shows of a physical device.
-pub(crate) fn describe(
-    props: &vk::PhysicalDeviceProperties,
-    supported: &Supported,
-    timestamp_valid_bits: u32,
-    pipeline_statistics_query: bool,
-    provoking_vertex_last: bool,
-    validation: bool,
-) -> DeviceInfo {
-    DeviceInfo {
-        name: device_name(props),
-        device_type: format!("{:?}", props.device_type),
-        driver_name: supported.driver_name.clone(),
-        driver_info: supported.driver_info.clone(),
-        api_version: version_string(props.api_version),
-        vendor_id: props.vendor_id,
-        device_id: props.device_id,
-        max_image_dimension_2d: props.limits.max_image_dimension2_d,
-        max_uniform_buffer_range: props.limits.max_uniform_buffer_range,
-        min_uniform_buffer_offset_alignment: props.limits.min_uniform_buffer_offset_alignment,
-        max_vertex_output_components: props.limits.max_vertex_output_components,
-        timestamp_period_ns: props.limits.timestamp_period,
-        timestamp_valid_bits,
-        timestamps_supported: timestamp_valid_bits > 0,
-        pipeline_statistics_query,
-        provoking_vertex_last,
-        wide_lines: false,
-        large_points: false,
-        clip_distance: false,
-        fill_mode_non_solid: false,
-        logic_op: false,
-        geometry_shader: false,
-        stippled_lines: false,
-        non_seamless_cube_map: false,
-        line_width_range: props.limits.line_width_range,
-        point_size_range: props.limits.point_size_range,
-        validation,
     }
 }

@@ -79,7 +79,7 @@ impl CubeImage {
             }
             let same = width == first.width()
                 && image.levels().len() == first.levels().len()
-                && image.srgb == first.srgb;
+                && (image.srgb, image.base_format) == (first.srgb, first.base_format);
             if !same {
                 return Err(TextureError::CubeFacesDiffer {
                     face: face.gl_name(),
