@@ -276,3 +276,42 @@ fn the_face_the_reference_selects_is_the_face_ffvk_samples() {
     }
     finish(r);
 }
+
+/// A cube map bound where a 2D texture goes, or the reverse, is refused naming the slot and the
+/// unit, and nothing is drawn.
+#[test]
+fn a_texture_in_the_other_targets_slot_is_refused_naming_the_unit() {
+    let mut r = renderer_with(Specialize::default());
+    let mesh = ffvk::mesh::MeshData::uv_sphere(8, 6);
+    let gpu = r.upload(&mesh).unwrap();
+    let cube = r.upload_cube_map(&faces(4), &Sampling::NEAREST).unwrap();
+    let flat = r.upload_texture(&red_green(), &Sampling::NEAREST).unwrap();
+    let state = units_state(LightingMode::Vertex, |gl| {
+        unit(gl, 2, TexEnvMode::Modulate);
+        gl.enable(Cap::TextureCubeMap).unwrap();
+    });
+    let view = glam::Mat4::from_translation(glam::Vec3::new(0.0, 0.0, -3.0));
+    let projection = perspective(45.0, 1.0, 1.0, 10.0);
+    for (textures, cubes, field) in [
+        ([None, None, Some(&cube), None], [None; 4], "textures"),
+        ([None; 4], [None, None, Some(&flat), None], "cube_maps"),
+    ] {
+        let mut frame = ffvk::Frame::new(16, 16);
+        frame.draws.push(
+            ffvk::Draw::new(&gpu, view, projection, state)
+                .with_textures(textures)
+                .with_cube_maps(cubes),
+        );
+        let e = r.render(&frame).err().expect("the wrong target is refused");
+        let text = e.to_string();
+        assert!(text.contains(field) && text.contains("unit 2"), "{text}");
+    }
+    // CubeImage itself refuses faces that are not a cube.
+    let faces6: [TextureImage; 6] = std::array::from_fn(|i| {
+        let side = if i == 4 { 8 } else { 4 };
+        TextureImage::new(side, side, vec![0; (side * side * 4) as usize]).unwrap()
+    });
+    let e = CubeImage::new(faces6).unwrap_err().to_string();
+    assert!(e.contains("GL_TEXTURE_CUBE_MAP_POSITIVE_Z"), "{e}");
+    finish(r);
+}
