@@ -4,8 +4,11 @@
 //! separate specular color; then the glTF files of `assets/gltf` drawn directly, on a sheet of
 //! their own; a sheet of ffvk's lighting variants: Blinn's (GL's) against Phong's specular
 //! term, and hard against soft spot edges; a sheet of the stages around lighting
-//! ([`stages`]); and a sheet of the raster state a draw carries ([`raster`]).
+//! ([`stages`]); a sheet of the raster state a draw carries ([`raster`]); and a sheet of the
+//! texturing modes of several units: sphere and cube environment maps, light maps, DOT3
+//! bumps ([`multitexture`]).
 
+pub mod multitexture;
 pub mod raster;
 pub mod stages;
 
@@ -404,6 +407,21 @@ pub fn run(options: &RendererOptions, out: &Path) -> Result<()> {
     save_png(&sheet, &path)?;
     crate::outln!(
         "wrote {} (polygon modes and offsets, the stencil test, logic ops, stipple, depth range)",
+        path.display()
+    )?;
+    let multi = multitexture::multitexture_panels(&mut renderer, 256)?;
+    for p in &multi {
+        save_png(
+            &p.image,
+            &out.join("multitexture").join(format!("{}.png", p.name)),
+        )?;
+    }
+    let labelled: Vec<(String, image::RgbaImage)> = multi.into_iter().map(|p| (p.label, p.image)).collect();
+    let sheet = contact_sheet(&labelled, 3)?;
+    let path = out.join("multitexture_sheet.png");
+    save_png(&sheet, &path)?;
+    crate::outln!(
+        "wrote {} (sphere and cube environment maps, light maps, DOT3 bump mapping)",
         path.display()
     )?;
     let gltf = gltf_panels(

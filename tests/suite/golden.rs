@@ -116,6 +116,7 @@ fn golden_demo_panels() {
     panels.extend(ffvk_cli::demo::model_panels(&mut r, 128).unwrap());
     panels.extend(ffvk_cli::demo::stages::stage_panels(&mut r, 128).unwrap());
     panels.extend(ffvk_cli::demo::raster::raster_panels(&mut r, 128).unwrap());
+    panels.extend(ffvk_cli::demo::multitexture::multitexture_panels(&mut r, 128).unwrap());
     finish(r);
     let refs = root().join("tests/golden/demo");
     let out = root().join("tests/output/golden/demo");
