@@ -627,7 +627,12 @@ pub unsafe extern "C" fn ffvkDraw(
             let buffers: Vec<(vk::Buffer, u64)> = buffers.iter().copied().zip(offsets).collect();
             let raster = raster::of_draw(F, &draw, ctx)?;
             // SAFETY: checked aligned above; the caller's contract: null or live textures.
-            let (bound, cubes) = unsafe { (texture::bindings(&units.textures), texture::bindings(&units.cube_maps)) };
+            let (bound, cubes) = unsafe {
+                (
+                    texture::bindings(&units.textures),
+                    texture::bindings(&units.cube_maps),
+                )
+            };
             let lit = LitDraw::new(
                 &ctx.gl.lighting,
                 ctx.gl.modelview,
@@ -695,7 +700,12 @@ pub unsafe extern "C" fn ffvkEndDraws(renderer: *mut FfvkRenderer) -> FfvkResult
         for d in &recording.draws {
             // SAFETY: the caller's contract: the textures are null or live until this returns
             // (ffvkDraw checked them aligned).
-            let (bound, cubes) = unsafe { (texture::bindings(&d.units.textures), texture::bindings(&d.units.cube_maps)) };
+            let (bound, cubes) = unsafe {
+                (
+                    texture::bindings(&d.units.textures),
+                    texture::bindings(&d.units.cube_maps),
+                )
+            };
             draws.push(
                 LitDraw::new(
                     &recording.states[d.state],

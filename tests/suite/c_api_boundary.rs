@@ -282,6 +282,10 @@ pub(crate) fn draw_info(buffer: &vk::Buffer, raster: FfvkRaster) -> FfvkDrawInfo
         texture1: std::ptr::null(),
         texture2: std::ptr::null(),
         texture3: std::ptr::null(),
+        cube_map: std::ptr::null(),
+        cube_map1: std::ptr::null(),
+        cube_map2: std::ptr::null(),
+        cube_map3: std::ptr::null(),
     }
 }
 

@@ -539,6 +539,10 @@ fn ffvk_image(unit2_source: u32) -> RgbaImage {
             texture1: std::ptr::null(),
             texture2: std::ptr::null(),
             texture3: std::ptr::null(),
+            cube_map: std::ptr::null(),
+            cube_map1: std::ptr::null(),
+            cube_map2: std::ptr::null(),
+            cube_map3: std::ptr::null(),
         }
     };
     let two = [vertices, coords];

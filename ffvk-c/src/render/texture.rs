@@ -4,8 +4,8 @@
 //! `cube_map` .. `cube_map3`.
 
 use ffvk::ash::vk;
-use ffvk::gl::texture::MAX_TEXTURE_UNITS;
 use ffvk::draw::texture::TextureTarget;
+use ffvk::gl::texture::MAX_TEXTURE_UNITS;
 use ffvk::TextureBinding;
 
 use super::{invalid, with_renderer, FfvkDrawInfo, FfvkRenderer};
@@ -48,8 +48,18 @@ pub(super) unsafe fn of_draw(function: &str, draw: &FfvkDrawInfo) -> Result<Unit
         cube_maps: [draw.cube_map, draw.cube_map1, draw.cube_map2, draw.cube_map3],
     };
     let slots = [
-        (&units.textures, "texture", TextureTarget::Texture2D, "ffvkCreateTexture"),
-        (&units.cube_maps, "cube_map", TextureTarget::CubeMap, "ffvkCreateCubeMap"),
+        (
+            &units.textures,
+            "texture",
+            TextureTarget::Texture2D,
+            "ffvkCreateTexture",
+        ),
+        (
+            &units.cube_maps,
+            "cube_map",
+            TextureTarget::CubeMap,
+            "ffvkCreateCubeMap",
+        ),
     ];
     for (bound, base, _, maker) in slots {
         for (i, &t) in bound.iter().enumerate() {

@@ -413,7 +413,10 @@ mod tests {
         info.struct_size = size_of::<FfvkDrawInfo>() as u32;
         // SAFETY: as above, struct_size covering all of it.
         let read = unsafe { crate::abi::read("test", &info) }.expect("version 5's size is accepted");
-        assert_eq!((read.cube_map, read.cube_map3), (std::ptr::dangling(), std::ptr::dangling()));
+        assert_eq!(
+            (read.cube_map, read.cube_map3),
+            (std::ptr::dangling(), std::ptr::dangling())
+        );
         assert!(read.cube_map1.is_null());
     }
 
