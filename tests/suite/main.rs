@@ -3,6 +3,7 @@
 mod bench;
 mod browser;
 mod c_api_boundary;
+mod c_api_cube;
 mod c_api_example;
 mod c_api_fuzz;
 mod c_api_install;
