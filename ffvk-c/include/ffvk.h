@@ -2822,7 +2822,8 @@ enum FfvkResult ffvkBeginDraws(struct FfvkRenderer *renderer, VkCommandBuffer cm
  other than `FFVK_RASTER_SOURCE_DRAW` and `FFVK_RASTER_SOURCE_CONTEXT`,
  blending into a color
  format the device cannot blend, a point size or line width out of the device's range, a
- textured draw without texture coordinates),
+ textured draw without texture coordinates, a cube map from `ffvkCreateCubeMap` in a
+ `texture*` field or a 2D texture in a `cube_map*` one: the message names the field and unit),
  `FFVK_ERROR_STATE` (the context's state cannot be drawn: a soft spot cone wider than its
  cutoff, a modelview that cannot be inverted while lighting, a fill with `GL_POLYGON_STIPPLE`
  on and no `ffvkFramebufferHeight`), `FFVK_ERROR_MISSING_FEATURE` (`GL_FLAT`, a point size or

@@ -679,8 +679,14 @@ fn cube_maps_are_checked_per_unit_naming_the_field_and_a_binding_of_the_other_ta
         // SAFETY: a live renderer; the handles are never used by a draw that is recorded
         // (every draw below is refused); the outs are writable.
         unsafe {
-            assert_eq!(ffvkCreateTexture(r, view, sampler, &mut flat), FfvkResult::FFVK_SUCCESS);
-            assert_eq!(ffvkCreateCubeMap(r, view, sampler, &mut cube), FfvkResult::FFVK_SUCCESS);
+            assert_eq!(
+                ffvkCreateTexture(r, view, sampler, &mut flat),
+                FfvkResult::FFVK_SUCCESS
+            );
+            assert_eq!(
+                ffvkCreateCubeMap(r, view, sampler, &mut cube),
+                FfvkResult::FFVK_SUCCESS
+            );
         }
         for (field, t, unit, words) in [
             ("texture", cube, 0, "is a cube map (GL_TEXTURE_CUBE_MAP): expected a GL_TEXTURE_2D binding from ffvkCreateTexture or null (a cube map goes in cube_map)"),

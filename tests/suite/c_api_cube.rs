@@ -197,11 +197,8 @@ fn ffvk_image(cube: &CubeImage, cube_on: bool) -> RgbaImage {
         pipeline_cache: vk::PipelineCache::null(),
     };
     let ctx = ffvkCreateContext();
-    let (mut r, mut flat_tex, mut cube_tex) = (
-        std::ptr::null_mut(),
-        std::ptr::null_mut(),
-        std::ptr::null_mut(),
-    );
+    let (mut r, mut flat_tex, mut cube_tex) =
+        (std::ptr::null_mut(), std::ptr::null_mut(), std::ptr::null_mut());
     // SAFETY: the create info's handles and pointers are live for the calls; the outs are
     // writable; the bindings name live views and samplers; the context is live and every
     // pointer points at as many values as its name takes.

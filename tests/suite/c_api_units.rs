@@ -235,7 +235,11 @@ impl<'d> Caller<'d> {
         }
     }
 
-    pub(crate) fn memory(&self, req: vk::MemoryRequirements, flags: vk::MemoryPropertyFlags) -> vk::DeviceMemory {
+    pub(crate) fn memory(
+        &self,
+        req: vk::MemoryRequirements,
+        flags: vk::MemoryPropertyFlags,
+    ) -> vk::DeviceMemory {
         // SAFETY: a live instance and physical device.
         let props = unsafe {
             self.plain
@@ -256,7 +260,11 @@ impl<'d> Caller<'d> {
     }
 
     /// A host-visible buffer holding `bytes` (or zeros up to `bytes.len()`).
-    pub(crate) fn buffer(&mut self, bytes: &[u8], usage: vk::BufferUsageFlags) -> (vk::Buffer, vk::DeviceMemory) {
+    pub(crate) fn buffer(
+        &mut self,
+        bytes: &[u8],
+        usage: vk::BufferUsageFlags,
+    ) -> (vk::Buffer, vk::DeviceMemory) {
         let d = &self.plain.device;
         let info = vk::BufferCreateInfo::default()
             .size(bytes.len() as u64)
@@ -282,7 +290,12 @@ impl<'d> Caller<'d> {
     }
 
     /// A 2D image of `FORMAT` with one level, and its view.
-    pub(crate) fn image(&mut self, width: u32, height: u32, usage: vk::ImageUsageFlags) -> (vk::Image, vk::ImageView) {
+    pub(crate) fn image(
+        &mut self,
+        width: u32,
+        height: u32,
+        usage: vk::ImageUsageFlags,
+    ) -> (vk::Image, vk::ImageView) {
         let d = &self.plain.device;
         let info = vk::ImageCreateInfo::default()
             .image_type(vk::ImageType::TYPE_2D)
