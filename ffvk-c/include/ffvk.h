@@ -246,6 +246,9 @@
 #ifndef GL_TEXTURE_2D
 #define GL_TEXTURE_2D 0x0DE1
 #endif
+#ifndef GL_TEXTURE_CUBE_MAP
+#define GL_TEXTURE_CUBE_MAP 0x8513
+#endif
 #ifndef GL_FRONT
 #define GL_FRONT 0x0404
 #endif
@@ -889,6 +892,15 @@
 #define FFVK_FEATURE_GEOMETRY_SHADER 256
 
 /*
+ The extension `VK_EXT_non_seamless_cube_map` enabled with
+ `VkPhysicalDeviceNonSeamlessCubeMapFeaturesEXT::nonSeamlessCubeMap`: lets the caller's cube
+ map samplers (`ffvkCreateCubeMap`) take `VK_SAMPLER_CREATE_NON_SEAMLESS_CUBE_MAP_BIT_EXT`,
+ filtering each face on its own as GL 2.1 does. ffvk makes no sampler of the caller's: the
+ bit says what the device has, and no draw is refused without it.
+ */
+#define FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP 512
+
+/*
  `FfvkDrawInfo::raster_source`: the draw's raster state is its `raster` (the default).
  */
 #define FFVK_RASTER_SOURCE_DRAW 0
@@ -962,7 +974,8 @@ typedef struct FfvkMesh FfvkMesh;
 typedef struct FfvkRenderer FfvkRenderer;
 
 /*
- A descriptor set naming the caller's image view and sampler (`ffvkCreateTexture`).
+ A descriptor set naming the caller's image view and sampler: a 2D texture
+ (`ffvkCreateTexture`) or a cube map (`ffvkCreateCubeMap`).
  */
 typedef struct FfvkTexture FfvkTexture;
 
@@ -1072,8 +1085,10 @@ typedef struct FfvkRendererCreateInfo {
    `VK_EXT_line_rasterization` enabled with `VkPhysicalDeviceLineRasterizationFeaturesEXT::
    bresenhamLines` and `stippledBresenhamLines` (`GL_LINE_STIPPLE`; every line then drawn
    as GL's aliased lines); `FFVK_FEATURE_GEOMETRY_SHADER` is `geometryShader` (GL's edge
-   flags: draws of mode `GL_TRIANGLES_ADJACENCY`). A draw needing a feature not declared is
-   refused, naming its bit.
+   flags: draws of mode `GL_TRIANGLES_ADJACENCY`); `FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP` is the
+   extension `VK_EXT_non_seamless_cube_map` enabled with `nonSeamlessCubeMap` (the caller's
+   cube map samplers may then filter each face on its own, as GL 2.1). A draw needing a
+   feature not declared is refused, naming its bit.
    `ffvkDeviceRequirements` says which bits a device will have.
    */
   uint32_t enabled_features;
@@ -1213,9 +1228,9 @@ typedef struct FfvkRaster {
  `struct_size` to `sizeof(FfvkDrawInfo)`.
 
  It grows as `FfvkRendererCreateInfo` does: later headers append fields (each with its
- default), the library accepts every published version's size (this header's is version 4:
+ default), the library accepts every published version's size (this header's is version 5:
  version 2 appended `layout`, version 3 `raster_source`, version 4 `texture1` ..
- `texture3`) and reads only what `struct_size` covers. `raster` never grows (`FfvkRaster`
+ `texture3`, version 5 `cube_map` .. `cube_map3`) and reads only what `struct_size` covers. `raster` never grows (`FfvkRaster`
  keeps its size): the rest of GL's raster state comes from the context (`raster_source`).
  */
 typedef struct FfvkDrawInfo {
@@ -1311,6 +1326,27 @@ typedef struct FfvkDrawInfo {
    Version 4: unit 3's texture, as `texture1` (null by default).
    */
   const struct FfvkTexture *texture3;
+  /*
+   Version 5: unit 0's cube map (`GL_TEXTURE0`'s glBindTexture(GL_TEXTURE_CUBE_MAP, …)),
+   from `ffvkCreateCubeMap`, or null (the default, and what version 1 to 4 callers get).
+   While the unit's `GL_TEXTURE_CUBE_MAP` is enabled it takes precedence over
+   `GL_TEXTURE_2D` (GL 2.1 §3.8.15): the unit samples this cube map at its (s, t, r), or
+   with none textures nothing, whatever `texture` holds. A 2D texture here, or a cube map in
+   a `texture*` field, is `FFVK_ERROR_INVALID_ARGUMENT` naming the field and the unit.
+   */
+  const struct FfvkTexture *cube_map;
+  /*
+   Version 5: unit 1's cube map, as `cube_map` (null by default).
+   */
+  const struct FfvkTexture *cube_map1;
+  /*
+   Version 5: unit 2's cube map, as `cube_map` (null by default).
+   */
+  const struct FfvkTexture *cube_map2;
+  /*
+   Version 5: unit 3's cube map, as `cube_map` (null by default).
+   */
+  const struct FfvkTexture *cube_map3;
 } FfvkDrawInfo;
 
 /*
@@ -1466,10 +1502,12 @@ uint32_t ffvkGetError(struct FfvkContext *ctx);
 
 /*
  glEnable for `GL_LIGHTING`, `GL_LIGHTi` (i < 16), `GL_COLOR_MATERIAL`, `GL_NORMALIZE`,
- `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_COLOR_SUM`, `GL_FOG`, `GL_ALPHA_TEST`,
- `GL_CLIP_PLANEi` (i < 6), `GL_POINT_SPRITE`, `GL_TEXTURE_GEN_S`, `_T`, `_R`, `_Q` (the
- coordinate generated as `ffvkTexGeni` says, GL 2.1 §2.11.4; `GL_TEXTURE_2D` and
- `GL_TEXTURE_GEN_*` are the active unit's, `ffvkActiveTexture`), and the raster state's
+ `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_TEXTURE_CUBE_MAP`, `GL_COLOR_SUM`, `GL_FOG`,
+ `GL_ALPHA_TEST`, `GL_CLIP_PLANEi` (i < 6), `GL_POINT_SPRITE`, `GL_TEXTURE_GEN_S`, `_T`, `_R`,
+ `_Q` (the coordinate generated as `ffvkTexGeni` says, GL 2.1 §2.11.4; `GL_TEXTURE_2D`,
+ `GL_TEXTURE_CUBE_MAP` and `GL_TEXTURE_GEN_*` are the active unit's, `ffvkActiveTexture`;
+ with `GL_TEXTURE_CUBE_MAP` on, the unit samples the draw's cube map for it, `FfvkDrawInfo::
+ cube_map`, and not its 2D texture, GL 2.1 §3.8.15), and the raster state's
  `GL_POLYGON_OFFSET_FILL`, `GL_POLYGON_OFFSET_LINE`, `GL_POLYGON_OFFSET_POINT`,
  `GL_LINE_STIPPLE`, `GL_POLYGON_STIPPLE`, `GL_STENCIL_TEST`,
  `GL_COLOR_LOGIC_OP`, `GL_BLEND`, `GL_DEPTH_TEST` and `GL_CULL_FACE` (which a draw takes with
@@ -2338,7 +2376,8 @@ void ffvkTexGendv(struct FfvkContext *ctx, uint32_t coord, uint32_t pname, const
 /*
  glActiveTexture: `GL_TEXTURE0` .. `GL_TEXTURE3` becomes the active unit (`GL_ACTIVE_TEXTURE`,
  `GL_TEXTURE0` initially): the unit later `ffvkTexEnv*`, `ffvkTexGen*`,
- `ffvkLoadTextureMatrix`, `GL_TEXTURE_2D`, `GL_TEXTURE_GEN_*` and `GL_COORD_REPLACE` act on,
+ `ffvkLoadTextureMatrix`, `GL_TEXTURE_2D`, `GL_TEXTURE_CUBE_MAP`, `GL_TEXTURE_GEN_*` and
+ `GL_COORD_REPLACE` act on,
  and whose state `ffvkGetTexEnv*`, `ffvkGetTexGen*`, `ffvkIsEnabled` and
  `GL_CURRENT_TEXTURE_COORDS` and `GL_TEXTURE_MATRIX` answer. Errors: `GL_INVALID_ENUM` for any
  other value (`GL_TEXTURE4` and past: ffvk has four units, and no shader image units beyond
@@ -2621,13 +2660,15 @@ void ffvkGetTexGendv(struct FfvkContext *ctx, uint32_t coord, uint32_t pname, do
 /*
  glGetFloatv for the names of the state ffvk keeps: `GL_LIGHTING`, `GL_LIGHTi`,
  `GL_COLOR_MATERIAL`, `GL_COLOR_MATERIAL_FACE`, `GL_COLOR_MATERIAL_PARAMETER`,
- `GL_NORMALIZE`, `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_LIGHT_MODEL_AMBIENT`,
+ `GL_NORMALIZE`, `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_TEXTURE_CUBE_MAP`,
+ `GL_LIGHT_MODEL_AMBIENT`,
  `GL_LIGHT_MODEL_LOCAL_VIEWER`, `GL_LIGHT_MODEL_TWO_SIDE`, `GL_LIGHT_MODEL_COLOR_CONTROL`,
  `GL_SHADE_MODEL`, `GL_CURRENT_COLOR`, `GL_CURRENT_NORMAL`, `GL_CURRENT_TEXTURE_COORDS`,
  `GL_MAX_LIGHTS` (16) and the modelview, projection and texture matrices; the texture units:
  `GL_ACTIVE_TEXTURE` (`GL_TEXTURE0` .. `GL_TEXTURE3`, `ffvkActiveTexture`),
  `GL_MAX_TEXTURE_UNITS` and `GL_MAX_TEXTURE_COORDS` (4), and the active unit's
- `GL_TEXTURE_2D`, `GL_TEXTURE_GEN_*`, `GL_CURRENT_TEXTURE_COORDS` and `GL_TEXTURE_MATRIX`;
+ `GL_TEXTURE_2D`, `GL_TEXTURE_CUBE_MAP`, `GL_TEXTURE_GEN_*`, `GL_CURRENT_TEXTURE_COORDS` and
+ `GL_TEXTURE_MATRIX`;
  and the stages
  around lighting: `GL_COLOR_SUM`, `GL_CURRENT_SECONDARY_COLOR`, `GL_FOG`, `GL_FOG_MODE`,
  `GL_FOG_DENSITY`, `GL_FOG_START`, `GL_FOG_END`, `GL_FOG_COLOR`, `GL_FOG_INDEX`,
@@ -2781,7 +2822,8 @@ enum FfvkResult ffvkBeginDraws(struct FfvkRenderer *renderer, VkCommandBuffer cm
  other than `FFVK_RASTER_SOURCE_DRAW` and `FFVK_RASTER_SOURCE_CONTEXT`,
  blending into a color
  format the device cannot blend, a point size or line width out of the device's range, a
- textured draw without texture coordinates),
+ textured draw without texture coordinates, a cube map from `ffvkCreateCubeMap` in a
+ `texture*` field or a 2D texture in a `cube_map*` one: the message names the field and unit),
  `FFVK_ERROR_STATE` (the context's state cannot be drawn: a soft spot cone wider than its
  cutoff, a modelview that cannot be inverted while lighting, a fill with `GL_POLYGON_STIPPLE`
  on and no `ffvkFramebufferHeight`), `FFVK_ERROR_MISSING_FEATURE` (`GL_FLAT`, a point size or
@@ -2891,12 +2933,42 @@ enum FfvkResult ffvkCreateTexture(struct FfvkRenderer *renderer,
                                   struct FfvkTexture **texture);
 
 /*
- Frees a texture binding; null is ignored. The caller first makes sure no submitted command
- buffer still uses it.
+ Makes a cube map binding (`GL_TEXTURE_CUBE_MAP`'s texture object) naming the caller's image
+ view and sampler, for `FfvkDrawInfo`'s `cube_map` .. `cube_map3` (version 5). The view is a
+ `VK_IMAGE_VIEW_TYPE_CUBE` view of six array layers in GL's face order
+ (`GL_TEXTURE_CUBE_MAP_POSITIVE_X`, `_NEGATIVE_X`, `_POSITIVE_Y`, `_NEGATIVE_Y`,
+ `_POSITIVE_Z`, `_NEGATIVE_Z`), each face's row 0 at t = 0 as glTexImage2D's first row,
+ color, sampled as floats, in `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` whenever a draw that
+ uses it executes. GL 2.1 filters each face on its own: a sampler created with
+ `VK_SAMPLER_CREATE_NON_SEAMLESS_CUBE_MAP_BIT_EXT` in its flags does so (the device needs
+ `VK_EXT_non_seamless_cube_map` enabled: `FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP` from
+ `ffvkDeviceRequirements`); without it, linear filtering near an edge also reads the
+ neighbouring face (Vulkan's seamless filtering). ffvk owns the descriptor set; the view
+ and sampler stay the caller's. Records nothing. Free it with `ffvkDestroyTexture`. Returns
+ `FFVK_SUCCESS` with `*cube_map` set, or an error code with `*cube_map` null
+ (`FFVK_ERROR_INVALID_ARGUMENT` for a null or misaligned pointer or a null handle).
+
+ A cube map is drawn only from a `cube_map*` field and a 2D texture only from a `texture*`
+ one: `ffvkDraw` refuses either in the other's field, naming the field and the unit.
 
  # Safety
 
- `texture` is null or from `ffvkCreateTexture`, not yet destroyed.
+ As `ffvkCreateTexture`: `renderer` is null or live; `view` and `sampler` are live objects of
+ its device and outlive every command buffer that draws with the cube map; `cube_map` is null
+ or writable.
+ */
+enum FfvkResult ffvkCreateCubeMap(struct FfvkRenderer *renderer,
+                                  VkImageView view,
+                                  VkSampler sampler,
+                                  struct FfvkTexture **cube_map);
+
+/*
+ Frees a texture or cube map binding; null is ignored. The caller first makes sure no
+ submitted command buffer still uses it. The view and sampler it names stay the caller's.
+
+ # Safety
+
+ `texture` is null or from `ffvkCreateTexture` or `ffvkCreateCubeMap`, not yet destroyed.
  */
 void ffvkDestroyTexture(struct FfvkTexture *texture);
 
@@ -2934,7 +3006,13 @@ const char *ffvkResultMessage(void);
    of the chain, when the device supports both (`GL_LINE_STIPPLE` needs them, and with them
    every line is GL's aliased line), with `VK_EXT_line_rasterization` listed. As with the
    provoking-vertex struct, chain one whatever the device: ffvk takes it out of the chain
-   where the device lacks the extension or either feature.
+   where the device lacks the extension or either feature;
+ - `nonSeamlessCubeMap` in a `VkPhysicalDeviceNonSeamlessCubeMapFeaturesEXT` of the chain,
+   when the device supports it, with `VK_EXT_non_seamless_cube_map` listed
+   (`FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP`: the caller's cube map samplers may then take
+   `VK_SAMPLER_CREATE_NON_SEAMLESS_CUBE_MAP_BIT_EXT`, filtering each face on its own as GL 2.1
+   does). Chain one whatever the device, as above: ffvk takes it out of the chain where the
+   device lacks the extension or the feature.
 
  `extension_names` receives the extensions to enable (static strings, valid for the life of
  the program), to be appended to the caller's own: `*extension_count` is, on the way in, the

@@ -12,7 +12,6 @@ use std::sync::Arc;
 
 use ffvk::ash::{self, vk};
 use ffvk::gl::state::FixedFunctionState;
-use ffvk::gl::texture::MAX_TEXTURE_UNITS;
 use ffvk::glam::Mat4;
 use ffvk::{
     Attribute, Geometry, Lighting, LightingOptions, LitDraw, RasterState, StagedDraw, Target, VertexInput,
@@ -29,11 +28,12 @@ use features::{enabled_features, KNOWN_FEATURES};
 pub use features::{
     FFVK_FEATURE_CLIP_DISTANCE, FFVK_FEATURE_DYNAMIC_RENDERING, FFVK_FEATURE_FILL_MODE_NON_SOLID,
     FFVK_FEATURE_GEOMETRY_SHADER, FFVK_FEATURE_LARGE_POINTS, FFVK_FEATURE_LOGIC_OP,
-    FFVK_FEATURE_PROVOKING_VERTEX_LAST, FFVK_FEATURE_STIPPLED_LINES, FFVK_FEATURE_WIDE_LINES,
+    FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP, FFVK_FEATURE_PROVOKING_VERTEX_LAST, FFVK_FEATURE_STIPPLED_LINES,
+    FFVK_FEATURE_WIDE_LINES,
 };
 pub(crate) use raster::raster_defaults;
 pub use raster::{ffvkRasterDefaults, FfvkRaster, FFVK_RASTER_SOURCE_CONTEXT, FFVK_RASTER_SOURCE_DRAW};
-pub use texture::{ffvkCreateTexture, ffvkDestroyTexture, FfvkTexture};
+pub use texture::{ffvkCreateCubeMap, ffvkCreateTexture, ffvkDestroyTexture, FfvkTexture};
 use topology::topology;
 
 use crate::gl::FfvkContext;
@@ -100,8 +100,10 @@ pub struct FfvkRendererCreateInfo {
     /// `VK_EXT_line_rasterization` enabled with `VkPhysicalDeviceLineRasterizationFeaturesEXT::
     /// bresenhamLines` and `stippledBresenhamLines` (`GL_LINE_STIPPLE`; every line then drawn
     /// as GL's aliased lines); `FFVK_FEATURE_GEOMETRY_SHADER` is `geometryShader` (GL's edge
-    /// flags: draws of mode `GL_TRIANGLES_ADJACENCY`). A draw needing a feature not declared is
-    /// refused, naming its bit.
+    /// flags: draws of mode `GL_TRIANGLES_ADJACENCY`); `FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP` is the
+    /// extension `VK_EXT_non_seamless_cube_map` enabled with `nonSeamlessCubeMap` (the caller's
+    /// cube map samplers may then filter each face on its own, as GL 2.1). A draw needing a
+    /// feature not declared is refused, naming its bit.
     /// `ffvkDeviceRequirements` says which bits a device will have.
     pub enabled_features: u32,
     /// The color attachment's format: an uncompressed core format the shaders write as floats
@@ -143,9 +145,9 @@ pub struct FfvkRendererCreateInfo {
 /// `struct_size` to `sizeof(FfvkDrawInfo)`.
 ///
 /// It grows as `FfvkRendererCreateInfo` does: later headers append fields (each with its
-/// default), the library accepts every published version's size (this header's is version 4:
+/// default), the library accepts every published version's size (this header's is version 5:
 /// version 2 appended `layout`, version 3 `raster_source`, version 4 `texture1` ..
-/// `texture3`) and reads only what `struct_size` covers. `raster` never grows (`FfvkRaster`
+/// `texture3`, version 5 `cube_map` .. `cube_map3`) and reads only what `struct_size` covers. `raster` never grows (`FfvkRaster`
 /// keeps its size): the rest of GL's raster state comes from the context (`raster_source`).
 #[repr(C)]
 pub struct FfvkDrawInfo {
@@ -203,6 +205,19 @@ pub struct FfvkDrawInfo {
     pub texture2: *const FfvkTexture,
     /// Version 4: unit 3's texture, as `texture1` (null by default).
     pub texture3: *const FfvkTexture,
+    /// Version 5: unit 0's cube map (`GL_TEXTURE0`'s glBindTexture(GL_TEXTURE_CUBE_MAP, …)),
+    /// from `ffvkCreateCubeMap`, or null (the default, and what version 1 to 4 callers get).
+    /// While the unit's `GL_TEXTURE_CUBE_MAP` is enabled it takes precedence over
+    /// `GL_TEXTURE_2D` (GL 2.1 §3.8.15): the unit samples this cube map at its (s, t, r), or
+    /// with none textures nothing, whatever `texture` holds. A 2D texture here, or a cube map in
+    /// a `texture*` field, is `FFVK_ERROR_INVALID_ARGUMENT` naming the field and the unit.
+    pub cube_map: *const FfvkTexture,
+    /// Version 5: unit 1's cube map, as `cube_map` (null by default).
+    pub cube_map1: *const FfvkTexture,
+    /// Version 5: unit 2's cube map, as `cube_map` (null by default).
+    pub cube_map2: *const FfvkTexture,
+    /// Version 5: unit 3's cube map, as `cube_map` (null by default).
+    pub cube_map3: *const FfvkTexture,
 }
 
 /// One draw waiting for `ffvkEndDraws`.
@@ -214,7 +229,7 @@ struct Pending {
     raster: RasterState,
     buffers: Vec<(vk::Buffer, u64)>,
     geometry: Geometry,
-    textures: [*const FfvkTexture; MAX_TEXTURE_UNITS],
+    units: texture::UnitBindings,
 }
 
 /// What `ffvkBeginDraws` opened.
@@ -531,7 +546,8 @@ pub unsafe extern "C" fn ffvkBeginDraws(
 /// other than `FFVK_RASTER_SOURCE_DRAW` and `FFVK_RASTER_SOURCE_CONTEXT`,
 /// blending into a color
 /// format the device cannot blend, a point size or line width out of the device's range, a
-/// textured draw without texture coordinates),
+/// textured draw without texture coordinates, a cube map from `ffvkCreateCubeMap` in a
+/// `texture*` field or a 2D texture in a `cube_map*` one: the message names the field and unit),
 /// `FFVK_ERROR_STATE` (the context's state cannot be drawn: a soft spot cone wider than its
 /// cutoff, a modelview that cannot be inverted while lighting, a fill with `GL_POLYGON_STIPPLE`
 /// on and no `ffvkFramebufferHeight`), `FFVK_ERROR_MISSING_FEATURE` (`GL_FLAT`, a point size or
@@ -569,7 +585,8 @@ pub unsafe extern "C" fn ffvkDraw(
             // a draw info.
             let draw = unsafe { crate::abi::read(F, draw) }?;
             let topology = topology(draw.mode)?;
-            let textures = texture::of_draw(F, &draw)?;
+            // SAFETY: the caller's contract: null or live textures (misaligned ones refused).
+            let units = unsafe { texture::of_draw(F, &draw) }?;
             // SAFETY: the caller's contract: the layout is null or live.
             let (layout, binding_count) = unsafe { layout::of_draw(F, draw.layout, binding_count) }?;
             if draw.vertex_buffer_count != binding_count {
@@ -611,7 +628,12 @@ pub unsafe extern "C" fn ffvkDraw(
             let buffers: Vec<(vk::Buffer, u64)> = buffers.iter().copied().zip(offsets).collect();
             let raster = raster::of_draw(F, &draw, ctx)?;
             // SAFETY: checked aligned above; the caller's contract: null or live textures.
-            let bound = unsafe { texture::bindings(&textures) };
+            let (bound, cubes) = unsafe {
+                (
+                    texture::bindings(&units.textures),
+                    texture::bindings(&units.cube_maps),
+                )
+            };
             let lit = LitDraw::new(
                 &ctx.gl.lighting,
                 ctx.gl.modelview,
@@ -621,6 +643,7 @@ pub unsafe extern "C" fn ffvkDraw(
             )
             .with_raster(raster)
             .with_textures(bound)
+            .with_cube_maps(cubes)
             .with_layout(layout);
             // Checked and written into the slot now, so that a bad draw is refused alone.
             let staged = lighting
@@ -641,7 +664,7 @@ pub unsafe extern "C" fn ffvkDraw(
                 raster,
                 buffers,
                 geometry,
-                textures,
+                units,
             });
             recording.staged.push(staged);
             Ok(())
@@ -678,7 +701,12 @@ pub unsafe extern "C" fn ffvkEndDraws(renderer: *mut FfvkRenderer) -> FfvkResult
         for d in &recording.draws {
             // SAFETY: the caller's contract: the textures are null or live until this returns
             // (ffvkDraw checked them aligned).
-            let bound = unsafe { texture::bindings(&d.textures) };
+            let (bound, cubes) = unsafe {
+                (
+                    texture::bindings(&d.units.textures),
+                    texture::bindings(&d.units.cube_maps),
+                )
+            };
             draws.push(
                 LitDraw::new(
                     &recording.states[d.state],
@@ -689,6 +717,7 @@ pub unsafe extern "C" fn ffvkEndDraws(renderer: *mut FfvkRenderer) -> FfvkResult
                 )
                 .with_raster(d.raster)
                 .with_textures(bound)
+                .with_cube_maps(cubes)
                 .with_layout(d.layout),
             );
         }

@@ -9,7 +9,8 @@ use ffvk::ash::{self, ext, vk};
 use crate::render::{
     FFVK_FEATURE_CLIP_DISTANCE, FFVK_FEATURE_DYNAMIC_RENDERING, FFVK_FEATURE_FILL_MODE_NON_SOLID,
     FFVK_FEATURE_GEOMETRY_SHADER, FFVK_FEATURE_LARGE_POINTS, FFVK_FEATURE_LOGIC_OP,
-    FFVK_FEATURE_PROVOKING_VERTEX_LAST, FFVK_FEATURE_STIPPLED_LINES, FFVK_FEATURE_WIDE_LINES,
+    FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP, FFVK_FEATURE_PROVOKING_VERTEX_LAST, FFVK_FEATURE_STIPPLED_LINES,
+    FFVK_FEATURE_WIDE_LINES,
 };
 use crate::result::{check_ptr, fail, guard, misaligned, FfvkResult};
 use crate::vk_types::*;
@@ -33,7 +34,8 @@ type Linked = (
 struct Chain {
     vulkan13: Vec<*mut vk::PhysicalDeviceVulkan13Features<'static>>,
     dynamic_rendering: Vec<*mut vk::PhysicalDeviceDynamicRenderingFeatures<'static>>,
-    /// The provoking-vertex and line-rasterization structs, in the chain's order.
+    /// The provoking-vertex, line-rasterization and non-seamless cube map structs, in the
+    /// chain's order.
     extension_structs: Vec<Linked>,
 }
 
@@ -54,6 +56,7 @@ impl Chain {
 
 const PROVOKING: vk::StructureType = vk::StructureType::PHYSICAL_DEVICE_PROVOKING_VERTEX_FEATURES_EXT;
 const LINES: vk::StructureType = vk::StructureType::PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT;
+const NON_SEAMLESS: vk::StructureType = vk::StructureType::PHYSICAL_DEVICE_NON_SEAMLESS_CUBE_MAP_FEATURES_EXT;
 
 /// Walks `features`' `pNext` chain, reading only `sType` and `pNext` of each struct.
 ///
@@ -99,7 +102,7 @@ unsafe fn walk(
             vk::StructureType::PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES => {
                 chain.dynamic_rendering.push(node.cast())
             }
-            PROVOKING | LINES => chain.extension_structs.push((link, node, s_type)),
+            PROVOKING | LINES | NON_SEAMLESS => chain.extension_structs.push((link, node, s_type)),
             _ => {}
         }
         // SAFETY: as above; pNext follows sType in every Vulkan struct.
@@ -128,6 +131,10 @@ struct Support {
     lines_extension: bool,
     /// Which of the two line features the device lacks, if it has the extension.
     lines_lacking: &'static str,
+    /// `VK_EXT_non_seamless_cube_map` listed, with `nonSeamlessCubeMap`.
+    non_seamless_cube_map: bool,
+    /// The extension alone.
+    non_seamless_extension: bool,
 }
 
 /// Asks the device what it supports.
@@ -153,9 +160,11 @@ unsafe fn query(
     let listed = |name| extensions.iter().any(|e| e.extension_name_as_c_str() == Ok(name));
     let provoking_extension = listed(ext::provoking_vertex::NAME);
     let lines_extension = listed(ext::line_rasterization::NAME);
+    let non_seamless_extension = listed(ext::non_seamless_cube_map::NAME);
     let mut v13 = vk::PhysicalDeviceVulkan13Features::default();
     let mut provoking = vk::PhysicalDeviceProvokingVertexFeaturesEXT::default();
     let mut lines = vk::PhysicalDeviceLineRasterizationFeaturesEXT::default();
+    let mut non_seamless = vk::PhysicalDeviceNonSeamlessCubeMapFeaturesEXT::default();
     let mut features = vk::PhysicalDeviceFeatures2::default().push_next(&mut v13);
     // Each extension's struct chained only when the device has the extension, as Vulkan
     // requires.
@@ -164,6 +173,9 @@ unsafe fn query(
     }
     if lines_extension {
         features = features.push_next(&mut lines);
+    }
+    if non_seamless_extension {
+        features = features.push_next(&mut non_seamless);
     }
     // SAFETY: the chained structs live until the call returns; the caller's contract.
     unsafe { instance.get_physical_device_features2(physical_device, &mut features) };
@@ -195,6 +207,8 @@ unsafe fn query(
         stippled_lines: lines_extension && bresenham && stippled,
         lines_extension,
         lines_lacking,
+        non_seamless_cube_map: non_seamless_extension && non_seamless.non_seamless_cube_map == vk::TRUE,
+        non_seamless_extension,
     })
 }
 
@@ -223,7 +237,13 @@ unsafe fn query(
 ///   of the chain, when the device supports both (`GL_LINE_STIPPLE` needs them, and with them
 ///   every line is GL's aliased line), with `VK_EXT_line_rasterization` listed. As with the
 ///   provoking-vertex struct, chain one whatever the device: ffvk takes it out of the chain
-///   where the device lacks the extension or either feature.
+///   where the device lacks the extension or either feature;
+/// - `nonSeamlessCubeMap` in a `VkPhysicalDeviceNonSeamlessCubeMapFeaturesEXT` of the chain,
+///   when the device supports it, with `VK_EXT_non_seamless_cube_map` listed
+///   (`FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP`: the caller's cube map samplers may then take
+///   `VK_SAMPLER_CREATE_NON_SEAMLESS_CUBE_MAP_BIT_EXT`, filtering each face on its own as GL 2.1
+///   does). Chain one whatever the device, as above: ffvk takes it out of the chain where the
+///   device lacks the extension or the feature.
 ///
 /// `extension_names` receives the extensions to enable (static strings, valid for the life of
 /// the program), to be appended to the caller's own: `*extension_count` is, on the way in, the
@@ -425,12 +445,28 @@ pub unsafe extern "C" fn ffvkDeviceRequirements(
             };
             missing.push(format!("FFVK_FEATURE_STIPPLED_LINES ({why}; draws with GL_LINE_STIPPLE are refused, and lines are the device's own, not GL's aliased lines)"));
         }
+        let non_seamless = support.non_seamless_cube_map && chain.has(NON_SEAMLESS);
+        if non_seamless {
+            bits |= FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP;
+        } else {
+            let why = if !support.non_seamless_extension {
+                "the device lacks VK_EXT_non_seamless_cube_map"
+            } else if !support.non_seamless_cube_map {
+                "the device lacks nonSeamlessCubeMap"
+            } else {
+                "features' pNext chain has no VkPhysicalDeviceNonSeamlessCubeMapFeaturesEXT to set it in"
+            };
+            missing.push(format!("FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP ({why}; cube map samplers filter across the faces' edges, where GL 2.1 filters each face on its own)"));
+        }
         let mut names: Vec<&'static std::ffi::CStr> = Vec::new();
         if provoking {
             names.push(ext::provoking_vertex::NAME);
         }
         if stippled {
             names.push(ext::line_rasterization::NAME);
+        }
+        if non_seamless {
+            names.push(ext::non_seamless_cube_map::NAME);
         }
         debug_assert!(names.len() <= FFVK_MAX_DEVICE_EXTENSIONS as usize);
         let needed = names.len() as u32;
@@ -476,10 +512,19 @@ pub unsafe extern "C" fn ffvkDeviceRequirements(
                     (*s).stippled_bresenham_lines = vk::TRUE;
                 }
             }
+            if non_seamless {
+                for s in chain.of::<vk::PhysicalDeviceNonSeamlessCubeMapFeaturesEXT>(NON_SEAMLESS) {
+                    (*s).non_seamless_cube_map = vk::TRUE;
+                }
+            }
             // The struct of an extension not listed may not be chained. Unlinked last first
-            // (of both kinds together), so that each link still points at its struct.
+            // (of every kind together), so that each link still points at its struct.
             for &(link, s, s_type) in chain.extension_structs.iter().rev() {
-                let listed = if s_type == PROVOKING { provoking } else { stippled };
+                let listed = match s_type {
+                    PROVOKING => provoking,
+                    LINES => stippled,
+                    _ => non_seamless,
+                };
                 if !listed {
                     *link = (*s).p_next;
                 }

@@ -2679,12 +2679,13 @@ fn create_renderer_with_unknown_feature_bits_is_invalid_argument() {
         0x400u32,
         0x8000_0000,
         u32::MAX,
-        FFVK_FEATURE_DYNAMIC_RENDERING | 0x200,
+        FFVK_FEATURE_DYNAMIC_RENDERING | 0x400,
+        FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP | 0x800,
     ] {
         let mut info = create_info();
         info.enabled_features = bits;
         let shown = format!("enabled_features 0x{bits:X} has unknown bits");
-        assert_create_refused(&info, &[&shown, "expected FFVK_FEATURE_* flags (0x1FF)"]);
+        assert_create_refused(&info, &[&shown, "expected FFVK_FEATURE_* flags (0x3FF)"]);
     }
 }
 
@@ -2827,6 +2828,7 @@ fn the_renderer_entry_points_refuse_a_null_or_misaligned_renderer_naming_themsel
             ffvkDraw(null_mut(), null(), null());
             ffvkEndDraws(null_mut());
             ffvkCreateTexture(null_mut(), view, sampler, &mut texture);
+            ffvkCreateCubeMap(null_mut(), view, sampler, &mut texture);
         });
         assert_each_invalid_argument!(["renderer 0x", "not aligned"], {
             ffvkBeginFrame(bad, 0);
@@ -2834,6 +2836,7 @@ fn the_renderer_entry_points_refuse_a_null_or_misaligned_renderer_naming_themsel
             ffvkDraw(bad, c.0, &draw);
             ffvkEndDraws(bad);
             ffvkCreateTexture(bad, view, sampler, &mut texture);
+            ffvkCreateCubeMap(bad, view, sampler, &mut texture);
         });
     }
     assert_eq!(bytes, [0; 8], "written through a misaligned renderer");
@@ -2856,6 +2859,35 @@ fn create_texture_nulls_its_out_pointer_when_it_fails() {
     // SAFETY: as above, with a null out pointer too.
     let result = unsafe { ffvkCreateTexture(null_mut(), view, sampler, null_mut()) };
     assert_eq!(result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+}
+
+#[test]
+fn create_cube_map_names_itself_and_nulls_its_out_pointer_when_it_fails() {
+    let mut out: *mut FfvkTexture = NonNull::dangling().as_ptr();
+    let view = vk::ImageView::from_raw(0x10);
+    let sampler = vk::Sampler::from_raw(0x20);
+    // SAFETY: a null renderer, refused before the handles are used; out is writable.
+    let result = unsafe { ffvkCreateCubeMap(null_mut(), view, sampler, &mut out) };
+    assert_eq!(result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+    assert!(out.is_null(), "the out pointer is left {out:?} after an error");
+    let text = message();
+    assert!(
+        text.starts_with("ffvkCreateCubeMap: renderer is a null pointer"),
+        "{text}"
+    );
+    // SAFETY: as above, with a null out pointer too.
+    let result = unsafe { ffvkCreateCubeMap(null_mut(), view, sampler, null_mut()) };
+    assert_eq!(result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+    // A misaligned out pointer is neither written nor taken.
+    let mut bytes = [0u64; 2];
+    let bad = misaligned(bytes.as_mut_ptr().cast::<*mut FfvkTexture>().cast_const()).cast_mut();
+    // SAFETY: as above; the misaligned out pointer is refused, never written.
+    let result = unsafe { ffvkCreateCubeMap(null_mut(), view, sampler, bad) };
+    assert_eq!(result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+    assert_eq!(bytes, [0; 2], "written through a misaligned out pointer");
+    // A null cube map is destroyed as a null texture is: nothing happens.
+    // SAFETY: null is documented as ignored.
+    unsafe { ffvkDestroyTexture(null_mut()) };
 }
 
 #[test]

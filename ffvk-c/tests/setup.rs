@@ -31,6 +31,8 @@ struct Device {
     lines_extension: bool,
     bresenham_lines: bool,
     stippled_bresenham_lines: bool,
+    non_seamless_extension: bool,
+    non_seamless_cube_map: bool,
 }
 
 const FULL: Device = Device {
@@ -47,6 +49,8 @@ const FULL: Device = Device {
     lines_extension: true,
     bresenham_lines: true,
     stippled_bresenham_lines: true,
+    non_seamless_extension: true,
+    non_seamless_cube_map: true,
 };
 
 thread_local! {
@@ -77,6 +81,7 @@ unsafe extern "system" fn enumerate_extensions(
     let names: Vec<&CStr> = [
         (d.provoking_extension, c"VK_EXT_provoking_vertex"),
         (d.lines_extension, c"VK_EXT_line_rasterization"),
+        (d.non_seamless_extension, c"VK_EXT_non_seamless_cube_map"),
     ]
     .into_iter()
     .filter_map(|(has, name)| has.then_some(name))
@@ -133,6 +138,14 @@ unsafe extern "system" fn get_features2(_: vk::PhysicalDevice, features: *mut vk
                     (*lines).bresenham_lines = bool32(d.bresenham_lines);
                     (*lines).stippled_bresenham_lines = bool32(d.stippled_bresenham_lines);
                 }
+                vk::StructureType::PHYSICAL_DEVICE_NON_SEAMLESS_CUBE_MAP_FEATURES_EXT => {
+                    assert!(
+                        d.non_seamless_extension,
+                        "the extension's struct chained without it"
+                    );
+                    (*node.cast::<vk::PhysicalDeviceNonSeamlessCubeMapFeaturesEXT>()).non_seamless_cube_map =
+                        bool32(d.non_seamless_cube_map)
+                }
                 _ => {}
             }
             node = (*node).p_next;
@@ -184,6 +197,8 @@ struct Chain {
     v13: vk::PhysicalDeviceVulkan13Features<'static>,
     provoking: vk::PhysicalDeviceProvokingVertexFeaturesEXT<'static>,
     lines: vk::PhysicalDeviceLineRasterizationFeaturesEXT<'static>,
+    /// Chained only by [`Chain::with_non_seamless`].
+    non_seamless: vk::PhysicalDeviceNonSeamlessCubeMapFeaturesEXT<'static>,
 }
 
 impl Chain {
@@ -200,6 +215,7 @@ impl Chain {
             v13: vk::PhysicalDeviceVulkan13Features::default(),
             provoking: vk::PhysicalDeviceProvokingVertexFeaturesEXT::default(),
             lines: vk::PhysicalDeviceLineRasterizationFeaturesEXT::default(),
+            non_seamless: vk::PhysicalDeviceNonSeamlessCubeMapFeaturesEXT::default(),
         });
         chain.v13.synchronization2 = vk::TRUE;
         chain.features.p_next = (&raw mut chain.v13).cast();
@@ -214,6 +230,19 @@ impl Chain {
             unsafe { *last = (&raw mut chain.lines).cast() };
         }
         chain
+    }
+
+    /// The chain with the non-seamless cube map struct appended at its end.
+    fn with_non_seamless(mut self: Box<Chain>) -> Box<Chain> {
+        let mut last: *mut *mut std::ffi::c_void = &raw mut self.features.p_next;
+        // SAFETY: each pNext of the boxed chain is null or points at a struct of it.
+        unsafe {
+            while !(*last).is_null() {
+                last = (&raw mut (*(*last).cast::<vk::BaseOutStructure>()).p_next).cast();
+            }
+            *last = (&raw mut self.non_seamless).cast();
+        }
+        self
     }
 
     /// The sTypes along the chain, from features2's pNext.
@@ -243,6 +272,7 @@ impl Chain {
             && self.features.features.geometry_shader == vk::FALSE
             && self.lines.bresenham_lines == vk::FALSE
             && self.lines.stippled_bresenham_lines == vk::FALSE
+            && self.non_seamless.non_seamless_cube_map == vk::FALSE
     }
 }
 
@@ -306,12 +336,20 @@ const ALL: u32 = FFVK_FEATURE_DYNAMIC_RENDERING
 
 #[test]
 fn a_device_with_everything_gets_every_feature_set_the_extension_listed_and_every_bit() {
-    let mut chain = Chain::new(true);
+    let mut chain = Chain::new(true).with_non_seamless();
     let a = ask(FULL, &mut chain, Some(FFVK_MAX_DEVICE_EXTENSIONS));
     assert_eq!(a.result, FfvkResult::FFVK_SUCCESS, "{}", a.message);
-    assert_eq!(a.names, ["VK_EXT_provoking_vertex", "VK_EXT_line_rasterization"]);
-    assert_eq!((a.count, a.bits), (2, ALL));
+    assert_eq!(
+        a.names,
+        [
+            "VK_EXT_provoking_vertex",
+            "VK_EXT_line_rasterization",
+            "VK_EXT_non_seamless_cube_map"
+        ]
+    );
+    assert_eq!((a.count, a.bits), (3, ALL | FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP));
     assert_eq!(a.message, "", "nothing is missing");
+    assert_eq!(chain.non_seamless.non_seamless_cube_map, vk::TRUE);
     assert_eq!(chain.v13.dynamic_rendering, vk::TRUE);
     assert_eq!(
         chain.v13.synchronization2,
@@ -342,9 +380,68 @@ fn a_device_with_everything_gets_every_feature_set_the_extension_listed_and_ever
             vk::StructureType::PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
             vk::StructureType::PHYSICAL_DEVICE_PROVOKING_VERTEX_FEATURES_EXT,
             vk::StructureType::PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT,
+            vk::StructureType::PHYSICAL_DEVICE_NON_SEAMLESS_CUBE_MAP_FEATURES_EXT,
         ],
-        "both extensions' structs stay chained"
+        "the extensions' structs stay chained"
     );
+}
+
+#[test]
+fn a_chain_without_the_non_seamless_struct_gets_no_cube_map_extension_and_is_told_to_chain_one() {
+    let mut chain = Chain::new(true);
+    let a = ask(FULL, &mut chain, Some(FFVK_MAX_DEVICE_EXTENSIONS));
+    assert_eq!(a.result, FfvkResult::FFVK_SUCCESS, "{}", a.message);
+    assert_eq!(a.names, ["VK_EXT_provoking_vertex", "VK_EXT_line_rasterization"]);
+    assert_eq!(
+        (a.count, a.bits),
+        (2, ALL),
+        "no FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP"
+    );
+    assert_eq!(
+        a.message,
+        "ffvkDeviceRequirements: without FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP (features' pNext chain \
+         has no VkPhysicalDeviceNonSeamlessCubeMapFeaturesEXT to set it in; cube map samplers \
+         filter across the faces' edges, where GL 2.1 filters each face on its own)"
+    );
+}
+
+#[test]
+fn without_the_non_seamless_extension_or_its_feature_its_struct_leaves_the_chain_and_is_named() {
+    for (device, why) in [
+        (
+            Device {
+                non_seamless_extension: false,
+                non_seamless_cube_map: false,
+                ..FULL
+            },
+            "the device lacks VK_EXT_non_seamless_cube_map",
+        ),
+        (
+            Device {
+                non_seamless_cube_map: false,
+                ..FULL
+            },
+            "the device lacks nonSeamlessCubeMap",
+        ),
+    ] {
+        let mut chain = Chain::new(true).with_non_seamless();
+        let a = ask(device, &mut chain, Some(FFVK_MAX_DEVICE_EXTENSIONS));
+        assert_eq!(a.result, FfvkResult::FFVK_SUCCESS, "{}", a.message);
+        assert_eq!(a.names, ["VK_EXT_provoking_vertex", "VK_EXT_line_rasterization"]);
+        assert_eq!(a.bits, ALL);
+        let words = format!("without FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP ({why};");
+        assert!(a.message.contains(&words), "{:?} lacks {words:?}", a.message);
+        assert_eq!(chain.non_seamless.non_seamless_cube_map, vk::FALSE);
+        assert_eq!(
+            chain.types(),
+            [
+                vk::StructureType::PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
+                vk::StructureType::PHYSICAL_DEVICE_PROVOKING_VERTEX_FEATURES_EXT,
+                vk::StructureType::PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT,
+            ],
+            "the cube map struct is still chained, or another was taken out"
+        );
+    }
 }
 
 #[test]
@@ -479,12 +576,13 @@ fn without_fill_mode_non_solid_or_logic_op_their_bits_are_missing_named_and_thei
         logic_op: false,
         ..FULL
     };
-    let mut chain = Chain::new(true);
+    let mut chain = Chain::new(true).with_non_seamless();
     let a = ask(device, &mut chain, Some(FFVK_MAX_DEVICE_EXTENSIONS));
     assert_eq!(a.result, FfvkResult::FFVK_SUCCESS, "{}", a.message);
     assert_eq!(
         a.bits,
-        ALL & !(FFVK_FEATURE_FILL_MODE_NON_SOLID | FFVK_FEATURE_LOGIC_OP)
+        (ALL | FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP)
+            & !(FFVK_FEATURE_FILL_MODE_NON_SOLID | FFVK_FEATURE_LOGIC_OP)
     );
     assert_eq!(
         (
@@ -507,10 +605,13 @@ fn without_geometry_shader_its_bit_is_missing_named_and_its_feature_left_off() {
         geometry_shader: false,
         ..FULL
     };
-    let mut chain = Chain::new(true);
+    let mut chain = Chain::new(true).with_non_seamless();
     let a = ask(device, &mut chain, Some(FFVK_MAX_DEVICE_EXTENSIONS));
     assert_eq!(a.result, FfvkResult::FFVK_SUCCESS, "{}", a.message);
-    assert_eq!(a.bits, ALL & !FFVK_FEATURE_GEOMETRY_SHADER);
+    assert_eq!(
+        a.bits,
+        (ALL | FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP) & !FFVK_FEATURE_GEOMETRY_SHADER
+    );
     assert_eq!(chain.features.features.geometry_shader, vk::FALSE);
     assert_eq!(
         a.message,
@@ -529,11 +630,17 @@ fn without_the_line_rasterization_extension_its_struct_leaves_the_chain_and_the_
         stippled_bresenham_lines: false,
         ..FULL
     };
-    let mut chain = Chain::new(true);
+    let mut chain = Chain::new(true).with_non_seamless();
     let a = ask(device, &mut chain, Some(FFVK_MAX_DEVICE_EXTENSIONS));
     assert_eq!(a.result, FfvkResult::FFVK_SUCCESS, "{}", a.message);
-    assert_eq!(a.names, ["VK_EXT_provoking_vertex"]);
-    assert_eq!(a.bits, ALL & !FFVK_FEATURE_STIPPLED_LINES);
+    assert_eq!(
+        a.names,
+        ["VK_EXT_provoking_vertex", "VK_EXT_non_seamless_cube_map"]
+    );
+    assert_eq!(
+        a.bits,
+        (ALL | FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP) & !FFVK_FEATURE_STIPPLED_LINES
+    );
     assert_eq!(
         a.message,
         "ffvkDeviceRequirements: without FFVK_FEATURE_STIPPLED_LINES (the device lacks \
@@ -545,6 +652,7 @@ fn without_the_line_rasterization_extension_its_struct_leaves_the_chain_and_the_
         [
             vk::StructureType::PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
             vk::StructureType::PHYSICAL_DEVICE_PROVOKING_VERTEX_FEATURES_EXT,
+            vk::StructureType::PHYSICAL_DEVICE_NON_SEAMLESS_CUBE_MAP_FEATURES_EXT,
         ]
     );
     assert_eq!(chain.lines.bresenham_lines, vk::FALSE);

@@ -282,6 +282,10 @@ pub(crate) fn draw_info(buffer: &vk::Buffer, raster: FfvkRaster) -> FfvkDrawInfo
         texture1: std::ptr::null(),
         texture2: std::ptr::null(),
         texture3: std::ptr::null(),
+        cube_map: std::ptr::null(),
+        cube_map1: std::ptr::null(),
+        cube_map2: std::ptr::null(),
+        cube_map3: std::ptr::null(),
     }
 }
 
@@ -626,6 +630,92 @@ fn a_misaligned_texture_of_any_unit_is_refused_naming_its_field_and_an_older_dra
             ..draw_info(&buffer, defaults())
         };
         assert_drawn(r, ctx, &draw);
+    });
+}
+
+/// Each unit's cube map pointer (version 5) is checked as its texture is, naming its field; a
+/// version 4 draw is drawn whatever lies where they would be; a cube map where a 2D texture
+/// goes, or a 2D texture where a cube map goes, is refused naming the field, the unit and the
+/// field it belongs in; and `ffvkCreateCubeMap` refuses null handles and out pointers.
+#[test]
+fn cube_maps_are_checked_per_unit_naming_the_field_and_a_binding_of_the_other_target_is_refused() {
+    let bad = 0x1001 as *const FfvkTexture;
+    in_draw_scope(|r, ctx| {
+        let buffer = vk::Buffer::from_raw(PLACEHOLDER);
+        let with = |field: &str, t: *const FfvkTexture| {
+            let mut draw = draw_info(&buffer, defaults());
+            match field {
+                "texture" => draw.texture = t,
+                "texture2" => draw.texture2 = t,
+                "cube_map" => draw.cube_map = t,
+                "cube_map1" => draw.cube_map1 = t,
+                "cube_map2" => draw.cube_map2 = t,
+                _ => draw.cube_map3 = t,
+            }
+            draw
+        };
+        for field in ["cube_map", "cube_map1", "cube_map2", "cube_map3"] {
+            let given = format!("{field} 0x1001 is not aligned");
+            let draw = with(field, bad);
+            assert_draw_refused(
+                r,
+                ctx,
+                &draw,
+                &given,
+                "expected a cube map from ffvkCreateCubeMap or null",
+            );
+        }
+        let version_4 = <FfvkDrawInfo as Versioned>::VERSIONS[3].size as u32;
+        let draw = FfvkDrawInfo {
+            struct_size: version_4,
+            cube_map: bad,
+            cube_map3: bad,
+            ..draw_info(&buffer, defaults())
+        };
+        assert_drawn(r, ctx, &draw);
+
+        let (view, sampler) = (vk::ImageView::from_raw(0x10), vk::Sampler::from_raw(0x20));
+        let (mut flat, mut cube) = (std::ptr::null_mut(), std::ptr::null_mut());
+        // SAFETY: a live renderer; the handles are never used by a draw that is recorded
+        // (every draw below is refused); the outs are writable.
+        unsafe {
+            assert_eq!(
+                ffvkCreateTexture(r, view, sampler, &mut flat),
+                FfvkResult::FFVK_SUCCESS
+            );
+            assert_eq!(
+                ffvkCreateCubeMap(r, view, sampler, &mut cube),
+                FfvkResult::FFVK_SUCCESS
+            );
+        }
+        for (field, t, unit, words) in [
+            ("texture", cube, 0, "is a cube map (GL_TEXTURE_CUBE_MAP): expected a GL_TEXTURE_2D binding from ffvkCreateTexture or null (a cube map goes in cube_map)"),
+            ("texture2", cube, 2, "is a cube map (GL_TEXTURE_CUBE_MAP): expected a GL_TEXTURE_2D binding from ffvkCreateTexture or null (a cube map goes in cube_map2)"),
+            ("cube_map", flat, 0, "is a 2D texture (GL_TEXTURE_2D): expected a GL_TEXTURE_CUBE_MAP binding from ffvkCreateCubeMap or null (a 2D texture goes in texture)"),
+            ("cube_map3", flat, 3, "is a 2D texture (GL_TEXTURE_2D): expected a GL_TEXTURE_CUBE_MAP binding from ffvkCreateCubeMap or null (a 2D texture goes in texture3)"),
+        ] {
+            let given = format!("{field} (unit {unit}, GL_TEXTURE{unit}) {t:p}");
+            assert_draw_refused(r, ctx, &with(field, t), &given, words);
+        }
+        let mut out = std::ptr::NonNull::<FfvkTexture>::dangling().as_ptr();
+        // SAFETY: a live renderer; null handles are refused before use; out is writable.
+        unsafe {
+            let result = ffvkCreateCubeMap(r, vk::ImageView::null(), sampler, &mut out);
+            assert_eq!(result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+            assert!(out.is_null(), "the out pointer is left {out:?}");
+            assert_eq!(
+                message(),
+                "ffvkCreateCubeMap: view or sampler is VK_NULL_HANDLE: expected the caller's cube image view and sampler"
+            );
+            let result = ffvkCreateCubeMap(r, view, sampler, std::ptr::null_mut());
+            assert_eq!(result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+            assert_eq!(
+                message(),
+                "ffvkCreateCubeMap: cube_map is a null pointer: expected where to write the cube map"
+            );
+            ffvkDestroyTexture(flat);
+            ffvkDestroyTexture(cube);
+        }
     });
 }
 

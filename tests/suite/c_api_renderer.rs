@@ -86,6 +86,10 @@ fn draw_info(mode: u32, buffer: &vk::Buffer, raster: FfvkRaster) -> FfvkDrawInfo
         texture1: std::ptr::null(),
         texture2: std::ptr::null(),
         texture3: std::ptr::null(),
+        cube_map: std::ptr::null(),
+        cube_map1: std::ptr::null(),
+        cube_map2: std::ptr::null(),
+        cube_map3: std::ptr::null(),
     }
 }
 

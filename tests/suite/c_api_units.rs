@@ -61,7 +61,7 @@ const GL_OBJECT_PLANE: u32 = 0x2501;
 const GL_OBJECT_LINEAR: u32 = 0x2401;
 const GL_TRIANGLES: u32 = 0x0004;
 
-fn message() -> String {
+pub(crate) fn message() -> String {
     // SAFETY: ffvkResultMessage never returns null; the string is valid until the next call.
     unsafe { CStr::from_ptr(ffvkResultMessage()) }
         .to_string_lossy()
@@ -185,17 +185,17 @@ fn mesa(unit2_source: u8) -> RgbaImage {
 }
 
 /// A buffer or image of the caller's with its memory.
-enum Owned {
+pub(crate) enum Owned {
     Buffer(vk::Buffer, vk::DeviceMemory),
     Image(vk::Image, vk::ImageView, vk::DeviceMemory),
     Sampler(vk::Sampler),
 }
 
 /// The caller's side of the frame on `plain`'s device: what it makes, and frees on drop.
-struct Caller<'d> {
-    plain: &'d PlainDevice,
-    owned: Vec<Owned>,
-    pool: vk::CommandPool,
+pub(crate) struct Caller<'d> {
+    pub(crate) plain: &'d PlainDevice,
+    pub(crate) owned: Vec<Owned>,
+    pub(crate) pool: vk::CommandPool,
 }
 
 impl Drop for Caller<'_> {
@@ -224,7 +224,7 @@ impl Drop for Caller<'_> {
 }
 
 impl<'d> Caller<'d> {
-    fn new(plain: &'d PlainDevice) -> Self {
+    pub(crate) fn new(plain: &'d PlainDevice) -> Self {
         let info = vk::CommandPoolCreateInfo::default().queue_family_index(0);
         // SAFETY: a valid create info on a live device (queue family 0 is PlainDevice's).
         let pool = unsafe { plain.device.create_command_pool(&info, None) }.unwrap();
@@ -235,7 +235,11 @@ impl<'d> Caller<'d> {
         }
     }
 
-    fn memory(&self, req: vk::MemoryRequirements, flags: vk::MemoryPropertyFlags) -> vk::DeviceMemory {
+    pub(crate) fn memory(
+        &self,
+        req: vk::MemoryRequirements,
+        flags: vk::MemoryPropertyFlags,
+    ) -> vk::DeviceMemory {
         // SAFETY: a live instance and physical device.
         let props = unsafe {
             self.plain
@@ -256,7 +260,11 @@ impl<'d> Caller<'d> {
     }
 
     /// A host-visible buffer holding `bytes` (or zeros up to `bytes.len()`).
-    fn buffer(&mut self, bytes: &[u8], usage: vk::BufferUsageFlags) -> (vk::Buffer, vk::DeviceMemory) {
+    pub(crate) fn buffer(
+        &mut self,
+        bytes: &[u8],
+        usage: vk::BufferUsageFlags,
+    ) -> (vk::Buffer, vk::DeviceMemory) {
         let d = &self.plain.device;
         let info = vk::BufferCreateInfo::default()
             .size(bytes.len() as u64)
@@ -282,7 +290,12 @@ impl<'d> Caller<'d> {
     }
 
     /// A 2D image of `FORMAT` with one level, and its view.
-    fn image(&mut self, width: u32, height: u32, usage: vk::ImageUsageFlags) -> (vk::Image, vk::ImageView) {
+    pub(crate) fn image(
+        &mut self,
+        width: u32,
+        height: u32,
+        usage: vk::ImageUsageFlags,
+    ) -> (vk::Image, vk::ImageView) {
         let d = &self.plain.device;
         let info = vk::ImageCreateInfo::default()
             .image_type(vk::ImageType::TYPE_2D)
@@ -329,7 +342,7 @@ impl<'d> Caller<'d> {
     }
 }
 
-fn color_range() -> vk::ImageSubresourceRange {
+pub(crate) fn color_range() -> vk::ImageSubresourceRange {
     vk::ImageSubresourceRange {
         aspect_mask: vk::ImageAspectFlags::COLOR,
         base_mip_level: 0,
@@ -339,7 +352,7 @@ fn color_range() -> vk::ImageSubresourceRange {
     }
 }
 
-fn barrier(
+pub(crate) fn barrier(
     image: vk::Image,
     (old, new): (vk::ImageLayout, vk::ImageLayout),
     (src, dst): (vk::AccessFlags, vk::AccessFlags),
@@ -356,7 +369,7 @@ fn barrier(
 }
 
 /// One vertex of binding 0: position, normal, color, (s, t); 48 bytes.
-fn interleaved(meshes: &[&MeshData]) -> Vec<u8> {
+pub(crate) fn interleaved(meshes: &[&MeshData]) -> Vec<u8> {
     let mut out = Vec::new();
     for v in meshes.iter().flat_map(|m| &m.vertices) {
         for x in v
@@ -372,7 +385,7 @@ fn interleaved(meshes: &[&MeshData]) -> Vec<u8> {
     out
 }
 
-fn attribute(binding: u32, offset: u32, format: vk::Format) -> FfvkAttribute {
+pub(crate) fn attribute(binding: u32, offset: u32, format: vk::Format) -> FfvkAttribute {
     FfvkAttribute {
         binding,
         offset,
@@ -539,6 +552,10 @@ fn ffvk_image(unit2_source: u32) -> RgbaImage {
             texture1: std::ptr::null(),
             texture2: std::ptr::null(),
             texture3: std::ptr::null(),
+            cube_map: std::ptr::null(),
+            cube_map1: std::ptr::null(),
+            cube_map2: std::ptr::null(),
+            cube_map3: std::ptr::null(),
         }
     };
     let two = [vertices, coords];
@@ -781,7 +798,7 @@ fn ffvk_image(unit2_source: u32) -> RgbaImage {
 }
 
 /// The largest difference of any channel of any pixel, and how many pixels differ at all.
-fn worst(a: &RgbaImage, b: &RgbaImage) -> (u8, usize) {
+pub(crate) fn worst(a: &RgbaImage, b: &RgbaImage) -> (u8, usize) {
     let mut differing = 0;
     let mut worst = 0;
     for (p, q) in a.pixels().zip(b.pixels()) {

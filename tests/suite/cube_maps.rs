@@ -37,7 +37,7 @@ const FACE_COLORS: [[u8; 3]; 6] = [
 
 /// A cube map of `side`-texel faces: each face's color, its red brightening along s and its
 /// blue along t, a darker checker on top, alpha falling along t.
-fn faces(side: u32) -> CubeImage {
+pub(crate) fn faces(side: u32) -> CubeImage {
     let face = |c: [u8; 3]| {
         let mut rgba = Vec::new();
         for j in 0..side {

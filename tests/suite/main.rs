@@ -4,6 +4,7 @@ mod base_formats;
 mod bench;
 mod browser;
 mod c_api_boundary;
+mod c_api_cube;
 mod c_api_example;
 mod c_api_fuzz;
 mod c_api_install;

@@ -52,10 +52,12 @@ pub unsafe extern "C" fn ffvkGetError(ctx: *mut FfvkContext) -> u32 {
 }
 
 /// glEnable for `GL_LIGHTING`, `GL_LIGHTi` (i < 16), `GL_COLOR_MATERIAL`, `GL_NORMALIZE`,
-/// `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_COLOR_SUM`, `GL_FOG`, `GL_ALPHA_TEST`,
-/// `GL_CLIP_PLANEi` (i < 6), `GL_POINT_SPRITE`, `GL_TEXTURE_GEN_S`, `_T`, `_R`, `_Q` (the
-/// coordinate generated as `ffvkTexGeni` says, GL 2.1 §2.11.4; `GL_TEXTURE_2D` and
-/// `GL_TEXTURE_GEN_*` are the active unit's, `ffvkActiveTexture`), and the raster state's
+/// `GL_RESCALE_NORMAL`, `GL_TEXTURE_2D`, `GL_TEXTURE_CUBE_MAP`, `GL_COLOR_SUM`, `GL_FOG`,
+/// `GL_ALPHA_TEST`, `GL_CLIP_PLANEi` (i < 6), `GL_POINT_SPRITE`, `GL_TEXTURE_GEN_S`, `_T`, `_R`,
+/// `_Q` (the coordinate generated as `ffvkTexGeni` says, GL 2.1 §2.11.4; `GL_TEXTURE_2D`,
+/// `GL_TEXTURE_CUBE_MAP` and `GL_TEXTURE_GEN_*` are the active unit's, `ffvkActiveTexture`;
+/// with `GL_TEXTURE_CUBE_MAP` on, the unit samples the draw's cube map for it, `FfvkDrawInfo::
+/// cube_map`, and not its 2D texture, GL 2.1 §3.8.15), and the raster state's
 /// `GL_POLYGON_OFFSET_FILL`, `GL_POLYGON_OFFSET_LINE`, `GL_POLYGON_OFFSET_POINT`,
 /// `GL_LINE_STIPPLE`, `GL_POLYGON_STIPPLE`, `GL_STENCIL_TEST`,
 /// `GL_COLOR_LOGIC_OP`, `GL_BLEND`, `GL_DEPTH_TEST` and `GL_CULL_FACE` (which a draw takes with

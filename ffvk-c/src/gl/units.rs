@@ -1,6 +1,7 @@
 //! The texture units (GL 2.1 §2.7, §3.8.17; `GL_MAX_TEXTURE_UNITS` and `GL_MAX_TEXTURE_COORDS`
 //! are 4): `ffvkActiveTexture`, which selects the unit glTexEnv, glTexGen, the texture matrix
-//! and the `GL_TEXTURE_2D` and `GL_TEXTURE_GEN_*` enables act on and queries answer for, and
+//! and the `GL_TEXTURE_2D`, `GL_TEXTURE_CUBE_MAP` and `GL_TEXTURE_GEN_*` enables act on and
+//! queries answer for, and
 //! `ffvkMultiTexCoord*`, each unit's current texture coordinates.
 //!
 //! There is no `ffvkClientActiveTexture`: the C API keeps no client array state for it to
@@ -29,7 +30,8 @@ fn unit(function: &str, what: &str, texture: u32, expected: &str) -> GlResult<us
 
 /// glActiveTexture: `GL_TEXTURE0` .. `GL_TEXTURE3` becomes the active unit (`GL_ACTIVE_TEXTURE`,
 /// `GL_TEXTURE0` initially): the unit later `ffvkTexEnv*`, `ffvkTexGen*`,
-/// `ffvkLoadTextureMatrix`, `GL_TEXTURE_2D`, `GL_TEXTURE_GEN_*` and `GL_COORD_REPLACE` act on,
+/// `ffvkLoadTextureMatrix`, `GL_TEXTURE_2D`, `GL_TEXTURE_CUBE_MAP`, `GL_TEXTURE_GEN_*` and
+/// `GL_COORD_REPLACE` act on,
 /// and whose state `ffvkGetTexEnv*`, `ffvkGetTexGen*`, `ffvkIsEnabled` and
 /// `GL_CURRENT_TEXTURE_COORDS` and `GL_TEXTURE_MATRIX` answer. Errors: `GL_INVALID_ENUM` for any
 /// other value (`GL_TEXTURE4` and past: ffvk has four units, and no shader image units beyond

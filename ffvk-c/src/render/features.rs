@@ -28,6 +28,12 @@ pub const FFVK_FEATURE_STIPPLED_LINES: u32 = 128;
 /// needed for GL's edge flags (draws of mode `GL_TRIANGLES_ADJACENCY` from
 /// `ffvkEdgeFlaggedIndices`).
 pub const FFVK_FEATURE_GEOMETRY_SHADER: u32 = 256;
+/// The extension `VK_EXT_non_seamless_cube_map` enabled with
+/// `VkPhysicalDeviceNonSeamlessCubeMapFeaturesEXT::nonSeamlessCubeMap`: lets the caller's cube
+/// map samplers (`ffvkCreateCubeMap`) take `VK_SAMPLER_CREATE_NON_SEAMLESS_CUBE_MAP_BIT_EXT`,
+/// filtering each face on its own as GL 2.1 does. ffvk makes no sampler of the caller's: the
+/// bit says what the device has, and no draw is refused without it.
+pub const FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP: u32 = 512;
 
 /// Every bit this version knows.
 pub(crate) const KNOWN_FEATURES: u32 = FFVK_FEATURE_DYNAMIC_RENDERING
@@ -38,7 +44,8 @@ pub(crate) const KNOWN_FEATURES: u32 = FFVK_FEATURE_DYNAMIC_RENDERING
     | FFVK_FEATURE_FILL_MODE_NON_SOLID
     | FFVK_FEATURE_LOGIC_OP
     | FFVK_FEATURE_STIPPLED_LINES
-    | FFVK_FEATURE_GEOMETRY_SHADER;
+    | FFVK_FEATURE_GEOMETRY_SHADER
+    | FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP;
 
 /// The features `bits` (checked for unknown bits before) say the caller enabled.
 pub(crate) fn enabled_features(bits: u32) -> EnabledFeatures {
@@ -53,4 +60,5 @@ pub(crate) fn enabled_features(bits: u32) -> EnabledFeatures {
         .with_logic_op(has(FFVK_FEATURE_LOGIC_OP))
         .with_stippled_lines(has(FFVK_FEATURE_STIPPLED_LINES))
         .with_geometry_shader(has(FFVK_FEATURE_GEOMETRY_SHADER))
+        .with_non_seamless_cube_map(has(FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP))
 }

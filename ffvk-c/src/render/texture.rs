@@ -1,8 +1,10 @@
-//! Textures a draw samples (`ffvkCreateTexture`): a descriptor set naming the caller's image
-//! view and sampler, bound to a texture unit by `FfvkDrawInfo`'s `texture` (unit 0) and, from
-//! its version 4, `texture1` .. `texture3`.
+//! Textures a draw samples (`ffvkCreateTexture`, `ffvkCreateCubeMap`): a descriptor set naming
+//! the caller's image view and sampler, bound to a texture unit by `FfvkDrawInfo`'s `texture`
+//! (unit 0) and, from its version 4, `texture1` .. `texture3`; cube maps by its version 5's
+//! `cube_map` .. `cube_map3`.
 
 use ffvk::ash::vk;
+use ffvk::draw::texture::TextureTarget;
 use ffvk::gl::texture::MAX_TEXTURE_UNITS;
 use ffvk::TextureBinding;
 
@@ -10,34 +12,96 @@ use super::{invalid, with_renderer, FfvkDrawInfo, FfvkRenderer};
 use crate::result::{check_ptr, from_error, misaligned, FfvkResult};
 use crate::vk_types::*;
 
-/// A descriptor set naming the caller's image view and sampler (`ffvkCreateTexture`).
+/// A descriptor set naming the caller's image view and sampler: a 2D texture
+/// (`ffvkCreateTexture`) or a cube map (`ffvkCreateCubeMap`).
 pub struct FfvkTexture {
     pub(super) binding: TextureBinding,
 }
 
-/// The texture a draw binds to each unit, `GL_TEXTURE0` first (null: none, GL's texture object
-/// 0), each checked aligned.
-pub(super) fn of_draw(
-    function: &str,
-    draw: &FfvkDrawInfo,
-) -> Result<[*const FfvkTexture; MAX_TEXTURE_UNITS], FfvkResult> {
-    let textures = [draw.texture, draw.texture1, draw.texture2, draw.texture3];
-    for (i, &t) in textures.iter().enumerate() {
-        if misaligned(t) {
-            let field = if i == 0 {
-                "texture".to_string()
-            } else {
-                format!("texture{i}")
-            };
-            return Err(invalid(format!(
-                "{function}: {field} {t:p} is not aligned: expected a texture from ffvkCreateTexture or null"
-            )));
-        }
-    }
-    Ok(textures)
+/// What a draw binds to each unit, `GL_TEXTURE0` first (null: none, GL's texture object 0):
+/// its 2D textures and its cube maps.
+#[derive(Clone, Copy)]
+pub(super) struct UnitBindings {
+    pub(super) textures: [*const FfvkTexture; MAX_TEXTURE_UNITS],
+    pub(super) cube_maps: [*const FfvkTexture; MAX_TEXTURE_UNITS],
 }
 
-/// The bindings of a draw's textures ([`of_draw`]'s), a unit each.
+/// A unit's field of `FfvkDrawInfo`: `texture`, `texture1`, …, or `cube_map`, `cube_map1`, ….
+fn field(base: &str, unit: usize) -> String {
+    if unit == 0 {
+        base.to_string()
+    } else {
+        format!("{base}{unit}")
+    }
+}
+
+/// The textures and cube maps a draw binds to each unit, each checked aligned and, where not
+/// null, of its field's target: a cube map where a 2D texture goes, or the reverse, is refused
+/// naming the field and the unit.
+///
+/// # Safety
+///
+/// Each of the draw's textures and cube maps is null, misaligned (refused) or live.
+pub(super) unsafe fn of_draw(function: &str, draw: &FfvkDrawInfo) -> Result<UnitBindings, FfvkResult> {
+    let units = UnitBindings {
+        textures: [draw.texture, draw.texture1, draw.texture2, draw.texture3],
+        cube_maps: [draw.cube_map, draw.cube_map1, draw.cube_map2, draw.cube_map3],
+    };
+    let slots = [
+        (
+            &units.textures,
+            "texture",
+            TextureTarget::Texture2D,
+            "ffvkCreateTexture",
+        ),
+        (
+            &units.cube_maps,
+            "cube_map",
+            TextureTarget::CubeMap,
+            "ffvkCreateCubeMap",
+        ),
+    ];
+    for (bound, base, _, maker) in slots {
+        for (i, &t) in bound.iter().enumerate() {
+            if misaligned(t) {
+                let what = if maker == "ffvkCreateTexture" {
+                    "a texture"
+                } else {
+                    "a cube map"
+                };
+                return Err(invalid(format!(
+                    "{function}: {} {t:p} is not aligned: expected {what} from {maker} or null",
+                    field(base, i)
+                )));
+            }
+        }
+    }
+    for (bound, base, expected, maker) in slots {
+        for (i, &t) in bound.iter().enumerate() {
+            // SAFETY: the caller's contract: null or live; checked aligned above.
+            let Some(t) = (unsafe { t.as_ref() }) else {
+                continue;
+            };
+            if t.binding.target() != expected {
+                let (given, other) = match expected {
+                    TextureTarget::CubeMap => ("a 2D texture", "texture"),
+                    _ => ("a cube map", "cube_map"),
+                };
+                return Err(invalid(format!(
+                    "{function}: {} (unit {i}, GL_TEXTURE{i}) {:p} is {given} ({}): expected a {} binding from {maker} or null ({given} goes in {})",
+                    field(base, i),
+                    t,
+                    t.binding.target().gl_name(),
+                    expected.gl_name(),
+                    field(other, i)
+                )));
+            }
+        }
+    }
+    Ok(units)
+}
+
+/// The bindings of a draw's textures or cube maps ([`of_draw`]'s), a unit each.
 ///
 /// # Safety
 ///
@@ -91,12 +155,69 @@ pub unsafe extern "C" fn ffvkCreateTexture(
     })
 }
 
-/// Frees a texture binding; null is ignored. The caller first makes sure no submitted command
-/// buffer still uses it.
+/// Makes a cube map binding (`GL_TEXTURE_CUBE_MAP`'s texture object) naming the caller's image
+/// view and sampler, for `FfvkDrawInfo`'s `cube_map` .. `cube_map3` (version 5). The view is a
+/// `VK_IMAGE_VIEW_TYPE_CUBE` view of six array layers in GL's face order
+/// (`GL_TEXTURE_CUBE_MAP_POSITIVE_X`, `_NEGATIVE_X`, `_POSITIVE_Y`, `_NEGATIVE_Y`,
+/// `_POSITIVE_Z`, `_NEGATIVE_Z`), each face's row 0 at t = 0 as glTexImage2D's first row,
+/// color, sampled as floats, in `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` whenever a draw that
+/// uses it executes. GL 2.1 filters each face on its own: a sampler created with
+/// `VK_SAMPLER_CREATE_NON_SEAMLESS_CUBE_MAP_BIT_EXT` in its flags does so (the device needs
+/// `VK_EXT_non_seamless_cube_map` enabled: `FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP` from
+/// `ffvkDeviceRequirements`); without it, linear filtering near an edge also reads the
+/// neighbouring face (Vulkan's seamless filtering). ffvk owns the descriptor set; the view
+/// and sampler stay the caller's. Records nothing. Free it with `ffvkDestroyTexture`. Returns
+/// `FFVK_SUCCESS` with `*cube_map` set, or an error code with `*cube_map` null
+/// (`FFVK_ERROR_INVALID_ARGUMENT` for a null or misaligned pointer or a null handle).
+///
+/// A cube map is drawn only from a `cube_map*` field and a 2D texture only from a `texture*`
+/// one: `ffvkDraw` refuses either in the other's field, naming the field and the unit.
 ///
 /// # Safety
 ///
-/// `texture` is null or from `ffvkCreateTexture`, not yet destroyed.
+/// As `ffvkCreateTexture`: `renderer` is null or live; `view` and `sampler` are live objects of
+/// its device and outlive every command buffer that draws with the cube map; `cube_map` is null
+/// or writable.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkCreateCubeMap(
+    renderer: *mut FfvkRenderer,
+    view: VkImageView,
+    sampler: VkSampler,
+    cube_map: *mut *mut FfvkTexture,
+) -> FfvkResult {
+    const F: &str = "ffvkCreateCubeMap";
+    if !cube_map.is_null() && !misaligned(cube_map) {
+        // SAFETY: checked non-null and aligned; the caller's contract makes it writable. Null
+        // until a cube map is made, so that a caller's cleanup after an error frees nothing.
+        unsafe { *cube_map = std::ptr::null_mut() };
+    }
+    with_renderer(renderer, F, |r| {
+        if let Err(code) = check_ptr(F, "cube_map", cube_map, "where to write the cube map") {
+            return code;
+        }
+        if view == vk::ImageView::null() || sampler == vk::Sampler::null() {
+            return invalid(format!(
+                "{F}: view or sampler is VK_NULL_HANDLE: expected the caller's cube image view and sampler"
+            ));
+        }
+        // SAFETY: the caller's contract on view and sampler.
+        match unsafe { r.lighting.bind_cube_map(view, sampler) } {
+            Ok(binding) => {
+                // SAFETY: checked non-null and aligned.
+                unsafe { *cube_map = Box::into_raw(Box::new(FfvkTexture { binding })) };
+                FfvkResult::FFVK_SUCCESS
+            }
+            Err(e) => from_error(F, &e),
+        }
+    })
+}
+
+/// Frees a texture or cube map binding; null is ignored. The caller first makes sure no
+/// submitted command buffer still uses it. The view and sampler it names stay the caller's.
+///
+/// # Safety
+///
+/// `texture` is null or from `ffvkCreateTexture` or `ffvkCreateCubeMap`, not yet destroyed.
 #[no_mangle]
 pub unsafe extern "C" fn ffvkDestroyTexture(texture: *mut FfvkTexture) {
     // SAFETY: the caller's contract: made by this API, destroyed once.

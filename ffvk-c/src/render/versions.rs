@@ -141,6 +141,31 @@ frozen_version! {
 }
 
 frozen_version! {
+    /// `FfvkDrawInfo` as version 4 of `ffvk.h` declared it.
+    DrawInfoV4 of FfvkDrawInfo {
+        struct_size: u32,
+        mode: u32,
+        vertex_buffers: *const VkBuffer,
+        vertex_offsets: *const VkDeviceSize,
+        vertex_buffer_count: u32,
+        index_buffer: VkBuffer,
+        index_offset: VkDeviceSize,
+        index_type: VkIndexType,
+        first: u32,
+        count: u32,
+        vertex_offset: i32,
+        primitive_restart: u8,
+        raster: FfvkRaster,
+        texture: *const FfvkTexture,
+        layout: *const FfvkVertexLayout,
+        raster_source: u32,
+        texture1: *const FfvkTexture,
+        texture2: *const FfvkTexture,
+        texture3: *const FfvkTexture,
+    }
+}
+
+frozen_version! {
     /// `FfvkVertexLayoutInfo` as version 1 of `ffvk.h` declared it.
     VertexLayoutInfoV1 of FfvkVertexLayoutInfo {
         struct_size: u32,
@@ -177,8 +202,13 @@ unsafe impl Versioned for FfvkDrawInfo {
         },
         // Version 4: the textures of units 1 to 3.
         Version {
-            size: size_of::<FfvkDrawInfo>(),
+            size: size_of::<DrawInfoV4>(),
             first_field: offset_of!(FfvkDrawInfo, texture1),
+        },
+        // Version 5: each unit's cube map.
+        Version {
+            size: size_of::<FfvkDrawInfo>(),
+            first_field: offset_of!(FfvkDrawInfo, cube_map),
         },
     ];
     fn defaults() -> Self {
@@ -202,6 +232,10 @@ unsafe impl Versioned for FfvkDrawInfo {
             texture1: std::ptr::null(),
             texture2: std::ptr::null(),
             texture3: std::ptr::null(),
+            cube_map: std::ptr::null(),
+            cube_map1: std::ptr::null(),
+            cube_map2: std::ptr::null(),
+            cube_map3: std::ptr::null(),
         }
     }
 }
@@ -288,7 +322,8 @@ mod tests {
         );
         // FfvkDrawInfo: version 1 (ffvk-c 0.1's first header), version 2, which appended the
         // layout right after version 1's end, version 3, the raster source after version 2's
-        // end, and version 4, the units' textures after version 3's.
+        // end, version 4, the units' textures after version 3's, and version 5, the units' cube
+        // maps after version 4's.
         assert_eq!(
             FfvkDrawInfo::VERSIONS,
             [
@@ -305,14 +340,19 @@ mod tests {
                     first_field: offset_of!(FfvkDrawInfo, raster_source)
                 },
                 Version {
-                    size: size_of::<FfvkDrawInfo>(),
+                    size: size_of::<DrawInfoV4>(),
                     first_field: offset_of!(FfvkDrawInfo, texture1)
+                },
+                Version {
+                    size: size_of::<FfvkDrawInfo>(),
+                    first_field: offset_of!(FfvkDrawInfo, cube_map)
                 }
             ]
         );
         assert_eq!(offset_of!(FfvkDrawInfo, layout), size_of::<DrawInfoV1>());
         assert_eq!(offset_of!(FfvkDrawInfo, raster_source), size_of::<DrawInfoV2>());
         assert_eq!(offset_of!(FfvkDrawInfo, texture1), size_of::<DrawInfoV3>());
+        assert_eq!(offset_of!(FfvkDrawInfo, cube_map), size_of::<DrawInfoV4>());
     }
 
     #[test]
@@ -359,10 +399,25 @@ mod tests {
             read.texture1.is_null(),
             "a version 3 draw binds no texture to unit 1"
         );
-        info.struct_size = size_of::<FfvkDrawInfo>() as u32;
-        // SAFETY: as above, struct_size covering all of it.
+        info.struct_size = size_of::<DrawInfoV4>() as u32;
+        // Where a version 4 caller's memory ends: not read.
+        info.cube_map = std::ptr::dangling();
+        info.cube_map3 = std::ptr::dangling();
+        // SAFETY: as above.
         let read = unsafe { crate::abi::read("test", &info) }.expect("version 4's size is accepted");
         assert_eq!(read.texture1, std::ptr::dangling());
+        assert!(
+            read.cube_map.is_null() && read.cube_map3.is_null(),
+            "a version 4 draw binds no cube map"
+        );
+        info.struct_size = size_of::<FfvkDrawInfo>() as u32;
+        // SAFETY: as above, struct_size covering all of it.
+        let read = unsafe { crate::abi::read("test", &info) }.expect("version 5's size is accepted");
+        assert_eq!(
+            (read.cube_map, read.cube_map3),
+            (std::ptr::dangling(), std::ptr::dangling())
+        );
+        assert!(read.cube_map1.is_null());
     }
 
     #[test]

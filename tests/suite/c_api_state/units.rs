@@ -18,6 +18,7 @@ const CURRENT_TEXTURE_COORDS: u32 = 0x0B03;
 const TEXTURE_MATRIX: u32 = 0x0BA8;
 const MODELVIEW_MATRIX: u32 = 0x0BA6;
 const TEXTURE_2D: u32 = 0x0DE1;
+const TEXTURE_CUBE_MAP: u32 = 0x8513;
 const TEXTURE_GEN_S: u32 = 0x0C60;
 const TEXTURE_ENV: u32 = 0x2300;
 const TEXTURE_ENV_MODE: u32 = 0x2200;
@@ -91,6 +92,8 @@ fn readback(units: &[u32]) -> Vec<Step> {
         steps.push(q(GetFloatv(TEXTURE_MATRIX, 16)));
         steps.push(q(IsEnabled(TEXTURE_2D)));
         steps.push(q(GetBooleanv(TEXTURE_2D, 1)));
+        steps.push(q(IsEnabled(TEXTURE_CUBE_MAP)));
+        steps.push(q(GetIntegerv(TEXTURE_CUBE_MAP, 1)));
         for cap in TEXTURE_GEN_S..TEXTURE_GEN_S + 4 {
             steps.push(q(IsEnabled(cap)));
         }
@@ -281,6 +284,59 @@ pub(super) fn sequences() -> Vec<(String, Vec<Step>)> {
             q(Query::IsEnabled(TEXTURE_2D)),
             c(ActiveTexture(TEXTURE0 + 3)),
             c(Disable(TEXTURE_2D)),
+        ],
+    ));
+
+    // GL_TEXTURE_CUBE_MAP (GL 2.1 §3.8.15), the active unit's: enabled and disabled on several
+    // units, beside and without GL_TEXTURE_2D, queried through glIsEnabled and every glGet form.
+    for (i, unit) in UNITS.into_iter().enumerate() {
+        cases.push((
+            format!("glEnable(GL_TEXTURE_CUBE_MAP) with and without GL_TEXTURE_2D on GL_TEXTURE{i}"),
+            vec![
+                c(ActiveTexture(unit)),
+                c(Enable(TEXTURE_CUBE_MAP)),
+                q(Query::IsEnabled(TEXTURE_CUBE_MAP)),
+                q(Query::IsEnabled(TEXTURE_2D)),
+                q(Query::GetBooleanv(TEXTURE_CUBE_MAP, 1)),
+                q(Query::GetFloatv(TEXTURE_CUBE_MAP, 1)),
+                c(Enable(TEXTURE_2D)),
+                c(ActiveTexture(UNITS[(i + 1) % 4])),
+                q(Query::IsEnabled(TEXTURE_CUBE_MAP)),
+                c(ActiveTexture(unit)),
+                c(Disable(TEXTURE_2D)),
+                q(Query::IsEnabled(TEXTURE_CUBE_MAP)),
+            ],
+        ));
+    }
+    cases.push((
+        "GL_TEXTURE_CUBE_MAP on units 0, 2 and 3, disabled on 2 again and twice on 3".into(),
+        vec![
+            c(Enable(TEXTURE_CUBE_MAP)),
+            c(ActiveTexture(TEXTURE0 + 2)),
+            c(Enable(TEXTURE_CUBE_MAP)),
+            c(ActiveTexture(TEXTURE0 + 3)),
+            c(Enable(TEXTURE_CUBE_MAP)),
+            c(Enable(TEXTURE_CUBE_MAP)),
+            c(ActiveTexture(TEXTURE0 + 2)),
+            c(Disable(TEXTURE_CUBE_MAP)),
+            q(Query::IsEnabled(TEXTURE_CUBE_MAP)),
+            c(ActiveTexture(TEXTURE0 + 3)),
+            c(Disable(TEXTURE_CUBE_MAP)),
+            c(Disable(TEXTURE_CUBE_MAP)),
+            c(ActiveTexture(TEXTURE0 + 1)),
+            c(Disable(TEXTURE_CUBE_MAP)),
+        ],
+    ));
+    cases.push((
+        "GL_TEXTURE_CUBE_MAP on the last unit, and a glActiveTexture error leaving it on unit 1".into(),
+        vec![
+            c(ActiveTexture(UNIT_LAST)),
+            c(Enable(TEXTURE_CUBE_MAP)),
+            q(Query::IsEnabled(TEXTURE_CUBE_MAP)),
+            c(ActiveTexture(TEXTURE0 + 1)),
+            c(ActiveTexture(UNIT_PAST_ACTIVE)),
+            c(Enable(TEXTURE_CUBE_MAP)),
+            q(Query::IsEnabled(TEXTURE_CUBE_MAP)),
         ],
     ));
 
