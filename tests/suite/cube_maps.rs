@@ -302,7 +302,7 @@ fn a_texture_in_the_other_targets_slot_is_refused_naming_the_unit() {
                 .with_textures(textures)
                 .with_cube_maps(cubes),
         );
-        let e = r.render(&frame).err().expect("the wrong target is refused");
+        let e = r.render(&frame).expect_err("the wrong target is refused");
         let text = e.to_string();
         assert!(text.contains(field) && text.contains("unit 2"), "{text}");
     }

@@ -43,6 +43,7 @@ mod render_path;
 mod report;
 mod rooms;
 mod scene;
+mod scene_cube;
 mod scene_raster;
 mod scene_texgen;
 mod scene_units;

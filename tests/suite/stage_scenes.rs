@@ -146,6 +146,11 @@ pub(crate) fn gl_image(scene: &Scene, mode: LightingMode) -> RgbaImage {
             for (unit, texture) in draw.textures.iter_mut().zip(&mesh.textures) {
                 *unit = texture.as_ref().map(|t| (&*t.image, t.sampling));
             }
+            for (unit, texture) in draw.cube_maps.iter_mut().zip(&mesh.textures) {
+                *unit = texture
+                    .as_ref()
+                    .and_then(|t| Some((&**t.cube_map.as_ref()?, t.sampling)));
+            }
             draw.mesh_texcoords = mesh.mesh_texcoords();
             draw.point_size = scene.point_size;
             draw.calls = mesh_raster_calls(&mesh.raster);

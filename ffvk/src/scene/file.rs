@@ -448,6 +448,20 @@ pub(super) struct TextureSpec {
     /// Texture coordinate generation: a table per coordinate generated, `s`, `t`, `r` or `q`.
     /// A map rather than fields, so that an unknown coordinate is refused naming its path.
     pub(super) texgen: Option<BTreeMap<String, TexCoordGenSpec>>,
+    /// GL_TEXTURE_CUBE_MAP's texture for the unit, enabled with it (sampled before the 2D
+    /// image, GL's precedence).
+    pub(super) cube_map: Option<CubeMapSpec>,
+}
+
+/// A unit's `cube_map` table: six face files, GL's order (+X, -X, +Y, -Y, +Z, -Z), or a
+/// built-in cube ("faces").
+#[derive(Debug, Default, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct CubeMapSpec {
+    /// Six PNG or JPEG files, relative to the scene file, +X first.
+    pub(super) faces: Option<Vec<std::path::PathBuf>>,
+    /// A built-in cube: "faces" (each face one color of its own).
+    pub(super) builtin: Option<String>,
 }
 
 /// One coordinate of a `texgen` table: glTexGen for it, GL_TEXTURE_GEN_S (`_T`, `_R`, `_Q`)

@@ -1,4 +1,5 @@
-//! The files a scene reads, listed without loading it: the scene file, its texture images,
+//! The files a scene reads, listed without loading it: the scene file, its texture images
+//! (and cube map faces),
 //! its glTF files and each glTF file's external buffers and images. A command checks its
 //! outputs against them before it writes anything ([`crate::files`] then guards each write).
 //! The list is best effort: a part that cannot be read or parsed is left out (loading the
@@ -37,11 +38,11 @@ pub fn inputs(path: &Path, limits: &Limits) -> Vec<PathBuf> {
             .iter()
             .flat_map(|m| m.texture.iter().chain(m.texture_units.iter().flatten())),
     );
-    files.extend(
-        textures
-            .filter_map(|t| t.image.as_ref())
-            .map(|image| folder.join(image)),
-    );
+    // Each unit's image, then its cube map's faces (GL's order).
+    for t in textures {
+        let faces = t.cube_map.iter().filter_map(|c| c.faces.as_ref()).flatten();
+        files.extend(t.image.iter().chain(faces).map(|image| folder.join(image)));
+    }
     for gltf in scene.meshes.iter().filter_map(|m| m.gltf.as_ref()) {
         let gltf = folder.join(gltf);
         files.extend(super::gltf::external_files(&gltf, &limits.asset_roots));

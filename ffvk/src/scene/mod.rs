@@ -7,6 +7,7 @@
 mod build;
 mod builtin;
 mod combine;
+mod cube;
 pub mod direct;
 mod file;
 pub mod gltf;

@@ -31,6 +31,9 @@ pub fn render_scene_with(
     // keeps one texture object per image and parameters).
     let mut textures: Vec<(&MeshTexture, crate::Texture)> = Vec::new();
     for t in scene.meshes.iter().flat_map(|m| m.textures.iter().flatten()) {
+        if t.cube_map.is_some() {
+            continue;
+        }
         if !textures
             .iter()
             .any(|(u, _)| std::sync::Arc::ptr_eq(&u.image, &t.image) && u.sampling == t.sampling)
@@ -38,6 +41,25 @@ pub fn render_scene_with(
             textures.push((t, renderer.upload_texture(&t.image, &t.sampling)?));
         }
     }
+    // Each cube map once likewise; a unit with one samples it (GL's precedence), never its
+    // 2D texture.
+    let mut cubes: Vec<(&MeshTexture, crate::Texture)> = Vec::new();
+    for t in scene.meshes.iter().flat_map(|m| m.textures.iter().flatten()) {
+        let Some(cube) = &t.cube_map else { continue };
+        if !cubes
+            .iter()
+            .any(|(u, _)| same_cube(u, cube) && u.sampling == t.sampling)
+        {
+            cubes.push((t, renderer.upload_cube_map(cube, &t.sampling)?));
+        }
+    }
+    let cube_of = |t: &MeshTexture| {
+        let cube = t.cube_map.as_ref()?;
+        cubes
+            .iter()
+            .find(|(u, _)| same_cube(u, cube) && u.sampling == t.sampling)
+            .map(|(_, gpu)| gpu)
+    };
     let texture_of = |t: &MeshTexture| {
         textures
             .iter()
@@ -71,7 +93,13 @@ pub fn render_scene_with(
                 }
                 textures
             },
-            cube_maps: [None; MAX_TEXTURE_UNITS],
+            cube_maps: {
+                let mut cubes = [None; MAX_TEXTURE_UNITS];
+                for (gpu, t) in cubes.iter_mut().zip(&mesh.textures) {
+                    *gpu = t.as_ref().and_then(cube_of);
+                }
+                cubes
+            },
             mesh_texcoords: mesh.mesh_texcoords(),
             topology: gpu.topology(),
             // glPointSize draws points only: other meshes keep GL's 1 (their pipelines are
@@ -96,4 +124,11 @@ pub fn render_scene_with(
         });
     }
     Ok(renderer.render(&frame)?.into())
+}
+
+/// Whether `u`'s cube map is `cube` (the same shared image).
+fn same_cube(u: &MeshTexture, cube: &std::sync::Arc<crate::gl::texture::CubeImage>) -> bool {
+    u.cube_map
+        .as_ref()
+        .is_some_and(|c| std::sync::Arc::ptr_eq(c, cube))
 }

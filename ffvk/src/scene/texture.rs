@@ -14,8 +14,8 @@ use super::file::{TexCoordGenSpec, TextureSpec};
 use super::{shorten, Builder, SceneError};
 use crate::gl::state::{Cap, GlState};
 use crate::gl::texture::{
-    MagFilter, MinFilter, Sampling, TexCoordGen, TexEnvMode, TexGenMode, TextureImage, TextureUnit, Wrap,
-    MAX_TEXTURE_SIZE, MAX_TEXTURE_UNITS,
+    CubeImage, MagFilter, MinFilter, Sampling, TexCoordGen, TexEnvMode, TexGenMode, TextureImage,
+    TextureUnit, Wrap, MAX_TEXTURE_SIZE, MAX_TEXTURE_UNITS,
 };
 
 /// The largest image file read for a texture, in bytes.
@@ -40,6 +40,13 @@ pub struct MeshTexture {
     pub coords: TexCoords,
     /// Where the image came from, for messages: a file, a built-in pattern, a glTF image.
     pub source: String,
+    /// The unit's GL_TEXTURE_CUBE_MAP texture (a `cube_map` table), sampled instead of
+    /// `image` (`unit.cube_map` is on with it, GL's precedence); its sampling is `sampling`.
+    /// A unit with a cube map and no image file or builtin has a 1x1 white `image`, never
+    /// sampled.
+    pub cube_map: Option<Arc<CubeImage>>,
+    /// Where the cube map came from, for messages; empty without one.
+    pub cube_source: String,
 }
 
 /// Where a texture unit's coordinates come from, before `texgen` replaces any it generates
@@ -58,7 +65,13 @@ pub enum TexCoords {
 impl MeshTexture {
     /// Whether drawing with it textures anything (enabled, and complete for its min filter).
     pub fn applies(&self) -> bool {
-        crate::gl::texture::texturing_applies(&self.unit, Some((&self.image, &self.sampling)))
+        match &self.cube_map {
+            // GL's precedence: the cube map, complete for the min filter, or nothing.
+            Some(cube) => {
+                self.unit.enabled && (!self.sampling.min_filter.uses_mipmaps() || cube.has_mipmaps())
+            }
+            None => crate::gl::texture::texturing_applies(&self.unit, Some((&self.image, &self.sampling))),
+        }
     }
 }
 
@@ -143,16 +156,26 @@ impl Builder<'_> {
                 .map_err(|e| self.field(f("builtin"), e.to_string()))?;
                 (image, format!("builtin {name}"))
             }
+            // A cube map alone: GL's 2D texture is never sampled then (GL's precedence).
+            (None, None) if spec.cube_map.is_some() => (
+                TextureImage::new(1, 1, vec![255; 4]).map_err(|e| self.field(field, e.to_string()))?,
+                "none (the cube map is sampled)".to_string(),
+            ),
             (None, None) => return Err(self.field(
                 field,
-                "no image: expected image = \"file.png\" or builtin = \"checker\", \"leaves\", \"disc\" or \"lightmap\"",
+                "no image: expected image = \"file.png\", builtin = \"checker\", \"leaves\", \"disc\" or \"lightmap\", or a cube_map table",
             )),
         };
         let mut image = image;
         image.srgb = spec.srgb.unwrap_or(false);
-        if spec.generate_mipmap.unwrap_or(false) {
+        let mipmaps = spec.generate_mipmap.unwrap_or(false);
+        if mipmaps {
             image = image.with_mipmaps();
         }
+        let cube = match &spec.cube_map {
+            Some(c) => Some(self.cube_map(&f("cube_map"), c, image.srgb, mipmaps)?),
+            None => None,
+        };
         // The words are the enums' own names, so the file format and messages cannot drift.
         let wrap: Vec<(&'static str, Wrap)> = Wrap::ALL.iter().map(|&w| (w.name(), w)).collect();
         let min: Vec<(&'static str, MinFilter)> = MinFilter::ALL.iter().map(|&m| (m.name(), m)).collect();
@@ -200,7 +223,7 @@ impl Builder<'_> {
         };
         let unit = TextureUnit {
             enabled: spec.enabled.unwrap_or(true),
-            cube_map: false,
+            cube_map: cube.is_some(),
             combine,
             env_mode,
             env_color: match &spec.env_color {
@@ -225,6 +248,8 @@ impl Builder<'_> {
             unit,
             coords,
             source,
+            cube_source: cube.as_ref().map_or(String::new(), |(_, s)| s.clone()),
+            cube_map: cube.map(|(c, _)| Arc::new(c)),
         };
         if !texture.applies() {
             warnings.push(format!(
@@ -398,7 +423,7 @@ impl Builder<'_> {
     }
 
     /// A PNG or JPEG file as an RGBA8 texture, rows as stored (the file's first row at t = 0).
-    fn texture_file(&self, field: &str, path: &Path) -> Result<TextureImage, SceneError> {
+    pub(super) fn texture_file(&self, field: &str, path: &Path) -> Result<TextureImage, SceneError> {
         let full = self.path.parent().unwrap_or(Path::new("")).join(path);
         let bytes = crate::files::read_regular(&full, MAX_IMAGE_BYTES)
             .map_err(|e| self.field(field, format!("cannot read {}: {e}", full.display())))?;

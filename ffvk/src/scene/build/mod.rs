@@ -278,6 +278,8 @@ impl Builder<'_> {
                             },
                             coords: TexCoords::Mesh,
                             source: format!("glTF image {} (base color, GL_MODULATE)", s.image_index),
+                            cube_map: None,
+                            cube_source: String::new(),
                         })
                     }
                     _ => {}
