@@ -203,13 +203,18 @@ static void create_device(App *app) {
      * uses to the same chain: dynamicRendering (required) in the Vulkan 1.3 struct,
      * provokingVertexLast (GL's rule for GL_FLAT: the last vertex) in the provoking-vertex
      * struct, GL's aliased and stippled lines (bresenhamLines, stippledBresenhamLines) in the
-     * line-rasterization struct, and wideLines, largePoints, shaderClipDistance,
+     * line-rasterization struct, GL 2.1's cube map filtering, each face on its own
+     * (nonSeamlessCubeMap) in the non-seamless struct, and wideLines, largePoints, shaderClipDistance,
      * fillModeNonSolid and logicOp, each where the device has it, with the extension names to
      * enable (a struct whose extension the device lacks is taken out of the chain). It says which FFVK_FEATURE_* bits the device will then have: what
      * FfvkRendererCreateInfo::enabled_features says (Vulkan cannot tell ffvk what a device
      * was created with). */
+    VkPhysicalDeviceNonSeamlessCubeMapFeaturesEXT non_seamless = {
+        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_NON_SEAMLESS_CUBE_MAP_FEATURES_EXT,
+    };
     VkPhysicalDeviceLineRasterizationFeaturesEXT lines = {
         .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT,
+        .pNext = &non_seamless,
     };
     VkPhysicalDeviceProvokingVertexFeaturesEXT provoking = {
         .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROVOKING_VERTEX_FEATURES_EXT,

@@ -43,7 +43,7 @@
 //! let buffers = [(vk::Buffer::null(), 0)];
 //! let draw = LitDraw::new(&gl.lighting, Mat4::IDENTITY, Mat4::IDENTITY, &buffers, Geometry::vertices(3))
 //!     .with_raster(RasterState::default().with_depth_test(true));
-//! assert!(draw.raster.depth_test && draw.texture.is_none());
+//! assert!(draw.raster.depth_test && draw.textures[0].is_none());
 //! ```
 
 /// `with_*` methods for a `#[non_exhaustive]` options struct: callers outside the crate cannot

@@ -69,6 +69,10 @@ pub(crate) fn build_library(profile: &Path) {
 /// `make -C ffvk-c/examples` against the library in `profile`; returns the program. The
 /// binary goes next to the library, not into the source tree.
 pub(crate) fn build_example(profile: &Path) -> PathBuf {
+    // One make at a time: the tests that need the examples run in parallel, and two makes
+    // installing the library into the same prefix at once race (`install: File exists`).
+    static MAKE: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    let _one = MAKE.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
     let build_dir = profile.join("ffvk-c-examples");
     let output = Command::new("make")
         .arg("-C")

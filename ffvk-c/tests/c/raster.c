@@ -39,8 +39,12 @@ int main(int argc, char **argv) {
 
     App app;
     app_create_instance(&app);
+    VkPhysicalDeviceNonSeamlessCubeMapFeaturesEXT non_seamless = {
+        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_NON_SEAMLESS_CUBE_MAP_FEATURES_EXT,
+    };
     VkPhysicalDeviceLineRasterizationFeaturesEXT lines = {
         .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT,
+        .pNext = &non_seamless,
     };
     VkPhysicalDeviceProvokingVertexFeaturesEXT provoking = {
         .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROVOKING_VERTEX_FEATURES_EXT,
@@ -66,7 +70,7 @@ int main(int argc, char **argv) {
     const uint32_t wanted = FFVK_FEATURE_FILL_MODE_NON_SOLID | FFVK_FEATURE_LOGIC_OP |
                             FFVK_FEATURE_STIPPLED_LINES;
     if ((enabled_features & wanted) != wanted || features.features.logicOp != VK_TRUE ||
-        lines.stippledBresenhamLines != VK_TRUE || extension_count != 2)
+        lines.stippledBresenhamLines != VK_TRUE || extension_count != 3)
         die("ffvkDeviceRequirements: enabled_features 0x%X, logicOp %u, "
             "stippledBresenhamLines %u, %u extension(s)",
             enabled_features, features.features.logicOp, lines.stippledBresenhamLines,
