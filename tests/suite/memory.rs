@@ -185,9 +185,13 @@ fn frames_of_many_differently_lit_draws_stop_growing_memory_after_warm_up() {
 /// pipeline), in every lighting mode; then again with color material, two-sided lighting, a
 /// local viewer, separate specular and a texture in GL_DECAL; with specialized pipelines and
 /// with the uber-shader. lavapipe compiled a shader variant for every such draw
-/// (about 220 KB each, never freed) while the vertex stage branched on uniform values; after
-/// three warm-up frames the process may grow by 24 MiB at most over twelve more, and the test
-/// stops at the first frame past that rather than exhausting the machine's memory.
+/// (about 220 KB each, never freed: some 55 MiB a frame here) while the vertex stage branched on
+/// uniform values; after three warm-up frames the process may grow by 32 MiB at most over twelve
+/// more, and the test stops at the first frame past that rather than exhausting the machine's
+/// memory. Without such a leak the process still steps up once, at some frame, when lavapipe's
+/// rasterizer buffers grow under CPU load (other tests running): measured 6.0, 15.1, 21.1 and
+/// 27.3 MiB in the four modes of the Auto pass with the four-unit texture code, each a single
+/// step that never grows after; 24 MiB, the bound before, was under the last.
 #[test]
 #[ignore = "measures its own process's memory: run by frames_of_many_differently_lit_draws_stop_growing_memory_after_warm_up"]
 fn many_differently_lit_draws_in_their_own_process() {
@@ -203,7 +207,7 @@ fn many_differently_lit_draws_in_their_own_process() {
     const DRAWS: usize = 256;
     const WARM_UP: usize = 3;
     const MEASURED: usize = 12;
-    const BOUND: u64 = 24 << 20;
+    const BOUND: u64 = 32 << 20;
     let view = Mat4::look_at_rh(Vec3::new(0.0, 0.0, 24.0), Vec3::ZERO, Vec3::Y);
     let mut gl = GlState::new();
     for cap in [
