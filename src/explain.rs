@@ -8,6 +8,8 @@ use ffvk::gl::state::{Attenuation, Face, FogMode, FogSource, Light, LightingMode
 use ffvk::reference::{self, Coverage, EyeVertex, LightTerms, Lit};
 use ffvk::scene::Scene;
 
+mod units;
+
 /// The surface at a pixel: which mesh and triangle, and where in it.
 pub struct Hit {
     pub mesh: usize,
@@ -31,14 +33,13 @@ pub fn pixel_terms(scene: &Scene, hit: &Hit, mode: LightingMode) -> reference::P
     let mut state = scene.draw_state(mesh);
     state.mode = mode;
     let verts = hit.vertices.map(|i| &mesh.data.vertices[i]);
-    let bound = mesh.texture().map(|t| (&*t.image, &t.sampling));
     reference::pixel_terms(
         &state,
         scene.modelview(mesh),
         scene.projection,
         verts,
         hit.coverage,
-        bound,
+        mesh.draw_textures(),
     )
 }
 
@@ -390,72 +391,7 @@ fn explain_surface(
             }
         }
     }
-    match (mesh.texture(), pixel.textured) {
-        (Some(t), Some(tex)) => {
-            let image = &t.image;
-            let _ = writeln!(
-                out,
-                "texture: {} ({}x{}, {} level(s){}), min {} mag {}, wrap {} {}, env {}",
-                t.source,
-                image.width(),
-                image.height(),
-                image.levels().len(),
-                if image.srgb { ", sRGB" } else { "" },
-                t.sampling.min_filter.name(),
-                t.sampling.mag_filter.name(),
-                t.sampling.wrap_s.name(),
-                t.sampling.wrap_t.name(),
-                t.unit.env_mode.name()
-            );
-            let _ = writeln!(
-                out,
-                "  (s/q, t/q) ({:.4}, {:.4}), texel ({:.2}, {:.2}) of level 0, λ {:.3}",
-                tex.st.x,
-                tex.st.y,
-                tex.st.x * image.width() as f64,
-                tex.st.y * image.height() as f64,
-                tex.lambda
-            );
-            let _ = writeln!(
-                out,
-                "  C_s, A_s (filtered texel)  {} = {}",
-                rgba(tex.texel),
-                bytes(tex.texel)
-            );
-            let _ = writeln!(out, "  C_f, A_f (c_pri)           {}", rgba(pixel.c_pri));
-            let _ = writeln!(
-                out,
-                "  C_v, A_v ({})         {}",
-                t.unit.env_mode.name(),
-                rgba(tex.env)
-            );
-            let _ = writeln!(out, "  c_sec, added after texturing {}", rgba(pixel.c_sec));
-        }
-        (Some(t), None) => {
-            let _ = writeln!(
-                out,
-                "texture: {} textures nothing (GL_TEXTURE_2D off, or incomplete: min filter {} without mipmaps)",
-                t.source,
-                t.sampling.min_filter.name()
-            );
-        }
-        (None, _) => {}
-    }
-    // The CPU reference applies unit 0 alone: say so where the mesh has more.
-    let more: Vec<String> = (1..mesh.textures.len())
-        .filter_map(|i| {
-            mesh.textures[i]
-                .as_ref()
-                .map(|t| format!("GL_TEXTURE{i} {} ({})", t.source, t.unit.env_mode.name()))
-        })
-        .collect();
-    if !more.is_empty() {
-        let _ = writeln!(
-            out,
-            "texture units after unit 0: {}; not predicted here (the CPU reference applies unit 0 alone), so the colors below leave them out",
-            more.join(", ")
-        );
-    }
+    units::texture_terms(out, mesh, pixel);
     stage_terms(out, &state, pixel);
     let color = pixel.color;
     let how = if pixel.fog.is_some() {

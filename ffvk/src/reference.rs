@@ -5,13 +5,14 @@
 
 pub mod stages;
 pub mod texture;
+pub mod units;
 
 use glam::{DMat3, DVec3, DVec4, Mat4};
 
 use crate::gl::state::{
     Attenuation, ColorControl, FixedFunctionState, Light, LightingMode, Material, SpecularModel, SpotEdge,
 };
-use crate::gl::texture::{texturing_applies, Sampling, TextureImage};
+use crate::gl::texture::{Sampling, TextureImage, MAX_TEXTURE_UNITS};
 use crate::mesh::Vertex;
 
 /// One light's share of the sum, before clamping (what `ffvk explain` prints).
@@ -275,13 +276,28 @@ pub struct EyeVertex {
     pub normal: DVec3,
     /// The vertex's color (GL's current color), not yet clamped.
     pub color: DVec4,
-    /// (s, t, 0, 1), the generated coordinates replaced (§2.11.4), through the texture matrix:
-    /// (s, t, r, q), not yet divided by q.
-    pub texcoord: DVec4,
+    /// Each unit's (s, t, r, q) from [`units::unit_texcoords`]: the source coordinates, the
+    /// generated ones replaced (§2.11.4), through the unit's texture matrix; not yet divided
+    /// by q.
+    pub texcoords: [DVec4; MAX_TEXTURE_UNITS],
 }
 
-/// Runs the vertex stage on the CPU for object-space vertex `v`, in double precision.
+/// Runs the vertex stage on the CPU for object-space vertex `v`, in double precision, units
+/// 1-3 taking their current texture coordinates: [`transform_with`] of no mesh coordinates.
 pub fn transform(state: &FixedFunctionState, modelview: Mat4, projection: Mat4, v: &Vertex) -> EyeVertex {
+    transform_with(state, modelview, projection, v, 0)
+}
+
+/// [`transform`] with the units 1-3 that `mesh_texcoords` names (a bit each) reading the
+/// vertex's texture coordinates too, as [`Draw::mesh_texcoords`](crate::Draw::mesh_texcoords)
+/// says.
+pub fn transform_with(
+    state: &FixedFunctionState,
+    modelview: Mat4,
+    projection: Mat4,
+    v: &Vertex,
+    mesh_texcoords: u32,
+) -> EyeVertex {
     let object = DVec3::from(v.position.map(f64::from)).extend(1.0);
     let eye = modelview.as_dmat4() * object;
     let normal = eye_normal(state, modelview, DVec3::from(v.normal.map(f64::from)));
@@ -290,7 +306,7 @@ pub fn transform(state: &FixedFunctionState, modelview: Mat4, projection: Mat4, 
         clip: projection.as_dmat4() * eye,
         normal,
         color: DVec4::from(v.color.map(f64::from)),
-        texcoord: texture::transform_st(&state.texture_units[0], v.texcoord, object, eye, normal),
+        texcoords: units::unit_texcoords(state, mesh_texcoords, v.texcoord, (object, eye, normal)),
     }
 }
 
@@ -390,9 +406,12 @@ pub struct PixelTerms {
     pub c_pri: DVec4,
     /// The secondary color reaching the fragment.
     pub c_sec: DVec4,
-    /// What texturing did, when it applies.
-    pub textured: Option<texture::Textured>,
-    /// The color sum of the (textured) primary and the secondary color.
+    /// What each texture unit that samples did, in unit order.
+    pub units: [Option<units::Textured>; MAX_TEXTURE_UNITS],
+    /// The primary color after texturing: the last applied unit's result, `c_pri` where none
+    /// applies.
+    pub textured: DVec4,
+    /// The color sum of the textured primary and the secondary color.
     pub summed: DVec4,
     /// What fog did, where it is on.
     pub fog: Option<stages::FogTerms>,
@@ -409,30 +428,31 @@ pub struct PixelTerms {
 }
 
 /// What ffvk should draw at a pixel covered by triangle `tri` (object-space vertices, in
-/// order), in `state.mode`, with `texture` bound: the CPU prediction tests compare the GPU
-/// with. A fragment the clip planes or the alpha test discard draws nothing: see
-/// [`pixel_terms`]' `kept`.
-pub fn pixel_color(
+/// order), in `state.mode`, with `textures` bound (an `Option<Bound>`: unit 0's texture alone;
+/// or a [`units::DrawTextures`]): the CPU prediction tests compare the GPU with. A fragment the
+/// clip planes or the alpha test discard draws nothing: see [`pixel_terms`]' `kept`.
+pub fn pixel_color<'a>(
     state: &FixedFunctionState,
     modelview: Mat4,
     projection: Mat4,
     tri: [&Vertex; 3],
     cov: Coverage,
-    texture: Option<Bound>,
+    textures: impl Into<units::DrawTextures<'a>>,
 ) -> DVec4 {
-    pixel_terms(state, modelview, projection, tri, cov, texture).color
+    pixel_terms(state, modelview, projection, tri, cov, textures).color
 }
 
 /// [`pixel_color`] with the colors before the color sum and the texturing terms.
-pub fn pixel_terms(
+pub fn pixel_terms<'a>(
     state: &FixedFunctionState,
     modelview: Mat4,
     projection: Mat4,
     tri: [&Vertex; 3],
     cov: Coverage,
-    texture: Option<Bound>,
+    textures: impl Into<units::DrawTextures<'a>>,
 ) -> PixelTerms {
-    let v = tri.map(|t| transform(state, modelview, projection, t));
+    let textures = textures.into();
+    let v = tri.map(|t| transform_with(state, modelview, projection, t, textures.mesh_texcoords));
     let back = !cov.front;
     let at = |w: DVec3, f: &dyn Fn(&EyeVertex) -> DVec4| f(&v[0]) * w.x + f(&v[1]) * w.y + f(&v[2]) * w.z;
     let w = cov.weights;
@@ -464,14 +484,11 @@ pub fn pixel_terms(
             (lit.c_pri, lit.c_sec)
         }
     };
-    let textured = texture
-        .filter(|&(image, sampling)| texturing_applies(&state.texture_units[0], Some((image, sampling))))
-        .map(|(image, sampling)| {
-            let stq = [cov.weights, cov.weights_dx, cov.weights_dy].map(|w| at(w, &|e| e.texcoord));
-            texture::texture_fragment(&state.texture_units[0], image, sampling, stq, c_pri)
-        });
-    let textured_pri = textured.map_or(c_pri, |t| t.env);
-    let summed = color_sum(textured_pri, c_sec);
+    let stq = std::array::from_fn(|i| {
+        [cov.weights, cov.weights_dx, cov.weights_dy].map(|w| at(w, &|e| e.texcoords[i]))
+    });
+    let (units, textured) = units::texture_units(state, &textures, stq, c_pri);
+    let summed = color_sum(textured, c_sec);
     let fog = state
         .fragment
         .fog
@@ -484,6 +501,7 @@ pub fn pixel_terms(
     PixelTerms {
         c_pri,
         c_sec,
+        units,
         textured,
         summed,
         fog,

@@ -125,14 +125,9 @@ fn every_asset_scene_renders_and_matches_the_reference_where_probed() {
             let image = render_scene(&mut r, &scene, Some(mode)).unwrap();
             // The pixel at the center is explained by the CPU reference and drawn the same,
             // where the reference knows how it was drawn: it takes each surface as lit and
-            // filled, not through a mesh's raster state (stencil, masks, blending, outlines),
-            // and textured by unit 0 alone (lightmap.toml's units are held to Mesa's GL in
-            // stage_scenes.rs).
+            // filled, not through a mesh's raster state (stencil, masks, blending, outlines).
             let (x, y) = (48, 48);
-            let plain = scene
-                .meshes
-                .iter()
-                .all(|m| m.raster.is_default() && m.textures[1..].iter().all(Option::is_none));
+            let plain = scene.meshes.iter().all(|m| m.raster.is_default());
             if let Some((_, want)) = reference_at(&scene, x, y, mode).filter(|_| plain) {
                 assert_pixel(
                     &image,

@@ -781,9 +781,11 @@ fn the_lightmap_asset_scene_lights_a_tiled_base_through_a_second_unit() {
     );
 }
 
-/// `ffvk explain` on a surface of two units says that the colors it predicts leave unit 1 out.
+/// `ffvk explain` on a surface of two units prints each unit's coordinates, texel, previous
+/// color and result in unit order, `GL_COMBINE`'s functions with their arguments, and the
+/// color texturing leaves; and names the cube map's face a direction selects.
 #[test]
-fn explain_says_it_predicts_unit_0_alone() {
+fn explain_prints_each_units_inputs_and_result_in_unit_order() {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("assets/scenes/lightmap.toml");
     let mut scene = Scene::load(&path).unwrap();
     scene.set_size(128, 128);
@@ -791,9 +793,39 @@ fn explain_says_it_predicts_unit_0_alone() {
     contains_all(
         &text,
         &[
-            "texture: builtin checker",
-            "GL_TEXTURE1 builtin lightmap (modulate)",
-            "not predicted here",
+            "GL_TEXTURE0: builtin checker (64x64",
+            "GL_TEXTURE1: builtin lightmap (64x64",
+            "C_p = C_f (c_pri)",
+            "C_p (previous unit)",
+            "C_v, A_v (modulate)",
+            "after texturing",
+        ],
+    );
+    let zero = text.find("GL_TEXTURE0:").unwrap();
+    assert!(zero < text.find("GL_TEXTURE1:").unwrap(), "{text}");
+    assert!(!text.contains("not predicted"), "{text}");
+    // The wall: GL_COMBINE's MODULATE × 2.
+    let wall = ffvk_cli::explain::explain(&scene, 64, 30, LightingMode::Vertex).expect("the wall is there");
+    contains_all(
+        &wall,
+        &["GL_COMBINE: RGB GL_MODULATE(GL_TEXTURE GL_SRC_COLOR, GL_PREVIOUS GL_SRC_COLOR) × 2"],
+    );
+    // A cube map on unit 1 by GL_REFLECTION_MAP: the face and (s_face, t_face).
+    let text = String::from(
+        "[image]\nsize = [64, 64]\n[camera]\neye = [0.0, 0.0, 3.0]\n\
+         [[meshes]]\nbuiltin = \"sphere\"\nlevel = 16\n\
+         [[meshes.texture_units]]\nbuiltin = \"checker\"\nmin_filter = \"linear\"\n\
+         [[meshes.texture_units]]\ncube_map = { builtin = \"faces\" }\nmin_filter = \"linear\"\n\
+         texgen = { s = { mode = \"reflection_map\" }, t = { mode = \"reflection_map\" }, r = { mode = \"reflection_map\" } }\n"
+    );
+    let scene = Scene::parse(&text, &PathBuf::from("explain_cube.toml")).unwrap();
+    let text = ffvk_cli::explain::explain(&scene, 32, 32, LightingMode::Vertex).expect("the sphere is there");
+    contains_all(
+        &text,
+        &[
+            "GL_TEXTURE1: builtin cube map faces (16² cube map faces",
+            "R by GL_REFLECTION_MAP generated",
+            "selects GL_TEXTURE_CUBE_MAP_POSITIVE_Z, (s_face, t_face) (0.5",
         ],
     );
 }

@@ -29,6 +29,13 @@ fn variant(name: &str, text: &str) -> Scene {
     load(&path)
 }
 
+/// `text` with `from` replaced by `to`; `from` must be there (a variant that changed nothing
+/// would test its original twice).
+fn replaced(text: &str, from: &str, to: &str) -> String {
+    assert!(text.contains(from), "the variant's original lacks {from:?}");
+    text.replace(from, to)
+}
+
 fn load(path: &Path) -> Scene {
     let mut scene = Scene::load(path).unwrap();
     assert!(
@@ -62,6 +69,19 @@ fn scenes() -> Vec<(String, Scene)> {
         ("chrome".into(), load(&asset("chrome.toml"))),
         // Two texture units: a tiled base and a light map, the wall's through GL_COMBINE.
         ("lightmap".into(), load(&asset("lightmap.toml"))),
+        (
+            // The chrome teapot reflecting the built-in cube map by GL_REFLECTION_MAP on S, T
+            // and R (a cube map's faces and seams across a lit, curved mesh).
+            "chrome_reflection_map".into(),
+            variant(
+                "chrome_reflection_map",
+                &replaced(
+                    &read("chrome.toml"),
+                    "texture = { builtin = \"checker\", min_filter = \"linear\", mag_filter = \"linear\", texgen = { s = { mode = \"sphere_map\" }, t = { mode = \"sphere_map\" } } }",
+                    "texture = { cube_map = { builtin = \"faces\" }, min_filter = \"linear\", texgen = { s = { mode = \"reflection_map\" }, t = { mode = \"reflection_map\" }, r = { mode = \"reflection_map\" } } }",
+                ),
+            ),
+        ),
         (
             // The fill screen-doored by a polygon stipple of 2 × 2 checks.
             "hidden_line_stippled".into(),
@@ -280,15 +300,10 @@ fn borderline(scene: &Scene, x: u32, y: u32, mode: LightingMode) -> bool {
 fn the_cpu_reference_predicts_every_stage_at_a_grid_of_probes_in_every_mode() {
     let mut r = renderer();
     let mut seen_through = 0;
-    // The CPU reference draws filled triangles under GL's raster defaults with texture unit 0
-    // alone: the particles (points) are left to points.rs, the raster state's scenes and those
-    // of several units to Mesa (above).
-    let plain = |scene: &Scene| {
-        scene
-            .meshes
-            .iter()
-            .all(|m| m.raster.is_default() && m.textures[1..].iter().all(Option::is_none))
-    };
+    // The CPU reference draws filled triangles under GL's raster defaults: the particles
+    // (points) are left to points.rs, the raster state's scenes to Mesa (above). Every texture
+    // unit and cube map is predicted.
+    let plain = |scene: &Scene| scene.meshes.iter().all(|m| m.raster.is_default());
     for (name, scene) in scenes()
         .into_iter()
         .filter(|(n, s)| !n.starts_with("particles") && plain(s))
@@ -308,14 +323,28 @@ fn the_cpu_reference_predicts_every_stage_at_a_grid_of_probes_in_every_mode() {
                             let t = pixel_terms(&scene, &hit, mode);
                             // Mipmapped texels: the level of detail is the device's (from 2×2
                             // quads); as the texturing tests, 4/255 where λ ≤ 2.5.
-                            let mipmapped = scene.meshes[hit.mesh]
-                                .texture()
-                                .is_some_and(|tex| tex.sampling.min_filter.uses_mipmaps());
-                            let lambda = t.textured.map_or(0.0, |tex| tex.lambda);
+                            let mesh = &scene.meshes[hit.mesh];
+                            let mipmapped = (0..t.units.len()).any(|i| {
+                                t.units[i].is_some()
+                                    && mesh.textures[i]
+                                        .as_ref()
+                                        .is_some_and(|tex| tex.sampling.min_filter.uses_mipmaps())
+                            });
+                            let lambda = t.units.iter().flatten().map(|u| u.lambda).fold(0.0, f64::max);
                             if mipmapped && lambda > 2.5 {
                                 continue;
                             }
-                            let tol = if mipmapped { 4.0 } else { 1.0 };
+                            // Each filtered texel is within about 1/255 of the CPU's (the
+                            // device weighs texels at 8 bits); a product of units carries each
+                            // unit's error, and GL_RGB_SCALE multiplies the sum.
+                            let applied = t.units.iter().flatten().filter(|u| u.applied).count();
+                            let scale = (0..t.units.len())
+                                .filter(|&i| t.units[i].is_some_and(|u| u.applied))
+                                .filter_map(|i| mesh.textures[i].as_ref())
+                                .map(|tex| f64::from(tex.unit.combine.rgb_scale))
+                                .fold(1.0, f64::max);
+                            let filtered = applied.max(1) as f64 * scale;
+                            let tol = if mipmapped { 4.0f64.max(filtered) } else { filtered };
                             assert_pixel(&image, x, y, t.color, tol, &what);
                         }
                         None if !surfaces_at(&scene, x, y).is_empty() => {

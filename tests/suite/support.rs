@@ -219,7 +219,7 @@ pub fn reference_at(
         scene.projection,
         tri,
         hit.coverage,
-        mesh.texture().map(|t| (&*t.image, &t.sampling)),
+        mesh.draw_textures(),
     );
     Some((hit, color))
 }

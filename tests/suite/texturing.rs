@@ -98,7 +98,7 @@ fn differences(
             let worst = (0..4)
                 .map(|c| (got[c] as f64 - want[c]).abs())
                 .fold(0.0, f64::max);
-            (worst, px, py, terms.textured.map_or(f64::NAN, |t| t.lambda))
+            (worst, px, py, terms.units[0].map_or(f64::NAN, |t| t.lambda))
         })
         .collect();
     out.sort_by(|a, b| b.0.total_cmp(&a.0));
@@ -120,7 +120,7 @@ fn check(
     for (px, py, idx, cov) in probes(scene, state) {
         let tri = idx.map(|i| &scene.mesh.vertices[i]);
         let terms = reference::pixel_terms(state, scene.modelview, scene.projection, tri, cov, Some(bound));
-        let t = terms.textured.expect("texturing applies");
+        let t = terms.units[0].expect("texturing applies");
         let (u, v) = (t.st.x * TEXELS as f64, t.st.y * TEXELS as f64);
         let near_edge = |x: f64| (x - x.round()).abs() < 0.05;
         if bound.1.mag_filter == MagFilter::Nearest && (near_edge(u) || near_edge(v)) {

@@ -11,20 +11,6 @@ use crate::gl::texture::{
     TexEnvMode, TexGenMode, TextureImage, TextureUnit, Wrap, MAX_TEXTURE_UNITS,
 };
 
-/// What texturing did at one fragment (what `ffvk explain` prints).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
-pub struct Textured {
-    /// (s/q, t/q) after the texture matrix.
-    pub st: DVec2,
-    /// The level of detail λ = log2 ρ (−∞ where the coordinates do not change on screen).
-    pub lambda: f64,
-    /// The filtered texel C_s, A_s, each channel in [0, 1].
-    pub texel: DVec4,
-    /// The environment's result C_v, A_v (before the secondary color is added).
-    pub env: DVec4,
-}
-
 /// What unit `unit` of a fragment's texturing reads (GL 2.1 §3.8.13): the fragment's primary
 /// color `c_f` (`GL_PRIMARY_COLOR`), the previous unit's result `c_p` (`GL_PREVIOUS`; `c_f`
 /// for unit 0) and every unit's texel `c_s` (`GL_TEXTURE`, and `GL_TEXTUREn` of the crossbar).
@@ -181,14 +167,6 @@ pub fn combine_unit(c: &Combine, v: &UnitInputs, c_c: DVec4) -> DVec4 {
     rgb.extend((alpha * f64::from(c.alpha_scale)).clamp(0.0, 1.0))
 }
 
-/// A vertex's texture coordinates (s, t, 0, 1), each generated one replaced
-/// ([`generated_coords`]), through the texture matrix: (s, t, r, q), not yet divided by q.
-/// `p_o`, `p_e`, `n_f` as [`generated_coords`] takes them.
-pub fn transform_st(unit: &TextureUnit, st: [f32; 2], p_o: DVec4, p_e: DVec4, n_f: DVec3) -> DVec4 {
-    let c = DVec4::new(st[0] as f64, st[1] as f64, 0.0, 1.0);
-    unit.matrix.as_dmat4() * generated_coords(unit, c, p_o, p_e, n_f)
-}
-
 /// GL 2.1 §2.11.4, texture coordinate generation: `c` with each coordinate whose generation
 /// is on replaced by its mode's value of the vertex, `p_o` in object coordinates, `p_e` in eye
 /// coordinates, `n_f` the eye-space normal as lighting takes it. The copy of
@@ -315,37 +293,6 @@ pub fn sample(image: &TextureImage, sampling: &Sampling, st: DVec2, lambda: f64)
             ((lambda + 0.5).ceil() - 1.0).min(q)
         };
         sample_level(image, d as usize, st, within, sampling)
-    }
-}
-
-/// Texturing at one fragment: `stq` the interpolated (s, t, r, q) after the texture matrix,
-/// `stq_dx` and `stq_dy` the same one pixel to the right and one below (for λ), `c_pri` the
-/// fragment's primary color.
-pub fn texture_fragment(
-    unit: &TextureUnit,
-    image: &TextureImage,
-    sampling: &Sampling,
-    stq: [DVec4; 3],
-    c_pri: DVec4,
-) -> Textured {
-    let [st, st_dx, st_dy] = stq.map(project);
-    let lambda = lambda(image, st_dx - st, st_dy - st);
-    let texel = image.base_format.texel(sample(image, sampling, st, lambda));
-    let mut texels = [DVec4::ZERO; MAX_TEXTURE_UNITS];
-    texels[0] = texel;
-    let v = UnitInputs {
-        unit: 0,
-        c_f: c_pri,
-        c_p: c_pri,
-        c_s: texels,
-        format: image.base_format,
-    };
-    let env = unit_env(unit, &v);
-    Textured {
-        st,
-        lambda,
-        texel,
-        env,
     }
 }
 

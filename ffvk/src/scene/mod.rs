@@ -494,6 +494,19 @@ impl SceneMesh {
         self.textures[0].as_ref()
     }
 
+    /// The mesh's textures as the CPU reference reads them: each unit's 2D texture, its cube
+    /// map, and the units whose coordinates are the mesh's.
+    pub fn draw_textures(&self) -> crate::reference::units::DrawTextures<'_> {
+        crate::reference::units::DrawTextures {
+            textures: std::array::from_fn(|i| self.textures[i].as_ref().map(|t| (&*t.image, &t.sampling))),
+            cube_maps: std::array::from_fn(|i| {
+                let t = self.textures[i].as_ref()?;
+                Some((&**t.cube_map.as_ref()?, &t.sampling))
+            }),
+            mesh_texcoords: self.mesh_texcoords(),
+        }
+    }
+
     /// The units 1-3 whose texture coordinates are the mesh's ([`TexCoords::Mesh`]), a bit
     /// each, as [`Draw::mesh_texcoords`](crate::Draw::mesh_texcoords) takes them.
     pub fn mesh_texcoords(&self) -> u32 {

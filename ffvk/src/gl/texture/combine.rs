@@ -3,6 +3,8 @@
 //! one minus it, for RGB and alpha apart, scaled, then clamped to [0, 1]. The shaders' copy is
 //! `glsl/texture.glsl`'s `combine`, the CPU reference's `reference::texture::combine`.
 
+use super::MAX_TEXTURE_UNITS;
+
 /// `GL_COMBINE_RGB` and `GL_COMBINE_ALPHA`: the function of the arguments Arg0, Arg1, Arg2.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 #[non_exhaustive]
@@ -55,6 +57,16 @@ impl CombineFunc {
         }
     }
 
+    /// How many arguments the function reads (table 3.24): `GL_REPLACE` one, `GL_INTERPOLATE`
+    /// three, the others two.
+    pub fn arguments(self) -> usize {
+        match self {
+            CombineFunc::Replace => 1,
+            CombineFunc::Interpolate => 3,
+            _ => 2,
+        }
+    }
+
     /// The shaders' value (`COMBINE_*` in `glsl/texture.glsl`): the index in [`CombineFunc::ALL`].
     pub fn code(self) -> u32 {
         CombineFunc::ALL.iter().position(|&f| f == self).unwrap_or(0) as u32
@@ -100,6 +112,18 @@ impl CombineSource {
         CombineSource::ALL.iter().position(|&s| s == self).unwrap_or(0) as u32
     }
 
+    /// GL's name (`GL_PRIMARY_COLOR`, `GL_TEXTURE1`, …).
+    pub fn gl_name(self) -> &'static str {
+        const UNITS: [&str; MAX_TEXTURE_UNITS] = ["GL_TEXTURE0", "GL_TEXTURE1", "GL_TEXTURE2", "GL_TEXTURE3"];
+        match self {
+            CombineSource::Texture => "GL_TEXTURE",
+            CombineSource::Constant => "GL_CONSTANT",
+            CombineSource::PrimaryColor => "GL_PRIMARY_COLOR",
+            CombineSource::Previous => "GL_PREVIOUS",
+            CombineSource::TextureUnit(n) => UNITS.get(usize::from(n)).copied().unwrap_or("GL_TEXTUREn"),
+        }
+    }
+
     /// The unit a `GL_TEXTUREn` source reads.
     pub fn unit(self) -> Option<usize> {
         match self {
@@ -132,6 +156,16 @@ impl RgbOperand {
         RgbOperand::OneMinusSrcAlpha,
     ];
 
+    /// GL's name (`GL_SRC_COLOR`, …).
+    pub fn gl_name(self) -> &'static str {
+        match self {
+            RgbOperand::SrcColor => "GL_SRC_COLOR",
+            RgbOperand::OneMinusSrcColor => "GL_ONE_MINUS_SRC_COLOR",
+            RgbOperand::SrcAlpha => "GL_SRC_ALPHA",
+            RgbOperand::OneMinusSrcAlpha => "GL_ONE_MINUS_SRC_ALPHA",
+        }
+    }
+
     /// The shaders' value: the index in [`RgbOperand::ALL`].
     pub fn code(self) -> u32 {
         RgbOperand::ALL.iter().position(|&o| o == self).unwrap_or(0) as u32
@@ -146,6 +180,16 @@ pub enum AlphaOperand {
     SrcAlpha,
     /// `GL_ONE_MINUS_SRC_ALPHA`: 1 − A_s.
     OneMinusSrcAlpha,
+}
+
+impl AlphaOperand {
+    /// GL's name (`GL_SRC_ALPHA`, `GL_ONE_MINUS_SRC_ALPHA`).
+    pub fn gl_name(self) -> &'static str {
+        match self {
+            AlphaOperand::SrcAlpha => "GL_SRC_ALPHA",
+            AlphaOperand::OneMinusSrcAlpha => "GL_ONE_MINUS_SRC_ALPHA",
+        }
+    }
 }
 
 /// `GL_COMBINE`'s state (table 6.19, with GL's initial values in [`Combine::default`]).
@@ -227,17 +271,12 @@ impl Combine {
     /// sources), a bit each: a unit reads `GL_REPLACE`'s one argument, `GL_INTERPOLATE`'s
     /// three, two for the others, and no alpha argument under `GL_DOT3_RGBA`.
     pub fn units_read(&self) -> u32 {
-        let args = |f: CombineFunc| match f {
-            CombineFunc::Replace => 1,
-            CombineFunc::Interpolate => 3,
-            _ => 2,
-        };
         let alpha_args = if self.rgb == CombineFunc::Dot3Rgba {
             0
         } else {
-            args(self.alpha)
+            self.alpha.arguments()
         };
-        let rgb = self.rgb_sources.iter().take(args(self.rgb));
+        let rgb = self.rgb_sources.iter().take(self.rgb.arguments());
         let alpha = self.alpha_sources.iter().take(alpha_args);
         rgb.chain(alpha)
             .filter_map(|s| s.unit())
@@ -248,7 +287,7 @@ impl Combine {
     /// scales of 1, 2 or 4, `GL_TEXTUREn` sources of units that exist.
     pub fn is_valid(&self) -> bool {
         let scale = |s: f32| s == 1.0 || s == 2.0 || s == 4.0;
-        let unit = |s: &CombineSource| s.unit().is_none_or(|n| n < super::MAX_TEXTURE_UNITS);
+        let unit = |s: &CombineSource| s.unit().is_none_or(|n| n < MAX_TEXTURE_UNITS);
         self.alpha.is_alpha_function()
             && scale(self.rgb_scale)
             && scale(self.alpha_scale)

@@ -141,31 +141,50 @@ impl CubeImage {
 
 /// §3.8.6, table 3.19: the face direction `r` = (r_x, r_y, r_z) selects (the largest magnitude;
 /// ties go to x before y before z, as Mesa's and lavapipe's samplers break them), and
-/// (s_face, t_face) = ((s_c / |m_a| + 1) / 2, (t_c / |m_a| + 1) / 2) within it. `None` for the
-/// zero vector, which selects no face.
+/// (s_face, t_face) within it ([`CubeFace::coords`]). `None` for the zero vector, which selects
+/// no face.
 pub fn cube_face(r: DVec3) -> Option<(CubeFace, DVec2)> {
     let a = r.abs();
-    let (face, sc, tc, ma) = if a.x >= a.y && a.x >= a.z {
+    let face = if a.x >= a.y && a.x >= a.z {
         if r.x >= 0.0 {
-            (CubeFace::PositiveX, -r.z, -r.y, a.x)
+            CubeFace::PositiveX
         } else {
-            (CubeFace::NegativeX, r.z, -r.y, a.x)
+            CubeFace::NegativeX
         }
     } else if a.y >= a.z {
         if r.y >= 0.0 {
-            (CubeFace::PositiveY, r.x, r.z, a.y)
+            CubeFace::PositiveY
         } else {
-            (CubeFace::NegativeY, r.x, -r.z, a.y)
+            CubeFace::NegativeY
         }
     } else if r.z >= 0.0 {
-        (CubeFace::PositiveZ, r.x, -r.y, a.z)
+        CubeFace::PositiveZ
     } else {
-        (CubeFace::NegativeZ, -r.x, -r.y, a.z)
+        CubeFace::NegativeZ
     };
-    if ma == 0.0 || !ma.is_finite() {
-        return None;
+    face.coords(r).map(|st| (face, st))
+}
+
+impl CubeFace {
+    /// Table 3.19 on this face: (s_face, t_face) = ((s_c / |m_a| + 1) / 2, (t_c / |m_a| + 1) / 2)
+    /// for direction `r`, m_a its component along the face's axis. Also for a direction the
+    /// face does not select (the neighbours of a fragment's direction, for the level of
+    /// detail). `None` where m_a is zero or not finite.
+    pub fn coords(self, r: DVec3) -> Option<DVec2> {
+        let (sc, tc, ma) = match self {
+            CubeFace::PositiveX => (-r.z, -r.y, r.x),
+            CubeFace::NegativeX => (r.z, -r.y, r.x),
+            CubeFace::PositiveY => (r.x, r.z, r.y),
+            CubeFace::NegativeY => (r.x, -r.z, r.y),
+            CubeFace::PositiveZ => (r.x, -r.y, r.z),
+            CubeFace::NegativeZ => (-r.x, -r.y, r.z),
+        };
+        let ma = ma.abs();
+        if ma == 0.0 || !ma.is_finite() {
+            return None;
+        }
+        Some(DVec2::new((sc / ma + 1.0) / 2.0, (tc / ma + 1.0) / 2.0))
     }
-    Some((face, DVec2::new((sc / ma + 1.0) / 2.0, (tc / ma + 1.0) / 2.0)))
 }
 
 #[cfg(test)]
