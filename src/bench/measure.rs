@@ -7,6 +7,7 @@ use std::time::Instant;
 use serde::{Deserialize, Serialize};
 
 use super::points::{matrices, point_state, CLEAR};
+use super::stage_textures::{StageTextures, UploadedTextures};
 use super::sweep::{BenchMode, Engine, Group, Point, SweepConfig, Variant};
 use super::BenchResult;
 use crate::gl_reference::{gl_info_with, time_frames_with, GlDraw, GlOptions, GlScene};
@@ -161,18 +162,10 @@ pub(super) fn measure_ffvk(
     point: &Point,
     config: &SweepConfig,
 ) -> Result<PointStats> {
-    let (modelviews, projection) = matrices(point);
-    let state = point_state(point)?;
-    let mut frame = Frame::new(point.width, point.height);
-    frame.clear_color = CLEAR;
+    // The stage's textures, uploaded before the frames are timed (as a program loads them).
+    let textures = StageTextures::of(point.stage)?.upload(renderer)?;
+    let frame = ffvk_frame(mesh, point, &textures)?;
     let deferred = matches!(point.variant, Variant::Deferred | Variant::DeferredUber);
-    if deferred {
-        frame.fragment_path = ffvk::FragmentPath::Deferred;
-    }
-    frame.draws = modelviews
-        .into_iter()
-        .map(|modelview| Draw::new(mesh, modelview, projection, state))
-        .collect();
     let start = Instant::now();
     renderer.measure(&frame)?;
     let first_frame_ms = start.elapsed().as_secs_f64() * 1e3;
@@ -234,6 +227,40 @@ pub(super) fn measure_ffvk(
     })
 }
 
+/// The frame ffvk draws at `point`: its draws of `mesh` with the stage's `textures` (uploaded
+/// by [`StageTextures::upload`]).
+pub fn ffvk_frame<'a>(mesh: &'a Mesh, point: &Point, textures: &'a UploadedTextures) -> Result<Frame<'a>> {
+    let (modelviews, projection) = matrices(point);
+    let state = point_state(point)?;
+    let mut frame = Frame::new(point.width, point.height);
+    frame.clear_color = CLEAR;
+    if matches!(point.variant, Variant::Deferred | Variant::DeferredUber) {
+        frame.fragment_path = ffvk::FragmentPath::Deferred;
+    }
+    frame.draws = modelviews
+        .into_iter()
+        .map(|modelview| textures.bind(Draw::new(mesh, modelview, projection, state)))
+        .collect();
+    Ok(frame)
+}
+
+/// The GL scene the anchor draws at `point`: the same draws of `mesh` with the stage's
+/// textures.
+pub fn gl_scene<'a>(mesh: &'a MeshData, point: &Point, textures: &'a StageTextures) -> Result<GlScene<'a>> {
+    let (modelviews, projection) = matrices(point);
+    let state = point_state(point)?;
+    Ok(GlScene {
+        width: point.width,
+        height: point.height,
+        clear_color: CLEAR.to_array(),
+        depth_test: true,
+        draws: modelviews
+            .into_iter()
+            .map(|modelview| textures.bind_gl(GlDraw::new(mesh, modelview, projection, state)))
+            .collect(),
+    })
+}
+
 /// The pixels of `image` not at the clear color, read at its top-left corner (the sphere
 /// lies in the middle of the view and never reaches it).
 fn covered(image: &ffvk::Pixels) -> u64 {
@@ -283,18 +310,8 @@ impl GlAnchor {
     }
 
     pub(super) fn measure(&self, mesh: &MeshData, point: &Point, config: &SweepConfig) -> Result<PointStats> {
-        let (modelviews, projection) = matrices(point);
-        let state = point_state(point)?;
-        let scene = GlScene {
-            width: point.width,
-            height: point.height,
-            clear_color: CLEAR.to_array(),
-            depth_test: true,
-            draws: modelviews
-                .into_iter()
-                .map(|modelview| GlDraw::new(mesh, modelview, projection, state))
-                .collect(),
-        };
+        let textures = StageTextures::of(point.stage)?;
+        let scene = gl_scene(mesh, point, &textures)?;
         let timing = time_frames_with(&scene, config.warmup, config.frames, &self.options)?;
         let wall: Vec<f64> = timing.frame_ns.iter().map(|ns| ns / 1e6).collect();
         let wall_ms = Spread::of(&wall).expect("at least one frame");

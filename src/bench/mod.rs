@@ -30,6 +30,7 @@ mod measure;
 mod plots;
 mod points;
 mod report;
+mod stage_textures;
 mod stages;
 mod suite;
 mod sweep;
@@ -51,8 +52,10 @@ use ffvk::renderer::{Mesh, Renderer, RendererOptions};
 
 pub use draw_cost::{measure_draw_cost, DrawCost, DRAWS};
 pub use measure::{crossover, fit_line, summarize, Costs, GlRatio, PointStats, Spread, Summary};
+pub use measure::{ffvk_frame, gl_scene};
 pub use points::{point_state, points};
 pub use report::{csv, markdown, write_outputs, CSV_COLUMNS};
+pub use stage_textures::{StageTextures, UploadedTextures};
 pub use suite::{generate_scenes, jobs_markdown, run_jobs_sweep, JobsPoint, SuiteConfig, SuiteReport};
 pub use sweep::{BenchMode, Engine, Group, LightKind, Point, Stage, SweepConfig, Variant, MAX_DRAWS};
 

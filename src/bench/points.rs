@@ -346,6 +346,7 @@ fn set_stage(gl: &mut GlState, stage: Stage) -> Result<()> {
             color_sum(gl)?;
             planes(gl, 6)?;
         }
+        Stage::Texture | Stage::Units4 => super::stage_textures::set_texture_stage(gl, stage)?,
     }
     Ok(())
 }

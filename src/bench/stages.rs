@@ -1,5 +1,5 @@
-//! The stages sweep's table: what fog, the alpha test, the color sum and user clip planes cost
-//! in each lighting mode, specialized and uber, against the same frame without them, and GL's
+//! The stages sweep's table: what fog, the alpha test, the color sum, user clip planes and
+//! texturing (one unit, four) cost in each lighting mode, specialized and uber, against the same frame without them, and GL's
 //! own cost of each.
 
 use super::format::{find, ms, ratio};
@@ -11,7 +11,9 @@ pub(super) const STAGES_NOTE: &str = "Each stage alone, then all together, on th
 sphere; \"÷ none\" is the time over the same column's frame without stages. The alpha test \
 passes every fragment and the clip planes cut nothing, so each row costs the stage's work and \
 draws the pixels of the row \"none\"; lit draws always sum the secondary color, so \
-GL_COLOR_SUM changes only the unlit column.";
+GL_COLOR_SUM changes only the unlit column. The texturing rows bind 64² textures, linear, no \
+mipmaps: one unit modulated; then four, the second a light map through GL_COMBINE (MODULATE \
+× 2), the third sphere-mapped, the fourth a 16² cube map by GL_REFLECTION_MAP, added.";
 
 /// The stages table (see [`STAGES_NOTE`]).
 pub(super) fn stages_table(report: &BenchReport, has_gl: bool) -> Table {

@@ -414,11 +414,16 @@ pub enum Stage {
     ClipPlanes6,
     /// Linear fog, the alpha test, the color sum and six clip planes together.
     All,
+    /// One texture unit: a 2D texture, linear, `GL_MODULATE`d.
+    Texture,
+    /// Four texture units: the 2D texture modulated, a light map through `GL_COMBINE`
+    /// (`MODULATE` × 2), a sphere map and a reflection-mapped cube map added.
+    Units4,
 }
 
 impl Stage {
     /// Every stage setting, in table order.
-    pub const ALL: [Stage; 9] = [
+    pub const ALL: [Stage; 11] = [
         Stage::Off,
         Stage::FogLinear,
         Stage::FogExp2,
@@ -428,6 +433,8 @@ impl Stage {
         Stage::ClipPlane,
         Stage::ClipPlanes6,
         Stage::All,
+        Stage::Texture,
+        Stage::Units4,
     ];
 
     /// How tables name it.
@@ -442,6 +449,8 @@ impl Stage {
             Stage::ClipPlane => "1 clip plane",
             Stage::ClipPlanes6 => "6 clip planes",
             Stage::All => "all of them",
+            Stage::Texture => "1 texture unit, GL_MODULATE",
+            Stage::Units4 => "4 units: + GL_COMBINE, sphere map, cube map",
         }
     }
 }

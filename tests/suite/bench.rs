@@ -451,3 +451,63 @@ fn the_floor_draws_the_draws_sweeps_frames_as_ffvk_does_through_every_path() {
     }
     crate::support::finish(renderer);
 }
+
+/// The stages sweep's texturing rows draw what Mesa's GL draws from the same calls, so that
+/// the anchor does the work ffvk does: one unit, and four (a light map through GL_COMBINE, a
+/// sphere map, a reflection-mapped cube map); and texturing changes the frame.
+#[test]
+fn the_bench_texturing_stages_draw_what_mesas_gl_draws() {
+    use ffvk_cli::bench::{ffvk_frame, gl_scene, BenchMode, Stage, StageTextures};
+    let config = SweepConfig::tiny();
+    let mut r = crate::support::renderer();
+    let point_of = |stage| {
+        let mut p = points(&config)
+            .into_iter()
+            .find(|p| {
+                (p.group, p.stage, p.engine, p.mode, p.variant)
+                    == (
+                        Group::Stages,
+                        stage,
+                        Engine::Ffvk,
+                        BenchMode::Vertex,
+                        Variant::Specialized,
+                    )
+            })
+            .expect("the stage's point");
+        (p.width, p.height, p.pixels) = (96, 96, 96 * 96);
+        p.stacks = 16;
+        p
+    };
+    let data = ffvk::mesh::MeshData::uv_sphere(32, 16);
+    let mesh = r.upload(&data).unwrap();
+    let draw = |r: &mut ffvk::Renderer, stage| {
+        let point = point_of(stage);
+        let textures = StageTextures::of(stage).unwrap();
+        let uploaded = textures.upload(r).unwrap();
+        let ours = r
+            .render(&ffvk_frame(&mesh, &point, &uploaded).unwrap())
+            .unwrap()
+            .into_rgba_image();
+        let theirs = ffvk_cli::gl_reference::render_gl(&gl_scene(&data, &point, &textures).unwrap()).unwrap();
+        (ours, theirs)
+    };
+    let (plain, _) = draw(&mut r, Stage::Off);
+    for stage in [Stage::Texture, Stage::Units4] {
+        let (ours, theirs) = draw(&mut r, stage);
+        let (n, worst) = crate::stage_scenes::differing(&ours, &theirs, 2);
+        let name = format!("bench_stage_{stage:?}");
+        let at = crate::support::save_for_inspection(&ours, &format!("{name}_ffvk"));
+        crate::support::save_for_inspection(&theirs, &format!("{name}_gl"));
+        assert!(
+            n <= 96 * 96 / 100,
+            "{name}: {n} pixels beyond 2/255 of Mesa's GL (worst {worst}); images beside {}",
+            at.display()
+        );
+        let changed = crate::stage_scenes::differing(&ours, &plain, 8).0;
+        assert!(
+            changed > 96 * 96 / 10,
+            "{name}: texturing changed only {changed} pixels"
+        );
+    }
+    crate::support::finish(r);
+}
