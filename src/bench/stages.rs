@@ -1,6 +1,6 @@
 //! The stages sweep's table: what fog, the alpha test, the color sum, user clip planes and
-//! texturing (one unit, four) cost in each lighting mode, specialized and uber, against the same frame without them, and GL's
-//! own cost of each.
+//! texturing (one unit, four) cost in each lighting mode, specialized and uber, against the
+//! same frame without them, and GL's own cost of each.
 
 use super::format::{find, ms, ratio};
 use super::sweep::{BenchMode, Engine, Group, Stage, Variant};
