@@ -44,6 +44,7 @@ mod report;
 mod rooms;
 mod scene;
 mod scene_cube;
+mod scene_formats;
 mod scene_raster;
 mod scene_texgen;
 mod scene_units;
