@@ -6,6 +6,7 @@ mod browser;
 mod c_api_boundary;
 mod c_api_cube;
 mod c_api_example;
+mod c_api_formats;
 mod c_api_fuzz;
 mod c_api_install;
 mod c_api_layers;
