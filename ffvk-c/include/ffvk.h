@@ -249,6 +249,24 @@
 #ifndef GL_TEXTURE_CUBE_MAP
 #define GL_TEXTURE_CUBE_MAP 0x8513
 #endif
+#ifndef GL_ALPHA
+#define GL_ALPHA 0x1906
+#endif
+#ifndef GL_RGB
+#define GL_RGB 0x1907
+#endif
+#ifndef GL_RGBA
+#define GL_RGBA 0x1908
+#endif
+#ifndef GL_LUMINANCE
+#define GL_LUMINANCE 0x1909
+#endif
+#ifndef GL_LUMINANCE_ALPHA
+#define GL_LUMINANCE_ALPHA 0x190A
+#endif
+#ifndef GL_INTENSITY
+#define GL_INTENSITY 0x8049
+#endif
 #ifndef GL_FRONT
 #define GL_FRONT 0x0404
 #endif
@@ -2919,7 +2937,8 @@ void ffvkRasterDefaults(struct FfvkRaster *raster);
  Makes a texture binding naming the caller's image view (2D, color, sampled as floats, in
  `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` whenever a draw that uses it executes) and
  sampler. ffvk owns the descriptor set; the view and sampler stay the caller's. Records
- nothing. Returns `FFVK_SUCCESS` with `*texture` set, or an error code with `*texture` null
+ nothing. Its base internal format is `GL_RGBA` (`ffvkCreateTextureWithFormat` gives
+ another). Returns `FFVK_SUCCESS` with `*texture` set, or an error code with `*texture` null
  (`FFVK_ERROR_INVALID_ARGUMENT` for a null pointer or handle).
 
  # Safety
@@ -2933,6 +2952,42 @@ enum FfvkResult ffvkCreateTexture(struct FfvkRenderer *renderer,
                                   struct FfvkTexture **texture);
 
 /*
+ `ffvkCreateTexture` with the texture's base internal format (`glTexImage2D`'s
+ `internalformat`, GL 2.1 table 3.15): `GL_ALPHA`, `GL_LUMINANCE`, `GL_LUMINANCE_ALPHA`,
+ `GL_INTENSITY`, `GL_RGB` or `GL_RGBA`. It says which components the texture has, and so
+ what the texture environment reads (table 3.22): a `GL_LUMINANCE` light map modulates the
+ color and leaves the alpha, a `GL_ALPHA` texture leaves the color, `GL_INTENSITY` is its
+ value in all four. The view gives the components as GL converts RGBA pixels: luminance and
+ intensity are the view's R, alpha its A. A `GL_LUMINANCE` or `GL_INTENSITY` image of
+ `VK_FORMAT_R8_UNORM` needs no swizzle; a `GL_ALPHA` one of `R8_UNORM` needs the view's
+ `components.a = VK_COMPONENT_SWIZZLE_R`, a `GL_LUMINANCE_ALPHA` one of `R8G8_UNORM`
+ `components.a = VK_COMPONENT_SWIZZLE_G`. A component the format lacks is never read. The
+ bits and any sRGB decode are the view's `VkFormat`'s, so a sized format (`GL_LUMINANCE8`,
+ `GL_SRGB8_ALPHA8`) is refused naming the base format to give.
+
+ The format is fixed for the binding's life: `ffvkDraw` keys the draw's pipeline on it and
+ `ffvkEndDraws` reads it again to record, so a binding whose format could change in between
+ would record a draw other than the one checked. A program that redefines a texture with
+ another `internalformat` makes another binding of its view (a binding is no Vulkan object
+ and cheap to make; several of one view may live at once) and destroys the old one with
+ `ffvkDestroyTexture` once no submitted command buffer uses it.
+
+ Returns `FFVK_SUCCESS` with `*texture` set, or an error code with `*texture` null:
+ `FFVK_ERROR_INVALID_ARGUMENT` for a null pointer or handle, or an `internalformat` that is
+ none of the six (the message names the function, the parameter, the value by its GL name
+ and what was expected), as the renderer's entry points refuse any enum they do not take.
+
+ # Safety
+
+ As `ffvkCreateTexture`.
+ */
+enum FfvkResult ffvkCreateTextureWithFormat(struct FfvkRenderer *renderer,
+                                            VkImageView view,
+                                            VkSampler sampler,
+                                            uint32_t internalformat,
+                                            struct FfvkTexture **texture);
+
+/*
  Makes a cube map binding (`GL_TEXTURE_CUBE_MAP`'s texture object) naming the caller's image
  view and sampler, for `FfvkDrawInfo`'s `cube_map` .. `cube_map3` (version 5). The view is a
  `VK_IMAGE_VIEW_TYPE_CUBE` view of six array layers in GL's face order
@@ -2944,7 +2999,8 @@ enum FfvkResult ffvkCreateTexture(struct FfvkRenderer *renderer,
  `VK_EXT_non_seamless_cube_map` enabled: `FFVK_FEATURE_NON_SEAMLESS_CUBE_MAP` from
  `ffvkDeviceRequirements`); without it, linear filtering near an edge also reads the
  neighbouring face (Vulkan's seamless filtering). ffvk owns the descriptor set; the view
- and sampler stay the caller's. Records nothing. Free it with `ffvkDestroyTexture`. Returns
+ and sampler stay the caller's. Records nothing. Its base internal format is `GL_RGBA`
+ (`ffvkCreateCubeMapWithFormat` gives another). Free it with `ffvkDestroyTexture`. Returns
  `FFVK_SUCCESS` with `*cube_map` set, or an error code with `*cube_map` null
  (`FFVK_ERROR_INVALID_ARGUMENT` for a null or misaligned pointer or a null handle).
 
@@ -2961,6 +3017,21 @@ enum FfvkResult ffvkCreateCubeMap(struct FfvkRenderer *renderer,
                                   VkImageView view,
                                   VkSampler sampler,
                                   struct FfvkTexture **cube_map);
+
+/*
+ `ffvkCreateCubeMap` with the cube map's base internal format, every face's: as
+ `ffvkCreateTextureWithFormat` takes it, read from the view as it reads it, and fixed for the
+ binding's life likewise. Errors as `ffvkCreateTextureWithFormat`'s.
+
+ # Safety
+
+ As `ffvkCreateCubeMap`.
+ */
+enum FfvkResult ffvkCreateCubeMapWithFormat(struct FfvkRenderer *renderer,
+                                            VkImageView view,
+                                            VkSampler sampler,
+                                            uint32_t internalformat,
+                                            struct FfvkTexture **cube_map);
 
 /*
  Frees a texture or cube map binding; null is ignored. The caller first makes sure no

@@ -17,6 +17,7 @@ use ffvk::{
     Attribute, Geometry, Lighting, LightingOptions, LitDraw, RasterState, StagedDraw, Target, VertexInput,
 };
 
+mod base_format;
 mod features;
 pub mod layout;
 mod raster;
@@ -33,7 +34,10 @@ pub use features::{
 };
 pub(crate) use raster::raster_defaults;
 pub use raster::{ffvkRasterDefaults, FfvkRaster, FFVK_RASTER_SOURCE_CONTEXT, FFVK_RASTER_SOURCE_DRAW};
-pub use texture::{ffvkCreateCubeMap, ffvkCreateTexture, ffvkDestroyTexture, FfvkTexture};
+pub use texture::{
+    ffvkCreateCubeMap, ffvkCreateCubeMapWithFormat, ffvkCreateTexture, ffvkCreateTextureWithFormat,
+    ffvkDestroyTexture, FfvkTexture,
+};
 use topology::topology;
 
 use crate::gl::FfvkContext;

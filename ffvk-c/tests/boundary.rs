@@ -32,6 +32,11 @@ const COLOR_MATERIAL: u32 = 0x0B57;
 const NORMALIZE: u32 = 0x0BA1;
 const RESCALE_NORMAL: u32 = 0x803A;
 const TEXTURE_2D: u32 = 0x0DE1;
+/// Base internal formats (glTexImage2D's internalformat).
+const ALPHA: u32 = 0x1906;
+const RGBA: u32 = 0x1908;
+const LUMINANCE: u32 = 0x1909;
+const INTENSITY: u32 = 0x8049;
 const BLEND: u32 = 0x0BE2;
 /// GL_DITHER: a cap ffvk does not keep.
 const DITHER: u32 = 0x0BD0;
@@ -2829,6 +2834,9 @@ fn the_renderer_entry_points_refuse_a_null_or_misaligned_renderer_naming_themsel
             ffvkEndDraws(null_mut());
             ffvkCreateTexture(null_mut(), view, sampler, &mut texture);
             ffvkCreateCubeMap(null_mut(), view, sampler, &mut texture);
+            ffvkCreateTextureWithFormat(null_mut(), view, sampler, LUMINANCE, &mut texture);
+            ffvkCreateCubeMapWithFormat(null_mut(), view, sampler, LUMINANCE, &mut texture);
+            ffvkCreateTextureWithFormat(null_mut(), view, sampler, 0xFFFF, &mut texture);
         });
         assert_each_invalid_argument!(["renderer 0x", "not aligned"], {
             ffvkBeginFrame(bad, 0);
@@ -2837,6 +2845,8 @@ fn the_renderer_entry_points_refuse_a_null_or_misaligned_renderer_naming_themsel
             ffvkEndDraws(bad);
             ffvkCreateTexture(bad, view, sampler, &mut texture);
             ffvkCreateCubeMap(bad, view, sampler, &mut texture);
+            ffvkCreateTextureWithFormat(bad, view, sampler, ALPHA, &mut texture);
+            ffvkCreateCubeMapWithFormat(bad, view, sampler, INTENSITY, &mut texture);
         });
     }
     assert_eq!(bytes, [0; 8], "written through a misaligned renderer");
@@ -2888,6 +2898,50 @@ fn create_cube_map_names_itself_and_nulls_its_out_pointer_when_it_fails() {
     // A null cube map is destroyed as a null texture is: nothing happens.
     // SAFETY: null is documented as ignored.
     unsafe { ffvkDestroyTexture(null_mut()) };
+}
+
+#[test]
+fn the_with_format_entry_points_name_themselves_and_null_their_out_pointer_when_they_fail() {
+    let view = vk::ImageView::from_raw(0x10);
+    let sampler = vk::Sampler::from_raw(0x20);
+    type Create = unsafe extern "C" fn(
+        *mut FfvkRenderer,
+        vk::ImageView,
+        vk::Sampler,
+        u32,
+        *mut *mut FfvkTexture,
+    ) -> FfvkResult;
+    let entries: [(&str, Create); 2] = [
+        ("ffvkCreateTextureWithFormat", ffvkCreateTextureWithFormat),
+        ("ffvkCreateCubeMapWithFormat", ffvkCreateCubeMapWithFormat),
+    ];
+    for (name, create) in entries {
+        // A bad enum with a null renderer: the renderer is named, the out pointer nulled.
+        for format in [LUMINANCE, 0x8040, 0] {
+            let mut out: *mut FfvkTexture = NonNull::dangling().as_ptr();
+            // SAFETY: a null renderer, refused before the handles are used; out is writable.
+            let result = unsafe { create(null_mut(), view, sampler, format, &mut out) };
+            assert_eq!(result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT, "{name}");
+            assert!(
+                out.is_null(),
+                "{name}: the out pointer is left {out:?} after an error"
+            );
+            let text = message();
+            assert!(
+                text.starts_with(&format!("{name}: renderer is a null pointer")),
+                "{text}"
+            );
+        }
+        // SAFETY: as above, with a null out pointer too.
+        let result = unsafe { create(null_mut(), view, sampler, RGBA, null_mut()) };
+        assert_eq!(result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT, "{name}");
+        let mut bytes = [0u64; 2];
+        let bad = misaligned(bytes.as_mut_ptr().cast::<*mut FfvkTexture>().cast_const()).cast_mut();
+        // SAFETY: as above; the misaligned out pointer is refused, never written.
+        let result = unsafe { create(null_mut(), view, sampler, RGBA, bad) };
+        assert_eq!(result, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT, "{name}");
+        assert_eq!(bytes, [0; 2], "{name}: written through a misaligned out pointer");
+    }
 }
 
 #[test]

@@ -202,9 +202,9 @@ const TABLES: &[(&str, &[&str])] = &[
 ];
 
 /// A mesh's `texture_units`: one to five unit tables (four at most are taken) of builtin
-/// images, environments, coordinates and `combine` tables, mostly values the fields take and
-/// sometimes ones GL refuses (a dot product for alpha, a scale of 3, GL_TEXTURE4, coords on
-/// unit 0), each field sometimes left out.
+/// images, base formats, environments, coordinates and `combine` tables, mostly values the
+/// fields take and sometimes ones GL refuses (a dot product for alpha, a scale of 3,
+/// GL_TEXTURE4, coords on unit 0, a format spelled as GL's enum), each field sometimes left out.
 fn texture_units() -> BoxedStrategy<String> {
     // `words` (TOML values) with probability `p`, else the field left out.
     let pick = |p: f64, words: Vec<&'static str>| prop::option::weighted(p, prop::sample::select(words));
@@ -299,6 +299,18 @@ fn texture_units() -> BoxedStrategy<String> {
         vec!["\"mesh\"", "\"mesh\"", "[0.5, 0.5, 0.0, 1.0]", "[1, 2]", "true"],
     );
     let min_filter = pick(0.8, vec!["\"linear\"", "\"nearest\""]);
+    // The base internal formats, and GL's spelling (refused: the files take lowercase names).
+    let format = pick(
+        0.4,
+        vec![
+            "\"rgb\"",
+            "\"alpha\"",
+            "\"luminance\"",
+            "\"luminance_alpha\"",
+            "\"intensity\"",
+            "\"GL_LUMINANCE\"",
+        ],
+    );
     // Mostly a combine table only with env = "combine" (another environment refuses one);
     // sometimes any.
     let env_and_combine = prop_oneof![
@@ -306,14 +318,15 @@ fn texture_units() -> BoxedStrategy<String> {
         4 => combine.clone().prop_map(|c| (Some("\"combine\""), Some(c))),
         1 => (pick(0.5, vec!["\"modulate\"", "\"combine\""]), prop::option::of(combine)),
     ];
-    let unit = (builtin, env_and_combine, coords, min_filter).prop_map(
-        |(builtin, (env, combine), coords, min_filter)| {
+    let unit = (builtin, env_and_combine, coords, min_filter, format).prop_map(
+        |(builtin, (env, combine), coords, min_filter, format)| {
             let fields = [
                 ("builtin", builtin.map(str::to_owned)),
                 ("env", env.map(str::to_owned)),
                 ("coords", coords.map(str::to_owned)),
                 ("combine", combine),
                 ("min_filter", min_filter.map(str::to_owned)),
+                ("format", format.map(str::to_owned)),
             ];
             inline_table(fields)
         },

@@ -617,7 +617,7 @@ fn the_scenes_inputs_list_every_units_image() {
 
 /// Scene text for the comparisons below: a lit sphere and a floor at 128², the camera a little
 /// above, each mesh's table ending with its `sphere` or `floor` fields.
-fn lit(sphere: &str, floor: &str) -> String {
+pub(crate) fn lit(sphere: &str, floor: &str) -> String {
     format!(
         "[image]\nsize = [128, 128]\nclear_color = [0.1, 0.1, 0.12]\n\
          [camera]\neye = [0.0, 1.2, 3.2]\ntarget = [0.0, -0.1, 0.0]\nfovy = 45\n\
@@ -632,7 +632,7 @@ fn lit(sphere: &str, floor: &str) -> String {
 /// `text` drawn by ffvk and by Mesa's GL in the vertex and flat modes (GL has no per-fragment
 /// lighting), held to the stage scenes' tolerance: at most 1.5 % of the pixels beyond 2/255.
 /// Returns ffvk's vertex-mode image.
-fn draws_as_mesa_does(name: &str, text: &str) -> image::RgbaImage {
+pub(crate) fn draws_as_mesa_does(name: &str, text: &str) -> image::RgbaImage {
     let scene = parse(name, text).unwrap();
     assert!(scene.warnings.is_empty(), "{:?}", scene.warnings);
     let mut r = renderer();
@@ -665,12 +665,12 @@ fn draws_as_mesa_does(name: &str, text: &str) -> image::RgbaImage {
 }
 
 /// The share of pixels of `a` and `b` (ffvk's images of two scenes) more than 8/255 apart.
-fn changed_share(a: &image::RgbaImage, b: &image::RgbaImage) -> f64 {
+pub(crate) fn changed_share(a: &image::RgbaImage, b: &image::RgbaImage) -> f64 {
     differing(a, b, 8).0 as f64 / (a.width() * a.height()) as f64
 }
 
 /// ffvk's vertex-mode image of `text`.
-fn ffvk_image(name: &str, text: &str) -> image::RgbaImage {
+pub(crate) fn ffvk_image(name: &str, text: &str) -> image::RgbaImage {
     let scene = parse(name, text).unwrap();
     let mut r = renderer();
     let image = render_scene(&mut r, &scene, Some(LightingMode::Vertex)).unwrap();

@@ -1,10 +1,10 @@
 //! A texture unit's `cube_map` table: GL_TEXTURE_CUBE_MAP's texture from six face files, GL's
 //! order (+X, -X, +Y, -Y, +Z, -Z), or the built-in cube "faces", each face one color of its
-//! own. The unit's `srgb` and `generate_mipmap` apply to each face.
+//! own. The unit's `srgb`, `format` and `generate_mipmap` apply to each face.
 
 use super::file::CubeMapSpec;
 use super::{shorten, Builder, SceneError};
-use crate::gl::texture::{CubeImage, TextureImage};
+use crate::gl::texture::{BaseFormat, CubeImage, TextureImage};
 
 /// The faces' names in GL's order, for messages.
 const FACES: [&str; 6] = ["+X", "-X", "+Y", "-Y", "+Z", "-Z"];
@@ -24,13 +24,14 @@ const BUILTIN_FACE_COLORS: [[u8; 4]; 6] = [
 ];
 
 impl Builder<'_> {
-    /// The cube map a `cube_map` table at `field` describes, its faces sRGB when `srgb` and
-    /// with their mipmap chains when `mipmaps`; and where it came from, for messages.
+    /// The cube map a `cube_map` table at `field` describes, its faces sRGB when `srgb`, of
+    /// base internal format `format` and with their mipmap chains when `mipmaps`; and where it
+    /// came from, for messages.
     pub(super) fn cube_map(
         &self,
         field: &str,
         spec: &CubeMapSpec,
-        srgb: bool,
+        (srgb, format): (bool, BaseFormat),
         mipmaps: bool,
     ) -> Result<(CubeImage, String), SceneError> {
         let (cube, source) = match (&spec.faces, &spec.builtin) {
@@ -62,6 +63,7 @@ impl Builder<'_> {
         };
         let faces = cube.faces().clone().map(|mut face| {
             face.srgb = srgb;
+            face.base_format = format;
             face
         });
         let cube = CubeImage::new(faces).map_err(|e| self.field(field, e.to_string()))?;

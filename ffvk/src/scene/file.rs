@@ -436,6 +436,9 @@ pub(super) struct TextureSpec {
     pub(super) generate_mipmap: Option<bool>,
     /// GL_SRGB8_ALPHA8 instead of GL_RGBA8.
     pub(super) srgb: Option<bool>,
+    /// The base internal format (glTexImage2D's `internalformat`, table 3.15): "rgba" (GL's
+    /// `GL_RGBA`, the default), "rgb", "alpha", "luminance", "luminance_alpha" or "intensity".
+    pub(super) format: Option<String>,
     /// The GL_TEXTURE matrix, column-major; or scale, rotate (degrees about r) and translate
     /// of (s, t), applied in that order.
     #[serde(default, deserialize_with = "exact")]

@@ -1,8 +1,8 @@
 //! The `[texture]` table of a scene file (and a mesh's own `texture`, or each of its
 //! `texture_units`): GL_TEXTURE_2D with a texture image from a PNG or JPEG file or a built-in
-//! pattern, glTexParameter's filters and wraps, GL_GENERATE_MIPMAP, glTexEnv (`GL_COMBINE`'s
-//! parameters in `combine.rs`), glTexGen, the GL_TEXTURE matrix and, for units 1-3, where the
-//! unit's texture coordinates come from.
+//! pattern and its base internal format, glTexParameter's filters and wraps, GL_GENERATE_MIPMAP,
+//! glTexEnv (`GL_COMBINE`'s parameters in `combine.rs`), glTexGen, the GL_TEXTURE matrix and,
+//! for units 1-3, where the unit's texture coordinates come from.
 
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -14,7 +14,7 @@ use super::file::{TexCoordGenSpec, TextureSpec};
 use super::{shorten, Builder, SceneError};
 use crate::gl::state::{Cap, GlState};
 use crate::gl::texture::{
-    CubeImage, MagFilter, MinFilter, Sampling, TexCoordGen, TexEnvMode, TexGenMode, TextureImage,
+    BaseFormat, CubeImage, MagFilter, MinFilter, Sampling, TexCoordGen, TexEnvMode, TexGenMode, TextureImage,
     TextureUnit, Wrap, MAX_TEXTURE_SIZE, MAX_TEXTURE_UNITS,
 };
 
@@ -168,12 +168,13 @@ impl Builder<'_> {
         };
         let mut image = image;
         image.srgb = spec.srgb.unwrap_or(false);
+        image.base_format = self.base_format(field, spec)?;
         let mipmaps = spec.generate_mipmap.unwrap_or(false);
         if mipmaps {
             image = image.with_mipmaps();
         }
         let cube = match &spec.cube_map {
-            Some(c) => Some(self.cube_map(&f("cube_map"), c, image.srgb, mipmaps)?),
+            Some(c) => Some(self.cube_map(&f("cube_map"), c, (image.srgb, image.base_format), mipmaps)?),
             None => None,
         };
         // The words are the enums' own names, so the file format and messages cannot drift.
@@ -258,6 +259,33 @@ impl Builder<'_> {
             ));
         }
         Ok(Some(texture))
+    }
+
+    /// The `format` of the `texture` table at `field`: GL's base internal format in lowercase
+    /// without `GL_`, `GL_RGBA` by default. GL 2.1 (EXT_texture_sRGB) has sRGB formats for
+    /// RGB, RGBA, luminance and luminance-alpha only: `srgb = true` with "alpha" or
+    /// "intensity" is refused.
+    fn base_format(&self, field: &str, spec: &TextureSpec) -> Result<BaseFormat, SceneError> {
+        let formats: Vec<(&'static str, BaseFormat)> =
+            BaseFormat::ALL.iter().map(|&f| (f.name(), f)).collect();
+        let at = format!("{field}.format");
+        let format = spec
+            .format
+            .as_deref()
+            .map_or(Ok(BaseFormat::Rgba), |v| word(self, &at, v, &formats))?;
+        if spec.srgb == Some(true) && matches!(format, BaseFormat::Alpha | BaseFormat::Intensity) {
+            return Err(self.field(
+                format!("{field}.srgb"),
+                format!(
+                    "true with format {:?}: GL 2.1 has no sRGB {} format (EXT_texture_sRGB's are \
+                     GL_SRGB8, GL_SRGB8_ALPHA8, GL_SLUMINANCE8 and GL_SLUMINANCE8_ALPHA8): expected \
+                     srgb = false, or format \"rgba\", \"rgb\", \"luminance\" or \"luminance_alpha\"",
+                    format.name(),
+                    format.name()
+                ),
+            ));
+        }
+        Ok(format)
     }
 
     /// Unit `unit`'s `coords` at `field`: unit 0 takes the mesh's always; units 1-3 the
