@@ -505,6 +505,19 @@ impl SceneMesh {
             })
             .fold(0, |bits, i| bits | 1 << i)
     }
+
+    /// The units 1-3 whose texture coordinates are the mesh's second set
+    /// ([`TexCoords::MeshSecond`]), a bit each, as
+    /// [`Draw::second_texcoords`](crate::Draw::second_texcoords) takes them.
+    pub fn second_texcoords(&self) -> u32 {
+        (1..MAX_TEXTURE_UNITS)
+            .filter(|&i| {
+                self.textures[i]
+                    .as_ref()
+                    .is_some_and(|t| t.coords == TexCoords::MeshSecond)
+            })
+            .fold(0, |bits, i| bits | 1 << i)
+    }
 }
 
 impl Scene {
