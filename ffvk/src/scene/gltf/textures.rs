@@ -3,6 +3,7 @@
 //! so that a textured material's factor is scaled by what its texture averages to rather than
 //! drawn as if the texture were white.
 
+use super::occlusion::{self, OcclusionTexture, Readers};
 use super::{Context, LoadError, LoadErrorKind, MAX_FILE_BYTES};
 use crate::gl::texture::{MagFilter, MinFilter, Sampling, TextureImage, Wrap, MAX_TEXTURE_SIZE};
 use glam::{Mat4, Vec4};
@@ -54,7 +55,10 @@ pub enum Textures {
     /// Textures are named, not read: every texture is [`TextureMean::Unread`].
     #[default]
     Ignore,
-    /// Base color and emissive textures are decoded and averaged.
+    /// Base color and emissive textures are decoded and averaged; the base color texture is
+    /// sampled too ([`PbrMaterial::base_color_sampled`](super::PbrMaterial::base_color_sampled)),
+    /// and the occlusion texture
+    /// ([`PbrMaterial::occlusion_sampled`](super::PbrMaterial::occlusion_sampled)).
     Means,
 }
 
@@ -64,6 +68,7 @@ pub(super) struct MaterialTextures {
     pub(super) base_color: Option<TextureMean>,
     pub(super) emissive: Option<TextureMean>,
     pub(super) base_color_sampled: Option<SampledTexture>,
+    pub(super) occlusion: Option<OcclusionTexture>,
 }
 
 /// What one image decoded to: its linear mean and the texture with its mipmaps, or why it
@@ -86,6 +91,8 @@ pub(super) fn material_textures(
     warnings: &mut Vec<String>,
 ) -> Result<Vec<MaterialTextures>, LoadError> {
     let roots = &limits.asset_roots[..];
+    // Shared by the decoder and the occlusion textures' luminance copies.
+    let budget = std::cell::RefCell::new(budget);
     let mut by_image: Vec<Option<Option<Texture>>> = vec![None; document.images().len()];
     let mut by_source: HashMap<ImageSource, Decoded> = HashMap::new();
     let mut decode = |texture: &gltf::Texture| -> Result<Option<Texture>, LoadError> {
@@ -105,6 +112,7 @@ pub(super) fn material_textures(
                     let decoded = decode_source(&source, buffers, &mut |width, height| {
                         let bytes = mipmapped_bytes(width, height);
                         budget
+                            .borrow_mut()
                             .charge_texture(bytes, limits.texture_bytes)
                             .map_err(|used| {
                                 cx.error(LoadErrorKind::TextureBudget {
@@ -143,6 +151,9 @@ pub(super) fn material_textures(
         Some((mean, _)) => TextureMean::Mean(*mean),
         None => TextureMean::Unread,
     };
+    let mut copies = occlusion::Copies::new();
+    // Kept apart while the decoder holds `warnings`.
+    let mut occlusion_warnings = Vec::new();
     let mut other_coords = Vec::new();
     let mut out = Vec::new();
     for m in document.materials() {
@@ -176,12 +187,39 @@ pub(super) fn material_textures(
                 image_index: info.texture().source().index(),
             })
         });
+        let occlusion = match textures {
+            Textures::Ignore => None,
+            Textures::Means => {
+                let readers = Readers {
+                    decode: &mut |t| Ok(decode(t)?.map(|(_, image)| image)),
+                    charge: &mut |image, width, height| {
+                        let bytes = mipmapped_bytes(width, height);
+                        budget
+                            .borrow_mut()
+                            .charge_texture(bytes, limits.texture_bytes)
+                            .map_err(|used| {
+                                cx.error(LoadErrorKind::TextureBudget {
+                                    image,
+                                    width,
+                                    height,
+                                    bytes,
+                                    used,
+                                    limit: limits.texture_bytes,
+                                })
+                            })
+                    },
+                };
+                occlusion::sampled(cx, &m, readers, &mut copies, &mut occlusion_warnings)?
+            }
+        };
         out.push(MaterialTextures {
             base_color,
             emissive,
             base_color_sampled,
+            occlusion,
         });
     }
+    warnings.append(&mut occlusion_warnings);
     if !other_coords.is_empty() {
         warnings.push(format!(
             "materials {other_coords:?}: the base color texture reads TEXCOORD_1 or later; ffvk reads TEXCOORD_0 only, so these take the texture's mean texel instead"
