@@ -327,7 +327,7 @@ fn a_second_texcoord_set_of_another_length_or_a_draw_reading_one_its_mesh_lacks_
     let mesh = r.upload(&plain).unwrap();
     let mut frame = ffvk::Frame::new(16, 16);
     frame.draws.push(ndc_draw(&mesh).with_second_texcoords(0b10));
-    let text = r.render(&frame).err().expect("no second set").to_string();
+    let text = r.render(&frame).expect_err("no second set").to_string();
     assert!(
         text.contains("draw 0") && text.contains("second texture coordinates"),
         "{text}"

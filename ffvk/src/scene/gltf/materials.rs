@@ -2,7 +2,8 @@
 //! GL's fixed-function material ([`gl_material`]).
 
 use super::occlusion::OcclusionTexture;
-use super::textures::{SampledTexture, TextureMean, Textures};
+use super::sampler::SampledTexture;
+use super::textures::{TextureMean, Textures};
 use super::Context;
 use crate::gl::state::Material;
 use glam::{Vec3, Vec4};
@@ -146,8 +147,7 @@ pub(super) fn texture_warnings(cx: &Context, document: &gltf::Document, textures
             // Sampled base color and occlusion textures need no word here (an occlusion
             // texture that cannot be mapped has its own); the rest are left out or averaged.
             let sampled = textures == Textures::Means;
-            (pbr.base_color_texture().is_some() && !sampled)
-                || (material.occlusion_texture().is_some() && !sampled)
+            ((pbr.base_color_texture().is_some() || material.occlusion_texture().is_some()) && !sampled)
                 || pbr.metallic_roughness_texture().is_some()
                 || material.normal_texture().is_some()
                 || material.emissive_texture().is_some()

@@ -27,6 +27,7 @@ mod primitives;
 mod quantized;
 mod read;
 mod rules;
+mod sampler;
 #[cfg(test)]
 mod testing;
 mod textures;
@@ -40,7 +41,8 @@ pub use external::external_files;
 pub use lights::{exact_light, gl_light, spot_exponent, GltfLights, LightKind, PunctualLight};
 pub use materials::{gl_material, PbrMaterial};
 pub use occlusion::OcclusionTexture;
-pub use textures::{SampledTexture, TextureMean, Textures};
+pub use sampler::SampledTexture;
+pub use textures::{TextureMean, Textures};
 
 use crate::mesh::MeshData;
 use crate::scene::{Limits, MeshBudget, OverBudget};

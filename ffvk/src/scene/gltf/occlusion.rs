@@ -7,7 +7,7 @@
 //! light, and GL's fixed function has no texture path that reaches the ambient term alone, so
 //! the `GL_MODULATE` unit darkens the whole lit color.
 
-use super::textures::{sampling, transform_matrix, SampledTexture};
+use super::sampler::{sampling, transform_matrix, SampledTexture};
 use super::{Context, LoadError, LoadErrorKind, LoadedMesh};
 use crate::gl::texture::{BaseFormat, TextureImage};
 use glam::Mat4;
@@ -116,12 +116,15 @@ pub(super) fn luminance(image: &TextureImage, strength: f32) -> Result<TextureIm
         .map_err(|e| e.to_string())
 }
 
+/// A texture's decoded image, `None` when it could not be read (a warning says why).
+pub(super) type Decode<'a> = dyn FnMut(&gltf::Texture) -> Result<Option<Arc<TextureImage>>, LoadError> + 'a;
+
 /// What [`sampled`] reads and charges through: the texture decoder of
 /// [`material_textures`](super::textures::material_textures) (its image, `None` when it could
 /// not be read), and the scene's texture budget for a copy of `width` × `height` of image
 /// `image`.
 pub(super) struct Readers<'a> {
-    pub(super) decode: &'a mut dyn FnMut(&gltf::Texture) -> Result<Option<Arc<TextureImage>>, LoadError>,
+    pub(super) decode: &'a mut Decode<'a>,
     pub(super) charge: &'a mut dyn FnMut(usize, u32, u32) -> Result<(), LoadError>,
 }
 
