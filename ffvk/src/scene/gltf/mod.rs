@@ -282,7 +282,8 @@ pub enum LoadErrorKind {
     AttributeFormat {
         /// `mesh M ("name") primitive P`.
         primitive: String,
-        /// The attribute's semantic (`POSITION`, `NORMAL`, `COLOR_0`, `TEXCOORD_0`) or `indices`.
+        /// The attribute's semantic (`POSITION`, `NORMAL`, `COLOR_0`, `TEXCOORD_0`, `TEXCOORD_1`)
+        /// or `indices`.
         attribute: String,
         /// The accessor's index.
         accessor: usize,
@@ -300,7 +301,7 @@ pub enum LoadErrorKind {
     AttributeCount {
         /// `mesh M ("name") primitive P`.
         primitive: String,
-        /// The attribute's semantic (`NORMAL`, `COLOR_0`, `TEXCOORD_0`).
+        /// The attribute's semantic (`NORMAL`, `COLOR_0`, `TEXCOORD_0`, `TEXCOORD_1`).
         attribute: String,
         /// The accessor's index.
         accessor: usize,
@@ -371,7 +372,7 @@ pub enum LoadErrorKind {
     NotFinite {
         /// `mesh M ("name") primitive P`.
         primitive: String,
-        /// `POSITION`, `NORMAL` or `COLOR_0`.
+        /// `POSITION`, `NORMAL`, `COLOR_0`, `TEXCOORD_0` or `TEXCOORD_1`.
         attribute: &'static str,
         /// The accessor's index.
         accessor: usize,

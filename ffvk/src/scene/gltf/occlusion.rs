@@ -495,6 +495,30 @@ mod tests {
     }
 
     #[test]
+    fn a_texcoord_1_of_a_type_gltf_does_not_allow_is_refused_naming_the_attribute() {
+        let dir = scratch_dir("occlusion_texcoord_1_type");
+        orm_png(&dir);
+        let mut a = Asset::default();
+        let pos = a.positions(&TRIANGLE);
+        let st0 = vec2s(&mut a, &ST0);
+        let wrong = a.vec3s(&[[0.0; 3]; 3]);
+        let body = format!(
+            r#""scene": 0, "scenes": [ {{ "nodes": [0] }} ], "nodes": [ {{ "mesh": 0 }} ],
+               "meshes": [ {{ "primitives": [ {{ "attributes": {{ "POSITION": {pos},
+                   "TEXCOORD_0": {st0}, "TEXCOORD_1": {wrong} }}, "material": 0 }} ] }} ],
+               "materials": [ {{ "occlusionTexture": {{ "index": 0, "texCoord": 1 }} }} ],
+               "textures": [ {{ "source": 0 }} ], "images": [ {{ "uri": "orm.png" }} ],"#
+        );
+        let path = a.write_gltf(&dir, "vec3", &body);
+        let text = message(load_textured(&path, Textures::Means).unwrap_err());
+        assert!(
+            text.contains(&format!("TEXCOORD_1 (accessor {wrong}) is FLOAT VEC3: expected"))
+                && text.contains("VEC2"),
+            "{text}"
+        );
+    }
+
+    #[test]
     fn luminance_bakes_strength_as_gltf_defines_occlusion() {
         let image = TextureImage::new(
             4,
