@@ -512,6 +512,30 @@ pub enum MeshError {
         draw: usize,
     },
 
+    #[error(
+        "{count} second texture coordinates for {vertex_count} vertices: expected one (s, t) per vertex, or none"
+    )]
+    /// A mesh whose [`MeshData::second_texcoords`](crate::mesh::MeshData::second_texcoords)
+    /// is neither empty nor one per vertex.
+    SecondTexcoordCount {
+        /// Second coordinates given.
+        count: usize,
+        /// The number of vertices.
+        vertex_count: usize,
+    },
+
+    #[error(
+        "draw {draw}: units {units:#b} read the mesh's second texture coordinates, which it was uploaded without: expected a mesh with MeshData::second_texcoords, or those units' bits clear in Draw::second_texcoords"
+    )]
+    /// A draw whose [`Draw::second_texcoords`](crate::Draw::second_texcoords) names a unit
+    /// while its mesh has no second set of texture coordinates.
+    NoSecondTexcoords {
+        /// Position of the offending draw in [`Frame::draws`](crate::Frame::draws).
+        draw: usize,
+        /// The units 1-3 of its `second_texcoords`, a bit each.
+        units: u32,
+    },
+
     #[error("teapot tessellation level {level} is out of range: expected 1..={max}")]
     /// The teapot's tessellation level is 0 or above the maximum.
     TeapotLevel {

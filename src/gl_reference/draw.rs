@@ -289,6 +289,28 @@ pub(super) fn set_arrays(gl: &Gl, base: *const u8, colors: bool, (texcoords, uni
     }
 }
 
+/// Points the texture coordinate arrays of the units `units` names (a bit each, enabled by
+/// [`set_arrays`]) at `st`, the mesh's second set in client memory (two floats a vertex,
+/// tightly packed), and leaves the client active texture at `GL_TEXTURE0`.
+fn set_second_arrays(gl: &Gl, st: &[[f32; 2]], units: u32) {
+    if units == 0 {
+        return;
+    }
+    for unit in 1..ffvk::gl::texture::MAX_TEXTURE_UNITS as u32 {
+        if units & 1 << unit == 0 {
+            continue;
+        }
+        // SAFETY: a context is current on this thread; `st` is read by the draw that follows,
+        // which the callers make while it lives.
+        unsafe {
+            gl.ClientActiveTexture(gl::TEXTURE0 + unit);
+            gl.TexCoordPointer(2, gl::FLOAT, 0, st.as_ptr().cast());
+        }
+    }
+    // SAFETY: as above.
+    unsafe { gl.ClientActiveTexture(gl::TEXTURE0) };
+}
+
 /// Disables the arrays (the texture coordinates of the first `units` units) and unbinds the
 /// buffers.
 pub(super) fn end_arrays(gl: &Gl, units: usize) {
@@ -313,7 +335,14 @@ fn draw_one(gl: &Gl, draw: &GlDraw, max_lights: usize, units: &DrawUnits) -> Res
     check_lights(&draw.state, max_lights)?;
     let mesh = draw.mesh;
     check_indices(mesh)?;
-    let arrays = (units.texcoord_arrays(draw.mesh_texcoords), units.count);
+    let second = draw.second_texcoords & !1;
+    let arrays = (units.texcoord_arrays(draw.mesh_texcoords | second), units.count);
+    if second & arrays.0 != 0 && mesh.second_texcoords.len() != mesh.vertices.len() {
+        return Err(DrawError::SecondTexcoordCount {
+            count: mesh.second_texcoords.len(),
+            vertices: mesh.vertices.len(),
+        });
+    }
     if mesh.topology == ffvk::Topology::EdgeFlaggedTriangles {
         set_state(gl, draw, max_lights, units)?;
         return draw_edge_flagged(gl, draw, arrays);
@@ -324,6 +353,7 @@ fn draw_one(gl: &Gl, draw: &GlDraw, max_lights: usize, units: &DrawUnits) -> Res
         return Ok(());
     }
     set_arrays(gl, mesh.vertices.as_ptr().cast(), draw.color_array, arrays);
+    set_second_arrays(gl, &mesh.second_texcoords, second & arrays.0);
     if let Some(flags) = draw.edge_flags {
         if flags.len() != mesh.vertices.len() {
             end_arrays(gl, units.count);
@@ -341,7 +371,8 @@ fn draw_one(gl: &Gl, draw: &GlDraw, max_lights: usize, units: &DrawUnits) -> Res
         }
     }
     // SAFETY: a context is current on this thread. The arrays point into `mesh.vertices`
-    // (repr(C) f32 fields) and glDrawElements reads them and the indices before it returns.
+    // (repr(C) f32 fields) and `mesh.second_texcoords` (one per vertex where a unit reads it,
+    // checked above), and glDrawElements reads them and the indices before it returns.
     // Every index was checked against the vertex count, and the arrays are disabled after the
     // draw.
     unsafe {
@@ -381,9 +412,20 @@ fn draw_edge_flagged(gl: &Gl, draw: &GlDraw, arrays: (u32, usize)) -> Result<(),
     if count == 0 {
         return Ok(());
     }
+    // Each corner's second coordinates, where a unit reads them (one per vertex, checked).
+    let second_units = draw.second_texcoords & !1 & arrays.0;
+    let second: Vec<[f32; 2]> = match second_units {
+        0 => Vec::new(),
+        _ => mesh
+            .indices
+            .chunks_exact(6)
+            .flat_map(|p| (0..3).map(move |e| mesh.second_texcoords[p[2 * e] as usize]))
+            .collect(),
+    };
     set_arrays(gl, vertices.as_ptr().cast(), draw.color_array, arrays);
-    // SAFETY: a context is current on this thread; `vertices` and `flags` (one per corner)
-    // live until glDrawArrays has read them, and the arrays are disabled after it.
+    set_second_arrays(gl, &second, second_units);
+    // SAFETY: a context is current on this thread; `vertices`, `second` and `flags` (one per
+    // corner) live until glDrawArrays has read them, and the arrays are disabled after it.
     unsafe {
         gl.EdgeFlagPointer(0, flags.as_ptr().cast());
         gl.EnableClientState(gl::EDGE_FLAG_ARRAY);

@@ -110,6 +110,15 @@ pub enum DrawError {
     #[error("{flags} edge flags for a mesh of {vertices} vertices: expected one per vertex")]
     EdgeFlagCount { flags: usize, vertices: usize },
 
+    /// A draw reading the mesh's second texture coordinates where it has not one per vertex.
+    #[error("{count} second texture coordinates for a mesh of {vertices} vertices: expected one per vertex")]
+    SecondTexcoordCount { count: usize, vertices: usize },
+
+    /// A timed draw reading the mesh's second texture coordinates (the timed frames draw from
+    /// buffer objects of the interleaved vertices alone).
+    #[error("the timed frames draw the interleaved vertices alone: expected no second_texcoords")]
+    SecondTexcoordsTimed,
+
     /// More indices than one glDrawElements takes.
     #[error("{0} indices are too many for one draw")]
     TooManyIndices(usize),

@@ -119,6 +119,11 @@ pub struct GlDraw<'a> {
     /// and `glTexCoordPointer` on the same array), a bit each (bit i for unit i); the others
     /// take the unit's current coordinates (`glMultiTexCoord`, from the state).
     pub mesh_texcoords: u32,
+    /// The units 1-3 whose texture coordinates are the mesh's second set
+    /// ([`MeshData::second_texcoords`], a client array of its own for `glTexCoordPointer`),
+    /// a bit each; a unit here and in `mesh_texcoords` reads the second set. Drawn by
+    /// [`render_gl`]; the timed frames refuse it.
+    pub second_texcoords: u32,
     /// The primitive mode `glDrawElements` draws the mesh's indices with (`GL_TRIANGLES` by
     /// default; the mesh's indices are then read as that mode's vertices).
     pub mode: GlMode,
@@ -194,6 +199,7 @@ impl<'a> GlDraw<'a> {
             textures: [None; MAX_TEXTURE_UNITS],
             cube_maps: [None; MAX_TEXTURE_UNITS],
             mesh_texcoords: 0,
+            second_texcoords: 0,
             mode: GlMode::of(mesh.topology),
             point_size: 1.0,
             line_width: 1.0,

@@ -13,7 +13,7 @@ use super::draw::{
     MeshBuffers,
 };
 use super::egl::{gl_string, has_extension, version_number};
-use super::error::GlError;
+use super::error::{DrawError, GlError};
 use super::texture_object::{upload_textures, DrawUnits, UploadedUnits};
 use super::{GlDraw, GlScene, GlTiming};
 use ffvk::gl::state::{FixedFunctionState, Material};
@@ -146,6 +146,9 @@ pub(super) fn plan(scene: &GlScene, max_lights: usize) -> Result<Vec<Step>, GlEr
     for (index, draw) in scene.draws.iter().enumerate() {
         let at = |problem| GlError::Draw { index, problem };
         check_lights(&draw.state, max_lights).map_err(at)?;
+        if draw.second_texcoords & 0b1110 != 0 {
+            return Err(at(DrawError::SecondTexcoordsTimed));
+        }
         steps.push(Step {
             state: before.and_then(|prev| changes(prev, draw, max_lights)),
             count: index_count(draw).map_err(at)?,

@@ -42,6 +42,7 @@ fn scene<'a>(mesh: &'a MeshData, state: FixedFunctionState) -> GlScene<'a> {
             textures: Default::default(),
             cube_maps: Default::default(),
             mesh_texcoords: 0,
+            second_texcoords: 0,
             mode: Default::default(),
             point_size: 1.0,
             line_width: 1.0,

@@ -28,6 +28,7 @@ mod fragment_stages;
 mod fuzz;
 mod gl_oracle;
 mod gltf_files;
+mod gltf_occlusion;
 mod golden;
 mod hostile;
 mod hostile_gltf;

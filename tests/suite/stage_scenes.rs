@@ -172,6 +172,7 @@ pub(crate) fn gl_image(scene: &Scene, mode: LightingMode) -> RgbaImage {
                     .and_then(|t| Some((&**t.cube_map.as_ref()?, t.sampling)));
             }
             draw.mesh_texcoords = mesh.mesh_texcoords();
+            draw.second_texcoords = mesh.second_texcoords();
             draw.point_size = scene.point_size;
             draw.calls = mesh_raster_calls(&mesh.raster);
             draw

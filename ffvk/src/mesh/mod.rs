@@ -54,6 +54,15 @@ pub struct MeshData {
     /// How the indices make primitives (`TriangleList` by default); a draw of the mesh takes
     /// it ([`Draw::new`](crate::Draw::new)).
     pub topology: crate::Topology,
+    /// A second set of texture coordinates (s, t), one per vertex, or none (empty, the
+    /// default): glTF's `TEXCOORD_1`. [`Renderer::upload`] puts it in a vertex buffer of its
+    /// own, so that [`Vertex`]'s layout stays as it is; units 1-3 read it where a draw's
+    /// [`Draw::second_texcoords`](crate::Draw::second_texcoords) names them. A set of
+    /// another length than `vertices` is refused with a
+    /// [`MeshError`](crate::error::MeshError).
+    ///
+    /// [`Renderer::upload`]: crate::Renderer::upload
+    pub second_texcoords: Vec<[f32; 2]>,
 }
 
 impl MeshData {
@@ -63,7 +72,16 @@ impl MeshData {
             vertices,
             indices,
             topology: crate::Topology::TriangleList,
+            second_texcoords: Vec::new(),
         }
+    }
+
+    /// This mesh with a second set of texture coordinates, one (s, t) per vertex (see
+    /// [`MeshData::second_texcoords`]).
+    #[must_use]
+    pub fn with_second_texcoords(mut self, st: Vec<[f32; 2]>) -> Self {
+        self.second_texcoords = st;
+        self
     }
 
     /// This mesh with its indices read as `topology`.

@@ -29,8 +29,12 @@ pub struct Mesh {
     pub(super) indices: Buffer,
     pub(super) index_count: u32,
     pub(super) vertex_count: u32,
-    /// `vertices` at offset 0, as a draw binds it (kept so draws can borrow it).
-    pub(super) vertex_binding: (vk::Buffer, u64),
+    /// The second texture coordinates' buffer, when the mesh has them
+    /// ([`MeshData::second_texcoords`]).
+    pub(super) second: Option<Buffer>,
+    /// `vertices` and `second` at offset 0, as a draw binds them (kept so draws can borrow
+    /// them); the second is a null handle without `second`, never bound then.
+    pub(super) vertex_bindings: [(vk::Buffer, u64); 2],
     /// How its indices make primitives.
     pub(super) topology: Topology,
 }
@@ -85,6 +89,12 @@ pub struct Draw<'a> {
     /// (`state.current_texcoords`, GL's `glMultiTexCoord`) or generate them. Unit 0's are
     /// always the mesh's. 0 by default.
     pub mesh_texcoords: u32,
+    /// The units 1-3 whose texture coordinates are the mesh's second set
+    /// ([`MeshData::second_texcoords`], glTF's `TEXCOORD_1`), a bit each (bit i for unit i);
+    /// a unit named here and in [`Draw::mesh_texcoords`] reads the second set. A mesh uploaded
+    /// without a second set fails the frame with [`MeshError::NoSecondTexcoords`]. 0 by
+    /// default.
+    pub second_texcoords: u32,
     /// How the mesh's indices make primitives: the mesh's own ([`MeshData::topology`]) unless
     /// [`Draw::with_topology`] says otherwise (see [`Topology`]).
     pub topology: Topology,
@@ -134,6 +144,7 @@ impl<'a> Draw<'a> {
             textures: [None; MAX_TEXTURE_UNITS],
             cube_maps: [None; MAX_TEXTURE_UNITS],
             mesh_texcoords: 0,
+            second_texcoords: 0,
             topology: mesh.topology,
             point_size: 1.0,
             line_width: 1.0,
@@ -288,6 +299,14 @@ impl<'a> Draw<'a> {
     #[must_use]
     pub fn with_mesh_texcoords(mut self, units: u32) -> Self {
         self.mesh_texcoords = units;
+        self
+    }
+
+    /// This draw with the mesh's second texture coordinates on units 1-3 where `units` has
+    /// their bit (see [`Draw::second_texcoords`]; bit 0 and bits past the units are ignored).
+    #[must_use]
+    pub fn with_second_texcoords(mut self, units: u32) -> Self {
+        self.second_texcoords = units;
         self
     }
 

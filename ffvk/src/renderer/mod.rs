@@ -226,14 +226,23 @@ impl Renderer {
             }
             .into());
         }
-        let parts = [
-            Part {
-                what: "vertex buffer",
-                bytes: bytemuck::cast_slice(&mesh.vertices),
-                usage: vk::BufferUsageFlags::VERTEX_BUFFER,
-                read_stage: vk::PipelineStageFlags2::VERTEX_ATTRIBUTE_INPUT,
-                read_access: vk::AccessFlags2::VERTEX_ATTRIBUTE_READ,
-            },
+        let second = &mesh.second_texcoords;
+        if !second.is_empty() && second.len() != count {
+            return Err(MeshError::SecondTexcoordCount {
+                count: second.len(),
+                vertex_count: count,
+            }
+            .into());
+        }
+        let vertex_part = |what, bytes| Part {
+            what,
+            bytes,
+            usage: vk::BufferUsageFlags::VERTEX_BUFFER,
+            read_stage: vk::PipelineStageFlags2::VERTEX_ATTRIBUTE_INPUT,
+            read_access: vk::AccessFlags2::VERTEX_ATTRIBUTE_READ,
+        };
+        let mut parts = vec![
+            vertex_part("vertex buffer", bytemuck::cast_slice(&mesh.vertices)),
             Part {
                 what: "index buffer",
                 bytes: bytemuck::cast_slice(&mesh.indices),
@@ -242,16 +251,29 @@ impl Renderer {
                 read_access: vk::AccessFlags2::INDEX_READ,
             },
         ];
+        if !second.is_empty() {
+            parts.push(vertex_part(
+                "second texture coordinate buffer",
+                bytemuck::cast_slice(second),
+            ));
+        }
         let mut uploader = self
             .uploader
             .lock()
             .unwrap_or_else(|poisoned| poisoned.into_inner());
-        let [vertices, indices]: [Buffer; 2] = uploader
-            .upload(&self.device, &parts, self.upload)?
-            .try_into()
-            .map_err(|_| Error::Internal("the uploader returned another number of buffers than parts"))?;
+        let mut buffers = uploader.upload(&self.device, &parts, self.upload)?.into_iter();
+        let (Some(vertices), Some(indices)) = (buffers.next(), buffers.next()) else {
+            return Err(Error::Internal(
+                "the uploader returned another number of buffers than parts",
+            ));
+        };
+        let second = buffers.next();
         Ok(Mesh {
-            vertex_binding: (vertices.raw(), 0),
+            vertex_bindings: [
+                (vertices.raw(), 0),
+                (second.as_ref().map_or(vk::Buffer::null(), Buffer::raw), 0),
+            ],
+            second,
             vertices,
             indices,
             index_count: mesh.indices.len() as u32,
@@ -462,6 +484,10 @@ impl Renderer {
             }
             if !Arc::ptr_eq(d.mesh.vertices.device(), &self.device) {
                 return Err(MeshError::ForeignMesh { draw: i }.into());
+            }
+            let units = d.second_texcoords & 0b1110;
+            if units != 0 && d.mesh.second.is_none() {
+                return Err(MeshError::NoSecondTexcoords { draw: i, units }.into());
             }
             if d.textures
                 .iter()

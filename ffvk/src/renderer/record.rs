@@ -9,7 +9,7 @@ use super::attachments::{
 use super::deferred::{record_deferred, DeferredPass};
 use super::{subresource, Draw, Frame, Pass, Recording, Renderer, Targets};
 use crate::draw::lighting::{DrawValues, Lighting, LitDraw, Staged, VertexLayout};
-use crate::draw::pipeline::VertexInput;
+use crate::draw::pipeline::{Attribute, VertexInput};
 use crate::draw::record::Geometry;
 use crate::error::{vk_error, Error, Result};
 use crate::gl::state::FixedFunctionState;
@@ -260,9 +260,10 @@ unsafe fn record_readback(vkd: &ash::Device, targets: &Targets, cmd: vk::Command
 /// draw before's only in its own values (materials, current color) borrows that draw's state
 /// and carries its values, as an embedder's run does: its state is compared here once, and
 /// staging and pipeline lookup take it as the same.
-/// `layouts` holds the vertex layout of each value of a draw's [`Draw::mesh_texcoords`]
-/// (bits 1-3), `None` for the interleaved layout alone.
-pub(super) fn lit_draws<'f>(frame: &'f Frame, layouts: &[Option<VertexLayout>; 8]) -> Vec<LitDraw<'f>> {
+/// `layouts` holds the vertex layout of each value of a draw's [`Draw::mesh_texcoords`] and
+/// [`Draw::second_texcoords`] ([`mesh_texcoord_index`]), `None` for the interleaved layout
+/// alone.
+pub(super) fn lit_draws<'f>(frame: &'f Frame, layouts: &TexcoordLayouts) -> Vec<LitDraw<'f>> {
     let mut shared: Option<&'f FixedFunctionState> = None;
     frame
         .draws
@@ -282,9 +283,13 @@ pub(super) fn lit_draws<'f>(frame: &'f Frame, layouts: &[Option<VertexLayout>; 8
             let mesh = draw.mesh;
             let geometry = Geometry::indexed(mesh.indices.raw(), vk::IndexType::UINT32, mesh.index_count)
                 .with_topology(draw.topology);
-            let buffers: &[(vk::Buffer, u64)] = std::slice::from_ref(&mesh.vertex_binding);
+            let index = mesh_texcoord_index(draw);
+            // The second set's binding where the layout reads it (the frame was checked: the
+            // mesh then has one).
+            let bound = if index >> 3 != 0 { 2 } else { 1 };
+            let buffers: &[(vk::Buffer, u64)] = &mesh.vertex_bindings[..bound];
             LitDraw::new(state, draw.modelview, draw.projection, buffers, geometry)
-                .with_layout(layouts[mesh_texcoord_index(draw.mesh_texcoords)])
+                .with_layout(layouts[index])
                 .with_values(Some(DrawValues::of(own)))
                 .with_raster(draw.raster(frame))
                 .with_textures(std::array::from_fn(|i| {
@@ -297,26 +302,48 @@ pub(super) fn lit_draws<'f>(frame: &'f Frame, layouts: &[Option<VertexLayout>; 8
         .collect()
 }
 
-/// The index of a draw's [`Draw::mesh_texcoords`] among the layouts [`lit_draws`] takes: its
-/// bits 1-3.
-pub(super) fn mesh_texcoord_index(units: u32) -> usize {
-    ((units >> 1) & 7) as usize
+/// The vertex layouts of [`lit_draws`], by [`mesh_texcoord_index`].
+pub(super) type TexcoordLayouts = [Option<VertexLayout>; 64];
+
+/// The index of a draw's texture coordinate arrays among the layouts [`lit_draws`] takes: bits
+/// 0-2 the units 1-3 reading the mesh's first set ([`Draw::mesh_texcoords`]' bits 1-3), bits
+/// 3-5 those reading its second set ([`Draw::second_texcoords`]' bits 1-3), which a unit in
+/// both reads.
+pub(super) fn mesh_texcoord_index(draw: &Draw) -> usize {
+    let second = (draw.second_texcoords >> 1) & 7;
+    let first = (draw.mesh_texcoords >> 1) & 7 & !second;
+    (first | second << 3) as usize
 }
 
 impl Renderer {
-    /// The vertex layouts `frame`'s draws need for their [`Draw::mesh_texcoords`] (added to the
-    /// lighting on first use), by [`mesh_texcoord_index`]: the interleaved layout with the
-    /// mesh's texture coordinates on those units too.
-    pub(super) fn texcoord_layouts(&mut self, frame: &Frame) -> Result<[Option<VertexLayout>; 8]> {
-        let mut layouts = [None; 8];
+    /// The vertex layouts `frame`'s draws need for their texture coordinate arrays (added to
+    /// the lighting on first use), by [`mesh_texcoord_index`]: the interleaved layout with the
+    /// mesh's texture coordinates on those units too, and with the second set in a binding of
+    /// its own (binding 1, two floats a vertex) on the units that read it.
+    pub(super) fn texcoord_layouts(&mut self, frame: &Frame) -> Result<TexcoordLayouts> {
+        let mut layouts = [None; 64];
         for draw in &frame.draws {
-            let index = mesh_texcoord_index(draw.mesh_texcoords);
+            let index = mesh_texcoord_index(draw);
             if index == 0 || layouts[index].is_some() {
                 continue;
             }
-            let base = VertexInput::interleaved();
-            let shared = std::array::from_fn(|i| base.texcoord.filter(|_| index & 1 << i != 0));
-            layouts[index] = Some(self.lighting.vertex_layout(base.with_unit_texcoords(shared))?);
+            let mut base = VertexInput::interleaved();
+            let second = Attribute::new(1, 0, vk::Format::R32G32_SFLOAT);
+            if index >> 3 != 0 {
+                base.bindings.push(vk::VertexInputBindingDescription {
+                    binding: 1,
+                    stride: std::mem::size_of::<[f32; 2]>() as u32,
+                    input_rate: vk::VertexInputRate::VERTEX,
+                });
+            }
+            let units = std::array::from_fn(|i| {
+                if index & 8 << i != 0 {
+                    Some(second)
+                } else {
+                    base.texcoord.filter(|_| index & 1 << i != 0)
+                }
+            });
+            layouts[index] = Some(self.lighting.vertex_layout(base.with_unit_texcoords(units))?);
         }
         Ok(layouts)
     }

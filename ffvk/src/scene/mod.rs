@@ -218,7 +218,18 @@ impl MeshBudget {
     /// Takes the memory of a mesh of `vertices` vertices and `indices` indices, or says why
     /// it does not fit.
     pub fn charge(&mut self, vertices: usize, indices: usize) -> Result<(), OverBudget> {
-        let vertex_size = std::mem::size_of::<crate::mesh::Vertex>() as u64;
+        self.charge_sized(vertices, 0, indices)
+    }
+
+    /// [`MeshBudget::charge`] for vertices that carry `extra` bytes each beside their
+    /// [`Vertex`](crate::mesh::Vertex) (a second set of texture coordinates: 8).
+    pub(crate) fn charge_sized(
+        &mut self,
+        vertices: usize,
+        extra: u64,
+        indices: usize,
+    ) -> Result<(), OverBudget> {
+        let vertex_size = std::mem::size_of::<crate::mesh::Vertex>() as u64 + extra;
         let bytes = (vertices as u64)
             .saturating_mul(vertex_size)
             .saturating_add((indices as u64).saturating_mul(4));
@@ -440,7 +451,8 @@ pub struct SceneMesh {
     pub gltf: Option<GltfMeaning>,
     /// The textures its units are drawn with, `GL_TEXTURE0` first: the mesh's `texture_units`,
     /// else its `texture` (unit 0), else the scene's `[texture]`, else (under glTF's meaning)
-    /// its glTF base color texture; `None` leaves a unit off (all `None`: untextured).
+    /// its glTF base color texture (unit 0) and occlusion texture (unit 1); `None` leaves a
+    /// unit off (all `None`: untextured).
     pub textures: [Option<MeshTexture>; MAX_TEXTURE_UNITS],
     /// Whether lighting applies: false for glTF points and lines without normals, which are
     /// drawn unlit (glTF 2.0: lighting needs normals).
@@ -515,6 +527,19 @@ impl SceneMesh {
                 self.textures[i]
                     .as_ref()
                     .is_some_and(|t| t.coords == TexCoords::Mesh)
+            })
+            .fold(0, |bits, i| bits | 1 << i)
+    }
+
+    /// The units 1-3 whose texture coordinates are the mesh's second set
+    /// ([`TexCoords::MeshSecond`]), a bit each, as
+    /// [`Draw::second_texcoords`](crate::Draw::second_texcoords) takes them.
+    pub fn second_texcoords(&self) -> u32 {
+        (1..MAX_TEXTURE_UNITS)
+            .filter(|&i| {
+                self.textures[i]
+                    .as_ref()
+                    .is_some_and(|t| t.coords == TexCoords::MeshSecond)
             })
             .fold(0, |bits, i| bits | 1 << i)
     }

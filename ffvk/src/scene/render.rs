@@ -101,6 +101,7 @@ pub fn render_scene_with(
                 cubes
             },
             mesh_texcoords: mesh.mesh_texcoords(),
+            second_texcoords: mesh.second_texcoords(),
             topology: gpu.topology(),
             // glPointSize draws points only: other meshes keep GL's 1 (their pipelines are
             // not split by it).

@@ -60,6 +60,10 @@ pub enum TexCoords {
     /// The unit's current texture coordinates (`glMultiTexCoord4f`), every vertex's: GL's
     /// (0, 0, 0, 1) for units 1-3 unless `coords` gives four numbers.
     Current(Vec4),
+    /// The mesh's second set of texture coordinates
+    /// ([`MeshData::second_texcoords`](crate::mesh::MeshData::second_texcoords), glTF's
+    /// `TEXCOORD_1`), for units 1-3: a glTF occlusion texture read from `texCoord` 1.
+    MeshSecond,
 }
 
 impl MeshTexture {

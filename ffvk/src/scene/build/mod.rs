@@ -4,6 +4,7 @@
 
 use super::*;
 
+mod gltf_units;
 mod meshes;
 mod stages;
 mod state;
@@ -247,7 +248,8 @@ impl Builder<'_> {
                     _ => None,
                 };
                 // Texture precedence: the mesh's own units (or its one), the scene's, the glTF
-                // base color texture (under glTF's meaning, through GL_MODULATE), none.
+                // base color and occlusion textures (under glTF's meaning, on units 0 and 1
+                // through GL_MODULATE), none.
                 let mut textures: [Option<MeshTexture>; MAX_TEXTURE_UNITS] = Default::default();
                 match (&spec.texture_units, &spec.texture, &scene_texture, &pbr) {
                     (Some(_), Some(_), _, _) => {
@@ -268,19 +270,7 @@ impl Builder<'_> {
                     }
                     (None, None, Some(t), _) => textures[0] = Some(t.clone()),
                     (None, None, None, Some(pbr)) if gltf_meaning => {
-                        textures[0] = pbr.base_color_sampled.as_ref().map(|s| MeshTexture {
-                            image: s.image.clone(),
-                            sampling: s.sampling,
-                            unit: crate::gl::texture::TextureUnit {
-                                enabled: true,
-                                matrix: s.matrix,
-                                ..Default::default()
-                            },
-                            coords: TexCoords::Mesh,
-                            source: format!("glTF image {} (base color, GL_MODULATE)", s.image_index),
-                            cube_map: None,
-                            cube_source: String::new(),
-                        })
+                        textures = self::gltf_units::gltf_units(pbr, &mut notes);
                     }
                     _ => {}
                 }

@@ -1,7 +1,9 @@
 //! glTF metallic-roughness materials: their factors as read from the file, and mapped onto
 //! GL's fixed-function material ([`gl_material`]).
 
-use super::textures::{SampledTexture, TextureMean, Textures};
+use super::occlusion::OcclusionTexture;
+use super::sampler::SampledTexture;
+use super::textures::{TextureMean, Textures};
 use super::Context;
 use crate::gl::state::Material;
 use glam::{Vec3, Vec4};
@@ -32,6 +34,9 @@ pub struct PbrMaterial {
     pub emissive_texture: Option<TextureMean>,
     /// The base color texture decoded for sampling (textures read, PNG or JPEG).
     pub base_color_sampled: Option<SampledTexture>,
+    /// The occlusion texture decoded for sampling on `GL_TEXTURE1` (textures read, PNG or
+    /// JPEG, from `TEXCOORD_0` or `TEXCOORD_1` where the primitive has it).
+    pub occlusion_sampled: Option<OcclusionTexture>,
 }
 
 impl PbrMaterial {
@@ -69,6 +74,7 @@ impl Default for PbrMaterial {
             base_color_texture: None,
             emissive_texture: None,
             base_color_sampled: None,
+            occlusion_sampled: None,
         }
     }
 }
@@ -127,6 +133,7 @@ pub(super) fn pbr_material(cx: &Context, material: gltf::Material) -> Option<Pbr
         base_color_texture: None,
         emissive_texture: None,
         base_color_sampled: None,
+        occlusion_sampled: None,
     })
 }
 
@@ -137,11 +144,12 @@ pub(super) fn texture_warnings(cx: &Context, document: &gltf::Document, textures
         .materials()
         .filter(|material| {
             let pbr = material.pbr_metallic_roughness();
-            // Sampled base color textures need no word; the rest are left out or averaged.
-            (pbr.base_color_texture().is_some() && textures == Textures::Ignore)
+            // Sampled base color and occlusion textures need no word here (an occlusion
+            // texture that cannot be mapped has its own); the rest are left out or averaged.
+            let sampled = textures == Textures::Means;
+            ((pbr.base_color_texture().is_some() || material.occlusion_texture().is_some()) && !sampled)
                 || pbr.metallic_roughness_texture().is_some()
                 || material.normal_texture().is_some()
-                || material.occlusion_texture().is_some()
                 || material.emissive_texture().is_some()
         })
         .map(|material| {
@@ -163,9 +171,9 @@ pub(super) fn texture_warnings(cx: &Context, document: &gltf::Document, textures
     let what = match textures {
         Textures::Ignore => "ffvk does not read them and uses the materials' factors",
         Textures::Means => {
-            "emissive factors are multiplied by their texture's mean texel (GL has one texture \
-             unit, which the base color takes); normal, occlusion and metallic-roughness textures \
-             are ignored"
+            "emissive factors are multiplied by their texture's mean texel; normal and \
+             metallic-roughness textures are ignored (base color textures are sampled on \
+             GL_TEXTURE0 and occlusion textures on GL_TEXTURE1)"
         }
     };
     vec![format!(

@@ -9,9 +9,10 @@
 //! names the file, the object (mesh, primitive, accessor, buffer, node), the offending value
 //! and what was expected.
 //!
-//! Textures are not sampled: base color and emissive textures may be read for their mean
-//! texel ([`Textures::Means`]); skins, morph targets and texture coordinates are ignored (with
-//! a warning where the file uses them). Geometry that exists only compressed (Draco, meshopt)
+//! Textures are read under [`Textures::Means`]: the base color texture is sampled (unit 0),
+//! the occlusion texture too (unit 1, as `GL_LUMINANCE`, from `TEXCOORD_0` or `TEXCOORD_1`),
+//! the emissive texture enters as its mean texel; skins and morph targets are ignored (with a
+//! warning where the file uses them). Geometry that exists only compressed (Draco, meshopt)
 //! is refused with the extension's name.
 
 mod accessors;
@@ -21,10 +22,12 @@ mod external;
 mod lights;
 mod materials;
 mod meshopt;
+mod occlusion;
 mod primitives;
 mod quantized;
 mod read;
 mod rules;
+mod sampler;
 #[cfg(test)]
 mod testing;
 mod textures;
@@ -37,7 +40,9 @@ pub use cameras::{CameraProjection, PlacedCamera};
 pub use external::external_files;
 pub use lights::{exact_light, gl_light, spot_exponent, GltfLights, LightKind, PunctualLight};
 pub use materials::{gl_material, PbrMaterial};
-pub use textures::{SampledTexture, TextureMean, Textures};
+pub use occlusion::OcclusionTexture;
+pub use sampler::SampledTexture;
+pub use textures::{TextureMean, Textures};
 
 use crate::mesh::MeshData;
 use crate::scene::{Limits, MeshBudget, OverBudget};
@@ -87,6 +92,8 @@ pub struct LoadedMesh {
     pub material: Option<PbrMaterial>,
     /// Whether the primitive has COLOR_0 (else every vertex color is white).
     pub vertex_colors: bool,
+    /// Whether the primitive has TEXCOORD_0 (else every texture coordinate is (0, 0)).
+    pub texcoords: bool,
     /// Whether it is lit: false for points and lines without normals, which glTF draws
     /// unlit (their vertex colors, or the material's base color, as they are).
     pub lit: bool,
@@ -275,7 +282,8 @@ pub enum LoadErrorKind {
     AttributeFormat {
         /// `mesh M ("name") primitive P`.
         primitive: String,
-        /// The attribute's semantic (`POSITION`, `NORMAL`, `COLOR_0`, `TEXCOORD_0`) or `indices`.
+        /// The attribute's semantic (`POSITION`, `NORMAL`, `COLOR_0`, `TEXCOORD_0`, `TEXCOORD_1`)
+        /// or `indices`.
         attribute: String,
         /// The accessor's index.
         accessor: usize,
@@ -293,7 +301,7 @@ pub enum LoadErrorKind {
     AttributeCount {
         /// `mesh M ("name") primitive P`.
         primitive: String,
-        /// The attribute's semantic (`NORMAL`, `COLOR_0`, `TEXCOORD_0`).
+        /// The attribute's semantic (`NORMAL`, `COLOR_0`, `TEXCOORD_0`, `TEXCOORD_1`).
         attribute: String,
         /// The accessor's index.
         accessor: usize,
@@ -364,7 +372,7 @@ pub enum LoadErrorKind {
     NotFinite {
         /// `mesh M ("name") primitive P`.
         primitive: String,
-        /// `POSITION`, `NORMAL` or `COLOR_0`.
+        /// `POSITION`, `NORMAL`, `COLOR_0`, `TEXCOORD_0` or `TEXCOORD_1`.
         attribute: &'static str,
         /// The accessor's index.
         accessor: usize,
@@ -600,7 +608,7 @@ pub fn load_with(
         warnings,
         ..Loaded::default()
     };
-    read::walk(&cx, &document, &buffers, limits, budget, &mut out)?;
+    read::walk(&cx, &document, &buffers, (limits, textures), budget, &mut out)?;
     out.warnings
         .extend(materials::texture_warnings(&cx, &document, textures));
     let table = textures::material_textures(
@@ -616,8 +624,10 @@ pub fn load_with(
             material.base_color_texture = t.base_color;
             material.emissive_texture = t.emissive;
             material.base_color_sampled = t.base_color_sampled.clone();
+            material.occlusion_sampled = t.occlusion.clone();
         }
     }
+    occlusion::drop_unmapped(&mut out.meshes, &cx, &mut out.warnings);
     Ok(out)
 }
 

@@ -91,13 +91,14 @@ fn check_finite<const N: usize>(
 
 /// Reads one primitive of mesh `mesh` (see [`load`](super::load)): triangles of every mode as
 /// a triangle list, `mirrored` swapping each triangle's first two vertices; points and lines
-/// as their own topology (GL_LINE_LOOP as a line list), with their vertices as given.
+/// as their own topology (GL_LINE_LOOP as a line list), with their vertices as given. With
+/// `second_set`, its TEXCOORD_1 (which it has) becomes the mesh's second texture coordinates.
 pub(super) fn read_primitive(
     cx: &Context,
     buffers: &[gltf::buffer::Data],
     mesh: usize,
     primitive: &gltf::Primitive,
-    mirrored: bool,
+    (mirrored, second_set): (bool, bool),
     budget: &mut MeshBudget,
     warnings: &mut Vec<String>,
 ) -> Result<MeshData, LoadError> {
@@ -117,12 +118,15 @@ pub(super) fn read_primitive(
         _ if primitive.get(&Semantic::Normals).is_some() => (vertex_count, triangle_count.saturating_mul(3)),
         _ => (triangle_count.saturating_mul(3), triangle_count.saturating_mul(3)),
     };
-    budget.charge(kept_vertices, kept_indices).map_err(|source| {
-        cx.error(LoadErrorKind::OverBudget {
-            primitive: label.clone(),
-            source,
-        })
-    })?;
+    let second_bytes = if second_set { 8 } else { 0 };
+    budget
+        .charge_sized(kept_vertices, second_bytes, kept_indices)
+        .map_err(|source| {
+            cx.error(LoadErrorKind::OverBudget {
+                primitive: label.clone(),
+                source,
+            })
+        })?;
     let alloc_error = |source| {
         cx.error(LoadErrorKind::Alloc {
             primitive: label.clone(),
@@ -234,40 +238,44 @@ pub(super) fn read_primitive(
 
     // Texture coordinates in every type glTF allows: FLOAT, or normalized UNSIGNED_BYTE or
     // UNSIGNED_SHORT (divided by 255 or 65535), VEC2.
-    let texcoords = match primitive.get(&Semantic::TexCoords(0)) {
-        None => None,
-        Some(accessor) => {
-            // glTF's core: UNSIGNED_BYTE and UNSIGNED_SHORT are read as normalized whatever the
-            // accessor says, as before the extension; with it, its flag decides.
-            let supported = if quantization {
-                accepts(&accessor, quantized::FLOAT, quantized::TEXCOORD)
-            } else {
-                matches!(accessor.data_type(), DataType::F32 | DataType::U8 | DataType::U16)
-            };
-            if !supported || accessor.dimensions() != Dimensions::Vec2 {
-                return Err(format_error(
-                    "TEXCOORD_0",
-                    &accessor,
-                    if quantization {
-                        "FLOAT, BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT (KHR_mesh_quantization), VEC2"
-                    } else {
-                        "FLOAT, normalized UNSIGNED_BYTE or normalized UNSIGNED_SHORT, VEC2"
-                    },
-                ));
-            }
-            if accessor.count() != vertex_count {
-                return Err(count_error("TEXCOORD_0", &accessor, vertex_count));
-            }
-            let st = if quantization {
-                quantized::read_vectors::<2>(cx, &label, &accessor, buffers)?
-            } else {
-                let iter = || reader.read_tex_coords(0).map(|t| t.into_f32());
-                read_checked(cx, &label, &accessor, buffers, iter)?
-            };
-            check_finite(cx, &label, "TEXCOORD_0", &accessor, &st)?;
-            Some(st)
+    let read_texcoords = |set: u32| -> Result<Option<Vec<[f32; 2]>>, LoadError> {
+        let Some(accessor) = primitive.get(&Semantic::TexCoords(set)) else {
+            return Ok(None);
+        };
+        let name = format!("TEXCOORD_{set}");
+        // glTF's core: UNSIGNED_BYTE and UNSIGNED_SHORT are read as normalized whatever the
+        // accessor says, as before the extension; with it, its flag decides.
+        let supported = if quantization {
+            accepts(&accessor, quantized::FLOAT, quantized::TEXCOORD)
+        } else {
+            matches!(accessor.data_type(), DataType::F32 | DataType::U8 | DataType::U16)
+        };
+        if !supported || accessor.dimensions() != Dimensions::Vec2 {
+            return Err(format_error(
+                &name,
+                &accessor,
+                if quantization {
+                    "FLOAT, BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT (KHR_mesh_quantization), VEC2"
+                } else {
+                    "FLOAT, normalized UNSIGNED_BYTE or normalized UNSIGNED_SHORT, VEC2"
+                },
+            ));
         }
+        if accessor.count() != vertex_count {
+            return Err(count_error(&name, &accessor, vertex_count));
+        }
+        let st = if quantization {
+            quantized::read_vectors::<2>(cx, &label, &accessor, buffers)?
+        } else {
+            let iter = || reader.read_tex_coords(set).map(|t| t.into_f32());
+            read_checked(cx, &label, &accessor, buffers, iter)?
+        };
+        let what = if set == 0 { "TEXCOORD_0" } else { "TEXCOORD_1" };
+        check_finite(cx, &label, what, &accessor, &st)?;
+        Ok(Some(st))
     };
+    let texcoords = read_texcoords(0)?;
+    let second = if second_set { read_texcoords(1)? } else { None };
     let texcoord_of = |i: u32| {
         texcoords
             .as_ref()
@@ -308,8 +316,19 @@ pub(super) fn read_primitive(
         }
     };
 
+    // The second set of the `count` vertices that `sources` name (one vertex each), when read.
+    let second_of =
+        |count: usize, sources: &mut dyn Iterator<Item = u32>| -> Result<Vec<[f32; 2]>, LoadError> {
+            let Some(second) = &second else {
+                return Ok(Vec::new());
+            };
+            let mut out = try_vec(count, "mesh texture coordinates").map_err(alloc_error)?;
+            out.extend(sources.map(|i| second[i as usize]));
+            Ok(out)
+        };
+
     if !draws_triangles(mode) {
-        return points_and_lines(cx, &label, mode, &sequence, vertex_count, alloc_error, |i| {
+        let data = points_and_lines(cx, &label, mode, &sequence, vertex_count, alloc_error, |i| {
             let normal = normals
                 .as_ref()
                 .map_or(Vec3::Z, |n| Vec3::from_array(n[i as usize]));
@@ -317,7 +336,9 @@ pub(super) fn read_primitive(
                 .as_ref()
                 .map_or(Vec4::ONE, |c| Vec4::from_array(c[i as usize]));
             Vertex::new(Vec3::from_array(positions[i as usize]), normal, color).with_texcoord(texcoord_of(i))
-        });
+        })?;
+        let second = second_of(vertex_count, &mut (0..vertex_count as u32))?;
+        return Ok(data.with_second_texcoords(second));
     }
 
     let mut triangles: Vec<[u32; 3]> = try_vec(triangle_count, "mesh triangles").map_err(alloc_error)?;
@@ -365,10 +386,12 @@ pub(super) fn read_primitive(
                 Vertex::new(position_of(i), Vec3::from_array(normals[i as usize]), color_of(i))
                     .with_texcoord(texcoord_of(i))
             }));
+            data.second_texcoords = second_of(vertex_count, &mut (0..vertex_count as u32))?;
         }
         None => {
             // Flat normals: every triangle gets its own three vertices.
             let mut flat = try_vec(triangles.len() * 3, "mesh vertices").map_err(alloc_error)?;
+            data.second_texcoords = second_of(triangles.len() * 3, &mut triangles.iter().flatten().copied())?;
             for t in &mut triangles {
                 let [a, b, c] = t.map(position_of);
                 let normal = (b - a).cross(c - a).normalize_or(Vec3::Z);

@@ -434,7 +434,7 @@ pub(super) fn walk(
     cx: &Context,
     document: &gltf::Document,
     buffers: &[gltf::buffer::Data],
-    limits: &Limits,
+    (limits, textures): (&Limits, super::Textures),
     budget: &mut MeshBudget,
     out: &mut Loaded,
 ) -> Result<(), LoadError> {
@@ -455,7 +455,7 @@ pub(super) fn walk(
         names: Vec::new(),
     };
     for root in roots {
-        visit(cx, buffers, root, &mut path, limits, budget, out)?;
+        visit(cx, buffers, root, &mut path, (limits, textures), budget, out)?;
     }
     Ok(())
 }
@@ -482,7 +482,7 @@ fn visit(
     buffers: &[gltf::buffer::Data],
     root: gltf::Node,
     path: &mut NodePath,
-    limits: &Limits,
+    (limits, textures): (&Limits, super::Textures),
     budget: &mut MeshBudget,
     out: &mut Loaded,
 ) -> Result<(), LoadError> {
@@ -542,7 +542,19 @@ fn visit(
                     out.warnings
                         .push(format!("{}: morph targets are ignored", cx.primitive_label(m, p)));
                 }
-                let data = read_primitive(cx, buffers, m, &primitive, mirrored, budget, &mut out.warnings)?;
+                // TEXCOORD_1 is read where an occlusion texture sampled from it needs it.
+                let second_set = textures == super::Textures::Means
+                    && super::occlusion::coordinate_set(cx, &primitive.material()) == Some(1)
+                    && primitive.get(&gltf::Semantic::TexCoords(1)).is_some();
+                let data = read_primitive(
+                    cx,
+                    buffers,
+                    m,
+                    &primitive,
+                    (mirrored, second_set),
+                    budget,
+                    &mut out.warnings,
+                )?;
                 let material = pbr_material(cx, primitive.material());
                 out.meshes.push(LoadedMesh {
                     name: if several {
@@ -555,6 +567,7 @@ fn visit(
                     node_path: names.clone(),
                     material,
                     vertex_colors: primitive.get(&gltf::Semantic::Colors(0)).is_some(),
+                    texcoords: primitive.get(&gltf::Semantic::TexCoords(0)).is_some(),
                     // glTF: points and lines without normals are drawn unlit.
                     lit: draws_triangles(primitive.mode())
                         || primitive.get(&gltf::Semantic::Normals).is_some(),

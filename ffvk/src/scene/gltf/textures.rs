@@ -3,29 +3,14 @@
 //! so that a textured material's factor is scaled by what its texture averages to rather than
 //! drawn as if the texture were white.
 
+use super::occlusion::{self, OcclusionTexture, Readers};
+use super::sampler::{sampling, transform_matrix, SampledTexture};
 use super::{Context, LoadError, LoadErrorKind, MAX_FILE_BYTES};
-use crate::gl::texture::{MagFilter, MinFilter, Sampling, TextureImage, Wrap, MAX_TEXTURE_SIZE};
+use crate::gl::texture::{TextureImage, MAX_TEXTURE_SIZE};
 use glam::{Mat4, Vec4};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
-
-/// A base color texture ready to sample: its image as stored (GL_RGBA8, no sRGB decode, as a
-/// legacy GL program loads it; mipmaps generated, as glGenerateMipmap), the sampler mapped
-/// from glTF's, and KHR_texture_transform as the GL_TEXTURE matrix.
-#[derive(Debug, Clone, PartialEq)]
-#[non_exhaustive]
-pub struct SampledTexture {
-    /// The decoded image with its mipmaps; shared by every material that uses the image.
-    pub image: Arc<TextureImage>,
-    /// glTF's sampler as glTexParameter values; without one, linear and trilinear with repeat.
-    pub sampling: Sampling,
-    /// KHR_texture_transform's offset, rotation and scale as a matrix of (s, t); identity
-    /// without it.
-    pub matrix: Mat4,
-    /// The glTF image's index, for messages.
-    pub image_index: usize,
-}
 
 /// A texture a material names, as far as ffvk read it.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -54,7 +39,10 @@ pub enum Textures {
     /// Textures are named, not read: every texture is [`TextureMean::Unread`].
     #[default]
     Ignore,
-    /// Base color and emissive textures are decoded and averaged.
+    /// Base color and emissive textures are decoded and averaged; the base color texture is
+    /// sampled too ([`PbrMaterial::base_color_sampled`](super::PbrMaterial::base_color_sampled)),
+    /// and the occlusion texture
+    /// ([`PbrMaterial::occlusion_sampled`](super::PbrMaterial::occlusion_sampled)).
     Means,
 }
 
@@ -64,6 +52,7 @@ pub(super) struct MaterialTextures {
     pub(super) base_color: Option<TextureMean>,
     pub(super) emissive: Option<TextureMean>,
     pub(super) base_color_sampled: Option<SampledTexture>,
+    pub(super) occlusion: Option<OcclusionTexture>,
 }
 
 /// What one image decoded to: its linear mean and the texture with its mipmaps, or why it
@@ -86,6 +75,8 @@ pub(super) fn material_textures(
     warnings: &mut Vec<String>,
 ) -> Result<Vec<MaterialTextures>, LoadError> {
     let roots = &limits.asset_roots[..];
+    // Shared by the decoder and the occlusion textures' luminance copies.
+    let budget = std::cell::RefCell::new(budget);
     let mut by_image: Vec<Option<Option<Texture>>> = vec![None; document.images().len()];
     let mut by_source: HashMap<ImageSource, Decoded> = HashMap::new();
     let mut decode = |texture: &gltf::Texture| -> Result<Option<Texture>, LoadError> {
@@ -105,6 +96,7 @@ pub(super) fn material_textures(
                     let decoded = decode_source(&source, buffers, &mut |width, height| {
                         let bytes = mipmapped_bytes(width, height);
                         budget
+                            .borrow_mut()
                             .charge_texture(bytes, limits.texture_bytes)
                             .map_err(|used| {
                                 cx.error(LoadErrorKind::TextureBudget {
@@ -143,6 +135,9 @@ pub(super) fn material_textures(
         Some((mean, _)) => TextureMean::Mean(*mean),
         None => TextureMean::Unread,
     };
+    let mut copies = occlusion::Copies::new();
+    // Kept apart while the decoder holds `warnings`.
+    let mut occlusion_warnings = Vec::new();
     let mut other_coords = Vec::new();
     let mut out = Vec::new();
     for m in document.materials() {
@@ -176,12 +171,39 @@ pub(super) fn material_textures(
                 image_index: info.texture().source().index(),
             })
         });
+        let occlusion = match textures {
+            Textures::Ignore => None,
+            Textures::Means => {
+                let readers = Readers {
+                    decode: &mut |t| Ok(decode(t)?.map(|(_, image)| image)),
+                    charge: &mut |image, width, height| {
+                        let bytes = mipmapped_bytes(width, height);
+                        budget
+                            .borrow_mut()
+                            .charge_texture(bytes, limits.texture_bytes)
+                            .map_err(|used| {
+                                cx.error(LoadErrorKind::TextureBudget {
+                                    image,
+                                    width,
+                                    height,
+                                    bytes,
+                                    used,
+                                    limit: limits.texture_bytes,
+                                })
+                            })
+                    },
+                };
+                occlusion::sampled(cx, &m, readers, &mut copies, &mut occlusion_warnings)?
+            }
+        };
         out.push(MaterialTextures {
             base_color,
             emissive,
             base_color_sampled,
+            occlusion,
         });
     }
+    warnings.append(&mut occlusion_warnings);
     if !other_coords.is_empty() {
         warnings.push(format!(
             "materials {other_coords:?}: the base color texture reads TEXCOORD_1 or later; ffvk reads TEXCOORD_0 only, so these take the texture's mean texel instead"
@@ -201,50 +223,6 @@ pub(super) fn mipmapped_bytes(width: u32, height: u32) -> u64 {
         }
         (w, h) = ((w / 2).max(1), (h / 2).max(1));
     }
-}
-
-/// glTF's sampler as GL's texture parameters (glTF uses GL's enums). Without a filter glTF
-/// leaves the choice to the renderer: ffvk takes linear magnification and trilinear
-/// minification (the mipmaps are generated).
-pub fn sampling(sampler: &gltf::texture::Sampler) -> Sampling {
-    use gltf::texture::{MagFilter as GMag, MinFilter as GMin, WrappingMode};
-    let wrap = |w: WrappingMode| match w {
-        WrappingMode::ClampToEdge => Wrap::ClampToEdge,
-        WrappingMode::MirroredRepeat => Wrap::MirroredRepeat,
-        WrappingMode::Repeat => Wrap::Repeat,
-    };
-    Sampling {
-        mag_filter: match sampler.mag_filter() {
-            Some(GMag::Nearest) => MagFilter::Nearest,
-            Some(GMag::Linear) | None => MagFilter::Linear,
-        },
-        min_filter: match sampler.min_filter() {
-            Some(GMin::Nearest) => MinFilter::Nearest,
-            Some(GMin::Linear) => MinFilter::Linear,
-            Some(GMin::NearestMipmapNearest) => MinFilter::NearestMipmapNearest,
-            Some(GMin::LinearMipmapNearest) => MinFilter::LinearMipmapNearest,
-            Some(GMin::NearestMipmapLinear) => MinFilter::NearestMipmapLinear,
-            Some(GMin::LinearMipmapLinear) | None => MinFilter::LinearMipmapLinear,
-        },
-        wrap_s: wrap(sampler.wrap_s()),
-        wrap_t: wrap(sampler.wrap_t()),
-    }
-}
-
-/// KHR_texture_transform's matrix: translation × rotation × scale of (u, v), the rotation
-/// turning UVs counter-clockwise in the image (whose v runs down), as the extension's example
-/// says (offset [0, 1], rotation π/2 and scale ½ pick the lower left quadrant).
-pub fn transform_matrix(offset: [f32; 2], rotation: f32, scale: [f32; 2]) -> Mat4 {
-    let (sin, cos) = rotation.sin_cos();
-    let rotate = Mat4::from_cols(
-        glam::Vec4::new(cos, -sin, 0.0, 0.0),
-        glam::Vec4::new(sin, cos, 0.0, 0.0),
-        glam::Vec4::Z,
-        glam::Vec4::W,
-    );
-    Mat4::from_translation(glam::Vec3::new(offset[0], offset[1], 0.0))
-        * rotate
-        * Mat4::from_scale(glam::Vec3::new(scale[0], scale[1], 1.0))
 }
 
 /// Where an image's encoded bytes are, as far as telling two images that name the same bytes
@@ -380,6 +358,7 @@ fn srgb_to_linear(c: f32) -> f32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::gl::texture::{MagFilter, MinFilter, Sampling, Wrap};
     use crate::scene::gltf::testing::{one_mesh_body, scratch_dir, Asset, QUAD};
     use crate::scene::gltf::{load_with, MeshBudget};
     use crate::scene::Limits;

@@ -224,6 +224,7 @@ fn check_material(cx: &Context, material: &gltf::Material) -> Result<(), LoadErr
             "three numbers in [0, 1]",
         ));
     }
+    super::occlusion::check(cx, material)?;
     if let Some(strength) = material.emissive_strength() {
         if !(strength >= 0.0 && strength.is_finite()) {
             return Err(invalid(
