@@ -39,7 +39,7 @@ pub fn pixel_terms(scene: &Scene, hit: &Hit, mode: LightingMode) -> reference::P
         scene.projection,
         verts,
         hit.coverage,
-        mesh.draw_textures(),
+        mesh.draw_textures().for_triangle(&mesh.data, hit.vertices),
     )
 }
 

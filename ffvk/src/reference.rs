@@ -285,18 +285,18 @@ pub struct EyeVertex {
 /// Runs the vertex stage on the CPU for object-space vertex `v`, in double precision, units
 /// 1-3 taking their current texture coordinates: [`transform_with`] of no mesh coordinates.
 pub fn transform(state: &FixedFunctionState, modelview: Mat4, projection: Mat4, v: &Vertex) -> EyeVertex {
-    transform_with(state, modelview, projection, v, 0)
+    transform_with(state, modelview, projection, v, units::CoordSources::default())
 }
 
-/// [`transform`] with the units 1-3 that `mesh_texcoords` names (a bit each) reading the
-/// vertex's texture coordinates too, as [`Draw::mesh_texcoords`](crate::Draw::mesh_texcoords)
-/// says.
+/// [`transform`] with units 1-3 reading the vertex's coordinates or its second set as
+/// `sources` says ([`Draw::mesh_texcoords`](crate::Draw::mesh_texcoords),
+/// [`Draw::second_texcoords`](crate::Draw::second_texcoords)).
 pub fn transform_with(
     state: &FixedFunctionState,
     modelview: Mat4,
     projection: Mat4,
     v: &Vertex,
-    mesh_texcoords: u32,
+    sources: units::CoordSources,
 ) -> EyeVertex {
     let object = DVec3::from(v.position.map(f64::from)).extend(1.0);
     let eye = modelview.as_dmat4() * object;
@@ -306,7 +306,7 @@ pub fn transform_with(
         clip: projection.as_dmat4() * eye,
         normal,
         color: DVec4::from(v.color.map(f64::from)),
-        texcoords: units::unit_texcoords(state, mesh_texcoords, v.texcoord, (object, eye, normal)),
+        texcoords: units::unit_texcoords(state, sources, v.texcoord, (object, eye, normal)),
     }
 }
 
@@ -452,7 +452,14 @@ pub fn pixel_terms<'a>(
     textures: impl Into<units::DrawTextures<'a>>,
 ) -> PixelTerms {
     let textures = textures.into();
-    let v = tri.map(|t| transform_with(state, modelview, projection, t, textures.mesh_texcoords));
+    let v: [EyeVertex; 3] = std::array::from_fn(|k| {
+        let sources = units::CoordSources {
+            mesh: textures.mesh_texcoords,
+            second: textures.second_texcoords,
+            second_st: textures.triangle_second[k],
+        };
+        transform_with(state, modelview, projection, tri[k], sources)
+    });
     let back = !cov.front;
     let at = |w: DVec3, f: &dyn Fn(&EyeVertex) -> DVec4| f(&v[0]) * w.x + f(&v[1]) * w.y + f(&v[2]) * w.z;
     let w = cov.weights;

@@ -130,6 +130,7 @@ fn why_not(t: &MeshTexture) -> String {
 fn coords(i: usize, t: &MeshTexture) -> String {
     let source = match t.coords {
         TexCoords::Mesh => "the mesh's (s, t, 0, 1)".to_string(),
+        TexCoords::MeshSecond => "the mesh's second set (s, t, 0, 1)".to_string(),
         TexCoords::Current(c) => format!("current {}", rgba(c.as_dvec4())),
         _ => "the mesh's".to_string(),
     };

@@ -219,7 +219,7 @@ pub fn reference_at(
         scene.projection,
         tri,
         hit.coverage,
-        mesh.draw_textures(),
+        mesh.draw_textures().for_triangle(&mesh.data, hit.vertices),
     );
     Some((hit, color))
 }

@@ -16,8 +16,9 @@ pub type BoundCube<'a> = (&'a CubeImage, &'a Sampling);
 
 /// What a draw binds for texturing, as the CPU reference reads it: each unit's 2D texture and
 /// cube map, and the units 1-3 whose coordinates are the mesh's (a bit each, as
-/// [`Draw::mesh_texcoords`](crate::Draw::mesh_texcoords) takes them). `Option<Bound>` converts
-/// to unit 0's texture alone.
+/// [`Draw::mesh_texcoords`](crate::Draw::mesh_texcoords) takes them) or the mesh's second set
+/// ([`Draw::second_texcoords`](crate::Draw::second_texcoords)), with the triangle's second
+/// coordinates. `Option<Bound>` converts to unit 0's texture alone.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct DrawTextures<'a> {
     /// Each unit's `GL_TEXTURE_2D` texture.
@@ -27,6 +28,12 @@ pub struct DrawTextures<'a> {
     /// Bits 1-3: the units whose coordinates are the mesh's; the others take the state's
     /// current coordinates. Unit 0's are always the mesh's.
     pub mesh_texcoords: u32,
+    /// Bits 1-3: the units whose coordinates are the mesh's second set (a unit in both masks
+    /// takes the second set).
+    pub second_texcoords: u32,
+    /// The second set's (s, t) at the triangle's three vertices, in the triangle's order
+    /// ([`DrawTextures::for_triangle`]).
+    pub triangle_second: [[f32; 2]; 3],
 }
 
 impl<'a> From<Option<Bound<'a>>> for DrawTextures<'a> {
@@ -41,6 +48,20 @@ impl<'a> From<Option<Bound<'a>>> for DrawTextures<'a> {
 }
 
 impl DrawTextures<'_> {
+    /// These textures drawn on the triangle of `mesh`'s vertices `vertices`: its second
+    /// coordinates read from the mesh's second set where it has one.
+    #[must_use]
+    pub fn for_triangle(mut self, mesh: &crate::mesh::MeshData, vertices: [usize; 3]) -> Self {
+        if let Some(st) = vertices
+            .iter()
+            .map(|&i| mesh.second_texcoords.get(i).copied())
+            .collect::<Option<Vec<_>>>()
+        {
+            self.triangle_second = [st[0], st[1], st[2]];
+        }
+        self
+    }
+
     /// (sampled, applied, sampled as cube maps), a bit per unit, for `state`: a texture counts
     /// as bound when it is complete for its min filter (§3.8.10).
     pub fn units_applied(&self, state: &FixedFunctionState) -> (u32, u32, u32) {
@@ -60,21 +81,35 @@ impl DrawTextures<'_> {
     }
 }
 
-/// A vertex's (s, t, r, q) on every unit, not yet divided by q: the source (the mesh's (s, t,
-/// 0, 1) on unit 0 and on the units `mesh_texcoords` names, else the unit's current
-/// coordinates), each coordinate whose generation is on replaced
-/// ([`generated_coords`](super::texture::generated_coords)), through the unit's texture
-/// matrix. `p_o`, `p_e` and `n_f` as `generated_coords` takes them.
+/// Where one vertex's texture coordinates come from on units 1-3: the units reading the
+/// mesh's coordinates and its second set (a bit each), and the vertex's second (s, t).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct CoordSources {
+    /// The units whose coordinates are the vertex's (s, t).
+    pub mesh: u32,
+    /// The units whose coordinates are the vertex's second (s, t).
+    pub second: u32,
+    /// The vertex's second (s, t).
+    pub second_st: [f32; 2],
+}
+
+/// A vertex's (s, t, r, q) on every unit, not yet divided by q: the source (the vertex's (s,
+/// t, 0, 1) on unit 0 and on the units `sources.mesh` names, its second (s, t, 0, 1) on those
+/// `sources.second` names, else the unit's current coordinates), each coordinate whose
+/// generation is on replaced ([`generated_coords`](super::texture::generated_coords)), through
+/// the unit's texture matrix. `p_o`, `p_e` and `n_f` as `generated_coords` takes them.
 pub fn unit_texcoords(
     state: &FixedFunctionState,
-    mesh_texcoords: u32,
+    sources: CoordSources,
     st: [f32; 2],
     (p_o, p_e, n_f): (DVec4, DVec4, DVec3),
 ) -> [DVec4; MAX_TEXTURE_UNITS] {
-    let mesh = DVec4::new(f64::from(st[0]), f64::from(st[1]), 0.0, 1.0);
+    let homogeneous = |st: [f32; 2]| DVec4::new(f64::from(st[0]), f64::from(st[1]), 0.0, 1.0);
     std::array::from_fn(|i| {
-        let source = if i == 0 || mesh_texcoords & 1 << i != 0 {
-            mesh
+        let source = if i > 0 && sources.second & 1 << i != 0 {
+            homogeneous(sources.second_st)
+        } else if i == 0 || sources.mesh & 1 << i != 0 {
+            homogeneous(st)
         } else {
             state.current_texcoords[i].as_dvec4()
         };

@@ -516,6 +516,8 @@ impl SceneMesh {
                 Some((&**t.cube_map.as_ref()?, &t.sampling))
             }),
             mesh_texcoords: self.mesh_texcoords(),
+            second_texcoords: self.second_texcoords(),
+            triangle_second: [[0.0; 2]; 3],
         }
     }
 
