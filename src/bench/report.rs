@@ -599,8 +599,10 @@ Times are per frame in ms: the median, then the interquartile range; ffvk's from
 | 1 clip plane | 0.98 | 1.10 | 1.23 | 1.10 | 1.33 | 1.10 | 1.67 | 1.10 | 0.24 | 1.10 | 0.19 | 1.10 | 1.47 | 1.10 | 0.29 | 1.10 | 0.67 |
 | 6 clip planes | 0.98 | 1.10 | 1.23 | 1.10 | 1.33 | 1.10 | 1.67 | 1.10 | 0.24 | 1.10 | 0.19 | 1.10 | 1.47 | 1.10 | 0.29 | 1.10 | 0.67 |
 | all of them | 1.16 | 1.30 | 1.45 | 1.30 | 1.57 | 1.30 | 1.97 | 1.30 | 0.29 | 1.30 | 0.23 | 1.30 | 1.74 | 1.30 | 0.34 | 1.30 | 0.67 |
+| 1 texture unit, GL_MODULATE | 0.98 | 1.10 | 1.23 | 1.10 | 1.33 | 1.10 | 1.67 | 1.10 | 0.24 | 1.10 | 0.19 | 1.10 | 1.47 | 1.10 | 0.29 | 1.10 | 0.67 |
+| 4 units: + GL_COMBINE, sphere map, cube map | 0.98 | 1.10 | 1.23 | 1.10 | 1.33 | 1.10 | 1.67 | 1.10 | 0.24 | 1.10 | 0.19 | 1.10 | 1.47 | 1.10 | 0.29 | 1.10 | 0.67 |
 
-Each stage alone, then all together, on the light sweeps' sphere; "÷ none" is the time over the same column's frame without stages. The alpha test passes every fragment and the clip planes cut nothing, so each row costs the stage's work and draws the pixels of the row "none"; lit draws always sum the secondary color, so GL_COLOR_SUM changes only the unlit column.
+Each stage alone, then all together, on the light sweeps' sphere; "÷ none" is the time over the same column's frame without stages. The alpha test passes every fragment and the clip planes cut nothing, so each row costs the stage's work and draws the pixels of the row "none"; lit draws always sum the secondary color, so GL_COLOR_SUM changes only the unlit column. The texturing rows bind 64² textures, linear, no mipmaps: one unit modulated; then four, the second a light map through GL_COMBINE (MODULATE × 2), the third sphere-mapped, the fourth a 16² cube map by GL_REFLECTION_MAP, added.
 
 ### Fragment lighting on a dense mesh (91 vertices, 2 directional lights)
 
