@@ -261,7 +261,10 @@ fn compile(
         // structs into locals ("OpStore Pointer type does not match"). The driver optimizes
         // the SPIR-V itself (Mesa's NIR), so nothing is lost at run time.
         .arg("-O0")
-        .arg("-Werror");
+        .arg("-Werror")
+        // The shader library's files (`glsl/lib/ffvk/`), included as "ffvk/....glsl".
+        .arg("-I")
+        .arg(source.parent().unwrap_or(Path::new(".")).join("lib"));
     for (name, value) in defines {
         command.arg(format!("-D{name}={value}"));
     }

@@ -28,8 +28,9 @@ layout(std430, set = 1, binding = 5) buffer Evaluations {
 layout(location = 0) out vec4 out_color;
 
 // A zero the compiler cannot prove zero (fragments lie inside the framebuffer, at x >= 0).
-#define HIDDEN_ZERO uint(gl_FragCoord.x < 0.0)
-#include "lighting.glsl"
+#define FFVK_HIDDEN_ZERO uint(gl_FragCoord.x < 0.0)
+#include "draw.glsl"
+#include "ffvk/lighting.glsl"
 
 void main() {
     ivec2 at = ivec2(gl_FragCoord.xy);

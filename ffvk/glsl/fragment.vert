@@ -59,10 +59,10 @@ layout(location = VERTEX_INDEX_LOCATION) flat out uint vertex_index;
 
 // A zero the compiler cannot prove zero (valid draws have no negative vertex index): the
 // uber-shader's switches pass through it (draw.glsl, uber_value).
-#define HIDDEN_ZERO uint(gl_VertexIndex < 0)
+#define FFVK_HIDDEN_ZERO uint(gl_VertexIndex < 0)
 #include "record.glsl"
 #ifdef TEXTURE
-#include "texgen.glsl"
+#include "ffvk/texgen.glsl"
 #endif
 
 void main() {

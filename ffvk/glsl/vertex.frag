@@ -19,10 +19,11 @@ layout(location = 0) out vec4 out_color;
 
 // A zero the compiler cannot prove zero (fragments lie inside the framebuffer, at x >= 0):
 // the uber-shader's switches pass through it (draw.glsl, uber_value).
-#define HIDDEN_ZERO uint(gl_FragCoord.x < 0.0)
-#include "lighting.glsl"
+#define FFVK_HIDDEN_ZERO uint(gl_FragCoord.x < 0.0)
+#include "draw.glsl"
+#include "ffvk/lighting.glsl"
 #ifdef TEXTURE
-#include "texture.glsl"
+#include "units.glsl"
 layout(location = 4) in vec4 stq;
 layout(location = 8) in vec4 unit_stq[MAX_TEXTURE_UNITS - 1];  // units 1-3's
 #endif

@@ -54,11 +54,12 @@ layout(location = VERTEX_INDEX_LOCATION) flat out uint vertex_index;
 
 // A zero the compiler cannot prove zero (valid draws have no negative vertex index): the
 // uber-shader's switches pass through it (draw.glsl, uber_value).
-#define HIDDEN_ZERO uint(gl_VertexIndex < 0)
-#include "lighting.glsl"
+#define FFVK_HIDDEN_ZERO uint(gl_VertexIndex < 0)
+#include "draw.glsl"
+#include "ffvk/lighting.glsl"
 #include "record.glsl"
 #ifdef TEXTURE
-#include "texgen.glsl"
+#include "ffvk/texgen.glsl"
 #endif
 
 void main() {

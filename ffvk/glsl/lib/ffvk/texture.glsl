@@ -1,21 +1,15 @@
-// Texture application (GL 2.1 section 3.13) for the TEXTURE variants: the texel at the
+// ffvk's shader library: texture application (GL 2.1 sections 3.8.13-3.8.16): the texel at the
 // fragment's (s/q, t/q), combined with the primary color by the texture environment, before
 // the color sum adds the secondary color (section 3.9). The CPU reference's copy is
-// src/reference/texture.rs.
+// ffvk/src/reference/texture.rs.
 #ifndef FFVK_TEXTURE_GLSL
 #define FFVK_TEXTURE_GLSL
 
-#include "draw.glsl"
+#include "ffvk/switches.glsl"
 
-// The units' textures: unit i's GL_TEXTURE_2D image and its parameters (a VkSampler made from
-// glTexParameter's values) in element i. Set 1 is moved to the set after the State block's at
-// pipeline creation; a unit a draw does not sample holds another of its textures.
-layout(set = 1, binding = 0) uniform sampler2D unit_2d[MAX_TEXTURE_UNITS];
-// The same binding read as cube maps: element i holds unit i's GL_TEXTURE_CUBE_MAP (a cube
-// view of its six faces in GL's order) instead of its 2D texture where SPEC_TEXTURE_UNITS says
-// the unit samples its cube map (GL_TEXTURE_CUBE_MAP's precedence); the shader reads each
-// element through the one of the two arrays its view's type matches.
-layout(set = 1, binding = 0) uniform samplerCube unit_cube[MAX_TEXTURE_UNITS];
+// The units' texels come from the caller: FFVK_TEXEL_2D(i, st) is unit i's 2D texture filtered
+// at (s, t), FFVK_TEXEL_CUBE(i, str) its cube map in the direction (s, t, r), each an RGBA
+// vec4 (texture() on the caller's samplers; i is a constant once the unit loops unroll).
 
 // Values of a unit's env_mode (GL_TEXTURE_ENV_MODE), mirrored by TexEnvMode::code.
 #define TEV_MODULATE 0u
@@ -44,15 +38,15 @@ layout(set = 1, binding = 0) uniform samplerCube unit_cube[MAX_TEXTURE_UNITS];
 
 uint combine_bits(uint i) {
     int c = unit_constant(i, SPEC_COMBINE, SPEC_COMBINE_1, SPEC_COMBINE_2, SPEC_COMBINE_3);
-    return c < 0 ? uber_value(state.units[i].combine) : uint(c);
+    return c < 0 ? uber_value(FFVK_STATE.units[i].combine) : uint(c);
 }
 uint crossbar_bits(uint i) {
     int c = unit_constant(i, SPEC_CROSSBAR, SPEC_CROSSBAR_1, SPEC_CROSSBAR_2, SPEC_CROSSBAR_3);
-    return c < 0 ? uber_value(state.units[i].crossbar) : uint(c);
+    return c < 0 ? uber_value(FFVK_STATE.units[i].crossbar) : uint(c);
 }
 uint tex_env_mode(uint i) {
     int c = unit_constant(i, SPEC_TEX_ENV, SPEC_TEX_ENV_1, SPEC_TEX_ENV_2, SPEC_TEX_ENV_3);
-    return c < 0 ? uber_value(state.units[i].env_mode) : uint(c);
+    return c < 0 ? uber_value(FFVK_STATE.units[i].env_mode) : uint(c);
 }
 
 // The inputs of unit i: C_f the fragment's primary color (GL_PRIMARY_COLOR), C_p the previous
@@ -67,7 +61,7 @@ struct UnitInputs {
 vec4 combine_source(uint i, uint source, uint unit, UnitInputs v) {
     if (unit != 0u) return v.C_s[unit - 1u];
     if (source == SOURCE_TEXTURE) return v.C_s[i];
-    if (source == SOURCE_CONSTANT) return state.units[i].c_c;
+    if (source == SOURCE_CONSTANT) return FFVK_STATE.units[i].c_c;
     return source == SOURCE_PRIMARY_COLOR ? v.C_f : v.C_p;
 }
 
@@ -138,7 +132,7 @@ vec4 format_texel(uint f, vec4 c) {
 vec4 texture_environment(uint i, UnitInputs v) {
     vec4 C_p = v.C_p;
     vec4 C_s = v.C_s[i];
-    vec4 c_c = state.units[i].c_c;
+    vec4 c_c = FFVK_STATE.units[i].c_c;
     uint f = unit_format(i);
     bool color = f != FORMAT_ALPHA;
     bool alpha = f == FORMAT_ALPHA || f == FORMAT_LUMINANCE_ALPHA || f == FORMAT_RGBA || f == FORMAT_INTENSITY;
@@ -181,8 +175,8 @@ vec4 sprite_or(uint i, vec4 stq) {
 // its largest component points at, q not read).
 vec4 texel_at(uint i, vec4 stq) {
     vec4 c = sprite_or(i, stq);
-    if (unit_is_cube(i)) return format_texel(unit_format(i), texture(unit_cube[i], c.xyz));
-    return format_texel(unit_format(i), texture(unit_2d[i], c.xy / c.w));
+    if (unit_is_cube(i)) return format_texel(unit_format(i), FFVK_TEXEL_CUBE(i, c.xyz));
+    return format_texel(unit_format(i), FFVK_TEXEL_2D(i, c.xy / c.w));
 }
 
 // Section 3.8.16: the applied units in order, each on the one before's result, from the

@@ -1,9 +1,10 @@
-// The GL 2.1 lighting equation, section 2.14.1, term for term. Included by every stage
-// that lights; the CPU reference (src/reference.rs) is its only other copy.
+// ffvk's shader library: the GL 2.1 lighting equation, section 2.14.1, term for term, and the
+// color sum (section 3.9). ffvk's own pipelines include it; the CPU reference
+// (ffvk/src/reference.rs) is its only other copy.
 #ifndef FFVK_LIGHTING_GLSL
 #define FFVK_LIGHTING_GLSL
 
-#include "draw.glsl"
+#include "ffvk/switches.glsl"
 
 struct LitColor {
     vec4 c_pri;
@@ -103,7 +104,7 @@ float specular_phong_reflect(vec3 n, vec3 VP_pli, vec3 v, float s_rm) {
 void light_term(uint i, vec4 V, vec3 n, Material m, vec3 VPe, inout vec3 c_pri, inout vec3 c_sec) {
     // Read in place: glslang 12 copies a whole std140 struct with an OpStore that SPIR-V
     // validation rejects (block layout and function layout differ).
-#define L state.lights[i]
+#define L FFVK_STATE.lights[i]
 
     // Where the pipeline promises directional lights and finite vertices, VP_pli and (for the
     // infinite viewer) ĥ_i are the same at every vertex: GL's derived state, computed on the
@@ -167,7 +168,7 @@ LitColor light_equation(vec4 V, vec3 n, Material m) {
     const vec4 Pe = vec4(0.0, 0.0, 0.0, 1.0);
     vec3 VPe = unit_from_to(V, Pe);
 
-    vec3 c_pri = m.e_cm.rgb + m.a_cm.rgb * state.a_cs.rgb;
+    vec3 c_pri = m.e_cm.rgb + m.a_cm.rgb * FFVK_STATE.a_cs.rgb;
     vec3 c_sec = vec3(0.0);
 
     // The light count: SPEC_LIGHT_COUNT when the pipeline is specialized, else the uniform
@@ -180,7 +181,7 @@ LitColor light_equation(vec4 V, vec3 n, Material m) {
             light_term(uint(i), V, n, m, VPe, c_pri, c_sec);
         }
     } else {
-        for (uint i = 0u; i < uber_value(state.light_count); i++) {
+        for (uint i = 0u; i < uber_value(FFVK_STATE.light_count); i++) {
             light_term(i, V, n, m, VPe, c_pri, c_sec);
         }
     }

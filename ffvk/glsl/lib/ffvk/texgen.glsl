@@ -1,12 +1,12 @@
-// Texture coordinate generation (GL 2.1 §2.11.4) in the vertex stages of the TEXTURE builds:
+// ffvk's shader library: texture coordinate generation (GL 2.1 §2.11.4), in vertex stages:
 // each coordinate whose GL_TEXTURE_GEN_S (_T, _R, _Q) is on is replaced, before the texture
 // matrix, by the value its GL_TEXTURE_GEN_MODE makes of the vertex. Evaluated per vertex in every
-// lighting mode, as GL does. The CPU reference's copy is src/reference/texture.rs
+// lighting mode, as GL does. The CPU reference's copy is ffvk/src/reference/texture.rs
 // (generated_coords).
 #ifndef FFVK_TEXGEN_GLSL
 #define FFVK_TEXGEN_GLSL
 
-#include "draw.glsl"
+#include "ffvk/switches.glsl"
 
 // Values of each coordinate's 3 bits of a unit's SPEC_TEXGEN and texgen, S in bits 0-2, T 3-5,
 // R 6-8, Q 9-11; mirrored by TexGenMode::code.
@@ -19,7 +19,7 @@
 
 uint texgen_modes(uint unit) {
     int c = unit_constant(unit, SPEC_TEXGEN, SPEC_TEXGEN_1, SPEC_TEXGEN_2, SPEC_TEXGEN_3);
-    return c < 0 ? uber_value(state.units[unit].texgen) : uint(c);
+    return c < 0 ? uber_value(FFVK_STATE.units[unit].texgen) : uint(c);
 }
 
 // Whether some coordinate of a sampled unit reads the eye-space normal (sphere, reflection,
@@ -52,7 +52,7 @@ vec4 generated_coords(uint unit, vec4 c, vec4 p_o, vec4 p_e, vec3 n_f) {
     vec4 g = c;
     [[unroll]] for (uint i = 0u; i < 4u; i++) {
         uint mode = (modes >> (3u * i)) & 7u;
-        vec4 plane = state.units[unit].texgen_planes[i];
+        vec4 plane = FFVK_STATE.units[unit].texgen_planes[i];
         if (mode == TEXGEN_OBJECT_LINEAR) g[i] = dot(plane, p_o);
         else if (mode == TEXGEN_EYE_LINEAR) g[i] = dot(plane, p_e);
         else if (mode == TEXGEN_SPHERE_MAP) g[i] = sphere[i];
@@ -67,7 +67,7 @@ vec4 generated_coords(uint unit, vec4 c, vec4 p_o, vec4 p_e, vec3 n_f) {
 // left unwritten (their varyings are never read).
 void unit_coords(vec4 c[MAX_TEXTURE_UNITS], vec4 p_o, vec4 p_e, vec3 n_f, out vec4 stq[MAX_TEXTURE_UNITS]) {
     [[unroll]] for (uint i = 0u; i < MAX_TEXTURE_UNITS; i++) {
-        if (unit_sampled(i)) stq[i] = state.units[i].matrix * generated_coords(i, c[i], p_o, p_e, n_f);
+        if (unit_sampled(i)) stq[i] = FFVK_STATE.units[i].matrix * generated_coords(i, c[i], p_o, p_e, n_f);
     }
 }
 
