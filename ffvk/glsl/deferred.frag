@@ -55,8 +55,8 @@ void main() {
     } else {
         vec3 n = normal.xyz;
         bool back_face = two_side() && normal.w < 0.0;
-        lit = back_face ? light_equation(eye_position, -n, face_material(true, color))
-                        : light_equation(eye_position, n, face_material(false, color));
+        lit = back_face ? light_equation(eye_position, -n, face_material(draw_front, draw_back, true, color))
+                        : light_equation(eye_position, n, face_material(draw_front, draw_back, false, color));
     }
     out_color = color_sum(lit);
 }

@@ -99,8 +99,8 @@ void main() {
     } else {
         vec3 n = unit(normal.xyz) * normal.w;
         bool back_face = two_side() && !FRONT_FACING;
-        lit = back_face ? light_equation(eye_position, -n, face_material(true, color))
-                        : light_equation(eye_position, n, face_material(false, color));
+        lit = back_face ? light_equation(eye_position, -n, face_material(draw_front, draw_back, true, color))
+                        : light_equation(eye_position, n, face_material(draw_front, draw_back, false, color));
     }
 #ifdef TEXTURE
     // After lighting, before the color sum: the secondary color is not textured.

@@ -8,6 +8,7 @@
 #define FFVK_RECORD_GLSL
 
 #include "draw.glsl"
+#include "ffvk/normal.glsl"
 
 layout(location = 4) in mat4 in_modelview;        // M (locations 4-7)
 layout(location = 8) in vec4 in_normal_matrix_0;  // (M^-1)^T column 0; w: front SHININESS
@@ -58,16 +59,10 @@ vec4 unlit_secondary() {
     return color_sum_enabled() ? vec4(clamp(c.rgb, 0.0, 1.0), 1.0) : vec4(0.0, 0.0, 0.0, 1.0);
 }
 
-// Section 2.11.3: n = (M^-1)^T n_object, then RESCALE_NORMAL, then NORMALIZE.
-// A zero normal stays zero instead of becoming NaN.
+// Section 2.11.3 with the record's normal matrix and rescale factor (lib/ffvk/normal.glsl).
 vec3 eye_normal(vec3 n_object) {
     mat3 normal_matrix = mat3(in_normal_matrix_0.xyz, in_normal_matrix_1.xyz, in_normal_matrix_2.xyz);
-    vec3 n = normal_matrix * n_object;
-    n *= in_normal_matrix_2.w;
-    // A select on the uniform switch, not an if (see face_material).
-    float len = length(n);
-    vec3 unit_n = len > 0.0 ? n / len : vec3(0.0);
-    return state.normalize != 0u ? unit_n : n;
+    return eye_normal(normal_matrix, in_normal_matrix_2.w, n_object);
 }
 
 #endif

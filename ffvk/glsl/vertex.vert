@@ -98,12 +98,12 @@ void main() {
     }
     load_record();
     vec3 n = eye_normal(vertex_normal(in_normal));
-    LitColor front = light_equation(V, n, face_material(false, c));
+    LitColor front = light_equation(V, n, face_material(draw_front, draw_back, false, c));
     front_pri = front.c_pri;
     front_sec = front.c_sec;
     if (two_side()) {
         // Two-sided: the back color uses the back material and -n.
-        LitColor back = light_equation(V, -n, face_material(true, c));
+        LitColor back = light_equation(V, -n, face_material(draw_front, draw_back, true, c));
         back_pri = back.c_pri;
         back_sec = back.c_sec;
     } else {

@@ -78,6 +78,7 @@ pub mod reference;
 pub mod renderer;
 #[cfg(feature = "scene")]
 pub mod scene;
+pub mod shaders;
 pub mod vk;
 
 /// The `ash` ffvk is built with: its Vulkan types are part of ffvk's API ([`Target`],

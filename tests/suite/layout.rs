@@ -20,6 +20,8 @@ const DECORATION_SPEC_ID: u32 = 1;
 const DECORATION_ARRAY_STRIDE: u32 = 6;
 const DECORATION_OFFSET: u32 = 35;
 const DECORATION_LOCATION: u32 = 30;
+const DECORATION_BINDING: u32 = 33;
+const DECORATION_DESCRIPTOR_SET: u32 = 34;
 
 /// What a test needs of a module: struct names, member names and offsets, array strides.
 #[derive(Default)]
@@ -36,6 +38,8 @@ struct Reflection {
     spec_defaults: HashMap<u32, u32>,
     /// Location decorations: result id to location.
     locations: HashMap<u32, u32>,
+    /// DescriptorSet and Binding decorations: result id to (set, binding).
+    bindings: HashMap<u32, (Option<u32>, Option<u32>)>,
 }
 
 fn string(words: &[u32]) -> String {
@@ -73,6 +77,12 @@ fn reflect(spirv: &[u8]) -> Reflection {
             }
             OP_DECORATE if ins[1] == DECORATION_LOCATION => {
                 r.locations.insert(ins[0], ins[2]);
+            }
+            OP_DECORATE if ins[1] == DECORATION_DESCRIPTOR_SET => {
+                r.bindings.entry(ins[0]).or_default().0 = Some(ins[2]);
+            }
+            OP_DECORATE if ins[1] == DECORATION_BINDING => {
+                r.bindings.entry(ins[0]).or_default().1 = Some(ins[2]);
             }
             OP_DECORATE if ins[1] == DECORATION_SPEC_ID => {
                 r.spec_ids.insert(ins[0], ins[2]);
@@ -179,8 +189,15 @@ macro_rules! rust_offsets {
 #[test]
 fn the_state_block_matches_the_glsl_in_every_stage() {
     for (stage, spirv) in stages().into_iter().filter(|(s, _)| !full_screen(s)) {
-        let r = reflect(spirv);
-        let block = r.struct_id("State");
+        check_state_block(&reflect(spirv), "State", &stage);
+    }
+}
+
+/// The block struct `name` of `r` has `StateBlock`'s members at `StateBlock`'s offsets, with
+/// its lights and texture units laid out as `GpuLight` and `GpuTextureUnit` are.
+fn check_state_block(r: &Reflection, name: &str, stage: &str) {
+    {
+        let block = r.struct_id(name);
         let want = rust_offsets!(StateBlock: projection, a_cs, light_count, lighting,
             v_bs, t_bs, separate_specular, color_material, color_material_front, color_material_back,
             color_material_mode, normalize, specular_model, color_sum, alpha_func, alpha_ref,
@@ -425,4 +442,87 @@ fn the_readme_states_the_block_and_record_sizes_and_the_constant_ids_the_code_ha
     assert!(readme.contains(&record), "README.md should say \"{record}\"");
     let ids = format!("constant_id 0-{}", SPEC_CONSTANT_COUNT - 1);
     assert!(readme.contains(&ids), "README.md should say \"{ids}\"");
+}
+
+/// A shader of a caller's own that includes the shader library (through `shaders::resolve`, as
+/// a compiler without `#include` takes it), its state block at the set and binding it chooses
+/// and the library's constants from ID 100, beside a constant of its own at ID 0: the block's
+/// members sit where `StateBlock` puts them, and each library constant's ID is its
+/// `SpecConstant`'s plus the base.
+#[test]
+fn a_callers_shader_places_the_librarys_block_and_constants_where_it_chooses() {
+    let source = r#"#version 450
+#extension GL_EXT_control_flow_attributes : require
+#define FFVK_SPEC_BASE 100
+#include "ffvk/state.glsl"
+layout(std140, set = 3, binding = 1) uniform FfvkState { FFVK_STATE_MEMBERS } ffvk_state;
+#define FFVK_STATE ffvk_state
+#define FFVK_HIDDEN_ZERO uint(gl_FragCoord.x < 0.0)
+layout(constant_id = 0) const int MY_OWN = 7;
+#include "ffvk/lighting.glsl"
+#include "ffvk/material.glsl"
+#include "ffvk/stages.glsl"
+layout(location = 0) in vec4 eye;
+layout(location = 1) in vec3 normal;
+layout(location = 2) in vec4 color;
+layout(location = 3) flat in vec4 material[5];
+layout(location = 0) out vec4 out_color;
+void main() {
+    Material m = Material(material[0], material[1], material[2], material[3], material[4].x);
+    Material face = face_material(m, m, !gl_FrontFacing, color);
+    LitColor lit = light_equation(eye, normalize(normal), face);
+    out_color = apply_fog(color_sum(lit), abs(eye.z)) * float(MY_OWN);
+    if (!alpha_passes(out_color.a)) discard;
+}
+"#;
+    let resolved = ffvk::shaders::resolve(source).unwrap();
+    let dir = crate::support::output_dir().join("shader_library");
+    std::fs::create_dir_all(&dir).unwrap();
+    let (glsl, spv) = (dir.join("caller.frag"), dir.join("caller.frag.spv"));
+    std::fs::write(&glsl, &resolved).unwrap();
+    let glslc = std::env::var_os("GLSLC").unwrap_or_else(|| "glslc".into());
+    let out = std::process::Command::new(glslc)
+        .args([
+            "-fshader-stage=frag",
+            "--target-env=vulkan1.3",
+            "-O0",
+            "-Werror",
+            "-o",
+        ])
+        .arg(&spv)
+        .arg(&glsl)
+        .output()
+        .expect("glslc runs (the build needs it too)");
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let r = reflect(&std::fs::read(&spv).unwrap());
+    check_state_block(&r, "FfvkState", "the caller's shader");
+    let variable = r
+        .names
+        .iter()
+        .find(|(_, n)| *n == "ffvk_state")
+        .map(|(id, _)| *id)
+        .unwrap();
+    assert_eq!(
+        r.bindings[&variable],
+        (Some(3), Some(1)),
+        "the block's set and binding"
+    );
+    let mut library = 0;
+    for (&id, &spec_id) in &r.spec_ids {
+        let name = r.names[&id].as_str();
+        if name == "MY_OWN" {
+            assert_eq!(spec_id, 0);
+            continue;
+        }
+        let constant = SpecConstant::ALL
+            .into_iter()
+            .find(|c| c.glsl_name() == name)
+            .unwrap();
+        assert_eq!(spec_id, 100 + constant.id(), "SpecId of {name}");
+        library += 1;
+    }
+    assert!(
+        library >= 20,
+        "only {library} of the library's constants were declared"
+    );
 }

@@ -4,9 +4,11 @@
 
 #include "ffvk/switches.glsl"
 
-// The material of one face, with COLOR_MATERIAL applied for the current color c.
-Material face_material(bool back_face, vec4 c) {
-    Material m = back_face ? draw_back : draw_front;
+// The material of one face (the back face's where back_face is true), with COLOR_MATERIAL
+// applied for the current color c: `front` and `back` are the draw's materials, wherever the
+// caller keeps them (a draw record, uniforms, vertex attributes).
+Material face_material(Material front, Material back, bool back_face, vec4 c) {
+    Material m = back_face ? back : front;
     if (color_material_enabled()) {
         // Selects rather than ifs on the face and mode, which are uniform values: lavapipe
         // compiles a shader variant per draw for an if on uniform values alone (see

@@ -82,9 +82,6 @@ float clip_distance(uint i, vec4 V) {
     return on ? dot(FFVK_STATE.clip_planes[i], V) : 1.0;
 }
 
-uint specular_model() {
-    return SPEC_SPECULAR_MODEL < 0 ? uber_value(FFVK_STATE.specular_model) : uint(SPEC_SPECULAR_MODEL);
-}
 
 
 #endif

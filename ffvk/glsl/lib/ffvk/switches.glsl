@@ -78,4 +78,8 @@ bool color_sum_enabled() {
 }
 
 
+uint specular_model() {
+    return SPEC_SPECULAR_MODEL < 0 ? uber_value(FFVK_STATE.specular_model) : uint(SPEC_SPECULAR_MODEL);
+}
+
 #endif
