@@ -774,3 +774,41 @@ fn explain_on_a_unit_whose_coordinates_are_infinite_after_the_divide_by_q_does_n
         }
     }
 }
+
+/// `--max-texture-mib` bounds a scene file's own images as it bounds a glTF file's: each
+/// unit's `image` and each cube map face is charged (RGBA8 with its mipmaps, from the file's
+/// header) before it is decoded, so that a small PNG of a large, flat image named by many
+/// units and faces cannot take the host's memory.
+#[test]
+fn a_scene_files_images_and_cube_faces_count_against_the_texture_memory_limit() {
+    let dir = scratch("texture-budget");
+    image::RgbaImage::from_pixel(64, 64, image::Rgba([200, 120, 40, 255]))
+        .save(dir.join("flat.png"))
+        .unwrap();
+    let faces = ["\"flat.png\""; 6].join(", ");
+    let text = format!(
+        "[[meshes]]\nbuiltin = \"sphere\"\nlevel = 4\n\
+         texture_units = [{{ image = \"flat.png\" }}, {{ cube_map = {{ faces = [{faces}] }} }}]\n"
+    );
+    let path = dir.join("budget.toml");
+    std::fs::write(&path, &text).unwrap();
+    // A 64² image takes 21,844 bytes with its mipmaps: seven of them are the scene's.
+    let one = 4 * (64 * 64 + 32 * 32 + 16 * 16 + 8 * 8 + 4 * 4 + 2 * 2 + 1);
+    let fits = Limits::default().with_texture_bytes(7 * one);
+    Scene::load_with(&path, &fits).expect("seven images within the limit");
+    let four = Limits::default().with_texture_bytes(4 * one + 100);
+    let e = Scene::load_with(&path, &four)
+        .expect_err("the fifth image passes the limit")
+        .to_string();
+    for part in [
+        "budget.toml",
+        "meshes[0].texture_units[1].cube_map.faces[3]",
+        "flat.png",
+        "64x64",
+        &format!("{one} bytes"),
+        &format!("{} bytes of the textures before", 4 * one),
+        "--max-texture-mib",
+    ] {
+        assert!(e.contains(part), "{e:?} lacks {part:?}");
+    }
+}

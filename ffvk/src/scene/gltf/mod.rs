@@ -37,6 +37,7 @@ pub use cameras::{CameraProjection, PlacedCamera};
 pub use external::external_files;
 pub use lights::{exact_light, gl_light, spot_exponent, GltfLights, LightKind, PunctualLight};
 pub use materials::{gl_material, PbrMaterial};
+pub(in crate::scene) use textures::mipmapped_bytes;
 pub use textures::{SampledTexture, TextureMean, Textures};
 
 use crate::mesh::MeshData;
