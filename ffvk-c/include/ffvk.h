@@ -2853,7 +2853,9 @@ enum FfvkResult ffvkBeginDraws(struct FfvkRenderer *renderer, VkCommandBuffer cm
  `renderer` and `ctx` are null or live and used by this thread only; `draw` is null or
  points at the `struct_size` bytes of a draw info as the caller's header declares it; its
  buffers are the caller's live buffers of the renderer's device, and its textures are null
- or live until `ffvkEndDraws` returns.
+ or live during this call. `ffvkDraw` copies what each texture names, so a texture may be
+ destroyed as soon as it returns (`ffvkEndDraws` records the copy); the view and sampler it
+ names stay alive until the command buffer has executed.
  */
 enum FfvkResult ffvkDraw(struct FfvkRenderer *renderer,
                          const struct FfvkContext *ctx,
@@ -2873,8 +2875,9 @@ enum FfvkResult ffvkDraw(struct FfvkRenderer *renderer,
  # Safety
 
  `renderer` is null or live and used by one thread at a time; the scope's command buffer is
- recording as `ffvkBeginDraws` requires; the draws' buffers and textures are live and stay
- so until the command buffer has executed.
+ recording as `ffvkBeginDraws` requires; the draws' buffers, and the image views and samplers
+ their textures name, are live and stay so until the command buffer has executed (the
+ `FfvkTexture` objects themselves are not read again: `ffvkDraw` copied them).
  */
 enum FfvkResult ffvkEndDraws(struct FfvkRenderer *renderer);
 
@@ -3034,8 +3037,10 @@ enum FfvkResult ffvkCreateCubeMapWithFormat(struct FfvkRenderer *renderer,
                                             struct FfvkTexture **cube_map);
 
 /*
- Frees a texture or cube map binding; null is ignored. The caller first makes sure no
- submitted command buffer still uses it. The view and sampler it names stay the caller's.
+ Frees a texture or cube map binding; null is ignored. It may be freed as soon as the last
+ `ffvkDraw` that names it has returned, inside an open scope too: `ffvkDraw` copies what it
+ names, and the binding is no Vulkan object. The view and sampler it names stay the
+ caller's, alive until every command buffer that draws with them has executed.
 
  # Safety
 

@@ -233,7 +233,11 @@ struct Pending {
     raster: RasterState,
     buffers: Vec<(vk::Buffer, u64)>,
     geometry: Geometry,
-    units: texture::UnitBindings,
+    /// Copies of the draw's 2D textures and cube maps, unit 0 first, taken at `ffvkDraw`: the
+    /// record `ffvkEndDraws` makes is the one `ffvkDraw` checked and staged, whatever becomes
+    /// of the caller's `FfvkTexture` objects in between.
+    textures: [Option<ffvk::TextureBinding>; ffvk::gl::texture::MAX_TEXTURE_UNITS],
+    cube_maps: [Option<ffvk::TextureBinding>; ffvk::gl::texture::MAX_TEXTURE_UNITS],
 }
 
 /// What `ffvkBeginDraws` opened.
@@ -563,7 +567,9 @@ pub unsafe extern "C" fn ffvkBeginDraws(
 /// `renderer` and `ctx` are null or live and used by this thread only; `draw` is null or
 /// points at the `struct_size` bytes of a draw info as the caller's header declares it; its
 /// buffers are the caller's live buffers of the renderer's device, and its textures are null
-/// or live until `ffvkEndDraws` returns.
+/// or live during this call. `ffvkDraw` copies what each texture names, so a texture may be
+/// destroyed as soon as it returns (`ffvkEndDraws` records the copy); the view and sampler it
+/// names stay alive until the command buffer has executed.
 #[no_mangle]
 pub unsafe extern "C" fn ffvkDraw(
     renderer: *mut FfvkRenderer,
@@ -668,7 +674,8 @@ pub unsafe extern "C" fn ffvkDraw(
                 raster,
                 buffers,
                 geometry,
-                units,
+                textures: bound.map(|t| t.copied()),
+                cube_maps: cubes.map(|t| t.copied()),
             });
             recording.staged.push(staged);
             Ok(())
@@ -693,8 +700,9 @@ pub unsafe extern "C" fn ffvkDraw(
 /// # Safety
 ///
 /// `renderer` is null or live and used by one thread at a time; the scope's command buffer is
-/// recording as `ffvkBeginDraws` requires; the draws' buffers and textures are live and stay
-/// so until the command buffer has executed.
+/// recording as `ffvkBeginDraws` requires; the draws' buffers, and the image views and samplers
+/// their textures name, are live and stay so until the command buffer has executed (the
+/// `FfvkTexture` objects themselves are not read again: `ffvkDraw` copied them).
 #[no_mangle]
 pub unsafe extern "C" fn ffvkEndDraws(renderer: *mut FfvkRenderer) -> FfvkResult {
     with_renderer(renderer, "ffvkEndDraws", |r| {
@@ -703,14 +711,11 @@ pub unsafe extern "C" fn ffvkEndDraws(renderer: *mut FfvkRenderer) -> FfvkResult
         };
         let mut draws = Vec::with_capacity(recording.draws.len());
         for d in &recording.draws {
-            // SAFETY: the caller's contract: the textures are null or live until this returns
-            // (ffvkDraw checked them aligned).
-            let (bound, cubes) = unsafe {
-                (
-                    texture::bindings(&d.units.textures),
-                    texture::bindings(&d.units.cube_maps),
-                )
-            };
+            // The bindings ffvkDraw copied: the caller's textures are not read again.
+            let (bound, cubes) = (
+                d.textures.each_ref().map(Option::as_ref),
+                d.cube_maps.each_ref().map(Option::as_ref),
+            );
             draws.push(
                 LitDraw::new(
                     &recording.states[d.state],

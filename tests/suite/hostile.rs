@@ -740,3 +740,75 @@ fn zero_buffers_odd_strides_and_zero_rotations_are_refused_naming_the_field() {
         );
     }
 }
+
+/// A sphere whose unit 1 takes `unit1` (unit 0 the checker), each unit filtered linearly: the
+/// filter that reads two texels a side, the second one past the first.
+fn units_scene(unit1: &str) -> String {
+    format!(
+        "[image]\nsize = [48, 48]\n[camera]\neye = [0.0, 0.0, 3.0]\ntarget = [0.0, 0.0, 0.0]\nfovy = 45\n\
+         [[lights]]\nposition = [1.0, 1.0, 1.0, 0.0]\n[[meshes]]\nbuiltin = \"sphere\"\nlevel = 4\n\
+         texture_units = [{{ builtin = \"checker\", min_filter = \"linear\", mag_filter = \"linear\" }}, {{ {unit1}, min_filter = \"linear\", mag_filter = \"linear\" }}]\n"
+    )
+}
+
+/// GL lets a program give any finite coordinates, q = 0 among them (glMultiTexCoord4f(…, 0);
+/// GL leaves the texel undefined there): `ffvk explain` then samples at s/q = ∞, or at a texel
+/// index past any integer's range, and must still print rather than overflow an index
+/// (a panic in a build with overflow checks).
+#[test]
+fn explain_on_a_unit_whose_coordinates_are_infinite_after_the_divide_by_q_does_not_panic() {
+    for unit1 in [
+        "builtin = \"lightmap\", coords = [1.0, 1.0, 0.0, 0.0]",
+        "builtin = \"lightmap\", coords = [3.0e38, -3.0e38, 0.0, 1.0e-30]",
+        "builtin = \"lightmap\", wrap_s = \"mirrored_repeat\", wrap_t = \"clamp_to_edge\", coords = [-1.0, 1.0, 0.0, 0.0]",
+        "cube_map = { builtin = \"faces\" }, coords = [1.0, -1.0, 1.0, 0.0]",
+    ] {
+        let scene = Scene::parse(&units_scene(unit1), Path::new("hostile/q0.toml")).unwrap();
+        for (x, y) in [(24, 24), (23, 24), (24, 23), (16, 28)] {
+            let text = std::panic::catch_unwind(|| {
+                ffvk_cli::explain::explain(&scene, x, y, ffvk::gl::state::LightingMode::Vertex)
+            })
+            .unwrap_or_else(|_| panic!("explain panicked at ({x}, {y}) with unit 1 {unit1}"));
+            let text = text.expect("the sphere covers the pixel");
+            assert!(text.contains("GL_TEXTURE1"), "{text}");
+        }
+    }
+}
+
+/// `--max-texture-mib` bounds a scene file's own images as it bounds a glTF file's: each
+/// unit's `image` and each cube map face is charged (RGBA8 with its mipmaps, from the file's
+/// header) before it is decoded, so that a small PNG of a large, flat image named by many
+/// units and faces cannot take the host's memory.
+#[test]
+fn a_scene_files_images_and_cube_faces_count_against_the_texture_memory_limit() {
+    let dir = scratch("texture-budget");
+    image::RgbaImage::from_pixel(64, 64, image::Rgba([200, 120, 40, 255]))
+        .save(dir.join("flat.png"))
+        .unwrap();
+    let faces = ["\"flat.png\""; 6].join(", ");
+    let text = format!(
+        "[[meshes]]\nbuiltin = \"sphere\"\nlevel = 4\n\
+         texture_units = [{{ image = \"flat.png\" }}, {{ cube_map = {{ faces = [{faces}] }} }}]\n"
+    );
+    let path = dir.join("budget.toml");
+    std::fs::write(&path, &text).unwrap();
+    // A 64² image takes 21,844 bytes with its mipmaps: seven of them are the scene's.
+    let one = 4 * (64 * 64 + 32 * 32 + 16 * 16 + 8 * 8 + 4 * 4 + 2 * 2 + 1);
+    let fits = Limits::default().with_texture_bytes(7 * one);
+    Scene::load_with(&path, &fits).expect("seven images within the limit");
+    let four = Limits::default().with_texture_bytes(4 * one + 100);
+    let e = Scene::load_with(&path, &four)
+        .expect_err("the fifth image passes the limit")
+        .to_string();
+    for part in [
+        "budget.toml",
+        "meshes[0].texture_units[1].cube_map.faces[3]",
+        "flat.png",
+        "64x64",
+        &format!("{one} bytes"),
+        &format!("{} bytes of the textures before", 4 * one),
+        "--max-texture-mib",
+    ] {
+        assert!(e.contains(part), "{e:?} lacks {part:?}");
+    }
+}

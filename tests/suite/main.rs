@@ -10,6 +10,7 @@ mod c_api_formats;
 mod c_api_fuzz;
 mod c_api_install;
 mod c_api_layers;
+mod c_api_lifetimes;
 mod c_api_programs;
 mod c_api_renderer;
 mod c_api_state;

@@ -329,8 +329,10 @@ pub unsafe extern "C" fn ffvkCreateCubeMapWithFormat(
     }
 }
 
-/// Frees a texture or cube map binding; null is ignored. The caller first makes sure no
-/// submitted command buffer still uses it. The view and sampler it names stay the caller's.
+/// Frees a texture or cube map binding; null is ignored. It may be freed as soon as the last
+/// `ffvkDraw` that names it has returned, inside an open scope too: `ffvkDraw` copies what it
+/// names, and the binding is no Vulkan object. The view and sampler it names stay the
+/// caller's, alive until every command buffer that draws with them has executed.
 ///
 /// # Safety
 ///

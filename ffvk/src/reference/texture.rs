@@ -255,10 +255,12 @@ pub fn sample_level(
         }
         MagFilter::Linear => {
             let (u, v) = (u - 0.5, v - 0.5);
+            // `as` saturates a coordinate past i64's range (s/q with q = 0 is ∞), so the second
+            // texel saturates too rather than overflowing past i64::MAX.
             let (i0, j0) = (u.floor() as i64, v.floor() as i64);
             let (a, b) = (u - u.floor(), v - v.floor());
-            let i = [i0, i0 + 1].map(|i| wrap_index(i, l.width(), sampling.wrap_s));
-            let j = [j0, j0 + 1].map(|j| wrap_index(j, l.height(), sampling.wrap_t));
+            let i = [i0, i0.saturating_add(1)].map(|i| wrap_index(i, l.width(), sampling.wrap_s));
+            let j = [j0, j0.saturating_add(1)].map(|j| wrap_index(j, l.height(), sampling.wrap_t));
             fetch(image, level, i[0], j[0]) * (1.0 - a) * (1.0 - b)
                 + fetch(image, level, i[1], j[0]) * a * (1.0 - b)
                 + fetch(image, level, i[0], j[1]) * (1.0 - a) * b

@@ -133,7 +133,8 @@ pub struct Limits {
     pub mesh_bytes: u64,
     /// The bytes all the scene's decoded textures may take on the host: RGBA8 with its
     /// mipmaps (a 4096² image takes 85 MiB), each image charged from its header's size
-    /// before it is decoded, once however many glTF images name the same file or bytes.
+    /// before it is decoded: once however many glTF images name the same file or bytes, and
+    /// once per use for a scene file's `image` and cube map `faces` (each decoded on its own).
     pub texture_bytes: u64,
     /// The bytes one glTF file's buffers may take together on the host: external files,
     /// data URIs, the GLB binary chunk and meshopt fallback buffers, each charged before it

@@ -480,6 +480,25 @@ impl Builder<'_> {
                 ),
             ));
         }
+        // Charged as a glTF image is ([`super::Limits::texture_bytes`]): each unit's image and
+        // cube face is decoded on its own, so one file named twice is charged twice.
+        let bytes = super::gltf::mipmapped_bytes(width, height);
+        let limit = self.limits.texture_bytes;
+        self.budget
+            .borrow_mut()
+            .charge_texture(bytes, limit)
+            .map_err(|used| {
+                self.field(
+                    field,
+                    format!(
+                        "{}: {width}x{height} texels take {bytes} bytes decoded (RGBA8 with mipmaps), \
+                     which with the {used} bytes of the textures before it passes the scene's \
+                     texture memory limit of {limit} bytes: expected fewer or smaller textures, \
+                     or a higher limit (ffvk --max-texture-mib)",
+                        full.display()
+                    ),
+                )
+            })?;
         let decoded = reader()?
             .decode()
             .map_err(|e| {

@@ -42,6 +42,7 @@ pub use lights::{exact_light, gl_light, spot_exponent, GltfLights, LightKind, Pu
 pub use materials::{gl_material, PbrMaterial};
 pub use occlusion::OcclusionTexture;
 pub use sampler::SampledTexture;
+pub(in crate::scene) use textures::mipmapped_bytes;
 pub use textures::{TextureMean, Textures};
 
 use crate::mesh::MeshData;

@@ -214,7 +214,7 @@ pub(super) fn material_textures(
 
 /// The bytes an image of `width` × `height` takes as [`TextureImage`] stores it: RGBA8, with
 /// every mipmap level down to 1 × 1 (about 4/3 of the base level).
-pub(super) fn mipmapped_bytes(width: u32, height: u32) -> u64 {
+pub(in crate::scene) fn mipmapped_bytes(width: u32, height: u32) -> u64 {
     let (mut w, mut h, mut bytes) = (u64::from(width.max(1)), u64::from(height.max(1)), 0u64);
     loop {
         bytes = bytes.saturating_add(w * h * 4);
