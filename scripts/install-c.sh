@@ -2,6 +2,7 @@
 # Installs ffvk's C library as a system library; `make install-c` runs it. Into
 # $DESTDIR$LIBDIR: libffvk_c.so.$VERSION, the links libffvk_c.so.$MAJOR (its SONAME) and
 # libffvk_c.so, and libffvk_c.a; into $DESTDIR$INCLUDEDIR: ffvk.h; into
+# $DESTDIR$INCLUDEDIR/ffvk: the shader library (ffvk/glsl/lib/ffvk/*.glsl); into
 # $DESTDIR$LIBDIR/pkgconfig: ffvk.pc, written for $PREFIX (DESTDIR only stages the files).
 #
 # Environment: FFVK_C_LIB_DIR (where cargo built libffvk_c.so and libffvk_c.a), PREFIX, LIBDIR,
@@ -68,6 +69,9 @@ ln -sfn "libffvk_c.so.$version" "$lib/$soname"
 ln -sfn "$soname" "$lib/libffvk_c.so"
 install -m 0644 "$FFVK_C_LIB_DIR/libffvk_c.a" "$lib/libffvk_c.a"
 install -m 0644 "$root/ffvk-c/include/ffvk.h" "$include/ffvk.h"
+# The shader library beside it: a shader compiled with -I$INCLUDEDIR includes "ffvk/lighting.glsl".
+install -d "$include/ffvk"
+install -m 0644 "$root"/ffvk/glsl/lib/ffvk/*.glsl "$include/ffvk/"
 
 # Paths under the prefix are written relative to it, as pkg-config's files spell them.
 pc_libdir=$LIBDIR
@@ -82,7 +86,7 @@ sed -e "s|@PREFIX@|$(literal "$PREFIX")|" -e "s|@LIBDIR@|$(literal "$pc_libdir")
   -e "s|@INCLUDEDIR@|$(literal "$pc_includedir")|" -e "s|@VERSION@|$version|" \
   -e "s|@RPATH@|$(literal "$pc_rpath")|" "$root/ffvk-c/ffvk.pc.in" >"$lib/pkgconfig/ffvk.pc"
 
-echo "ffvk: installed libffvk_c.so.$version ($soname), libffvk_c.a, ffvk.h and ffvk.pc into ${DESTDIR}${PREFIX}"
+echo "ffvk: installed libffvk_c.so.$version ($soname), libffvk_c.a, ffvk.h, the shader library (ffvk/*.glsl) and ffvk.pc into ${DESTDIR}${PREFIX}"
 if [[ $rpath == no && -z $DESTDIR ]]; then
   if [[ $(id -u) -eq 0 ]]; then
     "$(command -v ldconfig || echo /sbin/ldconfig)"

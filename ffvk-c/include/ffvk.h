@@ -3123,6 +3123,26 @@ enum FfvkResult ffvkDeviceRequirements(PFN_vkGetInstanceProcAddr get_instance_pr
                                        uint32_t *enabled_features);
 
 /*
+ The shader library's interface version (`FFVK_LIBRARY_VERSION` in `ffvk/state.glsl`): a
+ change of the state block, a function's inputs or outputs, a specialization constant or
+ what the caller defines is a new version.
+ */
+uint32_t ffvkShaderLibraryVersion(void);
+
+/*
+ Writes the text of the library file `name` (as a shader includes it: `"ffvk/lighting.glsl"`)
+ to `*source` and its length in bytes to `*length`. The text is ffvk's, valid for the life
+ of the process, and not NUL-terminated. `FFVK_ERROR_INVALID_ARGUMENT` for a null or
+ misaligned pointer and for a name the library does not have (the message lists its files);
+ `*source` is then null and `*length` 0.
+
+ # Safety
+
+ `name` is null or a NUL-terminated string; `source` and `length` are null or writable.
+ */
+enum FfvkResult ffvkShaderLibraryFile(const char *name, const char **source, uintptr_t *length);
+
+/*
  Writes to `*viewport` the `VkViewport` that puts ffvk's draws where GL's
  `glViewport(x, y, width, height)` and `glDepthRange(near_val, far_val)` put them, in a
  color attachment `target_height` pixels high. Set it with `vkCmdSetViewport` between

@@ -24,6 +24,7 @@ pub mod render;
 pub use render::layout;
 pub mod result;
 pub mod setup;
+pub mod shaders;
 pub mod viewport;
 
 /// Aliases that spell Vulkan's C types for the header. cbindgen does not emit them (the

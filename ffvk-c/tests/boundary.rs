@@ -3754,3 +3754,48 @@ fn edge_flagged_indices_refuse_other_modes_missing_flags_and_small_rooms_writing
     assert_eq!(call(QUADS, &[], 24, &mut out), FfvkResult::FFVK_SUCCESS);
     assert_eq!(written, 24);
 }
+
+/// The shader library's files from C: each name gives the text ffvk::shaders holds; a null or
+/// misaligned pointer, a null name and an unknown name are refused with the output cleared and
+/// a message naming the function and the value.
+#[test]
+fn the_shader_library_hands_out_each_file_and_refuses_bad_names_and_pointers() {
+    use ffvk_c::shaders::{ffvkShaderLibraryFile, ffvkShaderLibraryVersion};
+    assert_eq!(ffvkShaderLibraryVersion(), ffvk::shaders::LIBRARY_VERSION);
+    for file in ffvk::shaders::FILES {
+        let name = std::ffi::CString::new(file.name).unwrap();
+        let (mut source, mut length) = (std::ptr::null::<std::ffi::c_char>(), 0usize);
+        // SAFETY: a NUL-terminated name and writable outputs.
+        let r = unsafe { ffvkShaderLibraryFile(name.as_ptr(), &mut source, &mut length) };
+        assert_eq!(r, FfvkResult::FFVK_SUCCESS);
+        // SAFETY: the library's static text of `length` bytes.
+        let text = unsafe { std::slice::from_raw_parts(source.cast::<u8>(), length) };
+        assert_eq!(text, file.source.as_bytes(), "{}", file.name);
+    }
+    let unknown = c"ffvk/lights.glsl";
+    let (mut source, mut length) = (c"stale".as_ptr(), 7usize);
+    // SAFETY: as above.
+    let r = unsafe { ffvkShaderLibraryFile(unknown.as_ptr(), &mut source, &mut length) };
+    assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+    assert!(source.is_null() && length == 0);
+    let message = message();
+    assert!(
+        message.contains("ffvkShaderLibraryFile")
+            && message.contains("ffvk/lights.glsl")
+            && message.contains("ffvk/lighting.glsl"),
+        "{message}"
+    );
+    // SAFETY: null pointers are refused before any is followed.
+    let r = unsafe { ffvkShaderLibraryFile(std::ptr::null(), &mut source, &mut length) };
+    assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+    // SAFETY: as above.
+    let r = unsafe { ffvkShaderLibraryFile(unknown.as_ptr(), std::ptr::null_mut(), &mut length) };
+    assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+    let misaligned = (&mut length as *mut usize)
+        .cast::<u8>()
+        .wrapping_add(1)
+        .cast::<usize>();
+    // SAFETY: a misaligned pointer is refused before it is written.
+    let r = unsafe { ffvkShaderLibraryFile(unknown.as_ptr(), &mut source, misaligned) };
+    assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+}

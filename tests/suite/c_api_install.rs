@@ -110,6 +110,16 @@ fn the_installed_library_carries_its_major_version_and_a_pkg_config_program_star
         std::fs::read(workspace().join("ffvk-c/include/ffvk.h")).expect("the header"),
         "the installed header is not ffvk-c/include/ffvk.h"
     );
+    // The shader library beside it, each file as ffvk::shaders holds it.
+    for file in ffvk::shaders::FILES {
+        let installed = prefix.join("include").join(file.name);
+        assert_eq!(
+            std::fs::read_to_string(&installed).unwrap_or_else(|e| panic!("{}: {e}", installed.display())),
+            file.source,
+            "the installed {} is not the library's",
+            file.name
+        );
+    }
     assert_eq!(dynamic(&lib.join(&real), "SONAME"), std::slice::from_ref(&soname));
     assert_eq!(
         pkg_config(&prefix, &["--modversion"]),
