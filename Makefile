@@ -25,7 +25,7 @@ demo: deps
 	$(CARGO) run -- demo --out out/demo
 
 # The workspace's tests (the suite, unit tests, examples, benches built), the doctests (the
-# README's Rust snippets and the API's examples), the lints, the library's rustdoc without a
+# Rust snippets of the README and the guides under docs/, and the API's examples), the lints, the library's rustdoc without a
 # warning (broken links), the library alone as a plain dependency builds it, and a crate
 # outside the workspace that depends on it.
 test: test-deps
@@ -36,7 +36,7 @@ test: test-deps
 	bash scripts/check-lean-core.sh
 	bash scripts/check-dependent.sh
 
-# ffvk's C library as a system library (the README's "From C and C++"):
+# ffvk's C library as a system library (docs/c-api.md, "From C and C++"):
 #   make install-c [PREFIX=/usr/local] [DESTDIR=staging] [LIBDIR=...] [INCLUDEDIR=...]
 # builds it (cargo build --release -p ffvk-c) and installs libffvk_c.so.<version> with its
 # links libffvk_c.so.<major> (the SONAME) and libffvk_c.so, libffvk_c.a, include/ffvk.h and

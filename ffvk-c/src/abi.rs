@@ -1,6 +1,6 @@
 //! How the C API's structs grow without breaking a program built against an older `ffvk.h`.
 //!
-//! The rule (stated in the header on each struct, and in the README's C section):
+//! The rule (stated in the header on each struct, and in docs/c-api.md):
 //!
 //! - A struct the API reads from the caller and that may grow starts with `uint32_t
 //!   struct_size`, which the caller sets to `sizeof` of the struct as its `ffvk.h` declared it.

@@ -103,6 +103,40 @@ pub use image;
 #[doc = include_str!("../../README.md")]
 pub struct ReadmeDoctests;
 
+/// The guides' Rust snippets (docs/, the README's sections once), compiled the same way: one
+/// item per file, so a failing snippet is named by its guide. `tests/suite/docs.rs` checks
+/// that every Markdown file with a Rust snippet is listed here.
+#[cfg(doctest)]
+pub mod guide_doctests {
+    /// docs/embedding-rust.md: the library, and `Lighting` in a caller's renderer.
+    #[doc = include_str!("../../docs/embedding-rust.md")]
+    pub struct EmbeddingRust;
+    /// docs/c-api.md.
+    #[doc = include_str!("../../docs/c-api.md")]
+    pub struct CApi;
+    /// docs/scene-files.md.
+    #[doc = include_str!("../../docs/scene-files.md")]
+    pub struct SceneFiles;
+    /// docs/pipeline.md.
+    #[doc = include_str!("../../docs/pipeline.md")]
+    pub struct Pipeline;
+    /// docs/conformance.md.
+    #[doc = include_str!("../../docs/conformance.md")]
+    pub struct Conformance;
+    /// docs/regression.md.
+    #[doc = include_str!("../../docs/regression.md")]
+    pub struct Regression;
+    /// docs/architecture.md.
+    #[doc = include_str!("../../docs/architecture.md")]
+    pub struct Architecture;
+    /// docs/shader-library.md.
+    #[doc = include_str!("../../docs/shader-library.md")]
+    pub struct ShaderLibrary;
+    /// CHANGELOG.md.
+    #[doc = include_str!("../../CHANGELOG.md")]
+    pub struct Changelog;
+}
+
 pub use draw::lighting::{
     DrawValues, Lighting, LightingOptions, LitDraw, StagedDraw, VertexLayout, MAX_FRAMES_IN_FLIGHT,
 };

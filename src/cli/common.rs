@@ -168,7 +168,7 @@ pub(crate) fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
     parse_pair(s, ',', "X,Y, e.g. 100,80")
 }
 
-/// The comparison tolerance (see the README's tolerance policy).
+/// The comparison tolerance (see docs/regression.md, "Tolerance policy").
 #[derive(clap::Args, Debug, Clone)]
 pub(crate) struct ToleranceArgs {
     /// Per-channel difference (of 255) a pixel may have without counting as different.

@@ -1,7 +1,7 @@
 //! Why the GL reference could not render.
 
-/// The Debian packages that give EGL and Mesa's GL at run time (the README and
-/// `scripts/setup-deps.sh --test` name the same).
+/// The Debian packages that give EGL and Mesa's GL at run time (the README, docs/conformance.md
+/// and `scripts/setup-deps.sh --test` name the same).
 const DEBIAN_PACKAGES: &str = "libegl1 libegl-mesa0 libgl1-mesa-dri";
 
 /// An error of the GL reference renderer ([`super::render_gl`] and the others).

@@ -126,7 +126,7 @@ fn the_installed_library_carries_its_major_version_and_a_pkg_config_program_star
         std::slice::from_ref(&version)
     );
 
-    // A program built as the README builds one: pkg-config's flags alone, no environment.
+    // A program built as docs/c-api.md builds one: pkg-config's flags alone, no environment.
     let dir = profile.join("ffvk-c-install-program");
     std::fs::create_dir_all(&dir).expect("a directory for the program");
     let source = dir.join("program.c");

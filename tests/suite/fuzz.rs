@@ -7,8 +7,8 @@
 //! A mesh's generated `texture_units` load and draw, or are refused naming one of their fields.
 //!
 //! Bounded for CI (a few hundred cases, under a minute); `FFVK_FUZZ_SCALE=N` multiplies every
-//! case count, e.g. `FFVK_FUZZ_SCALE=100 cargo test --release --test suite fuzz` (see the
-//! README); `FFVK_FUZZ_VERBOSE=1` prints each command line's exit code. A failure prints the generated input; proptest shrinks it first and keeps it in
+//! case count, e.g. `FFVK_FUZZ_SCALE=100 cargo test --release --test suite fuzz` (see
+//! docs/regression.md); `FFVK_FUZZ_VERBOSE=1` prints each command line's exit code. A failure prints the generated input; proptest shrinks it first and keeps it in
 //! `tests/suite/proptest-regressions/` for the next runs.
 
 use std::cell::{Cell, RefCell};

@@ -303,7 +303,7 @@ fn an_accessor_overrunning_its_view_names_the_byte_stride_that_spaces_it() {
 }
 
 /// Values longer than 120 characters are shortened in every message and warning, as the
-/// README promises: URIs, extension names, JSON keys in a path.
+/// docs/regression.md promises: URIs, extension names, JSON keys in a path.
 #[test]
 fn values_past_120_characters_are_shortened_in_errors_and_warnings() {
     let dir = scratch("long");

@@ -432,16 +432,26 @@ fn specialization_constant_ids_match_the_rust_side() {
 }
 
 #[test]
-fn the_readme_states_the_block_and_record_sizes_and_the_constant_ids_the_code_has() {
-    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+fn the_embedding_guide_states_the_block_and_record_sizes_and_the_constant_ids_the_code_has() {
+    let guide = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/embedding-rust.md");
+    let guide = std::fs::read_to_string(guide).unwrap();
     let size = size_of::<StateBlock>();
     let with_comma = format!("{},{:03}", size / 1000, size % 1000);
     let block = format!("one {with_comma}-byte block of GL state per change of state");
-    assert!(readme.contains(&block), "README.md should say \"{block}\"");
+    assert!(
+        guide.contains(&block),
+        "docs/embedding-rust.md should say \"{block}\""
+    );
     let record = format!("one {}-byte record per draw", size_of::<DrawRecord>());
-    assert!(readme.contains(&record), "README.md should say \"{record}\"");
+    assert!(
+        guide.contains(&record),
+        "docs/embedding-rust.md should say \"{record}\""
+    );
     let ids = format!("constant_id 0-{}", SPEC_CONSTANT_COUNT - 1);
-    assert!(readme.contains(&ids), "README.md should say \"{ids}\"");
+    assert!(
+        guide.contains(&ids),
+        "docs/embedding-rust.md should say \"{ids}\""
+    );
 }
 
 /// A shader of a caller's own that includes the shader library (through `shaders::resolve`, as

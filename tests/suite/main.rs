@@ -22,6 +22,7 @@ mod conformance;
 mod cube_maps;
 mod deferred;
 mod determinism;
+mod docs;
 mod edge_flags;
 mod embedding;
 mod files;

@@ -1,5 +1,5 @@
 //! Device memory: one allocator for every resource, meshes filled directly or through
-//! staging copies with the same pixels, and memory use as the README states it.
+//! staging copies with the same pixels, and memory use as docs/embedding-rust.md states it.
 
 use ffvk::gl::state::{Cap, GlState};
 use ffvk::mesh::teapot::teapot;

@@ -34,7 +34,7 @@ pub fn renderer_from(options: RendererOptions) -> Renderer {
 /// The GL the oracle tests compare with: a software device (Mesa's llvmpipe, whose results
 /// the tolerances were measured on) where EGL has one, even on a machine whose GPU driver
 /// lists its devices first; otherwise the first device that works. To compare with another
-/// driver, leave EGL only that driver (README, "The GL reference").
+/// driver, leave EGL only that driver (docs/conformance.md, "The GL reference").
 /// Mesa's image of `draws` on a `size`² image cleared to `clear`, with GL_DEPTH_TEST
 /// (`GL_LESS`) as `depth_test` says, through the oracle's device ([`gl_options`]).
 pub fn mesa_image(

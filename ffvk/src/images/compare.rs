@@ -2,7 +2,7 @@
 //! a threshold, and FLIP (NVIDIA's perceptual difference, through the `nv-flip` crate that
 //! wgpu's own image tests use), with a heat map of where images differ.
 //!
-//! The tolerance policy (README, "Tolerance policy"): on the same Mesa and CPU, ffvk's images
+//! The tolerance policy (docs/regression.md, "Tolerance policy"): on the same Mesa and CPU, ffvk's images
 //! are byte-identical; across drivers, Mesa versions and CPUs, float operations may be
 //! ordered or fused differently (a clear color of 0.1 is 26 on one driver and 25 on another)
 //! and rasterization rules may settle silhouette pixels differently, so a reference passes

@@ -318,7 +318,7 @@ pub fn from_gltf(
             mapping.name()
         )
     });
-    choices.push("glTF's meaning (gltf_defaults = true): see the README's \"glTF files\"".to_owned());
+    choices.push("glTF's meaning (gltf_defaults = true): see docs/scene-files.md, \"glTF files\"".to_owned());
 
     check_view(&view, lo, hi, options.orbit.zoom.filter(|_| camera.is_none()))
         .map_err(|m| field("camera", m))?;
@@ -672,7 +672,7 @@ fn scene_toml(
     }
     let _ = writeln!(
         t,
-        "gltf_defaults = true   # glTF's meaning: see the README's \"glTF files\""
+        "gltf_defaults = true   # glTF's meaning: see docs/scene-files.md, \"glTF files\""
     );
     let _ = writeln!(
         t,

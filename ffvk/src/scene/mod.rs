@@ -1,5 +1,5 @@
 //! Scene files (TOML): every piece of GL lighting state with GL's names and defaults, a camera,
-//! the image, and meshes from glTF files or built-in shapes. See the README for the format.
+//! the image, and meshes from glTF files or built-in shapes. See docs/scene-files.md for the format.
 //!
 //! Light positions and spot directions are given in world space; they are set through
 //! [`GlState::light`] with the view matrix loaded, exactly as glLight would store them.

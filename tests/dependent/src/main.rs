@@ -1,4 +1,4 @@
-//! The README's "Using the library" program, as a dependent crate runs it: GL state through GL's
+//! docs/embedding-rust.md's "Using the library" program, as a dependent crate runs it: GL state through GL's
 //! entry points, a lit sphere rendered offscreen on lavapipe, and its nearest point checked
 //! against the CPU reference of the same equation. ash and glam come from ffvk's re-exports.
 //! Exits non-zero, with the reason, on any difference.
