@@ -1,7 +1,7 @@
 //! ffvk's shader library: GL 2.1's lighting equation and the fixed-function stages around it
 //! (texture environments and `GL_COMBINE`, texgen, fog, the alpha test, points, clip planes) as
 //! GLSL include files a caller's own shaders include, the same files ffvk's own pipelines are
-//! built from. Each file is `#include "ffvk/<name>"`; [`include`] resolves those names for a
+//! built from. Each file is `#include "ffvk/<name>"`; [`include()`] resolves those names for a
 //! compiler's include callback (shaderc's, glslang's), and [`resolve`] inlines them for
 //! compilers without `#include` (GLSL ES).
 //!
