@@ -3143,6 +3143,41 @@ uint32_t ffvkShaderLibraryVersion(void);
 enum FfvkResult ffvkShaderLibraryFile(const char *name, const char **source, uintptr_t *length);
 
 /*
+ Writes the shader library's state block (`FFVK_STATE_MEMBERS` in `ffvk/state.glsl`, std140)
+ for `ctx`'s state under its projection: 3,488 bytes at `dst`, 4-byte aligned. `size` is the
+ space at `dst`; less than the block is `FFVK_ERROR_INVALID_ARGUMENT`, as a state GL could not
+ draw (the message says why: a positional light with all-zero attenuation, ...).
+
+ # Safety
+
+ `ctx` is null or a live context; `dst` is null or `size` writable bytes.
+ */
+enum FfvkResult ffvkPackStateBlock(const struct FfvkContext *ctx, void *dst, uintptr_t size);
+
+/*
+ Writes a draw's own values for `ctx`'s state and modelview (its materials, current color,
+ normal matrix and the rescale factor: `DrawRecord`, 352 bytes) at `dst`, 4-byte aligned:
+ what `face_material` and `eye_normal` take, in the layout ffvk's own pipelines read. A
+ modelview that cannot be inverted while lighting is `FFVK_ERROR_INVALID_ARGUMENT`.
+
+ # Safety
+
+ `ctx` is null or a live context; `dst` is null or `size` writable bytes.
+ */
+enum FfvkResult ffvkPackDrawRecord(const struct FfvkContext *ctx, void *dst, uintptr_t size);
+
+/*
+ Writes the specialization constants of `ctx`'s state and modelview (`SpecKey`: constant i,
+ a 32-bit value, at byte 4i; 49 of them) at `dst`: the data of a `VkSpecializationInfo`
+ whose map entries take constant i to the caller's ID `FFVK_SPEC_BASE + i`.
+
+ # Safety
+
+ `ctx` is null or a live context; `dst` is null or `size` writable bytes.
+ */
+enum FfvkResult ffvkPackSpecKey(const struct FfvkContext *ctx, void *dst, uintptr_t size);
+
+/*
  Writes to `*viewport` the `VkViewport` that puts ffvk's draws where GL's
  `glViewport(x, y, width, height)` and `glDepthRange(near_val, far_val)` put them, in a
  color attachment `target_height` pixels high. Set it with `vkCmdSetViewport` between

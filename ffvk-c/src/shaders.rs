@@ -1,9 +1,14 @@
 //! ffvk's shader library from C: the interface version and each file's text
 //! (`ffvkShaderLibraryFile`), for a compiler's include callback or for inlining; `make install-c`
-//! installs the same files beside `ffvk.h`, under `ffvk/`.
+//! installs the same files beside `ffvk.h`, under `ffvk/`. The packers write what the library's
+//! shaders read from a context's GL state: the state block (`ffvkPackStateBlock`), a draw's
+//! own values (`ffvkPackDrawRecord`) and the specialization constants (`ffvkPackSpecKey`).
 
-use std::ffi::{c_char, CStr};
+use std::ffi::{c_char, c_void, CStr};
 
+use ffvk::gpu::layout::{DrawBlock, DrawRecord, SpecKey, StateBlock};
+
+use crate::gl::FfvkContext;
 use crate::result::{check_ptr, fail, guard, FfvkResult};
 
 /// The shader library's interface version (`FFVK_LIBRARY_VERSION` in `ffvk/state.glsl`): a
@@ -68,4 +73,129 @@ pub unsafe extern "C" fn ffvkShaderLibraryFile(
         }
         FfvkResult::FFVK_SUCCESS
     })
+}
+
+/// Checks `ctx` and `dst` (non-null, aligned for `T`) and that `size` holds `need` bytes; runs
+/// `pack` on the context behind the panic barrier.
+///
+/// # Safety
+///
+/// `ctx` is null or a live context; `dst` is null or `size` writable bytes.
+unsafe fn pack_into(
+    function: &str,
+    ctx: *const FfvkContext,
+    (dst, size, need): (*mut u8, usize, usize),
+    pack: impl FnOnce(&FfvkContext) -> Result<Vec<u8>, FfvkResult>,
+) -> FfvkResult {
+    guard(|| {
+        if let Err(code) = check_ptr(function, "ctx", ctx, "a context from ffvkCreateContext") {
+            return code;
+        }
+        if let Err(code) = check_ptr(
+            function,
+            "dst",
+            dst.cast::<u32>(),
+            "where to write the bytes, 4-byte aligned",
+        ) {
+            return code;
+        }
+        if size < need {
+            return fail(
+                FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                format!("{function}: size {size}: expected at least {need} bytes"),
+            );
+        }
+        // SAFETY: checked non-null and aligned; the caller's contract: a live context, used by
+        // one thread at a time.
+        let context = unsafe { &*ctx };
+        match pack(context) {
+            Ok(bytes) => {
+                // SAFETY: `size` >= `need` == bytes.len() writable bytes at dst (the contract).
+                unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), dst, bytes.len()) };
+                FfvkResult::FFVK_SUCCESS
+            }
+            Err(code) => code,
+        }
+    })
+}
+
+/// Writes the shader library's state block (`FFVK_STATE_MEMBERS` in `ffvk/state.glsl`, std140)
+/// for `ctx`'s state under its projection: 3,488 bytes at `dst`, 4-byte aligned. `size` is the
+/// space at `dst`; less than the block is `FFVK_ERROR_INVALID_ARGUMENT`, as a state GL could not
+/// draw (the message says why: a positional light with all-zero attenuation, ...).
+///
+/// # Safety
+///
+/// `ctx` is null or a live context; `dst` is null or `size` writable bytes.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkPackStateBlock(
+    ctx: *const FfvkContext,
+    dst: *mut c_void,
+    size: usize,
+) -> FfvkResult {
+    const F: &str = "ffvkPackStateBlock";
+    let need = std::mem::size_of::<StateBlock>();
+    // SAFETY: passed on under the same contract.
+    unsafe {
+        pack_into(F, ctx, (dst.cast(), size, need), |c| {
+            c.gl.lighting.check_drawable().map_err(|e| state_error(F, &e))?;
+            Ok(bytemuck::bytes_of(&StateBlock::new(&c.gl.lighting, c.projection)).to_vec())
+        })
+    }
+}
+
+/// Writes a draw's own values for `ctx`'s state and modelview (its materials, current color,
+/// normal matrix and the rescale factor: `DrawRecord`, 352 bytes) at `dst`, 4-byte aligned:
+/// what `face_material` and `eye_normal` take, in the layout ffvk's own pipelines read. A
+/// modelview that cannot be inverted while lighting is `FFVK_ERROR_INVALID_ARGUMENT`.
+///
+/// # Safety
+///
+/// `ctx` is null or a live context; `dst` is null or `size` writable bytes.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkPackDrawRecord(
+    ctx: *const FfvkContext,
+    dst: *mut c_void,
+    size: usize,
+) -> FfvkResult {
+    const F: &str = "ffvkPackDrawRecord";
+    let need = std::mem::size_of::<DrawRecord>();
+    // SAFETY: passed on under the same contract.
+    unsafe {
+        pack_into(F, ctx, (dst.cast(), size, need), |c| {
+            let block = DrawBlock::new(&c.gl.lighting, c.gl.modelview, c.projection)
+                .map_err(|e| state_error(F, &e))?;
+            Ok(bytemuck::bytes_of(&block.record).to_vec())
+        })
+    }
+}
+
+/// Writes the specialization constants of `ctx`'s state and modelview (`SpecKey`: constant i,
+/// a 32-bit value, at byte 4i; 49 of them) at `dst`: the data of a `VkSpecializationInfo`
+/// whose map entries take constant i to the caller's ID `FFVK_SPEC_BASE + i`.
+///
+/// # Safety
+///
+/// `ctx` is null or a live context; `dst` is null or `size` writable bytes.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkPackSpecKey(
+    ctx: *const FfvkContext,
+    dst: *mut c_void,
+    size: usize,
+) -> FfvkResult {
+    const F: &str = "ffvkPackSpecKey";
+    let need = std::mem::size_of::<SpecKey>();
+    // SAFETY: passed on under the same contract.
+    unsafe {
+        pack_into(F, ctx, (dst.cast(), size, need), |c| {
+            Ok(bytemuck::bytes_of(&SpecKey::for_draw(&c.gl.lighting, c.gl.modelview)).to_vec())
+        })
+    }
+}
+
+fn state_error(function: &str, e: &ffvk::gl::state::StateError) -> FfvkResult {
+    fail(
+        FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+        format!("{function}: {e}"),
+    )
 }

@@ -3799,3 +3799,87 @@ fn the_shader_library_hands_out_each_file_and_refuses_bad_names_and_pointers() {
     let r = unsafe { ffvkShaderLibraryFile(unknown.as_ptr(), &mut source, misaligned) };
     assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
 }
+
+/// The packers write what the shader library reads from a context's state, as the Rust
+/// packers lay it out: the state block's switches and lights, the draw record's modelview (the
+/// context's own, as `ffvkGetFloatv` answers it) and the specialization constants; a short
+/// buffer, a null or misaligned pointer and a state GL cannot draw are refused by name.
+#[test]
+fn the_packers_write_the_librarys_block_record_and_constants_from_a_context() {
+    use bytemuck::Zeroable;
+    use ffvk::gpu::layout::{DrawRecord, SpecConstant, SpecKey, StateBlock};
+    use ffvk_c::shaders::{ffvkPackDrawRecord, ffvkPackSpecKey, ffvkPackStateBlock};
+    let c = Ctx::busy();
+    let mut block = StateBlock::zeroed();
+    let mut record = DrawRecord::zeroed();
+    let mut key = SpecKey::UBER;
+    // SAFETY: a live context and buffers of the sizes given.
+    unsafe {
+        let r = ffvkPackStateBlock(
+            c.0,
+            (&mut block as *mut StateBlock).cast(),
+            size_of::<StateBlock>(),
+        );
+        assert_eq!(r, FfvkResult::FFVK_SUCCESS, "{}", message());
+        let r = ffvkPackDrawRecord(
+            c.0,
+            (&mut record as *mut DrawRecord).cast(),
+            size_of::<DrawRecord>(),
+        );
+        assert_eq!(r, FfvkResult::FFVK_SUCCESS, "{}", message());
+        let r = ffvkPackSpecKey(c.0, (&mut key as *mut SpecKey).cast(), size_of::<SpecKey>());
+        assert_eq!(r, FfvkResult::FFVK_SUCCESS, "{}", message());
+    }
+    // Ctx::busy: LIGHTING and NORMALIZE on, lights 1 and 15 enabled, light 1's diffuse
+    // (0.5, 1.2, 0.7, 0.8), packed first.
+    assert_eq!((block.lighting, block.normalize, block.light_count), (1, 1, 2));
+    assert_eq!(block.lights[0].d_cli, [0.5, 1.2, 0.7, 0.8]);
+    assert_eq!(key.get(SpecConstant::LightCount), 2);
+    assert_eq!(key.get(SpecConstant::Lighting), 1);
+    let mut modelview = [0f32; 16];
+    // SAFETY: 16 floats.
+    unsafe { ffvkGetFloatv(c.0, MODELVIEW_MATRIX, modelview.as_mut_ptr()) };
+    assert_eq!(record.modelview, modelview);
+
+    // Refusals, each naming the function.
+    let mut small = [0u32; 4];
+    // SAFETY: 16 writable bytes, fewer than the block.
+    let r = unsafe { ffvkPackStateBlock(c.0, small.as_mut_ptr().cast(), 16) };
+    assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+    let m = message();
+    assert!(
+        m.contains("ffvkPackStateBlock") && m.contains("size 16") && m.contains("3488"),
+        "{m}"
+    );
+    // SAFETY: null pointers are refused before any is followed.
+    let r = unsafe { ffvkPackSpecKey(null(), (&mut key as *mut SpecKey).cast(), size_of::<SpecKey>()) };
+    assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+    // SAFETY: as above.
+    let r = unsafe { ffvkPackDrawRecord(c.0, null_mut(), 1 << 20) };
+    assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+    let odd = (small.as_mut_ptr() as *mut u8)
+        .wrapping_add(1)
+        .cast::<std::ffi::c_void>();
+    // SAFETY: a misaligned pointer is refused before it is written.
+    let r = unsafe { ffvkPackSpecKey(c.0, odd, 1 << 20) };
+    assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+    // A positional light with all-zero attenuation: GL could not draw it.
+    let zero = Ctx::new();
+    // SAFETY: a live context; four floats each.
+    unsafe {
+        ffvkEnable(zero.0, LIGHTING);
+        ffvkEnable(zero.0, LIGHT0);
+        ffvkLightfv(zero.0, LIGHT0, POSITION, [0.0, 0.0, 1.0, 1.0].as_ptr());
+        ffvkLightf(zero.0, LIGHT0, CONSTANT_ATTENUATION, 0.0);
+    }
+    // SAFETY: a buffer of the block's size.
+    let r = unsafe {
+        ffvkPackStateBlock(
+            zero.0,
+            (&mut block as *mut StateBlock).cast(),
+            size_of::<StateBlock>(),
+        )
+    };
+    assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+    assert!(message().contains("ffvkPackStateBlock"), "{}", message());
+}
