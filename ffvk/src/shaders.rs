@@ -88,6 +88,29 @@ pub const FILES: &[LibraryFile] = &[
     ),
 ];
 
+/// The lines that make the library's switches plain constants of `key`'s values, for a
+/// shader compiled without specialization constants (GLSL ES, or one compile per state):
+/// `#define FFVK_SPEC_AS_DEFINES` and `#define FFVK_VALUE_<name> <value>` for each constant,
+/// to put before `#include "ffvk/spec.glsl"`. Every value is the key's: the pipeline's own
+/// constants (the points', the layout's conversions, the target's alpha bits, the textured
+/// units), which [`SpecKey::for_state`](crate::gpu::layout::SpecKey::for_state) leaves at 0,
+/// are the caller's to set first, as ffvk sets them for each of its pipelines.
+pub fn spec_defines(key: &crate::gpu::layout::SpecKey) -> String {
+    use crate::gpu::layout::SpecConstant;
+    let mut out = String::from("#define FFVK_SPEC_AS_DEFINES\n");
+    for c in SpecConstant::ALL {
+        let value = key.get(c);
+        let text = if c.is_float() {
+            // `{:?}` writes a float GLSL reads back exactly ("1.0", "3.4028235e38").
+            format!("{:?}", f32::from_bits(value as u32))
+        } else {
+            value.to_string()
+        };
+        out.push_str(&format!("#define FFVK_VALUE_{} {text}\n", c.glsl_name()));
+    }
+    out
+}
+
 /// The library's file `name` (`ffvk/lighting.glsl`), or `None` where there is none.
 pub fn file(name: &str) -> Option<&'static LibraryFile> {
     FILES.iter().find(|f| f.name == name)

@@ -454,16 +454,12 @@ fn the_embedding_guide_states_the_block_and_record_sizes_and_the_constant_ids_th
     );
 }
 
-/// A shader of a caller's own that includes the shader library (through `shaders::resolve`, as
-/// a compiler without `#include` takes it), its state block at the set and binding it chooses
-/// and the library's constants from ID 100, beside a constant of its own at ID 0: the block's
-/// members sit where `StateBlock` puts them, and each library constant's ID is its
-/// `SpecConstant`'s plus the base.
-#[test]
-fn a_callers_shader_places_the_librarys_block_and_constants_where_it_chooses() {
-    let source = r#"#version 450
+/// A fragment shader of a caller's own around the library: its state block at set 3, binding 1,
+/// a constant of its own at ID 0; `SPEC_LINES` is replaced by the caller's choice of
+/// specialization.
+const CALLER: &str = r#"#version 450
 #extension GL_EXT_control_flow_attributes : require
-#define FFVK_SPEC_BASE 100
+SPEC_LINES
 #include "ffvk/state.glsl"
 layout(std140, set = 3, binding = 1) uniform FfvkState { FFVK_STATE_MEMBERS } ffvk_state;
 #define FFVK_STATE ffvk_state
@@ -485,10 +481,17 @@ void main() {
     if (!alpha_passes(out_color.a)) discard;
 }
 "#;
-    let resolved = ffvk::shaders::resolve(source).unwrap();
+
+/// glslc's SPIR-V of `source` (a fragment stage) with the library inlined by
+/// `shaders::resolve`, as a compiler without `#include` takes it; or its messages.
+fn glslc(name: &str, source: &str) -> Result<Vec<u8>, String> {
+    let resolved = ffvk::shaders::resolve(source).map_err(|e| e.to_string())?;
     let dir = crate::support::output_dir().join("shader_library");
     std::fs::create_dir_all(&dir).unwrap();
-    let (glsl, spv) = (dir.join("caller.frag"), dir.join("caller.frag.spv"));
+    let (glsl, spv) = (
+        dir.join(format!("{name}.frag")),
+        dir.join(format!("{name}.frag.spv")),
+    );
     std::fs::write(&glsl, &resolved).unwrap();
     let glslc = std::env::var_os("GLSLC").unwrap_or_else(|| "glslc".into());
     let out = std::process::Command::new(glslc)
@@ -503,8 +506,20 @@ void main() {
         .arg(&glsl)
         .output()
         .expect("glslc runs (the build needs it too)");
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let r = reflect(&std::fs::read(&spv).unwrap());
+    if !out.status.success() {
+        return Err(String::from_utf8_lossy(&out.stderr).into_owned());
+    }
+    Ok(std::fs::read(&spv).unwrap())
+}
+
+/// A shader of a caller's own that includes the shader library, its state block at the set and
+/// binding it chooses and the library's constants from ID 100, beside a constant of its own at
+/// ID 0: the block's members sit where `StateBlock` puts them, and each library constant's ID
+/// is its `SpecConstant`'s plus the base.
+#[test]
+fn a_callers_shader_places_the_librarys_block_and_constants_where_it_chooses() {
+    let source = CALLER.replace("SPEC_LINES\n", "#define FFVK_SPEC_BASE 100\n");
+    let r = reflect(&glslc("caller", &source).unwrap_or_else(|e| panic!("{e}")));
     check_state_block(&r, "FfvkState", "the caller's shader");
     let variable = r
         .names
@@ -535,4 +550,41 @@ void main() {
         library >= 20,
         "only {library} of the library's constants were declared"
     );
+}
+
+/// The library's switches as plain constants (`FFVK_SPEC_AS_DEFINES` with
+/// `shaders::spec_defines` of a state's `SpecKey`): the shader compiles and declares none of
+/// the library's specialization constants (the caller's own stays), and a value left out fails
+/// the compile, naming it, rather than defaulting.
+#[test]
+fn the_librarys_switches_compile_as_defines_of_a_states_values() {
+    let mut gl = ffvk::gl::state::GlState::new();
+    gl.enable(ffvk::gl::state::Cap::Lighting).unwrap();
+    gl.enable(ffvk::gl::state::Cap::Light(0)).unwrap();
+    let mut key = SpecKey::for_state(&gl.lighting);
+    // A pipeline's own constants are the caller's to set, as ffvk sets them per pipeline.
+    key.values[SpecConstant::PointSizeMax as usize] = f32::MAX.to_bits() as i32;
+    key.values[SpecConstant::PointSize as usize] = 1.5f32.to_bits() as i32;
+    let defines = ffvk::shaders::spec_defines(&key);
+    assert!(
+        defines.contains("#define FFVK_VALUE_SPEC_POINT_SIZE 1.5\n"),
+        "{defines}"
+    );
+    assert!(
+        defines.contains("#define FFVK_VALUE_SPEC_LIGHT_COUNT 1\n"),
+        "{defines}"
+    );
+    assert!(
+        defines.contains("#define FFVK_VALUE_SPEC_POINT_SIZE_MAX 3.4028235e38\n"),
+        "{defines}"
+    );
+    let spirv =
+        glslc("caller_defines", &CALLER.replace("SPEC_LINES\n", &defines)).unwrap_or_else(|e| panic!("{e}"));
+    let r = reflect(&spirv);
+    let names: Vec<&str> = r.spec_ids.keys().map(|id| r.names[id].as_str()).collect();
+    assert_eq!(names, ["MY_OWN"], "only the caller's own constant is specialized");
+    check_state_block(&r, "FfvkState", "the caller's shader, defines");
+    let short = defines.replace("#define FFVK_VALUE_SPEC_FOG_MODE ", "#define FFVK_VALUE_UNUSED ");
+    let e = glslc("caller_short", &CALLER.replace("SPEC_LINES\n", &short)).unwrap_err();
+    assert!(e.contains("FFVK_VALUE_SPEC_FOG_MODE"), "{e}");
 }

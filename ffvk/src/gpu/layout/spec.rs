@@ -226,6 +226,20 @@ impl SpecConstant {
         self as u32
     }
 
+    /// Whether the GLSL declares it a `float` (its value's bits in [`SpecKey`]); the others
+    /// are `int`s.
+    pub fn is_float(self) -> bool {
+        matches!(
+            self,
+            SpecConstant::PointSize
+                | SpecConstant::PointAttenuationA
+                | SpecConstant::PointAttenuationB
+                | SpecConstant::PointAttenuationC
+                | SpecConstant::PointSizeMin
+                | SpecConstant::PointSizeMax
+        )
+    }
+
     /// The constant's name in the GLSL.
     pub fn glsl_name(self) -> &'static str {
         match self {
