@@ -41,7 +41,33 @@ impl UploadedTextures {
 impl StageTextures {
     /// The textures `stage` binds (none for the stages that do not texture).
     pub fn of(stage: Stage) -> Result<StageTextures> {
-        stage_textures(stage)
+        let mut out = StageTextures {
+            textures: [None, None, None, None],
+            cube_maps: [None, None, None, None],
+            mesh_texcoords: 0,
+        };
+        let checker = || TextureImage::checker(64, 8, [235, 235, 235, 255], [40, 90, 160, 255]);
+        let bad = |e: ffvk::gl::texture::TextureError| crate::Error::Bench(format!("a bench texture: {e}"));
+        match stage {
+            Stage::Texture => out.textures[0] = Some((checker().map_err(bad)?, linear())),
+            Stage::Units4 => {
+                out.textures[0] = Some((checker().map_err(bad)?, linear()));
+                out.textures[1] = Some((TextureImage::lightmap(64).map_err(bad)?, linear()));
+                out.textures[2] = Some((checker().map_err(bad)?, linear()));
+                let faces = [
+                    [230, 60, 50, 255],
+                    [60, 200, 200, 255],
+                    [240, 220, 60, 255],
+                    [120, 60, 180, 255],
+                    [60, 80, 230, 255],
+                    [60, 190, 80, 255],
+                ];
+                out.cube_maps[3] = Some((CubeImage::solid(16, faces).map_err(bad)?, linear()));
+                out.mesh_texcoords = 1 << 1;
+            }
+            _ => {}
+        }
+        Ok(out)
     }
 
     /// Uploads them to `renderer`'s device.
@@ -79,36 +105,6 @@ fn linear() -> Sampling {
     Sampling::default()
         .with_min_filter(MinFilter::Linear)
         .with_mag_filter(MagFilter::Linear)
-}
-
-fn stage_textures(stage: Stage) -> Result<StageTextures> {
-    let mut out = StageTextures {
-        textures: [None, None, None, None],
-        cube_maps: [None, None, None, None],
-        mesh_texcoords: 0,
-    };
-    let checker = || TextureImage::checker(64, 8, [235, 235, 235, 255], [40, 90, 160, 255]);
-    let bad = |e: ffvk::gl::texture::TextureError| crate::Error::Bench(format!("a bench texture: {e}"));
-    match stage {
-        Stage::Texture => out.textures[0] = Some((checker().map_err(bad)?, linear())),
-        Stage::Units4 => {
-            out.textures[0] = Some((checker().map_err(bad)?, linear()));
-            out.textures[1] = Some((TextureImage::lightmap(64).map_err(bad)?, linear()));
-            out.textures[2] = Some((checker().map_err(bad)?, linear()));
-            let faces = [
-                [230, 60, 50, 255],
-                [60, 200, 200, 255],
-                [240, 220, 60, 255],
-                [120, 60, 180, 255],
-                [60, 80, 230, 255],
-                [60, 190, 80, 255],
-            ];
-            out.cube_maps[3] = Some((CubeImage::solid(16, faces).map_err(bad)?, linear()));
-            out.mesh_texcoords = 1 << 1;
-        }
-        _ => {}
-    }
-    Ok(out)
 }
 
 /// Sets the units `stage` textures with, as a GL program would: `GL_TEXTURE_2D` (or

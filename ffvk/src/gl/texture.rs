@@ -346,6 +346,12 @@ with_fields!(Sampling {
 });
 
 impl Sampling {
+    /// Whether a texture sampled this way is complete (section 3.8.10): its min filter reads
+    /// no mipmaps, or the texture `has_mipmaps`. An incomplete texture textures nothing.
+    pub fn is_complete(&self, has_mipmaps: bool) -> bool {
+        !self.min_filter.uses_mipmaps() || has_mipmaps
+    }
+
     /// Nearest filtering without mipmaps and repeat: every texel reaches the screen unblended
     /// (what the exact tests use).
     pub const NEAREST: Sampling = Sampling {
@@ -771,8 +777,7 @@ pub fn units_applied(
 /// Whether texturing applies to a draw (section 3.8.10): `GL_TEXTURE_2D` enabled and a bound
 /// texture that is complete for its min filter (mipmaps present when the filter reads them).
 pub fn texturing_applies(unit: &TextureUnit, bound: Option<(&TextureImage, &Sampling)>) -> bool {
-    unit.enabled
-        && bound.is_some_and(|(image, sampling)| !sampling.min_filter.uses_mipmaps() || image.has_mipmaps())
+    unit.enabled && bound.is_some_and(|(image, sampling)| sampling.is_complete(image.has_mipmaps()))
 }
 
 #[cfg(test)]

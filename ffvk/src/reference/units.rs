@@ -65,17 +65,16 @@ impl DrawTextures<'_> {
     /// (sampled, applied, sampled as cube maps), a bit per unit, for `state`: a texture counts
     /// as bound when it is complete for its min filter (§3.8.10).
     pub fn units_applied(&self, state: &FixedFunctionState) -> (u32, u32, u32) {
-        let complete = |mipmaps: bool, sampling: &Sampling| !sampling.min_filter.uses_mipmaps() || mipmaps;
         let bits = |present: &dyn Fn(usize) -> bool| {
             (0..MAX_TEXTURE_UNITS)
                 .filter(|&i| present(i))
                 .fold(0, |mask, i| mask | 1 << i)
         };
         let flat = bits(&|i| {
-            self.textures[i].is_some_and(|(image, sampling)| complete(image.has_mipmaps(), sampling))
+            self.textures[i].is_some_and(|(image, sampling)| sampling.is_complete(image.has_mipmaps()))
         });
         let cube = bits(&|i| {
-            self.cube_maps[i].is_some_and(|(cube, sampling)| complete(cube.has_mipmaps(), sampling))
+            self.cube_maps[i].is_some_and(|(cube, sampling)| sampling.is_complete(cube.has_mipmaps()))
         });
         units_applied(&state.texture_units, flat, cube)
     }

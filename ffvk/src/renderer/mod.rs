@@ -310,7 +310,7 @@ impl Renderer {
         // (draw_frame waits, and the Texture is borrowed by the frame).
         let binding = unsafe { self.lighting.bind_texture(gpu_image.view(), sampler.raw()) }?
             .with_base_format(image.base_format);
-        let complete = !sampling.min_filter.uses_mipmaps() || image.has_mipmaps();
+        let complete = sampling.is_complete(image.has_mipmaps());
         Ok(Texture::new(
             gpu_image,
             sampler,
@@ -356,7 +356,7 @@ impl Renderer {
         // SAFETY: as upload_texture's.
         let binding = unsafe { self.lighting.bind_cube_map(gpu_image.view(), sampler.raw()) }?
             .with_base_format(image.faces()[0].base_format);
-        let complete = !sampling.min_filter.uses_mipmaps() || image.has_mipmaps();
+        let complete = sampling.is_complete(image.has_mipmaps());
         Ok(Texture::new(gpu_image, sampler, binding, complete, (side, side)))
     }
 

@@ -71,9 +71,7 @@ impl MeshTexture {
     pub fn applies(&self) -> bool {
         match &self.cube_map {
             // GL's precedence: the cube map, complete for the min filter, or nothing.
-            Some(cube) => {
-                self.unit.enabled && (!self.sampling.min_filter.uses_mipmaps() || cube.has_mipmaps())
-            }
+            Some(cube) => self.unit.enabled && self.sampling.is_complete(cube.has_mipmaps()),
             None => crate::gl::texture::texturing_applies(&self.unit, Some((&self.image, &self.sampling))),
         }
     }
