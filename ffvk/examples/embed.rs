@@ -33,8 +33,8 @@ use ffvk::{
 pub const SIZE: u32 = 256;
 /// The clear color.
 pub const CLEAR: [f32; 4] = [0.08, 0.08, 0.1, 1.0];
-const COLOR_FORMAT: vk::Format = vk::Format::R8G8B8A8_UNORM;
-const DEPTH_FORMAT: vk::Format = vk::Format::D32_SFLOAT;
+pub(crate) const COLOR_FORMAT: vk::Format = vk::Format::R8G8B8A8_UNORM;
+pub(crate) const DEPTH_FORMAT: vk::Format = vk::Format::D32_SFLOAT;
 
 /// The camera: eye space from world space.
 pub fn view() -> Mat4 {
@@ -144,7 +144,7 @@ pub fn render_modes(
 
 /// Runs `work` on a fresh [`App`] at `size` and fails with the validation layer's messages,
 /// if it reported any, after the app (and so every Vulkan object) is gone.
-fn with_app<T>(
+pub(crate) fn with_app<T>(
     device_name: Option<&str>,
     validation: bool,
     size: u32,
@@ -299,11 +299,11 @@ pub fn record_times(device_name: Option<&str>, objects: u32, frames: u32) -> Res
 }
 
 /// What a frame draws with and into.
-struct Scene {
+pub(crate) struct Scene {
     /// Positions (binding 0); normals and colors (binding 1).
-    buffers: [(vk::Buffer, u64); 2],
-    index_buffer: vk::Buffer,
-    index_count: u32,
+    pub(crate) buffers: [(vk::Buffer, u64); 2],
+    pub(crate) index_buffer: vk::Buffer,
+    pub(crate) index_count: u32,
     readback: vk::Buffer,
     color: (vk::Image, vk::ImageView),
     depth: (vk::Image, vk::ImageView),
@@ -315,18 +315,18 @@ struct Allocation {
 }
 
 /// The caller's renderer: every Vulkan object is created and destroyed here.
-struct App {
+pub(crate) struct App {
     _entry: ash::Entry,
     instance: ash::Instance,
     messenger: Option<(ext::debug_utils::Instance, vk::DebugUtilsMessengerEXT)>,
     messages: Box<Mutex<Vec<String>>>,
     physical: vk::PhysicalDevice,
-    device: ash::Device,
+    pub(crate) device: ash::Device,
     /// VK_EXT_line_rasterization's Bresenham lines are enabled: GL's aliased lines.
     bresenham_lines: bool,
     queue: vk::Queue,
     pool: vk::CommandPool,
-    cmd: vk::CommandBuffer,
+    pub(crate) cmd: vk::CommandBuffer,
     fence: vk::Fence,
     images: Vec<(vk::Image, vk::ImageView, Allocation)>,
     buffers: Vec<(vk::Buffer, Allocation)>,
@@ -515,7 +515,7 @@ impl App {
     }
 
     /// A host-visible buffer holding `bytes`.
-    fn buffer(&mut self, bytes: &[u8], usage: vk::BufferUsageFlags) -> Result<vk::Buffer, String> {
+    pub(crate) fn buffer(&mut self, bytes: &[u8], usage: vk::BufferUsageFlags) -> Result<vk::Buffer, String> {
         let info = vk::BufferCreateInfo::default()
             .size(bytes.len().max(4) as u64)
             .usage(usage);
@@ -582,7 +582,7 @@ impl App {
     }
 
     /// The teapot's buffers, the readback buffer and the attachments, made on this device.
-    fn scene(&mut self) -> Result<Scene, String> {
+    pub(crate) fn scene(&mut self) -> Result<Scene, String> {
         // The caller's vertex data: positions alone, then normals with 8-bit colors.
         let mesh = teapot().map_err(|e| e.to_string())?;
         let positions: Vec<[f32; 3]> = mesh.vertices.iter().map(|v| v.position).collect();
@@ -870,7 +870,7 @@ impl App {
     }
 
     /// Begins the command buffer and the rendering pass: clear color and depth.
-    fn begin(&self, scene: &Scene) -> Result<(), String> {
+    pub(crate) fn begin(&self, scene: &Scene) -> Result<(), String> {
         let ((color, color_view), (depth, depth_view)) = (scene.color, scene.depth);
         let d = &self.device;
         let barriers = [
@@ -956,7 +956,7 @@ impl App {
     }
 
     /// Ends the pass, copies the image out, submits, waits and returns the pixels.
-    fn finish(&self, scene: &Scene) -> Result<Vec<u8>, String> {
+    pub(crate) fn finish(&self, scene: &Scene) -> Result<Vec<u8>, String> {
         let (color, readback) = (scene.color.0, scene.readback);
         let d = &self.device;
         let to_transfer = [vk::ImageMemoryBarrier2::default()

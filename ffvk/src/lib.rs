@@ -144,6 +144,7 @@ pub use draw::pipeline::{
     Attribute, Blend, BlendColor, FaceArrays, LineStipple, MaterialArray, PolygonModes, PolygonOffset,
     PolygonStipple, RasterState, Specialize, Stencil, StencilFace, Target, VertexInput, MAX_VERTEX_BINDINGS,
 };
+pub use draw::pipeline_constants::PipelineConstants;
 pub use draw::record::{Geometry, Topology};
 pub use draw::texture::TextureBinding;
 pub use draw::viewport::{gl_scissor, gl_viewport, ViewportError};

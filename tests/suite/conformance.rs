@@ -569,7 +569,7 @@ fn fragment_mode_converges_to_mesa_gl_on_dense_meshes() {
 
 /// Compares one ffvk image with GL's within the per-vertex tolerance (2/255 on 99.5% of the
 /// covered pixels away from silhouettes); saves the three images on failure.
-fn check_against_gl(
+pub(crate) fn check_against_gl(
     r: &mut Renderer,
     name: &str,
     ours: &RgbaImage,

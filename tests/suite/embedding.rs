@@ -24,7 +24,7 @@ fn assert_cell_lit(image: &image::RgbaImage, (i, j): (u32, u32), gl: &GlState, w
 }
 
 /// Fails with the first pixel where the Renderer's image and the caller's differ, saving both.
-fn assert_same_bytes(renderer: &ffvk::Pixels, caller: &[u8], what: &str) {
+pub(crate) fn assert_same_bytes(renderer: &ffvk::Pixels, caller: &[u8], what: &str) {
     let first_difference = renderer
         .rgba()
         .chunks(4)

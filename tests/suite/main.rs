@@ -34,6 +34,7 @@ mod gltf_occlusion;
 mod golden;
 mod hostile;
 mod hostile_gltf;
+mod layer;
 mod layout;
 mod lighting;
 mod memory;

@@ -124,7 +124,8 @@ mod bindings;
 mod textures;
 mod variant;
 use bindings::Remembered;
-use variant::{units_key, Variant};
+pub(crate) use variant::units_key;
+use variant::Variant;
 
 pub use super::lit::{DrawValues, LitDraw, VertexLayout};
 pub use super::options::{LightingOptions, MAX_FRAMES_IN_FLIGHT};

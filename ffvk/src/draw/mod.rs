@@ -9,6 +9,7 @@ pub mod lighting;
 mod lit;
 mod options;
 pub mod pipeline;
+pub(crate) mod pipeline_constants;
 mod raster;
 mod raster_device;
 pub mod record;

@@ -1,0 +1,162 @@
+//! A pipeline ffvk does not own: the layer example (`ffvk/examples/layer.rs`) draws with its
+//! own shaders, which include the shader library, its own uniform block, descriptor set,
+//! specialization constants and pipelines, and a stage of its own (a vignette).
+
+// It brings its own copy of the embedding example, which crate::embedding also includes.
+#[path = "../../ffvk/examples/layer.rs"]
+#[allow(dead_code, clippy::duplicate_mod)]
+mod example;
+
+use ffvk::gl::state::{FixedFunctionState, LightingMode};
+use ffvk::{Draw, Frame};
+use ffvk_cli::gl_reference::GlDraw;
+use glam::Vec4;
+use image::RgbaImage;
+
+use crate::conformance::{check_against_gl, gl_draw_image, SIZE};
+use crate::embedding::assert_same_bytes;
+use crate::support::*;
+
+/// The teapot under `state`, drawn by ffvk's own pipelines at `SIZE`.
+fn ffvk_frame(r: &mut ffvk::Renderer, mesh: &ffvk::Mesh, state: &FixedFunctionState) -> ffvk::Pixels {
+    let mut frame = Frame::new(SIZE, SIZE);
+    frame.clear_color = Vec4::from_array(example::CLEAR);
+    frame
+        .draws
+        .push(Draw::new(mesh, example::view(), example::projection(), *state));
+    r.render(&frame).unwrap()
+}
+
+/// The layer's images of `frames` at `SIZE`, with the validation layer on.
+fn layer_images(frames: &[example::LayerFrame]) -> Vec<Vec<u8>> {
+    example::render(None, true, SIZE, frames).unwrap_or_else(|e| panic!("the layer example renders: {e}"))
+}
+
+/// With nothing of its own added, the layer's pipelines draw the bytes ffvk's own draw: the
+/// teapot lit per vertex, per fragment and flat, and with fog and the alpha test in the vertex
+/// and fragment modes (the library's lighting, color sum, fog and alpha test, in the caller's
+/// shaders, at the caller's bindings and constant IDs).
+#[test]
+fn a_layers_own_pipelines_built_on_the_library_draw_ffvks_bytes_in_every_mode() {
+    let frames: Vec<(String, example::LayerFrame)> = example::frames()
+        .unwrap()
+        .into_iter()
+        .filter(|(_, f)| !f.vignette)
+        .collect();
+    assert_eq!(frames.len(), 5, "three modes, then fog and alpha in two");
+    let only: Vec<example::LayerFrame> = frames.iter().map(|(_, f)| *f).collect();
+    let images = layer_images(&only);
+    let mut r = renderer();
+    let mesh = r.upload(&example::teapot().unwrap()).unwrap();
+    for ((name, frame), bytes) in frames.iter().zip(images) {
+        let ours = ffvk_frame(&mut r, &mesh, &frame.state);
+        assert_same_bytes(&ours, &bytes, &format!("layer_{name}"));
+        let clear = example::CLEAR.map(|c| (c * 255.0).round() as u8);
+        assert_ne!(
+            ours.pixel(SIZE / 2, SIZE / 2),
+            Some(clear),
+            "{name}: the teapot covers the centre"
+        );
+    }
+    // The alpha test drops something: the teapot's inside, seen through its openings.
+    let fogged = example::fogged_state(LightingMode::Vertex).unwrap();
+    let mut untested = fogged;
+    untested.fragment.alpha_test.enabled = false;
+    let (with, without) = (
+        ffvk_frame(&mut r, &mesh, &fogged),
+        ffvk_frame(&mut r, &mesh, &untested),
+    );
+    let dropped = with
+        .rgba()
+        .chunks(4)
+        .zip(without.rgba().chunks(4))
+        .filter(|(a, b)| a != b)
+        .count();
+    assert!(dropped > 0, "the alpha test drops the back faces");
+    finish(r);
+}
+
+/// The layer's fog and alpha test, in its own pipeline, against Mesa's GL given the same state
+/// through GL's entry points (per vertex: GL has no per-fragment lighting).
+#[test]
+fn the_layers_fog_and_alpha_test_match_mesa_gl() {
+    let state = example::fogged_state(LightingMode::Vertex).unwrap();
+    let frame = example::LayerFrame {
+        state,
+        vignette: false,
+    };
+    let bytes = layer_images(&[frame]).remove(0);
+    let ours = RgbaImage::from_raw(SIZE, SIZE, bytes).unwrap();
+    let teapot = example::teapot().unwrap();
+    let (view, projection) = (example::view(), example::projection());
+    let theirs = gl_draw_image(GlDraw::new(&teapot, view, projection, state), example::CLEAR);
+    let mut r = renderer();
+    let checked = check_against_gl(
+        &mut r,
+        "layer_fog_alpha",
+        &ours,
+        &theirs,
+        &teapot,
+        view,
+        projection,
+    );
+    finish(r);
+    checked.unwrap();
+    // Fogged: the teapot's centre is nearer the fog colour than the unfogged teapot's.
+    let mut clear_air = state;
+    clear_air.fragment.fog.enabled = false;
+    let unfogged = layer_images(&[example::LayerFrame {
+        state: clear_air,
+        vignette: false,
+    }])
+    .remove(0);
+    let at = ((SIZE / 2 * SIZE + SIZE / 2) * 4) as usize;
+    assert_ne!(
+        &unfogged[at..at + 4],
+        ours.get_pixel(SIZE / 2, SIZE / 2).0.as_slice(),
+        "fog changes the centre"
+    );
+}
+
+/// The layer's own stage: each pixel of the vignetted image is the plain image's pixel times
+/// the layer's factor at the pixel's centre, computed here in double precision (within the
+/// 1/255 of rounding twice); undrawn pixels keep the clear colour.
+#[test]
+fn the_layers_vignette_darkens_each_pixel_by_its_own_factor() {
+    for mode in [LightingMode::Vertex, LightingMode::Fragment] {
+        let state = example::fogged_state(mode).unwrap();
+        let images = layer_images(&[false, true].map(|vignette| example::LayerFrame { state, vignette }));
+        let (plain, vignetted) = (&images[0], &images[1]);
+        let clear = example::CLEAR.map(|c| (c * 255.0).round() as u8);
+        let mut darkened = 0;
+        for (i, (p, v)) in plain.chunks(4).zip(vignetted.chunks(4)).enumerate() {
+            let (x, y) = ((i as u32 % SIZE) as f64 + 0.5, (i as u32 / SIZE) as f64 + 0.5);
+            if p == clear && v == clear {
+                continue;
+            }
+            let f = example::vignette(x, y, SIZE);
+            for c in 0..3 {
+                let expected = p[c] as f64 * f;
+                assert!(
+                    (v[c] as f64 - expected).abs() <= 1.0,
+                    "{}: pixel ({x}, {y}) channel {c}: {} after the vignette, expected {expected:.2} ({} × {f:.4})",
+                    mode.name(),
+                    v[c],
+                    p[c]
+                );
+            }
+            assert_eq!(
+                v[3],
+                p[3],
+                "{}: the vignette leaves alpha alone at ({x}, {y})",
+                mode.name()
+            );
+            darkened += usize::from(v != p);
+        }
+        assert!(
+            darkened > 1000,
+            "{}: the vignette darkens the teapot's edges ({darkened} pixels)",
+            mode.name()
+        );
+    }
+}
