@@ -21,6 +21,10 @@ if [[ "${1:-}" == "--test" ]]; then
     libvulkan-dev            # <vulkan/vulkan.h> and libvulkan.so for the C example
     libgl-dev                # <GL/gl.h>: the header test includes it beside ffvk.h
     pkg-config               # the installed library's ffvk.pc, read as a C program's build reads it
+    # The shader library as GLSL ES 3.00 on Mesa's OpenGL ES 3 (the layer example's C program).
+    libgles2                 # libGLESv2.so.2, glvnd's OpenGL ES dispatcher
+    libgles-dev              # <GLES3/gl3.h> and libGLESv2.so to link against
+    libegl-dev               # <EGL/egl.h> and libEGL.so to link against
   )
 fi
 

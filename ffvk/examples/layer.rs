@@ -58,11 +58,28 @@ pub fn vignette(x: f64, y: f64, size: u32) -> f64 {
     1.0 - 0.7 * (t * t * (3.0 - 2.0 * t))
 }
 
-/// The layer's GLSL for `stage` ("vert" or "frag") in `mode`, its own include and then the
-/// library's inlined (`ffvk::shaders::resolve`, as for a compiler without `#include`),
-/// compiled by glslc to SPIR-V words.
-pub fn compile(stage: &str, mode: LightingMode) -> Result<Vec<u32>, String> {
-    let source = match stage {
+/// Where the layer's shaders run.
+pub enum ShaderTarget<'a> {
+    /// Vulkan: GLSL 4.50, compiled to SPIR-V; the switches are specialization constants.
+    Vulkan,
+    /// OpenGL ES 3: GLSL ES 3.00 text, the library's `ffvk/es.glsl` first, the switches
+    /// (`key`'s) and the layer's own values as defines.
+    Es {
+        /// The library's values, as `SpecKey::for_pipeline` gives them.
+        key: &'a SpecKey,
+        /// The layer's vignette on or off.
+        vignette: bool,
+        /// The image's width and height.
+        size: u32,
+    },
+}
+
+/// The layer's GLSL for `stage` ("vert" or "frag") in `mode` for `target`: the `#version`
+/// line and the target's lines, the mode's defines, the layer's source with its own include
+/// inlined, then the library's (`ffvk::shaders::resolve`, as for a compiler without
+/// `#include`).
+pub fn source(stage: &str, mode: LightingMode, target: &ShaderTarget) -> Result<String, String> {
+    let body = match stage {
         "vert" => LAYER_VERT,
         "frag" => LAYER_FRAG,
         _ => {
@@ -71,18 +88,36 @@ pub fn compile(stage: &str, mode: LightingMode) -> Result<Vec<u32>, String> {
             ))
         }
     };
-    let with_ours = source.replace("#include \"layer.glsl\"", LAYER_GLSL);
-    let resolved = ffvk::shaders::resolve(&with_ours).map_err(|e| format!("layer.{stage}: {e}"))?;
-    let defines: &[&str] = match mode {
-        LightingMode::Fragment => &["-DPER_FRAGMENT"],
-        LightingMode::Flat => &["-DINTERP=flat"],
-        _ => &["-DINTERP=smooth"],
-    };
+    let mut text = String::new();
+    match target {
+        ShaderTarget::Vulkan => text.push_str("#version 450\n"),
+        ShaderTarget::Es { key, vignette, size } => {
+            text.push_str("#version 300 es\n#include \"ffvk/es.glsl\"\n");
+            text.push_str(&ffvk::shaders::spec_defines(key));
+            text.push_str(&format!(
+                "#define LAYER_VALUE_VIGNETTE {}\n#define LAYER_VALUE_HALF_SIZE {:?}\n",
+                i32::from(*vignette),
+                *size as f32 / 2.0
+            ));
+        }
+    }
+    text.push_str(match mode {
+        LightingMode::Fragment => "#define PER_FRAGMENT\n",
+        LightingMode::Flat => "#define INTERP flat\n",
+        _ => "#define INTERP smooth\n",
+    });
+    text.push_str(&body.replace("#include \"layer.glsl\"", LAYER_GLSL));
+    ffvk::shaders::resolve(&text).map_err(|e| format!("layer.{stage}: {e}"))
+}
+
+/// The layer's Vulkan GLSL for `stage` in `mode` ([`source`]) compiled by glslc to SPIR-V
+/// words.
+pub fn compile(stage: &str, mode: LightingMode) -> Result<Vec<u32>, String> {
+    let resolved = source(stage, mode, &ShaderTarget::Vulkan)?;
     let glslc = std::env::var_os("GLSLC").unwrap_or_else(|| "glslc".into());
     let mut child = std::process::Command::new(&glslc)
         .arg(format!("-fshader-stage={stage}"))
         .args(["--target-env=vulkan1.3", "-O0", "-Werror"])
-        .args(defines)
         .args(["-o", "-", "-"])
         .stdin(std::process::Stdio::piped())
         .stdout(std::process::Stdio::piped())

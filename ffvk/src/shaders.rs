@@ -27,7 +27,7 @@ use std::collections::HashSet;
 /// The library's interface version (`FFVK_LIBRARY_VERSION` in `ffvk/state.glsl`): a change of
 /// the state block's layout, of a function's inputs or outputs, of a specialization constant's
 /// meaning or ID, or of what the caller must define is a new version.
-pub const LIBRARY_VERSION: u32 = 1;
+pub const LIBRARY_VERSION: u32 = 2;
 
 /// One file of the library.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -86,15 +86,21 @@ pub const FILES: &[LibraryFile] = &[
         "texture.glsl",
         "The texture environments, GL_COMBINE and the units in order (section 3.8.13-16)."
     ),
+    library_file!(
+        "es.glsl",
+        "The declaration header for GLSL ES 3.00: precision, no loop attributes; included first."
+    ),
 ];
 
 /// The lines that make the library's switches plain constants of `key`'s values, for a
 /// shader compiled without specialization constants (GLSL ES, or one compile per state):
-/// `#define FFVK_SPEC_AS_DEFINES` and `#define FFVK_VALUE_<name> <value>` for each constant,
+/// `#define FFVK_SPEC_AS_DEFINES` and `#define <name> <value>` for each constant (negative
+/// values in parentheses),
 /// to put before `#include "ffvk/spec.glsl"`. Every value is the key's: the pipeline's own
 /// constants (the points', the layout's conversions, the target's alpha bits, the textured
 /// units), which [`SpecKey::for_state`](crate::gpu::layout::SpecKey::for_state) leaves at 0,
-/// are the caller's to set first, as ffvk sets them for each of its pipelines.
+/// are the caller's to set first, as ffvk sets them for each of its pipelines
+/// ([`SpecKey::for_pipeline`](crate::gpu::layout::SpecKey::for_pipeline) sets them).
 pub fn spec_defines(key: &crate::gpu::layout::SpecKey) -> String {
     use crate::gpu::layout::SpecConstant;
     let mut out = String::from("#define FFVK_SPEC_AS_DEFINES\n");
@@ -106,7 +112,13 @@ pub fn spec_defines(key: &crate::gpu::layout::SpecKey) -> String {
         } else {
             value.to_string()
         };
-        out.push_str(&format!("#define FFVK_VALUE_{} {text}\n", c.glsl_name()));
+        // A negative value in parentheses: `x - SPEC_...` stays a subtraction of it.
+        let text = if text.starts_with('-') {
+            format!("({text})")
+        } else {
+            text
+        };
+        out.push_str(&format!("#define {} {text}\n", c.glsl_name()));
     }
     out
 }

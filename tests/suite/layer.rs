@@ -160,3 +160,144 @@ fn the_layers_vignette_darkens_each_pixel_by_its_own_factor() {
         );
     }
 }
+
+/// Builds the layer's OpenGL ES 3 program (`ffvk/examples/gles/layer_gles.c`) with the
+/// system's C compiler against EGL and GLES 2/3 (libegl-dev, libgles-dev).
+fn gles_program() -> std::path::PathBuf {
+    let source = concat!(env!("CARGO_MANIFEST_DIR"), "/ffvk/examples/gles/layer_gles.c");
+    let dir = output_dir().join("layer_gles");
+    std::fs::create_dir_all(&dir).unwrap();
+    let program = dir.join("layer_gles");
+    let out = std::process::Command::new("cc")
+        .args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-O1", source, "-o"])
+        .arg(&program)
+        .args(["-lEGL", "-lGLESv2"])
+        .output()
+        .expect("cc runs (the C API's tests need it too)");
+    assert!(
+        out.status.success(),
+        "cc layer_gles.c:\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    program
+}
+
+/// The layer's frame drawn by its ES program on Mesa's OpenGL ES 3 (llvmpipe, through EGL
+/// without a surface): its shaders as GLSL ES 3.00 with the library's ES header, the switches
+/// as defines, its blocks from uniform buffers, GL's own projection. Returns the image, top row
+/// first, and what GL_RENDERER and GL_VERSION said.
+fn gles_image(program: &std::path::Path, name: &str, frame: &example::LayerFrame) -> (Vec<u8>, String) {
+    use ffvk::gpu::layout::{DrawBlock, SpecKey};
+    let dir = output_dir().join("layer_gles").join(name);
+    std::fs::create_dir_all(&dir).unwrap();
+    let state = &frame.state;
+    let (modelview, projection) = (example::view(), example::projection());
+    let key = SpecKey::for_pipeline(
+        state,
+        modelview,
+        &ffvk::PipelineConstants::new(
+            ffvk::Topology::TriangleList,
+            ffvk::ash::vk::Format::R8G8B8A8_UNORM,
+        ),
+    );
+    let target = example::ShaderTarget::Es {
+        key: &key,
+        vignette: frame.vignette,
+        size: SIZE,
+    };
+    for stage in ["vert", "frag"] {
+        let text = example::source(stage, state.mode, &target).unwrap();
+        std::fs::write(dir.join(format!("{stage}.glsl")), text).unwrap();
+    }
+    let mut block = DrawBlock::new(state, modelview, projection).unwrap();
+    // The block's projection is Vulkan's clip space (y flipped, z in [0, w]); GL's is GL's own.
+    block.state.projection = projection.to_cols_array();
+    std::fs::write(dir.join("draw.bin"), bytemuck::bytes_of(&block.record)).unwrap();
+    std::fs::write(dir.join("state.bin"), bytemuck::bytes_of(&block.state)).unwrap();
+    // The teapot as the Vulkan side's buffers hold it (the embedding example's `scene`).
+    let mesh = example::teapot().unwrap();
+    let positions: Vec<[f32; 3]> = mesh.vertices.iter().map(|v| v.position).collect();
+    let mut attributes = Vec::with_capacity(mesh.vertices.len() * 16);
+    for v in &mesh.vertices {
+        attributes.extend_from_slice(bytemuck::cast_slice(&v.normal));
+        attributes.extend(v.color.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8));
+    }
+    std::fs::write(dir.join("positions.bin"), bytemuck::cast_slice(&positions)).unwrap();
+    std::fs::write(dir.join("attributes.bin"), &attributes).unwrap();
+    std::fs::write(dir.join("indices.bin"), bytemuck::cast_slice(&mesh.indices)).unwrap();
+    let out = std::process::Command::new(program)
+        .arg(&dir)
+        .arg(SIZE.to_string())
+        .args(example::CLEAR.map(|c| c.to_string()))
+        // Mesa's software rasterizer, whatever GPU the machine has.
+        .env("LIBGL_ALWAYS_SOFTWARE", "1")
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{name}: the ES program failed (shaders in {}):\n{}",
+        dir.display(),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let rgba = std::fs::read(dir.join("image.rgba")).unwrap();
+    (rgba, String::from_utf8_lossy(&out.stdout).trim().to_string())
+}
+
+/// The library as GLSL ES 3.00: the layer's shaders, the library's functions unchanged behind
+/// its ES header, in an OpenGL ES 3 context on Mesa, draw the images ffvk's Vulkan pipelines
+/// draw within 1/255 at every pixel but those along silhouettes, where GL's and Vulkan's
+/// rasterization of the mirrored (y-flipped) triangles may cover a pixel differently.
+#[test]
+fn the_library_compiled_as_glsl_es_draws_ffvks_images_on_mesas_gles() {
+    let program = gles_program();
+    let mut frames: Vec<(String, example::LayerFrame)> = example::frames().unwrap();
+    frames.retain(|(name, _)| name.starts_with("teapot") || name.ends_with("vignette"));
+    assert_eq!(
+        frames.len(),
+        5,
+        "three modes, fog and alpha with the vignette in two"
+    );
+    let only: Vec<example::LayerFrame> = frames.iter().map(|(_, f)| *f).collect();
+    let vulkan = layer_images(&only);
+    let mut report = Vec::new();
+    for ((name, frame), ours) in frames.iter().zip(&vulkan) {
+        let (es, renderer) = gles_image(&program, name, frame);
+        assert!(renderer.contains("OpenGL ES 3"), "{name}: {renderer}");
+        let (mut compared, mut beyond, mut worst) = (0, 0, 0u8);
+        let at = |x: i64, y: i64| ((y * SIZE as i64 + x) * 4) as usize;
+        let clear = example::CLEAR.map(|c| (c * 255.0).round() as u8);
+        for y in 1..SIZE as i64 - 1 {
+            for x in 1..SIZE as i64 - 1 {
+                // Covered in both images, as are its eight neighbours: not on a silhouette.
+                let covered = |img: &[u8], x: i64, y: i64| img[at(x, y)..at(x, y) + 4] != clear;
+                let inside = (-1..=1).all(|dy| {
+                    (-1..=1).all(|dx| covered(ours, x + dx, y + dy) && covered(&es, x + dx, y + dy))
+                });
+                if !inside {
+                    continue;
+                }
+                compared += 1;
+                let d = (0..4)
+                    .map(|c| ours[at(x, y) + c].abs_diff(es[at(x, y) + c]))
+                    .max()
+                    .unwrap();
+                worst = worst.max(d);
+                beyond += usize::from(d > 1);
+            }
+        }
+        report.push(format!(
+            "{name}: {compared} pixels compared, {beyond} beyond 1/255, worst {worst}/255"
+        ));
+        let es_image = RgbaImage::from_raw(SIZE, SIZE, es.clone()).unwrap();
+        save_for_inspection(&es_image, &format!("layer_gles_{name}"));
+        assert!(
+            compared > 2000,
+            "{name}: the teapot covers the image ({compared} pixels)"
+        );
+        assert!(
+            beyond == 0,
+            "{name}: ES and Vulkan differ beyond 1/255 at {beyond} of {compared} pixels (worst {worst}/255; tests/output/layer_gles_{name}.png)\n{renderer}"
+        );
+    }
+    eprintln!("{}", report.join("\n"));
+}

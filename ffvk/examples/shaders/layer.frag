@@ -1,19 +1,19 @@
-#version 450
 // The layer example's fragment stage: GL's lighting (PER_FRAGMENT) or the face's lit colors,
-// the color sum, fog, the layer's own vignette, then the alpha test.
+// the color sum, fog, the layer's own vignette, then the alpha test. Its `#version` line and
+// the target's lines come first (../layer.rs, `source`).
 #define FFVK_HIDDEN_ZERO uint(gl_FragCoord.x < 0.0)
 #include "layer.glsl"
 
-layout(location = 5) in float fog;
+LAYER_LOCATION(5) in float fog;
 #ifdef PER_FRAGMENT
-layout(location = 0) in vec4 eye_position;
-layout(location = 1) in vec4 normal;
-layout(location = 3) in vec4 color;
+LAYER_LOCATION(0) in vec4 eye_position;
+LAYER_LOCATION(1) in vec4 normal;
+LAYER_LOCATION(3) in vec4 color;
 #else
-layout(location = 0) INTERP in vec4 front_pri;
-layout(location = 1) INTERP in vec4 front_sec;
-layout(location = 2) INTERP in vec4 back_pri;
-layout(location = 3) INTERP in vec4 back_sec;
+LAYER_LOCATION(0) INTERP in vec4 front_pri;
+LAYER_LOCATION(1) INTERP in vec4 front_sec;
+LAYER_LOCATION(2) INTERP in vec4 back_pri;
+LAYER_LOCATION(3) INTERP in vec4 back_sec;
 #endif
 layout(location = 0) out vec4 out_color;
 

@@ -1,26 +1,30 @@
-#version 450
 // The layer example's vertex stage. PER_FRAGMENT: pass what the fragment stage lights with
 // (GL's per-fragment lighting); otherwise light here, front and back (GL's SMOOTH, or FLAT
-// with INTERP defined as `flat`).
+// with INTERP defined as `flat`). Its `#version` line and the target's lines come first
+// (../layer.rs, `source`).
 layout(location = 0) in vec4 in_position;  // the layer's positions (binding 0)
 layout(location = 1) in vec3 in_normal;    // its normals (binding 1)
 layout(location = 2) in vec4 in_color;     // its 8-bit colors (binding 1)
 
 // A zero the compiler cannot prove zero: the library's switches pass the block's values
 // through it, so that lavapipe does not compile a variant per draw (docs/shader-library.md).
+#ifdef FFVK_GLSL_ES
+#define FFVK_HIDDEN_ZERO uint(gl_VertexID < 0)
+#else
 #define FFVK_HIDDEN_ZERO uint(gl_VertexIndex < 0)
+#endif
 #include "layer.glsl"
 
-layout(location = 5) out float fog;
+LAYER_LOCATION(5) out float fog;
 #ifdef PER_FRAGMENT
-layout(location = 0) out vec4 eye_position;
-layout(location = 1) out vec4 normal;  // the direction; w: the length
-layout(location = 3) out vec4 color;
+LAYER_LOCATION(0) out vec4 eye_position;
+LAYER_LOCATION(1) out vec4 normal;  // the direction; w: the length
+LAYER_LOCATION(3) out vec4 color;
 #else
-layout(location = 0) INTERP out vec4 front_pri;
-layout(location = 1) INTERP out vec4 front_sec;
-layout(location = 2) INTERP out vec4 back_pri;
-layout(location = 3) INTERP out vec4 back_sec;
+LAYER_LOCATION(0) INTERP out vec4 front_pri;
+LAYER_LOCATION(1) INTERP out vec4 front_sec;
+LAYER_LOCATION(2) INTERP out vec4 back_pri;
+LAYER_LOCATION(3) INTERP out vec4 back_sec;
 #endif
 
 // With lighting off, the secondary color GL sums (section 2.14): the current one, clamped,

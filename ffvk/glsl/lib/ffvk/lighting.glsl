@@ -177,7 +177,7 @@ LitColor light_equation(vec4 V, vec3 n, Material m) {
     // lavapipe reads each light's uniforms at constant offsets; the uniform count is not,
     // since lavapipe would then run all MAX_LIGHTS iterations under a mask (BENCHMARKS.md).
     if (SPEC_LIGHT_COUNT >= 0) {
-        [[unroll]] for (int i = 0; i < SPEC_LIGHT_COUNT; i++) {
+        FFVK_UNROLL for (int i = 0; i < SPEC_LIGHT_COUNT; i++) {
             light_term(uint(i), V, n, m, VPe, c_pri, c_sec);
         }
     } else {

@@ -14,7 +14,13 @@
 // The interface's version: a change of the state block's layout, of a function's inputs or
 // outputs, of a specialization constant's meaning or ID, or of what the caller must define is
 // a new version.
-#define FFVK_LIBRARY_VERSION 1
+#define FFVK_LIBRARY_VERSION 2
+
+// The loops the library unrolls: [[unroll]] (GL_EXT_control_flow_attributes, which a Vulkan
+// caller's shader enables), nothing in GLSL ES (ffvk/es.glsl), which has no attributes.
+#ifndef FFVK_UNROLL
+#define FFVK_UNROLL [[unroll]]
+#endif
 
 #define MAX_LIGHTS 16
 

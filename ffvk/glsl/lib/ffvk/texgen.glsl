@@ -26,10 +26,10 @@ uint texgen_modes(uint unit) {
 // normal map).
 bool texgen_reads_normal() {
     bool reads = false;
-    [[unroll]] for (uint unit = 0u; unit < MAX_TEXTURE_UNITS; unit++) {
+    FFVK_UNROLL for (uint unit = 0u; unit < MAX_TEXTURE_UNITS; unit++) {
         if (!unit_sampled(unit)) continue;
         uint modes = texgen_modes(unit);
-        [[unroll]] for (uint i = 0u; i < 4u; i++) reads = reads || ((modes >> (3u * i)) & 7u) >= TEXGEN_SPHERE_MAP;
+        FFVK_UNROLL for (uint i = 0u; i < 4u; i++) reads = reads || ((modes >> (3u * i)) & 7u) >= TEXGEN_SPHERE_MAP;
     }
     return reads;
 }
@@ -50,7 +50,7 @@ vec4 generated_coords(uint unit, vec4 c, vec4 p_o, vec4 p_e, vec3 n_f) {
     float reflected[4] = float[4](r.x, r.y, r.z, 0.0);
     float normal[4] = float[4](n_f.x, n_f.y, n_f.z, 0.0);
     vec4 g = c;
-    [[unroll]] for (uint i = 0u; i < 4u; i++) {
+    FFVK_UNROLL for (uint i = 0u; i < 4u; i++) {
         uint mode = (modes >> (3u * i)) & 7u;
         vec4 plane = FFVK_STATE.units[unit].texgen_planes[i];
         if (mode == TEXGEN_OBJECT_LINEAR) g[i] = dot(plane, p_o);
@@ -66,7 +66,7 @@ vec4 generated_coords(uint unit, vec4 c, vec4 p_o, vec4 p_e, vec3 n_f) {
 // ones), generated where the unit says, times its texture matrix. Units not sampled are
 // left unwritten (their varyings are never read).
 void unit_coords(vec4 c[MAX_TEXTURE_UNITS], vec4 p_o, vec4 p_e, vec3 n_f, out vec4 stq[MAX_TEXTURE_UNITS]) {
-    [[unroll]] for (uint i = 0u; i < MAX_TEXTURE_UNITS; i++) {
+    FFVK_UNROLL for (uint i = 0u; i < MAX_TEXTURE_UNITS; i++) {
         if (unit_sampled(i)) stq[i] = FFVK_STATE.units[i].matrix * generated_coords(i, c[i], p_o, p_e, n_f);
     }
 }

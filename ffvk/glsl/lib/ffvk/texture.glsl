@@ -86,7 +86,7 @@ vec4 combine(uint i, UnitInputs v) {
     uint crossbar = crossbar_bits(i);
     vec3 rgb_args[3];
     vec3 alpha_args[3];
-    [[unroll]] for (uint k = 0u; k < 3u; k++) {
+    FFVK_UNROLL for (uint k = 0u; k < 3u; k++) {
         uint rgb_unit = (crossbar >> (3u * k)) & 7u;
         uint alpha_unit = (crossbar >> (9u + 3u * k)) & 7u;
         vec4 c = combine_source(i, (bits >> (6u + 2u * k)) & 3u, rgb_unit, v);
@@ -185,10 +185,10 @@ vec4 textured_color(vec4 C_f, vec4 stq[MAX_TEXTURE_UNITS]) {
     UnitInputs v;
     v.C_f = C_f;
     v.C_p = C_f;
-    [[unroll]] for (uint i = 0u; i < MAX_TEXTURE_UNITS; i++) {
+    FFVK_UNROLL for (uint i = 0u; i < MAX_TEXTURE_UNITS; i++) {
         v.C_s[i] = unit_sampled(i) ? texel_at(i, stq[i]) : vec4(0.0);
     }
-    [[unroll]] for (uint i = 0u; i < MAX_TEXTURE_UNITS; i++) {
+    FFVK_UNROLL for (uint i = 0u; i < MAX_TEXTURE_UNITS; i++) {
         if (unit_applied(i)) v.C_p = texture_environment(i, v);
     }
     return v.C_p;
