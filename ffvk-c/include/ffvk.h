@@ -3178,6 +3178,49 @@ enum FfvkResult ffvkPackDrawRecord(const struct FfvkContext *ctx, void *dst, uin
 enum FfvkResult ffvkPackSpecKey(const struct FfvkContext *ctx, void *dst, uintptr_t size);
 
 /*
+ Writes the specialization constants of a pipeline of the caller's own that draws `mode`
+ (GL's primitive: `GL_POINTS` for any pipeline that rasterizes points, polygons in
+ `GL_POINT` mode included) into a color attachment of `colorFormat`, with a complete 2D
+ texture bound on the units `bound2d` names and a cube map on those `boundCube` names (a bit
+ per unit), under `ctx`'s state and modelview: `ffvkPackSpecKey`'s values with the
+ pipeline's own set as ffvk sets them in its own pipelines (the point constants from
+ `glPointSize` and `glPointParameter`, the target's alpha bits, the units sampled and
+ applied). Same layout and errors as `ffvkPackSpecKey`; a `mode` that is not one of GL's
+ ten primitive modes is `FFVK_ERROR_INVALID_ARGUMENT`.
+
+ # Safety
+
+ `ctx` is null or a live context; `dst` is null or `size` writable bytes.
+ */
+enum FfvkResult ffvkPackSpecKeyForPipeline(const struct FfvkContext *ctx,
+                                           uint32_t mode,
+                                           VkFormat color_format,
+                                           uint32_t bound2d,
+                                           uint32_t bound_cube,
+                                           void *dst,
+                                           uintptr_t size);
+
+/*
+ Writes `source` with each `#include "ffvk/..."` replaced by the library file's text (each
+ file once; other `#include` lines left as they are), for a compiler without `#include`
+ (GLSL ES: `ffvk/es.glsl`). `source` is NUL-terminated; the result is written to `dst`, NUL
+ included, where `capacity` bytes fit it, and its length without the NUL to `*length` in any
+ case, so that a first call with `dst` null and `capacity` 0 asks for the size.
+ `FFVK_ERROR_INVALID_ARGUMENT` for a null `source` or `length`, an include the library does
+ not have (the message names its line and lists the files), a malformed `#include`, and a
+ `capacity` too small for the text and its NUL (nothing is then written to `dst`).
+
+ # Safety
+
+ `source` is null or a NUL-terminated string; `dst` is null or `capacity` writable bytes;
+ `length` is null or writable.
+ */
+enum FfvkResult ffvkShaderLibraryResolve(const char *source,
+                                         char *dst,
+                                         uintptr_t capacity,
+                                         uintptr_t *length);
+
+/*
  Writes to `*viewport` the `VkViewport` that puts ffvk's draws where GL's
  `glViewport(x, y, width, height)` and `glDepthRange(near_val, far_val)` put them, in a
  color attachment `target_height` pixels high. Set it with `vkCmdSetViewport` between

@@ -7,9 +7,12 @@
 use std::ffi::{c_char, c_void, CStr};
 
 use ffvk::gpu::layout::{DrawBlock, DrawRecord, SpecKey, StateBlock};
+use ffvk::{PipelineConstants, Topology};
 
+use crate::enums::{enum_name, GL_POINTS, GL_POLYGON};
 use crate::gl::FfvkContext;
 use crate::result::{check_ptr, fail, guard, FfvkResult};
+use crate::vk_types::VkFormat;
 
 /// The shader library's interface version (`FFVK_LIBRARY_VERSION` in `ffvk/state.glsl`): a
 /// change of the state block, a function's inputs or outputs, a specialization constant or
@@ -191,6 +194,125 @@ pub unsafe extern "C" fn ffvkPackSpecKey(
             Ok(bytemuck::bytes_of(&SpecKey::for_draw(&c.gl.lighting, c.gl.modelview)).to_vec())
         })
     }
+}
+
+/// Writes the specialization constants of a pipeline of the caller's own that draws `mode`
+/// (GL's primitive: `GL_POINTS` for any pipeline that rasterizes points, polygons in
+/// `GL_POINT` mode included) into a color attachment of `colorFormat`, with a complete 2D
+/// texture bound on the units `bound2d` names and a cube map on those `boundCube` names (a bit
+/// per unit), under `ctx`'s state and modelview: `ffvkPackSpecKey`'s values with the
+/// pipeline's own set as ffvk sets them in its own pipelines (the point constants from
+/// `glPointSize` and `glPointParameter`, the target's alpha bits, the units sampled and
+/// applied). Same layout and errors as `ffvkPackSpecKey`; a `mode` that is not one of GL's
+/// ten primitive modes is `FFVK_ERROR_INVALID_ARGUMENT`.
+///
+/// # Safety
+///
+/// `ctx` is null or a live context; `dst` is null or `size` writable bytes.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkPackSpecKeyForPipeline(
+    ctx: *const FfvkContext,
+    mode: u32,
+    color_format: VkFormat,
+    bound2d: u32,
+    bound_cube: u32,
+    dst: *mut c_void,
+    size: usize,
+) -> FfvkResult {
+    const F: &str = "ffvkPackSpecKeyForPipeline";
+    let need = std::mem::size_of::<SpecKey>();
+    // SAFETY: passed on under the same contract.
+    unsafe {
+        pack_into(F, ctx, (dst.cast(), size, need), |c| {
+            let topology = match mode {
+                GL_POINTS => Topology::PointList,
+                m if m <= GL_POLYGON => Topology::TriangleList,
+                other => {
+                    return Err(fail(
+                        FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                        format!(
+                            "{F}: mode {} is not one of GL's ten primitive modes: expected GL_POINTS \
+                             (0x0000) .. GL_POLYGON (0x0009)",
+                            enum_name(other)
+                        ),
+                    ))
+                }
+            };
+            let mut pipeline = PipelineConstants::new(topology, color_format);
+            pipeline.point_size = c.gl.raster.point_size;
+            pipeline.bound_2d = bound2d;
+            pipeline.bound_cube = bound_cube;
+            let key = SpecKey::for_pipeline(&c.gl.lighting, c.gl.modelview, &pipeline);
+            Ok(bytemuck::bytes_of(&key).to_vec())
+        })
+    }
+}
+
+/// Writes `source` with each `#include "ffvk/..."` replaced by the library file's text (each
+/// file once; other `#include` lines left as they are), for a compiler without `#include`
+/// (GLSL ES: `ffvk/es.glsl`). `source` is NUL-terminated; the result is written to `dst`, NUL
+/// included, where `capacity` bytes fit it, and its length without the NUL to `*length` in any
+/// case, so that a first call with `dst` null and `capacity` 0 asks for the size.
+/// `FFVK_ERROR_INVALID_ARGUMENT` for a null `source` or `length`, an include the library does
+/// not have (the message names its line and lists the files), a malformed `#include`, and a
+/// `capacity` too small for the text and its NUL (nothing is then written to `dst`).
+///
+/// # Safety
+///
+/// `source` is null or a NUL-terminated string; `dst` is null or `capacity` writable bytes;
+/// `length` is null or writable.
+#[no_mangle]
+pub unsafe extern "C" fn ffvkShaderLibraryResolve(
+    source: *const c_char,
+    dst: *mut c_char,
+    capacity: usize,
+    length: *mut usize,
+) -> FfvkResult {
+    const F: &str = "ffvkShaderLibraryResolve";
+    guard(|| {
+        if let Err(code) = check_ptr(F, "length", length, "where to write the text's length") {
+            return code;
+        }
+        // SAFETY: checked non-null and aligned; writable by the contract.
+        unsafe { *length = 0 };
+        if source.is_null() {
+            return fail(
+                FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                format!("{F}: source is a null pointer: expected a shader's NUL-terminated text"),
+            );
+        }
+        // SAFETY: the caller's contract: a NUL-terminated string.
+        let text = unsafe { CStr::from_ptr(source) }.to_string_lossy();
+        let resolved = match ffvk::shaders::resolve(&text) {
+            Ok(resolved) => resolved,
+            Err(e) => {
+                return fail(
+                    FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                    format!("{F}: source: {e}"),
+                )
+            }
+        };
+        // SAFETY: as above.
+        unsafe { *length = resolved.len() };
+        if dst.is_null() || capacity < resolved.len() + 1 {
+            if dst.is_null() && capacity == 0 {
+                return FfvkResult::FFVK_SUCCESS;
+            }
+            return fail(
+                FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                format!(
+                    "{F}: capacity {capacity}: the resolved text needs {} bytes with its NUL",
+                    resolved.len() + 1
+                ),
+            );
+        }
+        // SAFETY: `capacity` >= len + 1 writable bytes at dst (the contract).
+        unsafe {
+            std::ptr::copy_nonoverlapping(resolved.as_ptr(), dst.cast::<u8>(), resolved.len());
+            *dst.add(resolved.len()) = 0;
+        }
+        FfvkResult::FFVK_SUCCESS
+    })
 }
 
 fn state_error(function: &str, e: &ffvk::gl::state::StateError) -> FfvkResult {

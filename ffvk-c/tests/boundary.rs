@@ -3883,3 +3883,110 @@ fn the_packers_write_the_librarys_block_record_and_constants_from_a_context() {
     assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
     assert!(message().contains("ffvkPackStateBlock"), "{}", message());
 }
+
+/// A pipeline's own constants from C: points take the context's `glPointSize`, an RGBA8
+/// target's alpha test compares 8-bit values, a bound and enabled unit is sampled and applied;
+/// the state's constants are `ffvkPackSpecKey`'s; a mode beyond GL's ten is refused by name.
+#[test]
+fn the_pipeline_packer_sets_the_points_target_and_units_a_pipeline_fixes() {
+    use ffvk::gpu::layout::{SpecConstant, SpecKey};
+    use ffvk_c::shaders::{ffvkPackSpecKey, ffvkPackSpecKeyForPipeline};
+    let c = Ctx::busy();
+    // SAFETY: a live context.
+    unsafe { ffvkPointSize(c.0, 4.0) };
+    let (mut state_key, mut key) = (SpecKey::UBER, SpecKey::UBER);
+    let rgba8 = ffvk::ash::vk::Format::R8G8B8A8_UNORM;
+    // SAFETY: a live context and keys of the size given.
+    unsafe {
+        let r = ffvkPackSpecKey(c.0, (&mut state_key as *mut SpecKey).cast(), size_of::<SpecKey>());
+        assert_eq!(r, FfvkResult::FFVK_SUCCESS, "{}", message());
+        let r = ffvkPackSpecKeyForPipeline(
+            c.0,
+            POINTS,
+            rgba8,
+            0,
+            0,
+            (&mut key as *mut SpecKey).cast(),
+            size_of::<SpecKey>(),
+        );
+        assert_eq!(r, FfvkResult::FFVK_SUCCESS, "{}", message());
+    }
+    assert_eq!(key.get(SpecConstant::Points), 1);
+    assert_eq!(key.get(SpecConstant::PointSize), 4.0f32.to_bits() as i32);
+    assert_eq!(key.get(SpecConstant::AlphaBits), 8);
+    assert_eq!(
+        key.get(SpecConstant::LightCount),
+        state_key.get(SpecConstant::LightCount)
+    );
+    assert_eq!(
+        key.get(SpecConstant::Lighting),
+        state_key.get(SpecConstant::Lighting)
+    );
+    // SAFETY: as above.
+    let r = unsafe {
+        ffvkPackSpecKeyForPipeline(
+            c.0,
+            0x000A,
+            rgba8,
+            0,
+            0,
+            (&mut key as *mut SpecKey).cast(),
+            size_of::<SpecKey>(),
+        )
+    };
+    assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+    let m = message();
+    assert!(
+        m.contains("ffvkPackSpecKeyForPipeline") && m.contains("0x000A"),
+        "{m}"
+    );
+}
+
+/// The resolver from C: the library's includes inlined, the size asked first with a null
+/// buffer, a buffer one byte short refused with nothing written, an unknown file named.
+#[test]
+fn the_resolver_inlines_the_librarys_includes_for_a_c_caller() {
+    use ffvk_c::shaders::ffvkShaderLibraryResolve;
+    let source =
+        std::ffi::CString::new("#version 300 es\n#include \"ffvk/es.glsl\"\nvoid main() {}\n").unwrap();
+    let mut length = 0usize;
+    // SAFETY: a NUL-terminated source, a null buffer of capacity 0, a writable length.
+    let r = unsafe { ffvkShaderLibraryResolve(source.as_ptr(), null_mut(), 0, &mut length) };
+    assert_eq!(r, FfvkResult::FFVK_SUCCESS, "{}", message());
+    let expected = ffvk::shaders::resolve(source.to_str().unwrap()).unwrap();
+    assert_eq!(length, expected.len());
+    let mut short = vec![b'x' as std::ffi::c_char; length];
+    // SAFETY: `length` writable bytes, one fewer than the text and its NUL need.
+    let r = unsafe { ffvkShaderLibraryResolve(source.as_ptr(), short.as_mut_ptr(), length, &mut length) };
+    assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+    assert!(
+        short.iter().all(|&c| c == b'x' as std::ffi::c_char),
+        "nothing written"
+    );
+    let mut text = vec![0 as std::ffi::c_char; length + 1];
+    // SAFETY: `length + 1` writable bytes.
+    let r = unsafe { ffvkShaderLibraryResolve(source.as_ptr(), text.as_mut_ptr(), length + 1, &mut length) };
+    assert_eq!(r, FfvkResult::FFVK_SUCCESS, "{}", message());
+    // SAFETY: NUL-terminated by the call.
+    let got = unsafe { std::ffi::CStr::from_ptr(text.as_ptr()) }
+        .to_str()
+        .unwrap();
+    assert_eq!(got, expected);
+    assert!(
+        got.contains("precision highp float;")
+            && !got.lines().any(|l| l.trim_start().starts_with("#include")),
+        "{got}"
+    );
+    let unknown = std::ffi::CString::new("#include \"ffvk/lights.glsl\"\n").unwrap();
+    // SAFETY: as above.
+    let r = unsafe { ffvkShaderLibraryResolve(unknown.as_ptr(), null_mut(), 0, &mut length) };
+    assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+    let m = message();
+    assert!(
+        m.contains("ffvkShaderLibraryResolve") && m.contains("ffvk/lights.glsl") && m.contains("line 1"),
+        "{m}"
+    );
+    // SAFETY: a null source is refused before it is read.
+    let r = unsafe { ffvkShaderLibraryResolve(std::ptr::null(), null_mut(), 0, &mut length) };
+    assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+}
