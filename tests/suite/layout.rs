@@ -582,3 +582,44 @@ fn the_librarys_switches_compile_as_defines_of_a_states_values() {
     let e = glslc("caller_short", &CALLER.replace("SPEC_LINES\n", &short)).unwrap_err();
     assert!(e.contains("SPEC_FOG_MODE"), "{e}");
 }
+
+/// The block layout tables of docs/shader-library.md (each row `| offset | \`member\` | ...`,
+/// under the heading naming the struct) against a caller's shader's SPIR-V: every member, in
+/// order, at the offset the guide states, and the arrays' strides.
+#[test]
+fn the_shader_library_guide_states_the_block_layout_the_spirv_has() {
+    let guide = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/shader-library.md");
+    let guide = std::fs::read_to_string(guide).unwrap();
+    let source = CALLER.replace("SPEC_LINES\n", "#define FFVK_SPEC_BASE 100\n");
+    let r = reflect(&glslc("caller_guide", &source).unwrap_or_else(|e| panic!("{e}")));
+    for (heading, name) in [
+        ("#### The state block", "FfvkState"),
+        ("#### `Light`", "Light"),
+        ("#### `TextureUnitState`", "TextureUnitState"),
+    ] {
+        let at = guide
+            .find(heading)
+            .unwrap_or_else(|| panic!("docs/shader-library.md has no heading {heading:?}"));
+        let rows: Vec<(String, u32)> = guide[at..]
+            .lines()
+            .skip(1)
+            .skip_while(|l| !l.starts_with('|'))
+            .take_while(|l| l.starts_with('|'))
+            .filter_map(|l| {
+                let cells: Vec<&str> = l.split('|').map(str::trim).collect();
+                let offset = cells.get(1)?.replace(',', "").parse().ok()?;
+                Some((cells.get(2)?.trim_matches('`').to_string(), offset))
+            })
+            .collect();
+        let want = r.members(r.struct_id(name));
+        assert_eq!(rows, want, "docs/shader-library.md, {heading}: (member, offset) in order");
+    }
+    for (what, stride) in [
+        ("`Light` array stride", size_of::<GpuLight>()),
+        ("`TextureUnitState` array stride", size_of::<GpuTextureUnit>()),
+        ("block size", size_of::<StateBlock>()),
+    ] {
+        let phrase = format!("{what} {}", stride);
+        assert!(guide.contains(&phrase), "docs/shader-library.md should say \"{phrase}\"");
+    }
+}
