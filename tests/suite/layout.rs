@@ -612,7 +612,10 @@ fn the_shader_library_guide_states_the_block_layout_the_spirv_has() {
             })
             .collect();
         let want = r.members(r.struct_id(name));
-        assert_eq!(rows, want, "docs/shader-library.md, {heading}: (member, offset) in order");
+        assert_eq!(
+            rows, want,
+            "docs/shader-library.md, {heading}: (member, offset) in order"
+        );
     }
     for (what, stride) in [
         ("`Light` array stride", size_of::<GpuLight>()),
@@ -620,6 +623,9 @@ fn the_shader_library_guide_states_the_block_layout_the_spirv_has() {
         ("block size", size_of::<StateBlock>()),
     ] {
         let phrase = format!("{what} {}", stride);
-        assert!(guide.contains(&phrase), "docs/shader-library.md should say \"{phrase}\"");
+        assert!(
+            guide.contains(&phrase),
+            "docs/shader-library.md should say \"{phrase}\""
+        );
     }
 }
