@@ -629,3 +629,22 @@ fn the_shader_library_guide_states_the_block_layout_the_spirv_has() {
         );
     }
 }
+
+/// The guide's Vulkan snippet (docs/shader-library.md, "What your shader defines") with a
+/// `main` added compiles, its block at the set and binding it states.
+#[test]
+fn the_shader_library_guides_vulkan_snippet_compiles() {
+    let guide = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/shader-library.md");
+    let guide = std::fs::read_to_string(guide).unwrap();
+    let snippet = guide
+        .split("```glsl\n")
+        .skip(1)
+        .map(|s| s.split("```").next().unwrap())
+        .find(|s| s.starts_with("#version 450"))
+        .expect("docs/shader-library.md has a Vulkan GLSL snippet");
+    let source = format!(
+        "{snippet}layout(location = 0) out vec4 out_color;\nvoid main() {{ out_color = vec4(float(lighting_enabled())); }}\n"
+    );
+    let r = reflect(&glslc("guide_snippet", &source).unwrap_or_else(|e| panic!("{e}")));
+    check_state_block(&r, "FfvkState", "the guide's snippet");
+}

@@ -4,13 +4,15 @@
  *
  *   cc layer_gles.c -lEGL -lGLESv2 -o layer_gles
  *   layer_gles DIR SIZE R G B A
+ *   layer_gles --compile vert|frag FILE
  *
  * DIR holds what the layer's Rust side wrote (tests/suite/layer.rs): vert.glsl and frag.glsl
  * (GLSL ES 3.00, the library inlined), draw.bin (the LayerDraw block's std140 bytes),
  * state.bin (FfvkState's), positions.bin (3 floats a vertex), attributes.bin (3 floats of
  * normal and 4 bytes of color a vertex), indices.bin (32-bit). It draws SIZE x SIZE pixels
  * cleared to (R, G, B, A) with GL's depth test and writes DIR/image.rgba, the top row first,
- * and prints GL_RENDERER and GL_VERSION. Any failure is a message on stderr and exit 1. */
+ * and prints GL_RENDERER and GL_VERSION. With --compile it only compiles FILE as a vertex or
+ * fragment shader (the guide's snippets). Any failure is a message on stderr and exit 1. */
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <GLES3/gl3.h>
@@ -23,10 +25,10 @@ static void fail(const char *what, const char *detail) {
     exit(1);
 }
 
-/* The whole of DIR/name, NUL-terminated; its length in *length. */
+/* The whole of DIR/name (name alone where dir is null), NUL-terminated; its length in *length. */
 static char *read_file(const char *dir, const char *name, size_t *length) {
     char path[4096];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
+    snprintf(path, sizeof path, "%s%s%s", dir ? dir : "", dir ? "/" : "", name);
     FILE *f = fopen(path, "rb");
     if (!f) fail("cannot open", path);
     if (fseek(f, 0, SEEK_END) != 0) fail("cannot seek", path);
@@ -79,15 +81,8 @@ static void block(GLuint program, const char *name, GLuint binding, const char *
     glBindBufferBase(GL_UNIFORM_BUFFER, binding, buffer(GL_UNIFORM_BUFFER, bytes, length));
 }
 
-int main(int argc, char **argv) {
-    if (argc != 7) fail("usage", "layer_gles DIR SIZE R G B A");
-    const char *dir = argv[1];
-    int size = atoi(argv[2]);
-    if (size <= 0 || size > 4096) fail("SIZE must be 1 to 4096, not", argv[2]);
-    float clear[4];
-    for (int i = 0; i < 4; i++) clear[i] = strtof(argv[3 + i], NULL);
-
-    /* An OpenGL ES 3.0 context without a surface on Mesa's surfaceless platform. */
+/* An OpenGL ES 3.0 context without a surface on Mesa's surfaceless platform, current. */
+static void make_context(EGLDisplay *display_out, EGLContext *context_out) {
     PFNEGLGETPLATFORMDISPLAYEXTPROC get_platform_display =
         (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
     if (!get_platform_display) fail("no eglGetPlatformDisplayEXT", NULL);
@@ -107,8 +102,30 @@ int main(int argc, char **argv) {
         fail("eglMakeCurrent without a surface failed", NULL);
     printf("GL_RENDERER %s\nGL_VERSION %s\n", (const char *)glGetString(GL_RENDERER),
            (const char *)glGetString(GL_VERSION));
+    *display_out = display;
+    *context_out = context;
+}
 
+int main(int argc, char **argv) {
+    EGLDisplay display;
+    EGLContext context;
     size_t length;
+    if (argc == 4 && strcmp(argv[1], "--compile") == 0) {
+        int vertex = strcmp(argv[2], "vert") == 0;
+        if (!vertex && strcmp(argv[2], "frag") != 0) fail("--compile takes vert or frag, not", argv[2]);
+        make_context(&display, &context);
+        char *text = read_file(NULL, argv[3], &length);
+        shader(vertex ? GL_VERTEX_SHADER : GL_FRAGMENT_SHADER, text, argv[3]);
+        return 0;
+    }
+    if (argc != 7) fail("usage", "layer_gles DIR SIZE R G B A, or layer_gles --compile vert|frag FILE");
+    const char *dir = argv[1];
+    int size = atoi(argv[2]);
+    if (size <= 0 || size > 4096) fail("SIZE must be 1 to 4096, not", argv[2]);
+    float clear[4];
+    for (int i = 0; i < 4; i++) clear[i] = strtof(argv[3 + i], NULL);
+    make_context(&display, &context);
+
     char *vert = read_file(dir, "vert.glsl", &length);
     char *frag = read_file(dir, "frag.glsl", &length);
     GLuint program = glCreateProgram();
