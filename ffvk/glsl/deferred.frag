@@ -2,11 +2,16 @@
 #extension GL_EXT_control_flow_attributes : require  // [[unroll]] in lighting.glsl
 // The deferred lighting pass: the equation once per pixel, from what the G-buffer pass
 // (fragment.frag under GBUFFER) wrote there, with the draw's materials from its record.
-// The arithmetic is fragment.frag's, on the same values.
-layout(set = 1, binding = 0) uniform sampler2D g_position;
-layout(set = 1, binding = 1) uniform sampler2D g_normal;
-layout(set = 1, binding = 2) uniform sampler2D g_color;
-layout(set = 1, binding = 3) uniform usampler2D g_record;
+// The arithmetic is fragment.frag's, on the values the G-buffer keeps (gbuffer.glsl).
+// The G-buffer (gbuffer.glsl): the surface (record, facing, normal, depth) and the color.
+layout(set = 1, binding = 0) uniform usampler2D g_surface;
+layout(set = 1, binding = 1) uniform usampler2D g_color;
+// What rebuilds a pixel's eye-space position from its depth: the inverse of the draws'
+// projection (Vulkan's clip space, the one projection of the frame), and 1 / the extent.
+layout(push_constant) uniform Pass {
+    mat4 eye_from_clip;
+    vec2 pixel_size;
+} pass;
 // The frame's draw records (src/gpu/layout.rs, DrawRecord), read at the index the G-buffer
 // holds, as vec4s: a record takes SPEC_RECORD_VEC4S of them (its size rounded up to the
 // device's uniform offset alignment, the ring's stride), so the array's stride is the
@@ -31,10 +36,12 @@ layout(location = 0) out vec4 out_color;
 #define FFVK_HIDDEN_ZERO uint(gl_FragCoord.x < 0.0)
 #include "draw.glsl"
 #include "ffvk/lighting.glsl"
+#include "gbuffer.glsl"
 
 void main() {
     ivec2 at = ivec2(gl_FragCoord.xy);
-    uint record = texelFetch(g_record, at, 0).r;
+    uvec4 surface = texelFetch(g_surface, at, 0);
+    uint record = surface.x & RECORD_BITS;
     // Nothing drawn here: the clear color stays.
     if (record == 0u) discard;
 #ifdef COUNT
@@ -45,16 +52,20 @@ void main() {
                           record_vec4s[r + 10u], record_vec4s[r + 4u].w);
     draw_back = Material(record_vec4s[r + 11u], record_vec4s[r + 12u], record_vec4s[r + 13u],
                          record_vec4s[r + 14u], record_vec4s[r + 5u].w);
-    vec4 eye_position = texelFetch(g_position, at, 0);
-    vec4 normal = texelFetch(g_normal, at, 0);
-    vec4 color = texelFetch(g_color, at, 0);
+    // The pixel centre at the fragment's depth, back through the projection: the point of the
+    // triangle the forward path's interpolated eye position names.
+    vec2 ndc = gl_FragCoord.xy * pass.pixel_size * 2.0 - 1.0;
+    vec4 eye = pass.eye_from_clip * vec4(ndc, uintBitsToFloat(surface.w), 1.0);
+    vec4 eye_position = eye / eye.w;
+    uvec2 c = texelFetch(g_color, at, 0).xy;
+    vec4 color = vec4(unpackHalf2x16(c.x), unpackHalf2x16(c.y));
     LitColor lit;
     if (!lighting_enabled()) {
         lit.c_pri = color;
         lit.c_sec = vec4(0.0, 0.0, 0.0, 1.0);
     } else {
-        vec3 n = normal.xyz;
-        bool back_face = two_side() && normal.w < 0.0;
+        vec3 n = octahedron_decode(surface.y) * uintBitsToFloat(surface.z);
+        bool back_face = two_side() && (surface.x & BACK_FACE_BIT) != 0u;
         lit = back_face ? light_equation(eye_position, -n, face_material(draw_front, draw_back, true, color))
                         : light_equation(eye_position, n, face_material(draw_front, draw_back, false, color));
     }

@@ -3,7 +3,9 @@
 // Fragment stage of the `fragment` mode: the equation at each fragment. The normal is
 // the interpolated direction renormalized, times the interpolated length, so that an
 // unnormalized normal (scaled modelview, no NORMALIZE) still shows as in GL.
+#ifndef GBUFFER
 layout(location = 0) in vec4 eye_position;
+#endif
 layout(location = 1) in vec4 normal;  // xyz: the direction; w: the length
 layout(location = 3) in vec4 color;
 #ifdef FOG
@@ -45,10 +47,13 @@ layout(std140, set = 2, binding = 0) uniform Record {
 // The deferred path's first pass: what the equation needs at this pixel, for the lighting
 // pass (deferred.frag) to evaluate it once per pixel with the same arithmetic.
 layout(location = 14) flat in uint record_index;
-layout(location = 0) out vec4 g_position;  // eye_position
-layout(location = 1) out vec4 g_normal;    // the normal the equation takes; w: +1 front, -1 back
-layout(location = 2) out vec4 g_color;     // the primary color (color material's input)
-layout(location = 3) out uint g_record;    // the draw's record index + 1; 0: nothing drawn
+// x: the draw's record index + 1 (0: nothing drawn), bit 31 set for a back face; y: the
+// normal's direction, octahedron-encoded (packSnorm2x16); z: its length (float bits); w: the
+// fragment's depth (float bits), from which deferred.frag rebuilds the eye-space position.
+layout(location = 0) out uvec4 g_surface;
+// The primary color (color material's input, or the unlit color) as four 16-bit floats.
+layout(location = 1) out uvec2 g_color;
+#include "gbuffer.glsl"
 #else
 layout(location = 0) out vec4 out_color;
 #endif
@@ -78,10 +83,9 @@ void main() {
     if (!on_boundary_edge()) discard;
 #endif
 #ifdef GBUFFER
-    g_position = eye_position;
-    g_normal = vec4(unit(normal.xyz) * normal.w, FRONT_FACING ? 1.0 : -1.0);
-    g_color = color;
-    g_record = record_index + 1u;
+    g_surface = uvec4((record_index + 1u) | (FRONT_FACING ? 0u : BACK_FACE_BIT), octahedron_encode(unit(normal.xyz)),
+                      floatBitsToUint(normal.w), floatBitsToUint(gl_FragCoord.z));
+    g_color = uvec2(packHalf2x16(color.rg), packHalf2x16(color.ba));
 #else
 #ifdef VARYING_MATERIALS
     draw_front = Material(front_a_cm, front_d_cm, front_s_cm, front_e_cm, s_rm.x);

@@ -7,7 +7,12 @@ layout(location = 0) in vec4 in_position;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) in vec4 in_color;
 
+#ifdef GBUFFER
+// The G-buffer keeps the fragment's depth instead (deferred.frag rebuilds the position).
+vec4 eye_position;
+#else
 layout(location = 0) out vec4 eye_position;
+#endif
 // The normal's direction (xyz) and length (w) in one varying: lavapipe's triangle setup costs
 // per varying slot, and a float alone takes a slot.
 layout(location = 1) out vec4 normal;

@@ -83,6 +83,12 @@ pub struct PointStats {
     /// The deferred path's own count of the pixels its lighting pass evaluated the equation at
     /// (deferred points only).
     pub evaluations: Option<u64>,
+    /// A deferred frame's G-buffer pass alone, from a timestamp between its two passes, ms
+    /// (deferred points only).
+    pub gbuffer_ms: Option<Spread>,
+    /// A deferred frame's lighting pass alone (the frame's time less its G-buffer pass's,
+    /// frame by frame), ms (deferred points only).
+    pub lighting_ms: Option<Spread>,
 }
 
 /// ffvk against GL on one scene.
@@ -198,6 +204,13 @@ pub(super) fn measure_ffvk(
         .collect();
     let wall: Vec<f64> = samples.iter().map(|s| s.wall_ns / 1e6).collect();
     let gpu_ms = Spread::of(&gpu);
+    // A deferred frame's two passes, from the timestamp between them.
+    let split: Vec<(f64, f64)> = samples
+        .iter()
+        .filter_map(|s| Some((s.gbuffer_ns? / 1e6, (s.gpu_ns? - s.gbuffer_ns?) / 1e6)))
+        .collect();
+    let gbuffer_ms = Spread::of(&split.iter().map(|s| s.0).collect::<Vec<_>>());
+    let lighting_ms = Spread::of(&split.iter().map(|s| s.1).collect::<Vec<_>>());
     let wall_ms = Spread::of(&wall).expect("at least one frame");
     if deferred && !samples.last().is_some_and(|s| s.deferred) {
         return Err(crate::Error::Bench(format!(
@@ -224,6 +237,8 @@ pub(super) fn measure_ffvk(
         clipping_primitives: last.map(|p| p.clipping_primitives),
         covered_pixels,
         evaluations,
+        gbuffer_ms,
+        lighting_ms,
     })
 }
 
@@ -333,6 +348,8 @@ impl GlAnchor {
             clipping_primitives: None,
             covered_pixels: None,
             evaluations: None,
+            gbuffer_ms: None,
+            lighting_ms: None,
         })
     }
 }

@@ -12,8 +12,8 @@ use super::points::sphere_counts;
 use super::sweep::{BenchMode, Engine, Group, Variant};
 use super::tables::{
     costs_table, density_table, draw_cost_note, draw_cost_table, environment, equation_runs, fragment_point,
-    fragment_table, light_count_table, light_kind_table, paths_table, primitives_table, size_table,
-    COSTS_NOTE, FRAGMENT_NOTE, FRAGMENT_PATHS, PATHS_NOTE,
+    fragment_table, light_count_table, light_kind_table, paths_note, paths_table, primitives_table, size_table,
+    COSTS_NOTE, FRAGMENT_NOTE, FRAGMENT_PATHS,
 };
 use super::{BenchReport, BenchResult};
 use crate::{write_file, Error, Result};
@@ -266,7 +266,7 @@ pub fn markdown(report: &BenchReport) -> String {
             c.draws,
             if c.draws == 1 { "" } else { "s" },
             paths_table(report).markdown(),
-            PATHS_NOTE
+            paths_note()
         );
     }
     if !report.summary.costs.is_empty() {
@@ -506,6 +506,16 @@ mod tests {
                         covered_pixels: ffvk.then_some(point.pixels / 4),
                         evaluations: matches!(point.variant, Variant::Deferred | Variant::DeferredUber)
                             .then_some(point.pixels / 4),
+                        gbuffer_ms: matches!(point.variant, Variant::Deferred | Variant::DeferredUber)
+                            .then_some(Spread {
+                                median: t * 0.6,
+                                ..spread
+                            }),
+                        lighting_ms: matches!(point.variant, Variant::Deferred | Variant::DeferredUber)
+                            .then_some(Spread {
+                                median: t * 0.4,
+                                ..spread
+                            }),
                     },
                     point,
                     lp_num_threads: env.lp_num_threads.clone(),

@@ -1,7 +1,7 @@
 //! The tables of a bench run's summary: the environment, each sweep's table and the fitted
 //! costs, built from the results as [`Table`]s (`report.rs` puts them together).
 
-use super::format::{cell, count, count_or_dash, find, ratio};
+use super::format::{cell, count, count_or_dash, find, ms, ratio};
 use super::measure::Spread;
 use super::points::{sphere_counts, GL_MODES};
 use super::sweep::{BenchMode, Engine, Group, LightKind, Primitive, Variant};
@@ -397,10 +397,18 @@ pub(super) fn fragment_table(report: &BenchReport) -> Table {
     t
 }
 
-pub(super) const PATHS_NOTE: &str = "Deferred ÷ forward below 1: the deferred path wins. \
-\"auto\": what FragmentPath::Auto picks for the frame on this device (its rule, from the \
-frame's vertices, pixels and lights; not from these times); \"agrees\": whether that is the \
-faster path here, or within 5 % of it.";
+/// The note under the paths table.
+pub(super) fn paths_note() -> String {
+    format!(
+        "Deferred ÷ forward below 1: the deferred path wins. \"G-buffer pass\" and \"lighting pass\": \
+         the deferred frame's time split at a timestamp between its two passes (medians frame by \
+         frame); the G-buffer pass writes {} bytes a pixel beside the depth, the lighting pass reads \
+         them and writes the 4-byte color. \"auto\": what FragmentPath::Auto picks for the frame on \
+         this device (its rule, from the frame's vertices, pixels and lights; not from these times); \
+         \"agrees\": whether that is the faster path here, or within 5 % of it.",
+        ffvk::renderer::GBUFFER_BYTES_PER_PIXEL
+    )
+}
 
 /// The fragment mode's two paths over density, size and lights, with what
 /// [`FragmentPath::Auto`](ffvk::FragmentPath::Auto) picks.
@@ -412,6 +420,8 @@ pub(super) fn paths_table(report: &BenchReport) -> Table {
         ("vertices / pixel", Align::Right),
         ("forward", Align::Right),
         ("deferred", Align::Right),
+        ("G-buffer pass", Align::Right),
+        ("lighting pass", Align::Right),
         ("deferred ÷ forward", Align::Right),
         ("auto", Align::Left),
         ("agrees", Align::Left),
@@ -449,6 +459,8 @@ pub(super) fn paths_table(report: &BenchReport) -> Table {
                     format!("{:.3}", vertices as f64 / pixels as f64),
                     cell(forward),
                     cell(deferred),
+                    deferred.and_then(|d| d.stats.gbuffer_ms).map_or("–".into(), |s| ms(s.median)),
+                    deferred.and_then(|d| d.stats.lighting_ms).map_or("–".into(), |s| ms(s.median)),
                     ratio(times.map(|(f, d)| d / f)),
                     (if picks { "deferred" } else { "forward" }).to_string(),
                     agrees.map_or("–", |a| if a { "yes" } else { "no" }).to_string(),

@@ -309,16 +309,13 @@ struct PipelineKey {
     points: PointKey,
 }
 
-/// The G-buffer's attachments, in `fragment.frag`'s output order under `GBUFFER`: the
-/// eye-space position, the normal the equation takes with the facing in w, the primary color
-/// (32-bit floats, so that the lighting pass sees the very values the forward path lights),
-/// and the draw's record index + 1. 52 bytes a pixel.
-pub const GBUFFER_FORMATS: [vk::Format; 4] = [
-    vk::Format::R32G32B32A32_SFLOAT,
-    vk::Format::R32G32B32A32_SFLOAT,
-    vk::Format::R32G32B32A32_SFLOAT,
-    vk::Format::R32_UINT,
-];
+/// The G-buffer's attachments, in `fragment.frag`'s output order under `GBUFFER`: the surface
+/// (the draw's record index + 1 with the facing in bit 31, the normal's direction
+/// octahedron-encoded in two 16-bit SNORM values, its length as a 32-bit float, the fragment's
+/// depth as a 32-bit float, from which the lighting pass rebuilds the eye-space position) and
+/// the primary color as four 16-bit floats, which color material and unlit draws read. 24
+/// bytes a pixel.
+pub const GBUFFER_FORMATS: [vk::Format; 2] = [vk::Format::R32G32B32A32_UINT, vk::Format::R32G32_UINT];
 
 /// The descriptor layouts, pipeline layout, cache and the pipelines made so far.
 pub struct Pipelines {

@@ -8,7 +8,10 @@
 //! fragment mode, none blended or textured, all under one lighting state and projection
 //! (one state block for the lighting pass), all with affine modelviews or none, and their
 //! records in one chunk of the frame slot (the lighting pass reads them by index); any other
-//! frame is drawn forward. The G-buffer takes 52 bytes a pixel beside the depth buffer.
+//! frame is drawn forward. The G-buffer takes 24 bytes a pixel beside the depth buffer: the
+//! draw's record and facing, the normal octahedron-encoded with its length, the depth (the
+//! lighting pass rebuilds the eye-space position from it through the projection's inverse)
+//! and the color in 16-bit floats (`glsl/gbuffer.glsl`).
 
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -30,8 +33,15 @@ use crate::gpu::shaders;
 use crate::vk::objects::{DescriptorPool, DescriptorSetLayout, Pipeline, PipelineLayout, Sampler};
 use crate::vk::{Buffer, Device, Image, MemoryUse};
 
+/// The lighting pass's push constants: `Pass` in deferred.frag, 18 floats.
+const PUSH_CONSTANTS: [vk::PushConstantRange; 1] = [vk::PushConstantRange {
+    stage_flags: vk::ShaderStageFlags::FRAGMENT,
+    offset: 0,
+    size: 72,
+}];
+
 /// Bytes of G-buffer per pixel ([`GBUFFER_FORMATS`]).
-pub const GBUFFER_BYTES_PER_PIXEL: u64 = 52;
+pub const GBUFFER_BYTES_PER_PIXEL: u64 = 24;
 
 /// The G-buffer of one size and the descriptor set that names it.
 struct GBuffer {
@@ -59,8 +69,11 @@ pub(super) struct Deferred {
 
 /// What a deferred frame's recording needs.
 pub(super) struct DeferredPass {
-    pub(super) images: [vk::Image; 4],
-    pub(super) views: [vk::ImageView; 4],
+    pub(super) images: [vk::Image; GBUFFER_FORMATS.len()],
+    pub(super) views: [vk::ImageView; GBUFFER_FORMATS.len()],
+    /// The lighting pass's push constants (`Pass` in deferred.frag): the inverse of the frame's
+    /// projection in Vulkan's clip space, then 1 / the extent.
+    pub(super) push: [f32; 18],
     pub(super) pipeline: vk::Pipeline,
     pub(super) layout: vk::PipelineLayout,
     pub(super) set: vk::DescriptorSet,
@@ -141,7 +154,7 @@ impl Deferred {
                 .stage_flags(vk::ShaderStageFlags::FRAGMENT)
         };
         // The G-buffer, the frame's records, the evaluation counter.
-        let bindings = [image(0), image(1), image(2), image(3), storage(4), storage(5)];
+        let bindings = [image(0), image(1), storage(4), storage(5)];
         let set_layout = DescriptorSetLayout::new(device, &bindings)?;
         // The lighting pass reads texels where they are (texelFetch): no filtering.
         let sampler = Sampler::new(
@@ -156,7 +169,7 @@ impl Deferred {
         // Set 0 stays empty until the first pipeline: its layout is the lighting's state
         // block layout, which `pass` is given.
         let empty = DescriptorSetLayout::new(device, &[])?;
-        let layout = PipelineLayout::new(device, &[&empty, &set_layout])?;
+        let layout = PipelineLayout::with_push_constants(device, &[&empty, &set_layout], &PUSH_CONSTANTS)?;
         let counter = Buffer::new(
             device,
             "deferred evaluation counter",
@@ -178,8 +191,11 @@ impl Deferred {
     /// Makes the pipeline layout on the lighting's state block layout (once).
     fn ensure_layout(&mut self, lighting: &Lighting) -> Result<()> {
         if self.pipelines.is_empty() {
-            self.layout =
-                PipelineLayout::new(&self.device, &[lighting.state_set_layout(), &self.set_layout])?;
+            self.layout = PipelineLayout::with_push_constants(
+                &self.device,
+                &[lighting.state_set_layout(), &self.set_layout],
+                &PUSH_CONSTANTS,
+            )?;
         }
         Ok(())
     }
@@ -221,7 +237,7 @@ impl Deferred {
             let sizes = [
                 vk::DescriptorPoolSize {
                     ty: vk::DescriptorType::COMBINED_IMAGE_SAMPLER,
-                    descriptor_count: 4,
+                    descriptor_count: GBUFFER_FORMATS.len() as u32,
                 },
                 vk::DescriptorPoolSize {
                     ty: vk::DescriptorType::STORAGE_BUFFER,
@@ -379,7 +395,7 @@ impl Deferred {
     pub(super) fn pass(
         &mut self,
         lighting: &Lighting,
-        extent: vk::Extent2D,
+        (extent, projection): (vk::Extent2D, glam::Mat4),
         (key, records): (SpecKey, vk::Buffer),
         staged: &[Staged],
         counted: bool,
@@ -397,9 +413,16 @@ impl Deferred {
             .ok_or(Error::Internal("no G-buffer after it was made"))?;
         let raw = |i: usize| gbuffer.images[i].raw();
         let view = |i: usize| gbuffer.images[i].view();
+        // The inverse in double precision: the projection may be near singular in z.
+        let clip = (crate::gpu::layout::VK_FROM_GL_CLIP * projection).as_dmat4();
+        let mut push = [0f32; 18];
+        push[..16].copy_from_slice(&clip.inverse().as_mat4().to_cols_array());
+        push[16] = 1.0 / extent.width as f32;
+        push[17] = 1.0 / extent.height as f32;
         Ok(DeferredPass {
-            images: [raw(0), raw(1), raw(2), raw(3)],
-            views: [view(0), view(1), view(2), view(3)],
+            images: [raw(0), raw(1)],
+            views: [view(0), view(1)],
+            push,
             pipeline,
             layout: self.layout.raw(),
             set: gbuffer.descriptors.set(),
@@ -420,7 +443,7 @@ pub(super) fn gbuffer_barriers(
     pass: &DeferredPass,
     (src_stage, src_access, old): (vk::PipelineStageFlags2, vk::AccessFlags2, vk::ImageLayout),
     (dst_stage, dst_access, new): (vk::PipelineStageFlags2, vk::AccessFlags2, vk::ImageLayout),
-) -> [vk::ImageMemoryBarrier2<'static>; 4] {
+) -> [vk::ImageMemoryBarrier2<'static>; GBUFFER_FORMATS.len()] {
     pass.images.map(|image| {
         vk::ImageMemoryBarrier2::default()
             .src_stage_mask(src_stage)
@@ -436,8 +459,9 @@ pub(super) fn gbuffer_barriers(
 
 /// Records one deferred frame: the G-buffer pass (the draws, with depth), then the lighting
 /// pass over the whole target, inside the statistics query when there is one (the lighting
-/// pass alone: its fragment invocations are the equation's evaluations). Returns the host
-/// time the draws took to record.
+/// pass alone: its fragment invocations are the equation's evaluations), with a timestamp
+/// between the two where `timestamp` names one. Returns the host time the draws took to
+/// record.
 ///
 /// # Safety
 ///
@@ -450,7 +474,7 @@ pub(super) unsafe fn record_deferred(
     targets: &super::Targets,
     pass: &DeferredPass,
     cmd: vk::CommandBuffer,
-    statistics: Option<vk::QueryPool>,
+    (statistics, timestamp): (Option<vk::QueryPool>, Option<(vk::QueryPool, u32)>),
 ) -> Result<f64> {
     let vkd = &lighting.device().raw;
     let (area, viewport) = area_and_viewport(targets.extent);
@@ -546,9 +570,14 @@ pub(super) unsafe fn record_deferred(
     // were made for; staged[i] was staged for lits[i] in this frame's slot.
     unsafe { lighting.record_staged_run(cmd, staged, lits) };
     let record_ns = draws_start.elapsed().as_nanos() as f64;
-    // SAFETY: as above; the G-buffer becomes the lighting pass's input.
+    // SAFETY: as above; the G-buffer becomes the lighting pass's input. The timestamp's query
+    // was reset; on lavapipe its value is taken at the barrier after it, which waits for the
+    // G-buffer pass's rendering (record.rs).
     unsafe {
         vkd.cmd_end_rendering(cmd);
+        if let Some((pool, query)) = timestamp {
+            vkd.cmd_write_timestamp2(cmd, vk::PipelineStageFlags2::ALL_COMMANDS, pool, query);
+        }
         vkd.cmd_pipeline_barrier2(
             cmd,
             &vk::DependencyInfo::default().image_memory_barriers(&to_sampled),
@@ -590,6 +619,13 @@ pub(super) unsafe fn record_deferred(
             0,
             &[pass.state.0, pass.set],
             &[pass.state.1],
+        );
+        vkd.cmd_push_constants(
+            cmd,
+            pass.layout,
+            vk::ShaderStageFlags::FRAGMENT,
+            0,
+            bytemuck::bytes_of(&pass.push),
         );
         vkd.cmd_draw(cmd, 3, 1, 0, 0);
         vkd.cmd_end_rendering(cmd);

@@ -505,8 +505,13 @@ impl<'a> Frame<'a> {
 #[non_exhaustive]
 pub struct FrameStats {
     /// Device time between the timestamp written before the rendering pass and the one
-    /// written after it, in nanoseconds; `None` when the queue has no timestamps.
+    /// written after it, in nanoseconds; `None` when the queue has no timestamps. A deferred
+    /// frame's is both its passes.
     pub gpu_ns: Option<f64>,
+    /// A deferred frame's G-buffer pass alone (from the timestamp before it to one written
+    /// after it), in nanoseconds; the rest of `gpu_ns` is its lighting pass. `None` for
+    /// forward frames and without timestamps.
+    pub gbuffer_ns: Option<f64>,
     /// Host time from `vkQueueSubmit` to the fence, in nanoseconds (with the readback copy
     /// when the frame has one).
     pub wall_ns: f64,

@@ -533,7 +533,8 @@ impl Renderer {
             "one statistics query per submission"
         );
         if pass.timestamps {
-            self.queries.ensure_timestamps(&self.device, pass.repeat + 1)?;
+            // Before the first pass, then after each; a deferred frame's also between its two.
+            self.queries.ensure_timestamps(&self.device, 2 * pass.repeat + 1)?;
         }
         self.lighting.begin_frame(0)?;
         // Every draw is checked and its block written before recording starts, so that a bad
@@ -565,7 +566,18 @@ impl Renderer {
                     Some(d) => d,
                     None => self.deferred.insert(deferred::Deferred::new(&self.device)?),
                 };
-                Some(d.pass(&self.lighting, extent, (key, records), &staged, pass.statistics)?)
+                let projection = frame
+                    .draws
+                    .first()
+                    .map(|d| d.projection)
+                    .ok_or(Error::Internal("a deferred frame without draws"))?;
+                Some(d.pass(
+                    &self.lighting,
+                    (extent, projection),
+                    (key, records),
+                    &staged,
+                    pass.statistics,
+                )?)
             }
             _ => None,
         };
@@ -573,11 +585,22 @@ impl Renderer {
         let record_ns = staging_ns + self.record(frame, pass, &lits, &staged, deferred_pass.as_ref())?;
         let wall_ns = self.submit_and_wait()? / f64::from(pass.repeat);
         self.check_validation()?;
-        let gpu_ns = if pass.timestamps {
-            self.queries.read_timestamps(&self.device, pass.repeat + 1)?
+        // Per repeat: the whole pass; a deferred frame's as its G-buffer pass and the rest.
+        let per_pass = if deferred_pass.is_some() { 2 } else { 1 };
+        let intervals = if pass.timestamps {
+            self.queries
+                .read_timestamps(&self.device, per_pass * pass.repeat + 1)?
         } else {
             None
         };
+        let gpu_ns: Option<Vec<(f64, Option<f64>)>> = intervals.map(|ns| {
+            ns.chunks(per_pass as usize)
+                .map(|c| match c {
+                    [gbuffer, lighting] => (gbuffer + lighting, Some(*gbuffer)),
+                    _ => (c.iter().sum(), None),
+                })
+                .collect()
+        });
         let pipeline = if pass.statistics {
             self.queries.read_statistics()?
         } else {
@@ -589,7 +612,8 @@ impl Renderer {
         };
         Ok((0..pass.repeat as usize)
             .map(|i| FrameStats {
-                gpu_ns: gpu_ns.as_ref().map(|ns| ns[i]),
+                gpu_ns: gpu_ns.as_ref().map(|ns| ns[i].0),
+                gbuffer_ns: gpu_ns.as_ref().and_then(|ns| ns[i].1),
                 wall_ns,
                 pipeline,
                 record_ns,

@@ -40,13 +40,13 @@ impl Renderer {
         let timestamps = wanted(&self.queries.timestamps, pass.timestamps);
         let statistics = wanted(&self.queries.statistics, pass.statistics);
         if let Some(pool) = timestamps {
-            // SAFETY: recording outside any rendering pass; the pool has a query per repeat
-            // and one more (Queries::ensure_timestamps), all reset before they are written.
+            // SAFETY: recording outside any rendering pass; the pool has two queries per
+            // repeat and one more (Queries::ensure_timestamps), reset before they are written.
             // On lavapipe a timestamp after any stage but TOP_OF_PIPE flushes the work before
             // it, and its value is taken when the next flush runs: the barrier right after
             // this one, before the pass starts.
             unsafe {
-                vkd.cmd_reset_query_pool(cmd, pool, 0, pass.repeat + 1);
+                vkd.cmd_reset_query_pool(cmd, pool, 0, 2 * pass.repeat + 1);
                 vkd.cmd_write_timestamp2(cmd, vk::PipelineStageFlags2::ALL_COMMANDS, pool, 0);
             }
         }
@@ -56,13 +56,26 @@ impl Renderer {
         }
         // The draws' uniforms were written once, before recording; every pass binds them.
         let mut record_ns = 0.0;
+        // The next timestamp's query: a deferred frame writes one between its passes too.
+        let mut query = 1;
         for i in 0..pass.repeat {
             let ns = match deferred {
                 // SAFETY: the command buffer is recording, outside any pass; every handle
                 // belongs to this device and outlives the submission (the renderer waits for
-                // it); the deferred pass was made for these targets and staged draws.
+                // it); the deferred pass was made for these targets and staged draws; the
+                // query was reset with query 0.
                 Some(d) => unsafe {
-                    record_deferred(&self.lighting, frame, (lits, staged), targets, d, cmd, statistics)
+                    let between = timestamps.map(|pool| (pool, query));
+                    query += u32::from(between.is_some());
+                    record_deferred(
+                        &self.lighting,
+                        frame,
+                        (lits, staged),
+                        targets,
+                        d,
+                        cmd,
+                        (statistics, between),
+                    )
                 },
                 // SAFETY: as above.
                 None => unsafe {
@@ -75,8 +88,9 @@ impl Renderer {
             if let Some(pool) = timestamps {
                 // After every command of the pass has completed (on lavapipe: a flush that
                 // waits for the rasterizer threads).
-                // SAFETY: as above; query i + 1 was reset with query 0.
-                unsafe { vkd.cmd_write_timestamp2(cmd, vk::PipelineStageFlags2::ALL_COMMANDS, pool, i + 1) };
+                // SAFETY: as above; the query was reset with query 0.
+                unsafe { vkd.cmd_write_timestamp2(cmd, vk::PipelineStageFlags2::ALL_COMMANDS, pool, query) };
+                query += 1;
             }
         }
         if pass.readback {

@@ -128,8 +128,19 @@ impl DescriptorSetLayout {
 impl PipelineLayout {
     /// A pipeline layout of `set_layouts` (set i is the i-th) and no push constants.
     pub fn new(device: &Arc<Device>, set_layouts: &[&DescriptorSetLayout]) -> Result<Self> {
+        Self::with_push_constants(device, set_layouts, &[])
+    }
+
+    /// A pipeline layout of `set_layouts` and the push constant ranges `push_constants`.
+    pub fn with_push_constants(
+        device: &Arc<Device>,
+        set_layouts: &[&DescriptorSetLayout],
+        push_constants: &[vk::PushConstantRange],
+    ) -> Result<Self> {
         let set_layouts: Vec<vk::DescriptorSetLayout> = set_layouts.iter().map(|l| l.raw).collect();
-        let info = vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts);
+        let info = vk::PipelineLayoutCreateInfo::default()
+            .set_layouts(&set_layouts)
+            .push_constant_ranges(push_constants);
         // SAFETY: a valid create info on a live device; the set layouts are alive.
         let raw = unsafe { device.raw.create_pipeline_layout(&info, None) }
             .map_err(vk_error("vkCreatePipelineLayout"))?;
