@@ -31,6 +31,9 @@ layout(std430, set = 1, binding = 5) buffer Evaluations {
 #endif
 
 layout(location = 0) out vec4 out_color;
+// The depth test (GREATER against the pass's depth 1: only where a draw left a nearer depth)
+// before the shader, discard or not: pixels nothing was drawn at are never shaded.
+layout(early_fragment_tests) in;
 
 // A zero the compiler cannot prove zero (fragments lie inside the framebuffer, at x >= 0).
 #define FFVK_HIDDEN_ZERO uint(gl_FragCoord.x < 0.0)

@@ -12,8 +12,8 @@ use super::points::sphere_counts;
 use super::sweep::{BenchMode, Engine, Group, Variant};
 use super::tables::{
     costs_table, density_table, draw_cost_note, draw_cost_table, environment, equation_runs, fragment_point,
-    fragment_table, light_count_table, light_kind_table, paths_note, paths_table, primitives_table, size_table,
-    COSTS_NOTE, FRAGMENT_NOTE, FRAGMENT_PATHS,
+    fragment_table, light_count_table, light_kind_table, paths_note, paths_table, primitives_table,
+    size_table, COSTS_NOTE, FRAGMENT_NOTE, FRAGMENT_PATHS,
 };
 use super::{BenchReport, BenchResult};
 use crate::{write_file, Error, Result};

@@ -459,8 +459,12 @@ pub(super) fn paths_table(report: &BenchReport) -> Table {
                     format!("{:.3}", vertices as f64 / pixels as f64),
                     cell(forward),
                     cell(deferred),
-                    deferred.and_then(|d| d.stats.gbuffer_ms).map_or("–".into(), |s| ms(s.median)),
-                    deferred.and_then(|d| d.stats.lighting_ms).map_or("–".into(), |s| ms(s.median)),
+                    deferred
+                        .and_then(|d| d.stats.gbuffer_ms)
+                        .map_or("–".into(), |s| ms(s.median)),
+                    deferred
+                        .and_then(|d| d.stats.lighting_ms)
+                        .map_or("–".into(), |s| ms(s.median)),
                     ratio(times.map(|(f, d)| d / f)),
                     (if picks { "deferred" } else { "forward" }).to_string(),
                     agrees.map_or("–", |a| if a { "yes" } else { "no" }).to_string(),

@@ -28,7 +28,7 @@ use crate::draw::pipeline::{
 };
 use crate::error::{Error, Result};
 use crate::gl::state::LightingMode;
-use crate::gpu::layout::{SpecKey, StateKey};
+use crate::gpu::layout::{SpecConstant, SpecKey, StateKey};
 use crate::gpu::shaders;
 use crate::vk::objects::{DescriptorPool, DescriptorSetLayout, Pipeline, PipelineLayout, Sampler};
 use crate::vk::{Buffer, Device, Image, MemoryUse};
@@ -74,6 +74,9 @@ pub(super) struct DeferredPass {
     /// The lighting pass's push constants (`Pass` in deferred.frag): the inverse of the frame's
     /// projection in Vulkan's clip space, then 1 / the extent.
     pub(super) push: [f32; 18],
+    /// Whether the lighting pass reads the color (color material, or lighting off); else the
+    /// G-buffer pass's color attachment is left out (a null view: its writes are dropped).
+    pub(super) color: bool,
     pub(super) pipeline: vk::Pipeline,
     pub(super) layout: vk::PipelineLayout,
     pub(super) set: vk::DescriptorSet,
@@ -419,10 +422,13 @@ impl Deferred {
         push[..16].copy_from_slice(&clip.inverse().as_mat4().to_cols_array());
         push[16] = 1.0 / extent.width as f32;
         push[17] = 1.0 / extent.height as f32;
+        // The uber-shader's -1 reads the block: the color may be needed.
+        let color = key.get(SpecConstant::ColorMaterial) != 0 || key.get(SpecConstant::Lighting) != 1;
         Ok(DeferredPass {
             images: [raw(0), raw(1)],
             views: [view(0), view(1)],
             push,
+            color,
             pipeline,
             layout: self.layout.raw(),
             set: gbuffer.descriptors.set(),
@@ -503,7 +509,12 @@ pub(super) unsafe fn record_deferred(
     .to_vec();
     to_attachments.extend(attachment_barriers(targets));
     // Nothing drawn: a record index of 0 (the lighting pass leaves such pixels alone).
-    let gbuffer_attachments = pass.views.map(|view| {
+    // The color attachment only where the lighting pass reads it.
+    let mut views = pass.views;
+    if !pass.color {
+        views[1] = vk::ImageView::null();
+    }
+    let gbuffer_attachments = views.map(|view| {
         vk::RenderingAttachmentInfo::default()
             .image_view(view)
             .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)

@@ -534,7 +534,8 @@ impl Renderer {
         );
         if pass.timestamps {
             // Before the first pass, then after each; a deferred frame's also between its two.
-            self.queries.ensure_timestamps(&self.device, 2 * pass.repeat + 1)?;
+            self.queries
+                .ensure_timestamps(&self.device, 2 * pass.repeat + 1)?;
         }
         self.lighting.begin_frame(0)?;
         // Every draw is checked and its block written before recording starts, so that a bad
