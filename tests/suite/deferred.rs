@@ -254,9 +254,14 @@ fn auto_draws_deferred_on_a_cpu_only_where_lights_are_many_and_triangles_small()
             .light(i, LightParam::Position(Vec4::new(d - 0.5, 0.5 - d, 1.0, 0.0)))
             .unwrap();
     }
+    let mut four = three.clone();
+    four.enable(Cap::Light(3)).unwrap();
+    four.light(3, LightParam::Position(Vec4::new(-0.2, 0.2, 1.0, 0.0)))
+        .unwrap();
     let pixels = u64::from(SIZE * SIZE);
     let cases = [
         ("dense mesh, 8 lights", &dense, &eight, true),
+        ("dense mesh, 4 lights", &dense, &four, true),
         ("dense mesh, 3 lights", &dense, &three, false),
         ("sparse mesh, 8 lights", &sparse, &eight, false),
     ];

@@ -444,8 +444,9 @@ pub enum FragmentPath {
     /// Deferred where a fixed rule of the frame's vertices, pixels and lights and of the
     /// device's type says it is the faster path ([`FragmentPath::auto_picks_deferred`]),
     /// else forward. The rule's constants were measured once (`ffvk bench --sweep paths`) and
-    /// are written in the code, so a frame's path never depends on timing; the two paths give
-    /// the same image where the frame can take the deferred path.
+    /// are written in the code, so a frame's path never depends on timing; where the frame can
+    /// take the deferred path, the two paths' images differ by 1/255 at most (the deferred
+    /// path's G-buffer keeps the normal's direction in 16 bits a component).
     Auto,
 }
 
@@ -459,22 +460,31 @@ impl FragmentPath {
     /// The constants come from `ffvk bench --sweep paths` on lavapipe (BENCHMARKS.md, "Which
     /// fragment path wins"). On a CPU the forward path shades every 4×4 block each triangle
     /// touches, the whole light loop each time, so it loses once triangles are small and
-    /// lights many; the deferred path's G-buffer pass costs about as much as a few lights'
-    /// forward shading, so with fewer lights it loses at every density measured. On GPUs
-    /// the forward path shades about once per pixel and the G-buffer's writes cost more than
-    /// they save: forward always.
+    /// lights many; the deferred path pays a G-buffer pass and a lighting pass whose own cost,
+    /// before any light, is about that of two lights' forward shading. On GPUs the forward
+    /// path shades about once per pixel and the G-buffer's writes cost more than they save:
+    /// forward always.
     pub fn auto_picks_deferred(cpu: bool, vertices: u64, pixels: u64, lights: usize) -> bool {
-        cpu && lights >= AUTO_MIN_LIGHTS
-            && vertices.saturating_mul(1000) >= AUTO_MILLI_VERTICES_PER_PIXEL.saturating_mul(pixels)
+        let dense = |milli: u64| vertices.saturating_mul(1000) >= milli.saturating_mul(pixels);
+        cpu && ((lights >= AUTO_MIN_LIGHTS && dense(AUTO_MILLI_VERTICES_PER_PIXEL))
+            || (lights >= AUTO_MANY_LIGHTS && dense(AUTO_MANY_LIGHTS_MILLI_VERTICES_PER_PIXEL)))
     }
 }
 
-/// [`FragmentPath::auto_picks_deferred`]'s fewest lights for the deferred path: it won at 8
-/// lights wherever meshes were dense, tied at 4 and lost at 1 and 2; 6 splits the difference.
-const AUTO_MIN_LIGHTS: usize = 6;
-/// [`FragmentPath::auto_picks_deferred`]'s density, in thousandths of a vertex per pixel:
-/// at 8 lights the deferred path won from 0.03 vertices per pixel and lost at 0.008.
-const AUTO_MILLI_VERTICES_PER_PIXEL: u64 = 16;
+/// [`FragmentPath::auto_picks_deferred`]'s fewest lights for the deferred path: with the lean
+/// G-buffer it won at 4 lights from 0.03 vertices per pixel (0.72-0.89 of forward's time) and
+/// lost at 0.008 (1.02-1.14); at 1 and 2 lights it won nowhere by more than the noise.
+const AUTO_MIN_LIGHTS: usize = 4;
+/// [`FragmentPath::auto_picks_deferred`]'s density at [`AUTO_MIN_LIGHTS`], in thousandths of a
+/// vertex per pixel: between the 0.008 where the deferred path lost at 4 lights and the 0.03
+/// where it won.
+const AUTO_MILLI_VERTICES_PER_PIXEL: u64 = 20;
+/// From this many lights the deferred path wins on sparser meshes too: at 8 lights it won
+/// from 0.008 vertices per pixel (0.80-0.83) and tied at 0.002 (0.99-1.01).
+const AUTO_MANY_LIGHTS: usize = 8;
+/// [`FragmentPath::auto_picks_deferred`]'s density at [`AUTO_MANY_LIGHTS`], in thousandths of
+/// a vertex per pixel.
+const AUTO_MANY_LIGHTS_MILLI_VERTICES_PER_PIXEL: u64 = 4;
 
 impl<'a> Frame<'a> {
     /// An empty frame of `width` × `height` pixels, cleared to (0, 0, 0, 1), depth test on.
