@@ -629,14 +629,14 @@ Covered pixels: those not at the clear color in a frame read back after the meas
 
 ### Which fragment path wins (fragment mode, directional lights, 1 draw a frame)
 
-| vertices | image | lights | vertices / pixel | forward | deferred | deferred ÷ forward | auto | agrees |
-| ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- |
-| 45 | 16² | 1 | 0.176 | 0.57 (0.54–0.59) | 0.45 (0.43–0.48) | 0.80 | forward | no |
-| 45 | 16² | 2 | 0.176 | 0.82 (0.78–0.86) | 0.66 (0.63–0.69) | 0.80 | forward | no |
-| 153 | 16² | 1 | 0.598 | 0.58 (0.55–0.61) | 0.46 (0.44–0.48) | 0.80 | forward | no |
-| 153 | 16² | 2 | 0.598 | 0.83 (0.79–0.87) | 0.67 (0.63–0.70) | 0.80 | forward | no |
+| vertices | image | lights | vertices / pixel | forward | deferred | G-buffer pass | lighting pass | deferred ÷ forward | auto | agrees |
+| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- |
+| 45 | 16² | 1 | 0.176 | 0.57 (0.54–0.59) | 0.45 (0.43–0.48) | 0.27 | 0.18 | 0.80 | forward | no |
+| 45 | 16² | 2 | 0.176 | 0.82 (0.78–0.86) | 0.66 (0.63–0.69) | 0.39 | 0.26 | 0.80 | forward | no |
+| 153 | 16² | 1 | 0.598 | 0.58 (0.55–0.61) | 0.46 (0.44–0.48) | 0.28 | 0.18 | 0.80 | forward | no |
+| 153 | 16² | 2 | 0.598 | 0.83 (0.79–0.87) | 0.67 (0.63–0.70) | 0.40 | 0.27 | 0.80 | forward | no |
 
-Deferred ÷ forward below 1: the deferred path wins. "auto": what FragmentPath::Auto picks for the frame on this device (its rule, from the frame's vertices, pixels and lights; not from these times); "agrees": whether that is the faster path here, or within 5 % of it.
+Deferred ÷ forward below 1: the deferred path wins. "G-buffer pass" and "lighting pass": the deferred frame's time split at a timestamp between its two passes (medians frame by frame); the G-buffer pass writes 16 bytes a pixel beside the depth (24 with its color, which only color material and unlit draws need), the lighting pass reads them and writes the 4-byte color. "auto": what FragmentPath::Auto picks for the frame on this device (its rule, from the frame's vertices, pixels and lights; not from these times); "agrees": whether that is the faster path here, or within 5 % of it.
 
 ### What a vertex, a pixel and a light cost
 

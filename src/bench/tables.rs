@@ -402,10 +402,12 @@ pub(super) fn paths_note() -> String {
     format!(
         "Deferred ÷ forward below 1: the deferred path wins. \"G-buffer pass\" and \"lighting pass\": \
          the deferred frame's time split at a timestamp between its two passes (medians frame by \
-         frame); the G-buffer pass writes {} bytes a pixel beside the depth, the lighting pass reads \
-         them and writes the 4-byte color. \"auto\": what FragmentPath::Auto picks for the frame on \
+         frame); the G-buffer pass writes {} bytes a pixel beside the depth ({} with its color, \
+         which only color material and unlit draws need), the lighting pass reads them and writes \
+         the 4-byte color. \"auto\": what FragmentPath::Auto picks for the frame on \
          this device (its rule, from the frame's vertices, pixels and lights; not from these times); \
          \"agrees\": whether that is the faster path here, or within 5 % of it.",
+        ffvk::renderer::GBUFFER_BYTES_PER_PIXEL - 8,
         ffvk::renderer::GBUFFER_BYTES_PER_PIXEL
     )
 }
