@@ -3186,7 +3186,8 @@ enum FfvkResult ffvkPackSpecKey(const struct FfvkContext *ctx, void *dst, uintpt
  pipeline's own set as ffvk sets them in its own pipelines (the point constants from
  `glPointSize` and `glPointParameter`, the target's alpha bits, the units sampled and
  applied). Same layout and errors as `ffvkPackSpecKey`; a `mode` that is not one of GL's
- ten primitive modes is `FFVK_ERROR_INVALID_ARGUMENT`.
+ ten primitive modes, or a bit of `bound2d` or `boundCube` past the last unit, is
+ `FFVK_ERROR_INVALID_ARGUMENT`.
 
  # Safety
 

@@ -204,7 +204,8 @@ pub unsafe extern "C" fn ffvkPackSpecKey(
 /// pipeline's own set as ffvk sets them in its own pipelines (the point constants from
 /// `glPointSize` and `glPointParameter`, the target's alpha bits, the units sampled and
 /// applied). Same layout and errors as `ffvkPackSpecKey`; a `mode` that is not one of GL's
-/// ten primitive modes is `FFVK_ERROR_INVALID_ARGUMENT`.
+/// ten primitive modes, or a bit of `bound2d` or `boundCube` past the last unit, is
+/// `FFVK_ERROR_INVALID_ARGUMENT`.
 ///
 /// # Safety
 ///
@@ -238,6 +239,18 @@ pub unsafe extern "C" fn ffvkPackSpecKeyForPipeline(
                     ))
                 }
             };
+            let units = (1u32 << ffvk::gl::texture::MAX_TEXTURE_UNITS) - 1;
+            for (name, bits) in [("bound2d", bound2d), ("boundCube", bound_cube)] {
+                if bits & !units != 0 {
+                    return Err(fail(
+                        FfvkResult::FFVK_ERROR_INVALID_ARGUMENT,
+                        format!(
+                            "{F}: {name} 0x{bits:x} names a unit past the last: expected a bit per unit, \
+                             within 0x{units:x}"
+                        ),
+                    ));
+                }
+            }
             let mut pipeline = PipelineConstants::new(topology, color_format);
             pipeline.point_size = c.gl.raster.point_size;
             pipeline.bound_2d = bound2d;

@@ -3940,6 +3940,22 @@ fn the_pipeline_packer_sets_the_points_target_and_units_a_pipeline_fixes() {
         m.contains("ffvkPackSpecKeyForPipeline") && m.contains("0x000A"),
         "{m}"
     );
+    // A unit past the last: refused by name.
+    // SAFETY: as above.
+    let r = unsafe {
+        ffvkPackSpecKeyForPipeline(
+            c.0,
+            POINTS,
+            rgba8,
+            0x10,
+            0,
+            (&mut key as *mut SpecKey).cast(),
+            size_of::<SpecKey>(),
+        )
+    };
+    assert_eq!(r, FfvkResult::FFVK_ERROR_INVALID_ARGUMENT);
+    let m = message();
+    assert!(m.contains("bound2d 0x10"), "{m}");
 }
 
 /// The resolver from C: the library's includes inlined, the size asked first with a null
