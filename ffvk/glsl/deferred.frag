@@ -6,11 +6,12 @@
 // The G-buffer (gbuffer.glsl): the surface (record, facing, normal, depth) and the color.
 layout(set = 1, binding = 0) uniform usampler2D g_surface;
 layout(set = 1, binding = 1) uniform usampler2D g_color;
-// What rebuilds a pixel's eye-space position from its depth: the inverse of the draws'
-// projection (Vulkan's clip space, the one projection of the frame), and 1 / the extent.
+// What rebuilds a pixel's eye-space position from its depth: the inverse of the state's
+// projection (Vulkan's clip space), and 1 / the extent; and the state this pass lights.
 layout(push_constant) uniform Pass {
     mat4 eye_from_clip;
     vec2 pixel_size;
+    uint state;
 } pass;
 // The frame's draw records (src/gpu/layout.rs, DrawRecord), read at the index the G-buffer
 // holds, as vec4s: a record takes SPEC_RECORD_VEC4S of them (its size rounded up to the
@@ -19,6 +20,12 @@ layout(push_constant) uniform Pass {
 // SHININESS), front 7-10, back 11-14 (AMBIENT, DIFFUSE, SPECULAR, EMISSION).
 layout(std430, set = 1, binding = 4) readonly buffer Records {
     vec4 record_vec4s[];
+};
+
+// Each record's lighting state, by record index: a frame of several states draws this pass
+// once per state, and each leaves the others' pixels alone.
+layout(std430, set = 1, binding = 6) readonly buffer States {
+    uint record_state[];
 };
 
 #ifdef COUNT
@@ -47,6 +54,8 @@ void main() {
     uint record = surface.x & RECORD_BITS;
     // Nothing drawn here: the clear color stays.
     if (record == 0u) discard;
+    // Another state's pixel: its own pass lights it.
+    if (record_state[record - 1u] != pass.state) discard;
 #ifdef COUNT
     atomicAdd(evaluations, 1u);
 #endif

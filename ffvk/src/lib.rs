@@ -151,5 +151,5 @@ pub use draw::viewport::{gl_scissor, gl_viewport, ViewportError};
 pub use error::{Error, LightingError, MeshError, Result, UnknownName};
 pub use renderer::{
     Draw, FragmentPath, Frame, FrameStats, Mesh, PipelineStats, Pixels, Recording, Renderer, RendererOptions,
-    Texture, Upload,
+    Texture, Upload, MAX_DEFERRED_STATES,
 };

@@ -216,9 +216,8 @@ fn frames_the_deferred_path_cannot_draw_are_drawn_forward_with_the_same_image() 
         }
         frame
     };
-    // Two lighting states; a draw in the vertex mode; no depth test.
+    // A draw in the vertex mode; no depth test.
     for (what, states, depth_test) in [
-        ("two lighting states", vec![&lit, &other], true),
         ("a vertex-mode draw", vec![&lit, &vertex_mode], true),
         ("no depth test", vec![&lit], false),
     ] {
@@ -231,11 +230,140 @@ fn frames_the_deferred_path_cannot_draw_are_drawn_forward_with_the_same_image() 
         assert!(!deferred.1.deferred, "{what}: drawn deferred");
         assert_eq!(forward.0, deferred.0, "{what}: the images differ");
     }
-    // One state, depth tested: deferred.
-    let one = r
-        .render_measured(&frame_of(&[&lit], true, FragmentPath::Deferred))
+    // One state, depth tested: deferred; two states too.
+    for states in [vec![&lit], vec![&lit, &other]] {
+        let frame = frame_of(&states, true, FragmentPath::Deferred);
+        assert!(r.render_measured(&frame).unwrap().1.deferred);
+    }
+    // More states than the lighting pass takes: forward, the same image.
+    let many: Vec<GlState> = (0..=ffvk::MAX_DEFERRED_STATES)
+        .map(|i| {
+            let mut gl = lit.clone();
+            let g = i as f32 / ffvk::MAX_DEFERRED_STATES as f32;
+            gl.light(0, LightParam::Diffuse(Vec4::new(g, 1.0 - g, 0.5, 1.0)))
+                .unwrap();
+            gl
+        })
+        .collect();
+    let many: Vec<&GlState> = many.iter().collect();
+    let forward = r
+        .render_measured(&frame_of(&many, true, FragmentPath::Forward))
         .unwrap();
-    assert!(one.1.deferred);
+    let deferred = r
+        .render_measured(&frame_of(&many, true, FragmentPath::Deferred))
+        .unwrap();
+    assert!(!deferred.1.deferred, "{} states: drawn deferred", many.len());
+    assert_eq!(forward.0, deferred.0, "{} states: the images differ", many.len());
+    finish(r);
+}
+
+/// One draw of a frame of several lighting states: its mesh, modelview, projection and state.
+type StateDraw<'m> = (&'m ffvk::Mesh, Mat4, Mat4, ffvk::gl::state::FixedFunctionState);
+
+#[test]
+fn a_frame_of_several_lighting_states_is_lit_by_a_pass_per_state_within_1_255_of_forward() {
+    let mut r = renderer();
+    let sphere = r.upload(&MeshData::uv_sphere(32, 16)).unwrap();
+    let plane = r
+        .upload(&quad(-1.0, -1.0, 1.0, 1.0, 0.0, Vec4::new(0.3, 0.8, 0.4, 1.0)))
+        .unwrap();
+    let lit = state(false, false, false, false);
+    // Another light color; two-sided with local viewer; color material; lighting off.
+    let mut green = lit.clone();
+    green
+        .light(0, LightParam::Diffuse(Vec4::new(0.1, 0.9, 0.2, 1.0)))
+        .unwrap();
+    let two_sided = state(true, true, false, false);
+    let colored = state(false, false, true, true);
+    let mut unlit = lit.clone();
+    unlit.disable(Cap::Lighting).unwrap();
+    let projection = perspective(45.0, 1.0, 0.5, 20.0);
+    let ortho = Mat4::orthographic_rh_gl(-2.0, 2.0, -2.0, 2.0, 0.5, 20.0);
+    let small = |at: Vec3| view(at) * Mat4::from_scale(Vec3::splat(0.45));
+    let draws: Vec<StateDraw> = vec![
+        (
+            &sphere,
+            small(Vec3::new(-0.8, 0.7, 0.0)),
+            projection,
+            lit.lighting,
+        ),
+        (
+            &sphere,
+            small(Vec3::new(0.8, 0.7, 0.0)),
+            projection,
+            green.lighting,
+        ),
+        // Overlapping the first two, behind and in front of them, in other states.
+        (
+            &sphere,
+            small(Vec3::new(0.0, 0.7, -0.3)),
+            projection,
+            colored.lighting,
+        ),
+        (
+            &sphere,
+            small(Vec3::new(-0.4, 0.5, 0.4)),
+            projection,
+            unlit.lighting,
+        ),
+        // Another projection: a state of its own.
+        (&sphere, small(Vec3::new(0.9, -0.9, 0.0)), ortho, lit.lighting),
+        // Back to the first state after others: its pass lights both of its draws.
+        (
+            &sphere,
+            small(Vec3::new(-0.9, -0.8, 0.0)),
+            projection,
+            lit.lighting,
+        ),
+        // A plane through the eye's plane (its bounds' corners behind the eye: the whole
+        // target is its pass's), turned to show its back face.
+        (
+            &plane,
+            Mat4::from_translation(Vec3::new(0.0, -1.2, -1.0))
+                * Mat4::from_rotation_x(1.9)
+                * Mat4::from_scale(Vec3::splat(3.0)),
+            projection,
+            two_sided.lighting,
+        ),
+        // Half off the target.
+        (
+            &sphere,
+            small(Vec3::new(1.6, 0.0, 0.0)),
+            projection,
+            green.lighting,
+        ),
+    ];
+    let frame_of = |path| {
+        let mut frame = Frame::new(SIZE, SIZE);
+        frame.clear_color = Vec4::new(0.1, 0.1, 0.12, 1.0);
+        frame.fragment_path = path;
+        for (i, &(mesh, modelview, projection, mut state)) in draws.iter().enumerate() {
+            let h = i as f32 / draws.len() as f32;
+            state.front.diffuse = Vec4::new(h, 0.8 - 0.6 * h, 0.3 + 0.5 * h, 1.0);
+            frame.draws.push(Draw::new(mesh, modelview, projection, state));
+        }
+        frame
+    };
+    let (forward, fstats) = r.render_measured(&frame_of(FragmentPath::Forward)).unwrap();
+    let (deferred, dstats) = r.render_measured(&frame_of(FragmentPath::Deferred)).unwrap();
+    let (forward, deferred) = (forward.into_rgba_image(), deferred.into_rgba_image());
+    assert!(!fstats.deferred && dstats.deferred, "the frame was drawn forward");
+    save_for_inspection(&forward, "deferred_states_forward");
+    let path = save_for_inspection(&deferred, "deferred_states_deferred");
+    let (max, count) = difference(&forward, &deferred);
+    assert!(
+        max <= 1,
+        "the paths differ by {max}/255 ({count} bytes; {})",
+        path.display()
+    );
+    // Each covered pixel lit once, by its own state's pass: none twice where the states'
+    // rectangles overlap, none missed where a rectangle were too small.
+    let covered = forward.pixels().filter(|p| p.0 != [26, 26, 31, 255]).count() as u64;
+    assert_eq!(
+        dstats.evaluations,
+        Some(covered),
+        "evaluations against covered pixels"
+    );
     finish(r);
 }
 

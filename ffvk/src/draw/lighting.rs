@@ -170,6 +170,11 @@ impl Staged {
     pub(crate) fn record_buffer(&self) -> vk::Buffer {
         self.record.0
     }
+
+    /// The record's index in [`Staged::record_buffer`] (the vertex stages' instance index).
+    pub(crate) fn record_index(&self) -> u32 {
+        self.record.1
+    }
 }
 
 /// A draw checked and written into its frame slot by [`Lighting::stage_draw`], waiting for

@@ -1,17 +1,21 @@
 //! The fragment mode's deferred path ([`FragmentPath::Deferred`]): a G-buffer pass writes
 //! what the equation needs at each pixel (the draws through the `fragment_gbuffer` shaders),
-//! then one full-screen lighting pass (`deferred.frag`, the same `lighting.glsl`) evaluates
-//! it once per pixel. The forward path evaluates it for every fragment of every triangle,
-//! which on lavapipe means every 4×4 block a triangle touches (BENCHMARKS.md).
+//! then a lighting pass (`deferred.frag`, the same `lighting.glsl`) evaluates it once per
+//! pixel. The forward path evaluates it for every fragment of every triangle, which on
+//! lavapipe means every 4×4 block a triangle touches (BENCHMARKS.md).
 //!
 //! A frame takes this path only where it gives the forward path's image: every draw in the
-//! fragment mode, none blended or textured, all under one lighting state and projection
-//! (one state block for the lighting pass), all with affine modelviews or none, and their
+//! fragment mode, none blended or textured, with no fog, alpha test or clip plane, and their
 //! records in one chunk of the frame slot (the lighting pass reads them by index); any other
-//! frame is drawn forward. The G-buffer takes 24 bytes a pixel beside the depth buffer: the
-//! draw's record and facing, the normal octahedron-encoded with its length, the depth (the
-//! lighting pass rebuilds the eye-space position from it through the projection's inverse)
-//! and the color in 16-bit floats (`glsl/gbuffer.glsl`).
+//! frame is drawn forward. Its draws may be under up to [`MAX_DEFERRED_STATES`](super::MAX_DEFERRED_STATES) lighting
+//! states (a state: a [`StateKey`], its lights, model and projection, with affine modelviews
+//! or not): the lighting pass draws one full-screen triangle per state, specialized for it and
+//! reading its state block, scissored to the window rectangle its draws' meshes project to;
+//! a table of each record's state (binding 6) lets it leave the other states' pixels alone.
+//! The G-buffer takes 24 bytes a pixel beside the depth buffer: the draw's record and facing,
+//! the normal octahedron-encoded with its length, the depth (the lighting pass rebuilds the
+//! eye-space position from it through the projection's inverse) and the color in 16-bit
+//! floats (`glsl/gbuffer.glsl`).
 
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -19,25 +23,36 @@ use std::sync::Arc;
 use ash::vk;
 
 use super::attachments::{area_and_viewport, attachment_barriers, color_attachment, depth_attachment};
-use super::frame::{FragmentPath, Frame};
+use super::frame::Frame;
+use super::states::{scissor, States};
 use super::subresource;
 use crate::draw::lighting::{Lighting, Staged};
 use crate::draw::pipeline::{
-    shader_module, spec_entries, with_assembly, with_layout, Specialize, COLOR_FORMAT, DEPTH_FORMAT,
-    GBUFFER_FORMATS,
+    shader_module, spec_entries, with_assembly, with_layout, COLOR_FORMAT, DEPTH_FORMAT, GBUFFER_FORMATS,
 };
 use crate::error::{Error, Result};
-use crate::gl::state::LightingMode;
-use crate::gpu::layout::{SpecConstant, SpecKey, StateKey};
+use crate::gpu::layout::{SpecConstant, SpecKey, VK_FROM_GL_CLIP};
 use crate::gpu::shaders;
 use crate::vk::objects::{DescriptorPool, DescriptorSetLayout, Pipeline, PipelineLayout, Sampler};
 use crate::vk::{Buffer, Device, Image, MemoryUse};
 
-/// The lighting pass's push constants: `Pass` in deferred.frag, 18 floats.
+/// The lighting pass's push constants: `Pass` in deferred.frag.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
+pub(super) struct PassConstants {
+    /// The inverse of the state's projection in Vulkan's clip space.
+    eye_from_clip: [f32; 16],
+    /// 1 / the extent.
+    pixel_size: [f32; 2],
+    /// The state's index: the pass lights the pixels whose record is of this state.
+    state: u32,
+    pad: u32,
+}
+
 const PUSH_CONSTANTS: [vk::PushConstantRange; 1] = [vk::PushConstantRange {
     stage_flags: vk::ShaderStageFlags::FRAGMENT,
     offset: 0,
-    size: 72,
+    size: std::mem::size_of::<PassConstants>() as u32,
 }];
 
 /// Bytes of G-buffer per pixel ([`GBUFFER_FORMATS`]).
@@ -49,8 +64,9 @@ struct GBuffer {
     // Field order is drop order: the set's pool before the images it names.
     descriptors: DescriptorPool,
     images: Vec<Image>,
-    /// The record buffer the set names now.
+    /// The record buffer and the state table the set names now.
     records: vk::Buffer,
+    table: vk::Buffer,
 }
 
 /// The deferred path's objects: made on the first deferred frame, kept with the renderer.
@@ -61,77 +77,37 @@ pub(super) struct Deferred {
     gbuffer: Option<GBuffer>,
     /// The lighting pass's count of the pixels it lit (`deferred_counted`).
     counter: Buffer,
+    /// Each record's state, by record index (`record_state` in deferred.frag), written per frame.
+    table: Buffer,
     layout: PipelineLayout,
     set_layout: DescriptorSetLayout,
     sampler: Sampler,
     device: Arc<Device>,
 }
 
+/// One lighting state's part of the lighting pass.
+pub(super) struct StatePass {
+    pub(super) pipeline: vk::Pipeline,
+    /// The state block's set and dynamic offset.
+    pub(super) state: (vk::DescriptorSet, u32),
+    pub(super) push: PassConstants,
+    /// The window rectangle its draws' pixels lie in.
+    pub(super) scissor: vk::Rect2D,
+}
+
 /// What a deferred frame's recording needs.
 pub(super) struct DeferredPass {
     pub(super) images: [vk::Image; GBUFFER_FORMATS.len()],
     pub(super) views: [vk::ImageView; GBUFFER_FORMATS.len()],
-    /// The lighting pass's push constants (`Pass` in deferred.frag): the inverse of the frame's
-    /// projection in Vulkan's clip space, then 1 / the extent.
-    pub(super) push: [f32; 18],
     /// Whether the lighting pass reads the color (color material, or lighting off); else the
     /// G-buffer pass's color attachment is left out (a null view: its writes are dropped).
     pub(super) color: bool,
-    pub(super) pipeline: vk::Pipeline,
+    /// Per lighting state with pixels on screen, in the order of their first draws.
+    pub(super) states: Vec<StatePass>,
     pub(super) layout: vk::PipelineLayout,
     pub(super) set: vk::DescriptorSet,
-    /// The state block's set and dynamic offset.
-    pub(super) state: (vk::DescriptorSet, u32),
     /// The evaluation counter, when the pass counts (it is zeroed before the pass).
     pub(super) counter: Option<vk::Buffer>,
-}
-
-/// The lighting pass's specialization key, when `frame` can take the deferred path: the one
-/// its draws' forward pipelines would use.
-/// `cpu`: the device is a CPU ([`FragmentPath::Auto`]'s rule).
-pub(super) fn eligible(frame: &Frame, specialize: Specialize, cpu: bool) -> Option<SpecKey> {
-    // The lighting pass finds the drawn pixels by their depth: frames without a depth test
-    // stay forward.
-    if frame.fragment_path == FragmentPath::Forward || !frame.depth_test {
-        return None;
-    }
-    let first = frame.draws.first()?;
-    if frame.fragment_path == FragmentPath::Auto {
-        let vertices = frame.draws.iter().map(|d| u64::from(d.mesh.vertex_count)).sum();
-        let pixels = u64::from(frame.width) * u64::from(frame.height);
-        let lights = match first.state.lighting {
-            true => first.state.enabled_lights().count(),
-            false => 0,
-        };
-        if !FragmentPath::auto_picks_deferred(cpu, vertices, pixels, lights) {
-            return None;
-        }
-    }
-    let affine = |m: &glam::Mat4| m.row(3) == glam::Vec4::W;
-    let key = StateKey::new(&first.state, first.projection);
-    let alike = frame.draws.iter().all(|d| {
-        let raster = d.raster(frame);
-        d.state.mode == LightingMode::Fragment
-            && raster.blend.is_none()
-            // The passes write every channel: a masked draw stays forward.
-            && raster.color_mask == ash::vk::ColorComponentFlags::RGBA
-            // So do the stencil test, logic ops, outlines, points and stipples.
-            && raster.only_fills_and_blends()
-            && d.clamped_depth_range() == [0.0, 1.0]
-            && d.depth_write
-            && !d.textured()
-            // Fog, the alpha test and an unlit color sum are forward-only stages.
-            && !d.state.fragment.fog.enabled
-            && d.state.clip.mask() == 0
-            && d.state.fragment.alpha_test.effective_func() == crate::gl::state::CompareFunc::Always
-            && (!d.state.fragment.color_sum || d.state.lighting)
-            && affine(&d.modelview) == affine(&first.modelview)
-            && StateKey::new(&d.state, d.projection) == key
-    });
-    alike.then(|| match specialize {
-        Specialize::Never => SpecKey::UBER,
-        _ => SpecKey::for_state(&first.state).with_finite_vertices(affine(&first.modelview)),
-    })
 }
 
 /// Whether the staged draws' records lie in one buffer (the lighting pass binds one).
@@ -156,8 +132,8 @@ impl Deferred {
                 .descriptor_count(1)
                 .stage_flags(vk::ShaderStageFlags::FRAGMENT)
         };
-        // The G-buffer, the frame's records, the evaluation counter.
-        let bindings = [image(0), image(1), storage(4), storage(5)];
+        // The G-buffer, the frame's records, the evaluation counter, the records' states.
+        let bindings = [image(0), image(1), storage(4), storage(5), storage(6)];
         let set_layout = DescriptorSetLayout::new(device, &bindings)?;
         // The lighting pass reads texels where they are (texelFetch): no filtering.
         let sampler = Sampler::new(
@@ -180,10 +156,12 @@ impl Deferred {
             vk::BufferUsageFlags::STORAGE_BUFFER | vk::BufferUsageFlags::TRANSFER_DST,
             MemoryUse::Readback,
         )?;
+        let table = state_table(device, 1024)?;
         Ok(Deferred {
             pipelines: HashMap::new(),
             gbuffer: None,
             counter,
+            table,
             layout,
             set_layout,
             sampler,
@@ -244,7 +222,7 @@ impl Deferred {
                 },
                 vk::DescriptorPoolSize {
                     ty: vk::DescriptorType::STORAGE_BUFFER,
-                    descriptor_count: 2,
+                    descriptor_count: 3,
                 },
             ];
             let descriptors = DescriptorPool::with_one_set(&self.device, &sizes, &self.set_layout)?;
@@ -290,27 +268,35 @@ impl Deferred {
                 descriptors,
                 images,
                 records: vk::Buffer::null(),
+                table: vk::Buffer::null(),
             });
         }
         let gbuffer = self
             .gbuffer
             .as_mut()
             .ok_or(Error::Internal("no G-buffer after it was made"))?;
-        if gbuffer.records != records {
+        for (binding, buffer, named) in [
+            (4, records, &mut gbuffer.records),
+            (6, self.table.raw(), &mut gbuffer.table),
+        ] {
+            if *named == buffer {
+                continue;
+            }
             let info = [vk::DescriptorBufferInfo {
-                buffer: records,
+                buffer,
                 offset: 0,
                 range: vk::WHOLE_SIZE,
             }];
             let write = vk::WriteDescriptorSet::default()
                 .dst_set(gbuffer.descriptors.set())
-                .dst_binding(4)
+                .dst_binding(binding)
                 .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
                 .buffer_info(&info);
             // SAFETY: the renderer waited for the last submission, the only user of the set;
-            // the buffer is the lighting's and outlives this frame's submission.
+            // the records are the lighting's and the table this path's, and both outlive
+            // this frame's submission.
             unsafe { self.device.raw.update_descriptor_sets(&[write], &[]) };
-            gbuffer.records = records;
+            *named = buffer;
         }
         Ok(())
     }
@@ -393,48 +379,86 @@ impl Deferred {
         Ok(raw)
     }
 
-    /// Everything a deferred frame of `extent` records with: the lighting pass specialized by
-    /// `key`, its draws staged as `staged` with their records in `records` (their one buffer).
+    /// Everything a deferred frame records with, on targets of `extent`: a lighting pass per
+    /// state of `states` (the frame's), its draws staged as `staged` with their records in
+    /// `records` (their one buffer).
     pub(super) fn pass(
         &mut self,
         lighting: &Lighting,
-        (extent, projection): (vk::Extent2D, glam::Mat4),
-        (key, records): (SpecKey, vk::Buffer),
+        (frame, extent): (&Frame, vk::Extent2D),
+        (states, records): (&States, vk::Buffer),
         staged: &[Staged],
         counted: bool,
     ) -> Result<DeferredPass> {
-        let state = staged
-            .first()
-            .map(Staged::state_binding)
-            .ok_or(Error::Internal("a deferred frame without draws"))?;
         self.ensure_layout(lighting)?;
+        self.write_table(states, staged)?;
         self.ensure_gbuffer(extent, records)?;
-        let pipeline = self.pipeline(key, counted, lighting.pipeline_cache())?;
+        let mut passes = Vec::with_capacity(states.len());
+        let mut color = false;
+        for (index, &(key, first)) in states.first().iter().enumerate() {
+            let draws = frame
+                .draws
+                .iter()
+                .zip(states.of_draw())
+                .filter(|(_, &s)| s as usize == index)
+                .map(|(d, _)| d);
+            let Some(scissor) = scissor(draws, extent) else {
+                continue;
+            };
+            let (draw, staged) = frame
+                .draws
+                .get(first)
+                .zip(staged.get(first))
+                .ok_or(Error::Internal("a deferred state's first draw is not staged"))?;
+            // The inverse in double precision: the projection may be near singular in z.
+            let clip = (VK_FROM_GL_CLIP * draw.projection).as_dmat4();
+            let push = PassConstants {
+                eye_from_clip: clip.inverse().as_mat4().to_cols_array(),
+                pixel_size: [1.0 / extent.width as f32, 1.0 / extent.height as f32],
+                state: index as u32,
+                pad: 0,
+            };
+            // The uber-shader's -1 reads the block: the color may be needed.
+            color |= key.get(SpecConstant::ColorMaterial) != 0 || key.get(SpecConstant::Lighting) != 1;
+            passes.push(StatePass {
+                pipeline: self.pipeline(key, counted, lighting.pipeline_cache())?,
+                state: staged.state_binding(),
+                push,
+                scissor,
+            });
+        }
         let gbuffer = self
             .gbuffer
             .as_ref()
             .ok_or(Error::Internal("no G-buffer after it was made"))?;
         let raw = |i: usize| gbuffer.images[i].raw();
         let view = |i: usize| gbuffer.images[i].view();
-        // The inverse in double precision: the projection may be near singular in z.
-        let clip = (crate::gpu::layout::VK_FROM_GL_CLIP * projection).as_dmat4();
-        let mut push = [0f32; 18];
-        push[..16].copy_from_slice(&clip.inverse().as_mat4().to_cols_array());
-        push[16] = 1.0 / extent.width as f32;
-        push[17] = 1.0 / extent.height as f32;
-        // The uber-shader's -1 reads the block: the color may be needed.
-        let color = key.get(SpecConstant::ColorMaterial) != 0 || key.get(SpecConstant::Lighting) != 1;
         Ok(DeferredPass {
             images: [raw(0), raw(1)],
             views: [view(0), view(1)],
-            push,
             color,
-            pipeline,
+            states: passes,
             layout: self.layout.raw(),
             set: gbuffer.descriptors.set(),
-            state,
             counter: counted.then(|| self.counter.raw()),
         })
+    }
+
+    /// Writes each staged draw's state into the table at its record's index (a larger table
+    /// first, where the records reach past this one).
+    fn write_table(&mut self, states: &States, staged: &[Staged]) -> Result<()> {
+        let most = staged.iter().map(Staged::record_index).max().unwrap_or(0) as usize;
+        let mut table = vec![0u32; most + 1];
+        for (s, &state) in staged.iter().zip(states.of_draw()) {
+            table[s.record_index() as usize] = state;
+        }
+        let bytes: &[u8] = bytemuck::cast_slice(&table);
+        if (bytes.len() as u64) > self.table.size() {
+            // The set names the old table until ensure_gbuffer writes the new one; the
+            // renderer waited for the last submission, the only one that read it.
+            self.table = state_table(&self.device, table.len().next_power_of_two())?;
+        }
+        self.table.write(0, bytes)
     }
 
     /// The last counted lighting pass's evaluations (after its fence).
@@ -442,6 +466,17 @@ impl Deferred {
         let bytes = self.counter.bytes()?;
         Some(u32::from_le_bytes(bytes.get(..4)?.try_into().ok()?) as u64)
     }
+}
+
+/// A table of `entries` records' states, written by the host each frame.
+fn state_table(device: &Arc<Device>, entries: usize) -> Result<Buffer> {
+    Buffer::new(
+        device,
+        "deferred state table",
+        (entries * 4) as u64,
+        vk::BufferUsageFlags::STORAGE_BUFFER,
+        MemoryUse::Uniforms,
+    )
 }
 
 /// The G-buffer images' barrier from `old` to `new`.
@@ -616,29 +651,35 @@ pub(super) unsafe fn record_deferred(
         // SAFETY: as above; the query was reset before the pass, outside it.
         unsafe { vkd.cmd_begin_query(cmd, pool, 0, vk::QueryControlFlags::empty()) };
     }
-    // SAFETY: as above; the lighting pass's pipeline, layout and sets are the deferred path's,
-    // the state block's set and offset the draws' own.
+    // SAFETY: as above; the lighting pass's pipelines, layout and sets are the deferred
+    // path's, each state block's set and offset its draws' own.
     unsafe {
         vkd.cmd_begin_rendering(cmd, &lighting_pass);
         vkd.cmd_set_viewport(cmd, 0, &[viewport]);
-        vkd.cmd_set_scissor(cmd, 0, &[area]);
-        vkd.cmd_bind_pipeline(cmd, vk::PipelineBindPoint::GRAPHICS, pass.pipeline);
-        vkd.cmd_bind_descriptor_sets(
-            cmd,
-            vk::PipelineBindPoint::GRAPHICS,
-            pass.layout,
-            0,
-            &[pass.state.0, pass.set],
-            &[pass.state.1],
-        );
-        vkd.cmd_push_constants(
-            cmd,
-            pass.layout,
-            vk::ShaderStageFlags::FRAGMENT,
-            0,
-            bytemuck::bytes_of(&pass.push),
-        );
-        vkd.cmd_draw(cmd, 3, 1, 0, 0);
+        let mut bound = vk::Pipeline::null();
+        for state in &pass.states {
+            vkd.cmd_set_scissor(cmd, 0, &[state.scissor]);
+            if state.pipeline != bound {
+                vkd.cmd_bind_pipeline(cmd, vk::PipelineBindPoint::GRAPHICS, state.pipeline);
+                bound = state.pipeline;
+            }
+            vkd.cmd_bind_descriptor_sets(
+                cmd,
+                vk::PipelineBindPoint::GRAPHICS,
+                pass.layout,
+                0,
+                &[state.state.0, pass.set],
+                &[state.state.1],
+            );
+            vkd.cmd_push_constants(
+                cmd,
+                pass.layout,
+                vk::ShaderStageFlags::FRAGMENT,
+                0,
+                bytemuck::bytes_of(&state.push),
+            );
+            vkd.cmd_draw(cmd, 3, 1, 0, 0);
+        }
         vkd.cmd_end_rendering(cmd);
     }
     if let Some(pool) = statistics {

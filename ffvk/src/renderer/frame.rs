@@ -37,6 +37,9 @@ pub struct Mesh {
     pub(super) vertex_bindings: [(vk::Buffer, u64); 2],
     /// How its indices make primitives.
     pub(super) topology: Topology,
+    /// The least and greatest object-space position of its vertices (`None` without
+    /// vertices): where the deferred path looks for a draw's pixels.
+    pub(super) bounds: Option<(glam::Vec3, glam::Vec3)>,
 }
 
 impl Mesh {
@@ -436,10 +439,13 @@ pub enum FragmentPath {
     /// golden images are drawn with it).
     #[default]
     Forward,
-    /// Once per pixel: a G-buffer pass, then one full-screen lighting pass with the same
-    /// equation (`renderer/deferred.rs`). A frame that cannot take it (a draw in another mode,
-    /// blended or textured, draws under different lighting states or projections) is drawn
-    /// forward; [`FrameStats::deferred`] says which path a frame took.
+    /// Once per pixel: a G-buffer pass, then a lighting pass with the same equation
+    /// (`renderer/deferred.rs`): a full-screen triangle per lighting state (state block and
+    /// projection) of the frame, each specialized for its state and scissored to its draws,
+    /// up to [`MAX_DEFERRED_STATES`](crate::MAX_DEFERRED_STATES) states. A frame that cannot
+    /// take it (a draw in another mode, blended, textured, fogged, alpha-tested or clipped,
+    /// more states than that, no depth test) is drawn forward; [`FrameStats::deferred`] says
+    /// which path a frame took.
     Deferred,
     /// Deferred where a fixed rule of the frame's vertices, pixels and lights and of the
     /// device's type says it is the faster path ([`FragmentPath::auto_picks_deferred`]),
@@ -455,7 +461,8 @@ impl FragmentPath {
     /// deferred. `cpu`: the device is a CPU (`VK_PHYSICAL_DEVICE_TYPE_CPU`, lavapipe);
     /// `vertices`: each draw's mesh vertex count (vertices uploaded, not index count), summed
     /// over the draws; `pixels`:
-    /// the frame's width × height; `lights`: the enabled lights.
+    /// the frame's width × height; `lights`: the enabled lights (in a frame of several
+    /// lighting states, the fewest of any state).
     ///
     /// The constants come from `ffvk bench --sweep paths` on lavapipe (BENCHMARKS.md, "Which
     /// fragment path wins"). On a CPU the forward path shades every 4×4 block each triangle

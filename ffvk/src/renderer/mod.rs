@@ -23,11 +23,13 @@ mod deferred;
 mod frame;
 mod queries;
 mod record;
+mod states;
 mod texture;
 mod upload;
 pub use deferred::GBUFFER_BYTES_PER_PIXEL;
 pub use frame::{Draw, FragmentPath, Frame, FrameStats, Mesh, PipelineStats, Pixels, Recording};
 use queries::Queries;
+pub use states::MAX_DEFERRED_STATES;
 pub use texture::Texture;
 pub use upload::Upload;
 use upload::{Part, Uploader};
@@ -279,6 +281,12 @@ impl Renderer {
             index_count: mesh.indices.len() as u32,
             vertex_count: count as u32,
             topology: mesh.topology,
+            bounds: mesh.vertices.iter().fold(None, |b, v| {
+                let p = glam::Vec3::from(v.position);
+                Some(b.map_or((p, p), |(lo, hi): (glam::Vec3, glam::Vec3)| {
+                    (lo.min(p), hi.max(p))
+                }))
+            }),
         })
     }
 
@@ -544,7 +552,7 @@ impl Renderer {
         // The Renderer's own errors name the draw where it matters (its meshes and textures);
         // the state's errors stay as they are.
         let cpu = self.device.info().is_cpu();
-        let eligible = deferred::eligible(frame, self.lighting.specialize(), cpu);
+        let eligible = states::eligible(frame, self.lighting.specialize(), cpu);
         self.lighting.set_gbuffer(eligible.is_some());
         let staged = match frame.recording {
             Recording::Run => self.lighting.stage_run(0, &lits).map_err(|(_, e)| e),
@@ -555,27 +563,27 @@ impl Renderer {
         // The lighting pass reads the records from one buffer: a frame whose records span two
         // chunks of the slot (a first frame of many draws, while the slot grows) is drawn
         // forward, staged again.
-        let deferred_key = eligible.zip(deferred::one_record_buffer(&staged));
-        if eligible.is_some() && deferred_key.is_none() {
-            self.lighting.begin_frame(0)?;
-            staged = self.lighting.stage_run(0, &lits).map_err(|(_, e)| e)?;
-        }
-        let deferred_pass = match (deferred_key, &self.targets) {
-            (Some((key, records)), Some(targets)) => {
+        let records = deferred::one_record_buffer(&staged);
+        let deferred_states = match (eligible, records) {
+            (Some(states), Some(records)) => Some((states, records)),
+            (Some(_), None) => {
+                self.lighting.begin_frame(0)?;
+                staged = self.lighting.stage_run(0, &lits).map_err(|(_, e)| e)?;
+                None
+            }
+            (None, _) => None,
+        };
+        let deferred_pass = match (deferred_states, &self.targets) {
+            (Some((states, records)), Some(targets)) => {
                 let extent = targets.extent;
                 let d = match &mut self.deferred {
                     Some(d) => d,
                     None => self.deferred.insert(deferred::Deferred::new(&self.device)?),
                 };
-                let projection = frame
-                    .draws
-                    .first()
-                    .map(|d| d.projection)
-                    .ok_or(Error::Internal("a deferred frame without draws"))?;
                 Some(d.pass(
                     &self.lighting,
-                    (extent, projection),
-                    (key, records),
+                    (frame, extent),
+                    (&states, records),
                     &staged,
                     pass.statistics,
                 )?)
