@@ -177,10 +177,12 @@ impl Chunk {
             RingUse::Uniforms => ("uniform buffer", vk::BufferUsageFlags::UNIFORM_BUFFER),
             RingUse::InstanceData => (
                 "draw record buffer",
-                // Storage too: the deferred lighting pass reads a frame's records by index.
+                // A texel buffer too: the deferred lighting pass fetches a frame's records by
+                // index (texelFetch, which llvmpipe gathers; its storage buffer loads at
+                // per-pixel indices take a loop over the lanes).
                 vk::BufferUsageFlags::VERTEX_BUFFER
                     | vk::BufferUsageFlags::UNIFORM_BUFFER
-                    | vk::BufferUsageFlags::STORAGE_BUFFER,
+                    | vk::BufferUsageFlags::UNIFORM_TEXEL_BUFFER,
             ),
         };
         let buffer = Buffer::new(device, what, capacity * stride, usage, MemoryUse::Uniforms)?;

@@ -33,7 +33,9 @@ use crate::draw::pipeline::{
 use crate::error::{Error, Result};
 use crate::gpu::layout::{SpecConstant, SpecKey, VK_FROM_GL_CLIP};
 use crate::gpu::shaders;
-use crate::vk::objects::{DescriptorPool, DescriptorSetLayout, Pipeline, PipelineLayout, Sampler};
+use crate::vk::objects::{
+    BufferView, DescriptorPool, DescriptorSetLayout, Pipeline, PipelineLayout, Sampler,
+};
 use crate::vk::{Buffer, Device, Image, MemoryUse};
 
 /// The lighting pass's push constants: `Pass` in deferred.frag.
@@ -64,8 +66,8 @@ struct GBuffer {
     // Field order is drop order: the set's pool before the images it names.
     descriptors: DescriptorPool,
     images: Vec<Image>,
-    /// The record buffer and the state table the set names now.
-    records: vk::Buffer,
+    /// The view of the record buffer and the state table the set names now.
+    records: Option<BufferView>,
     table: vk::Buffer,
 }
 
@@ -110,10 +112,17 @@ pub(super) struct DeferredPass {
     pub(super) counter: Option<vk::Buffer>,
 }
 
-/// Whether the staged draws' records lie in one buffer (the lighting pass binds one).
-pub(super) fn one_record_buffer(staged: &[Staged]) -> Option<vk::Buffer> {
+/// The buffer of the staged draws' records, where the lighting pass can read them: all in one
+/// buffer (it binds one), the last within the device's `maxTexelBufferElements` (it fetches
+/// them as texels).
+pub(super) fn readable_records(staged: &[Staged], device: &Device) -> Option<vk::Buffer> {
     let first = staged.first()?.record_buffer();
-    staged.iter().all(|s| s.record_buffer() == first).then_some(first)
+    let texels_per_record = u64::from(crate::draw::pipeline::record_stride_on(device) / 16);
+    let last = staged.iter().map(Staged::record_index).max()?;
+    let texels = (u64::from(last) + 1) * texels_per_record;
+    (texels <= u64::from(device.limits.max_texel_buffer_elements)
+        && staged.iter().all(|s| s.record_buffer() == first))
+    .then_some(first)
 }
 
 impl Deferred {
@@ -125,6 +134,13 @@ impl Deferred {
                 .descriptor_count(1)
                 .stage_flags(vk::ShaderStageFlags::FRAGMENT)
         };
+        let texels = |binding| {
+            vk::DescriptorSetLayoutBinding::default()
+                .binding(binding)
+                .descriptor_type(vk::DescriptorType::UNIFORM_TEXEL_BUFFER)
+                .descriptor_count(1)
+                .stage_flags(vk::ShaderStageFlags::FRAGMENT)
+        };
         let storage = |binding| {
             vk::DescriptorSetLayoutBinding::default()
                 .binding(binding)
@@ -133,7 +149,7 @@ impl Deferred {
                 .stage_flags(vk::ShaderStageFlags::FRAGMENT)
         };
         // The G-buffer, the frame's records, the evaluation counter, the records' states.
-        let bindings = [image(0), image(1), storage(4), storage(5), storage(6)];
+        let bindings = [image(0), image(1), texels(4), storage(5), storage(6)];
         let set_layout = DescriptorSetLayout::new(device, &bindings)?;
         // The lighting pass reads texels where they are (texelFetch): no filtering.
         let sampler = Sampler::new(
@@ -221,8 +237,12 @@ impl Deferred {
                     descriptor_count: GBUFFER_FORMATS.len() as u32,
                 },
                 vk::DescriptorPoolSize {
+                    ty: vk::DescriptorType::UNIFORM_TEXEL_BUFFER,
+                    descriptor_count: 1,
+                },
+                vk::DescriptorPoolSize {
                     ty: vk::DescriptorType::STORAGE_BUFFER,
-                    descriptor_count: 3,
+                    descriptor_count: 2,
                 },
             ];
             let descriptors = DescriptorPool::with_one_set(&self.device, &sizes, &self.set_layout)?;
@@ -267,7 +287,7 @@ impl Deferred {
                 extent,
                 descriptors,
                 images,
-                records: vk::Buffer::null(),
+                records: None,
                 table: vk::Buffer::null(),
             });
         }
@@ -275,29 +295,37 @@ impl Deferred {
             .gbuffer
             .as_mut()
             .ok_or(Error::Internal("no G-buffer after it was made"))?;
-        for (binding, buffer, named) in [
-            (4, records, &mut gbuffer.records),
-            (6, self.table.raw(), &mut gbuffer.table),
-        ] {
-            if *named == buffer {
-                continue;
-            }
-            let info = [vk::DescriptorBufferInfo {
-                buffer,
-                offset: 0,
-                range: vk::WHOLE_SIZE,
-            }];
-            let write = vk::WriteDescriptorSet::default()
-                .dst_set(gbuffer.descriptors.set())
-                .dst_binding(binding)
-                .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
-                .buffer_info(&info);
-            // SAFETY: the renderer waited for the last submission, the only user of the set;
-            // the records are the lighting's and the table this path's, and both outlive
-            // this frame's submission.
-            unsafe { self.device.raw.update_descriptor_sets(&[write], &[]) };
-            *named = buffer;
+        // The records through a view made each frame: the ring may have dropped last frame's
+        // chunk and made another, which may reuse its handle.
+        let view = BufferView::new(&self.device, records, vk::Format::R32G32B32A32_SFLOAT)?;
+        let views = [view.raw()];
+        let mut writes = vec![vk::WriteDescriptorSet::default()
+            .dst_set(gbuffer.descriptors.set())
+            .dst_binding(4)
+            .descriptor_type(vk::DescriptorType::UNIFORM_TEXEL_BUFFER)
+            .texel_buffer_view(&views)];
+        let table = [vk::DescriptorBufferInfo {
+            buffer: self.table.raw(),
+            offset: 0,
+            range: vk::WHOLE_SIZE,
+        }];
+        // The table is this path's own: a new one is made before the old one is dropped, so
+        // its handle names it.
+        if gbuffer.table != self.table.raw() {
+            writes.push(
+                vk::WriteDescriptorSet::default()
+                    .dst_set(gbuffer.descriptors.set())
+                    .dst_binding(6)
+                    .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+                    .buffer_info(&table),
+            );
+            gbuffer.table = self.table.raw();
         }
+        // SAFETY: the renderer waited for the last submission, the only user of the set (and
+        // of the view it named, dropped below); the records are the lighting's and the table
+        // this path's, and both outlive this frame's submission.
+        unsafe { self.device.raw.update_descriptor_sets(&writes, &[]) };
+        gbuffer.records = Some(view);
         Ok(())
     }
 

@@ -561,9 +561,9 @@ impl Renderer {
         self.lighting.set_gbuffer(false);
         let mut staged = staged?;
         // The lighting pass reads the records from one buffer: a frame whose records span two
-        // chunks of the slot (a first frame of many draws, while the slot grows) is drawn
-        // forward, staged again.
-        let records = deferred::one_record_buffer(&staged);
+        // chunks of the slot (a first frame of many draws, while the slot grows), or lie past
+        // the device's texel buffer limit, is drawn forward, staged again.
+        let records = deferred::readable_records(&staged, &self.device);
         let deferred_states = match (eligible, records) {
             (Some(states), Some(records)) => Some((states, records)),
             (Some(_), None) => {

@@ -84,6 +84,30 @@ owned!(
     /// A sampler.
     Sampler(vk::Sampler) freed by destroy_sampler
 );
+owned!(
+    /// A buffer view: a buffer's bytes as texels of one format.
+    BufferView(vk::BufferView) freed by destroy_buffer_view
+);
+
+impl BufferView {
+    /// The whole of `buffer` (its size rounded down to whole texels) as texels of `format`.
+    /// `buffer` was made with a texel buffer usage and must outlive every command that
+    /// reads through the view.
+    pub fn new(device: &Arc<Device>, buffer: vk::Buffer, format: vk::Format) -> Result<Self> {
+        let info = vk::BufferViewCreateInfo::default()
+            .buffer(buffer)
+            .format(format)
+            .offset(0)
+            .range(vk::WHOLE_SIZE);
+        // SAFETY: a valid create info on a live device; the caller's buffer is this device's.
+        let raw =
+            unsafe { device.raw.create_buffer_view(&info, None) }.map_err(vk_error("vkCreateBufferView"))?;
+        Ok(BufferView {
+            device: device.clone(),
+            raw,
+        })
+    }
+}
 
 impl Sampler {
     /// A sampler of `info`.
