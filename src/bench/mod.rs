@@ -32,6 +32,7 @@ mod points;
 mod report;
 mod stage_textures;
 mod stages;
+pub mod states;
 mod suite;
 mod sweep;
 mod tables;
@@ -369,6 +370,9 @@ pub struct BenchReport {
     pub draws: Vec<draws::DrawsResult>,
     /// The floor: the draws sweep's frames drawn by a plain Vulkan program, without ffvk.
     pub floor: Vec<floor::FloorResult>,
+    /// Frames of several lighting states on both fragment paths (with the paths sweep).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub states: Vec<states::StatesResult>,
     /// What was left out and why (the GL anchor without a GL driver or a matching device, GL
     /// points over GL_MAX_LIGHTS).
     pub notes: Vec<String>,
@@ -600,6 +604,11 @@ pub fn run_sweep(
                 * (1 + u64::from(gl.is_some())),
     );
     let mut draws = draws::run_draws(config, &mut draws_renderer, gl.as_ref(), progress)?;
+    // Frames of several lighting states, with the paths they compare.
+    let states = match config.path_stacks.is_empty() {
+        true => Vec::new(),
+        false => states::run_states(config, &mut draws_renderer, progress)?,
+    };
     drop(draws_renderer);
     // The floor on a device of its own, after the draws sweep.
     let floor = floor::run_floor(config, options, progress, &mut notes)?;
@@ -633,6 +642,7 @@ pub fn run_sweep(
         draw_cost,
         draws,
         floor,
+        states,
         notes,
     })
 }

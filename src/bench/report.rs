@@ -269,6 +269,14 @@ pub fn markdown(report: &BenchReport) -> String {
             paths_note()
         );
     }
+    if !report.states.is_empty() {
+        let _ = write!(
+            m,
+            "\n### Frames of several lighting states (fragment mode, forward and deferred)\n\n{}\n{}\n",
+            super::states::states_table(&report.states).markdown(),
+            super::states::states_note()
+        );
+    }
     if !report.summary.costs.is_empty() {
         let _ = write!(
             m,
@@ -534,6 +542,7 @@ mod tests {
             draw_cost: None,
             draws: Vec::new(),
             floor: Vec::new(),
+            states: Vec::new(),
             notes: vec!["a note".into()],
         }
     }
