@@ -467,31 +467,27 @@ impl FragmentPath {
     /// The constants come from `ffvk bench --sweep paths` on lavapipe (BENCHMARKS.md, "Which
     /// fragment path wins"). On a CPU the forward path shades every 4×4 block each triangle
     /// touches, the whole light loop each time, so it loses once triangles are small and
-    /// lights many; the deferred path pays a G-buffer pass and a lighting pass whose own cost,
-    /// before any light, is about that of two lights' forward shading. On GPUs the forward
-    /// path shades about once per pixel and the G-buffer's writes cost more than they save:
-    /// forward always.
+    /// lights many; the deferred path pays a G-buffer pass and a lighting pass per pixel. On
+    /// a CPU it takes 4 or more lights at 0.008 or more vertices per pixel, or 8 at 0.002. On
+    /// GPUs the forward path shades about once per pixel and the G-buffer's writes
+    /// cost more than they save: forward always.
     pub fn auto_picks_deferred(cpu: bool, vertices: u64, pixels: u64, lights: usize) -> bool {
         let dense = |milli: u64| vertices.saturating_mul(1000) >= milli.saturating_mul(pixels);
-        cpu && ((lights >= AUTO_MIN_LIGHTS && dense(AUTO_MILLI_VERTICES_PER_PIXEL))
-            || (lights >= AUTO_MANY_LIGHTS && dense(AUTO_MANY_LIGHTS_MILLI_VERTICES_PER_PIXEL)))
+        cpu && AUTO_DEFERRED
+            .iter()
+            .any(|&(fewest, milli)| lights >= fewest && dense(milli))
     }
 }
 
-/// [`FragmentPath::auto_picks_deferred`]'s fewest lights for the deferred path: with the lean
-/// G-buffer it won at 4 lights from 0.03 vertices per pixel (0.72-0.89 of forward's time) and
-/// lost at 0.008 (1.02-1.14); at 1 and 2 lights it won nowhere by more than the noise.
-const AUTO_MIN_LIGHTS: usize = 4;
-/// [`FragmentPath::auto_picks_deferred`]'s density at [`AUTO_MIN_LIGHTS`], in thousandths of a
-/// vertex per pixel: between the 0.008 where the deferred path lost at 4 lights and the 0.03
-/// where it won.
-const AUTO_MILLI_VERTICES_PER_PIXEL: u64 = 20;
-/// From this many lights the deferred path wins on sparser meshes too: at 8 lights it won
-/// from 0.008 vertices per pixel (0.80-0.83) and tied at 0.002 (0.99-1.01).
-const AUTO_MANY_LIGHTS: usize = 8;
-/// [`FragmentPath::auto_picks_deferred`]'s density at [`AUTO_MANY_LIGHTS`], in thousandths of
-/// a vertex per pixel.
-const AUTO_MANY_LIGHTS_MILLI_VERTICES_PER_PIXEL: u64 = 4;
+/// [`FragmentPath::auto_picks_deferred`]'s rule on a CPU: the deferred path from this many
+/// lights at this many thousandths of a vertex per pixel (or more of either). From two paths
+/// runs after the lighting pass came to fetch the records as texels (BENCHMARKS.md, "Which
+/// fragment path wins"), deferred ÷ forward: at 8 lights 0.41-0.87 from 0.002 vertices per
+/// pixel (one 1.06), 1.05 at 0.001; at 4 lights 0.62-0.94 from 0.008 (one 1.07), 1.15-1.37
+/// below; at 1 and 2 lights wins and losses of up to 15-28 % that changed places between the
+/// runs. The rule agreed with the faster path (or within 5 % of it) at 69 of each run's 80
+/// points.
+const AUTO_DEFERRED: [(usize, u64); 2] = [(4, 8), (8, 2)];
 
 impl<'a> Frame<'a> {
     /// An empty frame of `width` × `height` pixels, cleared to (0, 0, 0, 1), depth test on.
