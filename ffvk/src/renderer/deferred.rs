@@ -24,7 +24,7 @@ use ash::vk;
 
 use super::attachments::{area_and_viewport, attachment_barriers, color_attachment, depth_attachment};
 use super::frame::Frame;
-use super::states::{scissor, States};
+use super::states::States;
 use super::subresource;
 use crate::draw::lighting::{Lighting, Staged};
 use crate::draw::pipeline::{
@@ -127,29 +127,26 @@ pub(super) fn readable_records(staged: &[Staged], device: &Device) -> Option<vk:
 
 impl Deferred {
     pub(super) fn new(device: &Arc<Device>) -> Result<Self> {
-        let image = |binding| {
+        let binding = |binding, ty| {
             vk::DescriptorSetLayoutBinding::default()
                 .binding(binding)
-                .descriptor_type(vk::DescriptorType::COMBINED_IMAGE_SAMPLER)
+                .descriptor_type(ty)
                 .descriptor_count(1)
                 .stage_flags(vk::ShaderStageFlags::FRAGMENT)
         };
-        let texels = |binding| {
-            vk::DescriptorSetLayoutBinding::default()
-                .binding(binding)
-                .descriptor_type(vk::DescriptorType::UNIFORM_TEXEL_BUFFER)
-                .descriptor_count(1)
-                .stage_flags(vk::ShaderStageFlags::FRAGMENT)
-        };
-        let storage = |binding| {
-            vk::DescriptorSetLayoutBinding::default()
-                .binding(binding)
-                .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
-                .descriptor_count(1)
-                .stage_flags(vk::ShaderStageFlags::FRAGMENT)
-        };
+        let (image, texels, storage) = (
+            vk::DescriptorType::COMBINED_IMAGE_SAMPLER,
+            vk::DescriptorType::UNIFORM_TEXEL_BUFFER,
+            vk::DescriptorType::STORAGE_BUFFER,
+        );
         // The G-buffer, the frame's records, the evaluation counter, the records' states.
-        let bindings = [image(0), image(1), texels(4), storage(5), storage(6)];
+        let bindings = [
+            binding(0, image),
+            binding(1, image),
+            binding(4, texels),
+            binding(5, storage),
+            binding(6, storage),
+        ];
         let set_layout = DescriptorSetLayout::new(device, &bindings)?;
         // The lighting pass reads texels where they are (texelFetch): no filtering.
         let sampler = Sampler::new(
@@ -423,14 +420,9 @@ impl Deferred {
         self.ensure_gbuffer(extent, records)?;
         let mut passes = Vec::with_capacity(states.len());
         let mut color = false;
-        for (index, &(key, first)) in states.first().iter().enumerate() {
-            let draws = frame
-                .draws
-                .iter()
-                .zip(states.of_draw())
-                .filter(|(_, &s)| s as usize == index)
-                .map(|(d, _)| d);
-            let Some(scissor) = scissor(draws, extent) else {
+        let scissors = states.scissors(frame, extent);
+        for (index, (&(key, first), scissor)) in states.first().iter().zip(scissors).enumerate() {
+            let Some(scissor) = scissor else {
                 continue;
             };
             let (draw, staged) = frame

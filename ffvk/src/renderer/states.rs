@@ -36,6 +36,20 @@ impl States {
     pub(super) fn first(&self) -> &[(SpecKey, usize)] {
         &self.first
     }
+
+    /// Per state, the scissor of its lighting pass in `extent`: the union of its draws'
+    /// window rectangles ([`window_bounds`]); `None` where they cover no pixel of it. One
+    /// pass over `frame`'s draws.
+    pub(super) fn scissors(&self, frame: &Frame, extent: vk::Extent2D) -> Vec<Option<vk::Rect2D>> {
+        let none = [f32::INFINITY, f32::INFINITY, f32::NEG_INFINITY, f32::NEG_INFINITY];
+        let mut rects = vec![none; self.first.len()];
+        for (d, &s) in frame.draws.iter().zip(&self.of_draw) {
+            if let (Some(b), Some(r)) = (window_bounds(d, extent), rects.get_mut(s as usize)) {
+                *r = [r[0].min(b[0]), r[1].min(b[1]), r[2].max(b[2]), r[3].max(b[3])];
+            }
+        }
+        rects.into_iter().map(|r| pixel_rect(r, extent)).collect()
+    }
 }
 
 /// Whether `m` maps w = 1 to w = 1 (the last row is (0, 0, 0, 1)).
@@ -162,16 +176,9 @@ fn window_bounds(d: &Draw, extent: vk::Extent2D) -> Option<[f32; 4]> {
     Some([out[0] - margin, out[1] - margin, out[2] + margin, out[3] + margin])
 }
 
-/// The scissor of the lighting pass of the draws `draws` (window rectangles as
-/// [`window_bounds`]), inside `extent`; `None` where they cover no pixel of it.
-pub(super) fn scissor<'a>(
-    draws: impl Iterator<Item = &'a Draw<'a>>,
-    extent: vk::Extent2D,
-) -> Option<vk::Rect2D> {
-    let mut r = [f32::INFINITY, f32::INFINITY, f32::NEG_INFINITY, f32::NEG_INFINITY];
-    for b in draws.filter_map(|d| window_bounds(d, extent)) {
-        r = [r[0].min(b[0]), r[1].min(b[1]), r[2].max(b[2]), r[3].max(b[3])];
-    }
+/// The pixels of `extent` inside the window rectangle `r` ([x0, y0, x1, y1]) widened to whole
+/// pixels; `None` where there are none.
+fn pixel_rect(r: [f32; 4], extent: vk::Extent2D) -> Option<vk::Rect2D> {
     let clamp = |v: f32, most: u32| v.clamp(0.0, most as f32) as u32;
     let (x0, y0) = (
         clamp(r[0].floor(), extent.width),
